@@ -1,0 +1,195 @@
+// Program memory: splitting files into % programs, label index.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/program.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+namespace pupitre {
+
+long line_label(std::string_view line) {
+    size_t i = 0;
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+    if (i < line.size() && line[i] == '/') ++i;
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+    if (i >= line.size() || line[i] != 'N') return -1;
+    ++i;
+    while (i < line.size() && line[i] == ' ') ++i;
+    long n = 0;
+    int digits = 0;
+    while (i < line.size() && line[i] >= '0' && line[i] <= '9' && digits < 9) {
+        n = n * 10 + (line[i] - '0');
+        ++i;
+        ++digits;
+    }
+    // "NC", "NU"… are other addresses; a bare N is N0 (turning.md §1.4.4).
+    if (digits == 0 && i < line.size() && line[i] >= 'A' && line[i] <= 'Z') return -1;
+    return n;
+}
+
+const Label* ProgramText::find_label(long n) const {
+    if (!indexed_) {
+        std::string_view all = *text;
+        size_t pos = begin;
+        int line = first_line;
+        while (pos < end) {
+            size_t eol = all.find('\n', pos);
+            if (eol == std::string_view::npos || eol > end) eol = end;
+            long lab = line_label(all.substr(pos, eol - pos));
+            if (lab >= 0) labels_.push_back({lab, line, pos});
+            pos = eol + 1;
+            ++line;
+        }
+        std::stable_sort(labels_.begin(), labels_.end(),
+                         [](const Label& a, const Label& b) { return a.n < b.n; });
+        indexed_ = true;
+    }
+    auto it = std::lower_bound(labels_.begin(), labels_.end(), n,
+                               [](const Label& a, long v) { return a.n < v; });
+    return (it != labels_.end() && it->n == n) ? &*it : nullptr;
+}
+
+bool ProgramMemory::load_file(const std::string& path, Diag& d) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        d = Diag{Severity::error, 66, path, -1, 0, -1, 0, "cannot open file"};
+        return false;
+    }
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    if (in.bad()) {
+        d = Diag{Severity::error, 66, path, -1, 0, -1, 0, "read error"};
+        return false;
+    }
+    return load_text(path, std::move(ss).str(), d);
+}
+
+namespace {
+bool header_line(std::string_view line, int& number, int& index, std::string& title) {
+    size_t i = 0;
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+    if (i >= line.size() || line[i] != '%') return false;
+    ++i;
+    number = 0;
+    index = -1;
+    while (i < line.size() && line[i] == ' ') ++i;
+    int digits = 0;
+    while (i < line.size() && line[i] >= '0' && line[i] <= '9' && digits < 6) {
+        number = number * 10 + (line[i++] - '0');
+        ++digits;
+    }
+    if (i < line.size() && line[i] == '.') {
+        ++i;
+        index = 0;
+        while (i < line.size() && line[i] >= '0' && line[i] <= '9' && index < 100000)
+            index = index * 10 + (line[i++] - '0');
+    }
+    size_t open = line.find('(', i);
+    if (open != std::string_view::npos) {
+        size_t close = line.find(')', open);
+        std::string_view t = line.substr(open + 1, close == std::string_view::npos
+                                                       ? std::string_view::npos
+                                                       : close - open - 1);
+        while (!t.empty() && t.front() == ' ') t.remove_prefix(1);
+        while (!t.empty() && (t.back() == ' ' || t.back() == '\r')) t.remove_suffix(1);
+        title = std::string(t);
+    }
+    return true;
+}
+
+bool blank_or_comment(std::string_view line) {
+    bool in_comment = false;
+    for (char c : line) {
+        if (in_comment) {
+            if (c == ')') in_comment = false;
+        } else if (c == '(') {
+            in_comment = true;
+        } else if (c != ' ' && c != '\t' && c != '\r') {
+            return false;
+        }
+    }
+    return true;
+}
+}  // namespace
+
+bool ProgramMemory::load_text(std::string name, std::string text, Diag& d) {
+    // A NUL byte is never part of a program: refuse binary input up front.
+    if (text.find('\0') != std::string::npos) {
+        d = Diag{Severity::error, err::kNotText, name, -1, 0, -1, 0,
+                 "not a text file (NUL byte found)"};
+        return false;
+    }
+    auto shared = std::make_shared<const std::string>(std::move(text));
+    std::string_view all = *shared;
+    std::vector<std::unique_ptr<ProgramText>> found;
+    ProgramText* cur = nullptr;
+    bool anonymous_has_blocks = false;
+    size_t pos = 0;
+    int line = 1;
+    auto close = [&](size_t at) {
+        if (cur) cur->end = at;
+    };
+    // Text before the first header forms program 0 when it holds blocks
+    // (004_rectangle.iso is such a fragment).
+    auto anon = std::make_unique<ProgramText>();
+    anon->file = name;
+    anon->text = shared;
+    anon->begin = 0;
+    anon->first_line = 1;
+    cur = anon.get();
+    while (pos < all.size()) {
+        size_t eol = all.find('\n', pos);
+        if (eol == std::string_view::npos) eol = all.size();
+        std::string_view l = all.substr(pos, eol - pos);
+        int number, index;
+        std::string title;
+        if (header_line(l, number, index, title)) {
+            close(pos);
+            if (cur == anon.get()) {
+                if (anonymous_has_blocks) found.push_back(std::move(anon));
+            }
+            auto p = std::make_unique<ProgramText>();
+            p->number = number;
+            p->index = index;
+            p->title = std::move(title);
+            p->file = name;
+            p->text = shared;
+            p->begin = std::min(eol + 1, all.size());
+            p->first_line = line + 1;
+            cur = p.get();
+            found.push_back(std::move(p));
+        } else if (cur == anon.get() && !anonymous_has_blocks && !blank_or_comment(l)) {
+            anonymous_has_blocks = true;
+        }
+        pos = eol + 1;
+        ++line;
+    }
+    close(all.size());
+    if (cur == anon.get() && anonymous_has_blocks) found.push_back(std::move(anon));
+    if (found.empty()) {
+        d = Diag{Severity::error, err::kNoProgram, name, -1, 0, -1, 0, "no program in the file"};
+        return false;
+    }
+    for (auto& p : found) {
+        if (const ProgramText* old = find(p->number)) {
+            warnings_.push_back(Diag{Severity::warning, 1107, p->file, p->number,
+                                     p->first_line - 1, -1, 0,
+                                     "program %" + std::to_string(p->number) +
+                                         " is already loaded from " + old->file +
+                                         "; this copy is ignored"});
+            continue;
+        }
+        progs_.push_back(std::move(p));
+    }
+    return true;
+}
+
+const ProgramText* ProgramMemory::find(int number) const {
+    for (const auto& p : progs_)
+        if (p->number == number) return p.get();
+    return nullptr;
+}
+
+}  // namespace pupitre
