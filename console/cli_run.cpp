@@ -1,0 +1,173 @@
+// pupitre run / pupitre check: load the programs, seed the machine, dry-run.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <charconv>
+#include <cstdio>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "console/cli.hpp"
+#include "core/interp.hpp"
+#include "core/trace.hpp"
+
+namespace pupitre::cli {
+
+namespace {
+
+void print_diag(const Diag& d) {
+    std::string s = format_diag(d);
+    s += '\n';
+    std::fputs(s.c_str(), stderr);
+}
+
+bool load_machine(const std::string& name, MachineProfile& m) {
+    if (builtin_machine(name, m)) return true;
+    std::ifstream in(name);
+    if (!in) {
+        std::fprintf(stderr, "pupitre: unknown machine '%s' (lathe, mill, mill4, mill5, or a .machine file)\n",
+                     name.c_str());
+        return false;
+    }
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    std::string err = parse_machine(ss.str(), m);
+    if (!err.empty()) {
+        std::fprintf(stderr, "pupitre: %s: %s\n", name.c_str(), err.c_str());
+        return false;
+    }
+    return true;
+}
+
+// Loads every file; returns an exit code (0 on success).
+int load_all(const std::vector<std::string>& files, ProgramMemory& mem) {
+    for (const auto& f : files) {
+        Diag d;
+        if (!mem.load_file(f, d)) {
+            print_diag(d);
+            return d.code == 66 ? kNoInput : kDataErr;
+        }
+    }
+    for (const Diag& w : mem.warnings()) print_diag(w);
+    return kOk;
+}
+
+int apply_sets(const RunArgs& a, Interpreter& in) {
+    for (const auto& s : a.sets) {
+        size_t eq = s.find('=');
+        double v = 0;
+        bool ok = eq != std::string::npos && eq > 0;
+        if (ok) {
+            std::string_view val(s.c_str() + eq + 1);
+            auto r = std::from_chars(val.data(), val.data() + val.size(), v);
+            ok = r.ec == std::errc() && r.ptr == val.data() + val.size();
+        }
+        if (!ok) {
+            std::fprintf(stderr, "pupitre: --set %s: expected NAME=VALUE with a number\n", s.c_str());
+            return kUsage;
+        }
+        std::string why = in.set(std::string_view(s).substr(0, eq), v);
+        if (!why.empty()) {
+            std::fprintf(stderr, "pupitre: --set %s: %s\n", s.c_str(), why.c_str());
+            return kUsage;
+        }
+    }
+    return kOk;
+}
+
+class NullSink final : public MachineSink {};
+
+}  // namespace
+
+int run(const RunArgs& a) {
+    MachineProfile m;
+    if (!load_machine(a.machine, m)) return kUsage;
+    ProgramMemory mem;
+    if (int rc = load_all(a.files, mem)) return rc;
+    static char outbuf[1 << 16];
+    std::setvbuf(stdout, outbuf, _IOFBF, sizeof outbuf);
+    TraceWriter trace(stdout, m);
+    NullSink quiet;
+    RunOptions o;
+    o.block_skip = a.block_skip;
+    o.optional_stop = a.optional_stop;
+    o.max_blocks = a.max_blocks;
+    Interpreter in(m, mem, a.trace ? static_cast<MachineSink&>(trace) : quiet, o);
+    if (int rc = apply_sets(a, in)) return rc;
+    const ProgramText* main = nullptr;
+    for (const auto& p : mem.programs())
+        if (p->file == a.files.front()) {
+            main = p.get();
+            break;
+        }
+    in.start(main);
+    in.run_to_end();
+    std::fflush(stdout);
+    for (const Diag& d : in.diags()) print_diag(d);
+    if (a.json) {
+        std::string s = summary_json(in, a.files.front());
+        std::fputs(s.c_str(), stdout);
+    } else if (!a.trace) {
+        std::string s = summary_text(in, a.files.front());
+        std::fputs(s.c_str(), stdout);
+    }
+    std::fflush(stdout);
+    return in.has_errors() ? kProgramErrors : kOk;
+}
+
+int check(const RunArgs& a) {
+    MachineProfile m;
+    if (!load_machine(a.machine, m)) return kUsage;
+    ProgramMemory mem;
+    if (int rc = load_all(a.files, mem)) return rc;
+    bool errors = false;
+    std::set<std::pair<std::string, int>> reported;
+    // 1. Every block of every program, executed or not, must parse.
+    Block b;
+    for (const auto& p : mem.programs()) {
+        std::string_view body = p->body();
+        int line = p->first_line;
+        size_t pos = 0;
+        while (pos <= body.size()) {
+            size_t eol = body.find('\n', pos);
+            if (eol == std::string_view::npos) eol = body.size();
+            Diag d;
+            if (!parse_block(body.substr(pos, eol - pos), b, d)) {
+                d.file = p->file;
+                d.program = p->number;
+                d.line = line;
+                d.n = line_label(body.substr(pos, eol - pos));
+                print_diag(d);
+                reported.insert({d.file, d.line});
+                errors = true;
+            }
+            pos = eol + 1;
+            ++line;
+        }
+    }
+    // 2. A dry run of each file's first program, with all files as memory.
+    for (const auto& f : a.files) {
+        const ProgramText* main = nullptr;
+        for (const auto& p : mem.programs())
+            if (p->file == f) {
+                main = p.get();
+                break;
+            }
+        if (!main) continue;
+        NullSink quiet;
+        RunOptions o;
+        o.block_skip = a.block_skip;
+        o.max_blocks = a.max_blocks;
+        Interpreter in(m, mem, quiet, o);
+        if (int rc = apply_sets(a, in)) return rc;
+        in.start(main);
+        in.run_to_end();
+        for (const Diag& d : in.diags()) {
+            if (d.is_error() && reported.count({d.file, d.line})) continue;
+            print_diag(d);
+            errors = errors || d.is_error();
+        }
+    }
+    return errors ? kProgramErrors : kOk;
+}
+
+}  // namespace pupitre::cli

@@ -1,0 +1,254 @@
+// The NUM interpreter: executes one block per step() and reports what the machine
+// does to an injected MachineSink (STYLE.md: LinuxCNC canonical functions). The
+// simulated clock lives here; the console decides how fast to show it.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+#include <array>
+#include <bitset>
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/block.hpp"
+#include "core/codes.hpp"
+#include "core/diag.hpp"
+#include "core/eval.hpp"
+#include "core/frames.hpp"
+#include "core/machine.hpp"
+#include "core/program.hpp"
+
+namespace pupitre {
+
+struct Loc {
+    int prog = 0;   // %number
+    int line = 0;
+    long n = -1;    // N of the block, -1 if none
+};
+
+struct MoveEvent {
+    Loc loc;
+    int g = 1;             // 0, 1, 2, 3
+    bool g52 = false;
+    Axes from_mach{}, to_mach{};  // machine positions of the reference (internal units)
+    Axes to_prog{};               // program point reached (internal units)
+    int plane_a0 = X, plane_a1 = Y;   // arc plane axes (first, second)
+    double c0 = 0, c1 = 0;            // arc centre, program coordinates (internal units)
+    double sweep = 0;                 // degrees, negative for G2
+    double length = 0;                // mm (degrees for a rotary-only move)
+    double feed = 0;                  // mm/min actually used, at the start
+    double rpm = 0;                   // spindle speed at the start
+    double seconds = 0;               // duration
+    bool x_diameter = false;          // lathe X shown as a diameter
+};
+
+struct SpindleEvent {
+    Loc loc;
+    double rpm = 0;
+    int dir = 5;           // 3 cw, 4 ccw, 5 stopped, 19 indexed
+    bool css = false;
+    double vc = 0;         // m/min under G96
+    int range = -1;        // 40..45, -1 for none
+};
+
+class MachineSink {
+public:
+    virtual ~MachineSink() = default;
+    virtual void move(const MoveEvent&) {}
+    virtual void dwell(const Loc&, double /*seconds*/) {}
+    virtual void tool(const Loc&, int /*t*/, int /*d*/, double /*seconds*/) {}
+    virtual void spindle(const SpindleEvent&) {}
+    virtual void coolant(const Loc&, bool /*m7*/, bool /*m8*/) {}
+    virtual void stop(const Loc&, int /*m: 0, 1, 12*/) {}
+    virtual void message(const Loc&, int /*channel*/, std::string_view) {}
+    virtual void end(const Loc&, int /*m: 2, or 0 at the end of a fragment*/) {}
+};
+
+// One tool corrector (turning.md §3.3, milling.md §4.3.1). Lathe: X and Z gauges
+// (X a radius), nose radius R, orientation C, dynamic DX (a diameter) and DZ.
+// Mill: length L, radius R, end radius @, dynamic DL and DR.
+struct Corrector {
+    double x = 0, z = 0, r = 0, dx = 0, dz = 0;
+    int c = 0;
+    double l = 0, tip = 0, dl = 0, dr = 0;
+};
+
+struct Modal {
+    int motion = 1;
+    bool incremental = false;
+    int plane = 17;
+    int radcomp = 40;
+    int feed_mode = 94;
+    double feed = 1000;        // mm/min (G94), mm/rev (G95), 1/min (G93)
+    int spindle_mode = 97;
+    double s = 0;              // rev/min (G97) or m/min (G96)
+    bool css_known = false;    // a starting diameter is known for G96
+    double css_x0 = 0;         // G96 starting X (radius) at registration
+    double css_pos0 = 0;       // program X (radius) when registered
+    double smax = 0;           // G92 S limit, 0 = none
+    int spindle_dir = 5;       // 3, 4, 5 or 19
+    int range = -1;            // 0..5 for M40..M45
+    bool inch = false;
+    int cycle = 80;
+    int tool_axis = Z;         // G16: axis of the tool vector
+    bool tool_axis_neg = false;
+    int d = 0;                 // active corrector
+    int t = 0;                 // selected tool
+    int tool_in_spindle = 0;
+    double g92r = 0;
+    bool m7 = false, m8 = false;
+    bool overrides_off = false;  // M49
+    bool clamped = false;        // M10
+    long g75 = -1;               // emergency-retract label
+    double eg = 100;
+    bool modif_inhibited = false;  // M999
+    bool radius_x = false;         // E11005 = 0 on a diameter lathe
+    long coded_m = -1;             // last modal coded M (M200-M899)
+};
+
+struct RunOptions {
+    bool block_skip = false;      // operator switch: '/' blocks are skipped
+    bool optional_stop = false;   // operator switch: M01 stops
+    long max_blocks = 50'000'000; // endless-loop guard (error 1001)
+};
+
+enum class StepResult {
+    running,   // a block was executed; call step() again
+    stopped,   // M00/M01/M12: waiting for cycle start (call step() to resume)
+    ended,     // M02 (or end of a fragment with error 20 reported)
+    error,     // an error stopped the run: see diags()
+};
+
+class Interpreter final : private EAccess {
+public:
+    Interpreter(const MachineProfile& m, ProgramMemory& mem, MachineSink& sink, RunOptions o = {});
+
+    // Power-on state: modal defaults, machine at home, origins from the profile.
+    void power_on();
+    // Settings before a run (DESIGN §2.1 --set): PREF.X=-120.5, D1.R=4, L5=2, E80000=18000.
+    // Returns an empty string or the reason it is refused.
+    std::string set(std::string_view name, double value);
+
+    bool start(int program);                  // false: no such program (error 25 reported)
+    bool start(const ProgramText* p);
+    StepResult step();
+    // Runs to the end, an error, or a stop (stops are resumed: a dry run goes on).
+    StepResult run_to_end();
+
+    // Results.
+    const std::vector<Diag>& diags() const { return diags_; }
+    bool has_errors() const;
+    const Modal& modal() const { return modal_; }
+    const Frames& frames() const { return frames_; }
+    const Axes& machine_pos() const { return mach_; }
+    const Axes& program_pos() const { return prog_; }
+    const MachineProfile& machine() const { return m_; }
+    const LVars& lvars() const { return l_; }
+    const std::map<int, int64_t>& e_written() const { return e_written_; }
+    const std::vector<int>& tools_used() const { return tools_used_; }
+    long blocks() const { return blocks_; }
+    long moves() const { return moves_; }
+    double path_length() const { return path_; }
+    double seconds() const { return clock_; }
+    int main_program() const { return main_ ? main_->number : -1; }
+    double spindle_rpm() const { return rpm_; }
+    Corrector& corrector(int d) { return corr_[size_t(d)]; }
+
+    // Display conversion: lathe X as a diameter unless E11005 = 0.
+    double to_display(int axis, double internal) const;
+
+private:
+    struct Frame {
+        const ProgramText* prog = nullptr;
+        size_t pos = 0;       // next line to read
+        int line = 0;         // its number
+        bool call = false;    // pushed by G77
+        bool whole = false;   // a whole program (else a block range)
+        size_t range_pos = 0; // first block of the range
+        int range_line = 0;
+        int end_line = 0;     // last block of the range (inclusive)
+        int repeats = 1;      // executions left, this one included
+        int saved_radcomp = 40;
+        int saved_dir = 5, saved_range = -1;
+        double saved_s = 0;
+        bool saved_m7 = false, saved_m8 = false;
+    };
+
+    // Plan of a block: the words resolved into values (interp_words.cpp).
+    struct Plan;
+
+    // interp.cpp
+    bool fetch(std::string_view& line, int& lineno);
+    StepResult execute(const Block& b);
+    StepResult fail(int code, std::string detail, int column = 0);
+    void warn(int code, std::string detail);
+    bool call(const Plan& p);
+    bool jump(long label);
+    bool end_of_frame();
+    void after_block(int lineno);
+    void reset_modal_m02();
+    void recompute_program_pos();
+    void apply_corrector_gauges(const std::bitset<kAxes>& programmed);
+    double gauge_for(int d, int axis) const;
+    int read_e(int n, int64_t& out, std::string& why) override;
+    int write_e(int n, int64_t value, std::string& why) override;
+    int e_rights(int n, bool write, std::string& why) const;
+    void note_tool(int t);
+
+    // interp_words.cpp
+    bool decode(const Block& b, Plan& p);
+    bool word_value(const Word& w, double& out, int* int_out = nullptr);
+    bool apply_modal(const Plan& p);
+    bool apply_spindle(const Plan& p);
+    bool do_m_avant(const Plan& p);
+    bool do_m_apres(const Plan& p, StepResult& r);
+
+    // motion.cpp
+    bool do_motion(const Plan& p);
+    bool linear(int g, const Axes& target_prog, bool g52, const std::bitset<kAxes>& axes);
+    bool arc(const Plan& p, const Axes& target_prog);
+    bool arc3(const Plan& p, const Axes& target_prog);
+    bool emit_arc(int g, const Axes& target, int a0, int a1, double c0, double c1, double sweep_rad,
+                  double r0, double r1, int helix_axis);
+    bool check_travel(const Axes& mach);
+    double feed_rate(double& rpm_out);     // mm/min for the move start
+    double spindle_at(double x_radius) const;
+    double css_rpm(double x_prog_radius) const;
+    double feed_time(double length, double x0, double x1);
+    void set_spindle_event();
+
+    const MachineProfile& m_;
+    ProgramMemory& mem_;
+    MachineSink& sink_;
+    RunOptions opt_;
+
+    Modal modal_;
+    Frames frames_;
+    std::bitset<kAxes> gauge_pending_;
+    std::array<Corrector, 256> corr_{};
+    LVars l_;
+    std::map<int, int64_t> e_raw_;       // E parameters with no machine meaning (E80000…)
+    std::map<int, int64_t> e_written_;   // every E written by the program
+    Axes mach_{};   // machine position of the reference
+    Axes prog_{};   // current program point
+    Axes prog_next_{};  // program point at the end of the linear move being made
+    double rpm_ = 0;  // actual spindle speed
+    std::vector<Frame> stack_;
+    const ProgramText* main_ = nullptr;
+    Loc loc_;
+    int col_ = 0;
+    std::vector<Diag> diags_;
+    std::vector<int> tools_used_;
+    long blocks_ = 0, moves_ = 0;
+    double path_ = 0, clock_ = 0;
+    bool ended_ = false;
+    bool first_move_ = true;
+    int nonmotion_in_comp_ = 0;
+    SpindleEvent last_sp_;  // last spindle state reported
+    bool sp_emitted_ = false;
+    bool x_known_ = false;  // an X was programmed (G96 start diameter)
+    Block block_;  // reused parse buffer
+    std::string_view cur_text_;
+};
+
+}  // namespace pupitre

@@ -1,0 +1,56 @@
+// Machine profiles (data/machines/*.machine): axes, travel, speeds, spindle
+// ranges, tools and timings of a simulated NUM lathe or machining centre.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+#include <array>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace pupitre {
+
+// Axis index, as in the E parameters (E6x000…) and travel errors 150-158.
+enum Axis : int { X = 0, Y, Z, U, V, W, A, B, C, kAxes };
+using Axes = std::array<double, kAxes>;
+constexpr std::string_view kAxisNames = "XYZUVWABC";
+inline bool is_rotary(int a) { return a >= A; }
+int axis_of(char letter);  // -1 if not an axis letter
+
+struct AxisConfig {
+    bool present = false;
+    double min = -1e9, max = 1e9;  // travel of the reference relative to OM (lathe X: radius)
+    double rapid = 10000;          // mm/min or deg/min
+};
+
+struct SpindleRange {
+    double min = 0, max = 0;
+};
+
+struct MachineProfile {
+    std::string name;
+    std::string description;
+    bool lathe = false;
+    int model = 1060;            // 1020, 1040 or 1060
+    bool x_diameter = true;      // lathe: X programmed as a diameter
+    bool rear_turret = true;     // lathe
+    std::array<AxisConfig, kAxes> axes{};
+    Axes home{};                 // machine position of the reference at start (lathe X: radius)
+    Axes pref{}, dec1{};         // default origins
+    double max_feed = 5000;      // mm/min
+    double spindle_max = 4000;   // rev/min
+    std::vector<SpindleRange> ranges;  // M40, M41, …
+    bool auto_range = false;
+    int tools = 12;
+    int correctors = 255;
+    double tool_change_time = 2.0;
+
+    bool has(int axis) const { return axis >= 0 && axis < kAxes && axes[size_t(axis)].present; }
+};
+
+// Parses a profile. Returns an empty string on success, else the error.
+std::string parse_machine(std::string_view text, MachineProfile& out);
+// The profiles shipped in data/machines (embedded): lathe, mill, mill4, mill5.
+std::vector<std::string> builtin_machines();
+bool builtin_machine(std::string_view name, MachineProfile& out);
+
+}  // namespace pupitre
