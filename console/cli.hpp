@@ -18,7 +18,7 @@ struct RunArgs {
     bool json = false;
     bool block_skip = false;
     bool optional_stop = false;
-    long max_blocks = 50'000'000;
+    long max_blocks = 20'000'000;
 };
 
 int run(const RunArgs& a);

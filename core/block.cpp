@@ -30,6 +30,10 @@ std::string_view addr_name(Addr a) {
         }
         names[kAddrEsign][0] = 'E';
         names[kAddrEsign][1] = '+';
+        for (int i = 0; i < 26; ++i) {
+            names[79 + i][0] = 'L';
+            names[79 + i][1] = char('A' + i);
+        }
         init = true;
     }
     if (a >= kAddrCount) return "?";
@@ -381,6 +385,15 @@ struct Parser {
                     return fail(4, pos, "structured programming (IF, WHILE, FOR…) is an option this machine does not have");
             }
             first_word = false;
+            if (c == 'L' && is_upper(peek(1)) && peek(1) != 'O') {
+                Word w;
+                w.col = uint16_t(pos + 1);
+                w.addr = addrL(peek(1));
+                pos += 2;
+                if (!operand(w.v)) return false;
+                b.words.push_back(w);
+                continue;
+            }
             if (c == 'L' || c == '\'' || (c == 'E' && (is_digit(peek(1)) || (peek(1) == 'L' && is_digit(peek(2)))))) {
                 size_t col = pos;
                 Operand target;

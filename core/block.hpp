@@ -13,13 +13,15 @@
 namespace pupitre {
 
 // Address codes: a single letter is its index from 'A'; E + letter is 26 + index;
-// N + letter (NC, NU, NP, NR) is 52 + index; the PGP discriminant E+ / E- is 78.
+// N + letter (NC, NU, NP, NR) is 52 + index; the PGP discriminant E+ / E- is 78;
+// L + letter (LX, LY of the G46 pocket) is 79 + index.
 using Addr = uint8_t;
 constexpr Addr addr1(char c) { return Addr(c - 'A'); }
 constexpr Addr addrE(char c) { return Addr(26 + (c - 'A')); }
 constexpr Addr addrN(char c) { return Addr(52 + (c - 'A')); }
 constexpr Addr kAddrEsign = 78;
-constexpr int kAddrCount = 79;
+constexpr Addr addrL(char c) { return Addr(79 + (c - 'A')); }
+constexpr int kAddrCount = 105;
 // "X", "EA", "NC", "E±".
 std::string_view addr_name(Addr a);
 

@@ -37,9 +37,9 @@ constexpr GCode kG[] = {
     {2, G::motion, kBoth, true, S::yes, "", "circular interpolation, clockwise"},
     {3, G::motion, kBoth, true, S::yes, "", "circular interpolation, counter-clockwise"},
     {4, G::none, kBoth, true, S::yes, "F", "dwell, seconds in F"},
-    {5, G::none, kLathe, false, S::later, "X Z", "move along an inclined axis"},
+    {5, G::none, kLathe, false, S::option, "X Z", "move along an inclined axis (grinder option)"},
     {6, G::none, kBoth, false, S::later, "NC", "execute a spline curve"},
-    {7, G::none, kLathe, false, S::later, "X Z", "initial positioning for an inclined axis"},
+    {7, G::none, kLathe, false, S::option, "X Z", "initial positioning for an inclined axis (grinder option)"},
     {9, G::none, kBoth, true, S::yes, "", "exact stop at end of block"},
     {10, G::none, kBoth, true, S::yes, "N EF", "interruptible block"},
     {12, G::none, kBoth, true, S::ignored, "", "handwheel overspeed"},
@@ -59,7 +59,7 @@ constexpr GCode kG[] = {
     {41, G::radcomp, kBoth, true, S::yes, "", "tool radius compensation, tool left of profile"},
     {42, G::radcomp, kBoth, true, S::yes, "", "tool radius compensation, tool right of profile"},
     {45, G::none, kMill, true, S::later, "X Y Z I J K P Q R EB EG EP EQ EI EJ EX EY ER", "simple pocket cycle"},
-    {46, G::none, kMill, false, S::later, "NU NP NR", "pocket or facing with any contour"},
+    {46, G::none, kMill, false, S::later, "NU NP NR ED Q J R LX LY X Y Z I K P EP EQ EI EJ EX EY", "pocket or facing with any contour"},
     {48, G::none, kBoth, false, S::later, "NC H N", "spline definition"},
     {49, G::none, kBoth, false, S::later, "NC", "spline deletion"},
     {51, G::none, kBoth, false, S::yes, "X Y Z U V W A B C", "mirror: X- enables, X+ disables"},
@@ -78,7 +78,7 @@ constexpr GCode kG[] = {
     {75, G::none, kBoth, true, S::yes, "N", "declare the emergency-retract block"},
     {76, G::none, kBoth, true, S::later, "H N", "transfer L/E values into a program; G76+/- edit"},
     {77, G::none, kBoth, true, S::yes, "H N P S", "call a subprogram or block range, with return"},
-    {78, G::none, kBoth, false, S::later, "P", "axis-group synchronisation"},
+    {78, G::none, kBoth, false, S::option, "P", "axis-group synchronisation (several axis groups)"},
     {79, G::none, kBoth, true, S::yes, "N", "jump, conditional or not"},
     {80, G::cycle, kBoth, true, S::yes, "", "cancel machining cycle"},
     {81, G::cycle, kBoth, false, S::later, "X Y Z ER EH", "drilling / centring cycle"},
@@ -146,6 +146,7 @@ struct OwnTable {
                 if (w.size() == 1) own[i].set(addr1(w[0]));
                 else if (w[0] == 'E') own[i].set(addrE(w[1]));
                 else if (w[0] == 'N') own[i].set(addrN(w[1]));
+                else if (w[0] == 'L') own[i].set(addrL(w[1]));
             }
         }
     }

@@ -36,6 +36,7 @@ enum class Support : uint8_t {
     yes,      // pupitre runs it
     later,    // planned (geometry issue): refused with error 1010 for now
     ignored,  // accepted, no effect on a simulated machine (timing or PLC only)
+    option,   // an option the simulated machines do not have: error 4
 };
 
 struct GCode {

@@ -80,6 +80,7 @@ struct Modal {
     int radcomp = 40;
     int feed_mode = 94;
     double feed = 1000;        // mm/min (G94), mm/rev (G95), 1/min (G93)
+    bool feed_set = true;      // false after G94/G95/G93 changed the unit without F
     int spindle_mode = 97;
     double s = 0;              // rev/min (G97) or m/min (G96)
     bool css_known = false;    // a starting diameter is known for G96
@@ -109,7 +110,7 @@ struct Modal {
 struct RunOptions {
     bool block_skip = false;      // operator switch: '/' blocks are skipped
     bool optional_stop = false;   // operator switch: M01 stops
-    long max_blocks = 50'000'000; // endless-loop guard (error 1001)
+    long max_blocks = 20'000'000; // endless-loop guard (error 1001)
 };
 
 enum class StepResult {

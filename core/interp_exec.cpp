@@ -113,13 +113,18 @@ bool Interpreter::apply_modal(const Plan& p) {
         frames_.scale_on = p.scale == 74;
         recompute_program_pos();
     }
-    // Feed: a change of unit needs F in the same block (turning.md §5.2).
+    // Feed: turning.md §5.2 wants F in the block that changes the unit, but seven
+    // handbook programs write "G95 G92 S1500" or "G80 G40 G95" and give F later
+    // (000:9661, 10037, 10186…): the unit changes, and a feed move made before a
+    // new F is the error (2, F being G95's mandatory argument).
     if (p.feed_mode >= 0 && p.feed_mode != modal_.feed_mode) {
-        if (!p.has_f)
-            return fail(2, "G" + std::to_string(p.feed_mode) + " changes the feed unit: F must be in the same block"), false;
         modal_.feed_mode = p.feed_mode;
+        if (!p.has_f) modal_.feed_set = false;
     }
-    if (p.has_f) modal_.feed = p.f;
+    if (p.has_f) {
+        modal_.feed = p.f;
+        modal_.feed_set = true;
+    }
     if (p.has_t) modal_.t = p.t;
     if (p.has_d && p.d != modal_.d) {
         modal_.d = p.d;

@@ -153,12 +153,20 @@ bool Interpreter::decode(const Block& b, Plan& p) {
             if (!word_value(w, gv, &g)) return false;
             const GCode* gc = find_g(g);
             if (!gc || !(gc->machines & (lathe ? kLathe : kMill))) {
+                std::string hint;
+                if (gc && !lathe) hint = " (a lathe function: --machine lathe?)";
+                if (gc && lathe) hint = " (a machining-centre function: --machine mill?)";
                 fail(2, "G" + std::to_string(g) + " is not a function of the NUM " +
-                            (lathe ? "lathe" : "machining centre"), w.col);
+                            (lathe ? "lathe" : "machining centre") + hint, w.col);
                 return false;
             }
             if (!gc->all_models && m_.model == 1020) {
                 fail(2, "G" + std::to_string(g) + " needs a NUM 1040 or 1060", w.col);
+                return false;
+            }
+            if (gc->support == Support::option) {
+                fail(4, "G" + std::to_string(g) + " (" + std::string(gc->text) +
+                            ") is an option this machine does not have", w.col);
                 return false;
             }
             if (gc->support == Support::later && p.unsupported < 0) p.unsupported = g;

@@ -174,6 +174,8 @@ bool Interpreter::linear(int g, const Axes& mach, bool g52, const std::bitset<kA
         e.feed = t > 0 ? e.length / t * 60.0 : 0;
         e.rpm = spindle_at(prog_[X]);
     } else {
+        if (!modal_.feed_set)
+            return fail(2, "no feed F programmed since G" + std::to_string(modal_.feed_mode) + " changed the unit"), false;
         if (modal_.feed <= 0) return fail(1, "feed F0 in a feed move"), false;
         if (modal_.feed_mode == 94 && modal_.feed * (modal_.inch ? 25.4 : 1) > m_.max_feed)
             warn(err::wFeedClamped, "F" + f3(modal_.feed) + " above the machine maximum " + f3(m_.max_feed) +
@@ -358,6 +360,8 @@ bool Interpreter::emit_arc(int g, const Axes& target, int a0, int a1, double c0,
     double arclen = std::fabs(sw) * (r0 + r1) / 2 * scale;
     double dh = helix_axis >= 0 ? std::fabs(mach[size_t(helix_axis)] - mach_[size_t(helix_axis)]) : 0;
     e.length = std::hypot(arclen, dh);
+    if (!modal_.feed_set)
+        return fail(2, "no feed F programmed since G" + std::to_string(modal_.feed_mode) + " changed the unit"), false;
     if (modal_.feed <= 0) return fail(1, "feed F0 in a feed move"), false;
     if (modal_.feed_mode == 93) return fail(4, "G02/G03 are not allowed in inverse-time feed (G93)"), false;
     e.feed = feed_rate(e.rpm);

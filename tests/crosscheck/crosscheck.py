@@ -5,6 +5,7 @@
 #
 #   crosscheck.py --pupitre build/pupitre [--count 30] [--seed 1] [--keep DIR]
 #   crosscheck.py --peer-only            check the harness: rs274 against the generator
+#   crosscheck.py --selftest             check the two parsers on built-in samples
 #
 # Exit 0 all agree, 1 mismatch (report on stdout), 64 usage, 77 skip (rs274
 # cannot be set up: no network, package unavailable). Standard library only.
