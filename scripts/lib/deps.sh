@@ -1,0 +1,21 @@
+# Shared by scripts/run, scripts/test and scripts/bench: install the Debian
+# packages pupitre needs when they are missing (sudo when not root).
+# SPDX-License-Identifier: GPL-3.0-or-later
+
+# Packages to build and run pupitre.
+PUPITRE_BUILD_DEPS=(cmake g++ make pkg-config libeigen3-dev libcli11-dev)
+# Packages the test suite adds.
+PUPITRE_TEST_DEPS=(libgtest-dev libgmock-dev clang libclang-rt-14-dev groff-base python3)
+
+ensure_packages() {
+    local missing=() p
+    for p in "$@"; do
+        dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+    done
+    [ ${#missing[@]} -eq 0 ] && return 0
+    local sudo=""
+    [ "$(id -u)" = 0 ] || sudo=sudo
+    echo "Installing missing Debian packages: ${missing[*]}" >&2
+    $sudo apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2
+}

@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# Golden trace test (LinuxCNC tests/interp style): runs one case of cases.txt and
+# compares `pupitre run --trace` (stdout), the diagnostics (stderr) and the exit
+# status with tests/golden/expected/NAME.out. With --bless, rewrites the file.
+#   golden.sh PUPITRE NAME [--bless]
+# SPDX-License-Identifier: GPL-3.0-or-later
+set -euo pipefail
+bin=$1 name=$2 bless=${3:-}
+here=$(cd "$(dirname "$0")" && pwd)
+root=$(cd "$here/../.." && pwd)
+shared=${PUPITRE_SHARED:-$root/../shared}
+line=$(grep -E "^$name[[:space:]]" "$here/cases.txt" || true)
+[ -n "$line" ] || { echo "golden: no case '$name' in cases.txt" >&2; exit 2; }
+read -r _ machine rest <<<"$line"
+args=()
+for w in $rest; do
+    case $w in
+        shared:*) f="$shared/programs/${w#shared:}"
+                  [ -f "$f" ] || { echo "golden: $f missing (shared/ not beside the repo)" >&2; exit 77; }
+                  args+=("$f") ;;
+        local:*)  args+=("$here/programs/${w#local:}") ;;
+        *)        args+=("$w") ;;
+    esac
+done
+actual=$(mktemp)
+trap 'rm -f "$actual" "$actual.err"' EXIT
+set +e
+(cd "$here" && "$bin" run --trace --machine "$machine" "${args[@]}") >"$actual" 2>"$actual.err"
+rc=$?
+set -e
+{
+    cat "$actual"
+    # Paths in diagnostics are made relative so the files do not depend on the checkout.
+    sed -e "s|$shared/programs/||g" -e "s|$here/programs/||g" "$actual.err" | sed 's/^/stderr: /'
+    echo "exit: $rc"
+} >"$actual.full"
+mv "$actual.full" "$actual"
+expected=$here/expected/$name.out
+if [ "$bless" = "--bless" ]; then
+    cp "$actual" "$expected"
+    echo "blessed $expected"
+    exit 0
+fi
+[ -f "$expected" ] || { echo "golden: $expected missing (run with --bless after review)" >&2; exit 1; }
+if ! diff -u "$expected" "$actual" >&2; then
+    echo "golden: $name differs from $expected (rerun with --bless if the change is intended)" >&2
+    exit 1
+fi

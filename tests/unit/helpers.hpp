@@ -1,0 +1,52 @@
+// Test helpers: run program text on a machine and capture the events.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/interp.hpp"
+
+namespace pupitre::test {
+
+struct Capture final : MachineSink {
+    std::vector<MoveEvent> moves;
+    std::vector<SpindleEvent> spindles;
+    std::vector<std::pair<int, int>> tools;
+    std::vector<int> stops;
+    std::vector<std::string> messages;
+    int ends = 0;
+    void move(const MoveEvent& e) override { moves.push_back(e); }
+    void spindle(const SpindleEvent& e) override { spindles.push_back(e); }
+    void tool(const Loc&, int t, int d, double) override { tools.push_back({t, d}); }
+    void stop(const Loc&, int m) override { stops.push_back(m); }
+    void message(const Loc&, int, std::string_view t) override { messages.emplace_back(t); }
+    void end(const Loc&, int) override { ++ends; }
+};
+
+struct Prog {
+    MachineProfile machine;
+    ProgramMemory mem;
+    Capture cap;
+    std::unique_ptr<Interpreter> in;
+
+    explicit Prog(const std::string& text, const std::string& machine_name = "mill",
+                 std::vector<std::pair<std::string, double>> sets = {}, RunOptions o = {}) {
+        builtin_machine(machine_name, machine);
+        Diag d;
+        mem.load_text("test.iso", text, d);
+        in = std::make_unique<Interpreter>(machine, mem, cap, o);
+        for (auto& [k, v] : sets) in->set(k, v);
+        in->start(mem.first());
+        in->run_to_end();
+    }
+    // First error code, 0 if none.
+    int error() const {
+        for (const Diag& d : in->diags())
+            if (d.is_error()) return d.code;
+        return 0;
+    }
+    double L(int n) const { return in->lvars().v[size_t(n)]; }
+};
+
+}  // namespace pupitre::test

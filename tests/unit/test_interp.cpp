@@ -1,0 +1,146 @@
+// Interpreter: program flow, spindle, M functions, limits, never stuck.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "helpers.hpp"
+
+using namespace pupitre;
+using test::Prog;
+
+TEST(Flow, G77RangeEitherOrderAndRepeat) {
+    Prog r("%1\nL1=0\nG79 N100\nN40 L1=L1+1\nN50\nN100 G77 N50 N40\nG77 N40 N50 S3\nM2\n");
+    EXPECT_EQ(r.error(), 0);
+    EXPECT_DOUBLE_EQ(r.L(1), 4);
+}
+
+TEST(Flow, SeedLoop6500) {
+    // 000:10276-10298: N120..N150 run 34 times, L3 ends at 360.
+    Prog r("%6500\nL1=8.17 L2=9.95 L3=20 L4=20\n"
+          "N120 G G54 G90 X56.02 Y-32.34 Z10\nN130 G1 Z-L1 F90\nN140 G1 X73.61 Y-42.5 Z-L2\n"
+          "N150 G Z10\nN160 EDL3\nN170 G77 N120 N150\nN180 L3=L3+L4\nN190 G79 L3<=340 N120\n"
+          "N200 G G52 X Y Z\nM2\n");
+    EXPECT_EQ(r.error(), 0);
+    EXPECT_DOUBLE_EQ(r.L(3), 360);
+    EXPECT_EQ(r.cap.moves.size(), 34u * 4 + 1);
+}
+
+TEST(Flow, CallsAndNesting) {
+    EXPECT_EQ(Prog("%1\nG77 H2\nM2\n%2\nG77 H1\n").error(), 26);  // runaway recursion
+    EXPECT_EQ(Prog("%1\nG77 H9\nM2\n").error(), 25);
+    EXPECT_EQ(Prog("%1\nG77 N10 N20\nM2\n").error(), 25);
+    EXPECT_EQ(Prog("%1\nG79 N999\nM2\n").error(), 25);
+    EXPECT_EQ(Prog("%1\nG77 -1\nM2\n").error(), 26);
+}
+
+TEST(Flow, M2InSubprogramEndsTheRun) {
+    Prog r("%1\nG77 H2\nL1=5\nM2\n%2\nM2\n");
+    EXPECT_EQ(r.error(), 0);
+    EXPECT_DOUBLE_EQ(r.L(1), 0);
+    EXPECT_EQ(r.cap.ends, 1);
+}
+
+TEST(Flow, Error20OnlyForTheMainProgram) {
+    EXPECT_EQ(Prog("%1\nG77 H2\nM2\n%2\nL1=1\n").error(), 0);
+    EXPECT_EQ(Prog("%1\nL1=1\n").error(), 20);
+}
+
+TEST(Flow, EndlessLoopIsStopped) {
+    RunOptions o;
+    o.max_blocks = 10000;
+    Prog r("%1\nN10 G79 N10\n", "mill", {}, o);
+    EXPECT_EQ(r.error(), err::kBlockBudget);
+}
+
+TEST(Flow, BlockSkip) {
+    RunOptions on;
+    on.block_skip = true;
+    EXPECT_DOUBLE_EQ(Prog("%1\n/L1=7\nM2\n").L(1), 7);
+    EXPECT_DOUBLE_EQ(Prog("%1\n/L1=7\nM2\n", "mill", {}, on).L(1), 0);
+}
+
+TEST(Spindle, ConstantSurfaceSpeedWithLimit) {
+    // 000:1625-1684: G92 S1800, G96 S200: 509.3 rev/min at X125, 3183 limited to 1800 at X20.
+    Prog r("%1\nG92 S1800\nG0 X150 Z200\nG96 S200 M3 M41\nG95 F.1\nG0 X125\nG1 X20\nZ100\nM2\n", "lathe");
+    ASSERT_EQ(r.error(), 0);
+    ASSERT_GE(r.cap.moves.size(), 4u);
+    EXPECT_NEAR(r.cap.moves[2].rpm, 1000 * 200 / (std::numbers::pi * 125), 1e-6);
+    EXPECT_NEAR(r.cap.moves[3].rpm, 1800, 1e-9);
+}
+
+TEST(Spindle, Errors) {
+    EXPECT_EQ(Prog("%1\nG97\nM2\n").error(), 28);
+    EXPECT_EQ(Prog("%1\nM3 M41\nG96 S100\nM2\n", "lathe").error(), 28);    // no diameter known
+    EXPECT_EQ(Prog("%1\nG0 X50 Z10\nM3\nG96 S100\nM2\n", "lathe").error(), 29);  // no range
+    EXPECT_EQ(Prog("%1\nG95 F.1 G1 X10\nM2\n").error(), 831);  // G95 with the spindle stopped
+    EXPECT_EQ(Prog("%1\nM64\nM2\n").error(), 899);
+}
+
+TEST(Spindle, M0StopsTheSpindle) {
+    Prog r("%1\nS500 M3\nM0\nM2\n");
+    ASSERT_EQ(r.cap.stops.size(), 1u);
+    EXPECT_EQ(r.cap.spindles.back().dir, 5);
+}
+
+TEST(Motion, TimeModel) {
+    // G1 at F100 over 10 mm: 6 s. Rapid: the slowest axis decides.
+    Prog r("%1\nG0 X0 Y0 Z0\nG1 X10 F100\nG0 X10 Y0 Z-15\nM2\n");
+    ASSERT_EQ(r.cap.moves.size(), 3u);
+    EXPECT_NEAR(r.cap.moves[1].seconds, 6.0, 1e-9);
+    EXPECT_NEAR(r.cap.moves[2].seconds, 15.0 / 15000 * 60, 1e-9);
+}
+
+TEST(Motion, FeedIsClampedWithAWarning) {
+    Prog r("%1\nG1 X10 F99999\nM2\n");
+    EXPECT_EQ(r.error(), 0);
+    bool warned = false;
+    for (const Diag& d : r.in->diags()) warned = warned || d.code == err::wFeedClamped;
+    EXPECT_TRUE(warned);
+    EXPECT_NEAR(r.cap.moves[0].feed, r.machine.max_feed, 1e-9);
+}
+
+TEST(Motion, TravelLimits) {
+    EXPECT_EQ(Prog("%1\nG0 X800\nM2\n").error(), 150);
+    EXPECT_EQ(Prog("%1\nG0 Y-600\nM2\n").error(), 151);
+    EXPECT_EQ(Prog("%1\nE60003=100000\nG0 X150\nM2\n").error(), 150);  // dynamic limit
+    // An arc whose ends are inside but whose bulge is outside the travel.
+    EXPECT_EQ(Prog("%1\nG0 X690 Y0 Z0\nG3 X690 Y20 I700 J10\nM2\n").error(), 150);
+}
+
+TEST(Motion, G52AndRadiusCompRestrictions) {
+    EXPECT_EQ(Prog("%1\nG41 G1 X10 Y10\nG52 X0\nM2\n").error(), 27);
+    EXPECT_EQ(Prog("%1\nG41 G1 X10 Y0\nM0\nM2\n").error(), 140);
+    EXPECT_EQ(Prog("%1\nG41 G1 X10 Y0\nL100=1\nM2\n").error(), 140);
+    EXPECT_EQ(Prog("%1\nG41 G1 X10 Y0\nL900=1\nG40 X0\nM2\n").error(), 0);
+    EXPECT_EQ(Prog("%1\nG41 G1 X10 Y10\nG18\nM2\n").error(), 138);
+    EXPECT_EQ(Prog("%1\nG41 G1 X10 Y0\nG74\nM2\n").error(), 143);
+    EXPECT_EQ(Prog("%1\nD1 G41 G1 X10 Y0\nM2\n", "mill", {{"D1.R", 5}}).error(), err::kUnsupported);
+}
+
+TEST(Codes, MachineAndModelAvailability) {
+    EXPECT_EQ(Prog("%1\nG96 S100\nM2\n", "mill").error(), 2);
+    EXPECT_EQ(Prog("%1\nG17\nM2\n", "lathe").error(), 2);
+    EXPECT_EQ(Prog("%1\nG13\nM2\n").error(), 2);
+    EXPECT_EQ(Prog("%1\nG7 X10 Z0\nM2\n", "lathe").error(), 4);
+    EXPECT_EQ(Prog("%1\nT1 D300 M6\nM2\n").error(), 8);
+    EXPECT_EQ(Prog("%1\nL1=300\nD L1\nM2\n").error(), 92);
+    EXPECT_EQ(Prog("%1\nL1=-100\nS L1\nM2\n").error(), 92);
+    EXPECT_EQ(Prog("%1\nM-3\nM2\n").error(), 1);
+    EXPECT_EQ(Prog("%1\nX1.23456789\nM2\n").error(), 1);
+    EXPECT_EQ(Prog("%1\nG0 X1 X2\nM2\n").error(), 3);
+    EXPECT_EQ(Prog("%1\nG0 X1 G52 Z0\nM2\n").error(), 3);
+}
+
+TEST(Codes, FeedUnitChangeWithoutF) {
+    // Handbook programs write G95 alone and F later (000:10037): accepted.
+    EXPECT_EQ(Prog("%1\nG95\nS100 M3\nG1 X10 F.1\nM2\n").error(), 0);
+    EXPECT_EQ(Prog("%1\nG95\nS100 M3\nG1 X10\nM2\n").error(), 2);
+}
+
+TEST(Text, SeveralProgramsAndNoHeader) {
+    Prog r("G0 X1 Y1\nG1 X2\n");  // 004_rectangle: a fragment, error 20
+    EXPECT_EQ(r.error(), 20);
+    EXPECT_EQ(r.cap.moves.size(), 2u);
+}
