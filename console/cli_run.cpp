@@ -121,8 +121,9 @@ int check(const RunArgs& a) {
     if (int rc = load_all(a.files, mem)) return rc;
     bool errors = false;
     std::set<std::pair<std::string, int>> reported;
-    // 1. A dry run of each file's first program, with all files as program memory.
-    for (const auto& f : a.files) {
+    // 1. A dry run of the first file's first program, as `run` does; the other
+    // files are program memory (subprograms need no M02 of their own).
+    for (const auto& f : {a.files.front()}) {
         const ProgramText* main = nullptr;
         for (const auto& p : mem.programs())
             if (p->file == f) {

@@ -68,28 +68,39 @@ struct Parser {
 
     // digits [ '.' digits ] | '.' digits
     bool number(Operand& v) {
-        size_t start = pos;
-        while (is_digit(peek())) ++pos;
-        v.int_digits = uint8_t(std::min<size_t>(pos - start, 255));
-        size_t fstart = pos;
-        if (peek() == '.') {
-            ++pos;
-            fstart = pos;
-            while (is_digit(peek())) ++pos;
-            v.frac_digits = uint8_t(std::min<size_t>(pos - fstart, 255));
+        const size_t start = pos, n = s.size();
+        const char* p = s.data();
+        int64_t m = 0;
+        size_t i = pos;
+        while (i < n && is_digit(p[i])) m = m * 10 + (p[i++] - '0');
+        size_t int_digits = i - start, frac_digits = 0;
+        if (i < n && p[i] == '.') {
+            size_t f = ++i;
+            while (i < n && is_digit(p[i])) m = m * 10 + (p[i++] - '0');
+            frac_digits = i - f;
         }
-        if (v.int_digits == 0 && v.frac_digits == 0) return fail(1, start, "number expected");
-        // from_chars wants no leading '.', so parse the span as written from `start`.
-        std::string_view span = s.substr(start, pos - start);
-        char buf[64];
-        if (span.size() >= sizeof buf - 1) return fail(1, start, "too many digits");
-        size_t k = 0;
-        if (span.front() == '.') buf[k++] = '0';
-        std::memcpy(buf + k, span.data(), span.size());
-        k += span.size();
-        if (buf[k - 1] == '.') buf[k++] = '0';
-        auto r = std::from_chars(buf, buf + k, v.num);
-        if (r.ec != std::errc()) return fail(1, start, "number out of range");
+        pos = i;
+        v.int_digits = uint8_t(std::min<size_t>(int_digits, 255));
+        v.frac_digits = uint8_t(std::min<size_t>(frac_digits, 255));
+        if (int_digits == 0 && frac_digits == 0) return fail(1, start, "number expected");
+        if (int_digits + frac_digits <= 15) {
+            // Mantissa and power of ten are exact doubles, so the one division rounds
+            // correctly: the value from_chars would give, faster.
+            static constexpr double kPow10[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7,
+                                                1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
+            v.num = double(m) / kPow10[frac_digits];
+        } else {
+            std::string_view span = s.substr(start, pos - start);
+            char buf[64];
+            if (span.size() >= sizeof buf - 1) return fail(1, start, "too many digits");
+            size_t k = 0;
+            if (span.front() == '.') buf[k++] = '0';
+            std::memcpy(buf + k, span.data(), span.size());
+            k += span.size();
+            if (buf[k - 1] == '.') buf[k++] = '0';
+            auto r = std::from_chars(buf, buf + k, v.num);
+            if (r.ec != std::errc()) return fail(1, start, "number out of range");
+        }
         v.kind = Operand::Number;
         return true;
     }
@@ -278,6 +289,8 @@ struct Parser {
     }
 
     bool structured_keyword() {
+        // Keywords are two or more letters; an ordinary word is a letter and a value.
+        if (!is_upper(peek()) || !is_upper(peek(1))) return false;
         static constexpr std::string_view kws[] = {"WHILE", "ENDW", "FOR", "ENDF", "ENDIF", "ENDI",
                                                    "ELSE", "THEN", "PUSH", "PULL", "VAR", "DO",
                                                    "REPEAT", "UNTIL"};

@@ -43,7 +43,7 @@ struct GCode {
     int16_t number;
     Group group;
     uint8_t machines;    // MachineKinds
-    bool all_models;     // false: NUM 1040/1060 only (starred in the manuals)
+    uint8_t starred;     // MachineKinds on which it is NUM 1040/1060 only (starred)
     Support support;
     std::string_view args;  // addresses the function owns, space separated ("X Z S R")
     std::string_view text;

@@ -5,6 +5,7 @@
 #include "core/eval.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 namespace pupitre {
@@ -66,7 +67,9 @@ int apply_prefix(const Term& t, double& v, std::string& why) {
             case 'T': v = std::trunc(v); break;
             case 'R':
                 if (v < 0) {
-                    why = "square root of a negative number (" + std::to_string(v) + ")";
+                    char num[32];
+                    std::snprintf(num, sizeof num, "%.3f", v);
+                    why = std::string("square root of a negative number (") + num + ")";
                     return 94;
                 }
                 v = std::sqrt(v);

@@ -14,6 +14,12 @@ Eigen::Rotation2Dd rotation(double deg) { return Eigen::Rotation2Dd(deg * std::n
 
 Axes Frames::to_machine(const Axes& prog) const {
     Axes p = prog;
+    if (ed == 0 && !scale_on && mirror.none()) {
+        // Translations only: the common case, kept short for long programs.
+        for (size_t a = 0; a < size_t(kAxes); ++a)
+            p[a] += g59[a] + dec3[a] + gauge[a] + (g53 ? 0.0 : dec1[a] + pref[a]);
+        return p;
+    }
     for (int a = 0; a < kAxes; ++a)
         if (mirror[size_t(a)]) p[size_t(a)] = -p[size_t(a)];
     double k = scale_on ? scale : 1.0;

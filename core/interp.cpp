@@ -29,6 +29,23 @@ void Interpreter::power_on() {
     // The power-on spindle state (stopped, no range) is not an event.
     last_sp_ = SpindleEvent{};
     sp_emitted_ = true;
+    update_travel();
+}
+
+// The travel checked on every move: the profile's, narrowed by the dynamic limits
+// a program writes into E6x002 / E6x003.
+void Interpreter::update_travel() {
+    for (int a = 0; a < kAxes; ++a) {
+        const AxisConfig& c = m_.axes[size_t(a)];
+        travel_lo_[size_t(a)] = c.present ? c.min : -1e300;
+        travel_hi_[size_t(a)] = c.present ? c.max : 1e300;
+        double unit = is_rotary(a) ? 1e-4 : 1e-3;
+        int base = 60000 + 1000 * a;
+        if (auto it = e_raw_.find(base + 2); it != e_raw_.end())
+            travel_lo_[size_t(a)] = std::max(travel_lo_[size_t(a)], double(it->second) * unit);
+        if (auto it = e_raw_.find(base + 3); it != e_raw_.end())
+            travel_hi_[size_t(a)] = std::min(travel_hi_[size_t(a)], double(it->second) * unit);
+    }
 }
 
 bool Interpreter::has_errors() const {
@@ -529,6 +546,7 @@ int Interpreter::write_e(int n, int64_t value, std::string& why) {
         return 0;
     }
     e_raw_[n] = value;
+    if (type == 6 && (k == 2 || k == 3)) update_travel();
     return 0;
 }
 

@@ -229,6 +229,8 @@ private:
     std::array<Corrector, 256> corr_{};
     LVars l_;
     std::map<int, int64_t> e_raw_;       // E parameters with no machine meaning (E80000…)
+    Axes travel_lo_{}, travel_hi_{};     // static travel narrowed by E6x002 / E6x003
+    void update_travel();
     std::map<int, int64_t> e_written_;   // every E written by the program
     Axes mach_{};   // machine position of the reference
     Axes prog_{};   // current program point

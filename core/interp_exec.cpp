@@ -57,7 +57,12 @@ StepResult Interpreter::execute(const Block& b) {
     if (p.has_unsupported_word)
         return fail(err::kUnsupported, "profile geometry programming (" +
                                            std::string(addr_name(p.unsupported_word)) +
-                                           ": EA, EB, ES, ET, E±) is not yet supported by pupitre");
+                                           " in a contour: the EA EB ES ET E± words) is not yet supported by pupitre");
+    if (p.g[78]) {
+        for (int i = 0; i < p.nm; ++i)
+            if (p.m[i] == 0 || p.m[i] == 1)
+                return fail(78, "G78 with a program stop M0" + std::to_string(p.m[i]));
+    }
 
     // Radius compensation restrictions (turning.md §3.7, milling.md §4.4.2).
     bool comp = modal_.radcomp != 40;

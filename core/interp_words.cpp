@@ -3,6 +3,7 @@
 // motion (turning.md §1.4, §1.7, §5; milling.md §1, §2.4).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <cmath>
+#include <cstdio>
 
 #include "core/plan.hpp"
 
@@ -72,6 +73,11 @@ bool Interpreter::word_value(const Word& w, double& out, int* int_out) {
     AddrFormat f = format_of(w.addr);
     const Operand& v = w.v;
     col_ = w.col;
+    if (v.kind == Operand::Number && v.int_digits <= f.max_int && v.frac_digits <= f.max_frac &&
+        (!v.has_sign || f.is_signed) && !int_out) {
+        out = v.neg ? -v.num : v.num;
+        return true;
+    }
     std::string why;
     switch (v.kind) {
         case Operand::Blank:
@@ -111,7 +117,9 @@ bool Interpreter::word_value(const Word& w, double& out, int* int_out) {
                 raw *= e_scale(f.fmt);
             }
             if (!f.is_signed && raw < 0) {
-                fail(92, "negative value " + std::to_string(raw) + " for " +
+                char num[32];
+                std::snprintf(num, sizeof num, "%.3f", raw);
+                fail(92, std::string("negative value ") + num + " for " +
                              std::string(addr_name(w.addr)) + ", which takes none", w.col);
                 return false;
             }
@@ -143,6 +151,8 @@ bool Interpreter::decode(const Block& b, Plan& p) {
     std::bitset<kAddrCount> seen;
     size_t first = (b.n >= 0 && !b.words.empty() && b.words[0].addr == addr1('N')) ? 1 : 0;
     bool g52_seen = false, axis_seen = false;
+    int pqr_sign_col = 0;  // a P± Q± R± met before any G16 (turning.md §1.7.2: error 3)
+    int coded_modal = 0, coded_nonmodal = 0;
 
     for (size_t i = first; i < b.words.size(); ++i) {
         const Word& w = b.words[i];
@@ -160,7 +170,7 @@ bool Interpreter::decode(const Block& b, Plan& p) {
                             (lathe ? "lathe" : "machining centre") + hint, w.col);
                 return false;
             }
-            if (!gc->all_models && m_.model == 1020) {
+            if ((gc->starred & (lathe ? kLathe : kMill)) && m_.model == 1020) {
                 fail(2, "G" + std::to_string(g) + " needs a NUM 1040 or 1060", w.col);
                 return false;
             }
@@ -325,6 +335,18 @@ bool Interpreter::decode(const Block& b, Plan& p) {
                 }
                 case 23:
                     break;  // G23 X.. Z.. I.. K..: default meanings below
+                case 78: {
+                    // One axis group: G78 P1 synchronises with itself. Each digit of P
+                    // names a group (errors.md §3.1: G78 P12345, G78 P3 -> 78).
+                    int iv;
+                    if (!word_value(w, v, &iv)) return false;
+                    if (iv != 1) {
+                        fail(78, "G78 P" + std::to_string(iv) + ": this machine has one axis group (P1)", w.col);
+                        return false;
+                    }
+                    p.g78_p = true;
+                    continue;
+                }
                 default:
                     // Arguments of functions not run yet (cycles, splines…).
                     continue;
@@ -359,6 +381,10 @@ bool Interpreter::decode(const Block& b, Plan& p) {
         }
         switch (letter) {
             case 'I': case 'J': case 'K': {
+                if (p.g[23] && !owned) {
+                    fail(3, "the arguments of G23 must not be separated by another address", w.col);
+                    return false;
+                }
                 if (!word_value(w, v)) return false;
                 int k = letter - 'I';
                 p.ijk.set(size_t(k));
@@ -369,6 +395,7 @@ bool Interpreter::decode(const Block& b, Plan& p) {
             case 'R':
                 if (w.v.kind == Operand::SignOnly) {
                     p.r_sign = w.v.neg ? -1 : 1;
+                    if (!pqr_sign_col) pqr_sign_col = w.col;
                     continue;
                 }
                 if (!word_value(w, v)) return false;
@@ -417,6 +444,13 @@ bool Interpreter::decode(const Block& b, Plan& p) {
                     fail(3, "too many M functions in one block", w.col);
                     return false;
                 }
+                // At most one modal and one non-modal coded M per block (004:1063).
+                if ((iv >= 200 && iv <= 899 && ++coded_modal > 1) ||
+                    (iv >= 100 && iv <= 199 && ++coded_nonmodal > 1)) {
+                    fail(3, "two coded M functions of the same kind in one block (M" + std::to_string(iv) + ")",
+                         w.col);
+                    return false;
+                }
                 p.m[p.nm++] = iv;
                 continue;
             }
@@ -454,8 +488,20 @@ bool Interpreter::decode(const Block& b, Plan& p) {
             }
             continue;
         }
+        if ((letter == 'P' || letter == 'Q') && w.v.kind == Operand::SignOnly) {
+            if (!pqr_sign_col) pqr_sign_col = w.col;
+            continue;
+        }
         fail(3, std::string(addr_name(w.addr)) + " has no meaning here (no function in the block takes it)",
              w.col);
+        return false;
+    }
+    if (p.g[16] && p.g16_axis < 0 && pqr_sign_col) {
+        fail(3, "the argument of G16 must follow it (G16 R+)", pqr_sign_col);
+        return false;
+    }
+    if (p.g[78] && !p.g78_p) {
+        fail(2, "G78 needs P (the axis groups to synchronise)");
         return false;
     }
     return true;

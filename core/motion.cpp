@@ -36,23 +36,12 @@ double rotary_length(const Axes& a, const Axes& b) {
 
 bool Interpreter::check_travel(const Axes& mach) {
     for (int a = 0; a < kAxes; ++a) {
-        if (!m_.has(a)) continue;
-        const AxisConfig& c = m_.axes[size_t(a)];
-        double lo = c.min, hi = c.max;
-        // Dynamic limits written by the program (E6x002 / E6x003).
-        int base = 60000 + 1000 * a;
-        if (auto it = e_raw_.find(base + 2); it != e_raw_.end())
-            lo = std::max(lo, is_rotary(a) ? it->second / 1e4 : it->second / 1e3);
-        if (auto it = e_raw_.find(base + 3); it != e_raw_.end())
-            hi = std::min(hi, is_rotary(a) ? it->second / 1e4 : it->second / 1e3);
-        double v = mach[size_t(a)];
-        if (v < lo - 1e-6 || v > hi + 1e-6) {
-            std::string axis(1, kAxisNames[size_t(a)]);
-            fail(150 + a, axis + " travel limit: the move goes to " + axis + f3(v) + " on the OM scale" +
-                              (a == X && m_.lathe ? " (radius)" : "") + ", beyond " +
-                              f3(v < lo ? lo : hi));
-            return false;
-        }
+        double v = mach[size_t(a)], lo = travel_lo_[size_t(a)], hi = travel_hi_[size_t(a)];
+        if (v >= lo - 1e-6 && v <= hi + 1e-6) continue;
+        std::string axis(1, kAxisNames[size_t(a)]);
+        fail(150 + a, axis + " travel limit: the move goes to " + axis + f3(v) + " on the OM scale" +
+                          (a == X && m_.lathe ? " (radius)" : "") + ", beyond " + f3(v < lo ? lo : hi));
+        return false;
     }
     return true;
 }
@@ -111,7 +100,7 @@ bool Interpreter::do_motion(const Plan& p) {
     }
     if (p.axis.none()) {
         bool arcwords = p.ijk.any() || p.has_r;
-        if (p.g[23] || (p.motion == 2 || p.motion == 3) && arcwords)
+        if (p.g[23] || ((p.motion == 2 || p.motion == 3) && arcwords))
             return fail(101, "circle without its end point"), false;
         return true;
     }
@@ -332,17 +321,19 @@ bool Interpreter::emit_arc(int g, const Axes& target, int a0, int a1, double c0,
         bool flip = frames_.mirror[size_t(a0)] != frames_.mirror[size_t(a1)];
         double swm = flip ? -sw : sw;
         Axes probe = mach;
-        for (int q = -8; q <= 8; ++q) {
-            double ang = q * kPi / 2;
-            double rel = ang - am;
-            // Is the quadrant point inside the swept angle?
-            double k = swm > 0 ? rel : -rel;
-            k = std::fmod(k, 2 * kPi);
-            if (k < 0) k += 2 * kPi;
-            if (k > std::fabs(swm)) continue;
-            probe[size_t(a0)] = cm[size_t(a0)] + rm * std::cos(ang);
-            probe[size_t(a1)] = cm[size_t(a1)] + rm * std::sin(ang);
-            if (!check_travel(probe)) return false;
+        // Quadrant points (0°, 90°, 180°, 270°) crossed by the swept angle.
+        double span = std::fabs(swm);
+        for (int q = 0; q < 4; ++q) {
+            double rel = q * kPi / 2 - am;
+            if (swm < 0) rel = -rel;
+            rel -= 2 * kPi * std::floor(rel / (2 * kPi));
+            if (rel > span) continue;
+            static constexpr double kCos[] = {1, 0, -1, 0}, kSin[] = {0, 1, 0, -1};
+            probe[size_t(a0)] = cm[size_t(a0)] + rm * kCos[q];
+            probe[size_t(a1)] = cm[size_t(a1)] + rm * kSin[q];
+            if (probe[size_t(a0)] < travel_lo_[size_t(a0)] - 1e-6 || probe[size_t(a0)] > travel_hi_[size_t(a0)] + 1e-6 ||
+                probe[size_t(a1)] < travel_lo_[size_t(a1)] - 1e-6 || probe[size_t(a1)] > travel_hi_[size_t(a1)] + 1e-6)
+                if (!check_travel(probe)) return false;
         }
     }
     MoveEvent e;

@@ -70,6 +70,7 @@ struct Interpreter::Plan {
     long g79_n = -1;
     long g75_n = -2;                      // -2: absent
     long g10_n = -1;
+    bool g78_p = false;
     int unsupported = -1;                 // first G that pupitre does not run yet
     Addr unsupported_word = 0;            // or first word of a function not run yet
     bool has_unsupported_word = false;
