@@ -76,7 +76,7 @@ constexpr GCode kG[] = {
     {73, G::scale, kBoth, kBoth, S::yes, "", "scale factor off"},
     {74, G::scale, kBoth, kBoth, S::yes, "", "scale factor on (E69000)"},
     {75, G::none, kBoth, 0, S::yes, "N", "declare the emergency-retract block"},
-    {76, G::none, kBoth, 0, S::later, "H N", "transfer L/E values into a program; G76+/- edit"},
+    {76, G::none, kBoth, 0, S::yes, "H N", "write the current L/E values into a program; G76+/- edit (1040/1060)"},
     {77, G::none, kBoth, 0, S::yes, "H N P S", "call a subprogram or block range, with return"},
     {78, G::none, kBoth, kBoth, S::yes, "P", "axis-group synchronisation (one group here: a no-op)"},
     {79, G::none, kBoth, 0, S::yes, "N", "jump, conditional or not"},

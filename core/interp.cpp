@@ -105,6 +105,7 @@ double Interpreter::gauge_for(int d, int axis) const {
 // The gauge of a new corrector is applied on an axis at the first block that
 // programs that axis (turning.md §3.4, 000:843-865; milling.md §4.3.3).
 void Interpreter::apply_corrector_gauges(const std::bitset<kAxes>& programmed) {
+    if (gauge_pending_.none()) return;
     for (int a = 0; a < kAxes; ++a) {
         if (programmed[size_t(a)] && gauge_pending_[size_t(a)]) {
             frames_.gauge[size_t(a)] = gauge_for(modal_.d, a);

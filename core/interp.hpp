@@ -185,6 +185,7 @@ private:
     void warn(int code, std::string detail);
     bool call(const Plan& p);
     bool jump(long label);
+    bool transfer(const Plan& p);
     bool end_of_frame();
     void after_block(int lineno);
     void reset_modal_m02();

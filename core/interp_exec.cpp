@@ -95,8 +95,97 @@ StepResult Interpreter::execute(const Block& b) {
         }
         if (go && !jump(p.g79_n)) return StepResult::error;
     }
+    if (p.g[76] && !transfer(p)) return StepResult::error;
     if (p.g[77] && !call(p)) return StepResult::error;
     return r;
+}
+
+// G76 [H..] [N.. N..]: writes the current values of the L and E assignments that
+// open the blocks of a program (or a range of it) into their reserved fields of
+// at least 10 characters (000:7679-7735, program-flow.md §6.5). The text keeps its
+// length, so labels and positions stay valid.
+bool Interpreter::transfer(const Plan& p) {
+    if (p.g76_sign)
+        return fail(err::kUnsupported, std::string("G76") + p.g76_sign +
+                                           " (creating or deleting programs and blocks) is not yet supported by pupitre"),
+               false;
+    const ProgramText* target = stack_.back().prog;
+    if (p.g76_h >= 0 && !(target = mem_.find(p.g76_h)))
+        return fail(25, "G76 H" + std::to_string(p.g76_h) + ": program %" + std::to_string(p.g76_h) +
+                            " is not in memory"),
+               false;
+    size_t from = target->begin, to = target->end;
+    if (p.g76_nn > 0) {
+        const Label* a = target->find_label(p.g76_n[0]);
+        const Label* b = target->find_label(p.g76_nn > 1 ? p.g76_n[1] : p.g76_n[0]);
+        if (!a || !b)
+            return fail(25, "G76: block N" + std::to_string(!a ? p.g76_n[0] : p.g76_n[1]) + " not found"), false;
+        if (b->offset < a->offset) std::swap(a, b);
+        from = a->offset;
+        to = std::min(target->end, target->text->find('\n', b->offset));
+    }
+    std::string& text = *target->text;
+    auto upper = [](char c) { return c >= 'A' && c <= 'Z'; };
+    auto digit = [](char c) { return c >= '0' && c <= '9'; };
+    size_t pos = from;
+    while (pos < to) {
+        size_t eol = std::min(to, text.find('\n', pos));
+        size_t i = pos;
+        auto spaces = [&]() {
+            while (i < eol && (text[i] == ' ' || text[i] == '\t')) ++i;
+        };
+        spaces();
+        if (i < eol && text[i] == '/') ++i;
+        spaces();
+        if (i < eol && text[i] == 'N' && i + 1 < eol && (digit(text[i + 1]) || text[i + 1] == ' ')) {
+            ++i;
+            spaces();
+            while (i < eol && digit(text[i])) ++i;
+        }
+        for (;;) {
+            spaces();
+            if (i + 1 >= eol || (text[i] != 'L' && text[i] != 'E') || !digit(text[i + 1])) break;
+            bool is_l = text[i] == 'L';
+            ++i;
+            long n = 0;
+            while (i < eol && digit(text[i])) n = n * 10 + (text[i++] - '0');
+            spaces();
+            if (i >= eol || text[i] != '=')
+                return fail(97, "G76: no '=' after " + std::string(is_l ? "L" : "E") + std::to_string(n)), false;
+            size_t field = ++i;
+            while (i < eol && !upper(text[i]) && text[i] != '(' && text[i] != '\r') ++i;
+            size_t width = i - field;
+            if (width < 10)
+                return fail(97, "G76: fewer than 10 characters reserved after " + std::string(is_l ? "L" : "E") +
+                                    std::to_string(n) + "="),
+                       false;
+            std::string value;
+            if (is_l) {
+                if (!LVars::valid(int(n))) return fail(91, "G76: L" + std::to_string(n) + " does not exist"), false;
+                char buf[64];
+                std::snprintf(buf, sizeof buf, "%.6f", l_.v[size_t(n)]);
+                value = buf;
+                while (value.back() == '0') value.pop_back();
+                if (value.back() == '.') value.pop_back();
+                if (value == "-0") value = "0";
+            } else {
+                int64_t raw;
+                std::string why;
+                if (int rc = read_e(int(n), raw, why)) return fail(rc, "G76: " + why), false;
+                value = std::to_string(raw);
+            }
+            // Keep the separating space before the next word.
+            size_t room = (i < eol && upper(text[i])) ? width - 1 : width;
+            if (value.size() > room)
+                return fail(97, "G76: the value " + value + " does not fit the field after " +
+                                    std::string(is_l ? "L" : "E") + std::to_string(n)),
+                       false;
+            value.resize(width, ' ');
+            text.replace(field, width, value);
+        }
+        pos = eol + 1;
+    }
+    return true;
 }
 
 bool Interpreter::apply_modal(const Plan& p) {
@@ -247,7 +336,10 @@ bool Interpreter::apply_spindle(const Plan& p) {
                                      ": limited to it");
     if (p.spindle_mode == 96 && (modal_.spindle_dir != 3 && modal_.spindle_dir != 4))
         warn(err::wSpindleStopped, "G96 with the spindle stopped: the speed applies when it starts");
-    set_spindle_event();
+    // The speed can only have changed with a spindle word, an M function, or X under G96.
+    if (p.has_s || p.spindle_mode >= 0 || p.nm > 0 || p.g[92] || p.g[52] || p.g[59] ||
+        (modal_.spindle_mode == 96 && p.axis[X]))
+        set_spindle_event();
     return true;
 }
 

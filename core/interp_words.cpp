@@ -74,9 +74,13 @@ bool Interpreter::word_value(const Word& w, double& out, int* int_out) {
     const Operand& v = w.v;
     col_ = w.col;
     if (v.kind == Operand::Number && v.int_digits <= f.max_int && v.frac_digits <= f.max_frac &&
-        (!v.has_sign || f.is_signed) && !int_out) {
+        (!v.has_sign || f.is_signed)) {
         out = v.neg ? -v.num : v.num;
-        return true;
+        if (!int_out) return true;
+        if (v.frac_digits == 0) {
+            *int_out = int(out);
+            return true;
+        }
     }
     std::string why;
     switch (v.kind) {
@@ -202,6 +206,7 @@ bool Interpreter::decode(const Block& b, Plan& p) {
                 g52_seen = true;
             }
             if (g == 77) p.g77_level = w.glevel;
+            if (g == 76) p.g76_sign = w.gsign;
             owner = gc->args.empty() ? nullptr : gc;
             owner_g = g;
             continue;
@@ -331,6 +336,19 @@ bool Interpreter::decode(const Block& b, Plan& p) {
                     if (owner_g == 79) p.g79_n = iv;
                     else if (owner_g == 75) p.g75_n = iv;
                     else p.g10_n = iv;
+                    continue;
+                }
+                case 76: {
+                    int iv;
+                    if (!word_value(w, v, &iv)) return false;
+                    if (letter == 'H') {
+                        p.g76_h = iv;
+                    } else if (p.g76_nn < 2) {
+                        p.g76_n[p.g76_nn++] = iv;
+                    } else {
+                        fail(3, "G76 takes at most two N labels", w.col);
+                        return false;
+                    }
                     continue;
                 }
                 case 23:

@@ -182,7 +182,7 @@ bool Interpreter::linear(int g, const Axes& mach, bool g52, const std::bitset<kA
     clock_ += t;
     ++moves_;
     sink_.move(e);
-    if (modal_.spindle_mode == 96) rpm_ = spindle_at(prog_[X]);
+    if (modal_.spindle_mode == 96) set_spindle_event();  // the speed followed X
     return true;
 }
 
@@ -316,14 +316,17 @@ bool Interpreter::emit_arc(int g, const Axes& target, int a0, int a1, double c0,
         cp[size_t(a1)] = c1;
         Axes cm = frames_.to_machine(cp);
         double mx = mach_[size_t(a0)] - cm[size_t(a0)], my = mach_[size_t(a1)] - cm[size_t(a1)];
-        double rm = std::hypot(mx, my);
-        double am = std::atan2(my, mx);
+        double rm = std::hypot(mx, my) + std::fabs(r1 - r0);
+        bool inside = cm[size_t(a0)] - rm >= travel_lo_[size_t(a0)] && cm[size_t(a0)] + rm <= travel_hi_[size_t(a0)] &&
+                      cm[size_t(a1)] - rm >= travel_lo_[size_t(a1)] && cm[size_t(a1)] + rm <= travel_hi_[size_t(a1)];
+        rm = std::hypot(mx, my);
+        double am = inside ? 0 : std::atan2(my, mx);
         bool flip = frames_.mirror[size_t(a0)] != frames_.mirror[size_t(a1)];
         double swm = flip ? -sw : sw;
         Axes probe = mach;
         // Quadrant points (0°, 90°, 180°, 270°) crossed by the swept angle.
         double span = std::fabs(swm);
-        for (int q = 0; q < 4; ++q) {
+        for (int q = 0; q < (inside ? 0 : 4); ++q) {
             double rel = q * kPi / 2 - am;
             if (swm < 0) rel = -rel;
             rel -= 2 * kPi * std::floor(rel / (2 * kPi));
@@ -387,7 +390,7 @@ bool Interpreter::emit_arc(int g, const Axes& target, int a0, int a1, double c0,
     clock_ += t;
     ++moves_;
     sink_.move(e);
-    if (modal_.spindle_mode == 96) rpm_ = spindle_at(prog_[X]);
+    if (modal_.spindle_mode == 96) set_spindle_event();  // the speed followed X
     return true;
 }
 

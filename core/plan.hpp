@@ -71,6 +71,10 @@ struct Interpreter::Plan {
     long g75_n = -2;                      // -2: absent
     long g10_n = -1;
     bool g78_p = false;
+    char g76_sign = 0;                    // G76+ / G76-
+    int g76_h = -1;
+    long g76_n[2] = {-1, -1};
+    int g76_nn = 0;
     int unsupported = -1;                 // first G that pupitre does not run yet
     Addr unsupported_word = 0;            // or first word of a function not run yet
     bool has_unsupported_word = false;

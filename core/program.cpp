@@ -52,22 +52,35 @@ const Label* ProgramText::find_label(long n) const {
 }
 
 bool ProgramMemory::load_file(const std::string& path, Diag& d) {
-    std::ifstream in(path, std::ios::binary);
+    std::ifstream in(path, std::ios::binary | std::ios::ate);
     if (!in) {
         d = Diag{Severity::error, 66, path, -1, 0, -1, 0, "cannot open file"};
         return false;
     }
-    std::ostringstream ss;
-    ss << in.rdbuf();
+    // Read in one piece: a program is kept whole in memory anyway.
+    std::streamoff size = in.tellg();
+    std::string text;
+    if (size > 0) {
+        text.resize(size_t(size));
+        in.seekg(0);
+        in.read(text.data(), size);
+    } else {
+        std::ostringstream ss;  // a pipe or a special file: size unknown
+        in.clear();
+        in.seekg(0);
+        ss << in.rdbuf();
+        text = std::move(ss).str();
+    }
     if (in.bad()) {
         d = Diag{Severity::error, 66, path, -1, 0, -1, 0, "read error"};
         return false;
     }
-    return load_text(path, std::move(ss).str(), d);
+    return load_text(path, std::move(text), d);
 }
 
 namespace {
 bool header_line(std::string_view line, int& number, int& index, std::string& title) {
+    if (line.empty() || (line[0] != '%' && line[0] != ' ' && line[0] != '\t')) return false;
     size_t i = 0;
     while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
     if (i >= line.size() || line[i] != '%') return false;
@@ -121,7 +134,7 @@ bool ProgramMemory::load_text(std::string name, std::string text, Diag& d) {
                  "not a text file (NUL byte found)"};
         return false;
     }
-    auto shared = std::make_shared<const std::string>(std::move(text));
+    auto shared = std::make_shared<std::string>(std::move(text));
     std::string_view all = *shared;
     std::vector<std::unique_ptr<ProgramText>> found;
     ProgramText* cur = nullptr;

@@ -24,7 +24,7 @@ struct ProgramText {
     int index = -1;       // %number.index, -1 if none
     std::string title;    // the header comment
     std::string file;     // where it was loaded from
-    std::shared_ptr<const std::string> text;  // the whole file
+    std::shared_ptr<std::string> text;  // the whole file (G76 rewrites value fields in place)
     size_t begin = 0;     // first byte of the first block line
     size_t end = 0;       // one past the last byte of the program
     int first_line = 1;   // line number at `begin`
