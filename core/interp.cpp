@@ -372,7 +372,7 @@ StepResult Interpreter::step() {
                                                 : StepResult::ended;
         loc_ = Loc{stack_.back().prog->number, lineno, -1};
         cur_text_ = line;
-        Diag d;
+        Diag& d = parse_diag_;
         if (!parse_block(line, block_, d)) {
             loc_.n = line_label(line);
             return fail(d.code, d.detail, d.column);

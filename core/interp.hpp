@@ -252,6 +252,7 @@ private:
     bool sp_emitted_ = false;
     bool x_known_ = false;  // an X was programmed (G96 start diameter)
     Block block_;  // reused parse buffer
+    Diag parse_diag_;  // filled only when a block does not parse
     std::string_view cur_text_;
 };
 
