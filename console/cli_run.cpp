@@ -44,7 +44,7 @@ int load_all(const std::vector<std::string>& files, ProgramMemory& mem) {
         Diag d;
         if (!mem.load_file(f, d)) {
             print_diag(d);
-            return d.code == 66 ? kNoInput : kDataErr;
+            return d.code == err::kCannotRead ? kNoInput : kDataErr;
         }
     }
     for (const Diag& w : mem.warnings()) print_diag(w);

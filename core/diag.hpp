@@ -12,15 +12,15 @@ namespace err {
 inline constexpr int kBlockBudget = 1001;    // endless loop: block budget exhausted
 inline constexpr int kNotText = 1002;        // unreadable or non-text input
 inline constexpr int kNoProgram = 1003;      // no program in the file
+inline constexpr int kCannotRead = 1004;     // the file cannot be opened or read
 inline constexpr int kUnsupported = 1010;    // a NUM function pupitre does not run yet
-inline constexpr int kBadSetting = 1020;     // --set NAME=VALUE not understood
 // Warnings.
 inline constexpr int wFeedClamped = 1101;
 inline constexpr int wSpeedClamped = 1102;
 inline constexpr int wUnknownM = 1103;
 inline constexpr int wSpindleStopped = 1104;
 inline constexpr int wIncrementalFirst = 1105;
-inline constexpr int wStructured = 1106;
+inline constexpr int wDuplicateProgram = 1107;
 }  // namespace err
 
 enum class Severity { error, warning };

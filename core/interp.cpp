@@ -182,7 +182,7 @@ std::string Interpreter::set(std::string_view name, double value) {
             else if (f == "DL") c.dl = value;
             else if (f == "DR") c.dr = value;
             else if (f == "A" || f == "TIP") c.tip = value;
-            else return "mill correctors have L R DL DR";
+            else return "mill correctors have L R DL DR and the end radius A";
         }
         return {};
     }

@@ -83,7 +83,7 @@ StepResult Interpreter::execute(const Block& b) {
     if (!do_m_apres(p, r)) return StepResult::error;
     if (ended_) return r;
 
-    if (p.g[79] && p.g.count() >= 1) {
+    if (p.g[79] && !p.g79_sign) {
         if (p.g79_n < 0) return fail(2, "G79 needs the label to jump to (G79 N100)");
         bool go = true;
         if (b.test.cmp != Cmp::none) {
@@ -321,6 +321,14 @@ bool Interpreter::apply_spindle(const Plan& p) {
         modal_.spindle_mode = 97;
     }
     if (p.has_s) modal_.s = p.s;
+    if (modal_.spindle_mode == 97 && p.has_s && m_.auto_range && !m_.ranges.empty() && modal_.s > 0) {
+        // Automatic range: the first range holding S (turning.md §5.12).
+        int found = -1;
+        for (size_t i = 0; i < m_.ranges.size() && found < 0; ++i)
+            if (modal_.s >= m_.ranges[i].min && modal_.s <= m_.ranges[i].max) found = int(i);
+        if (found < 0) return fail(29, "S" + fmt3(modal_.s) + " is in no spindle range"), false;
+        modal_.range = found;
+    }
     if (modal_.spindle_mode == 96 && !m_.ranges.empty() && modal_.range < 0 &&
         (p.spindle_mode == 96 || p.has_s))
         return fail(29, "constant surface speed needs a spindle range (M40-M45)"), false;

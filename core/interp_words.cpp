@@ -148,7 +148,12 @@ bool Interpreter::word_value(const Word& w, double& out, int* int_out) {
 bool Interpreter::decode(const Block& b, Plan& p) {
     const bool lathe = m_.lathe;
     const bool diam = lathe && m_.x_diameter && !modal_.radius_x;
-    const double unit = modal_.inch ? 25.4 : 1.0;
+    // G70/G71 written in the block set the unit of all its lengths.
+    bool inch = modal_.inch;
+    for (const Word& w : b.words)
+        if (w.addr == addr1('G') && w.v.kind == Operand::Number && (w.v.num == 70 || w.v.num == 71))
+            inch = w.v.num == 70;
+    const double unit = inch ? 25.4 : 1.0;
     bool inc = modal_.incremental;
     const GCode* owner = nullptr;
     int owner_g = -1;
@@ -206,6 +211,11 @@ bool Interpreter::decode(const Block& b, Plan& p) {
                 g52_seen = true;
             }
             if (g == 77) p.g77_level = w.glevel;
+            if (g == 77 && w.glevel && m_.model == 1020) {
+                fail(4, "G77 -i needs a NUM 1040 or 1060", w.col);
+                return false;
+            }
+            if (g == 79 && w.gsign) p.g79_sign = w.gsign;
             if (g == 76) p.g76_sign = w.gsign;
             owner = gc->args.empty() ? nullptr : gc;
             owner_g = g;

@@ -119,7 +119,10 @@ bool Interpreter::do_motion(const Plan& p) {
         for (int a = 0; a < kAxes; ++a)
             if (p.axis[size_t(a)]) mach[size_t(a)] = p.val[size_t(a)];
         if (!check_travel(mach)) return false;
-        return linear(modal_.motion, mach, true, p.axis);
+        if (!linear(modal_.motion, mach, true, p.axis)) return false;
+        // G96 starts again from the recomputed program X (turning.md §5.8).
+        modal_.css_x0 = modal_.css_pos0 = prog_[X];
+        return true;
     }
     if (p.g[23]) return arc3(p, target);
     if (modal_.motion == 2 || modal_.motion == 3) return arc(p, target);

@@ -68,6 +68,7 @@ struct Interpreter::Plan {
     int g77_s = 1;
     int g77_level = 0;
     long g79_n = -1;
+    char g79_sign = 0;                    // G79+ / G79-: preparation barrier, no effect here
     long g75_n = -2;                      // -2: absent
     long g10_n = -1;
     bool g78_p = false;

@@ -54,7 +54,7 @@ const Label* ProgramText::find_label(long n) const {
 bool ProgramMemory::load_file(const std::string& path, Diag& d) {
     std::ifstream in(path, std::ios::binary | std::ios::ate);
     if (!in) {
-        d = Diag{Severity::error, 66, path, -1, 0, -1, 0, "cannot open file"};
+        d = Diag{Severity::error, err::kCannotRead, path, -1, 0, -1, 0, "cannot open the file"};
         return false;
     }
     // Read in one piece: a program is kept whole in memory anyway.
@@ -72,7 +72,7 @@ bool ProgramMemory::load_file(const std::string& path, Diag& d) {
         text = std::move(ss).str();
     }
     if (in.bad()) {
-        d = Diag{Severity::error, 66, path, -1, 0, -1, 0, "read error"};
+        d = Diag{Severity::error, err::kCannotRead, path, -1, 0, -1, 0, "read error"};
         return false;
     }
     return load_text(path, std::move(text), d);
@@ -187,7 +187,7 @@ bool ProgramMemory::load_text(std::string name, std::string text, Diag& d) {
     }
     for (auto& p : found) {
         if (const ProgramText* old = find(p->number)) {
-            warnings_.push_back(Diag{Severity::warning, 1107, p->file, p->number,
+            warnings_.push_back(Diag{Severity::warning, err::wDuplicateProgram, p->file, p->number,
                                      p->first_line - 1, -1, 0,
                                      "program %" + std::to_string(p->number) +
                                          " is already loaded from " + old->file +
