@@ -19,7 +19,8 @@ int main(int argc, char** argv) {
         sub->add_option("--machine", ra.machine,
                         "machine profile: lathe, mill, mill4, mill5, or a .machine file (default mill)");
         sub->add_option("--set", ra.sets, "seed the machine before the run: PREF.X=-120.5, D1.R=4, L5=2, E80000=18000")
-            ->type_name("NAME=VALUE");
+            ->type_name("NAME=VALUE")
+            ->allow_extra_args(false);
         sub->add_flag("--block-skip", ra.block_skip, "skip the blocks that start with '/'");
         sub->add_option("--max-blocks", ra.max_blocks, "stop with error 1001 after this many blocks (default 20000000)");
         sub->add_option("files", ra.files, "program files; the first program of the first file is run")

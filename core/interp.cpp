@@ -5,15 +5,18 @@
 #include <charconv>
 #include <cmath>
 
+#include "core/gate.hpp"
 #include "core/plan.hpp"
 
 namespace pupitre {
 
 Interpreter::Interpreter(const MachineProfile& m, ProgramMemory& mem, MachineSink& sink,
                          RunOptions o)
-    : m_(m), mem_(mem), sink_(sink), opt_(o) {
+    : m_(m), mem_(mem), sink_(sink), gate_(std::make_unique<GateSink>(sink)), out_(*gate_), opt_(o) {
     power_on();
 }
+
+Interpreter::~Interpreter() = default;
 
 void Interpreter::power_on() {
     modal_ = Modal{};
@@ -238,7 +241,7 @@ bool Interpreter::end_of_frame() {
         loc_.line = f.line - 1;
         loc_.n = -1;
         fail(20, "end of program %" + std::to_string(main_->number) + " without M02");
-        sink_.end(loc_, 0);
+        out_.end(loc_, 0);
         return false;
     }
     if (f.whole && --f.repeats > 0) {
@@ -275,7 +278,7 @@ void Interpreter::after_block(int lineno) {
             if (modal_.m7 != done.saved_m7 || modal_.m8 != done.saved_m8) {
                 modal_.m7 = done.saved_m7;
                 modal_.m8 = done.saved_m8;
-                sink_.coolant(loc_, modal_.m7, modal_.m8);
+                out_.coolant(loc_, modal_.m7, modal_.m8);
             }
         }
         lineno = stack_.back().line - 1;

@@ -10,7 +10,11 @@
 #include <string_view>
 #include <vector>
 
+#include <functional>
+#include <memory>
+
 #include "core/block.hpp"
+#include "core/comp.hpp"
 #include "core/codes.hpp"
 #include "core/diag.hpp"
 #include "core/eval.hpp"
@@ -120,9 +124,12 @@ enum class StepResult {
     error,     // an error stopped the run: see diags()
 };
 
+class GateSink;
+
 class Interpreter final : private EAccess {
 public:
     Interpreter(const MachineProfile& m, ProgramMemory& mem, MachineSink& sink, RunOptions o = {});
+    ~Interpreter();
 
     // Power-on state: modal defaults, machine at home, origins from the profile.
     void power_on();
@@ -221,7 +228,37 @@ private:
 
     const MachineProfile& m_;
     ProgramMemory& mem_;
-    MachineSink& sink_;
+    MachineSink& sink_;            // the real sink
+    std::unique_ptr<GateSink> gate_;  // holds events while a compensated move waits
+    MachineSink& out_;             // where events go: the gate
+
+    // Tool radius compensation with a non-zero radius (interp_comp.cpp).
+    struct CompCtx {
+        Loc loc;
+        Modal modal;
+        int g = 1;
+        Axes target{};   // programmed target, all axes
+        double rp = 0;   // programmed arc radius (tangential feed), 0 for a line
+    };
+    struct Comp {
+        bool on = false;
+        bool waiting_entry = false;  // engaged, no move yet
+        bool has_pending = false;
+        bool pending_is_entry = false;
+        int side = 1;                // +1 left (G41), -1 right (G42), mirror included
+        double radius = 0;
+        int a0 = X, a1 = Y;
+        comp::V2 shift{0, 0};        // lathe: nose centre to tool point, R·(sz, sx)
+        comp::Elem pending;
+        CompCtx ctx;
+        comp::V2 tc{0, 0};           // tool centre where the next piece starts
+    } comp_;
+    bool comp_engage(int g);
+    bool comp_element(const comp::Elem& e, int g, const Axes& target, double rp);
+    bool comp_other_axes(const Axes& target, const std::bitset<kAxes>& axes);
+    bool comp_exit(const Plan& p, const Axes* target);
+    bool comp_emit(const std::vector<comp::Piece>& pieces, const CompCtx& ctx);
+    bool comp_line_to(const comp::V2& to, const CompCtx& ctx, const Axes& other);
     RunOptions opt_;
 
     Modal modal_;

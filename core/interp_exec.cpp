@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/gate.hpp"
 #include "core/plan.hpp"
 
 namespace pupitre {
@@ -71,11 +72,11 @@ StepResult Interpreter::execute(const Block& b) {
     if (!apply_modal(p)) return StepResult::error;
     if (!do_m_avant(p)) return StepResult::error;
     if (!apply_spindle(p)) return StepResult::error;
-    if (b.msg_channel >= 0) sink_.message(loc_, b.msg_channel, b.msg);
+    if (b.msg_channel >= 0) out_.message(loc_, b.msg_channel, b.msg);
     if (!do_motion(p)) return StepResult::error;
     if (p.dwell >= 0) {
         clock_ += p.dwell;
-        sink_.dwell(loc_, p.dwell);
+        out_.dwell(loc_, p.dwell);
     } else if (p.g[4]) {
         return fail(2, "G4 needs the dwell time in F (G4 F1.5)");
     }
@@ -224,18 +225,12 @@ bool Interpreter::apply_modal(const Plan& p) {
         modal_.d = p.d;
         gauge_pending_.set();
         if (!p.nm || std::find(p.m, p.m + p.nm, 6) == p.m + p.nm)
-            sink_.tool(loc_, modal_.tool_in_spindle, modal_.d, 0);
+            out_.tool(loc_, modal_.tool_in_spindle, modal_.d, 0);
     }
     if (p.radcomp >= 0 && p.radcomp != modal_.radcomp) {
-        if (p.radcomp != 40) {
-            const Corrector& c = corr_[size_t(modal_.d)];
-            double r = c.r + (m_.lathe ? 0 : c.dr);
-            if (std::fabs(r) > 1e-9)
-                return fail(err::kUnsupported,
-                            "radius compensation with a tool radius (D" + std::to_string(modal_.d) + " R" +
-                                fmt3(r) + ") is not yet supported by pupitre; it runs G41/G42 with R0 only"),
-                       false;
-        }
+        // The radius is taken when G41/G42 is programmed; a change of D or R takes
+        // effect after G40 and a new G41/G42 (000:898-906).
+        if (p.radcomp != 40 && !comp_engage(p.radcomp)) return false;
         modal_.radcomp = p.radcomp;
         nonmotion_in_comp_ = 0;
     }
@@ -385,7 +380,7 @@ bool Interpreter::do_m_avant(const Plan& p) {
                 }
         }
     }
-    if (coolant) sink_.coolant(loc_, modal_.m7, modal_.m8);
+    if (coolant) out_.coolant(loc_, modal_.m7, modal_.m8);
     return true;
 }
 
@@ -403,17 +398,17 @@ bool Interpreter::do_m_apres(const Plan& p, StepResult& r) {
                 // M00 and M01 stop the spindle (000:1429).
                 modal_.spindle_dir = 5;
                 set_spindle_event();
-                sink_.stop(loc_, m);
+                out_.stop(loc_, m);
                 r = StepResult::stopped;
                 break;
             case 12:
-                sink_.stop(loc_, 12);
+                out_.stop(loc_, 12);
                 r = StepResult::stopped;
                 break;
             case 2:
                 if (comp) return fail(140, "M02 under radius compensation"), false;
                 reset_modal_m02();
-                sink_.end(loc_, 2);
+                out_.end(loc_, 2);
                 ended_ = true;
                 r = StepResult::ended;
                 return true;
@@ -426,12 +421,12 @@ bool Interpreter::do_m_apres(const Plan& p, StepResult& r) {
                 modal_.tool_in_spindle = modal_.t;
                 note_tool(modal_.t);
                 clock_ += m_.tool_change_time;
-                sink_.tool(loc_, modal_.t, modal_.d, m_.tool_change_time);
+                out_.tool(loc_, modal_.t, modal_.d, m_.tool_change_time);
                 break;
             case 9:
                 if (modal_.m7 || modal_.m8) {
                     modal_.m7 = modal_.m8 = false;
-                    sink_.coolant(loc_, false, false);
+                    out_.coolant(loc_, false, false);
                 }
                 break;
             case 10: modal_.clamped = true; break;
@@ -453,7 +448,7 @@ void Interpreter::reset_modal_m02() {
     fresh.css_known = modal_.css_known;
     bool coolant = modal_.m7 || modal_.m8;
     modal_ = fresh;
-    if (coolant) sink_.coolant(loc_, false, false);
+    if (coolant) out_.coolant(loc_, false, false);
     set_spindle_event();
     frames_.g59 = Axes{};
     frames_.ed = 0;
@@ -496,7 +491,7 @@ void Interpreter::set_spindle_event() {
         return;
     sp_emitted_ = true;
     last_sp_ = e;
-    sink_.spindle(e);
+    out_.spindle(e);
 }
 
 }  // namespace pupitre

@@ -98,6 +98,7 @@ bool Interpreter::do_motion(const Plan& p) {
         if (modal_.incremental) return fail(3, "G52 needs absolute programming (G90)"), false;
         if (modal_.motion == 2 || modal_.motion == 3) return fail(3, "G52 moves are linear (G0 or G1)"), false;
     }
+    if (comp_.on && modal_.radcomp == 40 && p.axis.none()) return comp_exit(p, nullptr);
     if (p.axis.none()) {
         bool arcwords = p.ijk.any() || p.has_r;
         if (p.g[23] || ((p.motion == 2 || p.motion == 3) && arcwords))
@@ -124,8 +125,20 @@ bool Interpreter::do_motion(const Plan& p) {
         modal_.css_x0 = modal_.css_pos0 = prog_[X];
         return true;
     }
+    if (comp_.on && modal_.radcomp == 40) return comp_exit(p, &target);
     if (p.g[23]) return arc3(p, target);
     if (modal_.motion == 2 || modal_.motion == 3) return arc(p, target);
+    if (comp_.on) {
+        comp::V2 s(prog_[size_t(comp_.a0)], prog_[size_t(comp_.a1)]);
+        comp::V2 e(target[size_t(comp_.a0)], target[size_t(comp_.a1)]);
+        if ((e - s).norm() > 1e-9 || (comp_.waiting_entry && (p.axis[size_t(comp_.a0)] || p.axis[size_t(comp_.a1)]))) {
+            comp::Elem line;
+            line.a = s;
+            line.b = e;
+            return comp_element(line, modal_.motion, target, 0);
+        }
+        return comp_other_axes(target, p.axis);
+    }
     if (p.r_sign != 0 && modal_.d > 0) {
         // R- stops one tool radius short of the point, R+ beyond it (milling.md §4.5).
         const Corrector& c = corr_[size_t(modal_.d)];
@@ -184,7 +197,7 @@ bool Interpreter::linear(int g, const Axes& mach, bool g52, const std::bitset<kA
     path_ += e.length;
     clock_ += t;
     ++moves_;
-    sink_.move(e);
+    out_.move(e);
     if (modal_.spindle_mode == 96) set_spindle_event();  // the speed followed X
     return true;
 }
@@ -271,6 +284,15 @@ bool Interpreter::arc(const Plan& p, const Axes& target) {
             sw += (ccw ? 1 : -1) * 2 * kPi * best;
         }
     }
+    if (comp_.on) {
+        comp::Elem el;
+        el.arc = true;
+        el.a = s;
+        el.b = e;
+        el.c = c;
+        el.sweep = sw;
+        return comp_element(el, modal_.motion, target, r0);
+    }
     return emit_arc(modal_.motion, target, a0, a1, c.x(), c.y(), sw, r0, r1, helix ? an : -1);
 }
 
@@ -301,6 +323,15 @@ bool Interpreter::arc3(const Plan& p, const Axes& target) {
         while (sw <= 0) sw += 2 * kPi;
     } else {
         while (sw >= 0) sw -= 2 * kPi;
+    }
+    if (comp_.on) {
+        comp::Elem el;
+        el.arc = true;
+        el.a = s;
+        el.b = e;
+        el.c = c;
+        el.sweep = sw;
+        return comp_element(el, ccw ? 3 : 2, target, r);
     }
     return emit_arc(ccw ? 3 : 2, target, a0, a1, c.x(), c.y(), sw, r, r, -1);
 }
@@ -392,7 +423,7 @@ bool Interpreter::emit_arc(int g, const Axes& target, int a0, int a1, double c0,
     path_ += e.length;
     clock_ += t;
     ++moves_;
-    sink_.move(e);
+    out_.move(e);
     if (modal_.spindle_mode == 96) set_spindle_event();  // the speed followed X
     return true;
 }

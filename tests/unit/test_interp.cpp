@@ -116,7 +116,7 @@ TEST(Motion, G52AndRadiusCompRestrictions) {
     EXPECT_EQ(Prog("%1\nG41 G1 X10 Y0\nL900=1\nG40 X0\nM2\n").error(), 0);
     EXPECT_EQ(Prog("%1\nG41 G1 X10 Y10\nG18\nM2\n").error(), 138);
     EXPECT_EQ(Prog("%1\nG41 G1 X10 Y0\nG74\nM2\n").error(), 143);
-    EXPECT_EQ(Prog("%1\nD1 G41 G1 X10 Y0\nM2\n", "mill", {{"D1.R", 5}}).error(), err::kUnsupported);
+    EXPECT_EQ(Prog("%1\nD1 G41 G1 X10 Y0\nX20\nG40 X30\nM2\n", "mill", {{"D1.R", 5}}).error(), 0);
 }
 
 TEST(Codes, MachineAndModelAvailability) {
