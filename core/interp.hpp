@@ -253,6 +253,20 @@ private:
         CompCtx ctx;
         comp::V2 tc{0, 0};           // tool centre where the next piece starts
     } comp_;
+    // Drilling cycles G81-G89 and G31 (interp_cycles.cpp): modal parameters.
+    struct CycleParams {
+        bool has_z = false, has_er = false, has_eh = false, has_ef = false;
+        bool has_p = false, has_q = false, has_es = false, has_ep = false, has_k = false, has_starts = false;
+        double z = 0, er = 0, eh = 0, ef = 0, p = 0, q = 0, es = 0, ep = 0, ec = 0, ea = 0, k = 0, ek = 0;
+        double starts = 1;
+    } cyc_;
+    int cycle_axis() const;
+    bool cycle_move(int g, const Axes& target);
+    bool cycle_axis_move(int g, double v);
+    bool cycle_dwell(double s);
+    bool cycle_words(const Plan& p, int code);
+    bool cycle_run(const Plan& p, int code);
+    bool cycle_block(const Plan& p);
     bool comp_engage(int g);
     bool comp_element(const comp::Elem& e, int g, const Axes& target, double rp);
     bool comp_other_axes(const Axes& target, const std::bitset<kAxes>& axes);

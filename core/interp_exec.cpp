@@ -198,7 +198,23 @@ bool Interpreter::apply_modal(const Plan& p) {
         modal_.plane = p.plane;
     }
     if (p.units >= 0) modal_.inch = p.units == 70;
-    if (p.cycle >= 0) modal_.cycle = p.cycle;
+    if (p.g[31] && modal_.cycle != 80)
+        modal_.cycle = 80;  // G31 cancels an active drilling cycle, as G80 would
+    if (p.cycle >= 0 && p.cycle != modal_.cycle) {
+        if (p.cycle == 80) {
+            cyc_ = CycleParams{};
+        } else {
+            // Another cycle keeps Z, ER and EH and resets the rest (milling.md §6.1.3).
+            CycleParams keep;
+            keep.has_z = cyc_.has_z, keep.z = cyc_.z;
+            keep.has_er = cyc_.has_er, keep.er = cyc_.er;
+            keep.has_eh = cyc_.has_eh, keep.eh = cyc_.eh;
+            cyc_ = keep;
+        }
+        modal_.cycle = p.cycle;
+    }
+    if (p.g[16] && modal_.cycle >= 81 && modal_.cycle <= 89)
+        return fail(890, "G16 while a drilling cycle is active"), false;
     if (p.prefdec >= 0 && (p.prefdec == 53) != frames_.g53) {
         frames_.g53 = p.prefdec == 53;
         recompute_program_pos();

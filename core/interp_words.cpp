@@ -154,6 +154,26 @@ bool Interpreter::decode(const Block& b, Plan& p) {
         if (w.addr == addr1('G') && w.v.kind == Operand::Number && (w.v.num == 70 || w.v.num == 71))
             inch = w.v.num == 70;
     const double unit = inch ? 25.4 : 1.0;
+    // Is a drilling cycle active for this block (written here, or modal and not
+    // cancelled here)? Its words (ER, P, EF…) then have their cycle meaning.
+    int cycle_code = -1;
+    for (const Word& w : b.words)
+        if (w.addr == addr1('G') && w.v.kind == Operand::Number) {
+            int g = int(w.v.num);
+            if (g == 80 || (g >= 81 && g <= 89) || g == 31) cycle_code = g;
+        }
+    p.cycle_words = cycle_code == 31 || (cycle_code >= 81 && cycle_code <= 89) ||
+                    (cycle_code < 0 && modal_.cycle >= 81 && modal_.cycle <= 89);
+    auto cyc_word = [&](const Word& w) {
+        double cv;
+        if (!word_value(w, cv)) return false;
+        if (p.ncyc >= 16) {
+            fail(3, "too many cycle words in one block", w.col);
+            return false;
+        }
+        p.cyc[p.ncyc++] = {w.addr, w.addr == addrE('R') || w.addr == addrE('H') ? cv * unit : cv};
+        return true;
+    };
     bool inc = modal_.incremental;
     const GCode* owner = nullptr;
     int owner_g = -1;
@@ -363,6 +383,14 @@ bool Interpreter::decode(const Block& b, Plan& p) {
                 }
                 case 23:
                     break;  // G23 X.. Z.. I.. K..: default meanings below
+                case 31: case 81: case 82: case 83: case 84: case 85: case 86: case 87: case 88: case 89:
+                    if (is_axis_addr(w.addr, axis)) break;  // positions and bottom: below
+                    if (owner_g == 31 && (letter == 'I' || letter == 'J')) {
+                        if (!cyc_word(w)) return false;
+                        continue;
+                    }
+                    if (!cyc_word(w)) return false;
+                    continue;
                 case 78: {
                     // One axis group: G78 P1 synchronises with itself. Each digit of P
                     // names a group (errors.md §3.1: G78 P12345, G78 P3 -> 78).
@@ -508,6 +536,12 @@ bool Interpreter::decode(const Block& b, Plan& p) {
             continue;
         }
         if (w.addr == addrE('M')) continue;  // EM+/EM-: part extremes for the graphic
+        if (p.cycle_words && (letter == 'P' || letter == 'Q' || w.addr == addrE('R') || w.addr == addrE('H') ||
+                              w.addr == addrE('F') || w.addr == addrE('S') || w.addr == addrE('P') ||
+                              w.addr == addrE('C') || w.addr == addrE('A') || w.addr == addrE('K'))) {
+            if (!cyc_word(w)) return false;
+            continue;
+        }
         if (w.addr == addrE('A') || w.addr == addrE('B') || w.addr == addrE('S') ||
             w.addr == addrE('T') || w.addr == kAddrEsign) {
             if (!p.has_unsupported_word) {

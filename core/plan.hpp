@@ -76,6 +76,15 @@ struct Interpreter::Plan {
     int g76_h = -1;
     long g76_n[2] = {-1, -1};
     int g76_nn = 0;
+    // Words of a drilling cycle (G81-G89, G31): ER EH EF P Q ES EP EC EA K EK, and
+    // F in G31 (number of starts).
+    struct CycWord {
+        Addr a;
+        double v;
+    };
+    CycWord cyc[16];
+    int ncyc = 0;
+    bool cycle_words = false;             // the block is read with a cycle active
     int unsupported = -1;                 // first G that pupitre does not run yet
     Addr unsupported_word = 0;            // or first word of a function not run yet
     bool has_unsupported_word = false;
