@@ -21,6 +21,7 @@
 #include "core/frames.hpp"
 #include "core/machine.hpp"
 #include "core/program.hpp"
+#include "core/spline.hpp"
 
 namespace pupitre {
 
@@ -267,6 +268,10 @@ private:
     bool cycle_words(const Plan& p, int code);
     bool cycle_run(const Plan& p, int code);
     bool cycle_block(const Plan& p);
+    // Splines G48/G06/G49 (interp_spline.cpp).
+    std::map<int, spline::Curve> splines_;
+    bool spline_define(const Plan& p);
+    bool spline_run(const Plan& p);
     bool comp_engage(int g);
     bool comp_element(const comp::Elem& e, int g, const Axes& target, double rp);
     bool comp_other_axes(const Axes& target, const std::bitset<kAxes>& axes);

@@ -96,6 +96,12 @@ StepResult Interpreter::execute(const Block& b) {
         }
         if (go && !jump(p.g79_n)) return StepResult::error;
     }
+    if (p.g[48] && !spline_define(p)) return StepResult::error;
+    if (p.g[49]) {
+        if (modal_.radcomp != 40) return fail(140, "G49 must be programmed in G40");
+        if (p.spl_nc <= 0 || !splines_.erase(p.spl_nc))
+            return fail(605, "G49: curve NC" + std::to_string(p.spl_nc) + " is not defined");
+    }
     if (p.g[76] && !transfer(p)) return StepResult::error;
     if (p.g[77] && !call(p)) return StepResult::error;
     return r;

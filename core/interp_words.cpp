@@ -381,6 +381,18 @@ bool Interpreter::decode(const Block& b, Plan& p) {
                     }
                     continue;
                 }
+                case 6: case 48: case 49: {
+                    int iv;
+                    if (!word_value(w, v, &iv)) return false;
+                    if (w.addr == addrN('C')) p.spl_nc = iv;
+                    else if (letter == 'H') p.spl_h = iv;
+                    else if (letter == 'N' && p.spl_nn < 2) p.spl_n[p.spl_nn++] = iv;
+                    else {
+                        fail(3, "G48 takes NC, H and two N labels", w.col);
+                        return false;
+                    }
+                    continue;
+                }
                 case 23:
                     break;  // G23 X.. Z.. I.. K..: default meanings below
                 case 31: case 81: case 82: case 83: case 84: case 85: case 86: case 87: case 88: case 89:

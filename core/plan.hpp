@@ -85,6 +85,9 @@ struct Interpreter::Plan {
     CycWord cyc[16];
     int ncyc = 0;
     bool cycle_words = false;             // the block is read with a cycle active
+    int spl_nc = -1, spl_h = -1;          // G48 / G06 / G49: curve, program
+    long spl_n[2] = {-1, -1};
+    int spl_nn = 0;
     int unsupported = -1;                 // first G that pupitre does not run yet
     Addr unsupported_word = 0;            // or first word of a function not run yet
     bool has_unsupported_word = false;
