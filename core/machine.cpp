@@ -146,6 +146,12 @@ std::string parse_machine(std::string_view text, MachineProfile& m) {
         } else if (key == "tool_change_time") {
             if (!number(val, d1) || d1 < 0) return bad("tool_change_time must be >= 0");
             m.tool_change_time = d1;
+        } else if (key == "kinematics") {
+            if (val != "table" && val != "table-head") return bad("kinematics must be table or table-head");
+            m.kinematics = val;
+        } else if (key == "kinematics.lx" || key == "kinematics.ly" || key == "kinematics.lz") {
+            if (!number(val, d1)) return bad("kinematics constants are lengths");
+            (key.back() == 'x' ? m.kin_lx : key.back() == 'y' ? m.kin_ly : m.kin_lz) = d1;
         } else {
             return bad("unknown key '" + std::string(key) + "'");
         }
@@ -156,6 +162,8 @@ std::string parse_machine(std::string_view text, MachineProfile& m) {
     if (!any) return "the profile declares no axes";
     if (m.lathe && (!m.has(X) || !m.has(Z))) return "a lathe needs the X and Z axes";
     if (!m.lathe) m.x_diameter = false;
+    if (m.kinematics == "table" && !m.has(B)) return "table kinematics need the B axis";
+    if (m.kinematics == "table-head" && (!m.has(B) || !m.has(C))) return "table-head kinematics need B and C";
     return {};
 }
 

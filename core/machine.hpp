@@ -43,6 +43,10 @@ struct MachineProfile {
     int tools = 12;
     int correctors = 255;
     double tool_change_time = 2.0;
+    // 4/5 axes (milling.md §9): "table" (B table, mill4) or "table-head" (C table and
+    // B head, mill5), with the constants L_X, L_Y, L_Z of the course notes.
+    std::string kinematics;
+    double kin_lx = 0, kin_ly = 0, kin_lz = 0;
 
     bool has(int axis) const { return axis >= 0 && axis < kAxes && axes[size_t(axis)].present; }
 };

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -52,22 +53,24 @@ const Label* ProgramText::find_label(long n) const {
 }
 
 bool ProgramMemory::load_file(const std::string& path, Diag& d) {
-    std::ifstream in(path, std::ios::binary | std::ios::ate);
+    std::ifstream in(path, std::ios::binary);
     if (!in) {
         d = Diag{Severity::error, err::kCannotRead, path, -1, 0, -1, 0, "cannot open the file"};
         return false;
     }
-    // Read in one piece: a program is kept whole in memory anyway.
-    std::streamoff size = in.tellg();
+    // A regular file is read in one piece (a program is kept whole in memory
+    // anyway); a pipe or a terminal is read to its end.
+    std::error_code ec;
     std::string text;
-    if (size > 0) {
-        text.resize(size_t(size));
-        in.seekg(0);
-        in.read(text.data(), size);
+    if (std::filesystem::is_regular_file(path, ec)) {
+        auto size = std::filesystem::file_size(path, ec);
+        if (!ec) {
+            text.resize(size_t(size));
+            in.read(text.data(), std::streamsize(size));
+            text.resize(size_t(in.gcount()));
+        }
     } else {
-        std::ostringstream ss;  // a pipe or a special file: size unknown
-        in.clear();
-        in.seekg(0);
+        std::ostringstream ss;
         ss << in.rdbuf();
         text = std::move(ss).str();
     }

@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "core/kinematics.hpp"
+
 namespace pupitre {
 
 void append_fixed4(std::string& s, double v) {
@@ -253,6 +255,28 @@ std::string summary_json(const Interpreter& in, const std::string& file) {
     axes_json(o, in, in.program_pos());
     o += ",\"om\":";
     axes_json(o, in, in.machine_pos());
+    const MachineProfile& m = in.machine();
+    if (!m.kinematics.empty()) {
+        // The tool in the part frame by the kinematic model (milling.md §9).
+        const Axes& p = in.program_pos();
+        Eigen::Isometry3d h = m.kinematics == "table"
+                                  ? kin::forward4({p[X], p[Y], p[Z], p[B]}, m.kin_lx, m.kin_lz)
+                                  : kin::forward5({p[X], p[Y], p[Z], p[B], p[C]}, m.kin_lx, m.kin_ly, m.kin_lz);
+        Eigen::Vector3d t = h.translation(), k = h.linear().col(2);
+        o += ",\"tool_in_part\":{\"X\":";
+        append_fixed4(o, t.x());
+        o += ",\"Y\":";
+        append_fixed4(o, t.y());
+        o += ",\"Z\":";
+        append_fixed4(o, t.z());
+        o += ",\"axis\":[";
+        append_fixed4(o, k.x());
+        o += ',';
+        append_fixed4(o, k.y());
+        o += ',';
+        append_fixed4(o, k.z());
+        o += "]}";
+    }
     o += ",\"tools\":[";
     for (size_t i = 0; i < in.tools_used().size(); ++i) {
         if (i) o += ',';
