@@ -1,14 +1,23 @@
 // The batch commands of the pupitre executable (DESIGN §2.1).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
+#include <memory>
 #include <string>
 #include <vector>
+
+namespace pupitre {
+class ProgramMemory;
+class Interpreter;
+namespace store {
+class Store;
+}
+}  // namespace pupitre
 
 namespace pupitre::cli {
 
 // sysexits(3)
 inline constexpr int kOk = 0, kProgramErrors = 1, kUsage = 64, kDataErr = 65, kNoInput = 66,
-                     kSoftware = 70;
+                     kSoftware = 70, kCantCreate = 73, kIoErr = 74;
 
 struct RunArgs {
     std::string machine = "mill";
@@ -19,9 +28,45 @@ struct RunArgs {
     bool block_skip = false;
     bool optional_stop = false;
     long max_blocks = 20'000'000;
+    std::string db;  // --db: the store is program memory and machine state
 };
 
 int run(const RunArgs& a);
 int check(const RunArgs& a);
+
+// The store commands (cli_store.cpp). `db` empty: the default store.
+struct StoreArgs {
+    std::string db;
+    std::vector<std::string> files;  // import
+    int number = -1;                 // import --number, for a file with no % line
+    std::vector<int> numbers;        // export N..., rm N, history N, restore N REV
+    int revision = 0;                // restore
+    std::string output;              // export -o
+};
+
+int store_import(const StoreArgs& a);
+int store_export(const StoreArgs& a);
+int store_list(const StoreArgs& a);
+int store_rm(const StoreArgs& a);
+int store_history(const StoreArgs& a);
+int store_restore(const StoreArgs& a);
+
+// The store of one `run` or `check --db` (cli_store.cpp). Each call prints its
+// problems and returns an exit code, 0 when all is well.
+class RunStore {
+public:
+    RunStore();
+    ~RunStore();
+    int open(const std::string& db);
+    // Stored programs become program memory after the files (G77 H).
+    int load_programs(ProgramMemory& mem);
+    // The stored correctors and origins of the machine, before --set.
+    int seed(Interpreter& in);
+    // The run's writes to correctors and origins, kept with an audit row each.
+    int persist(const Interpreter& in, const std::string& file, const std::string& machine_arg);
+
+private:
+    std::unique_ptr<store::Store> s_;
+};
 
 }  // namespace pupitre::cli

@@ -83,6 +83,11 @@ int run(const RunArgs& a) {
     if (!load_machine(a.machine, m)) return kUsage;
     ProgramMemory mem;
     if (int rc = load_all(a.files, mem)) return rc;
+    RunStore store;
+    if (!a.db.empty()) {
+        if (int rc = store.open(a.db)) return rc;
+        if (int rc = store.load_programs(mem)) return rc;
+    }
     static char outbuf[1 << 16];
     std::setvbuf(stdout, outbuf, _IOFBF, sizeof outbuf);
     TraceWriter trace(stdout, m);
@@ -92,6 +97,8 @@ int run(const RunArgs& a) {
     o.optional_stop = a.optional_stop;
     o.max_blocks = a.max_blocks;
     Interpreter in(m, mem, a.trace ? static_cast<MachineSink&>(trace) : quiet, o);
+    if (!a.db.empty())
+        if (int rc = store.seed(in)) return rc;
     if (int rc = apply_sets(a, in)) return rc;
     const ProgramText* main = nullptr;
     for (const auto& p : mem.programs())
@@ -111,6 +118,9 @@ int run(const RunArgs& a) {
         std::fputs(s.c_str(), stdout);
     }
     std::fflush(stdout);
+    // What the program wrote into correctors and origins stays, as on the NUM.
+    if (!a.db.empty())
+        if (int rc = store.persist(in, a.files.front(), a.machine)) return rc;
     return in.has_errors() ? kProgramErrors : kOk;
 }
 
@@ -119,6 +129,11 @@ int check(const RunArgs& a) {
     if (!load_machine(a.machine, m)) return kUsage;
     ProgramMemory mem;
     if (int rc = load_all(a.files, mem)) return rc;
+    RunStore store;  // check stores nothing back: no persist
+    if (!a.db.empty()) {
+        if (int rc = store.open(a.db)) return rc;
+        if (int rc = store.load_programs(mem)) return rc;
+    }
     bool errors = false;
     std::set<std::pair<std::string, int>> reported;
     // 1. A dry run of the first file's first program, as `run` does; the other
@@ -136,6 +151,8 @@ int check(const RunArgs& a) {
         o.block_skip = a.block_skip;
         o.max_blocks = a.max_blocks;
         Interpreter in(m, mem, quiet, o);
+        if (!a.db.empty())
+            if (int rc = store.seed(in)) return rc;
         if (int rc = apply_sets(a, in)) return rc;
         in.start(main);
         in.run_to_end();
@@ -147,8 +164,11 @@ int check(const RunArgs& a) {
     }
     // 2. Every other block must parse too. A block the dry run did not reach gets a
     // warning: the controller would only meet it on another path.
+    // Stored programs are program memory, not what is being checked.
+    std::set<std::string> files(a.files.begin(), a.files.end());
     Block b;
     for (const auto& p : mem.programs()) {
+        if (!files.count(p->file)) continue;
         std::string_view body = p->body();
         int line = p->first_line;
         size_t pos = 0;

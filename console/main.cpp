@@ -1,6 +1,7 @@
 // pupitre: entry point and command line (DESIGN §2.1).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <CLI/CLI.hpp>
+#include <charconv>
 #include <cstdio>
 #include <exception>
 
@@ -9,10 +10,27 @@
 
 using namespace pupitre;
 
+namespace {
+// A program number as typed: 300 or %300.
+bool parse_number(std::string s, int& n) {
+    if (!s.empty() && s[0] == '%') s.erase(0, 1);
+    auto r = std::from_chars(s.data(), s.data() + s.size(), n);
+    return !s.empty() && r.ec == std::errc() && r.ptr == s.data() + s.size() && n >= 0;
+}
+}  // namespace
+
 int main(int argc, char** argv) {
     CLI::App app{"pupitre - the operator panel of a NUM 1020/1040/1060 CNC, with the machine simulated"};
     app.set_version_flag("--version", std::string("pupitre ") + PUPITRE_VERSION);
     app.require_subcommand(0, 1);
+    // --db is the program's option; run and check pass it up when given after them.
+    app.fallthrough();
+    std::string db;
+    app.add_option(
+           "--db", db,
+           "the program store (default $XDG_DATA_HOME/pupitre/pupitre.db, created on first use); "
+           "run and check use a store only when given")
+        ->type_name("FILE");
 
     cli::RunArgs ra;
     auto add_common = [&](CLI::App* sub) {
@@ -35,6 +53,28 @@ int main(int argc, char** argv) {
     CLI::App* check = app.add_subcommand("check", "report every problem a dry run would meet, without a trace");
     add_common(check);
 
+    cli::StoreArgs sa;
+    std::vector<std::string> numbers;  // as typed, checked after parsing
+    std::string number;
+    CLI::App* imp =
+        app.add_subcommand("import", "store the % programs of files (one transaction for all)");
+    imp->add_option("files", sa.files, "program files; each % program is stored under its number")
+        ->required();
+    imp->add_option("--number", sa.number, "the number for a file with no % line")->type_name("N");
+    CLI::App* exp =
+        app.add_subcommand("export", "write stored programs exactly as imported or saved");
+    exp->add_option("numbers", numbers, "program numbers, written one after the other")->required();
+    exp->add_option("-o,--output", sa.output, "write to FILE instead of the standard output")
+        ->type_name("FILE");
+    CLI::App* list = app.add_subcommand("list", "list the stored programs");
+    CLI::App* rm = app.add_subcommand("rm", "delete a stored program (its history stays)");
+    rm->add_option("number", number, "program number")->required();
+    CLI::App* hist = app.add_subcommand("history", "the revisions of a stored program");
+    hist->add_option("number", number, "program number")->required();
+    CLI::App* rest = app.add_subcommand("restore", "make an earlier revision current again");
+    rest->add_option("number", number, "program number")->required();
+    rest->add_option("revision", sa.revision, "revision (see history)")->required();
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -48,15 +88,35 @@ int main(int argc, char** argv) {
         if (what.find("does not exist") != std::string::npos) return cli::kNoInput;
         return cli::kUsage;
     }
+    ra.db = db;
+    sa.db = db;
+    if (!number.empty()) numbers.push_back(number);
+    for (const auto& t : numbers) {
+        int n = 0;
+        if (!parse_number(t, n)) {
+            std::fprintf(stderr, "pupitre: '%s' is not a program number\n", t.c_str());
+            return cli::kUsage;
+        }
+        sa.numbers.push_back(n);
+    }
     try {
         if (*run) return cli::run(ra);
         if (*check) return cli::check(ra);
+        if (*imp) return cli::store_import(sa);
+        if (*exp) return cli::store_export(sa);
+        if (*list) return cli::store_list(sa);
+        if (*rm) return cli::store_rm(sa);
+        if (*hist) return cli::store_history(sa);
+        if (*rest) return cli::store_restore(sa);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "pupitre: internal error: %s\n", e.what());
         return cli::kSoftware;
     }
     std::fputs(app.help().c_str(), stdout);
-    std::fputs("\nThe console (pupitre with no command) is not part of this version yet: use run or check.\n",
-               stdout);
+    std::fputs(
+        "\nThe console (pupitre with no command) is not part of this version yet: use run, check "
+        "or the\n"
+        "store commands.\n",
+        stdout);
     return cli::kUsage;
 }

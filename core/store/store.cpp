@@ -25,11 +25,16 @@ static_assert(kSchemaVersion == schema::kCount, "kSchemaVersion must match the m
 
 int exit_code(Fault f) {
     switch (f) {
-        case Fault::none: return 0;
-        case Fault::cannot_create: return 73;
-        case Fault::io: return 74;
-        case Fault::bad_data: return 65;
-        case Fault::not_found: return 66;
+        case Fault::none:
+            return 0;
+        case Fault::cannot_create:
+            return 73;
+        case Fault::io:
+            return 74;
+        case Fault::bad_data:
+            return 65;
+        case Fault::not_found:
+            return 66;
     }
     return 70;
 }
@@ -44,8 +49,10 @@ std::string default_path() {
     if (const char* x = std::getenv("XDG_DATA_HOME"); x && *x == '/')
         return std::string(x) + "/pupitre/pupitre.db";
     std::string home;
-    if (const char* h = std::getenv("HOME"); h && *h) home = h;
-    else if (struct passwd* pw = getpwuid(getuid()); pw && pw->pw_dir) home = pw->pw_dir;
+    if (const char* h = std::getenv("HOME"); h && *h)
+        home = h;
+    else if (struct passwd* pw = getpwuid(getuid()); pw && pw->pw_dir)
+        home = pw->pw_dir;
     if (home.empty()) return {};
     return home + "/.local/share/pupitre/pupitre.db";
 }
@@ -109,7 +116,8 @@ Error precheck(const std::string& path, bool& empty) {
         return {};
     }
     if (n < 100 || std::memcmp(h, "SQLite format 3", 16) != 0)
-        return {Fault::bad_data, path + ": not a pupitre store (not an SQLite database); left untouched"};
+        return {Fault::bad_data,
+                path + ": not a pupitre store (not an SQLite database); left untouched"};
     uint32_t page = uint32_t(h[16]) << 8 | h[17];
     if (page == 1) page = 65536;
     uint32_t pages = be32(h + 28);
@@ -137,14 +145,18 @@ Error Store::fail(int rc, std::string_view what) {
     std::string head = path_ + ": " + std::string(what) + ": ";
     switch (primary) {
         case SQLITE_FULL:
-            return {Fault::io, head + "disk full (or the store reached its size limit); nothing was changed"};
+            return {Fault::io,
+                    head + "disk full (or the store reached its size limit); nothing was changed"};
         case SQLITE_BUSY:
-        case SQLITE_LOCKED:
-            return {Fault::io, head + "the store is locked by another process (waited " +
-                                   std::to_string(opt_.busy_timeout_ms / 1000.0).substr(0, 3) +
-                                   " s); nothing was changed, try again"};
+        case SQLITE_LOCKED: {
+            char waited[32];
+            std::snprintf(waited, sizeof waited, "%.1f s", opt_.busy_timeout_ms / 1000.0);
+            return {Fault::io, head + "the store is locked by another process (waited " + waited +
+                                   "); nothing was changed, try again"};
+        }
         case SQLITE_NOTADB:
-            return {Fault::bad_data, head + "not a pupitre store (not an SQLite database); left untouched"};
+            return {Fault::bad_data,
+                    head + "not a pupitre store (not an SQLite database); left untouched"};
         case SQLITE_CORRUPT:
             return {Fault::bad_data, head + "the store is damaged (" + sqlmsg +
                                          "); nothing was changed: restore a backup, or try "
@@ -156,23 +168,32 @@ Error Store::fail(int rc, std::string_view what) {
                         head + "cannot open the store: its directory " + dir +
                             " is not writable (SQLite keeps its -wal and -shm files there)"};
             int e = db_ ? sqlite3_system_errno(db_) : 0;
-            return {Fault::cannot_create,
-                    head + "cannot open the store" + (e ? std::string(": ") + std::strerror(e) : "")};
+            return {Fault::cannot_create, head + "cannot open the store" +
+                                              (e ? std::string(": ") + std::strerror(e) : "")};
         }
         case SQLITE_READONLY:
         case SQLITE_PERM:
         case SQLITE_AUTH:
-            return {Fault::cannot_create, head + "cannot write the store (" + sqlmsg +
-                                              "): check the permissions of the file and its directory"};
+            return {Fault::cannot_create,
+                    head + "cannot write the store (" + sqlmsg +
+                        "): check the permissions of the file and its directory"};
         case SQLITE_TOOBIG:
             return {Fault::bad_data, head + "too big for the store (" + sqlmsg + ")"};
         case SQLITE_CONSTRAINT:
         case SQLITE_MISMATCH:
-            return {Fault::bad_data, head + "refused by the store (" + sqlmsg + "); nothing was changed"};
+            return {Fault::bad_data,
+                    head + "refused by the store (" + sqlmsg + "); nothing was changed"};
         case SQLITE_IOERR: {
             int e = db_ ? sqlite3_system_errno(db_) : 0;
-            if (e == ENOSPC || e == EDQUOT)
-                return {Fault::io, head + "disk full; nothing was changed"};
+            if (e == ENOSPC || e == EDQUOT || e == EFBIG)
+                return {Fault::io,
+                        head + "disk full (" + std::strerror(e) + "); nothing was changed"};
+            // errno is often gone by now (the rollback made other calls).
+            if (rc == SQLITE_IOERR_WRITE || rc == SQLITE_IOERR_FSYNC || rc == SQLITE_IOERR_TRUNCATE)
+                return {Fault::io,
+                        head +
+                            "cannot write the store (disk full, quota or file size limit "
+                            "reached, or a device error); nothing was changed"};
             return {Fault::io, head + "I/O error (" + sqlmsg +
                                    (e ? std::string(": ") + std::strerror(e) : "") +
                                    "); nothing was changed"};
@@ -264,12 +285,27 @@ int query_int(sqlite3* db, const char* sql, int64_t& out) {
     return rc;
 }
 
+int query_text(sqlite3* db, const char* sql, std::string& out) {
+    sqlite3_stmt* s = nullptr;
+    int rc = sqlite3_prepare_v2(db, sql, -1, &s, nullptr);
+    if (rc != SQLITE_OK) return rc;
+    rc = sqlite3_step(s);
+    if (rc == SQLITE_ROW) {
+        const unsigned char* t = sqlite3_column_text(s, 0);
+        out = t ? reinterpret_cast<const char*>(t) : "";
+        rc = SQLITE_OK;
+    }
+    sqlite3_finalize(s);
+    return rc;
+}
+
 }  // namespace
 
 Result<std::unique_ptr<Store>> Store::open(const std::string& path, const Options& o) {
     Result<std::unique_ptr<Store>> r;
     if (path.empty()) {
-        r.error = {Fault::cannot_create, "no store path: set HOME or XDG_DATA_HOME, or give --db FILE"};
+        r.error = {Fault::cannot_create,
+                   "no store path: set HOME or XDG_DATA_HOME, or give --db FILE"};
         return r;
     }
     std::unique_ptr<Store> st(new Store);
@@ -284,8 +320,8 @@ Result<std::unique_ptr<Store>> Store::open(const std::string& path, const Option
         }
         if (o.create_parents) {
             if (int e = make_dirs(dir_of(path))) {
-                r.error = {Fault::cannot_create, path + ": cannot create the directory " + dir_of(path) +
-                                                     ": " + std::strerror(e)};
+                r.error = {Fault::cannot_create, path + ": cannot create the directory " +
+                                                     dir_of(path) + ": " + std::strerror(e)};
                 return r;
             }
         }
@@ -294,7 +330,8 @@ Result<std::unique_ptr<Store>> Store::open(const std::string& path, const Option
 
     bool empty = false;
     if ((r.error = precheck(path, empty))) return r;
-    int rc = sqlite3_open_v2(path.c_str(), &st->db_, SQLITE_OPEN_READWRITE | SQLITE_OPEN_NOMUTEX, nullptr);
+    int rc = sqlite3_open_v2(path.c_str(), &st->db_, SQLITE_OPEN_READWRITE | SQLITE_OPEN_NOMUTEX,
+                             nullptr);
     if (rc == SQLITE_OK) rc = configure(st->db_, o);
     if (rc != SQLITE_OK) {
         r.error = st->fail(rc, "cannot open the store");
@@ -307,6 +344,10 @@ Result<std::unique_ptr<Store>> Store::open(const std::string& path, const Option
     bool fresh = false;
     if ((r.error = st->validate_and_migrate(fresh))) return r;
     if (fresh) st->created_ = true;
+    // The journal mode is kept in the file: set it again if something changed it.
+    std::string mode;
+    if (query_text(st->db_, "PRAGMA journal_mode", mode) == SQLITE_OK && mode != "wal")
+        if ((r.error = st->exec("PRAGMA journal_mode = WAL"))) return r;
     r.value = std::move(st);
     return r;
 }
@@ -318,8 +359,9 @@ Error Store::create_file() {
     std::string tmp = dir_of(path_) + "/." + path_.substr(path_.rfind('/') + 1) + ".new-" +
                       std::to_string(getpid()) + "-" + std::to_string(g_temp_counter++);
     sqlite3* db = nullptr;
-    int rc = sqlite3_open_v2(tmp.c_str(), &db,
-                             SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE | SQLITE_OPEN_NOMUTEX, nullptr);
+    int rc =
+        sqlite3_open_v2(tmp.c_str(), &db,
+                        SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE | SQLITE_OPEN_NOMUTEX, nullptr);
     if (rc == SQLITE_OK) rc = configure(db, opt_);
     auto give_up = [&](Error e) {
         for (auto& [sql, s] : stmts_) sqlite3_finalize(s);
@@ -341,19 +383,22 @@ Error Store::create_file() {
     Error e = validate_and_migrate(fresh);
     if (!e) e = exec("PRAGMA journal_mode = WAL");
     if (e) {
-        e.message = path_ + ": cannot create the store: " + e.message.substr(e.message.find(": ") + 2);
+        e.message =
+            path_ + ": cannot create the store: " + e.message.substr(e.message.find(": ") + 2);
         return give_up(e);
     }
     for (auto& [sql, s] : stmts_) sqlite3_finalize(s);
     stmts_.clear();
     rc = sqlite3_close(db);  // checkpoints the log into the file and removes it
     db_ = nullptr;
-    if (rc != SQLITE_OK) return give_up({Fault::io, path_ + ": cannot create the store: " + sqlite3_errstr(rc)});
+    if (rc != SQLITE_OK)
+        return give_up({Fault::io, path_ + ": cannot create the store: " + sqlite3_errstr(rc)});
     if (int fd = ::open(tmp.c_str(), O_RDONLY | O_CLOEXEC); fd >= 0) {
         ::fsync(fd);
         ::close(fd);
     }
-    if (::link(tmp.c_str(), path_.c_str()) != 0 && errno != EEXIST) {
+    bool linked = ::link(tmp.c_str(), path_.c_str()) == 0;
+    if (!linked && errno != EEXIST) {
         int err = errno;  // EEXIST: another process created it meanwhile; we use theirs
         remove_with_sidecars(tmp);
         return {Fault::cannot_create, path_ + ": cannot create the store: " + std::strerror(err)};
@@ -363,7 +408,7 @@ Error Store::create_file() {
         ::fsync(fd);
         ::close(fd);
     }
-    created_ = true;
+    created_ = linked;
     return {};
 }
 
@@ -387,8 +432,10 @@ Error Store::validate_and_migrate(bool& fresh) {
             if (attempt) rollback();
             char id[16];
             std::snprintf(id, sizeof id, "0x%08X", unsigned(uint32_t(app)));
-            return {Fault::bad_data, path_ + ": not a pupitre store (an SQLite database of another "
-                                             "application, application_id " + id + "); left untouched"};
+            return {Fault::bad_data, path_ +
+                                         ": not a pupitre store (an SQLite database of another "
+                                         "application, application_id " +
+                                         id + "); left untouched"};
         }
         if (version > kSchemaVersion) {
             if (attempt) rollback();
@@ -457,8 +504,9 @@ Result<std::string> Store::integrity_check() {
     if (rc == SQLITE_OK) {
         while (sqlite3_step(s) == SQLITE_ROW) {
             const unsigned char* t = sqlite3_column_text(s, 0);
-            out += std::string("\nforeign key broken in ") + (t ? reinterpret_cast<const char*>(t) : "?") +
-                   " row " + std::to_string(sqlite3_column_int64(s, 1));
+            out += std::string("\nforeign key broken in ") +
+                   (t ? reinterpret_cast<const char*>(t) : "?") + " row " +
+                   std::to_string(sqlite3_column_int64(s, 1));
         }
         sqlite3_finalize(s);
     }

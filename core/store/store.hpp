@@ -5,6 +5,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -25,8 +26,8 @@ enum class Fault {
     none,
     cannot_create,  // 73: the store or its directory cannot be created or written
     io,             // 74: I/O error, disk full, locked longer than the busy timeout
-    bad_data,       // 65: not a database, not ours, newer schema, truncated or corrupt; a refused text
-    not_found,      // 66: no such program or revision
+    bad_data,   // 65: not a database, not ours, newer schema, truncated or corrupt; a refused text
+    not_found,  // 66: no such program or revision
 };
 int exit_code(Fault f);
 
@@ -45,12 +46,12 @@ struct Result {
 };
 
 struct Options {
-    bool create = true;            // create (and seed) the file when it does not exist
-    bool seed = true;              // seed machine profiles and demo programs at creation
-    bool create_parents = false;   // mkdir -p the directory (the default store only)
-    int busy_timeout_ms = 3000;    // how long to wait for another writer
-    long max_page_count = 0;       // > 0: cap the file at this many pages (tests: disk full)
-    std::string user;              // who is written in revisions and audit rows; "" = the OS user
+    bool create = true;           // create (and seed) the file when it does not exist
+    bool seed = true;             // seed machine profiles and demo programs at creation
+    bool create_parents = false;  // mkdir -p the directory (the default store only)
+    int busy_timeout_ms = 3000;   // how long to wait for another writer
+    long max_page_count = 0;      // > 0: cap the file at this many pages (tests: disk full)
+    std::string user;             // who is written in revisions and audit rows; "" = the OS user
 };
 
 // The default store: $XDG_DATA_HOME/pupitre/pupitre.db, else ~/.local/share/pupitre/pupitre.db.
@@ -67,21 +68,21 @@ inline constexpr int kHead = -1;  // whatever is current (import, restore): neve
 
 struct ProgramInfo {
     int number = 0;
-    int index = -1;          // %number.index, -1 when none
-    std::string title;       // the header comment
-    int revision = 0;        // the current revision
-    int conflict = 0;        // a revision kept aside by a conflicting save, 0 when none
+    int index = -1;     // %number.index, -1 when none
+    std::string title;  // the header comment
+    int revision = 0;   // the current revision
+    int conflict = 0;   // a revision kept aside by a conflicting save, 0 when none
     bool deleted = false;
-    int64_t size = 0;        // bytes
+    int64_t size = 0;  // bytes
     int64_t lines = 0;
-    int64_t modified_ms = 0; // Unix time in milliseconds
+    int64_t modified_ms = 0;  // Unix time in milliseconds
     std::string modified_by;
 };
 
 struct Program {
     ProgramInfo info;
-    int revision = 0;        // the revision whose text this is
-    std::string text;        // exactly as imported or saved
+    int revision = 0;  // the revision whose text this is
+    std::string text;  // exactly as imported or saved
 };
 
 enum class RevisionKind { import, save, restore, remove, seed };
@@ -90,12 +91,12 @@ std::string_view kind_name(RevisionKind k);
 struct RevisionInfo {
     int revision = 0;
     RevisionKind kind = RevisionKind::save;
-    int based_on = 0;        // the revision the writer had loaded (0: none)
-    bool conflict = false;   // kept aside: it was based on an older revision than the current one
+    int based_on = 0;       // the revision the writer had loaded (0: none)
+    bool conflict = false;  // kept aside: it was based on an older revision than the current one
     int64_t at_ms = 0;
     std::string who;
-    std::string source;      // "import part.iso", "restore r3", "page EDIT"…
-    int64_t size = 0;        // bytes (0 for a deletion)
+    std::string source;  // "import part.iso", "restore r3", "page EDIT"…
+    int64_t size = 0;    // bytes (0 for a deletion)
     int64_t lines = 0;
 };
 
@@ -115,7 +116,7 @@ struct SaveResult {
 struct Piece {
     int number = 0;
     std::string text;
-    std::string source;      // "import part.iso", shown in the history
+    std::string source;  // "import part.iso", shown in the history
 };
 
 // ---- machine values: correctors and origins ----
@@ -138,7 +139,7 @@ struct AuditRow {
     std::string name;
     std::optional<int64_t> old_value;
     std::optional<int64_t> new_value;
-    std::string source;      // "page CORR", "program %555 (tools.iso)"
+    std::string source;  // "page CORR", "program %555 (tools.iso)"
 };
 
 struct ImdEntry {
@@ -172,12 +173,16 @@ public:
     // is kept as a revision flagged "conflict", the current revision stays, and
     // the program is marked until a save based on the current revision or a
     // restore resolves it. A text equal to the current one is "unchanged".
-    Result<SaveResult> save(int number, std::string_view text, int based_on, std::string_view source);
+    Result<SaveResult> save(int number, std::string_view text, int based_on,
+                            std::string_view source);
     // Saves several programs in one transaction (import): all or none.
     Result<std::vector<SaveResult>> save_all(const std::vector<Piece>& pieces);
     // Deletes a program: a deletion revision; the history stays and restore brings it back.
     Result<SaveResult> remove(int number, int based_on = kHead, std::string_view source = "rm");
     Result<std::vector<RevisionInfo>> history(int number);
+    // Calls f(number, text) for the current text of every program, in number
+    // order, from one snapshot (program memory for a run).
+    Error each_program(const std::function<void(int, std::string_view)>& f);
     // Makes the text of an earlier revision current again, as a new revision.
     Result<SaveResult> restore(int number, int revision, std::string_view source = "");
 
@@ -207,17 +212,22 @@ public:
 
 private:
     Store() = default;
-    class Tx;
-    friend class Tx;
     Error fail(int rc, std::string_view what);
     Error exec(const char* sql);
     sqlite3_stmt* prepare(const char* sql, Error& e);
     Error begin_write();
     Error commit();
     void rollback();
+    Error create_file();
     Error validate_and_migrate(bool& fresh);
-    Error initialize(bool seed);
     Error seed();
+    struct ProgramRow;
+    Error read_row(int number, ProgramRow& row, const std::string& what);
+    Error insert_revision(int number, int rev, RevisionKind kind, int based_on, bool conflict,
+                          const std::string* text, const std::string& source,
+                          const std::string& what);
+    template <class... T>
+    Error update_program(const char* sql, const std::string& what, int number, const T&... more);
     Result<SaveResult> save_one(const Piece& p, int based_on, RevisionKind kind);
     int64_t now_ms() const;
 

@@ -15,10 +15,13 @@ namespace pupitre::store {
 namespace {
 
 int line_of(std::string_view text, size_t pos) {
-    return 1 + int(std::count(text.begin(), text.begin() + std::ptrdiff_t(std::min(pos, text.size())), '\n'));
+    return 1 + int(std::count(text.begin(),
+                              text.begin() + std::ptrdiff_t(std::min(pos, text.size())), '\n'));
 }
 
-Error bad(std::string msg) { return Error{Fault::bad_data, std::move(msg)}; }
+Error bad(std::string msg) {
+    return Error{Fault::bad_data, std::move(msg)};
+}
 
 struct HeaderLine {
     size_t offset;
@@ -78,7 +81,9 @@ Error parse_piece(std::string_view text, std::string_view name, int first_line, 
     if (Error e = no_nul(text, name)) return e;
     std::vector<HeaderLine> headers = header_lines(text);
     if (headers.empty()) return {};  // a fragment: its number is given by the caller
-    auto where = [&](int line) { return std::string(name) + ":" + std::to_string(first_line - 1 + line); };
+    auto where = [&](int line) {
+        return std::string(name) + ":" + std::to_string(first_line - 1 + line);
+    };
     if (headers.size() > 1)
         return bad(where(headers[1].line) +
                    ": a second % line; a stored program holds one program (import cuts a file into "
@@ -125,7 +130,8 @@ Result<std::vector<Piece>> split_file(std::string_view text, std::string_view na
         return r;
     }
     if (number_if_headerless >= 0) {
-        r.error = bad(std::string(name) + ": the file has % lines; --number is for a file without one");
+        r.error =
+            bad(std::string(name) + ": the file has % lines; --number is for a file without one");
         return r;
     }
     std::map<int, int> seen;  // number -> line of its % line

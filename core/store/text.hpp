@@ -19,9 +19,9 @@
 namespace pupitre::store {
 
 struct Header {
-    int number = -1;     // the %number; -1 for a text with no % line (a fragment)
-    int index = -1;      // %number.index, -1 when none
-    std::string title;   // the header comment
+    int number = -1;    // the %number; -1 for a text with no % line (a fragment)
+    int index = -1;     // %number.index, -1 when none
+    std::string title;  // the header comment
 };
 
 // A line whose first character other than space and tab is '%' (as ProgramMemory).
