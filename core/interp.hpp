@@ -272,6 +272,9 @@ private:
     std::map<int, spline::Curve> splines_;
     bool spline_define(const Plan& p);
     bool spline_run(const Plan& p);
+    // G45 pockets (interp_pocket.cpp); the feeds are kept from one G45 to the next.
+    double pocket_ep_ = 0, pocket_eq_ = 0, pocket_ei_ = 0, pocket_ej_ = 0;
+    bool pocket(const Plan& p);
     bool comp_engage(int g);
     bool comp_element(const comp::Elem& e, int g, const Axes& target, double rp);
     bool comp_other_axes(const Axes& target, const std::bitset<kAxes>& axes);

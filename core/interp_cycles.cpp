@@ -27,6 +27,9 @@ int Interpreter::cycle_axis() const {
 
 // One elementary move of a cycle along its axis, or in the plane.
 bool Interpreter::cycle_move(int g, const Axes& target) {
+    bool same = true;
+    for (int a = 0; a < kAxes; ++a) same = same && std::fabs(target[size_t(a)] - prog_[size_t(a)]) < 1e-12;
+    if (same) return true;  // a cycle never makes an empty move
     prog_next_ = target;
     Axes mach = frames_.to_machine(target);
     if (!check_travel(mach)) return false;

@@ -395,7 +395,7 @@ bool Interpreter::decode(const Block& b, Plan& p) {
                 }
                 case 23:
                     break;  // G23 X.. Z.. I.. K..: default meanings below
-                case 31: case 81: case 82: case 83: case 84: case 85: case 86: case 87: case 88: case 89:
+                case 31: case 45: case 81: case 82: case 83: case 84: case 85: case 86: case 87: case 88: case 89:
                     if (is_axis_addr(w.addr, axis)) break;  // positions and bottom: below
                     if (owner_g == 31 && (letter == 'I' || letter == 'J')) {
                         if (!cyc_word(w)) return false;

@@ -100,6 +100,11 @@ bool Interpreter::do_motion(const Plan& p) {
     }
     if (comp_.on && modal_.radcomp == 40 && p.axis.none()) return comp_exit(p, nullptr);
     if (p.g[6]) return spline_run(p);
+    if (p.g[45]) {
+        if (p.axis.any()) apply_corrector_gauges(p.axis);
+        first_move_ = false;
+        return pocket(p);
+    }
     if (p.g[31] || (modal_.cycle >= 81 && modal_.cycle <= 89)) {
         if (g52) return fail(3, "G52 in a drilling cycle block"), false;
         if (p.axis.any() && !g52) apply_corrector_gauges(p.axis);
