@@ -5,8 +5,6 @@
 #include <cstdio>
 #include <cstring>
 #include <ctime>
-#include <fstream>
-#include <sstream>
 
 #include "console/cli.hpp"
 #include "core/interp.hpp"
@@ -56,19 +54,20 @@ std::string name_of(int number, int index = -1) {
 }
 
 bool read_file(const std::string& path, std::string& text, std::string& why) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
+    std::FILE* f = std::fopen(path.c_str(), "rb");
+    if (!f) {
         why = std::strerror(errno);
         return false;
     }
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    if (in.bad()) {
-        why = "read error";
-        return false;
-    }
-    text = std::move(ss).str();
-    return true;
+    text.clear();
+    char buf[1 << 16];
+    size_t n;
+    while ((n = std::fread(buf, 1, sizeof buf, f)) > 0) text.append(buf, n);
+    bool ok = !std::ferror(f);
+    int err = errno;  // a directory: EISDIR
+    std::fclose(f);
+    if (!ok) why = std::strerror(err);
+    return ok;
 }
 
 void say_saved(const store::SaveResult& r, const std::string& from) {

@@ -115,15 +115,15 @@ Result<std::vector<Piece>> split_file(std::string_view text, std::string_view na
     std::vector<HeaderLine> starts = header_lines(text);
     const std::string source = "import " + std::string(name);
     if (starts.empty()) {
-        if (number_if_headerless < 0) {
-            r.error = bad(std::string(name) +
-                          ": no % line, so no program number; give it one with --number N");
-            return r;
-        }
         ProgramMemory mem;
         Diag d;
         if (!mem.load_text(std::string(name), std::string(text), d)) {
             r.error = bad(std::string(name) + ": " + d.detail);
+            return r;
+        }
+        if (number_if_headerless < 0) {
+            r.error = bad(std::string(name) +
+                          ": no % line, so no program number; give it one with --number N");
             return r;
         }
         r.value.push_back(Piece{number_if_headerless, std::string(text), source});
