@@ -32,6 +32,7 @@ struct Spec {
     double eb = 0;
     bool eb_unsigned = false;   // EB written without a sign (taken as a fillet)
     int tag = 0;                // caller's id of the block (returned with its elements)
+    bool stop = false;          // M0, M1 or M2 in the block (with EB: error 131)
 };
 
 // A resolved element. Fillets and chamfers are elements of their own, tagged
@@ -68,11 +69,29 @@ public:
     V2 position() const;
 
 private:
-    struct Impl;
-    std::vector<Spec> wait_;    // blocks of the entity being solved
+    // A block waiting for the blocks that determine it; the first one starts at
+    // pos_. `fixed` when solving the previous entity already found its support:
+    // a line through p with unit travel direction d, or a circle about p of
+    // radius r travelled in sense s (+1 counter-clockwise).
+    struct Item {
+        Spec spec;
+        bool fixed = false;
+        bool arc = false;
+        V2 p{0, 0}, d{1, 0};
+        double r = 0;
+        int s = 0;
+    };
+
+    bool resolve(std::vector<Elem>& out, Error& err);
+    bool deliver(Elem e, const Spec& s, std::vector<Elem>& out, Error& err);
+    bool fail(Error& err, int code, int tag, std::string detail);
+
+    std::vector<Item> wait_;    // blocks of the entity being solved
     V2 pos_{0, 0};
     int idle_ = 0;
-    // Implementation state is added by the solver's author.
+    bool held_ = false;         // an element with EB waits for the next element
+    Elem held_elem_;
+    double held_eb_ = 0;
 };
 
 }  // namespace pupitre::pgp
