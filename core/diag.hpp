@@ -21,6 +21,7 @@ inline constexpr int wUnknownM = 1103;
 inline constexpr int wSpindleStopped = 1104;
 inline constexpr int wIncrementalFirst = 1105;
 inline constexpr int wDuplicateProgram = 1107;
+inline constexpr int wUnsignedEB = 1108;
 }  // namespace err
 
 enum class Severity { error, warning };

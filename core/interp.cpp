@@ -454,6 +454,10 @@ int Interpreter::read_e(int n, int64_t& out, std::string& why) {
         why = "E parameter access under radius compensation (G41/G42)";
         return 140;
     }
+    if (pgp_.pending()) {
+        why = "E parameter access after an incomplete profile block";
+        return 96;
+    }
     if (int rc = e_rights(n, false, why)) return rc;
     int x = (n / 1000) % 10, k = n % 1000, type = n / 10000;
     auto unit = [&](int axis, double v) { return is_rotary(axis) ? int64_t(std::llround(v * 1e4)) : um(v); };
@@ -505,6 +509,10 @@ int Interpreter::write_e(int n, int64_t value, std::string& why) {
     if (modal_.radcomp != 40) {
         why = "E parameter access under radius compensation (G41/G42)";
         return 140;
+    }
+    if (pgp_.pending()) {
+        why = "E parameter access after an incomplete profile block";
+        return 96;
     }
     if (int rc = e_rights(n, true, why)) return rc;
     if (value > INT32_MAX || value < INT32_MIN) {

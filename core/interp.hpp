@@ -15,6 +15,7 @@
 
 #include "core/block.hpp"
 #include "core/comp.hpp"
+#include "core/pgp.hpp"
 #include "core/codes.hpp"
 #include "core/diag.hpp"
 #include "core/eval.hpp"
@@ -275,6 +276,16 @@ private:
     // G45 pockets (interp_pocket.cpp); the feeds are kept from one G45 to the next.
     double pocket_ep_ = 0, pocket_eq_ = 0, pocket_ei_ = 0, pocket_ej_ = 0;
     bool pocket(const Plan& p);
+    // Profile geometry programming (interp_pgp.cpp).
+    pgp::Solver pgp_;
+    int pgp_tag_ = 0;
+    std::map<int, CompCtx> pgp_ctx_;  // the block context of each tag still held
+    void plane_axes(int& a0, int& a1) const;
+    bool pgp_wanted(const Plan& p) const;
+    bool pgp_block(const Plan& p, const Axes& target);
+    bool pgp_emit(const std::vector<pgp::Elem>& elems);
+    bool pgp_fail(const pgp::Error& e);
+    bool pgp_close();
     bool comp_engage(int g);
     bool comp_element(const comp::Elem& e, int g, const Axes& target, double rp);
     bool comp_other_axes(const Axes& target, const std::bitset<kAxes>& axes);

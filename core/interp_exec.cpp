@@ -31,6 +31,8 @@ StepResult Interpreter::execute(const Block& b) {
                 return fail(91, "L" + std::to_string(t.index) + " does not exist (L0-L19, L100-L199, L900-L959)", a.col);
             if (t.index >= 100 && t.index <= 199 && modal_.radcomp != 40)
                 return fail(140, "writing L" + std::to_string(t.index) + " under radius compensation", a.col);
+            if (t.index >= 100 && t.index <= 199 && pgp_.pending())
+                return fail(96, "writing L" + std::to_string(t.index) + " after an incomplete profile block", a.col);
             l_.v[size_t(t.index)] = v;
             l_.written.set(size_t(t.index));
         } else {
@@ -55,10 +57,16 @@ StepResult Interpreter::execute(const Block& b) {
         return fail(err::kUnsupported, "G" + std::to_string(p.unsupported) + " (" + std::string(g->text) +
                                            ") is not yet supported by pupitre");
     }
-    if (p.has_unsupported_word)
-        return fail(err::kUnsupported, "profile geometry programming (" +
-                                           std::string(addr_name(p.unsupported_word)) +
-                                           " in a contour: the EA EB ES ET E± words) is not yet supported by pupitre");
+    if (p.has_eb)
+        for (int i = 0; i < p.nm; ++i)
+            if (p.m[i] <= 2) return fail(131, "a fillet or chamfer (EB) in a block with M0" + std::to_string(p.m[i]));
+    if (pgp_.pending()) {
+        // The held element needs the next blocks (pgp.md §6 item 5).
+        if (p.plane >= 0 && p.plane != modal_.plane)
+            return fail(137, "plane change while a profile element is incomplete");
+        for (int i = 0; i < p.nm; ++i)
+            if (p.m[i] == 2 && !pgp_close()) return StepResult::error;  // the solver says why (101, 131)
+    }
     if (p.g[78]) {
         for (int i = 0; i < p.nm; ++i)
             if (p.m[i] == 0 || p.m[i] == 1)

@@ -556,9 +556,25 @@ bool Interpreter::decode(const Block& b, Plan& p) {
         }
         if (w.addr == addrE('A') || w.addr == addrE('B') || w.addr == addrE('S') ||
             w.addr == addrE('T') || w.addr == kAddrEsign) {
-            if (!p.has_unsupported_word) {
-                p.has_unsupported_word = true;
-                p.unsupported_word = w.addr;
+            // PGP: ES± ET± carry the discriminant as their sign (pgp.md §2).
+            p.pgp = true;
+            if (w.addr == addrE('A')) {
+                if (!word_value(w, v)) return false;
+                p.has_ea = true;
+                p.ea = v;
+            } else if (w.addr == addrE('B')) {
+                if (!word_value(w, v)) return false;
+                p.has_eb = true;
+                p.eb = v * unit;
+                p.eb_unsigned = !w.v.has_sign;
+            } else {
+                if (w.addr == addrE('S')) p.link = p.link == 'T' ? 'X' : 'S';
+                if (w.addr == addrE('T')) p.link = p.link == 'S' ? 'X' : 'T';
+                if (w.v.has_sign) p.disc = w.v.neg ? -1 : 1;
+                if (w.v.kind == Operand::Number || w.v.kind == Operand::LVar) {
+                    fail(w.addr == kAddrEsign ? 3 : 110, std::string(addr_name(w.addr)) + " takes a sign only", w.col);
+                    return false;
+                }
             }
             continue;
         }

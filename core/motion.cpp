@@ -98,6 +98,8 @@ bool Interpreter::do_motion(const Plan& p) {
         if (modal_.incremental) return fail(3, "G52 needs absolute programming (G90)"), false;
         if (modal_.motion == 2 || modal_.motion == 3) return fail(3, "G52 moves are linear (G0 or G1)"), false;
     }
+    // The end of a compensated profile: held PGP elements are resolved first.
+    if (comp_.on && modal_.radcomp == 40 && pgp_.pending() && !pgp_close()) return false;
     if (comp_.on && modal_.radcomp == 40 && p.axis.none()) return comp_exit(p, nullptr);
     if (p.g[6]) return spline_run(p);
     if (p.g[45]) {
@@ -110,6 +112,31 @@ bool Interpreter::do_motion(const Plan& p) {
         if (p.axis.any() && !g52) apply_corrector_gauges(p.axis);
         first_move_ = false;
         return cycle_block(p);
+    }
+    if (!g52 && !(comp_.on && modal_.radcomp == 40) && pgp_wanted(p)) {
+        int a0p, a1p;
+        plane_axes(a0p, a1p);
+        bool plane = p.pgp || p.axis[size_t(a0p)] || p.axis[size_t(a1p)] || p.ijk.any() || p.has_r;
+        if (plane) {
+            Axes target = prog_;
+            for (int a = 0; a < kAxes; ++a)
+                if (p.axis[size_t(a)])
+                    target[size_t(a)] = p.inc[size_t(a)] ? prog_[size_t(a)] + p.val[size_t(a)] : p.val[size_t(a)];
+            if (p.axis.any()) apply_corrector_gauges(p.axis);
+            first_move_ = false;
+            return pgp_block(p, target);
+        }
+        pgp::Error e;
+        if (!pgp_.idle(e)) return fail(e.code, e.detail), false;  // at the block that overflows
+        if (p.axis.any()) {
+            // A move out of the plane: made when the held elements are out.
+            Axes target = prog_;
+            for (int a = 0; a < kAxes; ++a)
+                if (p.axis[size_t(a)])
+                    target[size_t(a)] = p.inc[size_t(a)] ? prog_[size_t(a)] + p.val[size_t(a)] : p.val[size_t(a)];
+            return comp_other_axes(target, p.axis);
+        }
+        return true;
     }
     if (p.axis.none()) {
         bool arcwords = p.ijk.any() || p.has_r;

@@ -91,6 +91,14 @@ struct Interpreter::Plan {
     int unsupported = -1;                 // first G that pupitre does not run yet
     Addr unsupported_word = 0;            // or first word of a function not run yet
     bool has_unsupported_word = false;
+    // Profile geometry programming words (pgp.md §2).
+    bool pgp = false;                     // any of EA EB ES ET E± in the block
+    bool has_ea = false;
+    double ea = 0;
+    char link = 0;                        // 'S' (ES) or 'T' (ET)
+    int disc = 0;                         // +1 / -1 from E+ E- ES+ ET-
+    bool has_eb = false, eb_unsigned = false;
+    double eb = 0;
 };
 
 }  // namespace pupitre

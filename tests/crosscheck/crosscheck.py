@@ -859,6 +859,8 @@ def check_comp(k, elems, kind, g, args, rs, work, rng, stats):
             din = max(dist_in, 2 * radius + 5000)  # LinuxCNC wants an entry longer than R
             prog = CompProgram(elems, g, radius, appr, away, din, dist_out, feed)
             pup, peer = run_comp_once(prog, base, args, rs)
+            if pup is None and not args.peer_only:
+                return [f"{base}: {peer[1] if peer else 'rs274 did not run'}"]
             if peer is None or (pup is not None and not pup[0] and "error 149" not in pup[1]):
                 why = peer[1] if peer else "?"
                 return [f"{base}.iso: pupitre failed: {pup[1] if pup else why}"]
