@@ -536,6 +536,24 @@ TEST(Pgp, TableB8_B10_B13_B16) {
     arc(r.els[2], 10, 40, 10, 30, 90);
 }
 
+// B16: a radius-only circle through the start point, tangent to a circle whose
+// radius comes from its tangency with the third one (values computed
+// independently). ET- takes the centre of arc 1 on the right of its chord.
+TEST(Pgp, TableB16) {
+    Result r = ok({10, 18}, {"G2 R5 ET-", "G3 I10 J0 ET", "G2 I30 J0 X40 Y0"});
+    ASSERT_EQ(r.els.size(), 3u);
+    arc(r.els[0], 7.584, 9.704, 6.376, 14.556, -119.56);
+    arc(r.els[1], 20, 0, 10, 0, 256.02);
+    arc(r.els[2], 40, 0, 30, 0, -180);
+    r = ok({10, 18}, {"G2 R5 ET+", "G3 I10 J0 ET", "G2 I30 J0 X40 Y0"});
+    ASSERT_EQ(r.els.size(), 3u);
+    arc(r.els[0], 12.416, 9.704, 13.624, 14.556, -240.44);
+    arc(r.els[1], 20, 0, 10, 0, 283.98);
+    r = ok({10, 18}, {"G2 R5", "G3 I10 J0 ET", "G2 I30 J0 X40 Y0"});  // the smaller arc 1
+    ASSERT_EQ(r.els.size(), 3u);
+    EXPECT_PT(r.els[0].geo.c, 6.376, 14.556);
+}
+
 // §9.4: the chess piece %666 on the lathe (Z abscissa, X diameter as ordinate).
 // Values computed independently: N20/N30 intersection Z 4.985 X Ø29.172 (second
 // intersection at Z 67.179 rejected by ES-), N40 start/end radii 23.000/22.984,
