@@ -346,8 +346,12 @@ bool Interpreter::apply_spindle(const Plan& p) {
         modal_.spindle_mode = 97;
     }
     if (p.has_s) modal_.s = p.s;
-    if (modal_.spindle_mode == 97 && p.has_s && m_.auto_range && !m_.ranges.empty() && modal_.s > 0) {
-        // Automatic range: the first range holding S (turning.md §5.12).
+    bool range_written = false;
+    for (int i = 0; i < p.nm; ++i) range_written = range_written || (p.m[i] >= 40 && p.m[i] <= 45);
+    if (modal_.spindle_mode == 97 && p.has_s && m_.auto_range && !range_written && modal_.range < 0 &&
+        !m_.ranges.empty() && modal_.s > 0) {
+        // Automatic range: with none in force, the first range holding S
+        // (turning.md §5.12); a range the program chose stays in force.
         int found = -1;
         for (size_t i = 0; i < m_.ranges.size() && found < 0; ++i)
             if (modal_.s >= m_.ranges[i].min && modal_.s <= m_.ranges[i].max) found = int(i);
@@ -355,9 +359,12 @@ bool Interpreter::apply_spindle(const Plan& p) {
         modal_.range = found;
     }
     if (modal_.spindle_mode == 96 && !m_.ranges.empty() && modal_.range < 0 &&
-        (p.spindle_mode == 96 || p.has_s))
-        return fail(29, "constant surface speed needs a spindle range (M40-M45)"), false;
-    if (modal_.spindle_mode == 97 && p.has_s && modal_.range >= 0 && !m_.auto_range) {
+        (p.spindle_mode == 96 || p.has_s)) {
+        // With automatic ranges the machine takes the range of the highest speeds.
+        if (!m_.auto_range) return fail(29, "constant surface speed needs a spindle range (M40-M45)"), false;
+        modal_.range = int(m_.ranges.size()) - 1;
+    }
+    if (modal_.spindle_mode == 97 && p.has_s && modal_.range >= 0) {
         const SpindleRange& r = m_.ranges[size_t(modal_.range)];
         if (modal_.s != 0 && (modal_.s < r.min || modal_.s > r.max))
             return fail(29, "S" + fmt3(modal_.s) + " is outside range M" + std::to_string(40 + modal_.range) +

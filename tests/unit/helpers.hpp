@@ -32,7 +32,9 @@ struct Prog {
 
     explicit Prog(const std::string& text, const std::string& machine_name = "mill",
                  std::vector<std::pair<std::string, double>> sets = {}, RunOptions o = {}) {
-        builtin_machine(machine_name, machine);
+        // "lathe-manual": the shipped lathe without automatic spindle ranges.
+        builtin_machine(machine_name == "lathe-manual" ? "lathe" : machine_name, machine);
+        if (machine_name == "lathe-manual") machine.auto_range = false;
         Diag d;
         mem.load_text("test.iso", text, d);
         in = std::make_unique<Interpreter>(machine, mem, cap, o);

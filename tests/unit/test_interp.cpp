@@ -73,7 +73,9 @@ TEST(Spindle, ConstantSurfaceSpeedWithLimit) {
 TEST(Spindle, Errors) {
     EXPECT_EQ(Prog("%1\nG97\nM2\n").error(), 28);
     EXPECT_EQ(Prog("%1\nM3 M41\nG96 S100\nM2\n", "lathe").error(), 28);    // no diameter known
-    EXPECT_EQ(Prog("%1\nG0 X50 Z10\nM3\nG96 S100\nM2\n", "lathe").error(), 29);  // no range
+    EXPECT_EQ(Prog("%1\nG0 X50 Z10\nM3\nG96 S100\nM2\n", "lathe-manual").error(), 29);  // no range
+    EXPECT_EQ(Prog("%1\nG0 X50 Z10\nM3\nG96 S100\nM2\n", "lathe").error(), 0);  // automatic ranges
+    EXPECT_EQ(Prog("%1\nG0 X50 Z10\nM41 M3\nG97 S5000\nM2\n", "lathe").error(), 29);  // outside M41
     EXPECT_EQ(Prog("%1\nG95 F.1 G1 X10\nM2\n").error(), 831);  // G95 with the spindle stopped
     EXPECT_EQ(Prog("%1\nM64\nM2\n").error(), 899);
 }
