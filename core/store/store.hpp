@@ -150,6 +150,8 @@ struct ImdEntry {
     std::string block;
 };
 
+// One connection to a store file. Not shared between threads: a thread or a
+// process opens its own; SQLite serialises the writers (WAL, BEGIN IMMEDIATE).
 class Store {
 public:
     // Opens (and on first use creates and seeds) the store at `path`. Never

@@ -7,6 +7,7 @@
 #include <sys/wait.h>
 
 #include <chrono>
+#include <filesystem>
 #include <cstdio>
 #include <random>
 #include <thread>
@@ -172,4 +173,30 @@ TEST(StoreProcess, TwoWritersLoseNothingAndReportConflicts) {
     EXPECT_EQ(revisions, kPrograms + saves);  // one per save, none overwritten
     EXPECT_EQ(flagged, reported_conflicts);   // every conflict kept is reported, and no other
     EXPECT_GT(reported_conflicts, 0);
+}
+
+TEST(StoreProcess, FirstUseByManyProcessesMakesOneStore) {
+    TempDir t;
+    const std::string db = t / "first.db";
+    std::vector<pid_t> pids;
+    for (int i = 0; i < 6; ++i) {
+        pid_t pid = fork();
+        if (pid == 0) {
+            auto r = Store::open(db);
+            _exit(r.ok() && r.value->list().value.size() == 2 ? 0 : 1);
+        }
+        pids.push_back(pid);
+    }
+    for (pid_t pid : pids) {
+        int status = 0;
+        waitpid(pid, &status, 0);
+        EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+    }
+    auto s = test::open_store(db);
+    EXPECT_EQ(s->history(300).value.size(), 1u);  // seeded once
+    EXPECT_EQ(s->machines().value.size(), 4u);
+    s.reset();  // closed: its -wal and -shm go
+    int files = 0;
+    for (auto& e : std::filesystem::directory_iterator(t.path)) files += e.is_regular_file();
+    EXPECT_EQ(files, 1) << "a temporary file was left behind";
 }
