@@ -10,14 +10,6 @@
 
 namespace pupitre {
 
-namespace {
-std::string f3(double v) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%.3f", v);
-    return b;
-}
-}  // namespace
-
 // The cycle axis: normal to the plane on the mill (Z in G17, Y in G18, X in G19);
 // the G16 tool axis on the lathe (Z for R±, X for P±).
 int Interpreter::cycle_axis() const {

@@ -84,7 +84,9 @@ void check_polygon(const std::vector<std::pair<double, double>>& pts, int g, dou
             for (size_t j = 0; j < segs.size(); ++j)
                 if (k != 2 || j == 0) best = std::min(best, dist_to_seg(px, py, segs[j]));
             EXPECT_GE(best, r - 1e-6) << "gouge at " << px << "," << py << " in\n" << prog;
-            if (mv[k].g == 1) EXPECT_NEAR(best, r, 1e-6) << "line piece not at R in\n" << prog;
+            if (mv[k].g == 1) {
+                EXPECT_NEAR(best, r, 1e-6) << "line piece not at R in\n" << prog;
+            }
         }
     }
 }
