@@ -1,0 +1,1282 @@
+// Turning cycles (turning.md §6.1, §6.3-§6.6, §6.12-§6.13): expected points of
+// the handbook programs, computed by hand or once with an independent script
+// (polygons with densified arcs, scanning and bisection), and properties checked
+// with an oracle that shares no code with the cycles: the passes never come
+// closer to the finished profile than its allowance, stay inside the stock, and
+// leave no material thicker than the depth of cut.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "core/turning.hpp"
+
+using namespace pupitre;
+using namespace pupitre::turning;
+using comp::Elem;
+
+namespace {
+constexpr double kPi = std::numbers::pi;
+
+// Program coordinates (X as a diameter, Z) to internal (z, r).
+V2 P(double x, double z) {
+    return V2(z, x / 2);
+}
+
+Elem L(V2 a, V2 b) {
+    Elem e;
+    e.a = a;
+    e.b = b;
+    return e;
+}
+
+Elem Arc(V2 a, V2 b, V2 c, bool ccw) {
+    Elem e = L(a, b);
+    e.arc = true;
+    e.c = c;
+    double s = std::atan2(b.y() - c.y(), b.x() - c.x()) - std::atan2(a.y() - c.y(), a.x() - c.x());
+    if (ccw && s <= 0) s += 2 * kPi;
+    if (!ccw && s >= 0) s -= 2 * kPi;
+    e.sweep = s;
+    return e;
+}
+
+// A profile through points (program coordinates), straight elements.
+Profile poly_profile(std::initializer_list<V2> pts) {
+    Profile p;
+    std::vector<V2> v(pts);
+    for (size_t i = 0; i + 1 < v.size(); ++i) p.elems.push_back(L(v[i], v[i + 1]));
+    return p;
+}
+
+Profile reversed(const Profile& p) {
+    Profile r;
+    for (auto it = p.elems.rbegin(); it != p.elems.rend(); ++it) {
+        Elem e = *it;
+        std::swap(e.a, e.b);
+        e.sweep = -e.sweep;
+        r.elems.push_back(e);
+    }
+    return r;
+}
+
+// %555 finished profile N100..N190 (000:2474-2491).
+Profile p555() {
+    Profile p;
+    p.elems.push_back(Arc(P(140, 0), P(120, 10), P(120, 0), false));
+    for (auto [a, b] : std::vector<std::pair<V2, V2>>{{P(120, 10), P(60, 10)},
+                                                      {P(60, 10), P(60, 20)},
+                                                      {P(60, 20), P(40, 30)},
+                                                      {P(40, 30), P(40, 40)},
+                                                      {P(40, 40), P(60, 50)},
+                                                      {P(60, 50), P(60, 60)},
+                                                      {P(60, 60), P(25, 90)},
+                                                      {P(25, 90), P(0, 90)}})
+        p.elems.push_back(L(a, b));
+    return p;
+}
+const std::vector<V2> kStock555{P(144, 0), P(144, 10), P(40, 94), P(0, 94)};
+
+// A move of a cycle with its start point.
+struct Seg {
+    V2 a, b;
+    int g;
+    bool infeed;
+};
+std::vector<Seg> segs(V2 from, const std::vector<Move>& mv) {
+    std::vector<Seg> out;
+    for (const Move& m : mv) {
+        out.push_back({from, m.to, m.g, m.infeed});
+        from = m.to;
+    }
+    return out;
+}
+std::vector<Seg> feeds(V2 from, const std::vector<Move>& mv) {
+    std::vector<Seg> out;
+    for (const Seg& s : segs(from, mv))
+        if (s.g == 1) out.push_back(s);
+    return out;
+}
+
+// ---- Oracle: polylines only, no code shared with core/turning_*.cpp ----
+double cross(V2 o, V2 a, V2 b) {
+    return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
+}
+double seg_point(V2 p, V2 a, V2 b) {
+    V2 d = b - a;
+    double l2 = d.squaredNorm(), t = l2 > 0 ? std::clamp((p - a).dot(d) / l2, 0.0, 1.0) : 0;
+    return (a + t * d - p).norm();
+}
+bool segs_meet(V2 p, V2 q, V2 a, V2 b) {
+    double d1 = cross(a, b, p), d2 = cross(a, b, q), d3 = cross(p, q, a), d4 = cross(p, q, b);
+    if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0)))
+        return true;
+    return seg_point(p, a, b) < 1e-12 || seg_point(q, a, b) < 1e-12 || seg_point(a, p, q) < 1e-12 ||
+           seg_point(b, p, q) < 1e-12;
+}
+bool in_polygon(const std::vector<V2>& poly, V2 q) {
+    bool c = false;
+    for (size_t i = 0, n = poly.size(); i < n; ++i) {
+        V2 a = poly[i], b = poly[(i + 1) % n];
+        if ((a.y() > q.y()) != (b.y() > q.y()) &&
+            a.x() + (q.y() - a.y()) * (b.x() - a.x()) / (b.y() - a.y()) > q.x())
+            c = !c;
+    }
+    return c;
+}
+double polyline_dist(const std::vector<V2>& pl, V2 q, bool closed) {
+    double d = 1e300;
+    for (size_t i = 0; i + 1 < pl.size(); ++i) d = std::min(d, seg_point(q, pl[i], pl[i + 1]));
+    if (closed && pl.size() > 1) d = std::min(d, seg_point(q, pl.back(), pl.front()));
+    return d;
+}
+std::vector<V2> densify(const Profile& p) {
+    std::vector<V2> out{p.elems.front().a};
+    for (const Elem& e : p.elems) {
+        if (!e.arc) {
+            out.push_back(e.b);
+            continue;
+        }
+        int n = 400;
+        double a0 = std::atan2(e.a.y() - e.c.y(), e.a.x() - e.c.x()), r = (e.a - e.c).norm();
+        for (int i = 1; i <= n; ++i) {
+            double a = a0 + e.sweep * i / n;
+            out.push_back(e.c + r * V2(std::cos(a), std::sin(a)));
+        }
+    }
+    return out;
+}
+
+// Segment p-q meets element e (arcs exactly).
+bool meets(V2 p, V2 q, const Elem& e) {
+    if (!e.arc) return segs_meet(p, q, e.a, e.b);
+    V2 d = q - p, w = p - e.c;
+    double r = (e.a - e.c).norm(), A = d.squaredNorm(), B = 2 * w.dot(d),
+           C = w.squaredNorm() - r * r;
+    double disc = B * B - 4 * A * C;
+    if (A < 1e-30 || disc < 0) return false;
+    for (double sg : {-1.0, 1.0}) {
+        double t = (-B + sg * std::sqrt(disc)) / (2 * A);
+        if (t < -1e-12 || t > 1 + 1e-12) continue;
+        V2 x = p + t * d;
+        double a0 = std::atan2(e.a.y() - e.c.y(), e.a.x() - e.c.x());
+        double ang = std::atan2(x.y() - e.c.y(), x.x() - e.c.x()) - a0;
+        ang = e.sweep > 0 ? ang : -ang;
+        ang = std::fmod(ang + 4 * kPi, 2 * kPi);
+        if (ang <= std::fabs(e.sweep) + 1e-12 || ang >= 2 * kPi - 1e-12) return true;
+    }
+    return false;
+}
+double elem_dist(V2 p, const Elem& e) {
+    if (!e.arc) return seg_point(p, e.a, e.b);
+    double r = (e.a - e.c).norm();
+    double a0 = std::atan2(e.a.y() - e.c.y(), e.a.x() - e.c.x());
+    double ang = std::atan2(p.y() - e.c.y(), p.x() - e.c.x()) - a0;
+    ang = e.sweep > 0 ? ang : -ang;
+    ang = std::fmod(ang + 4 * kPi, 2 * kPi);
+    if (ang <= std::fabs(e.sweep)) return std::fabs((p - e.c).norm() - r);
+    return std::min((p - e.a).norm(), (p - e.b).norm());
+}
+
+struct Oracle {
+    std::vector<Elem> fe;   // the finished profile, exact
+    std::vector<V2> f;      // the finished profile
+    std::vector<V2> m;      // the material: stock, then the profile backwards
+    std::vector<V2> stock;  // the stock polyline
+    V2 t{0, 0};             // paraxial allowance (K, I)
+    double er = -1;         // normal allowance (G63), when >= 0
+
+    Oracle(const Profile& p, std::vector<V2> b, V2 allowance)
+        : fe(p.elems), f(densify(p)), stock(b), t(allowance) {
+        // The stock runs from next to the profile's start to next to its end.
+        if ((b.front() - f.back()).norm() + (b.back() - f.front()).norm() <
+            (b.front() - f.front()).norm() + (b.back() - f.back()).norm())
+            std::reverse(b.begin(), b.end());
+        m = b;
+        m.insert(m.end(), f.rbegin(), f.rend());
+        closing = {{b.back(), f.back()}, {f.front(), b.front()}};
+    }
+    std::vector<std::pair<V2, V2>> closing;  // stock ends to profile ends
+    double dist_f(V2 q) const {
+        double d = 1e300;
+        for (const Elem& e : fe) d = std::min(d, elem_dist(q, e));
+        return d;
+    }
+    // q is in the closed zone: moving it back by a fraction of t meets the profile.
+    bool in_closed_A(V2 q) const {
+        V2 p = q - t;
+        double lx = std::min(p.x(), q.x()), hx = std::max(p.x(), q.x());
+        double ly = std::min(p.y(), q.y()), hy = std::max(p.y(), q.y());
+        for (const Elem& e : fe) {
+            if (!e.arc && (std::max(e.a.x(), e.b.x()) < lx || std::min(e.a.x(), e.b.x()) > hx ||
+                           std::max(e.a.y(), e.b.y()) < ly || std::min(e.a.y(), e.b.y()) > hy))
+                continue;
+            if (meets(p, q, e)) return true;
+        }
+        return false;
+    }
+    // q lies deeper than 1 µm inside the finished part plus its allowance: its
+    // neighbours 1 µm away all lie in the zone.
+    bool in_A(V2 q) const {
+        if (er >= 0) return dist_f(q) < er - 1e-6;
+        for (int k = 0; k < 8; ++k) {
+            double a = k * kPi / 4;
+            if (!in_closed_A(q + 1e-6 * V2(std::cos(a), std::sin(a)))) return false;
+        }
+        return true;
+    }
+    bool in_M(V2 q, double tol) const {
+        return in_polygon(m, q) || polyline_dist(m, q, true) <= tol;
+    }
+};
+
+// Feed moves stay out of A and inside the material region, or within the
+// clearance c of its boundary (the pass starts c before the stock).
+void check_clear(const Oracle& o, V2 tool, const std::vector<Move>& mv, double c,
+                 const char* what) {
+    int bad_a = 0, bad_m = 0;
+    for (const Seg& s : feeds(tool, mv))
+        for (int i = 0; i <= 50; ++i) {
+            V2 q = s.a + (s.b - s.a) * (i / 50.0);
+            if (o.in_A(q) && ++bad_a <= 2)
+                ADD_FAILURE() << what << ": in A at Z" << q.x() << " r" << q.y() << " on "
+                              << s.a.transpose() << " -> " << s.b.transpose();
+            if (!o.in_M(q, c + 1e-6)) ++bad_m;
+        }
+    EXPECT_EQ(bad_a, 0) << what << ": feed points inside the profile plus allowance";
+    EXPECT_EQ(bad_m, 0) << what << ": feed points outside the stock";
+}
+
+// Every point of the material outside A is cut by a pass at most `step` below it
+// (frame: x along the passes, y = s·level coordinate), or lies within `step`
+// above A (the staircase the radial retract leaves), unless `skip` says so.
+template <class Skip>
+void check_cover(const Oracle& o, V2 tool, const std::vector<Move>& mv, bool swap, double s,
+                 double step, double y_low, Skip skip, const char* what) {
+    auto fx = [&](V2 p) { return swap ? p.y() : p.x(); };
+    auto fy = [&](V2 p) { return s * (swap ? p.x() : p.y()); };
+    auto unf = [&](double x, double y) { return swap ? V2(s * y, x) : V2(x, s * y); };
+    std::vector<Seg> passes = feeds(tool, mv);
+    double lo_x = 1e300, hi_x = -1e300, lo_y = 1e300, hi_y = -1e300;
+    for (V2 p : o.m) {
+        lo_x = std::min(lo_x, fx(p)), hi_x = std::max(hi_x, fx(p));
+        lo_y = std::min(lo_y, fy(p)), hi_y = std::max(hi_y, fy(p));
+    }
+    int bad = 0, tried = 0;
+    for (double y = lo_y + 0.0137; y < hi_y; y += 0.3713) {
+        if (y < y_low) continue;
+        for (double x = lo_x + 0.0191; x < hi_x; x += 0.4171) {
+            V2 q = unf(x, y);
+            if (!in_polygon(o.m, q) || polyline_dist(o.m, q, true) < 1e-3 || o.in_A(q) || skip(q))
+                continue;
+            // Where the profile meets a closing segment, its allowance leaves a
+            // corner of at most t (the pass stops on the swept corner).
+            bool corner = false;
+            for (auto [a, b] : o.closing) corner = corner || seg_point(q, a, b) < o.t.norm() + 1e-3;
+            if (corner) continue;
+            ++tried;
+            bool ok = false;
+            for (const Seg& p : passes) {
+                double py = fy(p.a);
+                if (std::fabs(fy(p.b) - py) > 1e-9 || py > y + 1e-9 || py < y - step - 1e-9)
+                    continue;
+                double a = fx(p.a), b = fx(p.b);
+                if (x >= std::min(a, b) - 1e-9 && x <= std::max(a, b) + 1e-9) ok = true;
+            }
+            for (int k = 0; k <= 20 && !ok; ++k) {
+                V2 below = unf(x, y - step * k / 20);
+                ok = o.in_A(below) || !in_polygon(o.m, below);
+            }
+            if (!ok && ++bad <= 3)
+                ADD_FAILURE() << what << ": material left at Z" << q.x() << " X" << 2 * q.y();
+        }
+    }
+    EXPECT_GT(tried, 0) << what;
+    EXPECT_EQ(bad, 0) << what;
+}
+
+void check_cover(const Oracle& o, V2 tool, const std::vector<Move>& mv, bool swap, double s,
+                 double step, double y_low, const char* what) {
+    check_cover(
+        o, tool, mv, swap, s, step, y_low, [](V2) { return false; }, what);
+}
+
+// Level, start (on the stock) and end of each pass.
+struct Row {
+    double level, start, end;
+};
+
+void expect_passes(V2 tool, const std::vector<Move>& mv, bool swap, double c, int d,
+                   const std::vector<Row>& rows) {
+    std::vector<Seg> p = feeds(tool, mv);
+    ASSERT_EQ(p.size(), rows.size());
+    for (size_t i = 0; i < rows.size(); ++i) {
+        auto ax = [&](V2 v) { return swap ? v.y() : v.x(); };
+        auto lv = [&](V2 v) { return swap ? v.x() : v.y(); };
+        EXPECT_NEAR(lv(p[i].a), rows[i].level, 1e-6) << i;
+        EXPECT_NEAR(lv(p[i].b), rows[i].level, 1e-6) << i;
+        EXPECT_NEAR(ax(p[i].a) + d * c, rows[i].start, 1e-5) << i;
+        EXPECT_NEAR(ax(p[i].b), rows[i].end, 1e-5) << i;
+    }
+}
+}  // namespace
+
+// ---------------------------------------------------------------- G64 ----
+
+// %555 roughing along Z (000:2500-2519): G64 N100 N190 I.5 K.2 P2 from X200 Z150.
+// Each pass starts 1 mm (the clearance) before the stock and ends on the profile
+// translated by (K, I) = (0.2, 0.5); the groove Z20-Z50 is left for G65.
+TEST(G64, P555AlongZ) {
+    G64Args a;
+    a.i = .5, a.k = .2, a.has_p = true, a.p = 2;
+    std::vector<Move> mv;
+    std::string why;
+    V2 tool = P(200, 150);
+    ASSERT_EQ(g64(p555(), kStock555, tool, a, mv, why), 0) << why;
+    expect_passes(tool, mv, false, 1, -1,
+                  {{70.0000, 13.230769, 3.322498},  {68.0000, 16.461538, 6.814378},
+                   {66.0000, 19.692308, 8.551647},  {64.0000, 22.923077, 9.567497},
+                   {62.0000, 26.153846, 10.086860}, {60.0000, 29.384615, 10.200000},
+                   {58.0000, 32.615385, 10.200000}, {56.0000, 35.846154, 10.200000},
+                   {54.0000, 39.076923, 10.200000}, {52.0000, 42.307692, 10.200000},
+                   {50.0000, 45.538462, 10.200000}, {48.0000, 48.769231, 10.200000},
+                   {46.0000, 52.000000, 10.200000}, {44.0000, 55.230769, 10.200000},
+                   {42.0000, 58.461538, 10.200000}, {40.0000, 61.692308, 10.200000},
+                   {38.0000, 64.923077, 10.200000}, {36.0000, 68.153846, 10.200000},
+                   {34.0000, 71.384615, 10.200000}, {32.0000, 74.615385, 10.200000},
+                   {30.0000, 77.846154, 61.057143}, {28.0000, 81.076923, 64.485714},
+                   {26.0000, 84.307692, 67.914286}, {24.0000, 87.538462, 71.342857},
+                   {22.0000, 90.769231, 74.771429}, {20.0000, 94.000000, 78.200000},
+                   {18.0000, 94.000000, 81.628571}, {16.0000, 94.000000, 85.057143},
+                   {14.0000, 94.000000, 88.485714}, {12.0000, 94.000000, 90.200000},
+                   {10.0000, 94.000000, 90.200000}, {8.0000, 94.000000, 90.200000},
+                   {6.0000, 94.000000, 90.200000},  {4.0000, 94.000000, 90.200000},
+                   {2.0000, 94.000000, 90.200000},  {0.5000, 94.000000, 90.200000}});
+    // Approach along Z then down; each pass: rapid in, feed, retract 1 mm
+    // radially, rapid back; at the end up to X200 then to Z150 (§6.3 steps 4, 6).
+    ASSERT_GE(mv.size(), 6u);
+    EXPECT_TRUE(mv[0].g == 0 && mv[0].to.isApprox(V2(14.230769, 100), 1e-6));
+    EXPECT_TRUE(mv[1].g == 0 && mv[1].to.isApprox(V2(14.230769, 70), 1e-6));
+    EXPECT_TRUE(mv[3].g == 0 && mv[3].to.isApprox(V2(3.322498, 71), 1e-6));
+    EXPECT_TRUE(mv[4].g == 0 && mv[4].to.isApprox(V2(14.230769, 71), 1e-6));
+    EXPECT_TRUE(mv[mv.size() - 2].to.isApprox(V2(95, 100), 1e-9));
+    EXPECT_TRUE(mv.back().to.isApprox(tool, 1e-12));
+    // The groove between the two Ø60 lands is never entered.
+    for (const Seg& s : feeds(tool, mv))
+        EXPECT_FALSE(s.a.y() < 30 && std::min(s.a.x(), s.b.x()) < 50 &&
+                     std::max(s.a.x(), s.b.x()) > 20);
+}
+
+// The same part roughed along X (000:2530-2545): G64 N190 N100 I.5 K.2 R3, the
+// profile called backwards and the stock written from the axis.
+TEST(G64, P555AlongX) {
+    G64Args a;
+    a.i = .5, a.k = .2, a.has_r = true, a.r = 3;
+    std::vector<Move> mv;
+    std::string why;
+    V2 tool = P(200, 150);
+    std::vector<V2> stock{P(0, 94), P(40, 94), P(144, 10), P(144, 0)};
+    ASSERT_EQ(g64(reversed(p555()), stock, tool, a, mv, why), 0) << why;
+    expect_passes(tool, mv, true, 1, -1,
+                  {{91.0000, 21.857143, 0.000000},  {88.0000, 23.714286, 14.283333},
+                   {85.0000, 25.571429, 16.033333}, {82.0000, 27.428571, 17.783333},
+                   {79.0000, 29.285714, 19.533333}, {76.0000, 31.142857, 21.283333},
+                   {73.0000, 33.000000, 23.033333}, {70.0000, 34.857143, 24.783333},
+                   {67.0000, 36.714286, 26.533333}, {64.0000, 38.571429, 28.283333},
+                   {61.0000, 40.428571, 30.033333}, {58.0000, 42.285714, 30.500000},
+                   {55.0000, 44.142857, 30.500000}, {52.0000, 46.000000, 30.500000},
+                   {49.0000, 47.857143, 29.300000}, {46.0000, 49.714286, 26.300000},
+                   {43.0000, 51.571429, 23.300000}, {40.0000, 53.428571, 20.500000},
+                   {37.0000, 55.285714, 20.500000}, {34.0000, 57.142857, 20.500000},
+                   {31.0000, 59.000000, 20.500000}, {28.0000, 60.857143, 22.700000},
+                   {25.0000, 62.714286, 25.700000}, {22.0000, 64.571429, 28.700000},
+                   {19.0000, 66.428571, 30.500000}, {16.0000, 68.285714, 30.500000},
+                   {13.0000, 70.142857, 30.500000}, {10.0000, 72.000000, 62.489974},
+                   {7.0000, 72.000000, 67.832121},  {4.0000, 72.000000, 69.749865},
+                   {1.0000, 72.000000, 70.467949},  {0.2000, 72.000000, 70.500000}});
+    EXPECT_TRUE(mv.back().to.isApprox(tool, 1e-12));
+}
+
+TEST(G64, P555Properties) {
+    for (bool along_x : {false, true}) {
+        G64Args a;
+        a.i = .5, a.k = .2;
+        (along_x ? a.has_r : a.has_p) = true;
+        (along_x ? a.r : a.p) = along_x ? 3 : 2;
+        std::vector<Move> mv;
+        std::string why;
+        V2 tool = P(200, 150);
+        // Along X the profile is called from its end and the stock from the axis
+        // (000:2530-2545).
+        std::vector<V2> stock(kStock555.rbegin(), kStock555.rend());
+        ASSERT_EQ(
+            g64(along_x ? reversed(p555()) : p555(), along_x ? stock : kStock555, tool, a, mv, why),
+            0)
+            << why;
+        Oracle o(p555(), kStock555, V2(.2, .5));
+        check_clear(o, tool, mv, 1, along_x ? "R3" : "P2");
+        // Along Z the groove behind the Ø60 land is G65's work (§6.3); the level
+        // at r 30 stops on the cone behind it, so the strip up to the level r 32
+        // over the land and the groove is left too.
+        auto groove = [&](V2 q) { return !along_x && q.x() > 10 && q.x() < 61.1 && q.y() < 32; };
+        check_cover(o, tool, mv, along_x, 1, along_x ? 3 : 2, along_x ? .2 : .5, groove,
+                    along_x ? "R3" : "P2");
+    }
+}
+
+// %1 chuck (000:3457-3474): G64 N100 N170 I.6 K.5 P2.5, stock equal to the
+// profile at both ends. Levels from Ø65 down by 2.5 (radius); the passes end on
+// the translated shoulders at Z-44.25 and Z-20.25; the Ø24.194 end level finds
+// only allowance and is skipped.
+TEST(G64, P1Chuck) {
+    Profile f = poly_profile({P(65, -46.75), P(61, -44.75), P(48.25, -44.75), P(48.25, -21.75),
+                              P(46.75, -20.75), P(26.994, -20.75), P(26.994, -1), P(22.994, 1)});
+    std::vector<V2> stock{P(65, -46.75), P(65, 1), P(22.994, 1)};
+    G64Args a;
+    a.i = .6, a.k = .5, a.has_p = true, a.p = 2.5;
+    std::vector<Move> mv;
+    std::string why;
+    V2 tool = P(200, 100);
+    ASSERT_EQ(g64(f, stock, tool, a, mv, why), 0) << why;
+    expect_passes(tool, mv, false, 1, -1,
+                  {{30, 1, -44.25},
+                   {27.5, 1, -44.25},
+                   {25, 1, -44.25},
+                   {22.5, 1, -20.25},
+                   {20, 1, -20.25},
+                   {17.5, 1, -20.25},
+                   {15, 1, -20.25}});
+    Oracle o(f, stock, V2(.5, .6));
+    check_clear(o, tool, mv, 1, "%1");
+    check_cover(o, tool, mv, false, 1, 2.5, 12.097, "%1");
+}
+
+// %2 cone (000:3483-3522): the cone Ø44.927 Z-94.8 to Ø25.258 Z-28.797 has a
+// slope of 0.149; passes on it end on the translated cone.
+TEST(G64, P2Cone) {
+    Profile f = poly_profile({P(65, -96.8), P(61, -94.8), P(44.927, -94.8), P(25.258, -28.797),
+                              P(25.258, -1), P(21.258, 1)});
+    EXPECT_NEAR((44.927 - 25.258) / 2 / (94.8 - 28.797), 0.149, 1e-5);
+    std::vector<V2> stock{P(65, -96.8), P(65, 1), P(21.258, 1)};
+    G64Args a;
+    a.i = .6, a.k = .5, a.has_p = true, a.p = 2.5;
+    std::vector<Move> mv;
+    std::string why;
+    V2 tool = P(200, 100);
+    ASSERT_EQ(g64(f, stock, tool, a, mv, why), 0) << why;
+    // Z = -94.3 + (23.0635 - r) / 9.8345 · 66.003 on the translated cone.
+    expect_passes(tool, mv, false, 1, -1,
+                  {{30, 1, -94.3},
+                   {27.5, 1, -94.3},
+                   {25, 1, -94.3},
+                   {22.5, 1, -90.518141},
+                   {20, 1, -73.739708},
+                   {17.5, 1, -56.961275},
+                   {15, 1, -40.182842},
+                   {12.5, 1, 0.229}});
+    Oracle o(f, stock, V2(.5, .6));
+    check_clear(o, tool, mv, 1, "%2");
+    check_cover(o, tool, mv, false, 1, 2.5, 11.229, "%2");
+}
+
+// The palier family with the P1 set of %11 (L1=80 L3=10 L5=50 L6=29.987
+// L7=49.8, computed by %123: L150=43.8 L151=104 L152=44 L153=56 L154=35.987
+// L155=25.987). Each profile as called, each stock as written.
+TEST(G64, PalierP1001) {
+    // G64 N80 N50 I.5 K.4 P2: the profile called backwards from its shoulder.
+    Profile f = poly_profile({P(104, 15), P(49.8, 15), P(49.8, 48.5), P(43.8, 51.5)});
+    std::vector<V2> stock{P(104, 15), P(104, 51.5), P(43.8, 51.5)};
+    G64Args a;
+    a.i = .5, a.k = .4, a.has_p = true, a.p = 2;
+    std::vector<Move> mv;
+    std::string why;
+    V2 tool = P(104, 1.5);
+    ASSERT_EQ(g64(f, stock, tool, a, mv, why), 0) << why;
+    std::vector<Row> rows;
+    for (double r = 50; r > 25; r -= 2) rows.push_back({r, 51.5, 15.4});
+    rows.push_back({24, 51.5, 50.3});
+    expect_passes(tool, mv, false, 1, -1, rows);
+    Oracle o(f, stock, V2(.4, .5));
+    check_clear(o, tool, mv, 1, "%1001");
+    check_cover(o, tool, mv, false, 1, 2, 22.4, "%1001");
+}
+
+TEST(G64, PalierP2000Face) {
+    // G64 N100 N60 I.5 K.4 R2: a face with a G3 R3 corner, centre X56 Z-5.
+    Profile f;
+    f.elems = {L(P(44, 1.5), P(50, -1.5)), L(P(50, -1.5), P(50, -5)),
+               Arc(P(50, -5), P(56, -8), P(56, -5), false), L(P(56, -8), P(104, -8))};
+    std::vector<V2> stock{P(44, 1.5), P(104, 1.5), P(104, -8)};
+    G64Args a;
+    a.i = .5, a.k = .4, a.has_r = true, a.r = 2;
+    std::vector<Move> mv;
+    std::string why;
+    V2 tool = P(104, 1.5);
+    ASSERT_EQ(g64(f, stock, tool, a, mv, why), 0) << why;
+    // Passes along X towards the axis at Z-0.5 ... -6.5 and the last at Z-7.6.
+    expect_passes(tool, mv, true, 1, -1,
+                  {{-0.5, 52, 24.9},
+                   {-2.5, 52, 25.5},
+                   {-4.5, 52, 25.5},
+                   {-6.5, 52, 26.178363},
+                   {-7.6, 52, 28.5}});
+    Oracle o(f, stock, V2(.4, .5));
+    check_clear(o, tool, mv, 1, "%2000");
+    check_cover(o, tool, mv, true, 1, 2, -7.6, "%2000");
+}
+
+// %2001 roughs a bore with I.5, a positive allowance (the spec's §11.6 flag):
+// the translation goes into the wall, so the passes stop on the finished bore
+// itself, never beyond it; K.4 still leaves 0.4 on the bottom.
+TEST(G64, PalierP2001BorePositiveI) {
+    Profile f = poly_profile({P(25.987, -52), P(29.987, -52), P(29.987, -1.5), P(35.987, 1.5)});
+    std::vector<V2> stock{P(25.987, -52), P(25.987, 1.5), P(35.987, 1.5)};
+    G64Args a;
+    a.i = .5, a.k = .4, a.has_p = true, a.p = 1;
+    std::vector<Move> mv;
+    std::string why;
+    V2 tool = P(35.987, 1.5);
+    ASSERT_EQ(g64(f, stock, tool, a, mv, why), 0) << why;
+    std::vector<Seg> p = feeds(tool, mv);
+    ASSERT_FALSE(p.empty());
+    EXPECT_NEAR(p[0].a.y(), 13.9935, 1e-9);  // the first level above the Ø25.987 hole
+    EXPECT_NEAR(p[0].b.x(), -51.6, 1e-9);    // K.4 off the bottom
+    Oracle part(f, stock, V2(0, 0)), o(f, stock, V2(.4, .5));
+    for (const Seg& s : p)
+        for (int i = 0; i <= 20; ++i) {
+            V2 q = s.a + (s.b - s.a) * (i / 20.0);
+            EXPECT_TRUE(part.in_M(q, .5 + 1e-6)) << q.transpose();
+            if (q.x() < -1.5) {
+                EXPECT_LE(q.y(), 29.987 / 2 + 1e-9);  // the bore wall
+            }
+        }
+    check_clear(o, tool, mv, .5, "%2001");
+}
+
+// The cabestan programs write the stock from the end of the profile back to
+// its start; the passes still run from the stock into the material.
+TEST(G64, Cabestan) {
+    struct Case {
+        const char* name;
+        Profile f;
+        std::vector<V2> stock;
+        V2 tool;
+        G64Args a;
+        bool swap;
+        double s, low;
+    };
+    auto args = [](double i, double k, bool r, double step) {
+        G64Args a;
+        a.i = i, a.k = k;
+        (r ? a.has_r : a.has_p) = true;
+        (r ? a.r : a.p) = step;
+        return a;
+    };
+    const double l13 = 47.5195 - 2, l3 = 47.5195, l9 = 14.6675;
+    Profile p4200 = poly_profile(
+        {P(l13, -4), P(82, -4), P(128.1332, -1.006601), P(130.15, 0.122), P(130.15, 2)});
+    Profile p4300;
+    p4300.elems = {L(P(46, 2), P(46, 0)),
+                   L(P(46, 0), P(89.978, 0)),
+                   L(P(89.978, 0), P(91.978, -1)),
+                   L(P(91.978, -1), P(91.978, -3.075)),
+                   L(P(91.978, -3.075), P(95.978, -3.075)),
+                   Arc(P(95.978, -3.075), P(105.978, -8.075), P(105.978, -3.075), false),
+                   L(P(105.978, -8.075), P(136, -9.388292)),
+                   L(P(136, -9.388292), P(136, -16)),
+                   L(P(136, -16), P(200, -16))};
+    Profile p5300;
+    p5300.elems = {L(P(0, 2), P(0, 0)),
+                   L(P(0, 0), P(96.0175, 0)),
+                   Arc(P(96.0175, 0), P(106.0175, -5), P(106.0175, 0), false),
+                   L(P(106.0175, -5), P(136, -6.973636)),
+                   L(P(136, -6.973636), P(136, -16)),
+                   L(P(136, -16), P(200, -16))};
+    std::vector<Case> cases{
+        {"%4200",
+         p4200,
+         {P(130.15, 2), P(l13, 2), P(l13, -4)},
+         P(20, 10),
+         args(-.5, .5, true, 1),
+         true,
+         1,
+         -3.5},
+        {"%7300",
+         poly_profile({P(l3, 2), P(l3, -l9)}),
+         {P(l3, 2), P(20, 2), P(20, -l9), P(l3, -l9)},
+         P(20, 5),
+         args(-.5, 0, true, 2),
+         true,
+         1,
+         -l9},
+        {"%4300",
+         p4300,
+         {P(200, -16), P(200, 2), P(46, 2)},
+         P(210, 5),
+         args(.5, .5, false, 2),
+         false,
+         1,
+         23.5},
+        {"%5300 face",
+         p5300,
+         {P(200, -16), P(200, 2), P(0, 2)},
+         P(210, 5),
+         args(.5, .5, false, 2),
+         false,
+         1,
+         .5},
+        {"%5300 counterbore",
+         poly_profile({P(46, -2.925), P(92.0175, -2.925), P(92.0175, 2)}),
+         {P(92.0175, 2), P(46, 2), P(46, -2.925)},
+         P(46, 5),
+         args(.5, .5, true, 1),
+         true,
+         1,
+         -2.425},
+        {"%5200",
+         poly_profile({P(0, 0), P(82.0175, 0), P(136, -5.8575), P(136, -5.9575), P(200, -5.8575)}),
+         {P(200, -5.8575), P(200, 2), P(0, 2), P(0, 0)},
+         P(210, 5),
+         args(.5, .5, false, 2),
+         false,
+         1,
+         .5},
+    };
+    for (const Case& c : cases) {
+        std::vector<Move> mv;
+        std::string why;
+        ASSERT_EQ(g64(c.f, c.stock, c.tool, c.a, mv, why), 0) << c.name << ": " << why;
+        EXPECT_FALSE(feeds(c.tool, mv).empty()) << c.name;
+        EXPECT_TRUE(mv.back().to.isApprox(c.tool, 1e-12)) << c.name;
+        Oracle o(c.f, c.stock, V2(c.a.k, c.a.i));
+        double step = c.a.has_p ? c.a.p : c.a.r;
+        check_clear(o, c.tool, mv, std::min(1.0, step / 2), c.name);
+        check_cover(o, c.tool, mv, c.swap, c.s, step, c.low, c.name);
+        // The stock written the other way round gives the same passes.
+        std::vector<V2> back(c.stock.rbegin(), c.stock.rend());
+        std::vector<Move> mv2;
+        ASSERT_EQ(g64(c.f, back, c.tool, c.a, mv2, why), 0) << c.name;
+        ASSERT_EQ(mv2.size(), mv.size()) << c.name;
+        for (size_t i = 0; i < mv.size(); ++i) EXPECT_TRUE(mv2[i].to.isApprox(mv[i].to, 1e-9));
+    }
+    // %4200 on a fresh start: L13 = L3-2 is read before %7300 sets L3, so the
+    // profile starts at X-2, beyond the spindle axis (EXPECTED.md: error 874).
+    std::vector<Move> mv;
+    std::string why;
+    Profile fresh = poly_profile({P(-2, -4), P(82, -4), P(130.15, -.878), P(130.15, 2)});
+    EXPECT_EQ(
+        g64(fresh, {P(130.15, 2), P(-2, 2), P(-2, -4)}, P(20, 10), args(-.5, .5, true, 1), mv, why),
+        874);
+}
+
+// Random stepped shafts (shoulders, cylinders and cones), roughed along Z and
+// along X with random allowances and depths.
+TEST(G64, RandomShaftsProperties) {
+    std::mt19937 rng(20240613);
+    std::uniform_real_distribution<double> u(0, 1);
+    for (int n = 0; n < 40; ++n) {
+        std::vector<V2> pts{V2(0, 30 + 10 * u(rng))};
+        double z = 0, r = pts[0].y();
+        int steps = 2 + int(u(rng) * 4);
+        for (int k = 0; k < steps; ++k) {
+            z += 3 + 10 * u(rng);
+            pts.push_back(V2(z, r));
+            double nr = r - 2 - 6 * u(rng);
+            if (nr < 3) break;
+            double dz = u(rng) < .4 ? 2 + 5 * u(rng) : 0;  // a cone or a shoulder
+            z += dz;
+            r = nr;
+            pts.push_back(V2(z, r));
+        }
+        z += 3 + 5 * u(rng);
+        pts.push_back(V2(z, r));
+        pts.push_back(V2(z, u(rng) < .5 ? 0 : r / 3));  // the end face
+        Profile f;
+        for (size_t i = 0; i + 1 < pts.size(); ++i) f.elems.push_back(L(pts[i], pts[i + 1]));
+        double top = pts[0].y() + 1 + 4 * u(rng);
+        std::vector<V2> stock{V2(0, top), V2(z + 2, top), V2(z + 2, pts.back().y())};
+        bool along_x = n % 2;
+        G64Args a;
+        a.i = .8 * u(rng), a.k = .8 * u(rng);
+        double step = .7 + 2.5 * u(rng);
+        (along_x ? a.has_r : a.has_p) = true;
+        (along_x ? a.r : a.p) = step;
+        Profile called = along_x ? reversed(f) : f;
+        std::vector<V2> st = along_x ? std::vector<V2>(stock.rbegin(), stock.rend()) : stock;
+        std::vector<Move> mv;
+        std::string why;
+        V2 tool(z + 30, top + 20);
+        ASSERT_EQ(g64(called, st, tool, a, mv, why), 0) << n << ": " << why;
+        Oracle o(f, stock, V2(a.k, a.i));
+        std::string name = "shaft " + std::to_string(n);
+        double c = std::min(1.0, step / 2);
+        check_clear(o, tool, mv, c, name.c_str());
+        double low = 1e300;
+        for (V2 p : pts) low = std::min(low, (along_x ? p.x() + a.k : p.y() + a.i));
+        check_cover(o, tool, mv, along_x, 1, step, low, name.c_str());
+        // A stepped profile with paraxial allowances: nothing nearer than the
+        // smaller allowance (shoulders get K, cylinders I, cones more).
+        for (const Seg& s : feeds(tool, mv))
+            for (int i = 0; i <= 20; ++i)
+                EXPECT_GE(o.dist_f(s.a + (s.b - s.a) * (i / 20.0)), std::min(a.i, a.k) - 1e-6);
+    }
+}
+
+TEST(G64, Errors) {
+    std::vector<Move> mv;
+    std::string why;
+    G64Args a;
+    EXPECT_EQ(g64(p555(), kStock555, P(200, 150), a, mv, why), 873);  // neither P nor R
+    a.has_p = a.has_r = true, a.p = a.r = 2;
+    EXPECT_EQ(g64(p555(), kStock555, P(200, 150), a, mv, why), 889);  // both
+    a.has_r = false, a.p = 0;
+    EXPECT_EQ(g64(p555(), kStock555, P(200, 150), a, mv, why), 873);  // P0
+    a.p = 2;
+    EXPECT_EQ(g64(Profile{}, kStock555, P(200, 150), a, mv, why), 871);
+    Profile broken = p555();
+    broken.elems.erase(broken.elems.begin() + 3);
+    EXPECT_EQ(g64(broken, kStock555, P(200, 150), a, mv, why), 871);  // not continuous
+    EXPECT_EQ(g64(p555(), {}, P(200, 150), a, mv, why), 872);
+    // A stock that crosses the profile, a profile beyond the axis (%100's
+    // printed X-40), a stock that encloses nothing.
+    EXPECT_EQ(g64(p555(), {P(144, 0), P(144, 10), P(40, 20), P(40, 94), P(0, 94)}, P(200, 150), a,
+                  mv, why),
+              874);
+    EXPECT_EQ(g64(poly_profile({P(30, -20), P(-40, -25), P(40, -45)}), {P(30, -20), P(50, -45)},
+                  P(200, 150), a, mv, why),
+              874);
+    EXPECT_EQ(
+        g64(poly_profile({P(40, 0), P(40, 50)}), {P(40, 0), P(40, 50)}, P(200, 150), a, mv, why),
+        874);
+    EXPECT_TRUE(mv.empty());
+}
+
+// ---------------------------------------------------------------- G65 ----
+
+// %555 groove (000:2593-2612, worked check §12.5): from X62 Z50, EA-135 P2 Z20
+// I.5 K.2. The infeed line r = z - 19 runs parallel to the translated flank
+// and meets the translated bottom at C (Z39.5, r 20.5); passes at r 29 ... 20.5
+// from the EA line to the translated left flank, the limit Z20 never reached.
+TEST(G65, P555Groove) {
+    G65Args a;
+    a.has_z = true, a.z = 20, a.has_p = true, a.p = 2, a.i = .5, a.k = .2, a.has_ea = true,
+    a.ea = -135;
+    std::vector<Move> mv;
+    std::string why;
+    V2 tool = P(62, 50);
+    ASSERT_EQ(g65(p555(), tool, a, mv, why), 0) << why;
+    std::vector<Seg> f = feeds(tool, mv);
+    const double lv[] = {29, 27, 25, 23, 21, 20.5};
+    ASSERT_EQ(f.size(), 12u);
+    V2 e = tool;
+    for (int k = 0; k < 6; ++k) {
+        const Seg& in = f[2 * k];
+        const Seg& cut = f[2 * k + 1];
+        EXPECT_TRUE(in.infeed && !cut.infeed);
+        EXPECT_TRUE(in.a.isApprox(e, 1e-9)) << k;  // from the previous infeed point
+        e = V2(lv[k] + 19, lv[k]);                 // on the EA line
+        EXPECT_TRUE(in.b.isApprox(e, 1e-9)) << k << ": " << in.b.transpose();
+        EXPECT_NEAR(cut.b.y(), lv[k], 1e-9);
+        EXPECT_NEAR(cut.b.x(), 20.2 + 30.5 - lv[k] - (lv[k] < 20.5 + 1e-9 ? 0 : 0), 1e-9) << k;
+    }
+    EXPECT_TRUE(f.back().a.isApprox(V2(39.5, 20.5), 1e-9));  // C
+    // Each level: retract 1 mm, back along Z over the infeed point, down onto it;
+    // at the end up to r 31, then back to Z50.
+    EXPECT_TRUE(mv[2].to.isApprox(V2(21.7, 30), 1e-9));
+    EXPECT_TRUE(mv[3].to.isApprox(V2(48, 30), 1e-9));
+    EXPECT_TRUE(mv[4].to.isApprox(V2(48, 29), 1e-9));
+    EXPECT_TRUE(mv[mv.size() - 2].to.isApprox(V2(39.5, 31), 1e-9));
+    EXPECT_TRUE(mv.back().to.isApprox(tool, 1e-12));
+    // Without allowance the line meets N150 (Ø40) at Z39 (EXPECTED.md).
+    a.i = a.k = 0;
+    ASSERT_EQ(g65(p555(), tool, a, mv, why), 0) << why;
+    f = feeds(tool, mv);
+    EXPECT_TRUE(f[f.size() - 2].b.isApprox(P(40, 39), 1e-9));
+    Oracle o(p555(), kStock555, V2(.2, .5));
+    a.i = .5, a.k = .2;
+    ASSERT_EQ(g65(p555(), tool, a, mv, why), 0);
+    check_clear(o, tool, mv, 1, "G65 %555");
+}
+
+// S4's %555 (004:1389-1434): G0 X52 Z55, G65 N1100 N1000 EA-160.201 P2 Z0 I1 K0.5.
+// The EA line (slope 0.36) is parallel to the cone X50 Z55 - X32 Z30; the limit
+// Z0 stops the passes above the translated face, the face stops those below.
+TEST(G65, S4Groove) {
+    Profile f = reversed(
+        poly_profile({P(0, 100), P(40, 100), P(40, 75), P(50, 75), P(50, 55), P(32, 30), P(32, 0),
+                      P(44, 0), P(60, -8), P(60, -14), P(65, -14), P(65, -17), P(80, -17)}));
+    G65Args a;
+    a.has_z = true, a.z = 0, a.has_p = true, a.p = 2, a.i = 1, a.k = .5, a.has_ea = true,
+    a.ea = -160.201;
+    std::vector<Move> mv;
+    std::string why;
+    V2 tool = P(52, 55);
+    ASSERT_EQ(g65(f, tool, a, mv, why), 0) << why;
+    std::vector<Seg> s = feeds(tool, mv);
+    ASSERT_EQ(s.size(), 10u);
+    const double lv[] = {24, 22, 20, 18, 17};
+    const double ez[] = {49.444482, 43.888964, 38.333446, 32.777928, 30.000169};
+    const double tz[] = {0, .5, .5, .5, .5};
+    for (int k = 0; k < 5; ++k) {
+        EXPECT_TRUE(s[2 * k].b.isApprox(V2(ez[k], lv[k]), 1e-5))
+            << k << ": " << s[2 * k].b.transpose();
+        EXPECT_TRUE(s[2 * k + 1].b.isApprox(V2(tz[k], lv[k]), 1e-9)) << k;
+    }
+    Oracle o(f, {P(80, -17), P(80, 105), P(40, 105)}, V2(.5, 1));
+    check_clear(o, tool, mv, 1, "G65 S4");
+}
+
+// A frontal groove in a face (X with R): passes along X at levels stepping down
+// Z, from an infeed line almost along -Z towards the inner wall.
+TEST(G65, FaceGroove) {
+    Profile f = poly_profile({P(80, 0), P(60, 0), P(60, -5), P(40, -5), P(40, 0), P(20, 0)});
+    G65Args a;
+    a.has_x = true, a.x = 8, a.has_r = true, a.r = 2, a.k = .3, a.has_ea = true, a.ea = -175;
+    std::vector<Move> mv;
+    std::string why;
+    V2 tool = P(58, 2);
+    ASSERT_EQ(g65(f, tool, a, mv, why), 0) << why;
+    std::vector<Seg> s = feeds(tool, mv);
+    ASSERT_EQ(s.size(), 8u);  // levels Z0, Z-2, Z-4 and K.3 off the bottom, Z-4.7
+    const double lv[] = {0, -2, -4, -4.7};
+    for (int k = 0; k < 4; ++k) {
+        EXPECT_NEAR(s[2 * k].b.x(), lv[k], 1e-9);
+        EXPECT_NEAR(s[2 * k].b.y(), 29 - (2 - lv[k]) * std::tan(5 * kPi / 180), 1e-9);
+        EXPECT_NEAR(s[2 * k + 1].b.y(), 20, 1e-9);  // the inner wall X40, no I
+        EXPECT_NEAR(s[2 * k + 1].b.x(), lv[k], 1e-9);
+    }
+    Oracle o(f, {P(80, 2), P(20, 2)}, V2(.3, 0));
+    check_clear(o, tool, mv, 1, "G65 face");
+}
+
+TEST(G65, Errors) {
+    std::vector<Move> mv;
+    std::string why;
+    G65Args a;
+    a.has_ea = true, a.ea = -135, a.has_p = true, a.p = 2;
+    EXPECT_EQ(g65(p555(), P(62, 50), a, mv, why), 862);  // P without Z
+    a.has_x = true, a.x = 10;
+    EXPECT_EQ(g65(p555(), P(62, 50), a, mv, why), 862);  // P with X
+    a.has_z = true, a.z = 20;
+    EXPECT_EQ(g65(p555(), P(62, 50), a, mv, why), 889);  // X and Z
+    a.has_x = false, a.has_r = true;
+    EXPECT_EQ(g65(p555(), P(62, 50), a, mv, why), 889);  // P and R
+    a.has_r = false, a.has_ea = false;
+    EXPECT_EQ(g65(p555(), P(62, 50), a, mv, why), 2);  // no EA
+    a.has_ea = true;
+    EXPECT_EQ(g65(Profile{}, P(62, 50), a, mv, why), 871);
+    a.z = 60;  // the limit behind the start, away from where EA leads
+    EXPECT_EQ(g65(p555(), P(62, 50), a, mv, why), 863);
+    a.z = 20, a.ea = 180;  // along the passes
+    EXPECT_EQ(g65(p555(), P(62, 50), a, mv, why), 863);
+    a.ea = -135, a.i = .5, a.k = .2;
+    EXPECT_EQ(g65(p555(), P(62, 150), a, mv, why), 875);     // the line misses the profile
+    EXPECT_EQ(g65(p555(), P(40.6, 39.8), a, mv, why), 875);  // the start within the allowance
+    EXPECT_TRUE(mv.empty());
+}
+
+// ---------------------------------------------------------------- G63 ----
+
+// %100's interior profile (000:2708-2767) with its R2 fillets resolved: tangent
+// points X40 Z-43.292 / X37.143 Z-45.208 and X37.143 Z-54.792 / X40 Z-56.708
+// around the R5 semicircle centred X40 Z-50 (EXPECTED.md).
+Profile p100() {
+    double zt = -50 + std::sqrt(45.0);
+    V2 c0 = P(40, -50), c1(zt, 18), c2(-100 - zt, 18);
+    V2 t1 = c1 + (c0 - c1).normalized() * 2, t2 = c2 + (c0 - c2).normalized() * 2;
+    Profile p = poly_profile({P(50, 5), P(30, -5), P(30, -20), P(40, -25), V2(zt, 20)});
+    p.elems.push_back(Arc(V2(zt, 20), t1, c1, true));
+    p.elems.push_back(Arc(t1, t2, c0, false));
+    p.elems.push_back(Arc(t2, V2(-100 - zt, 20), c2, true));
+    for (auto [a, b] : std::vector<std::pair<V2, V2>>{{V2(-100 - zt, 20), P(40, -75)},
+                                                      {P(40, -75), P(30, -80)},
+                                                      {P(30, -80), P(30, -85)},
+                                                      {P(30, -85), P(16, -92)}})
+        p.elems.push_back(L(a, b));
+    return p;
+}
+
+G63Args p100_args() {
+    G63Args a;
+    a.has_x = a.has_z = true, a.x = 8, a.z = 5, a.has_eu = true, a.eu = 25, a.has_ez = true,
+    a.ez = -92, a.has_p = true, a.p = 2, a.has_eb = true, a.eb = 110, a.has_ec = true, a.ec = 70,
+    a.er = .2, a.q = 1, a.eq = .5;
+    return a;
+}
+
+TEST(G63, P100InteriorWithPockets) {
+    Profile f = p100();
+    EXPECT_TRUE(f.elems[4].b.isApprox(P(37.143, -45.208), 1e-3));
+    EXPECT_TRUE(f.elems[6].a.isApprox(P(37.143, -54.792), 1e-3));
+    std::vector<Move> mv;
+    std::string why;
+    V2 tool = P(10, 10);
+    ASSERT_EQ(g63(f, tool, p100_args(), mv, why), 0) << why;
+    EXPECT_TRUE(mv.front().to.isApprox(P(16, 5), 1e-12));  // rapid to D first
+    EXPECT_TRUE(mv.back().to.isApprox(P(16, 5), 1e-12));   // and back to it
+    std::vector<Seg> s = feeds(tool, mv);
+    // Levels from the Ø16 hole by 2 (radius); the first three pass under the
+    // Ø30 lands to the Ø16 cone at the bottom, offset 0.2 normal to it.
+    ASSERT_GE(s.size(), 3u);
+    for (int k = 0; k < 3; ++k) {
+        double r = 10 + 2 * k;
+        EXPECT_TRUE(s[k].a.isApprox(V2(6, r), 1e-9)) << k;
+        // The cone r = 8 + (-92 - z) ... offset by 0.2: z = -92 + (r - 8) - 0.2·√2.
+        EXPECT_NEAR(s[k].b.x(), -92 + (r - 8) + .2 * std::sqrt(2.0), 1e-9) << k;
+    }
+    // Both pockets are entered at Ø32 and Ø36 over the Ø30 land and the ridge.
+    int in_pocket = 0, infeeds = 0;
+    for (const Seg& g : s) {
+        if (g.infeed) ++infeeds;
+        if (std::fabs(g.a.y() - g.b.y()) < 1e-9 && g.a.y() > 15.5 &&
+            std::max(g.a.x(), g.b.x()) < -21)
+            ++in_pocket;
+    }
+    EXPECT_EQ(in_pocket, 4);
+    EXPECT_EQ(infeeds, 4);
+    // Never nearer than ER to the profile; inside the stock (hole Ø16 to EU50,
+    // Z5 to EZ-92) but for the clearance Q.
+    Oracle o(f, {P(50, 5), P(16, 5), P(16, -92)}, V2(0, 0));
+    o.er = .2;
+    check_clear(o, tool, mv, 1, "G63 %100");
+    for (const Seg& g : s)
+        for (V2 q : {g.a, g.b}) {
+            EXPECT_GE(q.y(), 8 - 1 - 1e-9);
+            EXPECT_LE(q.x(), 6 + 1e-9);
+            EXPECT_GE(q.x(), -92 - 1e-9);
+        }
+}
+
+// EB limits the pockets entered: a flank steeper than EB is not followed.
+TEST(G63, EntryAngle) {
+    G63Args a = p100_args();
+    a.eb = 30;  // the pocket flanks are at 45° and the ridge's back at 37°
+    std::vector<Move> mv;
+    std::string why;
+    ASSERT_EQ(g63(p100(), P(10, 10), a, mv, why), 0) << why;
+    for (const Seg& g : feeds(P(10, 10), mv)) EXPECT_FALSE(g.infeed);
+    // EQ drops a last level thinner than the minimum chip: EU46.8 leaves 1.4
+    // above the level at Ø44.
+    a = p100_args();
+    a.eu = 23.4, a.eq = 1.5;
+    ASSERT_EQ(g63(p100(), P(10, 10), a, mv, why), 0);
+    double top = 0;
+    for (const Seg& g : feeds(P(10, 10), mv)) top = std::max(top, g.a.y());
+    EXPECT_NEAR(top, 22, 1e-9);
+    a.eq = .5;
+    ASSERT_EQ(g63(p100(), P(10, 10), a, mv, why), 0);
+    top = 0;
+    for (const Seg& g : feeds(P(10, 10), mv)) top = std::max(top, g.a.y());
+    EXPECT_NEAR(top, 23.4, 1e-9);
+}
+
+TEST(G63, Errors) {
+    std::vector<Move> mv;
+    std::string why;
+    G63Args a = p100_args();
+    a.has_p = false;
+    EXPECT_EQ(g63(p100(), P(10, 10), a, mv, why), 873);
+    a.has_p = a.has_r = true;
+    EXPECT_EQ(g63(p100(), P(10, 10), a, mv, why), 889);
+    a = p100_args();
+    a.has_ez = false;
+    EXPECT_EQ(g63(p100(), P(10, 10), a, mv, why), 862);
+    a = p100_args();
+    a.eb = 190;
+    EXPECT_EQ(g63(p100(), P(10, 10), a, mv, why), 876);
+    a = p100_args();
+    a.has_x = false;
+    EXPECT_EQ(g63(p100(), P(10, 10), a, mv, why), 2);
+    a = p100_args();
+    EXPECT_EQ(g63(Profile{}, P(10, 10), a, mv, why), 871);
+    a.has_ea = true, a.ea = 0;  // the start line along the passes
+    EXPECT_EQ(g63(p100(), P(10, 10), a, mv, why), 875);
+    // The printed N160 X-40 crosses the spindle axis (EXPECTED.md: 874).
+    Profile bad =
+        poly_profile({P(50, 5), P(30, -5), P(30, -20), P(-40, -25), P(40, -45), P(16, -92)});
+    EXPECT_EQ(g63(bad, P(10, 10), p100_args(), mv, why), 874);
+}
+
+// ---------------------------------------------------------------- G66 ----
+
+// %2's groove (000:3493-3494): D10 at X27 Z-32.3, G66 D11 X23 Z-27.8 R4 EF1.
+// With equal gauges the width 4.5 takes 3 plunges 2.25 apart, each to Ø23 with
+// a 1 s dwell.
+TEST(G66, P2Groove) {
+    G66Args a;
+    a.d_first = 10, a.d = 11, a.has_x = a.has_z = true, a.x = 11.5, a.z = -27.8, a.has_r = true,
+    a.r = 4, a.ef = 1;
+    std::vector<Move> mv;
+    std::string why;
+    V2 tool = P(27, -32.3);
+    ASSERT_EQ(g66(tool, a, mv, why), 0) << why;
+    std::vector<Seg> s = feeds(tool, mv);
+    const double z[] = {-32.3, -30.05, -27.8};
+    ASSERT_EQ(s.size(), 3u);
+    for (int i = 0; i < 3; ++i) {
+        EXPECT_TRUE(s[i].a.isApprox(P(27, z[i]), 1e-9)) << i;
+        EXPECT_TRUE(s[i].b.isApprox(P(23, z[i]), 1e-9)) << i;
+    }
+    for (const Move& m : mv) EXPECT_EQ(m.dwell, m.g == 1 ? 1.0 : 0.0);
+    EXPECT_TRUE(mv.back().to.isApprox(P(27, -27.8), 1e-9));
+    // Correctors 4 mm apart (the tool width): the turret travels 0.5 mm, two
+    // plunges; the tool ends at Z-31.8 in D10's terms, which D11 reads as Z-27.8.
+    a.gauge_delta = V2(-4, 0);
+    ASSERT_EQ(g66(tool, a, mv, why), 0) << why;
+    s = feeds(tool, mv);
+    ASSERT_EQ(s.size(), 2u);
+    EXPECT_NEAR(s[1].a.x(), -31.8, 1e-9);
+    EXPECT_TRUE(mv.back().to.isApprox(P(27, -31.8), 1e-9));
+}
+
+// The handbook's example (000:2829-2840): from X66 Z30, G66 D15 X46 Z50 EA10 R5 EF1:
+// a sloping bottom through B, 4 plunges 5 mm apart; with EP a 45° move back
+// over the cut part of the groove after every plunge but the first.
+TEST(G66, SlopeAndEp) {
+    G66Args a;
+    a.d_first = 1, a.d = 15, a.has_x = a.has_z = true, a.x = 23, a.z = 50, a.ea = 10,
+    a.has_r = true, a.r = 5, a.ef = 1, a.ep = .5;
+    std::vector<Move> mv;
+    std::string why;
+    V2 tool = P(66, 30);
+    ASSERT_EQ(g66(tool, a, mv, why), 0) << why;
+    std::vector<Seg> s = feeds(tool, mv);
+    ASSERT_EQ(s.size(), 5u + 4u);
+    double t10 = std::tan(10 * kPi / 180);
+    int plunge = 0;
+    for (const Seg& g : s) {
+        if (g.a.y() != 33) continue;  // the 45° moves start at the bottom
+        double z = 30 + 5 * plunge++;
+        EXPECT_TRUE(g.b.isApprox(V2(z, 23 + (z - 50) * t10), 1e-9)) << z;
+    }
+    EXPECT_EQ(plunge, 5);
+    for (size_t i = 1; i < s.size(); ++i)
+        if (s[i].a.y() < 33 && s[i - 1].b == s[i].a) {
+            V2 d = s[i].b - s[i].a;
+            EXPECT_NEAR(d.x(), -.5 / std::sqrt(2.0), 1e-12);
+            EXPECT_NEAR(d.y(), .5 / std::sqrt(2.0), 1e-12);
+        }
+}
+
+// A frontal groove (P): plunges along Z spread along X.
+TEST(G66, Frontal) {
+    G66Args a;
+    a.d_first = 1, a.d = 2, a.has_x = a.has_z = true, a.x = 30, a.z = -6, a.has_p = true, a.p = 3;
+    std::vector<Move> mv;
+    std::string why;
+    V2 tool = P(40, 2);  // r 20 to r 30: 10 mm, 4 plunges
+    ASSERT_EQ(g66(tool, a, mv, why), 0) << why;
+    std::vector<Seg> s = feeds(tool, mv);
+    ASSERT_EQ(s.size(), 5u);
+    for (int i = 0; i < 5; ++i) EXPECT_TRUE(s[i].b.isApprox(V2(-6, 20 + 2.5 * i), 1e-9)) << i;
+}
+
+TEST(G66, Errors) {
+    std::vector<Move> mv;
+    std::string why;
+    G66Args a;
+    a.d_first = 1, a.d = 2, a.has_x = a.has_z = true, a.x = 11.5, a.z = -27.8;
+    EXPECT_EQ(g66(P(27, -32.3), a, mv, why), 862);  // no R or P
+    a.has_r = a.has_p = true, a.r = a.p = 4;
+    EXPECT_EQ(g66(P(27, -32.3), a, mv, why), 889);
+    a.has_p = false, a.d = 0;
+    EXPECT_EQ(g66(P(27, -32.3), a, mv, why), 898);
+    a.d = 2, a.milling_tool = true;
+    EXPECT_EQ(g66(P(27, -32.3), a, mv, why), 864);
+    a.milling_tool = false, a.gauge_delta = V2(-6, 0);  // a tool wider than the groove
+    EXPECT_EQ(g66(P(27, -32.3), a, mv, why), 863);
+    a.gauge_delta = V2(0, 0), a.x = 13.5;  // the bottom at the approach radius
+    EXPECT_EQ(g66(P(27, -32.3), a, mv, why), 863);
+    EXPECT_TRUE(mv.empty());
+}
+
+// ---------------------------------------------------------------- G33 ----
+
+// M20×2.5 (000:3226-3236, §12.6): G33 X20 Z10 K2.5 P2.165 Q.05 S6 from X24 Z64.
+TEST(G33, DegressivePasses) {
+    G33Args a;
+    a.has_x = a.has_z = a.has_k = a.has_p = a.has_q = a.has_s = true;
+    a.x = 10, a.z = 10, a.k = 2.5, a.p = 2.165, a.q = .05, a.s = 6;
+    std::vector<Move> mv;
+    std::string why;
+    V2 tool = P(24, 64);
+    ASSERT_EQ(g33(tool, a, mv, why), 0) << why;
+    const double depth[] = {0.863, 1.221, 1.496, 1.727, 1.931, 2.115, 2.165};
+    std::vector<Seg> s = segs(tool, mv);
+    std::vector<Seg> threads;
+    for (const Seg& g : s)
+        if (g.g == 33) threads.push_back(g);
+    ASSERT_EQ(threads.size(), 7u);
+    for (int i = 0; i < 7; ++i) {
+        EXPECT_NEAR(10 - threads[i].a.y(), depth[i], 5e-4) << i;
+        EXPECT_NEAR(threads[i].a.x(), 64, 1e-12);
+        EXPECT_NEAR(threads[i].b.x(), 10, 1e-12);
+        EXPECT_EQ(threads[i].a.y(), threads[i].b.y());
+    }
+    EXPECT_NEAR(2 * threads.back().b.y(), 15.67, 1e-9);  // the root diameter
+    // One pass: rapid in radially, thread, rapid out to X24 at Z10, rapid back.
+    ASSERT_EQ(mv.size(), 7u * 4u);
+    EXPECT_EQ(mv[0].g, 0);
+    EXPECT_TRUE(mv[2].g == 0 && mv[2].to.isApprox(P(24, 10), 1e-12));
+    EXPECT_TRUE(mv[3].g == 0 && mv[3].to.isApprox(tool, 1e-12));
+    EXPECT_TRUE(mv.back().to.isApprox(tool, 1e-12));
+}
+
+// Taper, 2 starts (000:3248-3262): G33 X90.507 Z-30 K4 EA-9.87 EB30 R3 P1.2 Q.06
+// S4 F2 from X82.327 Z5. Values from a one-off script: the clearance line lies
+// 1.999595 above the crest r = 45.2535 + (z + 30)·tan(-9.87°).
+TEST(G33, TaperTwoStartsObliqueExit) {
+    G33Args a;
+    a.has_x = a.has_z = a.has_k = a.has_p = a.has_q = a.has_s = a.has_f = true;
+    a.x = 90.507 / 2, a.z = -30, a.k = 4, a.ea = -9.87, a.eb = 30, a.r = 3, a.p = 1.2, a.q = .06,
+    a.s = 4, a.f = 2;
+    std::vector<Move> mv;
+    std::string why;
+    V2 tool = P(82.327, 5);
+    ASSERT_EQ(g33(tool, a, mv, why), 0) << why;
+    // 5 depths × 2 starts, each: to the clearance line (not needed for the
+    // first, the tool is there), infeed, thread, exit slope, back; then to the start.
+    ASSERT_EQ(mv.size(), 5u * 2u * 5u - 1u + 1u);
+    std::vector<Move> full(1);  // the tool's position as a first rapid
+    full[0].to = tool;
+    full.insert(full.end(), mv.begin(), mv.end());
+    std::vector<size_t> threads;
+    for (size_t i = 1; i < full.size(); ++i)
+        if (full[i].g == 33 && full[i - 1].g == 0) threads.push_back(i);
+    ASSERT_EQ(threads.size(), 10u);
+    auto pass = [&](int depth, int start) { return &full[threads[size_t(2 * depth + start)] - 2]; };
+    struct Expect {
+        int depth, start;
+        V2 clear, in, end;
+    } ex[] = {
+        {0, 0, {5, 41.1635}, {5.329090, 38.593905}, {-27, 44.161535}},
+        {0, 1, {7, 40.815523}, {7.329090, 38.245928}, {-27, 44.161535}},
+        {4, 0, {5, 41.1635}, {5.692820, 37.963905}, {-27, 43.531535}},
+        {4, 1, {7, 40.815523}, {7.692820, 37.615928}, {-27, 43.531535}},
+    };
+    for (const Expect& e : ex) {
+        const Move* m = pass(e.depth, e.start);
+        EXPECT_TRUE(m[0].g == 0 && m[0].to.isApprox(e.clear, 1e-6)) << m[0].to.transpose();
+        EXPECT_TRUE(m[1].g == 0 && m[1].to.isApprox(e.in, 1e-6)) << m[1].to.transpose();
+        EXPECT_TRUE(m[2].g == 33 && m[2].to.isApprox(e.end, 1e-6)) << m[2].to.transpose();
+        EXPECT_TRUE(m[3].g == 33 && m[3].to.isApprox(V2(-30, 47.253095), 1e-6));  // exit slope
+        EXPECT_TRUE(m[4].g == 0 && m[4].to.isApprox(e.clear, 1e-6));
+    }
+    EXPECT_TRUE(mv[0].to.isApprox(V2(5.329090, 38.593905), 1e-6));  // straight to the infeed
+    EXPECT_TRUE(mv.back().to.isApprox(tool, 1e-12));
+}
+
+TEST(G33, ConstantPassesSpringPassInternalFace) {
+    G33Args a;
+    a.has_x = a.has_z = a.has_k = a.has_p = a.has_es = true;
+    a.x = 10, a.z = 10, a.k = 2, a.p = 1.2, a.es = 4;
+    std::vector<Move> mv;
+    std::string why;
+    auto depths = [&](V2 tool, bool x_axis) {
+        std::vector<double> d;
+        for (const Seg& g : segs(tool, mv))
+            if (g.g == 33) d.push_back(x_axis ? g.a.x() : g.a.y());
+        return d;
+    };
+    // ES: equal steps, no finishing pass without Q.
+    ASSERT_EQ(g33(P(24, 40), a, mv, why), 0) << why;
+    std::vector<double> d = depths(P(24, 40), false);
+    ASSERT_EQ(d.size(), 4u);
+    for (int i = 0; i < 4; ++i) EXPECT_NEAR(10 - d[size_t(i)], .3 * (i + 1), 1e-12);
+    // Q0: a spring pass at the full depth.
+    a.has_q = true, a.q = 0;
+    ASSERT_EQ(g33(P(24, 40), a, mv, why), 0);
+    d = depths(P(24, 40), false);
+    ASSERT_EQ(d.size(), 5u);
+    EXPECT_NEAR(d[3], d[4], 1e-12);
+    // An internal thread: the start inside the crest line, the depth outwards.
+    a.has_q = false;
+    ASSERT_EQ(g33(P(16, 40), a, mv, why), 0);
+    d = depths(P(16, 40), false);
+    EXPECT_NEAR(d.back(), 11.2, 1e-12);
+    // A face thread (EA90): the lead along X, the depth along -Z.
+    a.ea = 90, a.x = 40, a.z = 0;
+    ASSERT_EQ(g33(P(20, 3), a, mv, why), 0) << why;
+    std::vector<Seg> t;
+    for (const Seg& g : segs(P(20, 3), mv))
+        if (g.g == 33) t.push_back(g);
+    ASSERT_EQ(t.size(), 4u);
+    EXPECT_NEAR(t.back().a.x(), -1.2, 1e-12);
+    EXPECT_NEAR(t.back().a.y(), 10, 1e-12);
+    EXPECT_NEAR(t.back().b.y(), 40, 1e-12);
+}
+
+TEST(G33, Errors) {
+    auto ok = [] {
+        G33Args a;
+        a.has_x = a.has_z = a.has_k = a.has_p = true;
+        a.x = 10, a.z = 10, a.k = 2.5, a.p = 1.5;
+        return a;
+    };
+    std::vector<Move> mv;
+    std::string why;
+    V2 tool = P(24, 64);
+    G33Args a = ok();
+    ASSERT_EQ(g33(tool, a, mv, why), 0);
+    a.has_k = false;
+    EXPECT_EQ(g33(tool, a, mv, why), 832);
+    a = ok(), a.has_s = a.has_es = true;
+    EXPECT_EQ(g33(tool, a, mv, why), 889);
+    a = ok(), a.k = -2.5;
+    EXPECT_EQ(g33(tool, a, mv, why), 835);
+    a = ok(), a.has_q = true, a.q = -.1;
+    EXPECT_EQ(g33(tool, a, mv, why), 835);
+    a = ok(), a.eb = 95;
+    EXPECT_EQ(g33(tool, a, mv, why), 834);
+    a = ok(), a.eb = -90;
+    EXPECT_EQ(g33(tool, a, mv, why), 834);
+    a = ok(), a.has_f = true, a.f = 12;
+    EXPECT_EQ(g33(tool, a, mv, why), 884);
+    a = ok(), a.has_f = true, a.f = 0;
+    EXPECT_EQ(g33(tool, a, mv, why), 837);
+    a = ok(), a.has_s = true, a.s = 0;
+    EXPECT_EQ(g33(tool, a, mv, why), 837);
+    a = ok(), a.has_q = true, a.q = 2;
+    EXPECT_EQ(g33(tool, a, mv, why), 881);  // Q deeper than P
+    a = ok(), a.r = 60;
+    EXPECT_EQ(g33(tool, a, mv, why), 881);  // exit longer than the thread
+    a = ok(), a.radius_comp = true;
+    EXPECT_EQ(g33(tool, a, mv, why), 27);
+    a = ok(), a.plane_ok = false;
+    EXPECT_EQ(g33(tool, a, mv, why), 836);
+    a = ok(), a.spindle_turning = false;
+    EXPECT_EQ(g33(tool, a, mv, why), 831);
+    a = ok();
+    EXPECT_EQ(g33(P(20, 64), a, mv, why), 833);  // the start on the crest line
+    EXPECT_TRUE(mv.empty());
+}
+
+// ---------------------------------------------------------------- G38 ----
+
+// 000:3302-3310: a chain of synchronised moves, one per block, each its lead.
+TEST(G38, Chain) {
+    std::vector<Move> mv;
+    std::string why;
+    G38Args a;
+    a.to = P(30, 20), a.has_k = true, a.k = 4;
+    ASSERT_EQ(g38(P(30, 60), a, mv, why), 0) << why;
+    ASSERT_EQ(mv.size(), 1u);
+    EXPECT_EQ(mv[0].g, 33);
+    EXPECT_TRUE(mv[0].to.isApprox(P(30, 20), 1e-12));
+    EXPECT_EQ(thread_axis(P(30, 60), P(30, 20)), 0);
+    // The next block keeps the chain's lead when it gives no K.
+    a.has_k = false, a.prev_k = 4, a.to = P(40, 0);
+    ASSERT_EQ(g38(P(30, 20), a, mv, why), 0);
+    EXPECT_EQ(thread_axis(P(30, 20), P(40, 0)), 0);
+    EXPECT_EQ(thread_axis(P(30, 20), P(90, 19)), 1);  // mostly along X
+    a.prev_k = 0;
+    EXPECT_EQ(g38(P(30, 20), a, mv, why), 883);
+    a.has_k = true, a.k = -1;
+    EXPECT_EQ(g38(P(30, 20), a, mv, why), 835);
+    a.k = 4, a.radius_comp = true;
+    EXPECT_EQ(g38(P(30, 20), a, mv, why), 27);
+    a.radius_comp = false, a.spindle_turning = false;
+    EXPECT_EQ(g38(P(30, 20), a, mv, why), 831);
+}
