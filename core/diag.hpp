@@ -22,6 +22,7 @@ inline constexpr int wSpindleStopped = 1104;
 inline constexpr int wIncrementalFirst = 1105;
 inline constexpr int wDuplicateProgram = 1107;
 inline constexpr int wUnsignedEB = 1108;
+inline constexpr int wTinyFeed = 1109;
 }  // namespace err
 
 enum class Severity { error, warning };

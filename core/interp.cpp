@@ -449,7 +449,9 @@ int64_t um(double mm) { return int64_t(std::llround(mm * 1000.0)); }
 double mm_of(int64_t v) { return double(v) / 1000.0; }
 }  // namespace
 
-int Interpreter::read_e(int n, int64_t& out, std::string& why) {
+// An E access stops the block preparation: not under compensation (140) nor
+// after an incomplete profile block (96) (program-flow.md §9.4).
+int Interpreter::e_access(std::string& why) const {
     if (modal_.radcomp != 40) {
         why = "E parameter access under radius compensation (G41/G42)";
         return 140;
@@ -458,6 +460,11 @@ int Interpreter::read_e(int n, int64_t& out, std::string& why) {
         why = "E parameter access after an incomplete profile block";
         return 96;
     }
+    return 0;
+}
+
+int Interpreter::read_e(int n, int64_t& out, std::string& why) {
+    if (int rc = e_access(why)) return rc;
     if (int rc = e_rights(n, false, why)) return rc;
     int x = (n / 1000) % 10, k = n % 1000, type = n / 10000;
     auto unit = [&](int axis, double v) { return is_rotary(axis) ? int64_t(std::llround(v * 1e4)) : um(v); };
@@ -506,14 +513,7 @@ int Interpreter::read_e(int n, int64_t& out, std::string& why) {
 }
 
 int Interpreter::write_e(int n, int64_t value, std::string& why) {
-    if (modal_.radcomp != 40) {
-        why = "E parameter access under radius compensation (G41/G42)";
-        return 140;
-    }
-    if (pgp_.pending()) {
-        why = "E parameter access after an incomplete profile block";
-        return 96;
-    }
+    if (int rc = e_access(why)) return rc;
     if (int rc = e_rights(n, true, why)) return rc;
     if (value > INT32_MAX || value < INT32_MIN) {
         why = "value " + std::to_string(value) + " does not fit an E parameter";

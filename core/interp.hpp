@@ -23,6 +23,7 @@
 #include "core/machine.hpp"
 #include "core/program.hpp"
 #include "core/spline.hpp"
+#include "core/turning.hpp"
 
 namespace pupitre {
 
@@ -204,6 +205,7 @@ private:
     int read_e(int n, int64_t& out, std::string& why) override;
     int write_e(int n, int64_t value, std::string& why) override;
     int e_rights(int n, bool write, std::string& why) const;
+    int e_access(std::string& why) const;
     void note_tool(int t);
 
     // interp_words.cpp
@@ -222,7 +224,10 @@ private:
     bool emit_arc(int g, const Axes& target, int a0, int a1, double c0, double c1, double sweep_rad,
                   double r0, double r1, int helix_axis);
     bool check_travel(const Axes& mach);
+    bool finish_move(MoveEvent& e, const Axes& mach, const Axes& prog, double seconds);
     double feed_rate(double& rpm_out);     // mm/min for the move start
+    void check_tiny_feed();
+    bool tiny_feed_warned_ = false;
     double spindle_at(double x_radius) const;
     double css_rpm(double x_prog_radius) const;
     double feed_time(double length, double x0, double x1);
@@ -286,6 +291,22 @@ private:
     bool pgp_emit(const std::vector<pgp::Elem>& elems);
     bool pgp_fail(const pgp::Error& e);
     bool pgp_close();
+    // Turning cycles (interp_turning.cpp): G64 waits for its stock until G80.
+    turning::G64Args g64_;
+    long g64_na_ = 0, g64_nb_ = 0;
+    comp::V2 g64_tool_{0, 0};
+    std::vector<comp::V2> g64_stock_;
+    Loc g64_loc_;
+    bool g64_pending_ = false;
+    double g38_lead_ = 0;
+    double profile_feed_ = 0;  // the first F of the last profile read
+    bool coordinate_above(const ProgramText* prog, int line, int axis, double& v);
+    static double cyc(const Plan& p, Addr a, double dflt, bool* has = nullptr);
+    bool turning_profile(long na, long nb, turning::Profile& out, comp::V2& first);
+    bool turning_emit(const std::vector<turning::Move>& moves, double lead, double infeed);
+    bool turning_block(const Plan& p);
+    bool turning_stock(const Plan& p);
+    bool turning_g64_run();
     bool comp_engage(int g);
     bool comp_element(const comp::Elem& e, int g, const Axes& target, double rp);
     bool comp_other_axes(const Axes& target, const std::bitset<kAxes>& axes);

@@ -52,6 +52,11 @@ StepResult Interpreter::execute(const Block& b) {
 
     Plan p;
     if (!decode(b, p)) return StepResult::error;
+    if (g64_pending_) {
+        // G64's rough stock until G80, which runs the roughing first (turning.md §6.3).
+        if (p.cycle != 80) return turning_stock(p) ? StepResult::running : StepResult::error;
+        if (!turning_g64_run()) return StepResult::error;
+    }
     if (p.unsupported >= 0) {
         const GCode* g = find_g(p.unsupported);
         return fail(err::kUnsupported, "G" + std::to_string(p.unsupported) + " (" + std::string(g->text) +

@@ -381,6 +381,24 @@ bool Interpreter::decode(const Block& b, Plan& p) {
                     }
                     continue;
                 }
+                case 33: case 38: case 63: case 64: case 65: case 66:
+                    if (is_axis_addr(w.addr, axis)) break;  // end points: below
+                    if (letter == 'N') {
+                        int iv;
+                        if (!word_value(w, v, &iv)) return false;
+                        if (p.spl_nn >= 2) {
+                            fail(3, "a cycle takes two N labels", w.col);
+                            return false;
+                        }
+                        p.spl_n[p.spl_nn++] = iv;
+                        continue;
+                    }
+                    if (w.addr == addrE('P') && owner_g != 66) {
+                        fail(4, "EP (PROFIL contour) is an option this machine does not have", w.col);
+                        return false;
+                    }
+                    if (!cyc_word(w)) return false;
+                    continue;
                 case 6: case 48: case 49: {
                     int iv;
                     if (!word_value(w, v, &iv)) return false;

@@ -73,6 +73,16 @@ double Interpreter::feed_time(double len, double xa, double xb) {
     return t;
 }
 
+// A feed per minute below 1 mm/min is almost always a feed per revolution written
+// without G95 (the handbook's palier %2000 and %2001): said once per run.
+void Interpreter::check_tiny_feed() {
+    if (modal_.feed_mode == 94 && modal_.feed < 1.0 && !tiny_feed_warned_) {
+        tiny_feed_warned_ = true;
+        warn(err::wTinyFeed, "F" + f3(modal_.feed) + " in G94 is " + f3(modal_.feed) +
+                                 " mm/min: a feed per revolution needs G95");
+    }
+}
+
 double Interpreter::feed_rate(double& rpm_out) {
     double unit = modal_.inch ? 25.4 : 1.0;
     rpm_out = spindle_at(prog_[X]);
@@ -102,6 +112,10 @@ bool Interpreter::do_motion(const Plan& p) {
     if (comp_.on && modal_.radcomp == 40 && pgp_.pending() && !pgp_close()) return false;
     if (comp_.on && modal_.radcomp == 40 && p.axis.none()) return comp_exit(p, nullptr);
     if (p.g[6]) return spline_run(p);
+    if (p.g[33] || p.g[63] || p.g[64] || p.g[65] || p.g[66] || (modal_.motion == 38 && p.axis.any())) {
+        first_move_ = false;
+        return turning_block(p);
+    }
     if (p.g[45]) {
         if (p.axis.any()) apply_corrector_gauges(p.axis);
         first_move_ = false;
@@ -224,17 +238,23 @@ bool Interpreter::linear(int g, const Axes& mach, bool g52, const std::bitset<kA
         if (modal_.feed_mode == 94 && modal_.feed * (modal_.inch ? 25.4 : 1) > m_.max_feed)
             warn(err::wFeedClamped, "F" + f3(modal_.feed) + " above the machine maximum " + f3(m_.max_feed) +
                                         " mm/min: limited to it");
+        check_tiny_feed();
         e.feed = feed_rate(e.rpm);
         t = feed_time(e.length, start_prog[X], end_prog[X]);
         if (t < 0) return fail(831, "feed per revolution (G95) with the spindle stopped"), false;
         if (modal_.feed_mode == 93) e.feed = t > 0 ? e.length / t * 60.0 : 0;
     }
-    e.seconds = t;
-    e.to_prog = end_prog;
+    return finish_move(e, mach, end_prog, t);
+}
+
+// Books a move: the machine is there, the clock and the path advance, the sink hears.
+bool Interpreter::finish_move(MoveEvent& e, const Axes& mach, const Axes& prog, double seconds) {
+    e.seconds = seconds;
+    e.to_prog = prog;
     mach_ = mach;
-    prog_ = end_prog;
+    prog_ = prog;
     path_ += e.length;
-    clock_ += t;
+    clock_ += seconds;
     ++moves_;
     out_.move(e);
     if (modal_.spindle_mode == 96) set_spindle_event();  // the speed followed X
@@ -431,6 +451,7 @@ bool Interpreter::emit_arc(int g, const Axes& target, int a0, int a1, double c0,
         return fail(2, "no feed F programmed since G" + std::to_string(modal_.feed_mode) + " changed the unit"), false;
     if (modal_.feed <= 0) return fail(1, "feed F0 in a feed move"), false;
     if (modal_.feed_mode == 93) return fail(4, "G02/G03 are not allowed in inverse-time feed (G93)"), false;
+    check_tiny_feed();
     e.feed = feed_rate(e.rpm);
     double t = 0;
     if (modal_.feed_mode == 95 && modal_.spindle_mode == 96) {
@@ -455,16 +476,7 @@ bool Interpreter::emit_arc(int g, const Axes& target, int a0, int a1, double c0,
     if (modal_.feed_mode == 94 && modal_.feed * (modal_.inch ? 25.4 : 1) > m_.max_feed)
         warn(err::wFeedClamped, "F" + f3(modal_.feed) + " above the machine maximum " + f3(m_.max_feed) +
                                     " mm/min: limited to it");
-    e.seconds = t;
-    e.to_prog = target;
-    mach_ = mach;
-    prog_ = target;
-    path_ += e.length;
-    clock_ += t;
-    ++moves_;
-    out_.move(e);
-    if (modal_.spindle_mode == 96) set_spindle_event();  // the speed followed X
-    return true;
+    return finish_move(e, mach, target, t);
 }
 
 }  // namespace pupitre
