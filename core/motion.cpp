@@ -343,15 +343,8 @@ bool Interpreter::arc(const Plan& p, const Axes& target) {
             sw += (ccw ? 1 : -1) * 2 * kPi * best;
         }
     }
-    if (comp_.on) {
-        comp::Elem el;
-        el.arc = true;
-        el.a = s;
-        el.b = e;
-        el.c = c;
-        el.sweep = sw;
-        return comp_element(el, modal_.motion, target, r0);
-    }
+    if (comp_.on)
+        return comp_element(comp::Elem{.arc = true, .a = s, .b = e, .c = c, .sweep = sw}, modal_.motion, target, r0);
     return emit_arc(modal_.motion, target, a0, a1, c.x(), c.y(), sw, r0, r1, helix ? an : -1);
 }
 
@@ -383,15 +376,8 @@ bool Interpreter::arc3(const Plan& p, const Axes& target) {
     } else {
         while (sw >= 0) sw -= 2 * kPi;
     }
-    if (comp_.on) {
-        comp::Elem el;
-        el.arc = true;
-        el.a = s;
-        el.b = e;
-        el.c = c;
-        el.sweep = sw;
-        return comp_element(el, ccw ? 3 : 2, target, r);
-    }
+    if (comp_.on)
+        return comp_element(comp::Elem{.arc = true, .a = s, .b = e, .c = c, .sweep = sw}, ccw ? 3 : 2, target, r);
     return emit_arc(ccw ? 3 : 2, target, a0, a1, c.x(), c.y(), sw, r, r, -1);
 }
 
