@@ -32,7 +32,78 @@ void Interpreter::power_on() {
     // The power-on spindle state (stopped, no range) is not an event.
     last_sp_ = SpindleEvent{};
     sp_emitted_ = true;
+    if (opt_.require_homing) homed_.reset();
+    else homed_.set();
     update_travel();
+}
+
+// RAZ (turning.md §8.3): the run is abandoned, the modal state is the one of
+// M02, the alarms are acknowledged. Positions, origins, correctors and the L
+// variables stay: RAZ moves nothing and forgets no setting.
+void Interpreter::raz() {
+    stack_.clear();
+    main_ = nullptr;
+    imd_ = false;
+    gate_->holding = false;
+    gate_->queue.clear();
+    comp_ = Comp{};
+    pgp_.start(pgp::V2(0, 0));
+    pgp_ctx_.clear();
+    g64_pending_ = false;
+    g64_stock_.clear();
+    cyc_ = CycleParams{};
+    reset_modal_m02();
+    diags_.clear();
+    ended_ = true;
+    first_move_ = true;
+}
+
+long Interpreter::next_label() const {
+    if (ended_ || stack_.empty()) return -1;
+    const Frame& f = stack_.back();
+    if (f.pos >= f.prog->end) return -1;
+    std::string_view all = *f.prog->text;
+    size_t eol = all.find('\n', f.pos);
+    if (eol == std::string_view::npos || eol > f.prog->end) eol = f.prog->end;
+    return line_label(all.substr(f.pos, eol - f.pos));
+}
+
+bool Interpreter::start_imd(const ProgramText* p) {
+    start(p);
+    imd_ = true;
+    return true;
+}
+
+int Interpreter::jog(int axis, double delta, std::string& why) {
+    if (!m_.has(axis)) {
+        why = std::string("the machine has no ") + kAxisNames[size_t(axis)] + " axis";
+        return 1;
+    }
+    Axes to = mach_;
+    to[size_t(axis)] += delta;
+    size_t before = diags_.size();
+    bool ended = ended_;
+    auto homed = homed_;
+    homed_.set();  // the operator may jog before the POM; programs may not
+    bool ok = check_travel(to);
+    homed_ = homed;
+    if (!ok) {
+        why = diags_.back().detail;
+        int code = diags_.back().code;
+        diags_.resize(before);  // a refused jog is a message, not an alarm
+        ended_ = ended;
+        return code;
+    }
+    mach_ = to;
+    recompute_program_pos();
+    return 0;
+}
+
+void Interpreter::home(int axis) {
+    if (!m_.has(axis)) return;
+    mach_[size_t(axis)] = m_.home[size_t(axis)];
+    homed_.set(size_t(axis));
+    recompute_program_pos();
 }
 
 // The travel checked on every move: the profile's, narrowed by the dynamic limits
@@ -203,6 +274,7 @@ bool Interpreter::start(int program) {
 
 bool Interpreter::start(const ProgramText* p) {
     main_ = p;
+    imd_ = false;
     stack_.clear();
     Frame f;
     f.prog = p;
@@ -236,6 +308,13 @@ bool Interpreter::fetch(std::string_view& line, int& lineno) {
 // The text of a frame's program has ended.
 bool Interpreter::end_of_frame() {
     Frame& f = stack_.back();
+    if (imd_ && (f.prog == main_ || stack_.size() == 1)) {
+        // The end of an IMD fragment: the blocks typed are done, the state stays.
+        stack_.clear();
+        ended_ = true;
+        out_.end(loc_, 0);
+        return false;
+    }
     if (f.prog == main_ || stack_.size() == 1) {
         // Error 20 only for the main program (DESIGN §3, spec README (b) 28).
         loc_.line = f.line - 1;

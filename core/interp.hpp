@@ -118,6 +118,7 @@ struct RunOptions {
     bool block_skip = false;      // operator switch: '/' blocks are skipped
     bool optional_stop = false;   // operator switch: M01 stops
     long max_blocks = 20'000'000; // endless-loop guard (error 1001)
+    bool require_homing = false;  // the console's machines: moves before POM give 159
 };
 
 enum class StepResult {
@@ -142,6 +143,33 @@ public:
 
     bool start(int program);                  // false: no such program (error 25 reported)
     bool start(const ProgramText* p);
+    // IMD (manual data input): runs a fragment whose end is not error 20. The
+    // modal state and the position carry over from whatever ran before.
+    bool start_imd(const ProgramText* p);
+
+    // The operator's controls (console). RAZ: stops any run, modal state as
+    // after M02, alarms acknowledged; positions, origins and correctors stay.
+    void raz();
+    // JOG/INC: moves an axis of the machine by `delta` (internal units) outside
+    // any program; returns the NUM error (150-158 travel), 0 when done.
+    int jog(int axis, double delta, std::string& why);
+    // POM: the axis reaches its home position and is marked homed.
+    void home(int axis);
+    bool homed(int axis) const { return homed_[size_t(axis)]; }
+    bool running() const { return !ended_ && !stack_.empty(); }
+    const Loc& location() const { return loc_; }
+    std::string_view current_text() const { return cur_text_; }
+    RunOptions& options() { return opt_; }
+    const RunOptions& options() const { return opt_; }
+    Frames& frames_mut() { return frames_; }
+    void origins_changed() { recompute_program_pos(); }
+    // RAZ in the middle of a move: the machine is where the axes stopped.
+    void place(const Axes& mach) {
+        mach_ = mach;
+        recompute_program_pos();
+    }
+    // The label of the next block to read (RNS), -1 when it has none or the run is over.
+    long next_label() const;
     StepResult step();
     // Runs to the end, an error, or a stop (stops are resumed: a dry run goes on).
     StepResult run_to_end();
@@ -337,6 +365,8 @@ private:
     long blocks_ = 0, moves_ = 0;
     double path_ = 0, clock_ = 0;
     bool ended_ = false;
+    bool imd_ = false;  // the main program is an IMD fragment
+    std::bitset<kAxes> homed_;
     bool first_move_ = true;
     int nonmotion_in_comp_ = 0;
     SpindleEvent last_sp_;  // last spindle state reported

@@ -146,6 +146,12 @@ std::string parse_machine(std::string_view text, MachineProfile& m) {
         } else if (key == "tool_change_time") {
             if (!number(val, d1) || d1 < 0) return bad("tool_change_time must be >= 0");
             m.tool_change_time = d1;
+        } else if (key == "homing") {
+            if (val != "required" && val != "none") return bad("homing must be required or none");
+            m.homing_required = val == "required";
+        } else if (key == "jog.feed") {
+            if (!number(val, d1) || d1 <= 0) return bad("jog.feed must be positive");
+            m.jog_feed = d1;
         } else if (key == "kinematics") {
             if (val != "table" && val != "table-head") return bad("kinematics must be table or table-head");
             m.kinematics = val;

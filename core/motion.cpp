@@ -37,6 +37,11 @@ double rotary_length(const Axes& a, const Axes& b) {
 bool Interpreter::check_travel(const Axes& mach) {
     for (int a = 0; a < kAxes; ++a) {
         double v = mach[size_t(a)], lo = travel_lo_[size_t(a)], hi = travel_hi_[size_t(a)];
+        if (!homed_[size_t(a)] && std::abs(v - mach_[size_t(a)]) > 1e-9) {
+            // 000:13307: a programmed move of an axis whose POM is not done.
+            fail(159, std::string("axis ") + kAxisNames[size_t(a)] + " is not homed: do the POM first");
+            return false;
+        }
         if (v >= lo - 1e-6 && v <= hi + 1e-6) continue;
         std::string axis(1, kAxisNames[size_t(a)]);
         fail(150 + a, axis + " travel limit: the move goes to " + axis + f3(v) + " on the OM scale" +
