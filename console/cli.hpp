@@ -7,6 +7,7 @@
 
 namespace pupitre {
 class ProgramMemory;
+struct MachineProfile;
 class Interpreter;
 namespace store {
 class Store;
@@ -32,6 +33,17 @@ struct RunArgs {
 };
 
 int run(const RunArgs& a);
+// A built-in profile or a .machine file; prints the problem and returns false.
+bool load_machine(const std::string& name, MachineProfile& m);
+
+// The console (console/app.cpp): pupitre with no command.
+struct ConsoleArgs {
+    std::string db;
+    std::string machine;        // "" = the last one used, else lathe
+    std::string theme = "colour";
+    bool ascii = false;         // no UTF-8 line drawing even on a UTF-8 terminal
+};
+int console(const ConsoleArgs& a);
 int check(const RunArgs& a);
 
 // The store commands (cli_store.cpp). `db` empty: the default store.

@@ -20,6 +20,8 @@ void print_diag(const Diag& d) {
     std::fputs(s.c_str(), stderr);
 }
 
+}  // namespace
+
 bool load_machine(const std::string& name, MachineProfile& m) {
     if (builtin_machine(name, m)) return true;
     std::ifstream in(name);
@@ -37,6 +39,8 @@ bool load_machine(const std::string& name, MachineProfile& m) {
     }
     return true;
 }
+
+namespace {
 
 // Loads every file; returns an exit code (0 on success).
 int load_all(const std::vector<std::string>& files, ProgramMemory& mem) {

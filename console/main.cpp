@@ -32,6 +32,13 @@ int main(int argc, char** argv) {
            "run and check use a store only when given")
         ->type_name("FILE");
 
+    cli::ConsoleArgs ca;
+    app.add_option("--machine", ca.machine,
+                   "the console's machine: lathe, mill, mill4, mill5, a stored profile or a .machine file "
+                   "(default: the last one used, else lathe)");
+    app.add_option("--theme", ca.theme, "the console's colours: colour, mono or phosphor (default colour)");
+    app.add_flag("--ascii", ca.ascii, "draw the console with ASCII only, even on a UTF-8 terminal");
+
     cli::RunArgs ra;
     auto add_common = [&](CLI::App* sub) {
         sub->add_option("--machine", ra.machine,
@@ -112,11 +119,11 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "pupitre: internal error: %s\n", e.what());
         return cli::kSoftware;
     }
-    std::fputs(app.help().c_str(), stdout);
-    std::fputs(
-        "\nThe console (pupitre with no command) is not part of this version yet: use run, check "
-        "or the\n"
-        "store commands.\n",
-        stdout);
-    return cli::kUsage;
+    ca.db = db;
+    try {
+        return cli::console(ca);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "pupitre: internal error: %s\n", e.what());
+        return cli::kSoftware;
+    }
 }

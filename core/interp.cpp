@@ -58,9 +58,10 @@ void Interpreter::raz() {
     first_move_ = true;
 }
 
-long Interpreter::next_label() const {
+long Interpreter::next_label(int* line) const {
     if (ended_ || stack_.empty()) return -1;
     const Frame& f = stack_.back();
+    if (line) *line = f.line;
     if (f.pos >= f.prog->end) return -1;
     std::string_view all = *f.prog->text;
     size_t eol = all.find('\n', f.pos);

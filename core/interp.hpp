@@ -169,7 +169,7 @@ public:
         recompute_program_pos();
     }
     // The label of the next block to read (RNS), -1 when it has none or the run is over.
-    long next_label() const;
+    long next_label(int* line = nullptr) const;
     StepResult step();
     // Runs to the end, an error, or a stop (stops are resumed: a dry run goes on).
     StepResult run_to_end();

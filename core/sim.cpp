@@ -507,13 +507,24 @@ double Sim::feed() const {
     if (!cur_ || cur_->kind != Ev::move || state_ != RunState::running) return 0;
     double f = cur_->m.feed;
     if (mode_ == Mode::dry && cur_->feed_move && !manual_) f = m_.max_feed;
+    else if (in_->modal().feed_mode == 95 && cur_->m.rpm > 0) f = f / cur_->m.rpm * rpm();  // mm/rev follows the spindle
     return f * rate(*cur_);
 }
 
 double Sim::rpm() const {
     if (sp_.dir != 3 && sp_.dir != 4) return 0;
-    if (in_->modal().overrides_off) return sp_.rpm;
-    return sp_.rpm * spindle_override / 100.0;
+    double n = sp_.rpm;
+    if (sp_.css && sp_.vc > 0 && m_.lathe) {
+        // G96: the speed follows the diameter being cut (turning.md §5.8).
+        double d = 2 * std::abs(op()[X]);
+        double limit = m_.spindle_max;
+        if (sp_.range >= 40 && size_t(sp_.range - 40) < m_.ranges.size())
+            limit = std::min(limit, m_.ranges[size_t(sp_.range - 40)].max);
+        if (in_->modal().smax > 0) limit = std::min(limit, in_->modal().smax);
+        n = d > 1e-6 ? std::min(limit, sp_.vc * 1000.0 / (kPi * d)) : limit;
+    }
+    if (in_->modal().overrides_off) return n;
+    return n * spindle_override / 100.0;
 }
 
 void Sim::raise_from_interp() {
@@ -543,7 +554,8 @@ bool Sim::step_interp(long& budget) {
         return false;
     }
     if (budget <= 0) return false;
-    if (searching_ && in_->next_label() == search_n_) {
+    int next_line = 0;
+    if (searching_ && in_->next_label(&next_line) == search_n_) {
         // RNS: the state is rebuilt up to the block; the axes rejoin its start.
         searching_ = false;
         queue_move_to(in_->machine_pos(), 0, in_->location(), 0, false, X);
@@ -557,8 +569,8 @@ bool Sim::step_interp(long& budget) {
         rejoin.feed_move = false;
         mode_ = Mode::automatic;
         state_ = RunState::stopped;
-        message_ = "RNS: N" + std::to_string(search_n_) +
-                   " found, the modal state is rebuilt; Cycle Start rejoins the block and runs on in AUTO";
+        loc_ = Loc{in_->location().prog, next_line, search_n_};
+        message_ = "RNS: N" + std::to_string(search_n_) + " found, state rebuilt; Cycle Start rejoins it, AUTO";
         return false;
     }
     --budget;

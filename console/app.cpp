@@ -1,0 +1,180 @@
+// The console: pupitre with no command. Opens the store, the machine and the
+// terminal, then runs the event loop: keys in, animation ticks, the screen
+// drawn from the pages. Nothing in the loop waits for long: a running
+// program advances a frame at a time (DESIGN §1).
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <poll.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <clocale>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "console/cli.hpp"
+#include "console/keys.hpp"
+#include "console/line_readline.hpp"
+#include "console/session.hpp"
+#include "console/term.hpp"
+#include "core/store/store.hpp"
+#include "pages/canvas.hpp"
+#include "pages/view.hpp"
+
+namespace pupitre::cli {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+std::string config_bindings_path() {
+    if (const char* x = std::getenv("XDG_CONFIG_HOME"); x && *x) return std::string(x) + "/pupitre/bindings";
+    if (const char* h = std::getenv("HOME"); h && *h) return std::string(h) + "/.config/pupitre/bindings";
+    return {};
+}
+
+// The machine: --machine, else the last one the console used, else the lathe.
+bool console_machine(const ConsoleArgs& a, store::Store& s, MachineProfile& m) {
+    std::string name = a.machine;
+    if (name.empty()) {
+        auto r = s.setting("console.machine");
+        name = !r.error && r.value ? *r.value : "lathe";
+    }
+    if (!builtin_machine(name, m)) {
+        auto p = s.machine_profile(name);
+        if (!p.error && !p.value.empty()) {
+            std::string err = parse_machine(p.value, m);
+            if (!err.empty()) {
+                std::fprintf(stderr, "pupitre: stored machine %s: %s\n", name.c_str(), err.c_str());
+                return false;
+            }
+        } else if (!load_machine(name, m)) {
+            return false;
+        }
+    }
+    if (!a.machine.empty()) s.set_setting("console.machine", name);
+    return true;
+}
+
+// Cursor position of the input line, as render_screen lays it out.
+void input_cursor(const pages::View& v, const pages::Canvas& c, int& x, int& y) {
+    int px = pages::columns(v.prompt);
+    int room = c.width() - px - 1;
+    x = px + (v.input_cursor > room ? room : v.input_cursor);
+    y = c.height() - 2;
+}
+
+int event_loop(console::Session& s, console::Terminal& term, bool ascii) {
+    console::KeyDecoder dec;
+    pages::Canvas canvas(term.cols(), term.rows(), ascii);
+    std::vector<console::Key> keys;
+    Clock::time_point last = Clock::now(), last_byte = last;
+    bool dirty = true;
+    for (;;) {
+        if (term.resized()) dirty = true;
+        if (term.cols() < 80 || term.rows() < 24) s.say("the console needs at least 80x24; this terminal is " +
+                                                         std::to_string(term.cols()) + "x" + std::to_string(term.rows()),
+                                                     true);
+        s.rows = term.rows();
+        if (dirty) {
+            if (canvas.width() != term.cols() || canvas.height() != term.rows()) canvas.resize(term.cols(), term.rows());
+            pages::View v = s.view();
+            pages::render_screen(v, canvas);
+            int cx, cy;
+            input_cursor(v, canvas, cx, cy);
+            term.draw(canvas, cx, cy);
+            dirty = false;
+        }
+        int timeout = s.busy() ? 30 : dec.pending() ? 25 : 500;
+        struct pollfd pfd = {STDIN_FILENO, POLLIN, 0};
+        int r = poll(&pfd, 1, timeout);
+        if (console::Terminal::interrupted()) return kOk;
+        keys.clear();
+        Clock::time_point now = Clock::now();
+        if (r > 0 && (pfd.revents & (POLLIN | POLLHUP | POLLERR))) {
+            char buf[4096];
+            ssize_t n = read(STDIN_FILENO, buf, sizeof buf);
+            if (n == 0 || (n < 0 && errno != EINTR && errno != EAGAIN)) return kOk;  // the terminal is gone
+            if (n > 0) dec.feed(std::string_view(buf, size_t(n)), keys);
+            last_byte = now;
+        } else if (dec.pending() && now - last_byte >= std::chrono::milliseconds(25)) {
+            dec.flush(keys);
+        }
+        for (const console::Key& k : keys) {
+            if (s.on_key(k) == console::Effect::quit || s.quit) return kOk;
+            dirty = true;
+        }
+        double dt = std::chrono::duration<double>(now - last).count();
+        last = now;
+        if (s.busy() || dt > 0.4) {
+            s.tick(std::min(dt, 0.5));
+            dirty = true;
+        }
+    }
+}
+
+}  // namespace
+
+int console(const ConsoleArgs& a) {
+    std::setlocale(LC_ALL, "");
+    store::Options o;
+    std::string path = a.db;
+    if (path.empty()) {
+        path = store::default_path();
+        o.create_parents = true;
+        if (path.empty()) {
+            std::fprintf(stderr, "pupitre: no place for the default store: set HOME or XDG_DATA_HOME, or give --db\n");
+            return kCantCreate;
+        }
+    }
+    auto opened = store::Store::open(path, o);
+    if (opened.error) {
+        std::fprintf(stderr, "pupitre: %s\n", opened.error.message.c_str());
+        return store::exit_code(opened.error.fault);
+    }
+    std::unique_ptr<store::Store> st = std::move(opened.value);
+    MachineProfile m;
+    if (!console_machine(a, *st, m)) return kUsage;
+    console::Theme theme;
+    if (!console::parse_theme(a.theme, theme)) {
+        std::fprintf(stderr, "pupitre: unknown theme '%s' (colour, mono, phosphor)\n", a.theme.c_str());
+        return kUsage;
+    }
+    if (!isatty(STDIN_FILENO) || !isatty(STDOUT_FILENO)) {
+        std::fprintf(stderr, "pupitre: the console needs a terminal; for scripts use pupitre run, check, list "
+                             "(pupitre --help)\n");
+        return kNoInput;
+    }
+    console::ReadlineInput input;
+    console::Session s(m, std::move(st), input);
+    std::string news = s.load_store();
+    std::string user = config_bindings_path();
+    if (std::ifstream f(user); f) {
+        std::stringstream ss;
+        ss << f.rdbuf();
+        std::string err = s.bindings.parse(ss.str(), user);
+        if (!err.empty()) news = err;
+    }
+    if (auto r = s.store()->setting("console.program." + m.name); !r.error && r.value) {
+        int n = std::atoi(r.value->c_str());
+        if (s.memory().find(n)) s.sim().select(n, news);
+    }
+    if (news.empty())
+        news = "pupitre " PUPITRE_VERSION " on the " + m.name + " machine: F1 help, F6 programs, F8 mode, F9 Cycle Start";
+    s.say(news, false);
+    console::Terminal term;
+    if (std::string err = term.open(theme); !err.empty()) {
+        std::fprintf(stderr, "pupitre: %s\n", err.c_str());
+        return kNoInput;
+    }
+    bool ascii = a.ascii || !console::Terminal::utf8_locale();
+    int rc = event_loop(s, term, ascii);
+    if (s.sim().selected() >= 0)
+        s.store()->set_setting("console.program." + m.name, std::to_string(s.sim().selected()));
+    term.close();
+    return rc;
+}
+
+}  // namespace pupitre::cli

@@ -1,0 +1,209 @@
+// The ':' commands of the input line (DESIGN §2.5): every page and mode is
+// reachable by them, which is also how the end-to-end tests drive the console.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <charconv>
+#include <cmath>
+
+#include "console/session.hpp"
+#include "core/store/store.hpp"
+
+namespace pupitre::console {
+
+namespace {
+
+std::vector<std::string_view> words(std::string_view s) {
+    std::vector<std::string_view> out;
+    size_t i = 0;
+    while (i < s.size()) {
+        while (i < s.size() && (s[i] == ' ' || s[i] == '\t')) ++i;
+        size_t j = i;
+        while (j < s.size() && s[j] != ' ' && s[j] != '\t') ++j;
+        if (j > i) out.push_back(s.substr(i, j - i));
+        i = j;
+    }
+    return out;
+}
+
+bool number(std::string_view s, double& out) {
+    if (!s.empty() && s.front() == '+') s.remove_prefix(1);
+    auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
+    return ec == std::errc() && p == s.data() + s.size() && std::isfinite(out);
+}
+
+bool integer(std::string_view s, long& out) {
+    auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
+    return ec == std::errc() && p == s.data() + s.size();
+}
+
+bool on_off(std::string_view s, bool current, bool& out) {
+    if (s.empty()) out = !current;
+    else if (s == "on") out = true;
+    else if (s == "off") out = false;
+    else return false;
+    return true;
+}
+
+}  // namespace
+
+const std::vector<std::pair<std::string, std::string>>& command_help() {
+    static const std::vector<std::pair<std::string, std::string>> k = {
+        {":page om|op|prog|info|param|dir|alarm|help", "show a page"},
+        {":mode auto|seq|dry|test|rns|imd|jog|inc|pom", "select a mode (refused while a program is in cycle)"},
+        {":load N", "select program %N for AUTO, SEQ, DRY RUN, TEST and RNS"},
+        {":cycle", "Cycle Start"},
+        {":stop", "feed hold (Cycle Start resumes)"},
+        {":raz", "RAZ: reset; the run is abandoned, alarms acknowledged"},
+        {":jog AXIS DIST", "move an axis by DIST mm (X as a diameter on the lathe), at the jog feed"},
+        {":set NAME=VALUE", "PREF.X=-120.5, DEC1.Z=3, D1.R=0.8, L5=2, E80000=18000 (names as --set)"},
+        {":search N", "RNS: the block to search for (same as typing N in RNS mode)"},
+        {":feed PCT", "feed override, 0 to 120 % (ignored under M49)"},
+        {":spindle PCT", "spindle override, 50 to 120 % (ignored under M49)"},
+        {":speed x1|x10|max", "animation speed: real time, ten times, as fast as possible"},
+        {":skip on|off", "block skip switch: blocks starting with / are skipped"},
+        {":m01 on|off", "optional stop switch: M01 stops"},
+        {":inc STEP", "INC step in mm (0.001 to 100)"},
+        {":rm N", "delete program %N from the store (its history stays)"},
+        {":touch AXIS VALUE", "touch-off (PREF page): comes with the setting pages"},
+        {":measure Dn AXIS VALUE", "tool measurement (CORR page): comes with the setting pages"},
+        {":edit N / :save / :goto Nnnn", "the program editor: comes with EDIT mode"},
+        {":quit", "leave the console (also Ctrl-C)"},
+    };
+    return k;
+}
+
+Effect Session::command(std::string_view text) {
+    auto w = words(text);
+    if (w.empty()) return Effect::none;
+    std::string_view cmd = w[0];
+    std::string_view a1 = w.size() > 1 ? w[1] : std::string_view{};
+    std::string why;
+    auto usage = [&](std::string_view u) {
+        say(std::string("usage: ") + std::string(u), true);
+        return Effect::redraw;
+    };
+    if (cmd == "quit" || cmd == "q") {
+        quit = true;
+        return Effect::quit;
+    }
+    if (cmd == "page") {
+        pages::PageId p;
+        if (!pages::parse_page(a1, p)) {
+            if (a1 == "pref" || a1 == "corr" || a1 == "edit" || a1 == "graph") {
+                say("the " + std::string(a1) + " page is not in this version of pupitre", true);
+                return Effect::redraw;
+            }
+            return usage(":page om|op|prog|info|param|dir|alarm|help");
+        }
+        show_page(p);
+        return Effect::redraw;
+    }
+    if (cmd == "mode") {
+        Mode m;
+        if (!parse_mode(a1, m)) {
+            if (a1 == "modif" || a1 == "edit") {
+                say("MODIF and EDIT are not in this version of pupitre", true);
+                return Effect::redraw;
+            }
+            return usage(":mode auto|seq|dry|test|rns|imd|jog|inc|pom");
+        }
+        if (!sim().set_mode(m, why)) say(why, true);
+        else say(std::string(mode_name(m)) + ": " + std::string(mode_english(m)));
+        return Effect::redraw;
+    }
+    if (cmd == "load") {
+        long n;
+        std::string_view s = a1;
+        if (!s.empty() && s.front() == '%') s.remove_prefix(1);
+        if (!integer(s, n) || n < 0) return usage(":load N");
+        select_program(int(n));
+        return Effect::redraw;
+    }
+    if (cmd == "cycle") {
+        if (!sim().cycle_start(why)) say(why, true);
+        else if (!sim().message().empty()) say(sim().message());
+        else if (sim().selected() >= 0 && (sim().mode() == Mode::automatic || sim().mode() == Mode::single ||
+                                           sim().mode() == Mode::dry || sim().mode() == Mode::test))
+            say("Cycle Start: %" + std::to_string(sim().selected()) + " in " + std::string(mode_name(sim().mode())));
+        else
+            say("Cycle Start (" + std::string(mode_name(sim().mode())) + ")");
+        return Effect::redraw;
+    }
+    if (cmd == "stop") {
+        sim().feed_hold();
+        say("feed hold: Cycle Start resumes, RAZ abandons the run");
+        return Effect::redraw;
+    }
+    if (cmd == "raz") {
+        sim().raz();
+        say("RAZ");
+        return Effect::redraw;
+    }
+    if (cmd == "jog") {
+        double d;
+        if (w.size() != 3 || a1.size() != 1 || axis_of(char(std::toupper(a1[0]))) < 0 || !number(w[2], d))
+            return usage(":jog AXIS DIST, e.g. :jog X -10");
+        if (!sim().jog(axis_of(char(std::toupper(a1[0]))), d, why)) say("JOG: " + why, true);
+        return Effect::redraw;
+    }
+    if (cmd == "set") {
+        std::string rest(text.substr(text.find("set") + 3));
+        return set_value(rest);
+    }
+    if (cmd == "search") {
+        long n;
+        std::string_view s = a1;
+        if (!s.empty() && (s.front() == 'N' || s.front() == 'n')) s.remove_prefix(1);
+        if (!integer(s, n) || !sim().search(n, why)) return usage(":search N (in RNS mode)");
+        say(sim().message());
+        return Effect::redraw;
+    }
+    if (cmd == "feed" || cmd == "spindle") {
+        long n;
+        bool feed = cmd == "feed";
+        if (!integer(a1, n) || n < (feed ? 0 : 50) || n > 120) return usage(feed ? ":feed 0..120" : ":spindle 50..120");
+        (feed ? sim().feed_override : sim().spindle_override) = int(n);
+        say(std::string(feed ? "feed" : "spindle") + " override " + std::to_string(n) + " %" +
+            (sim().overrides_inhibited() ? " (inhibited by M49)" : ""));
+        return Effect::redraw;
+    }
+    if (cmd == "speed") {
+        if (a1 == "x1") speed = Speed::real;
+        else if (a1 == "x10") speed = Speed::x10;
+        else if (a1 == "max") speed = Speed::max;
+        else return usage(":speed x1|x10|max");
+        return Effect::redraw;
+    }
+    if (cmd == "skip" || cmd == "m01") {
+        bool& sw = cmd == "skip" ? sim().block_skip() : sim().optional_stop();
+        bool v;
+        if (!on_off(a1, sw, v)) return usage(cmd == "skip" ? ":skip on|off" : ":m01 on|off");
+        sw = v;
+        say(std::string(cmd == "skip" ? "block skip " : "optional stop M01 ") + (v ? "ON" : "off"));
+        return Effect::redraw;
+    }
+    if (cmd == "inc") {
+        double d;
+        if (!number(a1, d) || d < 0.001 || d > 100) return usage(":inc STEP (0.001 to 100 mm)");
+        sim().increment = d;
+        say("INC step " + pages::fmt_len(d) + " mm");
+        return Effect::redraw;
+    }
+    if (cmd == "rm") {
+        long n;
+        if (!integer(a1, n)) return usage(":rm N");
+        delete_program(int(n));
+        return Effect::redraw;
+    }
+    if (cmd == "touch" || cmd == "measure" || cmd == "edit" || cmd == "save" || cmd == "goto") {
+        say(":" + std::string(cmd) + " is not in this version of pupitre (setting pages and editor)", true);
+        return Effect::redraw;
+    }
+    if (cmd == "help") {
+        show_page(pages::PageId::help);
+        return Effect::redraw;
+    }
+    say("unknown command :" + std::string(cmd) + " (F1 lists the commands)", true);
+    return Effect::redraw;
+}
+
+}  // namespace pupitre::console

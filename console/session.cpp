@@ -1,0 +1,345 @@
+// The console's session (see session.hpp).
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "console/session.hpp"
+
+#include <algorithm>
+#include <charconv>
+
+#include "core/codes.hpp"
+#include "core/store/link.hpp"
+#include "core/store/store.hpp"
+
+namespace pupitre::console {
+
+namespace {
+
+std::string_view trim(std::string_view s) {
+    while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+    while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
+    return s;
+}
+
+bool to_long(std::string_view s, long& out) {
+    auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
+    return ec == std::errc() && p == s.data() + s.size();
+}
+
+}  // namespace
+
+Session::Session(const MachineProfile& m, std::unique_ptr<store::Store> store, LineInput& input)
+    : m_(m), store_(std::move(store)), input_(input), sim_(std::make_unique<Sim>(m_, mem_)) {
+    bindings.parse(default_bindings(), "bindings");
+    input_.on_line = [this](const std::string& line) { submit(line); };
+    input_.complete = [this](std::string_view w) { return complete(w); };
+    input_.on_message = [this](const std::string& s) { say(s); };
+}
+
+Session::~Session() = default;
+
+std::string Session::load_store() {
+    if (!store_) {
+        refresh_dir();
+        return {};
+    }
+    std::string problem;
+    if (auto r = store::load_programs(*store_, mem_); r.error) problem = r.error.message;
+    if (auto r = store::seed_machine(*store_, sim_->interp()); r.error) problem = r.error.message;
+    sim_->interp().origins_changed();
+    if (auto r = store_->imd_history(m_.name, 200); !r.error)
+        for (auto it = r.value.rbegin(); it != r.value.rend(); ++it) input_.add_history(it->block);
+    for (const auto& [name, v] : store::persistent_writes(sim_->interp())) persisted_[name] = v;
+    refresh_dir();
+    return problem;
+}
+
+void Session::refresh_dir() {
+    dir_.clear();
+    if (store_) {
+        if (auto r = store_->list(); !r.error) {
+            for (const auto& p : r.value) {
+                if (p.deleted) continue;
+                dir_.push_back(pages::DirEntry{p.number, p.title, int(p.lines), p.revision});
+            }
+            return;
+        }
+    }
+    for (const auto& p : mem_.programs()) {
+        int lines = int(std::count(p->body().begin(), p->body().end(), '\n'));
+        dir_.push_back(pages::DirEntry{p->number, p->title, lines, 0});
+    }
+}
+
+void Session::say(std::string text, bool error) {
+    message_ = std::move(text);
+    message_error_ = error;
+}
+
+void Session::show_page(pages::PageId p) {
+    if (page != p) scroll = 0;
+    page = p;
+}
+
+bool Session::select_program(int number) {
+    std::string why;
+    if (!sim_->select(number, why)) {
+        say(why, true);
+        return false;
+    }
+    for (size_t i = 0; i < dir_.size(); ++i)
+        if (dir_[i].number == number) dir_cursor = int(i);
+    say("%" + std::to_string(number) + " selected: Cycle Start (F9) runs it in " +
+        std::string(mode_name(sim_->mode())));
+    return true;
+}
+
+bool Session::delete_program(int number) {
+    if (!store_) {
+        say("no store: programs cannot be deleted", true);
+        return false;
+    }
+    if (sim_->in_cycle() && sim_->selected() == number) {
+        say("%" + std::to_string(number) + " is in cycle: RAZ first", true);
+        return false;
+    }
+    auto r = store_->remove(number, store::kHead, "page DIR");
+    if (r.error) {
+        say(r.error.message, true);
+        return false;
+    }
+    refresh_dir();
+    dir_cursor = std::min(dir_cursor, std::max(0, int(dir_.size()) - 1));
+    say("%" + std::to_string(number) + " deleted (its history stays: pupitre history " + std::to_string(number) +
+        ", pupitre restore)");
+    return true;
+}
+
+// ---- keys ----
+
+Effect Session::on_key(const Key& k) {
+    std::string pg(pages::page_word(page)), md;
+    Mode m = sim_->mode();
+    for (std::string_view w : {"auto", "seq", "dry", "test", "rns", "imd", "jog", "inc", "pom"}) {
+        Mode x;
+        if (parse_mode(w, x) && x == m) md = w;
+    }
+    if (k.code != KeyCode::del) pending_delete = -1;
+    for (const Binding* b : bindings.find(k, pg, md, m_.lathe ? "lathe" : "mill")) {
+        const Action* a = find_action(b->action);
+        if (!a || !a->can_run(*this, b->arg)) continue;
+        return a->run(*this, b->arg);
+    }
+    input_.feed(k.raw);
+    return Effect::redraw;
+}
+
+// ---- the input line ----
+
+Effect Session::submit(const std::string& raw) {
+    std::string_view line = trim(raw);
+    if (line.empty()) return Effect::none;
+    input_.add_history(std::string(line));
+    if (line.front() == ':') return command(line.substr(1));
+    return plain_text(std::string(line));
+}
+
+// Text that is not a command goes to the mode or the page (DESIGN §2.5).
+Effect Session::plain_text(const std::string& text) {
+    std::string_view t = text;
+    if (sim_->mode() == Mode::imd) {
+        std::string why;
+        if (!sim_->imd(t, why)) {
+            say(why, true);
+            return Effect::redraw;
+        }
+        if (store_) store_->add_imd(m_.name, t);
+        say("IMD: Cycle Start (F9) executes: " + text);
+        return Effect::redraw;
+    }
+    if (page == pages::PageId::param || t.find('=') != std::string_view::npos) return set_value(t);
+    long n;
+    if (sim_->mode() == Mode::rns) {
+        std::string_view w = t;
+        if (!w.empty() && (w.front() == 'N' || w.front() == 'n')) w.remove_prefix(1);
+        std::string why;
+        if (!to_long(w, n) || !sim_->search(n, why)) say(why.empty() ? "RNS: type a block number, e.g. N120" : why, true);
+        else say(sim_->message());
+        return Effect::redraw;
+    }
+    if (sim_->mode() == Mode::inc) {
+        double d = 0;
+        auto [p, ec] = std::from_chars(t.data(), t.data() + t.size(), d);
+        if (ec == std::errc() && p == t.data() + t.size() && d > 0 && d <= 100) {
+            sim_->increment = d;
+            say("INC step " + pages::fmt_len(d) + " mm");
+        } else {
+            say("INC: type a step in mm (0.001 to 100)", true);
+        }
+        return Effect::redraw;
+    }
+    std::string_view w = t;
+    if (!w.empty() && w.front() == '%') w.remove_prefix(1);
+    if (to_long(w, n) && n >= 0) {
+        select_program(int(n));
+        return Effect::redraw;
+    }
+    say("blocks are typed in IMD mode (F8, or :mode imd); commands start with ':' (F1 for help)", true);
+    return Effect::redraw;
+}
+
+// NAME=VALUE, the names of --set: the PARAM page and :set.
+Effect Session::set_value(std::string_view a) {
+    size_t eq = a.find('=');
+    std::string name(trim(a.substr(0, eq)));
+    double v = 0;
+    std::string_view val = eq == std::string_view::npos ? std::string_view{} : trim(a.substr(eq + 1));
+    auto [p, ec] = std::from_chars(val.data(), val.data() + val.size(), v);
+    if (eq == std::string_view::npos || ec != std::errc() || p != val.data() + val.size()) {
+        say("set: NAME=VALUE, e.g. L5=2, E80000=18000, PREF.X=-120.5, D1.R=0.8", true);
+        return Effect::redraw;
+    }
+    for (char& c : name) c = char(std::toupper(static_cast<unsigned char>(c)));
+    if (sim_->in_cycle()) {
+        say("a program is in cycle: values are set when it is stopped (RAZ)", true);
+        return Effect::redraw;
+    }
+    std::string why = sim_->interp().set(name, v);
+    if (!why.empty()) {
+        say(name + ": " + why, true);
+        return Effect::redraw;
+    }
+    sim_->interp().origins_changed();
+    say(name + " = " + std::string(val));
+    // Correctors and origins are kept in the store, with an audit row.
+    if (store_ && name[0] != 'L' && name[0] != 'E') {
+        bool rotary = name.size() > 2 && (name.back() == 'A' || name.back() == 'B' || name.back() == 'C') &&
+                      (name.rfind("PREF.", 0) == 0 || name.rfind("DEC", 0) == 0);
+        bool code = name.size() > 2 && name.substr(name.size() - 2) == ".C" && name[0] == 'D';
+        int64_t internal = code ? int64_t(v) : int64_t(std::llround(v * (rotary ? 1e4 : 1e3)));
+        auto r = store_->set_values(m_.name, {{name, internal}}, ":set");
+        if (r.error) say(name + " set, but not stored: " + r.error.message, true);
+    }
+    return Effect::redraw;
+}
+
+// ---- time ----
+
+void Session::tick(double dt) {
+    switch (speed) {
+        case Speed::real: sim_->advance(dt, 2000); break;
+        case Speed::x10: sim_->advance(dt * 10, 5000); break;
+        case Speed::max: sim_->advance(1e9, 20000); break;
+    }
+    check_run_end();
+}
+
+bool Session::busy() const { return sim_->state() == RunState::running; }
+
+// News of the run for the message line, and the program's writes to the store.
+void Session::check_run_end() {
+    RunState st = sim_->state();
+    if (sim_->alarms().size() > alarms_seen_) {
+        alarms_seen_ = sim_->alarms().size();
+        const Diag& d = sim_->alarms().back().diag;
+        std::string where = d.program > 0 ? "%" + std::to_string(d.program) : std::string("IMD");
+        if (d.n >= 0) where += " N" + std::to_string(d.n);
+        say("ALARM " + std::to_string(d.code) + " (" + where + " line " + std::to_string(d.line) + "): " + d.detail,
+            true);
+    } else if (st != last_state_ && !sim_->message().empty()) {
+        say(sim_->message());
+    }
+    if (st != last_state_ && (st == RunState::ended || st == RunState::alarm || st == RunState::idle)) persist_run();
+    last_state_ = st;
+}
+
+void Session::persist_run() {
+    if (!store_) return;
+    std::vector<std::pair<std::string, int64_t>> fresh;
+    for (const auto& [name, v] : store::persistent_writes(sim_->interp())) {
+        auto it = persisted_.find(name);
+        if (it != persisted_.end() && it->second == v) continue;
+        fresh.emplace_back(name, v);
+        persisted_[name] = v;
+    }
+    if (fresh.empty()) return;
+    std::string source = "program %" + std::to_string(sim_->selected()) + " (console)";
+    if (auto r = store_->set_values(m_.name, fresh, source); r.error)
+        say("the program's corrector and origin writes were not stored: " + r.error.message, true);
+}
+
+// ---- view ----
+
+pages::View Session::view() const {
+    pages::View v;
+    v.sim = sim_.get();
+    v.memory = &mem_;
+    v.machine = m_.name;
+    v.page = page;
+    v.scroll = scroll;
+    v.message = message_;
+    v.message_error = message_error_;
+    Mode m = sim_->mode();
+    v.prompt = m == Mode::imd ? "IMD> " : m == Mode::rns ? "RNS N> " : m == Mode::inc ? "INC> " : "> ";
+    if (page == pages::PageId::param && m != Mode::imd) v.prompt = "L/E= ";
+    v.input = input_.text();
+    v.input_cursor = input_.cursor();
+    v.speed = speed == Speed::real ? "x1" : speed == Speed::x10 ? "x10" : "max";
+    v.programs = dir_;
+    v.dir_cursor = dir_cursor;
+    std::string pg(pages::page_word(page));
+    // Soft keys: what F1-F10 do here, from the bindings.
+    for (int i = 1; i <= 10; ++i) {
+        Key k;
+        k.code = KeyCode(int(KeyCode::f1) + i - 1);
+        std::string md;
+        for (std::string_view w : {"auto", "seq", "dry", "test", "rns", "imd", "jog", "inc", "pom"}) {
+            Mode x;
+            if (parse_mode(w, x) && x == m) md = w;
+        }
+        for (const Binding* b : bindings.find(k, pg, md, m_.lathe ? "lathe" : "mill")) {
+            const Action* a = find_action(b->action);
+            if (!a) continue;
+            v.softkeys.push_back(pages::SoftKey{"F" + std::to_string(i), soft_label(*a, b->arg)});
+            break;
+        }
+    }
+    for (const Binding& b : bindings.list()) {
+        const Action* a = find_action(b.action);
+        if (a) v.help.push_back(pages::HelpLine{b.key_text, help_text(*a, b.arg), context_text(b.when)});
+    }
+    for (const auto& c : command_help()) v.help.push_back(pages::HelpLine{c.first, c.second, ""});
+    if (store_) v.store_path = store_->path();
+    return v;
+}
+
+std::vector<std::string> Session::complete(std::string_view word) const {
+    std::vector<std::string> out;
+    if (word.empty()) return out;
+    char first = char(std::toupper(static_cast<unsigned char>(word[0])));
+    if (first == ':') {
+        for (const auto& c : command_help()) {
+            std::string name = c.first.substr(0, c.first.find(' '));
+            if (name.rfind(word, 0) == 0 && std::find(out.begin(), out.end(), name) == out.end()) out.push_back(name);
+        }
+        return out;
+    }
+    std::string up(word);
+    for (char& c : up) c = char(std::toupper(static_cast<unsigned char>(c)));
+    auto add = [&](std::string code, std::string_view text) {
+        if (code.rfind(up, 0) == 0) out.push_back(code + "  " + std::string(text));
+    };
+    if (first == 'G')
+        for (const GCode& g : all_g()) {
+            char buf[8];
+            std::snprintf(buf, sizeof buf, "G%02d", g.number);
+            add(buf, g.text);
+        }
+    if (first == 'M')
+        for (const MCode& mc : all_m()) {
+            char buf[8];
+            std::snprintf(buf, sizeof buf, "M%02d", mc.first);
+            add(buf, mc.text);
+        }
+    return out;
+}
+
+}  // namespace pupitre::console

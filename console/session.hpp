@@ -1,0 +1,95 @@
+// The console's session: the simulated machine, the store, the page shown, the
+// input line and the key dispatch. No ncurses here, so the tests drive a
+// Session exactly as the terminal does (DESIGN §1, STYLE.md).
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+#include <map>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "console/bindings.hpp"
+#include "console/keys.hpp"
+#include "console/line_input.hpp"
+#include "core/sim.hpp"
+#include "pages/view.hpp"
+
+namespace pupitre::store {
+class Store;
+}
+
+namespace pupitre::console {
+
+// The ':' commands with their help text, in the order the HELP page lists them.
+const std::vector<std::pair<std::string, std::string>>& command_help();
+
+// How fast the animation shows the simulated clock.
+enum class Speed { real, x10, max };
+
+class Session {
+public:
+    // `store` may be null (tests, or a store that cannot be opened): programs
+    // then come from `memory` only and nothing is persisted.
+    Session(const MachineProfile& m, std::unique_ptr<store::Store> store, LineInput& input);
+    ~Session();
+
+    // Loads the store's programs and the machine's correctors and origins.
+    // Returns "" or a problem for the message line.
+    std::string load_store();
+    ProgramMemory& memory() { return mem_; }
+
+    Effect on_key(const Key& k);
+    Effect submit(const std::string& line);     // Enter on the input line
+    Effect command(std::string_view text);      // a ':' command, without the ':'
+    // Lets `wall_seconds` of real time pass: the animation advances.
+    void tick(double wall_seconds);
+    // True while something moves: the event loop then wakes up often.
+    bool busy() const;
+
+    pages::View view() const;
+
+    // State the actions and commands change.
+    Sim& sim() { return *sim_; }
+    const Sim& sim() const { return *sim_; }
+    pages::PageId page = pages::PageId::op;
+    int scroll = 0;
+    int dir_cursor = 0;
+    Speed speed = Speed::real;
+    int rows = 24;  // the screen height, for page scrolling
+    bool quit = false;
+    void say(std::string text, bool error = false);
+    void show_page(pages::PageId p);
+    bool select_program(int number);
+    void refresh_dir();
+    bool delete_program(int number);
+    Bindings bindings;
+    const std::vector<pages::DirEntry>& programs() const { return dir_; }
+    const MachineProfile& machine() const { return m_; }
+    store::Store* store() { return store_.get(); }
+    LineInput& input() { return input_; }
+    const LineInput& input() const { return input_; }
+    int pending_delete = -1;  // DIR: Del asks twice
+    // Completion of the word before the cursor: G/M codes and commands.
+    std::vector<std::string> complete(std::string_view word) const;
+
+private:
+    Effect plain_text(const std::string& line);
+    Effect set_value(std::string_view assignment);
+    void persist_run();
+    void check_run_end();
+
+    MachineProfile m_;
+    std::unique_ptr<store::Store> store_;
+    LineInput& input_;
+    ProgramMemory mem_;
+    std::unique_ptr<Sim> sim_;
+    std::vector<pages::DirEntry> dir_;
+    std::string message_;
+    bool message_error_ = false;
+    RunState last_state_ = RunState::idle;
+    size_t alarms_seen_ = 0;
+    std::map<std::string, int64_t> persisted_;  // program writes already stored
+};
+
+}  // namespace pupitre::console

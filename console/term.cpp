@@ -1,0 +1,173 @@
+// The ncurses backend (see term.hpp).
+// SPDX-License-Identifier: GPL-3.0-or-later
+#define NCURSES_WIDECHAR 1
+#include "console/term.hpp"
+
+#include <csignal>
+#include <cstdlib>
+#include <cstring>
+#include <curses.h>
+#include <langinfo.h>
+#include <sys/ioctl.h>
+#include <termios.h>
+#include <unistd.h>
+
+namespace pupitre::console {
+
+namespace {
+
+volatile std::sig_atomic_t g_winch = 0;
+volatile std::sig_atomic_t g_quit = 0;
+struct termios g_saved;
+bool g_have_saved = false;
+bool g_open = false;
+
+// A crash must not leave the user's terminal raw and on the alternate screen:
+// only async-signal-safe calls here (write, tcsetattr), then the default action.
+void crash_handler(int sig) {
+    static const char reset[] = "\033[0m\033[?25h\033[?1049l\r\npupitre: crashed; the terminal is restored\r\n";
+    if (g_open) {
+        ssize_t n = write(STDOUT_FILENO, reset, sizeof reset - 1);
+        (void)n;
+        if (g_have_saved) tcsetattr(STDIN_FILENO, TCSANOW, &g_saved);
+    }
+    std::signal(sig, SIG_DFL);
+    std::raise(sig);
+}
+
+void quit_handler(int) { g_quit = 1; }
+void winch_handler(int) { g_winch = 1; }
+
+void install(int sig, void (*h)(int)) {
+    struct sigaction sa;
+    std::memset(&sa, 0, sizeof sa);
+    sa.sa_handler = h;
+    sigemptyset(&sa.sa_mask);
+    sigaction(sig, &sa, nullptr);
+}
+
+void at_exit() {
+    if (g_open) {
+        endwin();
+        g_open = false;
+    }
+}
+
+short pair_of(pages::Style s) { return short(int(s) + 1); }
+
+}  // namespace
+
+bool parse_theme(const std::string& name, Theme& out) {
+    if (name == "colour" || name == "color") out = Theme::colour;
+    else if (name == "mono") out = Theme::mono;
+    else if (name == "phosphor") out = Theme::phosphor;
+    else return false;
+    return true;
+}
+
+bool Terminal::utf8_locale() {
+    const char* cs = nl_langinfo(CODESET);
+    return cs && (std::strcmp(cs, "UTF-8") == 0 || std::strcmp(cs, "utf8") == 0);
+}
+
+bool Terminal::interrupted() { return g_quit != 0; }
+
+std::string Terminal::open(Theme theme) {
+    if (!isatty(STDIN_FILENO) || !isatty(STDOUT_FILENO)) return "the console needs a terminal (try pupitre --help)";
+    if (tcgetattr(STDIN_FILENO, &g_saved) == 0) g_have_saved = true;
+    if (!initscr()) return "cannot initialise the terminal (TERM=" + std::string(getenv("TERM") ? getenv("TERM") : "") + ")";
+    g_open = open_ = true;
+    std::atexit(at_exit);
+    for (int s : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) install(s, crash_handler);
+    for (int s : {SIGINT, SIGTERM, SIGHUP, SIGQUIT}) install(s, quit_handler);
+    install(SIGWINCH, winch_handler);
+    raw();  // Ctrl-C and Ctrl-Z are keys: the bindings decide
+    noecho();
+    nonl();
+    keypad(stdscr, FALSE);  // console/keys.cpp decodes the bytes
+    intrflush(stdscr, FALSE);
+    curs_set(1);
+    if (has_colors() && theme != Theme::mono) {
+        start_color();
+        use_default_colors();
+        theme_colours(theme);
+    } else {
+        theme_colours(Theme::mono);
+    }
+    getmaxyx(stdscr, rows_, cols_);
+    return {};
+}
+
+void Terminal::close() {
+    if (!open_) return;
+    endwin();
+    open_ = g_open = false;
+}
+
+void Terminal::theme_colours(Theme t) {
+    if (t == Theme::mono || !has_colors()) return;
+    using S = pages::Style;
+    short fg = t == Theme::phosphor ? COLOR_GREEN : -1;
+    short bg = t == Theme::phosphor ? COLOR_BLACK : -1;
+    struct P {
+        S s;
+        short f, b;
+    };
+    const P colour[] = {
+        {S::normal, -1, -1},           {S::dim, COLOR_CYAN, -1},        {S::title, COLOR_YELLOW, -1},
+        {S::value, -1, -1},            {S::big, COLOR_GREEN, -1},       {S::select, COLOR_BLACK, COLOR_CYAN},
+        {S::alarm, COLOR_WHITE, COLOR_RED}, {S::warn, COLOR_BLACK, COLOR_YELLOW}, {S::ok, COLOR_BLACK, COLOR_GREEN},
+        {S::status, COLOR_WHITE, COLOR_BLUE}, {S::key, -1, -1},         {S::softkey, COLOR_BLACK, COLOR_CYAN},
+        {S::input, -1, -1},
+    };
+    for (const P& p : colour) {
+        if (t == Theme::phosphor) {
+            bool inverse = p.b != -1;
+            init_pair(pair_of(p.s), inverse ? COLOR_BLACK : fg, inverse ? COLOR_GREEN : bg);
+        } else {
+            init_pair(pair_of(p.s), p.f, p.b);
+        }
+    }
+    if (t == Theme::phosphor) bkgd(COLOR_PAIR(pair_of(S::normal)));
+    theme_ = t;
+}
+
+bool Terminal::resized() {
+    if (!g_winch) return false;
+    g_winch = 0;
+    struct winsize ws;
+    if (ioctl(STDOUT_FILENO, TIOCGWINSZ, &ws) == 0 && ws.ws_row > 0 && ws.ws_col > 0) resizeterm(ws.ws_row, ws.ws_col);
+    getmaxyx(stdscr, rows_, cols_);
+    clearok(stdscr, TRUE);
+    return true;
+}
+
+void Terminal::draw(const pages::Canvas& c, int cx, int cy) {
+    using S = pages::Style;
+    for (int y = 0; y < c.height() && y < rows_; ++y) {
+        for (int x = 0; x < c.width() && x < cols_; ++x) {
+            const pages::Cell& cell = c.at(x, y);
+            attr_t a = A_NORMAL;
+            if (theme_ == Theme::mono) {
+                switch (cell.st) {
+                    case S::title: case S::big: a = A_BOLD; break;
+                    case S::dim: a = A_DIM; break;
+                    case S::select: case S::status: case S::softkey: case S::ok: a = A_REVERSE; break;
+                    case S::alarm: case S::warn: a = A_REVERSE | A_BOLD; break;
+                    default: break;
+                }
+            } else {
+                a = COLOR_PAIR(pair_of(cell.st));
+                if (cell.st == S::title || cell.st == S::big || cell.st == S::alarm) a |= A_BOLD;
+            }
+            wchar_t wc[2] = {wchar_t(cell.ch), 0};
+            cchar_t cc;
+            setcchar(&cc, wc, a, 0, nullptr);
+            mvadd_wch(y, x, &cc);
+        }
+    }
+    move(cy, cx);
+    refresh();
+}
+
+}  // namespace pupitre::console

@@ -1,0 +1,39 @@
+// The ncurses backend: the only code that talks to the terminal. It shows a
+// Canvas with a colour theme, and puts the terminal back as it found it on
+// every way out (quit, Ctrl-C, a signal, a crash).
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+#include <string>
+
+#include "pages/canvas.hpp"
+
+namespace pupitre::console {
+
+enum class Theme { colour, mono, phosphor };
+bool parse_theme(const std::string& name, Theme& out);
+
+class Terminal {
+public:
+    // Takes the terminal: raw mode, no echo, alternate screen. "" or why not.
+    std::string open(Theme theme);
+    void close();  // idempotent
+    ~Terminal() { close(); }
+
+    int rows() const { return rows_; }
+    int cols() const { return cols_; }
+    // True once after the window changed size (SIGWINCH); rows and cols are new.
+    bool resized();
+    void draw(const pages::Canvas& c, int cursor_x, int cursor_y);
+    // Set by SIGINT, SIGTERM, SIGHUP: the event loop leaves cleanly.
+    static bool interrupted();
+    // Whether the terminal's locale can show UTF-8 (else the ASCII fallback).
+    static bool utf8_locale();
+
+private:
+    void theme_colours(Theme t);
+    bool open_ = false;
+    Theme theme_ = Theme::mono;
+    int rows_ = 24, cols_ = 80;
+};
+
+}  // namespace pupitre::console

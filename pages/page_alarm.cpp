@@ -1,0 +1,81 @@
+// The ALARM page: the alarm in force with its NUM number, the manual's text
+// (spec/errors.tsv) and where it was raised; then the earlier alarms, newest
+// first.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <algorithm>
+#include <cstdio>
+
+#include "pages/pages.hpp"
+
+namespace pupitre::pages {
+
+namespace {
+
+std::string where(const Diag& d) {
+    std::string s = d.file == "IMD" || d.program < 0 ? std::string("IMD") : "%" + std::to_string(d.program);
+    if (d.line > 0) s += " line " + std::to_string(d.line);
+    if (d.n >= 0) s += " N" + std::to_string(d.n);
+    return s;
+}
+
+std::string explain(int code) {
+    std::string_view t = num_error_text(code);
+    if (!t.empty()) return std::string(t);
+    return code >= 1000 ? "pupitre diagnostic (see pupitre(1), DIAGNOSTICS)" : "";
+}
+
+// Words to lines of at most `w` columns (the manual's texts are long).
+std::vector<std::string> wrap(const std::string& text, size_t w) {
+    std::vector<std::string> out;
+    std::string line;
+    size_t i = 0;
+    while (i < text.size()) {
+        size_t j = text.find(' ', i);
+        if (j == std::string::npos) j = text.size();
+        std::string word = text.substr(i, j - i);
+        if (!line.empty() && size_t(columns(line) + 1 + columns(word)) > w) {
+            out.push_back(line);
+            line.clear();
+        }
+        line += (line.empty() ? "" : " ") + word;
+        i = j + 1;
+    }
+    if (!line.empty()) out.push_back(line);
+    return out;
+}
+
+}  // namespace
+
+void page_alarm(const View& v, Canvas& c, const Rect& r) {
+    const Sim& s = *v.sim;
+    const auto& all = s.alarms();
+    c.rule(r.y, "ALARM  " + std::to_string(all.size()) + " since power-on");
+    std::vector<Line> lines;
+    if (s.alarm_active()) {
+        const Diag& d = all.back().diag;
+        lines.push_back(Line{}.add(" ALARM " + std::to_string(d.code), Style::alarm).add("   " + where(d), Style::value));
+        for (const std::string& l : wrap(explain(d.code), size_t(std::max(20, r.w - 4))))
+            lines.push_back(Line{}.add("   " + l, Style::normal));
+        for (const std::string& l : wrap(d.detail, size_t(std::max(20, r.w - 4))))
+            lines.push_back(Line{}.add("   " + l, Style::value));
+        lines.push_back(Line{}.add("   RAZ (F12 or :raz) acknowledges it.", Style::dim));
+    } else {
+        lines.push_back(Line{}.add(" No alarm in force.", Style::dim));
+    }
+    lines.push_back(Line{});
+    if (!all.empty()) lines.push_back(Line{}.add(" History (newest first)", Style::title));
+    for (size_t i = all.size(); i-- > 0;) {
+        const Alarm& a = all[i];
+        char t[32];
+        std::snprintf(t, sizeof t, "%9.1f s", a.clock);
+        lines.push_back(Line{}
+                            .add(" " + std::string(t) + "  ", Style::dim)
+                            .add(lpad(std::to_string(a.diag.code), 4), Style::alarm)
+                            .add("  " + pad(where(a.diag), 22), Style::value)
+                            .add(explain(a.diag.code)));
+        lines.push_back(Line{}.add(std::string(19, ' ') + a.diag.detail, Style::dim));
+    }
+    draw_lines(lines, v.scroll, c, Rect{r.x, r.y + 1, r.w, r.h - 1});
+}
+
+}  // namespace pupitre::pages

@@ -1,0 +1,34 @@
+// The DIR page: the programs in the store, the selected one marked. Up and
+// Down move the cursor, Enter loads, Del deletes (asking twice); a number
+// typed on the input line loads that program.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <algorithm>
+
+#include "pages/pages.hpp"
+
+namespace pupitre::pages {
+
+void page_dir(const View& v, Canvas& c, const Rect& r) {
+    c.rule(r.y, "DIR  programs in memory (" + std::to_string(v.programs.size()) + ")");
+    int y = r.y + 1;
+    c.text(2, y, pad("program", 12) + pad("lines", 8) + pad("rev", 5) + "title", Style::dim);
+    ++y;
+    int rows = r.h - 2;
+    if (v.programs.empty()) {
+        c.text(2, y, "The store holds no program: import some with `pupitre import FILE`.", Style::dim);
+        return;
+    }
+    int cur = std::clamp(v.dir_cursor, 0, int(v.programs.size()) - 1);
+    int first = std::max(0, std::min(cur - rows / 2, int(v.programs.size()) - rows));
+    for (int i = 0; i < rows && first + i < int(v.programs.size()); ++i) {
+        const DirEntry& e = v.programs[size_t(first + i)];
+        bool sel = v.sim->selected() == e.number;
+        std::string line = (sel ? "* %" : "  %") + pad(std::to_string(e.number), 9) +
+                           lpad(std::to_string(e.lines), 6) + "  " + lpad(std::to_string(e.revision), 4) + "  " +
+                           e.title;
+        c.text(0, y + i, line, sel ? Style::value : Style::normal, r.w);
+        if (first + i == cur) c.style(Rect{r.x, y + i, r.w, 1}, Style::select);
+    }
+}
+
+}  // namespace pupitre::pages

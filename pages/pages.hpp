@@ -1,0 +1,44 @@
+// The pages of the console: each renders the view into a rectangle of the
+// canvas (STYLE.md: pages are pure renderers). One file per page.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "pages/canvas.hpp"
+#include "pages/view.hpp"
+
+namespace pupitre::pages {
+
+void page_position(const View& v, Canvas& c, const Rect& r);  // OM and OP
+void page_program(const View& v, Canvas& c, const Rect& r);   // the program around the block
+void page_info(const View& v, Canvas& c, const Rect& r);
+void page_param(const View& v, Canvas& c, const Rect& r);
+void page_dir(const View& v, Canvas& c, const Rect& r);
+void page_alarm(const View& v, Canvas& c, const Rect& r);
+void page_help(const View& v, Canvas& c, const Rect& r);
+
+// A line of a long page: styled parts, optionally the whole row restyled.
+struct Line {
+    std::vector<std::pair<std::string, Style>> parts;
+    bool fill = false;
+    Style fill_style = Style::select;
+    Line& add(std::string s, Style st = Style::normal) {
+        parts.emplace_back(std::move(s), st);
+        return *this;
+    }
+};
+void draw_lines(const std::vector<Line>& lines, int scroll, Canvas& c, const Rect& r);
+
+// "%-6s"-style padding for the columns of a page.
+inline std::string pad(std::string s, size_t w) {
+    if (s.size() < w) s.append(w - s.size(), ' ');
+    return s;
+}
+inline std::string lpad(std::string s, size_t w) {
+    if (s.size() < w) s.insert(0, w - s.size(), ' ');
+    return s;
+}
+
+}  // namespace pupitre::pages

@@ -1,0 +1,148 @@
+// The screen layout (DESIGN §2.4): status line, page, message line, input line,
+// soft keys. The same on every terminal of at least 80x24; a bigger one gives
+// the page more room.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <cmath>
+#include <cstdio>
+
+#include "pages/canvas.hpp"
+#include "pages/pages.hpp"
+#include "pages/view.hpp"
+
+namespace pupitre::pages {
+
+namespace {
+
+constexpr std::string_view kPageWords[] = {"om", "op", "prog", "info", "param", "dir", "alarm", "help"};
+
+void status_line(const View& v, Canvas& c) {
+    const Sim& s = *v.sim;
+    c.fill(Rect{0, 0, c.width(), 1}, U' ', Style::status);
+    std::string left = " " + std::string(mode_name(s.mode()));
+    int x = c.text(0, 0, left, Style::status);
+    x += 1;
+    std::string prog = s.selected() >= 0 ? "%" + std::to_string(s.selected()) : "%-";
+    x += c.text(x + 1, 0, prog, Style::status) + 1;
+    const Loc& l = s.loc();
+    std::string n = l.n >= 0 ? "N" + std::to_string(l.n) : l.line > 0 ? "line " + std::to_string(l.line) : "";
+    if (!n.empty()) x += c.text(x + 1, 0, n, Style::status) + 1;
+    RunState st = s.state();
+    Style ss = st == RunState::alarm ? Style::alarm
+               : st == RunState::running ? Style::ok
+               : (st == RunState::hold || st == RunState::stopped || st == RunState::block) ? Style::warn
+                                                                                            : Style::status;
+    x += 1;
+    std::string state = s.alarm_active() ? "ALARM " + std::to_string(s.alarms().back().diag.code)
+                                         : std::string(state_name(st));
+    c.text(x + 1, 0, " " + state + " ", ss);
+    char right[96];
+    std::snprintf(right, sizeof right, "%s F%d%% S%d%%%s%s %s ", v.machine.c_str(), s.feed_override,
+                  s.spindle_override, s.interp().options().block_skip ? " /" : "",
+                  s.interp().options().optional_stop ? " M01" : "", v.speed.c_str());
+    c.text_right(0, 0, c.width(), right, Style::status);
+}
+
+void softkeys(const View& v, Canvas& c, int y) {
+    int n = 10;
+    int w = c.width() / n;
+    for (int i = 0; i < n; ++i) {
+        int x = i * w;
+        std::string num = std::to_string(i + 1);
+        c.text(x, y, num, Style::key);
+        const SoftKey* k = nullptr;
+        for (const auto& s : v.softkeys)
+            if (s.key == "F" + num) k = &s;
+        std::string label = k ? k->label : "";
+        int lw = w - int(num.size());
+        c.fill(Rect{x + int(num.size()), y, lw, 1}, U' ', Style::softkey);
+        c.text(x + int(num.size()), y, label, Style::softkey, lw - 1);
+    }
+}
+
+}  // namespace
+
+std::string_view page_word(PageId p) { return kPageWords[int(p)]; }
+
+bool parse_page(std::string_view word, PageId& out) {
+    for (int i = 0; i < int(std::size(kPageWords)); ++i)
+        if (kPageWords[i] == word) {
+            out = PageId(i);
+            return true;
+        }
+    return false;
+}
+
+std::string fmt_len(double v) {
+    char buf[32];
+    if (std::abs(v) < 0.0005) v = 0;
+    std::snprintf(buf, sizeof buf, "%.3f", v);
+    return buf;
+}
+
+std::string fmt_axis(int axis, double v) {
+    char buf[32];
+    if (is_rotary(axis)) {
+        if (std::abs(v) < 0.00005) v = 0;
+        std::snprintf(buf, sizeof buf, "%.4f", v);
+        return buf;
+    }
+    return fmt_len(v);
+}
+
+void render_screen(const View& v, Canvas& c) {
+    c.clear();
+    int h = c.height();
+    status_line(v, c);
+    render_page(v, c, Rect{0, 1, c.width(), h - 4});
+    // Message line: the newest news, an error in the alarm style.
+    c.text(1, h - 3, v.message, v.message_error ? Style::alarm : Style::normal, c.width() - 2);
+    c.fill(Rect{0, h - 2, c.width(), 1}, U' ', Style::input);
+    int px = c.text(0, h - 2, v.prompt, Style::input);
+    // The input line scrolls so that the cursor stays visible.
+    int room = c.width() - px - 1;
+    int first = v.input_cursor > room ? v.input_cursor - room : 0;
+    std::string shown;
+    int col = 0;
+    for (size_t i = 0; i < v.input.size(); ++col) {
+        size_t start = i;
+        ++i;
+        while (i < v.input.size() && (static_cast<unsigned char>(v.input[i]) & 0xc0) == 0x80) ++i;
+        if (col >= first) shown.append(v.input, start, i - start);
+    }
+    c.text(px, h - 2, shown, Style::input, room + 1);
+    softkeys(v, c, h - 1);
+}
+
+void render_page(const View& v, Canvas& c, const Rect& r) {
+    switch (v.page) {
+        case PageId::om:
+        case PageId::op: return page_position(v, c, r);
+        case PageId::prog: return page_program(v, c, r);
+        case PageId::info: return page_info(v, c, r);
+        case PageId::param: return page_param(v, c, r);
+        case PageId::dir: return page_dir(v, c, r);
+        case PageId::alarm: return page_alarm(v, c, r);
+        case PageId::help: return page_help(v, c, r);
+    }
+}
+
+// A long page is a list of lines; the view's scroll picks the ones shown.
+void draw_lines(const std::vector<Line>& lines, int scroll, Canvas& c, const Rect& r) {
+    int n = int(lines.size());
+    if (scroll > n - r.h) scroll = n - r.h;
+    if (scroll < 0) scroll = 0;
+    for (int i = 0; i < r.h && scroll + i < n; ++i) {
+        const Line& l = lines[size_t(scroll + i)];
+        int x = r.x;
+        for (const auto& [text, st] : l.parts) x += c.text(x, r.y + i, text, st, r.x + r.w - x);
+        if (l.fill) c.style(Rect{r.x, r.y + i, r.w, 1}, l.fill_style);
+    }
+    if (n > r.h) {
+        // Where we are in a long page: "12-31/140" at the bottom right.
+        std::string where = std::to_string(scroll + 1) + "-" + std::to_string(std::min(n, scroll + r.h)) + "/" +
+                            std::to_string(n);
+        c.text_right(r.x, r.y + r.h - 1, r.w, " " + where + " ", Style::dim);
+    }
+}
+
+}  // namespace pupitre::pages

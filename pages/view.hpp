@@ -1,0 +1,68 @@
+// What the pages see of the console's session: the simulated machine (read
+// only) and the few pieces of console state a page shows. Pages depend on
+// core/ and on this struct only, never on ncurses or the store.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/sim.hpp"
+
+namespace pupitre::pages {
+
+enum class PageId { om, op, prog, info, param, dir, alarm, help };
+std::string_view page_word(PageId p);            // om, op, prog, …
+bool parse_page(std::string_view word, PageId& out);
+
+struct SoftKey {
+    std::string key;    // "F1"
+    std::string label;  // "HELP"
+};
+
+struct HelpLine {
+    std::string key;   // "F9", or ":cycle" for a command
+    std::string what;  // what it does
+    std::string when;  // the context it applies in ("", "page dir", "mode jog")
+};
+
+struct DirEntry {
+    int number = 0;
+    std::string title;
+    int lines = 0;
+    int revision = 0;
+};
+
+struct View {
+    const Sim* sim = nullptr;
+    const ProgramMemory* memory = nullptr;
+    std::string machine;    // profile name
+    PageId page = PageId::op;
+    int scroll = 0;         // page scroll (lines) for long pages
+    // Bottom of the screen.
+    std::string message;
+    bool message_error = false;
+    std::string prompt;     // before the input line ("IMD> ", "> ")
+    std::string input;      // the input line text
+    int input_cursor = 0;   // in columns
+    std::vector<SoftKey> softkeys;
+    // Speed of the animation as the status line shows it ("x1", "x10", "max").
+    std::string speed;
+    // DIR page.
+    std::vector<DirEntry> programs;
+    int dir_cursor = 0;
+    // HELP page.
+    std::vector<HelpLine> help;
+    std::string store_path;
+};
+
+// The whole screen: status line, page, message line, input line, soft keys.
+void render_screen(const View& v, class Canvas& c);
+// One page into a rectangle of the canvas.
+void render_page(const View& v, Canvas& c, const struct Rect& r);
+
+// Lengths as the pages print them: "-120.500", "12.0000" for degrees.
+std::string fmt_len(double v);
+std::string fmt_axis(int axis, double v);
+
+}  // namespace pupitre::pages

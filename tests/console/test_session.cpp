@@ -1,0 +1,313 @@
+// Key dispatch and the console's behaviour, without a terminal: what a student
+// does at the panel, checked on the session and the simulated machine.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <gtest/gtest.h>
+
+#include "tests/console/fixture.hpp"
+
+using namespace pupitre;
+using pupitre::test::Console;
+
+namespace {
+
+double x_display(const Console& c) { return c.s->sim().to_display(X, c.s->sim().op()[X]); }
+
+}  // namespace
+
+TEST(Session, FunctionKeysSelectPages) {
+    Console c;
+    c.named("F6");
+    EXPECT_EQ(c.s->page, pages::PageId::dir);
+    c.named("F1");
+    EXPECT_EQ(c.s->page, pages::PageId::help);
+    c.named("F2");
+    EXPECT_EQ(c.s->page, pages::PageId::op);
+    c.named("F2");  // toggles OP and OM
+    EXPECT_EQ(c.s->page, pages::PageId::om);
+    c.type(":page alarm");
+    EXPECT_EQ(c.s->page, pages::PageId::alarm);
+}
+
+TEST(Session, TextGoesToTheInputLineUntilEnter) {
+    Console c;
+    c.key(":pa");
+    EXPECT_EQ(c.input.text(), ":pa");
+    c.key("ge info\r");
+    EXPECT_EQ(c.s->page, pages::PageId::info);
+    EXPECT_EQ(c.input.text(), "");
+}
+
+TEST(Session, DirPageLoadsWithEnterAndDeletesOnlyWithAStore) {
+    Console c("lathe", {"data/demo/lathe_p300.iso", "tests/golden/programs/css_lathe.iso"});
+    c.named("F6");
+    ASSERT_GE(c.s->programs().size(), 2u);
+    c.named("Down");
+    EXPECT_EQ(c.s->dir_cursor, 1);
+    c.named("Up");
+    c.named("Enter");
+    EXPECT_EQ(c.s->sim().selected(), 300);
+    c.named("Del");
+    c.named("Del");
+    EXPECT_NE(c.message().find("no store"), std::string::npos);
+}
+
+TEST(Session, AutoRunsTheDemoToM02AfterPom) {
+    Console c;
+    c.type(":load 300");
+    c.named("F9");  // Cycle Start in AUTO before the POM
+    c.run_until_settled();
+    ASSERT_EQ(c.s->sim().state(), RunState::alarm);
+    EXPECT_EQ(c.s->sim().alarms().back().diag.code, 159);
+    EXPECT_NE(c.message().find("ALARM 159"), std::string::npos);
+    c.named("F12");  // RAZ
+    EXPECT_EQ(c.s->sim().state(), RunState::idle);
+    c.type(":mode pom");
+    c.named("F9");
+    c.run_until_settled();
+    EXPECT_TRUE(c.s->sim().interp().homed(X));
+    c.type(":mode auto");
+    c.type(":speed x10");
+    c.named("F9");
+    c.run_until_settled();
+    EXPECT_EQ(c.s->sim().state(), RunState::ended);
+    EXPECT_NE(c.message().find("M02"), std::string::npos);
+    EXPECT_NEAR(x_display(c), 150.0, 1e-6);  // N100 G00 X150 (a diameter)
+    EXPECT_GT(c.s->sim().cycle_time(), 10.0);
+}
+
+TEST(Session, SingleBlockStopsAfterEachBlock) {
+    Console c;
+    c.type(":mode pom");
+    c.named("F9");
+    c.run_until_settled();
+    c.type(":load 300");
+    c.type(":mode seq");
+    c.named("F9");
+    c.run_until_settled();
+    EXPECT_EQ(c.s->sim().state(), RunState::block);
+    int first = c.s->sim().loc().line;
+    c.named("F9");
+    c.run_until_settled();
+    EXPECT_EQ(c.s->sim().state(), RunState::block);
+    EXPECT_EQ(c.s->sim().loc().line, first + 1);
+}
+
+TEST(Session, FeedHoldFreezesAndCycleStartResumes) {
+    Console c;
+    c.type(":mode pom");
+    c.named("F9");
+    c.run_until_settled();
+    c.type(":load 300");
+    c.type(":mode auto");
+    c.named("F9");
+    for (int i = 0; i < 30 * 8; ++i) c.s->tick(1.0 / 30);
+    c.named("F10");
+    EXPECT_EQ(c.s->sim().state(), RunState::hold);
+    Axes before = c.s->sim().om();
+    for (int i = 0; i < 30; ++i) c.s->tick(1.0 / 30);
+    EXPECT_EQ(c.s->sim().om(), before);
+    c.named("F9");
+    c.run_until_settled();
+    EXPECT_EQ(c.s->sim().state(), RunState::ended);
+}
+
+TEST(Session, ImdBlockRunsOnCycleStart) {
+    Console c("mill", {});
+    c.type(":mode pom");
+    c.named("F9");
+    c.run_until_settled();
+    c.type(":mode imd");
+    c.type("G0 X10 Y20 Z30");
+    EXPECT_EQ(c.s->sim().state(), RunState::idle);  // typed, not yet run
+    c.named("F9");
+    c.run_until_settled();
+    Axes op = c.s->sim().op();
+    EXPECT_NEAR(op[X], 10, 1e-9);
+    EXPECT_NEAR(op[Y], 20, 1e-9);
+    EXPECT_NEAR(op[Z], 30, 1e-9);
+    EXPECT_EQ(c.s->sim().state(), RunState::ended);
+    // The modal state carries over: an incremental block moves from there.
+    c.type("G91 G1 X5 F1000");
+    c.named("F9");
+    c.run_until_settled();
+    EXPECT_NEAR(c.s->sim().op()[X], 15, 1e-9);
+    EXPECT_EQ(c.input.history().back(), "G91 G1 X5 F1000");
+}
+
+TEST(Session, ImdErrorIsAnAlarmWithItsNumber) {
+    Console c("mill", {});
+    c.type(":mode imd");
+    c.type("G2 X10 Y0 R2");  // end point farther than 2 R: error 107
+    c.named("F9");
+    c.run_until_settled();
+    ASSERT_EQ(c.s->sim().state(), RunState::alarm);
+    EXPECT_NE(c.message().find("ALARM"), std::string::npos);
+    c.named("F9");  // refused until RAZ
+    EXPECT_NE(c.message().find("RAZ"), std::string::npos);
+}
+
+TEST(Session, JogKeysMoveOnlyInJogModes) {
+    Console c;
+    double x0 = x_display(c);
+    c.named("Up");  // AUTO: Up is the input line's history, nothing moves
+    c.run_until_settled();
+    EXPECT_DOUBLE_EQ(x_display(c), x0);
+    c.type(":mode inc");
+    c.type(":inc 1");
+    c.named("Down");
+    c.run_until_settled();
+    EXPECT_NEAR(x_display(c), x0 - 1, 1e-9);  // one step of the diameter
+    c.named("M-i");
+    EXPECT_DOUBLE_EQ(c.s->sim().increment, 10);
+    c.type(":jog Z -2.5");
+    c.run_until_settled();
+    EXPECT_NEAR(c.s->sim().op()[Z], 200 - 2.5, 1e-9);
+}
+
+TEST(Session, JogBeyondTheTravelIsRefusedWithTheAxisError) {
+    Console c("mill", {});
+    c.type(":jog X 5000");
+    EXPECT_NE(c.message().find("error 150"), std::string::npos);
+    c.type(":jog Y -5000");
+    EXPECT_NE(c.message().find("error 151"), std::string::npos);
+}
+
+TEST(Session, OverridesAndSwitches) {
+    Console c;
+    c.named("M--");
+    EXPECT_EQ(c.s->sim().feed_override, 90);
+    for (int i = 0; i < 20; ++i) c.named("M-=");
+    EXPECT_EQ(c.s->sim().feed_override, 120);
+    c.named("M-[");
+    EXPECT_EQ(c.s->sim().spindle_override, 90);
+    c.named("M-b");
+    EXPECT_TRUE(c.s->sim().block_skip());
+    c.type(":m01 on");
+    EXPECT_TRUE(c.s->sim().optional_stop());
+    c.type(":feed 200");
+    EXPECT_NE(c.message().find("usage"), std::string::npos);
+}
+
+TEST(Session, RnsRebuildsTheStateAndRejoins) {
+    Console c;
+    c.type(":mode pom");
+    c.named("F9");
+    c.run_until_settled();
+    c.type(":load 300");
+    c.type(":mode rns");
+    c.type("N90");
+    c.named("F9");
+    c.run_until_settled();
+    ASSERT_EQ(c.s->sim().state(), RunState::stopped) << c.message();
+    EXPECT_NE(c.message().find("N90 found"), std::string::npos);
+    EXPECT_EQ(c.s->sim().tool(), 1);           // T01 M06 was read
+    EXPECT_EQ(c.s->sim().spindle_dir(), 4);     // and the spindle state rebuilt
+    c.named("F9");
+    c.run_until_settled();
+    EXPECT_EQ(c.s->sim().state(), RunState::ended);
+    EXPECT_EQ(c.s->sim().mode(), Mode::automatic);
+}
+
+TEST(Session, TestModeChecksWithoutMoving) {
+    Console c("lathe", {"data/demo/lathe_p300.iso"});
+    c.type(":load 300");
+    c.type(":mode test");
+    Axes before = c.s->sim().om();
+    c.named("F9");
+    c.run_until_settled();
+    EXPECT_EQ(c.s->sim().state(), RunState::ended);
+    EXPECT_NE(c.message().find("TEST %300: no error"), std::string::npos) << c.message();
+    EXPECT_EQ(c.s->sim().om(), before);
+}
+
+TEST(Session, ModeChangeIsRefusedInCycle) {
+    Console c;
+    c.type(":mode pom");
+    c.named("F9");
+    c.type(":mode auto");  // refused: the POM is in cycle
+    EXPECT_EQ(c.s->sim().mode(), Mode::pom);
+    c.run_until_settled();
+    c.type(":load 300");
+    c.type(":mode auto");
+    c.named("F9");
+    c.s->tick(0.1);
+    c.named("F8");
+    EXPECT_EQ(c.s->sim().mode(), Mode::automatic);
+    EXPECT_NE(c.message().find("in cycle"), std::string::npos);
+}
+
+TEST(Session, SetValuesAsTheCommandLineNamesThem) {
+    Console c;
+    c.type(":set L5=2");
+    EXPECT_EQ(c.s->sim().interp().lvars().v[5], 2);
+    c.type(":page param");
+    c.type("L100=7.5");
+    EXPECT_EQ(c.s->sim().interp().lvars().v[100], 7.5);
+    c.type(":set PREF.Z=-120.5");
+    EXPECT_NEAR(c.s->sim().interp().frames().pref[Z], -120.5, 1e-9);
+    c.type(":set NOPE=1");
+    EXPECT_NE(c.message().find("NOPE"), std::string::npos);
+}
+
+TEST(Session, CtrlCQuits) {
+    Console c;
+    c.key("\x03");
+    EXPECT_TRUE(c.s->quit);
+}
+
+TEST(Session, UnknownCommandsSayHowToFindTheRightOne) {
+    Console c;
+    c.type(":frobnicate");
+    EXPECT_NE(c.message().find("unknown command"), std::string::npos);
+    c.type(":page pref");
+    EXPECT_NE(c.message().find("not in this version"), std::string::npos);
+}
+
+TEST(Session, CompletionOfCodesAndCommands) {
+    Console c;
+    auto g = c.s->complete("G4");
+    ASSERT_FALSE(g.empty());
+    EXPECT_EQ(g.front().substr(0, 3), "G40");
+    auto m = c.s->complete("m0");
+    EXPECT_FALSE(m.empty());
+    auto cmd = c.s->complete(":mo");
+    ASSERT_EQ(cmd.size(), 1u);
+    EXPECT_EQ(cmd[0], ":mode");
+}
+
+TEST(Bindings, TheShippedTableParsesAndNamesKnownActions) {
+    console::Bindings b;
+    EXPECT_EQ(b.parse(console::default_bindings(), "bindings"), "");
+    EXPECT_GT(b.list().size(), 30u);
+}
+
+TEST(Bindings, ErrorsNameTheLine) {
+    console::Bindings b;
+    EXPECT_EQ(b.parse("F1 page help\nF99 page op\n", "user"), "user:2: 'F99' is not a key name");
+    EXPECT_EQ(b.parse("F1 fly\n", "user"), "user:1: 'fly' is not an action");
+    EXPECT_EQ(b.parse("F1 page op @planet=mars\n", "user"), "user:1: unknown context 'planet=mars'");
+}
+
+TEST(Bindings, UserLinesWinAndContextsAreMoreSpecific) {
+    Console c;
+    c.s->bindings.parse("F1 page dir\n", "user");
+    c.named("F1");
+    EXPECT_EQ(c.s->page, pages::PageId::dir);
+    // On the DIR page, Down moves the cursor; elsewhere it is the history.
+    c.named("Down");
+    EXPECT_EQ(c.s->page, pages::PageId::dir);
+}
+
+TEST(Bindings, HelpAndSoftKeysComeFromTheTable) {
+    Console c;
+    pages::View v = c.s->view();
+    ASSERT_EQ(v.softkeys.size(), 10u);
+    EXPECT_EQ(v.softkeys[8].label, "START");
+    bool raz = false, cmd = false;
+    for (const auto& h : v.help) {
+        raz |= h.key == "F12" && h.what.find("RAZ") != std::string::npos;
+        cmd |= h.key.rfind(":mode", 0) == 0;
+    }
+    EXPECT_TRUE(raz);
+    EXPECT_TRUE(cmd);
+}

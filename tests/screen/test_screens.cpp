@@ -1,0 +1,184 @@
+// Screen snapshots (DESIGN §2.4): every page and mode at 80x24, drawn through
+// the Canvas and compared with tests/screen/expected/NAME.txt. Run with
+// PUPITRE_BLESS=1 to rewrite the files after an intended change, and review
+// the diff.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "tests/console/fixture.hpp"
+
+using namespace pupitre;
+using pupitre::test::Console;
+
+namespace {
+
+void snapshot(const std::string& name, const std::string& screen) {
+    std::string path = std::string(PUPITRE_SOURCE_DIR) + "/tests/screen/expected/" + name + ".txt";
+    const char* bless = std::getenv("PUPITRE_BLESS");
+    if (bless && *bless == '1') {
+        std::ofstream(path) << screen;
+        return;
+    }
+    std::ifstream in(path);
+    ASSERT_TRUE(in) << "no snapshot " << path << " (run with PUPITRE_BLESS=1)\n" << screen;
+    std::stringstream ss;
+    ss << in.rdbuf();
+    EXPECT_EQ(ss.str(), screen) << "snapshot " << name << " differs; new screen:\n" << screen;
+}
+
+// The lathe homed, the demo %300 selected.
+void homed_lathe(Console& c) {
+    c.type(":mode pom");
+    c.named("F9");
+    c.run_until_settled();
+    c.type(":mode auto");
+    c.type(":load 300");
+}
+const std::vector<std::string> kLatheFiles = {"data/demo/lathe_p300.iso", "tests/golden/programs/css_lathe.iso"};
+
+// The demo run in AUTO for `seconds` of simulated time, in frames of 1/30 s.
+void run_for(Console& c, double seconds) {
+    for (double t = 0; t < seconds; t += 1.0 / 30) c.s->tick(1.0 / 30);
+}
+
+}  // namespace
+
+TEST(Screen, PowerOn) {
+    Console c("lathe", {"data/demo/lathe_p300.iso"});
+    snapshot("power_on_op", c.screen());
+}
+
+TEST(Screen, OmAndOpDuringARun) {
+    Console c("lathe", kLatheFiles);
+    homed_lathe(c);
+    c.named("F9");
+    run_for(c, 12.0);
+    snapshot("auto_running_op", c.screen());
+    c.named("F2");
+    snapshot("auto_running_om", c.screen());
+    c.named("F3");
+    snapshot("auto_running_prog", c.screen());
+    c.named("F4");
+    snapshot("auto_running_info", c.screen());
+}
+
+TEST(Screen, EndOfProgram) {
+    Console c("lathe", kLatheFiles);
+    homed_lathe(c);
+    c.named("F9");
+    c.run_until_settled();
+    snapshot("auto_end_op", c.screen());
+}
+
+TEST(Screen, FeedHold) {
+    Console c("lathe", kLatheFiles);
+    homed_lathe(c);
+    c.named("F9");
+    run_for(c, 9.0);
+    c.named("F10");
+    snapshot("hold", c.screen());
+}
+
+TEST(Screen, SingleBlock) {
+    Console c("lathe", kLatheFiles);
+    homed_lathe(c);
+    c.type(":mode seq");
+    c.named("F9");
+    c.run_until_settled();
+    c.named("F9");
+    c.run_until_settled();
+    snapshot("seq_block", c.screen());
+}
+
+TEST(Screen, DryRunAndTest) {
+    Console c("lathe", kLatheFiles);
+    homed_lathe(c);
+    c.type(":mode dry");
+    c.named("F9");
+    run_for(c, 3.0);
+    snapshot("dry_running", c.screen());
+    c.named("F12");
+    c.type(":mode test");
+    c.named("F9");
+    c.run_until_settled();
+    snapshot("test_done", c.screen());
+}
+
+TEST(Screen, Rns) {
+    Console c("lathe", kLatheFiles);
+    homed_lathe(c);
+    c.type(":mode rns");
+    c.type("N90");
+    c.named("F9");
+    c.run_until_settled();
+    snapshot("rns_found", c.screen());
+}
+
+TEST(Screen, ImdJogIncPom) {
+    Console c("mill", {});
+    snapshot("mill_power_on", c.screen());
+    c.type(":mode pom");
+    c.named("F9");
+    c.run_until_settled();
+    snapshot("pom_done", c.screen());
+    c.type(":mode imd");
+    c.key("G0 X12.5 Y-4");
+    snapshot("imd_typing", c.screen());
+    c.key("\r");
+    c.named("F9");
+    c.run_until_settled();
+    snapshot("imd_done", c.screen());
+    c.type(":mode jog");
+    c.named("Right");
+    c.run_until_settled();
+    snapshot("jog", c.screen());
+    c.type(":mode inc");
+    c.named("M-i");
+    c.named("PgDn");
+    c.run_until_settled();
+    snapshot("inc", c.screen());
+}
+
+TEST(Screen, AlarmPage) {
+    Console c("mill", {});
+    c.type(":mode imd");
+    c.type("G2 X10 Y0 R2");
+    c.named("F9");
+    c.run_until_settled();
+    c.named("F7");
+    snapshot("alarm", c.screen());
+}
+
+TEST(Screen, ParamDirHelp) {
+    Console c("lathe", kLatheFiles);
+    homed_lathe(c);
+    c.type(":set L5=2.5");
+    c.type(":set L100=-7");
+    c.named("F5");
+    snapshot("param", c.screen());
+    c.named("F6");
+    snapshot("dir", c.screen());
+    c.named("F1");
+    snapshot("help", c.screen());
+    c.named("PgDn");
+    snapshot("help_2", c.screen());
+}
+
+TEST(Screen, LargerTerminalsGetMoreRoom) {
+    Console c("lathe", kLatheFiles);
+    homed_lathe(c);
+    c.named("F3");
+    snapshot("prog_120x40", c.screen(120, 40));
+}
+
+TEST(Screen, AsciiFallbackHasNoNonAsciiCharacter) {
+    Console c("lathe", kLatheFiles);
+    homed_lathe(c);
+    pages::Canvas canvas(80, 24, true);
+    pages::render_screen(c.s->view(), canvas);
+    for (unsigned char ch : canvas.to_text()) EXPECT_LT(ch, 0x80);
+}
