@@ -115,7 +115,12 @@ int ReadlineInput::cursor() const {
     return n;
 }
 
-void ReadlineInput::add_history(const std::string& line) { ::add_history(line.c_str()); }
+void ReadlineInput::add_history(const std::string& line) {
+    ::add_history(line.c_str());
+    // Readline set the history position when the current line began: move it
+    // to the end, or the lines loaded from the store could not be reached.
+    using_history();
+}
 
 void ReadlineInput::clear() {
     rl_replace_line("", 0);

@@ -1,0 +1,183 @@
+#!/usr/bin/env bash
+# End-to-end tests of the real console in tmux: a private tmux server (-L),
+# no tmux configuration (-f /dev/null), a fixed 80x24 window, an isolated
+# HOME and XDG directories, LANG=C.UTF-8. Every wait polls the screen with a
+# timeout; a failure prints the screen.
+#   console.sh PUPITRE_BINARY CASE
+# SPDX-License-Identifier: GPL-3.0-or-later
+set -uo pipefail
+bin=$(realpath "$1") case=$2
+command -v tmux >/dev/null || { echo "tmux is not installed (scripts/test installs it)"; exit 77; }
+
+work=$(mktemp -d)
+sock="pupitre-e2e-$$-$case"
+T() { tmux -L "$sock" "$@"; }
+cleanup() { T kill-server 2>/dev/null; rm -rf "$work"; }
+trap cleanup EXIT
+export HOME=$work/home XDG_DATA_HOME=$work/data XDG_CONFIG_HOME=$work/config
+mkdir -p "$HOME"
+
+screen() { T capture-pane -p -t e2e 2>/dev/null; }
+fail() {
+    echo "FAIL ($case): $*"
+    echo "---- screen ----"
+    screen
+    echo "----------------"
+    exit 1
+}
+# wait_for REGEX [SECONDS]: polls the screen until a line matches.
+wait_for() {
+    local re=$1 limit=${2:-10} i
+    for ((i = 0; i < limit * 20; i++)); do
+        screen | grep -Eq -- "$re" && return 0
+        sleep 0.05
+    done
+    fail "waited ${limit}s for /$re/"
+}
+keys() { T send-keys -t e2e "$@"; }
+# cmd TEXT: a ':' command typed on the input line.
+cmd() { keys -l "$1"; keys Enter; sleep 0.1; }
+start() {
+    # After the console: its exit status and the terminal modes, to check that
+    # the terminal was given back as it was.
+    T -f /dev/null new-session -d -s e2e -x "${W:-80}" -y "${H:-24}" \
+        "env LANG=C.UTF-8 TERM=screen '$bin' $* ; echo EXIT=\$? ; stty -a > '$work/stty' ; sleep 30"
+    wait_for 'F1 help|1HELP' 10
+}
+pom() {
+    cmd ":mode pom"
+    keys F9
+    wait_for '^ POM .*READY' 20
+}
+# The value shown on the OP page for an axis ("  Xø      150.000 ...").
+op_value() { screen | awk -v a="$1" '$1 == a || $1 == a"ø" { print $2; exit }'; }
+
+case $case in
+start)
+    start
+    wait_for '^ AUTO '
+    wait_for 'OP  program position'
+    wait_for '1HELP +2OP/OM +3PROG'
+    keys F1
+    wait_for 'HELP  keys and commands'
+    keys F6
+    wait_for '%300'
+    ;;
+imd)
+    start
+    pom
+    cmd ":mode imd"
+    keys -l "G0 X40 Z25"
+    wait_for '^IMD> G0 X40 Z25'
+    keys Enter
+    keys F9
+    wait_for '^ IMD .*END' 20
+    cmd ":page op"
+    wait_for 'OP  program position'
+    [ "$(op_value X)" = "40.000" ] || fail "X should read 40.000"
+    [ "$(op_value Z)" = "25.000" ] || fail "Z should read 25.000"
+    ;;
+auto)
+    start
+    pom
+    cmd ":load 300"
+    cmd ":mode auto"
+    cmd ":speed x10"
+    keys F9
+    wait_for 'CYCLE'
+    wait_for 'M02: end of program %300' 30
+    [ "$(op_value X)" = "150.000" ] || fail "the final X should read 150.000"
+    [ "$(op_value Z)" = "200.000" ] || fail "the final Z should read 200.000"
+    ;;
+seq)
+    start
+    pom
+    cmd ":load 300"
+    cmd ":mode seq"
+    keys F9
+    wait_for '^ SEQ +%300 N10 +BLOCK' 20
+    keys F9
+    wait_for '^ SEQ +%300 N20 +BLOCK' 20
+    keys F9
+    wait_for '^ SEQ +%300 N30 +BLOCK' 20
+    ;;
+hold)
+    start
+    pom
+    cmd ":load 300"
+    cmd ":mode auto"
+    keys F9
+    wait_for 'N80 .*CYCLE' 30
+    keys F10
+    wait_for 'HOLD'
+    a=$(op_value Z)
+    sleep 1
+    b=$(op_value Z)
+    [ "$a" = "$b" ] || fail "Z moved during the feed hold ($a -> $b)"
+    keys F9
+    wait_for 'CYCLE'
+    cmd ":speed max"
+    wait_for 'M02: end of program' 30
+    ;;
+alarm)
+    start
+    cmd ":mode imd"
+    cmd "G2 X10 Z0 R2"
+    keys F9
+    wait_for 'ALARM 107' 10
+    keys F7
+    wait_for '^ ALARM 107 +IMD line 1'
+    keys F12
+    wait_for 'IMD .*READY'
+    ;;
+resize)
+    start
+    T resize-window -t e2e -x 120 -y 40
+    sleep 0.3
+    [ "$(screen | wc -l)" -eq 40 ] || fail "the screen should have 40 lines"
+    screen | tail -n 1 | grep -q '^1HELP' || fail "the soft keys should be on the last line"
+    T resize-window -t e2e -x 80 -y 24
+    sleep 0.3
+    screen | sed -n 24p | grep -q '^1HELP' || fail "the soft keys should be on line 24"
+    T resize-window -t e2e -x 60 -y 20
+    wait_for 'needs at least 80x24'
+    ;;
+quit)
+    start
+    keys C-c
+    wait_for '^EXIT=0' 10
+    sleep 0.2
+    grep -Eq '(^| )icanon' "$work/stty" && grep -Eq '(^| )echo ' "$work/stty" ||
+        fail "the terminal is not restored: $(cat "$work/stty")"
+    T kill-server
+    start
+    cmd ":quit"
+    wait_for '^EXIT=0' 10
+    ;;
+signal)
+    start
+    pid=$(pgrep -f "^$bin" -n)
+    [ -n "$pid" ] || fail "no pupitre process"
+    kill -TERM "$pid"
+    wait_for '^EXIT=0' 10
+    grep -Eq '(^| )icanon' "$work/stty" || fail "the terminal is not restored after SIGTERM"
+    ;;
+history)
+    # An IMD block typed in one session is in the input line's history of the next.
+    start
+    cmd ":mode imd"
+    cmd "G0 X12 Z34"
+    cmd ":quit"
+    wait_for '^EXIT=0'
+    T kill-server
+    start
+    cmd ":mode imd"
+    keys Up Up  # the newest line is ':mode imd' itself
+    wait_for '^IMD> G0 X12 Z34'
+    ;;
+*)
+    echo "unknown case $case"
+    exit 2
+    ;;
+esac
+echo "ok ($case)"
