@@ -98,7 +98,7 @@ public:
     // Seconds of motion still queued (JOG keeps about 0.1 s ahead).
     double queued_time() const;
     double cycle_time() const { return clock_ - start_clock_; }
-    long blocks_done() const { return blocks_; }
+    long blocks_done() const { return mode_ == Mode::test && test_ ? test_blocks_ : blocks_; }
     const std::vector<Alarm>& alarms() const { return alarms_; }  // history, newest last
     bool alarm_active() const { return state_ == RunState::alarm; }
     const std::string& message() const { return message_; }     // $0 text or cycle news

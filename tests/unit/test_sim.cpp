@@ -1,0 +1,181 @@
+// The simulated machine: playback of the interpreter's moves on the simulated
+// clock and the operator's controls, checked without the console.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/sim.hpp"
+
+using namespace pupitre;
+
+namespace {
+
+struct Machine {
+    MachineProfile m;
+    ProgramMemory mem;
+    std::unique_ptr<Sim> sim;
+    explicit Machine(const std::string& text, const std::string& name = "mill", bool homed = true) {
+        builtin_machine(name, m);
+        if (homed) m.homing_required = false;
+        Diag d;
+        mem.load_text("t.iso", text, d);
+        sim = std::make_unique<Sim>(m, mem);
+        std::string why;
+        if (!mem.programs().empty()) sim->select(mem.programs().front()->number, why);
+    }
+    void start() {
+        std::string why;
+        ASSERT_TRUE(sim->cycle_start(why)) << why;
+    }
+    // Plays the first rapid until the feed move begins, to a millisecond.
+    void until_feed() {
+        for (int i = 0; i < 100000 && sim->motion() != 1; ++i) sim->advance(0.001);
+    }
+    void settle(double max = 3600) {
+        for (double t = 0; t < max && sim->state() == RunState::running; t += 0.05) sim->advance(0.05);
+    }
+};
+
+}  // namespace
+
+TEST(Sim, ArcPositionsStayOnTheCircleDuringPlayback) {
+    Machine k("%1\nG0 X0 Y0 Z0\nG2 X20 Y0 I10 J0 F600\nM2\n");
+    k.start();
+    int seen = 0;
+    for (int i = 0; i < 2000 && k.sim->state() == RunState::running; ++i) {
+        k.sim->advance(0.01);
+        if (k.sim->motion() == 2) {
+            Axes p = k.sim->op();
+            EXPECT_NEAR(std::hypot(p[X] - 10, p[Y]), 10, 1e-9);
+            EXPECT_GE(p[Y], -1e-9);  // G2 from X0 to X20 about X10 passes over the top
+            ++seen;
+        }
+    }
+    EXPECT_GT(seen, 100);  // pi*10 mm at 600 mm/min: over 3 s of playback
+    EXPECT_EQ(k.sim->state(), RunState::ended);
+}
+
+TEST(Sim, TheClockIsTheProgramsCycleTime) {
+    Machine k("%1\nG0 X0 Y0 Z0\nG1 X100 F600\nG4 F2\nM2\n");
+    k.start();
+    k.until_feed();
+    double t0 = k.sim->cycle_time();
+    k.sim->advance(5.0);
+    EXPECT_NEAR(k.sim->op()[X], 50, 0.02);  // 10 mm/s, 5 s
+    k.settle();
+    EXPECT_NEAR(k.sim->cycle_time() - t0, 12.0, 0.002);  // 10 s of feed, 2 s of dwell
+}
+
+TEST(Sim, FeedOverrideScalesFeedMovesAndZeroWaits) {
+    Machine k("%1\nG0 X0 Y0 Z0\nG1 X100 F600\nM2\n");
+    k.sim->feed_override = 50;
+    k.start();
+    k.until_feed();
+    k.sim->advance(2.0);
+    EXPECT_NEAR(k.sim->op()[X], 10, 0.02);
+    double x = k.sim->op()[X];
+    k.sim->feed_override = 0;
+    k.sim->advance(10.0);
+    EXPECT_EQ(k.sim->op()[X], x);
+    EXPECT_EQ(k.sim->state(), RunState::running);
+}
+
+TEST(Sim, M49InhibitsTheOverride) {
+    Machine k("%1\nG0 X0 Y0 Z0\nG1 X100 F600 M49\nM2\n");
+    k.sim->feed_override = 50;
+    k.start();
+    k.until_feed();
+    k.sim->advance(2.0);
+    EXPECT_NEAR(k.sim->op()[X], 20, 0.02);
+}
+
+TEST(Sim, M00StopsUntilCycleStart) {
+    Machine k("%1\nG0 X0 Y0 Z0\nM0\nG0 X10\nM2\n");
+    k.start();
+    k.settle();
+    ASSERT_EQ(k.sim->state(), RunState::stopped);
+    EXPECT_NEAR(k.sim->op()[X], 0, 1e-9);
+    k.start();
+    k.settle();
+    EXPECT_EQ(k.sim->state(), RunState::ended);
+    EXPECT_NEAR(k.sim->op()[X], 10, 1e-9);
+}
+
+TEST(Sim, OptionalStopAndBlockSkipSwitches) {
+    Machine k("%1\nG0 X0 Y0 Z0\nM1\n/G0 X50\nG0 Y5\nM2\n");
+    k.start();
+    k.settle();
+    EXPECT_EQ(k.sim->state(), RunState::ended);  // M01 ignored with the switch off
+    EXPECT_NEAR(k.sim->op()[X], 50, 1e-9);
+    k.sim->raz();
+    k.sim->optional_stop() = true;
+    k.sim->block_skip() = true;
+    std::string why;
+    ASSERT_TRUE(k.sim->cycle_start(why));
+    k.settle();
+    EXPECT_EQ(k.sim->state(), RunState::stopped);
+    k.start();
+    k.settle();
+    EXPECT_NEAR(k.sim->op()[X], 0, 1e-9);  // the skipped block did not run
+    EXPECT_NEAR(k.sim->op()[Y], 5, 1e-9);
+}
+
+TEST(Sim, RazMidMoveLeavesTheAxesWhereTheyStopped) {
+    Machine k("%1\nG0 X0 Y0 Z0\nG1 X100 F600\nM2\n");
+    k.start();
+    k.until_feed();
+    k.sim->advance(3.0);
+    double x = k.sim->op()[X];
+    EXPECT_NEAR(x, 30, 0.02);
+    k.sim->raz();
+    EXPECT_EQ(k.sim->state(), RunState::idle);
+    EXPECT_NEAR(k.sim->op()[X], x, 1e-9);
+    EXPECT_NEAR(k.sim->interp().program_pos()[X], x, 1e-9);  // the interpreter agrees
+}
+
+TEST(Sim, MovesBeforeHomingGive159AndJogIsAllowed) {
+    Machine k("%1\nG0 X10\nM2\n", "mill", false);
+    std::string why;
+    ASSERT_TRUE(k.sim->jog(X, -5, why)) << why;  // the operator may jog before the POM
+    k.settle();
+    k.start();
+    k.settle();
+    ASSERT_EQ(k.sim->state(), RunState::alarm);
+    EXPECT_EQ(k.sim->alarms().back().diag.code, 159);
+    k.sim->raz();
+    ASSERT_TRUE(k.sim->set_mode(Mode::pom, why));
+    k.start();
+    k.settle();
+    for (int a : {X, Y, Z}) EXPECT_TRUE(k.sim->interp().homed(a));
+    EXPECT_EQ(k.sim->om(), k.m.home);
+}
+
+TEST(Sim, TestModeRunsALongProgramOverSeveralFrames) {
+    std::string text = "%1\nG0 X0 Y0 Z0\n";
+    for (int i = 0; i < 30000; ++i) text += "G1 X" + std::to_string(i % 100) + " F1000\n";
+    text += "M2\n";
+    Machine k(text);
+    std::string why;
+    ASSERT_TRUE(k.sim->set_mode(Mode::test, why));
+    k.start();
+    int frames = 0;
+    while (k.sim->state() == RunState::running && frames < 1000) {
+        k.sim->advance(0.03, 5000);
+        ++frames;
+    }
+    EXPECT_EQ(k.sim->state(), RunState::ended);
+    EXPECT_GE(frames, 6);  // never the whole program in one frame
+    EXPECT_NE(k.sim->message().find("no error"), std::string::npos);
+}
+
+TEST(Sim, SearchThatFindsNothingSaysSo) {
+    Machine k("%1\nN10 G0 X0 Y0 Z0\nN20 M2\n");
+    std::string why;
+    ASSERT_TRUE(k.sim->set_mode(Mode::rns, why));
+    ASSERT_TRUE(k.sim->search(99, why));
+    k.start();
+    k.settle();
+    EXPECT_EQ(k.sim->state(), RunState::idle);
+    EXPECT_NE(k.sim->message().find("N99 is not in the program"), std::string::npos);
+}
