@@ -162,7 +162,7 @@ int console(const ConsoleArgs& a) {
         if (s.memory().find(n)) s.sim().select(n, news);
     }
     if (news.empty())
-        news = "pupitre " PUPITRE_VERSION " on the " + m.name + " machine: F1 help, F6 programs, F8 mode, F9 Cycle Start";
+        news = "pupitre " PUPITRE_VERSION ", " + m.name + ": F1 help, F6 programs, F8 mode, F9 Cycle Start";
     s.say(news, false);
     console::Terminal term;
     if (std::string err = term.open(theme); !err.empty()) {

@@ -62,6 +62,36 @@ start)
     wait_for 'HELP  keys and commands'
     keys F6
     wait_for '%300'
+    # Tab completes a command on the readline input line.
+    keys -l ":mo"
+    keys Tab
+    wait_for '^> :mode$'
+    ;;
+themes)
+    start --theme mono --ascii
+    wait_for '^- OP  program position'
+    screen | LC_ALL=C grep -q '[^ -~]' && fail "--ascii drew a non-ASCII character"
+    cmd ":quit"
+    wait_for '^EXIT=0'
+    T kill-server
+    start --theme phosphor
+    wait_for 'OP  program position'
+    cmd ":quit"
+    wait_for '^EXIT=0'
+    "$bin" --theme neon </dev/null >/dev/null 2>&1
+    [ $? -eq 64 ] || fail "an unknown theme should exit with 64"
+    "$bin" </dev/null >/dev/null 2>"$work/err"
+    [ $? -eq 66 ] && grep -q 'needs a terminal' "$work/err" || fail "no terminal: exit 66 with a message"
+    ;;
+crash)
+    # A crash signal: the terminal is restored before the default action.
+    start
+    pid=$(pgrep -f "^$bin" -n)
+    kill -SEGV "$pid"
+    wait_for '^EXIT=139' 10
+    wait_for 'crashed; the terminal is restored'
+    grep -Eq '(^| )icanon' "$work/stty" && grep -Eq '(^| )echo ' "$work/stty" ||
+        fail "the terminal is not restored after SIGSEGV"
     ;;
 imd)
     start
