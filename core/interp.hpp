@@ -47,6 +47,7 @@ struct MoveEvent {
     double rpm = 0;                   // spindle speed at the start
     double seconds = 0;               // duration
     bool x_diameter = false;          // lathe X shown as a diameter
+    bool comp = false;                // a piece of the radius-compensated tool path
 };
 
 struct SpindleEvent {
@@ -366,6 +367,7 @@ private:
     double path_ = 0, clock_ = 0;
     bool ended_ = false;
     bool imd_ = false;  // the main program is an IMD fragment
+    bool comp_emitting_ = false;  // moves now made are compensated pieces
     std::bitset<kAxes> homed_;
     bool first_move_ = true;
     int nonmotion_in_comp_ = 0;

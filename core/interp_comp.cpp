@@ -53,6 +53,7 @@ bool Interpreter::comp_emit(const std::vector<comp::Piece>& pieces, const CompCt
     const int a0 = comp_.a0, a1 = comp_.a1;
     const int an = m_.lathe ? -1 : modal_.plane == 17 ? Z : modal_.plane == 18 ? Y : X;
     bool ok = true;
+    comp_emitting_ = comp_.radius > 0;
     for (const comp::Piece& pc : pieces) {
         prog_ = frames_.to_program(mach_);  // where the tool is
         Axes tgt = ctx.target;
@@ -80,6 +81,7 @@ bool Interpreter::comp_emit(const std::vector<comp::Piece>& pieces, const CompCt
         }
         if (!ok) break;
     }
+    comp_emitting_ = false;
     loc_ = saved_loc;
     modal_ = saved_modal;
     prog_ = saved_prog;

@@ -256,6 +256,7 @@ bool Interpreter::linear(int g, const Axes& mach, bool g52, const std::bitset<kA
 bool Interpreter::finish_move(MoveEvent& e, const Axes& mach, const Axes& prog, double seconds) {
     e.seconds = seconds;
     e.to_prog = prog;
+    e.comp = comp_emitting_;
     mach_ = mach;
     prog_ = prog;
     path_ += e.length;
