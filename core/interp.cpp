@@ -201,7 +201,7 @@ bool parse_double(std::string_view s, double& v) {
 }
 }  // namespace
 
-std::string Interpreter::set(std::string_view name, double value) {
+std::string Interpreter::set(std::string_view name, double value, bool immediate) {
     auto axis_suffix = [&](std::string_view prefix, int& axis) {
         if (name.size() != prefix.size() + 2 || name.substr(0, prefix.size()) != prefix ||
             name[prefix.size()] != '.')
@@ -214,7 +214,7 @@ std::string Interpreter::set(std::string_view name, double value) {
         if (!m_.has(axis)) return "axis " + std::string(1, name.back()) + " is not on " + m_.name;
         Axes& which = name[0] == 'P' ? frames_.pref : name[3] == '1' ? frames_.dec1 : frames_.dec3;
         which[size_t(axis)] = value;
-        recompute_program_pos();
+        if (immediate) recompute_program_pos();
         return {};
     }
     if (name.size() >= 2 && name[0] == 'L') {
@@ -259,9 +259,49 @@ std::string Interpreter::set(std::string_view name, double value) {
             else if (f == "A" || f == "TIP") c.tip = value;
             else return "mill correctors have L R DL DR and the end radius A";
         }
+        // The active corrector's new gauge applies at the next move of each of
+        // its axes (turning.md §3.4); a new radius at the next G41/G42.
+        if (int(d) == modal_.d) {
+            if (m_.lathe) gauge_pending_.set(X), gauge_pending_.set(Z);
+            else gauge_pending_.set(size_t(modal_.tool_axis));
+        }
         return {};
     }
     return "unknown setting (PREF.X, DEC1.Z, DEC3.Y, D1.R, L5, E80000…)";
+}
+
+bool Interpreter::get(std::string_view name, double& out) const {
+    int axis = name.size() >= 6 && name[name.size() - 2] == '.' ? axis_of(name.back()) : -1;
+    if (axis >= 0 && (name.substr(0, 5) == "PREF." || name.substr(0, 5) == "DEC1." || name.substr(0, 5) == "DEC3.")) {
+        const Axes& which = name[0] == 'P' ? frames_.pref : name[3] == '1' ? frames_.dec1 : frames_.dec3;
+        out = which[size_t(axis)];
+        return true;
+    }
+    if (name.size() >= 4 && name[0] == 'D') {
+        size_t dot = name.find('.');
+        double d;
+        if (dot == std::string_view::npos || !parse_double(name.substr(1, dot - 1), d) || d < 1 || d > 255)
+            return false;
+        const Corrector& c = corr_[size_t(d)];
+        std::string_view f = name.substr(dot + 1);
+        if (m_.lathe) {
+            if (f == "X") out = c.x;
+            else if (f == "Z") out = c.z;
+            else if (f == "R") out = c.r;
+            else if (f == "C") out = c.c;
+            else if (f == "DX") out = c.dx;
+            else if (f == "DZ") out = c.dz;
+            else return false;
+        } else {
+            if (f == "L") out = c.l;
+            else if (f == "R") out = c.r;
+            else if (f == "DL") out = c.dl;
+            else if (f == "DR") out = c.dr;
+            else return false;
+        }
+        return true;
+    }
+    return false;
 }
 
 bool Interpreter::start(int program) {

@@ -140,7 +140,17 @@ public:
     void power_on();
     // Settings before a run (DESIGN §2.1 --set): PREF.X=-120.5, D1.R=4, L5=2, E80000=18000.
     // Returns an empty string or the reason it is refused.
-    std::string set(std::string_view name, double value);
+    // `immediate` false (a setting changed while a program is in cycle): an
+    // origin takes effect at the next move, not on the position shown now.
+    std::string set(std::string_view name, double value, bool immediate = true);
+    // The value of a setting as set() names it (mm, X of origins and gauges as
+    // radii, DX a diameter); false for an unknown name.
+    bool get(std::string_view name, double& out) const;
+    // The gauge of the active corrector on an axis, applied or not yet.
+    double active_gauge(int axis) const { return gauge_for(modal_.d, axis); }
+    bool gauge_pending(int axis) const { return gauge_pending_[size_t(axis)]; }
+    bool comp_active() const { return comp_.on; }
+    double comp_radius() const { return comp_.radius; }
 
     bool start(int program);                  // false: no such program (error 25 reported)
     bool start(const ProgramText* p);

@@ -1,0 +1,83 @@
+// The setter's arithmetic (see setting.hpp).
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/setting.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+namespace pupitre::setting {
+
+namespace {
+
+std::string num(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3f", std::abs(v) < 5e-7 ? 0.0 : v);
+    return buf;
+}
+
+std::string frame_problem(const Interpreter& in) {
+    const Frames& f = in.frames();
+    if (f.mirror.any() || f.scale_on || std::abs(f.ed) > 1e-12)
+        return "a mirror (G51), a scale factor (G74) or an angular offset (ED) is in force: RAZ first";
+    if (f.g53) return "G53 is in force (PREF and DEC1 suspended): RAZ first";
+    return {};
+}
+
+}  // namespace
+
+double touch_pref(double om, double g59, double dec1, double dec3, double gauge, double surface) {
+    return om - g59 - dec1 - dec3 - gauge - surface;
+}
+
+double measure_gauge(double om, double g59, double pref, double dec1, double dec3, double surface) {
+    return om - g59 - pref - dec1 - dec3 - surface;
+}
+
+std::string touch_off(const Interpreter& in, int axis, double surface, Touch& t) {
+    const MachineProfile& m = in.machine();
+    if (!m.has(axis)) return std::string("the machine has no ") + kAxisNames[size_t(axis)] + " axis";
+    if (std::string p = frame_problem(in); !p.empty()) return p;
+    const Frames& f = in.frames();
+    size_t a = size_t(axis);
+    double s = surface / in.to_display(axis, 1.0);  // a diameter typed for the lathe's X
+    double gauge = in.active_gauge(axis);
+    t.axis = axis;
+    t.name = std::string("PREF.") + kAxisNames[a];
+    t.before = f.pref[a];
+    t.after = touch_pref(in.machine_pos()[a], f.g59[a], f.dec1[a], f.dec3[a], gauge, s);
+    t.formula = t.name + " = OM " + num(in.machine_pos()[a]) + " - DEC1 " + num(f.dec1[a]) + " - DEC3 " +
+                num(f.dec3[a]) + (f.g59[a] != 0 ? " - G59 " + num(f.g59[a]) : "") + " - gauge " + num(gauge) +
+                " - surface " + num(s) + " = " + num(t.after);
+    return {};
+}
+
+std::string measure(const Interpreter& in, int d, int axis, double surface, Touch& t) {
+    const MachineProfile& m = in.machine();
+    if (d < 1 || d > m.correctors) return "corrector must be D1 to D" + std::to_string(m.correctors);
+    if (!m.has(axis)) return std::string("the machine has no ") + kAxisNames[size_t(axis)] + " axis";
+    if (!m.lathe && axis != in.modal().tool_axis)
+        return std::string("on a machining centre a gauge is measured along the tool axis (") +
+               kAxisNames[size_t(in.modal().tool_axis)] + ")";
+    if (m.lathe && axis != X && axis != Z) return "a lathe gauge is measured on X or Z";
+    if (std::string p = frame_problem(in); !p.empty()) return p;
+    const Frames& f = in.frames();
+    size_t a = size_t(axis);
+    double s = surface / in.to_display(axis, 1.0);
+    const std::string field = m.lathe ? std::string(1, kAxisNames[a]) : "L";
+    t.axis = axis;
+    t.name = "D" + std::to_string(d) + "." + field;
+    in.get(t.name, t.before);
+    // The dynamic correction stays what it is: the measured length is gauge + dynamic.
+    double dyn = 0;
+    in.get("D" + std::to_string(d) + (m.lathe ? (axis == X ? ".DX" : ".DZ") : ".DL"), dyn);
+    if (m.lathe && axis == X) dyn /= 2;  // DX is a diameter
+    double total = measure_gauge(in.machine_pos()[a], f.g59[a], f.pref[a], f.dec1[a], f.dec3[a], s);
+    if (!m.lathe && in.modal().tool_axis_neg) total = -total;
+    t.after = total - dyn;
+    t.formula = t.name + " = OM " + num(in.machine_pos()[a]) + " - PREF " + num(f.pref[a]) + " - DEC1 " +
+                num(f.dec1[a]) + " - DEC3 " + num(f.dec3[a]) + (f.g59[a] != 0 ? " - G59 " + num(f.g59[a]) : "") +
+                " - surface " + num(s) + (dyn != 0 ? " - dynamic " + num(dyn) : "") + " = " + num(t.after);
+    return {};
+}
+
+}  // namespace pupitre::setting
