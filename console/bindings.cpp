@@ -33,6 +33,11 @@ int to_int(std::string_view a) {
 }
 
 Effect page(Session& s, std::string_view arg) {
+    if (arg == "set") {  // the setting pages in turn: PARAM, PREF, CORR
+        using P = pages::PageId;
+        s.show_page(s.page == P::param ? P::pref : s.page == P::pref ? P::corr : P::param);
+        return Effect::redraw;
+    }
     if (arg == "pos") {
         s.show_page(s.page == pages::PageId::op ? pages::PageId::om : pages::PageId::op);
         return Effect::redraw;
@@ -62,6 +67,13 @@ Effect scroll(Session& s, std::string_view arg) {
 Effect dir_move(Session& s, std::string_view arg) {
     int n = int(s.programs().size());
     s.dir_cursor = std::clamp(s.dir_cursor + to_int(arg), 0, std::max(0, n - 1));
+    return Effect::redraw;
+}
+
+bool on_corr(const Session& s, std::string_view) { return s.page == pages::PageId::corr && input_empty(s); }
+
+Effect corr_move(Session& s, std::string_view arg) {
+    s.corr_cursor = std::clamp(s.corr_cursor + to_int(arg), 1, s.machine().correctors);
     return Effect::redraw;
 }
 
@@ -135,6 +147,11 @@ const std::vector<Action> kActions = {
     {"dir-load", "select the program under the cursor", on_dir, dir_load, "LOAD"},
     {"dir-delete", "delete the program under the cursor (twice to confirm)", on_dir, dir_delete, "DELETE"},
     {"jog", "jog %s", jogging, jog, "%S"},
+    {"corr-move", "choose the corrector %s", on_corr, corr_move, "D"},
+    {"undo", "undo the last change of an origin or corrector", always,
+     [](Session& s, std::string_view) { return s.undo(); }, "UNDO"},
+    {"protect", "memory-protect key (locks programs, origins, correctors)", always,
+     [](Session& s, std::string_view) { return s.protect_command(""); }, "LOCK"},
     {"inc-step", "next INC step (0.001 0.01 0.1 1 10 mm)", always, inc_step, "STEP"},
     {"feed-override", "feed override %s %", always,
      [](Session& s, std::string_view a) { return override_step(s, a, true); }, "FEED"},
@@ -192,6 +209,7 @@ const Action* find_action(std::string_view name) {
 std::string help_text(const Action& a, std::string_view arg) {
     std::string h(a.help);
     if (a.name == "page" && arg == "pos") return "show the OP page, again for OM";
+    if (a.name == "page" && arg == "set") return "show the PARAM, PREF and CORR pages in turn";
     if (size_t p = h.find("%s"); p != std::string::npos) h.replace(p, 2, arg);
     return h;
 }
@@ -199,7 +217,7 @@ std::string help_text(const Action& a, std::string_view arg) {
 std::string soft_label(const Action& a, std::string_view arg) {
     std::string l(a.label);
     if (size_t p = l.find("%S"); p != std::string::npos) {
-        std::string up(arg == "pos" ? "OP/OM" : arg);
+        std::string up(arg == "pos" ? "OP/OM" : arg == "set" ? "SET" : arg);
         for (char& c : up) c = char(std::toupper(static_cast<unsigned char>(c)));
         l.replace(p, 2, up);
     }

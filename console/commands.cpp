@@ -47,7 +47,7 @@ bool on_off(std::string_view s, bool current, bool& out) {
 
 const std::vector<std::pair<std::string, std::string>>& command_help() {
     static const std::vector<std::pair<std::string, std::string>> k = {
-        {":page om|op|prog|info|param|dir|alarm|help", "show a page"},
+        {":page om|op|prog|info|param|pref|corr|dir|alarm|help", "show a page"},
         {":mode auto|seq|dry|test|rns|imd|jog|inc|pom", "select a mode (refused while a program is in cycle)"},
         {":load N", "select program %N for AUTO, SEQ, DRY RUN, TEST and RNS"},
         {":cycle", "Cycle Start"},
@@ -63,9 +63,12 @@ const std::vector<std::pair<std::string, std::string>>& command_help() {
         {":m01 on|off", "optional stop switch: M01 stops"},
         {":inc STEP", "INC step in mm (0.001 to 100)"},
         {":rm N", "delete program %N from the store (its history stays)"},
-        {":touch AXIS VALUE", "touch-off (PREF page): comes with the setting pages"},
-        {":measure Dn AXIS VALUE", "tool measurement (CORR page): comes with the setting pages"},
-        {":edit N / :save / :goto Nnnn", "the program editor: comes with EDIT mode"},
+        {":touch AXIS VALUE", "touch-off: PREF so that the tool point reads VALUE (X a diameter on the lathe)"},
+        {":measure Dn AXIS VALUE", "tool measurement: the gauge of Dn from a touched face or diameter"},
+        {":undo", "undo the last change of an origin or a corrector"},
+        {":protect on|off [PIN]", "the memory-protect key: locks programs, origins and correctors"},
+        {":protect pin [NEWPIN]", "set (or remove) the PIN that unlocks the protection"},
+        {":edit N / :save / :goto Nnnn", "the program editor: not in this version"},
         {":quit", "leave the console (also Ctrl-C)"},
     };
     return k;
@@ -88,11 +91,11 @@ Effect Session::command(std::string_view text) {
     if (cmd == "page") {
         pages::PageId p;
         if (!pages::parse_page(a1, p)) {
-            if (a1 == "pref" || a1 == "corr" || a1 == "edit" || a1 == "graph") {
+            if (a1 == "edit" || a1 == "graph") {
                 say("the " + std::string(a1) + " page is not in this version of pupitre", true);
                 return Effect::redraw;
             }
-            return usage(":page om|op|prog|info|param|dir|alarm|help");
+            return usage(":page om|op|prog|info|param|pref|corr|dir|alarm|help");
         }
         show_page(p);
         return Effect::redraw;
@@ -194,7 +197,25 @@ Effect Session::command(std::string_view text) {
         delete_program(int(n));
         return Effect::redraw;
     }
-    if (cmd == "touch" || cmd == "measure" || cmd == "edit" || cmd == "save" || cmd == "goto") {
+    if (cmd == "touch") {
+        double v;
+        int axis = a1.size() == 1 ? axis_of(char(std::toupper(a1[0]))) : -1;
+        if (w.size() != 3 || axis < 0 || !number(w[2], v)) return usage(":touch AXIS VALUE, e.g. :touch Z 0");
+        return touch(axis, v);
+    }
+    if (cmd == "measure") {
+        double v;
+        long d = 0;
+        int axis = w.size() > 2 && w[2].size() == 1 ? axis_of(char(std::toupper(w[2][0]))) : -1;
+        bool ok = w.size() == 4 && a1.size() > 1 && (a1[0] == 'D' || a1[0] == 'd') && integer(a1.substr(1), d) &&
+                  axis >= 0 && number(w[3], v);
+        if (!ok) return usage(":measure Dn AXIS VALUE, e.g. :measure D2 X 59.978");
+        corr_cursor = int(d);
+        return measure(int(d), axis, v);
+    }
+    if (cmd == "undo") return undo();
+    if (cmd == "protect") return protect_command(text.substr(std::min(text.size(), text.find("protect") + 7)));
+    if (cmd == "edit" || cmd == "save" || cmd == "goto") {
         say(":" + std::string(cmd) + " is not in this version of pupitre (setting pages and editor)", true);
         return Effect::redraw;
     }

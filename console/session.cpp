@@ -48,6 +48,7 @@ std::string Session::load_store() {
     if (auto r = store_->imd_history(m_.name, 200); !r.error)
         for (auto it = r.value.rbegin(); it != r.value.rend(); ++it) input_.add_history(it->block);
     for (const auto& [name, v] : store::persistent_writes(sim_->interp())) persisted_[name] = v;
+    if (auto r = store_->setting("protect.on"); !r.error && r.value) protect = *r.value == "1";
     refresh_dir();
     return problem;
 }
@@ -145,6 +146,8 @@ Effect Session::submit(const std::string& raw) {
 // Text that is not a command goes to the mode or the page (DESIGN §2.5).
 Effect Session::plain_text(const std::string& text) {
     std::string_view t = text;
+    // The setting pages take what is typed on them, whatever the mode.
+    if (page == pages::PageId::pref || page == pages::PageId::corr) return setting_text(t);
     if (sim_->mode() == Mode::imd) {
         std::string why;
         if (!sim_->imd(t, why)) {
@@ -155,7 +158,8 @@ Effect Session::plain_text(const std::string& text) {
         say("IMD: Cycle Start (F9) executes: " + text);
         return Effect::redraw;
     }
-    if (page == pages::PageId::param || t.find('=') != std::string_view::npos) return set_value(t);
+    if (page == pages::PageId::param || (sim_->mode() != Mode::imd && t.find('=') != std::string_view::npos))
+        return set_value(t);
     long n;
     if (sim_->mode() == Mode::rns) {
         std::string_view w = t;
@@ -198,6 +202,10 @@ Effect Session::set_value(std::string_view a) {
         return Effect::redraw;
     }
     for (char& c : name) c = char(std::toupper(static_cast<unsigned char>(c)));
+    if (name[0] == 'P' || name[0] == 'D') {
+        apply_setting(name, v, ":set");
+        return Effect::redraw;
+    }
     if (sim_->in_cycle()) {
         say("a program is in cycle: values are set when it is stopped (RAZ)", true);
         return Effect::redraw;
@@ -209,15 +217,6 @@ Effect Session::set_value(std::string_view a) {
     }
     sim_->interp().origins_changed();
     say(name + " = " + std::string(val));
-    // Correctors and origins are kept in the store, with an audit row.
-    if (store_ && name[0] != 'L' && name[0] != 'E') {
-        bool rotary = name.size() > 2 && (name.back() == 'A' || name.back() == 'B' || name.back() == 'C') &&
-                      (name.rfind("PREF.", 0) == 0 || name.rfind("DEC", 0) == 0);
-        bool code = name.size() > 2 && name.substr(name.size() - 2) == ".C" && name[0] == 'D';
-        int64_t internal = code ? int64_t(v) : int64_t(std::llround(v * (rotary ? 1e4 : 1e3)));
-        auto r = store_->set_values(m_.name, {{name, internal}}, ":set");
-        if (r.error) say(name + " set, but not stored: " + r.error.message, true);
-    }
     return Effect::redraw;
 }
 
@@ -285,6 +284,8 @@ pages::View Session::view() const {
     Mode m = sim_->mode();
     v.prompt = m == Mode::imd ? "IMD> " : m == Mode::rns ? "RNS N> " : m == Mode::inc ? "INC> " : "> ";
     if (page == pages::PageId::param && m != Mode::imd) v.prompt = "L/E= ";
+    if (page == pages::PageId::pref && m != Mode::imd) v.prompt = "PREF> ";
+    if (page == pages::PageId::corr && m != Mode::imd) v.prompt = "D" + std::to_string(corr_cursor) + "> ";
     v.input = input_.text();
     v.input_cursor = input_.cursor();
     v.speed = speed == Speed::real ? "x1" : speed == Speed::x10 ? "x10" : "max";
@@ -313,6 +314,10 @@ pages::View Session::view() const {
     }
     for (const auto& c : command_help()) v.help.push_back(pages::HelpLine{c.first, c.second, ""});
     if (store_) v.store_path = store_->path();
+    v.corr_cursor = corr_cursor;
+    v.pending = pending_origins();
+    v.protect = protect;
+    v.undo_depth = undo_.size();
     return v;
 }
 

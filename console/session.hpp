@@ -70,6 +70,20 @@ public:
     LineInput& input() { return input_; }
     const LineInput& input() const { return input_; }
     int pending_delete = -1;  // DIR: Del asks twice
+    // Settings (console/setting.cpp): origins and correctors from the PREF and
+    // CORR pages, touch-off, tool measurement, undo, memory protection.
+    // Values in mm as --set names them (X of origins and gauges a radius).
+    bool apply_setting(const std::string& name, double value, const std::string& source);
+    Effect touch(int axis, double surface);
+    Effect measure(int d, int axis, double surface);
+    Effect undo();
+    Effect protect_command(std::string_view args);
+    bool unprotected(std::string_view what);  // says why when protected
+    bool protect = false;
+    int corr_cursor = 1;  // the corrector the CORR page edits
+    // Origins changed during a run that wait for the next move.
+    std::vector<std::string> pending_origins() const;
+    size_t undo_depth() const { return undo_.size(); }
     // Completion of the word before the cursor: G/M codes and commands.
     std::vector<std::string> complete(std::string_view word) const;
 
@@ -90,6 +104,13 @@ private:
     RunState last_state_ = RunState::idle;
     size_t alarms_seen_ = 0;
     std::map<std::string, int64_t> persisted_;  // program writes already stored
+    struct Undo {
+        std::string name;
+        double old = 0;
+    };
+    std::vector<Undo> undo_;
+    std::map<std::string, long> pending_origin_;  // name -> interpreter moves when set
+    Effect setting_text(std::string_view text);  // typed on the PREF or CORR page
 };
 
 }  // namespace pupitre::console

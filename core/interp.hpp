@@ -149,6 +149,14 @@ public:
     // The gauge of the active corrector on an axis, applied or not yet.
     double active_gauge(int axis) const { return gauge_for(modal_.d, axis); }
     bool gauge_pending(int axis) const { return gauge_pending_[size_t(axis)]; }
+    // Outside a run, a setting applies at once: the active gauges now, and the
+    // program position follows.
+    void apply_gauges_now() {
+        for (int a = 0; a < kAxes; ++a)
+            if (gauge_pending_[size_t(a)]) frames_.gauge[size_t(a)] = gauge_for(modal_.d, a);
+        gauge_pending_.reset();
+        recompute_program_pos();
+    }
     bool comp_active() const { return comp_.on; }
     double comp_radius() const { return comp_.radius; }
 

@@ -15,6 +15,12 @@ std::string num(double v) {
     return buf;
 }
 
+// " - NAME value", or nothing for a zero term: the message line is short.
+std::string term(const char* name, double v) {
+    if (std::abs(v) < 5e-7) return {};
+    return std::string(" - ") + name + " " + num(v);
+}
+
 std::string frame_problem(const Interpreter& in) {
     const Frames& f = in.frames();
     if (f.mirror.any() || f.scale_on || std::abs(f.ed) > 1e-12)
@@ -45,9 +51,8 @@ std::string touch_off(const Interpreter& in, int axis, double surface, Touch& t)
     t.name = std::string("PREF.") + kAxisNames[a];
     t.before = f.pref[a];
     t.after = touch_pref(in.machine_pos()[a], f.g59[a], f.dec1[a], f.dec3[a], gauge, s);
-    t.formula = t.name + " = OM " + num(in.machine_pos()[a]) + " - DEC1 " + num(f.dec1[a]) + " - DEC3 " +
-                num(f.dec3[a]) + (f.g59[a] != 0 ? " - G59 " + num(f.g59[a]) : "") + " - gauge " + num(gauge) +
-                " - surface " + num(s) + " = " + num(t.after);
+    t.formula = t.name + " = OM " + num(in.machine_pos()[a]) + term("DEC1", f.dec1[a]) + term("DEC3", f.dec3[a]) +
+                term("G59", f.g59[a]) + term("gauge", gauge) + " - surface " + num(s) + " = " + num(t.after);
     return {};
 }
 
@@ -74,9 +79,9 @@ std::string measure(const Interpreter& in, int d, int axis, double surface, Touc
     double total = measure_gauge(in.machine_pos()[a], f.g59[a], f.pref[a], f.dec1[a], f.dec3[a], s);
     if (!m.lathe && in.modal().tool_axis_neg) total = -total;
     t.after = total - dyn;
-    t.formula = t.name + " = OM " + num(in.machine_pos()[a]) + " - PREF " + num(f.pref[a]) + " - DEC1 " +
-                num(f.dec1[a]) + " - DEC3 " + num(f.dec3[a]) + (f.g59[a] != 0 ? " - G59 " + num(f.g59[a]) : "") +
-                " - surface " + num(s) + (dyn != 0 ? " - dynamic " + num(dyn) : "") + " = " + num(t.after);
+    t.formula = t.name + " = OM " + num(in.machine_pos()[a]) + term("PREF", f.pref[a]) + term("DEC1", f.dec1[a]) +
+                term("DEC3", f.dec3[a]) + term("G59", f.g59[a]) + " - surface " + num(s) + term("dynamic", dyn) +
+                " = " + num(t.after);
     return {};
 }
 

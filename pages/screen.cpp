@@ -13,7 +13,7 @@ namespace pupitre::pages {
 
 namespace {
 
-constexpr std::string_view kPageWords[] = {"om", "op", "prog", "info", "param", "dir", "alarm", "help"};
+constexpr std::string_view kPageWords[] = {"om", "op", "prog", "info", "param", "dir", "alarm", "help", "pref", "corr"};
 
 void status_line(const View& v, Canvas& c) {
     const Sim& s = *v.sim;
@@ -35,8 +35,8 @@ void status_line(const View& v, Canvas& c) {
     std::string state = s.alarm_active() ? "ALARM " + std::to_string(s.alarms().back().diag.code)
                                          : std::string(state_name(st));
     c.text(x + 1, 0, " " + state + " ", ss);
-    char right[96];
-    std::snprintf(right, sizeof right, "%s F%d%% S%d%%%s%s %s ", v.machine.c_str(), s.feed_override,
+    char right[112];
+    std::snprintf(right, sizeof right, "%s%s F%d%% S%d%%%s%s %s ", v.protect ? "LOCK " : "", v.machine.c_str(), s.feed_override,
                   s.spindle_override, s.interp().options().block_skip ? " /" : "",
                   s.interp().options().optional_stop ? " M01" : "", v.speed.c_str());
     c.text_right(0, 0, c.width(), right, Style::status);
@@ -123,6 +123,8 @@ void render_page(const View& v, Canvas& c, const Rect& r) {
         case PageId::dir: return page_dir(v, c, r);
         case PageId::alarm: return page_alarm(v, c, r);
         case PageId::help: return page_help(v, c, r);
+        case PageId::pref: return page_pref(v, c, r);
+        case PageId::corr: return page_corr(v, c, r);
     }
 }
 

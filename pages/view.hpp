@@ -11,7 +11,7 @@
 
 namespace pupitre::pages {
 
-enum class PageId { om, op, prog, info, param, dir, alarm, help };
+enum class PageId { om, op, prog, info, param, dir, alarm, help, pref, corr };
 std::string_view page_word(PageId p);            // om, op, prog, …
 bool parse_page(std::string_view word, PageId& out);
 
@@ -54,6 +54,11 @@ struct View {
     // HELP page.
     std::vector<HelpLine> help;
     std::string store_path;
+    // PREF and CORR pages.
+    int corr_cursor = 1;
+    std::vector<std::string> pending;  // origins changed in a run, not applied yet
+    bool protect = false;
+    size_t undo_depth = 0;
 };
 
 // The whole screen: status line, page, message line, input line, soft keys.

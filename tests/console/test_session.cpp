@@ -259,7 +259,7 @@ TEST(Session, UnknownCommandsSayHowToFindTheRightOne) {
     Console c;
     c.type(":frobnicate");
     EXPECT_NE(c.message().find("unknown command"), std::string::npos);
-    c.type(":page pref");
+    c.type(":page graph");
     EXPECT_NE(c.message().find("not in this version"), std::string::npos);
 }
 
@@ -310,4 +310,126 @@ TEST(Bindings, HelpAndSoftKeysComeFromTheTable) {
     }
     EXPECT_TRUE(raz);
     EXPECT_TRUE(cmd);
+}
+
+// ---- setting: PREF, CORR, touch-off, measurement, undo, protection ----
+
+namespace {
+
+// The lathe homed, T1 D1 active (typed in IMD), the turret jogged to a point.
+void setter_lathe(Console& c) {
+    c.type(":mode pom");
+    c.named("F9");
+    c.run_until_settled();
+    c.type(":set D1.X=63.345");
+    c.type(":set D1.Z=38.237");
+    c.type(":mode imd");
+    c.type("T1 D1 M6");
+    c.named("F9");
+    c.run_until_settled();
+    c.type(":mode jog");
+}
+
+}  // namespace
+
+TEST(Setting, TouchOffThePrefOfZAndXAndTheOpPageAgrees) {
+    Console c;
+    setter_lathe(c);
+    c.type(":jog Z -100");
+    c.type(":jog X -80");  // the diameter shown
+    c.run_until_settled();
+    c.type(":page pref");
+    c.type("Z 0");  // the tool touches the face
+    EXPECT_NE(c.message().find("PREF.Z = OM"), std::string::npos) << c.message();
+    c.type("X 59.978");  // and a turned diameter
+    const Interpreter& in = c.s->sim().interp();
+    // OM Z = 100, OM X = 150 - 40 = 110 (radius): PREF = OM - gauge - surface.
+    EXPECT_NEAR(in.frames().pref[Z], 100 - 38.237 - 0, 1e-9);
+    EXPECT_NEAR(in.frames().pref[X], 110 - 63.345 - 29.989, 1e-9);
+    // A move to the touched surface, the gauges applied, leaves the turret
+    // where it was when the tool touched.
+    Axes touched = c.s->sim().om();
+    EXPECT_NEAR(c.s->sim().op()[Z], 0, 1e-9);  // the OP page reads the surface at once
+    EXPECT_NEAR(c.s->sim().to_display(X, c.s->sim().op()[X]), 59.978, 1e-9);
+    c.type(":page op");
+    c.type(":mode imd");
+    c.type("G0 X59.978 Z0");
+    c.named("F9");
+    c.run_until_settled();
+    EXPECT_NEAR(c.s->sim().om()[Z], touched[Z], 1e-9);
+    EXPECT_NEAR(c.s->sim().om()[X], touched[X], 1e-9);
+    EXPECT_NEAR(c.s->sim().op()[Z], 0, 1e-9);
+}
+
+TEST(Setting, MeasureAToolByATouchedDiameterOnTheCorrPage) {
+    Console c;
+    setter_lathe(c);
+    c.type(":set PREF.X=0");
+    c.type(":page corr");
+    c.type("D2");
+    EXPECT_EQ(c.s->corr_cursor, 2);
+    c.type("Z=41.5");  // presetter reading
+    double z;
+    ASSERT_TRUE(c.s->sim().interp().get("D2.Z", z));
+    EXPECT_DOUBLE_EQ(z, 41.5);
+    c.type("X 100");  // touching Ø100 with the turret at OM X 150 (radius): gauge 100
+    double x;
+    ASSERT_TRUE(c.s->sim().interp().get("D2.X", x));
+    EXPECT_NEAR(x, 100, 1e-9);
+    c.type(":measure D3 Z 0");
+    double z3;
+    c.s->sim().interp().get("D3.Z", z3);
+    EXPECT_NEAR(z3, 200, 1e-9);  // OM Z 200 with PREF Z 0
+    EXPECT_EQ(c.s->corr_cursor, 3);
+}
+
+TEST(Setting, UndoRestoresTheLastChange) {
+    Console c;
+    c.type(":set PREF.Z=-300");
+    c.type(":set PREF.Z=-310");
+    c.named("C-z");
+    EXPECT_DOUBLE_EQ(c.s->sim().interp().frames().pref[Z], -300);
+    c.type(":undo");
+    EXPECT_DOUBLE_EQ(c.s->sim().interp().frames().pref[Z], 0);
+    c.type(":undo");
+    EXPECT_NE(c.message().find("nothing to undo"), std::string::npos);
+}
+
+TEST(Setting, ProtectionLocksOriginsAndCorrectors) {
+    Console c;
+    c.named("M-k");
+    EXPECT_TRUE(c.s->protect);
+    c.type(":set PREF.Z=-300");
+    EXPECT_NE(c.message().find("memory protection is on"), std::string::npos);
+    EXPECT_DOUBLE_EQ(c.s->sim().interp().frames().pref[Z], 0);
+    c.type(":touch Z 0");
+    EXPECT_DOUBLE_EQ(c.s->sim().interp().frames().pref[Z], 0);
+    c.type(":protect off");
+    EXPECT_FALSE(c.s->protect);
+}
+
+TEST(Setting, AGaugeChangedDuringARunIsPendingUntilItsAxisMoves) {
+    Console c("lathe", {"tests/console/programs/gauge_change.iso"});
+    c.type(":mode pom");
+    c.named("F9");
+    c.run_until_settled();
+    c.type(":load 950");
+    c.type(":mode seq");
+    c.named("F9");
+    c.run_until_settled();
+    for (int i = 0; i < 3; ++i) {  // up to N40 G0 X40 Z40
+        c.named("F9");
+        c.run_until_settled();
+    }
+    c.type(":set D1.Z=5");
+    EXPECT_TRUE(c.s->sim().interp().gauge_pending(Z));
+    c.type(":page corr");
+    EXPECT_NE(c.screen().find("5.000*"), std::string::npos);
+    c.named("F9");  // N50 G0 X50: Z does not move, still pending
+    c.run_until_settled();
+    EXPECT_TRUE(c.s->sim().interp().gauge_pending(Z));
+    c.named("F9");  // N60 G0 Z60: applied
+    c.run_until_settled();
+    EXPECT_FALSE(c.s->sim().interp().gauge_pending(Z));
+    EXPECT_DOUBLE_EQ(c.s->sim().interp().frames().gauge[Z], 5);
 }

@@ -205,6 +205,40 @@ history)
     keys Up Up  # the newest line is ':mode imd' itself
     wait_for '^IMD> G0 X12 Z34'
     ;;
+setting)
+    # A gauge set, the tool moved, touch-off on Z0 and a diameter; after a
+    # restart the values are there; then a tool measured on a touched diameter.
+    start
+    pom
+    cmd ":set D1.X=63.345"
+    cmd ":set D1.Z=38.237"
+    cmd ":mode imd"
+    cmd "T1 D1 M6"
+    keys F9
+    wait_for '^ IMD .*END' 10
+    cmd ":mode jog"
+    cmd ":jog Z -100"
+    cmd ":jog X -80"
+    wait_for 'READY'
+    cmd ":page pref"
+    cmd "Z 0"
+    wait_for 'PREF.Z = OM 100.000 .* = 61.763'
+    cmd "X 59.978"
+    wait_for 'PREF.X = OM 110.000 .* = 16.666'
+    cmd ":quit"
+    wait_for '^EXIT=0'
+    T kill-server
+    start
+    cmd ":page pref"
+    wait_for '^  Z +61.763 '
+    wait_for '^  X +16.666 '
+    cmd ":page corr"
+    wait_for '^  1 +63.345 +38.237 '
+    cmd "D2"
+    cmd "X 100"
+    wait_for 'D2.X = OM 150.000 - PREF 16.666 .* = 83.334'
+    wait_for '^  2 +83.334 '
+    ;;
 *)
     echo "unknown case $case"
     exit 2

@@ -182,3 +182,30 @@ TEST(Screen, AsciiFallbackHasNoNonAsciiCharacter) {
     pages::render_screen(c.s->view(), canvas);
     for (unsigned char ch : canvas.to_text()) EXPECT_LT(ch, 0x80);
 }
+
+TEST(Screen, PrefAndCorrPages) {
+    Console c("lathe", kLatheFiles);
+    homed_lathe(c);
+    c.type(":set D1.X=63.345");
+    c.type(":set D1.Z=38.237");
+    c.type(":set D1.R=0.8");
+    c.type(":set D1.C=3");
+    c.type(":mode imd");
+    c.type("T1 D1 M6");
+    c.named("F9");
+    c.run_until_settled();
+    c.type(":jog Z -100");
+    c.run_until_settled();
+    c.type(":page pref");
+    c.type("Z 0");
+    snapshot("pref_touch", c.screen());
+    c.type(":page corr");
+    c.type("D2");
+    c.type("X=60.5");
+    snapshot("corr", c.screen());
+    Console m("mill", {});
+    m.type(":set D1.L=120.5");
+    m.type(":set D1.R=5");
+    m.type(":page corr");
+    snapshot("corr_mill", m.screen());
+}

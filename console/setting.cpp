@@ -1,0 +1,240 @@
+// The setter's work at the console: the PREF and CORR pages, touch-off, tool
+// measurement, changes made during a run, undo, and the memory-protect key.
+// Every change is stored with an audit row (the store's set_values).
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <random>
+
+#include "console/session.hpp"
+#include "console/sha256.hpp"
+#include "core/setting.hpp"
+#include "core/store/store.hpp"
+
+namespace pupitre::console {
+
+namespace {
+
+std::string mm(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3f", std::abs(v) < 5e-7 ? 0.0 : v);
+    return buf;
+}
+
+bool is_origin(std::string_view n) { return n.rfind("PREF.", 0) == 0 || n.rfind("DEC1.", 0) == 0 || n.rfind("DEC3.", 0) == 0; }
+
+// The store keeps µm (lathe X radii, DX a diameter), 0.0001° for rotary
+// origins, the code for C (core/store/link.hpp).
+int64_t internal(std::string_view name, double v) {
+    bool code = name.size() > 2 && name.substr(name.size() - 2) == ".C" && name[0] == 'D';
+    if (code) return int64_t(v);
+    char axis = name.back();
+    bool rotary = is_origin(name) && (axis == 'A' || axis == 'B' || axis == 'C');
+    return int64_t(std::llround(v * (rotary ? 1e4 : 1e3)));
+}
+
+bool parse_num(std::string_view s, double& v) {
+    while (!s.empty() && s.front() == ' ') s.remove_prefix(1);
+    while (!s.empty() && s.back() == ' ') s.remove_suffix(1);
+    if (!s.empty() && s.front() == '+') s.remove_prefix(1);
+    auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+    return ec == std::errc() && p == s.data() + s.size() && std::isfinite(v);
+}
+
+}  // namespace
+
+bool Session::unprotected(std::string_view what) {
+    if (!protect) return true;
+    say("memory protection is on: " + std::string(what) + " cannot be changed (:protect off)", true);
+    return false;
+}
+
+bool Session::apply_setting(const std::string& name, double value, const std::string& source) {
+    if (!unprotected("origins and correctors")) return false;
+    if (std::abs(value) > 100000) {
+        say(name + ": " + mm(value) + " is beyond any machine", true);
+        return false;
+    }
+    bool code = name.size() > 2 && name.substr(name.size() - 2) == ".C";
+    if (code && (value != std::floor(value) || value < 0 || value > 8)) {
+        say(name + ": the nose orientation is a code from 0 to 8", true);
+        return false;
+    }
+    Interpreter& in = sim_->interp();
+    double old = 0;
+    bool had = in.get(name, old);
+    bool running = sim_->in_cycle();
+    std::string why = in.set(name, value, !running);
+    if (!why.empty()) {
+        say(name + ": " + why, true);
+        return false;
+    }
+    if (!had) in.get(name, old);
+    if (running && is_origin(name)) pending_origin_[name] = in.moves();
+    // No program in cycle: the tool the setter holds is the one shown, at once.
+    if (!running && in.modal().d > 0) in.apply_gauges_now();
+    undo_.push_back({name, old});
+    std::string news = name + " " + (code ? std::to_string(int(old)) : mm(old)) + " -> " +
+                       (code ? std::to_string(int(value)) : mm(value));
+    if (running) news += is_origin(name) ? " (applies at the next move)" : " (applies as the manual says: gauge at the next move of its axis, radius at the next G41/G42)";
+    if (store_) {
+        auto r = store_->set_values(m_.name, {{name, internal(name, value)}}, source);
+        if (r.error) {
+            say(news + "; NOT stored: " + r.error.message, true);
+            return true;
+        }
+    }
+    say(news);
+    return true;
+}
+
+std::vector<std::string> Session::pending_origins() const {
+    std::vector<std::string> out;
+    if (!sim_->in_cycle()) return out;
+    for (const auto& [name, moves] : pending_origin_)
+        if (sim_->interp().moves() == moves) out.push_back(name);
+    return out;
+}
+
+// Touch-off and measurement use the interpreter's position: it must be the
+// position shown, so the axes must be at rest and no program in cycle.
+static std::string at_rest(const Sim& s) {
+    if (s.state() == RunState::running) return "wait until the axes stop";
+    if (s.in_cycle()) return "a program is interrupted: RAZ first";
+    if (s.alarm_active()) return "an alarm is active: RAZ first";
+    return {};
+}
+
+Effect Session::touch(int axis, double surface) {
+    if (std::string w = at_rest(*sim_); !w.empty()) {
+        say("touch-off: " + w, true);
+        return Effect::redraw;
+    }
+    setting::Touch t;
+    if (std::string why = setting::touch_off(sim_->interp(), axis, surface, t); !why.empty()) {
+        say("touch-off: " + why, true);
+        return Effect::redraw;
+    }
+    if (apply_setting(t.name, t.after, "touch-off " + std::string(1, kAxisNames[size_t(axis)]) + " " + mm(surface)))
+        say(t.formula + " (was " + mm(t.before) + ")");
+    return Effect::redraw;
+}
+
+Effect Session::measure(int d, int axis, double surface) {
+    if (std::string w = at_rest(*sim_); !w.empty()) {
+        say("measure: " + w, true);
+        return Effect::redraw;
+    }
+    setting::Touch t;
+    if (std::string why = setting::measure(sim_->interp(), d, axis, surface, t); !why.empty()) {
+        say("measure: " + why, true);
+        return Effect::redraw;
+    }
+    if (apply_setting(t.name, t.after, "measure " + std::string(1, kAxisNames[size_t(axis)]) + " " + mm(surface)))
+        say(t.formula + " (was " + mm(t.before) + ")");
+    return Effect::redraw;
+}
+
+Effect Session::undo() {
+    if (undo_.empty()) {
+        say("nothing to undo", true);
+        return Effect::redraw;
+    }
+    Undo u = undo_.back();
+    undo_.pop_back();
+    if (apply_setting(u.name, u.old, "undo")) {
+        undo_.pop_back();  // the undo itself is not undone by the next :undo
+        say("undone: " + u.name + " = " + mm(u.old));
+    }
+    return Effect::redraw;
+}
+
+// The memory-protect key of the panel, with an optional PIN kept hashed.
+Effect Session::protect_command(std::string_view args) {
+    std::string a(args);
+    while (!a.empty() && a.front() == ' ') a.erase(0, 1);
+    std::string word = a.substr(0, a.find(' '));
+    std::string rest = a.find(' ') == std::string::npos ? "" : a.substr(a.find(' ') + 1);
+    auto stored_pin = [&]() -> std::string {
+        if (!store_) return {};
+        auto r = store_->setting("protect.pin");
+        return !r.error && r.value ? *r.value : std::string();
+    };
+    auto save_state = [&]() {
+        if (store_) store_->set_setting("protect.on", protect ? "1" : "0");
+    };
+    if (word == "on" || (word.empty() && !protect)) {
+        protect = true;
+        save_state();
+        say("memory protection ON: programs, origins and correctors are locked");
+    } else if (word == "off" || word.empty()) {
+        std::string pin = stored_pin();
+        if (!pin.empty()) {
+            std::string salt = pin.substr(0, pin.find(':'));
+            if (rest.empty() || salt + ":" + sha256_hex(salt + rest) != pin) {
+                say("memory protection: wrong PIN (:protect off PIN)", true);
+                return Effect::redraw;
+            }
+        }
+        protect = false;
+        save_state();
+        say("memory protection off");
+    } else if (word == "pin") {
+        if (!unprotected("the PIN")) return Effect::redraw;
+        if (!store_) {
+            say("no store: the PIN cannot be kept", true);
+        } else if (rest.empty()) {
+            store_->set_setting("protect.pin", "");
+            say("PIN removed: the protection key needs none");
+        } else {
+            std::random_device rd;
+            char salt[17];
+            std::snprintf(salt, sizeof salt, "%08x%08x", rd(), rd());
+            store_->set_setting("protect.pin", std::string(salt) + ":" + sha256_hex(std::string(salt) + rest));
+            say("PIN set: :protect off PIN is needed to unlock");
+        }
+    } else {
+        say("usage: :protect [on|off [PIN]|pin [NEWPIN]]", true);
+    }
+    return Effect::redraw;
+}
+
+// Text typed on the PREF page: NAME=VALUE, or AXIS VALUE for a touch-off.
+// On the CORR page: FIELD=VALUE for the corrector under the cursor, Dn to
+// choose one, AXIS VALUE to measure it by touching a surface.
+Effect Session::setting_text(std::string_view text) {
+    std::string t(text);
+    for (char& c : t) c = char(std::toupper(static_cast<unsigned char>(c)));
+    size_t eq = t.find('=');
+    bool corr = page == pages::PageId::corr;
+    if (eq != std::string::npos) {
+        std::string name = t.substr(0, eq);
+        while (!name.empty() && name.back() == ' ') name.pop_back();
+        double v;
+        if (!parse_num(std::string_view(t).substr(eq + 1), v)) {
+            say(name + ": not a number", true);
+            return Effect::redraw;
+        }
+        if (corr && name.find('.') == std::string::npos) name = "D" + std::to_string(corr_cursor) + "." + name;
+        apply_setting(name, v, corr ? "page CORR" : "page PREF");
+        return Effect::redraw;
+    }
+    if (corr && t.size() > 1 && t[0] == 'D' && std::isdigit(static_cast<unsigned char>(t[1]))) {
+        int d = std::atoi(t.c_str() + 1);
+        if (d < 1 || d > m_.correctors) say("correctors are D1 to D" + std::to_string(m_.correctors), true);
+        else corr_cursor = d;
+        return Effect::redraw;
+    }
+    int axis = t.empty() ? -1 : axis_of(t[0]);
+    double v;
+    if (axis >= 0 && parse_num(std::string_view(t).substr(1), v))
+        return corr ? measure(corr_cursor, axis, v) : touch(axis, v);
+    say(corr ? "CORR: X=63.345 sets a field of D" + std::to_string(corr_cursor) +
+                   ", D5 chooses a corrector, X 59.978 measures by a touched diameter"
+             : "PREF: PREF.Z=-300 or DEC1.X=2 sets a value, Z 0 or X 59.978 touches off",
+        true);
+    return Effect::redraw;
+}
+
+}  // namespace pupitre::console

@@ -1,0 +1,71 @@
+// The CORR page (the manual's CORR OUT): the tool correctors around the one
+// under the cursor. Lathe: X and Z gauges (radii), nose radius R, orientation
+// C, dynamic DX (a diameter) and DZ; machining centre: length L, radius R,
+// dynamic DL and DR. The active corrector is marked, and a gauge changed on it
+// during a run shows as pending until the move that applies it.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <algorithm>
+#include <cstdio>
+
+#include "pages/pages.hpp"
+
+namespace pupitre::pages {
+
+namespace {
+
+std::string num(double v, int decimals = 3) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.*f", decimals, std::abs(v) < 5e-7 ? 0.0 : v);
+    return buf;
+}
+
+}  // namespace
+
+void page_corr(const View& v, Canvas& c, const Rect& r) {
+    const Sim& s = *v.sim;
+    const Interpreter& in = s.interp();
+    const MachineProfile& m = s.machine();
+    c.rule(r.y, m.lathe ? "CORR  tool correctors (X Z R as radii, DX a diameter)" : "CORR  tool correctors");
+    std::vector<std::string> fields = m.lathe ? std::vector<std::string>{"X", "Z", "R", "C", "DX", "DZ"}
+                                              : std::vector<std::string>{"L", "R", "DL", "DR"};
+    int y = r.y + 1;
+    c.text(2, y, "D", Style::dim);
+    for (size_t i = 0; i < fields.size(); ++i) c.text_right(6 + int(i) * 10, y, 10, fields[i], Style::title);
+    ++y;
+    int rows = r.h - 6;
+    int active = in.modal().d;
+    int first = std::clamp(v.corr_cursor - rows / 2, 1, std::max(1, m.correctors - rows + 1));
+    for (int i = 0; i < rows && first + i <= m.correctors; ++i) {
+        int d = first + i;
+        std::string dn = "D" + std::to_string(d);
+        bool cur = d == v.corr_cursor;
+        c.text(2, y + i, std::to_string(d), cur ? Style::select : Style::dim);
+        for (size_t k = 0; k < fields.size(); ++k) {
+            double val = 0;
+            in.get(dn + "." + fields[k], val);
+            // A gauge of the active corrector not yet applied on its axis.
+            bool pending = d == active && s.in_cycle() &&
+                           ((m.lathe && ((fields[k] == "X" || fields[k] == "DX") ? in.gauge_pending(X)
+                                         : (fields[k] == "Z" || fields[k] == "DZ") ? in.gauge_pending(Z) : false)) ||
+                            (!m.lathe && (fields[k] == "L" || fields[k] == "DL") && in.gauge_pending(in.modal().tool_axis)) ||
+                            (fields[k] == "R" && in.comp_active() && std::abs(in.comp_radius() - val) > 1e-9));
+            std::string t = fields[k] == "C" ? std::to_string(int(val)) : num(val);
+            c.text_right(6 + int(k) * 10, y + i, 10, t + (pending ? "*" : " "),
+                         pending ? Style::warn : val != 0 ? Style::value : Style::dim);
+        }
+        if (d == active) c.text(8 + int(fields.size()) * 10, y + i, "active T" + std::to_string(s.tool()), Style::ok);
+        if (cur) c.style(Rect{r.x, y + i, r.w, 1}, Style::select);
+    }
+    int by = r.y + r.h - 4;
+    c.text(2, by, "Presetter: " + std::string(m.lathe ? "X=63.345 or Z=38.237" : "L=120.5 or R=5") + " sets D" +
+                      std::to_string(v.corr_cursor) + "; Up/Down or D5 choose another.",
+           Style::dim);
+    c.text(2, by + 1, std::string("Touch a known surface: ") + (m.lathe ? "X 59.978 (a diameter) or Z 0" : "Z 10 (a block on Z0)") +
+                          ", or :measure D2 Z 0.",
+           Style::dim);
+    c.text(2, by + 2, "* changed in a run: gauge at the next move of its axis, radius at G41/G42", Style::dim);
+    std::string state = v.protect ? "memory protection ON (:protect off)" : "memory protection off";
+    c.text(2, by + 3, state, v.protect ? Style::warn : Style::dim);
+}
+
+}  // namespace pupitre::pages

@@ -1,0 +1,57 @@
+// The PREF page: the origins of each axis (PREF, DEC1, DEC3, entered as radii
+// on the lathe's X like the gauges), with the G59 offset and the active gauge
+// read only, the current point on OM and OP, and the touch-off help. Origins
+// changed during a run are marked until the next move applies them.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <algorithm>
+
+#include "pages/pages.hpp"
+
+namespace pupitre::pages {
+
+void page_pref(const View& v, Canvas& c, const Rect& r) {
+    const Sim& s = *v.sim;
+    const Interpreter& in = s.interp();
+    const MachineProfile& m = s.machine();
+    const Frames& f = in.frames();
+    c.rule(r.y, std::string("PREF  origins") + (m.lathe ? " (X as a radius, OM and OP as shown)" : ""));
+    int y = r.y + 2;
+    const int w = 10;
+    const char* heads[] = {"PREF", "DEC1", "DEC3", "G59", "gauge", "OM", "OP"};
+    for (int i = 0; i < 7; ++i) c.text_right(4 + i * w, y, w, heads[i], i < 3 ? Style::title : Style::dim);
+    ++y;
+    Axes om = s.om(), op = s.op();
+    for (int a = 0; a < kAxes && y < r.y + r.h - 6; ++a) {
+        if (!m.has(a)) continue;
+        std::string name(1, kAxisNames[size_t(a)]);
+        c.text(2, y, name, Style::title);
+        const double vals[] = {f.pref[size_t(a)],  f.dec1[size_t(a)],          f.dec3[size_t(a)],
+                               f.g59[size_t(a)],   in.active_gauge(a),         s.to_display(a, om[size_t(a)]),
+                               s.to_display(a, op[size_t(a)])};
+        for (int i = 0; i < 7; ++i) {
+            bool pending = false;
+            if (i < 3) {
+                std::string n = std::string(i == 0 ? "PREF." : i == 1 ? "DEC1." : "DEC3.") + name;
+                pending = std::find(v.pending.begin(), v.pending.end(), n) != v.pending.end();
+            }
+            std::string t = fmt_axis(a, vals[i]) + (pending ? "*" : "");
+            c.text_right(4 + i * w, y, w, t, pending ? Style::warn : i < 3 ? Style::value : Style::normal);
+        }
+        ++y;
+    }
+    ++y;
+    std::string d = "active corrector D" + std::to_string(in.modal().d) + ", tool T" + std::to_string(s.tool());
+    c.text(2, y++, d, Style::dim);
+    if (!v.pending.empty()) c.text(2, y++, "* changed during the run: applies at the next move", Style::warn);
+    int by = r.y + r.h - 5;
+    c.text(2, by, "Touch-off: jog the tool onto the part, then type the coordinate of the", Style::dim);
+    c.text(2, by + 1, std::string("surface: Z 0 (the face)") + (m.lathe ? ", X 59.978 (a diameter)" : ", X 0") +
+                          ", or :touch Z 0.",
+           Style::dim);
+    c.text(2, by + 2, "Direct entry: PREF.Z=-300  DEC1.X=2  DEC3.Z=0.5    Undo: C-z, :undo", Style::dim);
+    std::string state = v.protect ? "memory protection ON (:protect off)" : "memory protection off";
+    if (v.undo_depth) state += "   " + std::to_string(v.undo_depth) + " change(s) to undo";
+    c.text(2, by + 3, state, v.protect ? Style::warn : Style::dim);
+}
+
+}  // namespace pupitre::pages
