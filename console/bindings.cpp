@@ -22,7 +22,7 @@ bool input_empty(const Session& s) { return s.input().text().empty(); }
 bool on_dir(const Session& s, std::string_view) { return s.page == pages::PageId::dir && input_empty(s); }
 bool jogging(const Session& s, std::string_view) {
     Mode m = s.sim().mode();
-    return (m == Mode::jog || m == Mode::inc) && input_empty(s);
+    return (m == Mode::jog || m == Mode::inc) && input_empty(s) && s.page != pages::PageId::edit;
 }
 
 int to_int(std::string_view a) {
@@ -74,6 +74,38 @@ bool on_corr(const Session& s, std::string_view) { return s.page == pages::PageI
 
 Effect corr_move(Session& s, std::string_view arg) {
     s.corr_cursor = std::clamp(s.corr_cursor + to_int(arg), 1, s.machine().correctors);
+    return Effect::redraw;
+}
+
+bool on_edit(const Session& s, std::string_view) {
+    return s.page == pages::PageId::edit && s.editor.is_open() && input_empty(s);
+}
+
+Effect edit_move(Session& s, std::string_view arg) {
+    if (arg == "home") s.editor.cursor = 0;
+    else if (arg == "end") s.editor.cursor = int(s.editor.lines().size()) - 1;
+    else s.editor.move(to_int(arg) * (std::abs(to_int(arg)) == 10 ? std::max(1, s.rows - 8) / 10 : 1));
+    s.modify_pending = false;
+    return Effect::redraw;
+}
+
+// Edit operations that answer "" or why they were refused.
+Effect edit_op(Session& s, std::string (Editor::*op)(), const char* done) {
+    std::string why = (s.editor.*op)();
+    if (!why.empty()) s.say(why, true);
+    else s.say(done);
+    return Effect::redraw;
+}
+
+Effect edit_modify(Session& s, std::string_view) {
+    std::string why;
+    if (s.editor.cursor < s.editor.locked) {
+        s.say("this block is already prepared", true);
+        return Effect::redraw;
+    }
+    s.input().set_text(s.editor.lines()[size_t(s.editor.cursor)]);
+    s.modify_pending = true;
+    s.say("modify the block, Enter replaces it");
     return Effect::redraw;
 }
 
@@ -148,6 +180,24 @@ const std::vector<Action> kActions = {
     {"dir-delete", "delete the program under the cursor (twice to confirm)", on_dir, dir_delete, "DELETE"},
     {"jog", "jog %s", jogging, jog, "%S"},
     {"corr-move", "choose the corrector %s", on_corr, corr_move, "D"},
+    {"edit-move", "move the editor's cursor (%s)", on_edit, edit_move, "MOVE"},
+    {"edit-modify", "put the block under the cursor on the input line to modify it", on_edit, edit_modify, "MODIFY"},
+    {"edit-delete", "delete the block under the cursor (or the marked blocks)", on_edit,
+     [](Session& s, std::string_view) { return edit_op(s, &Editor::erase, "deleted"); }, "DELETE"},
+    {"edit-mark", "mark: the blocks between the mark and the cursor form a range", on_edit,
+     [](Session& s, std::string_view) {
+         s.editor.toggle_mark();
+         s.say(s.editor.mark >= 0 ? "mark set: move the cursor, then M-w copies, C-w cuts, Del deletes" : "mark cleared");
+         return Effect::redraw;
+     },
+     "MARK"},
+    {"edit-copy", "copy the block (or the marked range)", on_edit,
+     [](Session& s, std::string_view) { return edit_op(s, &Editor::copy, "copied"); }, "COPY"},
+    {"edit-cut", "cut the block (or the marked range), to paste elsewhere (move)", on_edit,
+     [](Session& s, std::string_view) { return edit_op(s, &Editor::cut, "cut: C-y pastes it after the cursor"); },
+     "CUT"},
+    {"edit-paste", "paste the copied blocks after the cursor", on_edit,
+     [](Session& s, std::string_view) { return edit_op(s, &Editor::paste, "pasted"); }, "PASTE"},
     {"undo", "undo the last change of an origin or corrector", always,
      [](Session& s, std::string_view) { return s.undo(); }, "UNDO"},
     {"protect", "memory-protect key (locks programs, origins, correctors)", always,

@@ -48,7 +48,7 @@ bool on_off(std::string_view s, bool current, bool& out) {
 const std::vector<std::pair<std::string, std::string>>& command_help() {
     static const std::vector<std::pair<std::string, std::string>> k = {
         {":page om|op|prog|info|param|pref|corr|dir|alarm|help", "show a page"},
-        {":mode auto|seq|dry|test|rns|imd|jog|inc|pom", "select a mode (refused while a program is in cycle)"},
+        {":mode auto|seq|dry|test|rns|imd|jog|inc|pom|edit|modif", "select a mode (refused while a program is in cycle)"},
         {":load N", "select program %N for AUTO, SEQ, DRY RUN, TEST and RNS"},
         {":cycle", "Cycle Start"},
         {":stop", "feed hold (Cycle Start resumes)"},
@@ -68,7 +68,14 @@ const std::vector<std::pair<std::string, std::string>>& command_help() {
         {":undo", "undo the last change of an origin or a corrector"},
         {":protect on|off [PIN]", "the memory-protect key: locks programs, origins and correctors"},
         {":protect pin [NEWPIN]", "set (or remove) the PIN that unlocks the protection"},
-        {":edit N / :save / :goto Nnnn", "the program editor: not in this version"},
+        {":edit N", "EDIT: open program %N (new if absent; without N the one selected)"},
+        {":save", "save the program edited, after a syntax check (:save! saves despite an error)"},
+        {":goto Nnnn", "EDIT: the cursor to block Nnnn"},
+        {":find TEXT", "EDIT: the next block containing TEXT"},
+        {":renum [START [STEP]]", "EDIT: renumber the N labels (default 10 10) and their references"},
+        {":history / :restore REV", "EDIT: the revisions of the program, and making one current again"},
+        {":close", "EDIT: close the program (unsaved changes dropped)"},
+        {":mode modif", "MODIF: change the blocks to come of an interrupted program"},
         {":quit", "leave the console (also Ctrl-C)"},
     };
     return k;
@@ -91,7 +98,7 @@ Effect Session::command(std::string_view text) {
     if (cmd == "page") {
         pages::PageId p;
         if (!pages::parse_page(a1, p)) {
-            if (a1 == "edit" || a1 == "graph") {
+            if (a1 == "graph") {
                 say("the " + std::string(a1) + " page is not in this version of pupitre", true);
                 return Effect::redraw;
             }
@@ -103,10 +110,8 @@ Effect Session::command(std::string_view text) {
     if (cmd == "mode") {
         Mode m;
         if (!parse_mode(a1, m)) {
-            if (a1 == "modif" || a1 == "edit") {
-                say("MODIF and EDIT are not in this version of pupitre", true);
-                return Effect::redraw;
-            }
+            if (a1 == "modif") return modif_start();
+            if (a1 == "edit") return command("edit");
             return usage(":mode auto|seq|dry|test|rns|imd|jog|inc|pom");
         }
         if (!sim().set_mode(m, why)) say(why, true);
@@ -122,6 +127,7 @@ Effect Session::command(std::string_view text) {
         return Effect::redraw;
     }
     if (cmd == "cycle") {
+        if (!modif_apply()) return Effect::redraw;
         if (!sim().cycle_start(why)) say(why, true);
         else if (!sim().message().empty()) say(sim().message());
         else if (sim().selected() >= 0 && (sim().mode() == Mode::automatic || sim().mode() == Mode::single ||
@@ -137,6 +143,11 @@ Effect Session::command(std::string_view text) {
         return Effect::redraw;
     }
     if (cmd == "raz") {
+        if (modif) {
+            modif = false;
+            editor.close();
+            show_page(pages::PageId::prog);
+        }
         sim().raz();
         say("RAZ");
         return Effect::redraw;
@@ -215,9 +226,56 @@ Effect Session::command(std::string_view text) {
     }
     if (cmd == "undo") return undo();
     if (cmd == "protect") return protect_command(text.substr(std::min(text.size(), text.find("protect") + 7)));
-    if (cmd == "edit" || cmd == "save" || cmd == "goto") {
-        say(":" + std::string(cmd) + " is not in this version of pupitre (setting pages and editor)", true);
+    if (cmd == "edit") {
+        long n;
+        std::string_view s = a1;
+        if (!s.empty() && s.front() == '%') s.remove_prefix(1);
+        if (s.empty()) {
+            if (editor.is_open()) {
+                show_page(pages::PageId::edit);
+                return Effect::redraw;
+            }
+            if (page == pages::PageId::dir && !programs().empty()) return edit_open(programs()[size_t(dir_cursor)].number);
+            if (sim().selected() >= 0) return edit_open(sim().selected());
+            return usage(":edit N");
+        }
+        if (!integer(s, n) || n < 0 || n > 99999) return usage(":edit N");
+        return edit_open(int(n));
+    }
+    if (cmd == "save" || cmd == "save!") return edit_save(cmd == "save!");
+    if (cmd == "close") {
+        if (modif) return usage(":close is for EDIT; MODIF ends with Cycle Start or RAZ");
+        editor.close();
+        say("editor closed (unsaved changes dropped)");
         return Effect::redraw;
+    }
+    if (cmd == "goto" || cmd == "find") {
+        if (!editor.is_open()) return usage(":edit N first");
+        long n;
+        std::string_view s = a1;
+        if (!s.empty() && (s.front() == 'N' || s.front() == 'n')) s.remove_prefix(1);
+        bool ok = cmd == "goto" ? integer(s, n) && editor.goto_n(n)
+                                : editor.find(text.substr(std::min(text.size(), text.find("find") + 5)));
+        show_page(pages::PageId::edit);
+        if (!ok) say(cmd == "goto" ? "no block N" + std::string(s) : "not found", true);
+        return Effect::redraw;
+    }
+    if (cmd == "renum") {
+        if (!editor.is_open()) return usage(":edit N first");
+        long start = 10, step = 10;
+        if (w.size() > 1 && !integer(w[1], start)) return usage(":renum [START [STEP]]");
+        if (w.size() > 2 && !integer(w[2], step)) return usage(":renum [START [STEP]]");
+        if (start < 0 || step < 1) return usage(":renum [START [STEP]]");
+        int k = editor.renumber(start, step);
+        say(std::to_string(k) + " blocks renumbered from N" + std::to_string(start) + " by " + std::to_string(step) +
+            "; G77/G79/cycle references follow");
+        return Effect::redraw;
+    }
+    if (cmd == "history") return edit_history();
+    if (cmd == "restore") {
+        long r;
+        if (!integer(a1, r)) return usage(":restore REV (see :history)");
+        return edit_restore(int(r));
     }
     if (cmd == "help") {
         show_page(pages::PageId::help);

@@ -18,6 +18,8 @@ public:
     virtual int cursor() const = 0;  // in columns
     virtual void add_history(const std::string& line) = 0;
     virtual void clear() = 0;
+    // Puts a text on the line to be edited (the editor's "modify this block").
+    virtual void set_text(const std::string& text) = 0;
     // A line was entered (Enter).
     std::function<void(const std::string&)> on_line;
     // Completion candidates for the word before the cursor (G/M codes, commands).
@@ -35,6 +37,7 @@ public:
     int cursor() const override;
     void add_history(const std::string& line) override { history_.push_back(line); }
     void clear() override { text_.clear(); }
+    void set_text(const std::string& t) override { text_ = t; }
     const std::vector<std::string>& history() const { return history_; }
 
 private:

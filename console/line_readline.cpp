@@ -122,6 +122,11 @@ void ReadlineInput::add_history(const std::string& line) {
     using_history();
 }
 
+void ReadlineInput::set_text(const std::string& text) {
+    rl_replace_line(text.c_str(), 0);
+    rl_point = rl_end;
+}
+
 void ReadlineInput::clear() {
     rl_replace_line("", 0);
     rl_point = rl_end = 0;

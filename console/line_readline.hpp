@@ -16,6 +16,7 @@ public:
     int cursor() const override;
     void add_history(const std::string& line) override;
     void clear() override;
+    void set_text(const std::string& text) override;
 };
 
 }  // namespace pupitre::console

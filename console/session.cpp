@@ -94,6 +94,7 @@ bool Session::select_program(int number) {
 }
 
 bool Session::delete_program(int number) {
+    if (!unprotected("programs")) return false;
     if (!store_) {
         say("no store: programs cannot be deleted", true);
         return false;
@@ -146,9 +147,14 @@ Effect Session::submit(const std::string& raw) {
 // Text that is not a command goes to the mode or the page (DESIGN §2.5).
 Effect Session::plain_text(const std::string& text) {
     std::string_view t = text;
-    // The setting pages take what is typed on them, whatever the mode.
+    // The setting pages and the editor take what is typed on them, whatever the mode.
     if (page == pages::PageId::pref || page == pages::PageId::corr) return setting_text(t);
+    if (page == pages::PageId::edit) return edit_text(text);
     if (sim_->mode() == Mode::imd) {
+        if (sim_->interp().modal().modif_inhibited) {
+            say("M999 is in force: IMD and MODIF are forbidden until M998", true);
+            return Effect::redraw;
+        }
         std::string why;
         if (!sim_->imd(t, why)) {
             say(why, true);
@@ -318,6 +324,19 @@ pages::View Session::view() const {
     v.pending = pending_origins();
     v.protect = protect;
     v.undo_depth = undo_.size();
+    if (editor.is_open()) {
+        v.edit_lines = &editor.lines();
+        v.edit_number = editor.number;
+        v.edit_revision = editor.revision;
+        v.edit_cursor = editor.cursor;
+        v.edit_mark = editor.mark;
+        v.edit_locked = editor.locked;
+        v.edit_error = editor.error_line;
+        v.edit_dirty = editor.dirty;
+        v.edit_modif = modif;
+        v.edit_modify = modify_pending;
+    }
+    if (page == pages::PageId::edit) v.prompt = modify_pending ? "MODIFY> " : modif ? "MODIF> " : "EDIT> ";
     return v;
 }
 

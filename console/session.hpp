@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "console/bindings.hpp"
+#include "console/editor.hpp"
 #include "console/keys.hpp"
 #include "console/line_input.hpp"
 #include "core/sim.hpp"
@@ -84,6 +85,17 @@ public:
     // Origins changed during a run that wait for the next move.
     std::vector<std::string> pending_origins() const;
     size_t undo_depth() const { return undo_.size(); }
+    // EDIT and MODIF (console/edit.cpp).
+    Editor editor;
+    bool modif = false;           // the editor holds the interrupted program
+    bool modify_pending = false;  // Enter put the current block on the input line
+    Effect edit_open(int number);
+    Effect edit_save(bool force);
+    Effect edit_text(const std::string& block);
+    Effect edit_history();
+    Effect edit_restore(int revision);
+    Effect modif_start();
+    bool modif_apply();  // Cycle Start after MODIF: the changed text runs; false: refused
     // Completion of the word before the cursor: G/M codes and commands.
     std::vector<std::string> complete(std::string_view word) const;
 

@@ -58,6 +58,23 @@ void Interpreter::raz() {
     first_move_ = true;
 }
 
+void Interpreter::text_changed(const ProgramText* p) {
+    std::string_view all = *p->text;
+    auto offset_of = [&](int line) {
+        size_t pos = p->begin;
+        for (int l = p->first_line; l < line && pos < p->end; ++l) {
+            size_t eol = all.find('\n', pos);
+            pos = eol == std::string_view::npos ? p->end : eol + 1;
+        }
+        return std::min(pos, p->end);
+    };
+    for (Frame& f : stack_) {
+        if (f.prog != p) continue;
+        f.pos = offset_of(f.line);
+        f.range_pos = offset_of(f.range_line);
+    }
+}
+
 long Interpreter::next_label(int* line) const {
     if (ended_ || stack_.empty()) return -1;
     const Frame& f = stack_.back();

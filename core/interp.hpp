@@ -187,6 +187,9 @@ public:
         mach_ = mach;
         recompute_program_pos();
     }
+    // MODIF changed the text of `p` (same object): the frames reading it find
+    // their lines again by number.
+    void text_changed(const ProgramText* p);
     // The label of the next block to read (RNS), -1 when it has none or the run is over.
     long next_label(int* line = nullptr) const;
     StepResult step();

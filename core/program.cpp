@@ -208,4 +208,22 @@ const ProgramText* ProgramMemory::find(int number) const {
     return nullptr;
 }
 
+bool ProgramMemory::replace(int number, std::string name, std::string text, Diag& d) {
+    ProgramMemory fresh;
+    if (!fresh.load_text(name, std::move(text), d)) return false;
+    auto& got = fresh.progs_;
+    if (got.empty() || got.front()->number != number) {
+        d = Diag{Severity::error, err::kNoProgram, name, -1, 0, -1, 0,
+                 "the text does not start with %" + std::to_string(number)};
+        return false;
+    }
+    for (auto& p : progs_)
+        if (p->number == number) {
+            *p = std::move(*got.front());  // same object: the interpreter's pointers stay good
+            return true;
+        }
+    progs_.push_back(std::move(got.front()));
+    return true;
+}
+
 }  // namespace pupitre

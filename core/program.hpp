@@ -50,6 +50,11 @@ public:
     // Loads programs from text already in memory (tests, the store).
     bool load_text(std::string name, std::string text, Diag& d);
 
+    // Replaces the text of program `number` in place (the editor's save, MODIF):
+    // pointers to it stay valid, its labels are indexed again. Adds it when it
+    // is not in memory. `text` must hold that one program.
+    bool replace(int number, std::string name, std::string text, Diag& d);
+
     const ProgramText* find(int number) const;
     // The first program loaded from the first file: the main program of a run.
     const ProgramText* first() const { return progs_.empty() ? nullptr : progs_.front().get(); }

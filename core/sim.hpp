@@ -110,6 +110,7 @@ public:
     // The text of line `line` (1-based, file numbering) of a program; "" if
     // there is none. Cached, so following a running program costs little.
     std::string_view line_of(const ProgramText* p, int line) const;
+    void invalidate_text_cache() { lc_ = LineCache{}; }  // a program's text changed
 
 private:
     struct Ev {

@@ -13,7 +13,7 @@ namespace pupitre::pages {
 
 namespace {
 
-constexpr std::string_view kPageWords[] = {"om", "op", "prog", "info", "param", "dir", "alarm", "help", "pref", "corr"};
+constexpr std::string_view kPageWords[] = {"om", "op", "prog", "info", "param", "dir", "alarm", "help", "pref", "corr", "edit"};
 
 void status_line(const View& v, Canvas& c) {
     const Sim& s = *v.sim;
@@ -125,6 +125,7 @@ void render_page(const View& v, Canvas& c, const Rect& r) {
         case PageId::help: return page_help(v, c, r);
         case PageId::pref: return page_pref(v, c, r);
         case PageId::corr: return page_corr(v, c, r);
+        case PageId::edit: return page_edit(v, c, r);
     }
 }
 

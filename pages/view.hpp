@@ -11,7 +11,7 @@
 
 namespace pupitre::pages {
 
-enum class PageId { om, op, prog, info, param, dir, alarm, help, pref, corr };
+enum class PageId { om, op, prog, info, param, dir, alarm, help, pref, corr, edit };
 std::string_view page_word(PageId p);            // om, op, prog, …
 bool parse_page(std::string_view word, PageId& out);
 
@@ -59,6 +59,11 @@ struct View {
     std::vector<std::string> pending;  // origins changed in a run, not applied yet
     bool protect = false;
     size_t undo_depth = 0;
+    // EDIT and MODIF.
+    const std::vector<std::string>* edit_lines = nullptr;  // null: no program open
+    int edit_number = -1, edit_revision = 0;
+    int edit_cursor = 0, edit_mark = -1, edit_locked = 0, edit_error = -1;
+    bool edit_dirty = false, edit_modif = false, edit_modify = false;
 };
 
 // The whole screen: status line, page, message line, input line, soft keys.

@@ -433,3 +433,112 @@ TEST(Setting, AGaugeChangedDuringARunIsPendingUntilItsAxisMoves) {
     EXPECT_FALSE(c.s->sim().interp().gauge_pending(Z));
     EXPECT_DOUBLE_EQ(c.s->sim().interp().frames().gauge[Z], 5);
 }
+
+// ---- EDIT and MODIF ----
+
+TEST(Edit, ANewProgramTypedSavedAndRun) {
+    Console c("mill", {});
+    c.type(":edit 777");
+    EXPECT_EQ(c.s->page, pages::PageId::edit);
+    c.type("N10 G0 X10 Y10 Z10");
+    c.type("N20 M2");
+    EXPECT_TRUE(c.s->editor.dirty);
+    c.type(":save");
+    EXPECT_NE(c.message().find("%777 saved"), std::string::npos) << c.message();
+    ASSERT_NE(c.s->memory().find(777), nullptr);
+    c.type(":mode pom");
+    c.named("F9");
+    c.run_until_settled();
+    c.type(":mode auto");
+    c.type(":load 777");
+    c.named("F9");
+    c.run_until_settled();
+    EXPECT_EQ(c.s->sim().state(), RunState::ended);
+    EXPECT_NEAR(c.s->sim().op()[X], 10, 1e-9);
+}
+
+TEST(Edit, SavingABadBlockPutsTheCursorOnItWithItsNumber) {
+    Console c("mill", {});
+    c.type(":edit 778");
+    c.type("N10 G0 X10");
+    c.type("N20 G1 X5 (NO END");
+    c.type("N30 M2");
+    c.type(":save");
+    EXPECT_NE(c.message().find("line 3 N20: error 17"), std::string::npos) << c.message();
+    EXPECT_EQ(c.s->editor.cursor, 2);
+    EXPECT_EQ(c.s->memory().find(778), nullptr);  // not saved
+    // Enter puts the block on the input line; the corrected text replaces it.
+    c.named("Enter");
+    EXPECT_EQ(c.input.text(), "N20 G1 X5 (NO END");
+    c.key(")");
+    c.key("\r");
+    EXPECT_EQ(c.s->editor.lines()[2], "N20 G1 X5 (NO END)");
+    c.type(":save");
+    EXPECT_NE(c.s->memory().find(778), nullptr);
+}
+
+TEST(Edit, KeysMoveDeleteCopyAndPaste) {
+    Console c("mill", {});
+    c.type(":edit 779");
+    c.type("A1");
+    c.type("B2");
+    c.named("Up");
+    EXPECT_EQ(c.s->editor.cursor, 1);
+    c.named("M-w");  // copy A1
+    c.named("End");
+    c.named("C-y");  // paste after B2
+    EXPECT_EQ(c.s->editor.text(), "%779\nA1\nB2\nA1\n");
+    c.named("Home");
+    c.named("Down");
+    c.named("Del");
+    EXPECT_EQ(c.s->editor.text(), "%779\nB2\nA1\n");
+    c.type(":goto N1");
+    EXPECT_NE(c.message().find("no block"), std::string::npos);
+}
+
+TEST(Modif, AChangedBlockRunsAfterSingleBlock) {
+    Console c("lathe", {"tests/console/programs/gauge_change.iso"});
+    c.type(":mode pom");
+    c.named("F9");
+    c.run_until_settled();
+    c.type(":load 950");
+    c.type(":mode seq");
+    for (int i = 0; i < 4; ++i) {  // N10 .. N40
+        c.named("F9");
+        c.run_until_settled();
+    }
+    ASSERT_EQ(c.s->sim().state(), RunState::block);
+    c.type(":mode modif");
+    ASSERT_TRUE(c.s->modif) << c.message();
+    EXPECT_EQ(c.s->editor.lines()[size_t(c.s->editor.cursor)], "N50 G0 X50");
+    c.s->editor.cursor = 3;  // N30: already run
+    c.named("Enter");
+    EXPECT_NE(c.message().find("already prepared"), std::string::npos);
+    c.s->editor.cursor = 5;
+    c.named("Enter");
+    c.key("\x15");  // Ctrl-U
+    c.type("N50 G0 X56");
+    c.named("F9");  // the changed N50 runs
+    c.run_until_settled();
+    EXPECT_FALSE(c.s->modif);
+    EXPECT_NEAR(c.s->sim().to_display(X, c.s->sim().op()[X]), 56, 1e-9);
+    EXPECT_NE(std::string(*c.s->memory().find(950)->text).find("N50 G0 X56"), std::string::npos);
+    c.named("F9");
+    c.run_until_settled();
+    EXPECT_NEAR(c.s->sim().op()[Z], 60, 1e-9);  // and the run goes on
+}
+
+TEST(Modif, M999ForbidsModifAndImd) {
+    Console c("mill", {"tests/console/programs/m999.iso"});
+    c.type(":mode pom");
+    c.named("F9");
+    c.run_until_settled();
+    c.type(":load 951");
+    c.type(":mode auto");
+    c.named("F9");
+    c.run_until_settled();
+    ASSERT_EQ(c.s->sim().state(), RunState::stopped);  // the M00 after M999
+    c.type(":mode modif");
+    EXPECT_NE(c.message().find("M999"), std::string::npos);
+    EXPECT_FALSE(c.s->modif);
+}

@@ -239,6 +239,51 @@ setting)
     wait_for 'D2.X = OM 150.000 - PREF 16.666 .* = 83.334'
     wait_for '^  2 +83.334 '
     ;;
+edit)
+    # A program typed in the editor, saved with an error: the cursor stands on
+    # the faulty block with its NUM number; corrected, saved, in the store.
+    start --machine mill
+    cmd ":edit 778"
+    wait_for 'EDIT  %778  new'
+    cmd "N10 G0 X10 Y10 Z5"
+    cmd "N20 G1 Z-2 F100 (NO END"
+    cmd "N30 M2"
+    cmd ":save"
+    wait_for 'line 3 N20: error 17'
+    wait_for '^    3 >N20 G1 Z-2 F100 \(NO END'
+    keys Enter
+    wait_for '^MODIFY> N20 G1 Z-2 F100 \(NO END'
+    keys -l ")"
+    keys Enter
+    cmd ":save"
+    wait_for '%778 saved as revision 1'
+    cmd ":quit"
+    wait_for '^EXIT=0'
+    "$bin" export 778 | grep -q '^N20 G1 Z-2 F100 (NO END)$' || fail "the store does not hold the corrected block"
+    ;;
+modif)
+    # Single block, MODIF on the next block, Cycle Start runs the new text.
+    "$bin" import "$(dirname "$0")/../console/programs/gauge_change.iso" >/dev/null || fail "import"
+    start
+    pom
+    cmd ":load 950"
+    cmd ":mode seq"
+    for n in 10 20 30 40; do
+        keys F9
+        wait_for "^ SEQ +%950 N$n +BLOCK" 20
+    done
+    cmd ":mode modif"
+    wait_for 'MODIF  %950'
+    wait_for '^    6 >N50 G0 X50'
+    keys Enter
+    keys C-u
+    cmd "N50 G0 X56"
+    wait_for '^    6 >N50 G0 X56'
+    keys F9
+    wait_for '^ SEQ +%950 N50 +BLOCK' 20
+    cmd ":page op"
+    [ "$(op_value X)" = "56.000" ] || fail "the changed block should have moved X to 56"
+    ;;
 *)
     echo "unknown case $case"
     exit 2

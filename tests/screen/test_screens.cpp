@@ -209,3 +209,27 @@ TEST(Screen, PrefAndCorrPages) {
     m.type(":page corr");
     snapshot("corr_mill", m.screen());
 }
+
+TEST(Screen, EditorAndModif) {
+    Console c("mill", {});
+    c.type(":edit 778");
+    c.type("N10 G0 X10 Y10 Z5");
+    c.type("N20 G1 Z-2 F100 (NO END");
+    c.type("N30 G0 Z50");
+    c.type("N40 M2");
+    c.type(":save");
+    snapshot("edit_error", c.screen());
+    Console m("lathe", {"tests/console/programs/gauge_change.iso"});
+    m.type(":mode pom");
+    m.named("F9");
+    m.run_until_settled();
+    m.type(":load 950");
+    m.type(":mode seq");
+    for (int i = 0; i < 4; ++i) {
+        m.named("F9");
+        m.run_until_settled();
+    }
+    m.type(":mode modif");
+    m.named("Enter");
+    snapshot("modif", m.screen());
+}
