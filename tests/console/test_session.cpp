@@ -542,3 +542,32 @@ TEST(Modif, M999ForbidsModifAndImd) {
     EXPECT_NE(c.message().find("M999"), std::string::npos);
     EXPECT_FALSE(c.s->modif);
 }
+
+TEST(Setting, ThePinIsNeededToUnlockAndIsNotStoredInClear) {
+    std::string path = ::testing::TempDir() + "/pin_test.db";
+    std::remove(path.c_str());
+    auto opened = store::Store::open(path);
+    ASSERT_FALSE(opened.error) << opened.error.message;
+    {
+        Console c("lathe", {}, std::move(opened.value));
+        c.type(":protect pin 4321");
+        c.type(":protect on");
+        EXPECT_TRUE(c.s->protect);
+        c.type(":protect off 1234");
+        EXPECT_TRUE(c.s->protect);
+        EXPECT_NE(c.message().find("wrong PIN"), std::string::npos);
+        c.type(":rm 300");
+        EXPECT_NE(c.message().find("memory protection is on"), std::string::npos);
+        auto pin = c.s->store()->setting("protect.pin");
+        ASSERT_TRUE(pin.value.has_value());
+        EXPECT_EQ(pin.value->find("4321"), std::string::npos);
+    }
+    // The key stays turned across sessions.
+    auto again = store::Store::open(path);
+    ASSERT_FALSE(again.error);
+    Console c("lathe", {}, std::move(again.value));
+    EXPECT_TRUE(c.s->protect);
+    c.type(":protect off 4321");
+    EXPECT_FALSE(c.s->protect);
+    std::remove(path.c_str());
+}
