@@ -35,6 +35,12 @@ wait_for() {
     fail "waited ${limit}s for /$re/"
 }
 keys() { T send-keys -t e2e "$@"; }
+# A second session gets a server of its own: a new one on the old socket can
+# race with the old one's exit ("server exited unexpectedly").
+next_server() {
+    T kill-server 2>/dev/null
+    sock="$sock+"
+}
 # cmd TEXT: a ':' command typed on the input line.
 cmd() { keys -l "$1"; keys Enter; sleep 0.1; }
 start() {
@@ -73,7 +79,7 @@ themes)
     screen | LC_ALL=C grep -q '[^ -~]' && fail "--ascii drew a non-ASCII character"
     cmd ":quit"
     wait_for '^EXIT=0'
-    T kill-server
+    next_server
     start --theme phosphor
     wait_for 'OP  program position'
     cmd ":quit"
@@ -179,7 +185,7 @@ quit)
     sleep 0.2
     grep -Eq '(^| )icanon' "$work/stty" && grep -Eq '(^| )echo ' "$work/stty" ||
         fail "the terminal is not restored: $(cat "$work/stty")"
-    T kill-server
+    next_server
     start
     cmd ":quit"
     wait_for '^EXIT=0' 10
@@ -199,7 +205,7 @@ history)
     cmd "G0 X12 Z34"
     cmd ":quit"
     wait_for '^EXIT=0'
-    T kill-server
+    next_server
     start
     cmd ":mode imd"
     keys Up Up  # the newest line is ':mode imd' itself
@@ -227,7 +233,7 @@ setting)
     wait_for 'PREF.X = OM 110.000 .* = 16.666'
     cmd ":quit"
     wait_for '^EXIT=0'
-    T kill-server
+    next_server
     start
     cmd ":page pref"
     wait_for '^  Z +61.763 '
