@@ -27,6 +27,9 @@ public:
         pass([this, l, ch, text = std::string(t)] { real_.message(l, ch, text); });
     }
     void end(const Loc& l, int m) override { pass([=, this] { real_.end(l, m); }); }
+    void stock(const Loc& l, const std::vector<std::array<double, 2>>& s) override {
+        pass([this, l, s] { real_.stock(l, s); });
+    }
 
     // Runs the held entries in order, with holding off.
     void release() {

@@ -70,6 +70,9 @@ public:
     virtual void stop(const Loc&, int /*m: 0, 1, 12*/) {}
     virtual void message(const Loc&, int /*channel*/, std::string_view) {}
     virtual void end(const Loc&, int /*m: 2, or 0 at the end of a fragment*/) {}
+    // The rough stock of a G64 cycle, (Z, X as a radius) program points, for the
+    // graphic test's stock outline.
+    virtual void stock(const Loc&, const std::vector<std::array<double, 2>>& /*zr*/) {}
 };
 
 // One tool corrector (turning.md §3.3, milling.md §4.3.1). Lathe: X and Z gauges

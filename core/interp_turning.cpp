@@ -369,6 +369,9 @@ bool Interpreter::turning_stock(const Plan& p) {
 bool Interpreter::turning_g64_run() {
     g64_pending_ = false;
     if (g64_stock_.empty()) return fail(872, "G64 without a rough stock before G80"), false;
+    std::vector<std::array<double, 2>> zr;
+    for (const auto& q : g64_stock_) zr.push_back({q.x(), q.y()});
+    out_.stock(g64_loc_, zr);
     Loc saved = loc_;
     loc_ = g64_loc_;
     turning::Profile prof;

@@ -565,7 +565,10 @@ bool Interpreter::decode(const Block& b, Plan& p) {
             p.ec = v;
             continue;
         }
-        if (w.addr == addrE('M')) continue;  // EM+/EM-: part extremes for the graphic
+        if (w.addr == addrE('M')) {  // EM+/EM-: part extremes for the graphic
+            p.em = true;
+            continue;
+        }
         if (p.cycle_words && (letter == 'P' || letter == 'Q' || w.addr == addrE('R') || w.addr == addrE('H') ||
                               w.addr == addrE('F') || w.addr == addrE('S') || w.addr == addrE('P') ||
                               w.addr == addrE('C') || w.addr == addrE('A') || w.addr == addrE('K'))) {
@@ -611,6 +614,12 @@ bool Interpreter::decode(const Block& b, Plan& p) {
     if (p.g[78] && !p.g78_p) {
         fail(2, "G78 needs P (the axis groups to synchronise)");
         return false;
+    }
+    // milling.md §8.6 (impl): the axis values after EM+/EM- are the part's
+    // extremes for the graphic display, not a move.
+    if (p.em) {
+        p.axis.reset();
+        p.inc.reset();
     }
     return true;
 }

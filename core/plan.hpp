@@ -42,6 +42,7 @@ struct Interpreter::Plan {
     double eg = 0;
     bool has_ec = false;
     double ec = 0;
+    bool em = false;  // EM+/EM-: the axis words are graphic extremes
 
     // Arguments of functions that own words.
     double dwell = -1;                    // G4 F
