@@ -42,6 +42,10 @@ Effect page(Session& s, std::string_view arg) {
         s.show_page(s.page == pages::PageId::op ? pages::PageId::om : pages::PageId::op);
         return Effect::redraw;
     }
+    if (arg == "prog") {  // the program text, again for its drawing
+        s.show_page(s.page == pages::PageId::prog ? pages::PageId::graph : pages::PageId::prog);
+        return Effect::redraw;
+    }
     return s.command("page " + std::string(arg));
 }
 
@@ -108,6 +112,8 @@ Effect edit_modify(Session& s, std::string_view) {
     s.say("modify the block, Enter replaces it");
     return Effect::redraw;
 }
+
+bool on_graph(const Session& s, std::string_view) { return s.page == pages::PageId::graph && input_empty(s); }
 
 Effect dir_load(Session& s, std::string_view) {
     if (s.programs().empty()) return Effect::none;
@@ -180,6 +186,16 @@ const std::vector<Action> kActions = {
     {"dir-delete", "delete the program under the cursor (twice to confirm)", on_dir, dir_delete, "DELETE"},
     {"jog", "jog %s", jogging, jog, "%S"},
     {"corr-move", "choose the corrector %s", on_corr, corr_move, "D"},
+    {"graph-zoom", "zoom %s about the cursor", on_graph,
+     [](Session& s, std::string_view a) { return s.graph_key("zoom", a); }, "ZOOM"},
+    {"graph-pan", "pan the drawing (%s)", on_graph, [](Session& s, std::string_view a) { return s.graph_key("pan", a); },
+     "PAN"},
+    {"graph-cursor", "move the cursor (%s): its coordinates are shown", on_graph,
+     [](Session& s, std::string_view a) { return s.graph_key("cursor", a); }, "CURSOR"},
+    {"graph-fit", "fit the whole toolpath", on_graph, [](Session& s, std::string_view) { return s.graph_key("fit", ""); },
+     "FIT"},
+    {"graph-plane", "next plane (XY, XZ, YZ; the lathe draws ZX)", on_graph,
+     [](Session& s, std::string_view) { return s.graph_key("plane", ""); }, "PLANE"},
     {"edit-move", "move the editor's cursor (%s)", on_edit, edit_move, "MOVE"},
     {"edit-modify", "put the block under the cursor on the input line to modify it", on_edit, edit_modify, "MODIFY"},
     {"edit-delete", "delete the block under the cursor (or the marked blocks)", on_edit,
@@ -260,6 +276,7 @@ std::string help_text(const Action& a, std::string_view arg) {
     std::string h(a.help);
     if (a.name == "page" && arg == "pos") return "show the OP page, again for OM";
     if (a.name == "page" && arg == "set") return "show the PARAM, PREF and CORR pages in turn";
+    if (a.name == "page" && arg == "prog") return "show the PROG page, again for the GRAPH page";
     if (size_t p = h.find("%s"); p != std::string::npos) h.replace(p, 2, arg);
     return h;
 }
@@ -267,7 +284,7 @@ std::string help_text(const Action& a, std::string_view arg) {
 std::string soft_label(const Action& a, std::string_view arg) {
     std::string l(a.label);
     if (size_t p = l.find("%S"); p != std::string::npos) {
-        std::string up(arg == "pos" ? "OP/OM" : arg == "set" ? "SET" : arg);
+        std::string up(arg == "pos" ? "OP/OM" : arg == "set" ? "SET" : arg == "prog" ? "PROG/GR" : arg);
         for (char& c : up) c = char(std::toupper(static_cast<unsigned char>(c)));
         l.replace(p, 2, up);
     }

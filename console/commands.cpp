@@ -47,7 +47,7 @@ bool on_off(std::string_view s, bool current, bool& out) {
 
 const std::vector<std::pair<std::string, std::string>>& command_help() {
     static const std::vector<std::pair<std::string, std::string>> k = {
-        {":page om|op|prog|info|param|pref|corr|dir|alarm|help", "show a page"},
+        {":page om|op|prog|graph|info|param|pref|corr|dir|alarm|help|edit", "show a page"},
         {":mode auto|seq|dry|test|rns|imd|jog|inc|pom|edit|modif", "select a mode (refused while a program is in cycle)"},
         {":load N", "select program %N for AUTO, SEQ, DRY RUN, TEST and RNS"},
         {":cycle", "Cycle Start"},
@@ -98,11 +98,7 @@ Effect Session::command(std::string_view text) {
     if (cmd == "page") {
         pages::PageId p;
         if (!pages::parse_page(a1, p)) {
-            if (a1 == "graph") {
-                say("the " + std::string(a1) + " page is not in this version of pupitre", true);
-                return Effect::redraw;
-            }
-            return usage(":page om|op|prog|info|param|pref|corr|dir|alarm|help");
+            return usage(":page om|op|prog|graph|info|param|pref|corr|dir|alarm|help|edit");
         }
         show_page(p);
         return Effect::redraw;

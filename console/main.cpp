@@ -6,6 +6,7 @@
 #include <exception>
 
 #include "console/cli.hpp"
+#include "console/cli_plot.hpp"
 #include "core/machine.hpp"
 
 using namespace pupitre;
@@ -59,6 +60,21 @@ int main(int argc, char** argv) {
     run->add_flag("--optional-stop", ra.optional_stop, "M01 stops (the optional-stop switch is on)");
     CLI::App* check = app.add_subcommand("check", "report every problem a dry run would meet, without a trace");
     add_common(check);
+    cli::PlotArgs pa;
+    CLI::App* plot = app.add_subcommand("plot", "draw the toolpath of a dry run as SVG (and PNG)");
+    plot->add_option("--machine", pa.machine,
+                     "machine profile: lathe, mill, mill4, mill5, or a .machine file (default mill)");
+    plot->add_option("--plane", pa.plane, "xy, xz, yz or zx (default: the program's; zx on the lathe)");
+    plot->add_option("--set", pa.sets, "seed the machine before the run: PREF.X=-120.5, D1.R=4, L5=2")
+        ->type_name("NAME=VALUE")
+        ->allow_extra_args(false);
+    plot->add_flag("--block-skip", pa.block_skip, "skip the blocks that start with '/'");
+    plot->add_option("--max-blocks", pa.max_blocks, "stop with error 1001 after this many blocks (default 20000000)");
+    plot->add_option("--svg", pa.svg, "the SVG file to write ('-': the standard output)")->type_name("OUT")->required();
+    plot->add_option("--png", pa.png, "a PNG picture of the drawing too")->type_name("OUT");
+    plot->add_option("files", pa.files, "program files; the first program of the first file is run")
+        ->required()
+        ->check(CLI::ExistingFile);
 
     cli::StoreArgs sa;
     std::vector<std::string> numbers;  // as typed, checked after parsing
@@ -109,6 +125,7 @@ int main(int argc, char** argv) {
     try {
         if (*run) return cli::run(ra);
         if (*check) return cli::check(ra);
+        if (*plot) return cli::plot(pa);
         if (*imp) return cli::store_import(sa);
         if (*exp) return cli::store_export(sa);
         if (*list) return cli::store_list(sa);

@@ -29,6 +29,8 @@ bool to_long(std::string_view s, long& out) {
 Session::Session(const MachineProfile& m, std::unique_ptr<store::Store> store, LineInput& input)
     : m_(m), store_(std::move(store)), input_(input), sim_(std::make_unique<Sim>(m_, mem_)) {
     bindings.parse(default_bindings(), "bindings");
+    sim_->set_path(&path_);
+    graph.plane = m_.lathe ? PathPlane::zx : PathPlane::xy;
     input_.on_line = [this](const std::string& line) { submit(line); };
     input_.complete = [this](std::string_view w) { return complete(w); };
     input_.on_message = [this](const std::string& s) { say(s); };
@@ -337,6 +339,12 @@ pages::View Session::view() const {
         v.edit_modify = modify_pending;
     }
     if (page == pages::PageId::edit) v.prompt = modify_pending ? "MODIFY> " : modif ? "MODIF> " : "EDIT> ";
+    v.graph = graph;
+    v.graph.path = &path_;
+    if (!graph_plane_chosen && !path_.empty()) v.graph.plane = path_.default_plane();
+    tool_now_ = sim_->op();
+    v.graph.tool = &tool_now_;
+    v.graph.cache = &graph_cache_;
     return v;
 }
 

@@ -96,6 +96,13 @@ public:
     Effect edit_restore(int revision);
     Effect modif_start();
     bool modif_apply();  // Cycle Start after MODIF: the changed text runs; false: refused
+    // GRAPH (console/graph.cpp): the toolpath of the last run or TEST, and the
+    // window the page shows.
+    Effect graph_key(std::string_view what, std::string_view arg);
+    pages::GraphView graph;
+    bool graph_plane_chosen = false;
+    int cols = 80;  // the screen width, for the graph's window
+    const Toolpath& toolpath() const { return path_; }
     // Completion of the word before the cursor: G/M codes and commands.
     std::vector<std::string> complete(std::string_view word) const;
 
@@ -106,6 +113,9 @@ private:
     void check_run_end();
 
     MachineProfile m_;
+    Toolpath path_{m_};
+    mutable pages::GraphCache graph_cache_;
+    mutable Axes tool_now_{};
     std::unique_ptr<store::Store> store_;
     LineInput& input_;
     ProgramMemory mem_;

@@ -169,12 +169,20 @@ bool Sim::cycle_start(std::string& why) {
         case Mode::dry:
             if (!need_program()) return false;
             in_->start(selected_);
+            if (path_) {
+                path_->clear();
+                path_->start_at(op());
+            }
             break;
         case Mode::test: {
             if (!need_program()) return false;
             RunOptions o = in_->options();
             o.require_homing = false;
-            test_ = std::make_unique<Interpreter>(m_, mem_, *null_, o);
+            if (path_) {
+                path_->clear();
+                path_->start_at(in_->program_pos());
+            }
+            test_ = std::make_unique<Interpreter>(m_, mem_, path_ ? static_cast<MachineSink&>(*path_) : *null_, o);
             for (int d = 0; d < 256; ++d) test_->corrector(d) = in_->corrector(d);
             test_->frames_mut() = in_->frames();
             test_->start(selected_);
@@ -422,6 +430,12 @@ bool Sim::begin_next() {
                 op_off1_[size_t(a)] = e.m.to_mach[size_t(a)] - e.m.to_prog[size_t(a)];
             }
             if (e.m.rpm > 0 && e.kind == Ev::move && !manual_) sp_.rpm = e.m.rpm;
+            if (path_ && e.kind == Ev::move && !manual_ && e.loc.line > 0) {
+                const auto& ew = in_->e_written();  // E31000/E31001: the drawing's line types
+                auto r = ew.find(31000), f = ew.find(31001);
+                path_->set_line_types(r == ew.end() ? -1 : int(r->second), f == ew.end() ? -1 : int(f->second));
+                path_->add(e.m);
+            }
             break;
         case Ev::spindle: sp_ = e.sp; break;
         case Ev::coolant: m7_ = e.a, m8_ = e.b; break;
@@ -531,7 +545,10 @@ void Sim::raise_from_interp() {
     const auto& d = in_->diags();
     for (; diag_seen_ < d.size(); ++diag_seen_) {
         const Diag& x = d[diag_seen_];
-        if (x.is_error()) alarms_.push_back(Alarm{x, clock_});
+        if (x.is_error()) {
+            alarms_.push_back(Alarm{x, clock_});
+            if (path_) path_->add_error(x);
+        }
         else message_ = "warning " + std::to_string(x.code) + ": " + x.detail;
     }
 }
@@ -607,7 +624,10 @@ void Sim::test_advance(long budget) {
         loc_ = test_->location();
         if (r == StepResult::error) {
             for (const Diag& d : test_->diags())
-                if (d.is_error()) alarms_.push_back(Alarm{d, clock_});
+                if (d.is_error()) {
+                    alarms_.push_back(Alarm{d, clock_});
+                    if (path_) path_->add_error(d);
+                }
             state_ = RunState::alarm;
         } else if (r == StepResult::ended) {
             int warnings = 0;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/interp.hpp"
+#include "core/toolpath.hpp"
 
 namespace pupitre {
 
@@ -42,6 +43,9 @@ public:
     Sim(const MachineProfile& m, ProgramMemory& mem);
     ~Sim();
 
+    // The graphic page's toolpath: a program's moves are added as they are
+    // shown (AUTO, SEQ, DRY RUN), or as TEST checks them (the graphic test).
+    void set_path(Toolpath* p) { path_ = p; }
     Interpreter& interp() { return *in_; }
     const Interpreter& interp() const { return *in_; }
     const MachineProfile& machine() const { return m_; }
@@ -134,6 +138,9 @@ private:
     void stop(const Loc&, int m) override;
     void message(const Loc&, int channel, std::string_view) override;
     void end(const Loc&, int m) override;
+    void stock(const Loc& l, const std::vector<std::array<double, 2>>& zr) override {
+        if (path_ && !searching_) path_->add_stock(l, zr);
+    }
 
     void push(Ev e);
     bool begin_next();              // takes the next event; false if none
@@ -151,6 +158,7 @@ private:
     std::unique_ptr<Interpreter> in_;
     std::unique_ptr<Interpreter> test_;  // TEST mode: a second interpreter, no motion
     std::unique_ptr<MachineSink> null_;
+    Toolpath* path_ = nullptr;
 
     Mode mode_ = Mode::automatic;
     RunState state_ = RunState::idle;

@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "pages/canvas.hpp"
+#include "pages/page_graph.hpp"
 #include "pages/pages.hpp"
 #include "pages/view.hpp"
 
@@ -13,7 +14,7 @@ namespace pupitre::pages {
 
 namespace {
 
-constexpr std::string_view kPageWords[] = {"om", "op", "prog", "info", "param", "dir", "alarm", "help", "pref", "corr", "edit"};
+constexpr std::string_view kPageWords[] = {"om", "op", "prog", "info", "param", "dir", "alarm", "help", "pref", "corr", "edit", "graph"};
 
 void status_line(const View& v, Canvas& c) {
     const Sim& s = *v.sim;
@@ -126,6 +127,7 @@ void render_page(const View& v, Canvas& c, const Rect& r) {
         case PageId::pref: return page_pref(v, c, r);
         case PageId::corr: return page_corr(v, c, r);
         case PageId::edit: return page_edit(v, c, r);
+        case PageId::graph: return page_graph(v.graph, v.sim->machine(), c, r);
     }
 }
 

@@ -8,10 +8,11 @@
 #include <vector>
 
 #include "core/sim.hpp"
+#include "pages/page_graph.hpp"
 
 namespace pupitre::pages {
 
-enum class PageId { om, op, prog, info, param, dir, alarm, help, pref, corr, edit };
+enum class PageId { om, op, prog, info, param, dir, alarm, help, pref, corr, edit, graph };
 std::string_view page_word(PageId p);            // om, op, prog, …
 bool parse_page(std::string_view word, PageId& out);
 
@@ -64,6 +65,8 @@ struct View {
     int edit_number = -1, edit_revision = 0;
     int edit_cursor = 0, edit_mark = -1, edit_locked = 0, edit_error = -1;
     bool edit_dirty = false, edit_modif = false, edit_modify = false;
+    // GRAPH.
+    GraphView graph;
 };
 
 // The whole screen: status line, page, message line, input line, soft keys.

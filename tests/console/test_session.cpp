@@ -259,8 +259,8 @@ TEST(Session, UnknownCommandsSayHowToFindTheRightOne) {
     Console c;
     c.type(":frobnicate");
     EXPECT_NE(c.message().find("unknown command"), std::string::npos);
-    c.type(":page graph");
-    EXPECT_NE(c.message().find("not in this version"), std::string::npos);
+    c.type(":page nowhere");
+    EXPECT_NE(c.message().find("usage: :page"), std::string::npos);
 }
 
 TEST(Session, CompletionOfCodesAndCommands) {
@@ -570,4 +570,43 @@ TEST(Setting, ThePinIsNeededToUnlockAndIsNotStoredInClear) {
     c.type(":protect off 4321");
     EXPECT_FALSE(c.s->protect);
     std::remove(path.c_str());
+}
+
+// ---- GRAPH ----
+
+TEST(Graph, TestDrawsTheWholeProgramAndKeysChangeTheWindow) {
+    Console c;
+    c.type(":load 300");
+    c.type(":mode test");
+    c.named("F9");
+    c.run_until_settled();
+    EXPECT_EQ(c.s->toolpath().size(), 7u);  // the demo's seven moves
+    c.named("F3");
+    c.named("F3");  // PROG, then GRAPH
+    ASSERT_EQ(c.s->page, pages::PageId::graph);
+    c.key("+");
+    EXPECT_FALSE(c.s->graph.fit);
+    double scale = c.s->graph.scale;
+    c.key("+");
+    EXPECT_NEAR(c.s->graph.scale, scale / 2, 1e-12);
+    c.key("f");
+    EXPECT_TRUE(c.s->graph.fit);
+    EXPECT_EQ(c.input.text(), "");  // the keys did not reach the input line
+    EXPECT_NE(c.screen().find("GRAPH  ZX"), std::string::npos);
+}
+
+TEST(Graph, AutoDrawsAsTheMovesAreShown) {
+    Console c;
+    c.type(":mode pom");
+    c.named("F9");
+    c.run_until_settled();
+    c.type(":load 300");
+    c.type(":mode auto");
+    c.named("F9");
+    for (int i = 0; i < 30 * 3; ++i) c.s->tick(1.0 / 30);
+    size_t partway = c.s->toolpath().size();
+    EXPECT_GT(partway, 0u);
+    EXPECT_LT(partway, 7u);
+    c.run_until_settled();
+    EXPECT_EQ(c.s->toolpath().size(), 7u);
 }

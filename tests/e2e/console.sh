@@ -290,6 +290,31 @@ modif)
     cmd ":page op"
     [ "$(op_value X)" = "56.000" ] || fail "the changed block should have moved X to 56"
     ;;
+graph)
+    # The toolpath drawn in braille: after TEST, zoomed, then live in AUTO
+    # with the tool marker moving.
+    start
+    pom
+    cmd ":load 300"
+    cmd ":mode test"
+    keys F9
+    wait_for 'TEST %300: no error'
+    keys M-g
+    wait_for 'GRAPH  ZX'
+    screen | LC_ALL=C.UTF-8 grep -qP '[\x{2801}-\x{28ff}]' || fail "no braille cell on the graphic page"
+    before=$(screen | LC_ALL=C.UTF-8 grep -cP '[\x{2801}-\x{28ff}]')
+    keys +
+    wait_for 'mm'
+    cmd ":mode auto"
+    cmd ":speed x1"
+    keys F9
+    wait_for '◆' 20
+    a=$(screen | grep -n '◆' | head -1)
+    sleep 2
+    b=$(screen | grep -n '◆' | head -1)
+    [ -n "$a" ] && [ "$a" != "$b" ] || fail "the tool marker did not move ($a / $b)"
+    [ "$before" -gt 3 ] || fail "too few braille rows ($before)"
+    ;;
 *)
     echo "unknown case $case"
     exit 2

@@ -1,0 +1,27 @@
+// pupitre plot: the toolpath of a dry run drawn as SVG (issue 7, DESIGN §2.1).
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+#include <string>
+#include <vector>
+
+namespace pupitre::cli {
+
+struct PlotArgs {
+    std::string machine = "mill";
+    std::string plane;               // xy|xz|yz|zx; "" = the program's (the lathe's ZX)
+    std::string svg;                 // output file; "-" for the standard output
+    std::string png;                 // a PNG picture of the drawing too (libpng), "" for none
+    int png_width = 1600;            // pixels across
+    std::vector<std::string> files;  // the first program of the first file is run
+    std::vector<std::string> sets;   // NAME=VALUE, as `run --set`
+    bool block_skip = false;
+    long max_blocks = 20'000'000;
+};
+
+// Runs the program to its end (or its first error) and writes the drawing; the
+// diagnostics go to stderr as `run` prints them. Exit codes as DESIGN §2.1:
+// 0, 1 (the program has errors: what ran is drawn, the error marked), 64, 65,
+// 66, 73 (an output cannot be created), 74 (it cannot be written).
+int plot(const PlotArgs& a);
+
+}  // namespace pupitre::cli

@@ -1,0 +1,136 @@
+// Snapshots of the GRAPH page (issue 7): the lathe program 004_p555.iso and the
+// milling program with G45 pockets 000_p200_boitier.iso at 80x24 and 160x48,
+// the ASCII fallback, a zoom with the cursor and the tool, and a gouge (error
+// 149) with the page's styles. Compared with tests/plot/expected/NAME.txt; run
+// with PUPITRE_BLESS=1 to rewrite them after an intended change, and review the diff.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "pages/page_graph.hpp"
+#include "tests/plot/plot_run.hpp"
+
+using namespace pupitre;
+using namespace pupitre::pages;
+
+namespace {
+
+const std::string kShared = PUPITRE_SHARED;
+const std::string kSource = PUPITRE_SOURCE_DIR;
+
+void snapshot(const std::string& name, const std::string& screen) {
+    std::string path = kSource + "/tests/plot/expected/" + name + ".txt";
+    const char* bless = std::getenv("PUPITRE_BLESS");
+    if (bless && *bless == '1') {
+        std::ofstream(path) << screen;
+        return;
+    }
+    std::ifstream in(path);
+    ASSERT_TRUE(in) << "no snapshot " << path << " (run with PUPITRE_BLESS=1)\n" << screen;
+    std::stringstream ss;
+    ss << in.rdbuf();
+    EXPECT_EQ(ss.str(), screen) << "snapshot " << name << " differs; new screen:\n" << screen;
+}
+
+// The page as the console lays it out: status line above, message, input and
+// soft keys below (DESIGN §2.4).
+Canvas draw(const GraphView& g, const MachineProfile& m, int w, int h, bool ascii = false) {
+    Canvas c(w, h, ascii);
+    page_graph(g, m, c, Rect{0, 1, w, h - 4});
+    return c;
+}
+
+// One letter a cell for the styles that matter on this page, '.' for the others.
+std::string styles(const Canvas& c) {
+    std::string out;
+    for (int y = 0; y < c.height(); ++y) {
+        std::string line;
+        for (int x = 0; x < c.width(); ++x) {
+            Style s = c.at(x, y).st;
+            line += s == Style::alarm    ? 'A'
+                    : s == Style::warn   ? 'W'
+                    : s == Style::value  ? 'V'
+                    : s == Style::select ? 'S'
+                                         : '.';
+        }
+        out += line + '\n';
+    }
+    return out;
+}
+
+struct Lathe555 : test::PlotRun {
+    Lathe555() : PlotRun("lathe", {kShared + "/programs/004_p555.iso"}) {}
+};
+struct Mill200 : test::PlotRun {
+    Mill200() : PlotRun("mill", {kShared + "/programs/000_p200_boitier.iso"}, {{"D3.R", 8}}) {}
+};
+
+// The handbook programs live in shared/ beside the repository.
+const char* const kNoShared = " (shared/ not beside the repo)";
+
+GraphView view_of(const test::PlotRun& r) {
+    GraphView g;
+    g.path = r.path.get();
+    g.plane = r.path->default_plane();
+    return g;
+}
+
+}  // namespace
+
+TEST(GraphSnapshot, LatheP555) {
+    Lathe555 r;
+    if (!r.load_error.empty()) GTEST_SKIP() << r.load_error << kNoShared;
+    ASSERT_FALSE(r.in->has_errors());
+    GraphView g = view_of(r);
+    EXPECT_EQ(g.plane, PathPlane::zx);
+    snapshot("lathe_p555_80x24", draw(g, r.machine, 80, 24).to_text());
+    snapshot("lathe_p555_160x48", draw(g, r.machine, 160, 48).to_text());
+    snapshot("lathe_p555_80x24_ascii", draw(g, r.machine, 80, 24, true).to_text());
+}
+
+TEST(GraphSnapshot, MillPocketP200) {
+    Mill200 r;
+    if (!r.load_error.empty()) GTEST_SKIP() << r.load_error << kNoShared;
+    ASSERT_FALSE(r.in->has_errors());
+    GraphView g = view_of(r);
+    EXPECT_EQ(g.plane, PathPlane::xy);
+    snapshot("mill_p200_80x24", draw(g, r.machine, 80, 24).to_text());
+    snapshot("mill_p200_160x48", draw(g, r.machine, 160, 48).to_text());
+    // The side view, as the plane key gives it.
+    snapshot("mill_p200_xz_80x24",
+             draw(graph_next_plane(g, r.machine), r.machine, 80, 24).to_text());
+}
+
+TEST(GraphSnapshot, MillZoomCursorAndTool) {
+    Mill200 r;
+    if (!r.load_error.empty()) GTEST_SKIP() << r.load_error << kNoShared;
+    GraphView g = view_of(r);
+    Rect page{0, 1, 80, 20};
+    // The cursor on the circular pocket, zoomed 4x about it, the tool half-way.
+    g = graph_move_cursor(g, page, 0, 0);
+    g = graph_zoom(g, page, 4);
+    Axes tool{};
+    const double* mid = r.path->moves()[r.path->size() / 2].p;
+    tool[X] = mid[0];
+    tool[Y] = mid[1];
+    tool[Z] = mid[2];
+    g.tool = &tool;
+    g.upto = r.path->size() / 2;
+    Canvas c = draw(g, r.machine, 80, 24);
+    snapshot("mill_p200_zoom_80x24", c.to_text() + "-- styles --\n" + styles(c));
+}
+
+TEST(GraphSnapshot, GougeIsHighlighted) {
+    test::PlotRun r("mill", {kSource + "/tests/bad/149_tool_larger_than_concave_arc.iso"},
+                    {{"D1.R", 8}});
+    ASSERT_TRUE(r.in->has_errors());
+    ASSERT_EQ(r.path->errors().size(), 1u);
+    EXPECT_EQ(r.path->errors()[0].code, 149);
+    Canvas c = draw(view_of(r), r.machine, 80, 24);
+    std::string text = c.to_text();
+    EXPECT_NE(text.find("error 149 N80"), std::string::npos);
+    snapshot("gouge_149_80x24", text + "-- styles --\n" + styles(c));
+}
