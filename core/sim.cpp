@@ -169,19 +169,13 @@ bool Sim::cycle_start(std::string& why) {
         case Mode::dry:
             if (!need_program()) return false;
             in_->start(selected_);
-            if (path_) {
-                path_->clear();
-                path_->start_at(op());
-            }
+            new_path(op());
             break;
         case Mode::test: {
             if (!need_program()) return false;
             RunOptions o = in_->options();
             o.require_homing = false;
-            if (path_) {
-                path_->clear();
-                path_->start_at(in_->program_pos());
-            }
+            new_path(in_->program_pos());
             test_ = std::make_unique<Interpreter>(m_, mem_, path_ ? static_cast<MachineSink&>(*path_) : *null_, o);
             for (int d = 0; d < 256; ++d) test_->corrector(d) = in_->corrector(d);
             test_->frames_mut() = in_->frames();
@@ -235,6 +229,19 @@ bool Sim::cycle_start(std::string& why) {
     start_clock_ = clock_;
     state_ = RunState::running;
     return true;
+}
+
+// A run of the selected program starts a new drawing, with the program's EM+
+// and EM- extremes when it gives them.
+void Sim::new_path(const Axes& start) {
+    if (!path_) return;
+    path_->clear();
+    path_->start_at(start);
+    Axes lo{}, hi{};
+    uint16_t mlo = 0, mhi = 0;
+    if (const ProgramText* p = mem_.find(selected_);
+        p && scan_extremes(*p, m_.lathe && m_.x_diameter, lo, hi, mlo, mhi))
+        path_->set_extremes(lo, hi, mlo, mhi);
 }
 
 void Sim::feed_hold() {

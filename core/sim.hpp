@@ -143,6 +143,7 @@ private:
     }
 
     void push(Ev e);
+    void new_path(const Axes& start);
     bool begin_next();              // takes the next event; false if none
     void finish_current();          // the current event is done
     double duration(const Ev& e) const;
