@@ -8,6 +8,7 @@
 namespace pupitre {
 class ProgramMemory;
 struct MachineProfile;
+struct Diag;
 class Interpreter;
 namespace store {
 class Store;
@@ -33,6 +34,10 @@ struct RunArgs {
 };
 
 int run(const RunArgs& a);
+// Shared by run, check and plot (cli_run.cpp). Each prints its problems.
+void print_diag(const Diag& d);
+int load_all(const std::vector<std::string>& files, ProgramMemory& mem);          // an exit code
+int apply_sets(const std::vector<std::string>& sets, Interpreter& in);            // --set; an exit code
 // A built-in profile or a .machine file; prints the problem and returns false.
 bool load_machine(const std::string& name, MachineProfile& m);
 

@@ -23,49 +23,6 @@ namespace pupitre::cli {
 
 namespace {
 
-void print_diag(const Diag& d) {
-    std::string s = format_diag(d);
-    s += '\n';
-    std::fputs(s.c_str(), stderr);
-}
-
-int load_files(const std::vector<std::string>& files, ProgramMemory& mem) {
-    for (const auto& f : files) {
-        Diag d;
-        if (!mem.load_file(f, d)) {
-            print_diag(d);
-            return d.code == err::kCannotRead ? kNoInput : kDataErr;
-        }
-    }
-    for (const Diag& w : mem.warnings()) print_diag(w);
-    return kOk;
-}
-
-int seed(const PlotArgs& a, Interpreter& in) {
-    for (const auto& s : a.sets) {
-        size_t eq = s.find('=');
-        double v = 0;
-        bool ok = eq != std::string::npos && eq > 0;
-        if (ok) {
-            const char* b = s.c_str() + eq + 1;
-            const char* e = s.c_str() + s.size();
-            auto r = std::from_chars(b, e, v);
-            ok = r.ec == std::errc() && r.ptr == e;
-        }
-        if (!ok) {
-            std::fprintf(stderr, "pupitre: --set %s: expected NAME=VALUE with a number\n",
-                         s.c_str());
-            return kUsage;
-        }
-        std::string why = in.set(std::string_view(s).substr(0, eq), v);
-        if (!why.empty()) {
-            std::fprintf(stderr, "pupitre: --set %s: %s\n", s.c_str(), why.c_str());
-            return kUsage;
-        }
-    }
-    return kOk;
-}
-
 // Runs to the end as `run` does (stops are resumed), following the program's
 // line types (E31000, E31001) and the first plane other than G17 it selects.
 void run_collecting(Interpreter& in, Toolpath& path, int& plane_seen) {
@@ -207,7 +164,7 @@ int plot(const PlotArgs& a) {
     MachineProfile m;
     if (!load_machine(a.machine, m)) return kUsage;
     ProgramMemory mem;
-    if (int rc = load_files(a.files, mem)) return rc;
+    if (int rc = load_all(a.files, mem)) return rc;
     const ProgramText* main = nullptr;
     for (const auto& p : mem.programs())
         if (p->file == a.files.front()) {
@@ -223,7 +180,7 @@ int plot(const PlotArgs& a) {
     o.block_skip = a.block_skip;
     o.max_blocks = a.max_blocks;
     Interpreter in(m, mem, path, o);
-    if (int rc = seed(a, in)) return rc;
+    if (int rc = apply_sets(a.sets, in)) return rc;
     path.start_at(in.program_pos());
     path.program = main->number;
     path.title = main->title;

@@ -12,15 +12,11 @@
 
 namespace pupitre::cli {
 
-namespace {
-
 void print_diag(const Diag& d) {
     std::string s = format_diag(d);
     s += '\n';
     std::fputs(s.c_str(), stderr);
 }
-
-}  // namespace
 
 bool load_machine(const std::string& name, MachineProfile& m) {
     if (builtin_machine(name, m)) return true;
@@ -40,8 +36,6 @@ bool load_machine(const std::string& name, MachineProfile& m) {
     return true;
 }
 
-namespace {
-
 // Loads every file; returns an exit code (0 on success).
 int load_all(const std::vector<std::string>& files, ProgramMemory& mem) {
     for (const auto& f : files) {
@@ -55,8 +49,8 @@ int load_all(const std::vector<std::string>& files, ProgramMemory& mem) {
     return kOk;
 }
 
-int apply_sets(const RunArgs& a, Interpreter& in) {
-    for (const auto& s : a.sets) {
+int apply_sets(const std::vector<std::string>& sets, Interpreter& in) {
+    for (const auto& s : sets) {
         size_t eq = s.find('=');
         double v = 0;
         bool ok = eq != std::string::npos && eq > 0;
@@ -77,6 +71,8 @@ int apply_sets(const RunArgs& a, Interpreter& in) {
     }
     return kOk;
 }
+
+namespace {
 
 class NullSink final : public MachineSink {};
 
@@ -103,7 +99,7 @@ int run(const RunArgs& a) {
     Interpreter in(m, mem, a.trace ? static_cast<MachineSink&>(trace) : quiet, o);
     if (!a.db.empty())
         if (int rc = store.seed(in)) return rc;
-    if (int rc = apply_sets(a, in)) return rc;
+    if (int rc = apply_sets(a.sets, in)) return rc;
     const ProgramText* main = nullptr;
     for (const auto& p : mem.programs())
         if (p->file == a.files.front()) {
@@ -157,7 +153,7 @@ int check(const RunArgs& a) {
         Interpreter in(m, mem, quiet, o);
         if (!a.db.empty())
             if (int rc = store.seed(in)) return rc;
-        if (int rc = apply_sets(a, in)) return rc;
+        if (int rc = apply_sets(a.sets, in)) return rc;
         in.start(main);
         in.run_to_end();
         for (const Diag& d : in.diags()) {

@@ -16,11 +16,7 @@ namespace pupitre::console {
 
 namespace {
 
-std::string mm(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.3f", std::abs(v) < 5e-7 ? 0.0 : v);
-    return buf;
-}
+std::string mm(double v) { return pages::fmt_len(v); }
 
 bool is_origin(std::string_view n) { return n.rfind("PREF.", 0) == 0 || n.rfind("DEC1.", 0) == 0 || n.rfind("DEC3.", 0) == 0; }
 
