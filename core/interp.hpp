@@ -16,6 +16,7 @@
 #include "core/block.hpp"
 #include "core/comp.hpp"
 #include "core/pgp.hpp"
+#include "core/pocket46.hpp"
 #include "core/codes.hpp"
 #include "core/diag.hpp"
 #include "core/eval.hpp"
@@ -334,6 +335,28 @@ private:
     // G45 pockets (interp_pocket.cpp); the feeds are kept from one G45 to the next.
     double pocket_ep_ = 0, pocket_eq_ = 0, pocket_ei_ = 0, pocket_ej_ = 0;
     bool pocket(const Plan& p);
+    // G46 pockets and facing (interp_pocket46.cpp): the definition being read
+    // between NU0 and NU9, and the definitions by NP.
+    struct P46 {
+        bool defining = false;
+        p46::Def def;
+        bool first = true;       // the next contour block is the section's positioning
+        int blocks = 0;          // contour blocks read in the section
+        int motion = 1;          // modal interpolation inside the definition
+        p46::V2 pos{0, 0};
+        long last_block = -1;    // blocks_ at the last definition block
+        Loc at;                  // where the open definition's NU0 is
+        pgp::Solver solver;
+        std::map<int, p46::Def> defs;
+    } p46_;
+    bool pocket46(const Plan& p);
+    bool p46_contour(const Plan& p);
+    bool p46_close_section();
+    bool p46_header(const Plan& p, int nu);
+    bool p46_order(const Plan& p, int nu);
+    bool p46_fail(const p46::Error& e, const p46::Def& d);
+    bool p46_emit(const std::vector<p46::Run>& runs, double z, double approach, double clear, double f_ax,
+                  double f_lat);
     // Profile geometry programming (interp_pgp.cpp).
     pgp::Solver pgp_;
     int pgp_tag_ = 0;

@@ -62,6 +62,17 @@ StepResult Interpreter::execute(const Block& b) {
         return fail(err::kUnsupported, "G" + std::to_string(p.unsupported) + " (" + std::string(g->text) +
                                            ") is not yet supported by pupitre");
     }
+    // G46 blocks, and the contour blocks of a G46 definition, move nothing but
+    // what the pocket orders plan (milling.md §7.2).
+    // A definition left open by a run that stopped inside it (RAZ, an error
+    // before this point) is dropped: its blocks are no longer consecutive.
+    if (p46_.defining && blocks_ != p46_.last_block + 1) p46_.defining = false;
+    if (p.g[46] || p46_.defining) {
+        p46_.last_block = blocks_;
+        if (pocket46(p)) return StepResult::running;
+        p46_.defining = false;  // a definition with an error is not kept
+        return StepResult::error;
+    }
     if (p.has_eb)
         for (int i = 0; i < p.nm; ++i)
             if (p.m[i] <= 2) return fail(131, "a fillet or chamfer (EB) in a block with M0" + std::to_string(p.m[i]));

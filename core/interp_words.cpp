@@ -46,6 +46,7 @@ AddrFormat format_of(Addr a) {
         }
     }
     if (a < 78) return {Fmt::integer, 4, 0, false};
+    if (a >= 79) return {Fmt::length, 5, 3, true};  // LX LY: the G46 start point
     return {Fmt::other, 0, 0, true};
 }
 
@@ -417,6 +418,22 @@ bool Interpreter::decode(const Block& b, Plan& p) {
                     if (is_axis_addr(w.addr, axis)) break;  // positions and bottom: below
                     if (owner_g == 31 && (letter == 'I' || letter == 'J')) {
                         if (!cyc_word(w)) return false;
+                        continue;
+                    }
+                    if (!cyc_word(w)) return false;
+                    continue;
+                case 46:  // G46 NU.. (milling.md §7.2): NR+ / NR- keep their sign only
+                    if (is_axis_addr(w.addr, axis)) break;
+                    if (w.addr == addrN('R')) {
+                        if (w.v.kind != Operand::SignOnly && w.v.kind != Operand::Blank) {
+                            fail(267, "NR takes a sign only (NR+ climb, NR- conventional)", w.col);
+                            return false;
+                        }
+                        if (p.ncyc >= 16) {
+                            fail(3, "too many cycle words in one block", w.col);
+                            return false;
+                        }
+                        p.cyc[p.ncyc++] = {w.addr, w.v.neg ? -1.0 : 1.0};
                         continue;
                     }
                     if (!cyc_word(w)) return false;
