@@ -141,8 +141,21 @@ bool proper_cross(const V2& a, const V2& b, const V2& c, const V2& d) {
 
 // A straight move from a to b stays where the tool centre may go: it crosses
 // no boundary and keeps its clearance from every wall (sampled every 0.05 mm).
+// Inside, or on a limit (the pass ends of a facing lie on its outline).
+bool reachable(const Region& r, const V2& p) {
+    if (inside(r, p, 1e-6)) return true;
+    if (margin(r, p) < -1e-6) return false;
+    for (const auto& l : r.loops)
+        for (size_t i = 0; i < l.size(); ++i) {
+            Elem e;
+            e.a = l[i], e.b = l[(i + 1) % l.size()];
+            if (distance(e, p) < 1e-7) return true;
+        }
+    return false;
+}
+
 bool link_ok(const Region& r, const V2& a, const V2& b) {
-    if (!inside(r, a, 1e-6) || !inside(r, b, 1e-6)) return false;
+    if (!reachable(r, a) || !reachable(r, b)) return false;
     for (const auto& l : r.loops)
         for (size_t i = 0; i < l.size(); ++i)
             if (proper_cross(a, b, l[i], l[(i + 1) % l.size()])) return false;
@@ -450,7 +463,7 @@ bool roughing(const Def& d, double R, std::vector<Run>& runs, std::vector<double
         return false;
     };
     // The lowest and highest lines that cut: scan, then bisect.
-    const double h = std::max(1e-3, std::min(0.05, d.q / 4));
+    const double h = std::max({1e-3, std::min(0.05, d.q / 4), (reg.yhi - reg.ylo) / 20000});
     auto any = [&](double y) { return !spans(reg, y).empty(); };
     double y0 = 0, y1 = 0;
     bool found = false;
