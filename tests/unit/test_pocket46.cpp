@@ -445,4 +445,36 @@ TEST(Pocket46, FacingWithWallsKeepsOffTheWalls) {
     }
     EXPECT_GT(n15, 1000);
     EXPECT_GT(n20, 300);
+    // Coverage at the last roughing layer: every point of the stock (80 x 60)
+    // where the cutter centre may go lies within Q/2 of its path.
+    std::vector<comp::V2> path;
+    at = comp::V2(0, 0);
+    for (const MoveEvent& m : r.cap.moves) {
+        if (m.loc.n == 1020 && m.g != 0 && std::fabs(m.to_prog[Z] + 6) < 1e-9)
+            for (const auto& p : along(at, m, 0.1)) path.push_back(p);
+        at = comp::V2(m.to_prog[X], m.to_prog[Y]);
+    }
+    auto hollow = [](const comp::V2& p) {  // inside an island or behind a wall
+        bool in2 = (p.x() >= 30 && p.x() <= 45 && std::fabs(p.y() - 35) <= 5) || (p - comp::V2(30, 35)).norm() <= 5 ||
+                   (p - comp::V2(45, 35)).norm() <= 5;
+        bool in1 = (p.x() >= 45 && p.x() <= 70 && p.y() >= 5 && p.y() <= 15) || (p - comp::V2(45, 10)).norm() <= 5 ||
+                   (p - comp::V2(65, 15)).norm() <= 5;
+        bool w1 = p.y() <= 10 && p.x() <= 25 && p.x() + p.y() <= 30;
+        bool w2 = p.y() >= 50 && p.x() <= 45 && p.y() >= 60 - p.x();
+        bool w3 = (p - comp::V2(80, 60)).norm() <= 20;
+        return in1 || in2 || w1 || w2 || w3;
+    };
+    int points = 0;
+    for (double x = 0.25; x < 80; x += 1)
+        for (double y = 0.25; y < 60; y += 1) {
+            comp::V2 p(x, y);
+            double d = 1e300;
+            for (const auto& q : w.prims) d = std::min(d, Walls::dist(q, p));
+            if (hollow(p) || d < 4.2 + 0.01) continue;
+            double best = 1e300;
+            for (const auto& q : path) best = std::min(best, (q - p).norm());
+            ASSERT_LE(best, 2.5 + 0.06) << p.transpose();
+            ++points;
+        }
+    EXPECT_GT(points, 1000);
 }
