@@ -342,10 +342,8 @@ bool Interpreter::p46_order(const Plan& p, int nu) {
             q.val[X] = r.start.x(), q.val[Y] = r.start.y();
             ok = cycle_run(q, code);
         }
-        const double er = cyc_.er;
         cyc_ = saved_cyc;
         modal_ = saved;
-        (void)er;
         return ok;
     }
 
@@ -412,9 +410,13 @@ bool Interpreter::p46_order(const Plan& p, int nu) {
         ok = p46_emit(runs, z, approach, clear, w.v[fa], w.v[fl]);
         approach = z;
     }
-    Axes end = prog_;
+    // The roughing end point EX EY of the header (000:6109), at the clearance.
+    if (ok && nu == 15 && d.has_e) {
+        Axes t = prog_;
+        t[X] = d.e.x(), t[Y] = d.e.y();
+        ok = cycle_move(0, t);
+    }
     modal_ = saved;
-    (void)end;
     return ok;
 }
 

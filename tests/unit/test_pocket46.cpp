@@ -455,10 +455,10 @@ TEST(Pocket46, FacingWithWallsKeepsOffTheWalls) {
         at = comp::V2(m.to_prog[X], m.to_prog[Y]);
     }
     auto hollow = [](const comp::V2& p) {  // inside an island or behind a wall
-        bool in2 = (p.x() >= 30 && p.x() <= 45 && std::fabs(p.y() - 35) <= 5) || (p - comp::V2(30, 35)).norm() <= 5 ||
-                   (p - comp::V2(45, 35)).norm() <= 5;
-        bool in1 = (p.x() >= 45 && p.x() <= 70 && p.y() >= 5 && p.y() <= 15) || (p - comp::V2(45, 10)).norm() <= 5 ||
-                   (p - comp::V2(65, 15)).norm() <= 5;
+        bool in2 = (p.x() >= 30 && p.x() <= 45 && std::fabs(p.y() - 35) <= 5) ||
+                   (p - comp::V2(30, 35)).norm() <= 5 || (p - comp::V2(45, 35)).norm() <= 5;
+        bool in1 = (p.x() >= 45 && p.x() <= 70 && p.y() >= 5 && p.y() <= 15) ||
+                   (p - comp::V2(45, 10)).norm() <= 5 || (p - comp::V2(65, 15)).norm() <= 5;
         bool w1 = p.y() <= 10 && p.x() <= 25 && p.x() + p.y() <= 30;
         bool w2 = p.y() >= 50 && p.x() <= 45 && p.y() >= 60 - p.x();
         bool w3 = (p - comp::V2(80, 60)).norm() <= 20;
@@ -477,4 +477,21 @@ TEST(Pocket46, FacingWithWallsKeepsOffTheWalls) {
             ++points;
         }
     EXPECT_GT(points, 1000);
+}
+
+TEST(Pocket46, RoughingEndsAtExEy) {
+    Prog r(
+        "%1\nG46 NU0 NP1 ED8 Q5 EX-10 EY-10\nG46 NU1\nG1 X0 Y0\nX40\nY40\nX0\nY0\nG46 NU9\nT2 D2 "
+        "M6\nM3 S1000\n"
+        "N50 G46 NU15 NP1 Z-5 P5 ER2 EP100 EQ100\nM2\n",
+        "mill", {{"D2.R", 4}});
+    ASSERT_EQ(r.error(), 0);
+    const MoveEvent* last = nullptr;
+    for (const MoveEvent& m : r.cap.moves)
+        if (m.loc.n == 50) last = &m;
+    ASSERT_NE(last, nullptr);
+    EXPECT_EQ(last->g, 0);
+    EXPECT_NEAR(last->to_prog[X], -10, 1e-9);
+    EXPECT_NEAR(last->to_prog[Y], -10, 1e-9);
+    EXPECT_NEAR(last->to_prog[Z], 2, 1e-9);
 }
