@@ -51,7 +51,7 @@ constexpr GCode kG[] = {
     {21, G::coord, kLathe, 0, S::option, "", "polar (face) transformation X/Y to X/C (option)"},
     {22, G::coord, kLathe, kBoth, S::option, "", "cylindrical transformation (option)"},
     {23, G::none, kBoth, kBoth, S::yes, "X Y Z I J K", "circle through three points"},
-    {29, G::radcomp, kMill, 0, S::later, "X Y Z P Q R", "tool correction in space (3-D)"},
+    {29, G::radcomp, kMill, 0, S::yes, "P Q R", "tool correction in space (3-D)"},
     {31, G::none, kMill, 0, S::yes, "X Y Z I J K P EC EF ER F", "single-point threading cycle"},
     {33, G::none, kLathe, 0, S::yes, "X Z K P Q R S EA EB ES F", "constant-pitch threading cycle"},
     {38, G::motion, kLathe, 0, S::yes, "X Z K", "chained threading"},

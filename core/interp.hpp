@@ -273,6 +273,7 @@ private:
     // motion.cpp
     bool do_motion(const Plan& p);
     bool linear(int g, const Axes& target_prog, bool g52, const std::bitset<kAxes>& axes);
+    bool g29_move(const Plan& p);
     bool arc(const Plan& p, const Axes& target_prog);
     bool arc3(const Plan& p, const Axes& target_prog);
     bool emit_arc(int g, const Axes& target, int a0, int a1, double c0, double c1, double sweep_rad,

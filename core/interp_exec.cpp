@@ -276,7 +276,9 @@ bool Interpreter::apply_modal(const Plan& p) {
     if (p.radcomp >= 0 && p.radcomp != modal_.radcomp) {
         // The radius is taken when G41/G42 is programmed; a change of D or R takes
         // effect after G40 and a new G41/G42 (000:898-906).
-        if (p.radcomp != 40 && !comp_engage(p.radcomp)) return false;
+        if (p.radcomp == 29 && comp_.on)
+            return fail(140, "G29 under G41/G42: program G40 first (000:3932)"), false;
+        if (p.radcomp != 40 && p.radcomp != 29 && !comp_engage(p.radcomp)) return false;
         modal_.radcomp = p.radcomp;
         nonmotion_in_comp_ = 0;
     }

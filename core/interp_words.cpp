@@ -450,10 +450,23 @@ bool Interpreter::decode(const Block& b, Plan& p) {
                     p.g78_p = true;
                     continue;
                 }
+                case 29:  // the surface normal P Q R (milling.md §4.6)
+                    if (!word_value(w, v)) return false;
+                    p.g29_has.set(size_t(letter - 'P'));
+                    p.g29_n[letter - 'P'] = v;
+                    continue;
                 default:
                     // Arguments of functions not run yet (cycles, splines…).
                     continue;
             }
+        }
+        // In G29 every block gives the surface normal with P Q R.
+        if ((letter == 'P' || letter == 'Q' || letter == 'R') && w.v.kind != Operand::SignOnly &&
+            (p.radcomp == 29 || (p.radcomp < 0 && modal_.radcomp == 29))) {
+            if (!word_value(w, v)) return false;
+            p.g29_has.set(size_t(letter - 'P'));
+            p.g29_n[letter - 'P'] = v;
+            continue;
         }
         // Default meanings.
         if (seen.test(w.addr) && w.addr != addr1('M') && w.addr != addr1('G')) {

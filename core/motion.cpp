@@ -113,6 +113,7 @@ bool Interpreter::do_motion(const Plan& p) {
         if (modal_.incremental) return fail(3, "G52 needs absolute programming (G90)"), false;
         if (modal_.motion == 2 || modal_.motion == 3) return fail(3, "G52 moves are linear (G0 or G1)"), false;
     }
+    if (modal_.radcomp == 29 && !g52) return g29_move(p);
     // The end of a compensated profile: held PGP elements are resolved first.
     if (comp_.on && modal_.radcomp == 40 && pgp_.pending() && !pgp_close()) return false;
     if (comp_.on && modal_.radcomp == 40 && p.axis.none()) return comp_exit(p, nullptr);
@@ -210,6 +211,42 @@ bool Interpreter::do_motion(const Plan& p) {
     if (frames_.ed == 0)
         for (int a = 0; a < kAxes; ++a)
             if (!p.axis[size_t(a)] && !frames_.mirror[size_t(a)]) mach[size_t(a)] = mach_[size_t(a)];
+    if (!check_travel(mach)) return false;
+    prog_next_ = target;
+    return linear(modal_.motion, mach, false, p.axis);
+}
+
+// G29, tool correction in space (milling.md §4.6): each block gives a contact
+// point X Y Z on the surface and the unit normal P Q R pointing from the
+// material to the tool; the tool tip goes where a torus cutter of radius R and
+// end radius @ touches that point:
+//   Ct = Pc + @ N;  w = unit(N - (N.u) u);  Oc = Ct + (R - @) w;  tip = Oc - @ u.
+bool Interpreter::g29_move(const Plan& p) {
+    if (p.axis.none() && p.g29_has.none()) return true;
+    if (!(p.axis[X] && p.axis[Y] && p.axis[Z]) || p.g29_has.count() != 3)
+        return fail(146, "a G29 block needs all of X Y Z and P Q R (000:13291)"), false;
+    if (modal_.motion != 0 && modal_.motion != 1)
+        return fail(146, "G29 blocks are linear moves (G0 or G1)"), false;
+    Eigen::Vector3d n(p.g29_n[0], p.g29_n[1], p.g29_n[2]);
+    if (std::fabs(n.squaredNorm() - 1) > 1e-3)
+        return fail(145, "P Q R is not a unit vector: P2+Q2+R2 = " + f3(n.squaredNorm()) + " (000:13290)"), false;
+    n.normalize();
+    Eigen::Vector3d u = Eigen::Vector3d::Zero();
+    u[modal_.tool_axis == X ? 0 : modal_.tool_axis == Y ? 1 : 2] = modal_.tool_axis_neg ? -1 : 1;
+    const Corrector& c = corr_[size_t(std::max(modal_.d, 0))];
+    double r = c.r + c.dr, tip_r = c.tip;
+    if (tip_r > r) return fail(146, "the end radius @ is larger than the tool radius R"), false;
+    Eigen::Vector3d pc;
+    for (int a = 0; a < 3; ++a) pc[a] = p.inc[size_t(a)] ? prog_[size_t(a)] + p.val[size_t(a)] : p.val[size_t(a)];
+    Eigen::Vector3d w = n - n.dot(u) * u;
+    w = w.norm() > 1e-12 ? Eigen::Vector3d(w.normalized()) : Eigen::Vector3d::Zero();
+    Eigen::Vector3d tip = pc + tip_r * n + (r - tip_r) * w - tip_r * u;
+    first_move_ = false;
+    apply_corrector_gauges(p.axis);
+    Axes target = prog_;
+    for (int a = 0; a < kAxes; ++a)
+        if (p.axis[size_t(a)]) target[size_t(a)] = a < 3 ? tip[a] : (p.inc[size_t(a)] ? prog_[size_t(a)] + p.val[size_t(a)] : p.val[size_t(a)]);
+    Axes mach = frames_.to_machine(target);
     if (!check_travel(mach)) return false;
     prog_next_ = target;
     return linear(modal_.motion, mach, false, p.axis);

@@ -43,6 +43,8 @@ struct Interpreter::Plan {
     bool has_ec = false;
     double ec = 0;
     bool em = false;  // EM+/EM-: the axis words are graphic extremes
+    std::bitset<3> g29_has;       // G29: P Q R given
+    double g29_n[3] = {0, 0, 0};  // the surface normal
 
     // Arguments of functions that own words.
     double dwell = -1;                    // G4 F
