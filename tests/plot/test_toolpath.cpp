@@ -3,6 +3,7 @@
 // viewer depends on (arc flags, escaping, layers).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 
@@ -16,7 +17,10 @@ namespace {
 
 test::PlotRun run_text(const std::string& machine, const std::string& text,
                        const std::vector<std::pair<std::string, double>>& sets = {}) {
-    std::string path = ::testing::TempDir() + "/toolpath_test.iso";
+    // One file per test: CTest runs the tests of this binary in parallel processes.
+    std::string path = ::testing::TempDir() + "/toolpath_" +
+                       ::testing::UnitTest::GetInstance()->current_test_info()->name() + "_" +
+                       std::to_string(::getpid()) + ".iso";
     FILE* f = std::fopen(path.c_str(), "w");
     std::fputs(text.c_str(), f);
     std::fclose(f);
