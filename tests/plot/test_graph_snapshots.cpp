@@ -6,12 +6,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <gtest/gtest.h>
 
-#include <cstdlib>
-#include <fstream>
-#include <sstream>
 
 #include "pages/page_graph.hpp"
 #include "tests/plot/plot_run.hpp"
+#include "tests/screen/snapshot.hpp"
 
 using namespace pupitre;
 using namespace pupitre::pages;
@@ -22,17 +20,7 @@ const std::string kShared = PUPITRE_SHARED;
 const std::string kSource = PUPITRE_SOURCE_DIR;
 
 void snapshot(const std::string& name, const std::string& screen) {
-    std::string path = kSource + "/tests/plot/expected/" + name + ".txt";
-    const char* bless = std::getenv("PUPITRE_BLESS");
-    if (bless && *bless == '1') {
-        std::ofstream(path) << screen;
-        return;
-    }
-    std::ifstream in(path);
-    ASSERT_TRUE(in) << "no snapshot " << path << " (run with PUPITRE_BLESS=1)\n" << screen;
-    std::stringstream ss;
-    ss << in.rdbuf();
-    EXPECT_EQ(ss.str(), screen) << "snapshot " << name << " differs; new screen:\n" << screen;
+    test::snapshot("tests/plot/expected", name, screen);
 }
 
 // The page as the console lays it out: status line above, message, input and

@@ -5,11 +5,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <gtest/gtest.h>
 
-#include <cstdlib>
-#include <fstream>
-#include <sstream>
 
 #include "tests/console/fixture.hpp"
+#include "tests/screen/snapshot.hpp"
 
 using namespace pupitre;
 using pupitre::test::Console;
@@ -17,17 +15,7 @@ using pupitre::test::Console;
 namespace {
 
 void snapshot(const std::string& name, const std::string& screen) {
-    std::string path = std::string(PUPITRE_SOURCE_DIR) + "/tests/screen/expected/" + name + ".txt";
-    const char* bless = std::getenv("PUPITRE_BLESS");
-    if (bless && *bless == '1') {
-        std::ofstream(path) << screen;
-        return;
-    }
-    std::ifstream in(path);
-    ASSERT_TRUE(in) << "no snapshot " << path << " (run with PUPITRE_BLESS=1)\n" << screen;
-    std::stringstream ss;
-    ss << in.rdbuf();
-    EXPECT_EQ(ss.str(), screen) << "snapshot " << name << " differs; new screen:\n" << screen;
+    test::snapshot("tests/screen/expected", name, screen);
 }
 
 // The lathe homed, the demo %300 selected.
