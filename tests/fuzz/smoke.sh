@@ -23,6 +23,10 @@ else
     [ -d "$root/tests/bad" ] && cp "$root"/tests/bad/*.iso "$corpus"/ 2>/dev/null || true
     [ -d "$root/../shared/programs" ] && cp "$root"/../shared/programs/*.iso "$corpus"/
 fi
-"$bin" -max_total_time="$secs" -timeout=10 -rss_limit_mb=2048 -max_len=4096 \
+# Crash, leak and slow-unit artifacts go beside the binary, not into the
+# working copy (libFuzzer writes them to the current directory by default).
+artifacts=$(dirname "$bin")/fuzz-artifacts/
+mkdir -p "$artifacts"
+"$bin" -artifact_prefix="$artifacts" -max_total_time="$secs" -timeout=10 -rss_limit_mb=2048 -max_len=4096 \
     -print_final_stats=1 "$corpus" 2>&1 | tail -n 15
 echo "fuzz smoke: no crash in ${secs}s"
