@@ -336,66 +336,50 @@ void Sim::push(Ev e) {
 }
 
 void Sim::move(const MoveEvent& m) {
-    Ev e;
-    e.kind = Ev::move;
+    Ev e = event(Ev::move, m.loc);
     e.m = m;
-    e.loc = m.loc;
     e.feed_move = m.g != 0;
     push(std::move(e));
 }
 
 void Sim::dwell(const Loc& l, double s) {
-    Ev e;
-    e.kind = Ev::dwell;
-    e.loc = l;
+    Ev e = event(Ev::dwell, l);
     e.seconds = s;
     push(std::move(e));
 }
 
 void Sim::tool(const Loc& l, int t, int d, double s) {
-    Ev e;
-    e.kind = Ev::tool;
-    e.loc = l;
+    Ev e = event(Ev::tool, l);
     e.a = t, e.b = d, e.seconds = s;
     push(std::move(e));
 }
 
 void Sim::spindle(const SpindleEvent& sp) {
-    Ev e;
-    e.kind = Ev::spindle;
-    e.loc = sp.loc;
+    Ev e = event(Ev::spindle, sp.loc);
     e.sp = sp;
     push(std::move(e));
 }
 
 void Sim::coolant(const Loc& l, bool m7, bool m8) {
-    Ev e;
-    e.kind = Ev::coolant;
-    e.loc = l;
+    Ev e = event(Ev::coolant, l);
     e.a = m7, e.b = m8;
     push(std::move(e));
 }
 
 void Sim::stop(const Loc& l, int m) {
-    Ev e;
-    e.kind = Ev::stop;
-    e.loc = l;
+    Ev e = event(Ev::stop, l);
     e.a = m;
     push(std::move(e));
 }
 
 void Sim::message(const Loc& l, int, std::string_view text) {
-    Ev e;
-    e.kind = Ev::message;
-    e.loc = l;
+    Ev e = event(Ev::message, l);
     e.text = std::string(text);
     push(std::move(e));
 }
 
 void Sim::end(const Loc& l, int m) {
-    Ev e;
-    e.kind = Ev::end;
-    e.loc = l;
+    Ev e = event(Ev::end, l);
     e.a = m;
     push(std::move(e));
 }

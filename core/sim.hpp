@@ -142,6 +142,12 @@ private:
         if (path_ && !searching_) path_->add_stock(l, zr);
     }
 
+    static Ev event(Ev::Kind k, const Loc& l) {
+        Ev e;
+        e.kind = k;
+        e.loc = l;
+        return e;
+    }
     void push(Ev e);
     void new_path(const Axes& start);
     bool begin_next();              // takes the next event; false if none
