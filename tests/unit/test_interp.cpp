@@ -146,3 +146,13 @@ TEST(Text, SeveralProgramsAndNoHeader) {
     EXPECT_EQ(r.error(), 20);
     EXPECT_EQ(r.cap.moves.size(), 2u);
 }
+
+// milling.md §8.6 (impl): EM- / EM+ give the part's extremes for the graphic
+// display; their axis words do not move the machine.
+TEST(Interp, ExtremesEmDoNotMove) {
+    pupitre::test::Prog p("%1\nG0 X5 Y5 Z5\nEM- X0 Y0 Z-10\nEM+ X100 Y50 Z0\nM2\n", "mill");
+    ASSERT_EQ(p.in->run_to_end(), pupitre::StepResult::ended);
+    ASSERT_EQ(p.cap.moves.size(), 1u);
+    EXPECT_DOUBLE_EQ(p.in->program_pos()[pupitre::X], 5);
+    EXPECT_DOUBLE_EQ(p.in->program_pos()[pupitre::Z], 5);
+}
