@@ -264,6 +264,20 @@ void Session::check_run_end() {
 }
 
 void Session::persist_run() {
+    // The programs G76, G76+ and G76- changed: a revision each, or a deletion.
+    std::vector<int> edited = mem_.take_changed();
+    if (store_ && !edited.empty() && protect) {
+        say("memory protection is on: the programs G76 changed stay in memory, not in the store", true);
+    } else if (store_ && !edited.empty()) {
+        std::string source = "G76 in %" + std::to_string(sim_->selected()) + " (console)";
+        for (int n : edited) {
+            const ProgramText* p = mem_.find(n);
+            auto r = p ? store_->save(n, program_text(*p), store::kHead, source)
+                       : store_->remove(n, store::kHead, source);
+            if (r.error) say("%" + std::to_string(n) + " changed by G76 was not stored: " + r.error.message, true);
+        }
+        refresh_dir();
+    }
     if (!store_) return;
     std::vector<std::pair<std::string, int64_t>> fresh;
     for (const auto& [name, v] : store::persistent_writes(sim_->interp())) {

@@ -333,6 +333,7 @@ struct Parser {
             if ((g == 76 || g == 79) && (peek() == '+' || peek() == '-')) {
                 w.gsign = peek();
                 ++pos;
+                if (g == 76) g76_edit_ = b.words.size() + 1;
             } else if (g == 77) {
                 size_t p = after_spaces(pos);
                 if (p + 1 < s.size() && s[p] == '-' && is_digit(s[p + 1])) {
@@ -424,6 +425,10 @@ struct Parser {
             if (is_upper(c)) {
                 if (c == 'O') return fail(1, pos, "the letter O is not an ISO address (did you mean 0?)");
                 if (!word(c)) return false;
+                if (g76_edit_ && b.words.size() > g76_edit_ && b.words.back().addr == addr1('N')) {
+                    g76_tail();
+                    break;
+                }
                 if (b.words.size() == 1 && c == 'N' && b.words[0].addr == addr1('N')) {
                     const Operand& v = b.words[0].v;
                     if (v.kind == Operand::Number) {
@@ -449,7 +454,26 @@ struct Parser {
         return true;
     }
 
+    // After the pointed block of G76+/G76-: an optional "+k" line offset, then the
+    // block to insert, kept as text (000:7098-7147).
+    void g76_tail() {
+        size_t p = after_spaces(pos);
+        if (p + 1 < s.size() && s[p] == '+' && is_digit(s[p + 1])) {
+            int k = 0;
+            ++p;
+            while (p < s.size() && is_digit(s[p]) && k < 100000) k = k * 10 + (s[p++] - '0');
+            b.g76_k = k;
+            p = after_spaces(p);
+        }
+        std::string_view rest = s.substr(p);
+        while (!rest.empty() && (rest.back() == ' ' || rest.back() == '\t')) rest.remove_suffix(1);
+        b.g76_block = rest;
+        b.g76_block_col = uint16_t(p + 1);
+        pos = s.size();
+    }
+
     bool in_test_ = false;
+    size_t g76_edit_ = 0;  // 1 + index of a G76+/G76- word, 0 if none
 };
 
 }  // namespace

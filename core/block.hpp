@@ -83,6 +83,12 @@ struct Block {
     std::vector<Word> words;
     std::vector<Assign> assigns;
     std::vector<Term> terms;  // storage for every Expr of the block
+    // G76+ / G76- [H..] N.. [+k] <ISO block> (program-flow.md §6.3-6.4): the
+    // words after the pointed N are not this block's: the line offset k and the
+    // raw text of the block to insert are kept apart.
+    int g76_k = -1;               // the +k after the pointed block, -1 if none
+    std::string_view g76_block;   // the text after N.. [+k], trimmed (points into the line)
+    uint16_t g76_block_col = 0;   // its 1-based column
 
     void clear() {
         line = 0;
@@ -94,6 +100,9 @@ struct Block {
         words.clear();
         assigns.clear();
         terms.clear();
+        g76_k = -1;
+        g76_block = {};
+        g76_block_col = 0;
     }
     bool empty() const { return words.empty() && assigns.empty() && msg_channel < 0; }
 };

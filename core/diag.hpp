@@ -13,6 +13,8 @@ inline constexpr int kBlockBudget = 1001;    // endless loop: block budget exhau
 inline constexpr int kNotText = 1002;        // unreadable or non-text input
 inline constexpr int kNoProgram = 1003;      // no program in the file
 inline constexpr int kCannotRead = 1004;     // the file cannot be opened or read
+inline constexpr int kProgramExists = 1005;  // G76+ H of a program already in memory
+inline constexpr int kProgramInUse = 1006;   // G76- H of a program the run is executing
 inline constexpr int kUnsupported = 1010;    // a NUM function pupitre does not run yet
 // Warnings.
 inline constexpr int wFeedClamped = 1101;

@@ -334,6 +334,7 @@ bool Interpreter::start(const ProgramText* p) {
     main_ = p;
     imd_ = false;
     stack_.clear();
+    loaded_size_ = mem_.size();
     Frame f;
     f.prog = p;
     f.pos = p->begin;
@@ -512,6 +513,7 @@ StepResult Interpreter::step() {
                                                 : StepResult::ended;
         loc_ = Loc{stack_.back().prog->number, lineno, -1};
         cur_text_ = line;
+        cur_line_ = lineno;
         Diag& d = parse_diag_;
         if (!parse_block(line, block_, d)) {
             loc_.n = line_label(line);
@@ -535,7 +537,7 @@ StepResult Interpreter::step() {
     StepResult r = execute(block_);
     if (r == StepResult::error || ended_) return r;
     // A call pushed a frame: the range end of the caller is checked on return.
-    if (stack_.size() == depth) after_block(lineno);
+    if (stack_.size() == depth) after_block(cur_line_);
     return r;
 }
 

@@ -250,6 +250,10 @@ private:
     bool call(const Plan& p);
     bool jump(long label);
     bool transfer(const Plan& p);
+    // interp_g76.cpp: G76+ / G76- (program-flow.md §6.1-6.4)
+    bool edit_program(const Block& b, const Plan& p);
+    bool edit_block_text(const Block& b, std::string& out);
+    void text_spliced(const ProgramText* p, const Splice& s);
     bool end_of_frame();
     void after_block(int lineno);
     void reset_modal_m02();
@@ -425,6 +429,8 @@ private:
     Block block_;  // reused parse buffer
     Diag parse_diag_;  // filled only when a block does not parse
     std::string_view cur_text_;
+    int cur_line_ = 0;
+    size_t loaded_size_ = 0;  // program memory at the start of the run (G76+ quota)  // line of the block being executed (G76+/G76- move it)
 };
 
 }  // namespace pupitre

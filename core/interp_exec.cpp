@@ -62,6 +62,8 @@ StepResult Interpreter::execute(const Block& b) {
         return fail(err::kUnsupported, "G" + std::to_string(p.unsupported) + " (" + std::string(g->text) +
                                            ") is not yet supported by pupitre");
     }
+    // G76+/G76- edit the program memory and do nothing else.
+    if (p.g76_sign) return edit_program(b, p) ? StepResult::running : StepResult::error;
     // G46 blocks, and the contour blocks of a G46 definition, move nothing but
     // what the pocket orders plan (milling.md §7.2).
     // A definition left open by a run that stopped inside it (RAZ, an error
@@ -136,10 +138,6 @@ StepResult Interpreter::execute(const Block& b) {
 // at least 10 characters (000:7679-7735, program-flow.md §6.5). The text keeps its
 // length, so labels and positions stay valid.
 bool Interpreter::transfer(const Plan& p) {
-    if (p.g76_sign)
-        return fail(err::kUnsupported, std::string("G76") + p.g76_sign +
-                                           " (creating or deleting programs and blocks) is not yet supported by pupitre"),
-               false;
     const ProgramText* target = stack_.back().prog;
     if (p.g76_h >= 0 && !(target = mem_.find(p.g76_h)))
         return fail(25, "G76 H" + std::to_string(p.g76_h) + ": program %" + std::to_string(p.g76_h) +
@@ -213,6 +211,7 @@ bool Interpreter::transfer(const Plan& p) {
                        false;
             value.resize(width, ' ');
             text.replace(field, width, value);
+            mem_.mark_changed(target->number);
         }
         pos = eol + 1;
     }

@@ -149,6 +149,9 @@ std::string parse_machine(std::string_view text, MachineProfile& m) {
         } else if (key == "homing") {
             if (val != "required" && val != "none") return bad("homing must be required or none");
             m.homing_required = val == "required";
+        } else if (key == "program_memory") {
+            if (!number(val, d1) || d1 < 1) return bad("program_memory must be at least 1 (kilobytes)");
+            m.program_memory_kb = d1;
         } else if (key == "jog.feed") {
             if (!number(val, d1) || d1 <= 0) return bad("jog.feed must be positive");
             m.jog_feed = d1;

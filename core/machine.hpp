@@ -45,6 +45,9 @@ struct MachineProfile {
     double tool_change_time = 2.0;
     bool homing_required = false;  // console: programmed moves before POM give 159
     double jog_feed = 1000;        // mm/min of JOG and INC moves
+    // Part-program memory in kilobytes: G76+ may not grow the programs in memory
+    // beyond it (error 36). Files loaded larger than it still run.
+    double program_memory_kb = 256;
     // 4/5 axes (milling.md §9): "table" (B table, mill4) or "table-head" (C table and
     // B head, mill5), with the constants L_X, L_Y, L_Z of the course notes.
     std::string kinematics;

@@ -137,6 +137,8 @@ bool ProgramMemory::load_text(std::string name, std::string text, Diag& d) {
                  "not a text file (NUL byte found)"};
         return false;
     }
+    // Every line ends with '\n', so G76+ can insert after the last one.
+    if (!text.empty() && text.back() != '\n') text.push_back('\n');
     auto shared = std::make_shared<std::string>(std::move(text));
     std::string_view all = *shared;
     std::vector<std::unique_ptr<ProgramText>> found;
@@ -208,6 +210,107 @@ const ProgramText* ProgramMemory::find(int number) const {
     return nullptr;
 }
 
+std::string program_text(const ProgramText& p) {
+    std::string_view all = *p.text;
+    size_t h = p.begin;
+    if (h > 0) {
+        size_t nl = h >= 2 ? all.rfind('\n', h - 2) : std::string_view::npos;
+        h = nl == std::string_view::npos ? 0 : nl + 1;
+    }
+    return std::string(all.substr(h, p.end - h));
+}
+
+const ProgramText* ProgramMemory::create(int number) {
+    if (find(number)) return nullptr;
+    auto p = std::make_unique<ProgramText>();
+    p->number = number;
+    p->file = "%" + std::to_string(number);
+    p->text = std::make_shared<std::string>("%" + std::to_string(number) + "\n");
+    p->begin = p->end = p->text->size();
+    p->first_line = 2;
+    progs_.push_back(std::move(p));
+    mark_changed(number);
+    return progs_.back().get();
+}
+
+bool ProgramMemory::remove(int number) {
+    for (auto it = progs_.begin(); it != progs_.end(); ++it)
+        if ((*it)->number == number) {
+            removed_.push_back(std::move(*it));
+            progs_.erase(it);
+            mark_changed(number);
+            return true;
+        }
+    return false;
+}
+
+Splice ProgramMemory::splice(const ProgramText* p, size_t at, size_t del, std::string_view ins) {
+    std::string& text = *p->text;
+    auto lines_in = [](std::string_view t) { return int(std::count(t.begin(), t.end(), '\n')); };
+    const int line_at =
+        p->first_line + lines_in(std::string_view(text).substr(p->begin, at - p->begin));
+    const int del_lines = lines_in(std::string_view(text).substr(at, del));
+    const Splice sp{at, del, ins.size(), line_at, del_lines, lines_in(ins)};
+    const int dl = sp.ins_lines - sp.del_lines;
+    const ptrdiff_t db = ptrdiff_t(ins.size()) - ptrdiff_t(del);
+    text.replace(at, del, ins);
+    for (auto& q : progs_) {
+        if (q->text != p->text) continue;
+        if (q.get() == p) {
+            q->end = size_t(ptrdiff_t(q->end) + db);
+        } else if (q->begin > at) {
+            q->begin = size_t(ptrdiff_t(q->begin) + db);
+            q->end = size_t(ptrdiff_t(q->end) + db);
+            q->first_line += dl;
+        }
+        if (!q->indexed_) continue;
+        auto& labels = q->labels_;
+        std::erase_if(labels,
+                      [&](const Label& l) { return l.offset >= at && l.offset < at + del; });
+        for (Label& l : labels)
+            if (l.offset >= at + del) {
+                l.offset = size_t(ptrdiff_t(l.offset) + db);
+                l.line += dl;
+            }
+        if (q.get() != p) continue;
+        // The labels of the inserted lines, in (n, line) order like the index.
+        size_t pos = 0;
+        for (int line = line_at; pos < ins.size(); ++line) {
+            size_t eol = std::min(ins.size(), ins.find('\n', pos));
+            long n = line_label(ins.substr(pos, eol - pos));
+            if (n >= 0) {
+                Label l{n, line, at + pos};
+                auto it = std::upper_bound(labels.begin(), labels.end(), l,
+                                           [](const Label& a, const Label& b) {
+                                               return a.n != b.n ? a.n < b.n : a.line < b.line;
+                                           });
+                labels.insert(it, l);
+            }
+            pos = eol + 1;
+        }
+    }
+    mark_changed(p->number);
+    return sp;
+}
+
+size_t ProgramMemory::size() const {
+    size_t n = 0;
+    for (const auto& p : progs_) n += p->end - p->begin;
+    return n;
+}
+
+void ProgramMemory::mark_changed(int number) {
+    ++generation_;
+    if (std::find(changed_.begin(), changed_.end(), number) == changed_.end())
+        changed_.push_back(number);
+}
+
+std::vector<int> ProgramMemory::take_changed() {
+    std::vector<int> out;
+    out.swap(changed_);
+    return out;
+}
+
 bool ProgramMemory::replace(int number, std::string name, std::string text, Diag& d) {
     ProgramMemory fresh;
     if (!fresh.load_text(name, std::move(text), d)) return false;
@@ -220,6 +323,7 @@ bool ProgramMemory::replace(int number, std::string name, std::string text, Diag
     for (auto& p : progs_)
         if (p->number == number) {
             *p = std::move(*got.front());  // same object: the interpreter's pointers stay good
+            ++generation_;
             return true;
         }
     progs_.push_back(std::move(got.front()));

@@ -2,6 +2,7 @@
 // with a lazily built index of block labels (N numbers) for G77/G79 and cycles.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -34,13 +35,24 @@ struct ProgramText {
     const Label* find_label(long n) const;
 
 private:
+    friend class ProgramMemory;
     mutable std::vector<Label> labels_;  // sorted by (n, line)
     mutable bool indexed_ = false;
 };
 
+// The program as a store keeps it: its header line, then its blocks.
+std::string program_text(const ProgramText& p);
+
 // Reads the label of a block line: the N number after an optional block-skip '/'.
 // Returns -1 if the line has none.
 long line_label(std::string_view line);
+
+// What a splice did: `del` bytes and `del_lines` lines at `at` (line `line`)
+// became `ins` bytes and `ins_lines` lines.
+struct Splice {
+    size_t at = 0, del = 0, ins = 0;
+    int line = 0, del_lines = 0, ins_lines = 0;
+};
 
 class ProgramMemory {
 public:
@@ -56,6 +68,25 @@ public:
     bool replace(int number, std::string name, std::string text, Diag& d);
 
     const ProgramText* find(int number) const;
+
+    // G76+ H (program-flow.md §6.1): adds the empty program %number. nullptr if
+    // a program with that number is in memory.
+    const ProgramText* create(int number);
+    // G76- H (§6.2): forgets program %number. The object stays alive, so a
+    // pointer to it stays valid, but find() no longer returns it.
+    bool remove(int number);
+    // G76+/G76- N (§6.3-6.4): replaces `del` bytes at `at` in the text of `p`
+    // by `ins`. The programs that share the text (one file) move with it; their
+    // label indexes follow. `at` and `at + del` must be line starts of `p`.
+    Splice splice(const ProgramText* p, size_t at, size_t del, std::string_view ins);
+    // Bytes of program text in memory (the quota of G76+, error 36).
+    size_t size() const;
+    // Numbers of the programs whose text a run changed (G76, G76+, G76-) since
+    // the last call, in order and without repeats; the console stores them.
+    std::vector<int> take_changed();
+    void mark_changed(int number);
+    // Grows with every change of a text (caches of line offsets compare it).
+    uint64_t generation() const { return generation_; }
     // The first program loaded from the first file: the main program of a run.
     const ProgramText* first() const { return progs_.empty() ? nullptr : progs_.front().get(); }
     const std::vector<std::unique_ptr<ProgramText>>& programs() const { return progs_; }
@@ -63,6 +94,9 @@ public:
 
 private:
     std::vector<std::unique_ptr<ProgramText>> progs_;
+    std::vector<std::unique_ptr<ProgramText>> removed_;  // G76-: kept for the pointers
+    std::vector<int> changed_;
+    uint64_t generation_ = 0;
     std::vector<Diag> warnings_;
 };
 

@@ -666,7 +666,8 @@ const ProgramText* Sim::text_of(int prog) const {
 std::string_view Sim::line_of(const ProgramText* p, int line) const {
     if (!p || line < p->first_line) return {};
     std::string_view all = *p->text;
-    if (lc_.p != p) lc_ = LineCache{p, p->first_line, p->begin};
+    if (lc_.p != p || lc_.generation != mem_.generation())
+        lc_ = LineCache{p, p->first_line, p->begin, mem_.generation()};
     while (lc_.line > line) {  // backwards from the cached line, not from the top
         size_t prev = lc_.offset >= 2 ? all.rfind('\n', lc_.offset - 2) : std::string_view::npos;
         lc_.offset = prev == std::string_view::npos || prev + 1 < p->begin ? p->begin : prev + 1;

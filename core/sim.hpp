@@ -201,6 +201,7 @@ private:
         const ProgramText* p = nullptr;
         int line = 0;
         size_t offset = 0;
+        uint64_t generation = 0;  // of the program memory (G76+/G76- move lines)
     };
     mutable LineCache lc_;
 };

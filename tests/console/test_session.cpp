@@ -2,6 +2,7 @@
 // does at the panel, checked on the session and the simulated machine.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include "tests/console/fixture.hpp"
 
@@ -609,4 +610,57 @@ TEST(Graph, AutoDrawsAsTheMovesAreShown) {
     EXPECT_LT(partway, 7u);
     c.run_until_settled();
     EXPECT_EQ(c.s->toolpath().size(), 7u);
+}
+
+// ---- G76+ / G76- in the console: the program memory is the store ----
+
+TEST(G76, ProgramsAProgramCreatesAndDeletesAreStored) {
+    // A fresh store: the database and what SQLite keeps beside it.
+    std::string path = ::testing::TempDir() + "/g76_test_" + std::to_string(::getpid()) + ".db";
+    auto wipe = [&] {
+        for (const char* ext : {"", "-wal", "-shm", "-journal"}) std::remove((path + ext).c_str());
+    };
+    wipe();
+    auto opened = store::Store::open(path);
+    ASSERT_FALSE(opened.error) << opened.error.message;
+    auto& st = *opened.value;
+    ASSERT_FALSE(st.save(500,
+                         "%500 (WRITES %501, DELETES %502)\nN10 L1=4.5\nN20 G76+ H501\n"
+                         "N30 G76+ H501 N0 N10 G0 XL1 Y0\nN40 G76- H502\nN50 G77 H501\nN60 M2\n",
+                         store::kNew, "test")
+                     .error);
+    ASSERT_FALSE(st.save(502, "%502\nN10 G0 X1\n", store::kNew, "test").error);
+    {
+        Console c("mill", {}, std::move(opened.value));
+        c.type(":mode pom");
+        c.named("F9");
+        c.run_until_settled();
+        c.type(":mode auto");
+        c.type(":load 500");
+        c.named("F9");
+        c.run_until_settled();
+        ASSERT_EQ(c.s->sim().state(), RunState::ended) << c.message();
+        EXPECT_NEAR(c.s->sim().op()[X], 4.5, 1e-9);
+        auto p501 = c.s->store()->read(501);
+        ASSERT_FALSE(p501.error) << p501.error.message;
+        EXPECT_EQ(p501.value.text, "%501\nN10 G0 X4.5 Y0\n");
+        auto hist = c.s->store()->history(501);
+        ASSERT_FALSE(hist.error);
+        EXPECT_NE(hist.value.back().source.find("G76"), std::string::npos);
+        auto list = c.s->store()->list();
+        ASSERT_FALSE(list.error);
+        for (const auto& info : list.value)
+            if (info.number == 502) {
+                EXPECT_TRUE(info.deleted);
+            }
+        // The DIR page shows the new program and no longer the deleted one.
+        bool has501 = false, has502 = false;
+        for (const auto& e : c.s->programs()) {
+            has501 |= e.number == 501;
+            has502 |= e.number == 502;
+        }
+        EXPECT_TRUE(has501);
+        EXPECT_FALSE(has502);
+    }
+    wipe();
 }
