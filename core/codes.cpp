@@ -59,7 +59,7 @@ constexpr GCode kG[] = {
     {41, G::radcomp, kBoth, 0, S::yes, "", "tool radius compensation, tool left of profile"},
     {42, G::radcomp, kBoth, 0, S::yes, "", "tool radius compensation, tool right of profile"},
     {45, G::none, kMill, 0, S::yes, "X Y Z I J K P Q R EB EG EP EQ EI EJ EX EY ER", "simple pocket cycle"},
-    {46, G::none, kMill, kBoth, S::yes, "NU NP NR ED Q J R LX LY Z P ER EH EP EQ EI EJ EX EY", "pocket or facing with any contour"},
+    {46, G::none, kMill, kBoth, S::yes, "NU NP NR ED Q J R LX LY X Y Z P ER EH EP EQ EI EJ EX EY", "pocket or facing with any contour"},
     {48, G::none, kBoth, kBoth, S::yes, "NC H N", "spline definition"},
     {49, G::none, kBoth, kBoth, S::yes, "NC", "spline deletion"},
     {51, G::none, kBoth, kBoth, S::yes, "X Y Z U V W A B C", "mirror: X- enables, X+ disables"},

@@ -360,8 +360,13 @@ private:
     bool p46_header(const Plan& p, int nu);
     bool p46_order(const Plan& p, int nu);
     bool p46_fail(const p46::Error& e, const p46::Def& d);
-    bool p46_emit(const std::vector<p46::Run>& runs, double z, double approach, double clear, double f_ax,
-                  double f_lat);
+    // The axes of a G46 plane: first, second and normal (interp_pocket46.cpp).
+    struct P46Axes {
+        int a0, a1, an;
+    };
+    static P46Axes p46_axes(int plane);
+    bool p46_emit(const P46Axes& ax, const std::vector<p46::Run>& runs, double z, double approach,
+                  double clear, double f_ax, double f_lat);
     // Profile geometry programming (interp_pgp.cpp).
     pgp::Solver pgp_;
     int pgp_tag_ = 0;

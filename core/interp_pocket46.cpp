@@ -1,7 +1,9 @@
 // G46 pockets and facing with any contour (milling.md §7.2, 000:6078-6369):
 // the geometric definition (NU0 header, NU1-NU6 contours, NU9) is read block by
 // block without moving; the orders NU10 (drilling at the plunge points), NU15
-// (roughing) and NU20 (finishing) turn it into elementary moves.
+// (roughing) and NU20 (finishing) turn it into elementary moves. The plane
+// geometry (core/pocket46.cpp) is 2-D; this file maps it onto the plane of the
+// definition, G17, G18 or G19 (see P46Axes below).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <algorithm>
 #include <cmath>
@@ -41,11 +43,51 @@ struct Words {
     double v[128] = {};
     bool ok(Addr a) const { return has[a]; }
 };
+
+std::string axis_name(int a) {
+    return std::string(1, kAxisNames[size_t(a)]);
+}
+// The centre word of a plane axis (I for X, J for Y, K for Z).
+std::string centre_name(int a) {
+    return std::string(1, char('I' + a));
+}
 }  // namespace
+
+// G46 in the three planes. The handbook describes G46 with G17 words only
+// (000:6099-6109, 6281-6359), but errors 264 "cote en dehors du plan", 271 "tool
+// direction not perpendicular to the contouring plane" and 273 "contouring plane
+// changed between pocket definition and machining" (000:13340, 13347, 13349)
+// show that it runs in any plane, and the drilling cycles NU10 uses are defined
+// in G17 "pour les autres plans : permuter" (004:918-920, 950). pupitre permutes
+// the axes as for circles and cycles (milling.md §5.1, 000:4650):
+//   plane   first second normal   contour centres   bottom ER EH   G16
+//   G17       X     Y      Z           I J              Z          R+
+//   G18       Z     X      Y           K I              Y          Q+
+//   G19       Y     Z      X           J K              X          P+
+// so a pocket drawn in G18 is the same contour as in G17 turned onto the ZX
+// plane (circles seen from +Y, milling.md §2.2). LX LY (start and plunge point,
+// finishing start) and EX EY (end of roughing) are fixed words: they are the
+// first and second coordinates of the plane in its own order (in G18, LX is the
+// Z and LY the X). The bottom of the orders NU10, NU15 and NU20 (the "Z.." of
+// 000:6281-6359) is the word of the normal axis, as the hole bottom of G81-G89:
+// Y in G18, X in G19; a plane coordinate there (Z in G18) is error 267 as X or
+// Y is in G17. ER and EH are coordinates on the normal axis, "up" towards the
+// spindle: the tool must point along the positive normal (G16 R+, Q+, P+),
+// otherwise 271.
+Interpreter::P46Axes Interpreter::p46_axes(int plane) {
+    if (plane == 18) return {Z, X, Y};
+    if (plane == 19) return {Y, Z, X};
+    return {X, Y, Z};
+}
 
 // G46 NU.. blocks, and every block while a definition is open.
 bool Interpreter::pocket46(const Plan& p) {
     if (!p.g[46]) return p46_contour(p);
+    // A G46 block runs no modal function: a plane given there would be ignored.
+    if (p.plane >= 0 && p.plane != modal_.plane)
+        return fail(279, "G" + std::to_string(p.plane) +
+                             " in a G46 block: select the plane in a block before G46 NU0"),
+               false;
     Words w;
     for (int i = 0; i < p.ncyc; ++i) w.has[p.cyc[i].a] = true, w.v[p.cyc[i].a] = p.cyc[i].v;
     if (!w.has[addrN('U')])
@@ -127,10 +169,6 @@ bool Interpreter::p46_header(const Plan& p, int) {
     bool g59 = std::fabs(f.ed) > 1e-12;
     for (int a = 0; a < kAxes; ++a) g59 = g59 || std::fabs(f.g59[size_t(a)]) > 1e-12;
     if (g59) return fail(275, "G46 NU0 with a G59 offset active"), false;
-    if (modal_.plane != 17)
-        return fail(err::kUnsupported,
-                    "G46 outside the XY plane (G17) is not yet supported by pupitre"),
-               false;
     p46::Def d;
     d.np = int(w.v[addrN('P')]);
     d.ed = w.v[addrE('D')];
@@ -156,8 +194,11 @@ bool Interpreter::p46_header(const Plan& p, int) {
     return true;
 }
 
-// A contour block: G0/G1 positioning first, then lines and arcs (PGP allowed).
+// A contour block: G0/G1 positioning first, then lines and arcs (PGP allowed),
+// in the plane of the definition.
 bool Interpreter::p46_contour(const Plan& p) {
+    const P46Axes ax = p46_axes(p46_.def.plane);
+    const size_t a0 = size_t(ax.a0), a1 = size_t(ax.a1), an = size_t(ax.an);
     const bool plane_words = p.axis.any() || p.ijk.any() || p.has_r || p.pgp;
     const bool any_g = p.g.any();
     if (!plane_words && !any_g && !p.nm && !p.has_f && !p.has_s && !p.has_t && !p.has_d && !p.ncyc)
@@ -167,23 +208,26 @@ bool Interpreter::p46_contour(const Plan& p) {
         if (p.g[g] && g > 3)
             return fail(279, "G" + std::to_string(g) + " in a pocket contour block"), false;
     if (p.nm || p.has_f || p.has_s || p.has_t || p.has_d || p.ncyc)
-        return fail(268, "only G0-G3, X Y, I J, R and EB in a pocket contour block"), false;
+        return fail(268, "only G0-G3, " + axis_name(ax.a0) + " " + axis_name(ax.a1) + ", " +
+                             centre_name(ax.a0) + " " + centre_name(ax.a1) +
+                             ", R and EB in a pocket contour block"),
+               false;
     for (int a = 0; a < kAxes; ++a)
-        if (p.axis[size_t(a)] && a != X && a != Y)
-            return fail(264,
-                        std::string(1, kAxisNames[size_t(a)]) + " is outside the contouring plane"),
-                   false;
-    if (!p.axis[X] && !p.axis[Y] && !p.has_ea)
+        if (p.axis[size_t(a)] && size_t(a) != a0 && size_t(a) != a1)
+            return fail(264, axis_name(a) + " is outside the contouring plane"), false;
+    // The centre word of the normal axis (K in G17) is a coordinate outside the plane.
+    if (p.ijk[an]) return fail(264, centre_name(ax.an) + " is outside the contouring plane"), false;
+    if (!p.axis[a0] && !p.axis[a1] && !p.has_ea)
         return fail(264, "no coordinate in the contouring plane"), false;
     int motion = p.motion >= 0 ? p.motion : p46_.motion;
     p46_.motion = motion;
     p46::V2 t = p46_.pos;
-    if (p.axis[X]) t.x() = p.inc[X] ? p46_.pos.x() + p.val[X] : p.val[X];
-    if (p.axis[Y]) t.y() = p.inc[Y] ? p46_.pos.y() + p.val[Y] : p.val[Y];
+    if (p.axis[a0]) t.x() = p.inc[a0] ? p46_.pos.x() + p.val[a0] : p.val[a0];
+    if (p.axis[a1]) t.y() = p.inc[a1] ? p46_.pos.y() + p.val[a1] : p.val[a1];
     if (p46_.first) {
         if (motion != 0 && motion != 1)
             return fail(265, "a contour starts with a G0 or G1 positioning"), false;
-        if (!p.axis[X] || !p.axis[Y] || p.has_eb || p.pgp)
+        if (!p.axis[a0] || !p.axis[a1] || p.has_eb || p.pgp)
             return fail(280, "the first contour block gives both coordinates of the start point"),
                    false;
         p46_.pos = t;
@@ -201,11 +245,11 @@ bool Interpreter::p46_contour(const Plan& p) {
     ++p46_.blocks;
     pgp::Spec s;
     s.g = motion;
-    s.has_x = p.axis[X], s.x = t.x();
-    s.has_y = p.axis[Y], s.y = t.y();
+    s.has_x = p.axis[a0], s.x = t.x();
+    s.has_y = p.axis[a1], s.y = t.y();
     s.has_ea = p.has_ea, s.ea = p.ea;
-    s.has_i = p.ijk[0], s.i = p.ijk_val[0] + (p.ijk_inc[0] ? p46_.pos.x() : 0);
-    s.has_j = p.ijk[1], s.j = p.ijk_val[1] + (p.ijk_inc[1] ? p46_.pos.y() : 0);
+    s.has_i = p.ijk[a0], s.i = p.ijk_val[a0] + (p.ijk_inc[a0] ? p46_.pos.x() : 0);
+    s.has_j = p.ijk[a1], s.j = p.ijk_val[a1] + (p.ijk_inc[a1] ? p46_.pos.y() : 0);
     s.has_r = p.has_r, s.r = p.r;
     s.link = p.link, s.disc = p.disc;
     s.has_eb = p.has_eb, s.eb = p.eb, s.eb_unsigned = p.eb_unsigned;
@@ -214,7 +258,9 @@ bool Interpreter::p46_contour(const Plan& p) {
     if (p.has_eb && p.eb_unsigned)
         warn(err::wUnsignedEB, "EB without a sign is taken as a fillet (EB+), pgp.md §7");
     if ((motion == 2 || motion == 3) && !s.has_i && !s.has_j && !s.has_r && !p.pgp)
-        return fail(269, "a circle without its centre (I J) or radius (R)"), false;
+        return fail(269, "a circle without its centre (" + centre_name(ax.a0) + " " +
+                             centre_name(ax.a1) + ") or radius (R)"),
+               false;
     std::vector<pgp::Elem> out;
     pgp::Error e;
     if (!p46_.solver.push(s, out, e)) return fail(e.code, e.detail), false;
@@ -245,19 +291,21 @@ bool Interpreter::p46_fail(const p46::Error& e, const p46::Def& d) {
 }
 
 // Runs at one depth: a plunge at each run not linked to the previous one.
-bool Interpreter::p46_emit(const std::vector<p46::Run>& runs, double z, double approach,
-                           double clear, double f_ax, double f_lat) {
+// (x, y) are the plane's first and second coordinates, z the normal axis.
+bool Interpreter::p46_emit(const P46Axes& ax, const std::vector<p46::Run>& runs, double z,
+                           double approach, double clear, double f_ax, double f_lat) {
+    const size_t a0 = size_t(ax.a0), a1 = size_t(ax.a1), an = size_t(ax.an);
     auto go = [&](int g, double x, double y, double zz, double feed) {
         Axes t = prog_;
-        t[X] = x, t[Y] = y, t[Z] = zz;
+        t[a0] = x, t[a1] = y, t[an] = zz;
         if (g) modal_.feed = feed;
         return cycle_move(g, t);
     };
     for (const p46::Run& r : runs) {
         if (!r.linked) {
-            if (prog_[Z] < clear - 1e-9 && !go(0, prog_[X], prog_[Y], clear, 0)) return false;
-            if (!go(0, r.start.x(), r.start.y(), prog_[Z], 0)) return false;
-            if (approach < prog_[Z] - 1e-9 && !go(0, r.start.x(), r.start.y(), approach, 0))
+            if (prog_[an] < clear - 1e-9 && !go(0, prog_[a0], prog_[a1], clear, 0)) return false;
+            if (!go(0, r.start.x(), r.start.y(), prog_[an], 0)) return false;
+            if (approach < prog_[an] - 1e-9 && !go(0, r.start.x(), r.start.y(), approach, 0))
                 return false;
             if (!go(1, r.start.x(), r.start.y(), z, f_ax)) return false;
         } else if (!go(1, r.start.x(), r.start.y(), z, f_lat)) {
@@ -270,19 +318,22 @@ bool Interpreter::p46_emit(const std::vector<p46::Run>& runs, double z, double a
             }
             modal_.feed = f_lat;
             Axes t = prog_;
-            t[X] = pc.to.x(), t[Y] = pc.to.y();
-            double r0 = std::hypot(prog_[X] - pc.c.x(), prog_[Y] - pc.c.y()),
+            t[a0] = pc.to.x(), t[a1] = pc.to.y();
+            double r0 = std::hypot(prog_[a0] - pc.c.x(), prog_[a1] - pc.c.y()),
                    r1 = (pc.to - pc.c).norm();
             if (std::fabs(pc.sweep) < 1e-12) continue;
-            if (!emit_arc(pc.sweep > 0 ? 3 : 2, t, X, Y, pc.c.x(), pc.c.y(), pc.sweep, r0, r1, -1))
+            // Counter-clockwise from the first axis towards the second is G3 in
+            // every plane (milling.md §2.2).
+            if (!emit_arc(pc.sweep > 0 ? 3 : 2, t, ax.a0, ax.a1, pc.c.x(), pc.c.y(), pc.sweep, r0,
+                          r1, -1))
                 return false;
         }
     }
-    return go(0, prog_[X], prog_[Y], clear, 0);
+    return go(0, prog_[a0], prog_[a1], clear, 0);
 }
 
 // G46 NU10 NP.. G81/G83/G87 Z.. ... | NU15 NP.. Z.. P.. [ER] [EH] EP EQ |
-// NU20 NP.. Z.. P.. [ER] [EH] EI EJ [J]
+// NU20 NP.. Z.. P.. [ER] [EH] EI EJ [J]   (Z: the normal axis, Y in G18, X in G19)
 bool Interpreter::p46_order(const Plan& p, int nu) {
     Words w;
     for (int i = 0; i < p.ncyc; ++i) w.has[p.cyc[i].a] = true, w.v[p.cyc[i].a] = p.cyc[i].v;
@@ -294,8 +345,14 @@ bool Interpreter::p46_order(const Plan& p, int nu) {
     const p46::Def& d = it->second;
     if (modal_.plane != d.plane)
         return fail(273, "the plane changed since the pocket was defined"), false;
-    if (modal_.tool_axis != Z || modal_.tool_axis_neg)
-        return fail(271, "the tool axis (G16) is not perpendicular to the contouring plane"), false;
+    const P46Axes ax = p46_axes(d.plane);
+    const size_t a0 = size_t(ax.a0), a1 = size_t(ax.a1), an = size_t(ax.an);
+    const std::string bottom = axis_name(ax.an);
+    if (modal_.tool_axis != ax.an || modal_.tool_axis_neg)
+        return fail(271, "the tool axis (G16) is not perpendicular to the contouring plane (G16 " +
+                             std::string(1, "PQR"[ax.an]) + "+ in G" + std::to_string(d.plane) +
+                             ")"),
+               false;
     if (modal_.radcomp != 40) return fail(140, "G46 under radius compensation"), false;
     if (modal_.spindle_dir != d.rot)
         return fail(278, "the spindle turns " +
@@ -304,12 +361,16 @@ bool Interpreter::p46_order(const Plan& p, int nu) {
                                                                    : "not") +
                              ", the pocket asks for R0" + std::to_string(d.rot)),
                false;
-    if (!p.axis[Z]) return fail(268, "a G46 order needs the bottom Z"), false;
+    // A plane coordinate first: in G18 the G17 habit of a Z bottom is refused
+    // as a plane coordinate, not taken as a missing bottom.
     for (int a = 0; a < kAxes; ++a)
-        if (p.axis[size_t(a)] && a != Z)
-            return fail(267, "a G46 order takes no plane coordinate"), false;
-    const double zb = p.inc[Z] ? prog_[Z] + p.val[Z] : p.val[Z];
-    apply_corrector_gauges(std::bitset<kAxes>().set(Z));
+        if (p.axis[size_t(a)] && size_t(a) != an)
+            return fail(267, "a G46 order takes no plane coordinate (" + axis_name(a) +
+                                 "): its bottom is " + bottom + " in G" + std::to_string(d.plane)),
+                   false;
+    if (!p.axis[an]) return fail(268, "a G46 order needs the bottom " + bottom), false;
+    const double zb = p.inc[an] ? prog_[an] + p.val[an] : p.val[an];
+    apply_corrector_gauges(std::bitset<kAxes>().set(an));
     first_move_ = false;
 
     if (nu == 10) {
@@ -328,10 +389,10 @@ bool Interpreter::p46_order(const Plan& p, int nu) {
         if (p.has_f) modal_.feed = p.f;
         Plan q = p;
         q.axis.reset();
-        q.axis.set(Z);
+        q.axis.set(an);
         q.inc.reset();
-        bool ok = cycle_words(q, code);
-        q.axis.set(X).set(Y);
+        bool ok = cycle_words(q, code);  // the cycle axis is the normal axis (cycle_axis())
+        q.axis.set(a0).set(a1);
         std::vector<p46::V2> done;
         for (const p46::Run& r : runs) {
             if (!ok || r.linked) continue;
@@ -339,7 +400,7 @@ bool Interpreter::p46_order(const Plan& p, int nu) {
             for (const auto& h : done) dup = dup || (h - r.start).norm() < 1e-6;
             if (dup) continue;
             done.push_back(r.start);
-            q.val[X] = r.start.x(), q.val[Y] = r.start.y();
+            q.val[a0] = r.start.x(), q.val[a1] = r.start.y();
             ok = cycle_run(q, code);
         }
         cyc_ = saved_cyc;
@@ -380,10 +441,10 @@ bool Interpreter::p46_order(const Plan& p, int nu) {
     const double P = w.v[addr1('P')], jf = w.has[addr1('J')] ? w.v[addr1('J')] : 0;
     if (P <= 0 || w.v[fa] <= 0 || w.v[fl] <= 0 || jf < 0)
         return fail(282, "P, the feeds and J of a G46 order are positive"), false;
-    const double clear = w.has[addrE('R')] ? w.v[addrE('R')] : prog_[Z];
+    const double clear = w.has[addrE('R')] ? w.v[addrE('R')] : prog_[an];
     const double top = w.has[addrE('H')] ? w.v[addrE('H')] : clear;
     if (top - zb < 1e-9)
-        return fail(276, "the pocket bottom Z is not below the attack plane"), false;
+        return fail(276, "the pocket bottom " + bottom + " is not below the attack plane"), false;
     if (clear < top - 1e-9)
         return fail(282, "the clearance plane ER is below the attack plane EH"), false;
 
@@ -403,17 +464,17 @@ bool Interpreter::p46_order(const Plan& p, int nu) {
     modal_.feed_set = true;
     modal_.motion = 1;
     bool ok = true;
-    if (prog_[Z] < clear - 1e-9) ok = cycle_axis_move(0, clear);
+    if (prog_[an] < clear - 1e-9) ok = cycle_axis_move(0, clear);
     double approach = top;
     for (double z : layers(top, zb, P)) {
         if (!ok) break;
-        ok = p46_emit(runs, z, approach, clear, w.v[fa], w.v[fl]);
+        ok = p46_emit(ax, runs, z, approach, clear, w.v[fa], w.v[fl]);
         approach = z;
     }
     // The roughing end point EX EY of the header (000:6109), at the clearance.
     if (ok && nu == 15 && d.has_e) {
         Axes t = prog_;
-        t[X] = d.e.x(), t[Y] = d.e.y();
+        t[a0] = d.e.x(), t[a1] = d.e.y();
         ok = cycle_move(0, t);
     }
     modal_ = saved;
