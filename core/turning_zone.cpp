@@ -116,17 +116,131 @@ bool Material::in_M(const V2& q) const {
     return on_loop(M, q) || winding(M, q) != 0;
 }
 
+void YIndex::build(const std::vector<Elem>& es, double pad) {
+    src_ = es.data();
+    n_ = es.size();
+    nodes_.clear();
+    lo_.resize(n_);
+    hi_.resize(n_);
+    for (size_t i = 0; i < n_; ++i) {
+        const Elem& e = es[i];
+        double lo = std::min(e.a.y(), e.b.y()), hi = std::max(e.a.y(), e.b.y());
+        if (e.arc) lo = std::min(lo, e.c.y() - e.r()), hi = std::max(hi, e.c.y() + e.r());
+        lo_[i] = lo - pad;
+        hi_[i] = hi + pad;
+    }
+    std::vector<int> ids(n_);
+    for (size_t i = 0; i < n_; ++i) ids[i] = int(i);
+    make(ids);
+}
+
+// A node holds the elements across the median of the end points; each side
+// gets at most half of them, so the depth is logarithmic.
+int YIndex::make(std::vector<int>& ids) {
+    if (ids.empty()) return -1;
+    std::vector<double> ends;
+    ends.reserve(2 * ids.size());
+    for (int i : ids) ends.push_back(lo_[size_t(i)]), ends.push_back(hi_[size_t(i)]);
+    auto mid = ends.begin() + ptrdiff_t(ends.size() / 2);
+    std::nth_element(ends.begin(), mid, ends.end());
+    const double c = *mid;
+    std::vector<int> below, above, here;
+    for (int i : ids) {
+        if (hi_[size_t(i)] < c) below.push_back(i);
+        else if (lo_[size_t(i)] > c) above.push_back(i);
+        else here.push_back(i);
+    }
+    int k = int(nodes_.size());
+    nodes_.emplace_back();
+    nodes_[size_t(k)].c = c;
+    nodes_[size_t(k)].by_lo = here;
+    std::sort(nodes_[size_t(k)].by_lo.begin(), nodes_[size_t(k)].by_lo.end(),
+              [this](int a, int b) { return lo_[size_t(a)] < lo_[size_t(b)]; });
+    nodes_[size_t(k)].by_hi = std::move(here);
+    std::sort(nodes_[size_t(k)].by_hi.begin(), nodes_[size_t(k)].by_hi.end(),
+              [this](int a, int b) { return hi_[size_t(a)] > hi_[size_t(b)]; });
+    ids.clear();
+    int l = make(below);
+    nodes_[size_t(k)].left = l;  // nodes_ may have moved: index again
+    int r = make(above);
+    nodes_[size_t(k)].right = r;
+    return k;
+}
+
+void YIndex::query(double y, std::vector<int>& out) const {
+    for (int k = nodes_.empty() ? -1 : 0; k >= 0;) {
+        const Node& n = nodes_[size_t(k)];
+        if (y < n.c) {
+            for (int i : n.by_lo) {
+                if (lo_[size_t(i)] > y) break;
+                out.push_back(i);
+            }
+            k = n.left;
+        } else {
+            for (int i : n.by_hi) {
+                if (hi_[size_t(i)] < y) break;
+                out.push_back(i);
+            }
+            k = n.right;
+        }
+    }
+}
+
+namespace {
+// Where the element crosses the line y = Y going up (+1) or down (-1), by the
+// half-open rule (an end exactly on the line counts for the element it is the
+// lower end of), so that summing the crossings right of a point not on the
+// loop gives its winding number. Arcs are cut where y is extreme, into pieces
+// along which y only rises or only falls, each on one side of the centre.
+void ray_crossings(const Elem& e, double Y, std::vector<std::pair<double, int>>& out) {
+    auto piece = [&](const V2& p, const V2& q, double side) {
+        if ((p.y() <= Y) == (q.y() <= Y)) return;
+        double x;
+        if (!e.arc) {
+            x = p.x() + (q.x() - p.x()) * (Y - p.y()) / (q.y() - p.y());
+        } else {
+            double r = e.r(), dy = Y - e.c.y();
+            x = e.c.x() + side * std::sqrt(std::max(0.0, r * r - dy * dy));
+        }
+        out.push_back({x, q.y() > p.y() ? 1 : -1});
+    };
+    if (!e.arc) return piece(e.a, e.b, 0);
+    const double r = e.r(), t0 = std::atan2(e.a.y() - e.c.y(), e.a.x() - e.c.x()), t1 = t0 + e.sweep;
+    const double lo = std::min(t0, t1), hi = std::max(t0, t1), eps = 1e-12;
+    std::vector<double> ts{t0};
+    // The angles pi/2 + k pi strictly inside the sweep, in the sense of travel.
+    for (double t = kPi / 2 + std::ceil((lo + eps - kPi / 2) / kPi) * kPi; t < hi - eps; t += kPi) ts.push_back(t);
+    if (e.sweep < 0) std::reverse(ts.begin() + 1, ts.end());
+    ts.push_back(t1);
+    V2 p = e.a;
+    for (size_t i = 1; i < ts.size(); ++i) {
+        bool last = i + 1 == ts.size();
+        V2 q = last ? e.b : V2(e.c.x(), e.c.y() + r * std::sin(ts[i]));
+        piece(p, q, std::cos((ts[i - 1] + ts[i]) / 2) >= 0 ? 1 : -1);
+        p = q;
+    }
+}
+}  // namespace
+
 std::vector<Interval> m_intervals(const Material& m, double Y, int d) {
     struct X {
         double x;
         int mask;
     };
+    // Only the elements of M near the line matter (YIndex): the crossings, the
+    // boundary within kTol, and the winding numbers by the crossings of a ray.
+    if (!m.m_index.built_for(m.M)) m.m_index.build(m.M, 10 * kTol);
+    std::vector<int> near;
+    m.m_index.query(Y, near);
+    std::sort(near.begin(), near.end());
     std::vector<X> xs;
     std::vector<double> tmp;
-    for (size_t i = 0; i < m.M.size(); ++i) {
+    std::vector<std::pair<double, int>> ray;
+    for (int i : near) {
         tmp.clear();
-        cross_h(m.M[i], Y, tmp);
-        for (double x : tmp) xs.push_back({x, 1 << m.kind[i]});
+        cross_h(m.M[size_t(i)], Y, tmp);
+        for (double x : tmp) xs.push_back({x, 1 << m.kind[size_t(i)]});
+        ray_crossings(m.M[size_t(i)], Y, ray);
     }
     std::sort(xs.begin(), xs.end(), [](const X& a, const X& b) { return a.x < b.x; });
     std::vector<X> pts;
@@ -141,16 +255,51 @@ std::vector<Interval> m_intervals(const Material& m, double Y, int d) {
         if (mask & (1 << kClosing)) return int(kClosing);
         return int(kProfile);
     };
+    // Winding number right of x: the sum of the crossings beyond it.
+    std::sort(ray.begin(), ray.end());
+    std::vector<int> beyond(ray.size() + 1, 0);
+    for (size_t i = ray.size(); i-- > 0;) beyond[i] = beyond[i + 1] + ray[i].second;
+    // On the boundary: the elements whose extent along x holds the point, swept
+    // with the midpoints, which come in rising x.
+    auto x_lo = [&](int i) {
+        const Elem& e = m.M[size_t(i)];
+        return (e.arc ? e.c.x() - e.r() : std::min(e.a.x(), e.b.x())) - 10 * kTol;
+    };
+    auto x_hi = [&](int i) {
+        const Elem& e = m.M[size_t(i)];
+        return (e.arc ? e.c.x() + e.r() : std::max(e.a.x(), e.b.x())) + 10 * kTol;
+    };
+    std::vector<std::pair<double, int>> by_lo;
+    for (int i : near) by_lo.push_back({x_lo(i), i});
+    std::sort(by_lo.begin(), by_lo.end());
+    std::vector<int> active;
+    size_t next = 0;
+    auto inside = [&](double x) {
+        while (next < by_lo.size() && by_lo[next].first <= x) active.push_back(by_lo[next++].second);
+        V2 q(x, Y);
+        for (size_t k = 0; k < active.size();) {
+            int i = active[k];
+            if (x_hi(i) < x) {  // behind the sweep for good
+                active[k] = active.back();
+                active.pop_back();
+                continue;
+            }
+            if (dist(m.M[size_t(i)], q) <= kTol) return true;
+            ++k;
+        }
+        auto it = std::upper_bound(ray.begin(), ray.end(), std::pair<double, int>(x, 2));
+        return beyond[size_t(it - ray.begin())] != 0;
+    };
     // Runs of inside sub-intervals, as index ranges into pts.
     std::vector<std::pair<size_t, size_t>> runs;
     bool open = false;
     for (size_t j = 0; j + 1 < pts.size(); ++j) {
-        bool inside = m.in_M(V2((pts[j].x + pts[j + 1].x) / 2, Y));
-        if (inside && open)
+        bool in = inside((pts[j].x + pts[j + 1].x) / 2);
+        if (in && open)
             runs.back().second = j + 1;
-        else if (inside)
+        else if (in)
             runs.push_back({j, j + 1});
-        open = inside;
+        open = in;
     }
     std::vector<Interval> out;
     for (auto [i, j] : runs)

@@ -19,6 +19,29 @@ using geom::Frame;
 // Kinds of the edges of M.
 enum Kind { kStock = 0, kClosing = 1, kProfile = 2 };
 
+// The elements of a loop by their extent along y: the ones a level line can
+// meet. A centred interval tree: a G64 on a stock of thousands of points asks
+// hundreds of thousands of level lines, each meeting a few elements.
+class YIndex {
+public:
+    void build(const std::vector<Elem>& es, double pad);
+    bool built_for(const std::vector<Elem>& es) const { return src_ == es.data() && n_ == es.size(); }
+    // Appends the elements whose extent, widened by the pad, holds y.
+    void query(double y, std::vector<int>& out) const;
+
+private:
+    struct Node {
+        double c = 0;
+        int left = -1, right = -1;
+        std::vector<int> by_lo, by_hi;  // the elements holding c, by rising low / falling high end
+    };
+    int make(std::vector<int>& ids);
+    std::vector<Node> nodes_;
+    std::vector<double> lo_, hi_;
+    const Elem* src_ = nullptr;
+    size_t n_ = 0;
+};
+
 struct Material {
     std::vector<Elem> M;    // closed boundary of the material region (may be empty)
     std::vector<int> kind;  // per edge of M
@@ -36,6 +59,7 @@ struct Material {
     // Without allowance A is F itself: a pass stops where it meets F.
     bool zero() const { return normal ? er < geom::kTol : t.norm() < geom::kTol; }
     bool in_M(const V2& q) const;  // inside M or on its boundary
+    mutable YIndex m_index;        // of M, built by m_intervals when M is new
 };
 
 struct Interval {
