@@ -373,15 +373,35 @@ bool folds(const Elem& e, const Elem& f, const V2& joint) {
 }  // namespace
 
 bool self_intersects(const std::vector<Elem>& loop) {
-    size_t n = loop.size();
+    const size_t n = loop.size();
+    // Only elements whose boxes meet can meet: a sweep along x over the boxes
+    // (a rough stock may have thousands of points).
+    struct Box {
+        double x0, x1, y0, y1;
+    };
+    constexpr double pad = 1e-6;
+    std::vector<Box> box(n);
     for (size_t i = 0; i < n; ++i) {
-        for (size_t j = i + 1; j < n; ++j) {
+        const Elem& e = loop[i];
+        double r = e.arc ? e.r() : 0;
+        V2 lo = e.arc ? V2(e.c.x() - r, e.c.y() - r) : V2(std::min(e.a.x(), e.b.x()), std::min(e.a.y(), e.b.y()));
+        V2 hi = e.arc ? V2(e.c.x() + r, e.c.y() + r) : V2(std::max(e.a.x(), e.b.x()), std::max(e.a.y(), e.b.y()));
+        box[i] = {lo.x() - pad, hi.x() + pad, lo.y() - pad, hi.y() + pad};
+    }
+    std::vector<size_t> order(n);
+    for (size_t i = 0; i < n; ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return box[a].x0 < box[b].x0; });
+    std::vector<V2> pts;
+    for (size_t oi = 0; oi < n; ++oi) {
+        for (size_t oj = oi + 1; oj < n && box[order[oj]].x0 <= box[order[oi]].x1; ++oj) {
+            size_t i = std::min(order[oi], order[oj]), j = std::max(order[oi], order[oj]);
+            if (box[i].y0 > box[j].y1 || box[j].y0 > box[i].y1) continue;
             bool next = j == i + 1, wrap = i == 0 && j == n - 1;
             if (next || wrap) {
                 if (n > 2 && folds(loop[i], loop[j], next ? loop[i].b : loop[i].a)) return true;
                 continue;
             }
-            std::vector<V2> pts;
+            pts.clear();
             intersect(loop[i], loop[j], pts);
             // An overlap of collinear or concentric elements, or two crossings.
             if (pts.size() >= 2 && (pts[0] - pts[1]).norm() > 1e-7) return true;

@@ -109,3 +109,65 @@ TEST(TurningZone, ALongWavyStockIsIndexed) {
     EXPECT_EQ(zone::m_intervals(m, 50, 1).size(), 1u);
     EXPECT_GT(zone::m_intervals(m, 99.9, 1).size(), 100u);
 }
+
+namespace {
+// Every pair of elements, as self_intersects did before it swept boxes.
+bool self_intersects_all_pairs(const std::vector<Elem>& loop) {
+    auto near_end = [](const Elem& e, const V2& p) {
+        return (p - e.a).norm() < 1e-7 || (p - e.b).norm() < 1e-7;
+    };
+    size_t n = loop.size();
+    for (size_t i = 0; i < n; ++i)
+        for (size_t j = i + 1; j < n; ++j) {
+            std::vector<V2> pts;
+            geom::intersect(loop[i], loop[j], pts);
+            bool next = j == i + 1, wrap = i == 0 && j == n - 1;
+            if (next || wrap) {
+                V2 joint = next ? loop[i].b : loop[i].a;
+                for (const V2& p : pts)
+                    if (n > 2 && (p - joint).norm() > 1e-7) return true;
+                continue;
+            }
+            if (pts.size() >= 2 && (pts[0] - pts[1]).norm() > 1e-7) return true;
+            for (const V2& p : pts)
+                if (!near_end(loop[i], p) && !near_end(loop[j], p)) return true;
+        }
+    return false;
+}
+}  // namespace
+
+TEST(TurningZone, SelfIntersectionBySweptBoxesAgreesWithAllPairs) {
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> u(0, 20);
+    std::uniform_int_distribution<int> count(3, 25), coin(0, 3);
+    int crossing = 0;
+    for (int t = 0; t < 3000; ++t) {
+        std::vector<V2> pts;
+        int n = count(rng);
+        // Star-shaped loops (simple) and random ones (mostly crossing), some on a grid
+        // so that vertices and edges touch exactly.
+        bool star = t % 2 == 0;
+        for (int k = 0; k < n; ++k) {
+            if (star) {
+                double a = 2 * kPi * k / n, r = 5 + u(rng) / 2;
+                pts.push_back({10 + r * std::cos(a), 10 + r * std::sin(a)});
+            } else {
+                pts.push_back({std::round(u(rng)), std::round(u(rng))});
+            }
+        }
+        std::vector<double> bulge;
+        for (int k = 0; k < n; ++k) {
+            bool chord = (pts[size_t(k)] - pts[size_t(k + 1) % pts.size()]).norm() > 0;  // an arc needs one
+            bulge.push_back(chord && coin(rng) == 0 ? (k % 2 ? 0.7 : -0.7) : 0);
+        }
+        zone::Material m = loop(pts, bulge);
+        bool want = self_intersects_all_pairs(m.M);
+        crossing += want;
+        std::string desc;
+        for (const Elem& e : m.M)
+            desc += "(" + std::to_string(e.a.x()) + "," + std::to_string(e.a.y()) + (e.arc ? " arc" : "") + ") ";
+        ASSERT_EQ(geom::self_intersects(m.M), want) << "case " << t << ": " << desc;
+    }
+    EXPECT_GT(crossing, 500);
+    EXPECT_LT(crossing, 2900);
+}
