@@ -27,6 +27,8 @@ fi
 # working copy (libFuzzer writes them to the current directory by default).
 artifacts=$(dirname "$bin")/fuzz-artifacts/
 mkdir -p "$artifacts"
-"$bin" -artifact_prefix="$artifacts" -max_total_time="$secs" -timeout=10 -rss_limit_mb=2048 -max_len=4096 \
+dict=()
+[ "$kind" = programs ] && dict=(-dict="$here/num.dict")
+"$bin" "${dict[@]}" -artifact_prefix="$artifacts" -max_total_time="$secs" -timeout=10 -rss_limit_mb=2048 -max_len=4096 \
     -print_final_stats=1 "$corpus" 2>&1 | tail -n 15
 echo "fuzz smoke: no crash in ${secs}s"
