@@ -52,10 +52,10 @@ void BM_ParseBlock(benchmark::State& st) {
 }
 BENCHMARK(BM_ParseBlock);
 
-void BM_RunProgram(benchmark::State& st) {
+// Loads and runs the text on the machine once per iteration; items: st.range(0).
+void run_each_iteration(benchmark::State& st, const char* machine, const std::string& text) {
     MachineProfile m;
-    builtin_machine("mill", m);
-    const std::string text = program(int(st.range(0)));
+    builtin_machine(machine, m);
     struct Null final : MachineSink {} sink;
     for (auto _ : st) {
         ProgramMemory mem;
@@ -68,6 +68,8 @@ void BM_RunProgram(benchmark::State& st) {
     }
     st.SetItemsProcessed(st.iterations() * st.range(0));
 }
+
+void BM_RunProgram(benchmark::State& st) { run_each_iteration(st, "mill", program(int(st.range(0)))); }
 BENCHMARK(BM_RunProgram)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
 
 // G64 on a rough stock of n points (a wavy bar, 0.5 mm deep in diameter) over a
@@ -89,22 +91,7 @@ std::string g64_program(int n) {
     return s;
 }
 
-void BM_G64LongStock(benchmark::State& st) {
-    MachineProfile m;
-    builtin_machine("lathe", m);
-    const std::string text = g64_program(int(st.range(0)));
-    struct Null final : MachineSink {} sink;
-    for (auto _ : st) {
-        ProgramMemory mem;
-        Diag d;
-        mem.load_text("bench.iso", text, d);
-        Interpreter in(m, mem, sink);
-        in.start(mem.first());
-        in.run_to_end();
-        benchmark::DoNotOptimize(in.seconds());
-    }
-    st.SetItemsProcessed(st.iterations() * st.range(0));
-}
+void BM_G64LongStock(benchmark::State& st) { run_each_iteration(st, "lathe", g64_program(int(st.range(0)))); }
 BENCHMARK(BM_G64LongStock)->Arg(500)->Arg(2000)->Arg(8000)->Unit(benchmark::kMillisecond);
 
 }  // namespace
