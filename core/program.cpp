@@ -220,6 +220,22 @@ std::string program_text(const ProgramText& p) {
     return std::string(all.substr(h, p.end - h));
 }
 
+ProgramMemory ProgramMemory::clone() const {
+    ProgramMemory out;
+    std::vector<std::pair<const std::string*, std::shared_ptr<std::string>>> copies;
+    for (const auto& p : progs_) {
+        auto q = std::make_unique<ProgramText>(*p);
+        auto it = std::find_if(copies.begin(), copies.end(), [&](const auto& c) { return c.first == p->text.get(); });
+        if (it == copies.end()) {
+            copies.push_back({p->text.get(), std::make_shared<std::string>(*p->text)});
+            it = copies.end() - 1;
+        }
+        q->text = it->second;
+        out.progs_.push_back(std::move(q));
+    }
+    return out;
+}
+
 const ProgramText* ProgramMemory::create(int number) {
     if (find(number)) return nullptr;
     auto p = std::make_unique<ProgramText>();

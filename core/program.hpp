@@ -68,6 +68,8 @@ public:
     bool replace(int number, std::string name, std::string text, Diag& d);
 
     const ProgramText* find(int number) const;
+    // A deep copy (the TEST mode's): programs that shared a text share its copy.
+    ProgramMemory clone() const;
 
     // G76+ H (program-flow.md §6.1): adds the empty program %number. nullptr if
     // a program with that number is in memory.

@@ -176,7 +176,11 @@ bool Sim::cycle_start(std::string& why) {
             RunOptions o = in_->options();
             o.require_homing = false;
             new_path(in_->program_pos());
-            test_ = std::make_unique<Interpreter>(m_, mem_, path_ ? static_cast<MachineSink&>(*path_) : *null_, o);
+            // TEST changes nothing: its own correctors, frames, variables and
+            // program memory (a G76+/G76- it runs edits a copy).
+            test_.reset();
+            test_mem_ = std::make_unique<ProgramMemory>(mem_.clone());
+            test_ = std::make_unique<Interpreter>(m_, *test_mem_, path_ ? static_cast<MachineSink&>(*path_) : *null_, o);
             for (int d = 0; d < 256; ++d) test_->corrector(d) = in_->corrector(d);
             test_->frames_mut() = in_->frames();
             test_->start(selected_);

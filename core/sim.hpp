@@ -163,6 +163,7 @@ private:
     const MachineProfile& m_;
     ProgramMemory& mem_;
     std::unique_ptr<Interpreter> in_;
+    std::unique_ptr<ProgramMemory> test_mem_;  // TEST's copy of the programs (before test_)
     std::unique_ptr<Interpreter> test_;  // TEST mode: a second interpreter, no motion
     std::unique_ptr<MachineSink> null_;
     Toolpath* path_ = nullptr;

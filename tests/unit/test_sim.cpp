@@ -179,3 +179,26 @@ TEST(Sim, SearchThatFindsNothingSaysSo) {
     EXPECT_EQ(k.sim->state(), RunState::idle);
     EXPECT_NE(k.sim->message().find("N99 is not in the program"), std::string::npos);
 }
+
+TEST(Sim, TestModeEditsACopyOfTheProgramsAndAutoThenRuns) {
+    // TEST changes nothing: a G76+ it runs writes into a copy, so AUTO after it
+    // creates %501 itself (not error 1005) and the memory then holds it once.
+    Machine k("%500\nN10 G76+ H501\nN20 G76+ H501 N0 N10 G0 X4\nN30 G77 H501\nN40 G76- N40 +1\nN50 G0 Y9\nN60 M2\n");
+    std::string why;
+    ASSERT_TRUE(k.sim->set_mode(Mode::test, why)) << why;
+    k.start();
+    k.settle();
+    ASSERT_EQ(k.sim->state(), RunState::ended) << k.sim->message();
+    EXPECT_EQ(k.mem.find(501), nullptr);
+    EXPECT_TRUE(k.mem.take_changed().empty());
+    EXPECT_NE(std::string(k.mem.find(500)->body()).find("N50 G0 Y9"), std::string::npos);
+    ASSERT_TRUE(k.sim->set_mode(Mode::automatic, why)) << why;
+    k.start();
+    k.settle();
+    ASSERT_EQ(k.sim->state(), RunState::ended) << k.sim->message();
+    ASSERT_NE(k.mem.find(501), nullptr);
+    EXPECT_EQ(std::string(k.mem.find(501)->body()), "N10 G0 X4\n");
+    EXPECT_EQ(std::string(k.mem.find(500)->body()).find("N50"), std::string::npos);  // G76- took it
+    EXPECT_NEAR(k.sim->op()[X], 4, 1e-9);
+    EXPECT_NEAR(k.sim->op()[Y], 0, 1e-9);
+}
