@@ -211,7 +211,7 @@ bool Interpreter::transfer(const Plan& p) {
                        false;
             value.resize(width, ' ');
             text.replace(field, width, value);
-            mem_.mark_changed(target->number);
+            if (mem_.find(target->number) == target) mem_.mark_changed(target->number);  // not an IMD fragment
         }
         pos = eol + 1;
     }

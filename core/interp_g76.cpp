@@ -121,12 +121,12 @@ bool Interpreter::edit_program(const Block& b, const Plan& p) {
     const char sign = p.g76_sign;
     const std::string g76 = std::string("G76") + sign;
     // The block holds nothing else: its label, G76±, H and the pointed N.
-    size_t g76_at = 0;
+    size_t g76_at = b.words.size();  // none yet
     for (size_t i = 0; i < b.words.size(); ++i) {
         const Word& w = b.words[i];
         if (w.addr == addr1('G') && w.gsign) g76_at = i;
         bool label = i == 0 && w.addr == addr1('N') && b.n >= 0;
-        bool arg = g76_at && i > g76_at && (w.addr == addr1('H') || w.addr == addr1('N'));
+        bool arg = g76_at < i && (w.addr == addr1('H') || w.addr == addr1('N'));
         if (!label && i != g76_at && !arg)
             return fail(3, g76 + " takes only H.. and N.. [+k] (the block must hold nothing else)",
                         w.col),
@@ -177,6 +177,8 @@ bool Interpreter::edit_program(const Block& b, const Plan& p) {
         return fail(25, g76 + " H" + std::to_string(p.g76_h) + ": no program %" +
                             std::to_string(p.g76_h)),
                false;
+    if (mem_.find(t->number) != t)  // an IMD fragment is not a program of the memory
+        return fail(25, g76 + " without H edits the program that runs: in IMD, give the program H"), false;
     if (sign == '-' && !b.g76_block.empty())
         return fail(3, "G76- takes nothing after N.. [+k]", b.g76_block_col), false;
     const long n = p.g76_n[0];

@@ -136,6 +136,10 @@ TEST(G76Plus, TheBlockHoldsOnlyTheEdit) {
     EXPECT_EQ(Prog("%1\nN10 G0 G76+ H300\nN20 M2\n").error(), 3);
     EXPECT_EQ(Prog("%1\nN10 G76+\nN20 M2\n").error(), 2);
     EXPECT_EQ(Prog("%1\nN10 G76- N10 G0 X1\nN20 M2\n").error(), 3);
+    // Blocks without a label of their own.
+    Prog p("%1\nG76+ H300\nG76+ H300 N0 G0 X1\nG76- N20\nN20 G0 X5\nG77 H300\nM2\n");
+    EXPECT_EQ(p.error(), 0) << first_error(p).detail;
+    EXPECT_EQ(xs(p), std::vector<double>{1});
 }
 
 TEST(G76Minus, DeletesTheBlockKLinesAfterThePointedOne) {

@@ -202,3 +202,24 @@ TEST(Sim, TestModeEditsACopyOfTheProgramsAndAutoThenRuns) {
     EXPECT_NEAR(k.sim->op()[X], 4, 1e-9);
     EXPECT_NEAR(k.sim->op()[Y], 0, 1e-9);
 }
+
+TEST(Sim, G76InImdNeedsTheProgramH) {
+    // An IMD fragment is not a program of the memory: G76+ N.. there names H.
+    Machine k("%500\nN10 G0 X1\nN20 M2\n");
+    std::string why;
+    ASSERT_TRUE(k.sim->set_mode(Mode::imd, why)) << why;
+    ASSERT_TRUE(k.sim->imd("G76+ N10 G0 X2", why)) << why;
+    k.start();
+    k.settle();
+    ASSERT_EQ(k.sim->state(), RunState::alarm);
+    EXPECT_EQ(k.sim->alarms().back().diag.code, 25) << k.sim->alarms().back().diag.detail;
+    EXPECT_TRUE(k.mem.take_changed().empty());
+    k.sim->raz();
+    ASSERT_TRUE(k.sim->set_mode(Mode::imd, why)) << why;
+    ASSERT_TRUE(k.sim->imd("G76+ H500 N10 G0 X2", why)) << why;
+    k.start();
+    k.settle();
+    EXPECT_NE(k.sim->state(), RunState::alarm);
+    EXPECT_EQ(std::string(k.mem.find(500)->body()), "N10 G0 X1\nG0 X2\nN20 M2\n");
+    EXPECT_EQ(k.mem.take_changed(), std::vector<int>{500});
+}
