@@ -290,6 +290,25 @@ modif)
     cmd ":page op"
     [ "$(op_value X)" = "56.000" ] || fail "the changed block should have moved X to 56"
     ;;
+g76)
+    # A program that writes a program: the new %761 runs, shows in DIR and is
+    # in the store after the session, its revision named after G76.
+    "$bin" import "$(dirname "$0")/../console/programs/g76_writes.iso" >/dev/null || fail "import"
+    start --machine mill
+    pom
+    cmd ":load 760"
+    cmd ":mode auto"
+    keys F9
+    wait_for '^ AUTO +%760 .*END' 20
+    cmd ":page op"
+    [ "$(op_value X)" = "42.500" ] || fail "%761 should have moved X to 42.5"
+    keys F6
+    wait_for '%761'
+    cmd ":quit"
+    wait_for '^EXIT=0'
+    "$bin" export 761 | grep -q '^N10 G0 X42.5 Y5 Z10$' || fail "the store does not hold %761"
+    "$bin" history 761 | grep -q 'G76 in %760' || fail "the revision does not name G76"
+    ;;
 graph)
     # The toolpath drawn in braille: after TEST, zoomed, then live in AUTO
     # with the tool marker moving.
