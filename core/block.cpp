@@ -426,7 +426,7 @@ struct Parser {
                 if (c == 'O') return fail(1, pos, "the letter O is not an ISO address (did you mean 0?)");
                 if (!word(c)) return false;
                 if (g76_edit_ && b.words.size() > g76_edit_ && b.words.back().addr == addr1('N')) {
-                    g76_tail();
+                    if (!g76_tail()) return false;
                     break;
                 }
                 if (b.words.size() == 1 && c == 'N' && b.words[0].addr == addr1('N')) {
@@ -456,12 +456,15 @@ struct Parser {
 
     // After the pointed block of G76+/G76-: an optional "+k" line offset, then the
     // block to insert, kept as text (000:7098-7147).
-    void g76_tail() {
+    bool g76_tail() {
         size_t p = after_spaces(pos);
         if (p + 1 < s.size() && s[p] == '+' && is_digit(s[p + 1])) {
-            int k = 0;
-            ++p;
-            while (p < s.size() && is_digit(s[p]) && k < 100000) k = k * 10 + (s[p++] - '0');
+            int k = 0, digits = 0;
+            size_t at = p++;
+            while (p < s.size() && is_digit(s[p])) {
+                if (++digits > 5) return fail(1, at, "the line offset +k has more than 5 digits");
+                k = k * 10 + (s[p++] - '0');
+            }
             b.g76_k = k;
             p = after_spaces(p);
         }
@@ -470,6 +473,7 @@ struct Parser {
         b.g76_block = rest;
         b.g76_block_col = uint16_t(p + 1);
         pos = s.size();
+        return true;
     }
 
     bool in_test_ = false;

@@ -397,7 +397,7 @@ void Interpreter::after_block(int lineno) {
     while (stack_.size() > 1) {
         Frame& f = stack_.back();
         if (f.whole || lineno != f.end_line) return;
-        if (--f.repeats > 0) {
+        if (--f.repeats > 0 && !f.emptied) {
             f.pos = f.range_pos;
             f.line = f.range_line;
             return;

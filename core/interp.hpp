@@ -232,6 +232,7 @@ private:
         size_t range_pos = 0; // first block of the range
         int range_line = 0;
         int end_line = 0;     // last block of the range (inclusive)
+        bool emptied = false; // G76- deleted every line of the range: no next pass
         int repeats = 1;      // executions left, this one included
         int saved_radcomp = 40;
         int saved_dir = 5, saved_range = -1;

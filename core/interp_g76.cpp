@@ -8,8 +8,8 @@
 //   G76- deletes line k. Every line counts, comment lines included.
 // - N0 that no line carries points before the first line of the program, so
 //   "G76+ H300 N0 N10 G0 X0" writes the first block of an empty %300 (the
-//   example of the handbook is a missing figure, 000:7041).
-// - The inserted block keeps the words the handbook lists (000:7112-7115): N,
+//   example of the handbook is a missing figure, 000:7043).
+// - The inserted block keeps the words the handbook lists (000:7115): N,
 //   G, X Y Z U V W A B C, I J K, P Q R and L0-L19. An L0-L19 in a word, and the
 //   value assigned to L0-L19, are written as their value when G76+ runs (the
 //   purpose is a program writing a program from its measurements). Other words
@@ -28,7 +28,7 @@ namespace pupitre {
 namespace {
 // Shortest text of a value at `frac` decimals: 12.5, -3, 0.001.
 std::string number_text(double v, int frac) {
-    char buf[64];
+    char buf[400];  // any double at 6 decimals (a too long block is refused after)
     std::snprintf(buf, sizeof buf, "%.*f", frac, v);
     std::string s = buf;
     if (s.find('.') != std::string::npos) {
@@ -89,6 +89,11 @@ bool Interpreter::edit_block_text(const Block& b, std::string& out) {
                          : number_text(v, letter >= 'A' && letter <= 'C' ? 4 : 3);
         parts.emplace_back(w.col, std::move(t));
     }
+    // Expressions read L0-L19 only.
+    for (const Term& t : ins.terms)
+        if ((t.v.kind == Operand::LVar && t.v.index > 19) || t.v.kind == Operand::EParam ||
+            t.v.kind == Operand::EIndirect)
+            return fail(1, "G76+: only L0-L19 can give a value in an inserted block", b.g76_block_col), false;
     for (const Assign& a : ins.assigns) {
         if (a.target.kind != Operand::LVar || a.target.index > 19)
             return fail(1, "G76+: only L0-L19 can be assigned in an inserted block", col(a.col)),
@@ -106,12 +111,26 @@ bool Interpreter::edit_block_text(const Block& b, std::string& out) {
         if (i) out += ' ';
         out += parts[i].second;
     }
-    // The comments, as written.
+    // The comments, as written (parse_block saw each one closed).
     for (size_t i = raw.find('('); i != std::string_view::npos; i = raw.find('(', i)) {
         size_t close = raw.find(')', i);
+        if (close == std::string_view::npos) break;
         out += ' ';
         out += raw.substr(i, close - i + 1);
         i = close + 1;
+    }
+    // What is written must read back: the block length, the digits of each
+    // address (an L value may be too large for X).
+    Block back;
+    if (!parse_block(out, back, d))
+        return fail(d.code, "G76+: the block to insert, " + out + ": " + d.detail, b.g76_block_col), false;
+    for (const Word& w : back.words) {
+        double v;
+        if (!word_value(w, v)) {
+            diags_.back().detail = "G76+: the block to insert, " + out + ": " + diags_.back().detail;
+            diags_.back().column = b.g76_block_col;
+            return false;
+        }
     }
     out += '\n';
     return true;
@@ -120,8 +139,10 @@ bool Interpreter::edit_block_text(const Block& b, std::string& out) {
 bool Interpreter::edit_program(const Block& b, const Plan& p) {
     const char sign = p.g76_sign;
     const std::string g76 = std::string("G76") + sign;
-    // The block holds nothing else: its label, G76±, H and the pointed N.
+    if (m_.model == 1020) return fail(4, g76 + " needs a NUM 1040 or 1060 (000:555)"), false;
+    // The block holds nothing else: its label, G76±, one H and the pointed N.
     size_t g76_at = b.words.size();  // none yet
+    int hs = 0;
     for (size_t i = 0; i < b.words.size(); ++i) {
         const Word& w = b.words[i];
         if (w.addr == addr1('G') && w.gsign) g76_at = i;
@@ -131,12 +152,20 @@ bool Interpreter::edit_program(const Block& b, const Plan& p) {
             return fail(3, g76 + " takes only H.. and N.. [+k] (the block must hold nothing else)",
                         w.col),
                    false;
+        if (w.addr == addr1('H') && ++hs > 1) return fail(3, g76 + ": H written twice", w.col), false;
     }
+    if (!b.assigns.empty())
+        return fail(3, g76 + " takes only H.. and N.. [+k]: no assignment in its block", b.assigns[0].col),
+               false;
+    // It moves nothing: under G41/G42 it counts among the blocks without motion.
+    if (modal_.radcomp != 40 && ++nonmotion_in_comp_ > 2)
+        return fail(140, "more than 2 blocks in a row without motion in the plane under radius compensation"),
+               false;
     if (p.g76_nn > 1) return fail(3, g76 + " points at one block N..", b.words.back().col), false;
     const size_t quota = size_t(m_.program_memory_kb * 1024);
 
     if (p.g76_nn == 0) {
-        // Creating or deleting a whole program: H is the last word (000:7041, 7068).
+        // Creating or deleting a whole program: H is the last word (000:7037, 7068).
         if (p.g76_h < 0)
             return fail(2, g76 + " needs the program number H (" + g76 + " H300)"), false;
         if (b.words.back().addr != addr1('H'))
@@ -179,8 +208,17 @@ bool Interpreter::edit_program(const Block& b, const Plan& p) {
                false;
     if (mem_.find(t->number) != t)  // an IMD fragment is not a program of the memory
         return fail(25, g76 + " without H edits the program that runs: in IMD, give the program H"), false;
-    if (sign == '-' && !b.g76_block.empty())
-        return fail(3, "G76- takes nothing after N.. [+k]", b.g76_block_col), false;
+    if (sign == '-') {
+        std::string_view rest = b.g76_block;  // comments only
+        for (size_t i = 0; i < rest.size(); ++i) {
+            if (rest[i] == '(') {
+                size_t close = rest.find(')', i);
+                i = close == std::string_view::npos ? rest.size() : close;
+            } else if (rest[i] != ' ' && rest[i] != '\t') {
+                return fail(3, "G76- takes nothing after N.. [+k]", b.g76_block_col + int(i)), false;
+            }
+        }
+    }
     const long n = p.g76_n[0];
     const int k = std::max(b.g76_k, 0);
     std::string_view all = *t->text;
@@ -224,6 +262,9 @@ bool Interpreter::edit_program(const Block& b, const Plan& p) {
         s = mem_.splice(t, start, next_line(start) - start, {});
     }
     text_spliced(t, s);
+    // The block budget (error 1001) counts an edit as one block per kilobyte
+    // of text it moves: a loop of edits in a long program stops in seconds.
+    blocks_ += long((t->text->size() - s.at) / 1024);
     return true;
 }
 
@@ -255,7 +296,10 @@ void Interpreter::text_spliced(const ProgramText* p, const Splice& s) {
         if (f.prog->text != p->text) continue;
         move(f.pos, f.line, true);
         move(f.range_pos, f.range_line, f.whole);
-        if (!f.whole) move_line(f.end_line);
+        if (!f.whole) {
+            move_line(f.end_line);
+            if (f.range_line > f.end_line) f.emptied = true;
+        }
     }
     if (current) move_line(cur_line_);
     cur_text_ = {};

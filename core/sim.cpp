@@ -180,6 +180,7 @@ bool Sim::cycle_start(std::string& why) {
             // program memory (a G76+/G76- it runs edits a copy).
             test_.reset();
             test_mem_ = std::make_unique<ProgramMemory>(mem_.clone());
+            lc_ = LineCache{};
             test_ = std::make_unique<Interpreter>(m_, *test_mem_, path_ ? static_cast<MachineSink&>(*path_) : *null_, o);
             for (int d = 0; d < 256; ++d) test_->corrector(d) = in_->corrector(d);
             test_->frames_mut() = in_->frames();
@@ -664,14 +665,16 @@ void Sim::advance(double dt, long max_blocks) {
 
 const ProgramText* Sim::text_of(int prog) const {
     if (prog == 0 && imd_ && mode_ == Mode::imd) return imd_.get();
-    return mem_.find(prog);
+    // TEST shows its own copy, as its G76+/G76- left it.
+    return (mode_ == Mode::test && test_mem_ ? *test_mem_ : mem_).find(prog);
 }
 
 std::string_view Sim::line_of(const ProgramText* p, int line) const {
     if (!p || line < p->first_line) return {};
     std::string_view all = *p->text;
-    if (lc_.p != p || lc_.generation != mem_.generation())
-        lc_ = LineCache{p, p->first_line, p->begin, mem_.generation()};
+    // Both memories' generations only grow; a new TEST copy resets the cache.
+    const uint64_t generation = mem_.generation() + (test_mem_ ? test_mem_->generation() : 0);
+    if (lc_.p != p || lc_.generation != generation) lc_ = LineCache{p, p->first_line, p->begin, generation};
     while (lc_.line > line) {  // backwards from the cached line, not from the top
         size_t prev = lc_.offset >= 2 ? all.rfind('\n', lc_.offset - 2) : std::string_view::npos;
         lc_.offset = prev == std::string_view::npos || prev + 1 < p->begin ? p->begin : prev + 1;

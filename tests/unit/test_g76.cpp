@@ -118,7 +118,7 @@ TEST(G76Plus, PlusKCountsLinesFromThePointedBlock) {
 }
 
 TEST(G76Plus, OnlyTheWordsTheHandbookListsCanBeInserted) {
-    // 000:7112-7115: N G X Y Z U V W A B C I J K P Q R L0-L19.
+    // 000:7115: N G X Y Z U V W A B C I J K P Q R L0-L19.
     EXPECT_EQ(Prog("%1\nN10 G76+ N10 G1 X1 F200\nN20 M2\n").error(), 1);
     EXPECT_EQ(Prog("%1\nN10 G76+ N10 M3\nN20 M2\n").error(), 1);
     EXPECT_EQ(Prog("%1\nN10 G76+ N10 X L100\nN20 M2\n").error(), 1);
@@ -143,7 +143,7 @@ TEST(G76Plus, TheBlockHoldsOnlyTheEdit) {
 }
 
 TEST(G76Minus, DeletesTheBlockKLinesAfterThePointedOne) {
-    // The handbook's example (printed with G76+, 000:7158): N120 of %120 goes.
+    // The handbook's example (printed with G76+, 000:7167): N120 of %120 goes.
     Prog p(
         "%100\nN100 G76- H120 N100 +2\nN110 G77 H120\nN120 M2\n%120\nN100 G0 X1\nN110 G0 X2\nN120 "
         "G0 X3\nN130 G0 X4\n");
@@ -198,4 +198,66 @@ TEST(G76Plus, TheProgramMemoryQuotaIsError36) {
     builtin_machine("mill", m);
     EXPECT_EQ(p.error(), 36);
     EXPECT_LE(p.mem.size(), size_t(m.program_memory_kb * 1024));
+}
+
+// ---- the review's cases ----
+
+TEST(G76Minus, ARepeatedRangeWhoseLinesAreAllDeletedEnds) {
+    // G77 N100 N100 S2 whose only block deletes itself: the second pass runs
+    // nothing and the caller goes on (it used to run the text after the range).
+    Prog p("%1\nN10 G77 N100 N100 S2\nN20 G0 X20\nN30 M2\nN100 G76- N100\nN110 G0 X99\nN120 M2\n");
+    ASSERT_EQ(p.error(), 0) << first_error(p).detail;
+    EXPECT_EQ(xs(p), std::vector<double>{20});
+}
+
+TEST(G76Plus, AValueTheBlockCannotHoldIsRefusedAtTheG76Block) {
+    // X takes 5 integer digits; a block takes 117 characters.
+    Prog a("%1\nN5 L1=123456789\nN10 G76+ N10 G0 XL1\nN20 M2\n");
+    EXPECT_EQ(a.error(), 1);
+    EXPECT_EQ(first_error(a).n, 10);
+    const std::string huge = "N5 L1=-99999*99999*99999*99999*99999*99999*99999*99999*99999*99999*99999*99999\n";
+    Prog b("%1\n" + huge + "N10 G76+ N10 L3=L1 L4=L1\nN20 M2\n");  // 2 x 63 digits
+    EXPECT_EQ(b.error(), 1);
+    EXPECT_EQ(first_error(b).n, 10);
+    EXPECT_EQ(body(b, 1), huge + "N10 G76+ N10 L3=L1 L4=L1\nN20 M2\n");  // nothing written
+    // One of them fits, written in full (not cut by a short buffer).
+    Prog c("%1\n" + huge + "N10 G76+ N10 L3=L1\nN20 M2\n");
+    ASSERT_EQ(c.error(), 0) << first_error(c).detail;
+    EXPECT_DOUBLE_EQ(c.L(3), c.L(1));
+    EXPECT_EQ(Prog("%1\nN10 G76+ N10 L3=L100+E80000\nN20 M2\n").error(), 1);
+    EXPECT_EQ(Prog("%1\nN10 G76+ N10 +123456 G0 X1\nN20 M2\n").error(), 1);
+}
+
+TEST(G76Minus, ACommentMayFollowThePointedBlock) {
+    Prog p("%1\nN10 G76- N20 (DELETE N20)\nN20 G0 X7\nN30 G0 X1\nN40 M2\n");
+    ASSERT_EQ(p.error(), 0) << first_error(p).detail;
+    EXPECT_EQ(xs(p), std::vector<double>{1});
+}
+
+TEST(G76Plus, TheBlockTakesNoAssignmentAndOneH) {
+    EXPECT_EQ(Prog("%1\nN10 L1=5 G76+ N20 G0 XL1\nN20 M2\n").error(), 3);
+    EXPECT_EQ(Prog("%1\nN10 G76- H2 L1=3\nN20 M2\n%2\nN1 G0 X1\n").error(), 3);
+    EXPECT_EQ(Prog("%1\nN10 G76- H2 H3\nN20 M2\n%2\nN1 G0 X1\n%3\nN1 G0 X1\n").error(), 3);
+}
+
+TEST(G76Plus, BlocksWithoutMotionUnderCompensationAreCounted) {
+    // Three G76 blocks in a row under G41 are three blocks without motion (140).
+    Prog p("%1\nN10 G0 X0 Y0 Z0\nN20 G1 G41 X10 Y0 F100\nN30 G76+ H5\nN40 G76+ H6\nN50 G76+ H7\n"
+           "N60 X20\nN70 G40 X30\nN80 M2\n",
+           "mill", {{"D1.R", 2}});
+    EXPECT_EQ(p.error(), 140);
+    EXPECT_EQ(first_error(p).n, 50);
+}
+
+TEST(G76Plus, ALoopOfEditsInALongProgramMeetsTheBlockBudget) {
+    // Each edit counts a block per kilobyte it moves: 9,000 lines behind the
+    // loop (about 230 KB, within the memory) end it long before 200,000 plain
+    // blocks would.
+    std::string text = "%1\nN10 G76+ N10 G0 X1\nN20 G76- N10 +1\nN30 G79 N10\n";
+    for (int i = 0; i < 9000; ++i) text += "N" + std::to_string(1000 + i) + " G0 X2 Y3 (FILLER)\n";
+    RunOptions o;
+    o.max_blocks = 200000;
+    Prog p(text, "mill", {}, o);
+    EXPECT_EQ(p.error(), 1001);
+    EXPECT_LT(p.cap.moves.size(), 1000u);
 }
