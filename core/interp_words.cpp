@@ -236,6 +236,10 @@ bool Interpreter::decode(const Block& b, Plan& p) {
                 fail(4, "G77 -i needs a NUM 1040 or 1060", w.col);
                 return false;
             }
+            if (g == 79 && w.gsign && m_.model == 1020) {
+                fail(4, std::string("G79") + w.gsign + " needs a NUM 1040 or 1060 (000:560)", w.col);
+                return false;
+            }
             if (g == 79 && w.gsign) p.g79_sign = w.gsign;
             if (g == 76) p.g76_sign = w.gsign;
             owner = gc->args.empty() ? nullptr : gc;
