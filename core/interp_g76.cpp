@@ -1,6 +1,7 @@
-// G76+ and G76-: a program that creates and deletes programs, and inserts and
-// deletes blocks, in the program memory (program-flow.md §6.1-6.4, from the
-// handbook 000:7018-7170). The changes live in memory: `pupitre run` never
+// The G76 family: G76 writes the current L/E values into a program's text;
+// G76+ and G76- are a program that creates and deletes programs, and inserts
+// and deletes blocks, in the program memory (program-flow.md §6, from the
+// handbook 000:7018-7170, 7679-7735). The changes live in memory: `pupitre run` never
 // writes its files, the console stores them as revisions.
 //
 // Decisions where the handbook is silent (man/pupitre-iso.5, G76+ AND G76-):
@@ -43,6 +44,86 @@ bool listed_word(char c) {
     return std::string_view("NGXYZUVWABCIJKPQR").find(c) != std::string_view::npos;
 }
 }  // namespace
+
+// G76 [H..] [N.. N..]: writes the current values of the L and E assignments that
+// open the blocks of a program (or a range of it) into their reserved fields of
+// at least 10 characters (000:7679-7735, program-flow.md §6.5). The text keeps its
+// length, so labels and positions stay valid.
+bool Interpreter::transfer(const Plan& p) {
+    const ProgramText* target = stack_.back().prog;
+    if (p.g76_h >= 0 && !(target = mem_.find(p.g76_h)))
+        return fail(25, "G76 H" + std::to_string(p.g76_h) + ": program %" + std::to_string(p.g76_h) +
+                            " is not in memory"),
+               false;
+    size_t from = target->begin, to = target->end;
+    if (p.g76_nn > 0) {
+        const Label* a = target->find_label(p.g76_n[0]);
+        const Label* b = target->find_label(p.g76_nn > 1 ? p.g76_n[1] : p.g76_n[0]);
+        if (!a || !b)
+            return fail(25, "G76: block N" + std::to_string(!a ? p.g76_n[0] : p.g76_n[1]) + " not found"), false;
+        if (b->offset < a->offset) std::swap(a, b);
+        from = a->offset;
+        to = std::min(target->end, target->text->find('\n', b->offset));
+    }
+    std::string& text = *target->text;
+    auto upper = [](char c) { return c >= 'A' && c <= 'Z'; };
+    auto digit = [](char c) { return c >= '0' && c <= '9'; };
+    size_t pos = from;
+    while (pos < to) {
+        size_t eol = std::min(to, text.find('\n', pos));
+        size_t i = pos;
+        auto spaces = [&]() {
+            while (i < eol && (text[i] == ' ' || text[i] == '\t')) ++i;
+        };
+        spaces();
+        if (i < eol && text[i] == '/') ++i;
+        spaces();
+        if (i < eol && text[i] == 'N' && i + 1 < eol && (digit(text[i + 1]) || text[i + 1] == ' ')) {
+            ++i;
+            spaces();
+            while (i < eol && digit(text[i])) ++i;
+        }
+        for (;;) {
+            spaces();
+            if (i + 1 >= eol || (text[i] != 'L' && text[i] != 'E') || !digit(text[i + 1])) break;
+            bool is_l = text[i] == 'L';
+            ++i;
+            long n = 0;
+            while (i < eol && digit(text[i])) n = n * 10 + (text[i++] - '0');
+            spaces();
+            if (i >= eol || text[i] != '=')
+                return fail(97, "G76: no '=' after " + std::string(is_l ? "L" : "E") + std::to_string(n)), false;
+            size_t field = ++i;
+            while (i < eol && !upper(text[i]) && text[i] != '(' && text[i] != '\r') ++i;
+            size_t width = i - field;
+            if (width < 10)
+                return fail(97, "G76: fewer than 10 characters reserved after " + std::string(is_l ? "L" : "E") +
+                                    std::to_string(n) + "="),
+                       false;
+            std::string value;
+            if (is_l) {
+                if (!LVars::valid(int(n))) return fail(91, "G76: L" + std::to_string(n) + " does not exist"), false;
+                value = number_text(l_.v[size_t(n)], 6);
+            } else {
+                int64_t raw;
+                std::string why;
+                if (int rc = read_e(int(n), raw, why)) return fail(rc, "G76: " + why), false;
+                value = std::to_string(raw);
+            }
+            // Keep the separating space before the next word.
+            size_t room = (i < eol && upper(text[i])) ? width - 1 : width;
+            if (value.size() > room)
+                return fail(97, "G76: the value " + value + " does not fit the field after " +
+                                    std::string(is_l ? "L" : "E") + std::to_string(n)),
+                       false;
+            value.resize(width, ' ');
+            text.replace(field, width, value);
+            if (mem_.find(target->number) == target) mem_.mark_changed(target->number);  // not an IMD fragment
+        }
+        pos = eol + 1;
+    }
+    return true;
+}
 
 // The text of the block G76+ inserts, values of L0-L19 written in.
 bool Interpreter::edit_block_text(const Block& b, std::string& out) {
