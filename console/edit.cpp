@@ -182,9 +182,7 @@ Effect Session::modif_start() {
         return Effect::redraw;
     }
     // The program's own text with its header: lines keep their numbers.
-    std::string text(*p->text, 0, p->end);
-    size_t head = text.rfind('\n', p->begin >= 2 ? p->begin - 2 : 0);
-    text = text.substr(head == std::string::npos || p->begin < 2 ? 0 : head + 1);
+    std::string text = program_text(*p);
     int first_file_line = p->first_line - 1;  // the % line
     editor.open(p->number, text, 0, false);
     editor.revision = 0;

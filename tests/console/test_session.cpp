@@ -664,3 +664,30 @@ TEST(G76, ProgramsAProgramCreatesAndDeletesAreStored) {
     }
     wipe();
 }
+
+TEST(G76, UnderMemoryProtectionTheChangesStayInMemory) {
+    std::string path = ::testing::TempDir() + "/g76_protect_" + std::to_string(::getpid()) + ".db";
+    auto wipe = [&] {
+        for (const char* ext : {"", "-wal", "-shm", "-journal"}) std::remove((path + ext).c_str());
+    };
+    wipe();
+    {
+        auto opened = store::Store::open(path);
+        ASSERT_FALSE(opened.error) << opened.error.message;
+        ASSERT_FALSE(opened.value->save(500, "%500\nN10 G76+ H501\nN20 M2\n", store::kNew, "test").error);
+        Console c("mill", {}, std::move(opened.value));
+        c.type(":protect on");
+        c.type(":mode pom");
+        c.named("F9");
+        c.run_until_settled();
+        c.type(":mode auto");
+        c.type(":load 500");
+        c.named("F9");
+        c.run_until_settled();
+        ASSERT_EQ(c.s->sim().state(), RunState::ended) << c.message();
+        EXPECT_NE(c.s->memory().find(501), nullptr);
+        EXPECT_NE(c.message().find("memory protection is on"), std::string::npos) << c.message();
+        EXPECT_TRUE(c.s->store()->read(501).error);  // not stored
+    }
+    wipe();
+}
