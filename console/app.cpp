@@ -138,8 +138,12 @@ int console(const ConsoleArgs& a) {
     MachineProfile m;
     if (!console_machine(a, *st, m)) return kUsage;
     console::Theme theme;
-    if (!console::parse_theme(a.theme, theme)) {
-        std::fprintf(stderr, "pupitre: unknown theme '%s' (colour, mono, phosphor)\n", a.theme.c_str());
+    // NO_COLOR (no-color.org): set and not empty, the console is mono unless
+    // --theme asks for colours.
+    const char* no_color = std::getenv("NO_COLOR");
+    std::string theme_name = !a.theme.empty() ? a.theme : no_color && *no_color ? "mono" : "colour";
+    if (!console::parse_theme(theme_name, theme)) {
+        std::fprintf(stderr, "pupitre: unknown theme '%s' (colour, mono, phosphor)\n", theme_name.c_str());
         return kUsage;
     }
     if (!isatty(STDIN_FILENO) || !isatty(STDOUT_FILENO)) {

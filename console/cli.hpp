@@ -45,7 +45,7 @@ bool load_machine(const std::string& name, MachineProfile& m);
 struct ConsoleArgs {
     std::string db;
     std::string machine;        // "" = the last one used, else lathe
-    std::string theme = "colour";
+    std::string theme;  // empty: colour, or mono when NO_COLOR is set (no-color.org)
     bool ascii = false;         // no UTF-8 line drawing even on a UTF-8 terminal
 };
 int console(const ConsoleArgs& a);

@@ -124,8 +124,13 @@ Effect Session::command(std::string_view text) {
     }
     if (cmd == "cycle") {
         if (!modif_apply()) return Effect::redraw;
-        if (!sim().cycle_start(why)) say(why, true);
-        else if (!sim().message().empty()) say(sim().message());
+        if (!sim().cycle_start(why)) {
+            say(why, true);
+            return Effect::redraw;
+        }
+        // The run's end is news even when it comes within one frame ("max").
+        last_state_ = sim().state();
+        if (!sim().message().empty()) say(sim().message());
         else if (sim().selected() >= 0 && (sim().mode() == Mode::automatic || sim().mode() == Mode::single ||
                                            sim().mode() == Mode::dry || sim().mode() == Mode::test))
             say("Cycle Start: %" + std::to_string(sim().selected()) + " in " + std::string(mode_name(sim().mode())));

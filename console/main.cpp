@@ -37,7 +37,7 @@ int main(int argc, char** argv) {
     app.add_option("--machine", ca.machine,
                    "the console's machine: lathe, mill, mill4, mill5, a stored profile or a .machine file "
                    "(default: the last one used, else lathe)");
-    app.add_option("--theme", ca.theme, "the console's colours: colour, mono or phosphor (default colour)");
+    app.add_option("--theme", ca.theme, "the console's colours: colour, mono or phosphor (default colour; mono when NO_COLOR is set)");
     app.add_flag("--ascii", ca.ascii, "draw the console with ASCII only, even on a UTF-8 terminal");
 
     cli::RunArgs ra;

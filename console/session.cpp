@@ -75,6 +75,7 @@ void Session::refresh_dir() {
 void Session::say(std::string text, bool error) {
     message_ = std::move(text);
     message_error_ = error;
+    if (error) ++refusals_;
 }
 
 void Session::show_page(pages::PageId p) {
@@ -146,12 +147,68 @@ Effect Session::submit(const std::string& raw) {
     return plain_text(std::string(line));
 }
 
-// Text that is not a command goes to the mode or the page (DESIGN §2.5).
+Session::Target Session::target() const {
+    switch (page) {
+        case pages::PageId::edit: return Target::edit;
+        case pages::PageId::pref: return Target::pref;
+        case pages::PageId::corr: return Target::corr;
+        case pages::PageId::param: return Target::param;
+        default: break;
+    }
+    switch (sim_->mode()) {
+        case Mode::imd: return Target::imd;
+        case Mode::rns: return Target::rns;
+        case Mode::inc: return Target::inc;
+        default: return Target::other;
+    }
+}
+
+std::string Session::prompt() const {
+    if (!pending_confirm.empty()) return "y/n> ";
+    switch (target()) {
+        case Target::edit: return modify_pending ? "MODIFY> " : modif ? "MODIF> " : "EDIT> ";
+        case Target::pref: return "PREF> ";
+        case Target::corr: return "D" + std::to_string(corr_cursor) + "> ";
+        case Target::param: return "L/E= ";
+        case Target::imd: return "IMD> ";
+        case Target::rns: return "RNS N> ";
+        case Target::inc: return "INC> ";
+        case Target::other: break;
+    }
+    return "> ";
+}
+
+// Text that is not a command goes where the prompt says (target()): the page
+// when it takes text, whatever the mode, else the mode. An entry that is
+// refused drops the IMD block waiting for Cycle Start, so that Cycle Start
+// never runs an older block than the one the operator believes typed.
 Effect Session::plain_text(const std::string& text) {
+    if (!pending_confirm.empty()) {
+        std::string answer = text;
+        for (char& c : answer) c = char(std::tolower(static_cast<unsigned char>(c)));
+        auto run = std::move(on_confirm);
+        pending_confirm.clear();
+        on_confirm = nullptr;
+        if (answer == "y" || answer == "yes" || answer == "o" || answer == "oui") run();
+        else say("cancelled: nothing changed");
+        return Effect::redraw;
+    }
+    long before = refusals_;
+    Effect e = route_text(text);
+    if (refusals_ != before && sim_->mode() == Mode::imd && !sim_->in_cycle() && sim_->drop_imd())
+        message_ = "IMD block dropped: " + message_;
+    return e;
+}
+
+Effect Session::route_text(const std::string& text) {
     std::string_view t = text;
-    // The setting pages and the editor take what is typed on them, whatever the mode.
-    if (page == pages::PageId::pref || page == pages::PageId::corr) return setting_text(t);
-    if (page == pages::PageId::edit) return edit_text(text);
+    switch (target()) {
+        case Target::pref:
+        case Target::corr: return setting_text(t);
+        case Target::edit: return edit_text(text);
+        case Target::param: return set_value(t);
+        default: break;
+    }
     if (sim_->mode() == Mode::imd) {
         if (sim_->interp().modal().modif_inhibited) {
             say("M999 is in force: IMD and MODIF are forbidden until M998", true);
@@ -166,8 +223,7 @@ Effect Session::plain_text(const std::string& text) {
         say("IMD: Cycle Start (F9) executes: " + text);
         return Effect::redraw;
     }
-    if (page == pages::PageId::param || (sim_->mode() != Mode::imd && t.find('=') != std::string_view::npos))
-        return set_value(t);
+    if (t.find('=') != std::string_view::npos) return set_value(t);
     long n;
     if (sim_->mode() == Mode::rns) {
         std::string_view w = t;
@@ -304,10 +360,7 @@ pages::View Session::view() const {
     v.message = message_;
     v.message_error = message_error_;
     Mode m = sim_->mode();
-    v.prompt = m == Mode::imd ? "IMD> " : m == Mode::rns ? "RNS N> " : m == Mode::inc ? "INC> " : "> ";
-    if (page == pages::PageId::param && m != Mode::imd) v.prompt = "L/E= ";
-    if (page == pages::PageId::pref && m != Mode::imd) v.prompt = "PREF> ";
-    if (page == pages::PageId::corr && m != Mode::imd) v.prompt = "D" + std::to_string(corr_cursor) + "> ";
+    v.prompt = prompt();
     v.input = input_.text();
     v.input_cursor = input_.cursor();
     v.speed = speed == Speed::real ? "x1" : speed == Speed::x10 ? "x10" : "max";
@@ -352,7 +405,6 @@ pages::View Session::view() const {
         v.edit_modif = modif;
         v.edit_modify = modify_pending;
     }
-    if (page == pages::PageId::edit) v.prompt = modify_pending ? "MODIFY> " : modif ? "MODIF> " : "EDIT> ";
     v.graph = graph;
     v.graph.path = &path_;
     if (!graph_plane_chosen && !path_.empty()) v.graph.plane = path_.default_plane();

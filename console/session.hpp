@@ -3,6 +3,7 @@
 // Session exactly as the terminal does (DESIGN §1, STYLE.md).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -75,7 +76,11 @@ public:
     // CORR pages, touch-off, tool measurement, undo, memory protection.
     // Values in mm as --set names them (X of origins and gauges a radius).
     bool apply_setting(const std::string& name, double value, const std::string& source);
-    Effect touch(int axis, double surface);
+    Effect touch(int axis, double surface);  // asks first with no corrector (D0)
+    Effect touch_now(int axis, double surface);
+    bool implausible_gauge(const std::string& name, double value, std::string& why) const;
+    void confirm(std::string question, std::function<void()> then);
+    void echo_comma(std::string_view typed, double v);
     Effect measure(int d, int axis, double surface);
     Effect undo();
     Effect protect_command(std::string_view args);
@@ -106,8 +111,18 @@ public:
     // Completion of the word before the cursor: G/M codes and commands.
     std::vector<std::string> complete(std::string_view word) const;
 
+    // Where text typed on the input line goes (DESIGN §2.5): the page when it
+    // takes text (editor, PREF, CORR, PARAM), else the mode. The prompt names it.
+    enum class Target { edit, pref, corr, param, imd, rns, inc, other };
+    Target target() const;
+    std::string prompt() const;
+    // A plausible-but-doubtful setting waits for "y" on the input line.
+    std::string pending_confirm;  // what is asked; empty: nothing
+    std::function<void()> on_confirm;
+
 private:
     Effect plain_text(const std::string& line);
+    Effect route_text(const std::string& line);
     Effect set_value(std::string_view assignment);
     void persist_run();
     void check_run_end();
@@ -123,6 +138,7 @@ private:
     std::vector<pages::DirEntry> dir_;
     std::string message_;
     bool message_error_ = false;
+    long refusals_ = 0;  // error messages said, to tell a refused entry
     RunState last_state_ = RunState::idle;
     size_t alarms_seen_ = 0;
     std::map<std::string, int64_t> persisted_;  // program writes already stored

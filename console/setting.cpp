@@ -2,6 +2,7 @@
 // measurement, changes made during a run, undo, and the memory-protect key.
 // Every change is stored with an audit row (the store's set_values).
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -30,12 +31,27 @@ int64_t internal(std::string_view name, double v) {
     return int64_t(std::llround(v * (rotary ? 1e4 : 1e3)));
 }
 
-bool parse_num(std::string_view s, double& v) {
+// A number typed on a setting page. A French decimal comma (Z 1,5) is read
+// as a point (CLARIFICATIONS 12.3/12.5); `comma` says so, to echo it.
+bool parse_num(std::string_view s, double& v, bool* comma = nullptr) {
     while (!s.empty() && s.front() == ' ') s.remove_prefix(1);
     while (!s.empty() && s.back() == ' ') s.remove_suffix(1);
     if (!s.empty() && s.front() == '+') s.remove_prefix(1);
-    auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-    return ec == std::errc() && p == s.data() + s.size() && std::isfinite(v);
+    std::string text(s);
+    size_t c = text.find(',');
+    if (c != std::string::npos && text.find(',', c + 1) == std::string::npos && text.find('.') == std::string::npos) {
+        text[c] = '.';
+        if (comma) *comma = true;
+    }
+    auto [p, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+    return ec == std::errc() && p == text.data() + text.size() && std::isfinite(v);
+}
+
+// The field of a corrector a setting names ("D3.X" -> "X"), or "".
+std::string corrector_field(const std::string& name) {
+    if (name.size() < 3 || name[0] != 'D' || !std::isdigit(static_cast<unsigned char>(name[1]))) return {};
+    size_t dot = name.find('.');
+    return dot == std::string::npos ? std::string() : name.substr(dot + 1);
 }
 
 }  // namespace
@@ -57,6 +73,12 @@ bool Session::apply_setting(const std::string& name, double value, const std::st
         say(name + ": the nose orientation is a code from 0 to 8", true);
         return false;
     }
+    if (corrector_field(name) == "R" && value < 0) {
+        say(name + ": a tool or nose radius is never negative (its wear goes in " +
+                (m_.lathe ? std::string("DX/DZ") : std::string("DR")) + ")",
+            true);
+        return false;
+    }
     Interpreter& in = sim_->interp();
     double old = 0;
     bool had = in.get(name, old);
@@ -69,7 +91,7 @@ bool Session::apply_setting(const std::string& name, double value, const std::st
     if (!had) in.get(name, old);
     if (running && is_origin(name)) pending_origin_[name] = in.moves();
     // No program in cycle: the tool the setter holds is the one shown, at once.
-    if (!running && in.modal().d > 0) in.apply_gauges_now();
+    if (!running) in.apply_gauges_now();
     undo_.push_back({name, old});
     std::string news = name + " " + (code ? std::to_string(int(old)) : mm(old)) + " -> " +
                        (code ? std::to_string(int(value)) : mm(value));
@@ -102,11 +124,47 @@ static std::string at_rest(const Sim& s) {
     return {};
 }
 
+// A gauge longer than the axis travel cannot be a tool's: it asks first.
+bool Session::implausible_gauge(const std::string& name, double value, std::string& why) const {
+    std::string field = corrector_field(name);
+    int axis = field == "X" || field == "DX" ? X : field == "Z" || field == "DZ" ? Z
+             : field == "L" || field == "DL" ? sim_->interp().modal().tool_axis : -1;
+    if (axis < 0 || !m_.has(axis)) return false;
+    const AxisConfig& ax = m_.axes[size_t(axis)];
+    double travel = ax.max - ax.min;
+    if (!(travel > 0 && travel < 1e8) || std::abs(value) <= travel) return false;
+    why = name + " = " + mm(value) + " is longer than the " + kAxisNames[size_t(axis)] + " travel (" + mm(travel) +
+          "). Keep it?";
+    return true;
+}
+
+// Asks "y/n" on the input line; `then` runs on "y".
+void Session::confirm(std::string question, std::function<void()> then) {
+    pending_confirm = question;
+    on_confirm = std::move(then);
+    say(question + " y/n?", true);
+}
+
 Effect Session::touch(int axis, double surface) {
     if (std::string w = at_rest(*sim_); !w.empty()) {
         say("touch-off: " + w, true);
         return Effect::redraw;
     }
+    if (sim_->corrector() == 0) {
+        // D0: the gauge is zero, so PREF would place the turret reference (or the
+        // spindle nose), not a tool point, on the surface. Rare, never silent.
+        confirm("D0, no tool gauge (T" + std::to_string(sim_->tool()) + "): the turret reference would read " +
+                    kAxisNames[size_t(axis)] + " " + mm(surface) + ".",
+                [this, axis, surface] { touch_now(axis, surface); });
+        return Effect::redraw;
+    }
+    return touch_now(axis, surface);
+}
+
+Effect Session::touch_now(int axis, double surface) {
+    // The gauge of the active corrector is the one the touch-off assumes: it
+    // applies now (not at the next move), so OP reads what was typed.
+    sim_->interp().apply_gauges_now();
     setting::Touch t;
     if (std::string why = setting::touch_off(sim_->interp(), axis, surface, t); !why.empty()) {
         say("touch-off: " + why, true);
@@ -196,6 +254,11 @@ Effect Session::protect_command(std::string_view args) {
     return Effect::redraw;
 }
 
+// The message line says how a decimal comma was read.
+void Session::echo_comma(std::string_view typed, double v) {
+    message_ = "read " + std::string(typed) + " as " + mm(v) + ": " + message_;
+}
+
 // Text typed on the PREF page: NAME=VALUE, or AXIS VALUE for a touch-off.
 // On the CORR page: FIELD=VALUE for the corrector under the cursor, Dn to
 // choose one, AXIS VALUE to measure it by touching a surface.
@@ -208,12 +271,19 @@ Effect Session::setting_text(std::string_view text) {
         std::string name = t.substr(0, eq);
         while (!name.empty() && name.back() == ' ') name.pop_back();
         double v;
-        if (!parse_num(std::string_view(t).substr(eq + 1), v)) {
-            say(name + ": not a number", true);
+        bool comma = false;
+        if (!parse_num(std::string_view(t).substr(eq + 1), v, &comma)) {
+            say(name + ": not a number (use a decimal point: 1.5)", true);
             return Effect::redraw;
         }
         if (corr && name.find('.') == std::string::npos) name = "D" + std::to_string(corr_cursor) + "." + name;
-        apply_setting(name, v, corr ? "page CORR" : "page PREF");
+        std::string source = corr ? "page CORR" : "page PREF";
+        std::string why;
+        if (implausible_gauge(name, v, why)) {
+            confirm(why, [this, name, v, source] { apply_setting(name, v, source); });
+            return Effect::redraw;
+        }
+        if (apply_setting(name, v, source) && comma) echo_comma(text, v);
         return Effect::redraw;
     }
     if (corr && t.size() > 1 && t[0] == 'D' && std::isdigit(static_cast<unsigned char>(t[1]))) {
@@ -224,8 +294,22 @@ Effect Session::setting_text(std::string_view text) {
     }
     int axis = t.empty() ? -1 : axis_of(t[0]);
     double v;
-    if (axis >= 0 && parse_num(std::string_view(t).substr(1), v))
-        return corr ? measure(corr_cursor, axis, v) : touch(axis, v);
+    bool comma = false;
+    if (axis >= 0 && parse_num(std::string_view(t).substr(1), v, &comma)) {
+        if (!corr) touch(axis, v);
+        else if (corr_cursor != sim_->corrector() && at_rest(*sim_).empty()) {
+            // The tool touching is the one of the active corrector: measuring
+            // another asks first (CLARIFICATIONS 12.5; :measure never asks).
+            int d = corr_cursor;
+            confirm("D" + std::to_string(d) + " is not the active corrector (D" + std::to_string(sim_->corrector()) +
+                        "): measure D" + std::to_string(d) + " with this tool?",
+                    [this, d, axis, v] { measure(d, axis, v); });
+        } else {
+            measure(corr_cursor, axis, v);
+        }
+        if (comma && !message_error_) echo_comma(text, v);
+        return Effect::redraw;
+    }
     say(corr ? "CORR: X=63.345 sets a field of D" + std::to_string(corr_cursor) +
                    ", D5 chooses a corrector, X 59.978 measures by a touched diameter"
              : "PREF: PREF.Z=-300 or DEC1.X=2 sets a value, Z 0 or X 59.978 touches off",

@@ -148,6 +148,7 @@ void Terminal::draw(const pages::Canvas& c, int cx, int cy) {
         for (int x = 0; x < c.width() && x < cols_; ++x) {
             const pages::Cell& cell = c.at(x, y);
             attr_t a = A_NORMAL;
+            short pair = 0;
             if (theme_ == Theme::mono) {
                 switch (cell.st) {
                     case S::title: case S::big: a = A_BOLD; break;
@@ -157,12 +158,14 @@ void Terminal::draw(const pages::Canvas& c, int cx, int cy) {
                     default: break;
                 }
             } else {
-                a = COLOR_PAIR(pair_of(cell.st));
+                pair = pair_of(cell.st);
                 if (cell.st == S::title || cell.st == S::big || cell.st == S::alarm) a |= A_BOLD;
             }
             wchar_t wc[2] = {wchar_t(cell.ch), 0};
             cchar_t cc;
-            setcchar(&cc, wc, a, 0, nullptr);
+            // The colour pair is setcchar's own argument: a COLOR_PAIR in the
+            // attributes would be overridden by it.
+            setcchar(&cc, wc, a, pair, nullptr);
             mvadd_wch(y, x, &cc);
         }
     }

@@ -408,6 +408,9 @@ bool Interpreter::do_m_apres(const Plan& p, StepResult& r) {
 
 // M02 and RAZ (turning.md §8.3): modal groups to power-on, D0, M05, M09; G59, ED,
 // G51, G74, G75, G92 S, G92 R, EG cleared; PREF, T, correctors, E and L kept.
+// D0 takes effect at once: no program is left to carry a pending gauge to its
+// next move, and every page (OP, INFO, PREF, CORR) and the touch-off must see
+// the gauge the machine applies, which is D0's (none) [DECISION, pupitre(1)].
 void Interpreter::reset_modal_m02() {
     Modal fresh;
     fresh.plane = m_.lathe ? 18 : 17;
@@ -424,7 +427,8 @@ void Interpreter::reset_modal_m02() {
     frames_.mirror.reset();
     frames_.scale_on = false;
     frames_.g53 = false;
-    gauge_pending_.set();
+    frames_.gauge = Axes{};
+    gauge_pending_.reset();
     recompute_program_pos();
 }
 

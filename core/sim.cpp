@@ -125,6 +125,7 @@ bool Sim::imd(std::string_view blocks, std::string& why) {
     imd_->file = "IMD";
     imd_->text = std::make_shared<std::string>(std::string(blocks) + "\n");
     imd_->end = imd_->text->size();
+    invalidate_text_cache();  // the cache may know the old block's address
     if (state_ == RunState::ended) state_ = RunState::idle;
     return true;
 }
@@ -268,6 +269,7 @@ void Sim::raz() {
     diag_seen_ = 0;
     sp_ = SpindleEvent{};
     m7_ = m8_ = false;
+    corr_ = 0;  // RAZ: D0 as after M02, the tool T stays
     message_.clear();
     state_ = RunState::idle;
 }
@@ -445,6 +447,7 @@ bool Sim::begin_next() {
             break;
         case Ev::end:
             state_ = RunState::ended;
+            if (e.a == 2) corr_ = 0;  // M02: D0, the tool T stays (turning.md §8.3)
             if (e.a == 2)
                 message_ = "M02: end of program %" + std::to_string(e.loc.prog) + ", " +
                            std::to_string(blocks_) + " blocks, cycle time " + fmt_seconds(clock_ - start_clock_);

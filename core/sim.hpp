@@ -61,6 +61,13 @@ public:
     void raz();
     // IMD: the block(s) Cycle Start will execute.
     bool imd(std::string_view blocks, std::string& why);
+    // Forgets the IMD block waiting for Cycle Start; false if there was none.
+    bool drop_imd() {
+        if (!imd_ || in_cycle()) return false;
+        imd_.reset();
+        invalidate_text_cache();
+        return true;
+    }
     // RNS: the block searched for; Cycle Start rebuilds the state up to it.
     bool search(long n, std::string& why);
     long search_target() const { return search_n_; }
@@ -97,7 +104,9 @@ public:
     bool m7() const { return m7_; }
     bool m8() const { return m8_; }
     int tool() const { return tool_; }
-    int corrector() const { return corr_; }
+    // The corrector the machine applies: the animated one while a program's
+    // moves are shown, else the interpreter's (IMD D3, M02 and RAZ: D0).
+    int corrector() const { return in_cycle() && !manual_ ? corr_ : in_->modal().d; }
     double clock() const { return clock_; }
     // Seconds of motion still queued (JOG keeps about 0.1 s ahead).
     double queued_time() const;

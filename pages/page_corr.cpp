@@ -33,7 +33,7 @@ void page_corr(const View& v, Canvas& c, const Rect& r) {
     for (size_t i = 0; i < fields.size(); ++i) c.text_right(6 + int(i) * 10, y, 10, fields[i], Style::title);
     ++y;
     int rows = r.h - 6;
-    int active = in.modal().d;
+    int active = s.corrector();
     int first = std::clamp(v.corr_cursor - rows / 2, 1, std::max(1, m.correctors - rows + 1));
     for (int i = 0; i < rows && first + i <= m.correctors; ++i) {
         int d = first + i;

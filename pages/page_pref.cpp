@@ -4,6 +4,7 @@
 // changed during a run are marked until the next move applies them.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <algorithm>
+#include <cmath>
 
 #include "pages/pages.hpp"
 
@@ -26,7 +27,7 @@ void page_pref(const View& v, Canvas& c, const Rect& r) {
         std::string name(1, kAxisNames[size_t(a)]);
         c.text(2, y, name, Style::title);
         const double vals[] = {f.pref[size_t(a)],  f.dec1[size_t(a)],          f.dec3[size_t(a)],
-                               f.g59[size_t(a)],   in.active_gauge(a),         s.to_display(a, om[size_t(a)]),
+                               f.g59[size_t(a)],   f.gauge[size_t(a)],         s.to_display(a, om[size_t(a)]),
                                s.to_display(a, op[size_t(a)])};
         for (int i = 0; i < 7; ++i) {
             bool pending = false;
@@ -40,8 +41,15 @@ void page_pref(const View& v, Canvas& c, const Rect& r) {
         ++y;
     }
     ++y;
-    std::string d = "active corrector D" + std::to_string(in.modal().d) + ", tool T" + std::to_string(s.tool());
-    c.text(2, y++, d, Style::dim);
+    // The corrector the machine applies (D0 after M02 and RAZ, T kept); a
+    // gauge not yet applied is named: a touch-off applies it first.
+    std::string d = "active corrector D" + std::to_string(s.corrector()) + ", tool T" + std::to_string(s.tool());
+    std::string waiting;
+    for (int a = 0; a < kAxes; ++a)
+        if (m.has(a) && in.gauge_pending(a) && std::abs(in.active_gauge(a) - f.gauge[size_t(a)]) > 5e-7)
+            waiting += std::string(waiting.empty() ? "" : " ") + kAxisNames[size_t(a)];
+    if (!waiting.empty()) d += "; its gauge on " + waiting + " applies at the next move or touch-off";
+    c.text(2, y++, d, waiting.empty() ? Style::dim : Style::warn);
     if (!v.pending.empty()) c.text(2, y++, "* changed during the run: applies at the next move", Style::warn);
     int by = r.y + r.h - 5;
     c.text(2, by, "Touch-off: jog the tool onto the part, then type the coordinate of the", Style::dim);

@@ -374,6 +374,9 @@ TEST(Setting, MeasureAToolByATouchedDiameterOnTheCorrPage) {
     ASSERT_TRUE(c.s->sim().interp().get("D2.Z", z));
     EXPECT_DOUBLE_EQ(z, 41.5);
     c.type("X 100");  // touching Ø100 with the turret at OM X 150 (radius): gauge 100
+    // D2 is not the active corrector: the CORR page asks first (issue 12.5).
+    EXPECT_NE(c.message().find("D2 is not the active corrector"), std::string::npos) << c.message();
+    c.type("y");
     double x;
     ASSERT_TRUE(c.s->sim().interp().get("D2.X", x));
     EXPECT_NEAR(x, 100, 1e-9);

@@ -7,56 +7,7 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 set -uo pipefail
 bin=$(realpath "$1") case=$2
-command -v tmux >/dev/null || { echo "tmux is not installed (scripts/test installs it)"; exit 77; }
-
-work=$(mktemp -d)
-sock="pupitre-e2e-$$-$case"
-T() { tmux -L "$sock" "$@"; }
-cleanup() { T kill-server 2>/dev/null; rm -rf "$work"; }
-trap cleanup EXIT
-export HOME=$work/home XDG_DATA_HOME=$work/data XDG_CONFIG_HOME=$work/config
-mkdir -p "$HOME"
-
-screen() { T capture-pane -p -t e2e 2>/dev/null; }
-fail() {
-    echo "FAIL ($case): $*"
-    echo "---- screen ----"
-    screen
-    echo "----------------"
-    exit 1
-}
-# wait_for REGEX [SECONDS]: polls the screen until a line matches.
-wait_for() {
-    local re=$1 limit=${2:-10} i
-    for ((i = 0; i < limit * 20; i++)); do
-        screen | grep -Eq -- "$re" && return 0
-        sleep 0.05
-    done
-    fail "waited ${limit}s for /$re/"
-}
-keys() { T send-keys -t e2e "$@"; }
-# A second session gets a server of its own: a new one on the old socket can
-# race with the old one's exit ("server exited unexpectedly").
-next_server() {
-    T kill-server 2>/dev/null
-    sock="$sock+"
-}
-# cmd TEXT: a ':' command typed on the input line.
-cmd() { keys -l "$1"; keys Enter; sleep 0.1; }
-start() {
-    # After the console: its exit status and the terminal modes, to check that
-    # the terminal was given back as it was.
-    T -f /dev/null new-session -d -s e2e -x "${W:-80}" -y "${H:-24}" \
-        "env LANG=C.UTF-8 TERM=screen '$bin' $* ; echo EXIT=\$? ; stty -a > '$work/stty' ; sleep 30"
-    wait_for 'F1 help|1HELP' 10
-}
-pom() {
-    cmd ":mode pom"
-    keys F9
-    wait_for '^ POM .*READY' 20
-}
-# The value shown on the OP page for an axis ("  Xø      150.000 ...").
-op_value() { screen | awk -v a="$1" '$1 == a || $1 == a"ø" { print $2; exit }'; }
+. "$(dirname "$0")/lib.sh"
 
 case $case in
 start)
@@ -92,7 +43,8 @@ themes)
 crash)
     # A crash signal: the terminal is restored before the default action.
     start
-    pid=$(pgrep -f "^$bin" -n)
+    # This test's own console, not another test's running at the same time.
+    pid=$(pgrep -P "$(T list-panes -t e2e -F '#{pane_pid}')" -f "$bin" -n)
     kill -SEGV "$pid"
     wait_for '^EXIT=139' 10
     wait_for 'crashed; the terminal is restored'
@@ -192,7 +144,8 @@ quit)
     ;;
 signal)
     start
-    pid=$(pgrep -f "^$bin" -n)
+    # This test's own console, not another test's running at the same time.
+    pid=$(pgrep -P "$(T list-panes -t e2e -F '#{pane_pid}')" -f "$bin" -n)
     [ -n "$pid" ] || fail "no pupitre process"
     kill -TERM "$pid"
     wait_for '^EXIT=0' 10
@@ -242,6 +195,9 @@ setting)
     wait_for '^  1 +63.345 +38.237 '
     cmd "D2"
     cmd "X 100"
+    # D2 is not the active corrector (D0 after the restart): asked first.
+    wait_for 'D2 is not the active corrector \(D0\)'
+    cmd "y"
     wait_for 'D2.X = OM 150.000 - PREF 16.666 .* = 83.334'
     wait_for '^  2 +83.334 '
     ;;

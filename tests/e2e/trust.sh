@@ -1,0 +1,177 @@
+#!/usr/bin/env bash
+# End-to-end tests of issue 12 ("setting you can trust") on the real console
+# in tmux: one corrector everywhere after a program run, colours that reach the
+# screen, an input line that says where text goes, decimal commas and
+# implausible settings. Same harness as console.sh (tests/e2e/lib.sh).
+#   trust.sh PUPITRE_BINARY CASE
+# SPDX-License-Identifier: GPL-3.0-or-later
+set -uo pipefail
+bin=$(realpath "$1") case=$2
+. "$(dirname "$0")/lib.sh"
+
+# tool1: T1 D1 in the turret by IMD, Cycle Start, wait for its end.
+tool1() {
+    cmd ":mode imd"
+    cmd "T1 D1 M6"
+    keys F9
+    wait_for '^ IMD .*END' 10
+}
+# sgr_line REGEX: the coloured capture of the first line matching REGEX.
+sgr_line() { screen_e | grep -E -m1 -- "$1"; }
+
+case $case in
+gauge)
+    # The issue's sequence: a gauge, POM, T1 D1, %300 to M02, then touch-off.
+    # M02 leaves D0 (T kept): every page says D0 and applies no gauge, the
+    # touch-off asks first (no corrector), and OP reads what was typed.
+    start
+    cmd ":set D1.X=10"
+    pom
+    tool1
+    cmd ":load 300"
+    cmd ":mode auto"
+    cmd ":speed max"
+    keys F9
+    wait_for 'M02: end of program %300' 30
+    cmd ":page op"
+    wait_for '^  Tool +T1  D0'
+    cmd ":page info"
+    wait_for 'T1 .*D0'
+    wait_for '^ gauge +X +0\.000'
+    cmd ":page pref"
+    wait_for 'active corrector D0, tool T1'
+    cmd "X 150"
+    wait_for "D0, no tool gauge \\(T1\\)"
+    wait_for '^y/n>'
+    cmd "y"
+    wait_for 'PREF.X = OM '
+    cmd "Z 0"
+    cmd "y"
+    wait_for 'PREF.Z = OM '
+    cmd ":page op"
+    wait_for 'OP  program position'
+    [ "$(op_value X)" = "150.000" ] || fail "after touch-off X 150 the OP page should read 150.000"
+    [ "$(op_value Z)" = "0.000" ] || fail "after touch-off Z 0 the OP page should read 0.000"
+    # With the tool's corrector selected again (no move yet: its gauge is
+    # pending), the touch-off applies the gauge and OP still reads the value.
+    tool1
+    cmd ":page pref"
+    wait_for 'active corrector D1, tool T1; its gauge on X applies at the next move'
+    cmd "X 120"
+    wait_for 'PREF.X = OM .* - gauge 10.000 '
+    cmd ":page op"
+    wait_for '^  Tool +T1  D1'
+    [ "$(op_value X)" = "120.000" ] || fail "after touch-off X 120 with D1 the OP page should read 120.000"
+    # RAZ: D0 again, and OP shows the point without the gauge (20 mm more on
+    # the diameter: the 10 mm radius gauge).
+    keys F12
+    wait_for '^  Tool +T1  D0'
+    [ "$(op_value X)" = "140.000" ] || fail "after RAZ (D0) X should read 140.000"
+    ;;
+colours)
+    # Each style of the colour theme reaches the screen as SGR sequences.
+    start
+    status=$(screen_e | head -1)
+    [[ $status == *'[37m'*'[44m'* || $status == *'37;44'* ]] || fail "the status line is not white on blue: $status"
+    soft=$(screen_e | tail -1)
+    [[ $soft == *'[30m'*'[46m'* || $soft == *'30;46'* ]] || fail "the soft keys are not black on cyan: $soft"
+    title=$(sgr_line 'OP  program position')
+    [[ $title == *'[1m'* ]] || fail "the page title is not bold: $title"
+    cmd ":page dir"
+    wait_for '%300'
+    row=$(sgr_line '%300')
+    [[ $row == *'[46m'* ]] || fail "the DIR cursor row is not highlighted: $row"
+    cmd ":page corr"
+    row=$(sgr_line '^.{0,20}  1 ')
+    [[ $row == *'[46m'* ]] || fail "the CORR cursor row is not highlighted: $row"
+    cmd ":page op"
+    cmd ":mode imd"
+    cmd "G2 X10 Z0 R2"
+    keys F9
+    wait_for 'ALARM 107' 10
+    row=$(sgr_line 'ALARM 107')
+    [[ $row == *'[41m'* ]] || fail "the alarm is not on red: $row"
+    cmd ":quit"
+    wait_for '^EXIT=0'
+    # Phosphor: green on black.
+    next_server
+    start --theme phosphor
+    [[ $(screen_e) == *'[32m'* ]] || fail "phosphor shows no green"
+    cmd ":quit"
+    wait_for '^EXIT=0'
+    # NO_COLOR (no-color.org): mono, bold and reverse only, unless --theme.
+    next_server
+    E2E_ENV="NO_COLOR=1" start
+    s=$(screen_e)
+    grep -Eq $'\e\\[[0-9;]*(3[0-7]|4[0-7])m' <<<"$s" && fail "NO_COLOR: colours reached the screen"
+    [[ $s == *'[7m'* ]] || fail "NO_COLOR: the status line should be in reverse video"
+    cmd ":quit"
+    wait_for '^EXIT=0'
+    next_server
+    E2E_ENV="NO_COLOR=1" start --theme colour
+    [[ $(screen_e) == *'[44m'* ]] || fail "--theme colour should win over NO_COLOR"
+    ;;
+target)
+    # The prompt names where text goes, and it goes there; a refused entry
+    # drops the IMD block typed before, so Cycle Start cannot run it.
+    start
+    pom
+    cmd ":mode imd"
+    wait_for '^IMD>'
+    cmd ":page pref"
+    wait_for '^PREF>'
+    cmd ":page corr"
+    wait_for '^D1>'
+    cmd "D5"
+    wait_for '^D5>'
+    cmd ":page param"
+    wait_for '^L/E='
+    cmd ":page op"
+    wait_for '^IMD>'
+    cmd "G0 X40 Z25"
+    wait_for 'Cycle Start \(F9\) executes: G0 X40 Z25'
+    cmd ":page pref"
+    cmd "G0 X10"
+    wait_for '^ IMD block dropped: PREF: '
+    keys F9
+    wait_for 'IMD: type a block first'
+    cmd ":page op"
+    [ "$(op_value X)" = "300.000" ] || fail "the dropped IMD block moved X"
+    cmd ":page edit"
+    wait_for '^EDIT>'
+    ;;
+plausible)
+    # A decimal comma is read and echoed; a negative radius is refused; a
+    # gauge longer than the travel and a measurement of a corrector that is
+    # not the active one ask first; :measure never asks.
+    start
+    pom
+    tool1
+    cmd ":page pref"
+    cmd "Z 1,5"
+    wait_for 'read Z 1,5 as 1.500'
+    cmd ":page op"
+    [ "$(op_value Z)" = "1.500" ] || fail "Z 1,5 should make OP read 1.500"
+    cmd ":page corr"
+    cmd "R=-0,4"
+    wait_for 'never negative'
+    cmd "X=99999"
+    wait_for 'longer than the X travel'
+    wait_for '^y/n>'
+    cmd "n"
+    wait_for 'cancelled: nothing changed'
+    wait_for '^  1 +0\.000 '
+    cmd "D5"
+    cmd "X 100"
+    wait_for 'D5 is not the active corrector \(D1\)'
+    cmd "y"
+    wait_for 'D5.X = OM '
+    cmd ":measure D6 X 100"
+    wait_for 'D6.X = OM '
+    ;;
+*)
+    echo "unknown case $case"
+    exit 2
+    ;;
+esac
+echo "ok ($case)"
