@@ -21,8 +21,13 @@ namespace pupitre::cli {
 inline constexpr int kOk = 0, kProgramErrors = 1, kUsage = 64, kDataErr = 65, kNoInput = 66,
                      kSoftware = 70, kCantCreate = 73, kIoErr = 74;
 
+// One default machine for every batch command and the console's first start
+// (CLARIFICATIONS 12.10): the lathe. A batch command never depends on what
+// the console used last.
+inline constexpr const char* kDefaultMachine = "lathe";
+
 struct RunArgs {
-    std::string machine = "mill";
+    std::string machine;  // "": kDefaultMachine
     std::vector<std::string> sets;   // NAME=VALUE
     std::vector<std::string> files;
     bool trace = false;
@@ -40,6 +45,10 @@ int load_all(const std::vector<std::string>& files, ProgramMemory& mem);        
 int apply_sets(const std::vector<std::string>& sets, Interpreter& in);            // --set; an exit code
 // A built-in profile or a .machine file; prints the problem and returns false.
 bool load_machine(const std::string& name, MachineProfile& m);
+// The machine a batch command runs on: --machine, else the default.
+inline std::string batch_machine(const std::string& asked) { return asked.empty() ? kDefaultMachine : asked; }
+// After a run with errors on the default machine, says which machine ran.
+void default_machine_note(const std::string& asked, bool errors);
 
 // The console (console/app.cpp): pupitre with no command.
 struct ConsoleArgs {

@@ -162,7 +162,7 @@ int plot(const PlotArgs& a) {
         return kUsage;
     }
     MachineProfile m;
-    if (!load_machine(a.machine, m)) return kUsage;
+    if (!load_machine(batch_machine(a.machine), m)) return kUsage;
     ProgramMemory mem;
     if (int rc = load_all(a.files, mem)) return rc;
     const ProgramText* main = nullptr;
@@ -195,9 +195,16 @@ int plot(const PlotArgs& a) {
         print_diag(d);
         path.add_error(d);
     }
+    default_machine_note(a.machine, in.has_errors());
+    // A run that fails before any move has nothing to draw: no file is left
+    // behind (CLARIFICATIONS 12.10). One that fails later draws what ran.
+    if (in.has_errors() && in.moves() == 0) {
+        std::fprintf(stderr, "pupitre: no drawing written: the program failed before its first move\n");
+        return kProgramErrors;
+    }
     SvgOptions so;
     so.plane = a.plane.empty() ? chosen_plane(path, m, plane_seen) : plane;
-    so.machine = a.machine;
+    so.machine = m.name;
     so.seconds = in.seconds();
     if (!a.svg.empty())
         if (int rc = write_out(a.svg, path, so)) return rc;

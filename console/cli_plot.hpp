@@ -7,7 +7,7 @@
 namespace pupitre::cli {
 
 struct PlotArgs {
-    std::string machine = "mill";
+    std::string machine;              // "": the lathe, as every batch command
     std::string plane;               // xy|xz|yz|zx; "" = the program's (the lathe's ZX)
     std::string svg;                 // output file; "-" for the standard output
     std::string png;                 // a PNG picture of the drawing too (libpng), "" for none

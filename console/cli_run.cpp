@@ -78,9 +78,16 @@ class NullSink final : public MachineSink {};
 
 }  // namespace
 
+void default_machine_note(const std::string& asked, bool errors) {
+    if (asked.empty() && errors)
+        std::fprintf(stderr, "pupitre: ran on the %s, the default machine (--machine mill for a machining centre)\n",
+                     kDefaultMachine);
+}
+
 int run(const RunArgs& a) {
     MachineProfile m;
-    if (!load_machine(a.machine, m)) return kUsage;
+    const std::string machine = batch_machine(a.machine);
+    if (!load_machine(machine, m)) return kUsage;
     ProgramMemory mem;
     if (int rc = load_all(a.files, mem)) return rc;
     RunStore store;
@@ -110,6 +117,7 @@ int run(const RunArgs& a) {
     in.run_to_end();
     std::fflush(stdout);
     for (const Diag& d : in.diags()) print_diag(d);
+    default_machine_note(a.machine, in.has_errors());
     if (a.json) {
         std::string s = summary_json(in, a.files.front());
         std::fputs(s.c_str(), stdout);
@@ -120,13 +128,13 @@ int run(const RunArgs& a) {
     std::fflush(stdout);
     // What the program wrote into correctors and origins stays, as on the NUM.
     if (!a.db.empty())
-        if (int rc = store.persist(in, a.files.front(), a.machine)) return rc;
+        if (int rc = store.persist(in, a.files.front(), machine)) return rc;
     return in.has_errors() ? kProgramErrors : kOk;
 }
 
 int check(const RunArgs& a) {
     MachineProfile m;
-    if (!load_machine(a.machine, m)) return kUsage;
+    if (!load_machine(batch_machine(a.machine), m)) return kUsage;
     ProgramMemory mem;
     if (int rc = load_all(a.files, mem)) return rc;
     RunStore store;  // check stores nothing back: no persist
@@ -189,6 +197,7 @@ int check(const RunArgs& a) {
             ++line;
         }
     }
+    default_machine_note(a.machine, errors);
     return errors ? kProgramErrors : kOk;
 }
 

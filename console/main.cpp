@@ -43,7 +43,7 @@ int main(int argc, char** argv) {
     cli::RunArgs ra;
     auto add_common = [&](CLI::App* sub) {
         sub->add_option("--machine", ra.machine,
-                        "machine profile: lathe, mill, mill4, mill5, or a .machine file (default mill)");
+                        "machine profile: lathe, mill, mill4, mill5, or a .machine file (default lathe)");
         sub->add_option("--set", ra.sets, "seed the machine before the run: PREF.X=-120.5, D1.R=4, L5=2, E80000=18000")
             ->type_name("NAME=VALUE")
             ->allow_extra_args(false);
@@ -63,7 +63,7 @@ int main(int argc, char** argv) {
     cli::PlotArgs pa;
     CLI::App* plot = app.add_subcommand("plot", "draw the toolpath of a dry run as SVG (and PNG)");
     plot->add_option("--machine", pa.machine,
-                     "machine profile: lathe, mill, mill4, mill5, or a .machine file (default mill)");
+                     "machine profile: lathe, mill, mill4, mill5, or a .machine file (default lathe)");
     plot->add_option("--plane", pa.plane, "xy, xz, yz or zx (default: the program's; zx on the lathe)");
     plot->add_option("--set", pa.sets, "seed the machine before the run: PREF.X=-120.5, D1.R=4, L5=2")
         ->type_name("NAME=VALUE")
