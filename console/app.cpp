@@ -74,9 +74,6 @@ int event_loop(console::Session& s, console::Terminal& term, bool ascii) {
     bool dirty = true;
     for (;;) {
         if (term.resized()) dirty = true;
-        if (term.cols() < 80 || term.rows() < 24) s.say("the console needs at least 80x24; this terminal is " +
-                                                         std::to_string(term.cols()) + "x" + std::to_string(term.rows()),
-                                                     true);
         s.rows = term.rows();
         if (dirty) {
             if (canvas.width() != term.cols() || canvas.height() != term.rows()) canvas.resize(term.cols(), term.rows());

@@ -49,16 +49,12 @@ Effect page(Session& s, std::string_view arg) {
     return s.command("page " + std::string(arg));
 }
 
-constexpr Mode kModeOrder[] = {Mode::automatic, Mode::single, Mode::dry, Mode::test, Mode::rns,
-                               Mode::imd,       Mode::jog,    Mode::inc, Mode::pom};
-
+// F8 (S-F8 back): the next mode, and what to do in it.
 Effect mode_step(Session& s, int dir) {
-    int n = int(std::size(kModeOrder)), i = 0;
-    while (i < n && kModeOrder[i] != s.sim().mode()) ++i;
-    Mode m = kModeOrder[(i + dir + n) % n];
+    Mode m = next_mode(s.sim().mode(), dir);
     std::string why;
     if (!s.sim().set_mode(m, why)) s.say(why, true);
-    else s.say(std::string(mode_name(m)) + ": " + std::string(mode_english(m)));
+    else s.say(s.mode_news(m));
     return Effect::redraw;
 }
 
@@ -176,6 +172,8 @@ const std::vector<Action> kActions = {
     {"page", "show the %s page", always, page, "%S"},
     {"mode-next", "next mode", always, [](Session& s, std::string_view) { return mode_step(s, 1); }, "MODE"},
     {"mode-prev", "previous mode", always, [](Session& s, std::string_view) { return mode_step(s, -1); }, "MODE-"},
+    {"mode", "the %s mode", always,
+     [](Session& s, std::string_view a) { return s.command("mode " + std::string(a)); }, "%S"},
     {"cycle-start", "Cycle Start", always, [](Session& s, std::string_view) { return s.command("cycle"); }, "START"},
     {"feed-hold", "feed hold", always, [](Session& s, std::string_view) { return s.command("stop"); }, "HOLD"},
     {"raz", "RAZ (reset)", always, [](Session& s, std::string_view) { return s.command("raz"); }, "RAZ"},

@@ -111,7 +111,7 @@ Effect Session::command(std::string_view text) {
             return usage(":mode auto|seq|dry|test|rns|imd|jog|inc|pom");
         }
         if (!sim().set_mode(m, why)) say(why, true);
-        else say(std::string(mode_name(m)) + ": " + std::string(mode_english(m)));
+        else say(mode_news(m));
         return Effect::redraw;
     }
     if (cmd == "load") {
@@ -246,8 +246,9 @@ Effect Session::command(std::string_view text) {
     if (cmd == "save" || cmd == "save!") return edit_save(cmd == "save!");
     if (cmd == "close") {
         if (modif) return usage(":close is for EDIT; MODIF ends with Cycle Start or RAZ");
+        bool dirty = editor.dirty;
         editor.close();
-        say("editor closed (unsaved changes dropped)");
+        say(dirty ? "editor closed (unsaved changes dropped)" : "editor closed");
         return Effect::redraw;
     }
     if (cmd == "goto" || cmd == "find") {

@@ -133,7 +133,46 @@ Effect Session::on_key(const Key& k) {
         if (!a || !a->can_run(*this, b->arg)) continue;
         return a->run(*this, b->arg);
     }
+    if (k.code == KeyCode::escape && !k.alt && !k.ctrl) return cancel_input();
+    if (!for_line_editor(k)) {
+        // F11, S-F1, C-F5, M-F9…: their bytes would leak into the line as text.
+        say(key_name(k) + " does nothing here (F1 lists the keys)");
+        return Effect::redraw;
+    }
     input_.feed(k.raw);
+    return Effect::redraw;
+}
+
+// The keys readline edits with; every other unbound key is refused.
+bool Session::for_line_editor(const Key& k) {
+    switch (k.code) {
+        case KeyCode::character:
+        case KeyCode::enter:
+        case KeyCode::tab:
+        case KeyCode::backspace: return true;
+        case KeyCode::left:
+        case KeyCode::right: return !k.shift && !k.alt;  // C-Left, C-Right: a word
+        case KeyCode::up:
+        case KeyCode::down:
+        case KeyCode::home:
+        case KeyCode::end:
+        case KeyCode::del: return !k.shift && !k.alt && !k.ctrl;
+        default: return false;
+    }
+}
+
+// Escape: the input line is emptied, MODIFY is left, a question is answered no.
+Effect Session::cancel_input() {
+    bool had = !input_.text().empty() || modify_pending || !pending_confirm.empty();
+    input_.clear();
+    modify_pending = false;
+    if (!pending_confirm.empty()) {
+        pending_confirm.clear();
+        on_confirm = nullptr;
+        say("cancelled: nothing changed");
+    } else if (had) {
+        say("input cancelled");
+    }
     return Effect::redraw;
 }
 
@@ -176,6 +215,37 @@ std::string Session::prompt() const {
         case Target::other: break;
     }
     return "> ";
+}
+
+std::string Session::mode_hint(Mode m) const {
+    bool homed = true;
+    for (int a = 0; a < kAxes; ++a) homed = homed && (!m_.has(a) || sim_->interp().homed(a));
+    bool runs = m == Mode::automatic || m == Mode::single || m == Mode::dry || m == Mode::rns;
+    if (!homed && runs) return "home first: F8 to POM, then Cycle Start (F9)";
+    if (m != Mode::jog && m != Mode::inc) return std::string(mode_how(m));
+    // The jog keys as bound for this machine (data/bindings.txt or the user's).
+    std::string keys;
+    const char* word = m == Mode::jog ? "jog" : "inc";
+    for (const Binding& b : bindings.list()) {
+        if (b.action != "jog") continue;
+        auto f = bindings.find(b.key, "op", word, m_.lathe ? "lathe" : "mill");
+        if (!f.empty() && f.front() == &b) keys += (keys.empty() ? "" : ", ") + b.key_text + " " + b.arg;
+    }
+    return keys.empty() ? ":jog AXIS DIST" : keys;
+}
+
+std::string Session::mode_setting(Mode m) const {
+    if (m == Mode::inc) return "step " + pages::fmt_len(sim_->increment) + " mm (Alt-i: next step)";
+    if (m != Mode::jog) return {};
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "feed %.0f mm/min", sim_->jog_feed > 0 ? sim_->jog_feed : m_.jog_feed);
+    return buf;
+}
+
+std::string Session::mode_news(Mode m) const {
+    // Short enough for 80 columns; the OP page keeps the keys, the status line
+    // the next mode.
+    return std::string(mode_name(m)) + ": " + std::string(mode_english(m)) + "; " + std::string(mode_how(m));
 }
 
 // Text that is not a command goes where the prompt says (target()): the page
@@ -361,6 +431,8 @@ pages::View Session::view() const {
     v.message_error = message_error_;
     Mode m = sim_->mode();
     v.prompt = prompt();
+    v.mode_hint = mode_hint(m);
+    v.mode_setting = mode_setting(m);
     v.input = input_.text();
     v.input_cursor = input_.cursor();
     v.speed = speed == Speed::real ? "x1" : speed == Speed::x10 ? "x10" : "max";

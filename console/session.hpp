@@ -115,6 +115,11 @@ public:
     // takes text (editor, PREF, CORR, PARAM), else the mode. The prompt names it.
     enum class Target { edit, pref, corr, param, imd, rns, inc, other };
     Target target() const;
+    // The message line on entering a mode, and the hint the OP page keeps:
+    // what Cycle Start does, the jog keys from the bindings, the INC step.
+    std::string mode_news(Mode m) const;
+    std::string mode_hint(Mode m) const;
+    std::string mode_setting(Mode m) const;  // the INC step, the JOG feed
     std::string prompt() const;
     // A plausible-but-doubtful setting waits for "y" on the input line.
     std::string pending_confirm;  // what is asked; empty: nothing
@@ -123,6 +128,8 @@ public:
 private:
     Effect plain_text(const std::string& line);
     Effect route_text(const std::string& line);
+    static bool for_line_editor(const Key& k);
+    Effect cancel_input();
     Effect set_value(std::string_view assignment);
     void persist_run();
     void check_run_end();

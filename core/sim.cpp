@@ -17,19 +17,20 @@ struct NullSink final : MachineSink {};
 
 struct ModeInfo {
     Mode mode;
-    std::string_view word, name, english;
+    std::string_view word, name, english, how;
 };
-// The NUM names on the status line, with the English the help page gives.
+// The NUM names on the status line, with the English the help page gives and
+// what the operator does next. The order is the mode key's (F8).
 constexpr ModeInfo kModes[] = {
-    {Mode::automatic, "auto", "AUTO", "continuous run"},
-    {Mode::single, "seq", "SEQ", "single block"},
-    {Mode::dry, "dry", "DRY RUN", "dry run: feeds at the machine maximum"},
-    {Mode::test, "test", "TEST", "program check, no motion"},
-    {Mode::rns, "rns", "RNS", "block search and resume"},
-    {Mode::imd, "imd", "IMD", "manual data input"},
-    {Mode::jog, "jog", "JOG", "continuous jog"},
-    {Mode::inc, "inc", "INC", "incremental jog"},
-    {Mode::pom, "pom", "POM", "homing"},
+    {Mode::automatic, "auto", "AUTO", "continuous run", "Cycle Start (F9) runs the selected program"},
+    {Mode::single, "seq", "SEQ", "single block", "Cycle Start (F9) runs one block"},
+    {Mode::dry, "dry", "DRY RUN", "dry run: feeds at the machine maximum", "Cycle Start (F9) runs it"},
+    {Mode::test, "test", "TEST", "program check, no motion", "Cycle Start (F9) checks the program"},
+    {Mode::rns, "rns", "RNS", "block search and resume", "type the N to find, then Cycle Start (F9)"},
+    {Mode::imd, "imd", "IMD", "manual data input", "type a block, Enter, then Cycle Start (F9)"},
+    {Mode::jog, "jog", "JOG", "continuous jog", "hold an arrow key to move an axis (keys on OP)"},
+    {Mode::inc, "inc", "INC", "incremental jog", "an arrow key moves one step (keys on OP)"},
+    {Mode::pom, "pom", "POM", "homing", "Cycle Start (F9) homes the axes"},
 };
 
 std::string fmt_seconds(double s) {
@@ -51,6 +52,18 @@ std::string_view mode_english(Mode m) {
     for (const auto& i : kModes)
         if (i.mode == m) return i.english;
     return "?";
+}
+
+std::string_view mode_how(Mode m) {
+    for (const auto& i : kModes)
+        if (i.mode == m) return i.how;
+    return "";
+}
+
+Mode next_mode(Mode m, int dir) {
+    int n = int(std::size(kModes)), i = 0;
+    while (i < n && kModes[i].mode != m) ++i;
+    return kModes[((i + dir) % n + n) % n].mode;
 }
 
 bool parse_mode(std::string_view word, Mode& out) {

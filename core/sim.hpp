@@ -20,6 +20,8 @@ namespace pupitre {
 enum class Mode { automatic, single, dry, test, rns, imd, jog, inc, pom };
 std::string_view mode_name(Mode m);     // "AUTO", "SEQ", "DRY RUN", …
 std::string_view mode_english(Mode m);  // "continuous", "single block", …
+std::string_view mode_how(Mode m);      // what the operator does in it
+Mode next_mode(Mode m, int dir);        // the mode key's order (F8: +1, S-F8: -1)
 bool parse_mode(std::string_view word, Mode& out);  // auto|seq|dry|test|rns|imd|jog|inc|pom
 
 enum class RunState {

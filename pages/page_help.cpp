@@ -1,19 +1,92 @@
-// The HELP page: the modes with their English names, then every key binding
-// and every command, generated from the bindings and commands tables so that
-// it can never disagree with them.
+// The HELP page: "Getting started" (home, jog, tool, touch-off, run), the
+// modes in the order of the mode key, then every key binding and every
+// command, generated from the bindings and commands tables so that it can
+// never disagree with them. Long texts wrap under their column at any width.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "pages/pages.hpp"
 
 namespace pupitre::pages {
 
+namespace {
+
+// The first steps of a student at the lathe or the mill (README "Quick start").
+const char* const kGettingStarted[] = {
+    "1. Home: F8 until the status line shows POM, then Cycle Start (F9).",
+    "2. Jog: F8 to JOG, hold an arrow key (the OP page lists the keys); INC moves one step.",
+    "3. Tool: F8 to IMD, type T1 D1 M6, Enter, then F9 (Cycle Start).",
+    "4. Touch off: jog the tool onto the part, Alt-p for the PREF page, type Z 0 for the face or "
+    "X 59.978 for a diameter; the OP page then reads what you typed.",
+    "5. Run: F6 lists the programs (Enter selects), F8 to AUTO, F9 runs; F10 holds, F12 (RAZ) abandons.",
+    "The prompt says where typed text goes (IMD>, PREF>, D5>, EDIT>); Escape empties it. "
+    "Commands start with ':' (Tab completes). RAZ is F12 (or Alt-r), off the F1-F10 row.",
+};
+
+// Splits `text` into lines of at most `width` columns at spaces.
+std::vector<std::string> wrap(const std::string& text, int width) {
+    std::vector<std::string> out;
+    std::string line;
+    size_t i = 0;
+    while (i < text.size()) {
+        size_t sp = text.find(' ', i);
+        std::string word = text.substr(i, sp == std::string::npos ? std::string::npos : sp - i);
+        i = sp == std::string::npos ? text.size() : sp + 1;
+        if (!line.empty() && columns(line) + 1 + columns(word) > width) {
+            out.push_back(line);
+            line.clear();
+        }
+        line += (line.empty() ? "" : " ") + word;
+    }
+    if (!line.empty() || out.empty()) out.push_back(line);
+    return out;
+}
+
+// A two-column entry: the key (or command) in its column, the text beside it
+// wrapped under itself; a key too wide for its column takes a line of its own.
+void entry(std::vector<Line>& lines, const std::string& key, int col, const std::string& what,
+           const std::string& when, int width) {
+    const int indent = 3 + col + 1;
+    std::string text = what + (when.empty() ? "" : "  (" + when + ")");
+    bool own_line = columns(key) > col;
+    if (own_line) lines.push_back(Line{}.add("   " + key, Style::value));
+    auto parts = wrap(text, std::max(20, width - indent - 1));
+    for (size_t i = 0; i < parts.size(); ++i) {
+        Line l;
+        if (i == 0 && !own_line) l.add("   " + pad(key, size_t(col + 1)), Style::value);
+        else l.add(std::string(size_t(indent), ' '));
+        l.add(parts[i]);
+        lines.push_back(std::move(l));
+    }
+}
+
+void modes(const View& v, std::vector<Line>& lines, int width) {
+    lines.push_back(Line{}.add(" Modes: F8 goes to the next one (S-F8 back), :mode NAME selects one", Style::title));
+    Mode now = v.sim->mode();
+    Mode m = Mode::automatic;
+    do {
+        std::string when = m == now ? "now" : m == next_mode(now, 1) ? "F8 goes here next" : "";
+        entry(lines, std::string(mode_name(m)), 8, std::string(mode_english(m)) + "; " + std::string(mode_how(m)),
+              when, width);
+        m = next_mode(m, 1);
+    } while (m != Mode::automatic);
+    entry(lines, "EDIT", 8, "the program editor: :edit N or Alt-e (the selected program)", "", width);
+    entry(lines, "MODIF", 8, "change the blocks to come of an interrupted program: Alt-m or :mode modif", "",
+          width);
+}
+
+}  // namespace
+
 void page_help(const View& v, Canvas& c, const Rect& r) {
     c.rule(r.y, "HELP  keys and commands (PgUp/PgDn scroll)");
     std::vector<Line> lines;
-    lines.push_back(Line{}.add(" Modes (F8 cycles through them, :mode NAME selects one)", Style::title));
-    const Mode modes[] = {Mode::automatic, Mode::single, Mode::dry, Mode::test, Mode::rns,
-                          Mode::imd,       Mode::jog,    Mode::inc, Mode::pom};
-    for (Mode m : modes)
-        lines.push_back(Line{}.add("   " + pad(std::string(mode_name(m)), 9), Style::value).add(std::string(mode_english(m))));
+    lines.push_back(Line{}.add(" Getting started", Style::title));
+    // The text wraps short of the right edge, where the scroll position shows.
+    const int width = r.w - 10;
+    for (const char* s : kGettingStarted) {
+        auto parts = wrap(s, width - 6);
+        for (size_t i = 0; i < parts.size(); ++i) lines.push_back(Line{}.add((i ? "      " : "   ") + parts[i]));
+    }
+    lines.push_back(Line{});
+    modes(v, lines, width);
     std::string section;
     for (const HelpLine& h : v.help) {
         bool cmd = !h.key.empty() && h.key[0] == ':';
@@ -23,10 +96,7 @@ void page_help(const View& v, Canvas& c, const Rect& r) {
             lines.push_back(Line{});
             lines.push_back(Line{}.add(" " + section, Style::title));
         }
-        Line l;
-        l.add("   " + pad(h.key, cmd ? 22 : 12), Style::value).add(h.what);
-        if (!h.when.empty()) l.add("  (" + h.when + ")", Style::dim);
-        lines.push_back(std::move(l));
+        entry(lines, h.key, cmd ? 22 : 12, h.what, h.when, width);
     }
     if (!v.store_path.empty()) {
         lines.push_back(Line{});

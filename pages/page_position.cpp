@@ -88,6 +88,9 @@ void page_position(const View& v, Canvas& c, const Rect& r) {
     char buf[64];
     std::snprintf(buf, sizeof buf, "%ld blocks   cycle time %.1f s", s.blocks_done(), s.cycle_time());
     row("Run", buf);
+    // The mode's keys at all times: what Cycle Start does, the jog keys, the step.
+    if (!v.mode_hint.empty()) row(mode_name(s.mode()), v.mode_hint, Style::normal);
+    if (!v.mode_setting.empty()) row("", v.mode_setting, Style::normal);
     if (l.line > 0) row("Block", std::string(s.line_of(s.text_of(l.prog), l.line)), Style::select);
 }
 

@@ -2,6 +2,7 @@
 // soft keys. The same on every terminal of at least 80x24; a bigger one gives
 // the page more room.
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -35,7 +36,10 @@ void status_line(const View& v, Canvas& c) {
     x += 1;
     std::string state = s.alarm_active() ? "ALARM " + std::to_string(s.alarms().back().diag.code)
                                          : std::string(state_name(st));
-    c.text(x + 1, 0, " " + state + " ", ss);
+    x += c.text(x + 1, 0, " " + state + " ", ss) + 1;
+    // The mode key's next mode (F8 cycles them; the HELP page lists them).
+    c.text(x + 2, 0, std::string("F8") + (c.ascii() ? ">" : "→") + std::string(mode_name(next_mode(s.mode(), 1))),
+           Style::status);
     char right[112];
     std::snprintf(right, sizeof right, "%s%s F%d%% S%d%%%s%s %s ", v.protect ? "LOCK " : "", v.machine.c_str(), s.feed_override,
                   s.spindle_override, s.interp().options().block_skip ? " /" : "",
@@ -90,8 +94,33 @@ std::string fmt_axis(int axis, double v) {
     return fmt_len(v);
 }
 
+namespace {
+
+// Below 80x24 the layout cannot hold: one clear screen says so, and what
+// runs goes on (DESIGN §2.4).
+void too_small(const View& v, Canvas& c) {
+    char size[64];
+    std::snprintf(size, sizeof size, "this terminal is %dx%d", c.width(), c.height());
+    const std::string lines[] = {
+        "Terminal too small",
+        "pupitre needs at least 80x24;",
+        size,
+        "Enlarge the window to go on.",
+        std::string(mode_name(v.sim->mode())) + " " + std::string(state_name(v.sim->state())),
+    };
+    int n = int(std::size(lines));
+    int y0 = std::max(0, (c.height() - n) / 2);
+    for (int i = 0; i < n && y0 + i < c.height(); ++i) {
+        int w = int(lines[i].size());
+        c.text(std::max(0, (c.width() - w) / 2), y0 + i, lines[i], i == 0 ? Style::alarm : Style::normal, c.width());
+    }
+}
+
+}  // namespace
+
 void render_screen(const View& v, Canvas& c) {
     c.clear();
+    if (c.width() < 80 || c.height() < 24) return too_small(v, c);
     int h = c.height();
     status_line(v, c);
     render_page(v, c, Rect{0, 1, c.width(), h - 4});

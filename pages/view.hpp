@@ -44,6 +44,8 @@ struct View {
     std::string message;
     bool message_error = false;
     std::string prompt;     // before the input line ("IMD> ", "> ")
+    std::string mode_hint;     // what to do in this mode: Cycle Start, or the jog keys
+    std::string mode_setting;  // the INC step or the JOG feed, "" in other modes
     std::string input;      // the input line text
     int input_cursor = 0;   // in columns
     std::vector<SoftKey> softkeys;

@@ -169,6 +169,43 @@ plausible)
     cmd ":measure D6 X 100"
     wait_for 'D6.X = OM '
     ;;
+guide)
+    # First contact: the mode key says what comes next and what to do; the
+    # OP page keeps the jog keys and the INC step; unbound keys never leak
+    # into the input line; Escape empties it; HELP starts with "Getting
+    # started"; below 80x24 a "Terminal too small" screen, gone after.
+    start
+    wait_for '^ AUTO .*F8→SEQ'
+    wait_for '^  AUTO +home first: F8 to POM'
+    for i in 1 2 3 4 5 6 7 8; do keys F8; done
+    wait_for 'POM: homing; Cycle Start \(F9\) homes the axes'
+    wait_for '^ POM .*F8→AUTO'
+    cmd ":mode inc"
+    wait_for '^  INC +Left Z-, Right Z\+, Up X\+, Down X-'
+    wait_for 'step 1\.000 mm \(Alt-i: next step\)'
+    cmd ":mode imd"
+    for k in F11 S-F1 C-F5 M-F9; do keys $k; done
+    wait_for 'M-F9 does nothing here'
+    keys -l "G0 X1"
+    wait_for '^IMD> G0 X1$'
+    keys Escape
+    wait_for 'input cancelled'
+    screen | grep -q '^IMD> *$' || fail "Escape should empty the input line"
+    keys -l "G0 X2"
+    wait_for '^IMD> G0 X2$'
+    keys F1
+    wait_for '^ Getting started'
+    wait_for '1\. Home: F8 until the status line shows POM'
+    T resize-window -t e2e -x 60 -y 20
+    wait_for 'Terminal too small'
+    wait_for 'this terminal is 60x20'
+    T resize-window -t e2e -x 160 -y 48
+    wait_for '^ Getting started'
+    screen | grep -q 'Terminal too small\|terminal is 60x20' && fail "the small-terminal text stayed after the resize"
+    # At 160 columns the room is used: a step of "Getting started" on one line.
+    screen | grep -Eq '^   2\. Jog: F8 to JOG, .* INC moves one step\.' ||
+        fail "at 160 columns step 2 should fit on one line"
+    ;;
 *)
     echo "unknown case $case"
     exit 2
