@@ -47,7 +47,7 @@ bool on_off(std::string_view s, bool current, bool& out) {
 
 const std::vector<std::pair<std::string, std::string>>& command_help() {
     static const std::vector<std::pair<std::string, std::string>> k = {
-        {":page om|op|prog|graph|info|param|pref|corr|dir|alarm|help|edit", "show a page"},
+        {":page om|op|prog|graph|info|param|pref|corr|dir|alarm|help|edit|history", "show a page"},
         {":mode auto|seq|dry|test|rns|imd|jog|inc|pom|edit|modif", "select a mode (refused while a program is in cycle)"},
         {":load N", "select program %N for AUTO, SEQ, DRY RUN, TEST and RNS"},
         {":cycle", "Cycle Start"},
@@ -98,7 +98,7 @@ Effect Session::command(std::string_view text) {
     if (cmd == "page") {
         pages::PageId p;
         if (!pages::parse_page(a1, p)) {
-            return usage(":page om|op|prog|graph|info|param|pref|corr|dir|alarm|help|edit");
+            return usage(":page om|op|prog|graph|info|param|pref|corr|dir|alarm|help|edit|history");
         }
         show_page(p);
         return Effect::redraw;

@@ -88,9 +88,9 @@ Effect Session::edit_save(bool force) {
             return Effect::redraw;
         }
         if (r.value.status == store::SaveStatus::conflict) {
-            say("conflict: " + r.value.current_by + " saved revision " + std::to_string(r.value.current) +
-                    " meanwhile; yours is kept as revision " + std::to_string(r.value.revision) +
-                    " (pupitre history " + std::to_string(editor.number) + ")",
+            say("conflict: r" + std::to_string(r.value.current) + " by " + r.value.current_by +
+                    " came first; yours is kept as r" + std::to_string(r.value.revision) + " (:history " +
+                    std::to_string(editor.number) + ")",
                 true);
             return Effect::redraw;
         }
@@ -119,15 +119,21 @@ Effect Session::edit_history() {
         say(r.error.message, true);
         return Effect::redraw;
     }
-    std::string out = "%" + std::to_string(editor.number) + ":";
-    for (auto it = r.value.rbegin(); it != r.value.rend() && out.size() < 300; ++it) {
+    // The HISTORY page lists them all, newest first (the message line could not).
+    history_.clear();
+    for (auto it = r.value.rbegin(); it != r.value.rend(); ++it) {
         std::time_t t = std::time_t(it->at_ms / 1000);
         char when[32];
-        std::strftime(when, sizeof when, "%m-%d %H:%M", std::localtime(&t));
-        out += " r" + std::to_string(it->revision) + " " + std::string(store::kind_name(it->kind)) + " " + when +
-               " " + it->who + (it->conflict ? " CONFLICT" : "") + ";";
+        std::strftime(when, sizeof when, "%Y-%m-%d %H:%M", std::localtime(&t));
+        history_.push_back(pages::HistoryRow{it->revision, std::string(store::kind_name(it->kind)), when, it->who,
+                                             it->source, it->lines, it->conflict});
     }
-    say(out + " (:restore REV)");
+    history_number_ = editor.number;
+    history_current_ = editor.revision;
+    if (auto info = store_->read(editor.number); !info.error) history_current_ = info.value.revision;
+    show_page(pages::PageId::history);
+    say(std::to_string(history_.size()) + " revision(s) of %" + std::to_string(editor.number) +
+        ": :restore REV makes one current again");
     return Effect::redraw;
 }
 

@@ -61,7 +61,7 @@ void Session::refresh_dir() {
         if (auto r = store_->list(); !r.error) {
             for (const auto& p : r.value) {
                 if (p.deleted) continue;
-                dir_.push_back(pages::DirEntry{p.number, p.title, int(p.lines), p.revision});
+                dir_.push_back(pages::DirEntry{p.number, p.title, int(p.lines), p.revision, p.conflict});
             }
             return;
         }
@@ -80,6 +80,8 @@ void Session::say(std::string text, bool error) {
 
 void Session::show_page(pages::PageId p) {
     if (page != p) scroll = 0;
+    // The store may have changed (a save, a conflict, another console).
+    if (p == pages::PageId::dir && page != p) refresh_dir();
     page = p;
 }
 
@@ -113,8 +115,8 @@ bool Session::delete_program(int number) {
     }
     refresh_dir();
     dir_cursor = std::min(dir_cursor, std::max(0, int(dir_.size()) - 1));
-    say("%" + std::to_string(number) + " deleted (its history stays: pupitre history " + std::to_string(number) +
-        ", pupitre restore)");
+    say("%" + std::to_string(number) + " deleted; its history stays (:history " + std::to_string(number) +
+        ", then :restore " + std::to_string(number) + " REV)");
     return true;
 }
 
@@ -432,6 +434,9 @@ pages::View Session::view() const {
     Mode m = sim_->mode();
     v.prompt = prompt();
     v.mode_hint = mode_hint(m);
+    v.history = history_;
+    v.history_number = history_number_;
+    v.history_current = history_current_;
     v.mode_setting = mode_setting(m);
     v.input = input_.text();
     v.input_cursor = input_.cursor();

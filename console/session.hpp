@@ -145,7 +145,9 @@ private:
     std::vector<pages::DirEntry> dir_;
     std::string message_;
     bool message_error_ = false;
-    long refusals_ = 0;  // error messages said, to tell a refused entry
+    long refusals_ = 0;
+    std::vector<pages::HistoryRow> history_;  // the HISTORY page (:history)
+    int history_number_ = -1, history_current_ = 0;  // error messages said, to tell a refused entry
     RunState last_state_ = RunState::idle;
     size_t alarms_seen_ = 0;
     std::map<std::string, int64_t> persisted_;  // program writes already stored

@@ -115,7 +115,7 @@ bool Interpreter::pgp_block(const Plan& p, const Axes& target) {
     s.eb_unsigned = p.eb_unsigned;
     s.tag = ++pgp_tag_;
     if (p.has_eb && p.eb_unsigned)
-        warn(err::wUnsignedEB, "EB without a sign is taken as a fillet (EB+), pgp.md §7");
+        warn(err::wUnsignedEB, "EB without a sign is taken as a fillet (EB+): write EB+ or EB- (pupitre-iso(5), PGP)");
     pgp_ctx_[s.tag] = CompCtx{loc_, modal_, modal_.motion, target, 0};
     std::vector<pgp::Elem> out;
     pgp::Error e;

@@ -256,7 +256,7 @@ bool Interpreter::p46_contour(const Plan& p) {
     s.tag = loc_.line;
     if (p.link == 'X') return fail(110, "ES and ET together in one block"), false;
     if (p.has_eb && p.eb_unsigned)
-        warn(err::wUnsignedEB, "EB without a sign is taken as a fillet (EB+), pgp.md §7");
+        warn(err::wUnsignedEB, "EB without a sign is taken as a fillet (EB+): write EB+ or EB- (pupitre-iso(5), PGP)");
     if ((motion == 2 || motion == 3) && !s.has_i && !s.has_j && !s.has_r && !p.pgp)
         return fail(269, "a circle without its centre (" + centre_name(ax.a0) + " " +
                              centre_name(ax.a1) + ") or radius (R)"),

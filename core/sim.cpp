@@ -121,6 +121,14 @@ bool Sim::select(int program, std::string& why) {
         why = "program %" + std::to_string(program) + " is not in memory";
         return false;
     }
+    if (selected_ != program) {
+        // A new program: the status line and the OP page forget the old one's
+        // block, count and cycle time.
+        loc_ = Loc{};
+        blocks_ = 0;
+        run_seconds_ = 0;
+        if (state_ == RunState::ended) state_ = RunState::idle;
+    }
     selected_ = program;
     return true;
 }
@@ -245,7 +253,7 @@ bool Sim::cycle_start(std::string& why) {
     manual_ = false;
     seq_stop_ = false;
     blocks_ = 0;
-    start_clock_ = clock_;
+    run_seconds_ = 0;
     state_ = RunState::running;
     return true;
 }
@@ -463,7 +471,7 @@ bool Sim::begin_next() {
             if (e.a == 2) corr_ = 0;  // M02: D0, the tool T stays (turning.md §8.3)
             if (e.a == 2)
                 message_ = "M02: end of program %" + std::to_string(e.loc.prog) + ", " +
-                           std::to_string(blocks_) + " blocks, cycle time " + fmt_seconds(clock_ - start_clock_);
+                           std::to_string(blocks_) + " blocks, cycle time " + fmt_seconds(run_seconds_);
             break;
         case Ev::dwell: break;
     }
@@ -603,8 +611,9 @@ bool Sim::step_interp(long& budget) {
         return false;
     }
     --budget;
+    long before = in_->blocks();
     StepResult r = in_->step();
-    ++blocks_;
+    blocks_ += in_->blocks() - before;  // the end of an IMD text is not a block
     if (!searching_ || in_->has_errors()) loc_ = in_->location();
     raise_from_interp();
     switch (r) {
@@ -668,11 +677,13 @@ void Sim::advance(double dt, long max_blocks) {
         if (dt >= need) {
             dt -= need;
             clock_ += need;
+            if (!manual_) run_seconds_ += need;  // jogs and POM are not cycle time
             t_ = dur_;
             finish_current();
         } else {
             t_ += dt * r;
             clock_ += dt;
+            if (!manual_) run_seconds_ += dt;
             interpolate();
             break;
         }

@@ -112,7 +112,8 @@ public:
     double clock() const { return clock_; }
     // Seconds of motion still queued (JOG keeps about 0.1 s ahead).
     double queued_time() const;
-    double cycle_time() const { return clock_ - start_clock_; }
+    // Seconds of the last program run (or IMD block): jogs and POM not counted.
+    double cycle_time() const { return run_seconds_; }
     long blocks_done() const { return mode_ == Mode::test && test_ ? test_blocks_ : blocks_; }
     const std::vector<Alarm>& alarms() const { return alarms_; }  // history, newest last
     bool alarm_active() const { return state_ == RunState::alarm; }
@@ -189,7 +190,6 @@ private:
     bool manual_ = false;      // the queue holds POM or JOG moves, not a program
     bool seq_stop_ = false;    // SEQ: stop once this block's events are shown
     size_t diag_seen_ = 0;
-    double start_clock_ = 0;
     Axes planned_{};           // machine position at the end of the queue
     std::unique_ptr<ProgramText> imd_;
     std::deque<Ev> q_;
@@ -205,6 +205,7 @@ private:
     bool m7_ = false, m8_ = false;
     int tool_ = 0, corr_ = 0;
     double clock_ = 0;
+    double run_seconds_ = 0;
     long blocks_ = 0;
     long test_blocks_ = 0;
     std::vector<Alarm> alarms_;

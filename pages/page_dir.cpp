@@ -1,6 +1,8 @@
-// The DIR page: the programs in the store, the selected one marked. Up and
-// Down move the cursor, Enter loads, Del deletes (asking twice); a number
-// typed on the input line loads that program.
+// The DIR page: the programs in the store with their titles, the selected one
+// marked, a revision kept aside by a conflicting save flagged. Up and Down
+// move the cursor, Enter loads, Del deletes (asking twice); a number typed
+// on the input line loads that program; the last lines say how to create
+// and edit one.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <algorithm>
 
@@ -13,9 +15,12 @@ void page_dir(const View& v, Canvas& c, const Rect& r) {
     int y = r.y + 1;
     c.text(2, y, pad("program", 12) + pad("lines", 8) + pad("rev", 5) + "title", Style::dim);
     ++y;
-    int rows = r.h - 2;
+    int rows = r.h - 4;
+    int by = r.y + r.h - 2;
+    c.text(2, by, "Enter selects the program (or type its number); Del twice deletes it.", Style::dim);
+    c.text(2, by + 1, ":edit N edits or creates %N; Alt-e edits the selected program.", Style::dim);
     if (v.programs.empty()) {
-        c.text(2, y, "The store holds no program: import some with `pupitre import FILE`.", Style::dim);
+        c.text(2, y, "No program yet: :edit 1 creates %1 (or, from a shell, pupitre import FILE).", Style::dim);
         return;
     }
     int cur = std::clamp(v.dir_cursor, 0, int(v.programs.size()) - 1);
@@ -24,9 +29,11 @@ void page_dir(const View& v, Canvas& c, const Rect& r) {
         const DirEntry& e = v.programs[size_t(first + i)];
         bool sel = v.sim->selected() == e.number;
         std::string line = (sel ? "* %" : "  %") + pad(std::to_string(e.number), 9) +
-                           lpad(std::to_string(e.lines), 6) + "  " + lpad(std::to_string(e.revision), 4) + "  " +
-                           e.title;
-        c.text(0, y + i, line, sel ? Style::value : Style::normal, r.w);
+                           lpad(std::to_string(e.lines), 6) + "  " + lpad(std::to_string(e.revision), 4) + "  ";
+        int x = c.text(0, y + i, line, sel ? Style::value : Style::normal, r.w);
+        if (e.conflict > 0)
+            x += c.text(x, y + i, "CONFLICT r" + std::to_string(e.conflict) + " ", Style::warn, r.w - x);
+        c.text(x, y + i, e.title, sel ? Style::value : Style::normal, r.w - x);
         if (first + i == cur) c.style(Rect{r.x, y + i, r.w, 1}, Style::select);
     }
 }

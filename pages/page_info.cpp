@@ -78,7 +78,7 @@ void page_info(const View& v, Canvas& c, const Rect& r) {
                          : m.radcomp == 42 ? "   radius comp. right (G42)"
                                            : "   no radius compensation (G40)"));
     lines.push_back(Line{});
-    lines.push_back(Line{}.add(" Offsets (X as a radius on the lathe)", Style::title));
+    lines.push_back(Line{}.add(s.machine().lathe ? " Offsets (X as a radius)" : " Offsets", Style::title));
     kv("PREF", axes_text(s, f.pref));
     kv("DEC1", axes_text(s, f.dec1));
     kv("DEC3", axes_text(s, f.dec3));

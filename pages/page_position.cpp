@@ -86,7 +86,8 @@ void page_position(const View& v, Canvas& c, const Rect& r) {
     }
     row("Program", where);
     char buf[64];
-    std::snprintf(buf, sizeof buf, "%ld blocks   cycle time %.1f s", s.blocks_done(), s.cycle_time());
+    std::snprintf(buf, sizeof buf, "%ld block%s   cycle time %.1f s", s.blocks_done(), s.blocks_done() == 1 ? "" : "s",
+                  s.cycle_time());
     row("Run", buf);
     // The mode's keys at all times: what Cycle Start does, the jog keys, the step.
     if (!v.mode_hint.empty()) row(mode_name(s.mode()), v.mode_hint, Style::normal);

@@ -15,7 +15,7 @@ namespace pupitre::pages {
 
 namespace {
 
-constexpr std::string_view kPageWords[] = {"om", "op", "prog", "info", "param", "dir", "alarm", "help", "pref", "corr", "edit", "graph"};
+constexpr std::string_view kPageWords[] = {"om", "op", "prog", "info", "param", "dir", "alarm", "help", "pref", "corr", "edit", "graph", "history"};
 
 void status_line(const View& v, Canvas& c) {
     const Sim& s = *v.sim;
@@ -157,6 +157,7 @@ void render_page(const View& v, Canvas& c, const Rect& r) {
         case PageId::corr: return page_corr(v, c, r);
         case PageId::edit: return page_edit(v, c, r);
         case PageId::graph: return page_graph(v.graph, v.sim->machine(), c, r);
+        case PageId::history: return page_history(v, c, r);
     }
 }
 

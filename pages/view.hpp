@@ -12,7 +12,7 @@
 
 namespace pupitre::pages {
 
-enum class PageId { om, op, prog, info, param, dir, alarm, help, pref, corr, edit, graph };
+enum class PageId { om, op, prog, info, param, dir, alarm, help, pref, corr, edit, graph, history };
 std::string_view page_word(PageId p);            // om, op, prog, …
 bool parse_page(std::string_view word, PageId& out);
 
@@ -32,6 +32,17 @@ struct DirEntry {
     std::string title;
     int lines = 0;
     int revision = 0;
+    int conflict = 0;  // a revision kept aside by a conflicting save (the store), 0 if none
+};
+
+// A revision of a stored program, as the HISTORY page lists it.
+struct HistoryRow {
+    int revision = 0;
+    std::string kind;  // save, import, restore, delete…
+    std::string when;  // local time
+    std::string who, source;
+    int64_t lines = 0;
+    bool conflict = false;
 };
 
 struct View {
@@ -62,6 +73,10 @@ struct View {
     std::vector<std::string> pending;  // origins changed in a run, not applied yet
     bool protect = false;
     size_t undo_depth = 0;
+    // HISTORY (:history).
+    int history_number = -1;          // the program shown
+    int history_current = 0;          // its current revision
+    std::vector<HistoryRow> history;  // newest first
     // EDIT and MODIF.
     const std::vector<std::string>* edit_lines = nullptr;  // null: no program open
     int edit_number = -1, edit_revision = 0;

@@ -206,6 +206,50 @@ guide)
     screen | grep -Eq '^   2\. Jog: F8 to JOG, .* INC moves one step\.' ||
         fail "at 160 columns step 2 should fit on one line"
     ;;
+stale)
+    # Texts that must follow what happened: the status line after :load, one
+    # IMD block counted once, jogs not counted as cycle time, the mill's INFO
+    # page, :history on its own page, a CONFLICT revision marked on DIR.
+    start
+    pom
+    cmd ":load 300"
+    cmd ":mode auto"
+    cmd ":speed max"
+    keys F9
+    wait_for 'M02: end of program %300'
+    wait_for '^ AUTO +%300 N120 +END'
+    cmd ":load 301"
+    wait_for '^ AUTO +%301 +READY'
+    screen | grep -q 'N120' && fail "the status line kept N120 of %300 after :load 301"
+    cmd ":mode imd"
+    cmd "G0 X100"
+    keys F9
+    wait_for '^ IMD .*END'
+    wait_for '^  Run +1 block +cycle time'
+    cmd ":mode jog"
+    for i in 1 2 3 4 5 6 7 8 9 10; do keys Left; done
+    sleep 0.5
+    wait_for '^  Run +1 block +cycle time 0\.[0-9] s'
+    # :history gets a page; a save over a revision made meanwhile is a
+    # conflict, marked on DIR.
+    cmd ":edit 300"
+    cmd "N999 G0 X10"
+    printf '%%300 (FROM ELSEWHERE)\nN10 G0 X20\nN20 M02\n' >"$work/other.iso"
+    "$bin" import "$work/other.iso" >/dev/null || fail "import from a shell failed"
+    cmd ":save"
+    wait_for 'conflict: .*:history 300'
+    cmd ":history"
+    wait_for '^─ HISTORY  %300 revisions'
+    wait_for 'CONFLICT'
+    cmd ":page dir"
+    wait_for '%300 .*CONFLICT r[0-9]+ '
+    cmd ":quit"
+    wait_for '^EXIT=0'
+    next_server
+    start --machine mill
+    cmd ":page info"
+    wait_for '^ Offsets$'
+    ;;
 *)
     echo "unknown case $case"
     exit 2
