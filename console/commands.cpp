@@ -74,9 +74,10 @@ const std::vector<std::pair<std::string, std::string>>& command_help() {
         {":find TEXT", "EDIT: the next block containing TEXT"},
         {":renum [START [STEP]]", "EDIT: renumber the N labels (default 10 10) and their references"},
         {":history / :restore REV", "EDIT: the revisions of the program, and making one current again"},
-        {":close", "EDIT: close the program (unsaved changes dropped)"},
+        {":close", "EDIT: close the program (asks before dropping unsaved changes; :close! does not)"},
+        {":recover / :discard", "EDIT: load the changes an earlier session left unsaved, or drop them"},
         {":mode modif", "MODIF: change the blocks to come of an interrupted program"},
-        {":quit", "leave the console (also Ctrl-C)"},
+        {":quit", "leave the console, also Ctrl-C (asks before dropping unsaved changes; :quit! does not)"},
     };
     return k;
 }
@@ -91,10 +92,8 @@ Effect Session::command(std::string_view text) {
         say(std::string("usage: ") + std::string(u), true);
         return Effect::redraw;
     };
-    if (cmd == "quit" || cmd == "q") {
-        quit = true;
-        return Effect::quit;
-    }
+    if (cmd == "quit" || cmd == "q" || cmd == "quit!" || cmd == "q!") return quit_command(cmd.back() == '!');
+    if (cmd == "recover" || cmd == "discard") return recover_command(cmd == "discard");
     if (cmd == "page") {
         pages::PageId p;
         if (!pages::parse_page(a1, p)) {
@@ -244,11 +243,21 @@ Effect Session::command(std::string_view text) {
         return edit_open(int(n));
     }
     if (cmd == "save" || cmd == "save!") return edit_save(cmd == "save!");
-    if (cmd == "close") {
+    if (cmd == "close" || cmd == "close!") {
         if (modif) return usage(":close is for EDIT; MODIF ends with Cycle Start or RAZ");
-        bool dirty = editor.dirty;
-        editor.close();
-        say(dirty ? "editor closed (unsaved changes dropped)" : "editor closed");
+        if (!editor.is_open()) return usage(":edit N first");
+        int n = editor.number;
+        auto close = [this, n] {
+            bool dirty = editor.dirty;
+            editor.close();
+            drop_journal(n);
+            say(dirty ? "editor closed (unsaved changes dropped)" : "editor closed");
+        };
+        if (editor.dirty && cmd == "close") {
+            confirm("%" + std::to_string(n) + " has unsaved changes: close and drop them?", close);
+            return Effect::redraw;
+        }
+        close();
         return Effect::redraw;
     }
     if (cmd == "goto" || cmd == "find") {

@@ -40,10 +40,12 @@ Effect Session::edit_open(int number) {
     }
     if (fresh) text = "%" + std::to_string(number) + "\n";
     editor.open(number, text, rev, fresh);
+    journaled_changes_ = editor.changes;
     modify_pending = false;
     show_page(pages::PageId::edit);
     say(fresh ? "new program %" + std::to_string(number) + ": type its blocks, then :save"
               : "%" + std::to_string(number) + " revision " + std::to_string(rev) + ": type a block to insert it after >, Enter to modify the one under >");
+    offer_journal(number, text);
     return Effect::redraw;
 }
 
@@ -87,7 +89,9 @@ Effect Session::edit_save(bool force) {
             say("not saved: " + r.error.message, true);
             return Effect::redraw;
         }
+        drop_journal(editor.number);  // the text is in the store (a conflict keeps it too)
         if (r.value.status == store::SaveStatus::conflict) {
+            editor.dirty = false;  // the text is safe in the store, as the CONFLICT revision
             say("conflict: r" + std::to_string(r.value.current) + " by " + r.value.current_by +
                     " came first; yours is kept as r" + std::to_string(r.value.revision) + " (:history " +
                     std::to_string(editor.number) + ")",
@@ -103,6 +107,7 @@ Effect Session::edit_save(bool force) {
     }
     sim_->invalidate_text_cache();
     editor.dirty = false;
+    drop_journal(editor.number);
     refresh_dir();
     say("%" + std::to_string(editor.number) + " saved" + (store_ ? " as revision " + std::to_string(editor.revision) : "") +
         (editor.error_line >= 0 ? " with a syntax error at line " + std::to_string(editor.error_line + 1) : ""));

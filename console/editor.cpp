@@ -67,6 +67,7 @@ std::string Editor::insert_after(std::string block) {
     lines_.insert(lines_.begin() + cursor + 1, std::move(block));
     ++cursor;
     dirty = true;
+    ++changes;
     return {};
 }
 
@@ -75,6 +76,7 @@ std::string Editor::replace(std::string block) {
     if (!editable(cursor, why)) return why;
     lines_[size_t(cursor)] = std::move(block);
     dirty = true;
+    ++changes;
     return {};
 }
 
@@ -97,6 +99,7 @@ std::string Editor::erase() {
     cursor = std::min(a, int(lines_.size()) - 1);
     mark = -1;
     dirty = true;
+    ++changes;
     return {};
 }
 
@@ -119,6 +122,7 @@ std::string Editor::paste() {
     lines_.insert(lines_.begin() + cursor + 1, clipboard_.begin(), clipboard_.end());
     cursor += int(clipboard_.size());
     dirty = true;
+    ++changes;
     return {};
 }
 
@@ -216,7 +220,7 @@ int Editor::renumber(long start, long step) {
         ++count;
     }
     for (auto& l : lines_) l = relabel_refs(l, map);
-    if (count) dirty = true;
+    if (count) dirty = true, ++changes;
     return count;
 }
 

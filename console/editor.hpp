@@ -4,6 +4,7 @@
 // session wires it to the store and the keys, the EDIT page shows it.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -22,6 +23,7 @@ public:
     int number = -1;
     int revision = 0;     // the store revision the text was loaded from (0: new)
     bool dirty = false;
+    uint64_t changes = 0;  // counts every change (the recovery journal follows it)
     int cursor = 0;       // index in lines()
     int mark = -1;        // the other end of a block range, -1 when none
     int locked = 0;       // MODIF: lines [0, locked) are prepared and cannot change

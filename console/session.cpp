@@ -52,6 +52,7 @@ std::string Session::load_store() {
     for (const auto& [name, v] : store::persistent_writes(sim_->interp())) persisted_[name] = v;
     if (auto r = store_->setting("protect.on"); !r.error && r.value) protect = *r.value == "1";
     refresh_dir();
+    if (problem.empty()) problem = recovered_note();
     return problem;
 }
 
@@ -123,6 +124,12 @@ bool Session::delete_program(int number) {
 // ---- keys ----
 
 Effect Session::on_key(const Key& k) {
+    Effect e = dispatch_key(k);
+    sync_journal();  // a change to the program in EDIT is journaled at once
+    return e;
+}
+
+Effect Session::dispatch_key(const Key& k) {
     std::string pg(pages::page_word(page)), md;
     Mode m = sim_->mode();
     for (std::string_view w : {"auto", "seq", "dry", "test", "rns", "imd", "jog", "inc", "pom"}) {

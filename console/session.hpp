@@ -95,6 +95,9 @@ public:
     bool modif = false;           // the editor holds the interrupted program
     bool modify_pending = false;  // Enter put the current block on the input line
     Effect edit_open(int number);
+    Effect recover_command(bool discard);  // :recover, :discard
+    Effect quit_command(bool force);       // :quit asks before dropping unsaved changes
+    std::string recovered_note() const;    // journals left by an earlier session
     Effect edit_save(bool force);
     Effect edit_text(const std::string& block);
     Effect edit_history();
@@ -130,6 +133,14 @@ private:
     Effect route_text(const std::string& line);
     static bool for_line_editor(const Key& k);
     Effect cancel_input();
+    // The editor's recovery journal (console/recover.cpp).
+    std::string journal_dir() const;
+    std::string journal_path(int number) const;
+    void sync_journal();
+    void drop_journal(int number);
+    bool read_journal(int number, std::string& text, int& base) const;
+    void offer_journal(int number, const std::string& loaded);
+    Effect dispatch_key(const Key& k);
     Effect set_value(std::string_view assignment);
     void persist_run();
     void check_run_end();
@@ -146,6 +157,7 @@ private:
     std::string message_;
     bool message_error_ = false;
     long refusals_ = 0;
+    uint64_t journaled_changes_ = 0;  // the editor's changes already in the journal
     std::vector<pages::HistoryRow> history_;  // the HISTORY page (:history)
     int history_number_ = -1, history_current_ = 0;  // error messages said, to tell a refused entry
     RunState last_state_ = RunState::idle;

@@ -250,6 +250,48 @@ stale)
     cmd ":page info"
     wait_for '^ Offsets$'
     ;;
+journal)
+    # kill -9 loses at most the line being typed: the journal brings the rest
+    # back at the next start; :quit and Ctrl-C ask before dropping changes.
+    start
+    cmd ":edit 300"
+    wait_for '^─ EDIT  %300'
+    cmd "N5 G0 X111"
+    wait_for 'N5 G0 X111'
+    keys -l "N6 G0 X2"
+    pid=$(pgrep -P "$(T list-panes -t e2e -F '#{pane_pid}')" -f "$bin" -n)
+    kill -KILL "$pid"
+    wait_for 'EXIT=137'
+    next_server
+    start
+    wait_for 'unsaved work recovered for %300: :edit 300, then :recover'
+    cmd ":edit 300"
+    wait_for '%300 has unsaved changes from an earlier session: :recover'
+    screen | grep -q 'N5 G0 X111' && fail ":edit should show the stored text until :recover"
+    cmd ":recover"
+    wait_for 'recovered text loaded'
+    wait_for 'N5 G0 X111'
+    # :quit and Ctrl-C ask; "n" keeps the console and the text.
+    cmd ":quit"
+    wait_for 'unsaved changes: quit and drop them'
+    cmd "n"
+    wait_for 'cancelled: nothing changed'
+    keys C-c
+    wait_for 'unsaved changes: quit and drop them'
+    keys Escape
+    wait_for 'cancelled: nothing changed'
+    cmd ":save"
+    wait_for '%300 saved as revision'
+    cmd ":quit"
+    wait_for '^EXIT=0'
+    next_server
+    start
+    screen | grep -q 'recovered' && fail "a saved program should leave no journal"
+    cmd ":edit 300"
+    cmd "N7 G0 X3"
+    cmd ":quit!"
+    wait_for '^EXIT=0'
+    ;;
 *)
     echo "unknown case $case"
     exit 2

@@ -1,0 +1,170 @@
+// Never lose typed work (issue 12.4): the editor's recovery journal and the
+// questions before unsaved changes are dropped.
+//
+// Like vim's swap files, every change to a program open in EDIT writes the
+// whole text to a journal beside the store (STORE.recover/N.iso, written to a
+// temporary file, synced and renamed: a kill -9 or a dropped SSH connection
+// loses at most the line being typed). :save, and a drop the operator
+// confirmed, remove it. The next :edit N (and the start message) offers the
+// text: :recover loads it, :discard drops it.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <cstdio>
+#include <dirent.h>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "console/session.hpp"
+#include "core/store/store.hpp"
+
+namespace pupitre::console {
+
+namespace {
+
+// The first line of a journal names what it recovers.
+constexpr const char* kHeader = "(PUPITRE RECOVERY OF %%%d BASED ON REVISION %d)\n";
+
+bool write_all(int fd, const std::string& s) {
+    size_t done = 0;
+    while (done < s.size()) {
+        ssize_t n = ::write(fd, s.data() + done, s.size() - done);
+        if (n <= 0) return false;
+        done += size_t(n);
+    }
+    return true;
+}
+
+}  // namespace
+
+std::string Session::journal_dir() const {
+    if (!store_ || store_->path().empty() || store_->path()[0] == ':') return {};
+    return store_->path() + ".recover";
+}
+
+std::string Session::journal_path(int number) const {
+    std::string dir = journal_dir();
+    return dir.empty() ? dir : dir + "/" + std::to_string(number) + ".iso";
+}
+
+// After every key: a change made to the program in EDIT goes to its journal.
+void Session::sync_journal() {
+    if (!editor.is_open() || modif || editor.changes == journaled_changes_) return;
+    journaled_changes_ = editor.changes;
+    std::string path = journal_path(editor.number);
+    if (path.empty()) return;
+    ::mkdir(journal_dir().c_str(), 0700);
+    char head[96];
+    std::snprintf(head, sizeof head, kHeader, editor.number, editor.revision);
+    std::string tmp = path + ".tmp";
+    int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0600);
+    bool ok = fd >= 0 && write_all(fd, head + editor.text()) && ::fsync(fd) == 0;
+    if (fd >= 0) ::close(fd);
+    if (!ok || ::rename(tmp.c_str(), path.c_str()) != 0) {
+        ::unlink(tmp.c_str());
+        say("the recovery journal cannot be written (" + journal_dir() + "): :save often", true);
+    }
+}
+
+void Session::drop_journal(int number) {
+    std::string path = journal_path(number);
+    if (!path.empty()) ::unlink(path.c_str());
+}
+
+// The journal of a program: its text and base revision; false if none.
+bool Session::read_journal(int number, std::string& text, int& base) const {
+    std::string path = journal_path(number);
+    if (path.empty()) return false;
+    std::ifstream f(path, std::ios::binary);
+    if (!f) return false;
+    std::string head;
+    if (!std::getline(f, head)) return false;
+    int n = -1;
+    base = 0;
+    if (std::sscanf(head.c_str(), "(PUPITRE RECOVERY OF %%%d BASED ON REVISION %d)", &n, &base) != 2 || n != number)
+        return false;
+    std::stringstream ss;
+    ss << f.rdbuf();
+    text = ss.str();
+    return true;
+}
+
+// Programs with a journal left by an earlier session, for the start message.
+std::string Session::recovered_note() const {
+    std::string dir = journal_dir();
+    DIR* d = dir.empty() ? nullptr : ::opendir(dir.c_str());
+    if (!d) return {};
+    std::string list;
+    int first = -1;
+    while (dirent* e = ::readdir(d)) {
+        std::string name = e->d_name;
+        if (name.size() < 5 || name.substr(name.size() - 4) != ".iso") continue;
+        int n = std::atoi(name.c_str());
+        if (first < 0) first = n;
+        list += (list.empty() ? "%" : ", %") + std::to_string(n);
+    }
+    ::closedir(d);
+    if (list.empty()) return {};
+    return "unsaved work recovered for " + list + ": :edit " + std::to_string(first) + ", then :recover";
+}
+
+// On :edit N: a journal that differs from the text loaded is offered.
+void Session::offer_journal(int number, const std::string& loaded) {
+    std::string text;
+    int base = 0;
+    if (!read_journal(number, text, base)) return;
+    if (text == loaded) {
+        drop_journal(number);
+        return;
+    }
+    say("%" + std::to_string(number) + " has unsaved changes from an earlier session: :recover loads them, "
+        ":discard drops them", true);
+}
+
+// :recover and :discard, on the program open in EDIT.
+Effect Session::recover_command(bool discard) {
+    if (!editor.is_open() || modif) {
+        say("open the program first: :edit N", true);
+        return Effect::redraw;
+    }
+    int n = editor.number;
+    std::string text;
+    int base = 0;
+    if (!read_journal(n, text, base)) {
+        say("%" + std::to_string(n) + " has no recovered changes", true);
+        return Effect::redraw;
+    }
+    if (discard) {
+        drop_journal(n);
+        say("recovered changes of %" + std::to_string(n) + " dropped");
+        return Effect::redraw;
+    }
+    editor.open(n, text, base, false);
+    editor.dirty = true;
+    ++editor.changes;
+    sync_journal();
+    say("%" + std::to_string(n) + ": recovered text loaded (based on revision " + std::to_string(base) +
+        "); :save keeps it");
+    return Effect::redraw;
+}
+
+// :quit, Ctrl-C: unsaved changes in EDIT are dropped only when the operator
+// says so (or :quit!). The journal goes with them.
+Effect Session::quit_command(bool force) {
+    if (!force && editor.is_open() && editor.dirty && !modif) {
+        int n = editor.number;
+        confirm("%" + std::to_string(n) + " has unsaved changes: quit and drop them? (:save first, or :quit!)",
+                [this, n] {
+                    drop_journal(n);
+                    quit = true;
+                });
+        return Effect::redraw;
+    }
+    if (force && editor.is_open() && !modif) drop_journal(editor.number);
+    quit = true;
+    return Effect::quit;
+}
+
+}  // namespace pupitre::console
