@@ -477,6 +477,7 @@ pages::View Session::view() const {
     v.pending = pending_origins();
     v.protect = protect;
     v.undo_depth = undo_.size();
+    v.last_setting = last_setting_;
     if (editor.is_open()) {
         v.edit_lines = &editor.lines();
         v.edit_number = editor.number;

@@ -157,6 +157,7 @@ private:
     std::string message_;
     bool message_error_ = false;
     long refusals_ = 0;
+    std::string last_setting_;  // the PREF and CORR pages show its arithmetic
     uint64_t journaled_changes_ = 0;  // the editor's changes already in the journal
     std::vector<pages::HistoryRow> history_;  // the HISTORY page (:history)
     int history_number_ = -1, history_current_ = 0;  // error messages said, to tell a refused entry

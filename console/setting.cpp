@@ -170,8 +170,10 @@ Effect Session::touch_now(int axis, double surface) {
         say("touch-off: " + why, true);
         return Effect::redraw;
     }
-    if (apply_setting(t.name, t.after, "touch-off " + std::string(1, kAxisNames[size_t(axis)]) + " " + mm(surface)))
-        say(t.formula + " (was " + mm(t.before) + ")");
+    if (apply_setting(t.name, t.after, "touch-off " + std::string(1, kAxisNames[size_t(axis)]) + " " + mm(surface))) {
+        last_setting_ = t.formula + " (was " + mm(t.before) + ")";
+        say(last_setting_);
+    }
     return Effect::redraw;
 }
 
@@ -185,8 +187,10 @@ Effect Session::measure(int d, int axis, double surface) {
         say("measure: " + why, true);
         return Effect::redraw;
     }
-    if (apply_setting(t.name, t.after, "measure " + std::string(1, kAxisNames[size_t(axis)]) + " " + mm(surface)))
-        say(t.formula + " (was " + mm(t.before) + ")");
+    if (apply_setting(t.name, t.after, "measure " + std::string(1, kAxisNames[size_t(axis)]) + " " + mm(surface))) {
+        last_setting_ = t.formula + " (was " + mm(t.before) + ")";
+        say(last_setting_);
+    }
     return Effect::redraw;
 }
 

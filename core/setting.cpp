@@ -21,6 +21,24 @@ std::string term(const char* name, double v) {
     return std::string(" - ") + name + " " + num(v);
 }
 
+// The lathe's X is shown as a diameter (OM, OP, the surface typed) but PREF,
+// DEC1, DEC3, G59 and the gauges are radii (000:1187-1211): the formula shows
+// the diameters as shown, halved, and names the result a radius.
+bool diameter_x(const Interpreter& in, int axis) { return axis == X && in.to_display(X, 1.0) != 1.0; }
+
+std::string om_term(const Interpreter& in, int axis) {
+    double om = in.machine_pos()[size_t(axis)];
+    return diameter_x(in, axis) ? "OM \u00f8" + num(in.to_display(X, om)) + "/2" : "OM " + num(om);
+}
+
+std::string surface_term(const Interpreter& in, int axis, double typed) {
+    return diameter_x(in, axis) ? " - surface \u00f8" + num(typed) + "/2" : " - surface " + num(typed);
+}
+
+std::string result_name(const Interpreter& in, const std::string& name, int axis) {
+    return diameter_x(in, axis) ? name + " (radius)" : name;
+}
+
 std::string frame_problem(const Interpreter& in) {
     const Frames& f = in.frames();
     if (f.mirror.any() || f.scale_on || std::abs(f.ed) > 1e-12)
@@ -51,8 +69,9 @@ std::string touch_off(const Interpreter& in, int axis, double surface, Touch& t)
     t.name = std::string("PREF.") + kAxisNames[a];
     t.before = f.pref[a];
     t.after = touch_pref(in.machine_pos()[a], f.g59[a], f.dec1[a], f.dec3[a], gauge, s);
-    t.formula = t.name + " = OM " + num(in.machine_pos()[a]) + term("DEC1", f.dec1[a]) + term("DEC3", f.dec3[a]) +
-                term("G59", f.g59[a]) + term("gauge", gauge) + " - surface " + num(s) + " = " + num(t.after);
+    t.formula = result_name(in, t.name, axis) + " = " + om_term(in, axis) + term("DEC1", f.dec1[a]) +
+                term("DEC3", f.dec3[a]) + term("G59", f.g59[a]) + term("gauge", gauge) +
+                surface_term(in, axis, surface) + " = " + num(t.after);
     return {};
 }
 
@@ -79,9 +98,9 @@ std::string measure(const Interpreter& in, int d, int axis, double surface, Touc
     double total = measure_gauge(in.machine_pos()[a], f.g59[a], f.pref[a], f.dec1[a], f.dec3[a], s);
     if (!m.lathe && in.modal().tool_axis_neg) total = -total;
     t.after = total - dyn;
-    t.formula = t.name + " = OM " + num(in.machine_pos()[a]) + term("PREF", f.pref[a]) + term("DEC1", f.dec1[a]) +
-                term("DEC3", f.dec3[a]) + term("G59", f.g59[a]) + " - surface " + num(s) + term("dynamic", dyn) +
-                " = " + num(t.after);
+    t.formula = result_name(in, t.name, axis) + " = " + om_term(in, axis) + term("PREF", f.pref[a]) +
+                term("DEC1", f.dec1[a]) + term("DEC3", f.dec3[a]) + term("G59", f.g59[a]) +
+                surface_term(in, axis, surface) + term("dynamic", dyn) + " = " + num(t.after);
     return {};
 }
 

@@ -68,7 +68,7 @@ void Canvas::clear() { std::fill(cells_.begin(), cells_.end(), Cell{}); }
 void Canvas::put(int x, int y, char32_t ch, Style st) {
     if (x < 0 || y < 0 || x >= w_ || y >= h_) return;
     if (ch < 0x20 || ch == 0x7f) ch = U'?';  // never a control character on screen
-    if (ascii_ && ch >= 0x80) ch = U'?';
+    if (ascii_ && ch >= 0x80) ch = ch == U'\u00f8' ? U'o' : ch == U'\u2192' ? U'>' : U'?';  // ø (diameter), →
     cells_[size_t(y * w_ + x)] = Cell{ch, st};
 }
 

@@ -32,7 +32,7 @@ void page_corr(const View& v, Canvas& c, const Rect& r) {
     c.text(2, y, "D", Style::dim);
     for (size_t i = 0; i < fields.size(); ++i) c.text_right(6 + int(i) * 10, y, 10, fields[i], Style::title);
     ++y;
-    int rows = r.h - 6;
+    int rows = r.h - 6 - (v.last_setting.empty() ? 0 : 1);
     int active = s.corrector();
     int first = std::clamp(v.corr_cursor - rows / 2, 1, std::max(1, m.correctors - rows + 1));
     for (int i = 0; i < rows && first + i <= m.correctors; ++i) {
@@ -57,6 +57,9 @@ void page_corr(const View& v, Canvas& c, const Rect& r) {
         if (cur) c.style(Rect{r.x, y + i, r.w, 1}, Style::select);
     }
     int by = r.y + r.h - 4;
+    // The last measurement with its arithmetic (X gauges are radii, the
+    // diameters shown and typed are halved).
+    if (!v.last_setting.empty()) c.text(2, by - 1, "Last: " + v.last_setting, Style::value, r.w - 3);
     c.text(2, by, "Presetter: " + std::string(m.lathe ? "X=63.345 or Z=38.237" : "L=120.5 or R=5") + " sets D" +
                       std::to_string(v.corr_cursor) + "; Up/Down or D5 choose another.",
            Style::dim);

@@ -21,25 +21,6 @@ const char* const kGettingStarted[] = {
     "Commands start with ':' (Tab completes). RAZ is F12 (or Alt-r), off the F1-F10 row.",
 };
 
-// Splits `text` into lines of at most `width` columns at spaces.
-std::vector<std::string> wrap(const std::string& text, int width) {
-    std::vector<std::string> out;
-    std::string line;
-    size_t i = 0;
-    while (i < text.size()) {
-        size_t sp = text.find(' ', i);
-        std::string word = text.substr(i, sp == std::string::npos ? std::string::npos : sp - i);
-        i = sp == std::string::npos ? text.size() : sp + 1;
-        if (!line.empty() && columns(line) + 1 + columns(word) > width) {
-            out.push_back(line);
-            line.clear();
-        }
-        line += (line.empty() ? "" : " ") + word;
-    }
-    if (!line.empty() || out.empty()) out.push_back(line);
-    return out;
-}
-
 // A two-column entry: the key (or command) in its column, the text beside it
 // wrapped under itself; a key too wide for its column takes a line of its own.
 void entry(std::vector<Line>& lines, const std::string& key, int col, const std::string& what,
@@ -48,7 +29,7 @@ void entry(std::vector<Line>& lines, const std::string& key, int col, const std:
     std::string text = what + (when.empty() ? "" : "  (" + when + ")");
     bool own_line = columns(key) > col;
     if (own_line) lines.push_back(Line{}.add("   " + key, Style::value));
-    auto parts = wrap(text, std::max(20, width - indent - 1));
+    auto parts = wrap_text(text, std::max(20, width - indent - 1));
     for (size_t i = 0; i < parts.size(); ++i) {
         Line l;
         if (i == 0 && !own_line) l.add("   " + pad(key, size_t(col + 1)), Style::value);
@@ -82,7 +63,7 @@ void page_help(const View& v, Canvas& c, const Rect& r) {
     // The text wraps short of the right edge, where the scroll position shows.
     const int width = r.w - 10;
     for (const char* s : kGettingStarted) {
-        auto parts = wrap(s, width - 6);
+        auto parts = wrap_text(s, width - 6);
         for (size_t i = 0; i < parts.size(); ++i) lines.push_back(Line{}.add((i ? "      " : "   ") + parts[i]));
     }
     lines.push_back(Line{});

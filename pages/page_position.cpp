@@ -33,6 +33,43 @@ std::string feed_text(const Sim& s) {
     return buf;
 }
 
+// Large digits for a big terminal, three rows high, as a panel's position
+// display (issue 12.7): half blocks, 3 columns a glyph and 1 of space.
+struct Glyph {
+    char ch;
+    const char* rows[3];
+};
+constexpr Glyph kGlyphs[] = {
+    {'0', {"█▀█", "█ █", "▀▀▀"}}, {'1', {" ▀█", "  █", "  ▀"}}, {'2', {"▀▀█", "█▀▀", "▀▀▀"}},
+    {'3', {"▀▀█", " ▀█", "▀▀▀"}}, {'4', {"█ █", "▀▀█", "  ▀"}}, {'5', {"█▀▀", "▀▀█", "▀▀▀"}},
+    {'6', {"█▀▀", "█▀█", "▀▀▀"}}, {'7', {"▀▀█", "  █", "  ▀"}}, {'8', {"█▀█", "█▀█", "▀▀▀"}},
+    {'9', {"█▀█", "▀▀█", "▀▀▀"}}, {'-', {"   ", "▀▀▀", "   "}}, {'.', {" ", " ", "▀"}},
+};
+
+const Glyph* glyph(char ch) {
+    for (const Glyph& g : kGlyphs)
+        if (g.ch == ch) return &g;
+    return nullptr;
+}
+
+int big_width(const std::string& s) {
+    int w = 0;
+    for (char ch : s)
+        if (const Glyph* g = glyph(ch)) w += columns(g->rows[0]) + 1;
+    return w;
+}
+
+// `s` in large digits, right-aligned to end at column `right`.
+void big_text(Canvas& c, int right, int y, const std::string& s, Style st) {
+    int x = right - big_width(s);
+    for (char ch : s) {
+        const Glyph* g = glyph(ch);
+        if (!g) continue;
+        for (int row = 0; row < 3; ++row) c.text(x, y + row, g->rows[row], st);
+        x += columns(g->rows[0]) + 1;
+    }
+}
+
 }  // namespace
 
 void page_position(const View& v, Canvas& c, const Rect& r) {
@@ -42,9 +79,12 @@ void page_position(const View& v, Canvas& c, const Rect& r) {
     c.rule(r.y, om_first ? "OM  machine position" : "OP  program position");
     Axes op = s.op(), om = s.om(), go = s.to_go();
     int y = r.y + 2;
-    const int cx[3] = {6, 26, 46};
+    // 160x48 and the like: the first column in large digits, the same layout.
+    const bool big = r.w >= 120 && r.h >= 40 && !c.ascii();
+    const int cx[3] = {6, big ? 50 : 26, big ? 70 : 46};
+    const int w0 = big ? 40 : 14;
     std::string h1 = om_first ? "OM machine" : "OP program", h2 = om_first ? "OP program" : "OM machine";
-    c.text_right(cx[0], y, 14, h1, Style::dim);
+    c.text_right(cx[0], y, w0, h1, Style::dim);
     c.text_right(cx[1], y, 14, h2, Style::dim);
     c.text_right(cx[2], y, 14, "to go", Style::dim);
     ++y;
@@ -52,14 +92,16 @@ void page_position(const View& v, Canvas& c, const Rect& r) {
         if (!m.has(a)) continue;
         std::string name(1, kAxisNames[size_t(a)]);
         if (a == X && m.lathe && s.to_display(X, 1) == 2) name += "ø";
-        c.text(2, y, name, Style::title);
-        if (!s.interp().homed(a)) c.text(2 + int(name.size()) + 1, y, "*", Style::warn);
+        int row = big ? y + 1 : y;  // the small columns beside the middle of the digits
+        c.text(2, row, name, Style::title);
+        if (!s.interp().homed(a)) c.text(2 + columns(name) + 1, row, "*", Style::warn);
         double vo = s.to_display(a, op[size_t(a)]), vm = s.to_display(a, om[size_t(a)]);
         double vg = s.to_display(a, go[size_t(a)]);
-        c.text_right(cx[0], y, 14, fmt_axis(a, om_first ? vm : vo), Style::big);
-        c.text_right(cx[1], y, 14, fmt_axis(a, om_first ? vo : vm), Style::value);
-        c.text_right(cx[2], y, 14, fmt_axis(a, vg), Style::value);
-        ++y;
+        if (big) big_text(c, cx[0] + w0, y, fmt_axis(a, om_first ? vm : vo), Style::big);
+        else c.text_right(cx[0], y, w0, fmt_axis(a, om_first ? vm : vo), Style::big);
+        c.text_right(cx[1], row, 14, fmt_axis(a, om_first ? vo : vm), Style::value);
+        c.text_right(cx[2], row, 14, fmt_axis(a, vg), Style::value);
+        y += big ? 4 : 1;
     }
     bool any_unhomed = false;
     for (int a = 0; a < kAxes; ++a) any_unhomed |= m.has(a) && !s.interp().homed(a);

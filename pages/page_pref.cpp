@@ -15,7 +15,7 @@ void page_pref(const View& v, Canvas& c, const Rect& r) {
     const Interpreter& in = s.interp();
     const MachineProfile& m = s.machine();
     const Frames& f = in.frames();
-    c.rule(r.y, std::string("PREF  origins") + (m.lathe ? " (X as a radius, OM and OP as shown)" : ""));
+    c.rule(r.y, "PREF  origins");
     int y = r.y + 2;
     const int w = 10;
     const char* heads[] = {"PREF", "DEC1", "DEC3", "G59", "gauge", "OM", "OP"};
@@ -35,7 +35,9 @@ void page_pref(const View& v, Canvas& c, const Rect& r) {
                 std::string n = std::string(i == 0 ? "PREF." : i == 1 ? "DEC1." : "DEC3.") + name;
                 pending = std::find(v.pending.begin(), v.pending.end(), n) != v.pending.end();
             }
-            std::string t = fmt_axis(a, vals[i]) + (pending ? "*" : "");
+            // OM and OP show the lathe's X as the OP page does: a diameter.
+            bool dia = i >= 5 && a == X && m.lathe && s.to_display(X, 1.0) != 1.0;
+            std::string t = (dia ? "\u00f8" : "") + fmt_axis(a, vals[i]) + (pending ? "*" : "");
             c.text_right(4 + i * w, y, w, t, pending ? Style::warn : i < 3 ? Style::value : Style::normal);
         }
         ++y;
@@ -50,6 +52,16 @@ void page_pref(const View& v, Canvas& c, const Rect& r) {
             waiting += std::string(waiting.empty() ? "" : " ") + kAxisNames[size_t(a)];
     if (!waiting.empty()) d += "; its gauge on " + waiting + " applies at the next move or touch-off";
     c.text(2, y++, d, waiting.empty() ? Style::dim : Style::warn);
+    if (m.lathe && s.to_display(X, 1.0) != 1.0)
+        c.text(2, y++, "X: PREF, DEC1, DEC3, G59 and the gauge are radii; OM and OP diameters (\u00f8).",
+               Style::dim);
+    if (!v.last_setting.empty()) {
+        // The last touch-off or measurement with its arithmetic, whole (the
+        // message line may cut it at 80 columns).
+        c.text(2, ++y, "Last:", Style::dim);
+        for (const auto& part : wrap_text(v.last_setting, r.w - 10))
+            if (y < r.y + r.h - 6) c.text(8, y++, part, Style::value);
+    }
     if (!v.pending.empty()) c.text(2, y++, "* changed during the run: applies at the next move", Style::warn);
     int by = r.y + r.h - 5;
     c.text(2, by, "Touch-off: jog the tool onto the part, then type the coordinate of the", Style::dim);

@@ -162,6 +162,24 @@ void render_page(const View& v, Canvas& c, const Rect& r) {
 }
 
 // A long page is a list of lines; the view's scroll picks the ones shown.
+std::vector<std::string> wrap_text(const std::string& text, int width) {
+    std::vector<std::string> out;
+    std::string line;
+    size_t i = 0;
+    while (i < text.size()) {
+        size_t sp = text.find(' ', i);
+        std::string word = text.substr(i, sp == std::string::npos ? std::string::npos : sp - i);
+        i = sp == std::string::npos ? text.size() : sp + 1;
+        if (!line.empty() && columns(line) + 1 + columns(word) > width) {
+            out.push_back(line);
+            line.clear();
+        }
+        line += (line.empty() ? "" : " ") + word;
+    }
+    if (!line.empty() || out.empty()) out.push_back(line);
+    return out;
+}
+
 void draw_lines(const std::vector<Line>& lines, int scroll, Canvas& c, const Rect& r) {
     int n = int(lines.size());
     if (scroll > n - r.h) scroll = n - r.h;

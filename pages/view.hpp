@@ -73,6 +73,7 @@ struct View {
     std::vector<std::string> pending;  // origins changed in a run, not applied yet
     bool protect = false;
     size_t undo_depth = 0;
+    std::string last_setting;  // the last touch-off or measurement, its arithmetic
     // HISTORY (:history).
     int history_number = -1;          // the program shown
     int history_current = 0;          // its current revision

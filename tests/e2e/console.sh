@@ -183,7 +183,7 @@ setting)
     cmd "Z 0"
     wait_for 'PREF.Z = OM 100.000 .* = 61.763'
     cmd "X 59.978"
-    wait_for 'PREF.X = OM 110.000 .* = 16.666'
+    wait_for 'PREF.X \(radius\) = OM ø220.000/2 .* = 16.666'
     cmd ":quit"
     wait_for '^EXIT=0'
     next_server
@@ -198,7 +198,7 @@ setting)
     # D2 is not the active corrector (D0 after the restart): asked first.
     wait_for 'D2 is not the active corrector \(D0\)'
     cmd "y"
-    wait_for 'D2.X = OM 150.000 - PREF 16.666 .* = 83.334'
+    wait_for 'D2.X \(radius\) = OM ø300.000/2 - PREF 16.666 .* = 83.334'
     wait_for '^  2 +83.334 '
     ;;
 edit)

@@ -44,7 +44,7 @@ gauge)
     wait_for "D0, no tool gauge \\(T1\\)"
     wait_for '^y/n>'
     cmd "y"
-    wait_for 'PREF.X = OM '
+    wait_for 'PREF.X \(radius\) = OM ø'
     cmd "Z 0"
     cmd "y"
     wait_for 'PREF.Z = OM '
@@ -58,7 +58,7 @@ gauge)
     cmd ":page pref"
     wait_for 'active corrector D1, tool T1; its gauge on X applies at the next move'
     cmd "X 120"
-    wait_for 'PREF.X = OM .* - gauge 10.000 '
+    wait_for 'PREF.X \(radius\) = OM ø.* - gauge 10.000 - surface ø120.000/2'
     cmd ":page op"
     wait_for '^  Tool +T1  D1'
     [ "$(op_value X)" = "120.000" ] || fail "after touch-off X 120 with D1 the OP page should read 120.000"
@@ -165,9 +165,9 @@ plausible)
     cmd "X 100"
     wait_for 'D5 is not the active corrector \(D1\)'
     cmd "y"
-    wait_for 'D5.X = OM '
+    wait_for 'D5.X \(radius\) = OM ø'
     cmd ":measure D6 X 100"
-    wait_for 'D6.X = OM '
+    wait_for 'D6.X \(radius\) = OM ø'
     ;;
 guide)
     # First contact: the mode key says what comes next and what to do; the

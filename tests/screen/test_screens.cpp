@@ -163,6 +163,20 @@ TEST(Screen, LargerTerminalsGetMoreRoom) {
     snapshot("prog_120x40", c.screen(120, 40));
 }
 
+// Issue 12.7: a 160x48 terminal shows the positions in large digits, in the
+// same layout; 80x24 and ASCII keep one line an axis.
+TEST(Screen, BigTerminalsShowLargePositionDigits) {
+    Console c("lathe", kLatheFiles);
+    homed_lathe(c);
+    c.type(":mode imd");
+    c.type("G0 X-123.456 Z78.9");
+    c.named("F9");
+    c.run_until_settled();
+    c.named("F2");
+    snapshot("op_160x48", c.screen(160, 48));
+    EXPECT_EQ(c.screen(80, 24).find("\u2588"), std::string::npos);
+}
+
 TEST(Screen, AsciiFallbackHasNoNonAsciiCharacter) {
     Console c("lathe", kLatheFiles);
     homed_lathe(c);
