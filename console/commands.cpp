@@ -251,6 +251,7 @@ Effect Session::command(std::string_view text) {
             bool dirty = editor.dirty;
             editor.close();
             drop_journal(n);
+            release_lease();
             say(dirty ? "editor closed (unsaved changes dropped)" : "editor closed");
         };
         if (editor.dirty && cmd == "close") {

@@ -45,6 +45,12 @@ Effect Session::edit_open(int number) {
     show_page(pages::PageId::edit);
     say(fresh ? "new program %" + std::to_string(number) + ": type its blocks, then :save"
               : "%" + std::to_string(number) + " revision " + std::to_string(rev) + ": type a block to insert it after >, Enter to modify the one under >");
+    release_lease();
+    if (std::string who = other_editor(number); !who.empty())
+        say("%" + std::to_string(number) + " is open in another console (" + who +
+                "): the second save will be kept as a conflict",
+            true);
+    if (store_) take_lease(number);
     offer_journal(number, text);
     return Effect::redraw;
 }

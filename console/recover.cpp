@@ -158,11 +158,13 @@ Effect Session::quit_command(bool force) {
         confirm("%" + std::to_string(n) + " has unsaved changes: quit and drop them? (:save first, or :quit!)",
                 [this, n] {
                     drop_journal(n);
+                    release_lease();
                     quit = true;
                 });
         return Effect::redraw;
     }
     if (force && editor.is_open() && !modif) drop_journal(editor.number);
+    release_lease();
     quit = true;
     return Effect::quit;
 }

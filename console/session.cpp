@@ -52,6 +52,7 @@ std::string Session::load_store() {
     for (const auto& [name, v] : store::persistent_writes(sim_->interp())) persisted_[name] = v;
     if (auto r = store_->setting("protect.on"); !r.error && r.value) protect = *r.value == "1";
     refresh_dir();
+    remember_store();
     if (problem.empty()) problem = recovered_note();
     return problem;
 }
@@ -377,6 +378,7 @@ void Session::tick(double dt) {
         case Speed::max: sim_->advance(1e9, 20000); break;
     }
     check_run_end();
+    follow_store(dt);
 }
 
 bool Session::busy() const { return sim_->state() == RunState::running; }

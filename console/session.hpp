@@ -98,6 +98,13 @@ public:
     Effect recover_command(bool discard);  // :recover, :discard
     Effect quit_command(bool force);       // :quit asks before dropping unsaved changes
     std::string recovered_note() const;    // journals left by an earlier session
+    // Two consoles on one store (console/shared.cpp).
+    void remember_store();
+    void follow_store(double dt);
+    void sync_from_store();
+    void take_lease(int number);
+    void release_lease();
+    std::string other_editor(int number) const;
     Effect edit_save(bool force);
     Effect edit_text(const std::string& block);
     Effect edit_history();
@@ -158,7 +165,12 @@ private:
     bool message_error_ = false;
     long refusals_ = 0;
     std::string last_setting_;  // the PREF and CORR pages show its arithmetic
-    uint64_t journaled_changes_ = 0;  // the editor's changes already in the journal
+    uint64_t journaled_changes_ = 0;
+    int64_t data_version_ = -1;                   // PRAGMA data_version last seen
+    double poll_wait_ = 0, lease_wait_ = 0;
+    bool store_pending_ = false;  // another console's change waits for the end of a run
+    int leased_ = -1;             // the program this console's lease names
+    std::vector<pages::DirEntry> dir_seen_;  // the store's programs at the last look  // the editor's changes already in the journal
     std::vector<pages::HistoryRow> history_;  // the HISTORY page (:history)
     int history_number_ = -1, history_current_ = 0;  // error messages said, to tell a refused entry
     RunState last_state_ = RunState::idle;

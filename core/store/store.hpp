@@ -209,6 +209,10 @@ public:
     Error add_imd(std::string_view machine, std::string_view block);
     Result<std::vector<ImdEntry>> imd_history(std::string_view machine, int limit = 100);
 
+    // PRAGMA data_version: it changes when another connection (another console)
+    // commits, not on this one's own writes. Polled to follow other consoles.
+    Result<int64_t> data_version();
+
     // PRAGMA integrity_check: "ok" or the problems found.
     Result<std::string> integrity_check();
 

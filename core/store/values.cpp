@@ -255,6 +255,17 @@ Result<std::optional<std::string>> Store::setting(std::string_view key) {
     return r;
 }
 
+Result<int64_t> Store::data_version() {
+    Result<int64_t> r;
+    Error e;
+    sql::Use u(prepare("PRAGMA data_version", e));
+    if ((r.error = e)) return r;
+    int rc = u.step();
+    if (rc == SQLITE_ROW) r.value = u.i64(0);
+    else r.error = fail(rc, "cannot read the data version");
+    return r;
+}
+
 Error Store::set_setting(std::string_view key, std::string_view value) {
     if (Error e = begin_write()) return e;
     Error e;

@@ -292,6 +292,49 @@ journal)
     cmd ":quit!"
     wait_for '^EXIT=0'
     ;;
+two)
+    # Two consoles on one store (a classroom server): what one changes, the
+    # other shows within a second or two; opening a program the other edits
+    # says so.
+    start
+    T -f /dev/null new-session -d -s e2f -x 80 -y 24 \
+        "env LANG=C.UTF-8 TERM=screen '$bin' ; echo EXIT=\$? ; sleep 30"
+    screen2() { T capture-pane -p -t e2f 2>/dev/null; }
+    wait2() {
+        local i
+        for ((i = 0; i < ${2:-10} * 20; i++)); do
+            screen2 | grep -Eq -- "$1" && return 0
+            sleep 0.05
+        done
+        echo "---- second console ----"
+        screen2
+        fail "the second console waited for /$1/"
+    }
+    keys2() { T send-keys -t e2f "$@"; }
+    cmd2() { keys2 -l "$1"; keys2 Enter; sleep 0.1; }
+    wait2 'F1 help|1HELP'
+    cmd2 ":page corr"
+    wait2 '^─ CORR'
+    cmd ":set D1.X=12.5"
+    wait2 'another console changed: D1.X 12.5' 5
+    wait2 '^  1 +12\.500 ' 5
+    cmd ":set PREF.Z=-250"
+    cmd2 ":page pref"
+    wait2 '^  Z +-250\.000 ' 5
+    # A program saved in one is the current text in the other.
+    cmd ":edit 300"
+    cmd2 ":edit 300"
+    wait2 '%300 is open in another console' 5
+    cmd "N1 (FROM CONSOLE A)"
+    cmd ":save"
+    wait_for '%300 saved as revision'
+    wait2 'another console changed: %300 r2 \(open here' 5
+    cmd2 ":close!"
+    cmd2 ":page dir"
+    wait2 '%300 +14 +2$' 5
+    cmd2 ":edit 300"
+    wait2 'FROM CONSOLE A'
+    ;;
 *)
     echo "unknown case $case"
     exit 2
