@@ -431,6 +431,16 @@ void Session::persist_run() {
 
 // ---- view ----
 
+// Whether a "page" binding's argument names the page on screen (F2 is OP and
+// OM, F3 PROG and GRAPH, F5 the setting pages).
+bool Session::shows_page(std::string_view arg, pages::PageId p) {
+    using P = pages::PageId;
+    if (arg == "pos") return p == P::op || p == P::om;
+    if (arg == "prog") return p == P::prog || p == P::graph;
+    if (arg == "set") return p == P::param || p == P::pref || p == P::corr;
+    return arg == pages::page_word(p);
+}
+
 pages::View Session::view() const {
     pages::View v;
     v.sim = sim_.get();
@@ -465,7 +475,8 @@ pages::View Session::view() const {
         for (const Binding* b : bindings.find(k, pg, md, m_.lathe ? "lathe" : "mill")) {
             const Action* a = find_action(b->action);
             if (!a) continue;
-            v.softkeys.push_back(pages::SoftKey{"F" + std::to_string(i), soft_label(*a, b->arg)});
+            v.softkeys.push_back(pages::SoftKey{"F" + std::to_string(i), soft_label(*a, b->arg),
+                                                a->name == "page" && shows_page(b->arg, page)});
             break;
         }
     }

@@ -139,6 +139,7 @@ private:
     Effect plain_text(const std::string& line);
     Effect route_text(const std::string& line);
     static bool for_line_editor(const Key& k);
+    static bool shows_page(std::string_view arg, pages::PageId p);
     Effect cancel_input();
     // The editor's recovery journal (console/recover.cpp).
     std::string journal_dir() const;

@@ -118,11 +118,11 @@ void Terminal::theme_colours(Theme t) {
         {S::value, -1, -1},            {S::big, COLOR_GREEN, -1},       {S::select, COLOR_BLACK, COLOR_CYAN},
         {S::alarm, COLOR_WHITE, COLOR_RED}, {S::warn, COLOR_BLACK, COLOR_YELLOW}, {S::ok, COLOR_BLACK, COLOR_GREEN},
         {S::status, COLOR_WHITE, COLOR_BLUE}, {S::key, -1, -1},         {S::softkey, COLOR_BLACK, COLOR_CYAN},
-        {S::input, -1, -1},
+        {S::input, -1, -1},           {S::softkey_on, COLOR_WHITE, COLOR_BLUE},
     };
     for (const P& p : colour) {
         if (t == Theme::phosphor) {
-            bool inverse = p.b != -1;
+            bool inverse = p.b != -1 && p.s != S::softkey_on;  // bold green stands out
             init_pair(pair_of(p.s), inverse ? COLOR_BLACK : fg, inverse ? COLOR_GREEN : bg);
         } else {
             init_pair(pair_of(p.s), p.f, p.b);
@@ -152,6 +152,7 @@ void Terminal::draw(const pages::Canvas& c, int cx, int cy) {
             if (theme_ == Theme::mono) {
                 switch (cell.st) {
                     case S::title: case S::big: a = A_BOLD; break;
+                    case S::softkey_on: a = A_BOLD; break;  // the others are in reverse
                     case S::dim: a = A_DIM; break;
                     case S::select: case S::status: case S::softkey: case S::ok: a = A_REVERSE; break;
                     case S::alarm: case S::warn: a = A_REVERSE | A_BOLD; break;
@@ -159,7 +160,7 @@ void Terminal::draw(const pages::Canvas& c, int cx, int cy) {
                 }
             } else {
                 pair = pair_of(cell.st);
-                if (cell.st == S::title || cell.st == S::big || cell.st == S::alarm) a |= A_BOLD;
+                if (cell.st == S::title || cell.st == S::big || cell.st == S::alarm || cell.st == S::softkey_on) a |= A_BOLD;
             }
             wchar_t wc[2] = {wchar_t(cell.ch), 0};
             cchar_t cc;

@@ -25,6 +25,7 @@ enum class Style : uint8_t {
     key,       // the F-key number of a soft key
     softkey,   // a soft-key label
     input,     // the input line
+    softkey_on,  // the soft key of the page on screen
     count_,
 };
 

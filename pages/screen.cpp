@@ -59,8 +59,10 @@ void softkeys(const View& v, Canvas& c, int y) {
             if (s.key == "F" + num) k = &s;
         std::string label = k ? k->label : "";
         int lw = w - int(num.size());
-        c.fill(Rect{x + int(num.size()), y, lw, 1}, U' ', Style::softkey);
-        c.text(x + int(num.size()), y, label, Style::softkey, lw - 1);
+        // The key of the page on screen stands out: the soft keys follow the page.
+        Style st = k && k->current ? Style::softkey_on : Style::softkey;
+        c.fill(Rect{x + int(num.size()), y, lw, 1}, U' ', st);
+        c.text(x + int(num.size()), y, label, st, lw - 1);
     }
 }
 

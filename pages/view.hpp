@@ -17,8 +17,9 @@ std::string_view page_word(PageId p);            // om, op, prog, …
 bool parse_page(std::string_view word, PageId& out);
 
 struct SoftKey {
-    std::string key;    // "F1"
-    std::string label;  // "HELP"
+    std::string key;       // "F1"
+    std::string label;     // "HELP"
+    bool current = false;  // it shows the page on screen now (highlighted)
 };
 
 struct HelpLine {

@@ -75,6 +75,8 @@ colours)
     [[ $status == *'[37m'*'[44m'* || $status == *'37;44'* ]] || fail "the status line is not white on blue: $status"
     soft=$(screen_e | tail -1)
     [[ $soft == *'[30m'*'[46m'* || $soft == *'30;46'* ]] || fail "the soft keys are not black on cyan: $soft"
+    # The soft key of the page on screen (F2, OP) stands out: white on blue.
+    [[ $soft == *'44m2OP/OM'* || $soft == *'44m'*'OP/OM'* ]] || fail "F2 should stand out on the OP page: $soft"
     title=$(sgr_line 'OP  program position')
     [[ $title == *'[1m'* ]] || fail "the page title is not bold: $title"
     cmd ":page dir"
