@@ -44,7 +44,8 @@ Effect Session::edit_open(int number) {
     modify_pending = false;
     show_page(pages::PageId::edit);
     say(fresh ? "new program %" + std::to_string(number) + ": type its blocks, then :save"
-              : "%" + std::to_string(number) + " revision " + std::to_string(rev) + ": type a block to insert it after >, Enter to modify the one under >");
+              : "%" + std::to_string(number) + " r" + std::to_string(rev) +
+                    ": type a block to insert it after >, Enter modifies the one under >");
     release_lease();
     if (std::string who = other_editor(number); !who.empty())
         say("%" + std::to_string(number) + " is open in another console (" + who +

@@ -95,8 +95,11 @@ bool Session::select_program(int number) {
     }
     for (size_t i = 0; i < dir_.size(); ++i)
         if (dir_[i].number == number) dir_cursor = int(i);
-    say("%" + std::to_string(number) + " selected: Cycle Start (F9) runs it in " +
-        std::string(mode_name(sim_->mode())));
+    Mode m = sim_->mode();
+    bool runs = m == Mode::automatic || m == Mode::single || m == Mode::dry || m == Mode::test || m == Mode::rns;
+    say("%" + std::to_string(number) + " selected: " +
+        (runs ? "Cycle Start (F9) runs it in " + std::string(mode_name(m))
+              : std::string("F8 to AUTO (or SEQ, DRY RUN, TEST), then Cycle Start (F9)")));
     return true;
 }
 

@@ -177,7 +177,11 @@ bool Sim::cycle_start(std::string& why) {
             state_ = RunState::running;
             return true;
         case RunState::idle:
-        case RunState::ended: break;
+        case RunState::ended:
+            // At rest a setting may have moved the program frame (a touch-off,
+            // a gauge): the animation starts from the position shown now.
+            op_ = in_->frames().to_program(om_);
+            break;
     }
     message_.clear();
     auto need_program = [&]() {
@@ -316,6 +320,7 @@ bool Sim::jog(int axis, double delta, std::string& why) {
     }
     double feed = jog_feed > 0 ? jog_feed : m_.jog_feed;
     queue_move_to(in_->machine_pos(), 1, Loc{}, feed, false, axis);
+    message_.clear();  // the last run's news is not the jog's
     manual_ = true;
     interp_done_ = true;
     if (state_ != RunState::running) state_ = RunState::running;
@@ -332,7 +337,11 @@ void Sim::queue_move_to(const Axes& mach, int g, Loc loc, double feed, bool home
     m.loc = loc;
     m.g = g;
     m.from_mach = planned_;
-    if (q_.empty() && !cur_) m.from_mach = om_;
+    // Nothing moving or queued (an event that ended the last run may linger).
+    if (q_.empty() && (!cur_ || (cur_->kind != Ev::move && cur_->kind != Ev::home))) {
+        m.from_mach = om_;
+        op_ = in_->frames().to_program(om_);  // a setting made at rest is in the frame now
+    }
     m.to_mach = mach;
     m.to_prog = in_->frames().to_program(mach);
     double len = 0;
@@ -469,6 +478,9 @@ bool Sim::begin_next() {
         case Ev::end:
             state_ = RunState::ended;
             if (e.a == 2) corr_ = 0;  // M02: D0, the tool T stays (turning.md §8.3)
+            if (e.a != 2 && mode_ == Mode::imd)
+                message_ = "IMD done (" + std::to_string(blocks_) + (blocks_ == 1 ? " block" : " blocks") +
+                           "): type the next block, or F8 for another mode";
             if (e.a == 2)
                 message_ = "M02: end of program %" + std::to_string(e.loc.prog) + ", " +
                            std::to_string(blocks_) + " blocks, cycle time " + fmt_seconds(run_seconds_);
@@ -581,6 +593,8 @@ bool Sim::step_interp(long& budget) {
         return false;
     }
     if (interp_done_) {
+        if (state_ == RunState::running && manual_ && mode_ == Mode::pom)
+            message_ = "POM done: every axis is homed; F8 to choose the next mode";
         if (state_ == RunState::running) state_ = manual_ ? RunState::idle : RunState::ended;
         manual_ = false;
         return false;

@@ -162,3 +162,24 @@ TEST(SettingProperty, M02AndRazLeaveD0WithTheToolKept) {
     c.type("y");
     EXPECT_NEAR(shown(c, X), 150.0, 1e-6);
 }
+
+// A gauge set at rest moves the program frame at once: a jog that follows
+// must not blend the old frame into OP while only Z moves (seen in tmux: OP
+// X drifted from ø300 to ø173 during a Z jog).
+TEST(SettingProperty, AJogAfterAGaugeChangeKeepsOpXStill) {
+    Console c;
+    c.type(":mode pom");
+    cycle(c);
+    c.type(":mode imd");
+    c.type("T1 D1 M6");
+    cycle(c);
+    c.type(":set D1.X=63.345");
+    double x0 = shown(c, X);
+    EXPECT_NEAR(x0, 300 - 2 * 63.345, 1e-6);
+    c.type(":mode jog");
+    c.type(":jog Z -50");
+    for (int i = 0; i < 10; ++i) {
+        c.s->tick(0.2);
+        EXPECT_NEAR(shown(c, X), x0, 1e-6) << "frame " << i;
+    }
+}

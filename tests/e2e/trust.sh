@@ -182,6 +182,8 @@ guide)
     for i in 1 2 3 4 5 6 7 8; do keys F8; done
     wait_for 'POM: homing; Cycle Start \(F9\) homes the axes'
     wait_for '^ POM .*F8→AUTO'
+    keys F9
+    wait_for 'POM done: every axis is homed' 20
     cmd ":mode inc"
     wait_for '^  INC +Left Z-, Right Z\+, Up X\+, Down X-'
     wait_for 'step 1\.000 mm \(Alt-i: next step\)'
@@ -220,13 +222,17 @@ stale)
     keys F9
     wait_for 'M02: end of program %300'
     wait_for '^ AUTO +%300 N120 +END'
+    cmd ":mode jog"
     cmd ":load 301"
+    wait_for '%301 selected: F8 to AUTO \(or SEQ, DRY RUN, TEST\), then Cycle Start'
+    cmd ":mode auto"
     wait_for '^ AUTO +%301 +READY'
     screen | grep -q 'N120' && fail "the status line kept N120 of %300 after :load 301"
     cmd ":mode imd"
     cmd "G0 X100"
     keys F9
     wait_for '^ IMD .*END'
+    wait_for 'IMD done \(1 block\): type the next block'
     wait_for '^  Run +1 block +cycle time'
     cmd ":mode jog"
     for i in 1 2 3 4 5 6 7 8 9 10; do keys Left; done
