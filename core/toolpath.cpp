@@ -39,6 +39,7 @@ void Toolpath::clear() {
     locs_.clear();
     errors_.clear();
     stock_.clear();
+    profile_.clear();
     has_start_ = false;
     all_ = cut_ = PathBox{};
     em_mask_lo_ = em_mask_hi_ = 0;
@@ -202,6 +203,7 @@ size_t Toolpath::memory_bytes() const {
     size_t n = moves_.capacity() * sizeof(PathMove) + arcs_.capacity() * sizeof(PathArc) +
                locs_.capacity() * sizeof(LocRun) + errors_.capacity() * sizeof(PathError);
     for (const auto& s : stock_) n += s.capacity() * sizeof(s[0]);
+    n += profile_.capacity() * sizeof(ProfileElem);
     return n + sizeof(*this);
 }
 

@@ -117,6 +117,7 @@ class Toolpath final : public MachineSink {
     void tool(const Loc&, int, int, double s) override { seconds_ += s; }
     void end(const Loc& l, int) override { end_ = l; }
     void stock(const Loc& l, const std::vector<std::array<double, 2>>& zr) override { add_stock(l, zr); }
+    void profile(const Loc&, const ProfileElem& e) override { profile_.push_back(e); }
 
     // --- reading ---
     const MachineProfile& machine() const { return m_; }
@@ -134,6 +135,8 @@ class Toolpath final : public MachineSink {
     Loc loc(size_t i) const;
     const std::vector<PathError>& errors() const { return errors_; }
     const std::vector<std::vector<std::array<double, 2>>>& stock() const { return stock_; }
+    // The programmed profile of the compensated moves (G41/G42), element by element.
+    const std::vector<ProfileElem>& profile_elems() const { return profile_; }
     // Extents of every move, and of the cutting moves only (feed and compensated).
     const PathBox& bounds() const { return all_; }
     const PathBox& cut_bounds() const { return cut_; }
@@ -173,6 +176,7 @@ class Toolpath final : public MachineSink {
     std::vector<LocRun> locs_;
     std::vector<PathError> errors_;
     std::vector<std::vector<std::array<double, 2>>> stock_;
+    std::vector<ProfileElem> profile_;
     double start_[3] = {0, 0, 0};
     bool has_start_ = false;
     PathBox all_, cut_;
