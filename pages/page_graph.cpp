@@ -304,12 +304,6 @@ void draw_moves(const Toolpath& p, PathPlane plane, const ViewXf& xf, bool mirro
     }
 }
 
-void draw_graph(const GraphView& g, const ViewXf& xf, DotRaster& r) {
-    if (!g.path) return;
-    draw_moves(*g.path, g.plane, xf, mirrored(g), 0, moves_shown(g), r);
-    draw_frame_marks(g, xf, g.path->machine().lathe, r);
-}
-
 Rect graph_area(const Rect& page) {
     return Rect{page.x, page.y + 1, page.w, std::max(1, page.h - 3)};
 }

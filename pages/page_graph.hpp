@@ -79,9 +79,6 @@ GraphView graph_move_cursor(const GraphView& g, const Rect& page, int dcols, int
 // public for the benchmarks).
 void draw_moves(const Toolpath& p, PathPlane plane, const ViewXf& xf, bool mirror, size_t from,
                 size_t to, DotRaster& r);
-// Everything the page rasterises (moves, spindle axis, stock, EM±) into r, with
-// no cache: the PNG export draws with it.
-void draw_graph(const GraphView& g, const ViewXf& xf, DotRaster& r);
 // A scale bar's round length (core/toolpath.hpp), shared with the plot.
 using pupitre::nice_length;
 
