@@ -190,7 +190,7 @@ const std::vector<Action> kActions = {
      "PAN"},
     {"graph-cursor", "move the cursor (%s): its coordinates are shown", on_graph,
      [](Session& s, std::string_view a) { return s.graph_key("cursor", a); }, "CURSOR"},
-    {"graph-fit", "fit the whole toolpath", on_graph, [](Session& s, std::string_view) { return s.graph_key("fit", ""); },
+    {"graph-fit", "fit the cutting moves", on_graph, [](Session& s, std::string_view) { return s.graph_key("fit", ""); },
      "FIT"},
     {"graph-plane", "next plane (XY, XZ, YZ; the lathe draws ZX)", on_graph,
      [](Session& s, std::string_view) { return s.graph_key("plane", ""); }, "PLANE"},

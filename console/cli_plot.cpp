@@ -1,23 +1,20 @@
 // pupitre plot (see cli_plot.hpp): the same loading and dry run as `run`, with
-// a Toolpath as the sink, then the SVG writer.
+// a Toolpath as the sink, then one scene drawn by the SVG writer and by Cairo.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "console/cli_plot.hpp"
 
-#include <png.h>
-
 #include <algorithm>
-#include <array>
 #include <cerrno>
-#include <charconv>
 #include <cstdio>
 #include <cstring>
 #include <vector>
 
 #include "console/cli.hpp"
 #include "core/interp.hpp"
+#include "core/cairo_plot.hpp"
+#include "core/scene.hpp"
 #include "core/svg.hpp"
 #include "core/toolpath.hpp"
-#include "pages/page_graph.hpp"
 
 namespace pupitre::cli {
 
@@ -46,104 +43,35 @@ PathPlane chosen_plane(const Toolpath& path, const MachineProfile& m, int plane_
     return plane_seen == 18 ? PathPlane::xz : plane_seen == 19 ? PathPlane::yz : PathPlane::xy;
 }
 
-int write_out(const std::string& name, const Toolpath& path, const SvgOptions& o) {
-    std::FILE* f = name == "-" ? stdout : std::fopen(name.c_str(), "wb");
+// The pictures `plot` writes, in order: one scene, three back-ends.
+struct Output {
+    std::string PlotArgs::*file;
+    const char* what;
+    bool (*write)(const Scene&, const PlotArgs&, std::FILE*);
+};
+constexpr Output kOutputs[] = {
+    {&PlotArgs::svg, "SVG", [](const Scene& s, const PlotArgs&, std::FILE* f) { return write_svg(s, f); }},
+    {&PlotArgs::png, "PNG",
+     [](const Scene& s, const PlotArgs& a, std::FILE* f) { return write_png(s, a.png_width, f); }},
+    {&PlotArgs::pdf, "PDF", [](const Scene& s, const PlotArgs&, std::FILE* f) { return write_pdf(s, f); }},
+};
+
+int write_out(const Output& o, const Scene& scene, const PlotArgs& a) {
+    const std::string& name = a.*o.file;
+    bool to_stdout = name == "-" && o.file == &PlotArgs::svg;
+    std::FILE* f = to_stdout ? stdout : std::fopen(name.c_str(), "wb");
     if (!f) {
         std::fprintf(stderr, "pupitre: %s: cannot create: %s\n", name.c_str(),
                      std::strerror(errno));
         return kCantCreate;
     }
-    bool ok = write_svg(path, o, f);
+    errno = 0;
+    bool ok = o.write(scene, a, f);
     int err = errno;
     if (f != stdout && std::fclose(f) != 0) ok = false;
     if (!ok) {
-        std::fprintf(stderr, "pupitre: %s: cannot write: %s\n", name.c_str(), std::strerror(err));
-        return kIoErr;
-    }
-    return kOk;
-}
-
-// libpng reports errors by longjmp: only plain data lives in this frame.
-bool png_rows(std::FILE* f, int w, int h, const std::vector<uint8_t>& rgb) {
-    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
-    png_infop info = png ? png_create_info_struct(png) : nullptr;
-    if (!info) {
-        png_destroy_write_struct(&png, nullptr);
-        return false;
-    }
-    if (setjmp(png_jmpbuf(png))) {
-        png_destroy_write_struct(&png, &info);
-        return false;
-    }
-    png_init_io(png, f);
-    png_set_IHDR(png, info, png_uint_32(w), png_uint_32(h), 8, PNG_COLOR_TYPE_RGB,
-                 PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-    png_text text[1];
-    text[0].compression = PNG_TEXT_COMPRESSION_NONE;
-    text[0].key = const_cast<char*>("Software");
-    text[0].text = const_cast<char*>("pupitre plot");
-    png_set_text(png, info, text, 1);
-    png_write_info(png, info);
-    for (int y = 0; y < h; ++y)
-        png_write_row(png, const_cast<png_bytep>(rgb.data() + size_t(y) * size_t(w) * 3));
-    png_write_end(png, nullptr);
-    png_destroy_write_struct(&png, &info);
-    return true;
-}
-
-// The drawing rasterised one dot a pixel, in the SVG's colours.
-std::vector<uint8_t> png_pixels(const Toolpath& path, PathPlane plane, int w, int& h) {
-    int hx, vx;
-    plane_axes(plane, hx, vx);
-    PathBox b = path.bounds();
-    if (b.empty()) b.add(path.start());
-    double x0 = b.lo[hx], x1 = b.hi[hx], y0 = b.lo[vx], y1 = b.hi[vx];
-    bool lathe = path.machine().lathe && plane == PathPlane::zx;
-    if (lathe && !path.cut_bounds().empty()) y0 = std::min(y0, -path.cut_bounds().hi[vx]);
-    double aspect = (y1 - y0 + 1e-9) / (x1 - x0 + 1e-9);
-    h = std::clamp(int(w * aspect) / 4 * 4 + 8, 64, 4000);
-    pages::DotRaster r;
-    r.reset(w / 2, h / 4);
-    pages::GraphView g;
-    g.path = &path;
-    g.plane = plane;
-    pages::draw_graph(g, pages::fit_view(x0, y0, x1, y1, r.w(), r.h(), 8), r);
-    static constexpr std::array<std::array<uint8_t, 3>, size_t(pages::Ink::count_)> kRgb = {{
-        {255, 255, 255},
-        {154, 154, 154},
-        {200, 200, 200},
-        {154, 154, 154},
-        {51, 102, 204},
-        {140, 140, 140},
-        {26, 26, 26},
-        {11, 122, 75},
-        {217, 130, 0},
-        {212, 0, 0},
-    }};
-    std::vector<uint8_t> rgb(size_t(r.w()) * size_t(r.h()) * 3, 255);
-    for (int y = 0; y < r.h(); ++y)
-        for (int x = 0; x < r.w(); ++x)
-            if (r.test(x, y)) {
-                const auto& c = kRgb[size_t(r.ink(x / 2, y / 4))];
-                std::copy(c.begin(), c.end(), rgb.begin() + (ptrdiff_t(y) * r.w() + x) * 3);
-            }
-    h = r.h();
-    return rgb;
-}
-
-int write_png(const std::string& name, const Toolpath& path, PathPlane plane, int width) {
-    std::FILE* f = std::fopen(name.c_str(), "wb");
-    if (!f) {
-        std::fprintf(stderr, "pupitre: %s: cannot create: %s\n", name.c_str(),
-                     std::strerror(errno));
-        return kCantCreate;
-    }
-    int w = std::clamp(width, 64, 8000) / 2 * 2, h = 0;
-    std::vector<uint8_t> rgb = png_pixels(path, plane, w, h);
-    bool ok = png_rows(f, w, h, rgb);
-    if (std::fclose(f) != 0) ok = false;
-    if (!ok) {
-        std::fprintf(stderr, "pupitre: %s: cannot write the PNG\n", name.c_str());
+        std::fprintf(stderr, "pupitre: %s: cannot write the %s%s%s\n", name.c_str(), o.what,
+                     err ? ": " : "", err ? std::strerror(err) : "");
         return kIoErr;
     }
     return kOk;
@@ -157,8 +85,8 @@ int plot(const PlotArgs& a) {
         std::fprintf(stderr, "pupitre: --plane %s: expected xy, xz, yz or zx\n", a.plane.c_str());
         return kUsage;
     }
-    if ((a.svg.empty() && a.png.empty()) || a.files.empty()) {
-        std::fprintf(stderr, "pupitre: plot needs --svg OUT (or --png OUT) and a program file\n");
+    if ((a.svg.empty() && a.png.empty() && a.pdf.empty()) || a.files.empty()) {
+        std::fprintf(stderr, "pupitre: plot needs --svg, --png or --pdf OUT and a program file\n");
         return kUsage;
     }
     MachineProfile m;
@@ -202,14 +130,14 @@ int plot(const PlotArgs& a) {
         std::fprintf(stderr, "pupitre: no drawing written: the program failed before its first move\n");
         return kProgramErrors;
     }
-    SvgOptions so;
+    SceneOptions so;
     so.plane = a.plane.empty() ? chosen_plane(path, m, plane_seen) : plane;
     so.machine = m.name;
     so.seconds = in.seconds();
-    if (!a.svg.empty())
-        if (int rc = write_out(a.svg, path, so)) return rc;
-    if (!a.png.empty())
-        if (int rc = write_png(a.png, path, so.plane, a.png_width)) return rc;
+    Scene scene = build_scene(path, so);
+    for (const Output& out : kOutputs)
+        if (!(a.*out.file).empty())
+            if (int rc = write_out(out, scene, a)) return rc;
     return in.has_errors() ? kProgramErrors : kOk;
 }
 

@@ -1,4 +1,5 @@
-// pupitre plot: the toolpath of a dry run drawn as SVG (issue 7, DESIGN §2.1).
+// pupitre plot: the toolpath of a dry run drawn as SVG, PNG or PDF (issue 7,
+// issue 12.11, DESIGN §2.1).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 #include <string>
@@ -10,8 +11,9 @@ struct PlotArgs {
     std::string machine;              // "": the lathe, as every batch command
     std::string plane;               // xy|xz|yz|zx; "" = the program's (the lathe's ZX)
     std::string svg;                 // output file; "-" for the standard output
-    std::string png;                 // a PNG picture of the drawing too (libpng), "" for none
+    std::string png;                 // the picture as a PNG (Cairo), "" for none
     int png_width = 1600;            // pixels across
+    std::string pdf;                 // the picture as a one-page PDF for printing, "" for none
     std::vector<std::string> files;  // the first program of the first file is run
     std::vector<std::string> sets;   // NAME=VALUE, as `run --set`
     bool block_skip = false;

@@ -2,6 +2,7 @@
 // pure functions of pages/page_graph.hpp applied to the session's window).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <cstdio>
+#include <string>
 
 #include "console/session.hpp"
 
@@ -26,6 +27,7 @@ Effect Session::graph_key(std::string_view what, std::string_view arg) {
         g = pages::graph_move_cursor(g, area, dx, -dy);
     } else if (what == "fit") {
         g = pages::graph_fit(g);
+        say("fit: " + pages::graph_fit_words(g));
     } else if (what == "plane") {
         g = pages::graph_next_plane(g, m_);
         graph_plane_chosen = true;

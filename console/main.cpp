@@ -61,7 +61,7 @@ int main(int argc, char** argv) {
     CLI::App* check = app.add_subcommand("check", "report every problem a dry run would meet, without a trace");
     add_common(check);
     cli::PlotArgs pa;
-    CLI::App* plot = app.add_subcommand("plot", "draw the toolpath of a dry run as SVG (and PNG)");
+    CLI::App* plot = app.add_subcommand("plot", "draw the toolpath of a dry run as SVG, PNG or PDF");
     plot->add_option("--machine", pa.machine,
                      "machine profile: lathe, mill, mill4, mill5, or a .machine file (default lathe)");
     plot->add_option("--plane", pa.plane, "xy, xz, yz or zx (default: the program's; zx on the lathe)");
@@ -70,8 +70,9 @@ int main(int argc, char** argv) {
         ->allow_extra_args(false);
     plot->add_flag("--block-skip", pa.block_skip, "skip the blocks that start with '/'");
     plot->add_option("--max-blocks", pa.max_blocks, "stop with error 1001 after this many blocks (default 20000000)");
-    plot->add_option("--svg", pa.svg, "the SVG file to write ('-': the standard output)")->type_name("OUT")->required();
-    plot->add_option("--png", pa.png, "a PNG picture of the drawing too")->type_name("OUT");
+    plot->add_option("--svg", pa.svg, "the SVG file to write ('-': the standard output)")->type_name("OUT");
+    plot->add_option("--png", pa.png, "the picture as a PNG, 1600 pixels wide")->type_name("OUT");
+    plot->add_option("--pdf", pa.pdf, "the picture as a one-page PDF, for printing")->type_name("OUT");
     plot->add_option("files", pa.files, "program files; the first program of the first file is run")
         ->required()
         ->check(CLI::ExistingFile);

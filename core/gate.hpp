@@ -30,6 +30,7 @@ public:
     void stock(const Loc& l, const std::vector<std::array<double, 2>>& s) override {
         pass([this, l, s] { real_.stock(l, s); });
     }
+    void profile(const Loc& l, const ProfileElem& e) override { pass([=, this] { real_.profile(l, e); }); }
 
     // Runs the held entries in order, with holding off.
     void release() {

@@ -60,6 +60,15 @@ struct SpindleEvent {
     int range = -1;        // 40..45, -1 for none
 };
 
+// A programmed element in the plane of radius compensation (axes a0, a1):
+// program frame, internal units (lathe X a radius); sweep in degrees, + for G3.
+struct ProfileElem {
+    int a0 = X, a1 = Y;
+    double from[2] = {0, 0}, to[2] = {0, 0}, c[2] = {0, 0};
+    double sweep = 0;
+    bool arc = false;
+};
+
 class MachineSink {
 public:
     virtual ~MachineSink() = default;
@@ -74,6 +83,9 @@ public:
     // The rough stock of a G64 cycle, (Z, X as a radius) program points, for the
     // graphic test's stock outline.
     virtual void stock(const Loc&, const std::vector<std::array<double, 2>>& /*zr*/) {}
+    // An element of the programmed profile while G41/G42 is on, before it is
+    // offset: the moves then follow the tool centre, and a drawing shows both.
+    virtual void profile(const Loc&, const ProfileElem&) {}
 };
 
 // One tool corrector (turning.md §3.3, milling.md §4.3.1). Lathe: X and Z gauges

@@ -6,6 +6,7 @@
 // (turning.md §3.7, milling.md §4.4.2, S4 L756-757).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <cmath>
+#include <numbers>
 
 #include "core/gate.hpp"
 #include "core/plan.hpp"
@@ -98,6 +99,11 @@ bool Interpreter::comp_line_to(const comp::V2& to, const CompCtx& ctx, const Axe
 
 bool Interpreter::comp_element(const comp::Elem& e, int g, const Axes& target, double rp) {
     CompCtx ctx{loc_, modal_, g, target, rp};
+    // The drawing's programmed profile: reported before the offset, so that a
+    // gouge (149) shows the element the tool could not follow.
+    ProfileElem pe{comp_.a0, comp_.a1, {e.a.x(), e.a.y()}, {e.b.x(), e.b.y()}, {e.c.x(), e.c.y()},
+                   e.sweep * 180 / std::numbers::pi, e.arc};
+    out_.profile(loc_, pe);
     if (comp_.waiting_entry) {
         if (e.arc)
             return fail(140, "the first block in radius compensation must be a line (G00 or G01)"), false;

@@ -268,10 +268,13 @@ void Sim::new_path(const Axes& start) {
     if (!path_) return;
     path_->clear();
     path_->start_at(start);
+    const ProgramText* p = mem_.find(selected_);
+    // The GRAPH page's title and its `f` name the program, as the plot does.
+    path_->program = p ? p->number : -1;
+    path_->title = p ? p->title : std::string();
     Axes lo{}, hi{};
     uint16_t mlo = 0, mhi = 0;
-    if (const ProgramText* p = mem_.find(selected_);
-        p && scan_extremes(*p, m_.lathe && m_.x_diameter, lo, hi, mlo, mhi))
+    if (p && scan_extremes(*p, m_.lathe && m_.x_diameter, lo, hi, mlo, mhi))
         path_->set_extremes(lo, hi, mlo, mhi);
 }
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 
 namespace pupitre {
 
@@ -12,25 +13,15 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-enum LayerId { kRapid, kFeed, kComp, kTravel, kGouge, kLayers };
-constexpr const char* kLayerIds[kLayers] = {"rapid", "feed", "comp", "travel", "gouge"};
-constexpr const char* kLayerStroke[kLayers] = {"#8c8c8c", "#1a1a1a", "#0b7a4b", "#d98200",
-                                               "#d40000"};
 // Commands per <path> element: long runs are split so that editors cope.
 constexpr int kMaxCommands = 200;
 
-struct Layer {
+struct PathLayer {
     std::string out;
     size_t last = SIZE_MAX;  // the last move appended, to know whether the pen is down
     int cmds = 0;
     bool open = false;
 };
-
-LayerId layer_of(const PathMove& mv) {
-    if (mv.flags & pathflag::error) return kGouge;
-    if (mv.flags & pathflag::travel) return kTravel;
-    return mv.kind == PathKind::rapid ? kRapid : mv.kind == PathKind::comp ? kComp : kFeed;
-}
 
 int chords(double r, double sweep_rad, double tol) {
     if (!(r > tol)) return std::max(1, int(std::ceil(std::fabs(sweep_rad) / (kPi / 2))));
@@ -38,17 +29,23 @@ int chords(double r, double sweep_rad, double tol) {
     return int(std::clamp(n, 1.0, 4096.0));
 }
 
-// The drawing's box in SVG coordinates (y down): moves, stock, EM±, mirror.
-struct Box {
-    double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
-};
+std::string hex(Rgb c) {
+    char buf[8];
+    std::snprintf(buf, sizeof buf, "#%02x%02x%02x", c.r, c.g, c.b);
+    return buf;
+}
+
+// SVG arc flags for a sweep seen counter-clockwise positive with +y up (SVG's
+// y runs down: a counter-clockwise arc on paper has sweep-flag 0).
+const char* arc_flags(double view_sweep, int pieces) {
+    bool large = pieces == 1 && std::fabs(view_sweep) > 180;
+    if (view_sweep > 0) return large ? " 0 1 0 " : " 0 0 0 ";
+    return large ? " 0 1 1 " : " 0 0 1 ";
+}
 
 class Writer {
   public:
-    Writer(const Toolpath& p, const SvgOptions& o) : p_(p), o_(o) {
-        plane_axes(o.plane, h_, v_);
-        lathe_ = p.machine().lathe && o.plane == PathPlane::zx;
-    }
+    explicit Writer(const Scene& sc) : sc_(sc), p_(*sc.path), h_(sc.h), v_(sc.v) {}
     std::string document();
 
   private:
@@ -57,30 +54,38 @@ class Writer {
         s += ' ';
         append_mm(s, -q[v_]);
     }
-    void xy(std::string& s, double x, double y) const {
+    static void xy(std::string& s, double x, double y) {
         append_mm(s, x);
         s += ' ';
         append_mm(s, y);
     }
-    void begin(Layer& l, const double* start, const char* cls = nullptr);
-    void close(Layer& l) {
+    // A length on paper (mm) in the drawing's units.
+    double paper(double mm) const { return mm / sc_.k; }
+    void begin(PathLayer& l, const double* start, const char* cls = nullptr);
+    void close(PathLayer& l) {
         if (l.open) l.out += "\"/>\n";
         l.open = false;
     }
     void add_move(size_t i);
-    void add_arc(Layer& l, size_t i);
-    Box box() const;
-    std::string frame_layers(const Box& b) const;
-    std::string title_block(const Box& b, double fs) const;
+    void add_arc(PathLayer& l, size_t i);
+    std::string group_open(Layer l) const;
+    std::string frame_layers() const;
+    std::string profile_layer() const;
+    static std::string paint(const Mark& m);
+    static std::string mark_line(const Mark& m);
+    static std::string mark_rect(const Mark& m);
+    static std::string mark_polygon(const Mark& m);
+    static std::string mark_text(const Mark& m);
+    std::string marks() const;
+    std::string head() const;
 
+    const Scene& sc_;
     const Toolpath& p_;
-    const SvgOptions& o_;
     int h_ = X, v_ = Y;
-    bool lathe_ = false;
-    Layer layers_[kLayers];
+    PathLayer layers_[kLayerCount];
 };
 
-void Writer::begin(Layer& l, const double* start, const char* cls) {
+void Writer::begin(PathLayer& l, const double* start, const char* cls) {
     close(l);
     l.out += cls ? std::string("<path class=\"") + cls + "\" d=\"M" : std::string("<path d=\"M");
     pt(l.out, start);
@@ -90,7 +95,7 @@ void Writer::begin(Layer& l, const double* start, const char* cls) {
 
 void Writer::add_move(size_t i) {
     const PathMove& mv = p_[i];
-    Layer& l = layers_[layer_of(mv)];
+    PathLayer& l = layers_[size_t(move_layer(mv))];
     const double* s = p_.from(i);
     bool flat = mv.arc == PathMove::kNoArc && s[h_] == mv.p[h_] && s[v_] == mv.p[v_];
     if (flat && l.last + 1 == i) {
@@ -112,7 +117,7 @@ void Writer::add_move(size_t i) {
 // An arc in the drawing's plane is an SVG arc (split when it nears a full turn,
 // where start and end would meet); a spiral or an arc seen edge-on is a polyline
 // within a micrometre of the curve.
-void Writer::add_arc(Layer& l, size_t i) {
+void Writer::add_arc(PathLayer& l, size_t i) {
     const PathMove& mv = p_[i];
     const PathArc& a = p_.arcs()[mv.arc];
     double r0, r1;
@@ -122,21 +127,14 @@ void Writer::add_arc(Layer& l, size_t i) {
     if (in_plane && std::fabs(r0 - r1) <= 1e-4 + 1e-6 * r1) {
         double view_sweep = a.a0 == h_ ? sweep : -sweep;  // counter-clockwise seen with +v up
         int pieces = std::fabs(sweep) > 270 ? int(std::ceil(std::fabs(sweep) / 180)) : 1;
-        const char* large = pieces == 1 && std::fabs(sweep) > 180 ? " 1 " : " 0 ";
-        // SVG's y runs down: a counter-clockwise arc on paper has sweep-flag 0.
-        const char* flag = view_sweep > 0 ? "0 " : "1 ";
         // A split arc is a path of its own, class "arc": its half-way points are no block's end.
         if (pieces > 1) begin(l, p_.from(i), "arc");
         for (int k = 1; k <= pieces; ++k) {
             double q[3];
             arc_point(p_, i, double(k) / pieces, q);
             l.out += " A";
-            append_mm(l.out, r1);
-            l.out += ' ';
-            append_mm(l.out, r1);
-            l.out += " 0";
-            l.out += large;
-            l.out += flag;
+            xy(l.out, r1, r1);
+            l.out += arc_flags(view_sweep, pieces);
             pt(l.out, q);
             ++l.cmds;
         }
@@ -155,40 +153,46 @@ void Writer::add_arc(Layer& l, size_t i) {
     l.cmds = kMaxCommands;  // the next move starts a new path
 }
 
-Box Writer::box() const {
-    PathBox b = p_.bounds();
-    if (b.empty()) b.add(p_.start());
-    double x0 = b.lo[h_], x1 = b.hi[h_], y0 = b.lo[v_], y1 = b.hi[v_];
-    for (const auto& poly : p_.stock())
-        for (const auto& q : poly) {
-            x0 = std::min(x0, q[0]), x1 = std::max(x1, q[0]);
-            y0 = std::min(y0, -q[1]), y1 = std::max(y1, q[1]);
+// stroke, stroke-width, stroke-dasharray and opacity of a layer's style, its
+// lengths in paper mm divided by `per_mm` (the scale, or 1 among the marks).
+std::string pen_attrs(const LayerStyle& st, double per_mm) {
+    std::string s = " stroke=\"" + hex(st.colour) + "\" stroke-width=\"";
+    append_mm(s, st.width / per_mm);
+    s += '"';
+    if (st.dash[0] > 0) {
+        s += " stroke-dasharray=\"";
+        for (size_t k = 0; k < st.dash.size() && st.dash[k] > 0; ++k) {
+            if (k) s += ' ';
+            append_mm(s, st.dash[k] / per_mm);
         }
-    // The mirror image is of the cutting moves only.
-    if (lathe_ && o_.mirror && !p_.cut_bounds().empty()) y0 = std::min(y0, -p_.cut_bounds().hi[v_]);
-    uint16_t both = p_.extremes_mask_lo() & p_.extremes_mask_hi();
-    if ((both >> h_ & 1) && (both >> v_ & 1)) {
-        x0 = std::min(x0, p_.extremes_lo()[size_t(h_)]),
-        x1 = std::max(x1, p_.extremes_hi()[size_t(h_)]);
-        y0 = std::min(y0, p_.extremes_lo()[size_t(v_)]),
-        y1 = std::max(y1, p_.extremes_hi()[size_t(v_)]);
+        s += '"';
     }
-    return Box{x0, -y1, x1, -y0};  // SVG: y down
+    if (st.opacity < 1) s += " opacity=\"" + std::to_string(st.opacity).substr(0, 4) + "\"";
+    return s;
 }
 
-// The spindle axis and the stock (lathe), the EM± frame, the mirror image.
-std::string Writer::frame_layers(const Box& b) const {
+// <g id=... stroke=... stroke-width=...>: the layer's look from the scene's table.
+std::string Writer::group_open(Layer l) const {
+    const LayerStyle& st = layer_style(l);
+    return std::string("<g id=\"") + st.id + "\"" + pen_attrs(st, sc_.k) + ">\n";
+}
+
+// The spindle axis and the stock (lathe: both groups always, as pupitre(1)
+// promises them), the EM± frame.
+std::string Writer::frame_layers() const {
     std::string s;
-    if (lathe_) {
-        s += "<g id=\"axis\" stroke=\"#9a9a9a\" stroke-dasharray=\"6 1.5 1 1.5\">\n<path d=\"M";
-        xy(s, b.x0, 0);
+    if (sc_.lathe) {
+        s += group_open(Layer::axis) + "<path d=\"M";
+        xy(s, sc_.wx0, 0);
         s += " L";
-        xy(s, b.x1, 0);
+        xy(s, sc_.wx1, 0);
         s += "\"/>\n</g>\n";
-        s += "<g id=\"stock\" stroke=\"#9a9a9a\" stroke-dasharray=\"1 1\">\n";
+    }
+    if (sc_.lathe) {
+        s += group_open(Layer::stock);
         for (const auto& poly : p_.stock())
             for (double ys : {-1.0, 1.0}) {
-                if (ys > 0 && !o_.mirror) continue;  // y = -X: ys -1 is the profile's side
+                if (ys > 0 && !sc_.opt.mirror) continue;  // y = -X: ys -1 is the profile's side
                 s += "<path d=\"M";
                 for (size_t k = 0; k < poly.size(); ++k) {
                     if (k) s += " L";
@@ -198,9 +202,8 @@ std::string Writer::frame_layers(const Box& b) const {
             }
         s += "</g>\n";
     }
-    uint16_t both = p_.extremes_mask_lo() & p_.extremes_mask_hi();
-    if ((both >> h_ & 1) && (both >> v_ & 1)) {
-        s += "<g id=\"extremes\" stroke=\"#3366cc\" stroke-dasharray=\"1 1\">\n<path d=\"M";
+    if (sc_.present[size_t(Layer::extremes)]) {
+        s += group_open(Layer::extremes) + "<path d=\"M";
         double x0 = p_.extremes_lo()[size_t(h_)], x1 = p_.extremes_hi()[size_t(h_)];
         double y0 = -p_.extremes_hi()[size_t(v_)], y1 = -p_.extremes_lo()[size_t(v_)];
         xy(s, x0, y0);
@@ -215,134 +218,187 @@ std::string Writer::frame_layers(const Box& b) const {
     return s;
 }
 
-std::string hms(double t) {
-    char buf[64];
-    long s = long(std::floor(t));  // as `run` prints it
-    std::snprintf(buf, sizeof buf, "%ld:%02ld:%02ld (%.3f s)", s / 3600, s / 60 % 60, s % 60, t);
-    return buf;
+// The programmed profile under G41/G42, its arcs as SVG arcs.
+std::string Writer::profile_layer() const {
+    if (!sc_.present[size_t(Layer::profile)]) return {};
+    std::string s = group_open(Layer::profile);
+    double lx = 0, ly = 0;
+    bool open = false;
+    for (const ProfileElem& e : p_.profile_elems()) {
+        if (!profile_in_plane(e, h_, v_)) continue;
+        double x, y;
+        profile_point(e, 0, h_, x, y);
+        if (!open || std::fabs(x - lx) > 1e-9 || std::fabs(y - ly) > 1e-9) {
+            s += open ? "\"/>\n<path d=\"M" : "<path d=\"M";
+            xy(s, x, -y);
+            open = true;
+        }
+        double vs = profile_view_sweep(e, h_);
+        int pieces = e.arc && std::fabs(vs) > 270 ? int(std::ceil(std::fabs(vs) / 180)) : 1;
+        double r = std::hypot(e.from[0] - e.c[0], e.from[1] - e.c[1]);
+        for (int k = 1; k <= pieces; ++k) {
+            profile_point(e, double(k) / pieces, h_, x, y);
+            if (e.arc) {
+                s += " A";
+                xy(s, r, r);
+                s += arc_flags(vs, pieces);
+            } else {
+                s += " L";
+            }
+            xy(s, x, -y);
+        }
+        lx = x, ly = y;
+    }
+    if (open) s += "\"/>\n";
+    return s + "</g>\n";
 }
 
-std::string Writer::title_block(const Box& b, double fs) const {
-    const MachineProfile& m = p_.machine();
-    std::vector<std::pair<std::string, const char*>> lines;
-    std::string prog =
-        p_.program >= 0 ? "%" + std::to_string(p_.program) : std::string("(no program)");
-    if (!p_.title.empty()) prog += "  " + p_.title;
-    lines.push_back({prog, "#000"});
-    std::string mach = "machine " + (o_.machine.empty() ? m.name : o_.machine);
-    if (!m.description.empty()) mach += " (" + m.description + ")";
-    mach += "   plane " + std::string(plane_name(o_.plane));
-    lines.push_back({mach, "#000"});
-    char buf[160];
-    std::snprintf(buf, sizeof buf, "   %zu moves   path %.3f mm", p_.size(), p_.length());
-    lines.push_back(
-        {"cycle time " + hms(o_.seconds >= 0 ? o_.seconds : p_.seconds()) + buf, "#000"});
-    std::string ext = "extents";
-    const PathBox& pb = p_.bounds();
-    for (int a = X; a <= Z && !pb.empty(); ++a) {
-        if (!m.has(a)) continue;
-        double k = a == X && m.lathe && p_.x_diameter() ? 2 : 1;
-        std::snprintf(buf, sizeof buf, "  %c%s %.3f/%.3f", kAxisNames[size_t(a)], k == 2 ? "ø" : "",
-                      k * pb.lo[a], k * pb.hi[a]);
-        ext += buf;
+std::string Writer::paint(const Mark& m) {
+    std::string s = std::string(" fill=\"") + (m.has_fill ? hex(m.fill) : "none") + "\"";
+    if (m.has_stroke) {
+        s += " stroke=\"" + hex(m.stroke) + "\" stroke-width=\"";
+        append_mm(s, m.width);
+        s += '"';
     }
-    if (p_.travel_moves())
-        ext += "   " + std::to_string(p_.travel_moves()) + " moves beyond travel";
-    lines.push_back({ext, "#000"});
-    for (const PathError& e : p_.errors()) {
-        std::string t = "error " + std::to_string(e.code) + " line " + std::to_string(e.loc.line);
-        if (e.loc.n >= 0) t += " N" + std::to_string(e.loc.n);
-        lines.push_back({t + ": " + e.detail, "#d40000"});
-    }
-    lines.push_back({"drawn by " + o_.generator, "#666"});
-    std::string s = "<g id=\"title\" font-family=\"sans-serif\" font-size=\"";
-    append_mm(s, fs);
-    s += "\">\n<rect fill=\"none\" stroke=\"#000\" stroke-width=\"";
-    append_mm(s, fs / 12);
-    s += "\" x=\"";
-    append_mm(s, b.x0);
+    return s;
+}
+
+// A line of the marks; with a layer, the legend's sample of its style.
+std::string Writer::mark_line(const Mark& m) {
+    std::string s = "<path d=\"M";
+    xy(s, m.pts[0], m.pts[1]);
+    s += " L";
+    xy(s, m.pts[2], m.pts[3]);
+    s += '"';
+    if (m.layer >= 0) return s + pen_attrs(layer_style(Layer(m.layer)), 1) + "/>\n";
+    s += " stroke=\"" + hex(m.stroke) + "\" stroke-width=\"";
+    append_mm(s, m.width);
+    return s + "\"/>\n";
+}
+
+std::string Writer::mark_rect(const Mark& m) {
+    std::string s = "<rect x=\"";
+    append_mm(s, m.pts[0]);
     s += "\" y=\"";
-    append_mm(s, b.y1 + fs);
+    append_mm(s, m.pts[1]);
     s += "\" width=\"";
-    append_mm(s, b.x1 - b.x0);
+    append_mm(s, m.pts[2]);
     s += "\" height=\"";
-    append_mm(s, fs * (1.4 * double(lines.size()) + 0.8));
-    s += "\"/>\n";
-    for (size_t k = 0; k < lines.size(); ++k) {
-        s += "<text x=\"";
-        append_mm(s, b.x0 + fs * 0.5);
-        s += "\" y=\"";
-        append_mm(s, b.y1 + fs * (2.2 + 1.4 * double(k)));
-        s += std::string("\" fill=\"") + lines[k].second +
-             (k == 0 ? "\" font-weight=\"bold\">" : "\">");
-        s += xml_escape(lines[k].first);
-        s += "</text>\n";
+    append_mm(s, m.pts[3]);
+    return s + '"' + paint(m) + "/>\n";
+}
+
+std::string Writer::mark_polygon(const Mark& m) {
+    std::string s = "<path d=\"M";
+    for (size_t k = 0; k + 1 < m.pts.size(); k += 2) {
+        if (k) s += " L";
+        xy(s, m.pts[k], m.pts[k + 1]);
+    }
+    return s + " Z\"" + paint(m) + "/>\n";
+}
+
+std::string Writer::mark_text(const Mark& m) {
+    std::string s = "<text x=\"";
+    append_mm(s, m.pts[0]);
+    s += "\" y=\"";
+    append_mm(s, m.pts[1]);
+    s += "\" font-size=\"";
+    append_mm(s, m.size);
+    s += "\" fill=\"" + hex(m.fill) + "\"";
+    if (m.bold) s += " font-weight=\"bold\"";
+    if (m.right) s += " text-anchor=\"end\"";
+    return s + ">" + xml_escape(m.words) + "</text>\n";
+}
+
+// The marks around the drawing, in paper millimetres: one transform takes them
+// to the drawing's units, so their numbers stay the layout's.
+std::string Writer::marks() const {
+    std::string s = "<g id=\"marks\" font-family=\"DejaVu Sans, sans-serif\" xml:space=\"preserve\" "
+                    "transform=\"translate(";
+    xy(s, sc_.wx0 - sc_.fx / sc_.k, -sc_.wy1 - sc_.fy / sc_.k);
+    s += ") scale(";
+    char buf[48];
+    std::snprintf(buf, sizeof buf, "%.10g", 1 / sc_.k);
+    s += buf;
+    s += ")\">\n";
+    for (int g = 0; g < Mark::groups_; ++g) {
+        s += std::string("<g id=\"") + mark_group_id(Mark::Group(g)) + "\">\n";
+        // One writer per kind of mark, in the order of Mark::Kind.
+        static constexpr std::string (*kWrite[])(const Mark&) = {mark_line, mark_rect, mark_polygon,
+                                                                 mark_text};
+        for (const Mark& m : sc_.marks)
+            if (m.group == g) s += kWrite[m.kind](m);
+        s += "</g>\n";
     }
     return s + "</g>\n";
 }
 
-std::string Writer::document() {
-    for (size_t i = 0; i < p_.size(); ++i) add_move(i);
-    for (Layer& l : layers_) close(l);
-    Box b = box();
-    double w = std::max(b.x1 - b.x0, 1.0), hgt = std::max(b.y1 - b.y0, 1.0);
-    double margin = std::max(0.05 * std::max(w, hgt), 2.0);
-    Box f{b.x0 - margin, b.y0 - margin, b.x0 - margin + w + 2 * margin,
-          b.y0 - margin + hgt + 2 * margin};
-    double fs = std::clamp((f.x1 - f.x0) / 45, 1.5, 50.0);
-    double lines = 6.0 + double(p_.errors().size());
-    double total_h = (f.y1 - f.y0) + fs * (1.4 * lines + 2.4);
-    double sw = std::clamp(std::hypot(w, hgt) / 700, 0.05, 5.0);
+std::string Writer::head() const {
+    double ux = sc_.wx0 - sc_.fx / sc_.k, uy = -sc_.wy1 - sc_.fy / sc_.k;
     std::string s =
         "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" "
         "xmlns:xlink=\"http://www.w3.org/1999/xlink\" version=\"1.1\" width=\"";
-    append_mm(s, f.x1 - f.x0);
+    append_mm(s, sc_.page_w);
     s += "mm\" height=\"";
-    append_mm(s, total_h);
+    append_mm(s, sc_.page_h);
     s += "mm\" viewBox=\"";
-    xy(s, f.x0, f.y0);
+    xy(s, ux, uy);
     s += ' ';
-    xy(s, f.x1 - f.x0, total_h);
-    std::string title = p_.program >= 0 ? "%" + std::to_string(p_.program) : std::string();
-    if (!p_.title.empty()) title += (title.empty() ? "" : " ") + p_.title;
-    s += "\">\n<title>" + xml_escape(title) + "</title>\n<desc>" +
-         xml_escape(
-             "Toolpath in the program frame, plane " + std::string(plane_name(o_.plane)) +
-             "; lengths in mm; the horizontal axis to the right and the vertical one up" +
-             (lathe_ ? " (lathe: Z across, X as a radius up, y = -X/2 of the diameters)." : ".")) +
-         "</desc>\n";
-    s += "<g fill=\"none\" stroke-linecap=\"round\" stroke-linejoin=\"round\" stroke-width=\"";
-    append_mm(s, sw);
-    s += "\">\n" + frame_layers(b);
-    for (int k = 0; k < kLayers; ++k) {
-        s += std::string("<g id=\"") + kLayerIds[k] + "\" stroke=\"" + kLayerStroke[k] + "\"";
-        if (k == kRapid) {
-            s += " stroke-dasharray=\"";
-            xy(s, 4 * sw, 3 * sw);
-            s += "\"";
-        }
-        s += ">\n" + layers_[k].out;
-        if (k == kGouge)
+    xy(s, paper(sc_.page_w), paper(sc_.page_h));
+    s += "\">\n<title>" + xml_escape(sc_.title) + "</title>\n<desc>" +
+         xml_escape("Toolpath in the program frame, plane " + std::string(plane_name(sc_.opt.plane)) +
+                    "; lengths in mm; the horizontal axis to the right and the vertical one up" +
+                    (sc_.lathe ? " (lathe: Z across, X as a radius up, y = -X/2 of the diameters)."
+                               : ".") +
+                    " Drawn at " + sc_.ratio + "; the frame shows " + fit_words(p_, sc_.fit) +
+                    ", and clips what reaches beyond it.") +
+         "</desc>\n<defs>\n<clipPath id=\"window\"><rect x=\"";
+    append_mm(s, sc_.wx0);
+    s += "\" y=\"";
+    append_mm(s, -sc_.wy1);
+    s += "\" width=\"";
+    append_mm(s, sc_.wx1 - sc_.wx0);
+    s += "\" height=\"";
+    append_mm(s, sc_.wy1 - sc_.wy0);
+    s += "\"/></clipPath>\n</defs>\n<rect id=\"paper\" fill=\"#ffffff\" x=\"";
+    append_mm(s, ux);
+    s += "\" y=\"";
+    append_mm(s, uy);
+    s += "\" width=\"";
+    append_mm(s, paper(sc_.page_w));
+    s += "\" height=\"";
+    append_mm(s, paper(sc_.page_h));
+    return s + "\"/>\n";
+}
+
+std::string Writer::document() {
+    for (size_t i = 0; i < p_.size(); ++i) add_move(i);
+    for (PathLayer& l : layers_) close(l);
+    std::string s = head();
+    s += "<g clip-path=\"url(#window)\" fill=\"none\" stroke-linecap=\"round\" "
+         "stroke-linejoin=\"round\">\n" +
+         frame_layers() + profile_layer();
+    for (Layer k : {Layer::rapid, Layer::feed, Layer::comp, Layer::travel, Layer::gouge}) {
+        s += group_open(k) + layers_[size_t(k)].out;
+        if (k == Layer::gouge)
             for (const PathError& e : p_.errors()) {
-                const double* at =
-                    e.moves == 0 ? p_.start() : p_[std::min(e.moves, p_.size()) - 1].p;
+                const double* at = e.moves == 0 ? p_.start() : p_[std::min(e.moves, p_.size()) - 1].p;
                 s += "<circle cx=\"";
                 append_mm(s, at[h_]);
                 s += "\" cy=\"";
                 append_mm(s, -at[v_]);
                 s += "\" r=\"";
-                append_mm(s, 6 * sw);
+                append_mm(s, paper(1.2));
                 s += "\"/>\n";
             }
         s += "</g>\n";
     }
-    if (lathe_ && o_.mirror)
+    if (sc_.lathe && sc_.opt.mirror)  // pupitre(1): on the lathe, a mirror group always
         s += "<g id=\"mirror\" transform=\"scale(1,-1)\" opacity=\"0.35\">\n<use "
              "xlink:href=\"#feed\"/>\n"
              "<use xlink:href=\"#comp\"/>\n<use xlink:href=\"#travel\"/>\n<use "
              "xlink:href=\"#gouge\"/>\n</g>\n";
-    s += "</g>\n" + title_block(f, fs) + "</svg>\n";
-    return s;
+    return s + "</g>\n" + marks() + "</svg>\n";
 }
 
 }  // namespace
@@ -411,12 +467,16 @@ std::string xml_escape(std::string_view in) {
     return out;
 }
 
-std::string svg_document(const Toolpath& path, const SvgOptions& o) {
-    return Writer(path, o).document();
+std::string svg_document(const Scene& scene) {
+    return Writer(scene).document();
 }
 
-bool write_svg(const Toolpath& path, const SvgOptions& o, std::FILE* out) {
-    std::string s = svg_document(path, o);
+std::string svg_document(const Toolpath& path, const SvgOptions& o) {
+    return svg_document(build_scene(path, o));
+}
+
+bool write_svg(const Scene& scene, std::FILE* out) {
+    std::string s = svg_document(scene);
     return std::fwrite(s.data(), 1, s.size(), out) == s.size() && std::fflush(out) == 0;
 }
 

@@ -1,30 +1,27 @@
-// The toolpath as an SVG drawing (issue 7, `pupitre plot --svg`): one layer per
-// kind of move (ids rapid, feed, comp, travel, gouge), arcs as SVG arcs, +Y (on
-// the lathe +X) up, coordinates in mm with 4 decimals so that tests compare
-// them with the trace, and a title block for reports.
+// The plot's scene as an SVG drawing (issue 7, `pupitre plot --svg`): one layer
+// per kind of move (ids rapid, feed, comp, travel, gouge, and profile, axis,
+// stock, extremes, mirror), arcs as SVG arcs, +Y (on the lathe +X) up,
+// coordinates in mm with 4 decimals so that tests compare them with the trace;
+// the title, axis arrows, scale bar, legend and notes of the scene around it.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 #include <cstdio>
 #include <string>
 #include <string_view>
 
+#include "core/scene.hpp"
 #include "core/toolpath.hpp"
 
 namespace pupitre {
 
-struct SvgOptions {
-    PathPlane plane = PathPlane::xy;
-    std::string machine;  // the profile's name as given (--machine)
-    double seconds = -1;  // cycle time; < 0: the toolpath's own count
-    bool mirror = true;   // lathe: the half-profile's mirror image below the axis
-    std::string generator = "pupitre";
-};
+using SvgOptions = SceneOptions;
 
 // The whole document. On the lathe (plane ZX) the drawing is true to shape: Z
 // across, X as a radius up (y = -X/2 of the trace's diameters).
+std::string svg_document(const Scene& scene);
 std::string svg_document(const Toolpath& path, const SvgOptions& o);
 // Writes it; false when the stream fails (errno tells why).
-bool write_svg(const Toolpath& path, const SvgOptions& o, std::FILE* out);
+bool write_svg(const Scene& scene, std::FILE* out);
 
 // Text made safe for XML character data and attribute values: & < > " ' escaped,
 // control characters dropped, invalid UTF-8 bytes replaced by U+FFFD.

@@ -39,6 +39,7 @@ void Toolpath::clear() {
     locs_.clear();
     errors_.clear();
     stock_.clear();
+    profile_.clear();
     has_start_ = false;
     all_ = cut_ = PathBox{};
     em_mask_lo_ = em_mask_hi_ = 0;
@@ -202,7 +203,15 @@ size_t Toolpath::memory_bytes() const {
     size_t n = moves_.capacity() * sizeof(PathMove) + arcs_.capacity() * sizeof(PathArc) +
                locs_.capacity() * sizeof(LocRun) + errors_.capacity() * sizeof(PathError);
     for (const auto& s : stock_) n += s.capacity() * sizeof(s[0]);
+    n += profile_.capacity() * sizeof(ProfileElem);
     return n + sizeof(*this);
+}
+
+double nice_length(double target) {
+    if (!(target > 0) || !std::isfinite(target)) return 1;
+    double p = std::pow(10.0, std::floor(std::log10(target)));
+    double m = target / p;
+    return (m >= 5 ? 5 : m >= 2 ? 2 : 1) * p;
 }
 
 void arc_radii(const Toolpath& path, size_t i, double& r0, double& r1) {
@@ -228,6 +237,98 @@ void arc_point(const Toolpath& path, size_t i, double t, double out[3]) {
     for (int k = 0; k < 3; ++k) out[k] = s[k] + (mv.p[k] - s[k]) * t;
     out[a.a0] = a.c0 + r * std::cos(ang);
     out[a.a1] = a.c1 + r * std::sin(ang);
+}
+
+namespace {
+
+// A programmed element seen in the plane (h, v), if it lies in it.
+void add_profile_box(const ProfileElem& e, int h, int v, PathBox& b) {
+    bool direct = e.a0 == h && e.a1 == v, swapped = e.a0 == v && e.a1 == h;
+    if (!direct && !swapped) return;
+    auto put = [&](double p0, double p1) {
+        double q[3] = {0, 0, 0};
+        q[e.a0] = p0;
+        q[e.a1] = p1;
+        b.add(q);
+    };
+    put(e.from[0], e.from[1]);
+    put(e.to[0], e.to[1]);
+    if (!e.arc) return;
+    double r = std::hypot(e.from[0] - e.c[0], e.from[1] - e.c[1]);
+    double a0 = std::atan2(e.from[1] - e.c[1], e.from[0] - e.c[0]), sw = e.sweep * kPi / 180;
+    double lo = std::min(a0, a0 + sw), hi = std::max(a0, a0 + sw);
+    for (int k = int(std::ceil(lo / (kPi / 2))); k <= int(std::floor(hi / (kPi / 2))); ++k)
+        put(e.c[0] + r * std::cos(k * kPi / 2), e.c[1] + r * std::sin(k * kPi / 2));
+}
+
+}  // namespace
+
+PathFit fit_box(const Toolpath& p, PathPlane plane, bool mirror, bool with_profile) {
+    int h, v;
+    plane_axes(plane, h, v);
+    PathFit f;
+    PathBox b = p.cut_bounds();
+    f.what = b.empty() ? p.empty() ? PathFit::start : PathFit::moves : PathFit::cuts;
+    if (b.empty()) b = p.bounds();
+    if (b.empty()) b.add(p.start());
+    for (const auto& poly : p.stock())
+        for (const auto& q : poly) {
+            double pt[3] = {0, 0, 0};
+            pt[X] = q[1];
+            pt[Z] = q[0];
+            b.add(pt);
+        }
+    if (with_profile)
+        for (const ProfileElem& e : p.profile_elems()) add_profile_box(e, h, v, b);
+    f.x0 = b.lo[h], f.x1 = b.hi[h], f.y0 = b.lo[v], f.y1 = b.hi[v];
+    // The mirror image (lathe) is of the cutting moves only.
+    const PathBox& c = p.cut_bounds();
+    if (mirror && !c.empty()) {
+        if (c.lo[v] > c.hi[v] - c.lo[v])
+            f.mirror_out = true;
+        else
+            f.y0 = std::min(f.y0, -c.hi[v]);
+    }
+    uint16_t both = p.extremes_mask_lo() & p.extremes_mask_hi();
+    if ((both >> h & 1) && (both >> v & 1)) {
+        f.x0 = std::min(f.x0, p.extremes_lo()[size_t(h)]);
+        f.x1 = std::max(f.x1, p.extremes_hi()[size_t(h)]);
+        f.y0 = std::min(f.y0, p.extremes_lo()[size_t(v)]);
+        f.y1 = std::max(f.y1, p.extremes_hi()[size_t(v)]);
+    }
+    return f;
+}
+
+void count_outside(const Toolpath& p, PathPlane plane, size_t upto, PathFit& f) {
+    int h, v;
+    plane_axes(plane, h, v);
+    const double tol = 1e-6 * (1 + std::max(f.x1 - f.x0, f.y1 - f.y0));
+    f.outside = 0;
+    for (size_t i = 0; i < std::min(upto, p.size()); ++i) {
+        if (p[i].kind != PathKind::rapid) continue;
+        auto out = [&](const double* q) {
+            return q[h] < f.x0 - tol || q[h] > f.x1 + tol || q[v] < f.y0 - tol || q[v] > f.y1 + tol;
+        };
+        if (out(p.from(i)) || out(p[i].p)) ++f.outside;
+    }
+}
+
+std::string fit_words(const Toolpath& p, const PathFit& f) {
+    std::string of = p.program >= 0 ? " of %" + std::to_string(p.program) : std::string();
+    switch (f.what) {
+        case PathFit::start:
+            return "the start point (no move yet)";
+        case PathFit::moves:
+            return "the whole path" + of + " (no cutting move)";
+        case PathFit::cuts:
+            break;
+    }
+    std::string s = "the cutting moves" + of, more;
+    if (f.mirror_out) more = "the mirror image left out, far from the axis";
+    if (f.outside)
+        more += (more.empty() ? "" : "; ") + std::to_string(f.outside) +
+                (f.outside == 1 ? " rapid reaches" : " rapids reach") + " beyond";
+    return more.empty() ? s : s + " (" + more + ")";
 }
 
 // EM± then axis words, literal numbers only (a variable is not known before

@@ -117,6 +117,7 @@ class Toolpath final : public MachineSink {
     void tool(const Loc&, int, int, double s) override { seconds_ += s; }
     void end(const Loc& l, int) override { end_ = l; }
     void stock(const Loc& l, const std::vector<std::array<double, 2>>& zr) override { add_stock(l, zr); }
+    void profile(const Loc&, const ProfileElem& e) override { profile_.push_back(e); }
 
     // --- reading ---
     const MachineProfile& machine() const { return m_; }
@@ -134,6 +135,8 @@ class Toolpath final : public MachineSink {
     Loc loc(size_t i) const;
     const std::vector<PathError>& errors() const { return errors_; }
     const std::vector<std::vector<std::array<double, 2>>>& stock() const { return stock_; }
+    // The programmed profile of the compensated moves (G41/G42), element by element.
+    const std::vector<ProfileElem>& profile_elems() const { return profile_; }
     // Extents of every move, and of the cutting moves only (feed and compensated).
     const PathBox& bounds() const { return all_; }
     const PathBox& cut_bounds() const { return cut_; }
@@ -173,6 +176,7 @@ class Toolpath final : public MachineSink {
     std::vector<LocRun> locs_;
     std::vector<PathError> errors_;
     std::vector<std::vector<std::array<double, 2>>> stock_;
+    std::vector<ProfileElem> profile_;
     double start_[3] = {0, 0, 0};
     bool has_start_ = false;
     PathBox all_, cut_;
@@ -194,7 +198,30 @@ class Toolpath final : public MachineSink {
 bool scan_extremes(const ProgramText& p, bool x_diameter, Axes& lo, Axes& hi, uint16_t& mask_lo,
                    uint16_t& mask_hi);
 
-// Drawing helpers shared by the raster and the SVG writer.
+// What a drawing's frame fits, one rule for the GRAPH page's `f` and for the
+// plot: the cutting moves (feed and compensated) with the lathe's stock, the
+// EM± frame, the mirror image (of the cutting moves) and, when drawn, the
+// programmed profile. Rapids are left out, so that the trip from the home or
+// tool-change position does not shrink the part to a dot; with no cutting
+// move, every move is fitted. The mirror image is left out too when the cuts
+// are further from the axis than they are high (a rim, a flange): it would
+// leave the part a sliver between two empty bands. Box in the plane: h
+// across, v up (world mm).
+struct PathFit {
+    double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    enum What : uint8_t { start, moves, cuts } what = start;  // the start point alone, every move, the cuts
+    bool mirror_out = false;  // the mirror image was asked for but is not in the box
+    size_t outside = 0;       // rapids that leave the box (counted by count_outside)
+};
+PathFit fit_box(const Toolpath& path, PathPlane plane, bool mirror, bool with_profile);
+// Rapids among the first `upto` moves that start or end outside the box: f.outside.
+void count_outside(const Toolpath& path, PathPlane plane, size_t upto, PathFit& f);
+// What the box holds, in words: "the cutting moves of %555 (3 rapids reach beyond)".
+std::string fit_words(const Toolpath& path, const PathFit& f);
+
+// Drawing helpers shared by the raster, the plot's scene and the SVG writer.
+// A "nice" length for a scale bar about `target` long: 1, 2 or 5 times a power of ten.
+double nice_length(double target);
 // The point of arc move i at fraction t (0..1) of its sweep, program frame.
 void arc_point(const Toolpath& path, size_t i, double t, double out[3]);
 // Start and end radii of arc move i.

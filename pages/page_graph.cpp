@@ -269,13 +269,6 @@ std::string title_of(const GraphView& g) {
 
 }  // namespace
 
-double nice_length(double target) {
-    if (!(target > 0) || !std::isfinite(target)) return 1;
-    double p = std::pow(10.0, std::floor(std::log10(target)));
-    double m = target / p;
-    return (m >= 5 ? 5 : m >= 2 ? 2 : 1) * p;
-}
-
 void draw_moves(const Toolpath& p, PathPlane plane, const ViewXf& xf, bool mirror, size_t from,
                 size_t to, DotRaster& r) {
     int h, v;
@@ -311,12 +304,6 @@ void draw_moves(const Toolpath& p, PathPlane plane, const ViewXf& xf, bool mirro
     }
 }
 
-void draw_graph(const GraphView& g, const ViewXf& xf, DotRaster& r) {
-    if (!g.path) return;
-    draw_moves(*g.path, g.plane, xf, mirrored(g), 0, moves_shown(g), r);
-    draw_frame_marks(g, xf, g.path->machine().lathe, r);
-}
-
 Rect graph_area(const Rect& page) {
     return Rect{page.x, page.y + 1, page.w, std::max(1, page.h - 3)};
 }
@@ -325,30 +312,16 @@ void graph_extent(const GraphView& g, double& x0, double& y0, double& x1, double
     x0 = y0 = 0;
     x1 = y1 = 0;
     if (!g.path) return;
-    const Toolpath& p = *g.path;
-    int h, v;
-    plane_axes(g.plane, h, v);
-    // The part, not the trip from the tool-change position: the cutting moves
-    // when there are some (rapids beyond them are clipped), else every move.
-    PathBox b = p.cut_bounds().empty() ? p.bounds() : p.cut_bounds();
-    if (b.empty()) b.add(p.start());
-    for (const auto& poly : p.stock())
-        for (const auto& q : poly) {
-            double pt[3] = {0, 0, 0};
-            pt[X] = q[1];
-            pt[Z] = q[0];
-            b.add(pt);
-        }
-    x0 = b.lo[h], x1 = b.hi[h], y0 = b.lo[v], y1 = b.hi[v];
-    // The mirror image is of the cutting moves only.
-    if (mirrored(g) && !p.cut_bounds().empty()) y0 = std::min(y0, -p.cut_bounds().hi[v]);
-    uint16_t both = p.extremes_mask_lo() & p.extremes_mask_hi();
-    if ((both >> h & 1) && (both >> v & 1)) {
-        x0 = std::min(x0, p.extremes_lo()[size_t(h)]),
-        x1 = std::max(x1, p.extremes_hi()[size_t(h)]);
-        y0 = std::min(y0, p.extremes_lo()[size_t(v)]),
-        y1 = std::max(y1, p.extremes_hi()[size_t(v)]);
-    }
+    // The part, not the trip from the tool-change position (the plot's rule).
+    PathFit f = fit_box(*g.path, g.plane, mirrored(g), false);
+    x0 = f.x0, y0 = f.y0, x1 = f.x1, y1 = f.y1;
+}
+
+std::string graph_fit_words(const GraphView& g) {
+    if (!g.path) return "no toolpath yet";
+    PathFit f = fit_box(*g.path, g.plane, mirrored(g), false);
+    count_outside(*g.path, g.plane, moves_shown(g), f);
+    return fit_words(*g.path, f);
 }
 
 ViewXf graph_window(const GraphView& g, const Rect& page) {

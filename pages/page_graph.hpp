@@ -7,6 +7,7 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <string>
 
 #include "core/toolpath.hpp"
 #include "pages/canvas.hpp"
@@ -56,8 +57,12 @@ Rect graph_area(const Rect& page);
 // The window the page shows, fit resolved, in dots of graph_area(page).
 ViewXf graph_window(const GraphView& g, const Rect& page);
 // The world box that `fit` shows: the cutting moves (every move when there is
-// none), the stock, EM± and, on the lathe, the mirror image.
+// none), the stock, EM± and, on the lathe, the mirror image (fit_box, the
+// plot's rule).
 void graph_extent(const GraphView& g, double& x0, double& y0, double& x1, double& y1);
+// What `fit` shows, in words for the message line: "the cutting moves of %300
+// (2 rapids reach beyond)".
+std::string graph_fit_words(const GraphView& g);
 
 // Keys. Zoom about the cursor (or the window's centre when there is none);
 // `factor` > 1 magnifies.
@@ -74,10 +79,7 @@ GraphView graph_move_cursor(const GraphView& g, const Rect& page, int dcols, int
 // public for the benchmarks).
 void draw_moves(const Toolpath& p, PathPlane plane, const ViewXf& xf, bool mirror, size_t from,
                 size_t to, DotRaster& r);
-// Everything the page rasterises (moves, spindle axis, stock, EM±) into r, with
-// no cache: the PNG export draws with it.
-void draw_graph(const GraphView& g, const ViewXf& xf, DotRaster& r);
-// A "nice" length for a scale bar about `target` long: 1, 2 or 5 times a power of ten.
-double nice_length(double target);
+// A scale bar's round length (core/toolpath.hpp), shared with the plot.
+using pupitre::nice_length;
 
 }  // namespace pupitre::pages

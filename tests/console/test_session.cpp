@@ -599,6 +599,26 @@ TEST(Graph, TestDrawsTheWholeProgramAndKeysChangeTheWindow) {
     EXPECT_NE(c.screen().find("GRAPH  ZX"), std::string::npos);
 }
 
+TEST(Graph, FitSaysWhatItFits) {
+    Console c;
+    c.named("F3");
+    c.named("F3");
+    ASSERT_EQ(c.s->page, pages::PageId::graph);
+    c.key("f");
+    EXPECT_EQ(c.message(), "fit: the start point (no move yet)");
+    c.type(":load 300");
+    c.type(":mode test");
+    c.named("F9");
+    c.run_until_settled();
+    c.key("+");
+    c.key("f");
+    // The demo cuts from X20 Z90 to X50 Z35; its four rapids, from and back to
+    // X150 Z200, are left out, as the plot's frame leaves them out.
+    EXPECT_EQ(c.message(), "fit: the cutting moves of %300 (4 rapids reach beyond)");
+    EXPECT_NE(c.screen().find("GRAPH  ZX  %300"), std::string::npos);
+    EXPECT_TRUE(c.s->graph.fit);
+}
+
 TEST(Graph, AutoDrawsAsTheMovesAreShown) {
     Console c;
     c.type(":mode pom");

@@ -24,6 +24,7 @@ for w in $rest; do
                   args+=("$f") ;;
         local:*)  args+=("$root/tests/golden/programs/${w#local:}") ;;
         bad:*)    args+=("$root/tests/bad/${w#bad:}") ;;
+        plot:*)   args+=("$here/programs/${w#plot:}") ;;
         *)        args+=("$w") ;;
     esac
 done
