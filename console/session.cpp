@@ -235,6 +235,16 @@ std::string Session::mode_hint(Mode m) const {
     for (int a = 0; a < kAxes; ++a) homed = homed && (!m_.has(a) || sim_->interp().homed(a));
     bool runs = m == Mode::automatic || m == Mode::single || m == Mode::dry || m == Mode::rns;
     if (!homed && runs) return "home first: F8 to POM, then Cycle Start (F9)";
+    switch (sim_->state()) {  // a program in cycle: what the panel's buttons do now
+        case RunState::running:
+            if (m != Mode::jog && m != Mode::inc && m != Mode::pom) return "F10 feed hold, F12 (RAZ) abandons the run";
+            break;
+        case RunState::hold: return "Cycle Start (F9) resumes, F12 (RAZ) abandons the run";
+        case RunState::block: return "Cycle Start (F9) runs the next block, F12 (RAZ) abandons";
+        case RunState::stopped: return "Cycle Start (F9) goes on, F12 (RAZ) abandons the run";
+        case RunState::alarm: return "F12 (RAZ) acknowledges the alarm (F7: the ALARM page)";
+        default: break;
+    }
     if (m != Mode::jog && m != Mode::inc) return std::string(mode_how(m));
     // The jog keys as bound for this machine (data/bindings.txt or the user's).
     std::string keys;
