@@ -195,7 +195,12 @@ Effect Session::submit(const std::string& raw) {
     std::string_view line = trim(raw);
     if (line.empty()) return Effect::none;
     input_.add_history(std::string(line));
-    if (line.front() == ':') return command(line.substr(1));
+    if (line.front() == ':') {
+        // A command instead of an answer: the question is dropped, not answered yes.
+        pending_confirm.clear();
+        on_confirm = nullptr;
+        return command(line.substr(1));
+    }
     return plain_text(std::string(line));
 }
 

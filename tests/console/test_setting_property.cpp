@@ -183,3 +183,18 @@ TEST(SettingProperty, AJogAfterAGaugeChangeKeepsOpXStill) {
         EXPECT_NEAR(shown(c, X), x0, 1e-6) << "frame " << i;
     }
 }
+
+// A ':' command typed while the console asks y/n drops the question: it is
+// never taken as "yes", and the prompt names the target again.
+TEST(SettingProperty, ACommandDropsAPendingQuestion) {
+    Console c;
+    c.type(":page pref");
+    c.type("X 150");  // D0: asks first
+    ASSERT_FALSE(c.s->pending_confirm.empty());
+    double before = c.s->sim().interp().frames().pref[X];
+    c.type(":page op");
+    EXPECT_TRUE(c.s->pending_confirm.empty());
+    EXPECT_EQ(c.s->sim().interp().frames().pref[X], before);
+    c.type("y");  // no question any more: not a confirmation
+    EXPECT_EQ(c.s->sim().interp().frames().pref[X], before);
+}
