@@ -3,6 +3,7 @@
 // clipped to the frame, then the marks.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/cairo_plot.hpp"
+#include "core/geometry.hpp"
 
 #include <cairo-pdf.h>
 #include <cairo.h>
@@ -15,7 +16,7 @@ namespace pupitre {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using ::pupitre::geometry::kPi;
 // Segments stroked at once: Cairo's stroker slows down as one path gathers
 // edges, and memory stays bounded for a million-move program.
 constexpr int kBatch = 256;

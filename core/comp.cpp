@@ -3,6 +3,7 @@
 // outside corners (S4 L757), error 149 when the tool does not fit (000:13293).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/comp.hpp"
+#include "core/geometry.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -10,11 +11,11 @@
 namespace pupitre::comp {
 
 namespace {
-constexpr double kPi = std::numbers::pi;
+using ::pupitre::geometry::kPi;
 constexpr double kEps = 1e-7;
 
-V2 perp(const V2& v) { return V2(-v.y(), v.x()); }
-double cross(const V2& a, const V2& b) { return a.x() * b.y() - a.y() * b.x(); }
+using ::pupitre::geometry::perp;
+using ::pupitre::geometry::cross;
 double sgn(double v) { return v < 0 ? -1.0 : 1.0; }
 
 // Angle travelled from u to v about the origin, turning in direction s (+1 ccw,

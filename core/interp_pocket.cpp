@@ -6,12 +6,13 @@
 #include <numbers>
 
 #include "core/plan.hpp"
+#include "core/geometry.hpp"
 
 namespace pupitre {
 
 namespace {
-constexpr double kPi = std::numbers::pi;
-double ceil_um(double v) { return std::ceil(v * 1000 - 1e-6) / 1000; }
+using ::pupitre::geometry::kPi;
+using ::pupitre::geometry::ceil_um;
 
 // A closed tool-centre contour about the pocket centre (0, 0), as pieces.
 struct Piece {

@@ -11,13 +11,12 @@
 #include <string>
 
 #include "core/plan.hpp"
+#include "core/geometry.hpp"
 
 namespace pupitre {
 
 namespace {
-double ceil_um(double v) {
-    return std::ceil(v * 1000 - 1e-6) / 1000;
-}
+using ::pupitre::geometry::ceil_um;
 std::string num(double v) {
     char buf[64];
     std::snprintf(buf, sizeof buf, "%.3f", v);

@@ -7,11 +7,12 @@
 #include <numbers>
 
 #include "core/plan.hpp"
+#include "core/geometry.hpp"
 
 namespace pupitre {
 
 namespace {
-constexpr double kPi = std::numbers::pi;
+using ::pupitre::geometry::kPi;
 constexpr double kArcTolerance = 0.020;  // mm: start and end radii (004:626, 000:13249)
 
 std::string f3(double v) {

@@ -6,6 +6,7 @@
 // when both elements are known.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/pgp.hpp"
+#include "core/geometry.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -15,18 +16,14 @@
 namespace pupitre::pgp {
 
 namespace {
-constexpr double kPi = std::numbers::pi;
+using ::pupitre::geometry::kPi;
 constexpr double kEq = 1e-6;         // mm: equal points (pgp.md §6.7)
 constexpr double kArcTol = 0.020;    // mm: start and end radii of an I J arc (004:626)
 constexpr double kChordTol = 0.001;  // mm: a chord up to 2R + 1 µm is a half circle
 constexpr double kOverTol = 0.001;   // mm: a tangency between two fully programmed elements
 
-V2 left(const V2& v) {
-    return V2(-v.y(), v.x());
-}
-double cross(const V2& a, const V2& b) {
-    return a.x() * b.y() - a.y() * b.x();
-}
+using ::pupitre::geometry::perp;
+using ::pupitre::geometry::cross;
 V2 dir(double deg) {
     double a = deg * kPi / 180;
     return V2(std::cos(a), std::sin(a));
@@ -74,7 +71,7 @@ Sup circle(const V2& c, double r, int s) {
 
 // Travel direction of a support at one of its points.
 V2 tangent(const Sup& e, const V2& q) {
-    return e.arc ? V2(double(e.s) * left(q - e.p).normalized()) : e.d;
+    return e.arc ? V2(double(e.s) * perp(q - e.p).normalized()) : e.d;
 }
 
 // Points common to two supports.
@@ -103,7 +100,7 @@ std::vector<V2> meet(const Sup& a, const Sup& b) {
     double x = (a.r * a.r - b.r * b.r + dist * dist) / (2 * dist), h2 = a.r * a.r - x * x;
     if (h2 < -1e-9 * std::max(1.0, a.r * a.r)) return out;
     double h = std::sqrt(std::max(0.0, h2));
-    V2 m = a.p + x / dist * w, n = left(w) / dist;
+    V2 m = a.p + x / dist * w, n = perp(w) / dist;
     out.push_back(m + h * n);
     if (h > 1e-7) out.push_back(m - h * n);
     return out;
@@ -111,7 +108,7 @@ std::vector<V2> meet(const Sup& a, const Sup& b) {
 
 // Loci of the centre of a circle of radius r tangent to a support.
 std::vector<Sup> loci(const Sup& e, double r) {
-    if (!e.arc) return {line(e.p + r * left(e.d), e.d), line(e.p - r * left(e.d), e.d)};
+    if (!e.arc) return {line(e.p + r * perp(e.d), e.d), line(e.p - r * perp(e.d), e.d)};
     std::vector<Sup> out{circle(e.p, e.r + r, 0)};
     if (std::fabs(e.r - r) > kEq) out.push_back(circle(e.p, std::fabs(e.r - r), 0));
     return out;
@@ -150,7 +147,7 @@ std::vector<V2> touch_from(const Sup& c, const V2& q) {
 }
 
 // Common tangents travelled from circle a to circle b in the circles' senses:
-// a line of direction d touches a circle at p - s r left(d) (no cusp), both on
+// a line of direction d touches a circle at p - s r perp(d) (no cusp), both on
 // one line when cross(d, b.p - a.p) = b.s b.r - a.s a.r.
 struct Tangent {
     V2 t1, t2, d;
@@ -163,7 +160,7 @@ std::vector<Tangent> common(const Sup& a, const Sup& b) {
     std::vector<Tangent> out;
     for (double f : {phi, kPi - phi}) {
         V2 d = rot(w / dist, -f);
-        out.push_back({a.p - a.s * a.r * left(d), b.p - b.s * b.r * left(d), d});
+        out.push_back({a.p - a.s * a.r * perp(d), b.p - b.s * b.r * perp(d), d});
     }
     return out;
 }
@@ -266,7 +263,7 @@ bool arc_by_radius(const Spec& s, int sense, const V2& S, const V2& E, Elt& e, F
         return failed(f, 107, "circle end point too far: chord " + f3(d) + " > 2R " + f3(2 * s.r));
     double h = std::sqrt(std::max(0.0, s.r * s.r - d * d / 4));
     int side = s.disc != 0 ? s.disc : sense;
-    V2 c = (S + E) / 2 + side * h * left(ch) / d;
+    V2 c = (S + E) / 2 + side * h * perp(ch) / d;
     e.form = Form::Complete;
     e.geo = piece(circle(c, s.r, sense), S, E);
     return true;
@@ -525,7 +522,7 @@ St from_fixed(const V2& S, const Sup& A, const Elt& b, bool tan, std::vector<Can
             if (!A.arc) return stop(f, 113, "a line cannot be tangent to a line");
             for (const V2& d : dirs(b))
                 for (int sg : {1, -1}) {
-                    V2 t = A.p + sg * A.r * left(d);
+                    V2 t = A.p + sg * A.r * perp(d);
                     add(out, A, line(t, d), t);
                 }
             return St::Ok;
@@ -584,7 +581,7 @@ St solve3(const V2& S, const Elt* e, const char link[2], std::vector<Cand>& out,
             if (!C3.arc) return stop(f, 123, "a line cannot be tangent to a line");
             for (const V2& d : dirs(b))
                 for (int sg : {1, -1}) {
-                    V2 t = C3.p + sg * C3.r * left(d);
+                    V2 t = C3.p + sg * C3.r * perp(d);
                     mids.push_back({line(t, d), t});
                 }
         }

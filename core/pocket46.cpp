@@ -3,6 +3,7 @@
 // contours by the radius-compensation offsets of core/comp.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/pocket46.hpp"
+#include "core/geometry.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,13 +12,9 @@
 namespace pupitre::p46 {
 
 namespace {
-constexpr double kPi = std::numbers::pi;
-double cross(const V2& a, const V2& b) {
-    return a.x() * b.y() - a.y() * b.x();
-}
-double ceil_um(double v) {
-    return std::ceil(v * 1000 - 1e-6) / 1000;
-}
+using ::pupitre::geometry::kPi;
+using ::pupitre::geometry::cross;
+using ::pupitre::geometry::ceil_um;
 
 // Points along an element (its start excluded), chords within 0.1 µm of arcs.
 void tessellate(const Elem& e, std::vector<V2>& out) {

@@ -3,6 +3,7 @@
 // feed hold, RAZ, single block, overrides, block search, IMD, JOG, POM).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/sim.hpp"
+#include "core/geometry.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +12,7 @@ namespace pupitre {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using ::pupitre::geometry::kPi;
 
 struct NullSink final : MachineSink {};
 

@@ -1,6 +1,7 @@
 // The SVG drawing of a toolpath (see svg.hpp).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/svg.hpp"
+#include "core/geometry.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -11,7 +12,7 @@ namespace pupitre {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using ::pupitre::geometry::kPi;
 
 // Commands per <path> element: long runs are split so that editors cope.
 constexpr int kMaxCommands = 200;

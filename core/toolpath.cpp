@@ -6,12 +6,13 @@
 #include <cmath>
 
 #include "core/block.hpp"
+#include "core/geometry.hpp"
 
 namespace pupitre {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using ::pupitre::geometry::kPi;
 
 }  // namespace
 

@@ -3,6 +3,7 @@
 // profile), winding numbers with arcs, distances.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/turning_geom.hpp"
+#include "core/geometry.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,14 +12,10 @@
 namespace pupitre::turning::geom {
 
 namespace {
-constexpr double kPi = std::numbers::pi;
+using ::pupitre::geometry::kPi;
 
-double cross(const V2& a, const V2& b) {
-    return a.x() * b.y() - a.y() * b.x();
-}
-V2 perp(const V2& v) {
-    return V2(-v.y(), v.x());
-}
+using ::pupitre::geometry::cross;
+using ::pupitre::geometry::perp;
 
 V2 rotate(const V2& v, double ang) {
     double c = std::cos(ang), s = std::sin(ang);

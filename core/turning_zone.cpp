@@ -4,6 +4,7 @@
 // crossings), then sub-intervals are classified at their midpoints.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/turning_zone.hpp"
+#include "core/geometry.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -14,11 +15,9 @@ namespace pupitre::turning::zone {
 using namespace geom;
 
 namespace {
-constexpr double kPi = std::numbers::pi;
+using ::pupitre::geometry::kPi;
 
-V2 perp(const V2& v) {
-    return V2(-v.y(), v.x());
-}
+using ::pupitre::geometry::perp;
 
 Elem arc(const V2& c, const V2& a, double sweep) {
     Elem e;

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "pages/view.hpp"
+#include "core/geometry.hpp"
 
 namespace pupitre::pages {
 
@@ -29,7 +30,7 @@ static uint16_t line_pattern(const PathMove& mv) {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using ::pupitre::geometry::kPi;
 
 const InkStyles kStyles = {
     Style::normal,  // none

@@ -1,6 +1,7 @@
 // The dot raster (see raster.hpp).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "pages/raster.hpp"
+#include "core/geometry.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +10,7 @@ namespace pupitre::pages {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using ::pupitre::geometry::kPi;
 
 double clamp_scale(double s) {
     return std::clamp(s, kMinScale, kMaxScale);
