@@ -1,13 +1,29 @@
 // The ':' commands of the input line (DESIGN §2.5): every page and mode is
 // reachable by them, which is also how the end-to-end tests drive the console.
+// One small function per command, and at the end the table that names them.
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include "console/commands.hpp"
+
+#include <cctype>
 #include <charconv>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "console/session.hpp"
-#include "core/store/store.hpp"
 
 namespace pupitre::console {
+
+struct CommandCall {
+    std::string_view text;                // the line, without the ':'
+    std::vector<std::string_view> words;  // words[0]: the name as typed
+    std::string_view name() const { return words[0]; }
+    std::string_view arg(size_t i) const {
+        return i < words.size() ? words[i] : std::string_view{};
+    }
+    // What follows the name, blanks included: :set and :protect parse it.
+    std::string_view rest() const { return text.substr(text.find(name()) + name().size()); }
+};
 
 namespace {
 
@@ -36,264 +52,376 @@ bool integer(std::string_view s, long& out) {
 }
 
 bool on_off(std::string_view s, bool current, bool& out) {
-    if (s.empty()) out = !current;
-    else if (s == "on") out = true;
-    else if (s == "off") out = false;
-    else return false;
+    if (s.empty())
+        out = !current;
+    else if (s == "on")
+        out = true;
+    else if (s == "off")
+        out = false;
+    else
+        return false;
     return true;
+}
+
+// "%300" -> "300", "N40" -> "40": the letter the operator may type first.
+std::string_view drop_prefix(std::string_view s, std::string_view letters) {
+    if (!s.empty() && letters.find(s.front()) != std::string_view::npos) s.remove_prefix(1);
+    return s;
+}
+
+// The axis a one-letter word names, or -1.
+int axis_word(std::string_view s) {
+    return s.size() == 1 ? axis_of(char(std::toupper(static_cast<unsigned char>(s[0])))) : -1;
+}
+
+Effect usage(Session& s, std::string_view u) {
+    s.say(std::string("usage: ") + std::string(u), true);
+    return Effect::redraw;
+}
+
+// ---- pages, modes and the run ----
+
+Effect page(Session& s, const CommandCall& c) {
+    pages::PageId p;
+    if (!pages::parse_page(c.arg(1), p))
+        return usage(s, ":page om|op|prog|graph|info|param|pref|corr|dir|alarm|help|edit|history");
+    s.show_page(p);
+    return Effect::redraw;
+}
+
+// MODIF and EDIT are the editor's, not the machine's: the Sim has no such mode.
+Effect mode(Session& s, const CommandCall& c) {
+    std::string_view name = c.arg(1);
+    Mode m;
+    if (!parse_mode(name, m)) {
+        if (name == "modif") return s.modif_start();
+        if (name == "edit") return s.command("edit");
+        return usage(s, ":mode auto|seq|dry|test|rns|imd|jog|inc|pom");
+    }
+    std::string why;
+    if (!s.sim().set_mode(m, why))
+        s.say(why, true);
+    else
+        s.say(s.mode_news(m));
+    return Effect::redraw;
+}
+
+Effect load(Session& s, const CommandCall& c) {
+    long n;
+    if (!integer(drop_prefix(c.arg(1), "%"), n) || n < 0) return usage(s, ":load N");
+    s.select_program(int(n));
+    return Effect::redraw;
+}
+
+Effect feed_hold(Session& s, const CommandCall&) {
+    s.sim().feed_hold();
+    s.say("feed hold: Cycle Start resumes, RAZ abandons the run");
+    return Effect::redraw;
+}
+
+// RAZ also ends MODIF: the interrupted program is abandoned with the run.
+Effect raz(Session& s, const CommandCall&) {
+    if (s.modif) {
+        s.modif = false;
+        s.editor.close();
+        s.show_page(pages::PageId::prog);
+    }
+    s.sim().raz();
+    s.say("RAZ");
+    return Effect::redraw;
+}
+
+Effect jog(Session& s, const CommandCall& c) {
+    double d;
+    int axis = axis_word(c.arg(1));
+    if (c.words.size() != 3 || axis < 0 || !number(c.words[2], d))
+        return usage(s, ":jog AXIS DIST, e.g. :jog X -10");
+    std::string why;
+    if (!s.sim().jog(axis, d, why)) s.say("JOG: " + why, true);
+    return Effect::redraw;
+}
+
+Effect search(Session& s, const CommandCall& c) {
+    long n;
+    std::string why;
+    if (!integer(drop_prefix(c.arg(1), "Nn"), n) || !s.sim().search(n, why))
+        return usage(s, ":search N (in RNS mode)");
+    s.say(s.sim().message());
+    return Effect::redraw;
+}
+
+// :feed and :spindle, the override knobs of the panel.
+Effect override_knob(Session& s, const CommandCall& c, bool feed) {
+    long n;
+    if (!integer(c.arg(1), n) || n < (feed ? 0 : 50) || n > 120)
+        return usage(s, feed ? ":feed 0..120" : ":spindle 50..120");
+    (feed ? s.sim().feed_override : s.sim().spindle_override) = int(n);
+    s.say(std::string(feed ? "feed" : "spindle") + " override " + std::to_string(n) + " %" +
+          (s.sim().overrides_inhibited() ? " (inhibited by M49)" : ""));
+    return Effect::redraw;
+}
+
+Effect speed(Session& s, const CommandCall& c) {
+    std::string_view a = c.arg(1);
+    if (a == "x1")
+        s.speed = Speed::real;
+    else if (a == "x10")
+        s.speed = Speed::x10;
+    else if (a == "max")
+        s.speed = Speed::max;
+    else
+        return usage(s, ":speed x1|x10|max");
+    return Effect::redraw;
+}
+
+// :skip and :m01, the two switches of the panel; without a word, they toggle.
+Effect panel_switch(Session& s, const CommandCall& c, bool skip) {
+    bool& sw = skip ? s.sim().block_skip() : s.sim().optional_stop();
+    bool v;
+    if (!on_off(c.arg(1), sw, v)) return usage(s, skip ? ":skip on|off" : ":m01 on|off");
+    sw = v;
+    s.say(std::string(skip ? "block skip " : "optional stop M01 ") + (v ? "ON" : "off"));
+    return Effect::redraw;
+}
+
+Effect inc(Session& s, const CommandCall& c) {
+    double d;
+    if (!number(c.arg(1), d) || d < 0.001 || d > 100)
+        return usage(s, ":inc STEP (0.001 to 100 mm)");
+    s.sim().increment = d;
+    s.say("INC step " + pages::fmt_len(d) + " mm");
+    return Effect::redraw;
+}
+
+// ---- settings ----
+
+Effect touch(Session& s, const CommandCall& c) {
+    double v;
+    int axis = axis_word(c.arg(1));
+    if (c.words.size() != 3 || axis < 0 || !number(c.words[2], v))
+        return usage(s, ":touch AXIS VALUE, e.g. :touch Z 0");
+    return s.touch(axis, v);
+}
+
+Effect measure(Session& s, const CommandCall& c) {
+    double v;
+    long d = 0;
+    std::string_view dn = c.arg(1);
+    int axis = axis_word(c.arg(2));
+    bool ok = c.words.size() == 4 && dn.size() > 1 && (dn[0] == 'D' || dn[0] == 'd') &&
+              integer(dn.substr(1), d) && axis >= 0 && number(c.words[3], v);
+    if (!ok) return usage(s, ":measure Dn AXIS VALUE, e.g. :measure D2 X 59.978");
+    s.corr_cursor = int(d);
+    return s.measure(int(d), axis, v);
+}
+
+// ---- the program store and the editor ----
+
+Effect remove_program(Session& s, const CommandCall& c) {
+    long n;
+    if (!integer(c.arg(1), n)) return usage(s, ":rm N");
+    s.delete_program(int(n));
+    return Effect::redraw;
+}
+
+// Without N: back to the editor if open, else the program under the DIR
+// cursor, else the one selected.
+Effect edit(Session& s, const CommandCall& c) {
+    long n;
+    std::string_view number = drop_prefix(c.arg(1), "%");
+    if (number.empty()) {
+        if (s.editor.is_open()) {
+            s.show_page(pages::PageId::edit);
+            return Effect::redraw;
+        }
+        if (s.page == pages::PageId::dir && !s.programs().empty())
+            return s.edit_open(s.programs()[size_t(s.dir_cursor)].number);
+        if (s.sim().selected() >= 0) return s.edit_open(s.sim().selected());
+        return usage(s, ":edit N");
+    }
+    if (!integer(number, n) || n < 0 || n > 99999) return usage(s, ":edit N");
+    return s.edit_open(int(n));
+}
+
+Effect goto_block(Session& s, const CommandCall& c) {
+    if (!s.editor.is_open()) return usage(s, ":edit N first");
+    long n;
+    std::string_view label = drop_prefix(c.arg(1), "Nn");
+    bool ok = integer(label, n) && s.editor.goto_n(n);
+    s.show_page(pages::PageId::edit);
+    if (!ok) s.say("no block N" + std::string(label), true);
+    return Effect::redraw;
+}
+
+// The text searched is the rest of the line after one blank: it may hold blanks.
+Effect find_text(Session& s, const CommandCall& c) {
+    if (!s.editor.is_open()) return usage(s, ":edit N first");
+    std::string_view text = c.rest();
+    bool ok = s.editor.find(text.empty() ? text : text.substr(1));
+    s.show_page(pages::PageId::edit);
+    if (!ok) s.say("not found", true);
+    return Effect::redraw;
+}
+
+Effect renum(Session& s, const CommandCall& c) {
+    if (!s.editor.is_open()) return usage(s, ":edit N first");
+    long start = 10, step = 10;
+    if (c.words.size() > 1 && !integer(c.words[1], start)) return usage(s, ":renum [START [STEP]]");
+    if (c.words.size() > 2 && !integer(c.words[2], step)) return usage(s, ":renum [START [STEP]]");
+    if (start < 0 || step < 1) return usage(s, ":renum [START [STEP]]");
+    int k = s.editor.renumber(start, step);
+    s.say(std::to_string(k) + " blocks renumbered from N" + std::to_string(start) + " by " +
+          std::to_string(step) + "; G77/G79/cycle references follow");
+    return Effect::redraw;
+}
+
+Effect restore(Session& s, const CommandCall& c) {
+    long r;
+    if (!integer(c.arg(1), r)) return usage(s, ":restore REV (see :history)");
+    return s.edit_restore(int(r));
+}
+
+Effect help_page(Session& s, const CommandCall&) {
+    s.show_page(pages::PageId::help);
+    return Effect::redraw;
+}
+
+bool forced(const CommandCall& c) {
+    return c.name().back() == '!';
+}
+
+// The HELP page lists the rows with a usage, in this order. Each row starts a
+// line with {" (tests/console/man_sync.py reads the names from there).
+constexpr Command kCommands[] = {
+    {"page", ":page om|op|prog|graph|info|param|pref|corr|dir|alarm|help|edit|history",
+     "show a page", page},
+    {"mode", ":mode auto|seq|dry|test|rns|imd|jog|inc|pom|edit|modif",
+     "select a mode (refused while a program is in cycle)", mode},
+    {"load", ":load N", "select program %N for AUTO, SEQ, DRY RUN, TEST and RNS", load},
+    {"cycle", ":cycle", "Cycle Start",
+     [](Session& s, const CommandCall&) { return s.cycle_command(); }},
+    {"stop", ":stop", "feed hold (Cycle Start resumes)", feed_hold},
+    {"raz", ":raz", "RAZ: reset; the run is abandoned, alarms acknowledged", raz},
+    {"jog", ":jog AXIS DIST",
+     "move an axis by DIST mm (X as a diameter on the lathe), at the jog feed", jog},
+    {"set", ":set NAME=VALUE",
+     "PREF.X=-120.5, DEC1.Z=3, D1.R=0.8, L5=2, E80000=18000 (names as --set)",
+     [](Session& s, const CommandCall& c) { return s.set_value(c.rest()); }},
+    {"search", ":search N", "RNS: the block to search for (same as typing N in RNS mode)", search},
+    {"feed", ":feed PCT", "feed override, 0 to 120 % (ignored under M49)",
+     [](Session& s, const CommandCall& c) { return override_knob(s, c, true); }},
+    {"spindle", ":spindle PCT", "spindle override, 50 to 120 % (ignored under M49)",
+     [](Session& s, const CommandCall& c) { return override_knob(s, c, false); }},
+    {"speed", ":speed x1|x10|max", "animation speed: real time, ten times, as fast as possible",
+     speed},
+    {"skip", ":skip on|off", "block skip switch: blocks starting with / are skipped",
+     [](Session& s, const CommandCall& c) { return panel_switch(s, c, true); }},
+    {"m01", ":m01 on|off", "optional stop switch: M01 stops",
+     [](Session& s, const CommandCall& c) { return panel_switch(s, c, false); }},
+    {"inc", ":inc STEP", "INC step in mm (0.001 to 100)", inc},
+    {"rm", ":rm N", "delete program %N from the store (its history stays)", remove_program},
+    {"touch", ":touch AXIS VALUE",
+     "touch-off: PREF so that the tool point reads VALUE (X a diameter on the lathe)", touch},
+    {"measure", ":measure Dn AXIS VALUE",
+     "tool measurement: the gauge of Dn from a touched face or diameter", measure},
+    {"undo", ":undo", "undo the last change of an origin or a corrector",
+     [](Session& s, const CommandCall&) { return s.undo(); }},
+    {"protect", ":protect on|off [PIN]",
+     "the memory-protect key: locks programs, origins and correctors",
+     [](Session& s, const CommandCall& c) { return s.protect_command(c.rest()); }},
+    {"", ":protect pin [NEWPIN]", "set (or remove) the PIN that unlocks the protection", nullptr},
+    {"edit", ":edit N", "EDIT: open program %N (new if absent; without N the one selected)", edit},
+    {"save save!", ":save",
+     "save the program edited, after a syntax check (:save! saves despite an error)",
+     [](Session& s, const CommandCall& c) { return s.edit_save(forced(c)); }},
+    {"goto", ":goto Nnnn", "EDIT: the cursor to block Nnnn", goto_block},
+    {"find", ":find TEXT", "EDIT: the next block containing TEXT", find_text},
+    {"renum", ":renum [START [STEP]]",
+     "EDIT: renumber the N labels (default 10 10) and their references", renum},
+    {"history", ":history / :restore REV",
+     "EDIT: the revisions of the program, and making one current again",
+     [](Session& s, const CommandCall&) { return s.edit_history(); }},
+    {"restore", "", "", restore},
+    {"close close!", ":close",
+     "EDIT: close the program (asks before dropping unsaved changes; :close! does not)",
+     [](Session& s, const CommandCall& c) { return s.close_command(forced(c)); }},
+    {"recover", ":recover / :discard",
+     "EDIT: load the changes an earlier session left unsaved, or drop them",
+     [](Session& s, const CommandCall&) { return s.recover_command(false); }},
+    {"discard", "", "", [](Session& s, const CommandCall&) { return s.recover_command(true); }},
+    {"", ":mode modif", "MODIF: change the blocks to come of an interrupted program", nullptr},
+    {"quit q quit! q!", ":quit",
+     "leave the console, also Ctrl-C (asks before dropping unsaved changes; :quit! does not)",
+     [](Session& s, const CommandCall& c) { return s.quit_command(forced(c)); }},
+    {"help", "", "", help_page},
+};
+
+bool answers_to(const Command& c, std::string_view name) {
+    for (std::string_view n : words(c.names))
+        if (n == name) return true;
+    return false;
+}
+
+const Command* find_command(std::string_view name) {
+    for (const Command& c : kCommands)
+        if (c.run && answers_to(c, name)) return &c;
+    return nullptr;
 }
 
 }  // namespace
 
-const std::vector<std::pair<std::string, std::string>>& command_help() {
-    static const std::vector<std::pair<std::string, std::string>> k = {
-        {":page om|op|prog|graph|info|param|pref|corr|dir|alarm|help|edit|history", "show a page"},
-        {":mode auto|seq|dry|test|rns|imd|jog|inc|pom|edit|modif", "select a mode (refused while a program is in cycle)"},
-        {":load N", "select program %N for AUTO, SEQ, DRY RUN, TEST and RNS"},
-        {":cycle", "Cycle Start"},
-        {":stop", "feed hold (Cycle Start resumes)"},
-        {":raz", "RAZ: reset; the run is abandoned, alarms acknowledged"},
-        {":jog AXIS DIST", "move an axis by DIST mm (X as a diameter on the lathe), at the jog feed"},
-        {":set NAME=VALUE", "PREF.X=-120.5, DEC1.Z=3, D1.R=0.8, L5=2, E80000=18000 (names as --set)"},
-        {":search N", "RNS: the block to search for (same as typing N in RNS mode)"},
-        {":feed PCT", "feed override, 0 to 120 % (ignored under M49)"},
-        {":spindle PCT", "spindle override, 50 to 120 % (ignored under M49)"},
-        {":speed x1|x10|max", "animation speed: real time, ten times, as fast as possible"},
-        {":skip on|off", "block skip switch: blocks starting with / are skipped"},
-        {":m01 on|off", "optional stop switch: M01 stops"},
-        {":inc STEP", "INC step in mm (0.001 to 100)"},
-        {":rm N", "delete program %N from the store (its history stays)"},
-        {":touch AXIS VALUE", "touch-off: PREF so that the tool point reads VALUE (X a diameter on the lathe)"},
-        {":measure Dn AXIS VALUE", "tool measurement: the gauge of Dn from a touched face or diameter"},
-        {":undo", "undo the last change of an origin or a corrector"},
-        {":protect on|off [PIN]", "the memory-protect key: locks programs, origins and correctors"},
-        {":protect pin [NEWPIN]", "set (or remove) the PIN that unlocks the protection"},
-        {":edit N", "EDIT: open program %N (new if absent; without N the one selected)"},
-        {":save", "save the program edited, after a syntax check (:save! saves despite an error)"},
-        {":goto Nnnn", "EDIT: the cursor to block Nnnn"},
-        {":find TEXT", "EDIT: the next block containing TEXT"},
-        {":renum [START [STEP]]", "EDIT: renumber the N labels (default 10 10) and their references"},
-        {":history / :restore REV", "EDIT: the revisions of the program, and making one current again"},
-        {":close", "EDIT: close the program (asks before dropping unsaved changes; :close! does not)"},
-        {":recover / :discard", "EDIT: load the changes an earlier session left unsaved, or drop them"},
-        {":mode modif", "MODIF: change the blocks to come of an interrupted program"},
-        {":quit", "leave the console, also Ctrl-C (asks before dropping unsaved changes; :quit! does not)"},
-    };
-    return k;
+std::span<const Command> commands() {
+    return kCommands;
 }
 
 Effect Session::command(std::string_view text) {
-    auto w = words(text);
-    if (w.empty()) return Effect::none;
-    std::string_view cmd = w[0];
-    std::string_view a1 = w.size() > 1 ? w[1] : std::string_view{};
+    CommandCall call{text, words(text)};
+    if (call.words.empty()) return Effect::none;
+    if (const Command* c = find_command(call.name())) return c->run(*this, call);
+    say("unknown command :" + std::string(call.name()) + " (F1 lists the commands)", true);
+    return Effect::redraw;
+}
+
+// Cycle Start, after MODIF's changed blocks are taken in.
+Effect Session::cycle_command() {
+    if (!modif_apply()) return Effect::redraw;
     std::string why;
-    auto usage = [&](std::string_view u) {
-        say(std::string("usage: ") + std::string(u), true);
-        return Effect::redraw;
-    };
-    if (cmd == "quit" || cmd == "q" || cmd == "quit!" || cmd == "q!") return quit_command(cmd.back() == '!');
-    if (cmd == "recover" || cmd == "discard") return recover_command(cmd == "discard");
-    if (cmd == "page") {
-        pages::PageId p;
-        if (!pages::parse_page(a1, p)) {
-            return usage(":page om|op|prog|graph|info|param|pref|corr|dir|alarm|help|edit|history");
-        }
-        show_page(p);
+    if (!sim().cycle_start(why)) {
+        say(why, true);
         return Effect::redraw;
     }
-    if (cmd == "mode") {
-        Mode m;
-        if (!parse_mode(a1, m)) {
-            if (a1 == "modif") return modif_start();
-            if (a1 == "edit") return command("edit");
-            return usage(":mode auto|seq|dry|test|rns|imd|jog|inc|pom");
-        }
-        if (!sim().set_mode(m, why)) say(why, true);
-        else say(mode_news(m));
-        return Effect::redraw;
-    }
-    if (cmd == "load") {
-        long n;
-        std::string_view s = a1;
-        if (!s.empty() && s.front() == '%') s.remove_prefix(1);
-        if (!integer(s, n) || n < 0) return usage(":load N");
-        select_program(int(n));
-        return Effect::redraw;
-    }
-    if (cmd == "cycle") {
-        if (!modif_apply()) return Effect::redraw;
-        if (!sim().cycle_start(why)) {
-            say(why, true);
-            return Effect::redraw;
-        }
-        // The run's end is news even when it comes within one frame ("max").
-        last_state_ = sim().state();
-        if (!sim().message().empty()) say(sim().message());
-        else if (sim().selected() >= 0 && (sim().mode() == Mode::automatic || sim().mode() == Mode::single ||
-                                           sim().mode() == Mode::dry || sim().mode() == Mode::test))
-            say("Cycle Start: %" + std::to_string(sim().selected()) + " in " + std::string(mode_name(sim().mode())));
-        else
-            say("Cycle Start (" + std::string(mode_name(sim().mode())) + ")");
-        return Effect::redraw;
-    }
-    if (cmd == "stop") {
-        sim().feed_hold();
-        say("feed hold: Cycle Start resumes, RAZ abandons the run");
-        return Effect::redraw;
-    }
-    if (cmd == "raz") {
-        if (modif) {
-            modif = false;
-            editor.close();
-            show_page(pages::PageId::prog);
-        }
-        sim().raz();
-        say("RAZ");
-        return Effect::redraw;
-    }
-    if (cmd == "jog") {
-        double d;
-        if (w.size() != 3 || a1.size() != 1 || axis_of(char(std::toupper(a1[0]))) < 0 || !number(w[2], d))
-            return usage(":jog AXIS DIST, e.g. :jog X -10");
-        if (!sim().jog(axis_of(char(std::toupper(a1[0]))), d, why)) say("JOG: " + why, true);
-        return Effect::redraw;
-    }
-    if (cmd == "set") {
-        std::string rest(text.substr(text.find("set") + 3));
-        return set_value(rest);
-    }
-    if (cmd == "search") {
-        long n;
-        std::string_view s = a1;
-        if (!s.empty() && (s.front() == 'N' || s.front() == 'n')) s.remove_prefix(1);
-        if (!integer(s, n) || !sim().search(n, why)) return usage(":search N (in RNS mode)");
+    // The run's end is news even when it comes within one frame ("max").
+    last_state_ = sim().state();
+    Mode m = sim().mode();
+    bool runs_program =
+        m == Mode::automatic || m == Mode::single || m == Mode::dry || m == Mode::test;
+    if (!sim().message().empty())
         say(sim().message());
+    else if (sim().selected() >= 0 && runs_program)
+        say("Cycle Start: %" + std::to_string(sim().selected()) + " in " +
+            std::string(mode_name(m)));
+    else
+        say("Cycle Start (" + std::string(mode_name(m)) + ")");
+    return Effect::redraw;
+}
+
+// :close asks before dropping unsaved changes, :close! does not.
+Effect Session::close_command(bool force) {
+    if (modif) return usage(*this, ":close is for EDIT; MODIF ends with Cycle Start or RAZ");
+    if (!editor.is_open()) return usage(*this, ":edit N first");
+    int n = editor.number;
+    auto close = [this, n] {
+        bool dirty = editor.dirty;
+        editor.close();
+        drop_journal(n);
+        release_lease();
+        say(dirty ? "editor closed (unsaved changes dropped)" : "editor closed");
+    };
+    if (editor.dirty && !force) {
+        confirm("%" + std::to_string(n) + " has unsaved changes: close and drop them?", close);
         return Effect::redraw;
     }
-    if (cmd == "feed" || cmd == "spindle") {
-        long n;
-        bool feed = cmd == "feed";
-        if (!integer(a1, n) || n < (feed ? 0 : 50) || n > 120) return usage(feed ? ":feed 0..120" : ":spindle 50..120");
-        (feed ? sim().feed_override : sim().spindle_override) = int(n);
-        say(std::string(feed ? "feed" : "spindle") + " override " + std::to_string(n) + " %" +
-            (sim().overrides_inhibited() ? " (inhibited by M49)" : ""));
-        return Effect::redraw;
-    }
-    if (cmd == "speed") {
-        if (a1 == "x1") speed = Speed::real;
-        else if (a1 == "x10") speed = Speed::x10;
-        else if (a1 == "max") speed = Speed::max;
-        else return usage(":speed x1|x10|max");
-        return Effect::redraw;
-    }
-    if (cmd == "skip" || cmd == "m01") {
-        bool& sw = cmd == "skip" ? sim().block_skip() : sim().optional_stop();
-        bool v;
-        if (!on_off(a1, sw, v)) return usage(cmd == "skip" ? ":skip on|off" : ":m01 on|off");
-        sw = v;
-        say(std::string(cmd == "skip" ? "block skip " : "optional stop M01 ") + (v ? "ON" : "off"));
-        return Effect::redraw;
-    }
-    if (cmd == "inc") {
-        double d;
-        if (!number(a1, d) || d < 0.001 || d > 100) return usage(":inc STEP (0.001 to 100 mm)");
-        sim().increment = d;
-        say("INC step " + pages::fmt_len(d) + " mm");
-        return Effect::redraw;
-    }
-    if (cmd == "rm") {
-        long n;
-        if (!integer(a1, n)) return usage(":rm N");
-        delete_program(int(n));
-        return Effect::redraw;
-    }
-    if (cmd == "touch") {
-        double v;
-        int axis = a1.size() == 1 ? axis_of(char(std::toupper(a1[0]))) : -1;
-        if (w.size() != 3 || axis < 0 || !number(w[2], v)) return usage(":touch AXIS VALUE, e.g. :touch Z 0");
-        return touch(axis, v);
-    }
-    if (cmd == "measure") {
-        double v;
-        long d = 0;
-        int axis = w.size() > 2 && w[2].size() == 1 ? axis_of(char(std::toupper(w[2][0]))) : -1;
-        bool ok = w.size() == 4 && a1.size() > 1 && (a1[0] == 'D' || a1[0] == 'd') && integer(a1.substr(1), d) &&
-                  axis >= 0 && number(w[3], v);
-        if (!ok) return usage(":measure Dn AXIS VALUE, e.g. :measure D2 X 59.978");
-        corr_cursor = int(d);
-        return measure(int(d), axis, v);
-    }
-    if (cmd == "undo") return undo();
-    if (cmd == "protect") return protect_command(text.substr(std::min(text.size(), text.find("protect") + 7)));
-    if (cmd == "edit") {
-        long n;
-        std::string_view s = a1;
-        if (!s.empty() && s.front() == '%') s.remove_prefix(1);
-        if (s.empty()) {
-            if (editor.is_open()) {
-                show_page(pages::PageId::edit);
-                return Effect::redraw;
-            }
-            if (page == pages::PageId::dir && !programs().empty()) return edit_open(programs()[size_t(dir_cursor)].number);
-            if (sim().selected() >= 0) return edit_open(sim().selected());
-            return usage(":edit N");
-        }
-        if (!integer(s, n) || n < 0 || n > 99999) return usage(":edit N");
-        return edit_open(int(n));
-    }
-    if (cmd == "save" || cmd == "save!") return edit_save(cmd == "save!");
-    if (cmd == "close" || cmd == "close!") {
-        if (modif) return usage(":close is for EDIT; MODIF ends with Cycle Start or RAZ");
-        if (!editor.is_open()) return usage(":edit N first");
-        int n = editor.number;
-        auto close = [this, n] {
-            bool dirty = editor.dirty;
-            editor.close();
-            drop_journal(n);
-            release_lease();
-            say(dirty ? "editor closed (unsaved changes dropped)" : "editor closed");
-        };
-        if (editor.dirty && cmd == "close") {
-            confirm("%" + std::to_string(n) + " has unsaved changes: close and drop them?", close);
-            return Effect::redraw;
-        }
-        close();
-        return Effect::redraw;
-    }
-    if (cmd == "goto" || cmd == "find") {
-        if (!editor.is_open()) return usage(":edit N first");
-        long n;
-        std::string_view s = a1;
-        if (!s.empty() && (s.front() == 'N' || s.front() == 'n')) s.remove_prefix(1);
-        bool ok = cmd == "goto" ? integer(s, n) && editor.goto_n(n)
-                                : editor.find(text.substr(std::min(text.size(), text.find("find") + 5)));
-        show_page(pages::PageId::edit);
-        if (!ok) say(cmd == "goto" ? "no block N" + std::string(s) : "not found", true);
-        return Effect::redraw;
-    }
-    if (cmd == "renum") {
-        if (!editor.is_open()) return usage(":edit N first");
-        long start = 10, step = 10;
-        if (w.size() > 1 && !integer(w[1], start)) return usage(":renum [START [STEP]]");
-        if (w.size() > 2 && !integer(w[2], step)) return usage(":renum [START [STEP]]");
-        if (start < 0 || step < 1) return usage(":renum [START [STEP]]");
-        int k = editor.renumber(start, step);
-        say(std::to_string(k) + " blocks renumbered from N" + std::to_string(start) + " by " + std::to_string(step) +
-            "; G77/G79/cycle references follow");
-        return Effect::redraw;
-    }
-    if (cmd == "history") return edit_history();
-    if (cmd == "restore") {
-        long r;
-        if (!integer(a1, r)) return usage(":restore REV (see :history)");
-        return edit_restore(int(r));
-    }
-    if (cmd == "help") {
-        show_page(pages::PageId::help);
-        return Effect::redraw;
-    }
-    say("unknown command :" + std::string(cmd) + " (F1 lists the commands)", true);
+    close();
     return Effect::redraw;
 }
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <charconv>
 
+#include "console/commands.hpp"
 #include "core/codes.hpp"
 #include "core/store/link.hpp"
 #include "core/store/store.hpp"
@@ -502,7 +503,8 @@ pages::View Session::view() const {
         const Action* a = find_action(b.action);
         if (a) v.help.push_back(pages::HelpLine{b.key_text, help_text(*a, b.arg), context_text(b.when)});
     }
-    for (const auto& c : command_help()) v.help.push_back(pages::HelpLine{c.first, c.second, ""});
+    for (const Command& c : commands())
+        if (!c.usage.empty()) v.help.push_back(pages::HelpLine{std::string(c.usage), std::string(c.help), ""});
     if (store_) v.store_path = store_->path();
     v.corr_cursor = corr_cursor;
     v.pending = pending_origins();
@@ -535,9 +537,10 @@ std::vector<std::string> Session::complete(std::string_view word) const {
     if (word.empty()) return out;
     char first = char(std::toupper(static_cast<unsigned char>(word[0])));
     if (first == ':') {
-        for (const auto& c : command_help()) {
-            std::string name = c.first.substr(0, c.first.find(' '));
-            if (name.rfind(word, 0) == 0 && std::find(out.begin(), out.end(), name) == out.end()) out.push_back(name);
+        // The first name of each command: not its aliases (:q) nor its '!' forms.
+        for (const Command& c : commands()) {
+            std::string name = ":" + std::string(c.names.substr(0, c.names.find(' ')));
+            if (c.run && name.rfind(word, 0) == 0) out.push_back(name);
         }
         return out;
     }

@@ -23,9 +23,6 @@ class Store;
 
 namespace pupitre::console {
 
-// The ':' commands with their help text, in the order the HELP page lists them.
-const std::vector<std::pair<std::string, std::string>>& command_help();
-
 // How fast the animation shows the simulated clock.
 enum class Speed { real, x10, max };
 
@@ -44,6 +41,7 @@ public:
     Effect on_key(const Key& k);
     Effect submit(const std::string& line);     // Enter on the input line
     Effect command(std::string_view text);      // a ':' command, without the ':'
+    Effect set_value(std::string_view assignment);  // NAME=VALUE, as :set and --set
     // Lets `wall_seconds` of real time pass: the animation advances.
     void tick(double wall_seconds);
     // True while something moves: the event loop then wakes up often.
@@ -97,6 +95,8 @@ public:
     Effect edit_open(int number);
     Effect recover_command(bool discard);  // :recover, :discard
     Effect quit_command(bool force);       // :quit asks before dropping unsaved changes
+    Effect close_command(bool force);      // :close asks too
+    Effect cycle_command();                // :cycle, Cycle Start
     std::string recovered_note() const;    // journals left by an earlier session
     // Two consoles on one store (console/shared.cpp).
     void remember_store();
@@ -149,7 +149,6 @@ private:
     bool read_journal(int number, std::string& text, int& base) const;
     void offer_journal(int number, const std::string& loaded);
     Effect dispatch_key(const Key& k);
-    Effect set_value(std::string_view assignment);
     void persist_run();
     void check_run_end();
 

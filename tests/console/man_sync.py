@@ -23,9 +23,22 @@ src = open(f"{root}/console/bindings.cpp").read()
 for action in re.findall(r'^\s*\{"([a-z-]+)", "', src, re.M):
     if action not in console:
         missing.append(f"action {action}")
-cmds = open(f"{root}/console/commands.cpp").read()
-for cmd in re.findall(r'cmd == "([a-z0-9]+)"', cmds):
-    if ":" + cmd not in console:
+# The rows of the command table, kCommands in console/commands.cpp: each starts
+# a line with {"names", "usage", ... and its names are separated by spaces.
+src = open(f"{root}/console/commands.cpp").read()
+table = re.search(r"kCommands\[\] = \{\n(.*?)\n\};", src, re.S)
+rows = re.split(r"^    (?=\{)", table.group(1), flags=re.M)[1:] if table else []
+names = []
+for row in rows:
+    m = re.match(r'\{"([a-z0-9! ]*)",\s*"([^"]*)"', row)
+    if not m:
+        sys.exit(f"man_sync.py cannot read this row of the command table:\n{row}")
+    names += m.group(1).split()
+if len(names) < 10:
+    sys.exit(f"man_sync.py found {len(names)} command names in console/commands.cpp: "
+             "has the table kCommands changed shape?")
+for cmd in names:
+    if not re.search(r"(^|[\s,(]):" + re.escape(cmd) + r"($|[\s,).])", console):
         missing.append(f"command :{cmd}")
 if missing:
     print("pupitre(1) does not mention: " + ", ".join(sorted(set(missing))))

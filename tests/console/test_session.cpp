@@ -4,6 +4,10 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <set>
+#include <sstream>
+
+#include "console/commands.hpp"
 #include "tests/console/fixture.hpp"
 
 using namespace pupitre;
@@ -274,6 +278,29 @@ TEST(Session, CompletionOfCodesAndCommands) {
     auto cmd = c.s->complete(":mo");
     ASSERT_EQ(cmd.size(), 1u);
     EXPECT_EQ(cmd[0], ":mode");
+    // Every command completes, even one the HELP page tells of on another's
+    // line (:restore); aliases and '!' forms do not (:q, :quit!).
+    EXPECT_EQ(c.s->complete(":re"), (std::vector<std::string>{":renum", ":restore", ":recover"}));
+    EXPECT_EQ(c.s->complete(":q"), std::vector<std::string>{":quit"});
+}
+
+TEST(Session, EveryNameOfTheCommandTableIsACommandOfItsOwn) {
+    std::set<std::string> seen;
+    for (const console::Command& cmd : console::commands()) {
+        if (!cmd.run) {  // a further HELP line, for a command another row runs
+            EXPECT_TRUE(cmd.names.empty()) << cmd.usage;
+            EXPECT_FALSE(cmd.usage.empty());
+            continue;
+        }
+        std::istringstream names{std::string(cmd.names)};
+        for (std::string name; names >> name;) {
+            EXPECT_TRUE(seen.insert(name).second) << ":" << name << " is in two rows";
+            Console c;
+            c.s->command(name);
+            EXPECT_EQ(c.message().find("unknown command"), std::string::npos) << ":" << name;
+        }
+    }
+    EXPECT_GE(seen.size(), 33u);
 }
 
 TEST(Bindings, TheShippedTableParsesAndNamesKnownActions) {

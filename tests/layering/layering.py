@@ -1,0 +1,112 @@
+#!/usr/bin/env python3
+# The layers of pupitre (DESIGN §1, issue 13): core/ knows neither the console
+# nor the pages; pages/ are pure renderers that never call ncurses nor the
+# console; only the store (core/store/) speaks SQL; the core links no Cairo.
+# Fails, naming file and line, on a product #include that crosses the wrong way.
+# Tests are not product code: the store's anomaly tests include sqlite3.h.
+#   layering.py ROOT        check the source tree at ROOT
+#   layering.py --selftest  prove that every rule fires on a bad include
+# SPDX-License-Identifier: GPL-3.0-or-later
+import os
+import re
+import sys
+import tempfile
+
+PRODUCT = ("core/", "pages/", "console/")
+SOURCES = (".cpp", ".hpp", ".h")
+INCLUDE = re.compile(r'^\s*#\s*include\s*([<"][^>"]+[>"])', re.M)
+
+# (who is checked, who is exempt, what it may not include, why)
+RULES = [
+    ("core/", None, r'^"(console|pages)/', "the core knows neither the console nor the pages"),
+    ("pages/", None, r'^"console/', "pages are pure renderers: the console calls them"),
+    ("", "console/", r"^<(n?curses(w)?[./]|readline/)",
+     "only console/ talks to the terminal (ncurses, readline)"),
+    ("", "core/store/", r'^(<sqlite3\.h>|"core/store/sql\.hpp")$', "only the store speaks SQL"),
+    ("core/", None, r"^<cairo", "the core links no Cairo"),
+]
+
+# The plot back-end lives beside the scene it draws, under core/, but is a
+# library of its own (pupitre_plot in CMakeLists.txt) that the interpreter and
+# the rest of the core never link: the one file allowed to include Cairo.
+EXCEPTIONS = {("core/cairo_plot.cpp", "the core links no Cairo")}
+
+
+def product_files(root):
+    for top in PRODUCT:
+        for dirpath, _, files in os.walk(os.path.join(root, top)):
+            for f in sorted(files):
+                if f.endswith(SOURCES):
+                    path = os.path.join(dirpath, f)
+                    yield os.path.relpath(path, root).replace(os.sep, "/"), path
+
+
+def violations(root):
+    found = []
+    for rel, path in product_files(root):
+        text = open(path, encoding="utf-8", errors="replace").read()
+        for m in INCLUDE.finditer(text):
+            header = m.group(1)
+            line = text.count("\n", 0, m.start()) + 1
+            for who, exempt, banned, why in RULES:
+                if not rel.startswith(who) or (exempt and rel.startswith(exempt)):
+                    continue
+                if re.search(banned, header) and (rel, why) not in EXCEPTIONS:
+                    found.append(f"{rel}:{line}: includes {header}: {why}")
+    return found
+
+
+def exception_still_separate(root):
+    """The Cairo exception holds only while cairo_plot.cpp stays out of the core library."""
+    cmake = open(os.path.join(root, "CMakeLists.txt")).read()
+    core = re.search(r"set\(PUPITRE_CORE_SOURCES(.*?)\)", cmake, re.S)
+    if core is None or "core/cairo_plot.cpp" in core.group(1):
+        return ["CMakeLists.txt: core/cairo_plot.cpp is in PUPITRE_CORE_SOURCES: "
+                "the core links no Cairo (it belongs to pupitre_plot)"]
+    return []
+
+
+def selftest():
+    bad = {
+        "core/block.hpp": '#include "console/session.hpp"\n',
+        "core/sim.cpp": '#include "pages/view.hpp"\n',
+        "core/scene.cpp": "#include <cairo.h>\n",
+        "core/trace.cpp": "#include <curses.h>\n",
+        "pages/canvas.cpp": "#include <ncursesw/curses.h>\n",
+        "pages/screen.cpp": '#include "console/keys.hpp"\n',
+        "console/session.cpp": "#include <sqlite3.h>\n",
+        "console/app.cpp": '#  include "core/store/sql.hpp"\n',
+    }
+    good = {
+        "core/store/sql.hpp": "#include <sqlite3.h>\n",
+        "core/cairo_plot.cpp": "#include <cairo-pdf.h>\n#include <cairo.h>\n",
+        "console/term.cpp": "#include <curses.h>\n#include <readline/readline.h>\n",
+        "console/main.cpp": '#include "core/sim.hpp"\n#include "pages/pages.hpp"\n',
+        "pages/page_help.cpp": '#include "core/codes.hpp"\n#include "pages/view.hpp"\n',
+        "tests/store/anomalies.cpp": "#include <sqlite3.h>\n",
+    }
+    with tempfile.TemporaryDirectory() as root:
+        for rel, text in {**bad, **good}.items():
+            os.makedirs(os.path.dirname(os.path.join(root, rel)), exist_ok=True)
+            with open(os.path.join(root, rel), "w") as f:
+                f.write("// a header line\n" + text)
+        found = violations(root)
+    flagged = {v.split(":")[0] for v in found}
+    wrong = sorted(set(bad) - flagged) + sorted(flagged - set(bad))
+    if wrong or len(found) != len(bad):
+        print("layering.py --selftest: rules misfire on " + ", ".join(wrong or found))
+        return 1
+    print(f"layering.py --selftest: {len(bad)} bad includes caught, {len(good)} good files pass")
+    return 0
+
+
+if __name__ == "__main__":
+    if sys.argv[1:] == ["--selftest"]:
+        sys.exit(selftest())
+    root = sys.argv[1]
+    problems = violations(root) + exception_still_separate(root)
+    if problems:
+        print("\n".join(problems))
+        sys.exit(1)
+    n = sum(1 for _ in product_files(root))
+    print(f"{n} files of core/, pages/ and console/ include across layers only downwards")
