@@ -332,6 +332,7 @@ bool Interpreter::start(int program) {
 
 bool Interpreter::start(const ProgramText* p) {
     main_ = p;
+    seen_states_.clear();  // a new run: states of the last one are no repetition
     imd_ = false;
     stack_.clear();
     loaded_size_ = mem_.size();
@@ -499,6 +500,11 @@ bool Interpreter::jump(long label) {
                      std::to_string(f.prog->number));
         return false;
     }
+    if (l->offset < f.pos) {
+        f.pos = l->offset;  // the state as the jump leaves it
+        f.line = l->line;
+        if (!note_backward_jump(label)) return false;
+    }
     f.pos = l->offset;
     f.line = l->line;
     return true;
@@ -533,6 +539,10 @@ StepResult Interpreter::step() {
     if (++blocks_ > opt_.max_blocks)
         return fail(err::kBlockBudget, "more than " + std::to_string(opt_.max_blocks) +
                                            " blocks executed: endless loop? (G79/G77)");
+    // The work done, not only the blocks: one cycle block makes many moves.
+    if (moves_ > 2 * opt_.max_blocks)
+        return fail(err::kBlockBudget, "more than " + std::to_string(2 * opt_.max_blocks) +
+                                           " moves made: endless loop? (G79/G77)");
     size_t depth = stack_.size();
     StepResult r = execute(block_);
     if (r == StepResult::error || ended_) return r;

@@ -8,6 +8,7 @@
 #include <map>
 #include <string>
 #include <string_view>
+#include <unordered_set>
 #include <vector>
 
 #include <functional>
@@ -434,6 +435,18 @@ private:
     std::vector<Diag> diags_;
     std::vector<int> tools_used_;
     long blocks_ = 0, moves_ = 0;
+    // The endless-loop guard (core/interp_loop.cpp): digests of the state at
+    // backward G79 jumps.
+    struct DigestKey {
+        uint64_t a, b;
+        bool operator==(const DigestKey&) const = default;
+    };
+    struct DigestHash {
+        size_t operator()(const DigestKey& k) const { return size_t(k.a ^ (k.b << 1)); }
+    };
+    std::unordered_set<DigestKey, DigestHash> seen_states_;
+    std::pair<uint64_t, uint64_t> state_digest() const;
+    bool note_backward_jump(long label);
     double path_ = 0, clock_ = 0;
     bool ended_ = false;
     bool imd_ = false;  // the main program is an IMD fragment

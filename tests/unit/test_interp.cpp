@@ -54,6 +54,31 @@ TEST(Flow, EndlessLoopIsStopped) {
     EXPECT_EQ(r.error(), err::kBlockBudget);
 }
 
+// Issue 14: the state repetition guard stops a loop whose state comes back at
+// once, with the default budgets, however much work each pass does; a loop
+// whose counter moves is not one.
+TEST(Flow, EndlessLoopIsStoppedWhenItsStateComesBack) {
+    Prog r("%1\nN10 G0 X10\nG1 X20 F100\nN20 G79 N10\n");
+    EXPECT_EQ(r.error(), err::kBlockBudget);
+    EXPECT_LT(r.in->blocks(), 10);  // the second backward jump, not 20,000,000 blocks
+    Prog counted("%1\nL1=0\nN10 L1=L1+1\nG0 X10\nG0 X20\nG79 L1<5000 N10\nM2\n");
+    EXPECT_EQ(counted.error(), 0);
+    EXPECT_DOUBLE_EQ(counted.L(1), 5000);
+}
+
+TEST(Flow, MovesCountInTheWorkBudget) {
+    // A G79 loop whose counter grows: no state repeats, the moves stop it.
+    RunOptions o;
+    o.max_blocks = 1000;
+    // Drilling: three moves a block, more than two a block over the loop.
+    Prog r("%1\nG0 X0 Y0 Z50\nM3 M40 S800\nX10 Y20 Z22\nG81 Z10 ER32 F200\nL1=0\nN10 L1=L1+1\nX10\nX20\n"
+           "X30\nX40\nX50\nX60\nG79 N10\n",
+           "mill", {}, o);
+    EXPECT_EQ(r.error(), err::kBlockBudget);
+    EXPECT_LT(r.in->blocks(), 1000);  // the moves ran out first
+    EXPECT_LE(r.in->moves(), 2 * 1000 + 8);
+}
+
 TEST(Flow, BlockSkip) {
     RunOptions on;
     on.block_skip = true;
