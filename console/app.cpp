@@ -19,7 +19,7 @@
 #include "console/line_readline.hpp"
 #include "console/session.hpp"
 #include "console/term.hpp"
-#include "core/store/store.hpp"
+#include "store/store.hpp"
 #include "pages/canvas.hpp"
 #include "pages/view.hpp"
 

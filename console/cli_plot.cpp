@@ -10,11 +10,11 @@
 #include <vector>
 
 #include "console/cli.hpp"
-#include "core/interp.hpp"
-#include "core/cairo_plot.hpp"
-#include "core/scene.hpp"
-#include "core/svg.hpp"
-#include "core/toolpath.hpp"
+#include "core/interp/interp.hpp"
+#include "core/output/cairo_plot.hpp"
+#include "core/output/scene.hpp"
+#include "core/output/svg.hpp"
+#include "core/output/toolpath.hpp"
 
 namespace pupitre::cli {
 

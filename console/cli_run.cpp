@@ -7,8 +7,8 @@
 #include <sstream>
 
 #include "console/cli.hpp"
-#include "core/interp.hpp"
-#include "core/trace.hpp"
+#include "core/interp/interp.hpp"
+#include "core/output/trace.hpp"
 
 namespace pupitre::cli {
 

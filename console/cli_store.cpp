@@ -7,10 +7,10 @@
 #include <ctime>
 
 #include "console/cli.hpp"
-#include "core/interp.hpp"
-#include "core/store/link.hpp"
-#include "core/store/store.hpp"
-#include "core/store/text.hpp"
+#include "core/interp/interp.hpp"
+#include "store/link.hpp"
+#include "store/store.hpp"
+#include "store/text.hpp"
 
 namespace pupitre::cli {
 

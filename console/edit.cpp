@@ -8,7 +8,7 @@
 #include <ctime>
 
 #include "console/session.hpp"
-#include "core/store/store.hpp"
+#include "store/store.hpp"
 
 namespace pupitre::console {
 

@@ -6,8 +6,8 @@
 #include <cctype>
 #include <map>
 
-#include "core/block.hpp"
-#include "core/program.hpp"
+#include "core/parse/block.hpp"
+#include "core/parse/program.hpp"
 
 namespace pupitre::console {
 

@@ -7,7 +7,7 @@
 
 #include "console/cli.hpp"
 #include "console/cli_plot.hpp"
-#include "core/machine.hpp"
+#include "core/interp/machine.hpp"
 
 using namespace pupitre;
 

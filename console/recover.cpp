@@ -18,7 +18,7 @@
 #include <sstream>
 
 #include "console/session.hpp"
-#include "core/store/store.hpp"
+#include "store/store.hpp"
 
 namespace pupitre::console {
 

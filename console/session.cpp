@@ -6,9 +6,9 @@
 #include <charconv>
 
 #include "console/commands.hpp"
-#include "core/codes.hpp"
-#include "core/store/link.hpp"
-#include "core/store/store.hpp"
+#include "core/parse/codes.hpp"
+#include "store/link.hpp"
+#include "store/store.hpp"
 
 namespace pupitre::console {
 

@@ -14,7 +14,7 @@
 #include "console/editor.hpp"
 #include "console/keys.hpp"
 #include "console/line_input.hpp"
-#include "core/sim.hpp"
+#include "core/sim/sim.hpp"
 #include "pages/view.hpp"
 
 namespace pupitre::store {

@@ -10,8 +10,8 @@
 
 #include "console/session.hpp"
 #include "console/sha256.hpp"
-#include "core/setting.hpp"
-#include "core/store/store.hpp"
+#include "core/sim/setting.hpp"
+#include "store/store.hpp"
 
 namespace pupitre::console {
 
@@ -22,7 +22,7 @@ std::string mm(double v) { return pages::fmt_len(v); }
 bool is_origin(std::string_view n) { return n.rfind("PREF.", 0) == 0 || n.rfind("DEC1.", 0) == 0 || n.rfind("DEC3.", 0) == 0; }
 
 // The store keeps µm (lathe X radii, DX a diameter), 0.0001° for rotary
-// origins, the code for C (core/store/link.hpp).
+// origins, the code for C (store/link.hpp).
 int64_t internal(std::string_view name, double v) {
     bool code = name.size() > 2 && name.substr(name.size() - 2) == ".C" && name[0] == 'D';
     if (code) return int64_t(v);

@@ -15,8 +15,8 @@
 #include <cstdlib>
 
 #include "console/session.hpp"
-#include "core/store/link.hpp"
-#include "core/store/store.hpp"
+#include "store/link.hpp"
+#include "store/store.hpp"
 
 namespace pupitre::console {
 

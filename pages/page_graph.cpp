@@ -10,7 +10,7 @@
 #include <string>
 
 #include "pages/view.hpp"
-#include "core/geometry.hpp"
+#include "core/geometry/geometry.hpp"
 
 namespace pupitre::pages {
 

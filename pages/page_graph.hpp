@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <string>
 
-#include "core/toolpath.hpp"
+#include "core/output/toolpath.hpp"
 #include "pages/canvas.hpp"
 #include "pages/raster.hpp"
 
@@ -79,7 +79,7 @@ GraphView graph_move_cursor(const GraphView& g, const Rect& page, int dcols, int
 // public for the benchmarks).
 void draw_moves(const Toolpath& p, PathPlane plane, const ViewXf& xf, bool mirror, size_t from,
                 size_t to, DotRaster& r);
-// A scale bar's round length (core/toolpath.hpp), shared with the plot.
+// A scale bar's round length (core/output/toolpath.hpp), shared with the plot.
 using pupitre::nice_length;
 
 }  // namespace pupitre::pages

@@ -1,7 +1,7 @@
 // The dot raster (see raster.hpp).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "pages/raster.hpp"
-#include "core/geometry.hpp"
+#include "core/geometry/geometry.hpp"
 
 #include <algorithm>
 #include <cmath>

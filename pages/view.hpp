@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-#include "core/sim.hpp"
+#include "core/sim/sim.hpp"
 #include "pages/page_graph.hpp"
 
 namespace pupitre::pages {

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "console/session.hpp"
-#include "core/store/store.hpp"
+#include "store/store.hpp"
 #include "pages/canvas.hpp"
 
 using namespace pupitre;

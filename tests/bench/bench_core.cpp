@@ -9,7 +9,7 @@
 #include <random>
 #include <string>
 
-#include "core/interp.hpp"
+#include "core/interp/interp.hpp"
 
 using namespace pupitre;
 

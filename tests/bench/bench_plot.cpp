@@ -8,8 +8,8 @@
 #include <cmath>
 #include <memory>
 
-#include "core/svg.hpp"
-#include "core/toolpath.hpp"
+#include "core/output/svg.hpp"
+#include "core/output/toolpath.hpp"
 #include "pages/page_graph.hpp"
 
 using namespace pupitre;

@@ -11,8 +11,8 @@
 #include <filesystem>
 #include <string>
 
-#include "core/store/store.hpp"
-#include "core/store/text.hpp"
+#include "store/store.hpp"
+#include "store/text.hpp"
 
 using namespace pupitre;
 using namespace pupitre::store;

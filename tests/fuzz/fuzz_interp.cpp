@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <string>
 
-#include "core/interp.hpp"
+#include "core/interp/interp.hpp"
 
 using namespace pupitre;
 

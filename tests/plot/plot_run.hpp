@@ -7,8 +7,8 @@
 #include <utility>
 #include <vector>
 
-#include "core/interp.hpp"
-#include "core/toolpath.hpp"
+#include "core/interp/interp.hpp"
+#include "core/output/toolpath.hpp"
 
 namespace pupitre::test {
 

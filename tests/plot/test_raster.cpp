@@ -7,7 +7,7 @@
 #include <cmath>
 #include <set>
 
-#include "core/toolpath.hpp"
+#include "core/output/toolpath.hpp"
 #include "pages/page_graph.hpp"
 #include "pages/raster.hpp"
 

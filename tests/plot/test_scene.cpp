@@ -10,9 +10,9 @@
 #include <cstdio>
 #include <string>
 
-#include "core/cairo_plot.hpp"
-#include "core/scene.hpp"
-#include "core/svg.hpp"
+#include "core/output/cairo_plot.hpp"
+#include "core/output/scene.hpp"
+#include "core/output/svg.hpp"
 #include "tests/plot/plot_run.hpp"
 
 using namespace pupitre;

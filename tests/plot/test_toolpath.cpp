@@ -7,8 +7,8 @@
 
 #include <cmath>
 
-#include "core/svg.hpp"
-#include "core/toolpath.hpp"
+#include "core/output/svg.hpp"
+#include "core/output/toolpath.hpp"
 #include "tests/plot/plot_run.hpp"
 
 using namespace pupitre;

@@ -14,7 +14,7 @@
 #include <sstream>
 #include <string>
 
-#include "core/store/store.hpp"
+#include "store/store.hpp"
 
 namespace pupitre::test {
 

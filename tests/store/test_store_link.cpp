@@ -1,7 +1,7 @@
 // The store as a run sees it: stored programs called with G77 H, correctors and
 // origins seeded into the interpreter, and the program's writes kept.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "core/store/link.hpp"
+#include "store/link.hpp"
 #include "store_helpers.hpp"
 
 using namespace pupitre;

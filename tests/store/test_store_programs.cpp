@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "core/store/text.hpp"
+#include "store/text.hpp"
 #include "store_helpers.hpp"
 
 using namespace pupitre;

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "core/interp.hpp"
+#include "core/interp/interp.hpp"
 
 namespace pupitre::test {
 

@@ -4,7 +4,7 @@
 
 #include <random>
 
-#include "core/frames.hpp"
+#include "core/geometry/frames.hpp"
 #include "helpers.hpp"
 
 using namespace pupitre;

@@ -5,7 +5,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <gtest/gtest.h>
 
-#include "core/block.hpp"
+#include "core/parse/block.hpp"
 #include "tests/unit/helpers.hpp"
 
 using namespace pupitre;

@@ -5,7 +5,7 @@
 
 #include <random>
 
-#include "core/kinematics.hpp"
+#include "core/geometry/kinematics.hpp"
 #include "helpers.hpp"
 
 using namespace pupitre;

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "core/pgp.hpp"
+#include "core/geometry/pgp.hpp"
 
 using namespace pupitre;
 using pgp::Elem;

@@ -9,7 +9,7 @@
 #include <numbers>
 #include <set>
 
-#include "core/pocket46.hpp"
+#include "core/cycles/pocket46.hpp"
 #include "helpers.hpp"
 
 using namespace pupitre;

@@ -3,7 +3,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <gtest/gtest.h>
 
-#include "core/setting.hpp"
+#include "core/sim/setting.hpp"
 #include "tests/unit/helpers.hpp"
 
 using namespace pupitre;

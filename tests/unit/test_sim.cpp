@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "core/sim.hpp"
+#include "core/sim/sim.hpp"
 
 using namespace pupitre;
 

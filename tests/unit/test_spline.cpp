@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "core/spline.hpp"
+#include "core/geometry/spline.hpp"
 #include "helpers.hpp"
 
 using namespace pupitre;

@@ -11,7 +11,7 @@
 #include <numbers>
 #include <random>
 
-#include "core/turning.hpp"
+#include "core/cycles/turning.hpp"
 
 using namespace pupitre;
 using namespace pupitre::turning;

@@ -10,7 +10,7 @@
 #include <numbers>
 #include <random>
 
-#include "core/turning_zone.hpp"
+#include "core/cycles/turning_zone.hpp"
 
 using namespace pupitre::turning;
 using geom::Elem;

@@ -1,0 +1,230 @@
+// G65 groove roughing (turning.md §6.4): passes from the infeed line at angle EA
+// towards the programmed limit, inside the zone the finished profile closes; and
+// G66 plunge roughing (§6.6): plunges spread evenly between two correctors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "core/cycles/turning.hpp"
+#include "core/cycles/turning_geom.hpp"
+#include "core/cycles/turning_zone.hpp"
+
+namespace pupitre::turning {
+
+using namespace geom;
+using zone::Emit;
+using zone::Material;
+
+namespace {
+constexpr double kDeg = std::numbers::pi / 180;
+
+// The first point of the ray S + s·u (s in [0, limit]) on the profile or inside
+// A, or false.
+bool first_contact(const Material& m, const V2& s, const V2& u, double limit, V2& c) {
+    double len = limit;
+    Elem ray = line(s, s + len * u);
+    std::vector<double> ts{0, len};
+    std::vector<V2> pts;
+    for (const Elem& e : m.F) {  // meeting the profile is a contact in any case
+        pts.clear();
+        intersect(e, ray, pts);
+        for (const V2& p : pts)
+            if ((p - s).dot(u) > kTol) len = std::min(len, (p - s).dot(u));
+    }
+    ts[1] = len;
+    for (const Elem& e : m.U) {
+        pts.clear();
+        intersect(e, ray, pts);
+        for (const V2& p : pts) ts.push_back((p - s).dot(u));
+    }
+    std::sort(ts.begin(), ts.end());
+    for (size_t j = 0; j + 1 < ts.size(); ++j) {
+        if (ts[j + 1] - ts[j] <= kTol) continue;
+        if (m.zero() && ts[j] > kTol) {  // without allowance: the first point on the profile
+            c = s + ts[j] * u;
+            return true;
+        }
+        if (ts[j] > len) break;
+        if (m.in_A(s + (ts[j] + ts[j + 1]) / 2 * u)) {
+            c = s + ts[j] * u;
+            return true;
+        }
+    }
+    if (len < limit) {  // the profile itself comes first
+        c = s + len * u;
+        return true;
+    }
+    return false;
+}
+
+// Lowest point of the translated profile between x0 and x1.
+double lowest(const Material& m, double x0, double x1) {
+    double y = kInf;
+    for (const Elem& e : m.F) y = std::min(y, min_y_in(translated(e, m.t), x0, x1));
+    return y;
+}
+}  // namespace
+
+int g65(const Profile& fin, V2 tool, const G65Args& a, std::vector<Move>& out, std::string& why) {
+    out.clear();
+    if ((a.has_p && a.has_r) || (a.has_x && a.has_z)) {
+        why = "G65 takes P or R, and X or Z, not both";
+        return 889;
+    }
+    bool axial = a.has_z && a.has_p, frontal = a.has_x && a.has_r;
+    if (!axial && !frontal) {
+        why = "G65 needs Z with P (axial groove) or X with R (frontal groove)";
+        return 862;
+    }
+    if (!a.has_ea) {
+        why = "G65 needs the infeed angle EA";
+        return 2;
+    }
+    double step = axial ? a.p : a.r;
+    if (!(step > 0)) {
+        why = "the depth of cut must be positive";
+        return 862;
+    }
+    if (int e = zone::check_profile(fin, why)) return e;
+
+    Frame fr;
+    fr.swap = frontal;
+    V2 u = fr.to(V2(std::cos(a.ea * kDeg), std::sin(a.ea * kDeg)));
+    if (std::fabs(u.y()) < 1e-9) {
+        why = "EA runs parallel to the passes";
+        return 863;
+    }
+    fr.s = u.y() < 0 ? 1 : -1;  // the infeed goes down the level axis
+    u = fr.to(V2(std::cos(a.ea * kDeg), std::sin(a.ea * kDeg)));
+    V2 s = fr.to(tool);
+    double xa = axial ? a.z : a.x;
+    int d = xa > s.x() + kUm ? 1 : xa < s.x() - kUm ? -1 : 0;
+    if (d == 0 || u.x() * d < -1e-9) {
+        why = "the limit of the passes is not on the side EA leads to";
+        return 863;
+    }
+
+    Material m;
+    m.F = fr.to(fin.elems);
+    m.translate(fr.to(V2(a.k, a.i)));
+    if (m.in_A(s)) {
+        why = "the start point lies inside the finished profile";
+        return 875;
+    }
+    double span = (s - m.F.front().a).norm();
+    for (const Elem& e : m.F) span = std::max(span, (s - e.b).norm());
+    V2 c;
+    if (!first_contact(m, s, u, 2 * span + 100, c)) {
+        why = "the EA line does not meet the finished profile";
+        return 875;
+    }
+    double y_low = std::min(c.y(), lowest(m, std::min(xa, c.x()), std::max(xa, c.x())));
+    double cl = std::min(a.q > 0 ? a.q : std::max(0.0, a.clearance), step / 2);
+
+    Emit em{fr, out, s};
+    V2 prev = s;
+    for (int k = 1;; ++k) {
+        double y = s.y() - k * step;
+        bool last = y <= y_low + kUm;
+        if (last) y = y_low;
+        if (y >= s.y() - kTol) break;
+        // Start of the pass: on the EA line down to C, below it where the level
+        // leaves the profile towards the limit.
+        double xe = s.x() + u.x() * (s.y() - y) / -u.y();
+        V2 e(xe, y);
+        if (y < c.y() - kTol) {
+            auto runs = zone::free_runs(m, y, xe, xa, d);
+            if (runs.empty()) {
+                if (last) break;
+                continue;
+            }
+            e = V2(runs[0].first, y);
+        }
+        auto runs = zone::free_runs(m, y, e.x(), xa, d);
+        bool ok = !runs.empty() && std::fabs(runs[0].first - e.x()) <= kTol &&
+                  std::fabs(runs[0].second - e.x()) > kUm;
+        std::vector<V2> infeed{e};
+        if (ok && y < c.y() - kTol && !zone::seg_clear(m, prev, e)) {
+            infeed = {V2(e.x(), prev.y()), e};  // along the last pass, then down
+            ok = zone::seg_clear(m, prev, infeed[0]) && zone::seg_clear(m, infeed[0], e);
+        }
+        if (ok) {
+            for (const V2& p : infeed) em.go(1, p, true);
+            em.go(1, V2(runs[0].second, y));
+            em.go(0, V2(runs[0].second, y + cl));
+            em.go(0, V2(e.x(), y + cl));
+            em.go(0, e);
+            prev = e;
+        }
+        if (last) break;
+    }
+    em.go(0, V2(em.cur.x(), s.y()));
+    em.go(0, s);
+    return 0;
+}
+
+int g66(V2 tool, const G66Args& a, std::vector<Move>& out, std::string& why) {
+    out.clear();
+    if (a.has_p && a.has_r) {
+        why = "G66 takes P or R, not both";
+        return 889;
+    }
+    if (!(a.has_p || a.has_r) || !a.has_x || !a.has_z) {
+        why = "G66 needs X, Z and P or R";
+        return 862;
+    }
+    double step = a.has_p ? a.p : a.r;
+    if (!(step > 0)) {
+        why = "the distance between plunges must be positive";
+        return 862;
+    }
+    if (a.d_first == 0 || a.d == 0) {
+        why = a.d == 0 ? "G66 needs the second corrector D" : "no corrector active before G66";
+        return 898;
+    }
+    if (a.milling_tool) {
+        why = "G66 with a milling tool";
+        return 864;
+    }
+    // Frame: plunges along y, spread along x (R: radial groove, plunges along X
+    // spread along Z; P: frontal groove, plunges along Z spread along X).
+    Frame fr;
+    fr.swap = a.has_p;
+    V2 A = fr.to(tool);
+    V2 B = fr.to(V2(a.z, a.x));
+    V2 Bt = B + fr.to(a.gauge_delta);  // B in the first corrector's terms
+    double width = Bt.x() - A.x();
+    if (width * (B.x() - A.x()) < 0) {
+        why = "the groove is narrower than the tool";
+        return 863;
+    }
+    double slope = std::tan(a.ea * kDeg);
+    auto bottom = [&](double x) { return Bt.y() + (x - Bt.x()) * slope; };
+    int n = int(std::ceil(std::fabs(width) / step - 1e-9));
+    int dir = bottom(A.x()) < A.y() ? -1 : 1;  // plunge direction along y
+    for (int i = 0; i <= n; ++i) {
+        double x = n ? A.x() + width * i / n : A.x();
+        double depth = bottom(x) - A.y();
+        if (std::fabs(depth) <= kUm || (depth < 0 ? -1 : 1) != dir) {
+            why = "the groove bottom does not lie beyond the approach point";
+            return 863;
+        }
+    }
+    Emit em{fr, out, A};
+    int side = width < 0 ? -1 : 1;  // progression along x
+    for (int i = 0; i <= n; ++i) {
+        double x = n ? A.x() + width * i / n : A.x();
+        em.go(0, V2(x, A.y()));
+        em.go(1, V2(x, bottom(x)), false, a.ef);
+        if (a.ep > 0 && i > 0) {
+            double h = a.ep / std::sqrt(2.0);  // 45°, back over the cut part of the groove
+            em.go(1, V2(x - side * h, bottom(x) - dir * h));
+        }
+        em.go(0, V2(em.cur.x(), A.y()));
+    }
+    em.go(0, V2(Bt.x(), A.y()));
+    return 0;
+}
+
+}  // namespace pupitre::turning

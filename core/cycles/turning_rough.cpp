@@ -1,0 +1,417 @@
+// G64 paraxial roughing (turning.md §6.3): passes parallel to Z (P) or X (R)
+// between the stock and the finished profile translated by the allowances; and
+// G63 roughing with grooves (§6.5), the same passes entering grooves.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "core/cycles/turning.hpp"
+#include "core/cycles/turning_geom.hpp"
+#include "core/cycles/turning_zone.hpp"
+
+namespace pupitre::turning {
+
+using namespace geom;
+using zone::Emit;
+using zone::Material;
+
+namespace {
+constexpr double kDeg = std::numbers::pi / 180;
+
+int sgn(double v, double tol = kUm) {
+    return v > tol ? 1 : v < -tol ? -1 : 0;
+}
+
+std::vector<Elem> polyline(const std::vector<V2>& pts) {
+    std::vector<Elem> es;
+    for (size_t i = 0; i + 1 < pts.size(); ++i)
+        if ((pts[i + 1] - pts[i]).norm() > kTol) es.push_back(line(pts[i], pts[i + 1]));
+    if (es.empty() && !pts.empty()) es.push_back(line(pts[0], pts[0]));
+    return es;
+}
+
+// The stock is written from the profile's start towards its end (the spec's
+// examples) or the other way round (the cabestan programs): true for the latter.
+bool stock_reversed(const std::vector<V2>& b, const Profile& f) {
+    V2 f0 = f.elems.front().a, fn = f.elems.back().b;
+    return (b.front() - fn).norm() + (b.back() - f0).norm() <
+           (b.front() - f0).norm() + (b.back() - fn).norm() - kTol;
+}
+
+// The closed material region: stock, closing segment to the profile's end, the
+// profile backwards, closing segment to the stock's start (§6.3 step 2).
+void build_region(const std::vector<V2>& b, const Profile& f, Material& m) {
+    for (const Elem& e : polyline(b)) {
+        if ((e.b - e.a).norm() <= kTol) continue;
+        m.M.push_back(e);
+        m.kind.push_back(zone::kStock);
+    }
+    V2 f0 = f.elems.front().a, fn = f.elems.back().b;
+    if ((fn - b.back()).norm() > kTol) {
+        m.M.push_back(line(b.back(), fn));
+        m.kind.push_back(zone::kClosing);
+    }
+    for (auto it = f.elems.rbegin(); it != f.elems.rend(); ++it) {
+        if (length(*it) <= kTol) continue;
+        m.M.push_back(reversed(*it));
+        m.kind.push_back(zone::kProfile);
+    }
+    if ((b.front() - f0).norm() > kTol) {
+        m.M.push_back(line(f0, b.front()));
+        m.kind.push_back(zone::kClosing);
+    }
+}
+
+int check_region(const Material& m, std::string& why) {
+    if (m.M.size() < 2 || std::fabs(area(m.M)) < 1e-9) {
+        why = "the stock and the finished profile enclose no material";
+        return 874;
+    }
+    if (self_intersects(m.M)) {
+        why = "the stock crosses the finished profile";
+        return 874;
+    }
+    return 0;
+}
+
+Material to_frame(const Material& m, const Frame& fr) {
+    Material f;
+    f.M = fr.to(m.M);
+    f.kind = m.kind;
+    f.F = fr.to(m.F);
+    return f;
+}
+
+// One pass at level y from x_s (in air, c before the stock) to x_e (§6.3 step 4).
+void pass(Emit& em, double y, double xs, double xe, int d, double c, bool first, double sy) {
+    V2 start(xs - d * c, y);
+    if (first) em.go(0, V2(start.x(), sy));  // from the tool: along the passes, then down
+    em.go(0, start);
+    em.go(1, V2(xe, y));
+    em.go(0, V2(xe, y + c));
+    em.go(0, V2(start.x(), y + c));
+}
+
+// The direction along x in which the level lines run from the stock into the
+// material up to the profile, weighted by length; 0 when undecided.
+int cut_direction(const Material& m, const std::vector<double>& ys) {
+    double score[2] = {0, 0};
+    for (double y : ys)
+        for (const zone::Interval& iv : zone::m_intervals(m, y, 1)) {
+            double len = iv.b - iv.a;
+            auto weight = [](int from, int to) {
+                if (from == zone::kProfile || to == zone::kStock) return 0.0;
+                return from == zone::kStock && to == zone::kProfile ? 1.0 : 0.5;
+            };
+            score[1] += len * weight(iv.front, iv.back);  // from a towards b
+            score[0] += len * weight(iv.back, iv.front);
+        }
+    if (score[1] > score[0] * (1 + 1e-9) + kTol) return 1;
+    if (score[0] > score[1] * (1 + 1e-9) + kTol) return -1;
+    return 0;
+}
+
+// Levels y_top - k·step down to y_min, the last one exactly at y_min.
+std::vector<double> levels(double y_top, double y_min, double step) {
+    std::vector<double> ys;
+    for (int k = 1;; ++k) {
+        double y = y_top - k * step;
+        if (y <= y_min + kUm) {
+            if (y_top > y_min + kUm) ys.push_back(y_min);
+            break;
+        }
+        ys.push_back(y);
+    }
+    return ys;
+}
+}  // namespace
+
+int g64(const Profile& fin, const std::vector<V2>& stock, V2 tool, const G64Args& a,
+        std::vector<Move>& out, std::string& why) {
+    out.clear();
+    if (!a.has_p && !a.has_r) {
+        why = "G64 needs P (passes along Z) or R (passes along X)";
+        return 873;
+    }
+    if (a.has_p && a.has_r) {
+        why = "G64 takes P or R, not both";
+        return 889;
+    }
+    double step = a.has_p ? a.p : a.r;
+    if (!(step > 0)) {
+        why = "the depth of cut must be positive";
+        return 873;
+    }
+    if (int e = zone::check_profile(fin, why)) return e;
+    if (stock.empty()) {
+        why = "no stock point between G64 and G80";
+        return 872;
+    }
+    std::vector<Elem> bs = polyline(stock);
+    if (int e = zone::check_axis(fin.elems, "the finished profile", why)) return e;
+    if (int e = zone::check_axis(bs, "the stock", why)) return e;
+
+    bool rev = stock_reversed(stock, fin);
+    std::vector<V2> b = stock;
+    if (rev) std::reverse(b.begin(), b.end());
+    Material real;
+    real.F = fin.elems;
+    build_region(b, fin, real);
+    if (int e = check_region(real, why)) return e;
+
+    // Frame: passes along x; the material above the profile (§6.3 step 2). Its
+    // side is the mean normal of the profile towards the material, which is the
+    // profile's chord turned a quarter towards the side M lies on; when that
+    // says nothing along the level axis, the tool is on the side of the stock
+    // where the levels start.
+    Frame fr;
+    fr.swap = a.has_r;
+    auto lev = [&](const V2& p) { return fr.swap ? p.x() : p.y(); };
+    auto ax = [&](const V2& p) { return fr.swap ? p.y() : p.x(); };
+    V2 chord = fin.elems.back().b - fin.elems.front().a;
+    V2 side = area(real.M) < 0 ? V2(-chord.y(), chord.x()) : V2(chord.y(), -chord.x());
+    if (std::fabs(lev(side)) > kUm * std::max(1.0, chord.norm())) {
+        fr.s = lev(side) > 0 ? 1 : -1;
+    } else {
+        double lo = kInf;
+        for (const V2& p : stock) lo = std::min(lo, lev(p));
+        fr.s = lev(tool) < lo - kUm ? -1 : 1;
+    }
+    Material m = to_frame(real, fr);
+    m.translate(fr.to(V2(a.k, a.i)));
+    double y_top = -kInf, y_min = kInf;
+    for (const V2& p : stock) y_top = std::max(y_top, fr.to(p).y());
+    for (const Elem& e : m.F) y_min = std::min(y_min, min_y(translated(e, m.t)));
+    if ((y_top - y_min) / step > 1e6) {
+        why = "the depth of cut is too small for the stock";
+        return 873;
+    }
+    std::vector<double> ys = levels(y_top, y_min, step);
+    // Cutting direction: from the stock into the material, towards the profile
+    // (§6.3 step 4: from the end of the called profile towards its start, when
+    // the stock is written from its start; the reverse when it is written from
+    // its end, as in the cabestan programs).
+    V2 f0 = fin.elems.front().a, fn = fin.elems.back().b;
+    int d = cut_direction(m, ys);
+    if (d == 0) d = rev ? sgn(ax(fn) - ax(f0)) : sgn(ax(f0) - ax(fn));
+    if (d == 0) d = sgn(ax(zone::centroid(fin.elems)) - ax(zone::centroid(bs)));
+    if (d == 0) d = -1;
+    double c = std::min(std::max(0.0, a.clearance), step / 2);
+
+    Emit em{fr, out, fr.to(tool)};
+    V2 s = em.cur;
+    bool first = true;
+    for (double y : ys) {
+        auto ivs = zone::m_intervals(m, y, d);
+        if (d < 0) std::reverse(ivs.begin(), ivs.end());
+        for (const zone::Interval& iv : ivs) {
+            if (iv.front == zone::kProfile) continue;  // a groove behind a bump
+            double xs = d > 0 ? iv.a : iv.b, far = d > 0 ? iv.b : iv.a;
+            auto runs = zone::free_runs(m, y, xs, far, d);
+            if (runs.empty() || std::fabs(runs[0].first - xs) > kTol) break;
+            if (std::fabs(runs[0].second - xs) <= kUm) break;
+            pass(em, y, xs, runs[0].second, d, c, first, s.y());
+            first = false;
+            break;  // one pass per level: the first interval met from the stock
+        }
+    }
+    if (!first) {
+        em.go(0, V2(em.cur.x(), s.y()));
+        em.go(0, s);
+    }
+    return 0;
+}
+
+namespace {
+// G63 argument checks (§6.5 errors, the convention of spec/README.md item 37).
+int g63_check(const Profile& fin, const G63Args& a, std::string& why) {
+    if (!a.has_p && !a.has_r) {
+        why = "G63 needs P (passes along Z) or R (passes along X)";
+        return 873;
+    }
+    if ((a.has_p && a.has_r) || (a.has_ex && a.has_ez)) {
+        why = "G63 takes P or R, and EZ or EX, not both";
+        return 889;
+    }
+    if ((a.has_p && !a.has_ez) || (a.has_r && !a.has_ex)) {
+        why = "G63 needs EZ with P or EX with R";
+        return 862;
+    }
+    if (!a.has_x || !a.has_z) {
+        why = "G63 needs its start point X Z";
+        return 2;
+    }
+    if (!((a.has_p ? a.p : a.r) > 0)) {
+        why = "the depth of cut must be positive";
+        return 873;
+    }
+    if (a.er < 0 || a.eq < 0) {
+        why = "ER and EQ must not be negative";
+        return 889;
+    }
+    if ((a.has_eb && !(a.eb > 0 && a.eb < 180)) || (a.has_ec && !(a.ec >= 0 && a.ec < 180))) {
+        why = "EB must lie in ]0, 180[ and EC in [0, 180[ degrees";
+        return 876;
+    }
+    if (int e = zone::check_profile(fin, why)) return e;
+    return zone::check_axis(fin.elems, "the finished profile", why);
+}
+
+// Angle of the profile where a pass enters a groove, from the pass direction
+// (0: the profile goes on along the pass, 90: a wall, above 90: an undercut).
+double entry_angle(const Material& m, const V2& q, int d, V2& down) {
+    double best = kInf;
+    V2 t(d, 0);
+    for (const Elem& e : m.F) {
+        V2 te;
+        double dd = (closest(e, q, &te) - q).norm();
+        if (dd < best) best = dd, t = te;
+    }
+    if (t.y() > 0) t = -t;
+    if (std::fabs(t.y()) < 1e-12) t = V2(d, 0);
+    down = t;
+    return std::atan2(-t.y(), t.x() * d) / kDeg;
+}
+
+// Highest point of the allowance zone over [x0, x1].
+double top_of_A(const Material& m, double x0, double x1) {
+    double lo = std::min(x0, x1) - m.er, hi = std::max(x0, x1) + m.er, y = -kInf;
+    for (const Elem& e : m.F) y = std::max(y, max_y_in(e, lo, hi));
+    return y + m.er;
+}
+
+// Moves of one feed path if none enters A.
+bool clear_path(const Material& m, V2 from, const std::vector<V2>& pts) {
+    for (const V2& p : pts) {
+        if (!zone::seg_clear(m, from, p)) return false;
+        from = p;
+    }
+    return true;
+}
+}  // namespace
+
+int g63(const Profile& fin, V2 tool, const G63Args& a, std::vector<Move>& out, std::string& why) {
+    out.clear();
+    if (int e = g63_check(fin, a, why)) return e;
+    double step = a.has_p ? a.p : a.r;
+    Frame fr;
+    fr.swap = a.has_r;
+    V2 dr(a.z, a.x);  // start point D in (z, r)
+    auto lev = [&](const V2& p) { return fr.swap ? p.x() : p.y(); };
+    bool has_lim = fr.swap ? a.has_ew : a.has_eu;
+    double lim = fr.swap ? a.ew : a.eu;
+    double ref = has_lim ? lim : lev(zone::centroid(fin.elems));
+    fr.s = lev(dr) < ref - kUm ? -1 : 1;
+    V2 D = fr.to(dr);
+    double xz = a.has_ez ? a.ez : a.ex;
+    int d = sgn(xz - D.x());
+    if (d == 0) {
+        why = "the end of the passes is at the start point";
+        return 862;
+    }
+    // Start line of the passes: EA, else towards the point EU EW, else square
+    // to the passes through D.
+    V2 u(0, -1);
+    if (a.has_ea) {
+        u = fr.to(V2(std::cos(a.ea * kDeg), std::sin(a.ea * kDeg)));
+    } else if (a.has_eu || a.has_ew) {
+        V2 pu = fr.to(V2(a.has_ew ? a.ew : a.z, a.has_eu ? a.eu : a.x)) - D;
+        if (pu.norm() > kUm && std::fabs(pu.y()) > kUm) u = pu.normalized();
+    }
+    if (u.y() > 0) u = -u;
+    if (std::fabs(u.y()) < 1e-9) {
+        why = "the start line EA runs along the passes";
+        return 875;
+    }
+    std::vector<Elem> ff = fr.to(fin.elems);
+    double y_min = kInf;
+    for (const Elem& e : ff) y_min = std::min(y_min, min_y(e));
+    double y_u = has_lim ? fr.s * lim : y_min;
+    auto on_start_line = [&](double y) { return V2(D.x() + u.x() * (D.y() - y) / -u.y(), y); };
+    if (a.has_ea) {
+        bool met = false;
+        for (const Elem& e : ff) met = met || ray_hit(e, D, u) < kInf;
+        if (!met) {
+            why = "the EA line does not meet the finished profile";
+            return 875;
+        }
+    }
+    // Stock: the start line, the start level, the end of the passes (§6.5 step 2).
+    std::vector<V2> b{fr.back(on_start_line(std::min(y_u, D.y()))), dr, fr.back(V2(xz, D.y()))};
+    bool rev = stock_reversed(b, fin);
+    if (rev) std::reverse(b.begin(), b.end());
+    Material real;
+    real.F = fin.elems;
+    build_region(b, fin, real);
+    if (int e = check_region(real, why)) return e;
+    Material m = to_frame(real, fr);
+    m.offset(a.er);
+
+    double c = std::min(a.q > 0 ? a.q : std::max(0.0, a.clearance), step / 2);
+    double eb = a.has_eb ? a.eb : 90;
+    std::vector<double> ys = levels(D.y(), y_u, step);
+    if (ys.size() >= 2 && ys[ys.size() - 2] - ys.back() < a.eq - kTol) ys.pop_back();
+    if (ys.size() == 1 && D.y() - ys.back() < a.eq - kTol) ys.pop_back();
+
+    Emit em{fr, out, fr.to(tool)};
+    em.go(0, D);
+    bool first = true;
+    for (double y : ys) {
+        auto ivs = zone::m_intervals(m, y, d);
+        if (d < 0) std::reverse(ivs.begin(), ivs.end());
+        size_t k = 0;
+        while (k < ivs.size() && ivs[k].front == zone::kProfile) ++k;
+        if (k == ivs.size()) continue;
+        double xs = d > 0 ? ivs[k].a : ivs[k].b;
+        std::vector<std::pair<double, double>> runs;
+        for (; k < ivs.size(); ++k) {
+            double x0 = d > 0 ? ivs[k].a : ivs[k].b, x1 = d > 0 ? ivs[k].b : ivs[k].a;
+            if ((x0 - xz) * d >= 0) break;
+            if ((x1 - xz) * d > 0) x1 = xz;
+            for (auto r : zone::free_runs(m, y, x0, x1, d)) runs.push_back(r);
+        }
+        if (runs.empty() || std::fabs(runs[0].first - xs) > kTol ||
+            std::fabs(runs[0].second - xs) <= kUm)
+            continue;
+        V2 start(xs - d * c, y);
+        if (first) em.go(0, V2(start.x(), D.y()));
+        first = false;
+        em.go(0, start);
+        em.go(1, V2(runs[0].second, y));
+        double end = runs[0].second;
+        bool entered = false;
+        for (size_t j = 1; j < runs.size(); ++j) {
+            V2 down, entry(runs[j].first, y);
+            if (entry_angle(m, entry, d, down) > eb + 1e-9) break;
+            double over = std::max(y + c, top_of_A(m, end, entry.x()) + c);
+            if (std::fabs(down.y()) < std::sin(5 * kDeg)) down = V2(0, -1);
+            double lean = (over - y) * down.x() / -down.y();
+            std::vector<V2> path{V2(end, over), V2(entry.x() - lean, over), entry,
+                                 V2(runs[j].second, y)};
+            if (!clear_path(m, V2(end, y + c), path)) {
+                path[1] = V2(entry.x(), over);
+                if (!clear_path(m, V2(end, y + c), path)) break;
+            }
+            em.go(0, V2(end, y + c));
+            em.go(1, path[0]);
+            em.go(1, path[1]);
+            em.go(1, path[2], true);
+            em.go(1, path[3]);
+            end = runs[j].second;
+            entered = true;
+        }
+        em.go(0, V2(end, y + c));
+        if (entered) {
+            double back = std::max(y + c, top_of_A(m, xs, end) + c);
+            em.go(1, V2(end, back));
+            em.go(1, V2(start.x(), back));
+        }
+        em.go(0, V2(start.x(), y + c));
+    }
+    em.go(0, V2(em.cur.x(), D.y()));
+    em.go(0, D);
+    return 0;
+}
+
+}  // namespace pupitre::turning

@@ -1,0 +1,167 @@
+// G33 threading cycle (turning.md §6.12): passes of decreasing (S) or constant
+// (ES) depth, a last pass Q, oblique infeed EB, taper EA, exit slope R and
+// multi-start F; and G38 chained threads (§6.13), one synchronised move a block.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <cmath>
+#include <numbers>
+
+#include "core/cycles/turning.hpp"
+#include "core/cycles/turning_geom.hpp"
+#include "core/cycles/turning_zone.hpp"
+
+namespace pupitre::turning {
+
+using namespace geom;
+
+namespace {
+constexpr double kDeg = std::numbers::pi / 180;
+
+bool whole(double v) {
+    return std::fabs(v - std::round(v)) < 1e-9;
+}
+
+// Syntax and argument checks, in the order a block is read (§6.12 preconditions).
+int g33_check(const G33Args& a, std::string& why) {
+    if (!a.has_x || !a.has_z || !a.has_p || !a.has_k) {
+        why = "G33 needs the end point X Z, the depth P and the lead K";
+        return 832;
+    }
+    if (a.has_s && a.has_es) {
+        why = "G33 takes S or ES, not both";
+        return 889;
+    }
+    if (a.k < 0 || a.p < 0 || (a.has_q && a.q < 0) || a.r < 0 || a.k == 0 || a.p == 0) {
+        why = "P and K must be positive, Q and R not negative";
+        return 835;
+    }
+    if (!(a.eb > -90 && a.eb < 90)) {
+        why = "EB must lie between -90 and 90 degrees";
+        return 834;
+    }
+    if (a.has_f && a.f > 9) {
+        why = "more than 9 thread starts";
+        return 884;
+    }
+    double n = a.has_es ? a.es : a.s;
+    if ((a.has_f && (a.f < 1 || !whole(a.f))) || n < 1 || !whole(n)) {
+        why = "the number of starts (F) and of passes (S, ES) must be whole and at least 1";
+        return 837;
+    }
+    if (a.has_q && a.q > a.p) {
+        why = "the last pass Q is deeper than the thread P";
+        return 881;
+    }
+    if (std::fabs(a.ea) > 90) {
+        why = "EA must lie between -90 and 90 degrees";
+        return 881;
+    }
+    if (a.radius_comp) {
+        why = "threading in radius compensation (G41/G42)";
+        return 27;
+    }
+    if (!a.plane_ok) {
+        why = "threading needs the G18 or G20 plane";
+        return 836;
+    }
+    if (!a.spindle_turning) {
+        why = "threading with the spindle stopped";
+        return 831;
+    }
+    return 0;
+}
+
+// Cumulative depths of the passes (§6.12 step 2).
+std::vector<double> depths(const G33Args& a) {
+    std::vector<double> ds;
+    double pr = a.p - (a.has_q ? a.q : 0);
+    int n = int(std::lround(a.has_es ? a.es : a.s));
+    for (int i = 1; i <= n; ++i) {
+        double d = a.has_es ? pr * i / n : pr * std::sqrt(double(i) / n);
+        if (d > kTol) ds.push_back(d);
+    }
+    if (a.has_q) ds.push_back(a.p);
+    return ds;
+}
+}  // namespace
+
+int g33(V2 tool, const G33Args& a, std::vector<Move>& out, std::string& why) {
+    out.clear();
+    if (int e = g33_check(a, why)) return e;
+    // Frame: x along the threading axis (Z, or X for a face thread at EA = ±90).
+    Frame fr;
+    bool face = std::fabs(std::fabs(a.ea) - 90) < 1e-9;
+    fr.swap = face;
+    double slope = face ? 0 : std::tan(a.ea * kDeg);
+    V2 s = fr.to(tool), e = fr.to(V2(a.z, a.x));
+    auto crest = [&](double x) { return e.y() + (x - e.x()) * slope; };
+    double len = e.x() - s.x();
+    if (std::fabs(len) <= kUm) {
+        why = "the thread has no length along its axis";
+        return 881;
+    }
+    int sigma = len > 0 ? 1 : -1;
+    double h = s.y() - crest(s.x());  // clearance above the crest line at the start
+    if (std::fabs(h) <= kUm) {
+        why = "the start point lies on the thread";
+        return 833;
+    }
+    if (a.r >= std::fabs(len) - kUm) {
+        why = "the exit slope R is as long as the thread";
+        return 881;
+    }
+    int ext = h > 0 ? 1 : -1;  // external thread: the depth goes down the level axis
+    // The tool retracts to the line parallel to the crest through the start
+    // point: (r_S, z_E) of the spec for a cylindrical thread, and clear of a cone.
+    auto clear = [&](double x) { return V2(x, crest(x) + h); };
+    int starts = a.has_f ? int(std::lround(a.f)) : 1;
+    double tan_eb = std::tan(a.eb * kDeg);
+    double x_end = e.x() - sigma * a.r;
+
+    zone::Emit em{fr, out, s};
+    for (double d : depths(a)) {
+        for (int j = 0; j < starts; ++j) {
+            double xj = s.x() - sigma * j * a.k / starts;
+            em.go(0, clear(xj));
+            em.go(0, V2(xj - sigma * d * tan_eb, crest(xj) - ext * d));
+            em.go(33, V2(x_end, crest(x_end) - ext * d));
+            em.go(a.r > 0 ? 33 : 0, clear(e.x()));
+            em.go(0, clear(xj));
+        }
+    }
+    em.go(0, s);
+    return 0;
+}
+
+int g38(V2 tool, const G38Args& a, std::vector<Move>& out, std::string& why) {
+    out.clear();
+    if (a.radius_comp) {
+        why = "threading in radius compensation (G41/G42)";
+        return 27;
+    }
+    if (a.has_k && !(a.k > 0)) {
+        why = "the lead K must be positive";
+        return 835;
+    }
+    if (!a.has_k && !(a.prev_k > 0)) {
+        why = "G38 needs the lead K";
+        return 883;
+    }
+    if (!a.spindle_turning) {
+        why = "threading with the spindle stopped";
+        return 831;
+    }
+    if ((a.to - tool).norm() > kTol) {
+        Move m;
+        m.g = 33;
+        m.to = a.to;
+        out.push_back(m);
+    }
+    return 0;
+}
+
+int thread_axis(V2 from, V2 to) {
+    V2 d = to - from;
+    return std::fabs(d.x()) >= std::fabs(d.y()) ? 0 : 1;
+}
+
+}  // namespace pupitre::turning

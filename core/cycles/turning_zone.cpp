@@ -1,0 +1,418 @@
+// Material region, allowance zone and the runs of a pass line through them.
+// Passes are cut where a level line lies inside the material and outside the
+// allowance zone; both are decided exactly (winding numbers with arcs, exact
+// crossings), then sub-intervals are classified at their midpoints.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/cycles/turning_zone.hpp"
+#include "core/geometry/geometry.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace pupitre::turning::zone {
+
+using namespace geom;
+
+namespace {
+using ::pupitre::geometry::kPi;
+
+using ::pupitre::geometry::perp;
+
+Elem arc(const V2& c, const V2& a, double sweep) {
+    Elem e;
+    e.arc = true;
+    e.c = c;
+    e.a = a;
+    V2 u = a - c;
+    double cs = std::cos(sweep), sn = std::sin(sweep);
+    e.b = c + V2(cs * u.x() - sn * u.y(), sn * u.x() + cs * u.y());
+    e.sweep = sweep;
+    return e;
+}
+
+void full_circle(const V2& c, double r, std::vector<Elem>& out) {
+    out.push_back(arc(c, c + V2(r, 0), kPi));
+    out.push_back(arc(c, c - V2(r, 0), kPi));
+}
+}  // namespace
+
+void Material::translate(const V2& allowance) {
+    normal = false;
+    t = allowance;
+    U = F;
+    if (t.norm() < kTol) return;
+    V2 n = perp(t).normalized();
+    for (const Elem& e : F) {
+        U.push_back(translated(e, t));
+        U.push_back(line(e.a, e.a + t));
+        U.push_back(line(e.b, e.b + t));
+        if (!e.arc) continue;
+        // Where the arc's tangent is parallel to t, the swept zone's boundary
+        // is the segment swept by that point.
+        for (double sg : {-1.0, 1.0}) {
+            V2 p = e.c + sg * e.r() * n;
+            if (on_arc(e, p)) U.push_back(line(p, p + t));
+        }
+    }
+}
+
+void Material::offset(double allowance) {
+    normal = true;
+    er = std::max(0.0, allowance);
+    U = F;
+    if (er < kTol) return;
+    for (const Elem& e : F) {
+        if (e.arc) {
+            double r = e.r();
+            for (double rr : {r - er, r + er}) {
+                if (rr < kTol) continue;
+                Elem o = e;
+                o.a = e.c + (e.a - e.c) * (rr / r);
+                o.b = e.c + (e.b - e.c) * (rr / r);
+                U.push_back(o);
+            }
+        } else {
+            V2 d = e.b - e.a;
+            if (d.norm() < kTol) continue;
+            V2 n = perp(d).normalized() * er;
+            U.push_back(line(e.a + n, e.b + n));
+            U.push_back(line(e.a - n, e.b - n));
+        }
+        full_circle(e.a, er, U);
+        full_circle(e.b, er, U);
+    }
+}
+
+bool Material::in_A(const V2& q) const {
+    if (normal) {
+        double lim = std::max(er - kTol, kTol);
+        for (const Elem& e : F)
+            if (dist(e, q) < lim) return true;
+        return false;
+    }
+    double tn = t.norm();
+    if (tn < kTol) {
+        for (const Elem& e : F)
+            if (dist(e, q) <= kTol) return true;
+        return false;
+    }
+    // q is in A when moving it back by (a fraction of) t meets the finished
+    // profile; stopping 0.1 µm short of the full t (well above the tolerance of
+    // the intersections) leaves the translated profile itself outside.
+    double eps = std::min(0.5, 100 * kTol / tn);
+    Elem s = line(q - (1 - eps) * t, q);
+    std::vector<V2> pts;
+    for (const Elem& e : F) {
+        intersect(e, s, pts);
+        if (!pts.empty()) return true;
+    }
+    return false;
+}
+
+bool Material::in_M(const V2& q) const {
+    if (M.empty()) return false;
+    return on_loop(M, q) || winding(M, q) != 0;
+}
+
+void YIndex::build(const std::vector<Elem>& es, double pad) {
+    src_ = es.data();
+    n_ = es.size();
+    nodes_.clear();
+    lo_.resize(n_);
+    hi_.resize(n_);
+    for (size_t i = 0; i < n_; ++i) {
+        const Elem& e = es[i];
+        double lo = std::min(e.a.y(), e.b.y()), hi = std::max(e.a.y(), e.b.y());
+        if (e.arc) lo = std::min(lo, e.c.y() - e.r()), hi = std::max(hi, e.c.y() + e.r());
+        lo_[i] = lo - pad;
+        hi_[i] = hi + pad;
+    }
+    std::vector<int> ids(n_);
+    for (size_t i = 0; i < n_; ++i) ids[i] = int(i);
+    make(ids);
+}
+
+// A node holds the elements across the median of the end points; each side
+// gets at most half of them, so the depth is logarithmic.
+int YIndex::make(std::vector<int>& ids) {
+    if (ids.empty()) return -1;
+    std::vector<double> ends;
+    ends.reserve(2 * ids.size());
+    for (int i : ids) ends.push_back(lo_[size_t(i)]), ends.push_back(hi_[size_t(i)]);
+    auto mid = ends.begin() + ptrdiff_t(ends.size() / 2);
+    std::nth_element(ends.begin(), mid, ends.end());
+    const double c = *mid;
+    std::vector<int> below, above, here;
+    for (int i : ids) {
+        if (hi_[size_t(i)] < c) below.push_back(i);
+        else if (lo_[size_t(i)] > c) above.push_back(i);
+        else here.push_back(i);
+    }
+    int k = int(nodes_.size());
+    nodes_.emplace_back();
+    nodes_[size_t(k)].c = c;
+    nodes_[size_t(k)].by_lo = here;
+    std::sort(nodes_[size_t(k)].by_lo.begin(), nodes_[size_t(k)].by_lo.end(),
+              [this](int a, int b) { return lo_[size_t(a)] < lo_[size_t(b)]; });
+    nodes_[size_t(k)].by_hi = std::move(here);
+    std::sort(nodes_[size_t(k)].by_hi.begin(), nodes_[size_t(k)].by_hi.end(),
+              [this](int a, int b) { return hi_[size_t(a)] > hi_[size_t(b)]; });
+    ids.clear();
+    int l = make(below);
+    nodes_[size_t(k)].left = l;  // nodes_ may have moved: index again
+    int r = make(above);
+    nodes_[size_t(k)].right = r;
+    return k;
+}
+
+void YIndex::query(double y, std::vector<int>& out) const {
+    for (int k = nodes_.empty() ? -1 : 0; k >= 0;) {
+        const Node& n = nodes_[size_t(k)];
+        if (y < n.c) {
+            for (int i : n.by_lo) {
+                if (lo_[size_t(i)] > y) break;
+                out.push_back(i);
+            }
+            k = n.left;
+        } else {
+            for (int i : n.by_hi) {
+                if (hi_[size_t(i)] < y) break;
+                out.push_back(i);
+            }
+            k = n.right;
+        }
+    }
+}
+
+namespace {
+// Where the element crosses the line y = Y going up (+1) or down (-1), by the
+// half-open rule (an end exactly on the line counts for the element it is the
+// lower end of), so that summing the crossings right of a point not on the
+// loop gives its winding number. Arcs are cut where y is extreme, into pieces
+// along which y only rises or only falls, each on one side of the centre.
+void ray_crossings(const Elem& e, double Y, std::vector<std::pair<double, int>>& out) {
+    auto piece = [&](const V2& p, const V2& q, double side) {
+        if ((p.y() <= Y) == (q.y() <= Y)) return;
+        double x;
+        if (!e.arc) {
+            x = p.x() + (q.x() - p.x()) * (Y - p.y()) / (q.y() - p.y());
+        } else {
+            double r = e.r(), dy = Y - e.c.y();
+            x = e.c.x() + side * std::sqrt(std::max(0.0, r * r - dy * dy));
+        }
+        out.push_back({x, q.y() > p.y() ? 1 : -1});
+    };
+    if (!e.arc) return piece(e.a, e.b, 0);
+    const double r = e.r(), t0 = std::atan2(e.a.y() - e.c.y(), e.a.x() - e.c.x()), t1 = t0 + e.sweep;
+    const double lo = std::min(t0, t1), hi = std::max(t0, t1), eps = 1e-12;
+    std::vector<double> ts{t0};
+    // The angles pi/2 + k pi strictly inside the sweep, in the sense of travel.
+    for (double t = kPi / 2 + std::ceil((lo + eps - kPi / 2) / kPi) * kPi; t < hi - eps; t += kPi) ts.push_back(t);
+    if (e.sweep < 0) std::reverse(ts.begin() + 1, ts.end());
+    ts.push_back(t1);
+    V2 p = e.a;
+    for (size_t i = 1; i < ts.size(); ++i) {
+        bool last = i + 1 == ts.size();
+        V2 q = last ? e.b : V2(e.c.x(), e.c.y() + r * std::sin(ts[i]));
+        piece(p, q, std::cos((ts[i - 1] + ts[i]) / 2) >= 0 ? 1 : -1);
+        p = q;
+    }
+}
+}  // namespace
+
+std::vector<Interval> m_intervals(const Material& m, double Y, int d) {
+    struct X {
+        double x;
+        int mask;
+    };
+    // Only the elements of M near the line matter (YIndex): the crossings, the
+    // boundary within kTol, and the winding numbers by the crossings of a ray.
+    if (!m.m_index.built_for(m.M)) m.m_index.build(m.M, 10 * kTol);
+    std::vector<int> near;
+    m.m_index.query(Y, near);
+    std::sort(near.begin(), near.end());
+    std::vector<X> xs;
+    std::vector<double> tmp;
+    std::vector<std::pair<double, int>> ray;
+    for (int i : near) {
+        tmp.clear();
+        cross_h(m.M[size_t(i)], Y, tmp);
+        for (double x : tmp) xs.push_back({x, 1 << m.kind[size_t(i)]});
+        ray_crossings(m.M[size_t(i)], Y, ray);
+    }
+    std::sort(xs.begin(), xs.end(), [](const X& a, const X& b) { return a.x < b.x; });
+    std::vector<X> pts;
+    for (const X& x : xs) {
+        if (!pts.empty() && x.x - pts.back().x <= kTol)
+            pts.back().mask |= x.mask;
+        else
+            pts.push_back(x);
+    }
+    auto kind_of = [](int mask) {
+        if (mask & (1 << kStock)) return int(kStock);
+        if (mask & (1 << kClosing)) return int(kClosing);
+        return int(kProfile);
+    };
+    // Winding number right of x: the sum of the crossings beyond it.
+    std::sort(ray.begin(), ray.end());
+    std::vector<int> beyond(ray.size() + 1, 0);
+    for (size_t i = ray.size(); i-- > 0;) beyond[i] = beyond[i + 1] + ray[i].second;
+    // On the boundary: the elements whose extent along x holds the point, swept
+    // with the midpoints, which come in rising x.
+    auto x_lo = [&](int i) {
+        const Elem& e = m.M[size_t(i)];
+        return (e.arc ? e.c.x() - e.r() : std::min(e.a.x(), e.b.x())) - 10 * kTol;
+    };
+    auto x_hi = [&](int i) {
+        const Elem& e = m.M[size_t(i)];
+        return (e.arc ? e.c.x() + e.r() : std::max(e.a.x(), e.b.x())) + 10 * kTol;
+    };
+    std::vector<std::pair<double, int>> by_lo;
+    for (int i : near) by_lo.push_back({x_lo(i), i});
+    std::sort(by_lo.begin(), by_lo.end());
+    std::vector<int> active;
+    size_t next = 0;
+    auto inside = [&](double x) {
+        while (next < by_lo.size() && by_lo[next].first <= x) active.push_back(by_lo[next++].second);
+        V2 q(x, Y);
+        for (size_t k = 0; k < active.size();) {
+            int i = active[k];
+            if (x_hi(i) < x) {  // behind the sweep for good
+                active[k] = active.back();
+                active.pop_back();
+                continue;
+            }
+            if (dist(m.M[size_t(i)], q) <= kTol) return true;
+            ++k;
+        }
+        auto it = std::upper_bound(ray.begin(), ray.end(), std::pair<double, int>(x, 2));
+        return beyond[size_t(it - ray.begin())] != 0;
+    };
+    // Runs of inside sub-intervals, as index ranges into pts.
+    std::vector<std::pair<size_t, size_t>> runs;
+    bool open = false;
+    for (size_t j = 0; j + 1 < pts.size(); ++j) {
+        bool in = inside((pts[j].x + pts[j + 1].x) / 2);
+        if (in && open)
+            runs.back().second = j + 1;
+        else if (in)
+            runs.push_back({j, j + 1});
+        open = in;
+    }
+    std::vector<Interval> out;
+    for (auto [i, j] : runs)
+        out.push_back({pts[i].x, pts[j].x, kind_of(d > 0 ? pts[i].mask : pts[j].mask),
+                       kind_of(d > 0 ? pts[j].mask : pts[i].mask)});
+    return out;
+}
+
+std::vector<std::pair<double, double>> free_runs(const Material& m, double Y, double x0, double x1,
+                                                 int d) {
+    std::vector<std::pair<double, double>> runs;
+    if ((x1 - x0) * d <= 0) return runs;
+    std::vector<double> xs;
+    // Outside the part, meeting the profile means entering the part: the runs
+    // end there whatever A says (A is only decided outside the part).
+    for (const Elem& e : m.F) cross_h(e, Y, xs);
+    for (double x : xs)
+        if ((x - x0) * d > kTol && (x1 - x) * d > 0) x1 = x;
+    xs.clear();
+    for (const Elem& e : m.U) cross_h(e, Y, xs);
+    std::vector<double> cuts{x0};
+    for (double x : xs)
+        if ((x - x0) * d > kTol && (x1 - x) * d > kTol) cuts.push_back(x);
+    cuts.push_back(x1);
+    std::sort(cuts.begin(), cuts.end(), [d](double a, double b) { return a * d < b * d; });
+    if (m.zero()) {  // the run ends where the line meets the profile
+        if (!m.in_A(V2(x0, Y)) || std::fabs(cuts[1] - x0) > kTol) runs.push_back({x0, cuts[1]});
+        return runs;
+    }
+    bool open = false;
+    for (size_t j = 0; j + 1 < cuts.size(); ++j) {
+        double a = cuts[j], b = cuts[j + 1];
+        if (std::fabs(b - a) <= kTol) continue;
+        bool free = !m.in_A(V2((a + b) / 2, Y));
+        if (free && open)
+            runs.back().second = b;
+        else if (free)
+            runs.push_back({a, b});
+        open = free;
+    }
+    return runs;
+}
+
+bool seg_clear(const Material& m, const V2& p, const V2& q) {
+    double len = (q - p).norm();
+    if (len < kTol) return !m.in_A(p);
+    Elem s = line(p, q);
+    std::vector<double> ts{0, 1};
+    std::vector<V2> pts;
+    for (const Elem& e : m.F) {
+        pts.clear();
+        intersect(e, s, pts);
+        for (const V2& x : pts) {
+            double t = (x - p).dot(q - p) / (len * len);
+            if (t * len > kTol && (1 - t) * len > kTol) return false;  // into the part
+        }
+    }
+    for (const Elem& e : m.U) {
+        pts.clear();
+        intersect(e, s, pts);
+        for (const V2& x : pts) ts.push_back((x - p).dot(q - p) / (len * len));
+    }
+    std::sort(ts.begin(), ts.end());
+    for (size_t j = 0; j + 1 < ts.size(); ++j) {
+        if ((ts[j + 1] - ts[j]) * len <= kTol) continue;
+        if (m.zero() && ts[j] * len > kTol) return false;  // meets the profile on the way
+        if (m.in_A(p + (ts[j] + ts[j + 1]) / 2 * (q - p))) return false;
+    }
+    return true;
+}
+
+int check_profile(const Profile& f, std::string& why) {
+    if (f.elems.empty()) {
+        why = "the finished profile has no element";
+        return 871;
+    }
+    for (size_t i = 0; i + 1 < f.elems.size(); ++i)
+        if ((f.elems[i].b - f.elems[i + 1].a).norm() > kUm) {
+            why = "the finished profile is not continuous";
+            return 871;
+        }
+    return 0;
+}
+
+int check_axis(const std::vector<Elem>& es, const char* what, std::string& why) {
+    for (const Elem& e : es)
+        if (min_y(e) < -kUm) {
+            why = std::string(what) + " crosses the spindle axis (X below 0)";
+            return 874;
+        }
+    return 0;
+}
+
+V2 centroid(const std::vector<Elem>& es) {
+    V2 sum(0, 0);
+    double w = 0;
+    for (const Elem& e : es) {
+        double l = length(e);
+        sum += l * midpoint(e);
+        w += l;
+    }
+    if (w > kTol) return sum / w;
+    return es.empty() ? V2(0, 0) : es.front().a;
+}
+
+void Emit::go(int g, const V2& p, bool infeed, double dwell) {
+    if ((p - cur).norm() <= kTol && dwell == 0) return;
+    Move mv;
+    mv.g = g;
+    mv.to = fr.back(p);
+    mv.infeed = infeed;
+    mv.dwell = dwell;
+    out.push_back(mv);
+    cur = p;
+}
+
+}  // namespace pupitre::turning::zone

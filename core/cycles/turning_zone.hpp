@@ -1,0 +1,96 @@
+// The material region of a roughing cycle and its allowance zone (internal to
+// core/turning_*.cpp), in a geom::Frame where passes run along x and the
+// material lies above the part. G64, G65 and G63 cut what lies inside the
+// material region M and outside the zone A = finished part + allowance.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/cycles/turning.hpp"
+#include "core/cycles/turning_geom.hpp"
+
+namespace pupitre::turning::zone {
+
+using geom::Elem;
+using geom::Frame;
+
+// Kinds of the edges of M.
+enum Kind { kStock = 0, kClosing = 1, kProfile = 2 };
+
+// The elements of a loop by their extent along y: the ones a level line can
+// meet. A centred interval tree: a G64 on a stock of thousands of points asks
+// hundreds of thousands of level lines, each meeting a few elements.
+class YIndex {
+public:
+    void build(const std::vector<Elem>& es, double pad);
+    bool built_for(const std::vector<Elem>& es) const { return src_ == es.data() && n_ == es.size(); }
+    // Appends the elements whose extent, widened by the pad, holds y.
+    void query(double y, std::vector<int>& out) const;
+
+private:
+    struct Node {
+        double c = 0;
+        int left = -1, right = -1;
+        std::vector<int> by_lo, by_hi;  // the elements holding c, by rising low / falling high end
+    };
+    int make(std::vector<int>& ids);
+    std::vector<Node> nodes_;
+    std::vector<double> lo_, hi_;
+    const Elem* src_ = nullptr;
+    size_t n_ = 0;
+};
+
+struct Material {
+    std::vector<Elem> M;    // closed boundary of the material region (may be empty)
+    std::vector<int> kind;  // per edge of M
+    std::vector<Elem> F;    // the finished profile as called
+    std::vector<Elem> U;    // curves that hold the boundary of A
+    V2 t{0, 0};             // paraxial allowance: A = part swept by t (G64, G65)
+    double er = 0;          // normal allowance: A = points nearer F than er (G63)
+    bool normal = false;
+
+    // The allowance: call one of these once F is set.
+    void translate(const V2& allowance);
+    void offset(double allowance);
+
+    bool in_A(const V2& q) const;  // strictly inside A, or on F
+    // Without allowance A is F itself: a pass stops where it meets F.
+    bool zero() const { return normal ? er < geom::kTol : t.norm() < geom::kTol; }
+    bool in_M(const V2& q) const;  // inside M or on its boundary
+    mutable YIndex m_index;        // of M, built by m_intervals when M is new
+};
+
+struct Interval {
+    double a = 0, b = 0;   // a < b
+    int front = kProfile;  // kind of the end the tool meets first (against d)
+    int back = kProfile;   // kind of the other end
+};
+
+// The parts of the line y = Y inside M, in increasing x.
+std::vector<Interval> m_intervals(const Material& m, double Y, int d);
+// The runs of the line y = Y outside A between x0 and x1, travelled in direction
+// d (x1 lies beyond x0 in direction d); each run is (start, end) along d.
+std::vector<std::pair<double, double>> free_runs(const Material& m, double Y, double x0, double x1,
+                                                 int d);
+// The segment p-q never enters A.
+bool seg_clear(const Material& m, const V2& p, const V2& q);
+
+// 0, or 871 with `why` when the profile is empty or not continuous.
+int check_profile(const Profile& f, std::string& why);
+// 0, or 874 when a point of the elements lies beyond the spindle axis (r < 0).
+int check_axis(const std::vector<Elem>& es, const char* what, std::string& why);
+
+// Length-weighted centroid of elements (the point itself for a lone point).
+V2 centroid(const std::vector<Elem>& es);
+
+// Collects moves in frame coordinates and writes them in (z, r).
+struct Emit {
+    Frame fr;
+    std::vector<Move>& out;
+    V2 cur;  // frame coordinates
+    void go(int g, const V2& p, bool infeed = false, double dwell = 0);
+};
+
+}  // namespace pupitre::turning::zone

@@ -1,0 +1,714 @@
+// The interpreter's control flow: fetching blocks, the G77 call stack, G79 jumps,
+// M02 and error 20, the block budget, settings and E parameters.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+
+#include "core/interp/gate.hpp"
+#include "core/interp/plan.hpp"
+
+namespace pupitre {
+
+Interpreter::Interpreter(const MachineProfile& m, ProgramMemory& mem, MachineSink& sink,
+                         RunOptions o)
+    : m_(m), mem_(mem), sink_(sink), gate_(std::make_unique<GateSink>(sink)), out_(*gate_), opt_(o) {
+    power_on();
+}
+
+Interpreter::~Interpreter() = default;
+
+void Interpreter::power_on() {
+    modal_ = Modal{};
+    modal_.plane = m_.lathe ? 18 : 17;
+    modal_.radius_x = m_.lathe && !m_.x_diameter;
+    frames_ = Frames{};
+    frames_.pref = m_.pref;
+    frames_.dec1 = m_.dec1;
+    gauge_pending_.reset();
+    mach_ = m_.home;
+    rpm_ = 0;
+    recompute_program_pos();
+    // The power-on spindle state (stopped, no range) is not an event.
+    last_sp_ = SpindleEvent{};
+    sp_emitted_ = true;
+    if (opt_.require_homing) homed_.reset();
+    else homed_.set();
+    update_travel();
+}
+
+// RAZ (turning.md §8.3): the run is abandoned, the modal state is the one of
+// M02, the alarms are acknowledged. Positions, origins, correctors and the L
+// variables stay: RAZ moves nothing and forgets no setting.
+void Interpreter::raz() {
+    stack_.clear();
+    main_ = nullptr;
+    imd_ = false;
+    gate_->holding = false;
+    gate_->queue.clear();
+    comp_ = Comp{};
+    pgp_.start(pgp::V2(0, 0));
+    pgp_ctx_.clear();
+    g64_pending_ = false;
+    g64_stock_.clear();
+    cyc_ = CycleParams{};
+    reset_modal_m02();
+    diags_.clear();
+    ended_ = true;
+    first_move_ = true;
+}
+
+void Interpreter::text_changed(const ProgramText* p) {
+    std::string_view all = *p->text;
+    auto offset_of = [&](int line) {
+        size_t pos = p->begin;
+        for (int l = p->first_line; l < line && pos < p->end; ++l) {
+            size_t eol = all.find('\n', pos);
+            pos = eol == std::string_view::npos ? p->end : eol + 1;
+        }
+        return std::min(pos, p->end);
+    };
+    for (Frame& f : stack_) {
+        if (f.prog != p) continue;
+        f.pos = offset_of(f.line);
+        f.range_pos = offset_of(f.range_line);
+    }
+}
+
+long Interpreter::next_label(int* line) const {
+    if (ended_ || stack_.empty()) return -1;
+    const Frame& f = stack_.back();
+    if (line) *line = f.line;
+    if (f.pos >= f.prog->end) return -1;
+    std::string_view all = *f.prog->text;
+    size_t eol = all.find('\n', f.pos);
+    if (eol == std::string_view::npos || eol > f.prog->end) eol = f.prog->end;
+    return line_label(all.substr(f.pos, eol - f.pos));
+}
+
+bool Interpreter::start_imd(const ProgramText* p) {
+    start(p);
+    imd_ = true;
+    return true;
+}
+
+int Interpreter::jog(int axis, double delta, std::string& why) {
+    if (!m_.has(axis)) {
+        why = std::string("the machine has no ") + kAxisNames[size_t(axis)] + " axis";
+        return 1;
+    }
+    Axes to = mach_;
+    to[size_t(axis)] += delta;
+    size_t before = diags_.size();
+    bool ended = ended_;
+    auto homed = homed_;
+    homed_.set();  // the operator may jog before the POM; programs may not
+    bool ok = check_travel(to);
+    homed_ = homed;
+    if (!ok) {
+        why = diags_.back().detail;
+        int code = diags_.back().code;
+        diags_.resize(before);  // a refused jog is a message, not an alarm
+        ended_ = ended;
+        return code;
+    }
+    mach_ = to;
+    recompute_program_pos();
+    return 0;
+}
+
+void Interpreter::home(int axis) {
+    if (!m_.has(axis)) return;
+    mach_[size_t(axis)] = m_.home[size_t(axis)];
+    homed_.set(size_t(axis));
+    recompute_program_pos();
+}
+
+// The travel checked on every move: the profile's, narrowed by the dynamic limits
+// a program writes into E6x002 / E6x003.
+void Interpreter::update_travel() {
+    for (int a = 0; a < kAxes; ++a) {
+        const AxisConfig& c = m_.axes[size_t(a)];
+        travel_lo_[size_t(a)] = c.present ? c.min : -1e300;
+        travel_hi_[size_t(a)] = c.present ? c.max : 1e300;
+        double unit = is_rotary(a) ? 1e-4 : 1e-3;
+        int base = 60000 + 1000 * a;
+        if (auto it = e_raw_.find(base + 2); it != e_raw_.end())
+            travel_lo_[size_t(a)] = std::max(travel_lo_[size_t(a)], double(it->second) * unit);
+        if (auto it = e_raw_.find(base + 3); it != e_raw_.end())
+            travel_hi_[size_t(a)] = std::min(travel_hi_[size_t(a)], double(it->second) * unit);
+    }
+}
+
+bool Interpreter::has_errors() const {
+    return std::any_of(diags_.begin(), diags_.end(), [](const Diag& d) { return d.is_error(); });
+}
+
+double Interpreter::to_display(int axis, double internal) const {
+    if (axis == X && m_.lathe && m_.x_diameter && !modal_.radius_x) return internal * 2;
+    return internal;
+}
+
+StepResult Interpreter::fail(int code, std::string detail, int column) {
+    Diag d;
+    d.code = code;
+    d.file = stack_.empty() ? (main_ ? main_->file : std::string()) : stack_.back().prog->file;
+    d.program = loc_.prog;
+    d.line = loc_.line;
+    d.n = loc_.n;
+    d.column = column ? column : col_;
+    d.detail = std::move(detail);
+    diags_.push_back(std::move(d));
+    ended_ = true;
+    return StepResult::error;
+}
+
+void Interpreter::warn(int code, std::string detail) {
+    Diag d;
+    d.severity = Severity::warning;
+    d.code = code;
+    d.file = stack_.empty() ? std::string() : stack_.back().prog->file;
+    d.program = loc_.prog;
+    d.line = loc_.line;
+    d.n = loc_.n;
+    d.detail = std::move(detail);
+    // One warning of a kind per line is enough (a loop would repeat it).
+    for (const auto& o : diags_)
+        if (o.code == d.code && o.line == d.line && o.file == d.file) return;
+    diags_.push_back(std::move(d));
+}
+
+void Interpreter::recompute_program_pos() { prog_ = frames_.to_program(mach_); }
+
+double Interpreter::gauge_for(int d, int axis) const {
+    if (d <= 0) return 0;
+    const Corrector& c = corr_[size_t(d)];
+    if (m_.lathe) {
+        // Corrected X length = gauge X + DX/2 (000:879); Z = gauge Z + DZ.
+        if (axis == X) return c.x + c.dx / 2;
+        if (axis == Z) return c.z + c.dz;
+        return 0;
+    }
+    if (axis != modal_.tool_axis) return 0;
+    double len = c.l + c.dl;
+    return modal_.tool_axis_neg ? -len : len;
+}
+
+// The gauge of a new corrector is applied on an axis at the first block that
+// programs that axis (turning.md §3.4, 000:843-865; milling.md §4.3.3).
+void Interpreter::apply_corrector_gauges(const std::bitset<kAxes>& programmed) {
+    if (gauge_pending_.none()) return;
+    for (int a = 0; a < kAxes; ++a) {
+        if (programmed[size_t(a)] && gauge_pending_[size_t(a)]) {
+            frames_.gauge[size_t(a)] = gauge_for(modal_.d, a);
+            gauge_pending_.reset(size_t(a));
+        }
+    }
+}
+
+void Interpreter::note_tool(int t) {
+    if (std::find(tools_used_.begin(), tools_used_.end(), t) == tools_used_.end())
+        tools_used_.push_back(t);
+}
+
+namespace {
+bool parse_double(std::string_view s, double& v) {
+    auto r = std::from_chars(s.data(), s.data() + s.size(), v);
+    return r.ec == std::errc() && r.ptr == s.data() + s.size();
+}
+}  // namespace
+
+std::string Interpreter::set(std::string_view name, double value, bool immediate) {
+    auto axis_suffix = [&](std::string_view prefix, int& axis) {
+        if (name.size() != prefix.size() + 2 || name.substr(0, prefix.size()) != prefix ||
+            name[prefix.size()] != '.')
+            return false;
+        axis = axis_of(name.back());
+        return axis >= 0;
+    };
+    int axis;
+    if (axis_suffix("PREF", axis) || axis_suffix("DEC1", axis) || axis_suffix("DEC3", axis)) {
+        if (!m_.has(axis)) return "axis " + std::string(1, name.back()) + " is not on " + m_.name;
+        Axes& which = name[0] == 'P' ? frames_.pref : name[3] == '1' ? frames_.dec1 : frames_.dec3;
+        which[size_t(axis)] = value;
+        if (immediate) recompute_program_pos();
+        return {};
+    }
+    if (name.size() >= 2 && name[0] == 'L') {
+        double n;
+        if (!parse_double(name.substr(1), n) || !LVars::valid(int(n)) || n != std::floor(n))
+            return "no such L variable (L0-L19, L100-L199, L900-L959)";
+        l_.v[size_t(n)] = value;
+        l_.written.set(size_t(n));
+        return {};
+    }
+    if (name.size() >= 2 && name[0] == 'E') {
+        double n;
+        if (!parse_double(name.substr(1), n) || n != std::floor(n)) return "bad E parameter number";
+        if (value != std::floor(value)) return "E parameters hold integers (internal units)";
+        std::string why;
+        int rc = write_e(int(n), int64_t(value), why);
+        e_written_.erase(int(n));  // a setting, not a write by the program
+        if (rc) return why;
+        return {};
+    }
+    if (name.size() >= 4 && name[0] == 'D') {
+        size_t dot = name.find('.');
+        double d;
+        if (dot == std::string_view::npos || !parse_double(name.substr(1, dot - 1), d) ||
+            d < 1 || d > m_.correctors || d != std::floor(d))
+            return "corrector must be D1 to D" + std::to_string(m_.correctors);
+        Corrector& c = corr_[size_t(d)];
+        std::string_view f = name.substr(dot + 1);
+        if (m_.lathe) {
+            if (f == "X") c.x = value;
+            else if (f == "Z") c.z = value;
+            else if (f == "R") c.r = value;
+            else if (f == "C") c.c = int(value);
+            else if (f == "DX") c.dx = value;
+            else if (f == "DZ") c.dz = value;
+            else return "lathe correctors have X Z R C DX DZ";
+        } else {
+            if (f == "L") c.l = value;
+            else if (f == "R") c.r = value;
+            else if (f == "DL") c.dl = value;
+            else if (f == "DR") c.dr = value;
+            else if (f == "A" || f == "TIP") c.tip = value;
+            else return "mill correctors have L R DL DR and the end radius A";
+        }
+        // The active corrector's new gauge applies at the next move of each of
+        // its axes (turning.md §3.4); a new radius at the next G41/G42.
+        if (int(d) == modal_.d) {
+            if (m_.lathe) gauge_pending_.set(X), gauge_pending_.set(Z);
+            else gauge_pending_.set(size_t(modal_.tool_axis));
+        }
+        return {};
+    }
+    return "unknown setting (PREF.X, DEC1.Z, DEC3.Y, D1.R, L5, E80000…)";
+}
+
+bool Interpreter::get(std::string_view name, double& out) const {
+    int axis = name.size() >= 6 && name[name.size() - 2] == '.' ? axis_of(name.back()) : -1;
+    if (axis >= 0 && (name.substr(0, 5) == "PREF." || name.substr(0, 5) == "DEC1." || name.substr(0, 5) == "DEC3.")) {
+        const Axes& which = name[0] == 'P' ? frames_.pref : name[3] == '1' ? frames_.dec1 : frames_.dec3;
+        out = which[size_t(axis)];
+        return true;
+    }
+    if (name.size() >= 4 && name[0] == 'D') {
+        size_t dot = name.find('.');
+        double d;
+        if (dot == std::string_view::npos || !parse_double(name.substr(1, dot - 1), d) || d < 1 || d > 255)
+            return false;
+        const Corrector& c = corr_[size_t(d)];
+        std::string_view f = name.substr(dot + 1);
+        if (m_.lathe) {
+            if (f == "X") out = c.x;
+            else if (f == "Z") out = c.z;
+            else if (f == "R") out = c.r;
+            else if (f == "C") out = c.c;
+            else if (f == "DX") out = c.dx;
+            else if (f == "DZ") out = c.dz;
+            else return false;
+        } else {
+            if (f == "L") out = c.l;
+            else if (f == "R") out = c.r;
+            else if (f == "DL") out = c.dl;
+            else if (f == "DR") out = c.dr;
+            else return false;
+        }
+        return true;
+    }
+    return false;
+}
+
+bool Interpreter::start(int program) {
+    const ProgramText* p = mem_.find(program);
+    if (!p) {
+        fail(25, "program %" + std::to_string(program) + " is not in memory");
+        return false;
+    }
+    return start(p);
+}
+
+bool Interpreter::start(const ProgramText* p) {
+    main_ = p;
+    seen_states_.clear();  // a new run: states of the last one are no repetition
+    imd_ = false;
+    stack_.clear();
+    loaded_size_ = mem_.size();
+    Frame f;
+    f.prog = p;
+    f.pos = p->begin;
+    f.line = p->first_line;
+    stack_.push_back(f);
+    ended_ = false;
+    loc_ = Loc{p->number, p->first_line, -1};
+    return true;
+}
+
+bool Interpreter::fetch(std::string_view& line, int& lineno) {
+    while (!stack_.empty()) {
+        Frame& f = stack_.back();
+        if (f.pos >= f.prog->end) {
+            if (!end_of_frame()) return false;
+            continue;
+        }
+        std::string_view all = *f.prog->text;
+        size_t eol = all.find('\n', f.pos);
+        if (eol == std::string_view::npos || eol > f.prog->end) eol = f.prog->end;
+        line = all.substr(f.pos, eol - f.pos);
+        lineno = f.line;
+        f.pos = eol + 1;
+        ++f.line;
+        return true;
+    }
+    return false;
+}
+
+// The text of a frame's program has ended.
+bool Interpreter::end_of_frame() {
+    Frame& f = stack_.back();
+    if (imd_ && (f.prog == main_ || stack_.size() == 1)) {
+        // The end of an IMD fragment: the blocks typed are done, the state stays.
+        stack_.clear();
+        ended_ = true;
+        out_.end(loc_, 0);
+        return false;
+    }
+    if (f.prog == main_ || stack_.size() == 1) {
+        // Error 20 only for the main program (DESIGN §3, spec README (b) 28).
+        loc_.line = f.line - 1;
+        loc_.n = -1;
+        fail(20, "end of program %" + std::to_string(main_->number) + " without M02");
+        out_.end(loc_, 0);
+        return false;
+    }
+    if (f.whole && --f.repeats > 0) {
+        f.pos = f.range_pos;
+        f.line = f.range_line;
+        return true;
+    }
+    stack_.pop_back();
+    after_block(stack_.back().line - 1);
+    return true;
+}
+
+// After the block at `lineno` of the top frame: the end of a G77 range.
+void Interpreter::after_block(int lineno) {
+    while (stack_.size() > 1) {
+        Frame& f = stack_.back();
+        if (f.whole || lineno != f.end_line) return;
+        if (--f.repeats > 0 && !f.emptied) {
+            f.pos = f.range_pos;
+            f.line = f.range_line;
+            return;
+        }
+        Frame done = f;
+        stack_.pop_back();
+        if (done.prog != stack_.back().prog) {
+            // External range: the state before the call is restored (000:6737).
+            modal_.radcomp = done.saved_radcomp;
+            bool changed = modal_.spindle_dir != done.saved_dir || modal_.range != done.saved_range ||
+                           modal_.s != done.saved_s;
+            modal_.spindle_dir = done.saved_dir;
+            modal_.range = done.saved_range;
+            modal_.s = done.saved_s;
+            if (changed) set_spindle_event();
+            if (modal_.m7 != done.saved_m7 || modal_.m8 != done.saved_m8) {
+                modal_.m7 = done.saved_m7;
+                modal_.m8 = done.saved_m8;
+                out_.coolant(loc_, modal_.m7, modal_.m8);
+            }
+        }
+        lineno = stack_.back().line - 1;
+    }
+}
+
+bool Interpreter::call(const Plan& p) {
+    const ProgramText* target = stack_.back().prog;
+    if (p.g77_level > 0) {
+        // G77 -i: the return block of level i (spec README (b) 24).
+        int depth = int(stack_.size()) - 1;
+        if (p.g77_level > depth) {
+            fail(26, "G77 -" + std::to_string(p.g77_level) + ": there is no call level " +
+                         std::to_string(p.g77_level) + " (depth " + std::to_string(depth) + ")");
+            return false;
+        }
+        const Frame& caller = stack_[size_t(p.g77_level - 1)];
+        Frame f;
+        f.prog = caller.prog;
+        f.call = true;
+        f.pos = f.range_pos = caller.pos;
+        f.line = f.range_line = f.end_line = caller.line;
+        stack_.push_back(f);
+        return true;
+    }
+    if (p.g77_h >= 0) {
+        target = mem_.find(p.g77_h);
+        if (!target) {
+            fail(25, "G77 H" + std::to_string(p.g77_h) + ": program %" + std::to_string(p.g77_h) +
+                         " is not in memory");
+            return false;
+        }
+    }
+    if (stack_.size() > 8) {
+        fail(26, "more than 8 nested G77 calls");
+        return false;
+    }
+    Frame f;
+    f.prog = target;
+    f.call = true;
+    f.repeats = p.g77_s;
+    f.saved_radcomp = modal_.radcomp;
+    f.saved_dir = modal_.spindle_dir;
+    f.saved_range = modal_.range;
+    f.saved_s = modal_.s;
+    f.saved_m7 = modal_.m7;
+    f.saved_m8 = modal_.m8;
+    if (p.g77_nn == 0) {
+        if (p.g77_h < 0) {
+            fail(25, "G77 needs H (a program) or N labels");
+            return false;
+        }
+        f.whole = true;
+        f.pos = f.range_pos = target->begin;
+        f.line = f.range_line = target->first_line;
+    } else {
+        const Label* a = target->find_label(p.g77_n[0]);
+        const Label* b = target->find_label(p.g77_nn > 1 ? p.g77_n[1] : p.g77_n[0]);
+        if (!a || !b) {
+            long missing = !a ? p.g77_n[0] : p.g77_n[1];
+            fail(25, "G77: block N" + std::to_string(missing) + " not found in %" +
+                         std::to_string(target->number));
+            return false;
+        }
+        // G77 N50 N30 runs the same range as G77 N30 N50, in file order (004:896).
+        if (b->line < a->line) std::swap(a, b);
+        f.pos = f.range_pos = a->offset;
+        f.line = f.range_line = a->line;
+        f.end_line = b->line;
+    }
+    stack_.push_back(f);
+    return true;
+}
+
+bool Interpreter::jump(long label) {
+    Frame& f = stack_.back();
+    const Label* l = f.prog->find_label(label);
+    if (!l) {
+        fail(25, "G79: block N" + std::to_string(label) + " not found in %" +
+                     std::to_string(f.prog->number));
+        return false;
+    }
+    if (l->offset < f.pos) {
+        f.pos = l->offset;  // the state as the jump leaves it
+        f.line = l->line;
+        if (!note_backward_jump(label)) return false;
+    }
+    f.pos = l->offset;
+    f.line = l->line;
+    return true;
+}
+
+StepResult Interpreter::step() {
+    if (ended_) return has_errors() ? StepResult::error : StepResult::ended;
+    std::string_view line;
+    int lineno;
+    for (;;) {
+        if (!fetch(line, lineno)) return ended_ ? (has_errors() ? StepResult::error : StepResult::ended)
+                                                : StepResult::ended;
+        loc_ = Loc{stack_.back().prog->number, lineno, -1};
+        cur_text_ = line;
+        cur_line_ = lineno;
+        Diag& d = parse_diag_;
+        if (!parse_block(line, block_, d)) {
+            loc_.n = line_label(line);
+            return fail(d.code, d.detail, d.column);
+        }
+        loc_.n = block_.n;
+        if (block_.skip && opt_.block_skip) {
+            after_block(lineno);
+            continue;
+        }
+        if (block_.empty()) {
+            after_block(lineno);
+            continue;
+        }
+        break;
+    }
+    if (++blocks_ > opt_.max_blocks)
+        return fail(err::kBlockBudget, "more than " + std::to_string(opt_.max_blocks) +
+                                           " blocks executed: endless loop? (G79/G77)");
+    // The work done, not only the blocks: one cycle block makes many moves.
+    if (moves_ > 2 * opt_.max_blocks)
+        return fail(err::kBlockBudget, "more than " + std::to_string(2 * opt_.max_blocks) +
+                                           " moves made: endless loop? (G79/G77)");
+    size_t depth = stack_.size();
+    StepResult r = execute(block_);
+    if (r == StepResult::error || ended_) return r;
+    // A call pushed a frame: the range end of the caller is checked on return.
+    if (stack_.size() == depth) after_block(cur_line_);
+    return r;
+}
+
+StepResult Interpreter::run_to_end() {
+    for (;;) {
+        StepResult r = step();
+        if (r == StepResult::running || r == StepResult::stopped) continue;
+        return r;
+    }
+}
+
+// ---- E parameters (program-flow.md §9, eparams.tsv) ----
+
+int Interpreter::e_rights(int n, bool write, std::string& why) const {
+    auto ro = [&]() {
+        if (!write) return 0;
+        why = "E" + std::to_string(n) + " is read-only";
+        return 95;
+    };
+    int type = n / 10000;
+    int x = (n / 1000) % 10;  // axis index for E6x/E7x
+    int k = n % 1000;
+    if (n >= 10000 && n <= 10031) return 0;
+    if (n >= 20000 && n <= 20031) return ro();
+    if (n >= 30000 && n <= 30127) return 0;
+    if (n >= 40000 && n <= 40127) return ro();
+    if (n == 11000 || n == 11001 || n == 11003 || n == 11004 || n == 11005 || n == 11007 || n == 11015)
+        return 0;
+    if (n >= 21000 && n <= 21255) return ro();
+    if (n == 31000 || n == 31001 || n == 32000) return 0;
+    if (n == 41000) return ro();
+    if (n >= 50000 && n <= 50000) return ro();
+    if (n == 51000 || n == 52000) return ro();
+    if (type == 5 && k >= 1 && k <= 255 && n < 58000) return 0;
+    if (type == 6 && x <= 8 && k <= 5) return 0;
+    if (n == 69000) return 0;
+    if (type == 7 && x <= 8 && k <= 6) return (k == 5 || k == 6) ? 0 : ro();
+    if (n >= 79000 && n <= 79004) return n == 79003 ? 0 : ro();
+    if (n >= 80000 && n <= 80049) return 0;
+    if (n == 81000 || n == 82000) return 0;
+    if (n >= 90000 && n <= 93007 && (n % 1000) <= 7) return ro();
+    why = "E" + std::to_string(n) + " does not exist";
+    return 91;
+}
+
+namespace {
+int64_t um(double mm) { return int64_t(std::llround(mm * 1000.0)); }
+double mm_of(int64_t v) { return double(v) / 1000.0; }
+}  // namespace
+
+// An E access stops the block preparation: not under compensation (140) nor
+// after an incomplete profile block (96) (program-flow.md §9.4).
+int Interpreter::e_access(std::string& why) const {
+    if (modal_.radcomp != 40) {
+        why = "E parameter access under radius compensation (G41/G42)";
+        return 140;
+    }
+    if (pgp_.pending()) {
+        why = "E parameter access after an incomplete profile block";
+        return 96;
+    }
+    return 0;
+}
+
+int Interpreter::read_e(int n, int64_t& out, std::string& why) {
+    if (int rc = e_access(why)) return rc;
+    if (int rc = e_rights(n, false, why)) return rc;
+    int x = (n / 1000) % 10, k = n % 1000, type = n / 10000;
+    auto unit = [&](int axis, double v) { return is_rotary(axis) ? int64_t(std::llround(v * 1e4)) : um(v); };
+    out = 0;
+    if (n == 11005) out = (m_.lathe && m_.x_diameter && !modal_.radius_x) ? 1 : 0;
+    else if (n == 11000) out = frames_.ed != 0;
+    else if (n == 11003) out = frames_.mirror.any();
+    else if (n == 11004) out = frames_.scale_on;
+    else if (n >= 21000 && n <= 21255) out = 1;
+    else if (n == 50000) out = modal_.d;
+    else if (n == 51000) out = corr_[size_t(modal_.d)].c;
+    else if (n == 52000) out = um(corr_[size_t(modal_.d)].r);
+    else if (type == 5 && k >= 1 && k <= 255 && n < 56000) {
+        const Corrector& c = corr_[size_t(k)];
+        int fam = (n / 1000) % 10;
+        if (m_.lathe) {
+            double v[] = {c.x, c.z, c.r, c.dx, c.dz};
+            out = fam == 5 ? c.c : um(v[fam]);
+        } else {
+            double v[] = {c.l, c.tip, c.r, c.dl, c.dr};
+            out = fam == 5 ? c.c : um(v[fam]);
+        }
+    } else if (type == 6 && x <= 8 && k <= 5) {
+        const Axes* src[] = {&frames_.pref, &frames_.dec1, nullptr, nullptr, &frames_.dec3, &frames_.g59};
+        if (src[k]) out = unit(x, (*src[k])[size_t(x)]);
+        else if (e_raw_.count(n)) out = e_raw_[n];
+        else out = unit(x, k == 2 ? m_.axes[size_t(x)].min : m_.axes[size_t(x)].max);
+    } else if (n == 69000) {
+        out = e_raw_.count(n) ? e_raw_[n] : 1000;
+    } else if (n == 73000 || n == 74000) {
+        out = 0;
+    } else if (type == 7 && x <= 8 && k <= 6) {
+        if (k == 0 || k == 1) out = unit(x, prog_[size_t(x)]);
+        else if (k == 2) out = unit(x, m_.axes[size_t(x)].min);
+        else if (k == 3) out = unit(x, m_.axes[size_t(x)].max);
+        else out = e_raw_.count(n) ? e_raw_[n] : 0;
+    } else if (n == 79001) {
+        out = int64_t(std::llround(rpm_));
+    } else if (n == 79002) {
+        out = 100;
+    } else {
+        auto it = e_raw_.find(n);
+        out = it == e_raw_.end() ? 0 : it->second;
+    }
+    return 0;
+}
+
+int Interpreter::write_e(int n, int64_t value, std::string& why) {
+    if (int rc = e_access(why)) return rc;
+    if (int rc = e_rights(n, true, why)) return rc;
+    if (value > INT32_MAX || value < INT32_MIN) {
+        why = "value " + std::to_string(value) + " does not fit an E parameter";
+        return 92;
+    }
+    int x = (n / 1000) % 10, k = n % 1000, type = n / 10000;
+    auto from = [&](int axis) { return is_rotary(axis) ? double(value) / 1e4 : mm_of(value); };
+    e_written_[n] = value;
+    if (n == 11005) {
+        if (m_.lathe && m_.x_diameter) modal_.radius_x = value == 0;
+        return 0;
+    }
+    if (type == 5 && k >= 1 && k <= 255 && n < 56000) {
+        Corrector& c = corr_[size_t(k)];
+        int fam = (n / 1000) % 10;
+        if (m_.lathe) {
+            double* f[] = {&c.x, &c.z, &c.r, &c.dx, &c.dz};
+            if (fam == 5) c.c = int(value);
+            else *f[fam] = mm_of(value);
+        } else {
+            double* f[] = {&c.l, &c.tip, &c.r, &c.dl, &c.dr};
+            if (fam == 5) c.c = int(value);
+            else *f[fam] = mm_of(value);
+        }
+        if (k == modal_.d) gauge_pending_.set();
+        return 0;
+    }
+    if (type == 6 && x <= 8 && k <= 5 && k != 2 && k != 3) {
+        Axes* dst[] = {&frames_.pref, &frames_.dec1, nullptr, nullptr, &frames_.dec3, &frames_.g59};
+        (*dst[k])[size_t(x)] = from(x);
+        recompute_program_pos();
+        return 0;
+    }
+    if (n == 69000) {
+        if (value < 1 || value > 9999000) {
+            why = "scale factor E69000 must be 1 to 9999000 (0.001 to 9999)";
+            return 92;
+        }
+        e_raw_[n] = value;
+        frames_.scale = double(value) / 1000.0;
+        recompute_program_pos();
+        return 0;
+    }
+    e_raw_[n] = value;
+    if (type == 6 && (k == 2 || k == 3)) update_travel();
+    return 0;
+}
+
+}  // namespace pupitre

@@ -1,0 +1,294 @@
+// Drilling, boring and tapping cycles G81-G89 (modal: each positioning block
+// drills a hole) and the single-point thread cycle G31, on the machining centre
+// and on the lathe axis (milling.md §6, turning.md §6.7-6.11). A cycle is a
+// sequence of elementary moves along the cycle axis.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <cmath>
+#include <cstdio>
+
+#include "core/interp/plan.hpp"
+
+namespace pupitre {
+
+// The cycle axis: normal to the plane on the mill (Z in G17, Y in G18, X in G19);
+// the G16 tool axis on the lathe (Z for R±, X for P±).
+int Interpreter::cycle_axis() const {
+    if (m_.lathe) return modal_.tool_axis == X ? X : Z;
+    return modal_.plane == 17 ? Z : modal_.plane == 18 ? Y : X;
+}
+
+// One elementary move of a cycle along its axis, or in the plane.
+bool Interpreter::cycle_move(int g, const Axes& target) {
+    bool same = true;
+    for (int a = 0; a < kAxes; ++a) same = same && std::fabs(target[size_t(a)] - prog_[size_t(a)]) < 1e-12;
+    if (same) return true;  // a cycle never makes an empty move
+    prog_next_ = target;
+    Axes mach = frames_.to_machine(target);
+    if (!check_travel(mach)) return false;
+    return linear(g, mach, false, {});
+}
+
+bool Interpreter::cycle_axis_move(int g, double v) {
+    Axes t = prog_;
+    t[size_t(cycle_axis())] = v;
+    return cycle_move(g, t);
+}
+
+bool Interpreter::cycle_dwell(double s) {
+    if (s <= 0) return true;
+    clock_ += s;
+    out_.dwell(loc_, s);
+    return true;
+}
+
+// Reads the cycle words of a block into the modal cycle parameters.
+bool Interpreter::cycle_words(const Plan& p, int code) {
+    CycleParams& c = cyc_;
+    auto ax = cycle_axis();
+    const bool diam = m_.lathe && m_.x_diameter && !modal_.radius_x && ax == X;
+    for (int i = 0; i < p.ncyc; ++i) {
+        Addr a = p.cyc[i].a;
+        double v = p.cyc[i].v;
+        if (a == addrE('R')) c.er = diam ? v / 2 : v, c.has_er = true;
+        else if (a == addrE('H')) c.eh = diam ? v / 2 : v, c.has_eh = true;
+        else if (a == addrE('F')) c.ef = v, c.has_ef = true;
+        else if (a == addr1('P')) c.p = v, c.has_p = true;
+        else if (a == addr1('Q')) c.q = v, c.has_q = true;
+        else if (a == addrE('S')) c.es = v, c.has_es = true;
+        else if (a == addrE('P')) c.ep = v, c.has_ep = true;
+        else if (a == addrE('C')) c.ec = v;
+        else if (a == addrE('A')) c.ea = v;
+        else if (a == addr1('K') || a == addr1('I') || a == addr1('J')) c.k = v, c.has_k = true;
+        else if (a == addrE('K')) c.ek = v;
+        else if (a == addr1('F')) c.starts = v, c.has_starts = true;
+        if ((a == addr1('P') || a == addr1('Q') || a == addrE('S') || a == addr1('K')) && v < 0)
+            return fail(835, std::string(addr_name(a)) + " must be positive in a cycle"), false;
+    }
+    // The bottom is the cycle-axis word, absolute also in G91 (milling.md §6.1.3).
+    if (p.axis[size_t(ax)]) {
+        c.z = p.inc[size_t(ax)] ? prog_[size_t(ax)] + p.val[size_t(ax)] : p.val[size_t(ax)];
+        c.has_z = true;
+    }
+    (void)code;
+    return true;
+}
+
+// One execution of the active cycle at the block's position (milling.md §6.1.5).
+bool Interpreter::cycle_run(const Plan& p, int code) {
+    CycleParams& c = cyc_;
+    const int ax = cycle_axis();
+    // "Up" is the direction of the tool vector (towards the spindle).
+    const double up = (m_.lathe ? (modal_.tool_axis == ax && modal_.tool_axis_neg ? -1 : 1)
+                                : (modal_.tool_axis_neg ? -1 : 1));
+    if (!m_.lathe && modal_.tool_axis != ax)
+        return fail(890, "the tool axis (G16) is not parallel to the cycle axis"), false;
+    if (!c.has_z) return fail(code == 31 ? 883 : 882, "the hole bottom (" + std::string(1, kAxisNames[size_t(ax)]) +
+                                                          ") is not programmed"),
+                  false;
+    const double s = prog_[size_t(ax)];
+    if (!c.has_er) {
+        c.er = s;  // the retract plane defaults to where the cycle starts
+        c.has_er = true;
+    }
+    auto h = [&](double v) { return v * up; };
+    if (std::fabs(c.er - c.z) < 1e-9) return fail(891, "the retract plane ER is the hole bottom"), false;
+    if (h(c.er) < h(c.z)) return fail(881, "the retract plane ER is below the hole bottom"), false;
+    if ((code == 81 || code == 86 || code == 88 || (code == 84 && c.has_k)) && c.has_ef)
+        return fail(888, "no dwell (EF) in G" + std::to_string(code)), false;
+    if ((code == 84 || code == 31) && modal_.spindle_dir != 3 && modal_.spindle_dir != 4)
+        return fail(831, "G" + std::to_string(code) + " with the spindle stopped"), false;
+    if ((code == 83 || code == 87) && !c.has_p && !c.has_es)
+        return fail(2, "G" + std::to_string(code) + " needs P (first peck) or ES (number of pecks)"), false;
+    if ((code == 83 || code == 87) && c.has_p && c.has_q && c.q > c.p)
+        return fail(881, "the last peck Q is larger than the first P"), false;
+    if (code == 31 && (!c.has_k || !c.has_p))
+        return fail(883, "G31 needs the pitch (K) and the retract (P)"), false;
+    if (code == 31 && c.has_starts && (c.starts < 1 || c.starts > 9 || c.starts != std::floor(c.starts)))
+        return fail(884, "G31: the number of starts F must be 1 to 9"), false;
+
+    // 1. Up to ER first if the tool is below it.
+    if (h(prog_[size_t(ax)]) < h(c.er) - 1e-9 && !cycle_axis_move(0, c.er)) return false;
+    // 2. Positioning in the plane with the modal interpolation (%333 moves by G2).
+    std::bitset<kAxes> plane = p.axis;
+    plane.reset(size_t(ax));
+    if (plane.any()) {
+        Plan q = p;
+        q.axis.reset(size_t(ax));
+        Axes target = prog_;
+        for (int a = 0; a < kAxes; ++a)
+            if (q.axis[size_t(a)]) target[size_t(a)] = q.inc[size_t(a)] ? prog_[size_t(a)] + q.val[size_t(a)] : q.val[size_t(a)];
+        bool ok;
+        if (modal_.motion == 2 || modal_.motion == 3) {
+            ok = arc(q, target);
+        } else {
+            ok = cycle_move(modal_.motion == 0 ? 0 : 1, target);
+        }
+        if (!ok) return false;
+    }
+    // 3. Rapid to ER, then to EH.
+    if (std::fabs(prog_[size_t(ax)] - c.er) > 1e-9 && !cycle_axis_move(0, c.er)) return false;
+    double s0 = c.has_eh ? c.eh : c.er;
+    if (c.has_eh && !cycle_axis_move(0, c.eh)) return false;
+    // 4. Machining.
+    const double depth = h(s0) - h(c.z);
+    switch (code) {
+        case 81:
+            if (!cycle_axis_move(1, c.z) || !cycle_axis_move(0, c.er)) return false;
+            break;
+        case 82:
+            if (!cycle_axis_move(1, c.z) || !cycle_dwell(c.ef) || !cycle_axis_move(0, c.er)) return false;
+            break;
+        case 83:
+        case 87: {
+            // Peck law (milling.md §6.5, spec README (b) 18).
+            std::vector<double> pecks;
+            if (c.has_es && c.es >= 1) {
+                int n = int(std::lround(c.es));
+                double first = c.has_p ? c.p : -1, last = c.has_q ? c.q : -1;
+                int fixed = (first > 0) + (last > 0 && n > 1);
+                double rest = depth - std::max(0.0, first) - (n > 1 ? std::max(0.0, last) : 0.0);
+                int shared = n - fixed;
+                if (rest < -1e-9 || (shared == 0 && std::fabs(rest) > 1e-9 && fixed == 0))
+                    return fail(881, "ES, P and Q do not fit the depth of the hole"), false;
+                for (int k = 0; k < n; ++k) {
+                    if (k == 0 && first > 0) pecks.push_back(first);
+                    else if (k == n - 1 && last > 0 && n > 1) pecks.push_back(last);
+                    else pecks.push_back(shared > 0 ? rest / shared : 0);
+                }
+                if (shared == 0 && !pecks.empty()) pecks.back() += rest;  // exact total
+            } else if (c.has_q && c.q < c.p) {
+                int n = std::max(2, int(std::ceil(2 * depth / (c.p + c.q))));
+                double d = (c.p - c.q) / (n - 1);
+                for (int k = 0; k < n; ++k) pecks.push_back(c.p - k * d);
+            } else {
+                int n = std::max(1, int(std::ceil(depth / c.p - 1e-9)));
+                for (int k = 0; k < n; ++k) pecks.push_back(c.p);
+            }
+            double ep = c.has_ep ? c.ep : (code == 83 ? 1.0 : 0.0);
+            double reached = 0;  // depth reached below S0
+            for (size_t k = 0; k < pecks.size() && reached < depth - 1e-9; ++k) {
+                double next = std::min(depth, reached + pecks[k]);
+                if (k + 1 == pecks.size()) next = depth;
+                double v = (h(s0) - next) * up;
+                if (code == 83 && k > 0) {
+                    // Back down to EP above the depth already reached.
+                    if (!cycle_axis_move(0, (h(s0) - reached + ep) * up)) return false;
+                } else if (code == 87 && k > 0 && ep > 0) {
+                    if (!cycle_axis_move(0, (h(s0) - reached + ep) * up)) return false;
+                }
+                if (!cycle_axis_move(1, v) || !cycle_dwell(c.ef)) return false;
+                reached = next;
+                if (reached < depth - 1e-9) {
+                    if (code == 83 && !cycle_axis_move(0, c.er)) return false;  // chip clearing
+                }
+            }
+            if (!cycle_axis_move(0, c.er)) return false;
+            break;
+        }
+        case 84: {
+            int dir = modal_.spindle_dir;
+            Modal saved = modal_;
+            if (c.has_k) {
+                // Rigid tapping: feed = pitch x speed, out at EK x speed (000:5911-5934).
+                double n = spindle_at(prog_[X]);
+                modal_.feed_mode = 94;
+                modal_.feed = c.k * n;
+                modal_.feed_set = true;
+            }
+            if (!cycle_axis_move(1, c.z)) return false;
+            if (!c.has_k && !cycle_dwell(c.has_ef ? c.ef : 1.0)) return false;
+            modal_.spindle_dir = dir == 3 ? 4 : 3;
+            set_spindle_event();
+            if (c.has_k) modal_.feed = c.k * spindle_at(prog_[X]) * (c.ek > 0 ? c.ek : 1.0);
+            if (!cycle_axis_move(1, c.er)) return false;
+            modal_ = saved;
+            set_spindle_event();
+            break;
+        }
+        case 85: {
+            if (!cycle_axis_move(1, c.z)) return false;
+            double f = modal_.feed;
+            if (c.has_ef) modal_.feed = c.ef;  // EF: the retract feed
+            bool ok = cycle_axis_move(1, c.er);
+            modal_.feed = f;
+            if (!ok) return false;
+            break;
+        }
+        case 86: {
+            if (!cycle_axis_move(1, c.z)) return false;
+            int dir = modal_.spindle_dir;
+            modal_.spindle_dir = 19;  // oriented stop at EC
+            set_spindle_event();
+            // Away from the wall: EP opposite to the cutting edge at EC + EA.
+            double ep = c.has_ep ? c.ep : 2.0;
+            int a0 = m_.lathe ? Z : modal_.plane == 17 ? X : modal_.plane == 18 ? Z : Y;
+            int a1 = m_.lathe ? X : modal_.plane == 17 ? Y : modal_.plane == 18 ? X : Z;
+            double th = (c.ec + c.ea) * M_PI / 180;
+            Axes t = prog_;
+            Axes back = prog_;
+            t[size_t(a0)] -= ep * std::cos(th);
+            t[size_t(a1)] -= ep * std::sin(th);
+            if (!cycle_move(0, t) || !cycle_axis_move(0, c.er)) return false;
+            back[size_t(ax)] = c.er;
+            if (!cycle_move(0, back)) return false;
+            modal_.spindle_dir = dir;
+            set_spindle_event();
+            break;
+        }
+        case 88:
+            if (!cycle_axis_move(1, c.z)) return false;
+            out_.stop(loc_, 88);  // the operator validates the facing (004:932)
+            if (!cycle_axis_move(0, c.er)) return false;
+            break;
+        case 89:
+            if (!cycle_axis_move(1, c.z) || !cycle_dwell(c.has_ef ? c.ef : 1.0) || !cycle_axis_move(1, c.er))
+                return false;
+            break;
+        case 31: {
+            // Single-point threading: per start, feed synchronised at K per revolution,
+            // retract P radially, back up to ER (milling.md §6.13 [impl]).
+            int starts = c.has_starts ? int(c.starts) : 1;
+            Modal saved = modal_;
+            int a0 = modal_.plane == 17 ? X : modal_.plane == 18 ? Z : Y;
+            int a1 = modal_.plane == 17 ? Y : modal_.plane == 18 ? X : Z;
+            for (int i = 0; i < starts; ++i) {
+                modal_.feed_mode = 94;
+                modal_.feed = c.k * spindle_at(prog_[X]);
+                modal_.feed_set = true;
+                Axes axis_pos = prog_;
+                if (!cycle_axis_move(1, c.z) || !cycle_dwell(c.has_ef ? c.ef : 0)) return false;
+                Axes t = prog_;
+                double th = c.ec * M_PI / 180;
+                t[size_t(a0)] -= c.p * std::cos(th);
+                t[size_t(a1)] -= c.p * std::sin(th);
+                if (!cycle_move(0, t) || !cycle_axis_move(0, c.er)) return false;
+                axis_pos[size_t(ax)] = c.er;
+                if (!cycle_move(0, axis_pos)) return false;
+            }
+            modal_ = saved;
+            break;
+        }
+        default:
+            break;
+    }
+    return true;
+}
+
+// A block while a cycle is active, or a G31 block (milling.md §6.1.4).
+bool Interpreter::cycle_block(const Plan& p) {
+    if (modal_.radcomp != 40) return fail(140, "machining cycle under radius compensation"), false;
+    const int code = p.g[31] ? 31 : modal_.cycle;
+    if (!cycle_words(p, code)) return false;
+    const int ax = cycle_axis();
+    std::bitset<kAxes> plane = p.axis;
+    plane.reset(size_t(ax));
+    bool written = p.cycle == code || code == 31;
+    if (written || plane.any()) return cycle_run(p, code);
+    // ER alone: go to the new retract plane, no machining (004:956, 000:6393).
+    bool er_only = false;
+    for (int i = 0; i < p.ncyc; ++i) er_only = er_only || p.cyc[i].a == addrE('R');
+    if (er_only && !cycle_axis_move(0, cyc_.er)) return false;
+    return true;
+}
+
+}  // namespace pupitre

@@ -1,0 +1,470 @@
+// Executing one block in the order of turning.md §1.7.5 / milling.md §2.4:
+// assignments, modal changes, avant M, motion, dwell, après M, then G77/G79.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "core/interp/gate.hpp"
+#include "core/interp/plan.hpp"
+
+namespace pupitre {
+
+namespace {
+std::string fmt3(double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.3f", v);
+    return buf;
+}
+}  // namespace
+
+StepResult Interpreter::execute(const Block& b) {
+    // 1. Parametric assignments, left to right.
+    for (const Assign& a : b.assigns) {
+        col_ = a.col;
+        double v;
+        std::string why;
+        if (int rc = eval_expr(b, a.expr, l_, *this, v, why)) return fail(rc, why, a.col);
+        const Operand& t = a.target;
+        if (t.kind == Operand::LVar) {
+            if (!LVars::valid(t.index))
+                return fail(91, "L" + std::to_string(t.index) + " does not exist (L0-L19, L100-L199, L900-L959)", a.col);
+            if (t.index >= 100 && t.index <= 199 && modal_.radcomp != 40)
+                return fail(140, "writing L" + std::to_string(t.index) + " under radius compensation", a.col);
+            if (t.index >= 100 && t.index <= 199 && pgp_.pending())
+                return fail(96, "writing L" + std::to_string(t.index) + " after an incomplete profile block", a.col);
+            l_.v[size_t(t.index)] = v;
+            l_.written.set(size_t(t.index));
+        } else {
+            int n = t.index;
+            if (t.kind == Operand::EIndirect) {
+                if (!LVars::valid(t.index)) return fail(91, "L" + std::to_string(t.index) + " does not exist", a.col);
+                double nn = l_.v[size_t(t.index)];
+                if (nn < 0 || nn > 99999 || nn != std::floor(nn))
+                    return fail(91, "L" + std::to_string(t.index) + " does not hold an E number", a.col);
+                n = int(nn);
+            }
+            if (std::fabs(v) > 9.2e18) return fail(92, "value too large for an E parameter", a.col);
+            // A decimal stored into E is truncated toward zero (program-flow.md §9.3).
+            if (int rc = write_e(n, int64_t(std::trunc(v)), why)) return fail(rc, why, a.col);
+        }
+    }
+
+    Plan p;
+    if (!decode(b, p)) return StepResult::error;
+    if (g64_pending_) {
+        // G64's rough stock until G80, which runs the roughing first (turning.md §6.3).
+        if (p.cycle != 80) return turning_stock(p) ? StepResult::running : StepResult::error;
+        if (!turning_g64_run()) return StepResult::error;
+    }
+    if (p.unsupported >= 0) {
+        const GCode* g = find_g(p.unsupported);
+        return fail(err::kUnsupported, "G" + std::to_string(p.unsupported) + " (" + std::string(g->text) +
+                                           ") is not yet supported by pupitre");
+    }
+    // G76+/G76- edit the program memory and do nothing else.
+    if (p.g76_sign) return edit_program(b, p) ? StepResult::running : StepResult::error;
+    // G46 blocks, and the contour blocks of a G46 definition, move nothing but
+    // what the pocket orders plan (milling.md §7.2).
+    // A definition left open by a run that stopped inside it (RAZ, an error
+    // before this point) is dropped: its blocks are no longer consecutive.
+    if (p46_.defining && blocks_ != p46_.last_block + 1) p46_.defining = false;
+    if (p.g[46] || p46_.defining) {
+        p46_.last_block = blocks_;
+        if (pocket46(p)) return StepResult::running;
+        p46_.defining = false;  // a definition with an error is not kept
+        return StepResult::error;
+    }
+    if (p.has_eb)
+        for (int i = 0; i < p.nm; ++i)
+            if (p.m[i] <= 2) return fail(131, "a fillet or chamfer (EB) in a block with M0" + std::to_string(p.m[i]));
+    if (pgp_.pending()) {
+        // The held element needs the next blocks (pgp.md §6 item 5).
+        if (p.plane >= 0 && p.plane != modal_.plane)
+            return fail(137, "plane change while a profile element is incomplete");
+        for (int i = 0; i < p.nm; ++i)
+            if (p.m[i] == 2 && !pgp_close()) return StepResult::error;  // the solver says why (101, 131)
+    }
+    if (p.g[78]) {
+        for (int i = 0; i < p.nm; ++i)
+            if (p.m[i] == 0 || p.m[i] == 1)
+                return fail(78, "G78 with a program stop M0" + std::to_string(p.m[i]));
+    }
+
+    // Radius compensation restrictions (turning.md §3.7, milling.md §4.4.2).
+    bool comp = modal_.radcomp != 40;
+    if (comp && p.g[16]) return fail(140, "G16 under radius compensation");
+
+    if (!apply_modal(p)) return StepResult::error;
+    if (!do_m_avant(p)) return StepResult::error;
+    if (!apply_spindle(p)) return StepResult::error;
+    if (b.msg_channel >= 0) out_.message(loc_, b.msg_channel, b.msg);
+    if (!do_motion(p)) return StepResult::error;
+    if (p.dwell >= 0) {
+        clock_ += p.dwell;
+        out_.dwell(loc_, p.dwell);
+    } else if (p.g[4]) {
+        return fail(2, "G4 needs the dwell time in F (G4 F1.5)");
+    }
+    StepResult r = StepResult::running;
+    if (!do_m_apres(p, r)) return StepResult::error;
+    if (ended_) return r;
+
+    if (p.g[79] && !p.g79_sign) {
+        if (p.g79_n < 0) return fail(2, "G79 needs the label to jump to (G79 N100)");
+        bool go = true;
+        if (b.test.cmp != Cmp::none) {
+            double lhs, rhs;
+            std::string why;
+            if (int rc = eval_expr(b, b.test.lhs, l_, *this, lhs, why)) return fail(rc, why, b.test.col);
+            if (int rc = eval_expr(b, b.test.rhs, l_, *this, rhs, why)) return fail(rc, why, b.test.col);
+            go = compare(b.test.cmp, lhs, rhs);
+        }
+        if (go && !jump(p.g79_n)) return StepResult::error;
+    }
+    if (p.g[48] && !spline_define(p)) return StepResult::error;
+    if (p.g[49]) {
+        if (modal_.radcomp != 40) return fail(140, "G49 must be programmed in G40");
+        if (p.spl_nc <= 0 || !splines_.erase(p.spl_nc))
+            return fail(605, "G49: curve NC" + std::to_string(p.spl_nc) + " is not defined");
+    }
+    if (p.g[76] && !transfer(p)) return StepResult::error;
+    if (p.g[77] && !call(p)) return StepResult::error;
+    return r;
+}
+
+bool Interpreter::apply_modal(const Plan& p) {
+    bool comp = modal_.radcomp != 40;
+    if (p.motion >= 0) modal_.motion = p.motion;
+    if (p.dist >= 0) modal_.incremental = p.dist == 91;
+    if (p.plane >= 0 && p.plane != modal_.plane) {
+        if (comp) return fail(138, "plane change under radius compensation (program G40 first)"), false;
+        modal_.plane = p.plane;
+    }
+    if (p.units >= 0) modal_.inch = p.units == 70;
+    if (p.g[31] && modal_.cycle != 80)
+        modal_.cycle = 80;  // G31 cancels an active drilling cycle, as G80 would
+    if (p.cycle >= 0 && p.cycle != modal_.cycle) {
+        if (p.cycle == 80) {
+            cyc_ = CycleParams{};
+        } else {
+            // Another cycle keeps Z, ER and EH and resets the rest (milling.md §6.1.3).
+            CycleParams keep;
+            keep.has_z = cyc_.has_z, keep.z = cyc_.z;
+            keep.has_er = cyc_.has_er, keep.er = cyc_.er;
+            keep.has_eh = cyc_.has_eh, keep.eh = cyc_.eh;
+            cyc_ = keep;
+        }
+        modal_.cycle = p.cycle;
+    }
+    if (p.g[16] && modal_.cycle >= 81 && modal_.cycle <= 89)
+        return fail(890, "G16 while a drilling cycle is active"), false;
+    if (p.prefdec >= 0 && (p.prefdec == 53) != frames_.g53) {
+        frames_.g53 = p.prefdec == 53;
+        recompute_program_pos();
+    }
+    if (p.scale >= 0 && (p.scale == 74) != frames_.scale_on) {
+        if (comp) return fail(143, "G73/G74 under radius compensation"), false;
+        frames_.scale_on = p.scale == 74;
+        recompute_program_pos();
+    }
+    // Feed: turning.md §5.2 wants F in the block that changes the unit, but seven
+    // handbook programs write "G95 G92 S1500" or "G80 G40 G95" and give F later
+    // (000:9661, 10037, 10186…): the unit changes, and a feed move made before a
+    // new F is the error (2, F being G95's mandatory argument).
+    if (p.feed_mode >= 0 && p.feed_mode != modal_.feed_mode) {
+        modal_.feed_mode = p.feed_mode;
+        if (!p.has_f) modal_.feed_set = false;
+    }
+    if (p.has_f) {
+        modal_.feed = p.f;
+        modal_.feed_set = true;
+    }
+    if (p.has_t) modal_.t = p.t;
+    if (p.has_d && p.d != modal_.d) {
+        modal_.d = p.d;
+        gauge_pending_.set();
+        if (!p.nm || std::find(p.m, p.m + p.nm, 6) == p.m + p.nm)
+            out_.tool(loc_, modal_.tool_in_spindle, modal_.d, 0);
+    }
+    if (p.radcomp >= 0 && p.radcomp != modal_.radcomp) {
+        // The radius is taken when G41/G42 is programmed; a change of D or R takes
+        // effect after G40 and a new G41/G42 (000:898-906).
+        if (p.radcomp == 29 && comp_.on)
+            return fail(140, "G29 under G41/G42: program G40 first (000:3932)"), false;
+        if (p.radcomp != 40 && p.radcomp != 29 && !comp_engage(p.radcomp)) return false;
+        modal_.radcomp = p.radcomp;
+        nonmotion_in_comp_ = 0;
+    }
+    if (p.g16_axis >= 0) {
+        modal_.tool_axis = p.g16_axis;
+        modal_.tool_axis_neg = p.g16_neg;
+        gauge_pending_.set();
+    } else if (p.g[16]) {
+        return fail(2, "G16 needs P, Q or R with a sign (G16 R+)"), false;
+    }
+    // G59 offsets, modal per axis (turning.md §2.8); G91 G59 adds.
+    if (p.g[59]) {
+        if (p.g59_axis.none() && !p.g59_ed && p.g59_ijk.none())
+            return fail(2, "G59 needs at least one axis offset"), false;
+        for (int a = 0; a < kAxes; ++a)
+            if (p.g59_axis[size_t(a)])
+                frames_.g59[size_t(a)] = modal_.incremental ? frames_.g59[size_t(a)] + p.g59_val[size_t(a)]
+                                                            : p.g59_val[size_t(a)];
+        int a0 = m_.lathe ? Z : modal_.plane == 17 ? X : modal_.plane == 18 ? Z : Y;
+        int a1 = m_.lathe ? X : modal_.plane == 17 ? Y : modal_.plane == 18 ? X : Z;
+        auto ijk_of = [](int axis) { return axis == X ? 0 : axis == Y ? 1 : 2; };
+        if (p.g59_ijk[size_t(ijk_of(a0))]) frames_.ed_c0 = p.g59_ijk_val[ijk_of(a0)];
+        if (p.g59_ijk[size_t(ijk_of(a1))]) frames_.ed_c1 = p.g59_ijk_val[ijk_of(a1)];
+        if (p.g59_ed) {
+            frames_.ed_a0 = a0;
+            frames_.ed_a1 = a1;
+            frames_.ed = modal_.incremental ? frames_.ed + p.g59_ed_val : p.g59_ed_val;
+        }
+        recompute_program_pos();
+    }
+    if (p.has_ed) {
+        frames_.ed_a0 = m_.lathe ? Z : modal_.plane == 17 ? X : modal_.plane == 18 ? Z : Y;
+        frames_.ed_a1 = m_.lathe ? X : modal_.plane == 17 ? Y : modal_.plane == 18 ? X : Z;
+        frames_.ed = modal_.incremental ? frames_.ed + p.ed : p.ed;
+        recompute_program_pos();
+    }
+    if (p.g[51]) {
+        if (p.g51_on.none() && p.g51_off.none()) return fail(2, "G51 needs axes with a sign (G51 X- Y-)"), false;
+        frames_.mirror |= p.g51_on;
+        frames_.mirror &= ~p.g51_off;
+        recompute_program_pos();
+    }
+    if (p.g[92]) {
+        if (p.g92_axis.any() && (p.g92_s || p.g92_r))
+            return fail(3, "G92 presets axes or sets S or R, not both in one block"), false;
+        if (p.g92_axis.none() && !p.g92_s && !p.g92_r)
+            return fail(2, "G92 needs axes (preset), S (spindle limit) or R (tangential feed)"), false;
+        // new PREF = PREF + (current point / OP) - programmed value (000:1173-1179).
+        for (int a = 0; a < kAxes; ++a)
+            if (p.g92_axis[size_t(a)]) frames_.pref[size_t(a)] += prog_[size_t(a)] - p.g92_val[size_t(a)];
+        if (p.g92_axis.any()) recompute_program_pos();
+        if (p.g92_s) {
+            if (!m_.lathe) return fail(2, "G92 S (spindle limit) is a lathe function"), false;
+            modal_.smax = p.g92_s_val;
+            if (modal_.smax > m_.spindle_max) {
+                warn(err::wSpeedClamped, "G92 S" + fmt3(modal_.smax) + " above the spindle maximum " +
+                                             fmt3(m_.spindle_max) + ": limited to it");
+                modal_.smax = m_.spindle_max;
+            }
+        }
+        if (p.g92_r) modal_.g92r = p.g92_r_val;
+    }
+    if (p.g75_n >= -1) modal_.g75 = p.g75_n == 0 ? -1 : p.g75_n;
+    if (p.has_eg) modal_.eg = p.eg;
+    return true;
+}
+
+// Spindle speed after the avant M functions (M3/M4/M40-M45 act before S is used).
+bool Interpreter::apply_spindle(const Plan& p) {
+    if (p.spindle_mode == 96 || p.spindle_mode == 97) {
+        bool s_given = p.spindle_mode == 96 ? p.g96_s : p.g97_s;
+        if (!s_given)
+            return fail(28, "G" + std::to_string(p.spindle_mode) + " must be followed by S"), false;
+    }
+    if (p.spindle_mode == 96) {
+        if (!p.g96_x && !modal_.css_known)
+            return fail(28, "G96: the starting diameter is unknown (program X first, or G96 X.. S..)"), false;
+        modal_.spindle_mode = 96;
+        modal_.css_x0 = p.g96_x ? p.g96_x_val : prog_[X];
+        modal_.css_pos0 = prog_[X];
+        modal_.css_known = true;
+    } else if (p.spindle_mode == 97) {
+        modal_.spindle_mode = 97;
+    }
+    if (p.has_s) modal_.s = p.s;
+    bool range_written = false;
+    for (int i = 0; i < p.nm; ++i) range_written = range_written || (p.m[i] >= 40 && p.m[i] <= 45);
+    if (modal_.spindle_mode == 97 && p.has_s && m_.auto_range && !range_written && modal_.range < 0 &&
+        !m_.ranges.empty() && modal_.s > 0) {
+        // Automatic range: with none in force, the first range holding S
+        // (turning.md §5.12); a range the program chose stays in force.
+        int found = -1;
+        for (size_t i = 0; i < m_.ranges.size() && found < 0; ++i)
+            if (modal_.s >= m_.ranges[i].min && modal_.s <= m_.ranges[i].max) found = int(i);
+        if (found < 0) return fail(29, "S" + fmt3(modal_.s) + " is in no spindle range"), false;
+        modal_.range = found;
+    }
+    if (modal_.spindle_mode == 96 && !m_.ranges.empty() && modal_.range < 0 &&
+        (p.spindle_mode == 96 || p.has_s)) {
+        // With automatic ranges the machine takes the range of the highest speeds.
+        if (!m_.auto_range) return fail(29, "constant surface speed needs a spindle range (M40-M45)"), false;
+        modal_.range = int(m_.ranges.size()) - 1;
+    }
+    if (modal_.spindle_mode == 97 && p.has_s && modal_.range >= 0) {
+        const SpindleRange& r = m_.ranges[size_t(modal_.range)];
+        if (modal_.s != 0 && (modal_.s < r.min || modal_.s > r.max))
+            return fail(29, "S" + fmt3(modal_.s) + " is outside range M" + std::to_string(40 + modal_.range) +
+                                " (" + fmt3(r.min) + "-" + fmt3(r.max) + " rev/min)"),
+                   false;
+    }
+    if (modal_.spindle_mode == 97 && p.has_s && modal_.s > m_.spindle_max)
+        warn(err::wSpeedClamped, "S" + fmt3(modal_.s) + " above the spindle maximum " + fmt3(m_.spindle_max) +
+                                     ": limited to it");
+    if (p.spindle_mode == 96 && (modal_.spindle_dir != 3 && modal_.spindle_dir != 4))
+        warn(err::wSpindleStopped, "G96 with the spindle stopped: the speed applies when it starts");
+    // The speed can only have changed with a spindle word, an M function, or X under G96.
+    if (p.has_s || p.spindle_mode >= 0 || p.nm > 0 || p.g[92] || p.g[52] || p.g[59] ||
+        (modal_.spindle_mode == 96 && p.axis[X]))
+        set_spindle_event();
+    return true;
+}
+
+bool Interpreter::do_m_avant(const Plan& p) {
+    bool coolant = false;
+    for (int i = 0; i < p.nm; ++i) {
+        int m = p.m[i];
+        const MCode* mc = find_m(m);
+        if (!mc) {
+            warn(err::wUnknownM, "M" + std::to_string(m) + " has no meaning on this machine");
+            continue;
+        }
+        if (!mc->all_models && m_.model == 1020)
+            return fail(4, "M" + std::to_string(m) + " needs a NUM 1040 or 1060"), false;
+        if (mc->when != MWhen::avant) continue;
+        switch (m) {
+            case 3: case 4: modal_.spindle_dir = m; break;
+            case 19: modal_.spindle_dir = 19; break;
+            case 7: modal_.m7 = true; coolant = true; break;
+            case 8: modal_.m8 = true; coolant = true; break;
+            case 11: modal_.clamped = false; break;
+            case 49: modal_.overrides_off = true; break;
+            case 62: case 66: case 61: break;
+            case 63: case 64: case 65: case 67: case 68: case 69:
+                return fail(899, "M" + std::to_string(m) + ": this machine has one spindle"), false;
+            case 998: modal_.modif_inhibited = false; break;
+            case 999: modal_.modif_inhibited = true; break;
+            default:
+                if (m >= 40 && m <= 45) {
+                    if (size_t(m - 40) >= m_.ranges.size() && !m_.ranges.empty())
+                        return fail(29, "range M" + std::to_string(m) + " does not exist on this machine"), false;
+                    modal_.range = m - 40;
+                } else if (m >= 200 && m <= 899) {
+                    modal_.coded_m = m;
+                }
+        }
+    }
+    if (coolant) out_.coolant(loc_, modal_.m7, modal_.m8);
+    return true;
+}
+
+bool Interpreter::do_m_apres(const Plan& p, StepResult& r) {
+    bool comp = modal_.radcomp != 40;
+    for (int i = 0; i < p.nm; ++i) {
+        int m = p.m[i];
+        const MCode* mc = find_m(m);
+        if (mc && mc->when != MWhen::apres) continue;
+        switch (m) {
+            case 0:
+            case 1:
+                if (comp) return fail(140, "M0" + std::to_string(m) + " under radius compensation"), false;
+                if (m == 1 && !opt_.optional_stop) break;
+                // M00 and M01 stop the spindle (000:1429).
+                modal_.spindle_dir = 5;
+                set_spindle_event();
+                out_.stop(loc_, m);
+                r = StepResult::stopped;
+                break;
+            case 12:
+                out_.stop(loc_, 12);
+                r = StepResult::stopped;
+                break;
+            case 2:
+                if (comp) return fail(140, "M02 under radius compensation"), false;
+                reset_modal_m02();
+                out_.end(loc_, 2);
+                ended_ = true;
+                r = StepResult::ended;
+                return true;
+            case 5:
+                modal_.spindle_dir = 5;
+                set_spindle_event();
+                break;
+            case 6:
+                if (comp) return fail(140, "tool change M06 under radius compensation"), false;
+                modal_.tool_in_spindle = modal_.t;
+                note_tool(modal_.t);
+                clock_ += m_.tool_change_time;
+                out_.tool(loc_, modal_.t, modal_.d, m_.tool_change_time);
+                break;
+            case 9:
+                if (modal_.m7 || modal_.m8) {
+                    modal_.m7 = modal_.m8 = false;
+                    out_.coolant(loc_, false, false);
+                }
+                break;
+            case 10: modal_.clamped = true; break;
+            case 48: modal_.overrides_off = false; break;
+            default: break;
+        }
+    }
+    return true;
+}
+
+// M02 and RAZ (turning.md §8.3): modal groups to power-on, D0, M05, M09; G59, ED,
+// G51, G74, G75, G92 S, G92 R, EG cleared; PREF, T, correctors, E and L kept.
+// D0 takes effect at once: no program is left to carry a pending gauge to its
+// next move, and every page (OP, INFO, PREF, CORR) and the touch-off must see
+// the gauge the machine applies, which is D0's (none) [DECISION, pupitre(1)].
+void Interpreter::reset_modal_m02() {
+    Modal fresh;
+    fresh.plane = m_.lathe ? 18 : 17;
+    fresh.t = modal_.t;
+    fresh.tool_in_spindle = modal_.tool_in_spindle;
+    fresh.radius_x = modal_.radius_x;
+    fresh.css_known = modal_.css_known;
+    bool coolant = modal_.m7 || modal_.m8;
+    modal_ = fresh;
+    if (coolant) out_.coolant(loc_, false, false);
+    set_spindle_event();
+    frames_.g59 = Axes{};
+    frames_.ed = 0;
+    frames_.mirror.reset();
+    frames_.scale_on = false;
+    frames_.g53 = false;
+    frames_.gauge = Axes{};
+    gauge_pending_.reset();
+    recompute_program_pos();
+}
+
+// The spindle speed the machine runs at, at program X (radius) `x`.
+double Interpreter::spindle_at(double x) const {
+    if (modal_.spindle_dir != 3 && modal_.spindle_dir != 4) return 0;
+    double limit = m_.spindle_max;
+    if (modal_.smax > 0) limit = std::min(limit, modal_.smax);
+    if (modal_.range >= 0 && size_t(modal_.range) < m_.ranges.size())
+        limit = std::min(limit, m_.ranges[size_t(modal_.range)].max);
+    double n;
+    if (modal_.spindle_mode == 96) {
+        double d = 2 * std::fabs(modal_.css_x0 + (x - modal_.css_pos0));
+        n = d > 1e-9 ? 1000.0 * modal_.s / (std::numbers::pi * d) : limit;
+    } else {
+        n = modal_.s;
+    }
+    return std::min(n, limit);
+}
+
+void Interpreter::set_spindle_event() {
+    double rpm = spindle_at(prog_[X]);
+    rpm_ = rpm;
+    SpindleEvent e;
+    e.loc = loc_;
+    e.rpm = rpm;
+    e.dir = modal_.spindle_dir;
+    e.css = modal_.spindle_mode == 96;
+    e.vc = e.css ? modal_.s : 0;
+    e.range = modal_.range >= 0 ? 40 + modal_.range : -1;
+    if (sp_emitted_ && last_sp_.rpm == e.rpm && last_sp_.dir == e.dir && last_sp_.range == e.range &&
+        last_sp_.css == e.css && last_sp_.vc == e.vc)
+        return;
+    sp_emitted_ = true;
+    last_sp_ = e;
+    out_.spindle(e);
+}
+
+}  // namespace pupitre

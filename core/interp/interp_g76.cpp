@@ -1,0 +1,389 @@
+// The G76 family: G76 writes the current L/E values into a program's text;
+// G76+ and G76- are a program that creates and deletes programs, and inserts
+// and deletes blocks, in the program memory (program-flow.md §6, from the
+// handbook 000:7018-7170, 7679-7735). The changes live in memory: `pupitre run` never
+// writes its files, the console stores them as revisions.
+//
+// Decisions where the handbook is silent (man/pupitre-iso.5, G76+ AND G76-):
+// - The pointed block N.. is line 0 of the +k count; G76+ inserts after line k,
+//   G76- deletes line k. Every line counts, comment lines included.
+// - N0 that no line carries points before the first line of the program, so
+//   "G76+ H300 N0 N10 G0 X0" writes the first block of an empty %300 (the
+//   example of the handbook is a missing figure, 000:7043).
+// - The inserted block keeps the words the handbook lists (000:7115): N,
+//   G, X Y Z U V W A B C, I J K, P Q R and L0-L19. An L0-L19 in a word, and the
+//   value assigned to L0-L19, are written as their value when G76+ runs (the
+//   purpose is a program writing a program from its measurements). Other words
+//   are error 1. The comments of the block are kept after its words.
+// - A program already in memory: 1005; G76- of a program the run is executing:
+//   1006; a missing program or block: 25; memory quota (profile
+//   program_memory): 36.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <algorithm>
+#include <cmath>
+
+#include "core/interp/plan.hpp"
+
+namespace pupitre {
+
+namespace {
+// Shortest text of a value at `frac` decimals: 12.5, -3, 0.001.
+std::string number_text(double v, int frac) {
+    char buf[400];  // any double at 6 decimals (a too long block is refused after)
+    std::snprintf(buf, sizeof buf, "%.*f", frac, v);
+    std::string s = buf;
+    if (s.find('.') != std::string::npos) {
+        while (s.back() == '0') s.pop_back();
+        if (s.back() == '.') s.pop_back();
+    }
+    if (s == "-0") s = "0";
+    return s;
+}
+
+bool listed_word(char c) {
+    return std::string_view("NGXYZUVWABCIJKPQR").find(c) != std::string_view::npos;
+}
+}  // namespace
+
+// G76 [H..] [N.. N..]: writes the current values of the L and E assignments that
+// open the blocks of a program (or a range of it) into their reserved fields of
+// at least 10 characters (000:7679-7735, program-flow.md §6.5). The text keeps its
+// length, so labels and positions stay valid.
+bool Interpreter::transfer(const Plan& p) {
+    const ProgramText* target = stack_.back().prog;
+    if (p.g76_h >= 0 && !(target = mem_.find(p.g76_h)))
+        return fail(25, "G76 H" + std::to_string(p.g76_h) + ": program %" + std::to_string(p.g76_h) +
+                            " is not in memory"),
+               false;
+    size_t from = target->begin, to = target->end;
+    if (p.g76_nn > 0) {
+        const Label* a = target->find_label(p.g76_n[0]);
+        const Label* b = target->find_label(p.g76_nn > 1 ? p.g76_n[1] : p.g76_n[0]);
+        if (!a || !b)
+            return fail(25, "G76: block N" + std::to_string(!a ? p.g76_n[0] : p.g76_n[1]) + " not found"), false;
+        if (b->offset < a->offset) std::swap(a, b);
+        from = a->offset;
+        to = std::min(target->end, target->text->find('\n', b->offset));
+    }
+    std::string& text = *target->text;
+    auto upper = [](char c) { return c >= 'A' && c <= 'Z'; };
+    auto digit = [](char c) { return c >= '0' && c <= '9'; };
+    size_t pos = from;
+    while (pos < to) {
+        size_t eol = std::min(to, text.find('\n', pos));
+        size_t i = pos;
+        auto spaces = [&]() {
+            while (i < eol && (text[i] == ' ' || text[i] == '\t')) ++i;
+        };
+        spaces();
+        if (i < eol && text[i] == '/') ++i;
+        spaces();
+        if (i < eol && text[i] == 'N' && i + 1 < eol && (digit(text[i + 1]) || text[i + 1] == ' ')) {
+            ++i;
+            spaces();
+            while (i < eol && digit(text[i])) ++i;
+        }
+        for (;;) {
+            spaces();
+            if (i + 1 >= eol || (text[i] != 'L' && text[i] != 'E') || !digit(text[i + 1])) break;
+            bool is_l = text[i] == 'L';
+            ++i;
+            long n = 0;
+            while (i < eol && digit(text[i])) n = n * 10 + (text[i++] - '0');
+            spaces();
+            if (i >= eol || text[i] != '=')
+                return fail(97, "G76: no '=' after " + std::string(is_l ? "L" : "E") + std::to_string(n)), false;
+            size_t field = ++i;
+            while (i < eol && !upper(text[i]) && text[i] != '(' && text[i] != '\r') ++i;
+            size_t width = i - field;
+            if (width < 10)
+                return fail(97, "G76: fewer than 10 characters reserved after " + std::string(is_l ? "L" : "E") +
+                                    std::to_string(n) + "="),
+                       false;
+            std::string value;
+            if (is_l) {
+                if (!LVars::valid(int(n))) return fail(91, "G76: L" + std::to_string(n) + " does not exist"), false;
+                value = number_text(l_.v[size_t(n)], 6);
+            } else {
+                int64_t raw;
+                std::string why;
+                if (int rc = read_e(int(n), raw, why)) return fail(rc, "G76: " + why), false;
+                value = std::to_string(raw);
+            }
+            // Keep the separating space before the next word.
+            size_t room = (i < eol && upper(text[i])) ? width - 1 : width;
+            if (value.size() > room)
+                return fail(97, "G76: the value " + value + " does not fit the field after " +
+                                    std::string(is_l ? "L" : "E") + std::to_string(n)),
+                       false;
+            value.resize(width, ' ');
+            text.replace(field, width, value);
+            if (mem_.find(target->number) == target) mem_.mark_changed(target->number);  // not an IMD fragment
+        }
+        pos = eol + 1;
+    }
+    return true;
+}
+
+// The text of the block G76+ inserts, values of L0-L19 written in.
+bool Interpreter::edit_block_text(const Block& b, std::string& out) {
+    std::string_view raw = b.g76_block;
+    Block ins;
+    Diag d;
+    if (!parse_block(raw, ins, d))
+        return fail(d.code, "G76+: " + d.detail, b.g76_block_col - 1 + d.column), false;
+    auto col = [&](uint16_t c) { return b.g76_block_col - 1 + c; };
+    if (ins.msg_channel >= 0)
+        return fail(1, "G76+: a $ message cannot be inserted", b.g76_block_col), false;
+    if (ins.test.cmp != Cmp::none)
+        return fail(1, "G76+: a G79 condition cannot be inserted", col(ins.test.col)), false;
+    if (ins.empty())
+        return fail(2, "G76+ needs the block to insert after N.. (G76+ N100 G1 X10)",
+                    b.g76_block_col),
+               false;
+    // Words and assignments in the order they were written.
+    std::vector<std::pair<uint16_t, std::string>> parts;
+    for (const Word& w : ins.words) {
+        char letter = w.addr < 26 ? char('A' + w.addr) : 0;
+        if (!letter || !listed_word(letter))
+            return fail(1,
+                        "G76+: " + std::string(addr_name(w.addr)) +
+                            " cannot be inserted (N G X Y Z U V W A B C I J K P Q R L0-L19 only)",
+                        col(w.col)),
+                   false;
+        if ((w.v.kind == Operand::LVar && w.v.index > 19) || w.v.kind == Operand::EParam ||
+            w.v.kind == Operand::EIndirect)
+            return fail(1, "G76+: only L0-L19 can give a value in an inserted block", col(w.col)),
+                   false;
+        if (letter == 'G' && (w.gsign || w.glevel))
+            return fail(1, "G76+: G76+/-, G79+/- and G77 -i cannot be inserted", col(w.col)), false;
+        double v;
+        int iv = 0;
+        bool integer = letter == 'N' || letter == 'G';
+        if (!word_value(w, v, integer ? &iv : nullptr)) {
+            diags_.back().column = col(w.col);
+            return false;
+        }
+        std::string t(1, letter);
+        if (!(letter == 'N' && w.v.kind == Operand::Blank))  // a bare N is N0
+            t += integer ? std::to_string(iv)
+                         : number_text(v, letter >= 'A' && letter <= 'C' ? 4 : 3);
+        parts.emplace_back(w.col, std::move(t));
+    }
+    // Expressions read L0-L19 only.
+    for (const Term& t : ins.terms)
+        if ((t.v.kind == Operand::LVar && t.v.index > 19) || t.v.kind == Operand::EParam ||
+            t.v.kind == Operand::EIndirect)
+            return fail(1, "G76+: only L0-L19 can give a value in an inserted block", b.g76_block_col), false;
+    for (const Assign& a : ins.assigns) {
+        if (a.target.kind != Operand::LVar || a.target.index > 19)
+            return fail(1, "G76+: only L0-L19 can be assigned in an inserted block", col(a.col)),
+                   false;
+        double v;
+        std::string why;
+        if (int rc = eval_expr(ins, a.expr, l_, *this, v, why))
+            return fail(rc, "G76+: " + why, col(a.col)), false;
+        parts.emplace_back(a.col, "L" + std::to_string(a.target.index) + "=" + number_text(v, 6));
+    }
+    std::stable_sort(parts.begin(), parts.end(),
+                     [](const auto& x, const auto& y) { return x.first < y.first; });
+    if (ins.skip) out += '/';
+    for (size_t i = 0; i < parts.size(); ++i) {
+        if (i) out += ' ';
+        out += parts[i].second;
+    }
+    // The comments, as written (parse_block saw each one closed).
+    for (size_t i = raw.find('('); i != std::string_view::npos; i = raw.find('(', i)) {
+        size_t close = raw.find(')', i);
+        if (close == std::string_view::npos) break;
+        out += ' ';
+        out += raw.substr(i, close - i + 1);
+        i = close + 1;
+    }
+    // What is written must read back: the block length, the digits of each
+    // address (an L value may be too large for X).
+    Block back;
+    if (!parse_block(out, back, d))
+        return fail(d.code, "G76+: the block to insert, " + out + ": " + d.detail, b.g76_block_col), false;
+    for (const Word& w : back.words) {
+        double v;
+        if (!word_value(w, v)) {
+            diags_.back().detail = "G76+: the block to insert, " + out + ": " + diags_.back().detail;
+            diags_.back().column = b.g76_block_col;
+            return false;
+        }
+    }
+    out += '\n';
+    return true;
+}
+
+bool Interpreter::edit_program(const Block& b, const Plan& p) {
+    const char sign = p.g76_sign;
+    const std::string g76 = std::string("G76") + sign;
+    if (m_.model == 1020) return fail(4, g76 + " needs a NUM 1040 or 1060 (000:555)"), false;
+    // The block holds nothing else: its label, G76±, one H and the pointed N.
+    size_t g76_at = b.words.size();  // none yet
+    int hs = 0;
+    for (size_t i = 0; i < b.words.size(); ++i) {
+        const Word& w = b.words[i];
+        if (w.addr == addr1('G') && w.gsign) g76_at = i;
+        bool label = i == 0 && w.addr == addr1('N') && b.n >= 0;
+        bool arg = g76_at < i && (w.addr == addr1('H') || w.addr == addr1('N'));
+        if (!label && i != g76_at && !arg)
+            return fail(3, g76 + " takes only H.. and N.. [+k] (the block must hold nothing else)",
+                        w.col),
+                   false;
+        if (w.addr == addr1('H') && ++hs > 1) return fail(3, g76 + ": H written twice", w.col), false;
+    }
+    if (!b.assigns.empty())
+        return fail(3, g76 + " takes only H.. and N.. [+k]: no assignment in its block", b.assigns[0].col),
+               false;
+    // It moves nothing: under G41/G42 it counts among the blocks without motion.
+    if (modal_.radcomp != 40 && ++nonmotion_in_comp_ > 2)
+        return fail(140, "more than 2 blocks in a row without motion in the plane under radius compensation"),
+               false;
+    if (p.g76_nn > 1) return fail(3, g76 + " points at one block N..", b.words.back().col), false;
+    const size_t quota = size_t(m_.program_memory_kb * 1024);
+
+    if (p.g76_nn == 0) {
+        // Creating or deleting a whole program: H is the last word (000:7037, 7068).
+        if (p.g76_h < 0)
+            return fail(2, g76 + " needs the program number H (" + g76 + " H300)"), false;
+        if (b.words.back().addr != addr1('H'))
+            return fail(3, g76 + ": the program number H must be the last word of the block",
+                        b.words.back().col),
+                   false;
+        if (sign == '+') {
+            if (mem_.find(p.g76_h))
+                return fail(err::kProgramExists, "G76+ H" + std::to_string(p.g76_h) +
+                                                     ": program %" + std::to_string(p.g76_h) +
+                                                     " is already in memory"),
+                       false;
+            if (mem_.size() + 16 > std::max(quota, loaded_size_))
+                return fail(36, "G76+: the part-program memory is full (" +
+                                    std::to_string(quota / 1024) + " KB)"),
+                       false;
+            mem_.create(p.g76_h);
+            return true;
+        }
+        const ProgramText* t = mem_.find(p.g76_h);
+        if (!t)
+            return fail(25, "G76- H" + std::to_string(p.g76_h) + ": no program %" +
+                                std::to_string(p.g76_h)),
+                   false;
+        bool running = t == main_ || std::any_of(stack_.begin(), stack_.end(),
+                                                 [&](const Frame& f) { return f.prog == t; });
+        if (running)
+            return fail(err::kProgramInUse, "G76- H" + std::to_string(p.g76_h) + ": program %" +
+                                                std::to_string(p.g76_h) + " is running"),
+                   false;
+        mem_.remove(p.g76_h);
+        return true;
+    }
+
+    // A block: the program H (or this one), the pointed line N.. and k lines on.
+    const ProgramText* t = stack_.back().prog;
+    if (p.g76_h >= 0 && !(t = mem_.find(p.g76_h)))
+        return fail(25, g76 + " H" + std::to_string(p.g76_h) + ": no program %" +
+                            std::to_string(p.g76_h)),
+               false;
+    if (mem_.find(t->number) != t)  // an IMD fragment is not a program of the memory
+        return fail(25, g76 + " without H edits the program that runs: in IMD, give the program H"), false;
+    if (sign == '-') {
+        std::string_view rest = b.g76_block;  // comments only
+        for (size_t i = 0; i < rest.size(); ++i) {
+            if (rest[i] == '(') {
+                size_t close = rest.find(')', i);
+                i = close == std::string_view::npos ? rest.size() : close;
+            } else if (rest[i] != ' ' && rest[i] != '\t') {
+                return fail(3, "G76- takes nothing after N.. [+k]", b.g76_block_col + int(i)), false;
+            }
+        }
+    }
+    const long n = p.g76_n[0];
+    const int k = std::max(b.g76_k, 0);
+    std::string_view all = *t->text;
+    auto next_line = [&](size_t pos) {
+        size_t eol = all.find('\n', pos);
+        return eol == std::string_view::npos || eol >= t->end ? t->end : eol + 1;
+    };
+    // `start` is the first byte of the line k lines after the pointed one; with
+    // a virtual N0 before the first line, line k is the k-th line.
+    size_t start;
+    int count = k;
+    if (const Label* l = t->find_label(n)) {
+        start = l->offset;
+    } else if (n == 0) {
+        start = t->begin;
+        --count;
+    } else {
+        return fail(25, g76 + ": no block N" + std::to_string(n) + " in program %" +
+                            std::to_string(t->number)),
+               false;
+    }
+    for (; count > 0 && start < t->end; --count) start = next_line(start);
+    const bool before_first = count < 0;  // N0 virtual, no +k: insert at the start
+    if (!before_first && start >= t->end)
+        return fail(25, g76 + ": program %" + std::to_string(t->number) + " has no line " +
+                            std::to_string(k) + " after N" + std::to_string(n)),
+               false;
+
+    Splice s;
+    if (sign == '+') {
+        std::string text;
+        if (!edit_block_text(b, text)) return false;
+        if (mem_.size() + text.size() > std::max(quota, loaded_size_))
+            return fail(36, "G76+: the part-program memory is full (" +
+                                std::to_string(quota / 1024) + " KB)"),
+                   false;
+        s = mem_.splice(t, before_first ? start : next_line(start), 0, text);
+    } else {
+        if (before_first)
+            return fail(25, "G76- N0 points before the first line: give +k (the k-th line)"), false;
+        s = mem_.splice(t, start, next_line(start) - start, {});
+    }
+    text_spliced(t, s);
+    // The block budget (error 1001) counts an edit as one block per kilobyte
+    // of text it moves: a loop of edits in a long program stops in seconds.
+    blocks_ += long((t->text->size() - s.at) / 1024);
+    return true;
+}
+
+// The frames reading the changed text keep their place in it: the next line
+// to read, the first line of a range or of a repeated program, the last line
+// of a range, and the line of the block being executed (after_block).
+void Interpreter::text_spliced(const ProgramText* p, const Splice& s) {
+    const ptrdiff_t db = ptrdiff_t(s.ins) - ptrdiff_t(s.del);
+    const int dl = s.ins_lines - s.del_lines;
+    const size_t del_end = s.at + s.del;
+    // `keep_at`: a place equal to `at` stays there (the inserted line is read next).
+    auto move = [&](size_t& pos, int& line, bool keep_at) {
+        if (pos >= s.at && pos < del_end) {  // its line was deleted: the next one
+            pos = s.at;
+            line = s.line;
+        } else if (pos >= del_end && !(keep_at && s.del == 0 && pos == s.at)) {
+            pos = size_t(ptrdiff_t(pos) + db);
+            line += dl;
+        }
+    };
+    auto move_line = [&](int& line) {
+        if (line >= s.line + s.del_lines)
+            line += dl;
+        else if (line >= s.line)
+            line = s.line - 1;  // deleted: the line before
+    };
+    bool current = !stack_.empty() && stack_.back().prog->text == p->text;
+    for (Frame& f : stack_) {
+        if (f.prog->text != p->text) continue;
+        move(f.pos, f.line, true);
+        move(f.range_pos, f.range_line, f.whole);
+        if (!f.whole) {
+            move_line(f.end_line);
+            if (f.range_line > f.end_line) f.emptied = true;
+        }
+    }
+    if (current) move_line(cur_line_);
+    cur_text_ = {};
+}
+
+}  // namespace pupitre

@@ -1,0 +1,483 @@
+// G46 pockets and facing with any contour (milling.md §7.2, 000:6078-6369):
+// the geometric definition (NU0 header, NU1-NU6 contours, NU9) is read block by
+// block without moving; the orders NU10 (drilling at the plunge points), NU15
+// (roughing) and NU20 (finishing) turn it into elementary moves. The plane
+// geometry (core/cycles/pocket46.cpp) is 2-D; this file maps it onto the plane of the
+// definition, G17, G18 or G19 (see P46Axes below).
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "core/interp/plan.hpp"
+#include "core/geometry/geometry.hpp"
+
+namespace pupitre {
+
+namespace {
+using ::pupitre::geometry::ceil_um;
+std::string num(double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.3f", v);
+    std::string s = buf;
+    while (s.back() == '0') s.pop_back();
+    if (s.back() == '.') s.pop_back();
+    return s;
+}
+
+// Depth layers from `top` down to `bottom` by at most P, equal (as G45).
+std::vector<double> layers(double top, double bottom, double P) {
+    std::vector<double> zs;
+    double depth = top - bottom;
+    int n = std::max(1, int(std::ceil(depth / P - 1e-9)));
+    double q = ceil_um(depth / n);
+    for (int k = 1; k < n; ++k) zs.push_back(top - k * q);
+    zs.push_back(bottom);
+    return zs;
+}
+
+struct Words {
+    bool has[128] = {};
+    double v[128] = {};
+    bool ok(Addr a) const { return has[a]; }
+};
+
+std::string axis_name(int a) {
+    return std::string(1, kAxisNames[size_t(a)]);
+}
+// The centre word of a plane axis (I for X, J for Y, K for Z).
+std::string centre_name(int a) {
+    return std::string(1, char('I' + a));
+}
+}  // namespace
+
+// G46 in the three planes. The handbook describes G46 with G17 words only
+// (000:6099-6109, 6281-6359), but errors 264 "cote en dehors du plan", 271 "tool
+// direction not perpendicular to the contouring plane" and 273 "contouring plane
+// changed between pocket definition and machining" (000:13340, 13347, 13349)
+// show that it runs in any plane, and the drilling cycles NU10 uses are defined
+// in G17 "pour les autres plans : permuter" (004:918-920, 950). pupitre permutes
+// the axes as for circles and cycles (milling.md §5.1, 000:4650):
+//   plane   first second normal   contour centres   bottom ER EH   G16
+//   G17       X     Y      Z           I J              Z          R+
+//   G18       Z     X      Y           K I              Y          Q+
+//   G19       Y     Z      X           J K              X          P+
+// so a pocket drawn in G18 is the same contour as in G17 turned onto the ZX
+// plane (circles seen from +Y, milling.md §2.2). LX LY (start and plunge point,
+// finishing start) and EX EY (end of roughing) are fixed words: they are the
+// first and second coordinates of the plane in its own order (in G18, LX is the
+// Z and LY the X). The bottom of the orders NU10, NU15 and NU20 (the "Z.." of
+// 000:6281-6359) is the word of the normal axis, as the hole bottom of G81-G89:
+// Y in G18, X in G19; a plane coordinate there (Z in G18) is error 267 as X or
+// Y is in G17. ER and EH are coordinates on the normal axis, "up" towards the
+// spindle: the tool must point along the positive normal (G16 R+, Q+, P+),
+// otherwise 271.
+Interpreter::P46Axes Interpreter::p46_axes(int plane) {
+    if (plane == 18) return {Z, X, Y};
+    if (plane == 19) return {Y, Z, X};
+    return {X, Y, Z};
+}
+
+// G46 NU.. blocks, and every block while a definition is open.
+bool Interpreter::pocket46(const Plan& p) {
+    if (!p.g[46]) return p46_contour(p);
+    // A G46 block runs no modal function: a plane given there would be ignored.
+    if (p.plane >= 0 && p.plane != modal_.plane)
+        return fail(279, "G" + std::to_string(p.plane) +
+                             " in a G46 block: select the plane in a block before G46 NU0"),
+               false;
+    Words w;
+    for (int i = 0; i < p.ncyc; ++i) w.has[p.cyc[i].a] = true, w.v[p.cyc[i].a] = p.cyc[i].v;
+    if (!w.has[addrN('U')])
+        return fail(268, "G46 needs NU (NU0 header, NU1-NU6 contours, NU9, NU10/15/20 orders)"),
+               false;
+    const double nuv = w.v[addrN('U')];
+    const int nu = int(nuv);
+    const bool known = nuv == nu && (nu <= 6 || nu == 9 || nu == 10 || nu == 15 || nu == 20);
+    if (!known) return fail(262, "G46 NU" + num(nuv) + ": NU is 0-6, 9, 10, 15 or 20"), false;
+    if (p.nm || p.has_s || p.has_t || p.has_d)
+        return fail(268, "M, S, T or D in a G46 block"), false;
+    if (nu == 0) {
+        // The same NU0 again: the run restarted inside its definition (a
+        // block that did not parse stopped it).
+        const bool again = p46_.at.prog == loc_.prog && p46_.at.line == loc_.line;
+        if (p46_.defining && !again)
+            return fail(274, "G46 NU0 inside a definition (NU9 missing)"), false;
+        return p46_header(p, nu);
+    }
+    if (nu >= 10) {
+        if (p46_.defining)
+            return fail(270, "a machining order before the end of the definition (G46 NU9)"), false;
+        return p46_order(p, nu);
+    }
+    if (!p46_.defining)
+        return fail(270, "G46 NU" + std::to_string(nu) + " without a G46 NU0 header"), false;
+    // Contour sections accept LX LY (NU1, NU2) and nothing else.
+    for (int i = 0; i < p.ncyc; ++i) {
+        Addr a = p.cyc[i].a;
+        bool lxy = a == addrL('X') || a == addrL('Y');
+        if (a != addrN('U') && !(lxy && (nu == 1 || nu == 2)))
+            return fail(267, std::string(addr_name(a)) + " is not a word of G46 NU" +
+                                 std::to_string(nu)),
+                   false;
+    }
+    if (p.axis.any() || p.ijk.any() || p.has_f)
+        return fail(267, "G46 NU" + std::to_string(nu) + " takes no coordinates"), false;
+    if (w.has[addrL('X')] != w.has[addrL('Y')]) return fail(277, "LX and LY go together"), false;
+    if (!p46_close_section()) return false;
+    if (nu == 9) {
+        p46_.defining = false;
+        p46::Error e;
+        if (!p46::check(p46_.def, e)) return p46_fail(e, p46_.def);
+        p46_.defs[p46_.def.np] = p46_.def;
+        return true;
+    }
+    p46::Section s;
+    s.nu = nu;
+    s.line = loc_.line;
+    s.n = loc_.n;
+    if (w.has[addrL('X')]) s.has_l = true, s.l = p46::V2(w.v[addrL('X')], w.v[addrL('Y')]);
+    p46_.def.sections.push_back(s);
+    if (p46_.def.sections.size() > 255)
+        return fail(285, "too many contours in one definition"), false;
+    p46_.first = true;
+    p46_.blocks = 0;
+    return true;
+}
+
+// N.. G46 NU0 NP.. ED.. Q.. [J..] [NR±] [R03/R04] [LX.. LY..] [EX.. EY..]
+bool Interpreter::p46_header(const Plan& p, int) {
+    Words w;
+    for (int i = 0; i < p.ncyc; ++i) {
+        Addr a = p.cyc[i].a;
+        static const Addr ok[] = {addrN('U'), addrN('P'), addrN('R'), addrE('D'),
+                                  addr1('Q'), addr1('J'), addr1('R'), addrL('X'),
+                                  addrL('Y'), addrE('X'), addrE('Y')};
+        if (std::find(std::begin(ok), std::end(ok), a) == std::end(ok))
+            return fail(267, std::string(addr_name(a)) + " is not a word of G46 NU0"), false;
+        w.has[a] = true, w.v[a] = p.cyc[i].v;
+    }
+    if (p.axis.any() || p.ijk.any() || p.has_f)
+        return fail(267, "G46 NU0 takes no coordinates"), false;
+    if (!w.has[addrN('P')] || !w.has[addrE('D')] || !w.has[addr1('Q')])
+        return fail(268, "G46 NU0 needs NP, ED and Q"), false;
+    if (w.has[addrL('X')] != w.has[addrL('Y')]) return fail(277, "LX and LY go together"), false;
+    if (w.has[addrE('X')] != w.has[addrE('Y')]) return fail(277, "EX and EY go together"), false;
+    const Frames& f = frames_;
+    bool g59 = std::fabs(f.ed) > 1e-12;
+    for (int a = 0; a < kAxes; ++a) g59 = g59 || std::fabs(f.g59[size_t(a)]) > 1e-12;
+    if (g59) return fail(275, "G46 NU0 with a G59 offset active"), false;
+    p46::Def d;
+    d.np = int(w.v[addrN('P')]);
+    d.ed = w.v[addrE('D')];
+    d.q = w.v[addr1('Q')];
+    d.j = w.has[addr1('J')] ? w.v[addr1('J')] : 0;
+    d.nr = w.has[addrN('R')] ? int(w.v[addrN('R')]) : 1;
+    d.rot = w.has[addr1('R')] ? int(w.v[addr1('R')]) : 3;
+    if (d.np <= 0 || d.np != w.v[addrN('P')] || d.ed <= 0 || d.q <= 0 || d.j < 0 ||
+        (d.rot != 3 && d.rot != 4) || w.v[addr1('R')] != std::floor(w.v[addr1('R')]))
+        return fail(
+                   282,
+                   "G46 NU0: NP a positive integer, ED and Q positive, J not negative, R03 or R04"),
+               false;
+    if (w.has[addrL('X')]) d.has_l = true, d.l = p46::V2(w.v[addrL('X')], w.v[addrL('Y')]);
+    if (w.has[addrE('X')]) d.has_e = true, d.e = p46::V2(w.v[addrE('X')], w.v[addrE('Y')]);
+    d.plane = modal_.plane;
+    p46_.def = d;
+    p46_.at = loc_;
+    p46_.defining = true;
+    p46_.first = true;
+    p46_.blocks = -1;  // no section yet
+    p46_.motion = modal_.motion;
+    return true;
+}
+
+// A contour block: G0/G1 positioning first, then lines and arcs (PGP allowed),
+// in the plane of the definition.
+bool Interpreter::p46_contour(const Plan& p) {
+    const P46Axes ax = p46_axes(p46_.def.plane);
+    const size_t a0 = size_t(ax.a0), a1 = size_t(ax.a1), an = size_t(ax.an);
+    const bool plane_words = p.axis.any() || p.ijk.any() || p.has_r || p.pgp;
+    const bool any_g = p.g.any();
+    if (!plane_words && !any_g && !p.nm && !p.has_f && !p.has_s && !p.has_t && !p.has_d && !p.ncyc)
+        return true;  // a comment line
+    if (p46_.blocks < 0) return fail(269, "a contour block before G46 NU1-NU6"), false;
+    for (size_t g = 0; g < p.g.size(); ++g)
+        if (p.g[g] && g > 3)
+            return fail(279, "G" + std::to_string(g) + " in a pocket contour block"), false;
+    if (p.nm || p.has_f || p.has_s || p.has_t || p.has_d || p.ncyc)
+        return fail(268, "only G0-G3, " + axis_name(ax.a0) + " " + axis_name(ax.a1) + ", " +
+                             centre_name(ax.a0) + " " + centre_name(ax.a1) +
+                             ", R and EB in a pocket contour block"),
+               false;
+    for (int a = 0; a < kAxes; ++a)
+        if (p.axis[size_t(a)] && size_t(a) != a0 && size_t(a) != a1)
+            return fail(264, axis_name(a) + " is outside the contouring plane"), false;
+    // The centre word of the normal axis (K in G17) is a coordinate outside the plane.
+    if (p.ijk[an]) return fail(264, centre_name(ax.an) + " is outside the contouring plane"), false;
+    if (!p.axis[a0] && !p.axis[a1] && !p.has_ea)
+        return fail(264, "no coordinate in the contouring plane"), false;
+    int motion = p.motion >= 0 ? p.motion : p46_.motion;
+    p46_.motion = motion;
+    p46::V2 t = p46_.pos;
+    if (p.axis[a0]) t.x() = p.inc[a0] ? p46_.pos.x() + p.val[a0] : p.val[a0];
+    if (p.axis[a1]) t.y() = p.inc[a1] ? p46_.pos.y() + p.val[a1] : p.val[a1];
+    if (p46_.first) {
+        if (motion != 0 && motion != 1)
+            return fail(265, "a contour starts with a G0 or G1 positioning"), false;
+        if (!p.axis[a0] || !p.axis[a1] || p.has_eb || p.pgp)
+            return fail(280, "the first contour block gives both coordinates of the start point"),
+                   false;
+        p46_.pos = t;
+        p46_.solver = pgp::Solver();
+        p46_.solver.start(t);
+        p46_.first = false;
+        p46_.blocks = 1;
+        return true;
+    }
+    if (motion == 0)
+        return fail(p46_.blocks == 1 ? 292 : 284, p46_.blocks == 1
+                                                      ? "two positionings at the start of a contour"
+                                                      : "G0 inside a contour"),
+               false;
+    ++p46_.blocks;
+    pgp::Spec s;
+    s.g = motion;
+    s.has_x = p.axis[a0], s.x = t.x();
+    s.has_y = p.axis[a1], s.y = t.y();
+    s.has_ea = p.has_ea, s.ea = p.ea;
+    s.has_i = p.ijk[a0], s.i = p.ijk_val[a0] + (p.ijk_inc[a0] ? p46_.pos.x() : 0);
+    s.has_j = p.ijk[a1], s.j = p.ijk_val[a1] + (p.ijk_inc[a1] ? p46_.pos.y() : 0);
+    s.has_r = p.has_r, s.r = p.r;
+    s.link = p.link, s.disc = p.disc;
+    s.has_eb = p.has_eb, s.eb = p.eb, s.eb_unsigned = p.eb_unsigned;
+    s.tag = loc_.line;
+    if (p.link == 'X') return fail(110, "ES and ET together in one block"), false;
+    if (p.has_eb && p.eb_unsigned)
+        warn(err::wUnsignedEB, "EB without a sign is taken as a fillet (EB+): write EB+ or EB- (pupitre-iso(5), PGP)");
+    if ((motion == 2 || motion == 3) && !s.has_i && !s.has_j && !s.has_r && !p.pgp)
+        return fail(269, "a circle without its centre (" + centre_name(ax.a0) + " " +
+                             centre_name(ax.a1) + ") or radius (R)"),
+               false;
+    std::vector<pgp::Elem> out;
+    pgp::Error e;
+    if (!p46_.solver.push(s, out, e)) return fail(e.code, e.detail), false;
+    for (const pgp::Elem& el : out) p46_.def.sections.back().elems.push_back(el.geo);
+    p46_.pos = p46_.solver.pending() ? t : p46_.solver.position();
+    return true;
+}
+
+bool Interpreter::p46_close_section() {
+    if (p46_.blocks < 0 || p46_.def.sections.empty()) return true;
+    std::vector<pgp::Elem> out;
+    pgp::Error e;
+    if (!p46_.first && !p46_.solver.finish(out, e)) return fail(e.code, e.detail), false;
+    for (const pgp::Elem& el : out) p46_.def.sections.back().elems.push_back(el.geo);
+    if (p46_.def.sections.back().elems.empty())
+        return fail(284, "a contour section with no element"), false;
+    return true;
+}
+
+bool Interpreter::p46_fail(const p46::Error& e, const p46::Def& d) {
+    std::string where;
+    if (e.section >= 0 && size_t(e.section) < d.sections.size()) {
+        const p46::Section& s = d.sections[size_t(e.section)];
+        where = s.n >= 0 ? " (contour N" + std::to_string(s.n) + ")"
+                         : " (contour at line " + std::to_string(s.line) + ")";
+    }
+    return fail(e.code, e.why + where), false;
+}
+
+// Runs at one depth: a plunge at each run not linked to the previous one.
+// (x, y) are the plane's first and second coordinates, z the normal axis.
+bool Interpreter::p46_emit(const P46Axes& ax, const std::vector<p46::Run>& runs, double z,
+                           double approach, double clear, double f_ax, double f_lat) {
+    const size_t a0 = size_t(ax.a0), a1 = size_t(ax.a1), an = size_t(ax.an);
+    auto go = [&](int g, double x, double y, double zz, double feed) {
+        Axes t = prog_;
+        t[a0] = x, t[a1] = y, t[an] = zz;
+        if (g) modal_.feed = feed;
+        return cycle_move(g, t);
+    };
+    for (const p46::Run& r : runs) {
+        if (!r.linked) {
+            if (prog_[an] < clear - 1e-9 && !go(0, prog_[a0], prog_[a1], clear, 0)) return false;
+            if (!go(0, r.start.x(), r.start.y(), prog_[an], 0)) return false;
+            if (approach < prog_[an] - 1e-9 && !go(0, r.start.x(), r.start.y(), approach, 0))
+                return false;
+            if (!go(1, r.start.x(), r.start.y(), z, f_ax)) return false;
+        } else if (!go(1, r.start.x(), r.start.y(), z, f_lat)) {
+            return false;
+        }
+        for (const p46::Piece& pc : r.pieces) {
+            if (!pc.arc) {
+                if (!go(1, pc.to.x(), pc.to.y(), z, f_lat)) return false;
+                continue;
+            }
+            modal_.feed = f_lat;
+            Axes t = prog_;
+            t[a0] = pc.to.x(), t[a1] = pc.to.y();
+            double r0 = std::hypot(prog_[a0] - pc.c.x(), prog_[a1] - pc.c.y()),
+                   r1 = (pc.to - pc.c).norm();
+            if (std::fabs(pc.sweep) < 1e-12) continue;
+            // Counter-clockwise from the first axis towards the second is G3 in
+            // every plane (milling.md §2.2).
+            if (!emit_arc(pc.sweep > 0 ? 3 : 2, t, ax.a0, ax.a1, pc.c.x(), pc.c.y(), pc.sweep, r0,
+                          r1, -1))
+                return false;
+        }
+    }
+    return go(0, prog_[a0], prog_[a1], clear, 0);
+}
+
+// G46 NU10 NP.. G81/G83/G87 Z.. ... | NU15 NP.. Z.. P.. [ER] [EH] EP EQ |
+// NU20 NP.. Z.. P.. [ER] [EH] EI EJ [J]   (Z: the normal axis, Y in G18, X in G19)
+bool Interpreter::p46_order(const Plan& p, int nu) {
+    Words w;
+    for (int i = 0; i < p.ncyc; ++i) w.has[p.cyc[i].a] = true, w.v[p.cyc[i].a] = p.cyc[i].v;
+    if (!w.has[addrN('P')]) return fail(268, "a G46 order needs NP"), false;
+    auto it = p46_.defs.find(int(w.v[addrN('P')]));
+    if (it == p46_.defs.end())
+        return fail(270, "pocket NP" + std::to_string(int(w.v[addrN('P')])) + " is not defined"),
+               false;
+    const p46::Def& d = it->second;
+    if (modal_.plane != d.plane)
+        return fail(273, "the plane changed since the pocket was defined"), false;
+    const P46Axes ax = p46_axes(d.plane);
+    const size_t a0 = size_t(ax.a0), a1 = size_t(ax.a1), an = size_t(ax.an);
+    const std::string bottom = axis_name(ax.an);
+    if (modal_.tool_axis != ax.an || modal_.tool_axis_neg)
+        return fail(271, "the tool axis (G16) is not perpendicular to the contouring plane (G16 " +
+                             std::string(1, "PQR"[ax.an]) + "+ in G" + std::to_string(d.plane) +
+                             ")"),
+               false;
+    if (modal_.radcomp != 40) return fail(140, "G46 under radius compensation"), false;
+    if (modal_.spindle_dir != d.rot)
+        return fail(278, "the spindle turns " +
+                             std::string(modal_.spindle_dir == 3   ? "M03"
+                                         : modal_.spindle_dir == 4 ? "M04"
+                                                                   : "not") +
+                             ", the pocket asks for R0" + std::to_string(d.rot)),
+               false;
+    // A plane coordinate first: in G18 the G17 habit of a Z bottom is refused
+    // as a plane coordinate, not taken as a missing bottom.
+    for (int a = 0; a < kAxes; ++a)
+        if (p.axis[size_t(a)] && size_t(a) != an)
+            return fail(267, "a G46 order takes no plane coordinate (" + axis_name(a) +
+                                 "): its bottom is " + bottom + " in G" + std::to_string(d.plane)),
+                   false;
+    if (!p.axis[an]) return fail(268, "a G46 order needs the bottom " + bottom), false;
+    const double zb = p.inc[an] ? prog_[an] + p.val[an] : p.val[an];
+    apply_corrector_gauges(std::bitset<kAxes>().set(an));
+    first_move_ = false;
+
+    if (nu == 10) {
+        int code = p.g[81] ? 81 : p.g[83] ? 83 : p.g[87] ? 87 : 0;
+        if (!code) return fail(268, "G46 NU10 needs G81, G83 or G87"), false;
+        std::vector<p46::Run> runs;
+        std::vector<double> ys;
+        p46::Error e;
+        if (!p46::roughing(d, d.ed / 2, runs, ys, e)) return p46_fail(e, d);
+        Modal saved = modal_;
+        CycleParams saved_cyc = cyc_;
+        cyc_ = CycleParams{};
+        modal_.motion = 0;
+        modal_.cycle = code;
+        modal_.feed_mode = 94;
+        if (p.has_f) modal_.feed = p.f;
+        Plan q = p;
+        q.axis.reset();
+        q.axis.set(an);
+        q.inc.reset();
+        bool ok = cycle_words(q, code);  // the cycle axis is the normal axis (cycle_axis())
+        q.axis.set(a0).set(a1);
+        std::vector<p46::V2> done;
+        for (const p46::Run& r : runs) {
+            if (!ok || r.linked) continue;
+            bool dup = false;
+            for (const auto& h : done) dup = dup || (h - r.start).norm() < 1e-6;
+            if (dup) continue;
+            done.push_back(r.start);
+            q.val[a0] = r.start.x(), q.val[a1] = r.start.y();
+            ok = cycle_run(q, code);
+        }
+        cyc_ = saved_cyc;
+        modal_ = saved;
+        return ok;
+    }
+
+    const Corrector& c = corr_[size_t(modal_.d)];
+    const double R = c.r + c.dr;
+    if (modal_.d == 0 || R <= 0)
+        return fail(272, "the pocket needs a cutter with a radius (D0 or R0 active)"), false;
+    if (nu == 15 && std::fabs(2 * R - d.ed) > 1e-3)
+        return fail(272, "the cutter (diameter " + num(2 * R) +
+                             ") is not the roughing cutter ED of the pocket"),
+               false;
+    static const Addr ok15[] = {addrN('U'), addrN('P'), addr1('P'), addrE('R'),
+                                addrE('H'), addrE('P'), addrE('Q')};
+    static const Addr ok20[] = {addrN('U'), addrN('P'), addr1('P'), addrE('R'),
+                                addrE('H'), addrE('I'), addrE('J'), addr1('J')};
+    for (int i = 0; i < p.ncyc; ++i) {
+        Addr a = p.cyc[i].a;
+        bool ok = nu == 15 ? std::find(std::begin(ok15), std::end(ok15), a) != std::end(ok15)
+                           : std::find(std::begin(ok20), std::end(ok20), a) != std::end(ok20);
+        if (!ok)
+            return fail(267, std::string(addr_name(a)) + " is not a word of G46 NU" +
+                                 std::to_string(nu)),
+                   false;
+    }
+    if (p.has_f || p.g.count() > 1)
+        return fail(267, "G46 NU" + std::to_string(nu) + " takes no F and no other G"), false;
+    if (!w.has[addr1('P')])
+        return fail(268, "G46 NU" + std::to_string(nu) + " needs the axial step P"), false;
+    const Addr fa = nu == 15 ? addrE('P') : addrE('I'), fl = nu == 15 ? addrE('Q') : addrE('J');
+    if (!w.has[fa] || !w.has[fl])
+        return fail(268, std::string("G46 NU") + std::to_string(nu) +
+                             (nu == 15 ? " needs EP and EQ" : " needs EI and EJ")),
+               false;
+    const double P = w.v[addr1('P')], jf = w.has[addr1('J')] ? w.v[addr1('J')] : 0;
+    if (P <= 0 || w.v[fa] <= 0 || w.v[fl] <= 0 || jf < 0)
+        return fail(282, "P, the feeds and J of a G46 order are positive"), false;
+    const double clear = w.has[addrE('R')] ? w.v[addrE('R')] : prog_[an];
+    const double top = w.has[addrE('H')] ? w.v[addrE('H')] : clear;
+    if (top - zb < 1e-9)
+        return fail(276, "the pocket bottom " + bottom + " is not below the attack plane"), false;
+    if (clear < top - 1e-9)
+        return fail(282, "the clearance plane ER is below the attack plane EH"), false;
+
+    std::vector<p46::Run> runs;
+    p46::Error e;
+    if (nu == 15) {
+        std::vector<double> ys;
+        if (!p46::roughing(d, R, runs, ys, e)) return p46_fail(e, d);
+    } else {
+        bool any = false;
+        for (const auto& s : d.sections) any = any || s.nu == 1 || s.nu == 2 || s.nu == 6;
+        if (!any) return true;  // NU20 is ignored for facing outlines and recesses (000:6369)
+        if (!p46::finishing(d, R, jf, runs, e)) return p46_fail(e, d);
+    }
+    Modal saved = modal_;
+    modal_.feed_mode = 94;
+    modal_.feed_set = true;
+    modal_.motion = 1;
+    bool ok = true;
+    if (prog_[an] < clear - 1e-9) ok = cycle_axis_move(0, clear);
+    double approach = top;
+    for (double z : layers(top, zb, P)) {
+        if (!ok) break;
+        ok = p46_emit(ax, runs, z, approach, clear, w.v[fa], w.v[fl]);
+        approach = z;
+    }
+    // The roughing end point EX EY of the header (000:6109), at the clearance.
+    if (ok && nu == 15 && d.has_e) {
+        Axes t = prog_;
+        t[a0] = d.e.x(), t[a1] = d.e.y();
+        ok = cycle_move(0, t);
+    }
+    modal_ = saved;
+    return ok;
+}
+
+}  // namespace pupitre

@@ -1,0 +1,389 @@
+// The turning cycles in the interpreter (turning.md §6): the finished profile is
+// read from its blocks N<a>..N<b> (PGP included, without running them), the rough
+// stock of G64 from the blocks up to G80, and the moves the cycle functions of
+// core/cycles/turning.cpp return are run like programmed ones.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <algorithm>
+#include <cmath>
+
+#include "core/interp/plan.hpp"
+#include "core/cycles/turning.hpp"
+
+namespace pupitre {
+
+double Interpreter::cyc(const Plan& p, Addr a, double dflt, bool* has) {
+    for (int i = 0; i < p.ncyc; ++i)
+        if (p.cyc[i].a == a) {
+            if (has) *has = true;
+            return p.cyc[i].v;
+        }
+    if (has) *has = false;
+    return dflt;
+}
+
+// Reads the finished profile N<a>..N<b> of the current program into lines and
+// arcs in (z, r), in the order written (the profile may be called backwards).
+bool Interpreter::turning_profile(long na, long nb, turning::Profile& out, comp::V2& first) {
+    const ProgramText* prog = stack_.back().prog;
+    const Label* a = prog->find_label(na);
+    const Label* b = prog->find_label(nb);
+    if (!a || !b) return fail(871, "the profile block N" + std::to_string(!a ? na : nb) + " is not in the program"), false;
+    bool reversed = b->line < a->line;
+    profile_feed_ = 0;
+    const Label* lo = reversed ? b : a;
+    const Label* hi = reversed ? a : b;
+    std::string_view text = *prog->text;
+    Loc saved = loc_;
+    Modal saved_modal = modal_;
+    Block blk;
+    pgp::Solver solver;
+    std::vector<pgp::Elem> elems;
+    comp::V2 pos(prog_[Z], prog_[X]);
+    bool started = false;
+    size_t pos_off = lo->offset;
+    int count = 0;
+    for (int line = lo->line; line <= hi->line && pos_off < prog->end; ++line) {
+        size_t eol = std::min(text.find('\n', pos_off), prog->end);
+        std::string_view l = text.substr(pos_off, eol - pos_off);
+        pos_off = eol + 1;
+        Diag d;
+        loc_ = Loc{prog->number, line, line_label(l)};
+        if (!parse_block(l, blk, d)) return fail(d.code, d.detail, d.column), false;
+        if (blk.empty()) continue;
+        // 000:2464 forbids L100-L199 and L900-L959 in the finished profile, yet the
+        // handbook's own %2000 reads L151-L153 in one (000:8839-8866): their
+        // writes are what needs the block preparation stopped, so writes only are
+        // refused (96) and reads are free, as everywhere else (program-flow §8.2).
+        for (const Assign& as : blk.assigns)
+            if (as.target.kind == Operand::LVar && as.target.index >= 100)
+                return fail(96, "writing L" + std::to_string(as.target.index) + " in a roughing-cycle profile"), false;
+        Plan q;
+        if (!decode(blk, q)) return false;
+        if (q.motion >= 0) modal_.motion = q.motion;
+        if (q.dist >= 0) modal_.incremental = q.dist == 91;
+        if (q.has_f && profile_feed_ <= 0) profile_feed_ = q.f;
+        if (!started) {
+            // The first block of the profile is its start point. A coordinate it
+            // does not write is the one in force there: the nearest block above
+            // that writes it (%555: G65 N120 N170 starts at N120 G1 X60).
+            for (int ax : {X, Z}) {
+                if (q.axis[size_t(ax)]) continue;
+                double v;
+                if (!coordinate_above(prog, lo->line, ax, v))
+                    return fail(871, "the first block of the profile needs X and Z"), false;
+                q.axis.set(size_t(ax));
+                q.inc.reset(size_t(ax));
+                q.val[size_t(ax)] = v;
+            }
+            pos = comp::V2(q.inc[Z] ? pos.x() + q.val[Z] : q.val[Z], q.inc[X] ? pos.y() + q.val[X] : q.val[X]);
+            first = pos;
+            solver.start(pos);
+            started = true;
+            continue;
+        }
+        bool motion = q.axis[X] || q.axis[Z] || q.pgp || q.ijk.any() || q.has_r;
+        if (!motion) {
+            pgp::Error e;
+            if (!solver.idle(e)) return fail(e.code, e.detail), false;
+            continue;
+        }
+        pgp::Spec s;
+        s.g = (modal_.motion == 2 || modal_.motion == 3) ? modal_.motion : 1;
+        comp::V2 cur = solver.position();
+        s.has_x = q.axis[Z];
+        s.x = q.inc[Z] ? cur.x() + q.val[Z] : q.val[Z];
+        s.has_y = q.axis[X];
+        s.y = q.inc[X] ? cur.y() + q.val[X] : q.val[X];
+        s.has_ea = q.has_ea;
+        s.ea = q.ea;
+        s.has_i = q.ijk[2];
+        s.i = q.ijk_val[2] + (q.ijk_inc[2] ? cur.x() : 0);
+        s.has_j = q.ijk[0];
+        s.j = q.ijk_val[0] + (q.ijk_inc[0] ? cur.y() : 0);
+        s.has_r = q.has_r;
+        s.r = q.r;
+        s.link = q.link == 'X' ? 'S' : q.link;
+        s.disc = q.disc;
+        s.has_eb = q.has_eb;
+        s.eb = q.eb;
+        s.eb_unsigned = q.eb_unsigned;
+        s.tag = line;
+        pgp::Error e;
+        if (!solver.push(s, elems, e)) return fail(e.code, e.detail), false;
+        ++count;
+    }
+    pgp::Error e;
+    if (!solver.finish(elems, e)) return fail(e.code, e.detail), false;
+    loc_ = saved;
+    modal_ = saved_modal;
+    if (!started || elems.empty()) return fail(871, "the profile N" + std::to_string(na) + "..N" +
+                                                     std::to_string(nb) + " has no element"),
+                                    false;
+    if (count > 50) return fail(871, "a profile has at most 50 blocks"), false;
+    out.elems.clear();
+    for (const auto& el : elems) out.elems.push_back(el.geo);
+    if (reversed) {
+        // Called backwards: the same elements from the last point to the first.
+        std::reverse(out.elems.begin(), out.elems.end());
+        for (auto& el : out.elems) {
+            std::swap(el.a, el.b);
+            el.sweep = -el.sweep;
+        }
+        first = out.elems.front().a;
+    }
+    return true;
+}
+
+// The absolute value of `axis` written by the nearest block above `line`.
+bool Interpreter::coordinate_above(const ProgramText* prog, int line, int axis, double& v) {
+    std::string_view text = *prog->text;
+    // Line start offsets of the program, up to `line`.
+    std::vector<size_t> starts;
+    size_t pos = prog->begin;
+    for (int l = prog->first_line; l < line && pos < prog->end; ++l) {
+        starts.push_back(pos);
+        pos = text.find('\n', pos) + 1;
+    }
+    Block blk;
+    for (size_t i = starts.size(); i-- > 0;) {
+        size_t eol = std::min(text.find('\n', starts[i]), prog->end);
+        Diag d;
+        if (!parse_block(text.substr(starts[i], eol - starts[i]), blk, d)) return false;
+        Plan q;
+        if (!decode(blk, q)) return false;
+        if (q.axis[size_t(axis)] && !q.inc[size_t(axis)] && !q.g[52]) {
+            v = q.val[size_t(axis)];
+            return true;
+        }
+    }
+    return false;
+}
+
+// Runs the moves of a cycle. Threading moves (g 1 of G33/G38) are at `lead` mm per
+// revolution when lead > 0; infeed moves at `infeed` mm/min or per rev when > 0.
+bool Interpreter::turning_emit(const std::vector<turning::Move>& moves, double lead, double infeed) {
+    Modal saved = modal_;
+    for (const turning::Move& m : moves) {
+        Axes t = prog_;
+        t[Z] = m.to.x();
+        t[X] = m.to.y();
+        modal_.feed = saved.feed;
+        modal_.feed_mode = saved.feed_mode;
+        modal_.feed_set = saved.feed_set;
+        if (!saved.feed_set && profile_feed_ > 0) {
+            // No F since G95 (%5300 writes G64 with no F after "G80 G40 G95"): the
+            // cutting feed is the first F of the finished profile (000:10470).
+            modal_.feed = profile_feed_;
+            modal_.feed_set = true;
+        }
+        if (lead > 0 && (m.g == 33 || m.g == 1)) {
+            modal_.feed_mode = 95;
+            modal_.feed = lead;
+            modal_.feed_set = true;
+        } else if (m.infeed && infeed > 0) {
+            modal_.feed = infeed;
+            modal_.feed_set = true;
+        }
+        bool ok;
+        if (m.g == 2 || m.g == 3) {
+            double r0 = std::hypot(prog_[Z] - m.c.x(), prog_[X] - m.c.y());
+            double r1 = (m.to - m.c).norm();
+            ok = emit_arc(m.g, t, Z, X, m.c.x(), m.c.y(), m.sweep, r0, r1, -1);
+        } else {
+            ok = cycle_move(m.g == 0 ? 0 : 1, t);  // g33: a line at the lead per revolution
+        }
+        if (!ok) return false;
+        if (m.dwell > 0) cycle_dwell(m.dwell);
+        if (m.spindle == 3 || m.spindle == 4) {
+            modal_.spindle_dir = m.spindle;
+            saved.spindle_dir = m.spindle;
+            set_spindle_event();
+        }
+    }
+    saved.spindle_dir = modal_.spindle_dir;
+    modal_ = saved;
+    return true;
+}
+
+// A block that programs G63, G64, G65, G66, G33 or G38 (G64: the stock follows).
+bool Interpreter::turning_block(const Plan& p) {
+    if (modal_.radcomp != 40) return fail(140, "a turning cycle under radius compensation"), false;
+    const bool diam = m_.x_diameter && !modal_.radius_x;
+    const comp::V2 tool(prog_[Z], prog_[X]);
+    auto xpos = [&](Addr a, bool& has) { double v = cyc(p, a, 0, &has); return diam ? v / 2 : v; };
+    std::vector<turning::Move> moves;
+    std::string why;
+    int rc = 0;
+    if (p.g[64]) {
+        if (p.spl_nn < 2) return fail(871, "G64 needs the profile blocks N.. N.."), false;
+        g64_ = turning::G64Args{};
+        g64_.i = cyc(p, addr1('I'), 0);
+        g64_.k = cyc(p, addr1('K'), 0);
+        g64_.p = cyc(p, addr1('P'), 0, &g64_.has_p);
+        g64_.r = cyc(p, addr1('R'), 0, &g64_.has_r);
+        if (!g64_.has_p && !g64_.has_r) return fail(873, "G64 needs P (passes along Z) or R (passes along X)"), false;
+        if (g64_.has_p && g64_.has_r) return fail(889, "G64 takes P or R, not both"), false;
+        if (g64_.p < 0 || g64_.r < 0) return fail(835, "G64: P and R are positive"), false;
+        g64_na_ = p.spl_n[0];
+        g64_nb_ = p.spl_n[1];
+        g64_tool_ = tool;
+        g64_stock_.clear();
+        g64_loc_ = loc_;
+        g64_pending_ = true;
+        return true;
+    }
+    if (p.g[65] || p.g[63]) {
+        if (p.spl_nn < 2) return fail(871, "G" + std::to_string(p.g[65] ? 65 : 63) + " needs the profile N.. N.."), false;
+        turning::Profile prof;
+        comp::V2 first;
+        if (!turning_profile(p.spl_n[0], p.spl_n[1], prof, first)) return false;
+        if (p.g[65]) {
+            turning::G65Args a;
+            a.has_x = p.axis[X];
+            a.x = p.val[X];
+            a.has_z = p.axis[Z];
+            a.z = p.val[Z];
+            a.i = cyc(p, addr1('I'), 0);
+            a.k = cyc(p, addr1('K'), 0);
+            a.ea = cyc(p, addrE('A'), 0, &a.has_ea);
+            a.p = cyc(p, addr1('P'), 0, &a.has_p);
+            a.r = cyc(p, addr1('R'), 0, &a.has_r);
+            a.q = cyc(p, addr1('Q'), 0);
+            if (!a.has_ea) return fail(2, "G65 needs the infeed angle EA"), false;
+            rc = turning::g65(prof, tool, a, moves, why);
+        } else {
+            turning::G63Args a;
+            a.has_x = p.axis[X];
+            a.x = p.val[X];
+            a.has_z = p.axis[Z];
+            a.z = p.val[Z];
+            a.ex = xpos(addrE('X'), a.has_ex);
+            a.ez = cyc(p, addrE('Z'), 0, &a.has_ez);
+            a.p = cyc(p, addr1('P'), 0, &a.has_p);
+            a.r = cyc(p, addr1('R'), 0, &a.has_r);
+            a.ea = cyc(p, addrE('A'), 0, &a.has_ea);
+            a.eu = xpos(addrE('U'), a.has_eu);
+            a.ew = cyc(p, addrE('W'), 0, &a.has_ew);
+            a.eb = cyc(p, addrE('B'), 90, &a.has_eb);
+            a.ec = cyc(p, addrE('C'), 0, &a.has_ec);
+            a.er = cyc(p, addrE('R'), 0);
+            a.q = cyc(p, addr1('Q'), 0);
+            a.eq = cyc(p, addrE('Q'), 0);
+            rc = turning::g63(prof, tool, a, moves, why);
+        }
+        if (rc) return fail(rc, why), false;
+        bool has_ef;
+        double ef = cyc(p, addrE('F'), 0, &has_ef);
+        if (!turning_emit(moves, 0, has_ef ? ef : 0)) return false;
+        modal_.motion = 0;  // the state is G00 after the cycle (000:2462)
+        return true;
+    }
+    if (p.g[66]) {
+        turning::G66Args a;
+        a.d_first = modal_.d;
+        a.d = int(cyc(p, addr1('D'), 0));
+        if (a.d > 0 && a.d <= m_.correctors && modal_.d > 0) {
+            const Corrector& c1 = corr_[size_t(modal_.d)];
+            const Corrector& c2 = corr_[size_t(a.d)];
+            a.gauge_delta = comp::V2((c2.z + c2.dz) - (c1.z + c1.dz), (c2.x + c2.dx / 2) - (c1.x + c1.dx / 2));
+        }
+        a.has_x = p.axis[X];
+        a.x = p.val[X];
+        a.has_z = p.axis[Z];
+        a.z = p.val[Z];
+        a.ea = cyc(p, addrE('A'), 0);
+        a.p = cyc(p, addr1('P'), 0, &a.has_p);
+        a.r = cyc(p, addr1('R'), 0, &a.has_r);
+        a.ep = cyc(p, addrE('P'), 0);
+        a.ef = cyc(p, addrE('F'), 0);
+        rc = turning::g66(tool, a, moves, why);
+        if (rc) return fail(rc, why), false;
+        bool has_ef;
+        double ef = cyc(p, addrE('F'), 0, &has_ef);
+        if (!turning_emit(moves, 0, has_ef ? ef : 0)) return false;
+        // The second corrector is active afterwards; the tool has not moved
+        // (turning.md §6.6).
+        modal_.d = a.d;
+        frames_.gauge[X] = gauge_for(a.d, X);
+        frames_.gauge[Z] = gauge_for(a.d, Z);
+        gauge_pending_.reset();
+        recompute_program_pos();
+        modal_.motion = 0;
+        return true;
+    }
+    if (p.g[33]) {
+        turning::G33Args a;
+        a.has_x = p.axis[X];
+        a.x = p.val[X];
+        a.has_z = p.axis[Z];
+        a.z = p.val[Z];
+        a.k = cyc(p, addr1('K'), 0, &a.has_k);
+        a.ea = cyc(p, addrE('A'), 0);
+        a.eb = cyc(p, addrE('B'), 0);
+        a.p = cyc(p, addr1('P'), 0, &a.has_p);
+        a.q = cyc(p, addr1('Q'), 0, &a.has_q);
+        a.r = cyc(p, addr1('R'), 0);
+        a.f = cyc(p, addr1('F'), 1, &a.has_f);
+        a.s = cyc(p, addr1('S'), 1, &a.has_s);
+        a.es = cyc(p, addrE('S'), 1, &a.has_es);
+        a.spindle_turning = modal_.spindle_dir == 3 || modal_.spindle_dir == 4;
+        a.plane_ok = true;
+        a.radius_comp = modal_.radcomp != 40;
+        rc = turning::g33(tool, a, moves, why);
+        if (rc) return fail(rc, why), false;
+        return turning_emit(moves, a.k, 0);
+    }
+    // G38: chained threading, modal in the motion group.
+    turning::G38Args a;
+    a.to = comp::V2(p.axis[Z] ? (p.inc[Z] ? prog_[Z] + p.val[Z] : p.val[Z]) : prog_[Z],
+                    p.axis[X] ? (p.inc[X] ? prog_[X] + p.val[X] : p.val[X]) : prog_[X]);
+    bool has_k;
+    double k = cyc(p, addr1('K'), 0, &has_k);
+    if (!has_k && p.ijk[2]) k = p.ijk_val[2], has_k = true;  // K in a following G38 block
+    if (!has_k) k = g38_lead_, has_k = g38_lead_ > 0;
+    a.has_k = has_k;
+    a.k = k;
+    a.prev_k = g38_lead_;
+    a.spindle_turning = modal_.spindle_dir == 3 || modal_.spindle_dir == 4;
+    a.radius_comp = modal_.radcomp != 40;
+    rc = turning::g38(tool, a, moves, why);
+    if (rc) return fail(rc, why), false;
+    g38_lead_ = k;
+    return turning_emit(moves, k, 0);
+}
+
+// While a G64 waits for its G80: the blocks are the rough stock, not moves.
+bool Interpreter::turning_stock(const Plan& p) {
+    if (p.g[2] || p.g[3] || p.pgp || p.motion == 2 || p.motion == 3)
+        return fail(889, "the rough stock of G64 is made of points, no circle or PGP"), false;
+    comp::V2 last = g64_stock_.empty() ? comp::V2(NAN, NAN) : g64_stock_.back();
+    if (!p.axis[X] && !p.axis[Z]) return true;  // a comment or a label: no point
+    if (g64_stock_.empty() && (!p.axis[X] || !p.axis[Z]))
+        return fail(872, "the first point of the rough stock needs X and Z"), false;
+    comp::V2 pt(p.axis[Z] ? p.val[Z] : last.x(), p.axis[X] ? p.val[X] : last.y());
+    g64_stock_.push_back(pt);
+    return true;
+}
+
+// The G80 that ends a G64: the roughing runs before the rest of the block.
+bool Interpreter::turning_g64_run() {
+    g64_pending_ = false;
+    if (g64_stock_.empty()) return fail(872, "G64 without a rough stock before G80"), false;
+    std::vector<std::array<double, 2>> zr;
+    for (const auto& q : g64_stock_) zr.push_back({q.x(), q.y()});
+    out_.stock(g64_loc_, zr);
+    Loc saved = loc_;
+    loc_ = g64_loc_;
+    turning::Profile prof;
+    comp::V2 first;
+    if (!turning_profile(g64_na_, g64_nb_, prof, first)) return false;
+    std::vector<turning::Move> moves;
+    std::string why;
+    if (int rc = turning::g64(prof, g64_stock_, g64_tool_, g64_, moves, why)) return fail(rc, why), false;
+    bool ok = turning_emit(moves, 0, 0);
+    loc_ = saved;
+    modal_.motion = 0;
+    return ok;
+}
+
+}  // namespace pupitre

@@ -1,0 +1,512 @@
+// Motion: G0/G1 lines, G2/G3 arcs (R or absolute centre, 20 µm rule, helix with
+// the K pitch choosing the turns), G23, G52, R±, travel limits, and the time model
+// (rapid per axis, G94/G95/G93, G96 integrated along the path).
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <Eigen/Core>
+#include <cmath>
+#include <numbers>
+
+#include "core/interp/plan.hpp"
+#include "core/geometry/geometry.hpp"
+
+namespace pupitre {
+
+namespace {
+using ::pupitre::geometry::kPi;
+constexpr double kArcTolerance = 0.020;  // mm: start and end radii (004:626, 000:13249)
+
+std::string f3(double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.3f", v);
+    return buf;
+}
+
+int ijk_index(int axis) { return axis == X ? 0 : axis == Y ? 1 : 2; }
+
+double linear_length(const Axes& a, const Axes& b) {
+    double s = 0;
+    for (int i = X; i <= W; ++i) s += (b[size_t(i)] - a[size_t(i)]) * (b[size_t(i)] - a[size_t(i)]);
+    return std::sqrt(s);
+}
+double rotary_length(const Axes& a, const Axes& b) {
+    double s = 0;
+    for (int i = A; i <= C; ++i) s += (b[size_t(i)] - a[size_t(i)]) * (b[size_t(i)] - a[size_t(i)]);
+    return std::sqrt(s);
+}
+}  // namespace
+
+bool Interpreter::check_travel(const Axes& mach) {
+    for (int a = 0; a < kAxes; ++a) {
+        double v = mach[size_t(a)], lo = travel_lo_[size_t(a)], hi = travel_hi_[size_t(a)];
+        if (!homed_[size_t(a)] && std::abs(v - mach_[size_t(a)]) > 1e-9) {
+            // 000:13307: a programmed move of an axis whose POM is not done.
+            fail(159, std::string("axis ") + kAxisNames[size_t(a)] + " is not homed: do the POM first");
+            return false;
+        }
+        if (v >= lo - 1e-6 && v <= hi + 1e-6) continue;
+        std::string axis(1, kAxisNames[size_t(a)]);
+        fail(150 + a, axis + " travel limit: the move goes to " + axis + f3(v) + " on the OM scale" +
+                          (a == X && m_.lathe ? " (radius)" : "") + ", beyond " + f3(v < lo ? lo : hi));
+        return false;
+    }
+    return true;
+}
+
+// Seconds to travel `len` at feed from program X (radius) xa to xb, linearly.
+// Returns a negative number when the spindle is stopped under G95.
+double Interpreter::feed_time(double len, double xa, double xb) {
+    double unit = modal_.inch ? 25.4 : 1.0;
+    if (modal_.feed_mode == 93) return 60.0 / modal_.feed;
+    if (modal_.feed_mode == 94) {
+        double f = std::min(modal_.feed * unit, m_.max_feed);
+        return len / f * 60.0;
+    }
+    // G95: feed per revolution; under G96 the speed follows X (turning.md §5.8).
+    double per_rev = modal_.feed * unit;
+    if (modal_.spindle_mode != 96) {
+        double n = spindle_at(xa);
+        if (n <= 0) return -1;
+        return len / std::min(per_rev * n, m_.max_feed) * 60.0;
+    }
+    constexpr int kSteps = 16;
+    double t = 0;
+    for (int i = 0; i < kSteps; ++i) {
+        double x = xa + (xb - xa) * (i + 0.5) / kSteps;
+        double n = spindle_at(x);
+        if (n <= 0) return -1;
+        t += (len / kSteps) / std::min(per_rev * n, m_.max_feed) * 60.0;
+    }
+    return t;
+}
+
+// A feed per minute below 1 mm/min is almost always a feed per revolution written
+// without G95 (the handbook's palier %2000 and %2001): said once per run.
+void Interpreter::check_tiny_feed() {
+    if (modal_.feed_mode == 94 && modal_.feed < 1.0 && !tiny_feed_warned_) {
+        tiny_feed_warned_ = true;
+        warn(err::wTinyFeed, "F" + f3(modal_.feed) + " in G94 is " + f3(modal_.feed) +
+                                 " mm/min: a feed per revolution needs G95");
+    }
+}
+
+double Interpreter::feed_rate(double& rpm_out) {
+    double unit = modal_.inch ? 25.4 : 1.0;
+    rpm_out = spindle_at(prog_[X]);
+    if (modal_.feed_mode == 95) return std::min(modal_.feed * unit * rpm_out, m_.max_feed);
+    return std::min(modal_.feed * unit, m_.max_feed);
+}
+
+bool Interpreter::do_motion(const Plan& p) {
+    const bool g52 = p.g[52];
+    const bool comp = modal_.radcomp != 40;
+    int a0 = m_.lathe ? Z : modal_.plane == 17 ? X : modal_.plane == 18 ? Z : Y;
+    int a1 = m_.lathe ? X : modal_.plane == 17 ? Y : modal_.plane == 18 ? X : Z;
+    if (comp) {
+        if (p.axis[size_t(a0)] || p.axis[size_t(a1)]) {
+            nonmotion_in_comp_ = 0;
+        } else if (++nonmotion_in_comp_ > 2) {
+            return fail(140, "more than 2 blocks in a row without motion in the plane under radius compensation"),
+                   false;
+        }
+    }
+    if (g52) {
+        if (comp) return fail(27, "G52 move under radius compensation (program G40 first)"), false;
+        if (modal_.incremental) return fail(3, "G52 needs absolute programming (G90)"), false;
+        if (modal_.motion == 2 || modal_.motion == 3) return fail(3, "G52 moves are linear (G0 or G1)"), false;
+    }
+    if (modal_.radcomp == 29 && !g52) return g29_move(p);
+    // The end of a compensated profile: held PGP elements are resolved first.
+    if (comp_.on && modal_.radcomp == 40 && pgp_.pending() && !pgp_close()) return false;
+    if (comp_.on && modal_.radcomp == 40 && p.axis.none()) return comp_exit(p, nullptr);
+    if (p.g[6]) return spline_run(p);
+    if (p.g[33] || p.g[63] || p.g[64] || p.g[65] || p.g[66] || (modal_.motion == 38 && p.axis.any())) {
+        first_move_ = false;
+        return turning_block(p);
+    }
+    if (p.g[45]) {
+        if (p.axis.any()) apply_corrector_gauges(p.axis);
+        first_move_ = false;
+        return pocket(p);
+    }
+    if (p.g[31] || (modal_.cycle >= 81 && modal_.cycle <= 89)) {
+        if (g52) return fail(3, "G52 in a drilling cycle block"), false;
+        if (p.axis.any() && !g52) apply_corrector_gauges(p.axis);
+        first_move_ = false;
+        return cycle_block(p);
+    }
+    if (!g52 && !(comp_.on && modal_.radcomp == 40) && pgp_wanted(p)) {
+        int a0p, a1p;
+        plane_axes(a0p, a1p);
+        bool plane = p.pgp || p.axis[size_t(a0p)] || p.axis[size_t(a1p)] || p.ijk.any() || p.has_r;
+        if (plane) {
+            Axes target = prog_;
+            for (int a = 0; a < kAxes; ++a)
+                if (p.axis[size_t(a)])
+                    target[size_t(a)] = p.inc[size_t(a)] ? prog_[size_t(a)] + p.val[size_t(a)] : p.val[size_t(a)];
+            if (p.axis.any()) apply_corrector_gauges(p.axis);
+            first_move_ = false;
+            return pgp_block(p, target);
+        }
+        pgp::Error e;
+        if (!pgp_.idle(e)) return fail(e.code, e.detail), false;  // at the block that overflows
+        if (p.axis.any()) {
+            // A move out of the plane: made when the held elements are out.
+            Axes target = prog_;
+            for (int a = 0; a < kAxes; ++a)
+                if (p.axis[size_t(a)])
+                    target[size_t(a)] = p.inc[size_t(a)] ? prog_[size_t(a)] + p.val[size_t(a)] : p.val[size_t(a)];
+            return comp_other_axes(target, p.axis);
+        }
+        return true;
+    }
+    if (p.axis.none()) {
+        bool arcwords = p.ijk.any() || p.has_r;
+        if (p.g[23] || ((p.motion == 2 || p.motion == 3) && arcwords))
+            return fail(101, "circle without its end point"), false;
+        return true;
+    }
+    if (first_move_ && p.inc.any())
+        warn(err::wIncrementalFirst, "first move written in G91: relative to the position after homing");
+    first_move_ = false;
+    if (p.axis[X] && !g52) modal_.css_known = true;
+    if (!g52) apply_corrector_gauges(p.axis);
+
+    Axes target = prog_;
+    for (int a = 0; a < kAxes; ++a)
+        if (p.axis[size_t(a)]) target[size_t(a)] = p.inc[size_t(a)] ? prog_[size_t(a)] + p.val[size_t(a)] : p.val[size_t(a)];
+
+    if (g52) {
+        Axes mach = mach_;
+        for (int a = 0; a < kAxes; ++a)
+            if (p.axis[size_t(a)]) mach[size_t(a)] = p.val[size_t(a)];
+        if (!check_travel(mach)) return false;
+        if (!linear(modal_.motion, mach, true, p.axis)) return false;
+        // G96 starts again from the recomputed program X (turning.md §5.8).
+        modal_.css_x0 = modal_.css_pos0 = prog_[X];
+        return true;
+    }
+    if (comp_.on && modal_.radcomp == 40) return comp_exit(p, &target);
+    if (p.g[23]) return arc3(p, target);
+    if (modal_.motion == 2 || modal_.motion == 3) return arc(p, target);
+    if (comp_.on) {
+        comp::V2 s(prog_[size_t(comp_.a0)], prog_[size_t(comp_.a1)]);
+        comp::V2 e(target[size_t(comp_.a0)], target[size_t(comp_.a1)]);
+        if ((e - s).norm() > 1e-9 || (comp_.waiting_entry && (p.axis[size_t(comp_.a0)] || p.axis[size_t(comp_.a1)]))) {
+            comp::Elem line;
+            line.a = s;
+            line.b = e;
+            return comp_element(line, modal_.motion, target, 0);
+        }
+        return comp_other_axes(target, p.axis);
+    }
+    if (p.r_sign != 0 && modal_.d > 0) {
+        // R- stops one tool radius short of the point, R+ beyond it (milling.md §4.5).
+        const Corrector& c = corr_[size_t(modal_.d)];
+        double r = c.r + (m_.lathe ? 0 : c.dr);
+        double len = linear_length(prog_, target);
+        if (len > 1e-9)
+            for (int a = X; a <= W; ++a)
+                target[size_t(a)] += p.r_sign * r * (target[size_t(a)] - prog_[size_t(a)]) / len;
+    }
+    Axes mach = frames_.to_machine(target);
+    if (frames_.ed == 0)
+        for (int a = 0; a < kAxes; ++a)
+            if (!p.axis[size_t(a)] && !frames_.mirror[size_t(a)]) mach[size_t(a)] = mach_[size_t(a)];
+    if (!check_travel(mach)) return false;
+    prog_next_ = target;
+    return linear(modal_.motion, mach, false, p.axis);
+}
+
+// G29, tool correction in space (milling.md §4.6): each block gives a contact
+// point X Y Z on the surface and the unit normal P Q R pointing from the
+// material to the tool; the tool tip goes where a torus cutter of radius R and
+// end radius @ touches that point:
+//   Ct = Pc + @ N;  w = unit(N - (N.u) u);  Oc = Ct + (R - @) w;  tip = Oc - @ u.
+bool Interpreter::g29_move(const Plan& p) {
+    if (p.axis.none() && p.g29_has.none()) return true;
+    if (!(p.axis[X] && p.axis[Y] && p.axis[Z]) || p.g29_has.count() != 3)
+        return fail(146, "a G29 block needs all of X Y Z and P Q R (000:13291)"), false;
+    if (modal_.motion != 0 && modal_.motion != 1)
+        return fail(146, "G29 blocks are linear moves (G0 or G1)"), false;
+    Eigen::Vector3d n(p.g29_n[0], p.g29_n[1], p.g29_n[2]);
+    if (std::fabs(n.squaredNorm() - 1) > 1e-3)
+        return fail(145, "P Q R is not a unit vector: P2+Q2+R2 = " + f3(n.squaredNorm()) + " (000:13290)"), false;
+    n.normalize();
+    Eigen::Vector3d u = Eigen::Vector3d::Zero();
+    u[modal_.tool_axis == X ? 0 : modal_.tool_axis == Y ? 1 : 2] = modal_.tool_axis_neg ? -1 : 1;
+    const Corrector& c = corr_[size_t(std::max(modal_.d, 0))];
+    double r = c.r + c.dr, tip_r = c.tip;
+    if (tip_r > r) return fail(146, "the end radius @ is larger than the tool radius R"), false;
+    Eigen::Vector3d pc;
+    for (int a = 0; a < 3; ++a) pc[a] = p.inc[size_t(a)] ? prog_[size_t(a)] + p.val[size_t(a)] : p.val[size_t(a)];
+    Eigen::Vector3d w = n - n.dot(u) * u;
+    w = w.norm() > 1e-12 ? Eigen::Vector3d(w.normalized()) : Eigen::Vector3d::Zero();
+    Eigen::Vector3d tip = pc + tip_r * n + (r - tip_r) * w - tip_r * u;
+    first_move_ = false;
+    apply_corrector_gauges(p.axis);
+    Axes target = prog_;
+    for (int a = 0; a < kAxes; ++a)
+        if (p.axis[size_t(a)]) target[size_t(a)] = a < 3 ? tip[a] : (p.inc[size_t(a)] ? prog_[size_t(a)] + p.val[size_t(a)] : p.val[size_t(a)]);
+    Axes mach = frames_.to_machine(target);
+    if (!check_travel(mach)) return false;
+    prog_next_ = target;
+    return linear(modal_.motion, mach, false, p.axis);
+}
+
+bool Interpreter::linear(int g, const Axes& mach, bool g52, const std::bitset<kAxes>&) {
+    MoveEvent e;
+    e.loc = loc_;
+    e.g = g == 0 ? 0 : 1;
+    e.g52 = g52;
+    e.x_diameter = m_.lathe && m_.x_diameter && !modal_.radius_x;
+    e.from_mach = mach_;
+    e.to_mach = mach;
+    double len = linear_length(mach_, mach);
+    double rot = rotary_length(mach_, mach);
+    e.length = len > 1e-12 ? len : rot;
+    Axes start_prog = prog_;
+    Axes end_prog = g52 ? frames_.to_program(mach) : prog_next_;
+    double t;
+    if (e.g == 0) {
+        t = 0;
+        for (int a = 0; a < kAxes; ++a)
+            if (m_.has(a)) t = std::max(t, std::fabs(mach[size_t(a)] - mach_[size_t(a)]) / m_.axes[size_t(a)].rapid);
+        t *= 60.0;
+        e.feed = t > 0 ? e.length / t * 60.0 : 0;
+        e.rpm = spindle_at(prog_[X]);
+    } else {
+        if (!modal_.feed_set)
+            return fail(2, "no feed F programmed since G" + std::to_string(modal_.feed_mode) + " changed the unit"), false;
+        if (modal_.feed <= 0) return fail(1, "feed F0 in a feed move"), false;
+        if (modal_.feed_mode == 94 && modal_.feed * (modal_.inch ? 25.4 : 1) > m_.max_feed)
+            warn(err::wFeedClamped, "F" + f3(modal_.feed) + " above the machine maximum " + f3(m_.max_feed) +
+                                        " mm/min: limited to it");
+        check_tiny_feed();
+        e.feed = feed_rate(e.rpm);
+        t = feed_time(e.length, start_prog[X], end_prog[X]);
+        if (t < 0) return fail(831, "feed per revolution (G95) with the spindle stopped"), false;
+        if (modal_.feed_mode == 93) e.feed = t > 0 ? e.length / t * 60.0 : 0;
+    }
+    return finish_move(e, mach, end_prog, t);
+}
+
+// Books a move: the machine is there, the clock and the path advance, the sink hears.
+bool Interpreter::finish_move(MoveEvent& e, const Axes& mach, const Axes& prog, double seconds) {
+    e.seconds = seconds;
+    e.to_prog = prog;
+    e.comp = comp_emitting_;
+    mach_ = mach;
+    prog_ = prog;
+    path_ += e.length;
+    clock_ += seconds;
+    ++moves_;
+    out_.move(e);
+    if (modal_.spindle_mode == 96) set_spindle_event();  // the speed followed X
+    return true;
+}
+
+bool Interpreter::arc(const Plan& p, const Axes& target) {
+    const bool lathe = m_.lathe;
+    int a0 = lathe ? Z : modal_.plane == 17 ? X : modal_.plane == 18 ? Z : Y;
+    int a1 = lathe ? X : modal_.plane == 17 ? Y : modal_.plane == 18 ? X : Z;
+    int an = lathe ? Y : modal_.plane == 17 ? Z : modal_.plane == 18 ? Y : X;
+    int i0 = ijk_index(a0), i1 = ijk_index(a1), in = ijk_index(an);
+    bool centre = p.ijk[size_t(i0)] && p.ijk[size_t(i1)];
+    if (!p.axis[size_t(a0)] || !p.axis[size_t(a1)] || centre == p.has_r) {
+        std::string need = std::string(1, kAxisNames[size_t(a0)]) + kAxisNames[size_t(a1)];
+        return fail(101, "G" + std::to_string(modal_.motion) + " needs " + need + " and either " +
+                             char('I' + i0) + char('I' + i1) + " or R, even if unchanged"),
+               false;
+    }
+    for (int a = 0; a < kAxes; ++a)
+        if (p.axis[size_t(a)] && a != a0 && a != a1 && (lathe || a != an))
+            return fail(106, std::string("axis ") + kAxisNames[size_t(a)] + " in a circle: only the axis normal to the plane may move (helix)"), false;
+    bool helix = !lathe && p.axis[size_t(an)];
+    if (p.ijk[size_t(in)] && !helix)
+        return fail(107, std::string("helix pitch ") + char('I' + in) + " without the " + kAxisNames[size_t(an)] +
+                             " end point"),
+               false;
+
+    Eigen::Vector2d s(prog_[size_t(a0)], prog_[size_t(a1)]), e(target[size_t(a0)], target[size_t(a1)]);
+    Eigen::Vector2d c;
+    double r0, r1;
+    bool ccw = modal_.motion == 3;
+    if (p.has_r) {
+        double d = (e - s).norm();
+        double r = p.r;
+        if (r <= 0) return fail(107, "circle radius R must be positive"), false;
+        if (d < 1e-9) return fail(107, "circle with R: the end point equals the start point"), false;
+        if (d > 2 * r + 0.001)
+            return fail(107, "circle end point too far: chord " + f3(d) + " > 2R " + f3(2 * r)), false;
+        // The shorter arc (004:622): the centre on the left of the chord for G3.
+        double h = std::sqrt(std::max(0.0, r * r - d * d / 4));
+        Eigen::Vector2d left(-(e - s).y() / d, (e - s).x() / d);
+        c = (s + e) / 2 + (ccw ? h : -h) * left;
+        r0 = r1 = r;
+    } else {
+        c = Eigen::Vector2d(p.ijk_val[i0], p.ijk_val[i1]);
+        if (p.ijk_inc[size_t(i0)]) c.x() += s.x();
+        if (p.ijk_inc[size_t(i1)]) c.y() += s.y();
+        r0 = (s - c).norm();
+        r1 = (e - c).norm();
+        if (r0 < 1e-9) return fail(107, "circle centre on the start point"), false;
+        if (std::fabs(r0 - r1) > kArcTolerance + 1e-9)
+            return fail(107, "circle end point inconsistent: start radius " + f3(r0) + ", end radius " + f3(r1) +
+                                 " (more than 0.020 apart)"),
+                   false;
+    }
+    double as = std::atan2(s.y() - c.y(), s.x() - c.x());
+    double ae = std::atan2(e.y() - c.y(), e.x() - c.x());
+    double sw = ae - as;
+    bool full = (e - s).norm() < 1e-7;
+    if (ccw) {
+        while (sw <= 1e-12) sw += 2 * kPi;
+        if (full) sw = 2 * kPi;
+    } else {
+        while (sw >= -1e-12) sw -= 2 * kPi;
+        if (full) sw = -2 * kPi;
+    }
+    if (helix && p.ijk[size_t(in)]) {
+        // The pitch chooses the number of extra turns (000:4745, 004:628).
+        double dz = std::fabs(target[size_t(an)] - prog_[size_t(an)]);
+        double k = std::fabs(p.ijk_val[in]);
+        double th0 = std::fabs(sw) * 180 / kPi;
+        if (dz > 1e-9 && k > 1e-9) {
+            int best = 0;
+            double err = 1e300;
+            for (int n = 0; n < 100000; ++n) {
+                double pitch = dz * 360.0 / (th0 + 360.0 * n);
+                double d = std::fabs(pitch - k);
+                if (d < err) {
+                    err = d;
+                    best = n;
+                } else {
+                    break;  // |pitch - k| decreases then increases
+                }
+            }
+            sw += (ccw ? 1 : -1) * 2 * kPi * best;
+        }
+    }
+    if (comp_.on)
+        return comp_element(comp::Elem{.arc = true, .a = s, .b = e, .c = c, .sweep = sw}, modal_.motion, target, r0);
+    return emit_arc(modal_.motion, target, a0, a1, c.x(), c.y(), sw, r0, r1, helix ? an : -1);
+}
+
+bool Interpreter::arc3(const Plan& p, const Axes& target) {
+    const bool lathe = m_.lathe;
+    int a0 = lathe ? Z : modal_.plane == 17 ? X : modal_.plane == 18 ? Z : Y;
+    int a1 = lathe ? X : modal_.plane == 17 ? Y : modal_.plane == 18 ? X : Z;
+    int i0 = ijk_index(a0), i1 = ijk_index(a1);
+    if (!p.axis[size_t(a0)] || !p.axis[size_t(a1)] || !p.ijk[size_t(i0)] || !p.ijk[size_t(i1)])
+        return fail(101, "G23 needs the end point and the intermediate point"), false;
+    Eigen::Vector2d s(prog_[size_t(a0)], prog_[size_t(a1)]), e(target[size_t(a0)], target[size_t(a1)]);
+    Eigen::Vector2d m(p.ijk_val[i0], p.ijk_val[i1]);
+    if (p.ijk_inc[size_t(i0)]) m.x() += s.x();
+    if (p.ijk_inc[size_t(i1)]) m.y() += s.y();
+    Eigen::Vector2d u = m - s, v = e - s;
+    double cross = u.x() * v.y() - u.y() * v.x();
+    if (std::fabs(cross) < 1e-9) return fail(101, "G23: the three points are on one line"), false;
+    // Circumcentre of s, m, e.
+    double uu = u.squaredNorm(), vv = v.squaredNorm();
+    Eigen::Vector2d c = s + Eigen::Vector2d(v.y() * uu - u.y() * vv, u.x() * vv - v.x() * uu) / (2 * cross);
+    double r = (s - c).norm();
+    // Through m from s to e: counter-clockwise when m is left of s->e.
+    bool ccw = cross > 0;
+    double as = std::atan2(s.y() - c.y(), s.x() - c.x());
+    double ae = std::atan2(e.y() - c.y(), e.x() - c.x());
+    double sw = ae - as;
+    if (ccw) {
+        while (sw <= 0) sw += 2 * kPi;
+    } else {
+        while (sw >= 0) sw -= 2 * kPi;
+    }
+    if (comp_.on)
+        return comp_element(comp::Elem{.arc = true, .a = s, .b = e, .c = c, .sweep = sw}, ccw ? 3 : 2, target, r);
+    return emit_arc(ccw ? 3 : 2, target, a0, a1, c.x(), c.y(), sw, r, r, -1);
+}
+
+bool Interpreter::emit_arc(int g, const Axes& target, int a0, int a1, double c0, double c1, double sw,
+                           double r0, double r1, int helix_axis) {
+    Axes mach = frames_.to_machine(target);
+    if (frames_.ed == 0)
+        for (int a = 0; a < kAxes; ++a)
+            if (a != a0 && a != a1 && a != helix_axis && !frames_.mirror[size_t(a)]) mach[size_t(a)] = mach_[size_t(a)];
+    if (!check_travel(mach)) return false;
+    // The circle's extremes must be inside the travel too.
+    {
+        Axes cp = prog_;
+        cp[size_t(a0)] = c0;
+        cp[size_t(a1)] = c1;
+        Axes cm = frames_.to_machine(cp);
+        double mx = mach_[size_t(a0)] - cm[size_t(a0)], my = mach_[size_t(a1)] - cm[size_t(a1)];
+        double rm = std::hypot(mx, my) + std::fabs(r1 - r0);
+        bool inside = cm[size_t(a0)] - rm >= travel_lo_[size_t(a0)] && cm[size_t(a0)] + rm <= travel_hi_[size_t(a0)] &&
+                      cm[size_t(a1)] - rm >= travel_lo_[size_t(a1)] && cm[size_t(a1)] + rm <= travel_hi_[size_t(a1)];
+        rm = std::hypot(mx, my);
+        double am = inside ? 0 : std::atan2(my, mx);
+        bool flip = frames_.mirror[size_t(a0)] != frames_.mirror[size_t(a1)];
+        double swm = flip ? -sw : sw;
+        Axes probe = mach;
+        // Quadrant points (0°, 90°, 180°, 270°) crossed by the swept angle.
+        double span = std::fabs(swm);
+        for (int q = 0; q < (inside ? 0 : 4); ++q) {
+            double rel = q * kPi / 2 - am;
+            if (swm < 0) rel = -rel;
+            rel -= 2 * kPi * std::floor(rel / (2 * kPi));
+            if (rel > span) continue;
+            static constexpr double kCos[] = {1, 0, -1, 0}, kSin[] = {0, 1, 0, -1};
+            probe[size_t(a0)] = cm[size_t(a0)] + rm * kCos[q];
+            probe[size_t(a1)] = cm[size_t(a1)] + rm * kSin[q];
+            if (probe[size_t(a0)] < travel_lo_[size_t(a0)] - 1e-6 || probe[size_t(a0)] > travel_hi_[size_t(a0)] + 1e-6 ||
+                probe[size_t(a1)] < travel_lo_[size_t(a1)] - 1e-6 || probe[size_t(a1)] > travel_hi_[size_t(a1)] + 1e-6)
+                if (!check_travel(probe)) return false;
+        }
+    }
+    MoveEvent e;
+    e.loc = loc_;
+    e.g = g;
+    e.from_mach = mach_;
+    e.to_mach = mach;
+    e.plane_a0 = a0;
+    e.plane_a1 = a1;
+    e.c0 = c0;
+    e.c1 = c1;
+    e.sweep = sw * 180 / kPi;
+    e.x_diameter = m_.lathe && m_.x_diameter && !modal_.radius_x;
+    double scale = frames_.scale_on ? frames_.scale : 1.0;
+    double arclen = std::fabs(sw) * (r0 + r1) / 2 * scale;
+    double dh = helix_axis >= 0 ? std::fabs(mach[size_t(helix_axis)] - mach_[size_t(helix_axis)]) : 0;
+    e.length = std::hypot(arclen, dh);
+    if (!modal_.feed_set)
+        return fail(2, "no feed F programmed since G" + std::to_string(modal_.feed_mode) + " changed the unit"), false;
+    if (modal_.feed <= 0) return fail(1, "feed F0 in a feed move"), false;
+    if (modal_.feed_mode == 93) return fail(4, "G02/G03 are not allowed in inverse-time feed (G93)"), false;
+    check_tiny_feed();
+    e.feed = feed_rate(e.rpm);
+    double t = 0;
+    if (modal_.feed_mode == 95 && modal_.spindle_mode == 96) {
+        // X changes along the arc: integrate piece by piece.
+        constexpr int kPieces = 16;
+        double as = std::atan2(prog_[size_t(a1)] - c1, prog_[size_t(a0)] - c0);
+        for (int i = 0; i < kPieces; ++i) {
+            auto x_at = [&](double f) {
+                double ang = as + sw * f, r = r0 + (r1 - r0) * f;
+                if (a0 == X) return c0 + r * std::cos(ang);
+                if (a1 == X) return c1 + r * std::sin(ang);
+                return prog_[X];
+            };
+            double piece = feed_time(e.length / kPieces, x_at(double(i) / kPieces), x_at(double(i + 1) / kPieces));
+            if (piece < 0) return fail(831, "feed per revolution (G95) with the spindle stopped"), false;
+            t += piece;
+        }
+    } else {
+        t = feed_time(e.length, prog_[X], target[X]);
+        if (t < 0) return fail(831, "feed per revolution (G95) with the spindle stopped"), false;
+    }
+    if (modal_.feed_mode == 94 && modal_.feed * (modal_.inch ? 25.4 : 1) > m_.max_feed)
+        warn(err::wFeedClamped, "F" + f3(modal_.feed) + " above the machine maximum " + f3(m_.max_feed) +
+                                    " mm/min: limited to it");
+    return finish_move(e, mach, target, t);
+}
+
+}  // namespace pupitre

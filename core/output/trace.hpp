@@ -1,0 +1,41 @@
+// Output of a dry run: the JSON-lines trace (DESIGN §2.3) and the run summary,
+// plain or JSON. Fixed 4 decimals for lengths, degrees, seconds, feeds and speeds.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+#include <cstdio>
+#include <string>
+
+#include "core/interp/interp.hpp"
+
+namespace pupitre {
+
+class TraceWriter final : public MachineSink {
+public:
+    TraceWriter(std::FILE* out, const MachineProfile& m) : out_(out), m_(m) {}
+    void move(const MoveEvent&) override;
+    void dwell(const Loc&, double) override;
+    void tool(const Loc&, int t, int d, double) override;
+    void spindle(const SpindleEvent&) override;
+    void coolant(const Loc&, bool m7, bool m8) override;
+    void stop(const Loc&, int m) override;
+    void message(const Loc&, int channel, std::string_view) override;
+    void end(const Loc&, int m) override;
+    double seconds = 0;  // running total, reported with "end"
+
+private:
+    void head(const char* ev, const Loc& l);
+    void axes(const char* key, const Axes& v, bool x_diam);
+    std::FILE* out_;
+    const MachineProfile& m_;
+    std::string buf_;
+};
+
+// Appends v with exactly 4 decimals ("-0.0000" is written "0.0000").
+void append_fixed4(std::string& s, double v);
+// Appends a JSON string literal.
+void append_json_string(std::string& s, std::string_view v);
+
+std::string summary_text(const Interpreter& in, const std::string& file);
+std::string summary_json(const Interpreter& in, const std::string& file);
+
+}  // namespace pupitre

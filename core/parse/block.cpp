@@ -1,0 +1,499 @@
+// The block parser: NUM character set, words, blank values, comments, L/E
+// assignments with left-to-right expressions, G79 tests, $ messages.
+// Grammar (turning.md §1.1-1.6, program-flow.md §3 and §8.4):
+//   block      -> ['/'] { word | comment | assign | message }
+//   word       -> address [sign] [number | 'L'digits | 'E'digits | 'EL'digits | symbol]
+//   assign     -> ('L'digits | 'E'digits | 'EL'digits | symbol) '=' expr
+//   expr       -> term { binop term }           (strictly left to right)
+//   term       -> { sign | S | C | A | R | T } operand
+//   test       -> expr cmp expr                 (only after G79)
+//   message    -> '$' digit text-up-to-'('-or-end
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/parse/block.hpp"
+
+#include <charconv>
+#include <cstring>
+#include <string>
+
+namespace pupitre {
+
+std::string_view addr_name(Addr a) {
+    static char names[kAddrCount][3];
+    static bool init = false;
+    if (!init) {
+        for (int i = 0; i < 26; ++i) {
+            names[i][0] = char('A' + i);
+            names[26 + i][0] = 'E';
+            names[26 + i][1] = char('A' + i);
+            names[52 + i][0] = 'N';
+            names[52 + i][1] = char('A' + i);
+        }
+        names[kAddrEsign][0] = 'E';
+        names[kAddrEsign][1] = '+';
+        for (int i = 0; i < 26; ++i) {
+            names[79 + i][0] = 'L';
+            names[79 + i][1] = char('A' + i);
+        }
+        init = true;
+    }
+    if (a >= kAddrCount) return "?";
+    return names[a][1] ? std::string_view(names[a], 2) : std::string_view(names[a], 1);
+}
+
+namespace {
+
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+bool is_upper(char c) { return c >= 'A' && c <= 'Z'; }
+
+struct Parser {
+    std::string_view s;
+    size_t pos = 0;
+    Block& b;
+    Diag& d;
+
+    bool fail(int code, size_t at, std::string msg) {
+        d.code = code;
+        d.column = int(at) + 1;
+        d.detail = std::move(msg);
+        return false;
+    }
+    char peek(size_t k = 0) const { return pos + k < s.size() ? s[pos + k] : '\0'; }
+    void skip_spaces() {
+        while (pos < s.size() && (s[pos] == ' ' || s[pos] == '\t' || s[pos] == '\r')) ++pos;
+    }
+    size_t after_spaces(size_t p) const {
+        while (p < s.size() && (s[p] == ' ' || s[p] == '\t')) ++p;
+        return p;
+    }
+
+    // digits [ '.' digits ] | '.' digits
+    bool number(Operand& v) {
+        const size_t start = pos, n = s.size();
+        const char* p = s.data();
+        int64_t m = 0;
+        size_t i = pos;
+        while (i < n && is_digit(p[i])) m = m * 10 + (p[i++] - '0');
+        size_t int_digits = i - start, frac_digits = 0;
+        if (i < n && p[i] == '.') {
+            size_t f = ++i;
+            while (i < n && is_digit(p[i])) m = m * 10 + (p[i++] - '0');
+            frac_digits = i - f;
+        }
+        pos = i;
+        v.int_digits = uint8_t(std::min<size_t>(int_digits, 255));
+        v.frac_digits = uint8_t(std::min<size_t>(frac_digits, 255));
+        if (int_digits == 0 && frac_digits == 0) return fail(1, start, "number expected");
+        if (int_digits + frac_digits <= 15) {
+            // Mantissa and power of ten are exact doubles, so the one division rounds
+            // correctly: the value from_chars would give, faster.
+            static constexpr double kPow10[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7,
+                                                1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
+            v.num = double(m) / kPow10[frac_digits];
+        } else {
+            std::string_view span = s.substr(start, pos - start);
+            char buf[64];
+            if (span.size() >= sizeof buf - 1) return fail(1, start, "too many digits");
+            size_t k = 0;
+            if (span.front() == '.') buf[k++] = '0';
+            std::memcpy(buf + k, span.data(), span.size());
+            k += span.size();
+            if (buf[k - 1] == '.') buf[k++] = '0';
+            auto r = std::from_chars(buf, buf + k, v.num);
+            if (r.ec != std::errc()) return fail(1, start, "number out of range");
+        }
+        v.kind = Operand::Number;
+        return true;
+    }
+
+    bool digits_index(int32_t& out, int max_digits) {
+        size_t start = pos;
+        long long n = 0;
+        while (is_digit(peek())) {
+            n = n * 10 + (s[pos] - '0');
+            ++pos;
+            if (int(pos - start) > max_digits) return fail(91, start, "parameter number too long");
+        }
+        if (pos == start) return fail(93, start, "parameter number expected");
+        out = int32_t(n);
+        return true;
+    }
+
+    // 'A'..'Z' -> L900..L925, 'EA'..'EZ' -> L926..L951 (program-flow.md §8.1).
+    bool symbol(int32_t& l) {
+        size_t start = pos;
+        ++pos;  // opening quote
+        int base = 900;
+        if (peek() == 'E' && is_upper(peek(1)) && peek(2) == '\'') {
+            base = 926;
+            ++pos;
+        }
+        if (!is_upper(peek()) || peek(1) != '\'') return fail(93, start, "bad symbol, expected 'A'..'Z' or 'EA'..'EZ'");
+        l = base + (s[pos] - 'A');
+        pos += 2;
+        return true;
+    }
+
+    // Variable-like operand at pos: Lnn, Enn, ELnn, 'X'. Returns false with no error
+    // if there is none (v.kind untouched).
+    bool variable(Operand& v, bool& found) {
+        found = false;
+        char c = peek();
+        if (c == 'L' && is_digit(peek(1))) {
+            ++pos;
+            found = true;
+            v.kind = Operand::LVar;
+            return digits_index(v.index, 4);
+        }
+        if (c == 'E' && is_digit(peek(1))) {
+            ++pos;
+            found = true;
+            v.kind = Operand::EParam;
+            return digits_index(v.index, 6);
+        }
+        if (c == 'E' && peek(1) == 'L' && is_digit(peek(2))) {
+            pos += 2;
+            found = true;
+            v.kind = Operand::EIndirect;
+            return digits_index(v.index, 4);
+        }
+        if (c == '\'') {
+            found = true;
+            v.kind = Operand::LVar;
+            return symbol(v.index);
+        }
+        return true;
+    }
+
+    // After pos (a variable's end), does an assignment '=' follow? ("<=" ">=" are tests.)
+    bool assignment_follows(size_t p) const {
+        p = after_spaces(p);
+        return p < s.size() && s[p] == '=';
+    }
+
+    // The value of an address word.
+    bool operand(Operand& v) {
+        skip_spaces();
+        if (peek() == '+' || peek() == '-') {
+            v.has_sign = true;
+            v.neg = peek() == '-';
+            ++pos;
+            skip_spaces();
+        }
+        char c = peek();
+        if (is_digit(c) || c == '.') return number(v);
+        size_t save = pos;
+        Operand tmp = v;
+        bool found;
+        if (!variable(tmp, found)) return false;
+        if (found) {
+            // "X L1=5": X is blank and L1=5 an assignment of its own.
+            if (assignment_follows(pos) && !in_test_) {
+                pos = save;
+            } else {
+                v = tmp;
+                return true;
+            }
+        }
+        v.kind = v.has_sign ? Operand::SignOnly : Operand::Blank;
+        return true;
+    }
+
+    bool term(Term& t) {
+        for (;;) {
+            skip_spaces();
+            char c = peek();
+            if (c == '+' || c == '-' || c == 'S' || c == 'C' || c == 'A' || c == 'R' || c == 'T') {
+                if (t.nprefix >= sizeof t.prefix) return fail(93, pos, "too many functions in a term");
+                t.prefix[t.nprefix++] = c;
+                ++pos;
+                continue;
+            }
+            break;
+        }
+        char c = peek();
+        if (is_digit(c) || c == '.') return number(t.v);
+        bool found;
+        if (!variable(t.v, found)) return false;
+        if (!found) {
+            if (pos >= s.size()) return fail(93, pos, "expression ends without a value");
+            return fail(93, pos, std::string("'") + c + "' cannot appear in an expression");
+        }
+        return true;
+    }
+
+    bool is_cmp_char(char c) const { return c == '<' || c == '>' || c == '='; }
+
+    // expr -> term { binop term }; stops before a comparator or the next word.
+    bool expr(Expr& e) {
+        e.first = uint16_t(b.terms.size());
+        Term t;
+        t.op = '=';
+        if (!term(t)) return false;
+        b.terms.push_back(t);
+        for (;;) {
+            size_t p = after_spaces(pos);
+            char c = p < s.size() ? s[p] : '\0';
+            if (c == '+' || c == '-' || c == '*' || c == '/' || c == '&' || c == '!') {
+                pos = p + 1;
+                Term u;
+                u.op = c;
+                if (!term(u)) return false;
+                b.terms.push_back(u);
+                continue;
+            }
+            break;
+        }
+        e.count = uint16_t(b.terms.size() - e.first);
+        return true;
+    }
+
+    bool assign(const Operand& target, size_t col) {
+        skip_spaces();
+        if (peek() != '=') return fail(93, pos, "'=' expected after the parameter");
+        ++pos;
+        Assign a;
+        a.target = target;
+        a.col = uint16_t(col + 1);
+        if (!expr(a.expr)) return false;
+        b.assigns.push_back(a);
+        return true;
+    }
+
+    bool cmp(Cmp& c) {
+        skip_spaces();
+        char a = peek(), n = peek(1);
+        if (a == '<' && n == '=') { c = Cmp::le; pos += 2; }
+        else if (a == '>' && n == '=') { c = Cmp::ge; pos += 2; }
+        else if (a == '<' && n == '>') { c = Cmp::ne; pos += 2; }
+        else if (a == '<') { c = Cmp::lt; ++pos; }
+        else if (a == '>') { c = Cmp::gt; ++pos; }
+        else if (a == '=') { c = Cmp::eq; ++pos; }
+        else return fail(93, pos, "comparison operator expected (= <> < <= > >=)");
+        return true;
+    }
+
+    bool test() {
+        b.test.col = uint16_t(pos + 1);
+        in_test_ = true;
+        if (!expr(b.test.lhs)) return false;
+        if (!cmp(b.test.cmp)) return false;
+        if (!expr(b.test.rhs)) return false;
+        in_test_ = false;
+        return true;
+    }
+
+    static bool keyword_at(std::string_view rest, std::string_view kw) {
+        if (rest.substr(0, kw.size()) != kw) return false;
+        return rest.size() == kw.size() || rest[kw.size()] == ' ' || rest[kw.size()] == '\t' ||
+               rest[kw.size()] == '(';
+    }
+
+    bool structured_keyword() {
+        // Keywords are two or more letters; an ordinary word is a letter and a value.
+        if (!is_upper(peek()) || !is_upper(peek(1))) return false;
+        static constexpr std::string_view kws[] = {"WHILE", "ENDW", "FOR", "ENDF", "ENDIF", "ENDI",
+                                                   "ELSE", "THEN", "PUSH", "PULL", "VAR", "DO",
+                                                   "REPEAT", "UNTIL"};
+        std::string_view rest = s.substr(pos);
+        for (auto kw : kws)
+            if (keyword_at(rest, kw)) return true;
+        // IF alone reads as I0 F0 (004:236) unless it opens an IF…THEN construct.
+        return keyword_at(rest, "IF") && s.find("THEN") != std::string_view::npos;
+    }
+
+    bool word(char c) {
+        size_t col = pos;
+        Word w;
+        w.col = uint16_t(col + 1);
+        if (c == 'E') {
+            char n = peek(1);
+            if ((n == '+' || n == '-') && !(is_digit(peek(2)) || peek(2) == '.' || peek(2) == 'L')) {
+                w.addr = kAddrEsign;
+                w.v.kind = Operand::SignOnly;
+                w.v.has_sign = true;
+                w.v.neg = n == '-';
+                pos += 2;
+                b.words.push_back(w);
+                return true;
+            }
+            if (!is_upper(n) || n == 'O' || n == 'L')
+                return fail(1, col, "address E must be followed by a letter (EA, EB…) or a parameter number");
+            w.addr = addrE(n);
+            pos += 2;
+        } else if (c == 'N' && (peek(1) == 'C' || peek(1) == 'U' || peek(1) == 'P' || peek(1) == 'R')) {
+            w.addr = addrN(peek(1));
+            pos += 2;
+        } else {
+            w.addr = addr1(c);
+            ++pos;
+        }
+        if (!operand(w.v)) return false;
+        if (c == 'G' && w.addr == addr1('G') && w.v.kind == Operand::Number) {
+            int g = int(w.v.num);
+            if ((g == 76 || g == 79) && (peek() == '+' || peek() == '-')) {
+                w.gsign = peek();
+                ++pos;
+                if (g == 76) g76_edit_ = b.words.size() + 1;
+            } else if (g == 77) {
+                size_t p = after_spaces(pos);
+                if (p + 1 < s.size() && s[p] == '-' && is_digit(s[p + 1])) {
+                    pos = p + 1;
+                    int lvl = 0;
+                    while (is_digit(peek()) && lvl < 1000) lvl = lvl * 10 + (s[pos++] - '0');
+                    w.glevel = int16_t(lvl);
+                }
+            }
+        }
+        b.words.push_back(w);
+        if (c == 'G' && w.v.kind == Operand::Number && w.v.num == 79 && w.gsign == 0) {
+            // A condition follows unless the next word is the target N.
+            size_t p = after_spaces(pos);
+            if (p < s.size()) {
+                char k = s[p];
+                if (k == 'L' || k == '\'' || k == '+' || k == '-' || is_digit(k) || k == '.' ||
+                    (k == 'E' && p + 1 < s.size() && (is_digit(s[p + 1]) || s[p + 1] == 'L'))) {
+                    pos = p;
+                    return test();
+                }
+            }
+        }
+        return true;
+    }
+
+    bool run() {
+        skip_spaces();
+        if (peek() == '/') {
+            b.skip = true;
+            ++pos;
+        }
+        bool first_word = true;
+        while (true) {
+            skip_spaces();
+            if (pos >= s.size()) break;
+            char c = s[pos];
+            if (c == '(') {
+                size_t close = s.find(')', pos);
+                if (close == std::string_view::npos)
+                    return fail(17, pos, "end of block inside a comment");
+                pos = close + 1;
+                continue;
+            }
+            if (c == '$') {
+                if (!is_digit(peek(1))) return fail(1, pos, "'$' must be followed by a channel digit 0-6");
+                int ch = peek(1) - '0';
+                if (ch > 6) return fail(1, pos, "message channel must be $0 to $6");
+                pos += 2;
+                size_t end = s.find('(', pos);
+                if (end == std::string_view::npos) end = s.size();
+                std::string_view text = s.substr(pos, end - pos);
+                while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
+                while (!text.empty() && (text.back() == ' ' || text.back() == '\t' || text.back() == '\r'))
+                    text.remove_suffix(1);
+                b.msg_channel = ch;
+                b.msg = text;
+                pos = end;
+                continue;
+            }
+            if (first_word || (b.words.size() == 1 && b.words[0].addr == addr1('N'))) {
+                if (structured_keyword())
+                    return fail(4, pos, "structured programming (IF, WHILE, FOR…) is an option this machine does not have");
+            }
+            first_word = false;
+            if (c == 'L' && is_upper(peek(1)) && peek(1) != 'O') {
+                Word w;
+                w.col = uint16_t(pos + 1);
+                w.addr = addrL(peek(1));
+                pos += 2;
+                if (!operand(w.v)) return false;
+                b.words.push_back(w);
+                continue;
+            }
+            if (c == 'L' || c == '\'' || (c == 'E' && (is_digit(peek(1)) || (peek(1) == 'L' && is_digit(peek(2)))))) {
+                size_t col = pos;
+                Operand target;
+                bool found;
+                if (!variable(target, found)) return false;
+                if (!found) return fail(93, col, "bad parameter");
+                if (!assignment_follows(pos)) {
+                    if (target.kind == Operand::LVar)
+                        return fail(93, col, "L variable not followed by '='");
+                    return fail(93, col, "E parameter not followed by '='");
+                }
+                if (!assign(target, col)) return false;
+                continue;
+            }
+            if (is_upper(c)) {
+                if (c == 'O') return fail(1, pos, "the letter O is not an ISO address (did you mean 0?)");
+                if (!word(c)) return false;
+                if (g76_edit_ && b.words.size() > g76_edit_ && b.words.back().addr == addr1('N')) {
+                    if (!g76_tail()) return false;
+                    break;
+                }
+                if (b.words.size() == 1 && c == 'N' && b.words[0].addr == addr1('N')) {
+                    const Operand& v = b.words[0].v;
+                    if (v.kind == Operand::Number) {
+                        if (v.frac_digits || v.int_digits > 5)
+                            return fail(1, b.words[0].col - 1, "block number must have 1 to 5 digits");
+                        b.n = long(v.num);
+                    } else if (v.kind == Operand::Blank) {
+                        b.n = 0;
+                    } else {
+                        return fail(1, b.words[0].col - 1, "block number must be a number");
+                    }
+                }
+                continue;
+            }
+            if (c >= 'a' && c <= 'z')
+                return fail(1, pos, std::string("lower-case letter '") + c + "' outside a comment");
+            if (is_digit(c) || c == '.' || c == '+' || c == '-')
+                return fail(1, pos, "value without an address letter");
+            if (static_cast<unsigned char>(c) < 32 || static_cast<unsigned char>(c) > 126)
+                return fail(1, pos, "character outside the ISO set");
+            return fail(1, pos, std::string("unknown character '") + c + "'");
+        }
+        return true;
+    }
+
+    // After the pointed block of G76+/G76-: an optional "+k" line offset, then the
+    // block to insert, kept as text (000:7098-7147).
+    bool g76_tail() {
+        size_t p = after_spaces(pos);
+        if (p + 1 < s.size() && s[p] == '+' && is_digit(s[p + 1])) {
+            int k = 0, digits = 0;
+            size_t at = p++;
+            while (p < s.size() && is_digit(s[p])) {
+                if (++digits > 5) return fail(1, at, "the line offset +k has more than 5 digits");
+                k = k * 10 + (s[p++] - '0');
+            }
+            b.g76_k = k;
+            p = after_spaces(p);
+        }
+        std::string_view rest = s.substr(p);
+        while (!rest.empty() && (rest.back() == ' ' || rest.back() == '\t')) rest.remove_suffix(1);
+        b.g76_block = rest;
+        b.g76_block_col = uint16_t(p + 1);
+        pos = s.size();
+        return true;
+    }
+
+    bool in_test_ = false;
+    size_t g76_edit_ = 0;  // 1 + index of a G76+/G76- word, 0 if none
+};
+
+}  // namespace
+
+bool parse_block(std::string_view line, Block& out, Diag& d) {
+    out.clear();
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    if (line.size() > kMaxBlockChars) {
+        d.code = 1;
+        d.column = int(kMaxBlockChars) + 1;
+        d.detail = "block longer than " + std::to_string(kMaxBlockChars) + " characters (" +
+                   std::to_string(line.size()) + ")";
+        return false;
+    }
+    Parser p{line, 0, out, d};
+    return p.run();
+}
+
+}  // namespace pupitre

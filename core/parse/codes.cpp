@@ -1,0 +1,177 @@
+// The codes table (turning.md §0.5, milling.md §1.1-1.2; groups from turning.md
+// §1.7.3 and milling.md §1.1; availability: starred functions are 1040/1060).
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/parse/codes.hpp"
+
+#include <array>
+
+namespace pupitre {
+
+std::string_view group_name(Group g) {
+    switch (g) {
+        case Group::none: return "non-modal";
+        case Group::motion: return "motion";
+        case Group::dist: return "distance";
+        case Group::plane: return "plane";
+        case Group::radcomp: return "radius compensation";
+        case Group::prefdec: return "PREF/DEC1";
+        case Group::feed: return "feed";
+        case Group::spindle: return "spindle";
+        case Group::units: return "units";
+        case Group::scale: return "scale";
+        case Group::cycle: return "cycle";
+        case Group::toolaxis: return "tool axis";
+        case Group::coord: return "coordinates";
+    }
+    return "?";
+}
+
+namespace {
+
+using S = Support;
+using G = Group;
+
+constexpr GCode kG[] = {
+    {0, G::motion, kBoth, 0, S::yes, "", "rapid linear interpolation"},
+    {1, G::motion, kBoth, 0, S::yes, "", "linear interpolation at feed"},
+    {2, G::motion, kBoth, 0, S::yes, "", "circular interpolation, clockwise"},
+    {3, G::motion, kBoth, 0, S::yes, "", "circular interpolation, counter-clockwise"},
+    {4, G::none, kBoth, 0, S::yes, "F", "dwell, seconds in F"},
+    {5, G::none, kLathe, kBoth, S::option, "X Z", "move along an inclined axis (grinder option)"},
+    {6, G::none, kBoth, kBoth, S::yes, "NC", "execute a spline curve"},
+    {7, G::none, kLathe, kBoth, S::option, "X Z", "initial positioning for an inclined axis (grinder option)"},
+    {9, G::none, kBoth, 0, S::yes, "", "exact stop at end of block"},
+    {10, G::none, kBoth, 0, S::yes, "N EF", "interruptible block"},
+    {12, G::none, kBoth, 0, S::ignored, "", "handwheel overspeed"},
+    {16, G::toolaxis, kBoth, 0, S::yes, "P Q R", "tool axis orientation P± Q± R±"},
+    {17, G::plane, kMill, 0, S::yes, "", "XY plane"},
+    {18, G::plane, kBoth, 0, S::yes, "", "ZX plane"},
+    {19, G::plane, kMill, 0, S::yes, "", "YZ plane"},
+    {20, G::coord, kLathe, 0, S::yes, "", "cartesian X Z programming"},
+    {21, G::coord, kLathe, 0, S::option, "", "polar (face) transformation X/Y to X/C (option)"},
+    {22, G::coord, kLathe, kBoth, S::option, "", "cylindrical transformation (option)"},
+    {23, G::none, kBoth, kBoth, S::yes, "X Y Z I J K", "circle through three points"},
+    {29, G::radcomp, kMill, 0, S::yes, "P Q R", "tool correction in space (3-D)"},
+    {31, G::none, kMill, 0, S::yes, "X Y Z I J K P EC EF ER F", "single-point threading cycle"},
+    {33, G::none, kLathe, 0, S::yes, "X Z K P Q R S EA EB ES F", "constant-pitch threading cycle"},
+    {38, G::motion, kLathe, 0, S::yes, "X Z K", "chained threading"},
+    {40, G::radcomp, kBoth, 0, S::yes, "", "cancel tool radius compensation"},
+    {41, G::radcomp, kBoth, 0, S::yes, "", "tool radius compensation, tool left of profile"},
+    {42, G::radcomp, kBoth, 0, S::yes, "", "tool radius compensation, tool right of profile"},
+    {45, G::none, kMill, 0, S::yes, "X Y Z I J K P Q R EB EG EP EQ EI EJ EX EY ER", "simple pocket cycle"},
+    {46, G::none, kMill, kBoth, S::yes, "NU NP NR ED Q J R LX LY X Y Z P ER EH EP EQ EI EJ EX EY", "pocket or facing with any contour"},
+    {48, G::none, kBoth, kBoth, S::yes, "NC H N", "spline definition"},
+    {49, G::none, kBoth, kBoth, S::yes, "NC", "spline deletion"},
+    {51, G::none, kBoth, kBoth, S::yes, "X Y Z U V W A B C", "mirror: X- enables, X+ disables"},
+    {52, G::none, kBoth, 0, S::yes, "", "absolute move relative to the measurement origin"},
+    {53, G::prefdec, kBoth, 0, S::yes, "", "disable the PREF and DEC1 offsets"},
+    {54, G::prefdec, kBoth, 0, S::yes, "", "enable the PREF and DEC1 offsets"},
+    {59, G::none, kBoth, 0, S::yes, "X Y Z U V W A B C I J K ED", "programmed origin offset"},
+    {63, G::none, kLathe, kBoth, S::yes, "N X Z I K P Q R EA EB EC EF EQ ER EU EW EX EZ EP", "roughing cycle with grooves"},
+    {64, G::cycle, kLathe, 0, S::yes, "N X Z I K P R EP", "paraxial roughing cycle"},
+    {65, G::none, kLathe, 0, S::yes, "N X Z I K P Q R EA EF EP", "groove roughing cycle"},
+    {66, G::none, kLathe, 0, S::yes, "X Z P R D EA EF EP", "plunge roughing cycle"},
+    {70, G::units, kBoth, 0, S::yes, "", "inch programming"},
+    {71, G::units, kBoth, 0, S::yes, "", "metric programming"},
+    {73, G::scale, kBoth, kBoth, S::yes, "", "scale factor off"},
+    {74, G::scale, kBoth, kBoth, S::yes, "", "scale factor on (E69000)"},
+    {75, G::none, kBoth, 0, S::yes, "N", "declare the emergency-retract block"},
+    {76, G::none, kBoth, 0, S::yes, "H N", "write the current L/E values into a program; G76+/- edit (1040/1060)"},
+    {77, G::none, kBoth, 0, S::yes, "H N P S", "call a subprogram or block range, with return"},
+    {78, G::none, kBoth, kBoth, S::yes, "P", "axis-group synchronisation (one group here: a no-op)"},
+    {79, G::none, kBoth, 0, S::yes, "N", "jump, conditional or not"},
+    {80, G::cycle, kBoth, 0, S::yes, "", "cancel machining cycle"},
+    {81, G::cycle, kBoth, kBoth, S::yes, "X Y Z ER EH", "drilling / centring cycle"},
+    {82, G::cycle, kBoth, kBoth, S::yes, "X Y Z ER EH EF", "counterboring cycle with dwell"},
+    {83, G::cycle, kBoth, 0, S::yes, "X Y Z P Q ER EH EF EP ES", "peck drilling with chip clearing"},
+    {84, G::cycle, kBoth, kBoth, S::yes, "X Y Z K ER EH EF EK", "tapping cycle"},
+    {85, G::cycle, kBoth, kBoth, S::yes, "X Y Z ER EH EF", "boring cycle"},
+    {86, G::cycle, kMill, 0, S::yes, "X Y Z ER EH EC EP", "boring with indexed spindle stop"},
+    {87, G::cycle, kBoth, 0, S::yes, "X Y Z P Q ER EH EF EP ES", "drilling with chip breaking"},
+    {88, G::cycle, kMill, 0, S::yes, "X Y Z ER EH", "boring and facing"},
+    {89, G::cycle, kBoth, kBoth, S::yes, "X Y Z ER EH EF", "boring with dwell"},
+    {90, G::dist, kBoth, 0, S::yes, "", "absolute programming"},
+    {91, G::dist, kBoth, 0, S::yes, "", "incremental programming"},
+    {92, G::none, kBoth, 0, S::yes, "X Y Z U V W A B C S R", "origin preset (axes), spindle limit (S), tangential feed (R)"},
+    {93, G::feed, kMill, 0, S::yes, "F", "inverse-time feed"},
+    {94, G::feed, kBoth, 0, S::yes, "F", "feed per minute"},
+    {95, G::feed, kBoth, kMill, S::yes, "F", "feed per revolution"},
+    {96, G::spindle, kLathe, 0, S::yes, "X S", "constant surface speed, m/min"},
+    {97, G::spindle, kBoth, 0, S::yes, "S", "spindle speed in rev/min"},
+    {98, G::none, kLathe, 0, S::ignored, "X", "start X value for C-axis interpolation (stored only)"},
+    {104, G::none, kMill, kBoth, S::option, "", "curve smoothing in space (an option)"},
+    {110, G::none, kLathe, 0, S::ignored, "", "optimisation of handling moves"},
+    {997, G::none, kBoth, kBoth, S::ignored, "", "execute the functions stored under G999"},
+    {998, G::none, kBoth, kBoth, S::ignored, "", "validate blocks and functions stored under G999"},
+    {999, G::none, kBoth, kBoth, S::ignored, "", "suspend execution, force concatenation"},
+};
+
+constexpr MCode kM[] = {
+    {0, 0, MWhen::apres, false, true, "program stop"},
+    {1, 1, MWhen::apres, false, true, "optional stop"},
+    {2, 2, MWhen::apres, false, true, "end of program"},
+    {3, 3, MWhen::avant, true, true, "spindle clockwise"},
+    {4, 4, MWhen::avant, true, true, "spindle counter-clockwise"},
+    {5, 5, MWhen::apres, true, true, "spindle stop"},
+    {6, 6, MWhen::apres, false, true, "tool change"},
+    {7, 7, MWhen::avant, true, true, "coolant 2 on"},
+    {8, 8, MWhen::avant, true, true, "coolant 1 on"},
+    {9, 9, MWhen::apres, true, true, "coolant off"},
+    {10, 10, MWhen::apres, true, true, "axis clamp"},
+    {11, 11, MWhen::avant, true, true, "axis unclamp"},
+    {12, 12, MWhen::apres, false, false, "programmed machining stop"},
+    {19, 19, MWhen::avant, true, true, "spindle indexing"},
+    {40, 45, MWhen::avant, true, true, "spindle range"},
+    {48, 48, MWhen::apres, true, true, "overrides enabled"},
+    {49, 49, MWhen::avant, true, true, "overrides inhibited (100 %)"},
+    {61, 61, MWhen::avant, true, false, "release the current spindle"},
+    {62, 65, MWhen::avant, true, true, "control of spindle 1-4"},
+    {66, 69, MWhen::avant, true, true, "measurement of spindle 1-4"},
+    {100, 199, MWhen::apres, false, true, "builder's coded M, non-modal"},
+    {200, 899, MWhen::avant, true, true, "builder's coded M, modal"},
+    {997, 997, MWhen::avant, false, false, "force block chaining"},
+    {998, 998, MWhen::avant, true, false, "re-enable MODIF and IMD"},
+    {999, 999, MWhen::avant, true, false, "inhibit MODIF and IMD"},
+};
+
+struct OwnTable {
+    std::array<std::bitset<kAddrCount>, sizeof kG / sizeof kG[0]> own;
+    OwnTable() {
+        for (size_t i = 0; i < own.size(); ++i) {
+            std::string_view a = kG[i].args;
+            while (!a.empty()) {
+                size_t sp = a.find(' ');
+                std::string_view w = a.substr(0, sp);
+                a = sp == std::string_view::npos ? std::string_view{} : a.substr(sp + 1);
+                if (w.size() == 1) own[i].set(addr1(w[0]));
+                else if (w[0] == 'E') own[i].set(addrE(w[1]));
+                else if (w[0] == 'N') own[i].set(addrN(w[1]));
+                else if (w[0] == 'L') own[i].set(addrL(w[1]));
+            }
+        }
+    }
+};
+
+}  // namespace
+
+const GCode* find_g(int number) {
+    for (const auto& g : kG)
+        if (g.number == number) return &g;
+    return nullptr;
+}
+
+const MCode* find_m(int number) {
+    for (const auto& m : kM)
+        if (number >= m.first && number <= m.last) return &m;
+    return nullptr;
+}
+
+std::span<const GCode> all_g() { return kG; }
+std::span<const MCode> all_m() { return kM; }
+
+bool g_owns(const GCode& g, Addr a) {
+    static const OwnTable t;
+    return t.own[size_t(&g - kG)].test(a);
+}
+
+}  // namespace pupitre

@@ -1,0 +1,136 @@
+// Expression evaluation (program-flow.md §8.4): the accumulator starts with the
+// first term; each `op term` is applied in turn, no precedence, no parentheses.
+// Seed 004:1353: L1=2+3*5 gives 25.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/parse/eval.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+namespace pupitre {
+
+int eval_operand(const Operand& o, const LVars& l, EAccess& e, double& out, std::string& why) {
+    switch (o.kind) {
+        case Operand::Number:
+            out = o.num;
+            break;
+        case Operand::LVar:
+            if (!LVars::valid(o.index)) {
+                why = "L" + std::to_string(o.index) + " does not exist (L0-L19, L100-L199, L900-L959)";
+                return 91;
+            }
+            out = l.v[size_t(o.index)];
+            break;
+        case Operand::EParam: {
+            int64_t raw;
+            if (int rc = e.read_e(o.index, raw, why)) return rc;
+            out = double(raw);
+            break;
+        }
+        case Operand::EIndirect: {
+            if (!LVars::valid(o.index)) {
+                why = "L" + std::to_string(o.index) + " does not exist";
+                return 91;
+            }
+            double n = l.v[size_t(o.index)];
+            if (n < 0 || n > 99999 || n != std::floor(n)) {
+                why = "E parameter number " + std::to_string(n) + " taken from L" +
+                      std::to_string(o.index) + " is not an E number";
+                return 91;
+            }
+            int64_t raw;
+            if (int rc = e.read_e(int(n), raw, why)) return rc;
+            out = double(raw);
+            break;
+        }
+        case Operand::Blank:
+        case Operand::SignOnly:
+            out = 0;
+            break;
+    }
+    if (o.neg) out = -out;
+    return 0;
+}
+
+namespace {
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+int apply_prefix(const Term& t, double& v, std::string& why) {
+    for (int i = int(t.nprefix) - 1; i >= 0; --i) {
+        switch (t.prefix[i]) {
+            case '-': v = -v; break;
+            case '+': break;
+            case 'S': v = std::sin(v * kDeg); break;
+            case 'C': v = std::cos(v * kDeg); break;
+            case 'A': v = std::atan(v) / kDeg; break;
+            case 'T': v = std::trunc(v); break;
+            case 'R':
+                if (v < 0) {
+                    char num[32];
+                    std::snprintf(num, sizeof num, "%.3f", v);
+                    why = std::string("square root of a negative number (") + num + ")";
+                    return 94;
+                }
+                v = std::sqrt(v);
+                break;
+        }
+        // Keep values near exact where trigonometry leaves noise (sin 30 = 0.5).
+        if (std::fabs(v) < 1e-15) v = 0;
+    }
+    return 0;
+}
+
+int32_t as_int32(double v) {
+    if (v > 2147483647.0) return INT32_MAX;
+    if (v < -2147483648.0) return INT32_MIN;
+    return int32_t(std::trunc(v));
+}
+}  // namespace
+
+int eval_expr(const Block& b, Expr x, const LVars& l, EAccess& e, double& out, std::string& why) {
+    double acc = 0;
+    for (uint16_t i = 0; i < x.count; ++i) {
+        const Term& t = b.terms[size_t(x.first + i)];
+        double v;
+        if (int rc = eval_operand(t.v, l, e, v, why)) return rc;
+        if (int rc = apply_prefix(t, v, why)) return rc;
+        switch (t.op) {
+            case '=': acc = v; break;
+            case '+': acc += v; break;
+            case '-': acc -= v; break;
+            case '*': acc *= v; break;
+            case '/':
+                if (v == 0) {
+                    why = "division by zero";
+                    return 94;
+                }
+                acc /= v;
+                break;
+            case '&': acc = double(as_int32(acc) & as_int32(v)); break;
+            case '!': acc = double(as_int32(acc) | as_int32(v)); break;
+        }
+    }
+    if (!std::isfinite(acc)) {
+        why = "result is not a finite number";
+        return 94;
+    }
+    out = acc;
+    return 0;
+}
+
+bool compare(Cmp c, double a, double b) {
+    double ra = std::round(a * 1e6), rb = std::round(b * 1e6);
+    switch (c) {
+        case Cmp::eq: return ra == rb;
+        case Cmp::ne: return ra != rb;
+        case Cmp::lt: return ra < rb;
+        case Cmp::le: return ra <= rb;
+        case Cmp::gt: return ra > rb;
+        case Cmp::ge: return ra >= rb;
+        case Cmp::none: return true;
+    }
+    return false;
+}
+
+}  // namespace pupitre

@@ -1,0 +1,39 @@
+// Parametric programming: L variables and strictly left-to-right expressions
+// with S C A R T (program-flow.md §8). E parameters are reached through EAccess,
+// which the interpreter implements, since most of them are live machine data.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+#include <array>
+#include <bitset>
+#include <cstdint>
+#include <string>
+
+#include "core/parse/block.hpp"
+
+namespace pupitre {
+
+struct LVars {
+    std::array<double, 960> v{};
+    std::bitset<960> written;  // for the run summary
+    static bool valid(int n) {
+        return (n >= 0 && n <= 19) || (n >= 100 && n <= 199) || (n >= 900 && n <= 959);
+    }
+};
+
+class EAccess {
+public:
+    virtual ~EAccess() = default;
+    // Both return 0 or a NUM error number, with `why` filled.
+    virtual int read_e(int n, int64_t& out, std::string& why) = 0;
+    virtual int write_e(int n, int64_t value, std::string& why) = 0;
+};
+
+// Value of an operand in an expression: E parameters as raw integers (no unit
+// scaling, program-flow.md §9.3). Returns 0 or an error number.
+int eval_operand(const Operand& o, const LVars& l, EAccess& e, double& out, std::string& why);
+// Evaluates terms [first, first+count) of `b`. Returns 0 or an error number.
+int eval_expr(const Block& b, Expr x, const LVars& l, EAccess& e, double& out, std::string& why);
+// Comparison after rounding both sides to 1e-6 (program-flow.md §3, Q6).
+bool compare(Cmp c, double a, double b);
+
+}  // namespace pupitre

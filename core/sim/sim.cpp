@@ -1,0 +1,741 @@
+// The simulated machine: the interpreter's events are queued and played back on
+// a simulated clock, with the operator's controls of a NUM panel (cycle start,
+// feed hold, RAZ, single block, overrides, block search, IMD, JOG, POM).
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/sim/sim.hpp"
+#include "core/geometry/geometry.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace pupitre {
+
+namespace {
+
+using ::pupitre::geometry::kPi;
+
+struct NullSink final : MachineSink {};
+
+struct ModeInfo {
+    Mode mode;
+    std::string_view word, name, english, how;
+};
+// The NUM names on the status line, with the English the help page gives and
+// what the operator does next. The order is the mode key's (F8).
+constexpr ModeInfo kModes[] = {
+    {Mode::automatic, "auto", "AUTO", "continuous run", "Cycle Start (F9) runs the selected program"},
+    {Mode::single, "seq", "SEQ", "single block", "Cycle Start (F9) runs one block"},
+    {Mode::dry, "dry", "DRY RUN", "dry run: feeds at the machine maximum", "Cycle Start (F9) runs it"},
+    {Mode::test, "test", "TEST", "program check, no motion", "Cycle Start (F9) checks the program"},
+    {Mode::rns, "rns", "RNS", "block search and resume", "type the N to find, then Cycle Start (F9)"},
+    {Mode::imd, "imd", "IMD", "manual data input", "type a block, Enter, then Cycle Start (F9)"},
+    {Mode::jog, "jog", "JOG", "continuous jog", "hold an arrow key to move an axis (keys on OP)"},
+    {Mode::inc, "inc", "INC", "incremental jog", "an arrow key moves one step (keys on OP)"},
+    {Mode::pom, "pom", "POM", "homing", "Cycle Start (F9) homes the axes"},
+};
+
+std::string fmt_seconds(double s) {
+    char buf[32];
+    int m = int(s / 60);
+    std::snprintf(buf, sizeof buf, "%d min %04.1f s", m, s - 60 * m);
+    return buf;
+}
+
+}  // namespace
+
+std::string_view mode_name(Mode m) {
+    for (const auto& i : kModes)
+        if (i.mode == m) return i.name;
+    return "?";
+}
+
+std::string_view mode_english(Mode m) {
+    for (const auto& i : kModes)
+        if (i.mode == m) return i.english;
+    return "?";
+}
+
+std::string_view mode_how(Mode m) {
+    for (const auto& i : kModes)
+        if (i.mode == m) return i.how;
+    return "";
+}
+
+Mode next_mode(Mode m, int dir) {
+    int n = int(std::size(kModes)), i = 0;
+    while (i < n && kModes[i].mode != m) ++i;
+    return kModes[((i + dir) % n + n) % n].mode;
+}
+
+bool parse_mode(std::string_view word, Mode& out) {
+    for (const auto& i : kModes)
+        if (i.word == word) {
+            out = i.mode;
+            return true;
+        }
+    return false;
+}
+
+std::string_view state_name(RunState s) {
+    switch (s) {
+        case RunState::idle: return "READY";
+        case RunState::running: return "CYCLE";
+        case RunState::hold: return "HOLD";
+        case RunState::block: return "BLOCK";
+        case RunState::stopped: return "STOP";
+        case RunState::ended: return "END";
+        case RunState::alarm: return "ALARM";
+    }
+    return "?";
+}
+
+Sim::Sim(const MachineProfile& m, ProgramMemory& mem) : m_(m), mem_(mem), null_(std::make_unique<NullSink>()) {
+    RunOptions o;
+    o.require_homing = m.homing_required;
+    MachineSink& sink = *this;  // a private base: converted here, where it is accessible
+    in_ = std::make_unique<Interpreter>(m_, mem_, sink, o);
+    om_ = in_->machine_pos();
+    op_ = in_->program_pos();
+}
+
+Sim::~Sim() = default;
+
+// ---- controls ----
+
+bool Sim::set_mode(Mode m, std::string& why) {
+    if (in_cycle()) {
+        why = "a program is in cycle: let it end or press RAZ before changing mode";
+        return false;
+    }
+    mode_ = m;
+    if (state_ == RunState::ended) state_ = RunState::idle;
+    if (m == Mode::rns && search_n_ < 0) message_ = "RNS: type the N number of the block to search, then Cycle Start";
+    return true;
+}
+
+bool Sim::select(int program, std::string& why) {
+    if (in_cycle()) {
+        why = "a program is in cycle: RAZ first";
+        return false;
+    }
+    if (!mem_.find(program)) {
+        why = "program %" + std::to_string(program) + " is not in memory";
+        return false;
+    }
+    if (selected_ != program) {
+        // A new program: the status line and the OP page forget the old one's
+        // block, count and cycle time.
+        loc_ = Loc{};
+        blocks_ = 0;
+        run_seconds_ = 0;
+        if (state_ == RunState::ended) state_ = RunState::idle;
+    }
+    selected_ = program;
+    return true;
+}
+
+bool Sim::imd(std::string_view blocks, std::string& why) {
+    if (mode_ != Mode::imd) {
+        why = "blocks are typed in IMD mode";
+        return false;
+    }
+    if (in_cycle()) {
+        why = "the previous IMD block is still running";
+        return false;
+    }
+    imd_ = std::make_unique<ProgramText>();
+    imd_->file = "IMD";
+    imd_->text = std::make_shared<std::string>(std::string(blocks) + "\n");
+    imd_->end = imd_->text->size();
+    invalidate_text_cache();  // the cache may know the old block's address
+    if (state_ == RunState::ended) state_ = RunState::idle;
+    return true;
+}
+
+bool Sim::search(long n, std::string& why) {
+    if (in_cycle()) {
+        why = "a program is in cycle: RAZ first";
+        return false;
+    }
+    if (n < 0) {
+        why = "RNS needs a block number N";
+        return false;
+    }
+    search_n_ = n;
+    message_ = "RNS N" + std::to_string(n) + ": Cycle Start searches the block";
+    return true;
+}
+
+bool Sim::cycle_start(std::string& why) {
+    switch (state_) {
+        case RunState::alarm:
+            why = "alarm " + std::to_string(alarms_.back().diag.code) + " is active: RAZ first";
+            return false;
+        case RunState::running: return true;
+        case RunState::hold:
+        case RunState::block:
+        case RunState::stopped:
+            state_ = RunState::running;
+            return true;
+        case RunState::idle:
+        case RunState::ended:
+            // At rest a setting may have moved the program frame (a touch-off,
+            // a gauge): the animation starts from the position shown now.
+            op_ = in_->frames().to_program(om_);
+            break;
+    }
+    message_.clear();
+    auto need_program = [&]() {
+        if (selected_ >= 0 && mem_.find(selected_)) return true;
+        why = "no program selected: choose one on the DIR page or with :load N";
+        return false;
+    };
+    switch (mode_) {
+        case Mode::automatic:
+        case Mode::single:
+        case Mode::dry:
+            if (!need_program()) return false;
+            in_->start(selected_);
+            new_path(op());
+            break;
+        case Mode::test: {
+            if (!need_program()) return false;
+            RunOptions o = in_->options();
+            o.require_homing = false;
+            new_path(in_->program_pos());
+            // TEST changes nothing: its own correctors, frames, variables and
+            // program memory (a G76+/G76- it runs edits a copy).
+            test_.reset();
+            test_mem_ = std::make_unique<ProgramMemory>(mem_.clone());
+            lc_ = LineCache{};
+            test_ = std::make_unique<Interpreter>(m_, *test_mem_, path_ ? static_cast<MachineSink&>(*path_) : *null_, o);
+            for (int d = 0; d < 256; ++d) test_->corrector(d) = in_->corrector(d);
+            test_->frames_mut() = in_->frames();
+            test_->start(selected_);
+            test_blocks_ = 0;
+            break;
+        }
+        case Mode::rns:
+            if (!need_program()) return false;
+            if (search_n_ < 0) {
+                why = "RNS: type the N number of the block to search first";
+                return false;
+            }
+            in_->start(selected_);
+            searching_ = true;
+            break;
+        case Mode::imd:
+            if (!imd_) {
+                why = "IMD: type a block first";
+                return false;
+            }
+            in_->start_imd(imd_.get());
+            break;
+        case Mode::pom: {
+            // Lathe: X retracts first; mill: Z (the tool axis) first (safe order).
+            std::vector<int> order = m_.lathe ? std::vector<int>{X, Z} : std::vector<int>{Z, X, Y};
+            for (int a = 0; a < kAxes; ++a)
+                if (std::find(order.begin(), order.end(), a) == order.end()) order.push_back(a);
+            Axes planned = in_->machine_pos();
+            for (int a : order) {
+                if (!m_.has(a)) continue;
+                Axes to = planned;
+                to[size_t(a)] = m_.home[size_t(a)];
+                queue_move_to(to, 0, Loc{}, m_.axes[size_t(a)].rapid, true, a);
+                planned = to;
+            }
+            manual_ = true;
+            state_ = RunState::running;
+            return true;
+        }
+        case Mode::jog:
+        case Mode::inc:
+            why = "JOG/INC: move an axis with the jog keys or :jog AXIS DIST";
+            return false;
+    }
+    interp_done_ = false;
+    pending_alarm_ = false;
+    manual_ = false;
+    seq_stop_ = false;
+    blocks_ = 0;
+    run_seconds_ = 0;
+    state_ = RunState::running;
+    return true;
+}
+
+// A run of the selected program starts a new drawing, with the program's EM+
+// and EM- extremes when it gives them.
+void Sim::new_path(const Axes& start) {
+    if (!path_) return;
+    path_->clear();
+    path_->start_at(start);
+    const ProgramText* p = mem_.find(selected_);
+    // The GRAPH page's title and its `f` name the program, as the plot does.
+    path_->program = p ? p->number : -1;
+    path_->title = p ? p->title : std::string();
+    Axes lo{}, hi{};
+    uint16_t mlo = 0, mhi = 0;
+    if (p && scan_extremes(*p, m_.lathe && m_.x_diameter, lo, hi, mlo, mhi))
+        path_->set_extremes(lo, hi, mlo, mhi);
+}
+
+void Sim::feed_hold() {
+    if (state_ == RunState::running) state_ = RunState::hold;
+}
+
+void Sim::raz() {
+    q_.clear();
+    cur_.reset();
+    test_.reset();
+    in_->raz();
+    in_->place(om_);  // the axes stop where they are
+    op_ = in_->program_pos();
+    searching_ = false;
+    pending_alarm_ = false;
+    interp_done_ = true;
+    manual_ = false;
+    seq_stop_ = false;
+    diag_seen_ = 0;
+    sp_ = SpindleEvent{};
+    m7_ = m8_ = false;
+    corr_ = 0;  // RAZ: D0 as after M02, the tool T stays
+    message_.clear();
+    state_ = RunState::idle;
+}
+
+bool Sim::jog(int axis, double delta, std::string& why) {
+    if (state_ == RunState::running && !manual_) {
+        why = "a program is in cycle";
+        return false;
+    }
+    if ((in_cycle() && !manual_) || state_ == RunState::alarm) {
+        why = state_ == RunState::alarm ? "an alarm is active: RAZ first" : "a program is interrupted: RAZ before jogging";
+        return false;
+    }
+    if (!m_.has(axis)) {
+        why = std::string("the machine has no ") + kAxisNames[size_t(axis)] + " axis";
+        return false;
+    }
+    double internal = delta / in_->to_display(axis, 1.0);
+    int code = in_->jog(axis, internal, why);
+    if (code) {
+        why = "error " + std::to_string(code) + ": " + why;
+        return false;
+    }
+    double feed = jog_feed > 0 ? jog_feed : m_.jog_feed;
+    queue_move_to(in_->machine_pos(), 1, Loc{}, feed, false, axis);
+    message_.clear();  // the last run's news is not the jog's
+    manual_ = true;
+    interp_done_ = true;
+    if (state_ != RunState::running) state_ = RunState::running;
+    return true;
+}
+
+// A move the interpreter did not make (POM, JOG): from the last queued point.
+void Sim::queue_move_to(const Axes& mach, int g, Loc loc, double feed, bool home_axis, int axis) {
+    Ev e;
+    e.kind = home_axis ? Ev::home : Ev::move;
+    e.a = axis;
+    e.loc = loc;
+    MoveEvent& m = e.m;
+    m.loc = loc;
+    m.g = g;
+    m.from_mach = planned_;
+    // Nothing moving or queued (an event that ended the last run may linger).
+    if (q_.empty() && (!cur_ || (cur_->kind != Ev::move && cur_->kind != Ev::home))) {
+        m.from_mach = om_;
+        op_ = in_->frames().to_program(om_);  // a setting made at rest is in the frame now
+    }
+    m.to_mach = mach;
+    m.to_prog = in_->frames().to_program(mach);
+    double len = 0;
+    for (int a = 0; a < kAxes; ++a) len += std::pow(mach[size_t(a)] - m.from_mach[size_t(a)], 2);
+    m.length = std::sqrt(len);
+    m.feed = feed;
+    m.seconds = feed > 0 ? m.length / feed * 60.0 : 0;
+    e.feed_move = g != 0;
+    planned_ = mach;
+    q_.push_back(std::move(e));
+}
+
+// ---- the interpreter's events ----
+
+void Sim::push(Ev e) {
+    e.overrides_off = in_->modal().overrides_off;
+    if (searching_) {
+        // RNS: the moves are not made; the state they leave is rebuilt.
+        switch (e.kind) {
+            case Ev::spindle: sp_ = e.sp; break;
+            case Ev::coolant: m7_ = e.a, m8_ = e.b; break;
+            case Ev::tool: tool_ = e.a, corr_ = e.b; break;
+            default: break;
+        }
+        return;
+    }
+    if (e.kind == Ev::move) planned_ = e.m.to_mach;
+    q_.push_back(std::move(e));
+}
+
+void Sim::move(const MoveEvent& m) {
+    Ev e = event(Ev::move, m.loc);
+    e.m = m;
+    e.feed_move = m.g != 0;
+    push(std::move(e));
+}
+
+void Sim::dwell(const Loc& l, double s) {
+    Ev e = event(Ev::dwell, l);
+    e.seconds = s;
+    push(std::move(e));
+}
+
+void Sim::tool(const Loc& l, int t, int d, double s) {
+    Ev e = event(Ev::tool, l);
+    e.a = t, e.b = d, e.seconds = s;
+    push(std::move(e));
+}
+
+void Sim::spindle(const SpindleEvent& sp) {
+    Ev e = event(Ev::spindle, sp.loc);
+    e.sp = sp;
+    push(std::move(e));
+}
+
+void Sim::coolant(const Loc& l, bool m7, bool m8) {
+    Ev e = event(Ev::coolant, l);
+    e.a = m7, e.b = m8;
+    push(std::move(e));
+}
+
+void Sim::stop(const Loc& l, int m) {
+    Ev e = event(Ev::stop, l);
+    e.a = m;
+    push(std::move(e));
+}
+
+void Sim::message(const Loc& l, int, std::string_view text) {
+    Ev e = event(Ev::message, l);
+    e.text = std::string(text);
+    push(std::move(e));
+}
+
+void Sim::end(const Loc& l, int m) {
+    Ev e = event(Ev::end, l);
+    e.a = m;
+    push(std::move(e));
+}
+
+// ---- playback ----
+
+double Sim::duration(const Ev& e) const {
+    switch (e.kind) {
+        case Ev::move:
+        case Ev::home:
+            if (mode_ == Mode::dry && e.feed_move && !manual_ && e.m.length > 0)
+                return e.m.length / m_.max_feed * 60.0;  // DRY RUN: feeds at the maximum
+            return e.m.seconds;
+        case Ev::dwell:
+        case Ev::tool: return e.seconds;
+        default: return 0;
+    }
+}
+
+double Sim::rate(const Ev& e) const {
+    if ((e.kind == Ev::move) && e.feed_move && !e.overrides_off) return feed_override / 100.0;
+    return 1.0;
+}
+
+bool Sim::begin_next() {
+    if (q_.empty()) return false;
+    cur_ = std::make_unique<Ev>(std::move(q_.front()));
+    q_.pop_front();
+    Ev& e = *cur_;
+    if (e.loc.line > 0) loc_ = e.loc;
+    t_ = 0;
+    dur_ = duration(e);
+    switch (e.kind) {
+        case Ev::move:
+        case Ev::home:
+            op_from_ = op_;
+            for (int a = 0; a < kAxes; ++a) {
+                op_off0_[size_t(a)] = e.m.from_mach[size_t(a)] - op_from_[size_t(a)];
+                op_off1_[size_t(a)] = e.m.to_mach[size_t(a)] - e.m.to_prog[size_t(a)];
+            }
+            if (e.m.rpm > 0 && e.kind == Ev::move && !manual_) sp_.rpm = e.m.rpm;
+            if (path_ && e.kind == Ev::move && !manual_ && e.loc.line > 0) {
+                const auto& ew = in_->e_written();  // E31000/E31001: the drawing's line types
+                auto r = ew.find(31000), f = ew.find(31001);
+                path_->set_line_types(r == ew.end() ? -1 : int(r->second), f == ew.end() ? -1 : int(f->second));
+                path_->add(e.m);
+            }
+            break;
+        case Ev::spindle: sp_ = e.sp; break;
+        case Ev::coolant: m7_ = e.a, m8_ = e.b; break;
+        case Ev::tool: tool_ = e.a, corr_ = e.b; break;
+        case Ev::message: message_ = e.text; break;
+        case Ev::stop:
+            state_ = RunState::stopped;
+            message_ = e.a == 88 ? "G88: operator check; Cycle Start goes on"
+                                 : "M" + std::string(e.a < 10 ? "0" : "") + std::to_string(e.a) +
+                                       ": program stop; Cycle Start goes on";
+            break;
+        case Ev::end:
+            state_ = RunState::ended;
+            if (e.a == 2) corr_ = 0;  // M02: D0, the tool T stays (turning.md §8.3)
+            if (e.a != 2 && mode_ == Mode::imd)
+                message_ = "IMD done (" + std::to_string(blocks_) + (blocks_ == 1 ? " block" : " blocks") +
+                           "): type the next block, or F8 for another mode";
+            if (e.a == 2)
+                message_ = "M02: end of program %" + std::to_string(e.loc.prog) + ", " +
+                           std::to_string(blocks_) + " blocks, cycle time " + fmt_seconds(run_seconds_);
+            break;
+        case Ev::dwell: break;
+    }
+    return true;
+}
+
+void Sim::finish_current() {
+    Ev& e = *cur_;
+    if (e.kind == Ev::move || e.kind == Ev::home) {
+        om_ = e.m.to_mach;
+        op_ = e.m.to_prog;
+        if (e.kind == Ev::home) {
+            in_->home(e.a);
+            om_ = in_->machine_pos();
+            op_ = in_->program_pos();
+        }
+    }
+    cur_.reset();
+}
+
+Axes Sim::op() const {
+    if (!cur_ || (cur_->kind != Ev::move && cur_->kind != Ev::home)) {
+        if (in_cycle() || state_ == RunState::running) return op_;
+        return in_->frames().to_program(om_);
+    }
+    const MoveEvent& m = cur_->m;
+    double f = dur_ > 0 ? std::clamp(t_ / dur_, 0.0, 1.0) : 1.0;
+    Axes p{};
+    for (int a = 0; a < kAxes; ++a)
+        p[size_t(a)] = op_from_[size_t(a)] + (m.to_prog[size_t(a)] - op_from_[size_t(a)]) * f;
+    if (m.g == 2 || m.g == 3) {
+        int a0 = m.plane_a0, a1 = m.plane_a1;
+        double s0 = op_from_[size_t(a0)] - m.c0, s1 = op_from_[size_t(a1)] - m.c1;
+        double e0 = m.to_prog[size_t(a0)] - m.c0, e1 = m.to_prog[size_t(a1)] - m.c1;
+        double r0 = std::hypot(s0, s1), r1 = std::hypot(e0, e1);
+        double ang = std::atan2(s1, s0) + m.sweep * kPi / 180.0 * f;
+        double r = r0 + (r1 - r0) * f;
+        p[size_t(a0)] = m.c0 + r * std::cos(ang);
+        p[size_t(a1)] = m.c1 + r * std::sin(ang);
+    }
+    return p;
+}
+
+void Sim::interpolate() {
+    if (!cur_ || (cur_->kind != Ev::move && cur_->kind != Ev::home)) return;
+    double f = dur_ > 0 ? std::clamp(t_ / dur_, 0.0, 1.0) : 1.0;
+    Axes p = op();
+    for (int a = 0; a < kAxes; ++a)
+        om_[size_t(a)] = p[size_t(a)] + op_off0_[size_t(a)] + (op_off1_[size_t(a)] - op_off0_[size_t(a)]) * f;
+}
+
+double Sim::queued_time() const {
+    double t = cur_ ? std::max(0.0, dur_ - t_) : 0;
+    for (const Ev& e : q_) t += duration(e);
+    return t;
+}
+
+Axes Sim::to_go() const {
+    Axes g{};
+    if (!cur_ || (cur_->kind != Ev::move && cur_->kind != Ev::home)) return g;
+    Axes p = op();
+    for (int a = 0; a < kAxes; ++a) g[size_t(a)] = cur_->m.to_prog[size_t(a)] - p[size_t(a)];
+    return g;
+}
+
+double Sim::feed() const {
+    if (!cur_ || cur_->kind != Ev::move || state_ != RunState::running) return 0;
+    double f = cur_->m.feed;
+    if (mode_ == Mode::dry && cur_->feed_move && !manual_) f = m_.max_feed;
+    else if (in_->modal().feed_mode == 95 && cur_->m.rpm > 0) f = f / cur_->m.rpm * rpm();  // mm/rev follows the spindle
+    return f * rate(*cur_);
+}
+
+double Sim::rpm() const {
+    if (sp_.dir != 3 && sp_.dir != 4) return 0;
+    double n = sp_.rpm;
+    if (sp_.css && sp_.vc > 0 && m_.lathe) {
+        // G96: the speed follows the diameter being cut (turning.md §5.8).
+        double d = 2 * std::abs(op()[X]);
+        double limit = m_.spindle_max;
+        if (sp_.range >= 40 && size_t(sp_.range - 40) < m_.ranges.size())
+            limit = std::min(limit, m_.ranges[size_t(sp_.range - 40)].max);
+        if (in_->modal().smax > 0) limit = std::min(limit, in_->modal().smax);
+        n = d > 1e-6 ? std::min(limit, sp_.vc * 1000.0 / (kPi * d)) : limit;
+    }
+    if (in_->modal().overrides_off) return n;
+    return n * spindle_override / 100.0;
+}
+
+void Sim::raise_from_interp() {
+    const auto& d = in_->diags();
+    for (; diag_seen_ < d.size(); ++diag_seen_) {
+        const Diag& x = d[diag_seen_];
+        if (x.is_error()) {
+            alarms_.push_back(Alarm{x, clock_});
+            if (path_) path_->add_error(x);
+        }
+        else message_ = "warning " + std::to_string(x.code) + ": " + x.detail;
+    }
+}
+
+// The queue is empty: runs the next block, or settles the state.
+bool Sim::step_interp(long& budget) {
+    if (pending_alarm_) {
+        pending_alarm_ = false;
+        state_ = RunState::alarm;
+        return false;
+    }
+    if (interp_done_) {
+        if (state_ == RunState::running && manual_ && mode_ == Mode::pom)
+            message_ = "POM done: every axis is homed; F8 to choose the next mode";
+        if (state_ == RunState::running) state_ = manual_ ? RunState::idle : RunState::ended;
+        manual_ = false;
+        return false;
+    }
+    if (seq_stop_ && mode_ == Mode::single) {
+        seq_stop_ = false;
+        state_ = RunState::block;
+        return false;
+    }
+    if (budget <= 0) return false;
+    int next_line = 0;
+    if (searching_ && in_->next_label(&next_line) == search_n_) {
+        // RNS: the state is rebuilt up to the block; the axes rejoin its start.
+        searching_ = false;
+        queue_move_to(in_->machine_pos(), 0, in_->location(), 0, false, X);
+        Ev& rejoin = q_.back();
+        rejoin.m.seconds = 0;
+        for (int a = 0; a < kAxes; ++a)
+            if (m_.has(a) && m_.axes[size_t(a)].rapid > 0)
+                rejoin.m.seconds = std::max(rejoin.m.seconds, std::abs(rejoin.m.to_mach[size_t(a)] - om_[size_t(a)]) /
+                                                                  m_.axes[size_t(a)].rapid * 60.0);
+        rejoin.m.to_prog = in_->program_pos();
+        rejoin.feed_move = false;
+        mode_ = Mode::automatic;
+        state_ = RunState::stopped;
+        loc_ = Loc{in_->location().prog, next_line, search_n_};
+        message_ = "RNS: N" + std::to_string(search_n_) + " found, state rebuilt; Cycle Start rejoins it, AUTO";
+        return false;
+    }
+    --budget;
+    long before = in_->blocks();
+    StepResult r = in_->step();
+    blocks_ += in_->blocks() - before;  // the end of an IMD text is not a block
+    if (!searching_ || in_->has_errors()) loc_ = in_->location();
+    raise_from_interp();
+    switch (r) {
+        case StepResult::running:
+        case StepResult::stopped: break;
+        case StepResult::ended:
+            interp_done_ = true;
+            if (searching_) {
+                searching_ = false;
+                state_ = RunState::idle;
+                message_ = "RNS: N" + std::to_string(search_n_) + " is not in the program";
+                return false;
+            }
+            break;
+        case StepResult::error:
+            interp_done_ = true;
+            searching_ = false;
+            pending_alarm_ = true;  // after the moves the block made
+            break;
+    }
+    if (mode_ == Mode::single && !searching_) seq_stop_ = true;
+    return true;
+}
+
+void Sim::test_advance(long budget) {
+    while (budget-- > 0 && state_ == RunState::running) {
+        StepResult r = test_->step();
+        ++test_blocks_;
+        loc_ = test_->location();
+        if (r == StepResult::error) {
+            for (const Diag& d : test_->diags())
+                if (d.is_error()) {
+                    alarms_.push_back(Alarm{d, clock_});
+                    if (path_) path_->add_error(d);
+                }
+            state_ = RunState::alarm;
+        } else if (r == StepResult::ended) {
+            int warnings = 0;
+            for (const Diag& d : test_->diags()) warnings += !d.is_error();
+            message_ = "TEST %" + std::to_string(selected_) + ": no error, " + std::to_string(test_->blocks()) +
+                       " blocks, " + std::to_string(warnings) + " warnings, cycle time " +
+                       fmt_seconds(test_->seconds());
+            state_ = RunState::ended;
+        }
+    }
+}
+
+void Sim::advance(double dt, long max_blocks) {
+    if (state_ != RunState::running) return;
+    if (mode_ == Mode::test && test_) return test_advance(max_blocks);
+    long budget = max_blocks;
+    while (state_ == RunState::running) {
+        if (!cur_) {
+            if (begin_next()) continue;
+            if (!step_interp(budget)) break;
+            continue;
+        }
+        double r = rate(*cur_);
+        if (r <= 0) break;  // feed override at 0 %: the axes wait
+        double need = (dur_ - t_) / r;
+        if (dt >= need) {
+            dt -= need;
+            clock_ += need;
+            if (!manual_) run_seconds_ += need;  // jogs and POM are not cycle time
+            t_ = dur_;
+            finish_current();
+        } else {
+            t_ += dt * r;
+            clock_ += dt;
+            if (!manual_) run_seconds_ += dt;
+            interpolate();
+            break;
+        }
+    }
+}
+
+const ProgramText* Sim::text_of(int prog) const {
+    if (prog == 0 && imd_ && mode_ == Mode::imd) return imd_.get();
+    // TEST shows its own copy, as its G76+/G76- left it.
+    return (mode_ == Mode::test && test_mem_ ? *test_mem_ : mem_).find(prog);
+}
+
+std::string_view Sim::line_of(const ProgramText* p, int line) const {
+    if (!p || line < p->first_line) return {};
+    std::string_view all = *p->text;
+    // Both memories' generations only grow; a new TEST copy resets the cache.
+    const uint64_t generation = mem_.generation() + (test_mem_ ? test_mem_->generation() : 0);
+    if (lc_.p != p || lc_.generation != generation) lc_ = LineCache{p, p->first_line, p->begin, generation};
+    while (lc_.line > line) {  // backwards from the cached line, not from the top
+        size_t prev = lc_.offset >= 2 ? all.rfind('\n', lc_.offset - 2) : std::string_view::npos;
+        lc_.offset = prev == std::string_view::npos || prev + 1 < p->begin ? p->begin : prev + 1;
+        --lc_.line;
+    }
+    while (lc_.line < line) {
+        size_t eol = all.find('\n', lc_.offset);
+        if (eol == std::string_view::npos || eol + 1 >= p->end) return {};
+        lc_.offset = eol + 1;
+        ++lc_.line;
+    }
+    size_t eol = all.find('\n', lc_.offset);
+    if (eol == std::string_view::npos || eol > p->end) eol = p->end;
+    std::string_view l = all.substr(lc_.offset, eol - lc_.offset);
+    if (!l.empty() && l.back() == '\r') l.remove_suffix(1);
+    return l;
+}
+
+}  // namespace pupitre

@@ -1,0 +1,222 @@
+// The simulated machine behind the console: it runs the interpreter block by
+// block and animates the moves on a simulated clock (DESIGN §1 "sim"). The
+// console decides how many simulated seconds pass per frame; nothing here
+// knows the wall clock or the terminal.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+#include <deque>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/interp/interp.hpp"
+#include "core/output/toolpath.hpp"
+
+namespace pupitre {
+
+// The NUM operating modes (the console's mode key). MODIF and EDIT belong to
+// the editor.
+enum class Mode { automatic, single, dry, test, rns, imd, jog, inc, pom };
+std::string_view mode_name(Mode m);     // "AUTO", "SEQ", "DRY RUN", …
+std::string_view mode_english(Mode m);  // "continuous", "single block", …
+std::string_view mode_how(Mode m);      // what the operator does in it
+Mode next_mode(Mode m, int dir);        // the mode key's order (F8: +1, S-F8: -1)
+bool parse_mode(std::string_view word, Mode& out);  // auto|seq|dry|test|rns|imd|jog|inc|pom
+
+enum class RunState {
+    idle,      // nothing in cycle
+    running,   // cycle start given: blocks are executed and animated
+    hold,      // feed hold: motion frozen mid-move, cycle start resumes
+    block,     // SEQ: a block is done, cycle start runs the next one
+    stopped,   // M00 / M01 / G88 wait: cycle start resumes
+    ended,     // M02, end of an IMD block, end of a POM or a jog
+    alarm,     // an error stopped the run: RAZ acknowledges it
+};
+std::string_view state_name(RunState s);
+
+struct Alarm {
+    Diag diag;
+    double clock = 0;  // simulated seconds since power-on
+};
+
+class Sim final : private MachineSink {
+public:
+    Sim(const MachineProfile& m, ProgramMemory& mem);
+    ~Sim();
+
+    // The graphic page's toolpath: a program's moves are added as they are
+    // shown (AUTO, SEQ, DRY RUN), or as TEST checks them (the graphic test).
+    void set_path(Toolpath* p) { path_ = p; }
+    Interpreter& interp() { return *in_; }
+    const Interpreter& interp() const { return *in_; }
+    const MachineProfile& machine() const { return m_; }
+
+    // --- controls ---
+    Mode mode() const { return mode_; }
+    // Changing mode is refused while a program is in cycle (as on the panel).
+    bool set_mode(Mode m, std::string& why);
+    bool select(int program, std::string& why);  // the program AUTO/SEQ/DRY/TEST/RNS run
+    int selected() const { return selected_; }
+    bool cycle_start(std::string& why);
+    void feed_hold();
+    void raz();
+    // IMD: the block(s) Cycle Start will execute.
+    bool imd(std::string_view blocks, std::string& why);
+    // Forgets the IMD block waiting for Cycle Start; false if there was none.
+    bool drop_imd() {
+        if (!imd_ || in_cycle()) return false;
+        imd_.reset();
+        invalidate_text_cache();
+        return true;
+    }
+    // RNS: the block searched for; Cycle Start rebuilds the state up to it.
+    bool search(long n, std::string& why);
+    long search_target() const { return search_n_; }
+    // JOG / INC / :jog: moves one axis by `delta` (mm or degrees; lathe X as
+    // the OP page shows it). `continuous` marks a held JOG key.
+    bool jog(int axis, double delta, std::string& why);
+    double jog_feed = 0;   // mm/min; 0: the profile's
+    double increment = 1;  // INC step, mm
+
+    // --- operator switches ---
+    int feed_override = 100;     // %, 0..120, ignored under M49
+    int spindle_override = 100;  // %, 50..120, ignored under M49
+    bool& block_skip() { return in_->options().block_skip; }
+    bool& optional_stop() { return in_->options().optional_stop; }
+
+    // Lets `dt` simulated seconds pass, executing at most `max_blocks`
+    // blocks (so a long program in "instant" speed runs over several frames).
+    void advance(double dt, long max_blocks = 5000);
+
+    // --- what the pages show ---
+    RunState state() const { return state_; }
+    bool in_cycle() const { return state_ == RunState::running || state_ == RunState::hold ||
+                                   state_ == RunState::block || state_ == RunState::stopped; }
+    const Axes& om() const { return om_; }   // machine position now (internal units)
+    Axes op() const;                          // program position now (internal units)
+    Axes to_go() const;                       // remaining of the current move (program units)
+    const Loc& loc() const { return loc_; }   // the block being shown
+    bool moving() const { return cur_ != nullptr; }
+    int motion() const { return cur_ ? cur_->m.g : -1; }
+    double feed() const;                      // mm/min now, overrides applied
+    double rpm() const;                       // spindle rev/min now, override applied
+    int spindle_dir() const { return sp_.dir; }
+    int spindle_range() const { return sp_.range; }
+    bool m7() const { return m7_; }
+    bool m8() const { return m8_; }
+    int tool() const { return tool_; }
+    // The corrector the machine applies: the animated one while a program's
+    // moves are shown, else the interpreter's (IMD D3, M02 and RAZ: D0).
+    int corrector() const { return in_cycle() && !manual_ ? corr_ : in_->modal().d; }
+    double clock() const { return clock_; }
+    // Seconds of motion still queued (JOG keeps about 0.1 s ahead).
+    double queued_time() const;
+    // Seconds of the last program run (or IMD block): jogs and POM not counted.
+    double cycle_time() const { return run_seconds_; }
+    long blocks_done() const { return mode_ == Mode::test && test_ ? test_blocks_ : blocks_; }
+    const std::vector<Alarm>& alarms() const { return alarms_; }  // history, newest last
+    bool alarm_active() const { return state_ == RunState::alarm; }
+    const std::string& message() const { return message_; }     // $0 text or cycle news
+    long test_blocks() const { return test_blocks_; }
+    bool overrides_inhibited() const { return in_->modal().overrides_off; }
+    double to_display(int axis, double v) const { return in_->to_display(axis, v); }
+    // The program a location is in (the IMD fragment for program 0 of IMD).
+    const ProgramText* text_of(int prog) const;
+    // The text of line `line` (1-based, file numbering) of a program; "" if
+    // there is none. Cached, so following a running program costs little.
+    std::string_view line_of(const ProgramText* p, int line) const;
+    void invalidate_text_cache() { lc_ = LineCache{}; }  // a program's text changed
+
+private:
+    struct Ev {
+        enum Kind { move, dwell, tool, spindle, coolant, stop, message, end, home } kind = move;
+        MoveEvent m;
+        SpindleEvent sp;
+        Loc loc;
+        double seconds = 0;
+        int a = 0, b = 0;  // tool t, d / coolant m7, m8 / stop m / end m / home axis
+        bool overrides_off = false;
+        bool feed_move = false;  // G1/G2/G3 (a feed override applies)
+        std::string text;
+    };
+
+    // MachineSink: the interpreter's events join the queue.
+    void move(const MoveEvent&) override;
+    void dwell(const Loc&, double seconds) override;
+    void tool(const Loc&, int t, int d, double seconds) override;
+    void spindle(const SpindleEvent&) override;
+    void coolant(const Loc&, bool m7, bool m8) override;
+    void stop(const Loc&, int m) override;
+    void message(const Loc&, int channel, std::string_view) override;
+    void end(const Loc&, int m) override;
+    void stock(const Loc& l, const std::vector<std::array<double, 2>>& zr) override {
+        if (path_ && !searching_) path_->add_stock(l, zr);
+    }
+
+    static Ev event(Ev::Kind k, const Loc& l) {
+        Ev e;
+        e.kind = k;
+        e.loc = l;
+        return e;
+    }
+    void push(Ev e);
+    void new_path(const Axes& start);
+    bool begin_next();              // takes the next event; false if none
+    void finish_current();          // the current event is done
+    double duration(const Ev& e) const;
+    double rate(const Ev& e) const; // simulated progress per second (overrides)
+    void interpolate();             // om_ from the current move and t_
+    void raise_from_interp();
+    bool step_interp(long& budget); // false: nothing more to run now
+    void test_advance(long budget);
+    void queue_move_to(const Axes& mach, int g, Loc loc, double feed, bool home_axis, int axis);
+
+    const MachineProfile& m_;
+    ProgramMemory& mem_;
+    std::unique_ptr<Interpreter> in_;
+    std::unique_ptr<ProgramMemory> test_mem_;  // TEST's copy of the programs (before test_)
+    std::unique_ptr<Interpreter> test_;  // TEST mode: a second interpreter, no motion
+    std::unique_ptr<MachineSink> null_;
+    Toolpath* path_ = nullptr;
+
+    Mode mode_ = Mode::automatic;
+    RunState state_ = RunState::idle;
+    int selected_ = -1;
+    long search_n_ = -1;
+    bool searching_ = false;
+    bool interp_done_ = true;  // the interpreter has nothing more to run
+    bool pending_alarm_ = false;  // raised once the failing block's moves are shown
+    bool manual_ = false;      // the queue holds POM or JOG moves, not a program
+    bool seq_stop_ = false;    // SEQ: stop once this block's events are shown
+    size_t diag_seen_ = 0;
+    Axes planned_{};           // machine position at the end of the queue
+    std::unique_ptr<ProgramText> imd_;
+    std::deque<Ev> q_;
+    std::unique_ptr<Ev> cur_;
+    double t_ = 0;          // simulated seconds into the current event
+    double dur_ = 0;        // its duration at 100 %
+    Axes om_{};             // shown machine position
+    Axes op_off0_{}, op_off1_{};  // OM - OP at the start and end of the current move
+    Axes op_{};             // shown program position (after the last finished move)
+    Axes op_from_{};        // program position at the start of the current move
+    Loc loc_;
+    SpindleEvent sp_;
+    bool m7_ = false, m8_ = false;
+    int tool_ = 0, corr_ = 0;
+    double clock_ = 0;
+    double run_seconds_ = 0;
+    long blocks_ = 0;
+    long test_blocks_ = 0;
+    std::vector<Alarm> alarms_;
+    std::string message_;
+    struct LineCache {
+        const ProgramText* p = nullptr;
+        int line = 0;
+        size_t offset = 0;
+        uint64_t generation = 0;  // of the program memory (G76+/G76- move lines)
+    };
+    mutable LineCache lc_;
+};
+
+}  // namespace pupitre

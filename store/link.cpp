@@ -1,0 +1,141 @@
+// The store as program memory and machine state of a run (see link.hpp).
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "store/link.hpp"
+
+#include <charconv>
+#include <cstdio>
+
+#include "store/text.hpp"
+
+namespace pupitre::store {
+
+namespace {
+
+// Corrector fields by E family (E50xxx … E55xxx), as Interpreter::write_e maps them.
+constexpr const char* kLatheFields[] = {"X", "Z", "R", "DX", "DZ", "C"};
+constexpr const char* kMillFields[] = {"L", "A", "R", "DL", "DR", "C"};
+constexpr const char* kOrigins[] = {"PREF", "DEC1", nullptr, nullptr, "DEC3"};  // E6x000, 001, 004
+
+bool is_origin(std::string_view name) {
+    return name.substr(0, 5) == "PREF." || name.substr(0, 5) == "DEC1." ||
+           name.substr(0, 5) == "DEC3.";
+}
+
+bool rotary_name(std::string_view name) {
+    if (!is_origin(name)) return false;  // correctors are lengths
+    char axis = name.back();
+    return axis == 'A' || axis == 'B' || axis == 'C';
+}
+
+}  // namespace
+
+Result<int> load_programs(Store& s, ProgramMemory& mem) {
+    Result<int> r;
+    std::vector<Diag> problems;
+    r.error = s.each_program([&](int number, std::string_view text) {
+        if (mem.find(number)) return;
+        std::string name = "store:%" + std::to_string(number);
+        Header h;
+        Diag d;
+        if (parse_program(text, name, h)) return;  // refused at save: cannot happen
+        if (h.number >= 0) {
+            if (mem.load_text(name, std::string(text), d)) ++r.value;
+            return;
+        }
+        // A fragment stored without a % line: its number is the store's. Its lines
+        // keep their numbers in the diagnostics.
+        std::string with_header = "%" + std::to_string(number) + "\n";
+        with_header += text;
+        if (mem.load_text(name, std::move(with_header), d)) {
+            mem.programs().back()->first_line = 1;
+            ++r.value;
+        }
+    });
+    return r;
+}
+
+Result<std::map<std::string, int64_t>> seed_machine(Store& s, Interpreter& in) {
+    Result<std::map<std::string, int64_t>> r;
+    const MachineProfile& m = in.machine();
+    auto stored = s.values(m.name);
+    if (stored.error) {
+        r.error = stored.error;
+        return r;
+    }
+    for (const auto& [name, v] : stored.value) {
+        size_t dot = name.find('.');
+        std::string_view head = std::string_view(name).substr(0, dot);
+        std::string_view field = std::string_view(name).substr(dot + 1);
+        if (!is_origin(name)) {
+            int d = 0;
+            std::from_chars(head.data() + 1, head.data() + head.size(), d);
+            if (d < 1 || d > m.correctors) continue;
+            Corrector& c = in.corrector(d);
+            double* f = nullptr;
+            if (m.lathe)
+                f = field == "X"    ? &c.x
+                    : field == "Z"  ? &c.z
+                    : field == "R"  ? &c.r
+                    : field == "DX" ? &c.dx
+                    : field == "DZ" ? &c.dz
+                                    : nullptr;
+            else
+                f = field == "L"    ? &c.l
+                    : field == "A"  ? &c.tip
+                    : field == "R"  ? &c.r
+                    : field == "DL" ? &c.dl
+                    : field == "DR" ? &c.dr
+                                    : nullptr;
+            if (field == "C")
+                c.c = int(v);
+            else if (f)
+                *f = double(v) / 1000.0;
+            else
+                continue;  // a field of the other kind of machine
+        } else {
+            int axis = axis_of(field.empty() ? '?' : field[0]);
+            if (!m.has(axis)) continue;
+            double value = is_rotary(axis) ? double(v) / 1e4 : double(v) / 1000.0;
+            if (!in.set(name, value).empty()) continue;
+        }
+        r.value[name] = v;
+    }
+    return r;
+}
+
+std::vector<std::pair<std::string, int64_t>> persistent_writes(const Interpreter& in) {
+    std::vector<std::pair<std::string, int64_t>> out;
+    const MachineProfile& m = in.machine();
+    for (const auto& [n, v] : in.e_written()) {
+        int k = n % 1000, fam = (n / 1000) % 10;
+        if (n >= 50000 && n < 56000 && k >= 1 && k <= 255) {
+            const char* f = (m.lathe ? kLatheFields : kMillFields)[fam];
+            out.emplace_back("D" + std::to_string(k) + "." + f, v);
+        } else if (n >= 60000 && n < 69000 && (k == 0 || k == 1 || k == 4)) {
+            int axis = fam;  // E6x…: x is the axis
+            if (!m.has(axis)) continue;
+            out.emplace_back(std::string(kOrigins[k]) + "." + kAxisNames[size_t(axis)], v);
+        }
+    }
+    return out;
+}
+
+Result<std::vector<Change>> persist_run(Store& s, const Interpreter& in, std::string_view source,
+                                        std::string_view profile_text) {
+    auto writes = persistent_writes(in);
+    if (writes.empty()) return {};
+    return s.set_values(in.machine().name, writes, source, profile_text);
+}
+
+std::string format_value(std::string_view name, int64_t v) {
+    if (!is_origin(name) && name.size() >= 2 && name.substr(name.size() - 2) == ".C")
+        return std::to_string(v);
+    char buf[48];
+    if (rotary_name(name))
+        std::snprintf(buf, sizeof buf, "%.4f", double(v) / 1e4);
+    else
+        std::snprintf(buf, sizeof buf, "%.3f", double(v) / 1000.0);
+    return buf;
+}
+
+}  // namespace pupitre::store

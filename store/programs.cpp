@@ -1,0 +1,464 @@
+// Programs in the store: save with conflict detection, import, delete, history,
+// restore. Every revision is kept; the current one is programs.head.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <algorithm>
+#include <optional>
+
+#include "store/sql.hpp"
+#include "store/store.hpp"
+#include "store/text.hpp"
+
+namespace pupitre::store {
+
+std::string_view kind_name(RevisionKind k) {
+    switch (k) {
+        case RevisionKind::import:
+            return "import";
+        case RevisionKind::save:
+            return "save";
+        case RevisionKind::restore:
+            return "restore";
+        case RevisionKind::remove:
+            return "delete";
+        case RevisionKind::seed:
+            return "seed";
+    }
+    return "save";
+}
+
+std::string_view status_name(SaveStatus s) {
+    switch (s) {
+        case SaveStatus::created:
+            return "created";
+        case SaveStatus::saved:
+            return "saved";
+        case SaveStatus::unchanged:
+            return "unchanged";
+        case SaveStatus::conflict:
+            return "conflict";
+    }
+    return "saved";
+}
+
+namespace {
+
+void bind_value(sql::Use& u, int i, int v) {
+    u.bind(i, v);
+}
+void bind_value(sql::Use& u, int i, int64_t v) {
+    u.bind(i, v);
+}
+void bind_value(sql::Use& u, int i, const std::string& v) {
+    u.bind(i, v);
+}
+void bind_value(sql::Use& u, int i, const std::optional<int64_t>& v) {
+    if (v)
+        u.bind(i, *v);
+    else
+        u.null(i);
+}
+
+RevisionKind kind_of(std::string_view s) {
+    if (s == "import") return RevisionKind::import;
+    if (s == "restore") return RevisionKind::restore;
+    if (s == "delete") return RevisionKind::remove;
+    if (s == "seed") return RevisionKind::seed;
+    return RevisionKind::save;
+}
+
+std::string pct(int n) {
+    return "%" + std::to_string(n);
+}
+
+constexpr const char* kSelectRow =
+    "SELECT head, last_rev, conflict, deleted, size, modified_by FROM programs WHERE number = ?1";
+constexpr const char* kSelectText = "SELECT text FROM revisions WHERE program = ?1 AND rev = ?2";
+constexpr const char* kInsertRevision =
+    "INSERT INTO revisions (program, rev, kind, based_on, conflict, text, size, lines, who, at_ms, "
+    "source) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11)";
+constexpr const char* kInsertProgram =
+    "INSERT INTO programs (number, idx, title, head, last_rev, conflict, deleted, size, lines, "
+    "modified_ms, modified_by) VALUES (?1, ?2, ?3, ?4, ?4, NULL, 0, ?5, ?6, ?7, ?8)";
+constexpr const char* kUpdateHead =
+    "UPDATE programs SET idx = ?2, title = ?3, head = ?4, last_rev = ?4, conflict = NULL, deleted "
+    "= 0, "
+    "size = ?5, lines = ?6, modified_ms = ?7, modified_by = ?8 WHERE number = ?1";
+constexpr const char* kUpdateConflict =
+    "UPDATE programs SET last_rev = ?2, conflict = ?2 WHERE number = ?1";
+constexpr const char* kClearConflict = "UPDATE programs SET conflict = NULL WHERE number = ?1";
+constexpr const char* kDelete =
+    "UPDATE programs SET head = ?2, last_rev = ?2, conflict = NULL, deleted = 1, size = 0, lines = "
+    "0, "
+    "modified_ms = ?3, modified_by = ?4 WHERE number = ?1";
+constexpr const char* kInfoColumns =
+    "number, idx, title, head, conflict, deleted, size, lines, modified_ms, modified_by";
+
+ProgramInfo info_of(const sql::Use& u) {
+    ProgramInfo i;
+    i.number = u.i32(0);
+    i.index = u.is_null(1) ? -1 : u.i32(1);
+    i.title = u.str(2);
+    i.revision = u.i32(3);
+    i.conflict = u.is_null(4) ? 0 : u.i32(4);
+    i.deleted = u.i32(5) != 0;
+    i.size = u.i64(6);
+    i.lines = u.i64(7);
+    i.modified_ms = u.i64(8);
+    i.modified_by = u.str(9);
+    return i;
+}
+
+}  // namespace
+
+// The programs row of one number, inside a transaction.
+struct Store::ProgramRow {
+    bool found = false;
+    int head = 0, last = 0, conflict = 0;
+    bool deleted = false;
+    int64_t size = 0;
+    std::string modified_by;
+};
+
+Error Store::read_row(int number, ProgramRow& row, const std::string& what) {
+    row = ProgramRow{};
+    Error e;
+    sql::Use u(prepare(kSelectRow, e));
+    if (e) return e;
+    int rc = u.bind(1, number).step();
+    if (rc == SQLITE_DONE) return {};
+    if (rc != SQLITE_ROW) return fail(rc, what);
+    row.found = true;
+    row.head = u.i32(0);
+    row.last = u.i32(1);
+    row.conflict = u.is_null(2) ? 0 : u.i32(2);
+    row.deleted = u.i32(3) != 0;
+    row.size = u.i64(4);
+    row.modified_by = u.str(5);
+    return {};
+}
+
+// Appends revision `rev` of a program; a null text is a deletion.
+Error Store::insert_revision(int number, int rev, RevisionKind kind, int based_on, bool conflict,
+                             const std::string* text, const std::string& source,
+                             const std::string& what) {
+    Error e;
+    sql::Use u(prepare(kInsertRevision, e));
+    if (e) return e;
+    u.bind(1, number)
+        .bind(2, rev)
+        .bind(3, kind_name(kind))
+        .bind(4, based_on)
+        .bind(5, conflict ? 1 : 0);
+    if (text)
+        u.blob(6, *text).bind(7, int64_t(text->size())).bind(8, count_lines(*text));
+    else
+        u.null(6).bind(7, int64_t(0)).bind(8, int64_t(0));
+    u.bind(9, user_).bind(10, now_ms()).bind(11, source);
+    int rc = u.step();
+    return rc == SQLITE_DONE ? Error{} : fail(rc, what);
+}
+
+// Runs a one-row statement on the programs table: bindings ?1 number, then `more`.
+template <class... T>
+Error Store::update_program(const char* sql, const std::string& what, int number,
+                            const T&... more) {
+    Error e;
+    sql::Use u(prepare(sql, e));
+    if (e) return e;
+    u.bind(1, number);
+    int i = 2;
+    (bind_value(u, i++, more), ...);
+    int rc = u.step();
+    return rc == SQLITE_DONE ? Error{} : fail(rc, what);
+}
+
+// Inside a write transaction: one program saved (see store.hpp for the rules).
+Result<SaveResult> Store::save_one(const Piece& p, int based_on, RevisionKind kind) {
+    Result<SaveResult> r;
+    SaveResult& out = r.value;
+    out.number = p.number;
+    if (p.number < 0) {
+        r.error = {Fault::bad_data,
+                   path_ + ": program number " + std::to_string(p.number) + " is negative"};
+        return r;
+    }
+    Header h;
+    if ((r.error = parse_program(p.text, pct(p.number), h))) return r;
+    if (h.number >= 0 && h.number != p.number) {
+        r.error = {Fault::bad_data, pct(p.number) + ": the text's % line says " + pct(h.number) +
+                                        "; a program is stored under its own number"};
+        return r;
+    }
+    const std::string what = "cannot save " + pct(p.number);
+    ProgramRow row;
+    if ((r.error = read_row(p.number, row, what))) return r;
+    bool same = false;
+    if (row.found && !row.deleted && row.size == int64_t(p.text.size())) {
+        Error e;
+        sql::Use u(prepare(kSelectText, e));
+        if ((r.error = e)) return r;
+        int rc = u.bind(1, p.number).bind(2, row.head).step();
+        if (rc != SQLITE_ROW) {
+            r.error = fail(rc == SQLITE_DONE ? SQLITE_CORRUPT : rc, what);
+            return r;
+        }
+        same = u.view(0) == std::string_view(p.text);
+    }
+    const bool on_head = based_on == kHead || based_on == row.head;
+    if (same) {
+        out.status = SaveStatus::unchanged;
+        out.revision = out.current = row.head;
+        out.current_by = row.modified_by;
+        if (row.conflict && on_head) r.error = update_program(kClearConflict, what, p.number);
+        return r;
+    }
+    const bool clean = !row.found || on_head || (row.deleted && based_on == kNew);
+    const int rev = row.found ? row.last + 1 : 1;
+    const int base = based_on == kHead ? row.head : std::max(based_on, 0);
+    if ((r.error = insert_revision(p.number, rev, kind, base, !clean, &p.text, p.source, what)))
+        return r;
+    out.revision = rev;
+    if (!clean) {
+        out.status = SaveStatus::conflict;
+        out.current = row.head;
+        out.current_by = row.modified_by;
+        out.deleted = row.deleted;
+        r.error = update_program(kUpdateConflict, what, p.number, rev);
+        return r;
+    }
+    const std::optional<int64_t> index =
+        h.index >= 0 ? std::optional<int64_t>(h.index) : std::nullopt;
+    r.error =
+        update_program(row.found ? kUpdateHead : kInsertProgram, what, p.number, index, h.title,
+                       rev, int64_t(p.text.size()), count_lines(p.text), now_ms(), user_);
+    out.status = (!row.found || row.deleted) ? SaveStatus::created : SaveStatus::saved;
+    out.current = rev;
+    out.current_by = user_;
+    return r;
+}
+
+Result<SaveResult> Store::save(int number, std::string_view text, int based_on,
+                               std::string_view source) {
+    Result<SaveResult> r;
+    if ((r.error = begin_write())) return r;
+    r = save_one(Piece{number, std::string(text), std::string(source)}, based_on,
+                 RevisionKind::save);
+    if (r.error) {
+        rollback();
+        return r;
+    }
+    r.error = commit();
+    return r;
+}
+
+Result<std::vector<SaveResult>> Store::save_all(const std::vector<Piece>& pieces) {
+    Result<std::vector<SaveResult>> r;
+    if ((r.error = begin_write())) return r;
+    r.value.reserve(pieces.size());
+    for (const Piece& p : pieces) {
+        Result<SaveResult> one = save_one(p, kHead, RevisionKind::import);
+        if (one.error) {
+            rollback();
+            r.value.clear();
+            r.error = one.error;
+            return r;
+        }
+        r.value.push_back(one.value);
+    }
+    r.error = commit();
+    if (r.error) r.value.clear();
+    return r;
+}
+
+Result<SaveResult> Store::remove(int number, int based_on, std::string_view source) {
+    Result<SaveResult> r;
+    r.value.number = number;
+    const std::string what = "cannot delete " + pct(number);
+    if ((r.error = begin_write())) return r;
+    ProgramRow row;
+    Error e = read_row(number, row, what);
+    if (!e && (!row.found || row.deleted))
+        e = {Fault::not_found, path_ + ": no program " + pct(number) + " in the store"};
+    if (!e && based_on != kHead && based_on != row.head) {
+        // Deleting what someone changed since it was loaded: refused, nothing lost.
+        rollback();
+        r.value.status = SaveStatus::conflict;
+        r.value.current = row.head;
+        r.value.current_by = row.modified_by;
+        return r;
+    }
+    const int rev = row.last + 1;
+    if (!e)
+        e = insert_revision(number, rev, RevisionKind::remove, row.head, false, nullptr,
+                            std::string(source), what);
+    if (!e) e = update_program(kDelete, what, number, rev, now_ms(), user_);
+    if (e) {
+        rollback();
+        r.error = e;
+        return r;
+    }
+    r.value.status = SaveStatus::saved;
+    r.value.revision = r.value.current = rev;
+    r.value.current_by = user_;
+    r.value.deleted = true;
+    r.error = commit();
+    return r;
+}
+
+Result<SaveResult> Store::restore(int number, int revision, std::string_view source) {
+    Result<SaveResult> r;
+    r.value.number = number;
+    const std::string what = "cannot restore " + pct(number);
+    if ((r.error = begin_write())) return r;
+    Error e;
+    std::string text;
+    bool found = false, deletion = false;
+    {
+        sql::Use u(prepare(kSelectText, e));
+        if (!e) {
+            int rc = u.bind(1, number).bind(2, revision).step();
+            if (rc == SQLITE_ROW) {
+                found = true;
+                deletion = u.is_null(0);
+                text = u.str(0);
+            } else if (rc != SQLITE_DONE) {
+                e = fail(rc, what);
+            }
+        }
+    }
+    if (!e && !found)
+        e = {Fault::not_found,
+             path_ + ": no revision " + std::to_string(revision) + " of " + pct(number)};
+    if (!e && deletion)
+        e = {Fault::bad_data, path_ + ": revision " + std::to_string(revision) + " of " +
+                                  pct(number) + " is its deletion; restore a revision before it"};
+    if (e) {
+        rollback();
+        r.error = e;
+        return r;
+    }
+    std::string src = source.empty() ? "restore r" + std::to_string(revision) : std::string(source);
+    r = save_one(Piece{number, std::move(text), std::move(src)}, kHead, RevisionKind::restore);
+    if (r.error) {
+        rollback();
+        return r;
+    }
+    r.error = commit();
+    return r;
+}
+
+Result<std::vector<ProgramInfo>> Store::list() {
+    Result<std::vector<ProgramInfo>> r;
+    static const std::string sql =
+        std::string("SELECT ") + kInfoColumns + " FROM programs WHERE deleted = 0 ORDER BY number";
+    Error e;
+    sql::Use u(prepare(sql.c_str(), e));
+    if ((r.error = e)) return r;
+    int rc;
+    while ((rc = u.step()) == SQLITE_ROW) r.value.push_back(info_of(u));
+    if (rc != SQLITE_DONE) {
+        r.value.clear();
+        r.error = fail(rc, "cannot list the programs");
+    }
+    return r;
+}
+
+Result<Program> Store::read(int number, int revision) {
+    Result<Program> r;
+    static const std::string info_sql =
+        std::string("SELECT ") + kInfoColumns + " FROM programs WHERE number = ?1";
+    const std::string what = "cannot read " + pct(number);
+    // Two statements, one snapshot.
+    if (int rc = sqlite3_exec(db_, "BEGIN", nullptr, nullptr, nullptr); rc != SQLITE_OK) {
+        r.error = fail(rc, what);
+        return r;
+    }
+    Error e;
+    bool found = false;
+    {
+        sql::Use u(prepare(info_sql.c_str(), e));
+        if (!e) {
+            int rc = u.bind(1, number).step();
+            if (rc == SQLITE_ROW) {
+                found = true;
+                r.value.info = info_of(u);
+            } else if (rc != SQLITE_DONE) {
+                e = fail(rc, what);
+            }
+        }
+    }
+    if (!e && !found)
+        e = {Fault::not_found, path_ + ": no program " + pct(number) + " in the store"};
+    if (!e && revision == 0 && r.value.info.deleted)
+        e = {Fault::not_found, path_ + ": " + pct(number) + " was deleted (revision " +
+                                   std::to_string(r.value.info.revision) +
+                                   "); its history keeps the earlier revisions"};
+    const int rev = revision == 0 ? r.value.info.revision : revision;
+    if (!e) {
+        sql::Use u(prepare(kSelectText, e));
+        if (!e) {
+            int rc = u.bind(1, number).bind(2, rev).step();
+            if (rc == SQLITE_ROW && !u.is_null(0)) {
+                r.value.text = u.str(0);
+                r.value.revision = rev;
+            } else if (rc == SQLITE_ROW) {
+                e = {Fault::not_found, path_ + ": revision " + std::to_string(rev) + " of " +
+                                           pct(number) + " is its deletion"};
+            } else if (rc == SQLITE_DONE) {
+                e = {Fault::not_found,
+                     path_ + ": no revision " + std::to_string(rev) + " of " + pct(number)};
+            } else {
+                e = fail(rc, what);
+            }
+        }
+    }
+    rollback();  // a read: nothing to keep
+    if (e) r = Result<Program>{{}, e};
+    return r;
+}
+
+Error Store::each_program(const std::function<void(int, std::string_view)>& f) {
+    Error e;
+    sql::Use u(
+        prepare("SELECT p.number, r.text FROM programs p JOIN revisions r "
+                "ON r.program = p.number AND r.rev = p.head WHERE p.deleted = 0 ORDER BY p.number",
+                e));
+    if (e) return e;
+    int rc;
+    while ((rc = u.step()) == SQLITE_ROW) f(u.i32(0), u.view(1));
+    return rc == SQLITE_DONE ? Error{} : fail(rc, "cannot read the programs");
+}
+
+Result<std::vector<RevisionInfo>> Store::history(int number) {
+    Result<std::vector<RevisionInfo>> r;
+    constexpr const char* kHistory =
+        "SELECT rev, kind, based_on, conflict, at_ms, who, source, size, lines FROM revisions "
+        "WHERE program = ?1 ORDER BY rev";
+    Error e;
+    sql::Use u(prepare(kHistory, e));
+    if ((r.error = e)) return r;
+    u.bind(1, number);
+    int rc;
+    while ((rc = u.step()) == SQLITE_ROW) {
+        RevisionInfo i;
+        i.revision = u.i32(0);
+        i.kind = kind_of(u.view(1));
+        i.based_on = u.i32(2);
+        i.conflict = u.i32(3) != 0;
+        i.at_ms = u.i64(4);
+        i.who = u.str(5);
+        i.source = u.str(6);
+        i.size = u.i64(7);
+        i.lines = u.i64(8);
+        r.value.push_back(std::move(i));
+    }
+    if (rc != SQLITE_DONE) {
+        r.value.clear();
+        r.error = fail(rc, "cannot read the history of " + pct(number));
+    } else if (r.value.empty()) {
+        r.error = {Fault::not_found, path_ + ": no program " + pct(number) + " in the store"};
+    }
+    return r;
+}
+
+}  // namespace pupitre::store

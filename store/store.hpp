@@ -1,0 +1,248 @@
+// The program store (DESIGN §4): one SQLite file holding the part programs with
+// every revision, the tool correctors and origins of each machine with an audit
+// of their changes, the machine profiles, settings and the IMD history. Only
+// store/ includes sqlite3.h; this header is what the rest of pupitre sees.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+struct sqlite3;
+struct sqlite3_stmt;
+
+namespace pupitre::store {
+
+inline constexpr uint32_t kApplicationId = 0x4E554D31;  // "NUM1" in PRAGMA application_id
+inline constexpr int kSchemaVersion = 1;                // PRAGMA user_version we write
+
+// What went wrong, as the exit code the command line gives (sysexits).
+enum class Fault {
+    none,
+    cannot_create,  // 73: the store or its directory cannot be created or written
+    io,             // 74: I/O error, disk full, locked longer than the busy timeout
+    bad_data,   // 65: not a database, not ours, newer schema, truncated or corrupt; a refused text
+    not_found,  // 66: no such program or revision
+};
+int exit_code(Fault f);
+
+// Errors are values (STYLE.md). The message names the file and says what to do.
+struct Error {
+    Fault fault = Fault::none;
+    std::string message;
+    explicit operator bool() const { return fault != Fault::none; }
+};
+
+template <class T>
+struct Result {
+    T value{};
+    Error error;
+    bool ok() const { return !error; }
+};
+
+struct Options {
+    bool create = true;           // create (and seed) the file when it does not exist
+    bool seed = true;             // seed machine profiles and demo programs at creation
+    bool create_parents = false;  // mkdir -p the directory (the default store only)
+    int busy_timeout_ms = 3000;   // how long to wait for another writer
+    long max_page_count = 0;      // > 0: cap the file at this many pages (tests: disk full)
+    std::string user;             // who is written in revisions and audit rows; "" = the OS user
+};
+
+// The default store: $XDG_DATA_HOME/pupitre/pupitre.db, else ~/.local/share/pupitre/pupitre.db.
+// Empty when neither XDG_DATA_HOME nor HOME (nor the password entry) gives a directory.
+std::string default_path();
+// The OS user: $USER, else the password entry of the real uid, else "uid N".
+std::string os_user();
+
+// ---- programs ----
+
+// based_on values for save(): the revision the caller loaded, or one of these.
+inline constexpr int kNew = 0;    // the caller saw no program under this number
+inline constexpr int kHead = -1;  // whatever is current (import, restore): never a conflict
+
+struct ProgramInfo {
+    int number = 0;
+    int index = -1;     // %number.index, -1 when none
+    std::string title;  // the header comment
+    int revision = 0;   // the current revision
+    int conflict = 0;   // a revision kept aside by a conflicting save, 0 when none
+    bool deleted = false;
+    int64_t size = 0;  // bytes
+    int64_t lines = 0;
+    int64_t modified_ms = 0;  // Unix time in milliseconds
+    std::string modified_by;
+};
+
+struct Program {
+    ProgramInfo info;
+    int revision = 0;  // the revision whose text this is
+    std::string text;  // exactly as imported or saved
+};
+
+enum class RevisionKind { import, save, restore, remove, seed };
+std::string_view kind_name(RevisionKind k);
+
+struct RevisionInfo {
+    int revision = 0;
+    RevisionKind kind = RevisionKind::save;
+    int based_on = 0;       // the revision the writer had loaded (0: none)
+    bool conflict = false;  // kept aside: it was based on an older revision than the current one
+    int64_t at_ms = 0;
+    std::string who;
+    std::string source;  // "import part.iso", "restore r3", "page EDIT"…
+    int64_t size = 0;    // bytes (0 for a deletion)
+    int64_t lines = 0;
+};
+
+enum class SaveStatus { created, saved, unchanged, conflict };
+std::string_view status_name(SaveStatus s);
+
+struct SaveResult {
+    int number = 0;
+    SaveStatus status = SaveStatus::saved;
+    int revision = 0;        // the revision written (for unchanged: the current one)
+    int current = 0;         // the current revision afterwards
+    std::string current_by;  // who wrote the current revision (to name in a conflict)
+    bool deleted = false;    // the program is deleted afterwards (a conflict with a deletion)
+};
+
+// One program ready to be stored: its number and its exact text.
+struct Piece {
+    int number = 0;
+    std::string text;
+    std::string source;  // "import part.iso", shown in the history
+};
+
+// ---- machine values: correctors and origins ----
+
+// Values are named as --set names them (DESIGN §2.1): "D3.X", "D12.DL", "PREF.Z",
+// "DEC1.X", "DEC3.B", and held in the internal units of the E parameters: µm
+// (lathe X gauges and origins as radii, DX a diameter), 0.0001° for rotary axes,
+// the orientation code for C.
+struct Change {
+    std::string name;
+    std::optional<int64_t> old_value;  // nullopt: not stored before (profile default)
+    int64_t new_value = 0;
+};
+
+struct AuditRow {
+    int64_t id = 0;
+    int64_t at_ms = 0;
+    std::string who;
+    std::string machine;
+    std::string name;
+    std::optional<int64_t> old_value;
+    std::optional<int64_t> new_value;
+    std::string source;  // "page CORR", "program %555 (tools.iso)"
+};
+
+struct ImdEntry {
+    int64_t id = 0;
+    int64_t at_ms = 0;
+    std::string who;
+    std::string machine;
+    std::string block;
+};
+
+// One connection to a store file. Not shared between threads: a thread or a
+// process opens its own; SQLite serialises the writers (WAL, BEGIN IMMEDIATE).
+class Store {
+public:
+    // Opens (and on first use creates and seeds) the store at `path`. Never
+    // modifies a file that is not a pupitre store, a store of a newer schema, or
+    // a damaged one: those give bad_data.
+    static Result<std::unique_ptr<Store>> open(const std::string& path, const Options& o = {});
+    ~Store();
+    Store(const Store&) = delete;
+    Store& operator=(const Store&) = delete;
+
+    const std::string& path() const { return path_; }
+    const std::string& user() const { return user_; }
+    bool created() const { return created_; }  // this open created the file
+
+    // Programs. Each call is one transaction.
+    Result<std::vector<ProgramInfo>> list();
+    // The current text (revision 0) or a given revision of a program.
+    Result<Program> read(int number, int revision = 0);
+    // Saves `text` as program `number`. A text that differs from the current one
+    // and is based on an older revision than the current one is a conflict: it
+    // is kept as a revision flagged "conflict", the current revision stays, and
+    // the program is marked until a save based on the current revision or a
+    // restore resolves it. A text equal to the current one is "unchanged".
+    Result<SaveResult> save(int number, std::string_view text, int based_on,
+                            std::string_view source);
+    // Saves several programs in one transaction (import): all or none.
+    Result<std::vector<SaveResult>> save_all(const std::vector<Piece>& pieces);
+    // Deletes a program: a deletion revision; the history stays and restore brings it back.
+    Result<SaveResult> remove(int number, int based_on = kHead, std::string_view source = "rm");
+    Result<std::vector<RevisionInfo>> history(int number);
+    // Calls f(number, text) for the current text of every program, in number
+    // order, from one snapshot (program memory for a run).
+    Error each_program(const std::function<void(int, std::string_view)>& f);
+    // Makes the text of an earlier revision current again, as a new revision.
+    Result<SaveResult> restore(int number, int revision, std::string_view source = "");
+
+    // Machine profiles (the .machine text).
+    Result<std::vector<std::string>> machines();
+    Result<std::string> machine_profile(std::string_view name);
+    Error put_machine(std::string_view name, std::string_view profile);
+
+    // Correctors and origins of a machine (only the stored ones).
+    Result<std::map<std::string, int64_t>> values(std::string_view machine);
+    // Writes values in one transaction with one audit row per real change;
+    // returns the changes made (unchanged values are skipped). The machine is
+    // added with `profile` when the store does not know it yet.
+    Result<std::vector<Change>> set_values(std::string_view machine,
+                                           const std::vector<std::pair<std::string, int64_t>>& v,
+                                           std::string_view source, std::string_view profile = "");
+    Result<std::vector<AuditRow>> audit(std::string_view machine = "", int limit = 0);
+
+    // Settings (key/value text) and the IMD history.
+    Result<std::optional<std::string>> setting(std::string_view key);
+    Error set_setting(std::string_view key, std::string_view value);
+    Error add_imd(std::string_view machine, std::string_view block);
+    Result<std::vector<ImdEntry>> imd_history(std::string_view machine, int limit = 100);
+
+    // PRAGMA data_version: it changes when another connection (another console)
+    // commits, not on this one's own writes. Polled to follow other consoles.
+    Result<int64_t> data_version();
+
+    // PRAGMA integrity_check: "ok" or the problems found.
+    Result<std::string> integrity_check();
+
+private:
+    Store() = default;
+    Error fail(int rc, std::string_view what);
+    Error exec(const char* sql);
+    sqlite3_stmt* prepare(const char* sql, Error& e);
+    Error begin_write();
+    Error commit();
+    void rollback();
+    Error create_file();
+    Error validate_and_migrate(bool& fresh);
+    Error seed();
+    struct ProgramRow;
+    Error read_row(int number, ProgramRow& row, const std::string& what);
+    Error insert_revision(int number, int rev, RevisionKind kind, int based_on, bool conflict,
+                          const std::string* text, const std::string& source,
+                          const std::string& what);
+    template <class... T>
+    Error update_program(const char* sql, const std::string& what, int number, const T&... more);
+    Result<SaveResult> save_one(const Piece& p, int based_on, RevisionKind kind);
+    int64_t now_ms() const;
+
+    sqlite3* db_ = nullptr;
+    std::string path_;
+    std::string user_;
+    bool created_ = false;
+    Options opt_;
+    std::map<const char*, sqlite3_stmt*> stmts_;  // prepared once, keyed by the SQL literal
+};
+
+}  // namespace pupitre::store

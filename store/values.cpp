@@ -1,0 +1,345 @@
+// Machine values in the store: profiles, tool correctors and origins with an
+// audit row per change, settings, and the IMD history.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <algorithm>
+#include <charconv>
+
+#include "store/sql.hpp"
+#include "store/store.hpp"
+
+namespace pupitre::store {
+
+namespace {
+
+// "D12.DX" -> corrector 12, field DX; "PREF.Z" -> origin PREF, axis Z.
+struct Name {
+    bool corrector = false;
+    int d = 0;
+    std::string field;  // corrector field, or origin kind
+    std::string axis;
+};
+
+bool parse_name(std::string_view s, Name& n) {
+    size_t dot = s.find('.');
+    if (dot == std::string_view::npos) return false;
+    std::string_view head = s.substr(0, dot), tail = s.substr(dot + 1);
+    if (head == "PREF" || head == "DEC1" || head == "DEC3") {
+        if (tail.size() != 1 ||
+            std::string_view("XYZUVWABC").find(tail[0]) == std::string_view::npos)
+            return false;
+        n.corrector = false;
+        n.field = std::string(head);
+        n.axis = std::string(tail);
+        return true;
+    }
+    if (head.size() < 2 || head[0] != 'D') return false;
+    auto [p, ec] = std::from_chars(head.data() + 1, head.data() + head.size(), n.d);
+    if (ec != std::errc() || p != head.data() + head.size() || n.d < 1 || n.d > 255) return false;
+    static constexpr std::string_view kFields[] = {"X",  "Z", "R", "C",  "DX",
+                                                   "DZ", "L", "A", "DL", "DR"};
+    if (std::find(std::begin(kFields), std::end(kFields), tail) == std::end(kFields)) return false;
+    n.corrector = true;
+    n.field = std::string(tail);
+    return true;
+}
+
+constexpr const char* kMachineExists = "SELECT 1 FROM machines WHERE name = ?1";
+constexpr const char* kInsertMachine =
+    "INSERT INTO machines (name, profile, builtin, updated_ms) VALUES (?1, ?2, ?3, ?4)";
+
+}  // namespace
+
+Error Store::put_machine(std::string_view name, std::string_view profile) {
+    if (Error e = begin_write()) return e;
+    Error e;
+    {
+        sql::Use u(prepare(
+            "INSERT INTO machines (name, profile, builtin, updated_ms) VALUES (?1, ?2, 0, ?3) "
+            "ON CONFLICT (name) DO UPDATE SET profile = ?2, updated_ms = ?3",
+            e));
+        if (!e) {
+            u.bind(1, name).bind(2, profile).bind(3, now_ms());
+            if (int rc = u.step(); rc != SQLITE_DONE)
+                e = fail(rc, "cannot store the machine profile");
+        }
+    }
+    if (e) {
+        rollback();
+        return e;
+    }
+    return commit();
+}
+
+Result<std::vector<std::string>> Store::machines() {
+    Result<std::vector<std::string>> r;
+    Error e;
+    sql::Use u(prepare("SELECT name FROM machines ORDER BY name", e));
+    if ((r.error = e)) return r;
+    int rc;
+    while ((rc = u.step()) == SQLITE_ROW) r.value.push_back(u.str(0));
+    if (rc != SQLITE_DONE) r.error = fail(rc, "cannot list the machines");
+    return r;
+}
+
+Result<std::string> Store::machine_profile(std::string_view name) {
+    Result<std::string> r;
+    Error e;
+    sql::Use u(prepare("SELECT profile FROM machines WHERE name = ?1", e));
+    if ((r.error = e)) return r;
+    int rc = u.bind(1, name).step();
+    if (rc == SQLITE_ROW)
+        r.value = u.str(0);
+    else if (rc == SQLITE_DONE)
+        r.error = {Fault::not_found, path_ + ": no machine " + std::string(name)};
+    else
+        r.error = fail(rc, "cannot read the machine profile");
+    return r;
+}
+
+Result<std::map<std::string, int64_t>> Store::values(std::string_view machine) {
+    Result<std::map<std::string, int64_t>> r;
+    Error e;
+    sql::Use u(
+        prepare("SELECT 'D' || d || '.' || field, value FROM correctors WHERE machine = ?1 "
+                "UNION ALL SELECT kind || '.' || axis, value FROM origins WHERE machine = ?1",
+                e));
+    if ((r.error = e)) return r;
+    u.bind(1, machine);
+    int rc;
+    while ((rc = u.step()) == SQLITE_ROW) r.value[u.str(0)] = u.i64(1);
+    if (rc != SQLITE_DONE) {
+        r.value.clear();
+        r.error = fail(rc, "cannot read the correctors and origins");
+    }
+    return r;
+}
+
+Result<std::vector<Change>> Store::set_values(std::string_view machine,
+                                              const std::vector<std::pair<std::string, int64_t>>& v,
+                                              std::string_view source, std::string_view profile) {
+    Result<std::vector<Change>> r;
+    std::vector<Name> names(v.size());
+    for (size_t i = 0; i < v.size(); ++i)
+        if (!parse_name(v[i].first, names[i])) {
+            r.error = {Fault::bad_data, "unknown corrector or origin '" + v[i].first +
+                                            "' (D1.X … D255.DR, PREF.X, DEC1.Z, DEC3.B…)"};
+            return r;
+        }
+    const std::string what = "cannot store the correctors and origins of " + std::string(machine);
+    if ((r.error = begin_write())) return r;
+    auto abort = [&](Error e) {
+        rollback();
+        r.value.clear();
+        r.error = std::move(e);
+        return r;
+    };
+    Error e;
+    bool known = false;
+    {
+        sql::Use u(prepare(kMachineExists, e));
+        if (e) return abort(e);
+        int rc = u.bind(1, machine).step();
+        if (rc == SQLITE_ROW)
+            known = true;
+        else if (rc != SQLITE_DONE)
+            return abort(fail(rc, what));
+    }
+    const int64_t now = now_ms();
+    if (!known) {
+        sql::Use u(prepare(kInsertMachine, e));
+        if (e) return abort(e);
+        u.bind(1, machine).bind(2, profile).bind(3, 0).bind(4, now);
+        if (int rc = u.step(); rc != SQLITE_DONE) return abort(fail(rc, what));
+    }
+    for (size_t i = 0; i < v.size(); ++i) {
+        const Name& n = names[i];
+        Change c{v[i].first, std::nullopt, v[i].second};
+        {
+            sql::Use u(prepare(
+                n.corrector
+                    ? "SELECT value FROM correctors WHERE machine = ?1 AND d = ?2 AND field = ?3"
+                    : "SELECT value FROM origins WHERE machine = ?1 AND kind = ?3 AND axis = ?4",
+                e));
+            if (e) return abort(e);
+            u.bind(1, machine).bind(3, n.field);
+            if (n.corrector)
+                u.bind(2, n.d);
+            else
+                u.bind(4, n.axis);
+            int rc = u.step();
+            if (rc == SQLITE_ROW)
+                c.old_value = u.i64(0);
+            else if (rc != SQLITE_DONE)
+                return abort(fail(rc, what));
+        }
+        if (c.old_value && *c.old_value == c.new_value) continue;
+        {
+            sql::Use u(prepare(
+                n.corrector
+                    ? "INSERT INTO correctors (machine, d, field, value) VALUES (?1, ?2, ?3, ?5) "
+                      "ON CONFLICT DO UPDATE SET value = ?5"
+                    : "INSERT INTO origins (machine, kind, axis, value) VALUES (?1, ?3, ?4, ?5) "
+                      "ON CONFLICT DO UPDATE SET value = ?5",
+                e));
+            if (e) return abort(e);
+            u.bind(1, machine).bind(3, n.field).bind(5, c.new_value);
+            if (n.corrector)
+                u.bind(2, n.d);
+            else
+                u.bind(4, n.axis);
+            if (int rc = u.step(); rc != SQLITE_DONE) return abort(fail(rc, what));
+        }
+        {
+            sql::Use u(
+                prepare("INSERT INTO audit (at_ms, who, machine, name, old, new, source) "
+                        "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7)",
+                        e));
+            if (e) return abort(e);
+            u.bind(1, now).bind(2, user_).bind(3, machine).bind(4, c.name);
+            if (c.old_value)
+                u.bind(5, *c.old_value);
+            else
+                u.null(5);
+            u.bind(6, c.new_value).bind(7, source);
+            if (int rc = u.step(); rc != SQLITE_DONE) return abort(fail(rc, what));
+        }
+        r.value.push_back(std::move(c));
+    }
+    if ((e = commit())) {
+        r.value.clear();
+        r.error = e;
+    }
+    return r;
+}
+
+Result<std::vector<AuditRow>> Store::audit(std::string_view machine, int limit) {
+    Result<std::vector<AuditRow>> r;
+    Error e;
+    sql::Use u(
+        prepare("SELECT id, at_ms, who, machine, name, old, new, source FROM audit "
+                "WHERE ?1 = '' OR machine = ?1 ORDER BY id DESC LIMIT ?2",
+                e));
+    if ((r.error = e)) return r;
+    u.bind(1, machine).bind(2, limit > 0 ? int64_t(limit) : int64_t(-1));
+    int rc;
+    while ((rc = u.step()) == SQLITE_ROW) {
+        AuditRow a;
+        a.id = u.i64(0);
+        a.at_ms = u.i64(1);
+        a.who = u.str(2);
+        a.machine = u.str(3);
+        a.name = u.str(4);
+        if (!u.is_null(5)) a.old_value = u.i64(5);
+        if (!u.is_null(6)) a.new_value = u.i64(6);
+        a.source = u.str(7);
+        r.value.push_back(std::move(a));
+    }
+    if (rc != SQLITE_DONE) {
+        r.value.clear();
+        r.error = fail(rc, "cannot read the audit");
+    }
+    std::reverse(r.value.begin(), r.value.end());
+    return r;
+}
+
+Result<std::optional<std::string>> Store::setting(std::string_view key) {
+    Result<std::optional<std::string>> r;
+    Error e;
+    sql::Use u(prepare("SELECT value FROM settings WHERE key = ?1", e));
+    if ((r.error = e)) return r;
+    int rc = u.bind(1, key).step();
+    if (rc == SQLITE_ROW)
+        r.value = u.str(0);
+    else if (rc != SQLITE_DONE)
+        r.error = fail(rc, "cannot read the settings");
+    return r;
+}
+
+Result<int64_t> Store::data_version() {
+    Result<int64_t> r;
+    Error e;
+    sql::Use u(prepare("PRAGMA data_version", e));
+    if ((r.error = e)) return r;
+    int rc = u.step();
+    if (rc == SQLITE_ROW) r.value = u.i64(0);
+    else r.error = fail(rc, "cannot read the data version");
+    return r;
+}
+
+Error Store::set_setting(std::string_view key, std::string_view value) {
+    if (Error e = begin_write()) return e;
+    Error e;
+    {
+        sql::Use u(
+            prepare("INSERT INTO settings (key, value) VALUES (?1, ?2) "
+                    "ON CONFLICT (key) DO UPDATE SET value = ?2",
+                    e));
+        if (!e) {
+            if (int rc = u.bind(1, key).bind(2, value).step(); rc != SQLITE_DONE)
+                e = fail(rc, "cannot store the setting");
+        }
+    }
+    if (e) {
+        rollback();
+        return e;
+    }
+    return commit();
+}
+
+Error Store::add_imd(std::string_view machine, std::string_view block) {
+    if (Error e = begin_write()) return e;
+    Error e;
+    const int64_t now = now_ms();
+    {
+        sql::Use u(prepare(kMachineExists, e));
+        if (!e) {
+            int rc = u.bind(1, machine).step();
+            if (rc == SQLITE_DONE) {
+                sql::Use m(prepare(kInsertMachine, e));
+                if (!e) {
+                    m.bind(1, machine).bind(2, "").bind(3, 0).bind(4, now);
+                    if (int rc2 = m.step(); rc2 != SQLITE_DONE)
+                        e = fail(rc2, "cannot store the IMD block");
+                }
+            } else if (rc != SQLITE_ROW) {
+                e = fail(rc, "cannot store the IMD block");
+            }
+        }
+    }
+    if (!e) {
+        sql::Use u(prepare(
+            "INSERT INTO imd_history (at_ms, who, machine, block) VALUES (?1, ?2, ?3, ?4)", e));
+        if (!e) {
+            if (int rc = u.bind(1, now).bind(2, user_).bind(3, machine).bind(4, block).step();
+                rc != SQLITE_DONE)
+                e = fail(rc, "cannot store the IMD block");
+        }
+    }
+    if (e) {
+        rollback();
+        return e;
+    }
+    return commit();
+}
+
+Result<std::vector<ImdEntry>> Store::imd_history(std::string_view machine, int limit) {
+    Result<std::vector<ImdEntry>> r;
+    Error e;
+    sql::Use u(
+        prepare("SELECT id, at_ms, who, machine, block FROM imd_history WHERE machine = ?1 "
+                "ORDER BY id DESC LIMIT ?2",
+                e));
+    if ((r.error = e)) return r;
+    u.bind(1, machine).bind(2, limit > 0 ? int64_t(limit) : int64_t(-1));
+    int rc;
+    while ((rc = u.step()) == SQLITE_ROW)
+        r.value.push_back(ImdEntry{u.i64(0), u.i64(1), u.str(2), u.str(3), u.str(4)});
+    if (rc != SQLITE_DONE) {
+        r.value.clear();
+        r.error = fail(rc, "cannot read the IMD history");
+    }
+    std::reverse(r.value.begin(), r.value.end());
+    return r;
+}
+
+}  // namespace pupitre::store
