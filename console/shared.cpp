@@ -115,8 +115,9 @@ void Session::sync_from_store() {
 void Session::take_lease(int number) {
     lease_wait_ = kLeaseRefresh;
     std::string mine = store_->user() + " " + host() + " " + std::to_string(getpid()) + " " + std::to_string(now_ms());
+    // This connection's own commits leave its data_version as it is: the
+    // next poll still sees every other console's commit.
     store_->set_setting(lease_key(number), mine);
-    remember_store();  // our own write is no news
     leased_ = number;
 }
 

@@ -8,6 +8,8 @@
 #include <cstdio>
 #include <random>
 
+#include <unistd.h>
+
 #include "tests/console/fixture.hpp"
 
 using namespace pupitre;
@@ -197,4 +199,29 @@ TEST(SettingProperty, ACommandDropsAPendingQuestion) {
     EXPECT_EQ(c.s->sim().interp().frames().pref[X], before);
     c.type("y");  // no question any more: not a confirmation
     EXPECT_EQ(c.s->sim().interp().frames().pref[X], before);
+}
+
+// Two consoles on one store (issue 12.9): a console's own writes (its edit
+// lease) must not hide the other's commits from its next poll, even when its
+// DIR page already listed the new revision.
+TEST(SettingProperty, AnOwnLeaseDoesNotHideTheOtherConsolesSave) {
+    std::string path = ::testing::TempDir() + "/two_" + std::to_string(::getpid()) + ".db";
+    std::remove(path.c_str());
+    auto sa = store::Store::open(path);
+    ASSERT_FALSE(sa.error) << sa.error.message;
+    Console a("lathe", {}, std::move(sa.value));
+    auto sb = store::Store::open(path);
+    ASSERT_FALSE(sb.error) << sb.error.message;
+    Console b("lathe", {}, std::move(sb.value));
+    a.type(":edit 300");
+    a.type("N1 (FROM A)");
+    a.type(":save");
+    ASSERT_NE(a.message().find("saved as revision"), std::string::npos) << a.message();
+    b.type(":page dir");  // lists r2 before any poll
+    b.type(":edit 301");  // takes a lease: a write of its own
+    b.s->tick(1.0);       // the poll
+    const ProgramText* p = b.s->memory().find(300);
+    ASSERT_NE(p, nullptr);
+    EXPECT_NE(program_text(*p).find("FROM A"), std::string::npos) << program_text(*p);
+    std::remove(path.c_str());
 }
