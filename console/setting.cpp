@@ -162,6 +162,10 @@ Effect Session::touch(int axis, double surface) {
 }
 
 Effect Session::touch_now(int axis, double surface) {
+    if (std::string w = at_rest(*sim_); !w.empty()) {  // again: a "y" may come late
+        say("touch-off: " + w, true);
+        return Effect::redraw;
+    }
     // The gauge of the active corrector is the one the touch-off assumes: it
     // applies now (not at the next move), so OP reads what was typed.
     sim_->interp().apply_gauges_now();
