@@ -135,12 +135,7 @@ Effect Session::on_key(const Key& k) {
 }
 
 Effect Session::dispatch_key(const Key& k) {
-    std::string pg(pages::page_word(page)), md;
-    Mode m = sim_->mode();
-    for (std::string_view w : {"auto", "seq", "dry", "test", "rns", "imd", "jog", "inc", "pom"}) {
-        Mode x;
-        if (parse_mode(w, x) && x == m) md = w;
-    }
+    std::string pg(pages::page_word(page)), md(mode_word(sim_->mode()));
     if (k.code != KeyCode::del) pending_delete = -1;
     for (const Binding* b : bindings.find(k, pg, md, m_.lathe ? "lathe" : "mill")) {
         const Action* a = find_action(b->action);
@@ -460,6 +455,52 @@ bool Session::shows_page(std::string_view arg, pages::PageId p) {
     return arg == pages::page_word(p);
 }
 
+// The soft keys (what F1-F10 do here, from the bindings) and the HELP
+// page's lines (every binding, every command).
+void Session::view_keys(pages::View& v) const {
+    std::string pg(pages::page_word(page)), md(mode_word(sim_->mode()));
+    for (int i = 1; i <= 10; ++i) {
+        Key k;
+        k.code = KeyCode(int(KeyCode::f1) + i - 1);
+        for (const Binding* b : bindings.find(k, pg, md, m_.lathe ? "lathe" : "mill")) {
+            const Action* a = find_action(b->action);
+            if (!a) continue;
+            v.softkeys.push_back(pages::SoftKey{"F" + std::to_string(i), soft_label(*a, b->arg),
+                                                a->name == "page" && shows_page(b->arg, page)});
+            break;
+        }
+    }
+    for (const Binding& b : bindings.list()) {
+        const Action* a = find_action(b.action);
+        if (a) v.help.push_back(pages::HelpLine{b.key_text, help_text(*a, b.arg), context_text(b.when)});
+    }
+    for (const Command& c : commands())
+        if (!c.usage.empty()) v.help.push_back(pages::HelpLine{std::string(c.usage), std::string(c.help), ""});
+}
+
+void Session::view_editor(pages::View& v) const {
+    if (!editor.is_open()) return;
+    v.edit_lines = &editor.lines();
+    v.edit_number = editor.number;
+    v.edit_revision = editor.revision;
+    v.edit_cursor = editor.cursor;
+    v.edit_mark = editor.mark;
+    v.edit_locked = editor.locked;
+    v.edit_error = editor.error_line;
+    v.edit_dirty = editor.dirty;
+    v.edit_modif = modif;
+    v.edit_modify = modify_pending;
+}
+
+// The word the bindings' contexts name a mode by ("auto", "jog"…).
+std::string_view Session::mode_word(Mode m) {
+    for (std::string_view w : {"auto", "seq", "dry", "test", "rns", "imd", "jog", "inc", "pom"}) {
+        Mode x;
+        if (parse_mode(w, x) && x == m) return w;
+    }
+    return {};
+}
+
 pages::View Session::view() const {
     pages::View v;
     v.sim = sim_.get();
@@ -481,48 +522,14 @@ pages::View Session::view() const {
     v.speed = speed == Speed::real ? "x1" : speed == Speed::x10 ? "x10" : "max";
     v.programs = dir_;
     v.dir_cursor = dir_cursor;
-    std::string pg(pages::page_word(page));
-    // Soft keys: what F1-F10 do here, from the bindings.
-    for (int i = 1; i <= 10; ++i) {
-        Key k;
-        k.code = KeyCode(int(KeyCode::f1) + i - 1);
-        std::string md;
-        for (std::string_view w : {"auto", "seq", "dry", "test", "rns", "imd", "jog", "inc", "pom"}) {
-            Mode x;
-            if (parse_mode(w, x) && x == m) md = w;
-        }
-        for (const Binding* b : bindings.find(k, pg, md, m_.lathe ? "lathe" : "mill")) {
-            const Action* a = find_action(b->action);
-            if (!a) continue;
-            v.softkeys.push_back(pages::SoftKey{"F" + std::to_string(i), soft_label(*a, b->arg),
-                                                a->name == "page" && shows_page(b->arg, page)});
-            break;
-        }
-    }
-    for (const Binding& b : bindings.list()) {
-        const Action* a = find_action(b.action);
-        if (a) v.help.push_back(pages::HelpLine{b.key_text, help_text(*a, b.arg), context_text(b.when)});
-    }
-    for (const Command& c : commands())
-        if (!c.usage.empty()) v.help.push_back(pages::HelpLine{std::string(c.usage), std::string(c.help), ""});
+    view_keys(v);
     if (store_) v.store_path = store_->path();
     v.corr_cursor = corr_cursor;
     v.pending = pending_origins();
     v.protect = protect;
     v.undo_depth = undo_.size();
     v.last_setting = last_setting_;
-    if (editor.is_open()) {
-        v.edit_lines = &editor.lines();
-        v.edit_number = editor.number;
-        v.edit_revision = editor.revision;
-        v.edit_cursor = editor.cursor;
-        v.edit_mark = editor.mark;
-        v.edit_locked = editor.locked;
-        v.edit_error = editor.error_line;
-        v.edit_dirty = editor.dirty;
-        v.edit_modif = modif;
-        v.edit_modify = modify_pending;
-    }
+    view_editor(v);
     v.graph = graph;
     v.graph.path = &path_;
     if (!graph_plane_chosen && !path_.empty()) v.graph.plane = path_.default_plane();

@@ -140,6 +140,9 @@ private:
     Effect route_text(const std::string& line);
     static bool for_line_editor(const Key& k);
     static bool shows_page(std::string_view arg, pages::PageId p);
+    static std::string_view mode_word(Mode m);
+    void view_keys(pages::View& v) const;
+    void view_editor(pages::View& v) const;
     Effect cancel_input();
     // The editor's recovery journal (console/recover.cpp).
     std::string journal_dir() const;
