@@ -48,6 +48,7 @@ crash)
     kill -SEGV "$pid"
     wait_for '^EXIT=139' 10
     wait_for 'crashed; the terminal is restored'
+    stty_after
     grep -Eq '(^| )icanon' "$work/stty" && grep -Eq '(^| )echo ' "$work/stty" ||
         fail "the terminal is not restored after SIGSEGV"
     ;;
@@ -135,6 +136,7 @@ quit)
     keys C-c
     wait_for '^EXIT=0' 10
     sleep 0.2
+    stty_after
     grep -Eq '(^| )icanon' "$work/stty" && grep -Eq '(^| )echo ' "$work/stty" ||
         fail "the terminal is not restored: $(cat "$work/stty")"
     next_server
@@ -149,6 +151,7 @@ signal)
     [ -n "$pid" ] || fail "no pupitre process"
     kill -TERM "$pid"
     wait_for '^EXIT=0' 10
+    stty_after
     grep -Eq '(^| )icanon' "$work/stty" || fail "the terminal is not restored after SIGTERM"
     ;;
 history)

@@ -34,6 +34,16 @@ wait_for() {
     fail "waited ${limit}s for /$re/"
 }
 keys() { T send-keys -t e2e "$@"; }
+# stty_after: waits until the pane wrote the terminal modes after the console
+# ended (the line runs `echo EXIT=...` first, then `stty -a`).
+stty_after() {
+    local i
+    for ((i = 0; i < 100; i++)); do
+        [ -s "$work/stty" ] && return 0
+        sleep 0.05
+    done
+    fail "the terminal modes were not written after the console ended"
+}
 # A second session gets a server of its own: a new one on the old socket can
 # race with the old one's exit ("server exited unexpectedly").
 next_server() {
@@ -43,6 +53,7 @@ next_server() {
 # cmd TEXT: a ':' command typed on the input line.
 cmd() { keys -l "$1"; keys Enter; sleep 0.1; }
 start() {
+    rm -f "$work/stty"  # this session's modes, not an earlier one's
     # After the console: its exit status and the terminal modes, to check that
     # the terminal was given back as it was.
     T -f /dev/null new-session -d -s e2e -x "${W:-80}" -y "${H:-24}" \
