@@ -48,7 +48,7 @@ int main(int argc, char** argv) {
             ->type_name("NAME=VALUE")
             ->allow_extra_args(false);
         sub->add_flag("--block-skip", ra.block_skip, "skip the blocks that start with '/'");
-        sub->add_option("--max-blocks", ra.max_blocks, "stop with error 1001 after this many blocks (default 20000000)");
+        sub->add_option("--max-blocks", ra.max_blocks, "stop with error 1001 after this many blocks, or twice as many moves (default 20000000)");
         sub->add_option("files", ra.files, "program files; the first program of the first file is run")
             ->required()
             ->check(CLI::ExistingFile);
@@ -69,7 +69,7 @@ int main(int argc, char** argv) {
         ->type_name("NAME=VALUE")
         ->allow_extra_args(false);
     plot->add_flag("--block-skip", pa.block_skip, "skip the blocks that start with '/'");
-    plot->add_option("--max-blocks", pa.max_blocks, "stop with error 1001 after this many blocks (default 20000000)");
+    plot->add_option("--max-blocks", pa.max_blocks, "stop with error 1001 after this many blocks, or twice as many moves (default 20000000)");
     plot->add_option("--svg", pa.svg, "the SVG file to write ('-': the standard output)")->type_name("OUT");
     plot->add_option("--png", pa.png, "the picture as a PNG, 1600 pixels wide")->type_name("OUT");
     plot->add_option("--pdf", pa.pdf, "the picture as a one-page PDF, for printing")->type_name("OUT");
