@@ -225,3 +225,22 @@ TEST(SettingProperty, AnOwnLeaseDoesNotHideTheOtherConsolesSave) {
     EXPECT_NE(program_text(*p).find("FROM A"), std::string::npos) << program_text(*p);
     std::remove(path.c_str());
 }
+
+// The y/n of a touch-off with D0 answered after Cycle Start (a key, so the
+// question stays): the touch-off checks again that the axes are at rest.
+TEST(SettingProperty, ALateYesDoesNotTouchOffWhileTheAxesMove) {
+    Console c;
+    c.type(":page pref");
+    c.type("Z 0");  // D0: asks first
+    ASSERT_FALSE(c.s->pending_confirm.empty());
+    c.type(":mode pom");  // drops the question (a command); ask again
+    c.type(":page pref");
+    c.type("Z 0");
+    ASSERT_FALSE(c.s->pending_confirm.empty());
+    c.named("F9");  // POM: the axes move
+    ASSERT_EQ(c.s->sim().state(), RunState::running);
+    double before = c.s->sim().interp().frames().pref[Z];
+    c.type("y");
+    EXPECT_NE(c.message().find("wait until the axes stop"), std::string::npos) << c.message();
+    EXPECT_EQ(c.s->sim().interp().frames().pref[Z], before);
+}
