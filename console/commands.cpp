@@ -74,6 +74,12 @@ int axis_word(std::string_view s) {
     return s.size() == 1 ? axis_of(char(std::toupper(static_cast<unsigned char>(s[0])))) : -1;
 }
 
+// "AXIS VALUE" as the last two words, from word `at` (:jog, :touch, :measure).
+bool axis_value(const CommandCall& c, size_t at, int& axis, double& v) {
+    axis = axis_word(c.arg(at));
+    return c.words.size() == at + 2 && axis >= 0 && number(c.words[at + 1], v);
+}
+
 Effect usage(Session& s, std::string_view u) {
     s.say(std::string("usage: ") + std::string(u), true);
     return Effect::redraw;
@@ -133,9 +139,8 @@ Effect raz(Session& s, const CommandCall&) {
 
 Effect jog(Session& s, const CommandCall& c) {
     double d;
-    int axis = axis_word(c.arg(1));
-    if (c.words.size() != 3 || axis < 0 || !number(c.words[2], d))
-        return usage(s, ":jog AXIS DIST, e.g. :jog X -10");
+    int axis;
+    if (!axis_value(c, 1, axis, d)) return usage(s, ":jog AXIS DIST, e.g. :jog X -10");
     std::string why;
     if (!s.sim().jog(axis, d, why)) s.say("JOG: " + why, true);
     return Effect::redraw;
@@ -197,19 +202,18 @@ Effect inc(Session& s, const CommandCall& c) {
 
 Effect touch(Session& s, const CommandCall& c) {
     double v;
-    int axis = axis_word(c.arg(1));
-    if (c.words.size() != 3 || axis < 0 || !number(c.words[2], v))
-        return usage(s, ":touch AXIS VALUE, e.g. :touch Z 0");
+    int axis;
+    if (!axis_value(c, 1, axis, v)) return usage(s, ":touch AXIS VALUE, e.g. :touch Z 0");
     return s.touch(axis, v);
 }
 
 Effect measure(Session& s, const CommandCall& c) {
     double v;
     long d = 0;
+    int axis;
     std::string_view dn = c.arg(1);
-    int axis = axis_word(c.arg(2));
-    bool ok = c.words.size() == 4 && dn.size() > 1 && (dn[0] == 'D' || dn[0] == 'd') &&
-              integer(dn.substr(1), d) && axis >= 0 && number(c.words[3], v);
+    bool ok = dn.size() > 1 && (dn[0] == 'D' || dn[0] == 'd') && integer(dn.substr(1), d) &&
+              axis_value(c, 2, axis, v);
     if (!ok) return usage(s, ":measure Dn AXIS VALUE, e.g. :measure D2 X 59.978");
     s.corr_cursor = int(d);
     return s.measure(int(d), axis, v);

@@ -327,17 +327,7 @@ Effect Session::route_text(const std::string& text) {
         else say(sim_->message());
         return Effect::redraw;
     }
-    if (sim_->mode() == Mode::inc) {
-        double d = 0;
-        auto [p, ec] = std::from_chars(t.data(), t.data() + t.size(), d);
-        if (ec == std::errc() && p == t.data() + t.size() && d > 0 && d <= 100) {
-            sim_->increment = d;
-            say("INC step " + pages::fmt_len(d) + " mm");
-        } else {
-            say("INC: type a step in mm (0.001 to 100)", true);
-        }
-        return Effect::redraw;
-    }
+    if (sim_->mode() == Mode::inc) return command("inc " + text);  // one rule for the step
     std::string_view w = t;
     if (!w.empty() && w.front() == '%') w.remove_prefix(1);
     if (to_long(w, n) && n >= 0) {

@@ -298,7 +298,6 @@ void Sim::raz() {
     diag_seen_ = 0;
     sp_ = SpindleEvent{};
     m7_ = m8_ = false;
-    corr_ = 0;  // RAZ: D0 as after M02, the tool T stays
     message_.clear();
     state_ = RunState::idle;
 }
@@ -481,7 +480,6 @@ bool Sim::begin_next() {
             break;
         case Ev::end:
             state_ = RunState::ended;
-            if (e.a == 2) corr_ = 0;  // M02: D0, the tool T stays (turning.md §8.3)
             if (e.a != 2 && mode_ == Mode::imd)
                 message_ = "IMD done (" + std::to_string(blocks_) + (blocks_ == 1 ? " block" : " blocks") +
                            "): type the next block, or F8 for another mode";

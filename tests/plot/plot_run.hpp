@@ -2,6 +2,10 @@
 // `pupitre plot` does it (console/cli_plot.cpp).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cstdio>
 #include <memory>
 #include <string>
 #include <utility>
@@ -40,5 +44,18 @@ struct PlotRun {
         for (const Diag& d : in->diags()) path->add_error(d);
     }
 };
+
+// `text` written to a file of its own (CTest runs the tests of one binary in
+// parallel processes), then run as above; `prefix` names the test binary.
+inline PlotRun run_text(const std::string& prefix, const std::string& machine, const std::string& text,
+                        const std::vector<std::pair<std::string, double>>& sets = {}) {
+    std::string path = ::testing::TempDir() + "/" + prefix + "_" +
+                       ::testing::UnitTest::GetInstance()->current_test_info()->name() + "_" +
+                       std::to_string(::getpid()) + ".iso";
+    FILE* f = std::fopen(path.c_str(), "w");
+    std::fputs(text.c_str(), f);
+    std::fclose(f);
+    return PlotRun(machine, {path}, sets);
+}
 
 }  // namespace pupitre::test

@@ -21,14 +21,7 @@ namespace {
 
 test::PlotRun run_text(const std::string& machine, const std::string& text,
                        const std::vector<std::pair<std::string, double>>& sets = {}) {
-    // One file per test: CTest runs the tests of this binary in parallel processes.
-    std::string path = ::testing::TempDir() + "/scene_" +
-                       ::testing::UnitTest::GetInstance()->current_test_info()->name() + "_" +
-                       std::to_string(::getpid()) + ".iso";
-    FILE* f = std::fopen(path.c_str(), "w");
-    std::fputs(text.c_str(), f);
-    std::fclose(f);
-    return test::PlotRun(machine, {path}, sets);
+    return test::run_text("scene", machine, text, sets);
 }
 
 Scene scene_of(const test::PlotRun& r, PathPlane plane) {
