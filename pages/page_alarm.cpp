@@ -24,26 +24,6 @@ std::string explain(int code) {
     return code >= 1000 ? "pupitre diagnostic (see pupitre(1), DIAGNOSTICS)" : "";
 }
 
-// Words to lines of at most `w` columns (the manual's texts are long).
-std::vector<std::string> wrap(const std::string& text, size_t w) {
-    std::vector<std::string> out;
-    std::string line;
-    size_t i = 0;
-    while (i < text.size()) {
-        size_t j = text.find(' ', i);
-        if (j == std::string::npos) j = text.size();
-        std::string word = text.substr(i, j - i);
-        if (!line.empty() && size_t(columns(line) + 1 + columns(word)) > w) {
-            out.push_back(line);
-            line.clear();
-        }
-        line += (line.empty() ? "" : " ") + word;
-        i = j + 1;
-    }
-    if (!line.empty()) out.push_back(line);
-    return out;
-}
-
 }  // namespace
 
 void page_alarm(const View& v, Canvas& c, const Rect& r) {
@@ -54,9 +34,9 @@ void page_alarm(const View& v, Canvas& c, const Rect& r) {
     if (s.alarm_active()) {
         const Diag& d = all.back().diag;
         lines.push_back(Line{}.add(" ALARM " + std::to_string(d.code), Style::alarm).add("   " + where(d), Style::value));
-        for (const std::string& l : wrap(explain(d.code), size_t(std::max(20, r.w - 4))))
+        for (const std::string& l : wrap_text(explain(d.code), std::max(20, r.w - 4)))
             lines.push_back(Line{}.add("   " + l, Style::normal));
-        for (const std::string& l : wrap(d.detail, size_t(std::max(20, r.w - 4))))
+        for (const std::string& l : wrap_text(d.detail, std::max(20, r.w - 4)))
             lines.push_back(Line{}.add("   " + l, Style::value));
         lines.push_back(Line{}.add("   RAZ (F12 or :raz) acknowledges it.", Style::dim));
     } else {

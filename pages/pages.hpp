@@ -34,7 +34,8 @@ struct Line {
     }
 };
 void draw_lines(const std::vector<Line>& lines, int scroll, Canvas& c, const Rect& r);
-// Splits UTF-8 `text` into lines of at most `width` columns at spaces.
+// Splits UTF-8 `text` into lines of at most `width` columns at spaces (none
+// for an empty text).
 std::vector<std::string> wrap_text(const std::string& text, int width);
 
 // "%-6s"-style padding for the columns of a page.

@@ -163,7 +163,6 @@ void render_page(const View& v, Canvas& c, const Rect& r) {
     }
 }
 
-// A long page is a list of lines; the view's scroll picks the ones shown.
 std::vector<std::string> wrap_text(const std::string& text, int width) {
     std::vector<std::string> out;
     std::string line;
@@ -178,10 +177,11 @@ std::vector<std::string> wrap_text(const std::string& text, int width) {
         }
         line += (line.empty() ? "" : " ") + word;
     }
-    if (!line.empty() || out.empty()) out.push_back(line);
+    if (!line.empty()) out.push_back(line);
     return out;
 }
 
+// A long page is a list of lines; the view's scroll picks the ones shown.
 void draw_lines(const std::vector<Line>& lines, int scroll, Canvas& c, const Rect& r) {
     int n = int(lines.size());
     if (scroll > n - r.h) scroll = n - r.h;
