@@ -210,8 +210,9 @@ int g64(const Profile& fin, const std::vector<V2>& stock, V2 tool, const G64Args
             double xs = d > 0 ? iv.a : iv.b, far = d > 0 ? iv.b : iv.a;
             auto runs = zone::free_runs(m, y, xs, far, d);
             if (runs.empty() || std::fabs(runs[0].first - xs) > kTol) break;
-            if (std::fabs(runs[0].second - xs) <= kUm) break;
-            pass(em, y, xs, runs[0].second, d, c, first, s.y());
+            double end = zone::first_hidden(m, y, xs, runs[0].second, d);
+            if (std::fabs(end - xs) <= kUm) break;
+            pass(em, y, xs, end, d, c, first, s.y());
             first = false;
             break;  // one pass per level: the first interval met from the stock
         }

@@ -342,6 +342,32 @@ std::vector<std::pair<double, double>> free_runs(const Material& m, double Y, do
     return runs;
 }
 
+double first_hidden(const Material& m, double Y, double x0, double x1, int d) {
+    if ((x1 - x0) * d <= kTol) return x1;
+    const double lift = Y + kUm;  // a pass may run along A's upper edge itself
+    auto between = [&](double x) { return (x - x0) * d > kTol && (x1 - x) * d > kTol; };
+    // Whether the vertical above (x, Y) meets A changes only at the ends of
+    // A's boundary curves, at their extremes along x and where they cross it.
+    std::vector<double> cuts{x0, x1}, xs;
+    for (const Elem& e : m.U) {
+        xs.assign({e.a.x(), e.b.x()});
+        if (e.arc)
+            for (double sg : {-1.0, 1.0})
+                if (on_arc(e, e.c + V2(sg * e.r(), 0))) xs.push_back(e.c.x() + sg * e.r());
+        cross_h(e, lift, xs);
+        for (double x : xs)
+            if (between(x)) cuts.push_back(x);
+    }
+    std::sort(cuts.begin(), cuts.end(), [d](double a, double b) { return a * d < b * d; });
+    for (size_t j = 0; j + 1 < cuts.size(); ++j) {
+        double mid = (cuts[j] + cuts[j + 1]) / 2;
+        if (std::fabs(cuts[j + 1] - cuts[j]) <= kTol) continue;
+        for (const Elem& e : m.U)
+            if (max_y_in(e, mid, mid) > lift) return cuts[j];
+    }
+    return x1;
+}
+
 bool seg_clear(const Material& m, const V2& p, const V2& q) {
     double len = (q - p).norm();
     if (len < kTol) return !m.in_A(p);

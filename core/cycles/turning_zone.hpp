@@ -74,6 +74,11 @@ std::vector<Interval> m_intervals(const Material& m, double Y, int d);
 // d (x1 lies beyond x0 in direction d); each run is (start, end) along d.
 std::vector<std::pair<double, double>> free_runs(const Material& m, double Y, double x0, double x1,
                                                  int d);
+// Where a pass along y = Y from x0 towards x1 (direction d) must stop so that
+// its retract, straight up, stays out of A: the first x whose vertical above
+// the line meets A (the point is "hidden"), or x1. What the profile hides from
+// the retract side is a groove, left to G65 (turning.md §6.3 item 5).
+double first_hidden(const Material& m, double Y, double x0, double x1, int d);
 // The segment p-q never enters A.
 bool seg_clear(const Material& m, const V2& p, const V2& q);
 
