@@ -176,6 +176,9 @@ bool Interpreter::do_motion(const Plan& p) {
         if (p.axis[size_t(a)]) target[size_t(a)] = p.inc[size_t(a)] ? prog_[size_t(a)] + p.val[size_t(a)] : p.val[size_t(a)];
 
     if (g52) {
+        // G40 and G52 in one block (the book's own form, %222 N170): the
+        // compensated profile ends at its last point before the G52 move.
+        if (comp_.on && !comp_exit(p, nullptr)) return false;
         Axes mach = mach_;
         for (int a = 0; a < kAxes; ++a)
             if (p.axis[size_t(a)]) mach[size_t(a)] = p.val[size_t(a)];
