@@ -19,7 +19,9 @@ public:
 
     void move(const MoveEvent& e) override { pass([this, e] { real_.move(e); }); }
     void dwell(const Loc& l, double s) override { pass([this, l, s] { real_.dwell(l, s); }); }
-    void tool(const Loc& l, int t, int d, double s) override { pass([=, this] { real_.tool(l, t, d, s); }); }
+    void tool(const Loc& l, int t, int d, double s, bool m6) override {
+        pass([=, this] { real_.tool(l, t, d, s, m6); });
+    }
     void spindle(const SpindleEvent& e) override { pass([this, e] { real_.spindle(e); }); }
     void coolant(const Loc& l, bool m7, bool m8) override { pass([=, this] { real_.coolant(l, m7, m8); }); }
     void stop(const Loc& l, int m) override { pass([=, this] { real_.stop(l, m); }); }

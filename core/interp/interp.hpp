@@ -75,7 +75,7 @@ public:
     virtual ~MachineSink() = default;
     virtual void move(const MoveEvent&) {}
     virtual void dwell(const Loc&, double /*seconds*/) {}
-    virtual void tool(const Loc&, int /*t*/, int /*d*/, double /*seconds*/) {}
+    virtual void tool(const Loc&, int /*t*/, int /*d*/, double /*seconds*/, bool /*m6*/) {}
     virtual void spindle(const SpindleEvent&) {}
     virtual void coolant(const Loc&, bool /*m7*/, bool /*m8*/) {}
     virtual void stop(const Loc&, int /*m: 0, 1, 12*/) {}

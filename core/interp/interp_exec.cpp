@@ -185,7 +185,7 @@ bool Interpreter::apply_modal(const Plan& p) {
         modal_.d = p.d;
         gauge_pending_.set();
         if (!p.nm || std::find(p.m, p.m + p.nm, 6) == p.m + p.nm)
-            out_.tool(loc_, modal_.tool_in_spindle, modal_.d, 0);
+            out_.tool(loc_, modal_.tool_in_spindle, modal_.d, 0, false);
     }
     if (p.radcomp >= 0 && p.radcomp != modal_.radcomp) {
         // The radius is taken when G41/G42 is programmed; a change of D or R takes
@@ -390,7 +390,7 @@ bool Interpreter::do_m_apres(const Plan& p, StepResult& r) {
                 modal_.tool_in_spindle = modal_.t;
                 note_tool(modal_.t);
                 clock_ += m_.tool_change_time;
-                out_.tool(loc_, modal_.t, modal_.d, m_.tool_change_time);
+                out_.tool(loc_, modal_.t, modal_.d, m_.tool_change_time, true);
                 break;
             case 9:
                 if (modal_.m7 || modal_.m8) {

@@ -114,7 +114,7 @@ class Toolpath final : public MachineSink {
     // MachineSink: moves are recorded; dwells and tool changes count in the time.
     void move(const MoveEvent& e) override { add(e); }
     void dwell(const Loc&, double s) override { seconds_ += s; }
-    void tool(const Loc&, int, int, double s) override { seconds_ += s; }
+    void tool(const Loc&, int, int, double s, bool) override { seconds_ += s; }
     void end(const Loc& l, int) override { end_ = l; }
     void stock(const Loc& l, const std::vector<std::array<double, 2>>& zr) override { add_stock(l, zr); }
     void profile(const Loc&, const ProfileElem& e) override { profile_.push_back(e); }

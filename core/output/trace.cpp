@@ -111,10 +111,12 @@ void TraceWriter::dwell(const Loc& l, double s) {
     std::fwrite(buf_.data(), 1, buf_.size(), out_);
 }
 
-void TraceWriter::tool(const Loc& l, int t, int d, double s) {
+// "m6": an M06 changed the tool (true) or only the corrector D changed.
+void TraceWriter::tool(const Loc& l, int t, int d, double s, bool m6) {
     seconds += s;
     head("tool", l);
-    buf_ += ",\"t\":" + std::to_string(t) + ",\"d\":" + std::to_string(d) + "}\n";
+    buf_ += ",\"t\":" + std::to_string(t) + ",\"d\":" + std::to_string(d);
+    buf_ += m6 ? ",\"m6\":true}\n" : ",\"m6\":false}\n";
     std::fwrite(buf_.data(), 1, buf_.size(), out_);
 }
 

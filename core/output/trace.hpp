@@ -14,7 +14,7 @@ public:
     TraceWriter(std::FILE* out, const MachineProfile& m) : out_(out), m_(m) {}
     void move(const MoveEvent&) override;
     void dwell(const Loc&, double) override;
-    void tool(const Loc&, int t, int d, double) override;
+    void tool(const Loc&, int t, int d, double, bool m6) override;
     void spindle(const SpindleEvent&) override;
     void coolant(const Loc&, bool m7, bool m8) override;
     void stop(const Loc&, int m) override;

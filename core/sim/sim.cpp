@@ -388,7 +388,7 @@ void Sim::dwell(const Loc& l, double s) {
     push(std::move(e));
 }
 
-void Sim::tool(const Loc& l, int t, int d, double s) {
+void Sim::tool(const Loc& l, int t, int d, double s, bool) {
     Ev e = event(Ev::tool, l);
     e.a = t, e.b = d, e.seconds = s;
     push(std::move(e));

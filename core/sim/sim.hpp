@@ -144,7 +144,7 @@ private:
     // MachineSink: the interpreter's events join the queue.
     void move(const MoveEvent&) override;
     void dwell(const Loc&, double seconds) override;
-    void tool(const Loc&, int t, int d, double seconds) override;
+    void tool(const Loc&, int t, int d, double seconds, bool m6) override;
     void spindle(const SpindleEvent&) override;
     void coolant(const Loc&, bool m7, bool m8) override;
     void stop(const Loc&, int m) override;

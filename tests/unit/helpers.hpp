@@ -18,7 +18,7 @@ struct Capture final : MachineSink {
     int ends = 0;
     void move(const MoveEvent& e) override { moves.push_back(e); }
     void spindle(const SpindleEvent& e) override { spindles.push_back(e); }
-    void tool(const Loc&, int t, int d, double) override { tools.push_back({t, d}); }
+    void tool(const Loc&, int t, int d, double, bool) override { tools.push_back({t, d}); }
     void stop(const Loc&, int m) override { stops.push_back(m); }
     void message(const Loc&, int, std::string_view t) override { messages.emplace_back(t); }
     void end(const Loc&, int) override { ++ends; }
