@@ -3,6 +3,7 @@
 #include "core/diag.hpp"
 
 #include <unordered_map>
+#include <utility>
 
 namespace pupitre {
 namespace data {
@@ -61,6 +62,37 @@ std::string_view num_error_text(int code) {
     static const auto table = load_errors();
     auto it = table.find(code);
     return it == table.end() ? std::string_view{} : it->second;
+}
+
+// What the ALARM page says of our own numbers; pupitre(1), DIAGNOSTICS, says more.
+std::string_view pupitre_diag_text(int code) {
+    static const std::pair<int, std::string_view> kTexts[] = {
+        {err::kBlockBudget, "Endless loop: the program comes back to a state it was in, or exceeds the work budget"},
+        {err::kNotText, "The file is not text"},
+        {err::kNoProgram, "The file holds no program"},
+        {err::kCannotRead, "The file cannot be opened or read"},
+        {err::kProgramExists, "G76+ H of a program already in memory"},
+        {err::kProgramInUse, "G76- H of a program that runs"},
+        {err::wFeedClamped, "Warning: F above the machine maximum, limited to it"},
+        {err::wSpeedClamped, "Warning: S above the machine maximum, limited to it"},
+        {err::wUnknownM, "Warning: an M function with no meaning on the NUM, ignored"},
+        {err::wSpindleStopped, "Warning: G96 while the spindle is not turning"},
+        {err::wIncrementalFirst, "Warning: the first move is written in G91"},
+        {err::wDuplicateProgram, "Warning: a program number loaded twice; this copy is ignored"},
+        {err::wUnsignedEB, "Warning: EB without a sign, taken as a fillet"},
+        {err::wTinyFeed, "Warning: a feed below 1 mm/min in G94 (a feed per revolution without G95?)"},
+        {err::wFeedBeforeF, "Warning: a feed move before any F runs at the power-on feed"},
+        {err::wLReadUnset, "Warning: an L variable read before anything set it reads 0"},
+        {err::wIdleWord, "Warning: R, I, J or K in a G0/G1 block has no effect (a G2/G3 left out?)"},
+        {err::wFractionalRpm, "Warning: a spindle speed in rev/min that is not a whole number"},
+        {err::wProfileL, "Warning: L100-L199 or L900-L959 read in a roughing-cycle profile (error 96 on the NUM)"},
+        {err::wFeedModeNoF, "Warning: G94 or G95 without F in its block"},
+        {err::wAllowanceInside, "Warning: a finishing allowance whose sign puts it inside the part"},
+        {err::wNoToolWidth, "Warning: G66 correctors that give no tool width"},
+    };
+    for (const auto& [n, text] : kTexts)
+        if (n == code) return text;
+    return {};
 }
 
 }  // namespace pupitre

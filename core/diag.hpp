@@ -25,6 +25,15 @@ inline constexpr int wIncrementalFirst = 1105;
 inline constexpr int wDuplicateProgram = 1107;
 inline constexpr int wUnsignedEB = 1108;
 inline constexpr int wTinyFeed = 1109;
+// The quiet mistakes of the handbook audit (issue 19): what runs is named.
+inline constexpr int wFeedBeforeF = 1110;     // a feed move before any F
+inline constexpr int wLReadUnset = 1111;      // an L read before anything set it
+inline constexpr int wIdleWord = 1112;        // R, I, J or K with no effect in a G0/G1 block
+inline constexpr int wFractionalRpm = 1113;   // S in rev/min not a whole number
+inline constexpr int wProfileL = 1114;        // L100-L199/L900-L959 read in a roughing profile
+inline constexpr int wFeedModeNoF = 1115;     // G94/G95 without F in the block
+inline constexpr int wAllowanceInside = 1116; // G64/G65 allowance towards the inside of the part
+inline constexpr int wNoToolWidth = 1117;     // G66 correctors that give no tool width
 }  // namespace err
 
 enum class Severity { error, warning };
@@ -48,5 +57,7 @@ std::string format_diag(const Diag& d);
 // The NUM text of an error number from data/errors.tsv (English), or "" if the
 // number is not in the NUM list.
 std::string_view num_error_text(int code);
+// The short text of one of pupitre's own numbers (>= 1000), or "".
+std::string_view pupitre_diag_text(int code);
 
 }  // namespace pupitre

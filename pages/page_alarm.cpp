@@ -19,8 +19,8 @@ std::string where(const Diag& d) {
 }
 
 std::string explain(int code) {
-    std::string_view t = num_error_text(code);
-    if (!t.empty()) return std::string(t);
+    std::string_view t = code >= 1000 ? pupitre_diag_text(code) : num_error_text(code);
+    if (!t.empty()) return std::string(t) + (code >= 1000 ? " (pupitre(1), DIAGNOSTICS)" : "");
     return code >= 1000 ? "pupitre diagnostic (see pupitre(1), DIAGNOSTICS)" : "";
 }
 

@@ -300,7 +300,14 @@ private:
     bool finish_move(MoveEvent& e, const Axes& mach, const Axes& prog, double seconds);
     double feed_rate(double& rpm_out);     // mm/min for the move start
     void check_tiny_feed();
+    void report_unset_reads();
+    void warn_idle_words(const Plan& p);
+    void warn_spindle_words(const Plan& p);
     bool tiny_feed_warned_ = false;
+    bool feed_programmed_ = false;         // an F was programmed (warning 1110)
+    bool feed_before_f_warned_ = false;
+    double s_raw_ = 0;                     // S read from a variable before rounding (1113)
+    std::bitset<960> l_unset_warned_;      // warning 1111, once per variable
     double spindle_at(double x_radius) const;
     double css_rpm(double x_prog_radius) const;
     double feed_time(double length, double x0, double x1);

@@ -51,7 +51,9 @@ StepResult Interpreter::execute(const Block& b) {
     }
 
     Plan p;
-    if (!decode(b, p)) return StepResult::error;
+    bool decoded = decode(b, p);
+    if (l_.any_unset_read) report_unset_reads();
+    if (!decoded) return StepResult::error;
     if (g64_pending_) {
         // G64's rough stock until G80, which runs the roughing first (turning.md §6.3).
         if (p.cycle != 80) return turning_stock(p) ? StepResult::running : StepResult::error;
@@ -119,6 +121,7 @@ StepResult Interpreter::execute(const Block& b) {
             if (int rc = eval_expr(b, b.test.lhs, l_, *this, lhs, why)) return fail(rc, why, b.test.col);
             if (int rc = eval_expr(b, b.test.rhs, l_, *this, rhs, why)) return fail(rc, why, b.test.col);
             go = compare(b.test.cmp, lhs, rhs);
+            if (l_.any_unset_read) report_unset_reads();
         }
         if (go && !jump(p.g79_n)) return StepResult::error;
     }
@@ -172,6 +175,12 @@ bool Interpreter::apply_modal(const Plan& p) {
     // handbook programs write "G95 G92 S1500" or "G80 G40 G95" and give F later
     // (000:9661, 10037, 10186…): the unit changes, and a feed move made before a
     // new F is the error (2, F being G95's mandatory argument).
+    // Warning 1115 at every G94/G95 block without F (seed 000: "doit être suivie
+    // obligatoirement de l'argument F"; CLARIFICATIONS 18).
+    if ((p.feed_mode == 94 || p.feed_mode == 95) && !p.has_f)
+        warn(err::wFeedModeNoF, "G" + std::to_string(p.feed_mode) + " without F in its block: the feed " +
+                                    (p.feed_mode != modal_.feed_mode ? "unit changes and the next feed move needs F"
+                                                                     : "stays F" + fmt3(modal_.feed)));
     if (p.feed_mode >= 0 && p.feed_mode != modal_.feed_mode) {
         modal_.feed_mode = p.feed_mode;
         if (!p.has_f) modal_.feed_set = false;
@@ -179,6 +188,7 @@ bool Interpreter::apply_modal(const Plan& p) {
     if (p.has_f) {
         modal_.feed = p.f;
         modal_.feed_set = true;
+        feed_programmed_ = true;
     }
     if (p.has_t) modal_.t = p.t;
     if (p.has_d && p.d != modal_.d) {
@@ -260,6 +270,35 @@ bool Interpreter::apply_modal(const Plan& p) {
     return true;
 }
 
+// Warning 1113: a speed in rev/min that is not a whole number. From a variable
+// it is rounded (program-flow Q15), written with decimals it runs as written.
+void Interpreter::warn_spindle_words(const Plan& p) {
+    double raw = s_raw_;
+    s_raw_ = 0;
+    if (!p.has_s || modal_.spindle_mode != 97) return;
+    if (raw != 0 && raw != p.s)
+        warn(err::wFractionalRpm, "S from a variable is " + fmt3(raw) + " rev/min, not a whole number: the spindle turns at " +
+                                      std::to_string(std::lround(p.s)) + " rev/min");
+    else if (p.s != std::floor(p.s))
+        warn(err::wFractionalRpm, "S" + fmt3(p.s) + " rev/min is not a whole number: the spindle turns at " + fmt3(p.s) +
+                                      " rev/min; write whole rev/min (S" + std::to_string(std::lround(p.s)) + ")");
+}
+
+// Warning 1111: an L read before anything set it reads 0 (CLARIFICATIONS 18:
+// set since power-on in the console; in this run or by --set in a batch run).
+void Interpreter::report_unset_reads() {
+    if (!l_.any_unset_read) return;
+    l_.any_unset_read = false;
+    for (size_t i = 0; i < l_.unset_read.size(); ++i)
+        if (l_.unset_read.test(i) && !l_unset_warned_.test(i)) {
+            l_unset_warned_.set(i);
+            std::string l = "L" + std::to_string(i);
+            warn(err::wLReadUnset, l + " is read before anything set it: it reads 0; assign it first (" + l +
+                                       "=...) or give it with --set " + l + "=...");
+        }
+    l_.unset_read.reset();
+}
+
 // Spindle speed after the avant M functions (M3/M4/M40-M45 act before S is used).
 bool Interpreter::apply_spindle(const Plan& p) {
     if (p.spindle_mode == 96 || p.spindle_mode == 97) {
@@ -278,6 +317,7 @@ bool Interpreter::apply_spindle(const Plan& p) {
         modal_.spindle_mode = 97;
     }
     if (p.has_s) modal_.s = p.s;
+    if (p.has_s || s_raw_ != 0) warn_spindle_words(p);
     bool range_written = false;
     for (int i = 0; i < p.nm; ++i) range_written = range_written || (p.m[i] >= 40 && p.m[i] <= 45);
     if (modal_.spindle_mode == 97 && p.has_s && m_.auto_range && !range_written && modal_.range < 0 &&

@@ -385,7 +385,7 @@ bool Interpreter::p46_order(const Plan& p, int nu) {
         modal_.motion = 0;
         modal_.cycle = code;
         modal_.feed_mode = 94;
-        if (p.has_f) modal_.feed = p.f;
+        if (p.has_f) modal_.feed = p.f, feed_programmed_ = true;
         Plan q = p;
         q.axis.reset();
         q.axis.set(an);
@@ -462,6 +462,9 @@ bool Interpreter::p46_order(const Plan& p, int nu) {
     modal_.feed_mode = 94;
     modal_.feed_set = true;
     modal_.motion = 1;
+    // The order's own feeds (EP, EQ) run its moves: no warning 1110 there.
+    const bool feed_programmed = feed_programmed_;
+    feed_programmed_ = true;
     bool ok = true;
     if (prog_[an] < clear - 1e-9) ok = cycle_axis_move(0, clear);
     double approach = top;
@@ -477,6 +480,7 @@ bool Interpreter::p46_order(const Plan& p, int nu) {
         ok = cycle_move(0, t);
     }
     modal_ = saved;
+    feed_programmed_ = feed_programmed;
     return ok;
 }
 

@@ -175,6 +175,7 @@ bool Interpreter::turning_emit(const std::vector<turning::Move>& moves, double l
             // cutting feed is the first F of the finished profile (000:10470).
             modal_.feed = profile_feed_;
             modal_.feed_set = true;
+            feed_programmed_ = true;
         }
         if (lead > 0 && (m.g == 33 || m.g == 1)) {
             modal_.feed_mode = 95;

@@ -114,6 +114,7 @@ bool Interpreter::word_value(const Word& w, double& out, int* int_out) {
                     case Fmt::angle: raw = round_to(raw, 1e-4); break;
                     case Fmt::integer: case Fmt::speed: case Fmt::label: case Fmt::prog:
                         // S T D M from a variable: rounded to an integer (program-flow Q15).
+                        if (f.fmt == Fmt::speed) s_raw_ = raw;  // warning 1113
                         raw = std::round(raw);
                         break;
                     default: break;

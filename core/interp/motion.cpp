@@ -81,7 +81,15 @@ double Interpreter::feed_time(double len, double xa, double xb) {
 
 // A feed per minute below 1 mm/min is almost always a feed per revolution written
 // without G95 (the handbook's palier %2000 and %2001): said once per run.
+// Warnings 1110 (a feed move before any F: it runs at the power-on feed) and
+// 1109, each once a run.
 void Interpreter::check_tiny_feed() {
+    if (!feed_programmed_ && !feed_before_f_warned_) {
+        feed_before_f_warned_ = true;
+        warn(err::wFeedBeforeF, "feed move before any F: it runs at F" + f3(modal_.feed) +
+                                    (modal_.feed_mode == 95 ? " mm/rev" : " mm/min") +
+                                    ", the power-on feed; program F in this block or before it");
+    }
     if (modal_.feed_mode == 94 && modal_.feed < 1.0 && !tiny_feed_warned_) {
         tiny_feed_warned_ = true;
         warn(err::wTinyFeed, "F" + f3(modal_.feed) + " in G94 is " + f3(modal_.feed) +
@@ -94,6 +102,18 @@ double Interpreter::feed_rate(double& rpm_out) {
     rpm_out = spindle_at(prog_[X]);
     if (modal_.feed_mode == 95) return std::min(modal_.feed * unit * rpm_out, m_.max_feed);
     return std::min(modal_.feed * unit, m_.max_feed);
+}
+
+// Warning 1112: R, I, J or K left in a G0/G1 block that is no PGP element and
+// no cycle moves nothing (usually a G2/G3 left out).
+void Interpreter::warn_idle_words(const Plan& p) {
+    std::string w;
+    if (p.has_r) w += " R";
+    for (int k = 0; k < 3; ++k)
+        if (p.ijk[size_t(k)]) w += std::string(" ") + char('I' + k);
+    if (w.empty() || p.g[23]) return;
+    warn(err::wIdleWord, "word" + std::string(w.size() > 2 ? "s" : "") + w + " has no effect in a G" +
+                             std::to_string(modal_.motion) + " block: the move is a straight line (a circle needs G2 or G3)");
 }
 
 bool Interpreter::do_motion(const Plan& p) {
@@ -165,6 +185,7 @@ bool Interpreter::do_motion(const Plan& p) {
             return fail(101, "circle without its end point"), false;
         return true;
     }
+    if ((p.has_r || p.ijk.any()) && (modal_.motion == 0 || modal_.motion == 1)) warn_idle_words(p);
     if (first_move_ && p.inc.any())
         warn(err::wIncrementalFirst, "first move written in G91: relative to the position after homing");
     first_move_ = false;

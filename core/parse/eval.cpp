@@ -21,6 +21,7 @@ int eval_operand(const Operand& o, const LVars& l, EAccess& e, double& out, std:
                 return 91;
             }
             out = l.v[size_t(o.index)];
+            if (!l.written.test(size_t(o.index))) l.unset_read.set(size_t(o.index)), l.any_unset_read = true;
             break;
         case Operand::EParam: {
             int64_t raw;
@@ -34,6 +35,7 @@ int eval_operand(const Operand& o, const LVars& l, EAccess& e, double& out, std:
                 return 91;
             }
             double n = l.v[size_t(o.index)];
+            if (!l.written.test(size_t(o.index))) l.unset_read.set(size_t(o.index)), l.any_unset_read = true;
             if (n < 0 || n > 99999 || n != std::floor(n)) {
                 why = "E parameter number " + std::to_string(n) + " taken from L" +
                       std::to_string(o.index) + " is not an E number";

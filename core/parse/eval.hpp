@@ -14,7 +14,9 @@ namespace pupitre {
 
 struct LVars {
     std::array<double, 960> v{};
-    std::bitset<960> written;  // for the run summary
+    std::bitset<960> written;  // set since power-on or --set: the run summary, warning 1111
+    mutable std::bitset<960> unset_read;  // read while not written; the interpreter reports it
+    mutable bool any_unset_read = false;
     static bool valid(int n) {
         return (n >= 0 && n <= 19) || (n >= 100 && n <= 199) || (n >= 900 && n <= 959);
     }
