@@ -48,6 +48,9 @@ struct G64Args {
     bool has_p = false, has_r = false;
     double p = 0, r = 0;     // depth of cut: P along X (passes along Z), R along Z
     double clearance = 1.0;  // configuration item cycle_clearance, mm
+    // Out: the allowance points into the part (a positive I on a bore); the
+    // passes cut it as written, into the part (§11 item 6, warning 1116).
+    mutable bool allowance_inside = false;
 };
 int g64(const Profile& finished, const std::vector<V2>& stock, V2 tool, const G64Args& a,
         std::vector<Move>& out, std::string& why);

@@ -197,6 +197,19 @@ int g64(const Profile& fin, const std::vector<V2>& stock, V2 tool, const G64Args
     if (d == 0) d = rev ? sgn(ax(fn) - ax(f0)) : sgn(ax(f0) - ax(fn));
     if (d == 0) d = sgn(ax(zone::centroid(fin.elems)) - ax(zone::centroid(bs)));
     if (d == 0) d = -1;
+    // The allowance is a signed translation (turning.md §11 item 6): the NUM
+    // cannot know which side is material. Where it points into the part (a
+    // positive I on a bore, seed 000: "I et K peuvent être munies du signe −
+    // (sur-épaisseur pour un alésage)"), the passes rough the translated
+    // profile as written and cut into the part; the caller warns (1116).
+    if (m.t.y() < -kUm || m.t.x() * d > kUm) {
+        a.allowance_inside = true;
+        Profile moved;
+        for (const Elem& e : fin.elems) moved.elems.push_back(translated(e, V2(a.k, a.i)));
+        G64Args written = a;
+        written.i = written.k = 0;
+        return g64(moved, stock, tool, written, out, why);
+    }
     double c = std::min(std::max(0.0, a.clearance), step / 2);
 
     Emit em{fr, out, fr.to(tool)};

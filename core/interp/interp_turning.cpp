@@ -5,6 +5,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "core/interp/plan.hpp"
 #include "core/cycles/turning.hpp"
@@ -297,6 +298,13 @@ bool Interpreter::turning_block(const Plan& p) {
         a.r = cyc(p, addr1('R'), 0, &a.has_r);
         a.ep = cyc(p, addrE('P'), 0);
         a.ef = cyc(p, addrE('F'), 0);
+        // Warning 1117: the two correctors are the tool's two edges; their
+        // difference is its width (seed 000, G66).
+        if (a.d > 0 && a.d_first > 0 && a.gauge_delta.norm() < 1e-6)
+            warn(err::wNoToolWidth, "G66: D" + std::to_string(a.d_first) + " and D" + std::to_string(a.d) +
+                                        " have the same gauges, so the tool has no width: the far side of the groove"
+                                        " is cut one tool width off; measure D" + std::to_string(a.d) +
+                                        " on the other edge of the tool");
         rc = turning::g66(tool, a, moves, why);
         if (rc) return fail(rc, why), false;
         bool has_ef;
@@ -381,6 +389,13 @@ bool Interpreter::turning_g64_run() {
     std::vector<turning::Move> moves;
     std::string why;
     if (int rc = turning::g64(prof, g64_stock_, g64_tool_, g64_, moves, why)) return fail(rc, why), false;
+    if (g64_.allowance_inside) {
+        char ik[64];
+        std::snprintf(ik, sizeof ik, "I%g K%g", g64_.i, g64_.k);
+        warn(err::wAllowanceInside, std::string("G64 allowance ") + ik +
+                                        " points into the finished part: the passes cut it into the part as written"
+                                        " (a bore takes a negative I)");
+    }
     bool ok = turning_emit(moves, 0, 0);
     loc_ = saved;
     modal_.motion = 0;

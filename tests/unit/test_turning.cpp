@@ -51,6 +51,14 @@ Profile poly_profile(std::initializer_list<V2> pts) {
     return p;
 }
 
+// The profile translated by t (z, r): what G64 roughs when the allowance
+// points into the part (§11 item 6).
+Profile shifted(const Profile& p, V2 t) {
+    Profile out = p;
+    for (Elem& e : out.elems) e.a += t, e.b += t, e.c += t;
+    return out;
+}
+
 Profile reversed(const Profile& p) {
     Profile r;
     for (auto it = p.elems.rbegin(); it != p.elems.rend(); ++it) {
@@ -540,8 +548,10 @@ TEST(G64, PalierP2000Face) {
 }
 
 // %2001 roughs a bore with I.5, a positive allowance (the spec's §11.6 flag):
-// the translation goes into the wall, so the passes stop on the finished bore
-// itself, never beyond it; K.4 still leaves 0.4 on the bottom.
+// the translation goes into the wall. The NUM cannot know which side is
+// material, so the passes rough the translated profile as written, 0.5 into
+// the wall, and the interpreter warns (1116); K.4 still leaves 0.4 on the
+// bottom.
 TEST(G64, PalierP2001BorePositiveI) {
     Profile f = poly_profile({P(25.987, -52), P(29.987, -52), P(29.987, -1.5), P(35.987, 1.5)});
     std::vector<V2> stock{P(25.987, -52), P(25.987, 1.5), P(35.987, 1.5)};
@@ -555,16 +565,18 @@ TEST(G64, PalierP2001BorePositiveI) {
     ASSERT_FALSE(p.empty());
     EXPECT_NEAR(p[0].a.y(), 13.9935, 1e-9);  // the first level above the Ø25.987 hole
     EXPECT_NEAR(p[0].b.x(), -51.6, 1e-9);    // K.4 off the bottom
-    Oracle part(f, stock, V2(0, 0)), o(f, stock, V2(.4, .5));
+    EXPECT_TRUE(a.allowance_inside);
+    Oracle moved(shifted(f, V2(.4, .5)), stock, V2(0, 0));
+    check_clear(moved, tool, mv, .5, "%2001 as written");
+    // The level r 15.9935 ends on the translated chamfer at Z-0.6, 0.1 beyond
+    // the finished chamfer (Z-0.5 at that radius): the allowance as written.
+    int at = 0;
     for (const Seg& s : p)
-        for (int i = 0; i <= 20; ++i) {
-            V2 q = s.a + (s.b - s.a) * (i / 20.0);
-            EXPECT_TRUE(part.in_M(q, .5 + 1e-6)) << q.transpose();
-            if (q.x() < -1.5) {
-                EXPECT_LE(q.y(), 29.987 / 2 + 1e-9);  // the bore wall
-            }
+        if (std::fabs(s.a.y() - 15.9935) < 1e-9) {
+            EXPECT_NEAR(s.b.x(), -0.6, 1e-9);
+            ++at;
         }
-    check_clear(o, tool, mv, .5, "%2001");
+    EXPECT_EQ(at, 1);
 }
 
 // The cabestan programs write the stock from the end of the profile back to
@@ -662,10 +674,18 @@ TEST(G64, Cabestan) {
         ASSERT_EQ(g64(c.f, c.stock, c.tool, c.a, mv, why), 0) << c.name << ": " << why;
         EXPECT_FALSE(feeds(c.tool, mv).empty()) << c.name;
         EXPECT_TRUE(mv.back().to.isApprox(c.tool, 1e-12)) << c.name;
-        Oracle o(c.f, c.stock, V2(c.a.k, c.a.i));
+        // The counterbore of %5300 writes I.5 into its wall: roughed as written,
+        // the translated profile is the part the passes must not enter.
+        V2 t(c.a.k, c.a.i);
+        EXPECT_EQ(c.a.allowance_inside, std::string(c.name) == "%5300 counterbore") << c.name;
+        Oracle o(c.a.allowance_inside ? shifted(c.f, t) : c.f, c.stock, c.a.allowance_inside ? V2(0, 0) : t);
         double step = c.a.has_p ? c.a.p : c.a.r;
         check_clear(o, c.tool, mv, std::min(1.0, step / 2), c.name);
-        check_cover(o, c.tool, mv, c.swap, c.s, step, c.low, c.name);
+        // Only the stock is material: the translated wall rises above it.
+        Oracle stock_only(c.f, c.stock, t);
+        check_cover(
+            o, c.tool, mv, c.swap, c.s, step, c.low,
+            [&](V2 q) { return c.a.allowance_inside && !in_polygon(stock_only.m, q); }, c.name);
         // The stock written the other way round gives the same passes.
         std::vector<V2> back(c.stock.rbegin(), c.stock.rend());
         std::vector<Move> mv2;
