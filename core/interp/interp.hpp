@@ -257,6 +257,9 @@ private:
     struct Plan;
     // The decoding of one block into its Plan (decode.hpp).
     struct Decoder;
+    // One run of a drilling cycle (interp_cycles.cpp): its steps share the
+    // cycle's context.
+    struct DrillRun;
 
     // interp.cpp
     bool fetch(std::string_view& line, int& lineno);
