@@ -257,9 +257,10 @@ private:
     struct Plan;
     // The decoding of one block into its Plan (decode.hpp).
     struct Decoder;
-    // One run of a drilling cycle (interp_cycles.cpp): its steps share the
-    // cycle's context.
+    // One run of a drilling cycle (interp_cycles.cpp), one G45 pocket
+    // (interp_pocket.cpp): their steps share the cycle's context.
     struct DrillRun;
+    struct Pocket45;
 
     // interp.cpp
     bool fetch(std::string_view& line, int& lineno);
