@@ -6,10 +6,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <numbers>
 
 #include "core/geometry/geometry.hpp"
+#include "core/numfmt.hpp"
 
 namespace pupitre::pgp::detail {
 
@@ -23,11 +23,6 @@ V2 dir(double deg) {
 }
 V2 rot(const V2& v, double a) {
     return V2(v.x() * std::cos(a) - v.y() * std::sin(a), v.x() * std::sin(a) + v.y() * std::cos(a));
-}
-std::string f3(double v) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%.3f", v);
-    return b;
 }
 
 // Angle travelled from u to v turning in sense s (+1 counter-clockwise), in [0, 2π).
@@ -214,7 +209,7 @@ bool arc_by_radius(const Spec& s, int sense, const V2& S, const V2& E, Elt& e, F
     double d = ch.norm();
     if (d < 1e-9) return failed(f, 107, "circle with R: the end point equals the start point");
     if (d > 2 * s.r + kChordTol + 1e-9)
-        return failed(f, 107, "circle end point too far: chord " + f3(d) + " > 2R " + f3(2 * s.r));
+        return failed(f, 107, "circle end point too far: chord " + fixed3(d) + " > 2R " + fixed3(2 * s.r));
     double h = std::sqrt(std::max(0.0, s.r * s.r - d * d / 4));
     int side = s.disc != 0 ? s.disc : sense;
     V2 c = (S + E) / 2 + side * h * perp(ch) / d;
@@ -267,14 +262,14 @@ bool first_centre(const Spec& s, const V2& S, const V2& E, Elt& e, Fail& f) {
     if (r0 < kEq) return failed(f, 107, "circle centre on the start point");
     if (s.has_r && std::fabs(s.r - r0) > kArcTol + 1e-9)
         return failed(f, 107,
-                      "radius R " + f3(s.r) + " differs from the start radius " + f3(r0));
+                      "radius R " + fixed3(s.r) + " differs from the start radius " + fixed3(r0));
     e.sup = circle(c, r0, e.s);
     if (!end2 && !end1) return true;
     double r1 = (E - c).norm();
     if (std::fabs(r1 - r0) > kArcTol + 1e-9)
         return failed(f, 107,
-                      "circle end point inconsistent: start radius " + f3(r0) +
-                          ", end radius " + f3(r1) + " (more than 0.020 apart)");
+                      "circle end point inconsistent: start radius " + fixed3(r0) +
+                          ", end radius " + fixed3(r1) + " (more than 0.020 apart)");
     e.form = Form::Complete;
     e.geo = piece(e.sup, S, E);
     if ((E - S).norm() < 1e-7) {  // a full circle, as in classic programming
@@ -362,7 +357,7 @@ bool next_centre(const Spec& s, Elt& e, Fail& f) {
         if (r < kEq) return failed(f, 107, "circle centre on the end point");
         if (s.has_r && std::fabs(s.r - r) > kArcTol + 1e-9)
             return failed(f, 107,
-                          "radius R " + f3(s.r) + " differs from the end radius " + f3(r));
+                          "radius R " + fixed3(s.r) + " differs from the end radius " + fixed3(r));
         e.sup = circle(c, r, e.s);
         e.has_end = true;
         e.end = E;
@@ -418,7 +413,7 @@ int corner(comp::Elem& h, double eb, comp::Elem& e, comp::Elem& ins, std::string
     if (eb < 0) {
         double c = -eb, l1 = length(h), l2 = length(e);
         if (c > l1 + kEq || c > l2 + kEq) {
-            detail = "chamfer " + f3(c) + " longer than the lines (" + f3(l1) + ", " + f3(l2) + ")";
+            detail = "chamfer " + fixed3(c) + " longer than the lines (" + fixed3(l1) + ", " + fixed3(l2) + ")";
             return 113;
         }
         V2 a = c > l1 - kEq ? h.a : V2(P - c * t1), b = c > l2 - kEq ? e.b : V2(P + c * t2);
@@ -454,7 +449,7 @@ int corner(comp::Elem& h, double eb, comp::Elem& e, comp::Elem& ins, std::string
                 }
             }
     if (best > 1e299) {
-        detail = "fillet radius " + f3(r) + " too large for the elements it joins";
+        detail = "fillet radius " + fixed3(r) + " too large for the elements it joins";
         return 113;
     }
     h = h.arc ? piece(s1, h.a, a0) : comp::Elem{false, h.a, a0};

@@ -17,7 +17,6 @@ constexpr double kOverTol = 0.001;   // mm: a tangency between two fully program
 
 V2 dir(double deg);
 V2 rot(const V2& v, double a);
-std::string f3(double v);
 // Angle travelled from u to v turning in sense s (+1 counter-clockwise), in [0, 2π).
 double turn(const V2& u, const V2& v, int s);
 

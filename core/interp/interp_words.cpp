@@ -4,9 +4,9 @@
 // are read in interp_args.cpp.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <cmath>
-#include <cstdio>
 
 #include "core/interp/decode.hpp"
+#include "core/numfmt.hpp"
 
 namespace pupitre {
 
@@ -136,9 +136,7 @@ bool Interpreter::variable_value(const Word& w, double& out) {
         raw *= e_scale(f.fmt);
     }
     if (!f.is_signed && raw < 0) {
-        char num[32];
-        std::snprintf(num, sizeof num, "%.3f", raw);
-        fail(92, std::string("negative value ") + num + " for " + std::string(addr_name(w.addr)) +
+        fail(92, "negative value " + fixed3(raw) + " for " + std::string(addr_name(w.addr)) +
                      ", which takes none", w.col);
         return false;
     }
