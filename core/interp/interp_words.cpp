@@ -20,7 +20,8 @@ struct AddrFormat {
     bool is_signed;
 };
 
-AddrFormat format_of(Addr a) {
+// Inlined: word_value runs for every word, its fast path needs only this.
+[[gnu::always_inline]] inline AddrFormat format_of(Addr a) {
     if (a < 26) {
         switch (char('A' + a)) {
             case 'X': case 'Y': case 'Z': case 'U': case 'V': case 'W':
