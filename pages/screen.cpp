@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/numfmt.hpp"
 #include "pages/canvas.hpp"
 #include "pages/page_graph.hpp"
 #include "pages/pages.hpp"
@@ -79,12 +80,7 @@ bool parse_page(std::string_view word, PageId& out) {
     return false;
 }
 
-std::string fmt_len(double v) {
-    char buf[32];
-    if (std::abs(v) < 0.0005) v = 0;
-    std::snprintf(buf, sizeof buf, "%.3f", v);
-    return buf;
-}
+std::string fmt_len(double v) { return fixed3_zeroed(v, 0.0005); }
 
 std::string fmt_axis(int axis, double v) {
     char buf[32];

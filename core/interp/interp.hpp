@@ -255,6 +255,12 @@ private:
 
     // Plan of a block: the words resolved into values (interp_words.cpp).
     struct Plan;
+    // The decoding of one block into its Plan (decode.hpp).
+    struct Decoder;
+    // One run of a drilling cycle (interp_cycles.cpp), one G45 pocket
+    // (interp_pocket.cpp): their steps share the cycle's context.
+    struct DrillRun;
+    struct Pocket45;
 
     // interp.cpp
     bool fetch(std::string_view& line, int& lineno);
@@ -283,6 +289,7 @@ private:
     // interp_words.cpp
     bool decode(const Block& b, Plan& p);
     bool word_value(const Word& w, double& out, int* int_out = nullptr);
+    bool variable_value(const Word& w, double& out);
     bool apply_modal(const Plan& p);
     bool apply_spindle(const Plan& p);
     bool do_m_avant(const Plan& p);

@@ -73,204 +73,276 @@ bool Interpreter::cycle_words(const Plan& p, int code) {
     return true;
 }
 
-// One execution of the active cycle at the block's position (milling.md §6.1.5).
+// One execution of a cycle at the block's position: the checks, the approach
+// and the machining of its code (milling.md §6.1.5).
+struct Interpreter::DrillRun {
+    using Step = bool (DrillRun::*)();
+    static Step machining(int code);
+
+    Interpreter& in;
+    CycleParams& c;
+    const int code, ax;
+    const double up;   // "up" is the direction of the tool vector (towards the spindle)
+    double s0 = 0;     // where machining starts: EH, else ER
+    double depth = 0;  // from S0 to the bottom
+
+    double h(double v) const { return v * up; }
+    bool move(int g, double v) { return in.cycle_axis_move(g, v); }
+    bool dwell(double s) { return in.cycle_dwell(s); }
+    bool check();
+    bool check_code();
+    bool approach(const Plan& p);
+    bool plain();
+    bool dwell_bottom();
+    bool pecks(std::vector<double>& out);
+    bool peck();
+    bool tap();
+    bool bore_feed_out();
+    bool bore_oriented();
+    bool bore_stop();
+    bool bore_dwell();
+    bool thread();
+};
+
 bool Interpreter::cycle_run(const Plan& p, int code) {
-    CycleParams& c = cyc_;
     const int ax = cycle_axis();
-    // "Up" is the direction of the tool vector (towards the spindle).
     const double up = (m_.lathe ? (modal_.tool_axis == ax && modal_.tool_axis_neg ? -1 : 1)
                                 : (modal_.tool_axis_neg ? -1 : 1));
-    if (!m_.lathe && modal_.tool_axis != ax)
-        return fail(890, "the tool axis (G16) is not parallel to the cycle axis"), false;
-    if (!c.has_z) return fail(code == 31 ? 883 : 882, "the hole bottom (" + std::string(1, kAxisNames[size_t(ax)]) +
-                                                          ") is not programmed"),
+    DrillRun r{*this, cyc_, code, ax, up};
+    if (!r.check() || !r.approach(p)) return false;
+    // 4. Machining.
+    r.s0 = cyc_.has_eh ? cyc_.eh : cyc_.er;
+    r.depth = r.h(r.s0) - r.h(cyc_.z);
+    DrillRun::Step run = DrillRun::machining(code);
+    return !run || (r.*run)();
+}
+
+// The machining of each cycle code.
+Interpreter::DrillRun::Step Interpreter::DrillRun::machining(int code) {
+    static constexpr struct {
+        int code;
+        Step step;
+    } table[] = {
+        {81, &DrillRun::plain},         {82, &DrillRun::dwell_bottom},  {83, &DrillRun::peck},
+        {87, &DrillRun::peck},          {84, &DrillRun::tap},           {85, &DrillRun::bore_feed_out},
+        {86, &DrillRun::bore_oriented}, {88, &DrillRun::bore_stop},     {89, &DrillRun::bore_dwell},
+        {31, &DrillRun::thread},
+    };
+    for (const auto& e : table)
+        if (e.code == code) return e.step;
+    return nullptr;
+}
+
+// The bottom and the retract plane, for every code.
+bool Interpreter::DrillRun::check() {
+    if (!in.m_.lathe && in.modal_.tool_axis != ax)
+        return in.fail(890, "the tool axis (G16) is not parallel to the cycle axis"), false;
+    if (!c.has_z) return in.fail(code == 31 ? 883 : 882, "the hole bottom (" + std::string(1, kAxisNames[size_t(ax)]) +
+                                                             ") is not programmed"),
                   false;
-    const double s = prog_[size_t(ax)];
+    const double s = in.prog_[size_t(ax)];
     if (!c.has_er) {
         c.er = s;  // the retract plane defaults to where the cycle starts
         c.has_er = true;
     }
-    auto h = [&](double v) { return v * up; };
-    if (std::fabs(c.er - c.z) < 1e-9) return fail(891, "the retract plane ER is the hole bottom"), false;
-    if (h(c.er) < h(c.z)) return fail(881, "the retract plane ER is below the hole bottom"), false;
-    if ((code == 81 || code == 86 || code == 88 || (code == 84 && c.has_k)) && c.has_ef)
-        return fail(888, "no dwell (EF) in G" + std::to_string(code)), false;
-    if ((code == 84 || code == 31) && modal_.spindle_dir != 3 && modal_.spindle_dir != 4)
-        return fail(831, "G" + std::to_string(code) + " with the spindle stopped"), false;
-    if ((code == 83 || code == 87) && !c.has_p && !c.has_es)
-        return fail(2, "G" + std::to_string(code) + " needs P (first peck) or ES (number of pecks)"), false;
-    if ((code == 83 || code == 87) && c.has_p && c.has_q && c.q > c.p)
-        return fail(881, "the last peck Q is larger than the first P"), false;
-    if (code == 31 && (!c.has_k || !c.has_p))
-        return fail(883, "G31 needs the pitch (K) and the retract (P)"), false;
-    if (code == 31 && c.has_starts && (c.starts < 1 || c.starts > 9 || c.starts != std::floor(c.starts)))
-        return fail(884, "G31: the number of starts F must be 1 to 9"), false;
+    if (std::fabs(c.er - c.z) < 1e-9) return in.fail(891, "the retract plane ER is the hole bottom"), false;
+    if (h(c.er) < h(c.z)) return in.fail(881, "the retract plane ER is below the hole bottom"), false;
+    return check_code();
+}
 
+// The words and the spindle each code needs.
+bool Interpreter::DrillRun::check_code() {
+    if ((code == 81 || code == 86 || code == 88 || (code == 84 && c.has_k)) && c.has_ef)
+        return in.fail(888, "no dwell (EF) in G" + std::to_string(code)), false;
+    if ((code == 84 || code == 31) && in.modal_.spindle_dir != 3 && in.modal_.spindle_dir != 4)
+        return in.fail(831, "G" + std::to_string(code) + " with the spindle stopped"), false;
+    if ((code == 83 || code == 87) && !c.has_p && !c.has_es)
+        return in.fail(2, "G" + std::to_string(code) + " needs P (first peck) or ES (number of pecks)"), false;
+    if ((code == 83 || code == 87) && c.has_p && c.has_q && c.q > c.p)
+        return in.fail(881, "the last peck Q is larger than the first P"), false;
+    if (code == 31 && (!c.has_k || !c.has_p))
+        return in.fail(883, "G31 needs the pitch (K) and the retract (P)"), false;
+    if (code == 31 && c.has_starts && (c.starts < 1 || c.starts > 9 || c.starts != std::floor(c.starts)))
+        return in.fail(884, "G31: the number of starts F must be 1 to 9"), false;
+    return true;
+}
+
+// Steps 1-3: up to ER, the positioning in the plane, down to EH.
+bool Interpreter::DrillRun::approach(const Plan& p) {
+    Axes& prog = in.prog_;
     // 1. Up to ER first if the tool is below it.
-    if (h(prog_[size_t(ax)]) < h(c.er) - 1e-9 && !cycle_axis_move(0, c.er)) return false;
+    if (h(prog[size_t(ax)]) < h(c.er) - 1e-9 && !move(0, c.er)) return false;
     // 2. Positioning in the plane with the modal interpolation (%333 moves by G2).
     std::bitset<kAxes> plane = p.axis;
     plane.reset(size_t(ax));
     if (plane.any()) {
         Plan q = p;
         q.axis.reset(size_t(ax));
-        Axes target = prog_;
+        Axes target = prog;
         for (int a = 0; a < kAxes; ++a)
-            if (q.axis[size_t(a)]) target[size_t(a)] = q.inc[size_t(a)] ? prog_[size_t(a)] + q.val[size_t(a)] : q.val[size_t(a)];
+            if (q.axis[size_t(a)]) target[size_t(a)] = q.inc[size_t(a)] ? prog[size_t(a)] + q.val[size_t(a)] : q.val[size_t(a)];
         bool ok;
-        if (modal_.motion == 2 || modal_.motion == 3) {
-            ok = arc(q, target);
+        const int motion = in.modal_.motion;
+        if (motion == 2 || motion == 3) {
+            ok = in.arc(q, target);
         } else {
-            ok = cycle_move(modal_.motion == 0 ? 0 : 1, target);
+            ok = in.cycle_move(motion == 0 ? 0 : 1, target);
         }
         if (!ok) return false;
     }
     // 3. Rapid to ER, then to EH.
-    if (std::fabs(prog_[size_t(ax)] - c.er) > 1e-9 && !cycle_axis_move(0, c.er)) return false;
-    double s0 = c.has_eh ? c.eh : c.er;
-    if (c.has_eh && !cycle_axis_move(0, c.eh)) return false;
-    // 4. Machining.
-    const double depth = h(s0) - h(c.z);
-    switch (code) {
-        case 81:
-            if (!cycle_axis_move(1, c.z) || !cycle_axis_move(0, c.er)) return false;
-            break;
-        case 82:
-            if (!cycle_axis_move(1, c.z) || !cycle_dwell(c.ef) || !cycle_axis_move(0, c.er)) return false;
-            break;
-        case 83:
-        case 87: {
-            // Peck law (milling.md §6.5, spec README (b) 18).
-            std::vector<double> pecks;
-            if (c.has_es && c.es >= 1) {
-                int n = int(std::lround(c.es));
-                double first = c.has_p ? c.p : -1, last = c.has_q ? c.q : -1;
-                int fixed = (first > 0) + (last > 0 && n > 1);
-                double rest = depth - std::max(0.0, first) - (n > 1 ? std::max(0.0, last) : 0.0);
-                int shared = n - fixed;
-                if (rest < -1e-9 || (shared == 0 && std::fabs(rest) > 1e-9 && fixed == 0))
-                    return fail(881, "ES, P and Q do not fit the depth of the hole"), false;
-                for (int k = 0; k < n; ++k) {
-                    if (k == 0 && first > 0) pecks.push_back(first);
-                    else if (k == n - 1 && last > 0 && n > 1) pecks.push_back(last);
-                    else pecks.push_back(shared > 0 ? rest / shared : 0);
-                }
-                if (shared == 0 && !pecks.empty()) pecks.back() += rest;  // exact total
-            } else if (c.has_q && c.q < c.p) {
-                int n = std::max(2, int(std::ceil(2 * depth / (c.p + c.q))));
-                double d = (c.p - c.q) / (n - 1);
-                for (int k = 0; k < n; ++k) pecks.push_back(c.p - k * d);
-            } else {
-                int n = std::max(1, int(std::ceil(depth / c.p - 1e-9)));
-                for (int k = 0; k < n; ++k) pecks.push_back(c.p);
-            }
-            double ep = c.has_ep ? c.ep : (code == 83 ? 1.0 : 0.0);
-            double reached = 0;  // depth reached below S0
-            for (size_t k = 0; k < pecks.size() && reached < depth - 1e-9; ++k) {
-                double next = std::min(depth, reached + pecks[k]);
-                if (k + 1 == pecks.size()) next = depth;
-                double v = (h(s0) - next) * up;
-                if (code == 83 && k > 0) {
-                    // Back down to EP above the depth already reached.
-                    if (!cycle_axis_move(0, (h(s0) - reached + ep) * up)) return false;
-                } else if (code == 87 && k > 0 && ep > 0) {
-                    if (!cycle_axis_move(0, (h(s0) - reached + ep) * up)) return false;
-                }
-                if (!cycle_axis_move(1, v) || !cycle_dwell(c.ef)) return false;
-                reached = next;
-                if (reached < depth - 1e-9) {
-                    if (code == 83 && !cycle_axis_move(0, c.er)) return false;  // chip clearing
-                }
-            }
-            if (!cycle_axis_move(0, c.er)) return false;
-            break;
+    if (std::fabs(prog[size_t(ax)] - c.er) > 1e-9 && !move(0, c.er)) return false;
+    if (c.has_eh && !move(0, c.eh)) return false;
+    return true;
+}
+
+bool Interpreter::DrillRun::plain() { return move(1, c.z) && move(0, c.er); }
+
+bool Interpreter::DrillRun::dwell_bottom() { return move(1, c.z) && dwell(c.ef) && move(0, c.er); }
+
+// Peck law (milling.md §6.5, spec README (b) 18).
+bool Interpreter::DrillRun::pecks(std::vector<double>& out) {
+    if (c.has_es && c.es >= 1) {
+        int n = int(std::lround(c.es));
+        double first = c.has_p ? c.p : -1, last = c.has_q ? c.q : -1;
+        int fixed = (first > 0) + (last > 0 && n > 1);
+        double rest = depth - std::max(0.0, first) - (n > 1 ? std::max(0.0, last) : 0.0);
+        int shared = n - fixed;
+        if (rest < -1e-9 || (shared == 0 && std::fabs(rest) > 1e-9 && fixed == 0))
+            return in.fail(881, "ES, P and Q do not fit the depth of the hole"), false;
+        for (int k = 0; k < n; ++k) {
+            if (k == 0 && first > 0) out.push_back(first);
+            else if (k == n - 1 && last > 0 && n > 1) out.push_back(last);
+            else out.push_back(shared > 0 ? rest / shared : 0);
         }
-        case 84: {
-            int dir = modal_.spindle_dir;
-            Modal saved = modal_;
-            if (c.has_k) {
-                // Rigid tapping: feed = pitch x speed, out at EK x speed (000:5911-5934).
-                double n = spindle_at(prog_[X]);
-                modal_.feed_mode = 94;
-                modal_.feed = c.k * n;
-                modal_.feed_set = true;
-            }
-            if (!cycle_axis_move(1, c.z)) return false;
-            if (!c.has_k && !cycle_dwell(c.has_ef ? c.ef : 1.0)) return false;
-            modal_.spindle_dir = dir == 3 ? 4 : 3;
-            set_spindle_event();
-            if (c.has_k) modal_.feed = c.k * spindle_at(prog_[X]) * (c.ek > 0 ? c.ek : 1.0);
-            if (!cycle_axis_move(1, c.er)) return false;
-            modal_ = saved;
-            set_spindle_event();
-            break;
-        }
-        case 85: {
-            if (!cycle_axis_move(1, c.z)) return false;
-            double f = modal_.feed;
-            if (c.has_ef) modal_.feed = c.ef;  // EF: the retract feed
-            bool ok = cycle_axis_move(1, c.er);
-            modal_.feed = f;
-            if (!ok) return false;
-            break;
-        }
-        case 86: {
-            if (!cycle_axis_move(1, c.z)) return false;
-            int dir = modal_.spindle_dir;
-            modal_.spindle_dir = 19;  // oriented stop at EC
-            set_spindle_event();
-            // Away from the wall: EP opposite to the cutting edge at EC + EA.
-            double ep = c.has_ep ? c.ep : 2.0;
-            int a0 = m_.lathe ? Z : modal_.plane == 17 ? X : modal_.plane == 18 ? Z : Y;
-            int a1 = m_.lathe ? X : modal_.plane == 17 ? Y : modal_.plane == 18 ? X : Z;
-            double th = (c.ec + c.ea) * M_PI / 180;
-            Axes t = prog_;
-            Axes back = prog_;
-            t[size_t(a0)] -= ep * std::cos(th);
-            t[size_t(a1)] -= ep * std::sin(th);
-            if (!cycle_move(0, t) || !cycle_axis_move(0, c.er)) return false;
-            back[size_t(ax)] = c.er;
-            if (!cycle_move(0, back)) return false;
-            modal_.spindle_dir = dir;
-            set_spindle_event();
-            break;
-        }
-        case 88:
-            if (!cycle_axis_move(1, c.z)) return false;
-            out_.stop(loc_, 88);  // the operator validates the facing (004:932)
-            if (!cycle_axis_move(0, c.er)) return false;
-            break;
-        case 89:
-            if (!cycle_axis_move(1, c.z) || !cycle_dwell(c.has_ef ? c.ef : 1.0) || !cycle_axis_move(1, c.er))
-                return false;
-            break;
-        case 31: {
-            // Single-point threading: per start, feed synchronised at K per revolution,
-            // retract P radially, back up to ER (milling.md §6.13 [impl]).
-            int starts = c.has_starts ? int(c.starts) : 1;
-            Modal saved = modal_;
-            int a0 = modal_.plane == 17 ? X : modal_.plane == 18 ? Z : Y;
-            int a1 = modal_.plane == 17 ? Y : modal_.plane == 18 ? X : Z;
-            for (int i = 0; i < starts; ++i) {
-                modal_.feed_mode = 94;
-                modal_.feed = c.k * spindle_at(prog_[X]);
-                modal_.feed_set = true;
-                Axes axis_pos = prog_;
-                if (!cycle_axis_move(1, c.z) || !cycle_dwell(c.has_ef ? c.ef : 0)) return false;
-                Axes t = prog_;
-                double th = c.ec * M_PI / 180;
-                t[size_t(a0)] -= c.p * std::cos(th);
-                t[size_t(a1)] -= c.p * std::sin(th);
-                if (!cycle_move(0, t) || !cycle_axis_move(0, c.er)) return false;
-                axis_pos[size_t(ax)] = c.er;
-                if (!cycle_move(0, axis_pos)) return false;
-            }
-            modal_ = saved;
-            break;
-        }
-        default:
-            break;
+        if (shared == 0 && !out.empty()) out.back() += rest;  // exact total
+    } else if (c.has_q && c.q < c.p) {
+        int n = std::max(2, int(std::ceil(2 * depth / (c.p + c.q))));
+        double d = (c.p - c.q) / (n - 1);
+        for (int k = 0; k < n; ++k) out.push_back(c.p - k * d);
+    } else {
+        int n = std::max(1, int(std::ceil(depth / c.p - 1e-9)));
+        for (int k = 0; k < n; ++k) out.push_back(c.p);
     }
+    return true;
+}
+
+// G83 (chip clearing: back to ER after each peck) and G87 (chip breaking).
+bool Interpreter::DrillRun::peck() {
+    std::vector<double> steps;
+    if (!pecks(steps)) return false;
+    double ep = c.has_ep ? c.ep : (code == 83 ? 1.0 : 0.0);
+    double reached = 0;  // depth reached below S0
+    for (size_t k = 0; k < steps.size() && reached < depth - 1e-9; ++k) {
+        double next = std::min(depth, reached + steps[k]);
+        if (k + 1 == steps.size()) next = depth;
+        double v = (h(s0) - next) * up;
+        if (code == 83 && k > 0) {
+            // Back down to EP above the depth already reached.
+            if (!move(0, (h(s0) - reached + ep) * up)) return false;
+        } else if (code == 87 && k > 0 && ep > 0) {
+            if (!move(0, (h(s0) - reached + ep) * up)) return false;
+        }
+        if (!move(1, v) || !dwell(c.ef)) return false;
+        reached = next;
+        if (reached < depth - 1e-9) {
+            if (code == 83 && !move(0, c.er)) return false;  // chip clearing
+        }
+    }
+    return move(0, c.er);
+}
+
+// G84 tapping, rigid with K.
+bool Interpreter::DrillRun::tap() {
+    Modal& modal = in.modal_;
+    int dir = modal.spindle_dir;
+    Modal saved = modal;
+    if (c.has_k) {
+        // Rigid tapping: feed = pitch x speed, out at EK x speed (000:5911-5934).
+        double n = in.spindle_at(in.prog_[X]);
+        modal.feed_mode = 94;
+        modal.feed = c.k * n;
+        modal.feed_set = true;
+    }
+    if (!move(1, c.z)) return false;
+    if (!c.has_k && !dwell(c.has_ef ? c.ef : 1.0)) return false;
+    modal.spindle_dir = dir == 3 ? 4 : 3;
+    in.set_spindle_event();
+    if (c.has_k) modal.feed = c.k * in.spindle_at(in.prog_[X]) * (c.ek > 0 ? c.ek : 1.0);
+    if (!move(1, c.er)) return false;
+    modal = saved;
+    in.set_spindle_event();
+    return true;
+}
+
+// G85: out at the feed EF.
+bool Interpreter::DrillRun::bore_feed_out() {
+    if (!move(1, c.z)) return false;
+    double f = in.modal_.feed;
+    if (c.has_ef) in.modal_.feed = c.ef;  // EF: the retract feed
+    bool ok = move(1, c.er);
+    in.modal_.feed = f;
+    return ok;
+}
+
+// G86: oriented stop, away from the wall, out in rapid.
+bool Interpreter::DrillRun::bore_oriented() {
+    if (!move(1, c.z)) return false;
+    Modal& modal = in.modal_;
+    int dir = modal.spindle_dir;
+    modal.spindle_dir = 19;  // oriented stop at EC
+    in.set_spindle_event();
+    // Away from the wall: EP opposite to the cutting edge at EC + EA.
+    double ep = c.has_ep ? c.ep : 2.0;
+    int a0 = in.m_.lathe ? Z : modal.plane == 17 ? X : modal.plane == 18 ? Z : Y;
+    int a1 = in.m_.lathe ? X : modal.plane == 17 ? Y : modal.plane == 18 ? X : Z;
+    double th = (c.ec + c.ea) * M_PI / 180;
+    Axes t = in.prog_;
+    Axes back = in.prog_;
+    t[size_t(a0)] -= ep * std::cos(th);
+    t[size_t(a1)] -= ep * std::sin(th);
+    if (!in.cycle_move(0, t) || !move(0, c.er)) return false;
+    back[size_t(ax)] = c.er;
+    if (!in.cycle_move(0, back)) return false;
+    modal.spindle_dir = dir;
+    in.set_spindle_event();
+    return true;
+}
+
+// G88: the operator validates the facing (004:932).
+bool Interpreter::DrillRun::bore_stop() {
+    if (!move(1, c.z)) return false;
+    in.out_.stop(in.loc_, 88);
+    return move(0, c.er);
+}
+
+bool Interpreter::DrillRun::bore_dwell() {
+    return move(1, c.z) && dwell(c.has_ef ? c.ef : 1.0) && move(1, c.er);
+}
+
+// G31 single-point threading: per start, feed synchronised at K per revolution,
+// retract P radially, back up to ER (milling.md §6.13 [impl]).
+bool Interpreter::DrillRun::thread() {
+    Modal& modal = in.modal_;
+    int starts = c.has_starts ? int(c.starts) : 1;
+    Modal saved = modal;
+    int a0 = modal.plane == 17 ? X : modal.plane == 18 ? Z : Y;
+    int a1 = modal.plane == 17 ? Y : modal.plane == 18 ? X : Z;
+    for (int i = 0; i < starts; ++i) {
+        modal.feed_mode = 94;
+        modal.feed = c.k * in.spindle_at(in.prog_[X]);
+        modal.feed_set = true;
+        Axes axis_pos = in.prog_;
+        if (!move(1, c.z) || !dwell(c.has_ef ? c.ef : 0)) return false;
+        Axes t = in.prog_;
+        double th = c.ec * M_PI / 180;
+        t[size_t(a0)] -= c.p * std::cos(th);
+        t[size_t(a1)] -= c.p * std::sin(th);
+        if (!in.cycle_move(0, t) || !move(0, c.er)) return false;
+        axis_pos[size_t(ax)] = c.er;
+        if (!in.cycle_move(0, axis_pos)) return false;
+    }
+    modal = saved;
     return true;
 }
 

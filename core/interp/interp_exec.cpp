@@ -7,16 +7,9 @@
 
 #include "core/interp/gate.hpp"
 #include "core/interp/plan.hpp"
+#include "core/numfmt.hpp"
 
 namespace pupitre {
-
-namespace {
-std::string fmt3(double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.3f", v);
-    return buf;
-}
-}  // namespace
 
 StepResult Interpreter::execute(const Block& b) {
     // 1. Parametric assignments, left to right.
@@ -180,7 +173,7 @@ bool Interpreter::apply_modal(const Plan& p) {
     if ((p.feed_mode == 94 || p.feed_mode == 95) && !p.has_f)
         warn(err::wFeedModeNoF, "G" + std::to_string(p.feed_mode) + " without F in its block: the feed " +
                                     (p.feed_mode != modal_.feed_mode ? "unit changes and the next feed move needs F"
-                                                                     : "stays F" + fmt3(modal_.feed)));
+                                                                     : "stays F" + fixed3(modal_.feed)));
     if (p.feed_mode >= 0 && p.feed_mode != modal_.feed_mode) {
         modal_.feed_mode = p.feed_mode;
         if (!p.has_f) modal_.feed_set = false;
@@ -258,8 +251,8 @@ bool Interpreter::apply_modal(const Plan& p) {
             if (!m_.lathe) return fail(2, "G92 S (spindle limit) is a lathe function"), false;
             modal_.smax = p.g92_s_val;
             if (modal_.smax > m_.spindle_max) {
-                warn(err::wSpeedClamped, "G92 S" + fmt3(modal_.smax) + " above the spindle maximum " +
-                                             fmt3(m_.spindle_max) + ": limited to it");
+                warn(err::wSpeedClamped, "G92 S" + fixed3(modal_.smax, 63) + " above the spindle maximum " +
+                                             fixed3(m_.spindle_max, 63) + ": limited to it");
                 modal_.smax = m_.spindle_max;
             }
         }
@@ -277,10 +270,10 @@ void Interpreter::warn_spindle_words(const Plan& p) {
     s_raw_ = 0;
     if (!p.has_s || modal_.spindle_mode != 97) return;
     if (raw != 0 && raw != p.s)
-        warn(err::wFractionalRpm, "S from a variable is " + fmt3(raw) + " rev/min, not a whole number: the spindle turns at " +
+        warn(err::wFractionalRpm, "S from a variable is " + fixed3(raw) + " rev/min, not a whole number: the spindle turns at " +
                                       std::to_string(std::lround(p.s)) + " rev/min");
     else if (p.s != std::floor(p.s))
-        warn(err::wFractionalRpm, "S" + fmt3(p.s) + " rev/min is not a whole number: the spindle turns at " + fmt3(p.s) +
+        warn(err::wFractionalRpm, "S" + fixed3(p.s) + " rev/min is not a whole number: the spindle turns at " + fixed3(p.s) +
                                       " rev/min; write whole rev/min (S" + std::to_string(std::lround(p.s)) + ")");
 }
 
@@ -327,7 +320,7 @@ bool Interpreter::apply_spindle(const Plan& p) {
         int found = -1;
         for (size_t i = 0; i < m_.ranges.size() && found < 0; ++i)
             if (modal_.s >= m_.ranges[i].min && modal_.s <= m_.ranges[i].max) found = int(i);
-        if (found < 0) return fail(29, "S" + fmt3(modal_.s) + " is in no spindle range"), false;
+        if (found < 0) return fail(29, "S" + fixed3(modal_.s, 63) + " is in no spindle range"), false;
         modal_.range = found;
     }
     if (modal_.spindle_mode == 96 && !m_.ranges.empty() && modal_.range < 0 &&
@@ -339,12 +332,12 @@ bool Interpreter::apply_spindle(const Plan& p) {
     if (modal_.spindle_mode == 97 && p.has_s && modal_.range >= 0) {
         const SpindleRange& r = m_.ranges[size_t(modal_.range)];
         if (modal_.s != 0 && (modal_.s < r.min || modal_.s > r.max))
-            return fail(29, "S" + fmt3(modal_.s) + " is outside range M" + std::to_string(40 + modal_.range) +
-                                " (" + fmt3(r.min) + "-" + fmt3(r.max) + " rev/min)"),
+            return fail(29, "S" + fixed3(modal_.s, 63) + " is outside range M" + std::to_string(40 + modal_.range) +
+                                " (" + fixed3(r.min, 63) + "-" + fixed3(r.max, 63) + " rev/min)"),
                    false;
     }
     if (modal_.spindle_mode == 97 && p.has_s && modal_.s > m_.spindle_max)
-        warn(err::wSpeedClamped, "S" + fmt3(modal_.s) + " above the spindle maximum " + fmt3(m_.spindle_max) +
+        warn(err::wSpeedClamped, "S" + fixed3(modal_.s, 63) + " above the spindle maximum " + fixed3(m_.spindle_max, 63) +
                                      ": limited to it");
     if (p.spindle_mode == 96 && (modal_.spindle_dir != 3 && modal_.spindle_dir != 4))
         warn(err::wSpindleStopped, "G96 with the spindle stopped: the speed applies when it starts");

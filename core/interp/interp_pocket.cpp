@@ -82,13 +82,67 @@ std::vector<Piece> contour(int shape, double hx, double hy, double r, bool ccw, 
 }
 }  // namespace
 
-bool Interpreter::pocket(const Plan& p) {
-    if (modal_.plane != 17) return fail(885, "G45 pockets are machined in the XY plane (G17)"), false;
-    if (modal_.radcomp != 40) return fail(140, "G45 under radius compensation"), false;
+// One G45 pocket: its words, its shape at the tool centre, and its passes.
+struct Interpreter::Pocket45 {
     struct W {
         bool has = false;
         double v = 0;
-    } ex, ey, eb, P, Q, I, J, er, eg;
+    };
+
+    explicit Pocket45(Interpreter& interp) : in(interp) {}
+
+    Interpreter& in;
+    W ex, ey, eb, P, Q, I, J, er, eg;
+    double R = 0;        // tool radius
+    int shape = 0;       // 1 circle, 2 oblong, 3 rectangle
+    double hx = 0, hy = 0, rc = 0, half_small = 0;
+    bool rough = false, floor = false, wall = false;
+    double ei = 0, ej = 0;        // finishing feeds
+    double cx = 0, cy = 0;        // the centre
+    double zb = 0, top = 0, z = 0;
+    bool ccw = true;
+    double d = 0;  // lateral distance from the centre to the final contour
+
+    bool words(const Plan& p);
+    bool sizes();
+    bool feeds();
+    bool place(const Plan& p);
+    bool go(int g, double x, double y, double to_z, double feed);
+    bool run_contour(double off, double feed);
+    std::vector<double> passes(double reach) const;
+    std::vector<double> layers(double from, double to) const;
+    bool roughing();
+    bool wall_finish();
+    bool floor_finish();
+};
+
+bool Interpreter::pocket(const Plan& p) {
+    if (modal_.plane != 17) return fail(885, "G45 pockets are machined in the XY plane (G17)"), false;
+    if (modal_.radcomp != 40) return fail(140, "G45 under radius compensation"), false;
+    Pocket45 k{*this};
+    if (!k.words(p) || !k.sizes() || !k.feeds() || !k.place(p)) return false;
+
+    Modal saved = modal_;
+    modal_.feed_mode = 94;
+    modal_.feed_set = true;
+    k.z = prog_[Z];
+    // 1-2. To the centre, then to ER.
+    if (!k.go(0, 0, 0, k.z, 0)) return false;
+    if (k.er.has && !k.go(0, 0, 0, k.top, 0)) return false;
+    k.z = k.top;
+    if (k.rough && !k.roughing()) return false;
+    if (k.wall && !(k.rough && k.I.has) && !k.wall_finish()) return false;
+    if (k.floor && !k.floor_finish()) return false;
+    // 7. Lift 1 mm, back to the centre, up to ER.
+    if (!k.go(0, prog_[X] - k.cx, prog_[Y] - k.cy, k.z + 1, 0)) return false;
+    if (!k.go(0, 0, 0, k.z + 1, 0)) return false;
+    if (!k.go(0, 0, 0, k.top, 0)) return false;
+    modal_ = saved;
+    return true;
+}
+
+// The words of the block; the feeds EP EQ EI EJ are kept for the next G45.
+bool Interpreter::Pocket45::words(const Plan& p) {
     for (int i = 0; i < p.ncyc; ++i) {
         Addr a = p.cyc[i].a;
         double v = p.cyc[i].v;
@@ -96,161 +150,170 @@ bool Interpreter::pocket(const Plan& p) {
              : a == addr1('Q') ? &Q : a == addr1('I') ? &I : a == addr1('J') ? &J : a == addrE('R') ? &er
              : a == addrE('G') ? &eg : nullptr;
         if (w) *w = {true, v};
-        if (a == addrE('P')) pocket_ep_ = v;
-        if (a == addrE('Q')) pocket_eq_ = v;
-        if (a == addrE('I')) pocket_ei_ = v;
-        if (a == addrE('J')) pocket_ej_ = v;
+        if (a == addrE('P')) in.pocket_ep_ = v;
+        if (a == addrE('Q')) in.pocket_eq_ = v;
+        if (a == addrE('I')) in.pocket_ei_ = v;
+        if (a == addrE('J')) in.pocket_ej_ = v;
         if ((a == addr1('P') || a == addr1('Q') || a == addr1('I') || a == addr1('J')) && v < 0)
-            return fail(835, std::string(addr_name(a)) + " must be positive in G45"), false;
+            return in.fail(835, std::string(addr_name(a)) + " must be positive in G45"), false;
     }
-    const Corrector& c = corr_[size_t(modal_.d)];
-    const double R = c.r + c.dr;
-    if (modal_.d == 0 || R <= 0) return fail(898, "G45 needs a tool corrector with a radius (D0 active)"), false;
-    int shape;  // 1 circle, 2 oblong, 3 rectangle
-    double hx, hy, rc, half_small;
-    if (ey.has && !ex.has) return fail(889, "G45: EY without EX"), false;
+    return true;
+}
+
+// The shape from EX EY EB, reduced by the tool radius.
+bool Interpreter::Pocket45::sizes() {
+    const Corrector& c = in.corr_[size_t(in.modal_.d)];
+    R = c.r + c.dr;
+    if (in.modal_.d == 0 || R <= 0) return in.fail(898, "G45 needs a tool corrector with a radius (D0 active)"), false;
+    if (ey.has && !ex.has) return in.fail(889, "G45: EY without EX"), false;
     if (ex.has && ey.has) {
         shape = 3;
         if (eb.has && eb.v > 0 && eb.v < R)
-            return fail(886, "G45: the corner radius EB is smaller than the tool radius"), false;
+            return in.fail(886, "G45: the corner radius EB is smaller than the tool radius"), false;
         half_small = std::min(ex.v, ey.v) / 2;
         hx = ex.v / 2 - R, hy = ey.v / 2 - R, rc = eb.has ? std::max(eb.v - R, 0.0) : 0;
     } else if (ex.has && eb.has) {
         shape = 2;
-        if (ex.v < 2 * eb.v) return fail(897, "G45: the oblong is shorter than its width"), false;
+        if (ex.v < 2 * eb.v) return in.fail(897, "G45: the oblong is shorter than its width"), false;
         half_small = eb.v;
         hx = ex.v / 2 - eb.v, hy = 0, rc = eb.v - R;
     } else if (eb.has) {
         shape = 1;
-        if (eb.v <= R) return fail(886, "G45: the pocket radius EB is not larger than the tool radius"), false;
+        if (eb.v <= R) return in.fail(886, "G45: the pocket radius EB is not larger than the tool radius"), false;
         half_small = eb.v;
         hx = hy = 0, rc = eb.v - R;
     } else {
-        return fail(889, "G45 needs EB, EX EY or EX EB"), false;
+        return in.fail(889, "G45 needs EB, EX EY or EX EB"), false;
     }
-    if (half_small <= R) return fail(896, "G45: the pocket is not wider than the tool"), false;
-    if (Q.has && Q.v > 2 * R) return fail(887, "G45: the step-over Q is larger than the tool diameter"), false;
-    const bool rough = P.has && Q.has, floor = Q.has && I.has, wall = P.has && J.has;
-    if (!rough && !floor && !wall) return fail(889, "G45 needs P and Q, Q and I, or P and J"), false;
-    if (rough && pocket_ep_ <= 0) return fail(892, "G45: no axial feed EP programmed"), false;
-    if (rough && pocket_eq_ <= 0) return fail(893, "G45: no lateral feed EQ programmed"), false;
-    double ei = pocket_ei_ > 0 ? pocket_ei_ : pocket_ep_, ej = pocket_ej_ > 0 ? pocket_ej_ : pocket_eq_;
-    if (ei <= 0 || ej <= 0) return fail(892, "G45: no finishing feed (EI, EJ or EP, EQ)"), false;
+    if (half_small <= R) return in.fail(896, "G45: the pocket is not wider than the tool"), false;
+    return true;
+}
 
-    const int ax = Z;
-    // The centre: X Y of the block, else the current point.
-    double cx = p.axis[X] ? (p.inc[X] ? prog_[X] + p.val[X] : p.val[X]) : prog_[X];
-    double cy = p.axis[Y] ? (p.inc[Y] ? prog_[Y] + p.val[Y] : p.val[Y]) : prog_[Y];
-    if (!p.axis[Z]) return fail(882, "G45: the pocket bottom Z is not programmed"), false;
-    double zb = p.inc[Z] ? prog_[Z] + p.val[Z] : p.val[Z];
-    double top = er.has ? er.v : prog_[Z];
-    if (er.has && std::fabs(er.v - zb) < 1e-9) return fail(891, "G45: ER is the pocket bottom"), false;
-    const bool ccw = !(eg.has && std::lround(eg.v) == 2);
-    const double d = half_small - R;  // lateral distance from the centre to the final contour
+// Which operations P Q I J ask for, and their feeds.
+bool Interpreter::Pocket45::feeds() {
+    if (Q.has && Q.v > 2 * R) return in.fail(887, "G45: the step-over Q is larger than the tool diameter"), false;
+    rough = P.has && Q.has, floor = Q.has && I.has, wall = P.has && J.has;
+    if (!rough && !floor && !wall) return in.fail(889, "G45 needs P and Q, Q and I, or P and J"), false;
+    if (rough && in.pocket_ep_ <= 0) return in.fail(892, "G45: no axial feed EP programmed"), false;
+    if (rough && in.pocket_eq_ <= 0) return in.fail(893, "G45: no lateral feed EQ programmed"), false;
+    ei = in.pocket_ei_ > 0 ? in.pocket_ei_ : in.pocket_ep_, ej = in.pocket_ej_ > 0 ? in.pocket_ej_ : in.pocket_eq_;
+    if (ei <= 0 || ej <= 0) return in.fail(892, "G45: no finishing feed (EI, EJ or EP, EQ)"), false;
+    return true;
+}
 
-    Modal saved = modal_;
-    modal_.feed_mode = 94;
-    modal_.feed_set = true;
-    auto go = [&](int g, double x, double y, double z, double feed) {
-        Axes t = prog_;
-        t[X] = cx + x, t[Y] = cy + y, t[size_t(ax)] = z;
-        modal_.feed = feed;
-        return cycle_move(g, t);
-    };
-    double z = prog_[size_t(ax)];
-    auto run_contour = [&](double off, double feed) {
-        double sx, sy;
-        auto pcs = contour(shape, std::max(hx - off, 0.0), std::max(hy - off, 0.0), std::max(rc - off, 0.0), ccw, sx, sy);
-        if (shape == 1) {
-            pcs = contour(1, 0, 0, d - off, ccw, sx, sy);
-        } else if (shape == 2) {
-            pcs = contour(2, hx, 0, d - off, ccw, sx, sy);
-        }
-        if (!go(1, sx, sy, z, feed)) return false;
-        modal_.feed = feed;
-        for (const Piece& pc : pcs) {
-            Axes t = prog_;
-            t[X] = cx + pc.x, t[Y] = cy + pc.y;
-            if (!pc.arc) {
-                if (!cycle_move(1, t)) return false;
-            } else if (!emit_arc(pc.sweep > 0 ? 3 : 2, t, X, Y, cx + pc.cx, cy + pc.cy, pc.sweep,
-                                 std::hypot(prog_[X] - cx - pc.cx, prog_[Y] - cy - pc.cy),
-                                 std::hypot(pc.x - pc.cx, pc.y - pc.cy), -1)) {
-                return false;
-            }
-        }
-        return true;
-    };
-    // Offsets (inward from the final contour) of the lateral passes out to `reach`.
-    auto passes = [&](double reach) {
-        std::vector<double> at;  // distances from the centre
-        if (reach <= 1e-9) return at;
-        double start = 0;
-        if (Q.v > R && shape != 1) {
-            at.push_back(std::min(R / 2, reach));
-            start = at.back();
-        }
-        double rest = reach - start;
-        if (rest > 1e-9) {
-            int n = std::max(1, int(std::ceil(rest / Q.v - 1e-9)));
-            double q = ceil_um(rest / n);
-            for (int k = 1; k < n; ++k) at.push_back(start + k * q);
-            at.push_back(reach);
-        }
-        return at;
-    };
-    auto layers = [&](double from, double to) {
-        std::vector<double> zs;
-        double depth = from - to;
-        if (depth <= 1e-9) return zs;
-        int n = std::max(1, int(std::ceil(depth / P.v - 1e-9)));
-        double q = ceil_um(depth / n);
-        for (int k = 1; k < n; ++k) zs.push_back(from - k * q);
-        zs.push_back(to);
-        return zs;
-    };
+// The centre (X Y of the block, else the current point), the bottom and the top.
+bool Interpreter::Pocket45::place(const Plan& p) {
+    const Axes& prog = in.prog_;
+    cx = p.axis[X] ? (p.inc[X] ? prog[X] + p.val[X] : p.val[X]) : prog[X];
+    cy = p.axis[Y] ? (p.inc[Y] ? prog[Y] + p.val[Y] : p.val[Y]) : prog[Y];
+    if (!p.axis[Z]) return in.fail(882, "G45: the pocket bottom Z is not programmed"), false;
+    zb = p.inc[Z] ? prog[Z] + p.val[Z] : p.val[Z];
+    top = er.has ? er.v : prog[Z];
+    if (er.has && std::fabs(er.v - zb) < 1e-9) return in.fail(891, "G45: ER is the pocket bottom"), false;
+    ccw = !(eg.has && std::lround(eg.v) == 2);
+    d = half_small - R;
+    return true;
+}
 
-    // 1-2. To the centre, then to ER.
-    if (!go(0, 0, 0, z, 0)) return false;
-    if (er.has && !go(0, 0, 0, top, 0)) return false;
-    z = top;
+bool Interpreter::Pocket45::go(int g, double x, double y, double to_z, double feed) {
+    Axes t = in.prog_;
+    t[X] = cx + x, t[Y] = cy + y, t[Z] = to_z;
+    in.modal_.feed = feed;
+    return in.cycle_move(g, t);
+}
+
+// One contour `off` inside the final one, from its start point.
+bool Interpreter::Pocket45::run_contour(double off, double feed) {
+    double sx, sy;
+    auto pcs = contour(shape, std::max(hx - off, 0.0), std::max(hy - off, 0.0), std::max(rc - off, 0.0), ccw, sx, sy);
+    if (shape == 1) {
+        pcs = contour(1, 0, 0, d - off, ccw, sx, sy);
+    } else if (shape == 2) {
+        pcs = contour(2, hx, 0, d - off, ccw, sx, sy);
+    }
+    if (!go(1, sx, sy, z, feed)) return false;
+    in.modal_.feed = feed;
+    const Axes& prog = in.prog_;
+    for (const Piece& pc : pcs) {
+        Axes t = prog;
+        t[X] = cx + pc.x, t[Y] = cy + pc.y;
+        if (!pc.arc) {
+            if (!in.cycle_move(1, t)) return false;
+        } else if (!in.emit_arc(pc.sweep > 0 ? 3 : 2, t, X, Y, cx + pc.cx, cy + pc.cy, pc.sweep,
+                                std::hypot(prog[X] - cx - pc.cx, prog[Y] - cy - pc.cy),
+                                std::hypot(pc.x - pc.cx, pc.y - pc.cy), -1)) {
+            return false;
+        }
+    }
+    return true;
+}
+
+// Offsets (inward from the final contour) of the lateral passes out to `reach`.
+std::vector<double> Interpreter::Pocket45::passes(double reach) const {
+    std::vector<double> at;  // distances from the centre
+    if (reach <= 1e-9) return at;
+    double start = 0;
+    if (Q.v > R && shape != 1) {
+        at.push_back(std::min(R / 2, reach));
+        start = at.back();
+    }
+    double rest = reach - start;
+    if (rest > 1e-9) {
+        int n = std::max(1, int(std::ceil(rest / Q.v - 1e-9)));
+        double q = ceil_um(rest / n);
+        for (int k = 1; k < n; ++k) at.push_back(start + k * q);
+        at.push_back(reach);
+    }
+    return at;
+}
+
+// The levels of the axial steps P from `from` down to `to`.
+std::vector<double> Interpreter::Pocket45::layers(double from, double to) const {
+    std::vector<double> zs;
+    double depth = from - to;
+    if (depth <= 1e-9) return zs;
+    int n = std::max(1, int(std::ceil(depth / P.v - 1e-9)));
+    double q = ceil_um(depth / n);
+    for (int k = 1; k < n; ++k) zs.push_back(from - k * q);
+    zs.push_back(to);
+    return zs;
+}
+
+bool Interpreter::Pocket45::roughing() {
     const double rough_bottom = (floor ? zb + I.v : zb);
     const double rough_reach = d - (wall || J.has ? J.v : 0);
-    if (rough) {
-        for (double lz : layers(top, rough_bottom)) {
-            if (!go(0, 0, 0, z, 0)) return false;  // back to the centre at the current level
-            z = lz;
-            if (!go(1, 0, 0, z, pocket_ep_)) return false;
-            for (double off : passes(rough_reach))
-                if (!run_contour(d - off, pocket_eq_)) return false;
-            if (wall && I.has && !run_contour(0, ej)) return false;  // P Q I J: chained per layer
-        }
+    for (double lz : layers(top, rough_bottom)) {
+        if (!go(0, 0, 0, z, 0)) return false;  // back to the centre at the current level
+        z = lz;
+        if (!go(1, 0, 0, z, in.pocket_ep_)) return false;
+        for (double off : passes(rough_reach))
+            if (!run_contour(d - off, in.pocket_eq_)) return false;
+        if (wall && I.has && !run_contour(0, ej)) return false;  // P Q I J: chained per layer
     }
-    if (wall && !(rough && I.has)) {
-        // Wall finishing on the final contour, in axial steps P down to the bottom
-        // (or I above it when the floor is not finished in this call).
-        double wall_bottom = (I.has && !floor) ? zb + I.v : zb;
-        if (!go(0, 0, 0, z, 0)) return false;
-        for (double lz : layers(top, wall_bottom)) {
-            z = lz;
-            if (!go(1, 0, 0, z, ei)) return false;
-            if (!run_contour(0, ej)) return false;
-            if (!go(0, 0, 0, z, 0)) return false;
-        }
-    }
-    if (floor) {
-        if (!go(0, 0, 0, z, 0)) return false;
-        z = zb;
+    return true;
+}
+
+// Wall finishing on the final contour, in axial steps P down to the bottom (or
+// I above it when the floor is not finished in this call).
+bool Interpreter::Pocket45::wall_finish() {
+    double wall_bottom = (I.has && !floor) ? zb + I.v : zb;
+    if (!go(0, 0, 0, z, 0)) return false;
+    for (double lz : layers(top, wall_bottom)) {
+        z = lz;
         if (!go(1, 0, 0, z, ei)) return false;
-        double reach = (J.has && !wall) ? d - J.v : d;
-        for (double off : passes(reach))
-            if (!run_contour(d - off, ej)) return false;
+        if (!run_contour(0, ej)) return false;
+        if (!go(0, 0, 0, z, 0)) return false;
     }
-    // 7. Lift 1 mm, back to the centre, up to ER.
-    if (!go(0, prog_[X] - cx, prog_[Y] - cy, z + 1, 0)) return false;
-    if (!go(0, 0, 0, z + 1, 0)) return false;
-    if (!go(0, 0, 0, top, 0)) return false;
-    modal_ = saved;
+    return true;
+}
+
+bool Interpreter::Pocket45::floor_finish() {
+    if (!go(0, 0, 0, z, 0)) return false;
+    z = zb;
+    if (!go(1, 0, 0, z, ei)) return false;
+    double reach = (J.has && !wall) ? d - J.v : d;
+    for (double off : passes(reach))
+        if (!run_contour(d - off, ej)) return false;
     return true;
 }
 

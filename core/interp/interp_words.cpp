@@ -1,11 +1,12 @@
 // Block decoding: words to a Plan (which G owns which word, units, lathe
-// diameters), modal changes, spindle, and the M functions before and after the
-// motion (turning.md §1.4, §1.7, §5; milling.md §1, §2.4).
+// diameters): the value of a word, the G words and the default meaning of each
+// address (turning.md §1.4, §1.7; milling.md §1). The words a G function owns
+// are read in interp_args.cpp.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <cmath>
-#include <cstdio>
 
-#include "core/interp/plan.hpp"
+#include "core/interp/decode.hpp"
+#include "core/numfmt.hpp"
 
 namespace pupitre {
 
@@ -19,7 +20,8 @@ struct AddrFormat {
     bool is_signed;
 };
 
-AddrFormat format_of(Addr a) {
+// Inlined: word_value runs for every word, its fast path needs only this.
+[[gnu::always_inline]] inline AddrFormat format_of(Addr a) {
     if (a < 26) {
         switch (char('A' + a)) {
             case 'X': case 'Y': case 'Z': case 'U': case 'V': case 'W':
@@ -62,12 +64,6 @@ double e_scale(Fmt f) {
 
 double round_to(double v, double step) { return std::round(v / step) * step; }
 
-bool is_axis_addr(Addr a, int& axis) {
-    if (a >= 26) return false;
-    axis = axis_of(char('A' + a));
-    return axis >= 0;
-}
-
 }  // namespace
 
 bool Interpreter::word_value(const Word& w, double& out, int* int_out) {
@@ -83,7 +79,6 @@ bool Interpreter::word_value(const Word& w, double& out, int* int_out) {
             return true;
         }
     }
-    std::string why;
     switch (v.kind) {
         case Operand::Blank:
         case Operand::SignOnly:
@@ -102,36 +97,9 @@ bool Interpreter::word_value(const Word& w, double& out, int* int_out) {
             break;
         case Operand::LVar:
         case Operand::EParam:
-        case Operand::EIndirect: {
-            double raw;
-            if (int rc = eval_operand(v, l_, *this, raw, why)) {
-                fail(rc, why, w.col);
-                return false;
-            }
-            if (v.kind == Operand::LVar) {
-                switch (f.fmt) {
-                    case Fmt::length: raw = round_to(raw, 1e-3); break;
-                    case Fmt::angle: raw = round_to(raw, 1e-4); break;
-                    case Fmt::integer: case Fmt::speed: case Fmt::label: case Fmt::prog:
-                        // S T D M from a variable: rounded to an integer (program-flow Q15).
-                        if (f.fmt == Fmt::speed) s_raw_ = raw;  // warning 1113
-                        raw = std::round(raw);
-                        break;
-                    default: break;
-                }
-            } else {
-                raw *= e_scale(f.fmt);
-            }
-            if (!f.is_signed && raw < 0) {
-                char num[32];
-                std::snprintf(num, sizeof num, "%.3f", raw);
-                fail(92, std::string("negative value ") + num + " for " +
-                             std::string(addr_name(w.addr)) + ", which takes none", w.col);
-                return false;
-            }
-            out = raw;
+        case Operand::EIndirect:
+            if (!variable_value(w, out)) return false;
             break;
-        }
     }
     if (int_out) {
         if (out != std::floor(out) || std::fabs(out) > 99999) {
@@ -144,18 +112,60 @@ bool Interpreter::word_value(const Word& w, double& out, int* int_out) {
     return true;
 }
 
+// A word whose value is an L or E variable: L values are rounded to the
+// address's resolution, E values are in its internal unit.
+bool Interpreter::variable_value(const Word& w, double& out) {
+    AddrFormat f = format_of(w.addr);
+    const Operand& v = w.v;
+    double raw;
+    std::string why;
+    if (int rc = eval_operand(v, l_, *this, raw, why)) {
+        fail(rc, why, w.col);
+        return false;
+    }
+    if (v.kind == Operand::LVar) {
+        switch (f.fmt) {
+            case Fmt::length: raw = round_to(raw, 1e-3); break;
+            case Fmt::angle: raw = round_to(raw, 1e-4); break;
+            case Fmt::integer: case Fmt::speed: case Fmt::label: case Fmt::prog:
+                // S T D M from a variable: rounded to an integer (program-flow Q15).
+                if (f.fmt == Fmt::speed) s_raw_ = raw;  // warning 1113
+                raw = std::round(raw);
+                break;
+            default: break;
+        }
+    } else {
+        raw *= e_scale(f.fmt);
+    }
+    if (!f.is_signed && raw < 0) {
+        fail(92, "negative value " + fixed3(raw) + " for " + std::string(addr_name(w.addr)) +
+                     ", which takes none", w.col);
+        return false;
+    }
+    out = raw;
+    return true;
+}
+
 // Words are scanned left to right. A G function with arguments owns the words that
 // follow it while they are in its argument set (turning.md §1.7.2 parser model);
 // the other words take their default meaning. G90/G91 act positionally.
 bool Interpreter::decode(const Block& b, Plan& p) {
-    const bool lathe = m_.lathe;
-    const bool diam = lathe && m_.x_diameter && !modal_.radius_x;
+    Decoder d(*this, p, b);
+    size_t first = (b.n >= 0 && !b.words.empty() && b.words[0].addr == addr1('N')) ? 1 : 0;
+    for (size_t i = first; i < b.words.size(); ++i)
+        if (!d.word(b.words[i])) return false;
+    return d.finish();
+}
+
+Interpreter::Decoder::Decoder(Interpreter& interp, Plan& plan, const Block& b)
+    : in(interp), p(plan), m(in.m_), lathe(m.lathe), diam(lathe && m.x_diameter && !in.modal_.radius_x),
+      inc(in.modal_.incremental) {
     // G70/G71 written in the block set the unit of all its lengths.
-    bool inch = modal_.inch;
+    bool inch = in.modal_.inch;
     for (const Word& w : b.words)
         if (w.addr == addr1('G') && w.v.kind == Operand::Number && (w.v.num == 70 || w.v.num == 71))
             inch = w.v.num == 70;
-    const double unit = inch ? 25.4 : 1.0;
+    unit = inch ? 25.4 : 1.0;
     // Is a drilling cycle active for this block (written here, or modal and not
     // cancelled here)? Its words (ER, P, EF…) then have their cycle meaning.
     int cycle_code = -1;
@@ -164,498 +174,350 @@ bool Interpreter::decode(const Block& b, Plan& p) {
             int g = int(w.v.num);
             if (g == 80 || (g >= 81 && g <= 89) || g == 31) cycle_code = g;
         }
+    const int modal_cycle = in.modal_.cycle;
     p.cycle_words = cycle_code == 31 || (cycle_code >= 81 && cycle_code <= 89) ||
-                    (cycle_code < 0 && modal_.cycle >= 81 && modal_.cycle <= 89);
-    auto cyc_word = [&](const Word& w) {
-        double cv;
-        if (!word_value(w, cv)) return false;
-        if (p.ncyc >= 16) {
-            fail(3, "too many cycle words in one block", w.col);
-            return false;
-        }
-        p.cyc[p.ncyc++] = {w.addr, w.addr == addrE('R') || w.addr == addrE('H') ? cv * unit : cv};
-        return true;
-    };
-    bool inc = modal_.incremental;
-    const GCode* owner = nullptr;
-    int owner_g = -1;
-    std::bitset<kAddrCount> seen;
-    size_t first = (b.n >= 0 && !b.words.empty() && b.words[0].addr == addr1('N')) ? 1 : 0;
-    bool g52_seen = false, axis_seen = false;
-    int pqr_sign_col = 0;  // a P± Q± R± met before any G16 (turning.md §1.7.2: error 3)
-    int coded_modal = 0, coded_nonmodal = 0;
+                    (cycle_code < 0 && modal_cycle >= 81 && modal_cycle <= 89);
+}
 
-    for (size_t i = first; i < b.words.size(); ++i) {
-        const Word& w = b.words[i];
-        col_ = w.col;
-        if (w.addr == addr1('G')) {
-            int g;
-            double gv;
-            if (!word_value(w, gv, &g)) return false;
-            const GCode* gc = find_g(g);
-            if (!gc || !(gc->machines & (lathe ? kLathe : kMill))) {
-                std::string hint;
-                if (gc && !lathe) hint = " (a lathe function: --machine lathe?)";
-                if (gc && lathe) hint = " (a machining-centre function: --machine mill?)";
-                fail(2, "G" + std::to_string(g) + " is not a function of the NUM " +
-                            (lathe ? "lathe" : "machining centre") + hint, w.col);
-                return false;
-            }
-            if ((gc->starred & (lathe ? kLathe : kMill)) && m_.model == 1020) {
-                fail(2, "G" + std::to_string(g) + " needs a NUM 1040 or 1060", w.col);
-                return false;
-            }
-            if (gc->support == Support::option) {
-                fail(4, "G" + std::to_string(g) + " (" + std::string(gc->text) +
-                            ") is an option this machine does not have", w.col);
-                return false;
-            }
-            if (gc->support == Support::later && p.unsupported < 0) p.unsupported = g;
-            p.g.set(size_t(g));
-            switch (gc->group) {
-                case Group::motion: p.motion = g; break;
-                case Group::dist: p.dist = g; inc = (g == 91); break;
-                case Group::plane: p.plane = g; break;
-                case Group::radcomp: p.radcomp = g; break;
-                case Group::prefdec: p.prefdec = g; break;
-                case Group::feed: p.feed_mode = g; break;
-                case Group::spindle: p.spindle_mode = g; break;
-                case Group::units: p.units = g; break;
-                case Group::scale: p.scale = g; break;
-                case Group::cycle: p.cycle = g; break;
-                default: break;
-            }
-            if (g == 52) {
-                if (axis_seen) {
-                    fail(3, "G52 must come before the axis words of the block", w.col);
-                    return false;
-                }
-                g52_seen = true;
-            }
-            if (g == 77) p.g77_level = w.glevel;
-            if (g == 77 && w.glevel && m_.model == 1020) {
-                fail(4, "G77 -i needs a NUM 1040 or 1060", w.col);
-                return false;
-            }
-            if (g == 79 && w.gsign && m_.model == 1020) {
-                fail(4, std::string("G79") + w.gsign + " needs a NUM 1040 or 1060 (000:560)", w.col);
-                return false;
-            }
-            if (g == 79 && w.gsign) p.g79_sign = w.gsign;
-            if (g == 76) p.g76_sign = w.gsign;
-            owner = gc->args.empty() ? nullptr : gc;
-            owner_g = g;
-            continue;
-        }
-        bool owned = owner && g_owns(*owner, w.addr);
-        if (!owned) {
-            owner = nullptr;
-            owner_g = -1;
-        }
-        char letter = w.addr < 26 ? char('A' + w.addr) : 0;
-        double v = 0;
-        int axis = -1;
-        if (owned) {
-            switch (owner_g) {
-                case 4:  // G4 F: dwell seconds
-                    if (!word_value(w, v)) return false;
-                    if (v < 0.01 || v > 99.99) {
-                        fail(1, "dwell must be 0.01 to 99.99 s", w.col);
-                        return false;
-                    }
-                    p.dwell = v;
-                    continue;
-                case 16:
-                    if (w.v.kind != Operand::SignOnly) {
-                        fail(2, "G16 takes P, Q or R followed by a sign only (G16 R+)", w.col);
-                        return false;
-                    }
-                    p.g16_axis = letter == 'P' ? X : letter == 'Q' ? Y : Z;
-                    p.g16_neg = w.v.neg;
-                    continue;
-                case 51:
-                    if (!is_axis_addr(w.addr, axis) || w.v.kind != Operand::SignOnly) {
-                        fail(3, "G51 takes axis letters with a sign only (G51 X- Y+)", w.col);
-                        return false;
-                    }
-                    (w.v.neg ? p.g51_on : p.g51_off).set(size_t(axis));
-                    continue;
-                case 59:
-                    if (!word_value(w, v)) return false;
-                    if (is_axis_addr(w.addr, axis)) {
-                        if (!m_.has(axis)) {
-                            fail(1, std::string("axis ") + letter + " is not on this machine", w.col);
-                            return false;
-                        }
-                        // G52/G59 X on a lathe is a radius (turning.md §2.8).
-                        p.g59_axis.set(size_t(axis));
-                        p.g59_val[size_t(axis)] = is_rotary(axis) ? v : v * unit;
-                    } else if (w.addr == addrE('D')) {
-                        p.g59_ed = true;
-                        p.g59_ed_val = v;
-                    } else {
-                        int k = letter - 'I';
-                        p.g59_ijk.set(size_t(k));
-                        p.g59_ijk_val[k] = (k == 0 && diam) ? v * unit / 2 : v * unit;
-                    }
-                    continue;
-                case 92:
-                    if (!word_value(w, v)) return false;
-                    if (letter == 'S') {
-                        p.g92_s = true;
-                        p.g92_s_val = v;
-                    } else if (letter == 'R') {
-                        p.g92_r = true;
-                        p.g92_r_val = v * unit;
-                    } else if (is_axis_addr(w.addr, axis)) {
-                        if (!m_.has(axis)) {
-                            fail(1, std::string("axis ") + letter + " is not on this machine", w.col);
-                            return false;
-                        }
-                        p.g92_axis.set(size_t(axis));
-                        p.g92_val[size_t(axis)] =
-                            is_rotary(axis) ? v : (axis == X && diam ? v * unit / 2 : v * unit);
-                    }
-                    continue;
-                case 96:
-                    if (!word_value(w, v)) return false;
-                    if (letter == 'X') {
-                        p.g96_x = true;
-                        p.g96_x_val = diam ? v * unit / 2 : v * unit;
-                    } else {
-                        p.g96_s = true;
-                        p.has_s = true;
-                        p.s = v;
-                    }
-                    continue;
-                case 97:
-                    if (!word_value(w, v)) return false;
-                    p.g97_s = true;
-                    p.has_s = true;
-                    p.s = v;
-                    continue;
-                case 93: case 94: case 95:
-                    if (!word_value(w, v)) return false;
-                    p.g94_f = true;
-                    p.has_f = true;
-                    p.f = v;
-                    continue;
-                case 77: {
-                    int iv;
-                    if (letter == 'N') {
-                        if (!word_value(w, v, &iv)) return false;
-                        if (p.g77_nn >= 2) {
-                            fail(3, "G77 takes at most two N labels", w.col);
-                            return false;
-                        }
-                        p.g77_n[p.g77_nn++] = iv;
-                    } else if (letter == 'H') {
-                        if (!word_value(w, v, &iv)) return false;
-                        p.g77_h = iv;
-                    } else if (letter == 'S') {
-                        if (!word_value(w, v, &iv)) return false;
-                        if (iv < 1 || iv > 100) {
-                            fail(1, "G77 S repeat count must be 1 to 100", w.col);
-                            return false;
-                        }
-                        p.g77_s = iv;
-                    } else {  // P: PROFIL contour
-                        fail(4, "G77 P (PROFIL contour) is an option this machine does not have", w.col);
-                        return false;
-                    }
-                    continue;
-                }
-                case 79: case 75: case 10: {
-                    int iv;
-                    if (letter != 'N') continue;  // G10 EF: feed limit after interrupt, unused
-                    if (!word_value(w, v, &iv)) return false;
-                    if (owner_g == 79) p.g79_n = iv;
-                    else if (owner_g == 75) p.g75_n = iv;
-                    else p.g10_n = iv;
-                    continue;
-                }
-                case 76: {
-                    int iv;
-                    if (!word_value(w, v, &iv)) return false;
-                    if (letter == 'H') {
-                        p.g76_h = iv;
-                    } else if (p.g76_nn < 2) {
-                        p.g76_n[p.g76_nn++] = iv;
-                    } else {
-                        fail(3, "G76 takes at most two N labels", w.col);
-                        return false;
-                    }
-                    continue;
-                }
-                case 33: case 38: case 63: case 64: case 65: case 66:
-                    if (is_axis_addr(w.addr, axis)) break;  // end points: below
-                    if (letter == 'N') {
-                        int iv;
-                        if (!word_value(w, v, &iv)) return false;
-                        if (p.spl_nn >= 2) {
-                            fail(3, "a cycle takes two N labels", w.col);
-                            return false;
-                        }
-                        p.spl_n[p.spl_nn++] = iv;
-                        continue;
-                    }
-                    if (w.addr == addrE('P') && owner_g != 66) {
-                        fail(4, "EP (PROFIL contour) is an option this machine does not have", w.col);
-                        return false;
-                    }
-                    if (!cyc_word(w)) return false;
-                    continue;
-                case 6: case 48: case 49: {
-                    int iv;
-                    if (!word_value(w, v, &iv)) return false;
-                    if (w.addr == addrN('C')) p.spl_nc = iv;
-                    else if (letter == 'H') p.spl_h = iv;
-                    else if (letter == 'N' && p.spl_nn < 2) p.spl_n[p.spl_nn++] = iv;
-                    else {
-                        fail(3, "G48 takes NC, H and two N labels", w.col);
-                        return false;
-                    }
-                    continue;
-                }
-                case 23:
-                    break;  // G23 X.. Z.. I.. K..: default meanings below
-                case 31: case 45: case 81: case 82: case 83: case 84: case 85: case 86: case 87: case 88: case 89:
-                    if (is_axis_addr(w.addr, axis)) break;  // positions and bottom: below
-                    if (owner_g == 31 && (letter == 'I' || letter == 'J')) {
-                        if (!cyc_word(w)) return false;
-                        continue;
-                    }
-                    if (!cyc_word(w)) return false;
-                    continue;
-                case 46:  // G46 NU.. (milling.md §7.2): NR+ / NR- keep their sign only
-                    if (is_axis_addr(w.addr, axis)) break;
-                    if (w.addr == addrN('R')) {
-                        if (w.v.kind != Operand::SignOnly && w.v.kind != Operand::Blank) {
-                            fail(267, "NR takes a sign only (NR+ climb, NR- conventional)", w.col);
-                            return false;
-                        }
-                        if (p.ncyc >= 16) {
-                            fail(3, "too many cycle words in one block", w.col);
-                            return false;
-                        }
-                        p.cyc[p.ncyc++] = {w.addr, w.v.neg ? -1.0 : 1.0};
-                        continue;
-                    }
-                    if (!cyc_word(w)) return false;
-                    continue;
-                case 78: {
-                    // One axis group: G78 P1 synchronises with itself. Each digit of P
-                    // names a group (errors.md §3.1: G78 P12345, G78 P3 -> 78).
-                    int iv;
-                    if (!word_value(w, v, &iv)) return false;
-                    if (iv != 1) {
-                        fail(78, "G78 P" + std::to_string(iv) + ": this machine has one axis group (P1)", w.col);
-                        return false;
-                    }
-                    p.g78_p = true;
-                    continue;
-                }
-                case 29:  // the surface normal P Q R (milling.md §4.6)
-                    if (!word_value(w, v)) return false;
-                    p.g29_has.set(size_t(letter - 'P'));
-                    p.g29_n[letter - 'P'] = v;
-                    continue;
-                default:
-                    // Arguments of functions not run yet (cycles, splines…).
-                    continue;
-            }
-        }
-        // In G29 every block gives the surface normal with P Q R.
-        if ((letter == 'P' || letter == 'Q' || letter == 'R') && w.v.kind != Operand::SignOnly &&
-            (p.radcomp == 29 || (p.radcomp < 0 && modal_.radcomp == 29))) {
-            if (!word_value(w, v)) return false;
-            p.g29_has.set(size_t(letter - 'P'));
-            p.g29_n[letter - 'P'] = v;
-            continue;
-        }
-        // Default meanings.
-        if (seen.test(w.addr) && w.addr != addr1('M') && w.addr != addr1('G')) {
-            fail(3, std::string(addr_name(w.addr)) + " written twice in the block", w.col);
-            return false;
-        }
-        seen.set(w.addr);
-        if (is_axis_addr(w.addr, axis)) {
-            if (!m_.has(axis)) {
-                fail(1, std::string("axis ") + letter + " is not on this machine (" + m_.name + ")",
-                     w.col);
-                return false;
-            }
-            if (!word_value(w, v)) return false;
-            axis_seen = true;
-            p.axis.set(size_t(axis));
-            if (inc && !g52_seen) p.inc.set(size_t(axis));
-            if (is_rotary(axis)) {
-                p.val[size_t(axis)] = v;
-            } else if (axis == X && lathe) {
-                // Absolute X is a diameter; incremental X and G52 X are radii (DESIGN §3).
-                bool as_diam = diam && !inc && !g52_seen;
-                p.val[size_t(axis)] = as_diam ? v * unit / 2 : v * unit;
-            } else {
-                p.val[size_t(axis)] = v * unit;
-            }
-            continue;
-        }
-        switch (letter) {
-            case 'I': case 'J': case 'K': {
-                if (p.g[23] && !owned) {
-                    fail(3, "the arguments of G23 must not be separated by another address", w.col);
-                    return false;
-                }
-                if (!word_value(w, v)) return false;
-                int k = letter - 'I';
-                p.ijk.set(size_t(k));
-                if (inc) p.ijk_inc.set(size_t(k));
-                p.ijk_val[k] = (k == 0 && diam && !inc) ? v * unit / 2 : v * unit;
-                continue;
-            }
-            case 'R':
-                if (w.v.kind == Operand::SignOnly) {
-                    p.r_sign = w.v.neg ? -1 : 1;
-                    if (!pqr_sign_col) pqr_sign_col = w.col;
-                    continue;
-                }
-                if (!word_value(w, v)) return false;
-                p.has_r = true;
-                p.r = v * unit;
-                continue;
-            case 'F':
-                if (!word_value(w, v)) return false;
-                p.has_f = true;
-                p.f = v;
-                continue;
-            case 'S':
-                if (!word_value(w, v)) return false;
-                p.has_s = true;
-                p.s = v;
-                continue;
-            case 'T': {
-                int iv;
-                if (!word_value(w, v, &iv)) return false;
-                if (iv > m_.tools) {
-                    fail(1, "tool T" + std::to_string(iv) + " does not exist (the turret has " +
-                                std::to_string(m_.tools) + " stations)", w.col);
-                    return false;
-                }
-                p.has_t = true;
-                p.t = iv;
-                continue;
-            }
-            case 'D': {
-                int iv;
-                if (!word_value(w, v, &iv)) return false;
-                if (iv > m_.correctors) {
-                    fail(w.v.kind == Operand::Number ? 8 : 92,
-                         "corrector D" + std::to_string(iv) + " above D" + std::to_string(m_.correctors),
-                         w.col);
-                    return false;
-                }
-                p.has_d = true;
-                p.d = iv;
-                continue;
-            }
-            case 'M': {
-                int iv;
-                if (!word_value(w, v, &iv)) return false;
-                if (p.nm >= 8) {
-                    fail(3, "too many M functions in one block", w.col);
-                    return false;
-                }
-                // At most one modal and one non-modal coded M per block (004:1063).
-                if ((iv >= 200 && iv <= 899 && ++coded_modal > 1) ||
-                    (iv >= 100 && iv <= 199 && ++coded_nonmodal > 1)) {
-                    fail(3, "two coded M functions of the same kind in one block (M" + std::to_string(iv) + ")",
-                         w.col);
-                    return false;
-                }
-                p.m[p.nm++] = iv;
-                continue;
-            }
-            default:
-                break;
-        }
-        if (w.addr == addrE('D')) {
-            if (!word_value(w, v)) return false;
-            p.has_ed = true;
-            p.ed = v;
-            continue;
-        }
-        if (w.addr == addrE('G')) {
-            if (!word_value(w, v)) return false;
-            if (v < 1 || v > 100) {
-                fail(1, "EG (acceleration) must be 1 to 100 %", w.col);
-                return false;
-            }
-            p.has_eg = true;
-            p.eg = v;
-            continue;
-        }
-        if (w.addr == addrE('C')) {
-            if (!word_value(w, v)) return false;
-            p.has_ec = true;
-            p.ec = v;
-            continue;
-        }
-        if (w.addr == addrE('M')) {  // EM+/EM-: part extremes for the graphic
-            p.em = true;
-            continue;
-        }
-        if (p.cycle_words && (letter == 'P' || letter == 'Q' || w.addr == addrE('R') || w.addr == addrE('H') ||
-                              w.addr == addrE('F') || w.addr == addrE('S') || w.addr == addrE('P') ||
-                              w.addr == addrE('C') || w.addr == addrE('A') || w.addr == addrE('K'))) {
-            if (!cyc_word(w)) return false;
-            continue;
-        }
-        if (w.addr == addrE('A') || w.addr == addrE('B') || w.addr == addrE('S') ||
-            w.addr == addrE('T') || w.addr == kAddrEsign) {
-            // PGP: ES± ET± carry the discriminant as their sign (pgp.md §2).
-            p.pgp = true;
-            if (w.addr == addrE('A')) {
-                if (!word_value(w, v)) return false;
-                p.has_ea = true;
-                p.ea = v;
-            } else if (w.addr == addrE('B')) {
-                if (!word_value(w, v)) return false;
-                p.has_eb = true;
-                p.eb = v * unit;
-                p.eb_unsigned = !w.v.has_sign;
-            } else {
-                if (w.addr == addrE('S')) p.link = p.link == 'T' ? 'X' : 'S';
-                if (w.addr == addrE('T')) p.link = p.link == 'S' ? 'X' : 'T';
-                if (w.v.has_sign) p.disc = w.v.neg ? -1 : 1;
-                if (w.v.kind == Operand::Number || w.v.kind == Operand::LVar) {
-                    fail(w.addr == kAddrEsign ? 3 : 110, std::string(addr_name(w.addr)) + " takes a sign only", w.col);
-                    return false;
-                }
-            }
-            continue;
-        }
-        if ((letter == 'P' || letter == 'Q') && w.v.kind == Operand::SignOnly) {
-            if (!pqr_sign_col) pqr_sign_col = w.col;
-            continue;
-        }
-        fail(3, std::string(addr_name(w.addr)) + " has no meaning here (no function in the block takes it)",
-             w.col);
-        return false;
+bool Interpreter::Decoder::bad(int code, std::string detail, int column) {
+    in.fail(code, std::move(detail), column);
+    return false;
+}
+
+bool Interpreter::Decoder::axis_addr(Addr a, int& axis) {
+    if (a >= 26) return false;
+    axis = axis_of(char('A' + a));
+    return axis >= 0;
+}
+
+// word -> G word | owned word (the owner's reader) | plain word
+bool Interpreter::Decoder::word(const Word& w) {
+    in.col_ = w.col;
+    if (w.addr == addr1('G')) return g_word(w);
+    owned = owner && g_owns(*owner, w.addr);
+    if (!owned) {
+        owner = nullptr;
+        owner_g = -1;
+        return plain_word(w);
     }
-    if (p.g[16] && p.g16_axis < 0 && pqr_sign_col) {
-        fail(3, "the argument of G16 must follow it (G16 R+)", pqr_sign_col);
-        return false;
-    }
-    if (p.g[78] && !p.g78_p) {
-        fail(2, "G78 needs P (the axis groups to synchronise)");
-        return false;
-    }
+    const ArgReader* r = arg_reader(owner_g);
+    int axis;
+    if (!r->read || (r->axes_plain && axis_addr(w.addr, axis))) return plain_word(w);
+    return (this->*r->read)(w);
+}
+
+// Checks that need the whole block.
+bool Interpreter::Decoder::finish() {
+    if (p.g[16] && p.g16_axis < 0 && pqr_sign_col)
+        return bad(3, "the argument of G16 must follow it (G16 R+)", pqr_sign_col);
+    if (p.g[78] && !p.g78_p) return bad(2, "G78 needs P (the axis groups to synchronise)");
     // milling.md §8.6 (impl): the axis values after EM+/EM- are the part's
     // extremes for the graphic display, not a move.
     if (p.em) {
         p.axis.reset();
         p.inc.reset();
     }
+    return true;
+}
+
+// ---------------------------------------------------------------------------
+// G words.
+
+bool Interpreter::Decoder::g_word(const Word& w) {
+    int g;
+    double gv;
+    if (!in.word_value(w, gv, &g)) return false;
+    const GCode* gc = find_g(g);
+    if (!g_known(g, gc, w)) return false;
+    if (gc->support == Support::later && p.unsupported < 0) p.unsupported = g;
+    p.g.set(size_t(g));
+    g_group(g, gc->group);
+    if (!g_marks(g, w)) return false;
+    owner = gc->args.empty() ? nullptr : gc;
+    owner_g = g;
+    return true;
+}
+
+// Whether this machine and model have G`g`.
+bool Interpreter::Decoder::g_known(int g, const GCode* gc, const Word& w) {
+    if (!gc || !(gc->machines & (lathe ? kLathe : kMill))) {
+        std::string hint;
+        if (gc && !lathe) hint = " (a lathe function: --machine lathe?)";
+        if (gc && lathe) hint = " (a machining-centre function: --machine mill?)";
+        return bad(2, "G" + std::to_string(g) + " is not a function of the NUM " +
+                          (lathe ? "lathe" : "machining centre") + hint, w.col);
+    }
+    if ((gc->starred & (lathe ? kLathe : kMill)) && m.model == 1020)
+        return bad(2, "G" + std::to_string(g) + " needs a NUM 1040 or 1060", w.col);
+    if (gc->support == Support::option)
+        return bad(4, "G" + std::to_string(g) + " (" + std::string(gc->text) +
+                          ") is an option this machine does not have", w.col);
+    return true;
+}
+
+// The G that the block keeps for a modal group (the last one written).
+void Interpreter::Decoder::g_group(int g, Group group) {
+    switch (group) {
+        case Group::motion: p.motion = g; break;
+        case Group::dist: p.dist = g; inc = (g == 91); break;
+        case Group::plane: p.plane = g; break;
+        case Group::radcomp: p.radcomp = g; break;
+        case Group::prefdec: p.prefdec = g; break;
+        case Group::feed: p.feed_mode = g; break;
+        case Group::spindle: p.spindle_mode = g; break;
+        case Group::units: p.units = g; break;
+        case Group::scale: p.scale = g; break;
+        case Group::cycle: p.cycle = g; break;
+        default: break;
+    }
+}
+
+// What G52, G77 -i, G79± and G76± say by where or how they are written.
+bool Interpreter::Decoder::g_marks(int g, const Word& w) {
+    if (g == 52) {
+        if (axis_seen) return bad(3, "G52 must come before the axis words of the block", w.col);
+        g52_seen = true;
+    }
+    if (g == 77) p.g77_level = w.glevel;
+    if (g == 77 && w.glevel && m.model == 1020) return bad(4, "G77 -i needs a NUM 1040 or 1060", w.col);
+    if (g == 79 && w.gsign && m.model == 1020)
+        return bad(4, std::string("G79") + w.gsign + " needs a NUM 1040 or 1060 (000:560)", w.col);
+    if (g == 79 && w.gsign) p.g79_sign = w.gsign;
+    if (g == 76) p.g76_sign = w.gsign;
+    return true;
+}
+
+// ---------------------------------------------------------------------------
+// Default meanings.
+
+bool Interpreter::Decoder::plain_word(const Word& w) {
+    // In G29 every block gives the surface normal with P Q R.
+    const char c = letter(w);
+    if ((c == 'P' || c == 'Q' || c == 'R') && w.v.kind != Operand::SignOnly &&
+        (p.radcomp == 29 || (p.radcomp < 0 && in.modal_.radcomp == 29)))
+        return g29_normal(w);
+    if (seen.test(w.addr) && w.addr != addr1('M') && w.addr != addr1('G'))
+        return bad(3, std::string(addr_name(w.addr)) + " written twice in the block", w.col);
+    seen.set(w.addr);
+    return (this->*plain_readers()[w.addr])(w);
+}
+
+// The reader of each address outside the arguments of a G function.
+const std::array<Interpreter::Decoder::Reader, kAddrCount>& Interpreter::Decoder::plain_readers() {
+    static constexpr std::array<Reader, kAddrCount> table = [] {
+        std::array<Reader, kAddrCount> t{};
+        t.fill(&Decoder::no_meaning);
+        for (char c : std::string_view("XYZUVWABC")) t[addr1(c)] = &Decoder::axis_word;
+        t[addr1('I')] = t[addr1('J')] = t[addr1('K')] = &Decoder::ijk_word;
+        t[addr1('R')] = &Decoder::r_word;
+        t[addr1('F')] = &Decoder::feed_word;
+        t[addr1('S')] = &Decoder::speed_word;
+        t[addr1('T')] = &Decoder::tool_word;
+        t[addr1('D')] = &Decoder::corrector_word;
+        t[addr1('M')] = &Decoder::m_word;
+        t[addrE('D')] = &Decoder::ed_word;
+        t[addrE('G')] = &Decoder::eg_word;
+        t[addrE('C')] = &Decoder::ec_word;
+        t[addrE('M')] = &Decoder::em_word;
+        for (Addr a : {addr1('P'), addr1('Q'), addrE('R'), addrE('H'), addrE('F'), addrE('P'), addrE('K')})
+            t[a] = &Decoder::cycle_or_sign;
+        t[addrE('S')] = t[addrE('A')] = &Decoder::cycle_or_pgp;
+        t[addrE('B')] = t[addrE('T')] = t[kAddrEsign] = &Decoder::pgp_word;
+        return t;
+    }();
+    return table;
+}
+
+bool Interpreter::Decoder::axis_word(const Word& w) {
+    const int axis = axis_of(letter(w));
+    if (!m.has(axis))
+        return bad(1, std::string("axis ") + letter(w) + " is not on this machine (" + m.name + ")", w.col);
+    double v;
+    if (!in.word_value(w, v)) return false;
+    axis_seen = true;
+    p.axis.set(size_t(axis));
+    if (inc && !g52_seen) p.inc.set(size_t(axis));
+    if (is_rotary(axis)) {
+        p.val[size_t(axis)] = v;
+    } else if (axis == X && lathe) {
+        // Absolute X is a diameter; incremental X and G52 X are radii (DESIGN §3).
+        bool as_diam = diam && !inc && !g52_seen;
+        p.val[size_t(axis)] = as_diam ? v * unit / 2 : v * unit;
+    } else {
+        p.val[size_t(axis)] = v * unit;
+    }
+    return true;
+}
+
+bool Interpreter::Decoder::ijk_word(const Word& w) {
+    if (p.g[23] && !owned)
+        return bad(3, "the arguments of G23 must not be separated by another address", w.col);
+    double v;
+    if (!in.word_value(w, v)) return false;
+    int k = letter(w) - 'I';
+    p.ijk.set(size_t(k));
+    if (inc) p.ijk_inc.set(size_t(k));
+    p.ijk_val[k] = (k == 0 && diam && !inc) ? v * unit / 2 : v * unit;
+    return true;
+}
+
+bool Interpreter::Decoder::r_word(const Word& w) {
+    if (w.v.kind == Operand::SignOnly) {
+        p.r_sign = w.v.neg ? -1 : 1;
+        if (!pqr_sign_col) pqr_sign_col = w.col;
+        return true;
+    }
+    double v;
+    if (!in.word_value(w, v)) return false;
+    p.has_r = true;
+    p.r = v * unit;
+    return true;
+}
+
+bool Interpreter::Decoder::feed_word(const Word& w) {
+    double v;
+    if (!in.word_value(w, v)) return false;
+    p.has_f = true;
+    p.f = v;
+    return true;
+}
+
+bool Interpreter::Decoder::speed_word(const Word& w) {
+    double v;
+    if (!in.word_value(w, v)) return false;
+    p.has_s = true;
+    p.s = v;
+    return true;
+}
+
+bool Interpreter::Decoder::tool_word(const Word& w) {
+    int iv;
+    double v;
+    if (!in.word_value(w, v, &iv)) return false;
+    if (iv > m.tools)
+        return bad(1, "tool T" + std::to_string(iv) + " does not exist (the turret has " +
+                          std::to_string(m.tools) + " stations)", w.col);
+    p.has_t = true;
+    p.t = iv;
+    return true;
+}
+
+bool Interpreter::Decoder::corrector_word(const Word& w) {
+    int iv;
+    double v;
+    if (!in.word_value(w, v, &iv)) return false;
+    if (iv > m.correctors)
+        return bad(w.v.kind == Operand::Number ? 8 : 92,
+                   "corrector D" + std::to_string(iv) + " above D" + std::to_string(m.correctors), w.col);
+    p.has_d = true;
+    p.d = iv;
+    return true;
+}
+
+bool Interpreter::Decoder::m_word(const Word& w) {
+    int iv;
+    double v;
+    if (!in.word_value(w, v, &iv)) return false;
+    if (p.nm >= 8) return bad(3, "too many M functions in one block", w.col);
+    // At most one modal and one non-modal coded M per block (004:1063).
+    if ((iv >= 200 && iv <= 899 && ++coded_modal > 1) || (iv >= 100 && iv <= 199 && ++coded_nonmodal > 1))
+        return bad(3, "two coded M functions of the same kind in one block (M" + std::to_string(iv) + ")",
+                   w.col);
+    p.m[p.nm++] = iv;
+    return true;
+}
+
+bool Interpreter::Decoder::ed_word(const Word& w) {
+    double v;
+    if (!in.word_value(w, v)) return false;
+    p.has_ed = true;
+    p.ed = v;
+    return true;
+}
+
+bool Interpreter::Decoder::eg_word(const Word& w) {
+    double v;
+    if (!in.word_value(w, v)) return false;
+    if (v < 1 || v > 100) return bad(1, "EG (acceleration) must be 1 to 100 %", w.col);
+    p.has_eg = true;
+    p.eg = v;
+    return true;
+}
+
+bool Interpreter::Decoder::ec_word(const Word& w) {
+    double v;
+    if (!in.word_value(w, v)) return false;
+    p.has_ec = true;
+    p.ec = v;
+    return true;
+}
+
+bool Interpreter::Decoder::em_word(const Word&) {  // EM+/EM-: part extremes for the graphic
+    p.em = true;
+    return true;
+}
+
+// P Q ER EH EF EP EK: words of the active drilling cycle; else P± Q± alone.
+bool Interpreter::Decoder::cycle_or_sign(const Word& w) {
+    if (p.cycle_words) return cyc_word(w);
+    const char c = letter(w);
+    if ((c == 'P' || c == 'Q') && w.v.kind == Operand::SignOnly) {
+        if (!pqr_sign_col) pqr_sign_col = w.col;
+        return true;
+    }
+    return no_meaning(w);
+}
+
+// ES EA: words of the active drilling cycle, else of the profile geometry.
+bool Interpreter::Decoder::cycle_or_pgp(const Word& w) {
+    return p.cycle_words ? cyc_word(w) : pgp_word(w);
+}
+
+// EA EB ES ET E±: profile geometry; ES± ET± carry the discriminant as their
+// sign (pgp.md §2).
+bool Interpreter::Decoder::pgp_word(const Word& w) {
+    p.pgp = true;
+    double v;
+    if (w.addr == addrE('A')) {
+        if (!in.word_value(w, v)) return false;
+        p.has_ea = true;
+        p.ea = v;
+    } else if (w.addr == addrE('B')) {
+        if (!in.word_value(w, v)) return false;
+        p.has_eb = true;
+        p.eb = v * unit;
+        p.eb_unsigned = !w.v.has_sign;
+    } else {
+        if (w.addr == addrE('S')) p.link = p.link == 'T' ? 'X' : 'S';
+        if (w.addr == addrE('T')) p.link = p.link == 'S' ? 'X' : 'T';
+        if (w.v.has_sign) p.disc = w.v.neg ? -1 : 1;
+        if (w.v.kind == Operand::Number || w.v.kind == Operand::LVar)
+            return bad(w.addr == kAddrEsign ? 3 : 110, std::string(addr_name(w.addr)) + " takes a sign only",
+                       w.col);
+    }
+    return true;
+}
+
+bool Interpreter::Decoder::no_meaning(const Word& w) {
+    return bad(3, std::string(addr_name(w.addr)) + " has no meaning here (no function in the block takes it)",
+               w.col);
+}
+
+// A word of a cycle, kept for the cycle to read (lengths ER EH in mm).
+bool Interpreter::Decoder::cyc_word(const Word& w) {
+    double cv;
+    if (!in.word_value(w, cv)) return false;
+    if (p.ncyc >= 16) return bad(3, "too many cycle words in one block", w.col);
+    p.cyc[p.ncyc++] = {w.addr, w.addr == addrE('R') || w.addr == addrE('H') ? cv * unit : cv};
+    return true;
+}
+
+// G29: the surface normal P Q R (milling.md §4.6).
+bool Interpreter::Decoder::g29_normal(const Word& w) {
+    double v;
+    if (!in.word_value(w, v)) return false;
+    p.g29_has.set(size_t(letter(w) - 'P'));
+    p.g29_n[letter(w) - 'P'] = v;
     return true;
 }
 

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/numfmt.hpp"
+
 namespace pupitre {
 
 namespace {
@@ -70,12 +72,6 @@ Mark rect_mark(Mark::Group g, double x, double y, double w, double h, Rgb stroke
     m.has_fill = fill != nullptr;
     if (fill) m.fill = *fill;
     return m;
-}
-
-std::string fixed3(double v) {
-    char buf[48];
-    std::snprintf(buf, sizeof buf, "%.3f", std::fabs(v) < 0.0005 ? 0.0 : v);
-    return buf;
 }
 
 std::string hms(double t) {
@@ -156,7 +152,7 @@ std::vector<std::pair<std::string, Rgb>> note_lines(const Scene& s) {
         if (!m.has(a)) continue;
         double f = a == X && m.lathe && p.x_diameter() ? 2 : 1;
         ext += std::string("  ") + kAxisNames[size_t(a)] + (f == 2 ? "\u00f8 " : " ") +
-               fixed3(f * b.lo[a]) + "/" + fixed3(f * b.hi[a]);
+               fixed3_zeroed(f * b.lo[a], 0.0005, 47) + "/" + fixed3_zeroed(f * b.hi[a], 0.0005, 47);
     }
     if (p.travel_moves()) ext += " \u00b7 " + std::to_string(p.travel_moves()) + " moves beyond travel";
     out.push_back({ext, kInk});

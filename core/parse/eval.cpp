@@ -5,8 +5,9 @@
 #include "core/parse/eval.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <numbers>
+
+#include "core/numfmt.hpp"
 
 namespace pupitre {
 
@@ -69,9 +70,7 @@ int apply_prefix(const Term& t, double& v, std::string& why) {
             case 'T': v = std::trunc(v); break;
             case 'R':
                 if (v < 0) {
-                    char num[32];
-                    std::snprintf(num, sizeof num, "%.3f", v);
-                    why = std::string("square root of a negative number (") + num + ")";
+                    why = "square root of a negative number (" + fixed3(v) + ")";
                     return 94;
                 }
                 v = std::sqrt(v);

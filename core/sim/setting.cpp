@@ -3,17 +3,15 @@
 #include "core/sim/setting.hpp"
 
 #include <cmath>
-#include <cstdio>
+
+#include "core/numfmt.hpp"
 
 namespace pupitre::setting {
 
 namespace {
 
-std::string num(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.3f", std::abs(v) < 5e-7 ? 0.0 : v);
-    return buf;
-}
+// Zero below half a micron, never "-0.000".
+std::string num(double v) { return fixed3_zeroed(v, 5e-7); }
 
 // " - NAME value", or nothing for a zero term: the message line is short.
 std::string term(const char* name, double v) {
