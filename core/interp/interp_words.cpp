@@ -160,20 +160,19 @@ bool Interpreter::decode(const Block& b, Plan& p) {
 Interpreter::Decoder::Decoder(Interpreter& interp, Plan& plan, const Block& b)
     : in(interp), p(plan), m(in.m_), lathe(m.lathe), diam(lathe && m.x_diameter && !in.modal_.radius_x),
       inc(in.modal_.incremental) {
-    // G70/G71 written in the block set the unit of all its lengths.
-    bool inch = in.modal_.inch;
-    for (const Word& w : b.words)
-        if (w.addr == addr1('G') && w.v.kind == Operand::Number && (w.v.num == 70 || w.v.num == 71))
-            inch = w.v.num == 70;
-    unit = inch ? 25.4 : 1.0;
-    // Is a drilling cycle active for this block (written here, or modal and not
+    // G70/G71 written in the block set the unit of all its lengths. Is a
+    // drilling cycle active for this block (written here, or modal and not
     // cancelled here)? Its words (ER, P, EF…) then have their cycle meaning.
+    bool inch = in.modal_.inch;
     int cycle_code = -1;
-    for (const Word& w : b.words)
-        if (w.addr == addr1('G') && w.v.kind == Operand::Number) {
-            int g = int(w.v.num);
-            if (g == 80 || (g >= 81 && g <= 89) || g == 31) cycle_code = g;
-        }
+    for (const Word& w : b.words) {
+        if (w.addr != addr1('G') || w.v.kind != Operand::Number) continue;
+        const double g = w.v.num;
+        if (g == 70 || g == 71) inch = g == 70;
+        const int gi = int(g);
+        if (gi == 80 || (gi >= 81 && gi <= 89) || gi == 31) cycle_code = gi;
+    }
+    unit = inch ? 25.4 : 1.0;
     const int modal_cycle = in.modal_.cycle;
     p.cycle_words = cycle_code == 31 || (cycle_code >= 81 && cycle_code <= 89) ||
                     (cycle_code < 0 && modal_cycle >= 81 && modal_cycle <= 89);
