@@ -170,6 +170,8 @@ bool Interpreter::apply_modal(const Plan& p) {
     // new F is the error (2, F being G95's mandatory argument).
     // Warning 1115 at every G94/G95 block without F (seed 000: "doit être suivie
     // obligatoirement de l'argument F"; CLARIFICATIONS 18).
+    if ((p.feed_mode == 94 || p.feed_mode == 95) && !p.has_f && m_.strict)
+        return fail(2, "G" + std::to_string(p.feed_mode) + " without F (seed 000: F is its mandatory argument)"), false;
     if ((p.feed_mode == 94 || p.feed_mode == 95) && !p.has_f)
         warn(err::wFeedModeNoF, "G" + std::to_string(p.feed_mode) + " without F in its block: the feed " +
                                     (p.feed_mode != modal_.feed_mode ? "unit changes and the next feed move needs F"

@@ -24,6 +24,20 @@ double Interpreter::cyc(const Plan& p, Addr a, double dflt, bool* has) {
 
 // Reads the finished profile N<a>..N<b> of the current program into lines and
 // arcs in (z, r), in the order written (the profile may be called backwards).
+namespace {
+// The first L100-L199 or L900-L959 a block reads, or -1.
+int high_l_read(const Block& b) {
+    auto high = [](const Operand& o) {
+        return (o.kind == Operand::LVar || o.kind == Operand::EIndirect) && o.index >= 100;
+    };
+    for (const Word& w : b.words)
+        if (high(w.v)) return w.v.index;
+    for (const Term& t : b.terms)
+        if (high(t.v)) return t.v.index;
+    return -1;
+}
+}  // namespace
+
 bool Interpreter::turning_profile(long na, long nb, turning::Profile& out, comp::V2& first) {
     const ProgramText* prog = stack_.back().prog;
     const Label* a = prog->find_label(na);
@@ -52,12 +66,18 @@ bool Interpreter::turning_profile(long na, long nb, turning::Profile& out, comp:
         if (!parse_block(l, blk, d)) return fail(d.code, d.detail, d.column), false;
         if (blk.empty()) continue;
         // 000:2464 forbids L100-L199 and L900-L959 in the finished profile, yet the
-        // handbook's own %2000 reads L151-L153 in one (000:8839-8866): their
-        // writes are what needs the block preparation stopped, so writes only are
-        // refused (96) and reads are free, as everywhere else (program-flow §8.2).
+        // handbook's own %2000 reads L151-L153 in one (000:8839-8866): writes are
+        // refused (96); a read is warning 1114, or the NUM's error 96 under the
+        // machine setting `strict`.
         for (const Assign& as : blk.assigns)
             if (as.target.kind == Operand::LVar && as.target.index >= 100)
                 return fail(96, "writing L" + std::to_string(as.target.index) + " in a roughing-cycle profile"), false;
+        if (int high = high_l_read(blk); high >= 0) {
+            std::string what = "L" + std::to_string(high) + " read in a roughing-cycle profile (seed 000: L100-L199 and"
+                               " L900-L959 \"ne peuvent pas être employées dans la définition du profil fini\")";
+            if (m_.strict) return fail(96, what), false;
+            warn(err::wProfileL, what + ": the NUM stops with error 96; copy it into L0-L19 before the cycle");
+        }
         Plan q;
         if (!decode(blk, q)) return false;
         if (q.motion >= 0) modal_.motion = q.motion;

@@ -137,6 +137,8 @@ std::string parse_machine(std::string_view text, MachineProfile& m) {
             if (m.ranges.size() > 6) return bad("at most 6 ranges (M40-M45)");
         } else if (key == "spindle.auto_range") {
             if (!yes_no(val, m.auto_range)) return bad("auto_range must be yes or no");
+        } else if (key == "strict") {
+            if (!yes_no(val, m.strict)) return bad("strict must be yes or no");
         } else if (key == "tools") {
             if (!number(val, d1) || d1 < 1 || d1 > 999) return bad("tools must be 1..999");
             m.tools = int(d1);

@@ -40,6 +40,7 @@ struct MachineProfile {
     double spindle_max = 4000;   // rev/min
     std::vector<SpindleRange> ranges;  // M40, M41, …
     bool auto_range = false;
+    bool strict = false;         // the NUM's errors where pupitre is lenient on purpose (1114, 1115)
     int tools = 12;
     int correctors = 255;
     double tool_change_time = 2.0;
