@@ -756,6 +756,80 @@ TEST(G64, RandomShaftsProperties) {
     }
 }
 
+// Issue 19 item 1: generated profiles, outside and bore, with and without a
+// groove, along Z and along X, allowances of both signs. No move, feed or
+// rapid, enters the part plus its allowance (translated as written when the
+// allowance points into the part); without a groove the material is covered.
+TEST(G64, RandomGroovesBoresAndSigns) {
+    std::mt19937 rng(20261125);
+    std::uniform_real_distribution<double> u(0, 1);
+    int inside = 0, tried = 0;
+    for (int n = 0; n < 48; ++n) {
+        const int variant = n % 4;  // 0 groove, 1 bore, 2 bore with a groove, 3 wrong sign
+        const bool along_x = (n / 4) % 2, bore = variant == 1 || variant == 2;
+        const bool groove = variant == 0 || variant == 2;
+        std::vector<V2> pts{V2(0, 30 + 10 * u(rng))};
+        double z = 0, r = pts[0].y();
+        for (int k = 0, steps = 2 + int(u(rng) * 3); k < steps; ++k) {
+            double len = 8 + 10 * u(rng);
+            if (groove && k == 0 && r > 8) {  // a groove in the first cylinder
+                double w = 2 + 2 * u(rng), depth = 1 + 2 * u(rng), at = z + 3 + (len - w - 6) * u(rng);
+                pts.push_back(V2(at, r));
+                pts.push_back(V2(at, r - depth));
+                pts.push_back(V2(at + w, r - depth));
+                pts.push_back(V2(at + w, r));
+            }
+            z += len;
+            pts.push_back(V2(z, r));
+            double nr = r - 2 - 5 * u(rng);
+            if (nr < 3) break;
+            z += u(rng) < .4 ? 2 + 4 * u(rng) : 0;
+            r = nr;
+            pts.push_back(V2(z, r));
+        }
+        z += 3 + 5 * u(rng);
+        pts.push_back(V2(z, r));
+        pts.push_back(V2(z, r / 3));
+        double top = pts[0].y() + 1 + 4 * u(rng);
+        std::vector<V2> stock{V2(0, top), V2(z + 2, top), V2(z + 2, pts.back().y())};
+        V2 tool(z + 30, top + 20);
+        if (bore) {  // the mirror r -> 50 - r: a stepped bore opening towards +Z
+            for (V2& q : pts) q.y() = 50 - q.y();
+            for (V2& q : stock) q.y() = 50 - q.y();
+            tool = V2(z + 30, 2);
+        }
+        Profile f;
+        for (size_t i = 0; i + 1 < pts.size(); ++i) f.elems.push_back(L(pts[i], pts[i + 1]));
+        G64Args a;
+        a.k = .8 * u(rng);
+        a.i = .1 + .7 * u(rng);
+        if (bore || variant == 3) a.i = -a.i;  // the right sign on a bore; wrong outside
+        double step = .8 + 2 * u(rng);
+        (along_x ? a.has_r : a.has_p) = true;
+        (along_x ? a.r : a.p) = step;
+        Profile called = along_x ? reversed(f) : f;
+        std::vector<V2> st = along_x ? std::vector<V2>(stock.rbegin(), stock.rend()) : stock;
+        std::vector<Move> mv;
+        std::string why;
+        std::string name = "profile " + std::to_string(n) + (bore ? " bore" : " outside") +
+                           (groove ? " groove" : "") + (along_x ? " R" : " P");
+        ASSERT_EQ(g64(called, st, tool, a, mv, why), 0) << name << ": " << why;
+        ASSERT_FALSE(feeds(tool, mv).empty()) << name;
+        EXPECT_EQ(a.allowance_inside, variant == 3) << name;
+        V2 t(a.k, a.i);
+        inside += a.allowance_inside;
+        Oracle o(a.allowance_inside ? shifted(f, t) : f, stock, a.allowance_inside ? V2(0, 0) : t);
+        check_clear(o, tool, mv, std::min(1.0, step / 2), name.c_str());
+        if (groove || variant == 3) continue;
+        ++tried;
+        double low = 1e300;
+        for (V2 q : pts) low = std::min(low, along_x ? q.x() + a.k : (bore ? -(q.y() + a.i) : q.y() + a.i));
+        check_cover(o, tool, mv, along_x, bore && !along_x ? -1 : 1, step, low, name.c_str());
+    }
+    EXPECT_EQ(inside, 12);
+    EXPECT_EQ(tried, 12);
+}
+
 TEST(G64, Errors) {
     std::vector<Move> mv;
     std::string why;
