@@ -43,6 +43,24 @@ void page_alarm(const View& v, Canvas& c, const Rect& r) {
         lines.push_back(Line{}.add(" No alarm in force.", Style::dim));
     }
     lines.push_back(Line{});
+    // The warnings of the last run: what ran instead of what was written.
+    if (s.run_warning_count() > 0) {
+        lines.push_back(Line{}.add(" Warnings of the last run (" + std::to_string(s.run_warning_count()) + ")",
+                                   Style::title));
+        for (const Diag& w : s.run_warnings()) {
+            lines.push_back(Line{}
+                                .add("   " + lpad(std::to_string(w.code), 4), Style::value)
+                                .add("  " + pad(where(w), 22), Style::value)
+                                .add(explain(w.code)));
+            for (const std::string& l : wrap_text(w.detail, std::max(20, r.w - 10)))
+                lines.push_back(Line{}.add("         " + l, Style::dim));
+        }
+        if (s.run_warning_count() > s.run_warnings().size())
+            lines.push_back(Line{}.add("   and " + std::to_string(s.run_warning_count() - s.run_warnings().size()) +
+                                           " more (pupitre check lists them all)",
+                                       Style::dim));
+        lines.push_back(Line{});
+    }
     if (!all.empty()) lines.push_back(Line{}.add(" History (newest first)", Style::title));
     for (size_t i = all.size(); i-- > 0;) {
         const Alarm& a = all[i];

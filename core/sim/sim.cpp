@@ -259,6 +259,8 @@ bool Sim::cycle_start(std::string& why) {
     seq_stop_ = false;
     blocks_ = 0;
     run_seconds_ = 0;
+    run_warnings_.clear();
+    run_warning_count_ = 0;
     state_ = RunState::running;
     return true;
 }
@@ -483,9 +485,14 @@ bool Sim::begin_next() {
             if (e.a != 2 && mode_ == Mode::imd)
                 message_ = "IMD done (" + std::to_string(blocks_) + (blocks_ == 1 ? " block" : " blocks") +
                            "): type the next block, or F8 for another mode";
-            if (e.a == 2)
+            if (e.a == 2) {
                 message_ = "M02: end of program %" + std::to_string(e.loc.prog) + ", " +
                            std::to_string(blocks_) + " blocks, cycle time " + fmt_seconds(run_seconds_);
+                // The warnings the run printed on the way must not vanish with it.
+                if (run_warning_count_ > 0)
+                    message_ += "; " + std::to_string(run_warning_count_) +
+                                (run_warning_count_ == 1 ? " warning" : " warnings") + " (F7 ALARM)";
+            }
             break;
         case Ev::dwell: break;
     }
@@ -583,7 +590,11 @@ void Sim::raise_from_interp() {
             alarms_.push_back(Alarm{x, clock_});
             if (path_) path_->add_error(x);
         }
-        else message_ = "warning " + std::to_string(x.code) + ": " + x.detail;
+        else {
+            message_ = "warning " + std::to_string(x.code) + ": " + x.detail;
+            if (run_warnings_.size() < kMaxRunWarnings) run_warnings_.push_back(x);
+            ++run_warning_count_;
+        }
     }
 }
 

@@ -116,6 +116,10 @@ public:
     double cycle_time() const { return run_seconds_; }
     long blocks_done() const { return mode_ == Mode::test && test_ ? test_blocks_ : blocks_; }
     const std::vector<Alarm>& alarms() const { return alarms_; }  // history, newest last
+    // The warnings of the last run (the first kMaxRunWarnings), and how many.
+    const std::vector<Diag>& run_warnings() const { return run_warnings_; }
+    size_t run_warning_count() const { return run_warning_count_; }
+    static constexpr size_t kMaxRunWarnings = 100;
     bool alarm_active() const { return state_ == RunState::alarm; }
     const std::string& message() const { return message_; }     // $0 text or cycle news
     long test_blocks() const { return test_blocks_; }
@@ -190,6 +194,8 @@ private:
     bool manual_ = false;      // the queue holds POM or JOG moves, not a program
     bool seq_stop_ = false;    // SEQ: stop once this block's events are shown
     size_t diag_seen_ = 0;
+    std::vector<Diag> run_warnings_;
+    size_t run_warning_count_ = 0;
     Axes planned_{};           // machine position at the end of the queue
     std::unique_ptr<ProgramText> imd_;
     std::deque<Ev> q_;

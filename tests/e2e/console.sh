@@ -293,6 +293,22 @@ graph)
     [ -n "$a" ] && [ "$a" != "$b" ] || fail "the tool marker did not move ($a / $b)"
     [ "$before" -gt 3 ] || fail "too few braille rows ($before)"
     ;;
+warnings)
+    # Issue 19: a warning printed during a run is not lost with M02: the end
+    # message counts it and the ALARM page lists it with its block.
+    "$bin" import "$(dirname "$0")/../warn/1110_feed_before_f.iso" >/dev/null || fail "import"
+    W=100 start
+    pom
+    cmd ":load 10"
+    cmd ":mode auto"
+    cmd ":speed x10"
+    keys F9
+    wait_for 'M02: end of program %10, .*; 1 warning \(F7 ALARM\)' 30
+    keys F7
+    wait_for 'Warnings of the last run \(1\)'
+    wait_for '1110  %10 line 6 N30'
+    wait_for 'feed move before any F: it runs at F1000.000 mm/min'
+    ;;
 *)
     echo "unknown case $case"
     exit 2
