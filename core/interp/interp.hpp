@@ -261,6 +261,16 @@ private:
     // (interp_pocket.cpp): their steps share the cycle's context.
     struct DrillRun;
     struct Pocket45;
+    // While alive, moves run at feeds of the cycle's own (a thread's lead, rigid
+    // tapping, a pocket's EP EQ): no warning 1110 for them.
+    struct OwnFeed {
+        Interpreter& in;
+        const bool was;
+        explicit OwnFeed(Interpreter& i) : in(i), was(i.feed_programmed_) { in.feed_programmed_ = true; }
+        ~OwnFeed() { in.feed_programmed_ = was; }
+        OwnFeed(const OwnFeed&) = delete;
+        OwnFeed& operator=(const OwnFeed&) = delete;
+    };
 
     // interp.cpp
     bool fetch(std::string_view& line, int& lineno);

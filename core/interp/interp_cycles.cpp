@@ -5,6 +5,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include "core/interp/plan.hpp"
 
@@ -257,7 +258,9 @@ bool Interpreter::DrillRun::tap() {
     Modal& modal = in.modal_;
     int dir = modal.spindle_dir;
     Modal saved = modal;
+    std::optional<OwnFeed> own;
     if (c.has_k) {
+        own.emplace(in);
         // Rigid tapping: feed = pitch x speed, out at EK x speed (000:5911-5934).
         double n = in.spindle_at(in.prog_[X]);
         modal.feed_mode = 94;
@@ -328,6 +331,7 @@ bool Interpreter::DrillRun::thread() {
     Modal saved = modal;
     int a0 = modal.plane == 17 ? X : modal.plane == 18 ? Z : Y;
     int a1 = modal.plane == 17 ? Y : modal.plane == 18 ? X : Z;
+    OwnFeed own(in);  // the lead times the speed
     for (int i = 0; i < starts; ++i) {
         modal.feed_mode = 94;
         modal.feed = c.k * in.spindle_at(in.prog_[X]);

@@ -125,6 +125,7 @@ bool Interpreter::pocket(const Plan& p) {
     Modal saved = modal_;
     modal_.feed_mode = 94;
     modal_.feed_set = true;
+    OwnFeed own(*this);  // EP EQ EI EJ
     k.z = prog_[Z];
     // 1-2. To the centre, then to ER.
     if (!k.go(0, 0, 0, k.z, 0)) return false;

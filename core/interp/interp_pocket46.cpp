@@ -462,9 +462,7 @@ bool Interpreter::p46_order(const Plan& p, int nu) {
     modal_.feed_mode = 94;
     modal_.feed_set = true;
     modal_.motion = 1;
-    // The order's own feeds (EP, EQ) run its moves: no warning 1110 there.
-    const bool feed_programmed = feed_programmed_;
-    feed_programmed_ = true;
+    OwnFeed own(*this);  // the order's EP and EQ
     bool ok = true;
     if (prog_[an] < clear - 1e-9) ok = cycle_axis_move(0, clear);
     double approach = top;
@@ -480,7 +478,6 @@ bool Interpreter::p46_order(const Plan& p, int nu) {
         ok = cycle_move(0, t);
     }
     modal_ = saved;
-    feed_programmed_ = feed_programmed;
     return ok;
 }
 

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include "core/interp/plan.hpp"
 #include "core/cycles/turning.hpp"
@@ -184,6 +185,8 @@ bool Interpreter::coordinate_above(const ProgramText* prog, int line, int axis, 
 // revolution when lead > 0; infeed moves at `infeed` mm/min or per rev when > 0.
 bool Interpreter::turning_emit(const std::vector<turning::Move>& moves, double lead, double infeed) {
     Modal saved = modal_;
+    std::optional<OwnFeed> own;
+    if (lead > 0) own.emplace(*this);  // threading runs at its lead
     for (const turning::Move& m : moves) {
         Axes t = prog_;
         t[Z] = m.to.x();
