@@ -89,6 +89,7 @@ std::string_view pupitre_diag_text(int code) {
         {err::wFeedModeNoF, "Warning: G94 or G95 without F in its block"},
         {err::wAllowanceInside, "Warning: a finishing allowance whose sign puts it inside the part"},
         {err::wNoToolWidth, "Warning: G66 correctors that give no tool width"},
+        {err::wPlungeAway, "Warning: a G46 roughing plunges with the cutter away from the drilled hole"},
     };
     for (const auto& [n, text] : kTexts)
         if (n == code) return text;

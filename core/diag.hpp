@@ -34,6 +34,7 @@ inline constexpr int wProfileL = 1114;        // L100-L199/L900-L959 read in a r
 inline constexpr int wFeedModeNoF = 1115;     // G94/G95 without F in the block
 inline constexpr int wAllowanceInside = 1116; // G64/G65 allowance towards the inside of the part
 inline constexpr int wNoToolWidth = 1117;     // G66 correctors that give no tool width
+inline constexpr int wPlungeAway = 1118;      // G46 roughing plunges with the cutter away from the hole
 }  // namespace err
 
 enum class Severity { error, warning };

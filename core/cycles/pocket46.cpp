@@ -558,6 +558,7 @@ bool roughing(const Def& d, double R, std::vector<Run>& runs, std::vector<double
             return true;  // a vanished offset: nothing to clean
         for (Run& run : clip(reg, start, pcs)) {
             run.linked = link_ok(reg, cur, run.start);
+            run.cleanup = true;
             cur = end_of(run);
             runs.push_back(run);
         }

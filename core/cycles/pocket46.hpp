@@ -74,6 +74,7 @@ struct Run {
     V2 start{0, 0};
     std::vector<Piece> pieces;
     bool linked = false;
+    bool cleanup = false;  // a clean-up contour of the roughing (after the passes)
 };
 
 struct Error {

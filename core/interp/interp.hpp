@@ -403,6 +403,7 @@ private:
         int a0, a1, an;
     };
     static P46Axes p46_axes(int plane);
+    void warn_plunges(const p46::Def& d, const std::vector<p46::Run>& runs);
     bool p46_emit(const P46Axes& ax, const std::vector<p46::Run>& runs, double z, double approach,
                   double clear, double f_ax, double f_lat);
     // Profile geometry programming (interp_pgp.cpp).

@@ -291,6 +291,22 @@ bool Interpreter::p46_fail(const p46::Error& e, const p46::Def& d) {
 
 // Runs at one depth: a plunge at each run not linked to the previous one.
 // (x, y) are the plane's first and second coordinates, z the normal axis.
+// Warning 1118: the passes of a roughing plunge with the cutter where no hole
+// was drilled (NU10 drills one, at LX LY or the first plunge). The clean-up
+// contours start in the cleared pocket and are not counted.
+void Interpreter::warn_plunges(const p46::Def& d, const std::vector<p46::Run>& runs) {
+    if (runs.empty()) return;
+    const p46::V2 hole = d.has_l ? d.l : runs.front().start;
+    std::vector<p46::V2> away;
+    for (const p46::Run& r : runs)
+        if (!r.linked && !r.cleanup && (r.start - hole).norm() > 1e-6) away.push_back(r.start);
+    if (away.empty()) return;
+    std::string more = away.size() > 1 ? " and " + std::to_string(away.size() - 1) + " more places" : "";
+    warn(err::wPlungeAway, "the roughing plunges with the cutter at " + num(away[0].x()) + " " + num(away[0].y()) +
+                               more + ", away from the hole at " + num(hole.x()) + " " + num(hole.y()) +
+                               " (NU10 drills only there; LX LY of NU0 chooses it)");
+}
+
 bool Interpreter::p46_emit(const P46Axes& ax, const std::vector<p46::Run>& runs, double z,
                            double approach, double clear, double f_ax, double f_lat) {
     const size_t a0 = size_t(ax.a0), a1 = size_t(ax.a1), an = size_t(ax.an);
@@ -392,16 +408,12 @@ bool Interpreter::p46_order(const Plan& p, int nu) {
         q.inc.reset();
         bool ok = cycle_words(q, code);  // the cycle axis is the normal axis (cycle_axis())
         q.axis.set(a0).set(a1);
-        std::vector<p46::V2> done;
-        for (const p46::Run& r : runs) {
-            if (!ok || r.linked) continue;
-            bool dup = false;
-            for (const auto& h : done) dup = dup || (h - r.start).norm() < 1e-6;
-            if (dup) continue;
-            done.push_back(r.start);
-            q.val[a0] = r.start.x(), q.val[a1] = r.start.y();
-            ok = cycle_run(q, code);
-        }
+        // Seed 000: LX LY of NU0 is "the start and/or drilling point for
+        // roughing": one hole there, else where the roughing first plunges
+        // (issue 19 item 4); the roughing warns where it plunges elsewhere.
+        const p46::V2 hole = d.has_l ? d.l : runs.front().start;
+        q.val[a0] = hole.x(), q.val[a1] = hole.y();
+        if (ok) ok = cycle_run(q, code);
         cyc_ = saved_cyc;
         modal_ = saved;
         return ok;
@@ -452,6 +464,7 @@ bool Interpreter::p46_order(const Plan& p, int nu) {
     if (nu == 15) {
         std::vector<double> ys;
         if (!p46::roughing(d, R, runs, ys, e)) return p46_fail(e, d);
+        warn_plunges(d, runs);
     } else {
         bool any = false;
         for (const auto& s : d.sections) any = any || s.nu == 1 || s.nu == 2 || s.nu == 6;

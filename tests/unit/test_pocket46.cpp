@@ -254,7 +254,9 @@ TEST(Pocket46, DrillsAtTheStartPoint) {
         if (m.loc.n == 530 && std::fabs(m.to_prog[Z] + 9.5) < 1e-9)
             hole = hole || (std::fabs(m.to_prog[X] - 25) < 1e-9 && std::fabs(m.to_prog[Y]) < 1e-9);
     EXPECT_TRUE(hole);
-    // Every roughing plunge is a drilled hole.
+    // One hole, at LX LY of NU0 (seed 000: "the start and/or drilling point
+    // for roughing"); the roughing starts there, and where it must plunge
+    // elsewhere it does so with the cutter and warning 1118 says where.
     std::set<std::pair<long, long>> holes, plunges;
     comp::V2 at(0, 0);
     for (const MoveEvent& m : r.cap.moves) {
@@ -266,7 +268,15 @@ TEST(Pocket46, DrillsAtTheStartPoint) {
             plunges.insert(key);
         at = to;
     }
-    EXPECT_EQ(holes, plunges);
+    EXPECT_EQ(holes, (std::set<std::pair<long, long>>{{25000, 0}}));
+    EXPECT_TRUE(plunges.count({25000, 0}));
+    std::string warned;
+    for (const Diag& d : r.in->diags())
+        if (d.code == err::wPlungeAway) warned = d.detail;
+    EXPECT_EQ(plunges.size() > 1, !warned.empty()) << warned;
+    if (plunges.size() > 1) {
+        EXPECT_NE(warned.find("away from the hole at 25 0"), std::string::npos) << warned;
+    }
 }
 
 TEST(Pocket46, PlanRespectsStepOverOnAnyRegion) {
