@@ -137,6 +137,12 @@ struct RunOptions {
     bool optional_stop = false;   // operator switch: M01 stops
     long max_blocks = 20'000'000; // endless-loop guard (error 1001)
     bool require_homing = false;  // the console's machines: moves before POM give 159
+    // Tests: sees each G64 as run, its finished profile, stock, tool position,
+    // arguments and moves (issue 19: every program's roughing checked against
+    // its part, segment by segment).
+    std::function<void(const turning::Profile&, const std::vector<comp::V2>&, comp::V2, const turning::G64Args&,
+                       const std::vector<turning::Move>&)>
+        on_g64;
 };
 
 enum class StepResult {

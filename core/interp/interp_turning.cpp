@@ -412,6 +412,7 @@ bool Interpreter::turning_g64_run() {
     std::vector<turning::Move> moves;
     std::string why;
     if (int rc = turning::g64(prof, g64_stock_, g64_tool_, g64_, moves, why)) return fail(rc, why), false;
+    if (opt_.on_g64) opt_.on_g64(prof, g64_stock_, g64_tool_, g64_, moves);
     if (g64_.allowance_inside) {
         char ik[64];
         std::snprintf(ik, sizeof ik, "I%g K%g", g64_.i, g64_.k);

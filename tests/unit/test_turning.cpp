@@ -8,10 +8,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <numbers>
 #include <random>
+#include <sstream>
 
 #include "core/cycles/turning.hpp"
+#include "core/interp/interp.hpp"
 
 using namespace pupitre;
 using namespace pupitre::turning;
@@ -828,6 +832,60 @@ TEST(G64, RandomGroovesBoresAndSigns) {
     }
     EXPECT_EQ(inside, 12);
     EXPECT_EQ(tried, 12);
+}
+
+// Every G64 of the handbook programs (../shared/programs), run by the
+// interpreter with the programs that call them: no move, feed or rapid, enters
+// the part plus its allowance (issue 19 item 1). A corpus sweep: skipped
+// without ../shared.
+TEST(G64, HandbookProgramsNeverEnterThePart) {
+    const std::string dir = std::string(PUPITRE_SHARED) + "/programs/";
+    if (!std::filesystem::exists(dir + "INDEX.tsv")) GTEST_SKIP() << "no " << dir;
+    const std::vector<std::vector<std::string>> runs{
+        {"000_p555_cycles_x.iso"},
+        {"000_p555_cycles_z.iso"},
+        {"000_p555_jauges.iso"},
+        {"004_p555.iso"},
+        {"000_p1_mandrin_outil.iso"},
+        {"000_p2_mandrin_cone.iso"},
+        {"000_bride_p38_femelle.iso"},
+        {"000_bride_p38_male.iso"},
+        {"000_bride_p39.iso"},
+        {"000_cabestan_p4200.iso", "000_cabestan_p7300.iso"},
+        {"000_cabestan_p5200.iso", "000_cabestan_p7300.iso"},
+        {"000_cabestan_p4300.iso"},
+        {"000_cabestan_p5300.iso"},
+        {"000_palier_p11.iso", "000_palier_p123.iso", "000_palier_p2000.iso", "000_palier_p2001.iso"},
+        {"000_palier_p12.iso", "000_palier_p123.iso", "000_palier_p2000.iso", "000_palier_p2001.iso"},
+        {"000_palier_p13.iso", "000_palier_p123.iso", "000_palier_p2000.iso", "000_palier_p2001.iso"},
+    };
+    int seen = 0;
+    for (const auto& files : runs) {
+        MachineProfile m;
+        builtin_machine("lathe", m);
+        ProgramMemory mem;
+        for (const std::string& f : files) {
+            std::ifstream in(dir + f);
+            std::stringstream text;
+            text << in.rdbuf();
+            Diag d;
+            mem.load_text(f, text.str(), d);
+        }
+        RunOptions o;
+        o.on_g64 = [&](const Profile& fin, const std::vector<V2>& stock, V2 tool, const G64Args& a,
+                       const std::vector<Move>& mv) {
+            ++seen;
+            V2 t(a.k, a.i);
+            Oracle oracle(a.allowance_inside ? shifted(fin, t) : fin, stock, a.allowance_inside ? V2(0, 0) : t);
+            double step = a.has_p ? a.p : a.r;
+            check_clear(oracle, tool, mv, std::min(1.0, step / 2), files.front().c_str());
+        };
+        struct Quiet final : MachineSink {} sink;
+        Interpreter interp(m, mem, sink, o);
+        interp.start(mem.first());
+        interp.run_to_end();
+    }
+    EXPECT_GE(seen, 14);
 }
 
 TEST(G64, Errors) {
