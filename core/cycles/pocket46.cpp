@@ -270,21 +270,6 @@ bool Def::facing() const {
     return false;
 }
 
-Elem reversed(const Elem& e) {
-    Elem r = e;
-    std::swap(r.a, r.b);
-    r.sweep = -e.sweep;
-    return r;
-}
-
-double area(const std::vector<Elem>& el) {
-    std::vector<V2> pts = loop_of(el);
-    double s = 0;
-    for (size_t i = 0; i + 1 < pts.size(); ++i) s += cross(pts[i], pts[i + 1]);
-    if (!pts.empty()) s += cross(pts.back(), pts.front());
-    return s / 2;
-}
-
 double distance(const Elem& e, const V2& p) {
     if (!e.arc) {
         V2 ab = e.b - e.a;

@@ -97,7 +97,7 @@ bool finishing(const Def& d, double R, double J, std::vector<Run>& runs, Error& 
 // The closed or open offset of a chain of elements on `side` (comp::join).
 bool offset_chain(const std::vector<Elem>& el, bool closed, double r, int side, V2& start,
                   std::vector<Piece>& out);
-double area(const std::vector<Elem>& el);
-Elem reversed(const Elem& e);
+using comp::area;
+using comp::reversed;
 
 }  // namespace pupitre::p46

@@ -66,13 +66,6 @@ Elem line(const V2& a, const V2& b) {
     return e;
 }
 
-Elem reversed(const Elem& e) {
-    Elem r = e;
-    std::swap(r.a, r.b);
-    r.sweep = -e.sweep;
-    return r;
-}
-
 Elem translated(const Elem& e, const V2& t) {
     Elem r = e;
     r.a += t;
@@ -339,19 +332,6 @@ bool on_loop(const std::vector<Elem>& loop, const V2& q, double tol) {
     for (const Elem& e : loop)
         if (dist(e, q) <= tol) return true;
     return false;
-}
-
-double area(const std::vector<Elem>& loop) {
-    double a = 0;
-    for (const Elem& e : loop) {
-        if (e.arc) {
-            double r = e.r();
-            a += 0.5 * (cross(e.c, e.b - e.a) + r * r * e.sweep);
-        } else {
-            a += 0.5 * cross(e.a, e.b);
-        }
-    }
-    return a;
 }
 
 namespace {

@@ -19,7 +19,7 @@ constexpr double kUm = 1e-6;   // the 1 µm of the spec
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 Elem line(const V2& a, const V2& b);
-Elem reversed(const Elem& e);
+using comp::reversed;
 Elem translated(const Elem& e, const V2& t);
 
 // Angle travelled from the start of arc e to the direction of p about its centre,
@@ -54,7 +54,7 @@ V2 midpoint(const Elem& e);
 // Closed loops of elements (each b is the next a).
 int winding(const std::vector<Elem>& loop, const V2& q);
 bool on_loop(const std::vector<Elem>& loop, const V2& q, double tol = kTol);
-double area(const std::vector<Elem>& loop);  // signed, counter-clockwise > 0
+using comp::area;  // signed, counter-clockwise > 0
 // Two non-adjacent elements cross or overlap, or adjacent ones fold back.
 bool self_intersects(const std::vector<Elem>& loop);
 

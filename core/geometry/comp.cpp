@@ -10,6 +10,20 @@
 
 namespace pupitre::comp {
 
+double area(const std::vector<Elem>& loop) {
+    using geometry::cross;
+    double a = 0;
+    for (const Elem& e : loop) {
+        if (e.arc) {
+            double r = e.r();
+            a += 0.5 * (cross(e.c, e.b - e.a) + r * r * e.sweep);
+        } else {
+            a += 0.5 * cross(e.a, e.b);
+        }
+    }
+    return a;
+}
+
 namespace {
 using ::pupitre::geometry::kPi;
 constexpr double kEps = 1e-7;

@@ -5,6 +5,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 #include <Eigen/Core>
+#include <utility>
 #include <vector>
 
 namespace pupitre::comp {
@@ -19,6 +20,17 @@ struct Elem {
     double sweep = 0;  // radians, signed (positive counter-clockwise); arcs only
     double r() const { return (a - c).norm(); }
 };
+
+// The element travelled the other way.
+inline Elem reversed(const Elem& e) {
+    Elem r = e;
+    std::swap(r.a, r.b);
+    r.sweep = -e.sweep;
+    return r;
+}
+// Signed area of a closed loop of elements (each b the next a), exact on arcs:
+// counter-clockwise > 0.
+double area(const std::vector<Elem>& loop);
 
 // A piece of the tool-centre path: to `to`, straight or about `c`.
 struct Piece {
