@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "core/interp/plan.hpp"
+#include "core/numfmt.hpp"
 #include "core/geometry/geometry.hpp"
 
 namespace pupitre {
@@ -15,11 +16,8 @@ namespace {
 using ::pupitre::geometry::kPi;
 constexpr double kArcTolerance = 0.020;  // mm: start and end radii (004:626, 000:13249)
 
-std::string f3(double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.3f", v);
-    return buf;
-}
+// The shared formatter, cut where the 64-byte buffer it replaces cut.
+std::string f3(double v) { return fixed3(v, 63); }
 
 int ijk_index(int axis) { return axis == X ? 0 : axis == Y ? 1 : 2; }
 
