@@ -66,6 +66,9 @@ struct G65Args {
     double p = 0, r = 0;
     double q = 0;  // clearance; <= 0: the configured one
     double clearance = 1.0;
+    // Out: the allowance points into the groove's bottom; the passes cut it as
+    // written (warning 1116).
+    mutable bool allowance_inside = false;
 };
 int g65(const Profile& finished, V2 tool, const G65Args& a, std::vector<Move>& out,
         std::string& why);

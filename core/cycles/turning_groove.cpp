@@ -108,6 +108,18 @@ int g65(const Profile& fin, V2 tool, const G65Args& a, std::vector<Move>& out, s
     Material m;
     m.F = fr.to(fin.elems);
     m.translate(fr.to(V2(a.k, a.i)));
+    // The allowance as written (turning.md §11 item 6): pointing down the level
+    // axis it lies inside the part; the passes rough the translated profile and
+    // cut into it, the caller warns (1116). Along the passes a groove has walls
+    // facing both ways, so that component alone says nothing.
+    if (m.t.y() < -kUm) {
+        a.allowance_inside = true;
+        Profile moved;
+        for (const Elem& e : fin.elems) moved.elems.push_back(translated(e, V2(a.k, a.i)));
+        G65Args written = a;
+        written.i = written.k = 0;
+        return g65(moved, tool, written, out, why);
+    }
     if (m.in_A(s)) {
         why = "the start point lies inside the finished profile";
         return 875;

@@ -434,6 +434,7 @@ private:
     bool coordinate_above(const ProgramText* prog, int line, int axis, double& v);
     static double cyc(const Plan& p, Addr a, double dflt, bool* has = nullptr);
     bool turning_profile(long na, long nb, turning::Profile& out, comp::V2& first);
+    void warn_allowance_inside(int g, double i, double k);
     bool turning_emit(const std::vector<turning::Move>& moves, double lead, double infeed);
     bool turning_block(const Plan& p);
     bool turning_stock(const Plan& p);

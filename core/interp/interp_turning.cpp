@@ -39,6 +39,15 @@ int high_l_read(const Block& b) {
 }
 }  // namespace
 
+// Warning 1116: a G64/G65 allowance that points into the part, cut as written.
+void Interpreter::warn_allowance_inside(int g, double i, double k) {
+    char ik[64];
+    std::snprintf(ik, sizeof ik, "I%g K%g", i, k);
+    warn(err::wAllowanceInside, "G" + std::to_string(g) + " allowance " + ik +
+                                    " points into the finished part: the passes cut it into the part as written"
+                                    " (a bore takes a negative I)");
+}
+
 bool Interpreter::turning_profile(long na, long nb, turning::Profile& out, comp::V2& first) {
     const ProgramText* prog = stack_.back().prog;
     const Label* a = prog->find_label(na);
@@ -276,6 +285,7 @@ bool Interpreter::turning_block(const Plan& p) {
             a.q = cyc(p, addr1('Q'), 0);
             if (!a.has_ea) return fail(2, "G65 needs the infeed angle EA"), false;
             rc = turning::g65(prof, tool, a, moves, why);
+            if (rc == 0 && a.allowance_inside) warn_allowance_inside(65, a.i, a.k);
         } else {
             turning::G63Args a;
             a.has_x = p.axis[X];
@@ -413,13 +423,7 @@ bool Interpreter::turning_g64_run() {
     std::string why;
     if (int rc = turning::g64(prof, g64_stock_, g64_tool_, g64_, moves, why)) return fail(rc, why), false;
     if (opt_.on_g64) opt_.on_g64(prof, g64_stock_, g64_tool_, g64_, moves);
-    if (g64_.allowance_inside) {
-        char ik[64];
-        std::snprintf(ik, sizeof ik, "I%g K%g", g64_.i, g64_.k);
-        warn(err::wAllowanceInside, std::string("G64 allowance ") + ik +
-                                        " points into the finished part: the passes cut it into the part as written"
-                                        " (a bore takes a negative I)");
-    }
+    if (g64_.allowance_inside) warn_allowance_inside(64, g64_.i, g64_.k);
     bool ok = turning_emit(moves, 0, 0);
     loc_ = saved;
     modal_.motion = 0;

@@ -962,6 +962,17 @@ TEST(G65, P555Groove) {
     a.i = .5, a.k = .2;
     ASSERT_EQ(g65(p555(), tool, a, mv, why), 0);
     check_clear(o, tool, mv, 1, "G65 %555");
+    EXPECT_FALSE(a.allowance_inside);
+    // I-.5 on this outside groove points into its bottom: roughed as written,
+    // the last level is r 19.5, 0.5 below the Ø40 bottom (warning 1116).
+    a.i = -.5;
+    ASSERT_EQ(g65(p555(), tool, a, mv, why), 0) << why;
+    EXPECT_TRUE(a.allowance_inside);
+    double low = 1e300;
+    for (const Seg& s : feeds(tool, mv)) low = std::min(low, s.b.y());
+    EXPECT_NEAR(low, 19.5, 1e-9);
+    Oracle moved(shifted(p555(), V2(.2, -.5)), kStock555, V2(0, 0));
+    check_clear(moved, tool, mv, 1, "G65 %555 I-.5");
 }
 
 // S4's %555 (004:1389-1434): G0 X52 Z55, G65 N1100 N1000 EA-160.201 P2 Z0 I1 K0.5.
