@@ -4,9 +4,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "core/cycles/turning.hpp"
+#include "core/geometry/geometry.hpp"
 #include "core/cycles/turning_geom.hpp"
 #include "core/cycles/turning_zone.hpp"
 
@@ -17,7 +17,7 @@ using zone::Emit;
 using zone::Material;
 
 namespace {
-constexpr double kDeg = std::numbers::pi / 180;
+using ::pupitre::geometry::kDeg;
 
 // The first point of the ray S + s·u (s in [0, limit]) on the profile or inside
 // A, or false.

@@ -3,9 +3,9 @@
 // multi-start F; and G38 chained threads (§6.13), one synchronised move a block.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <cmath>
-#include <numbers>
 
 #include "core/cycles/turning.hpp"
+#include "core/geometry/geometry.hpp"
 #include "core/cycles/turning_geom.hpp"
 #include "core/cycles/turning_zone.hpp"
 
@@ -14,7 +14,7 @@ namespace pupitre::turning {
 using namespace geom;
 
 namespace {
-constexpr double kDeg = std::numbers::pi / 180;
+using ::pupitre::geometry::kDeg;
 
 bool whole(double v) {
     return std::fabs(v - std::round(v)) < 1e-9;

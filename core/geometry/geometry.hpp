@@ -12,6 +12,7 @@ namespace pupitre::geometry {
 using V2 = Eigen::Vector2d;
 
 inline constexpr double kPi = std::numbers::pi;
+inline constexpr double kDeg = std::numbers::pi / 180;  // radians in a degree
 
 // The z of the 3-D cross product: > 0 when b turns left of a.
 inline double cross(const V2& a, const V2& b) { return a.x() * b.y() - a.y() * b.x(); }

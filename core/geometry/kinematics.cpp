@@ -1,14 +1,14 @@
 // Kinematic models of the mill4 and mill5 (004:1588-1801; milling.md §9.3-9.4).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/geometry/kinematics.hpp"
+#include "core/geometry/geometry.hpp"
 
 #include <cmath>
-#include <numbers>
 
 namespace pupitre::kin {
 
 namespace {
-constexpr double kDeg = std::numbers::pi / 180.0;
+using ::pupitre::geometry::kDeg;
 Eigen::Isometry3d trans(double a, double b, double c) {
     Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
     t.translation() = Eigen::Vector3d(a, b, c);
