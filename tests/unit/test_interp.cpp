@@ -119,6 +119,32 @@ TEST(Motion, TimeModel) {
     EXPECT_NEAR(r.cap.moves[2].seconds, 15.0 / 15000 * 60, 1e-9);
 }
 
+// Issue 19: the warnings' branches that tests/warn does not reach.
+TEST(Warnings, DecimalSpeedRunsAsWrittenAndNamesIt) {
+    Prog r("%1\nG97 S333.5 M3\nM2\n", "lathe");
+    std::string said;
+    for (const Diag& d : r.in->diags())
+        if (d.code == err::wFractionalRpm) said = d.detail;
+    EXPECT_NE(said.find("turns at 333.500 rev/min"), std::string::npos) << said;
+    ASSERT_FALSE(r.cap.spindles.empty());
+    EXPECT_NEAR(r.cap.spindles[0].rpm, 333.5, 1e-9);
+}
+
+TEST(Warnings, AnLGivenBeforeTheRunIsSet) {
+    // --set, the PARAM page and earlier programs (the console's power-on
+    // lifetime) all count as setting it (CLARIFICATIONS 18).
+    const std::string text = "%1\nG0 XL2 Y0\nM2\n";
+    Prog given(text, "mill", {{"L2", 5}});
+    Prog unset(text, "mill");
+    auto warned = [](const Prog& r) {
+        int n = 0;
+        for (const Diag& d : r.in->diags()) n += d.code == err::wLReadUnset;
+        return n;
+    };
+    EXPECT_EQ(warned(given), 0);
+    EXPECT_EQ(warned(unset), 1);
+}
+
 TEST(Motion, FeedIsClampedWithAWarning) {
     Prog r("%1\nG1 X10 F99999\nM2\n");
     EXPECT_EQ(r.error(), 0);
