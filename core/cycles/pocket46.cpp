@@ -245,6 +245,14 @@ V2 end_of(const Run& r) {
     return r.pieces.empty() ? r.start : r.pieces.back().to;
 }
 
+// A NU6 wall as written, or travelled the other way (keep false).
+std::vector<Elem> wall_as(const Section& s, bool keep) {
+    if (keep) return s.elems;
+    std::vector<Elem> w;
+    for (size_t i = s.elems.size(); i-- > 0;) w.push_back(reversed(s.elems[i]));
+    return w;
+}
+
 // The sections that make the facing's closed boundary (NU5/NU6 in order).
 std::vector<Elem> chain56(const Def& d) {
     std::vector<Elem> all;
@@ -558,13 +566,7 @@ bool roughing(const Def& d, double R, std::vector<Run>& runs, std::vector<double
     if (!ch.empty()) {
         bool keep = (area(ch) > 0) == (side > 0);
         for (const Section& s : d.sections) {
-            if (s.nu != 6) continue;
-            std::vector<Elem> w;
-            if (keep)
-                w = s.elems;
-            else
-                for (size_t i = s.elems.size(); i-- > 0;) w.push_back(reversed(s.elems[i]));
-            if (!add(w, false, c, true)) return false;
+            if (s.nu == 6 && !add(wall_as(s, keep), false, c, true)) return false;
         }
     }
     return true;
@@ -651,11 +653,7 @@ bool finishing(const Def& d, double R, double J, std::vector<Run>& runs, Error& 
         for (size_t si = 0; si < d.sections.size(); ++si) {
             const Section& s = d.sections[si];
             if (s.nu != 6) continue;
-            std::vector<Elem> w;
-            if (keep)
-                w = s.elems;
-            else
-                for (size_t i = s.elems.size(); i-- > 0;) w.push_back(reversed(s.elems[i]));
+            std::vector<Elem> w = wall_as(s, keep);
             Run run;
             V2 start;
             std::vector<Piece> pcs;
