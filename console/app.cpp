@@ -115,7 +115,8 @@ int event_loop(console::Session& s, console::Terminal& term, bool ascii) {
 }  // namespace
 
 int console(const ConsoleArgs& a) {
-    std::setlocale(LC_ALL, "");
+    // The locale was set by main() (i18n::init): characters from the
+    // environment, LC_NUMERIC "C".
     store::Options o;
     std::string path = a.db;
     if (path.empty()) {

@@ -3,10 +3,14 @@
 #include <CLI/CLI.hpp>
 #include <charconv>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
+#include <filesystem>
+#include <string_view>
 
 #include "console/cli.hpp"
 #include "console/cli_plot.hpp"
+#include "core/i18n.hpp"
 #include "core/interp/machine.hpp"
 
 using namespace pupitre;
@@ -18,62 +22,116 @@ bool parse_number(std::string s, int& n) {
     auto r = std::from_chars(s.data(), s.data() + s.size(), n);
     return !s.empty() && r.ec == std::errc() && r.ptr == s.data() + s.size() && n >= 0;
 }
+// Where the catalogues are: $PUPITRE_LOCALEDIR, else locale/ beside the
+// executable (the build tree, so that scripts/run needs no install), else the
+// installed share/locale.
+std::string locale_dir() {
+    if (const char* d = std::getenv("PUPITRE_LOCALEDIR"); d && *d) return d;
+    std::error_code ec;
+    auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+    if (!ec) {
+        auto here = exe.parent_path() / "locale";
+        if (std::filesystem::is_directory(here, ec)) return here.string();
+    }
+    return PUPITRE_LOCALEDIR;
+}
+
+// --lang is read before the command line is built, so that its help is
+// already in the chosen language. Returns false (and says why) on an unknown
+// language.
+bool setup_language(int argc, char** argv) {
+    std::string want;
+    for (int i = 1; i < argc; ++i) {
+        std::string_view a = argv[i];
+        if (a == "--") break;
+        if (a == "--lang" && i + 1 < argc) want = argv[i + 1];
+        else if (a.starts_with("--lang=")) want = std::string(a.substr(7));
+    }
+    std::string dir = locale_dir();
+    std::string lang = i18n::choose(want, i18n::wanted([](const char* n) -> const char* { return std::getenv(n); }), dir);
+    if (lang.empty()) {
+        i18n::init("en", dir);
+        std::fprintf(stderr, tr("pupitre: no catalogue for the language '%s' (available: %s)\n"), want.c_str(),
+                     i18n::available(dir).c_str());
+        return false;
+    }
+    i18n::init(lang, dir);
+    return true;
+}
+
+// CLI11's own words, in the chosen language.
+void translate_cli(CLI::App& app) {
+    auto f = app.get_formatter();
+    for (const char* w : {N_("Usage"), N_("OPTIONS"), N_("SUBCOMMAND"), N_("SUBCOMMANDS"), N_("Positionals"),
+                          N_("REQUIRED"), N_("Needs"), N_("Excludes")})
+        f->label(w, tr(w));
+    app.option_defaults()->group(tr("Options"));
+    app.set_help_flag("-h,--help", tr("Print this help message and exit"));
+}
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app{"pupitre - the operator panel of a NUM 1020/1040/1060 CNC, with the machine simulated"};
-    app.set_version_flag("--version", std::string("pupitre ") + PUPITRE_VERSION);
+    if (!setup_language(argc, argv)) return cli::kUsage;
+    CLI::App app{tr("pupitre - the operator panel of a NUM 1020/1040/1060 CNC, with the machine simulated")};
+    app.set_version_flag("--version", std::string("pupitre ") + PUPITRE_VERSION,
+                         tr("Display program version information and exit"));
     app.require_subcommand(0, 1);
     // --db is the program's option; run and check pass it up when given after them.
     app.fallthrough();
+    translate_cli(app);
+    std::string lang;  // read by setup_language() already; here for --help and the parser
+    app.add_option("--lang", lang,
+                   tr("the language of the texts people read: en or fr (default: LANGUAGE, LC_ALL, "
+                      "LC_MESSAGES, LANG; else en)"))
+        ->type_name("LANG");
     std::string db;
     app.add_option(
            "--db", db,
-           "the program store (default $XDG_DATA_HOME/pupitre/pupitre.db, created on first use); "
-           "run and check use a store only when given")
+           tr("the program store (default $XDG_DATA_HOME/pupitre/pupitre.db, created on first use); "
+           "run and check use a store only when given"))
         ->type_name("FILE");
 
     cli::ConsoleArgs ca;
     app.add_option("--machine", ca.machine,
-                   "the console's machine: lathe, mill, mill4, mill5, a stored profile or a .machine file "
-                   "(default: the last one used, else lathe)");
-    app.add_option("--theme", ca.theme, "the console's colours: colour, mono or phosphor (default colour; mono when NO_COLOR is set)");
-    app.add_flag("--ascii", ca.ascii, "draw the console with ASCII only, even on a UTF-8 terminal");
+                   tr("the console's machine: lathe, mill, mill4, mill5, a stored profile or a .machine file "
+                   "(default: the last one used, else lathe)"));
+    app.add_option("--theme", ca.theme, tr("the console's colours: colour, mono or phosphor (default colour; mono when NO_COLOR is set)"));
+    app.add_flag("--ascii", ca.ascii, tr("draw the console with ASCII only, even on a UTF-8 terminal"));
 
     cli::RunArgs ra;
     auto add_common = [&](CLI::App* sub) {
         sub->add_option("--machine", ra.machine,
-                        "machine profile: lathe, mill, mill4, mill5, or a .machine file (default lathe)");
-        sub->add_option("--set", ra.sets, "seed the machine before the run: PREF.X=-120.5, D1.R=4, L5=2, E80000=18000")
+                        tr("machine profile: lathe, mill, mill4, mill5, or a .machine file (default lathe)"));
+        sub->add_option("--set", ra.sets, tr("seed the machine before the run: PREF.X=-120.5, D1.R=4, L5=2, E80000=18000"))
             ->type_name("NAME=VALUE")
             ->allow_extra_args(false);
-        sub->add_flag("--block-skip", ra.block_skip, "skip the blocks that start with '/'");
-        sub->add_option("--max-blocks", ra.max_blocks, "stop with error 1001 after this many blocks, or twice as many moves (default 20000000)");
-        sub->add_option("files", ra.files, "program files; the first program of the first file is run")
+        sub->add_flag("--block-skip", ra.block_skip, tr("skip the blocks that start with '/'"));
+        sub->add_option("--max-blocks", ra.max_blocks, tr("stop with error 1001 after this many blocks, or twice as many moves (default 20000000)"));
+        sub->add_option("files", ra.files, tr("program files; the first program of the first file is run"))
             ->required()
             ->check(CLI::ExistingFile);
     };
-    CLI::App* run = app.add_subcommand("run", "dry-run a program and print a summary, or a trace");
+    CLI::App* run = app.add_subcommand("run", tr("dry-run a program and print a summary, or a trace"));
     add_common(run);
-    run->add_flag("--trace", ra.trace, "one JSON line per machine event");
-    run->add_flag("--json", ra.json, "the summary as JSON");
-    run->add_flag("--optional-stop", ra.optional_stop, "M01 stops (the optional-stop switch is on)");
-    CLI::App* check = app.add_subcommand("check", "report every problem a dry run would meet, without a trace");
+    run->add_flag("--trace", ra.trace, tr("one JSON line per machine event"));
+    run->add_flag("--json", ra.json, tr("the summary as JSON"));
+    run->add_flag("--optional-stop", ra.optional_stop, tr("M01 stops (the optional-stop switch is on)"));
+    CLI::App* check = app.add_subcommand("check", tr("report every problem a dry run would meet, without a trace"));
     add_common(check);
     cli::PlotArgs pa;
-    CLI::App* plot = app.add_subcommand("plot", "draw the toolpath of a dry run as SVG, PNG or PDF");
+    CLI::App* plot = app.add_subcommand("plot", tr("draw the toolpath of a dry run as SVG, PNG or PDF"));
     plot->add_option("--machine", pa.machine,
-                     "machine profile: lathe, mill, mill4, mill5, or a .machine file (default lathe)");
-    plot->add_option("--plane", pa.plane, "xy, xz, yz or zx (default: the program's; zx on the lathe)");
-    plot->add_option("--set", pa.sets, "seed the machine before the run: PREF.X=-120.5, D1.R=4, L5=2")
+                     tr("machine profile: lathe, mill, mill4, mill5, or a .machine file (default lathe)"));
+    plot->add_option("--plane", pa.plane, tr("xy, xz, yz or zx (default: the program's; zx on the lathe)"));
+    plot->add_option("--set", pa.sets, tr("seed the machine before the run: PREF.X=-120.5, D1.R=4, L5=2"))
         ->type_name("NAME=VALUE")
         ->allow_extra_args(false);
-    plot->add_flag("--block-skip", pa.block_skip, "skip the blocks that start with '/'");
-    plot->add_option("--max-blocks", pa.max_blocks, "stop with error 1001 after this many blocks, or twice as many moves (default 20000000)");
-    plot->add_option("--svg", pa.svg, "the SVG file to write ('-': the standard output)")->type_name("OUT");
-    plot->add_option("--png", pa.png, "the picture as a PNG, 1600 pixels wide")->type_name("OUT");
-    plot->add_option("--pdf", pa.pdf, "the picture as a one-page PDF, for printing")->type_name("OUT");
-    plot->add_option("files", pa.files, "program files; the first program of the first file is run")
+    plot->add_flag("--block-skip", pa.block_skip, tr("skip the blocks that start with '/'"));
+    plot->add_option("--max-blocks", pa.max_blocks, tr("stop with error 1001 after this many blocks, or twice as many moves (default 20000000)"));
+    plot->add_option("--svg", pa.svg, tr("the SVG file to write ('-': the standard output)"))->type_name("OUT");
+    plot->add_option("--png", pa.png, tr("the picture as a PNG, 1600 pixels wide"))->type_name("OUT");
+    plot->add_option("--pdf", pa.pdf, tr("the picture as a one-page PDF, for printing"))->type_name("OUT");
+    plot->add_option("files", pa.files, tr("program files; the first program of the first file is run"))
         ->required()
         ->check(CLI::ExistingFile);
 
@@ -81,23 +139,23 @@ int main(int argc, char** argv) {
     std::vector<std::string> numbers;  // as typed, checked after parsing
     std::string number;
     CLI::App* imp =
-        app.add_subcommand("import", "store the % programs of files (one transaction for all)");
-    imp->add_option("files", sa.files, "program files; each % program is stored under its number")
+        app.add_subcommand("import", tr("store the % programs of files (one transaction for all)"));
+    imp->add_option("files", sa.files, tr("program files; each % program is stored under its number"))
         ->required();
-    imp->add_option("--number", sa.number, "the number for a file with no % line")->type_name("N");
+    imp->add_option("--number", sa.number, tr("the number for a file with no % line"))->type_name("N");
     CLI::App* exp =
-        app.add_subcommand("export", "write stored programs exactly as imported or saved");
-    exp->add_option("numbers", numbers, "program numbers, written one after the other")->required();
-    exp->add_option("-o,--output", sa.output, "write to FILE instead of the standard output")
+        app.add_subcommand("export", tr("write stored programs exactly as imported or saved"));
+    exp->add_option("numbers", numbers, tr("program numbers, written one after the other"))->required();
+    exp->add_option("-o,--output", sa.output, tr("write to FILE instead of the standard output"))
         ->type_name("FILE");
-    CLI::App* list = app.add_subcommand("list", "list the stored programs");
-    CLI::App* rm = app.add_subcommand("rm", "delete a stored program (its history stays)");
-    rm->add_option("number", number, "program number")->required();
-    CLI::App* hist = app.add_subcommand("history", "the revisions of a stored program");
-    hist->add_option("number", number, "program number")->required();
-    CLI::App* rest = app.add_subcommand("restore", "make an earlier revision current again");
-    rest->add_option("number", number, "program number")->required();
-    rest->add_option("revision", sa.revision, "revision (see history)")->required();
+    CLI::App* list = app.add_subcommand("list", tr("list the stored programs"));
+    CLI::App* rm = app.add_subcommand("rm", tr("delete a stored program (its history stays)"));
+    rm->add_option("number", number, tr("program number"))->required();
+    CLI::App* hist = app.add_subcommand("history", tr("the revisions of a stored program"));
+    hist->add_option("number", number, tr("program number"))->required();
+    CLI::App* rest = app.add_subcommand("restore", tr("make an earlier revision current again"));
+    rest->add_option("number", number, tr("program number"))->required();
+    rest->add_option("revision", sa.revision, tr("revision (see history)"))->required();
 
     try {
         app.parse(argc, argv);
@@ -118,7 +176,7 @@ int main(int argc, char** argv) {
     for (const auto& t : numbers) {
         int n = 0;
         if (!parse_number(t, n)) {
-            std::fprintf(stderr, "pupitre: '%s' is not a program number\n", t.c_str());
+            std::fprintf(stderr, tr("pupitre: '%s' is not a program number\n"), t.c_str());
             return cli::kUsage;
         }
         sa.numbers.push_back(n);
@@ -134,14 +192,14 @@ int main(int argc, char** argv) {
         if (*hist) return cli::store_history(sa);
         if (*rest) return cli::store_restore(sa);
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "pupitre: internal error: %s\n", e.what());
+        std::fprintf(stderr, tr("pupitre: internal error: %s\n"), e.what());
         return cli::kSoftware;
     }
     ca.db = db;
     try {
         return cli::console(ca);
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "pupitre: internal error: %s\n", e.what());
+        std::fprintf(stderr, tr("pupitre: internal error: %s\n"), e.what());
         return cli::kSoftware;
     }
 }

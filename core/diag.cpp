@@ -2,8 +2,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/diag.hpp"
 
+#include <string>
 #include <unordered_map>
 #include <utility>
+
+#include "core/i18n.hpp"
 
 namespace pupitre {
 namespace data {
@@ -28,9 +31,11 @@ std::string format_diag(const Diag& d) {
 }
 
 namespace {
-// Columns: number, category, machine_error, message_fr, message_en.
-std::unordered_map<int, std::string_view> load_errors() {
-    std::unordered_map<int, std::string_view> m;
+// Columns: number, category, machine_error, message_fr, message_en. The
+// English text is the catalogue's msgid (scripts/lib/extract-pot); po/fr.po
+// carries message_fr as its translation (tests/i18n/catalogue.sh checks it).
+std::unordered_map<int, std::string> load_errors() {
+    std::unordered_map<int, std::string> m;
     std::string_view all = data::errors_tsv();
     bool header = true;
     while (!all.empty()) {
@@ -52,7 +57,7 @@ std::unordered_map<int, std::string_view> load_errors() {
             if (c < '0' || c > '9') break;
             num = num * 10 + (c - '0');
         }
-        if (num > 0) m.emplace(num, cols[4]);
+        if (num > 0) m.emplace(num, std::string(cols[4]));
     }
     return m;
 }
@@ -61,38 +66,38 @@ std::unordered_map<int, std::string_view> load_errors() {
 std::string_view num_error_text(int code) {
     static const auto table = load_errors();
     auto it = table.find(code);
-    return it == table.end() ? std::string_view{} : it->second;
+    return it == table.end() ? std::string_view{} : tr(it->second.c_str());
 }
 
 // What the ALARM page says of our own numbers; pupitre(1), DIAGNOSTICS, says more.
 std::string_view pupitre_diag_text(int code) {
-    static const std::pair<int, std::string_view> kTexts[] = {
-        {err::kBlockBudget, "Endless loop: the program comes back to a state it was in, or exceeds the work budget"},
-        {err::kNotText, "The file is not text"},
-        {err::kNoProgram, "The file holds no program"},
-        {err::kCannotRead, "The file cannot be opened or read"},
-        {err::kProgramExists, "G76+ H of a program already in memory"},
-        {err::kProgramInUse, "G76- H of a program that runs"},
-        {err::wFeedClamped, "Warning: F above the machine maximum, limited to it"},
-        {err::wSpeedClamped, "Warning: S above the machine maximum, limited to it"},
-        {err::wUnknownM, "Warning: an M function with no meaning on the NUM, ignored"},
-        {err::wSpindleStopped, "Warning: G96 while the spindle is not turning"},
-        {err::wIncrementalFirst, "Warning: the first move is written in G91"},
-        {err::wDuplicateProgram, "Warning: a program number loaded twice; this copy is ignored"},
-        {err::wUnsignedEB, "Warning: EB without a sign, taken as a fillet"},
-        {err::wTinyFeed, "Warning: a feed below 1 mm/min in G94 (a feed per revolution without G95?)"},
-        {err::wFeedBeforeF, "Warning: a feed move before any F runs at the power-on feed"},
-        {err::wLReadUnset, "Warning: an L variable read before anything set it reads 0"},
-        {err::wIdleWord, "Warning: R, I, J or K in a G0/G1 block has no effect (a G2/G3 left out?)"},
-        {err::wFractionalRpm, "Warning: a spindle speed in rev/min that is not a whole number"},
-        {err::wProfileL, "Warning: L100-L199 or L900-L959 read in a roughing-cycle profile (error 96 on the NUM)"},
-        {err::wFeedModeNoF, "Warning: G94 or G95 without F in its block"},
-        {err::wAllowanceInside, "Warning: a finishing allowance whose sign puts it inside the part"},
-        {err::wNoToolWidth, "Warning: G66 correctors that give no tool width"},
-        {err::wPlungeAway, "Warning: a G46 roughing plunges with the cutter away from the drilled hole"},
+    static const std::pair<int, const char*> kTexts[] = {
+        {err::kBlockBudget, N_("Endless loop: the program comes back to a state it was in, or exceeds the work budget")},
+        {err::kNotText, N_("The file is not text")},
+        {err::kNoProgram, N_("The file holds no program")},
+        {err::kCannotRead, N_("The file cannot be opened or read")},
+        {err::kProgramExists, N_("G76+ H of a program already in memory")},
+        {err::kProgramInUse, N_("G76- H of a program that runs")},
+        {err::wFeedClamped, N_("Warning: F above the machine maximum, limited to it")},
+        {err::wSpeedClamped, N_("Warning: S above the machine maximum, limited to it")},
+        {err::wUnknownM, N_("Warning: an M function with no meaning on the NUM, ignored")},
+        {err::wSpindleStopped, N_("Warning: G96 while the spindle is not turning")},
+        {err::wIncrementalFirst, N_("Warning: the first move is written in G91")},
+        {err::wDuplicateProgram, N_("Warning: a program number loaded twice; this copy is ignored")},
+        {err::wUnsignedEB, N_("Warning: EB without a sign, taken as a fillet")},
+        {err::wTinyFeed, N_("Warning: a feed below 1 mm/min in G94 (a feed per revolution without G95?)")},
+        {err::wFeedBeforeF, N_("Warning: a feed move before any F runs at the power-on feed")},
+        {err::wLReadUnset, N_("Warning: an L variable read before anything set it reads 0")},
+        {err::wIdleWord, N_("Warning: R, I, J or K in a G0/G1 block has no effect (a G2/G3 left out?)")},
+        {err::wFractionalRpm, N_("Warning: a spindle speed in rev/min that is not a whole number")},
+        {err::wProfileL, N_("Warning: L100-L199 or L900-L959 read in a roughing-cycle profile (error 96 on the NUM)")},
+        {err::wFeedModeNoF, N_("Warning: G94 or G95 without F in its block")},
+        {err::wAllowanceInside, N_("Warning: a finishing allowance whose sign puts it inside the part")},
+        {err::wNoToolWidth, N_("Warning: G66 correctors that give no tool width")},
+        {err::wPlungeAway, N_("Warning: a G46 roughing plunges with the cutter away from the drilled hole")},
     };
     for (const auto& [n, text] : kTexts)
-        if (n == code) return text;
+        if (n == code) return tr(text);
     return {};
 }
 
