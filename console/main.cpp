@@ -139,9 +139,12 @@ int main(int argc, char** argv) {
     std::vector<std::string> numbers;  // as typed, checked after parsing
     std::string number;
     CLI::App* imp =
+        // xgettext:no-c-format
         app.add_subcommand("import", tr("store the % programs of files (one transaction for all)"));
+    // xgettext:no-c-format
     imp->add_option("files", sa.files, tr("program files; each % program is stored under its number"))
         ->required();
+    // xgettext:no-c-format
     imp->add_option("--number", sa.number, tr("the number for a file with no % line"))->type_name("N");
     CLI::App* exp =
         app.add_subcommand("export", tr("write stored programs exactly as imported or saved"));

@@ -65,10 +65,31 @@ void Canvas::resize(int width, int height) {
 
 void Canvas::clear() { std::fill(cells_.begin(), cells_.end(), Cell{}); }
 
+namespace {
+// The ASCII face of a character: the letter of an accented Latin-1 one (the
+// French console under --ascii), the plain form of typographic marks.
+char32_t ascii_of(char32_t ch) {
+    static constexpr std::string_view kLatin1 =  // U+00C0..U+00FF
+        "AAAAAAACEEEEIIIIDNOOOOOxOUUUUYTs"
+        "aaaaaaaceeeeiiiidnooooo/ouuuuyty";
+    if (ch >= 0xC0 && ch <= 0xFF) return char32_t(kLatin1[ch - 0xC0]);
+    switch (ch) {
+    case U'\u00a0': case U'\u202f': return U' ';  // no-break spaces
+    case U'\u00ab': case U'\u00bb': case U'\u201c': case U'\u201d': return U'"';
+    case U'\u2018': case U'\u2019': return U'\'';
+    case U'\u2013': case U'\u2014': return U'-';
+    case U'\u0152': return U'O';  // Œ
+    case U'\u0153': return U'o';  // œ
+    case U'\u2192': return U'>';
+    default: return U'?';
+    }
+}
+}  // namespace
+
 void Canvas::put(int x, int y, char32_t ch, Style st) {
     if (x < 0 || y < 0 || x >= w_ || y >= h_) return;
     if (ch < 0x20 || ch == 0x7f) ch = U'?';  // never a control character on screen
-    if (ascii_ && ch >= 0x80) ch = ch == U'\u00f8' ? U'o' : ch == U'\u2192' ? U'>' : U'?';  // ø (diameter), →
+    if (ascii_ && ch >= 0x80) ch = ascii_of(ch);
     cells_[size_t(y * w_ + x)] = Cell{ch, st};
 }
 

@@ -9,19 +9,8 @@ bin=$1 name=$2 bless=${3:-}
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
 shared=${PUPITRE_SHARED:-$root/../shared}
-line=$(grep -E "^$name[[:space:]]" "$here/cases.txt" || true)
-[ -n "$line" ] || { echo "golden: no case '$name' in cases.txt" >&2; exit 2; }
-read -r _ machine rest <<<"$line"
-args=()
-for w in $rest; do
-    case $w in
-        shared:*) f="$shared/programs/${w#shared:}"
-                  [ -f "$f" ] || { echo "golden: $f missing (shared/ not beside the repo)" >&2; exit 77; }
-                  args+=("$f") ;;
-        local:*)  args+=("$here/programs/${w#local:}") ;;
-        *)        args+=("$w") ;;
-    esac
-done
+. "$here/case_args.sh"
+golden_case "$name"
 actual=$(mktemp)
 trap 'rm -f "$actual" "$actual.err"' EXIT
 set +e

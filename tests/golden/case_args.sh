@@ -1,0 +1,20 @@
+# Sourced by golden.sh and tests/i18n/golden_fr.sh: the machine and the
+# program arguments of one case of cases.txt.
+#   golden_case NAME   sets $machine and the array $args (exit 77: shared/ missing)
+# SPDX-License-Identifier: GPL-3.0-or-later
+golden_case() {
+    local name=$1 line w f rest
+    line=$(grep -E "^$name[[:space:]]" "$here/cases.txt" || true)
+    [ -n "$line" ] || { echo "golden: no case '$name' in cases.txt" >&2; exit 2; }
+    read -r _ machine rest <<<"$line"
+    args=()
+    for w in $rest; do
+        case $w in
+            shared:*) f="$shared/programs/${w#shared:}"
+                      [ -f "$f" ] || { echo "golden: $f missing (shared/ not beside the repo)" >&2; exit 77; }
+                      args+=("$f") ;;
+            local:*)  args+=("$here/programs/${w#local:}") ;;
+            *)        args+=("$w") ;;
+        esac
+    done
+}
