@@ -65,10 +65,26 @@ void Canvas::resize(int width, int height) {
 
 void Canvas::clear() { std::fill(cells_.begin(), cells_.end(), Cell{}); }
 
+namespace {
+
+// What an ASCII terminal shows for a character it lacks: ø (diameter) and →,
+// and the accented letters of a translation without their accents.
+char32_t ascii_fallback(char32_t ch) {
+    if (ch == U'\u00f8') return U'o';
+    if (ch == U'\u2192') return U'>';
+    static constexpr std::u32string_view from = U"àâäáéèêëîïíôöóùûüúçÀÂÄÉÈÊËÎÏÔÖÙÛÜÇœŒ«»’\u00a0\u202f";
+    static constexpr std::u32string_view to = U"aaaaeeeeiiiooouuuucAAAEEEEIIOOUUUCoO\"\"'  ";
+    static_assert(from.size() == to.size());
+    size_t i = from.find(ch);
+    return i == std::u32string_view::npos ? U'?' : to[i];
+}
+
+}  // namespace
+
 void Canvas::put(int x, int y, char32_t ch, Style st) {
     if (x < 0 || y < 0 || x >= w_ || y >= h_) return;
     if (ch < 0x20 || ch == 0x7f) ch = U'?';  // never a control character on screen
-    if (ascii_ && ch >= 0x80) ch = ch == U'\u00f8' ? U'o' : ch == U'\u2192' ? U'>' : U'?';  // ø (diameter), →
+    if (ascii_ && ch >= 0x80) ch = ascii_fallback(ch);
     cells_[size_t(y * w_ + x)] = Cell{ch, st};
 }
 
