@@ -6,6 +6,8 @@
 #include <charconv>
 
 #include "console/session.hpp"
+#include "core/i18n.hpp"
+#include "pages/pages.hpp"
 
 namespace pupitre::data {
 std::string_view bindings_txt();
@@ -100,12 +102,12 @@ Effect edit_op(Session& s, std::string (Editor::*op)(), const char* done) {
 Effect edit_modify(Session& s, std::string_view) {
     std::string why;
     if (s.editor.cursor < s.editor.locked) {
-        s.say("this block is already prepared", true);
+        s.say(tr("this block is already prepared"), true);
         return Effect::redraw;
     }
     s.input().set_text(s.editor.lines()[size_t(s.editor.cursor)]);
     s.modify_pending = true;
-    s.say("modify the block, Enter replaces it");
+    s.say(tr("modify the block, Enter replaces it"));
     return Effect::redraw;
 }
 
@@ -122,7 +124,7 @@ Effect dir_delete(Session& s, std::string_view) {
     int n = s.programs()[size_t(s.dir_cursor)].number;
     if (s.pending_delete != n) {
         s.pending_delete = n;
-        s.say("delete %" + std::to_string(n) + "? press Del again to confirm", true);
+        s.say(strf(tr("delete %%%d? press Del again to confirm"), n), true);
         return Effect::redraw;
     }
     s.pending_delete = -1;
@@ -142,15 +144,16 @@ Effect jog(Session& s, std::string_view arg) {
     if (sim.mode() == Mode::jog && sim.queued_time() > 0.1) return Effect::none;
     // Lathe X is shown as a diameter: a step of the display is what the operator means.
     std::string why;
-    if (!sim.jog(axis, sign * dist, why)) s.say("JOG: " + why, true);
+    if (!sim.jog(axis, sign * dist, why)) s.say(strf(tr("JOG: %s"), why.c_str()), true);
     return Effect::redraw;
 }
 
 Effect override_step(Session& s, std::string_view arg, bool feed) {
     int& v = feed ? s.sim().feed_override : s.sim().spindle_override;
     v = std::clamp(v + to_int(arg), feed ? 0 : 50, 120);
-    s.say(std::string(feed ? "feed" : "spindle") + " override " + std::to_string(v) + " %" +
-          (s.sim().overrides_inhibited() ? " (inhibited by M49)" : ""));
+    std::string news = strf(feed ? tr("feed override %d %%") : tr("spindle override %d %%"), v);
+    if (s.sim().overrides_inhibited()) news += std::string(" ") + tr("(inhibited by M49)");
+    s.say(news);
     return Effect::redraw;
 }
 
@@ -164,73 +167,143 @@ Effect inc_step(Session& s, std::string_view) {
             break;
         }
     s.sim().increment = next;
-    s.say("INC step " + pages::fmt_len(next) + " mm");
+    s.say(strf(tr("INC step %s mm"), pages::fmt_len(next).c_str()));
     return Effect::redraw;
 }
 
+// The help texts stay plain literals in the rows (tests/console/man_sync.py
+// reads the action names from there); kActionHelp below marks them for the
+// catalogue. Soft-key labels: F1-F9 show 6 columns, F10 5.
 const std::vector<Action> kActions = {
     {"page", "show the %s page", always, page, "%S"},
-    {"mode-next", "next mode", always, [](Session& s, std::string_view) { return mode_step(s, 1); }, "MODE"},
-    {"mode-prev", "previous mode", always, [](Session& s, std::string_view) { return mode_step(s, -1); }, "MODE-"},
+    // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
+    {"mode-next", "next mode", always, [](Session& s, std::string_view) { return mode_step(s, 1); }, N_("MODE")},
+    // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
+    {"mode-prev", "previous mode", always, [](Session& s, std::string_view) { return mode_step(s, -1); }, N_("MODE-")},
     {"mode", "the %s mode", always,
      [](Session& s, std::string_view a) { return s.command("mode " + std::string(a)); }, "%S"},
-    {"cycle-start", "Cycle Start", always, [](Session& s, std::string_view) { return s.command("cycle"); }, "START"},
-    {"feed-hold", "feed hold", always, [](Session& s, std::string_view) { return s.command("stop"); }, "HOLD"},
-    {"raz", "RAZ (reset)", always, [](Session& s, std::string_view) { return s.command("raz"); }, "RAZ"},
-    {"quit", "leave the console", always, [](Session& s, std::string_view) { return s.command("quit"); }, "QUIT"},
-    {"scroll", "scroll the page by %s screen", always, scroll, "SCROLL"},
-    {"dir-move", "move the cursor by %s", on_dir, dir_move, "MOVE"},
-    {"dir-load", "select the program under the cursor", on_dir, dir_load, "LOAD"},
-    {"dir-delete", "delete the program under the cursor (twice to confirm)", on_dir, dir_delete, "DELETE"},
+    // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
+    {"cycle-start", "Cycle Start", always, [](Session& s, std::string_view) { return s.command("cycle"); }, N_("START")},
+    // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
+    {"feed-hold", "feed hold", always, [](Session& s, std::string_view) { return s.command("stop"); }, N_("HOLD")},
+    // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
+    {"raz", "RAZ (reset)", always, [](Session& s, std::string_view) { return s.command("raz"); }, N_("RAZ")},
+    // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
+    {"quit", "leave the console", always, [](Session& s, std::string_view) { return s.command("quit"); }, N_("QUIT")},
+    // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
+    {"scroll", "scroll the page by %s screen", always, scroll, N_("SCROLL")},
+    // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
+    {"dir-move", "move the cursor by %s", on_dir, dir_move, N_("MOVE")},
+    // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
+    {"dir-load", "select the program under the cursor", on_dir, dir_load, N_("LOAD")},
+    // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
+    {"dir-delete", "delete the program under the cursor (twice to confirm)", on_dir, dir_delete, N_("DELETE")},
     {"jog", "jog %s", jogging, jog, "%S"},
-    {"corr-move", "choose the corrector %s", on_corr, corr_move, "D"},
+    // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
+    {"corr-move", "choose the corrector %s", on_corr, corr_move, N_("D")},
+    // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
     {"graph-zoom", "zoom %s about the cursor", on_graph,
-     [](Session& s, std::string_view a) { return s.graph_key("zoom", a); }, "ZOOM"},
+     [](Session& s, std::string_view a) { return s.graph_key("zoom", a); }, N_("ZOOM")},
+    // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
     {"graph-pan", "pan the drawing (%s)", on_graph, [](Session& s, std::string_view a) { return s.graph_key("pan", a); },
-     "PAN"},
+     N_("PAN")},
+    // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
     {"graph-cursor", "move the cursor (%s): its coordinates are shown", on_graph,
-     [](Session& s, std::string_view a) { return s.graph_key("cursor", a); }, "CURSOR"},
+     [](Session& s, std::string_view a) { return s.graph_key("cursor", a); }, N_("CURSOR")},
+    // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
     {"graph-fit", "fit the cutting moves", on_graph, [](Session& s, std::string_view) { return s.graph_key("fit", ""); },
-     "FIT"},
+     N_("FIT")},
+    // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
     {"graph-plane", "next plane (XY, XZ, YZ; the lathe draws ZX)", on_graph,
-     [](Session& s, std::string_view) { return s.graph_key("plane", ""); }, "PLANE"},
-    {"edit-move", "move the editor's cursor (%s)", on_edit, edit_move, "MOVE"},
-    {"edit-modify", "put the block under the cursor on the input line to modify it", on_edit, edit_modify, "MODIFY"},
+     [](Session& s, std::string_view) { return s.graph_key("plane", ""); }, N_("PLANE")},
+    // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
+    {"edit-move", "move the editor's cursor (%s)", on_edit, edit_move, N_("MOVE")},
+    // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
+    {"edit-modify", "put the block under the cursor on the input line to modify it", on_edit, edit_modify, N_("MODIFY")},
     {"edit-delete", "delete the block under the cursor (or the marked blocks)", on_edit,
-     [](Session& s, std::string_view) { return edit_op(s, &Editor::erase, "deleted"); }, "DELETE"},
+     [](Session& s, std::string_view) { return edit_op(s, &Editor::erase, tr("deleted")); }, N_("DELETE")},
     {"edit-mark", "mark: the blocks between the mark and the cursor form a range", on_edit,
      [](Session& s, std::string_view) {
          s.editor.toggle_mark();
-         s.say(s.editor.mark >= 0 ? "mark set: move the cursor, then M-w copies, C-w cuts, Del deletes" : "mark cleared");
+         s.say(s.editor.mark >= 0 ? tr("mark set: move the cursor, then M-w copies, C-w cuts, Del deletes")
+                                  : tr("mark cleared"));
          return Effect::redraw;
      },
-     "MARK"},
+     N_("MARK")},
     {"edit-copy", "copy the block (or the marked range)", on_edit,
-     [](Session& s, std::string_view) { return edit_op(s, &Editor::copy, "copied"); }, "COPY"},
+     [](Session& s, std::string_view) { return edit_op(s, &Editor::copy, tr("copied")); }, N_("COPY")},
     {"edit-cut", "cut the block (or the marked range), to paste elsewhere (move)", on_edit,
-     [](Session& s, std::string_view) { return edit_op(s, &Editor::cut, "cut: C-y pastes it after the cursor"); },
-     "CUT"},
+     [](Session& s, std::string_view) { return edit_op(s, &Editor::cut, tr("cut: C-y pastes it after the cursor")); },
+     N_("CUT")},
     {"edit-paste", "paste the copied blocks after the cursor", on_edit,
-     [](Session& s, std::string_view) { return edit_op(s, &Editor::paste, "pasted"); }, "PASTE"},
+     [](Session& s, std::string_view) { return edit_op(s, &Editor::paste, tr("pasted")); }, N_("PASTE")},
+    // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
     {"undo", "undo the last change of an origin or corrector", always,
-     [](Session& s, std::string_view) { return s.undo(); }, "UNDO"},
+     [](Session& s, std::string_view) { return s.undo(); }, N_("UNDO")},
+    // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
     {"protect", "memory-protect key (locks programs, origins, correctors)", always,
-     [](Session& s, std::string_view) { return s.protect_command(""); }, "LOCK"},
-    {"inc-step", "next INC step (0.001 0.01 0.1 1 10 mm)", always, inc_step, "STEP"},
+     [](Session& s, std::string_view) { return s.protect_command(""); }, N_("LOCK")},
+    // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
+    {"inc-step", "next INC step (0.001 0.01 0.1 1 10 mm)", always, inc_step, N_("STEP")},
+    // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
     {"feed-override", "feed override %s %", always,
-     [](Session& s, std::string_view a) { return override_step(s, a, true); }, "FEED"},
+     [](Session& s, std::string_view a) { return override_step(s, a, true); }, N_("FEED")},
+    // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
     {"spindle-override", "spindle override %s %", always,
-     [](Session& s, std::string_view a) { return override_step(s, a, false); }, "SPINDLE"},
+     [](Session& s, std::string_view a) { return override_step(s, a, false); }, N_("SPINDLE")},
+    // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
     {"speed-next", "animation speed x1, x10, max", always,
      [](Session& s, std::string_view) {
          s.speed = s.speed == Speed::real ? Speed::x10 : s.speed == Speed::x10 ? Speed::max : Speed::real;
          return Effect::redraw;
      },
-     "SPEED"},
+     N_("SPEED")},
+    // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
     {"toggle-skip", "block skip switch (/)", always, [](Session& s, std::string_view) { return s.command("skip"); },
-     "SKIP"},
+     N_("SKIP")},
+    // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
     {"toggle-m01", "optional stop switch (M01)", always,
-     [](Session& s, std::string_view) { return s.command("m01"); }, "M01"},
+     [](Session& s, std::string_view) { return s.command("m01"); }, N_("M01")},
+};
+
+// The help texts of kActions, for the catalogue (help_text translates them).
+[[maybe_unused]] const char* const kActionHelp[] = {
+    N_("show the %s page"),
+    N_("next mode"),
+    N_("previous mode"),
+    N_("the %s mode"),
+    N_("Cycle Start"),
+    N_("feed hold"),
+    N_("RAZ (reset)"),
+    N_("leave the console"),
+    N_("scroll the page by %s screen"),
+    N_("move the cursor by %s"),
+    N_("select the program under the cursor"),
+    N_("delete the program under the cursor (twice to confirm)"),
+    N_("jog %s"),
+    N_("choose the corrector %s"),
+    N_("zoom %s about the cursor"),
+    N_("pan the drawing (%s)"),
+    N_("move the cursor (%s): its coordinates are shown"),
+    N_("fit the cutting moves"),
+    N_("next plane (XY, XZ, YZ; the lathe draws ZX)"),
+    N_("move the editor's cursor (%s)"),
+    N_("put the block under the cursor on the input line to modify it"),
+    N_("delete the block under the cursor (or the marked blocks)"),
+    N_("mark: the blocks between the mark and the cursor form a range"),
+    N_("copy the block (or the marked range)"),
+    N_("cut the block (or the marked range), to paste elsewhere (move)"),
+    N_("paste the copied blocks after the cursor"),
+    N_("undo the last change of an origin or corrector"),
+    N_("memory-protect key (locks programs, origins, correctors)"),
+    N_("next INC step (0.001 0.01 0.1 1 10 mm)"),
+    // xgettext:no-c-format
+    N_("feed override %s %"),
+    // xgettext:no-c-format
+    N_("spindle override %s %"),
+    N_("animation speed x1, x10, max"),
+    N_("block skip switch (/)"),
+    N_("optional stop switch (M01)"),
 };
 
 std::string_view trim(std::string_view s) {
@@ -270,20 +343,28 @@ const Action* find_action(std::string_view name) {
     return nullptr;
 }
 
+// The soft-key labels of the pages (F1-F7 and the like), for the catalogue.
+// TRANSLATORS: a page's soft-key label: at most 6 columns (5 on F10).
+[[maybe_unused]] const char* const kPageLabels[] = {N_("HELP"), N_("OP/OM"), N_("PROG/GR"), N_("INFO"), N_("SET"), N_("DIR"),
+                                                    N_("ALARM"), N_("PREF"), N_("CORR"), N_("PARAM"), N_("GRAPH"),
+                                                    N_("EDIT"), N_("HISTORY")};
+
 std::string help_text(const Action& a, std::string_view arg) {
-    std::string h(a.help);
-    if (a.name == "page" && arg == "pos") return "show the OP page, again for OM";
-    if (a.name == "page" && arg == "set") return "show the PARAM, PREF and CORR pages in turn";
-    if (a.name == "page" && arg == "prog") return "show the PROG page, again for the GRAPH page";
+    std::string h = pages::tr_text(a.help);
+    if (a.name == "page" && arg == "pos") return tr("show the OP page, again for OM");
+    if (a.name == "page" && arg == "set") return tr("show the PARAM, PREF and CORR pages in turn");
+    if (a.name == "page" && arg == "prog") return tr("show the PROG page, again for the GRAPH page");
     if (size_t p = h.find("%s"); p != std::string::npos) h.replace(p, 2, arg);
     return h;
 }
 
 std::string soft_label(const Action& a, std::string_view arg) {
-    std::string l(a.label);
+    std::string l = a.label == "%S" ? std::string(a.label) : pages::tr_text(a.label);
     if (size_t p = l.find("%S"); p != std::string::npos) {
         std::string up(arg == "pos" ? "OP/OM" : arg == "set" ? "SET" : arg == "prog" ? "PROG/GR" : arg);
         for (char& c : up) c = char(std::toupper(static_cast<unsigned char>(c)));
+        // A page's soft key in the language of the panel (the modes keep their NUM names).
+        if (a.name == "page") up = pages::tr_text(up);
         l.replace(p, 2, up);
     }
     return l;
@@ -296,9 +377,9 @@ std::string context_text(const Context& c) {
         if (!out.empty()) out += ", ";
         out += s;
     };
-    if (!c.page.empty()) add("page " + c.page);
-    if (!c.mode.empty()) add("mode " + c.mode);
-    add(c.kind);
+    if (!c.page.empty()) add(strf(tr("page %s"), c.page.c_str()));
+    if (!c.mode.empty()) add(strf(tr("mode %s"), c.mode.c_str()));
+    add(c.kind == "lathe" ? tr("lathe") : c.kind == "mill" ? tr("mill") : c.kind);
     return out;
 }
 
@@ -317,16 +398,16 @@ std::string Bindings::parse(std::string_view text, std::string_view origin) {
         Binding b;
         b.line = lineno;
         b.key_text = next_word(line);
-        if (!parse_key_name(b.key_text, b.key)) return bad("'" + b.key_text + "' is not a key name");
+        if (!parse_key_name(b.key_text, b.key)) return bad(strf(tr("'%s' is not a key name"), b.key_text.c_str()));
         b.action = next_word(line);
-        if (!find_action(b.action)) return bad("'" + b.action + "' is not an action");
+        if (!find_action(b.action)) return bad(strf(tr("'%s' is not an action"), b.action.c_str()));
         std::string w = next_word(line);
         if (!w.empty() && w[0] != '@') {
             b.arg = w;
             w = next_word(line);
         }
         if (!w.empty()) {
-            if (w[0] != '@') return bad("a context starts with @");
+            if (w[0] != '@') return bad(tr("a context starts with @"));
             std::string_view ctx = std::string_view(w).substr(1);
             while (!ctx.empty()) {
                 size_t comma = ctx.find(',');
@@ -335,10 +416,10 @@ std::string Bindings::parse(std::string_view text, std::string_view origin) {
                 if (c.rfind("page=", 0) == 0) b.when.page = c.substr(5);
                 else if (c.rfind("mode=", 0) == 0) b.when.mode = c.substr(5);
                 else if (c == "lathe" || c == "mill") b.when.kind = c;
-                else return bad("unknown context '" + std::string(c) + "'");
+                else return bad(strf(tr("unknown context '%s'"), std::string(c).c_str()));
             }
         }
-        if (!next_word(line).empty()) return bad("too many words");
+        if (!next_word(line).empty()) return bad(tr("too many words"));
         list_.push_back(std::move(b));
     }
     return {};

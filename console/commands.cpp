@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "console/session.hpp"
+#include "core/i18n.hpp"
 
 namespace pupitre::console {
 
@@ -81,7 +82,7 @@ bool axis_value(const CommandCall& c, size_t at, int& axis, double& v) {
 }
 
 Effect usage(Session& s, std::string_view u) {
-    s.say(std::string("usage: ") + std::string(u), true);
+    s.say(strf(tr("usage: %s"), std::string(u).c_str()), true);
     return Effect::redraw;
 }
 
@@ -121,7 +122,7 @@ Effect load(Session& s, const CommandCall& c) {
 
 Effect feed_hold(Session& s, const CommandCall&) {
     s.sim().feed_hold();
-    s.say("feed hold: Cycle Start resumes, RAZ abandons the run");
+    s.say(tr("feed hold: Cycle Start resumes, RAZ abandons the run"));
     return Effect::redraw;
 }
 
@@ -140,9 +141,9 @@ Effect raz(Session& s, const CommandCall&) {
 Effect jog(Session& s, const CommandCall& c) {
     double d;
     int axis;
-    if (!axis_value(c, 1, axis, d)) return usage(s, ":jog AXIS DIST, e.g. :jog X -10");
+    if (!axis_value(c, 1, axis, d)) return usage(s, tr(":jog AXIS DIST, e.g. :jog X -10"));
     std::string why;
-    if (!s.sim().jog(axis, d, why)) s.say("JOG: " + why, true);
+    if (!s.sim().jog(axis, d, why)) s.say(strf(tr("JOG: %s"), why.c_str()), true);
     return Effect::redraw;
 }
 
@@ -150,7 +151,7 @@ Effect search(Session& s, const CommandCall& c) {
     long n;
     std::string why;
     if (!integer(drop_prefix(c.arg(1), "Nn"), n) || !s.sim().search(n, why))
-        return usage(s, ":search N (in RNS mode)");
+        return usage(s, tr(":search N (in RNS mode)"));
     s.say(s.sim().message());
     return Effect::redraw;
 }
@@ -161,8 +162,9 @@ Effect override_knob(Session& s, const CommandCall& c, bool feed) {
     if (!integer(c.arg(1), n) || n < (feed ? 0 : 50) || n > 120)
         return usage(s, feed ? ":feed 0..120" : ":spindle 50..120");
     (feed ? s.sim().feed_override : s.sim().spindle_override) = int(n);
-    s.say(std::string(feed ? "feed" : "spindle") + " override " + std::to_string(n) + " %" +
-          (s.sim().overrides_inhibited() ? " (inhibited by M49)" : ""));
+    std::string news = strf(feed ? tr("feed override %ld %%") : tr("spindle override %ld %%"), n);
+    if (s.sim().overrides_inhibited()) news += std::string(" ") + tr("(inhibited by M49)");
+    s.say(news);
     return Effect::redraw;
 }
 
@@ -185,16 +187,16 @@ Effect panel_switch(Session& s, const CommandCall& c, bool skip) {
     bool v;
     if (!on_off(c.arg(1), sw, v)) return usage(s, skip ? ":skip on|off" : ":m01 on|off");
     sw = v;
-    s.say(std::string(skip ? "block skip " : "optional stop M01 ") + (v ? "ON" : "off"));
+    s.say(skip ? (v ? tr("block skip ON") : tr("block skip off")) : (v ? tr("optional stop M01 ON") : tr("optional stop M01 off")));
     return Effect::redraw;
 }
 
 Effect inc(Session& s, const CommandCall& c) {
     double d;
     if (!number(c.arg(1), d) || d < 0.001 || d > 100)
-        return usage(s, ":inc STEP (0.001 to 100 mm)");
+        return usage(s, tr(":inc STEP (0.001 to 100 mm)"));
     s.sim().increment = d;
-    s.say("INC step " + pages::fmt_len(d) + " mm");
+    s.say(strf(tr("INC step %s mm"), pages::fmt_len(d).c_str()));
     return Effect::redraw;
 }
 
@@ -203,7 +205,7 @@ Effect inc(Session& s, const CommandCall& c) {
 Effect touch(Session& s, const CommandCall& c) {
     double v;
     int axis;
-    if (!axis_value(c, 1, axis, v)) return usage(s, ":touch AXIS VALUE, e.g. :touch Z 0");
+    if (!axis_value(c, 1, axis, v)) return usage(s, tr(":touch AXIS VALUE, e.g. :touch Z 0"));
     return s.touch(axis, v);
 }
 
@@ -214,7 +216,7 @@ Effect measure(Session& s, const CommandCall& c) {
     std::string_view dn = c.arg(1);
     bool ok = dn.size() > 1 && (dn[0] == 'D' || dn[0] == 'd') && integer(dn.substr(1), d) &&
               axis_value(c, 2, axis, v);
-    if (!ok) return usage(s, ":measure Dn AXIS VALUE, e.g. :measure D2 X 59.978");
+    if (!ok) return usage(s, tr(":measure Dn AXIS VALUE, e.g. :measure D2 X 59.978"));
     s.corr_cursor = int(d);
     return s.measure(int(d), axis, v);
 }
@@ -248,40 +250,39 @@ Effect edit(Session& s, const CommandCall& c) {
 }
 
 Effect goto_block(Session& s, const CommandCall& c) {
-    if (!s.editor.is_open()) return usage(s, ":edit N first");
+    if (!s.editor.is_open()) return usage(s, tr(":edit N first"));
     long n;
     std::string_view label = drop_prefix(c.arg(1), "Nn");
     bool ok = integer(label, n) && s.editor.goto_n(n);
     s.show_page(pages::PageId::edit);
-    if (!ok) s.say("no block N" + std::string(label), true);
+    if (!ok) s.say(strf(tr("no block N%s"), std::string(label).c_str()), true);
     return Effect::redraw;
 }
 
 // The text searched is the rest of the line after one blank: it may hold blanks.
 Effect find_text(Session& s, const CommandCall& c) {
-    if (!s.editor.is_open()) return usage(s, ":edit N first");
+    if (!s.editor.is_open()) return usage(s, tr(":edit N first"));
     std::string_view text = c.rest();
     bool ok = s.editor.find(text.empty() ? text : text.substr(1));
     s.show_page(pages::PageId::edit);
-    if (!ok) s.say("not found", true);
+    if (!ok) s.say(tr("not found"), true);
     return Effect::redraw;
 }
 
 Effect renum(Session& s, const CommandCall& c) {
-    if (!s.editor.is_open()) return usage(s, ":edit N first");
+    if (!s.editor.is_open()) return usage(s, tr(":edit N first"));
     long start = 10, step = 10;
     if (c.words.size() > 1 && !integer(c.words[1], start)) return usage(s, ":renum [START [STEP]]");
     if (c.words.size() > 2 && !integer(c.words[2], step)) return usage(s, ":renum [START [STEP]]");
     if (start < 0 || step < 1) return usage(s, ":renum [START [STEP]]");
     int k = s.editor.renumber(start, step);
-    s.say(std::to_string(k) + " blocks renumbered from N" + std::to_string(start) + " by " +
-          std::to_string(step) + "; G77/G79/cycle references follow");
+    s.say(strf(tr("%d blocks renumbered from N%ld by %ld; G77/G79/cycle references follow"), k, start, step));
     return Effect::redraw;
 }
 
 Effect restore(Session& s, const CommandCall& c) {
     long r;
-    if (!integer(c.arg(1), r)) return usage(s, ":restore REV (see :history)");
+    if (!integer(c.arg(1), r)) return usage(s, tr(":restore REV (see :history)"));
     return s.edit_restore(int(r));
 }
 
@@ -294,68 +295,79 @@ bool forced(const CommandCall& c) {
     return c.name().back() == '!';
 }
 
-// The HELP page lists the rows with a usage, in this order. Each row starts a
+// The HELP page lists the rows with a usage, in this order; the usage is the
+// syntax as typed (English, as in pupitre(1)), the help is translated there. Each row starts a
 // line with {" (tests/console/man_sync.py reads the names from there).
 constexpr Command kCommands[] = {
     {"page", ":page om|op|prog|graph|info|param|pref|corr|dir|alarm|help|edit|history",
-     "show a page", page},
+     N_("show a page"), page},
     {"mode", ":mode auto|seq|dry|test|rns|imd|jog|inc|pom|edit|modif",
-     "select a mode (refused while a program is in cycle)", mode},
-    {"load", ":load N", "select program %N for AUTO, SEQ, DRY RUN, TEST and RNS", load},
-    {"cycle", ":cycle", "Cycle Start",
+     N_("select a mode (refused while a program is in cycle)"), mode},
+    {"load", ":load N",
+     // xgettext:no-c-format
+     N_("select program %N for AUTO, SEQ, DRY RUN, TEST and RNS"), load},
+    {"cycle", ":cycle", N_("Cycle Start"),
      [](Session& s, const CommandCall&) { return s.cycle_command(); }},
-    {"stop", ":stop", "feed hold (Cycle Start resumes)", feed_hold},
-    {"raz", ":raz", "RAZ: reset; the run is abandoned, alarms acknowledged", raz},
+    {"stop", ":stop", N_("feed hold (Cycle Start resumes)"), feed_hold},
+    {"raz", ":raz", N_("RAZ: reset; the run is abandoned, alarms acknowledged"), raz},
     {"jog", ":jog AXIS DIST",
-     "move an axis by DIST mm (X as a diameter on the lathe), at the jog feed", jog},
+     N_("move an axis by DIST mm (X as a diameter on the lathe), at the jog feed"), jog},
     {"set", ":set NAME=VALUE",
-     "PREF.X=-120.5, DEC1.Z=3, D1.R=0.8, L5=2, E80000=18000 (names as --set)",
+     N_("PREF.X=-120.5, DEC1.Z=3, D1.R=0.8, L5=2, E80000=18000 (names as --set)"),
      [](Session& s, const CommandCall& c) { return s.set_value(c.rest()); }},
-    {"search", ":search N", "RNS: the block to search for (same as typing N in RNS mode)", search},
-    {"feed", ":feed PCT", "feed override, 0 to 120 % (ignored under M49)",
+    {"search", ":search N", N_("RNS: the block to search for (same as typing N in RNS mode)"), search},
+    {"feed", ":feed PCT",
+     // xgettext:no-c-format
+     N_("feed override, 0 to 120 % (ignored under M49)"),
      [](Session& s, const CommandCall& c) { return override_knob(s, c, true); }},
-    {"spindle", ":spindle PCT", "spindle override, 50 to 120 % (ignored under M49)",
+    {"spindle", ":spindle PCT",
+     // xgettext:no-c-format
+     N_("spindle override, 50 to 120 % (ignored under M49)"),
      [](Session& s, const CommandCall& c) { return override_knob(s, c, false); }},
-    {"speed", ":speed x1|x10|max", "animation speed: real time, ten times, as fast as possible",
+    {"speed", ":speed x1|x10|max", N_("animation speed: real time, ten times, as fast as possible"),
      speed},
-    {"skip", ":skip on|off", "block skip switch: blocks starting with / are skipped",
+    {"skip", ":skip on|off", N_("block skip switch: blocks starting with / are skipped"),
      [](Session& s, const CommandCall& c) { return panel_switch(s, c, true); }},
-    {"m01", ":m01 on|off", "optional stop switch: M01 stops",
+    {"m01", ":m01 on|off", N_("optional stop switch: M01 stops"),
      [](Session& s, const CommandCall& c) { return panel_switch(s, c, false); }},
-    {"inc", ":inc STEP", "INC step in mm (0.001 to 100)", inc},
-    {"rm", ":rm N", "delete program %N from the store (its history stays)", remove_program},
+    {"inc", ":inc STEP", N_("INC step in mm (0.001 to 100)"), inc},
+    {"rm", ":rm N",
+     // xgettext:no-c-format
+     N_("delete program %N from the store (its history stays)"), remove_program},
     {"touch", ":touch AXIS VALUE",
-     "touch-off: PREF so that the tool point reads VALUE (X a diameter on the lathe)", touch},
+     N_("touch-off: PREF so that the tool point reads VALUE (X a diameter on the lathe)"), touch},
     {"measure", ":measure Dn AXIS VALUE",
-     "tool measurement: the gauge of Dn from a touched face or diameter", measure},
-    {"undo", ":undo", "undo the last change of an origin or a corrector",
+     N_("tool measurement: the gauge of Dn from a touched face or diameter"), measure},
+    {"undo", ":undo", N_("undo the last change of an origin or a corrector"),
      [](Session& s, const CommandCall&) { return s.undo(); }},
     {"protect", ":protect on|off [PIN]",
-     "the memory-protect key: locks programs, origins and correctors",
+     N_("the memory-protect key: locks programs, origins and correctors"),
      [](Session& s, const CommandCall& c) { return s.protect_command(c.rest()); }},
-    {"", ":protect pin [NEWPIN]", "set (or remove) the PIN that unlocks the protection", nullptr},
-    {"edit", ":edit N", "EDIT: open program %N (new if absent; without N the one selected)", edit},
+    {"", ":protect pin [NEWPIN]", N_("set (or remove) the PIN that unlocks the protection"), nullptr},
+    {"edit", ":edit N",
+     // xgettext:no-c-format
+     N_("EDIT: open program %N (new if absent; without N the one selected)"), edit},
     {"save save!", ":save",
-     "save the program edited, after a syntax check (:save! saves despite an error)",
+     N_("save the program edited, after a syntax check (:save! saves despite an error)"),
      [](Session& s, const CommandCall& c) { return s.edit_save(forced(c)); }},
-    {"goto", ":goto Nnnn", "EDIT: the cursor to block Nnnn", goto_block},
-    {"find", ":find TEXT", "EDIT: the next block containing TEXT", find_text},
+    {"goto", ":goto Nnnn", N_("EDIT: the cursor to block Nnnn"), goto_block},
+    {"find", ":find TEXT", N_("EDIT: the next block containing TEXT"), find_text},
     {"renum", ":renum [START [STEP]]",
-     "EDIT: renumber the N labels (default 10 10) and their references", renum},
+     N_("EDIT: renumber the N labels (default 10 10) and their references"), renum},
     {"history", ":history / :restore REV",
-     "EDIT: the revisions of the program, and making one current again",
+     N_("EDIT: the revisions of the program, and making one current again"),
      [](Session& s, const CommandCall&) { return s.edit_history(); }},
     {"restore", "", "", restore},
     {"close close!", ":close",
-     "EDIT: close the program (asks before dropping unsaved changes; :close! does not)",
+     N_("EDIT: close the program (asks before dropping unsaved changes; :close! does not)"),
      [](Session& s, const CommandCall& c) { return s.close_command(forced(c)); }},
     {"recover", ":recover / :discard",
-     "EDIT: load the changes an earlier session left unsaved, or drop them",
+     N_("EDIT: load the changes an earlier session left unsaved, or drop them"),
      [](Session& s, const CommandCall&) { return s.recover_command(false); }},
     {"discard", "", "", [](Session& s, const CommandCall&) { return s.recover_command(true); }},
-    {"", ":mode modif", "MODIF: change the blocks to come of an interrupted program", nullptr},
+    {"", ":mode modif", N_("MODIF: change the blocks to come of an interrupted program"), nullptr},
     {"quit q quit! q!", ":quit",
-     "leave the console, also Ctrl-C (asks before dropping unsaved changes; :quit! does not)",
+     N_("leave the console, also Ctrl-C (asks before dropping unsaved changes; :quit! does not)"),
      [](Session& s, const CommandCall& c) { return s.quit_command(forced(c)); }},
     {"help", "", "", help_page},
 };
@@ -382,7 +394,7 @@ Effect Session::command(std::string_view text) {
     CommandCall call{text, words(text)};
     if (call.words.empty()) return Effect::none;
     if (const Command* c = find_command(call.name())) return c->run(*this, call);
-    say("unknown command :" + std::string(call.name()) + " (F1 lists the commands)", true);
+    say(strf(tr("unknown command :%s (F1 lists the commands)"), std::string(call.name()).c_str()), true);
     return Effect::redraw;
 }
 
@@ -402,27 +414,26 @@ Effect Session::cycle_command() {
     if (!sim().message().empty())
         say(sim().message());
     else if (sim().selected() >= 0 && runs_program)
-        say("Cycle Start: %" + std::to_string(sim().selected()) + " in " +
-            std::string(mode_name(m)));
+        say(strf(tr("Cycle Start: %%%d in %s"), sim().selected(), std::string(mode_name(m)).c_str()));
     else
-        say("Cycle Start (" + std::string(mode_name(m)) + ")");
+        say(strf(tr("Cycle Start (%s)"), std::string(mode_name(m)).c_str()));
     return Effect::redraw;
 }
 
 // :close asks before dropping unsaved changes, :close! does not.
 Effect Session::close_command(bool force) {
-    if (modif) return usage(*this, ":close is for EDIT; MODIF ends with Cycle Start or RAZ");
-    if (!editor.is_open()) return usage(*this, ":edit N first");
+    if (modif) return usage(*this, tr(":close is for EDIT; MODIF ends with Cycle Start or RAZ"));
+    if (!editor.is_open()) return usage(*this, tr(":edit N first"));
     int n = editor.number;
     auto close = [this, n] {
         bool dirty = editor.dirty;
         editor.close();
         drop_journal(n);
         release_lease();
-        say(dirty ? "editor closed (unsaved changes dropped)" : "editor closed");
+        say(dirty ? tr("editor closed (unsaved changes dropped)") : tr("editor closed"));
     };
     if (editor.dirty && !force) {
-        confirm("%" + std::to_string(n) + " has unsaved changes: close and drop them?", close);
+        confirm(strf(tr("%%%d has unsaved changes: close and drop them?"), n), close);
         return Effect::redraw;
     }
     close();

@@ -8,17 +8,18 @@
 #include <ctime>
 
 #include "console/session.hpp"
+#include "core/i18n.hpp"
 #include "store/store.hpp"
 
 namespace pupitre::console {
 
 Effect Session::edit_open(int number) {
     if (modif) {
-        say("MODIF is open on %" + std::to_string(editor.number) + ": Cycle Start or RAZ first", true);
+        say(strf(tr("MODIF is open on %%%d: Cycle Start or RAZ first"), editor.number), true);
         return Effect::redraw;
     }
     if (editor.is_open() && editor.dirty && editor.number != number) {
-        say("%" + std::to_string(editor.number) + " has changes: :save it (or :save! despite errors, :close to drop them)", true);
+        say(strf(tr("%%%d has changes: :save it (or :save! despite errors, :close to drop them)"), editor.number), true);
         return Effect::redraw;
     }
     std::string text;
@@ -43,13 +44,12 @@ Effect Session::edit_open(int number) {
     journaled_changes_ = editor.changes;
     modify_pending = false;
     show_page(pages::PageId::edit);
-    say(fresh ? "new program %" + std::to_string(number) + ": type its blocks, then :save"
-              : "%" + std::to_string(number) + " r" + std::to_string(rev) +
-                    ": type a block to insert it after >, Enter modifies the one under >");
+    say(fresh ? strf(tr("new program %%%d: type its blocks, then :save"), number)
+              : strf(tr("%%%d r%d: type a block to insert it after >, Enter modifies the one under >"), number, rev));
     release_lease();
     if (std::string who = other_editor(number); !who.empty())
-        say("%" + std::to_string(number) + " is open in another console (" + who +
-                "): the second save will be kept as a conflict",
+        say(strf(tr("%%%d is open in another console (%s): the second save will be kept as a conflict"), number,
+                 who.c_str()),
             true);
     if (store_) take_lease(number);
     offer_journal(number, text);
@@ -58,50 +58,49 @@ Effect Session::edit_open(int number) {
 
 Effect Session::edit_text(const std::string& block) {
     if (!editor.is_open()) {
-        say("no program open: :edit N", true);
+        say(tr("no program open: :edit N"), true);
         return Effect::redraw;
     }
     std::string why = modify_pending ? editor.replace(block) : editor.insert_after(block);
     modify_pending = false;
     if (!why.empty()) say(why, true);
-    else say(std::string("block ") + std::to_string(editor.cursor + 1) + (editor.dirty ? " (not saved)" : ""));
+    else say(editor.dirty ? strf(tr("block %d (not saved)"), editor.cursor + 1) : strf(tr("block %d"), editor.cursor + 1));
     return Effect::redraw;
 }
 
 Effect Session::edit_save(bool force) {
     if (!editor.is_open()) {
-        say("no program open: :edit N", true);
+        say(tr("no program open: :edit N"), true);
         return Effect::redraw;
     }
     if (modif) {
-        say("MODIF: Cycle Start runs and keeps the changes", true);
+        say(tr("MODIF: Cycle Start runs and keeps the changes"), true);
         return Effect::redraw;
     }
     if (!unprotected("programs")) return Effect::redraw;
     if (sim_->in_cycle() && sim_->selected() == editor.number) {
-        say("%" + std::to_string(editor.number) + " is in cycle: RAZ first, or MODIF to change the blocks to come", true);
+        say(strf(tr("%%%d is in cycle: RAZ first, or MODIF to change the blocks to come"), editor.number), true);
         return Effect::redraw;
     }
     Diag d;
     if (!editor.check(d) && !force) {
-        say("line " + std::to_string(d.line) + (d.n >= 0 ? " N" + std::to_string(d.n) : "") + ": error " +
-                std::to_string(d.code) + ": " + d.detail + " (not saved; :save! forces)",
-            true);
+        std::string at = strf(tr("line %d"), d.line) + (d.n >= 0 ? " N" + std::to_string(d.n) : "");
+        // TRANSLATORS: "line 12 N40: error 107: the detail (not saved; ...)".
+        say(strf(tr("%s: error %d: %s (not saved; :save! forces)"), at.c_str(), d.code, d.detail.c_str()), true);
         return Effect::redraw;
     }
     std::string text = editor.text();
     if (store_) {
         auto r = store_->save(editor.number, text, editor.revision > 0 ? editor.revision : store::kNew, "page EDIT");
         if (r.error) {
-            say("not saved: " + r.error.message, true);
+            say(strf(tr("not saved: %s"), r.error.message.c_str()), true);
             return Effect::redraw;
         }
         drop_journal(editor.number);  // the text is in the store (a conflict keeps it too)
         if (r.value.status == store::SaveStatus::conflict) {
             editor.dirty = false;  // the text is safe in the store, as the CONFLICT revision
-            say("conflict: r" + std::to_string(r.value.current) + " by " + r.value.current_by +
-                    " came first; yours is kept as r" + std::to_string(r.value.revision) + " (:history " +
-                    std::to_string(editor.number) + ")",
+            say(strf(tr("conflict: r%d by %s came first; yours is kept as r%d (:history %d)"), int(r.value.current),
+                     r.value.current_by.c_str(), int(r.value.revision), editor.number),
                 true);
             return Effect::redraw;
         }
@@ -109,21 +108,23 @@ Effect Session::edit_save(bool force) {
     }
     Diag md;
     if (!mem_.replace(editor.number, "store:%" + std::to_string(editor.number), text, md)) {
-        say("saved, but not loaded: " + md.detail, true);
+        say(strf(tr("saved, but not loaded: %s"), md.detail.c_str()), true);
         return Effect::redraw;
     }
     sim_->invalidate_text_cache();
     editor.dirty = false;
     drop_journal(editor.number);
     refresh_dir();
-    say("%" + std::to_string(editor.number) + " saved" + (store_ ? " as revision " + std::to_string(editor.revision) : "") +
-        (editor.error_line >= 0 ? " with a syntax error at line " + std::to_string(editor.error_line + 1) : ""));
+    std::string news = store_ ? strf(tr("%%%d saved as revision %d"), editor.number, editor.revision)
+                              : strf(tr("%%%d saved"), editor.number);
+    if (editor.error_line >= 0) news += " " + strf(tr("with a syntax error at line %d"), editor.error_line + 1);
+    say(news);
     return Effect::redraw;
 }
 
 Effect Session::edit_history() {
     if (!editor.is_open() || !store_) {
-        say("no stored program open: :edit N", true);
+        say(tr("no stored program open: :edit N"), true);
         return Effect::redraw;
     }
     auto r = store_->history(editor.number);
@@ -144,14 +145,13 @@ Effect Session::edit_history() {
     history_current_ = editor.revision;
     if (auto info = store_->read(editor.number); !info.error) history_current_ = info.value.revision;
     show_page(pages::PageId::history);
-    say(std::to_string(history_.size()) + " revision(s) of %" + std::to_string(editor.number) +
-        ": :restore REV makes one current again");
+    say(strf(tr("%zu revision(s) of %%%d: :restore REV makes one current again"), history_.size(), editor.number));
     return Effect::redraw;
 }
 
 Effect Session::edit_restore(int rev) {
     if (!editor.is_open() || !store_) {
-        say("no stored program open: :edit N", true);
+        say(tr("no stored program open: :edit N"), true);
         return Effect::redraw;
     }
     if (!unprotected("programs")) return Effect::redraw;
@@ -169,8 +169,7 @@ Effect Session::edit_restore(int rev) {
         sim_->invalidate_text_cache();
     }
     refresh_dir();
-    say("%" + std::to_string(n) + ": revision " + std::to_string(rev) + " is current again (as revision " +
-        std::to_string(r.value.revision) + ")");
+    say(strf(tr("%%%d: revision %d is current again (as revision %d)"), n, rev, int(r.value.revision)));
     return Effect::redraw;
 }
 
@@ -179,15 +178,15 @@ Effect Session::edit_restore(int rev) {
 Effect Session::modif_start() {
     RunState st = sim_->state();
     if (st != RunState::hold && st != RunState::block && st != RunState::stopped) {
-        say("MODIF needs an interrupted program (feed hold, single block or M00)", true);
+        say(tr("MODIF needs an interrupted program (feed hold, single block or M00)"), true);
         return Effect::redraw;
     }
     if (sim_->interp().modal().modif_inhibited) {
-        say("M999 is in force: MODIF and IMD are forbidden until M998", true);
+        say(tr("M999 is in force: MODIF and IMD are forbidden until M998"), true);
         return Effect::redraw;
     }
     if (editor.is_open() && editor.dirty) {
-        say("%" + std::to_string(editor.number) + " has unsaved changes: :save or :close them first", true);
+        say(strf(tr("%%%d has unsaved changes: :save or :close them first"), editor.number), true);
         return Effect::redraw;
     }
     if (!unprotected("programs")) return Effect::redraw;
@@ -196,7 +195,7 @@ Effect Session::modif_start() {
     const Loc& at = sim_->interp().location();
     const ProgramText* p = sim_->text_of(at.prog);
     if (!p || p->file == "IMD" || next_line <= 0) {
-        say("MODIF: nothing left to change in this program", true);
+        say(tr("MODIF: nothing left to change in this program"), true);
         return Effect::redraw;
     }
     // The program's own text with its header: lines keep their numbers.
@@ -208,8 +207,8 @@ Effect Session::modif_start() {
     editor.cursor = std::min(int(editor.lines().size()) - 1, editor.locked);
     modif = true;
     show_page(pages::PageId::edit);
-    say("MODIF %" + std::to_string(p->number) + ": the blocks from line " + std::to_string(editor.locked + 1) +
-        " on may change; Cycle Start runs them");
+    say(strf(tr("MODIF %%%d: the blocks from line %d on may change; Cycle Start runs them"), p->number,
+             editor.locked + 1));
     return Effect::redraw;
 }
 
@@ -224,7 +223,7 @@ bool Session::modif_apply() {
     Diag d;
     if (!editor.check(d)) {
         modif = true;
-        say("MODIF: line " + std::to_string(d.line) + ": error " + std::to_string(d.code) + ": " + d.detail, true);
+        say(strf(tr("MODIF: line %d: error %d: %s"), d.line, d.code, d.detail.c_str()), true);
         return false;
     }
     if (!mem_.replace(editor.number, "store:%" + std::to_string(editor.number), text, d)) {
@@ -236,7 +235,7 @@ bool Session::modif_apply() {
     if (const ProgramText* p = mem_.find(editor.number)) sim_->interp().text_changed(p);
     if (store_) {
         if (auto r = store_->save(editor.number, text, store::kHead, "MODIF"); r.error)
-            say("MODIF applied, but not stored: " + r.error.message, true);
+            say(strf(tr("MODIF applied, but not stored: %s"), r.error.message.c_str()), true);
     }
     editor.dirty = false;
     editor.close();

@@ -6,6 +6,7 @@
 #include <cctype>
 #include <map>
 
+#include "core/i18n.hpp"
 #include "core/parse/block.hpp"
 #include "core/parse/program.hpp"
 
@@ -42,11 +43,12 @@ std::string Editor::text() const {
 
 bool Editor::editable(int line, std::string& why) const {
     if (line < locked) {
-        why = "this block is already prepared: MODIF changes the blocks after the one in progress";
+        why = tr("this block is already prepared: MODIF changes the blocks after the one in progress");
         return false;
     }
     if (line == 0 && !lines_.empty() && !lines_[0].empty() && lines_[0][0] == '%') {
-        why = "the % line names the program: keep it";
+        // xgettext:no-c-format
+        why = tr("the % line names the program: keep it");
         return false;
     }
     return true;
@@ -62,8 +64,8 @@ void Editor::range(int& a, int& b) const {
 
 std::string Editor::insert_after(std::string block) {
     std::string why;
-    if (cursor + 1 < locked) return "this place is already prepared: MODIF inserts after the block in progress";
-    if (block.find('\n') != std::string::npos) return "one block at a time";
+    if (cursor + 1 < locked) return tr("this place is already prepared: MODIF inserts after the block in progress");
+    if (block.find('\n') != std::string::npos) return tr("one block at a time");
     lines_.insert(lines_.begin() + cursor + 1, std::move(block));
     ++cursor;
     dirty = true;
@@ -117,8 +119,8 @@ std::string Editor::cut() {
 }
 
 std::string Editor::paste() {
-    if (clipboard_.empty()) return "nothing copied (M-w copies, C-w cuts)";
-    if (cursor + 1 < locked) return "this place is already prepared";
+    if (clipboard_.empty()) return tr("nothing copied (M-w copies, C-w cuts)");
+    if (cursor + 1 < locked) return tr("this place is already prepared");
     lines_.insert(lines_.begin() + cursor + 1, clipboard_.begin(), clipboard_.end());
     cursor += int(clipboard_.size());
     dirty = true;

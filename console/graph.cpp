@@ -5,6 +5,7 @@
 #include <string>
 
 #include "console/session.hpp"
+#include "core/i18n.hpp"
 
 namespace pupitre::console {
 
@@ -27,11 +28,11 @@ Effect Session::graph_key(std::string_view what, std::string_view arg) {
         g = pages::graph_move_cursor(g, area, dx, -dy);
     } else if (what == "fit") {
         g = pages::graph_fit(g);
-        say("fit: " + pages::graph_fit_words(g));
+        say(strf(tr("fit: %s"), pages::graph_fit_words(g).c_str()));
     } else if (what == "plane") {
         g = pages::graph_next_plane(g, m_);
         graph_plane_chosen = true;
-        say(std::string("plane ") + std::string(plane_name(g.plane)));
+        say(strf(tr("plane %s"), std::string(plane_name(g.plane)).c_str()));
     }
     g.path = nullptr;
     g.tool = nullptr;

@@ -18,6 +18,7 @@
 #include <sstream>
 
 #include "console/session.hpp"
+#include "core/i18n.hpp"
 #include "store/store.hpp"
 
 namespace pupitre::console {
@@ -64,7 +65,7 @@ void Session::sync_journal() {
     if (fd >= 0) ::close(fd);
     if (!ok || ::rename(tmp.c_str(), path.c_str()) != 0) {
         ::unlink(tmp.c_str());
-        say("the recovery journal cannot be written (" + journal_dir() + "): :save often", true);
+        say(strf(tr("the recovery journal cannot be written (%s): :save often"), journal_dir().c_str()), true);
     }
 }
 
@@ -107,7 +108,7 @@ std::string Session::recovered_note() const {
     }
     ::closedir(d);
     if (list.empty()) return {};
-    return "unsaved work recovered for " + list + ": :edit " + std::to_string(first) + ", then :recover";
+    return strf(tr("unsaved work recovered for %s: :edit %d, then :recover"), list.c_str(), first);
 }
 
 // On :edit N: a journal that differs from the text loaded is offered.
@@ -119,34 +120,33 @@ void Session::offer_journal(int number, const std::string& loaded) {
         drop_journal(number);
         return;
     }
-    say("%" + std::to_string(number) + " has unsaved changes from an earlier session: :recover loads them, "
-        ":discard drops them", true);
+    say(strf(tr("%%%d has unsaved changes from an earlier session: :recover loads them, :discard drops them"), number),
+        true);
 }
 
 // :recover and :discard, on the program open in EDIT.
 Effect Session::recover_command(bool discard) {
     if (!editor.is_open() || modif) {
-        say("open the program first: :edit N", true);
+        say(tr("open the program first: :edit N"), true);
         return Effect::redraw;
     }
     int n = editor.number;
     std::string text;
     int base = 0;
     if (!read_journal(n, text, base)) {
-        say("%" + std::to_string(n) + " has no recovered changes", true);
+        say(strf(tr("%%%d has no recovered changes"), n), true);
         return Effect::redraw;
     }
     if (discard) {
         drop_journal(n);
-        say("recovered changes of %" + std::to_string(n) + " dropped");
+        say(strf(tr("recovered changes of %%%d dropped"), n));
         return Effect::redraw;
     }
     editor.open(n, text, base, false);
     editor.dirty = true;
     ++editor.changes;
     sync_journal();
-    say("%" + std::to_string(n) + ": recovered text loaded (based on revision " + std::to_string(base) +
-        "); :save keeps it");
+    say(strf(tr("%%%d: recovered text loaded (based on revision %d); :save keeps it"), n, base));
     return Effect::redraw;
 }
 
@@ -155,7 +155,7 @@ Effect Session::recover_command(bool discard) {
 Effect Session::quit_command(bool force) {
     if (!force && editor.is_open() && editor.dirty && !modif) {
         int n = editor.number;
-        confirm("%" + std::to_string(n) + " has unsaved changes: quit and drop them? (:save first, or :quit!)",
+        confirm(strf(tr("%%%d has unsaved changes: quit and drop them? (:save first, or :quit!)"), n),
                 [this, n] {
                     drop_journal(n);
                     release_lease();

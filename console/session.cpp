@@ -6,7 +6,9 @@
 #include <charconv>
 
 #include "console/commands.hpp"
+#include "core/i18n.hpp"
 #include "core/parse/codes.hpp"
+#include "pages/pages.hpp"
 #include "store/link.hpp"
 #include "store/store.hpp"
 
@@ -98,20 +100,19 @@ bool Session::select_program(int number) {
         if (dir_[i].number == number) dir_cursor = int(i);
     Mode m = sim_->mode();
     bool runs = m == Mode::automatic || m == Mode::single || m == Mode::dry || m == Mode::test || m == Mode::rns;
-    say("%" + std::to_string(number) + " selected: " +
-        (runs ? "Cycle Start (F9) runs it in " + std::string(mode_name(m))
-              : std::string("F8 to AUTO (or SEQ, DRY RUN, TEST), then Cycle Start (F9)")));
+    say(runs ? strf(tr("%%%d selected: Cycle Start (F9) runs it in %s"), number, std::string(mode_name(m)).c_str())
+             : strf(tr("%%%d selected: F8 to AUTO (or SEQ, DRY RUN, TEST), then Cycle Start (F9)"), number));
     return true;
 }
 
 bool Session::delete_program(int number) {
     if (!unprotected("programs")) return false;
     if (!store_) {
-        say("no store: programs cannot be deleted", true);
+        say(tr("no store: programs cannot be deleted"), true);
         return false;
     }
     if (sim_->in_cycle() && sim_->selected() == number) {
-        say("%" + std::to_string(number) + " is in cycle: RAZ first", true);
+        say(strf(tr("%%%d is in cycle: RAZ first"), number), true);
         return false;
     }
     auto r = store_->remove(number, store::kHead, "page DIR");
@@ -121,8 +122,8 @@ bool Session::delete_program(int number) {
     }
     refresh_dir();
     dir_cursor = std::min(dir_cursor, std::max(0, int(dir_.size()) - 1));
-    say("%" + std::to_string(number) + " deleted; its history stays (:history " + std::to_string(number) +
-        ", then :restore " + std::to_string(number) + " REV)");
+    // TRANSLATORS: the program's number, three times.
+    say(strf(tr("%%%d deleted; its history stays (:history %d, then :restore %d REV)"), number, number, number));
     return true;
 }
 
@@ -145,7 +146,7 @@ Effect Session::dispatch_key(const Key& k) {
     if (k.code == KeyCode::escape && !k.alt && !k.ctrl) return cancel_input();
     if (!for_line_editor(k)) {
         // F11, S-F1, C-F5, M-F9…: their bytes would leak into the line as text.
-        say(key_name(k) + " does nothing here (F1 lists the keys)");
+        say(strf(tr("%s does nothing here (F1 lists the keys)"), key_name(k).c_str()));
         return Effect::redraw;
     }
     input_.feed(k.raw);
@@ -178,9 +179,9 @@ Effect Session::cancel_input() {
     if (!pending_confirm.empty()) {
         pending_confirm.clear();
         on_confirm = nullptr;
-        say("cancelled: nothing changed");
+        say(tr("cancelled: nothing changed"));
     } else if (had) {
-        say("input cancelled");
+        say(tr("input cancelled"));
     }
     return Effect::redraw;
 }
@@ -217,9 +218,12 @@ Session::Target Session::target() const {
 }
 
 std::string Session::prompt() const {
-    if (!pending_confirm.empty()) return "y/n> ";
+    // TRANSLATORS: the prompt of a yes/no question: y, yes, o and oui answer yes.
+    if (!pending_confirm.empty()) return tr("y/n> ");
     switch (target()) {
-        case Target::edit: return modify_pending ? "MODIFY> " : modif ? "MODIF> " : "EDIT> ";
+        // TRANSLATORS: the prompt while a block is modified in EDIT (EDIT and
+        // MODIF are NUM names and stay).
+        case Target::edit: return modify_pending ? tr("MODIFY> ") : modif ? "MODIF> " : "EDIT> ";
         case Target::pref: return "PREF> ";
         case Target::corr: return "D" + std::to_string(corr_cursor) + "> ";
         case Target::param: return "L/E= ";
@@ -235,18 +239,18 @@ std::string Session::mode_hint(Mode m) const {
     bool homed = true;
     for (int a = 0; a < kAxes; ++a) homed = homed && (!m_.has(a) || sim_->interp().homed(a));
     bool runs = m == Mode::automatic || m == Mode::single || m == Mode::dry || m == Mode::rns;
-    if (!homed && runs) return "home first: F8 to POM, then Cycle Start (F9)";
+    if (!homed && runs) return tr("home first: F8 to POM, then Cycle Start (F9)");
     switch (sim_->state()) {  // a program in cycle: what the panel's buttons do now
         case RunState::running:
-            if (m != Mode::jog && m != Mode::inc && m != Mode::pom) return "F10 feed hold, F12 (RAZ) abandons the run";
+            if (m != Mode::jog && m != Mode::inc && m != Mode::pom) return tr("F10 feed hold, F12 (RAZ) abandons the run");
             break;
-        case RunState::hold: return "Cycle Start (F9) resumes, F12 (RAZ) abandons the run";
-        case RunState::block: return "Cycle Start (F9) runs the next block, F12 (RAZ) abandons";
-        case RunState::stopped: return "Cycle Start (F9) goes on, F12 (RAZ) abandons the run";
-        case RunState::alarm: return "F12 (RAZ) acknowledges the alarm (F7: the ALARM page)";
+        case RunState::hold: return tr("Cycle Start (F9) resumes, F12 (RAZ) abandons the run");
+        case RunState::block: return tr("Cycle Start (F9) runs the next block, F12 (RAZ) abandons");
+        case RunState::stopped: return tr("Cycle Start (F9) goes on, F12 (RAZ) abandons the run");
+        case RunState::alarm: return tr("F12 (RAZ) acknowledges the alarm (F7: the ALARM page)");
         default: break;
     }
-    if (m != Mode::jog && m != Mode::inc) return std::string(mode_how(m));
+    if (m != Mode::jog && m != Mode::inc) return pages::tr_text(mode_how(m));
     // The jog keys as bound for this machine (data/bindings.txt or the user's).
     std::string keys;
     const char* word = m == Mode::jog ? "jog" : "inc";
@@ -259,17 +263,15 @@ std::string Session::mode_hint(Mode m) const {
 }
 
 std::string Session::mode_setting(Mode m) const {
-    if (m == Mode::inc) return "step " + pages::fmt_len(sim_->increment) + " mm (Alt-i: next step)";
+    if (m == Mode::inc) return strf(tr("step %s mm (Alt-i: next step)"), pages::fmt_len(sim_->increment).c_str());
     if (m != Mode::jog) return {};
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "feed %.0f mm/min", sim_->jog_feed > 0 ? sim_->jog_feed : m_.jog_feed);
-    return buf;
+    return strf(tr("feed %.0f mm/min"), sim_->jog_feed > 0 ? sim_->jog_feed : m_.jog_feed);
 }
 
 std::string Session::mode_news(Mode m) const {
     // Short enough for 80 columns; the OP page keeps the keys, the status line
     // the next mode.
-    return std::string(mode_name(m)) + ": " + std::string(mode_english(m)) + "; " + std::string(mode_how(m));
+    return std::string(mode_name(m)) + ": " + pages::tr_text(mode_english(m)) + "; " + pages::tr_text(mode_how(m));
 }
 
 // Text that is not a command goes where the prompt says (target()): the page
@@ -284,13 +286,13 @@ Effect Session::plain_text(const std::string& text) {
         pending_confirm.clear();
         on_confirm = nullptr;
         if (answer == "y" || answer == "yes" || answer == "o" || answer == "oui") run();
-        else say("cancelled: nothing changed");
+        else say(tr("cancelled: nothing changed"));
         return Effect::redraw;
     }
     long before = refusals_;
     Effect e = route_text(text);
     if (refusals_ != before && sim_->mode() == Mode::imd && !sim_->in_cycle() && sim_->drop_imd())
-        message_ = "IMD block dropped: " + message_;
+        message_ = strf(tr("IMD block dropped: %s"), message_.c_str());
     return e;
 }
 
@@ -305,7 +307,7 @@ Effect Session::route_text(const std::string& text) {
     }
     if (sim_->mode() == Mode::imd) {
         if (sim_->interp().modal().modif_inhibited) {
-            say("M999 is in force: IMD and MODIF are forbidden until M998", true);
+            say(tr("M999 is in force: IMD and MODIF are forbidden until M998"), true);
             return Effect::redraw;
         }
         std::string why;
@@ -314,7 +316,7 @@ Effect Session::route_text(const std::string& text) {
             return Effect::redraw;
         }
         if (store_) store_->add_imd(m_.name, t);
-        say("IMD: Cycle Start (F9) executes: " + text);
+        say(strf(tr("IMD: Cycle Start (F9) executes: %s"), text.c_str()));
         return Effect::redraw;
     }
     if (t.find('=') != std::string_view::npos) return set_value(t);
@@ -323,7 +325,7 @@ Effect Session::route_text(const std::string& text) {
         std::string_view w = t;
         if (!w.empty() && (w.front() == 'N' || w.front() == 'n')) w.remove_prefix(1);
         std::string why;
-        if (!to_long(w, n) || !sim_->search(n, why)) say(why.empty() ? "RNS: type a block number, e.g. N120" : why, true);
+        if (!to_long(w, n) || !sim_->search(n, why)) say(why.empty() ? std::string(tr("RNS: type a block number, e.g. N120")) : why, true);
         else say(sim_->message());
         return Effect::redraw;
     }
@@ -334,7 +336,7 @@ Effect Session::route_text(const std::string& text) {
         select_program(int(n));
         return Effect::redraw;
     }
-    say("blocks are typed in IMD mode (F8, or :mode imd); commands start with ':' (F1 for help)", true);
+    say(tr("blocks are typed in IMD mode (F8, or :mode imd); commands start with ':' (F1 for help)"), true);
     return Effect::redraw;
 }
 
@@ -346,7 +348,7 @@ Effect Session::set_value(std::string_view a) {
     std::string_view val = eq == std::string_view::npos ? std::string_view{} : trim(a.substr(eq + 1));
     auto [p, ec] = std::from_chars(val.data(), val.data() + val.size(), v);
     if (eq == std::string_view::npos || ec != std::errc() || p != val.data() + val.size()) {
-        say("set: NAME=VALUE, e.g. L5=2, E80000=18000, PREF.X=-120.5, D1.R=0.8", true);
+        say(tr("set: NAME=VALUE, e.g. L5=2, E80000=18000, PREF.X=-120.5, D1.R=0.8"), true);
         return Effect::redraw;
     }
     for (char& c : name) c = char(std::toupper(static_cast<unsigned char>(c)));
@@ -355,7 +357,7 @@ Effect Session::set_value(std::string_view a) {
         return Effect::redraw;
     }
     if (sim_->in_cycle()) {
-        say("a program is in cycle: values are set when it is stopped (RAZ)", true);
+        say(tr("a program is in cycle: values are set when it is stopped (RAZ)"), true);
         return Effect::redraw;
     }
     std::string why = sim_->interp().set(name, v);
@@ -395,8 +397,8 @@ void Session::check_run_end() {
         const Diag& d = sim_->alarms().back().diag;
         std::string where = d.program > 0 ? "%" + std::to_string(d.program) : std::string("IMD");
         if (d.n >= 0) where += " N" + std::to_string(d.n);
-        say("ALARM " + std::to_string(d.code) + " (" + where + " line " + std::to_string(d.line) + "): " + d.detail,
-            true);
+        // TRANSLATORS: the message line: ALARM 107 (%300 N20 line 12): the detail.
+        say(strf(tr("ALARM %d (%s line %d): %s"), d.code, where.c_str(), d.line, d.detail.c_str()), true);
     } else if (st != last_state_ && !sim_->message().empty()) {
         say(sim_->message());
     }
@@ -408,14 +410,14 @@ void Session::persist_run() {
     // The programs G76, G76+ and G76- changed: a revision each, or a deletion.
     std::vector<int> edited = mem_.take_changed();
     if (store_ && !edited.empty() && protect) {
-        say("memory protection is on: the programs G76 changed stay in memory, not in the store", true);
+        say(tr("memory protection is on: the programs G76 changed stay in memory, not in the store"), true);
     } else if (store_ && !edited.empty()) {
         std::string source = "G76 in %" + std::to_string(sim_->selected()) + " (console)";
         for (int n : edited) {
             const ProgramText* p = mem_.find(n);
             auto r = p ? store_->save(n, program_text(*p), store::kHead, source)
                        : store_->remove(n, store::kHead, source);
-            if (r.error) say("%" + std::to_string(n) + " changed by G76 was not stored: " + r.error.message, true);
+            if (r.error) say(strf(tr("%%%d changed by G76 was not stored: %s"), n, r.error.message.c_str()), true);
         }
         refresh_dir();
     }
@@ -430,7 +432,7 @@ void Session::persist_run() {
     if (fresh.empty()) return;
     std::string source = "program %" + std::to_string(sim_->selected()) + " (console)";
     if (auto r = store_->set_values(m_.name, fresh, source); r.error)
-        say("the program's corrector and origin writes were not stored: " + r.error.message, true);
+        say(strf(tr("the program's corrector and origin writes were not stored: %s"), r.error.message.c_str()), true);
 }
 
 // ---- view ----
@@ -465,7 +467,9 @@ void Session::view_keys(pages::View& v) const {
         if (a) v.help.push_back(pages::HelpLine{b.key_text, help_text(*a, b.arg), context_text(b.when)});
     }
     for (const Command& c : commands())
-        if (!c.usage.empty()) v.help.push_back(pages::HelpLine{std::string(c.usage), std::string(c.help), ""});
+        if (!c.usage.empty())
+            v.help.push_back(pages::HelpLine{std::string(c.usage),
+                                             pages::tr_text(c.help), ""});
 }
 
 void Session::view_editor(pages::View& v) const {

@@ -10,6 +10,7 @@
 
 #include "console/session.hpp"
 #include "console/sha256.hpp"
+#include "core/i18n.hpp"
 #include "core/sim/setting.hpp"
 #include "store/store.hpp"
 
@@ -58,24 +59,29 @@ std::string corrector_field(const std::string& name) {
 
 bool Session::unprotected(std::string_view what) {
     if (!protect) return true;
-    say("memory protection is on: " + std::string(what) + " cannot be changed (:protect off)", true);
+    say(what == "programs"                 ? tr("memory protection is on: programs cannot be changed (:protect off)")
+        : what == "origins and correctors" ? tr("memory protection is on: origins and correctors cannot be changed (:protect off)")
+        : what == "the PIN"                ? tr("memory protection is on: the PIN cannot be changed (:protect off)")
+                                           : strf(tr("memory protection is on: %s cannot be changed (:protect off)"),
+                                                  std::string(what).c_str()),
+        true);
     return false;
 }
 
 bool Session::apply_setting(const std::string& name, double value, const std::string& source) {
     if (!unprotected("origins and correctors")) return false;
     if (std::abs(value) > 100000) {
-        say(name + ": " + mm(value) + " is beyond any machine", true);
+        say(strf(tr("%s: %s is beyond any machine"), name.c_str(), mm(value).c_str()), true);
         return false;
     }
     bool code = name.size() > 2 && name.substr(name.size() - 2) == ".C";
     if (code && (value != std::floor(value) || value < 0 || value > 8)) {
-        say(name + ": the nose orientation is a code from 0 to 8", true);
+        say(strf(tr("%s: the nose orientation is a code from 0 to 8"), name.c_str()), true);
         return false;
     }
     if (corrector_field(name) == "R" && value < 0) {
-        say(name + ": a tool or nose radius is never negative (its wear goes in " +
-                (m_.lathe ? std::string("DX/DZ") : std::string("DR")) + ")",
+        say(strf(tr("%s: a tool or nose radius is never negative (its wear goes in %s)"), name.c_str(),
+                 m_.lathe ? "DX/DZ" : "DR"),
             true);
         return false;
     }
@@ -95,11 +101,14 @@ bool Session::apply_setting(const std::string& name, double value, const std::st
     undo_.push_back({name, old});
     std::string news = name + " " + (code ? std::to_string(int(old)) : mm(old)) + " -> " +
                        (code ? std::to_string(int(value)) : mm(value));
-    if (running) news += is_origin(name) ? " (applies at the next move)" : " (applies as the manual says: gauge at the next move of its axis, radius at the next G41/G42)";
+    if (running)
+        news += std::string(" ") +
+                (is_origin(name) ? tr("(applies at the next move)")
+                                 : tr("(applies as the manual says: gauge at the next move of its axis, radius at the next G41/G42)"));
     if (store_) {
         auto r = store_->set_values(m_.name, {{name, internal(name, value)}}, source);
         if (r.error) {
-            say(news + "; NOT stored: " + r.error.message, true);
+            say(strf(tr("%s; NOT stored: %s"), news.c_str(), r.error.message.c_str()), true);
             return true;
         }
     }
@@ -118,9 +127,9 @@ std::vector<std::string> Session::pending_origins() const {
 // Touch-off and measurement use the interpreter's position: it must be the
 // position shown, so the axes must be at rest and no program in cycle.
 static std::string at_rest(const Sim& s) {
-    if (s.state() == RunState::running) return "wait until the axes stop";
-    if (s.in_cycle()) return "a program is interrupted: RAZ first";
-    if (s.alarm_active()) return "an alarm is active: RAZ first";
+    if (s.state() == RunState::running) return tr("wait until the axes stop");
+    if (s.in_cycle()) return tr("a program is interrupted: RAZ first");
+    if (s.alarm_active()) return tr("an alarm is active: RAZ first");
     return {};
 }
 
@@ -133,8 +142,8 @@ bool Session::implausible_gauge(const std::string& name, double value, std::stri
     const AxisConfig& ax = m_.axes[size_t(axis)];
     double travel = ax.max - ax.min;
     if (!(travel > 0 && travel < 1e8) || std::abs(value) <= travel) return false;
-    why = name + " = " + mm(value) + " is longer than the " + kAxisNames[size_t(axis)] + " travel (" + mm(travel) +
-          "). Keep it?";
+    why = strf(tr("%s = %s is longer than the %c travel (%s). Keep it?"), name.c_str(), mm(value).c_str(),
+               kAxisNames[size_t(axis)], mm(travel).c_str());
     return true;
 }
 
@@ -142,19 +151,20 @@ bool Session::implausible_gauge(const std::string& name, double value, std::stri
 void Session::confirm(std::string question, std::function<void()> then) {
     pending_confirm = question;
     on_confirm = std::move(then);
-    say(question + " y/n?", true);
+    // TRANSLATORS: a question on the message line; y, yes, o and oui answer yes.
+    say(strf(tr("%s y/n?"), question.c_str()), true);
 }
 
 Effect Session::touch(int axis, double surface) {
     if (std::string w = at_rest(*sim_); !w.empty()) {
-        say("touch-off: " + w, true);
+        say(strf(tr("touch-off: %s"), w.c_str()), true);
         return Effect::redraw;
     }
     if (sim_->corrector() == 0) {
         // D0: the gauge is zero, so PREF would place the turret reference (or the
         // spindle nose), not a tool point, on the surface. Rare, never silent.
-        confirm("D0, no tool gauge (T" + std::to_string(sim_->tool()) + "): the turret reference would read " +
-                    kAxisNames[size_t(axis)] + " " + mm(surface) + ".",
+        confirm(strf(tr("D0, no tool gauge (T%d): the turret reference would read %c %s."), sim_->tool(),
+                     kAxisNames[size_t(axis)], mm(surface).c_str()),
                 [this, axis, surface] { touch_now(axis, surface); });
         return Effect::redraw;
     }
@@ -163,7 +173,7 @@ Effect Session::touch(int axis, double surface) {
 
 Effect Session::touch_now(int axis, double surface) {
     if (std::string w = at_rest(*sim_); !w.empty()) {  // again: a "y" may come late
-        say("touch-off: " + w, true);
+        say(strf(tr("touch-off: %s"), w.c_str()), true);
         return Effect::redraw;
     }
     // The gauge of the active corrector is the one the touch-off assumes: it
@@ -171,11 +181,11 @@ Effect Session::touch_now(int axis, double surface) {
     sim_->interp().apply_gauges_now();
     setting::Touch t;
     if (std::string why = setting::touch_off(sim_->interp(), axis, surface, t); !why.empty()) {
-        say("touch-off: " + why, true);
+        say(strf(tr("touch-off: %s"), why.c_str()), true);
         return Effect::redraw;
     }
     if (apply_setting(t.name, t.after, "touch-off " + std::string(1, kAxisNames[size_t(axis)]) + " " + mm(surface))) {
-        last_setting_ = t.formula + " (was " + mm(t.before) + ")";
+        last_setting_ = t.formula + " " + strf(tr("(was %s)"), mm(t.before).c_str());
         say(last_setting_);
     }
     return Effect::redraw;
@@ -183,16 +193,16 @@ Effect Session::touch_now(int axis, double surface) {
 
 Effect Session::measure(int d, int axis, double surface) {
     if (std::string w = at_rest(*sim_); !w.empty()) {
-        say("measure: " + w, true);
+        say(strf(tr("measure: %s"), w.c_str()), true);
         return Effect::redraw;
     }
     setting::Touch t;
     if (std::string why = setting::measure(sim_->interp(), d, axis, surface, t); !why.empty()) {
-        say("measure: " + why, true);
+        say(strf(tr("measure: %s"), why.c_str()), true);
         return Effect::redraw;
     }
     if (apply_setting(t.name, t.after, "measure " + std::string(1, kAxisNames[size_t(axis)]) + " " + mm(surface))) {
-        last_setting_ = t.formula + " (was " + mm(t.before) + ")";
+        last_setting_ = t.formula + " " + strf(tr("(was %s)"), mm(t.before).c_str());
         say(last_setting_);
     }
     return Effect::redraw;
@@ -200,14 +210,14 @@ Effect Session::measure(int d, int axis, double surface) {
 
 Effect Session::undo() {
     if (undo_.empty()) {
-        say("nothing to undo", true);
+        say(tr("nothing to undo"), true);
         return Effect::redraw;
     }
     Undo u = undo_.back();
     undo_.pop_back();
     if (apply_setting(u.name, u.old, "undo")) {
         undo_.pop_back();  // the undo itself is not undone by the next :undo
-        say("undone: " + u.name + " = " + mm(u.old));
+        say(strf(tr("undone: %s = %s"), u.name.c_str(), mm(u.old).c_str()));
     }
     return Effect::redraw;
 }
@@ -229,42 +239,42 @@ Effect Session::protect_command(std::string_view args) {
     if (word == "on" || (word.empty() && !protect)) {
         protect = true;
         save_state();
-        say("memory protection ON: programs, origins and correctors are locked");
+        say(tr("memory protection ON: programs, origins and correctors are locked"));
     } else if (word == "off" || word.empty()) {
         std::string pin = stored_pin();
         if (!pin.empty()) {
             std::string salt = pin.substr(0, pin.find(':'));
             if (rest.empty() || salt + ":" + sha256_hex(salt + rest) != pin) {
-                say("memory protection: wrong PIN (:protect off PIN)", true);
+                say(tr("memory protection: wrong PIN (:protect off PIN)"), true);
                 return Effect::redraw;
             }
         }
         protect = false;
         save_state();
-        say("memory protection off");
+        say(tr("memory protection off"));
     } else if (word == "pin") {
         if (!unprotected("the PIN")) return Effect::redraw;
         if (!store_) {
-            say("no store: the PIN cannot be kept", true);
+            say(tr("no store: the PIN cannot be kept"), true);
         } else if (rest.empty()) {
             store_->set_setting("protect.pin", "");
-            say("PIN removed: the protection key needs none");
+            say(tr("PIN removed: the protection key needs none"));
         } else {
             std::random_device rd;
             char salt[17];
             std::snprintf(salt, sizeof salt, "%08x%08x", rd(), rd());
             store_->set_setting("protect.pin", std::string(salt) + ":" + sha256_hex(std::string(salt) + rest));
-            say("PIN set: :protect off PIN is needed to unlock");
+            say(tr("PIN set: :protect off PIN is needed to unlock"));
         }
     } else {
-        say("usage: :protect [on|off [PIN]|pin [NEWPIN]]", true);
+        say(strf(tr("usage: %s"), ":protect [on|off [PIN]|pin [NEWPIN]]"), true);
     }
     return Effect::redraw;
 }
 
 // The message line says how a decimal comma was read.
 void Session::echo_comma(std::string_view typed, double v) {
-    message_ = "read " + std::string(typed) + " as " + mm(v) + ": " + message_;
+    message_ = strf(tr("read %s as %s: %s"), std::string(typed).c_str(), mm(v).c_str(), message_.c_str());
 }
 
 // Text typed on the PREF page: NAME=VALUE, or AXIS VALUE for a touch-off.
@@ -281,7 +291,7 @@ Effect Session::setting_text(std::string_view text) {
         double v;
         bool comma = false;
         if (!parse_num(std::string_view(t).substr(eq + 1), v, &comma)) {
-            say(name + ": not a number (use a decimal point: 1.5)", true);
+            say(strf(tr("%s: not a number (use a decimal point: 1.5)"), name.c_str()), true);
             return Effect::redraw;
         }
         if (corr && name.find('.') == std::string::npos) name = "D" + std::to_string(corr_cursor) + "." + name;
@@ -296,7 +306,7 @@ Effect Session::setting_text(std::string_view text) {
     }
     if (corr && t.size() > 1 && t[0] == 'D' && std::isdigit(static_cast<unsigned char>(t[1]))) {
         int d = std::atoi(t.c_str() + 1);
-        if (d < 1 || d > m_.correctors) say("correctors are D1 to D" + std::to_string(m_.correctors), true);
+        if (d < 1 || d > m_.correctors) say(strf(tr("correctors are D1 to D%d"), m_.correctors), true);
         else corr_cursor = d;
         return Effect::redraw;
     }
@@ -309,8 +319,9 @@ Effect Session::setting_text(std::string_view text) {
             // The tool touching is the one of the active corrector: measuring
             // another asks first (CLARIFICATIONS 12.5; :measure never asks).
             int d = corr_cursor;
-            confirm("D" + std::to_string(d) + " is not the active corrector (D" + std::to_string(sim_->corrector()) +
-                        "): measure D" + std::to_string(d) + " with this tool?",
+            // TRANSLATORS: the corrector under the cursor, the active one, the first again.
+            confirm(strf(tr("D%d is not the active corrector (D%d): measure D%d with this tool?"), d, sim_->corrector(),
+                         d),
                     [this, d, axis, v] { measure(d, axis, v); });
         } else {
             measure(corr_cursor, axis, v);
@@ -318,9 +329,9 @@ Effect Session::setting_text(std::string_view text) {
         if (comma && !message_error_) echo_comma(text, v);
         return Effect::redraw;
     }
-    say(corr ? "CORR: X=63.345 sets a field of D" + std::to_string(corr_cursor) +
-                   ", D5 chooses a corrector, X 59.978 measures by a touched diameter"
-             : "PREF: PREF.Z=-300 or DEC1.X=2 sets a value, Z 0 or X 59.978 touches off",
+    say(corr ? strf(tr("CORR: X=63.345 sets a field of D%d, D5 chooses a corrector, X 59.978 measures by a touched diameter"),
+                    corr_cursor)
+             : std::string(tr("PREF: PREF.Z=-300 or DEC1.X=2 sets a value, Z 0 or X 59.978 touches off")),
         true);
     return Effect::redraw;
 }

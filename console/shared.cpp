@@ -15,6 +15,7 @@
 #include <cstdlib>
 
 #include "console/session.hpp"
+#include "core/i18n.hpp"
 #include "store/link.hpp"
 #include "store/store.hpp"
 
@@ -100,15 +101,15 @@ void Session::sync_from_store() {
         if (!mem_.replace(e.number, "store:%" + std::to_string(e.number), p.value.text, d)) continue;
         news += (news.empty() ? "%" : ", %") + std::to_string(e.number) + " r" + std::to_string(e.revision);
         if (editor.is_open() && editor.number == e.number && editor.revision != e.revision)
-            news += " (open here: :save keeps yours as a conflict)";
+            news += std::string(" ") + tr("(open here: :save keeps yours as a conflict)");
     }
     for (const auto& b : before) {
         bool still = false;
         for (const auto& e : dir_) still = still || e.number == b.number;
-        if (!still && mem_.remove(b.number)) news += (news.empty() ? "%" : ", %") + std::to_string(b.number) + " deleted";
+        if (!still && mem_.remove(b.number)) news += (news.empty() ? "" : ", ") + strf(tr("%%%d deleted"), b.number);
     }
     sim_->invalidate_text_cache();
-    if (!news.empty()) say("another console changed: " + news);
+    if (!news.empty()) say(strf(tr("another console changed: %s"), news.c_str()));
 }
 
 // The lease of a program open in EDIT: "user host pid time".

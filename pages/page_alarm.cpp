@@ -13,15 +13,15 @@ namespace {
 
 std::string where(const Diag& d) {
     std::string s = d.file == "IMD" || d.program < 0 ? std::string("IMD") : "%" + std::to_string(d.program);
-    if (d.line > 0) s += " line " + std::to_string(d.line);
+    if (d.line > 0) s += " " + strf(tr("line %d"), d.line);
     if (d.n >= 0) s += " N" + std::to_string(d.n);
     return s;
 }
 
 std::string explain(int code) {
     std::string_view t = code >= 1000 ? pupitre_diag_text(code) : num_error_text(code);
-    if (!t.empty()) return std::string(t) + (code >= 1000 ? " (pupitre(1), DIAGNOSTICS)" : "");
-    return code >= 1000 ? "pupitre diagnostic (see pupitre(1), DIAGNOSTICS)" : "";
+    if (!t.empty()) return std::string(t) + (code >= 1000 ? tr(" (pupitre(1), DIAGNOSTICS)") : "");
+    return code >= 1000 ? tr("pupitre diagnostic (see pupitre(1), DIAGNOSTICS)") : "";
 }
 
 }  // namespace
@@ -29,23 +29,24 @@ std::string explain(int code) {
 void page_alarm(const View& v, Canvas& c, const Rect& r) {
     const Sim& s = *v.sim;
     const auto& all = s.alarms();
-    c.rule(r.y, "ALARM  " + std::to_string(all.size()) + " since power-on");
+    // TRANSLATORS: the ALARM page's title: ALARM is the page's name.
+    c.rule(r.y, strf(tr("ALARM  %zu since power-on"), all.size()));
     std::vector<Line> lines;
     if (s.alarm_active()) {
         const Diag& d = all.back().diag;
-        lines.push_back(Line{}.add(" ALARM " + std::to_string(d.code), Style::alarm).add("   " + where(d), Style::value));
+        lines.push_back(Line{}.add(" " + strf(tr("ALARM %d"), d.code), Style::alarm).add("   " + where(d), Style::value));
         for (const std::string& l : wrap_text(explain(d.code), std::max(20, r.w - 4)))
             lines.push_back(Line{}.add("   " + l, Style::normal));
         for (const std::string& l : wrap_text(d.detail, std::max(20, r.w - 4)))
             lines.push_back(Line{}.add("   " + l, Style::value));
-        lines.push_back(Line{}.add("   RAZ (F12 or :raz) acknowledges it.", Style::dim));
+        lines.push_back(Line{}.add(std::string("   ") + tr("RAZ (F12 or :raz) acknowledges it."), Style::dim));
     } else {
-        lines.push_back(Line{}.add(" No alarm in force.", Style::dim));
+        lines.push_back(Line{}.add(std::string(" ") + tr("No alarm in force."), Style::dim));
     }
     lines.push_back(Line{});
     // The warnings of the last run: what ran instead of what was written.
     if (s.run_warning_count() > 0) {
-        lines.push_back(Line{}.add(" Warnings of the last run (" + std::to_string(s.run_warning_count()) + ")",
+        lines.push_back(Line{}.add(" " + strf(tr("Warnings of the last run (%zu)"), size_t(s.run_warning_count())),
                                    Style::title));
         for (const Diag& w : s.run_warnings()) {
             lines.push_back(Line{}
@@ -56,12 +57,12 @@ void page_alarm(const View& v, Canvas& c, const Rect& r) {
                 lines.push_back(Line{}.add("         " + l, Style::dim));
         }
         if (s.run_warning_count() > s.run_warnings().size())
-            lines.push_back(Line{}.add("   and " + std::to_string(s.run_warning_count() - s.run_warnings().size()) +
-                                           " more (pupitre check lists them all)",
+            lines.push_back(Line{}.add("   " + strf(tr("and %zu more (pupitre check lists them all)"),
+                                                    size_t(s.run_warning_count() - s.run_warnings().size())),
                                        Style::dim));
         lines.push_back(Line{});
     }
-    if (!all.empty()) lines.push_back(Line{}.add(" History (newest first)", Style::title));
+    if (!all.empty()) lines.push_back(Line{}.add(std::string(" ") + tr("History (newest first)"), Style::title));
     for (size_t i = all.size(); i-- > 0;) {
         const Alarm& a = all[i];
         char t[32];

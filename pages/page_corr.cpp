@@ -25,7 +25,7 @@ void page_corr(const View& v, Canvas& c, const Rect& r) {
     const Sim& s = *v.sim;
     const Interpreter& in = s.interp();
     const MachineProfile& m = s.machine();
-    c.rule(r.y, m.lathe ? "CORR  tool correctors (X Z R as radii, DX a diameter)" : "CORR  tool correctors");
+    c.rule(r.y, m.lathe ? tr("CORR  tool correctors (X Z R as radii, DX a diameter)") : tr("CORR  tool correctors"));
     std::vector<std::string> fields = m.lathe ? std::vector<std::string>{"X", "Z", "R", "C", "DX", "DZ"}
                                               : std::vector<std::string>{"L", "R", "DL", "DR"};
     int y = r.y + 1;
@@ -53,21 +53,24 @@ void page_corr(const View& v, Canvas& c, const Rect& r) {
             c.text_right(6 + int(k) * 10, y + i, 10, t + (pending ? "*" : " "),
                          pending ? Style::warn : val != 0 ? Style::value : Style::dim);
         }
-        if (d == active) c.text(8 + int(fields.size()) * 10, y + i, "active T" + std::to_string(s.tool()), Style::ok);
+        if (d == active) c.text(8 + int(fields.size()) * 10, y + i, strf(tr("active T%d"), s.tool()), Style::ok);
         if (cur) c.style(Rect{r.x, y + i, r.w, 1}, Style::select);
     }
     int by = r.y + r.h - 4;
     // The last measurement with its arithmetic (X gauges are radii, the
     // diameters shown and typed are halved).
-    if (!v.last_setting.empty()) c.text(2, by - 1, "Last: " + v.last_setting, Style::value, r.w - 3);
-    c.text(2, by, "Presetter: " + std::string(m.lathe ? "X=63.345 or Z=38.237" : "L=120.5 or R=5") + " sets D" +
-                      std::to_string(v.corr_cursor) + "; Up/Down or D5 choose another.",
-           Style::dim);
-    c.text(2, by + 1, std::string("Touch a known surface: ") + (m.lathe ? "X 59.978 (a diameter) or Z 0" : "Z 10 (a block on Z0)") +
-                          ", or :measure D2 Z 0.",
-           Style::dim);
-    c.text(2, by + 2, "* changed in a run: gauge at the next move of its axis, radius at G41/G42", Style::dim);
-    std::string state = v.protect ? "memory protection ON (:protect off)" : "memory protection off";
+    if (!v.last_setting.empty()) c.text(2, by - 1, strf(tr("Last: %s"), v.last_setting.c_str()), Style::value, r.w - 3);
+    c.text(2, by,
+           m.lathe ? strf(tr("Presetter: X=63.345 or Z=38.237 sets D%d; Up/Down or D5 choose another."), v.corr_cursor)
+                   : strf(tr("Presetter: L=120.5 or R=5 sets D%d; Up/Down or D5 choose another."), v.corr_cursor),
+           Style::dim, r.w - 2);
+    c.text(2, by + 1,
+           m.lathe ? tr("Touch a known surface: X 59.978 (a diameter) or Z 0, or :measure D2 Z 0.")
+                   : tr("Touch a known surface: Z 10 (a block on Z0), or :measure D2 Z 0."),
+           Style::dim, r.w - 2);
+    c.text(2, by + 2, tr("* changed in a run: gauge at the next move of its axis, radius at G41/G42"), Style::dim,
+           r.w - 2);
+    std::string state = v.protect ? tr("memory protection ON (:protect off)") : tr("memory protection off");
     c.text(2, by + 3, state, v.protect ? Style::warn : Style::dim);
 }
 

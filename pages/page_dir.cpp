@@ -11,16 +11,23 @@
 namespace pupitre::pages {
 
 void page_dir(const View& v, Canvas& c, const Rect& r) {
-    c.rule(r.y, "DIR  programs in memory (" + std::to_string(v.programs.size()) + ")");
+    // TRANSLATORS: the DIR page's title: DIR is the page's name.
+    c.rule(r.y, strf(tr("DIR  programs in memory (%zu)"), v.programs.size()));
     int y = r.y + 1;
-    c.text(2, y, pad("program", 12) + pad("lines", 8) + pad("rev", 5) + "title", Style::dim);
+    // TRANSLATORS: DIR page column headers: "program" at most 11 columns,
+    // "lines" at most 7 (right-aligned numbers under it), "rev" at most 4.
+    c.text(2, y, pad(tr("program"), 12) + pad(tr("lines"), 8) + pad(tr("rev"), 5) + tr("title"), Style::dim);
     ++y;
     int rows = r.h - 4;
     int by = r.y + r.h - 2;
-    c.text(2, by, "Enter selects the program (or type its number); Del twice deletes it.", Style::dim);
-    c.text(2, by + 1, ":edit N edits or creates %N; Alt-e edits the selected program.", Style::dim);
+    c.text(2, by, tr("Enter selects the program (or type its number); Del twice deletes it."), Style::dim);
+    c.text(2, by + 1,
+           // xgettext:no-c-format
+           tr(":edit N edits or creates %N; Alt-e edits the selected program."), Style::dim);
     if (v.programs.empty()) {
-        c.text(2, y, "No program yet: :edit 1 creates %1 (or, from a shell, pupitre import FILE).", Style::dim);
+        c.text(2, y,
+               // xgettext:no-c-format
+               tr("No program yet: :edit 1 creates %1 (or, from a shell, pupitre import FILE)."), Style::dim);
         return;
     }
     int cur = std::clamp(v.dir_cursor, 0, int(v.programs.size()) - 1);
@@ -32,7 +39,7 @@ void page_dir(const View& v, Canvas& c, const Rect& r) {
                            lpad(std::to_string(e.lines), 6) + "  " + lpad(std::to_string(e.revision), 4) + "  ";
         int x = c.text(0, y + i, line, sel ? Style::value : Style::normal, r.w);
         if (e.conflict > 0)
-            x += c.text(x, y + i, "CONFLICT r" + std::to_string(e.conflict) + " ", Style::warn, r.w - x);
+            x += c.text(x, y + i, strf(tr("CONFLICT r%d"), e.conflict) + " ", Style::warn, r.w - x);
         c.text(x, y + i, e.title, sel ? Style::value : Style::normal, r.w - x);
         if (first + i == cur) c.style(Rect{r.x, y + i, r.w, 1}, Style::select);
     }

@@ -12,14 +12,16 @@ namespace pupitre::pages {
 void page_edit(const View& v, Canvas& c, const Rect& r) {
     if (!v.edit_lines) {
         c.rule(r.y, "EDIT");
-        c.text(2, r.y + 2, "No program open: :edit N opens program %N (a new one if it does not exist),", Style::dim);
-        c.text(2, r.y + 3, "or choose one on the DIR page (F6) and type :edit.", Style::dim);
+        c.text(2, r.y + 2,
+               // xgettext:no-c-format
+               tr("No program open: :edit N opens program %N (a new one if it does not exist),"), Style::dim);
+        c.text(2, r.y + 3, tr("or choose one on the DIR page (F6) and type :edit."), Style::dim);
         return;
     }
     const auto& lines = *v.edit_lines;
     std::string title = std::string(v.edit_modif ? "MODIF" : "EDIT") + "  %" + std::to_string(v.edit_number);
-    if (!v.edit_modif) title += v.edit_revision > 0 ? "  revision " + std::to_string(v.edit_revision) : "  new";
-    if (v.edit_dirty) title += "  modified";
+    if (!v.edit_modif) title += "  " + (v.edit_revision > 0 ? strf(tr("revision %d"), v.edit_revision) : std::string(tr("new")));
+    if (v.edit_dirty) title += std::string("  ") + tr("modified");
     c.rule(r.y, title);
     int rows = r.h - 2;
     int n = int(lines.size());
@@ -39,9 +41,10 @@ void page_edit(const View& v, Canvas& c, const Rect& r) {
             c.put(r.x + 6, y, U'>', k == v.edit_error ? Style::alarm : Style::select);
         }
     }
-    std::string help = v.edit_modify ? "Enter replaces the block; Ctrl-U clears the line"
-                                     : "type a block: inserted after >   Enter: modify   Del: delete   :save";
-    if (v.edit_modif && !v.edit_modify) help = "# blocks already prepared; Cycle Start runs the changed text, RAZ drops it";
+    std::string help = v.edit_modify ? tr("Enter replaces the block; Ctrl-U clears the line")
+                                     : tr("type a block: inserted after >   Enter: modify   Del: delete   :save");
+    if (v.edit_modif && !v.edit_modify)
+        help = tr("# blocks already prepared; Cycle Start runs the changed text, RAZ drops it");
     c.text(2, r.y + r.h - 1, help, Style::dim, r.w - 3);
 }
 

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <string>
 
+#include "core/i18n.hpp"
 #include "pages/view.hpp"
 #include "core/geometry/geometry.hpp"
 
@@ -213,7 +214,9 @@ void info_lines(const GraphView& g, const ViewXf& xf, Canvas& c, const Rect& r) 
     auto room = [&] { return std::max(0, r.x + r.w - x); };
     x += c.text(x, y1, scale_bar(xf, c.ascii()), Style::dim, room());
     double px = g.has_cursor ? g.cur_x : xf.cx, py = g.has_cursor ? g.cur_y : xf.cy;
-    std::string cur = std::string(g.has_cursor ? "   cursor " : "   centre ") +
+    // TRANSLATORS: GRAPH page, before the coordinates of the cursor or of the
+    // centre of the drawing.
+    std::string cur = "   " + std::string(g.has_cursor ? tr("cursor") : tr("centre")) + " " +
                       axis_label(h, false, c.ascii()) + " " + fmt_mm(shown(p, h, px)) + "  " +
                       axis_label(v, lathe && v == X && p.x_diameter(), c.ascii()) + " " +
                       fmt_mm(shown(p, v, py));
@@ -240,13 +243,12 @@ void info_lines(const GraphView& g, const ViewXf& xf, Canvas& c, const Rect& r) 
         x += c.text(x, y2, e, Style::value, room());
     }
     if (p.travel_moves()) {
-        std::string t = std::to_string(p.travel_moves()) + " beyond travel  ";
+        std::string t = strf(tr("%zu beyond travel"), size_t(p.travel_moves())) + "  ";
         x += c.text(x, y2, t, Style::warn, room());
     }
     for (const PathError& e : p.errors()) {
-        std::string t = "error " + std::to_string(e.code) +
-                        (e.loc.n >= 0 ? " N" + std::to_string(e.loc.n) : "") + " line " +
-                        std::to_string(e.loc.line) + "  ";
+        std::string t = strf(tr("error %d"), e.code) + (e.loc.n >= 0 ? " N" + std::to_string(e.loc.n) : "") + " " +
+                        strf(tr("line %d"), e.loc.line) + "  ";
         x += c.text(x, y2, t, travel_error(e.code) ? Style::warn : Style::alarm, room());
     }
 }
@@ -319,7 +321,7 @@ void graph_extent(const GraphView& g, double& x0, double& y0, double& x1, double
 }
 
 std::string graph_fit_words(const GraphView& g) {
-    if (!g.path) return "no toolpath yet";
+    if (!g.path) return tr("no toolpath yet");
     PathFit f = fit_box(*g.path, g.plane, mirrored(g), false);
     count_outside(*g.path, g.plane, moves_shown(g), f);
     return fit_words(*g.path, f);
@@ -344,14 +346,14 @@ ViewXf graph_window(const GraphView& g, const Rect& page) {
 void page_graph(const GraphView& g, const MachineProfile& m, Canvas& c, const Rect& r) {
     if (!g.path || (g.path->empty() && g.path->errors().empty())) {
         c.rule(r.y, title_of(g));
-        c.text(r.x + 2, r.y + 2, "No toolpath yet: run a program in AUTO, SEQ, DRY RUN or TEST.",
+        c.text(r.x + 2, r.y + 2, tr("No toolpath yet: run a program in AUTO, SEQ, DRY RUN or TEST."),
                Style::dim, r.w - 4);
         return;
     }
     const Toolpath& p = *g.path;
     char buf[96];
     double t = p.seconds();
-    std::snprintf(buf, sizeof buf, " %zu moves  %d:%02d:%02d ", moves_shown(g), int(t / 3600),
+    std::snprintf(buf, sizeof buf, tr(" %zu moves  %d:%02d:%02d "), moves_shown(g), int(t / 3600),
                   int(t / 60) % 60, int(t) % 60);
     // The title gives way to the count and the time on a narrow page.
     std::string title = title_of(g);

@@ -11,14 +11,29 @@ namespace {
 
 // The first steps of a student at the lathe or the mill (README "Quick start").
 const char* const kGettingStarted[] = {
-    "1. Home: F8 until the status line shows POM, then Cycle Start (F9).",
-    "2. Jog: F8 to JOG, hold an arrow key (the OP page lists the keys); INC moves one step.",
-    "3. Tool: F8 to IMD, type T1 D1 M6, Enter, then F9 (Cycle Start).",
-    "4. Touch off: jog the tool onto the part, Alt-p for the PREF page, type Z 0 for the face or "
-    "X 59.978 for a diameter; the OP page then reads what you typed.",
-    "5. Run: F6 lists the programs (Enter selects), F8 to AUTO, F9 runs; F10 holds, F12 (RAZ) abandons.",
-    "The prompt says where typed text goes (IMD>, PREF>, D5>, EDIT>); Escape empties it. "
-    "Commands start with ':' (Tab completes). RAZ is F12 (or Alt-r), off the F1-F10 row.",
+    N_("1. Home: F8 until the status line shows POM, then Cycle Start (F9)."),
+    N_("2. Jog: F8 to JOG, hold an arrow key (the OP page lists the keys); INC moves one step."),
+    N_("3. Tool: F8 to IMD, type T1 D1 M6, Enter, then F9 (Cycle Start)."),
+    N_("4. Touch off: jog the tool onto the part, Alt-p for the PREF page, type Z 0 for the face or "
+       "X 59.978 for a diameter; the OP page then reads what you typed."),
+    N_("5. Run: F6 lists the programs (Enter selects), F8 to AUTO, F9 runs; F10 holds, F12 (RAZ) abandons."),
+    N_("The prompt says where typed text goes (IMD>, PREF>, D5>, EDIT>); Escape empties it. "
+       "Commands start with ':' (Tab completes). RAZ is F12 (or Alt-r), off the F1-F10 row."),
+};
+
+// The modes' descriptions (core's mode_english and mode_how, English there:
+// the status line and traces name the modes), for the catalogue; the HELP
+// page and the message line show them through tr().
+[[maybe_unused]] const char* const kModeTexts[] = {
+    N_("continuous run"), N_("Cycle Start (F9) runs the selected program"),
+    N_("single block"), N_("Cycle Start (F9) runs one block"),
+    N_("dry run: feeds at the machine maximum"), N_("Cycle Start (F9) runs it"),
+    N_("program check, no motion"), N_("Cycle Start (F9) checks the program"),
+    N_("block search and resume"), N_("type the N to find, then Cycle Start (F9)"),
+    N_("manual data input"), N_("type a block, Enter, then Cycle Start (F9)"),
+    N_("continuous jog"), N_("hold an arrow key to move an axis (keys on OP)"),
+    N_("incremental jog"), N_("an arrow key moves one step (keys on OP)"),
+    N_("homing"), N_("Cycle Start (F9) homes the axes"),
 };
 
 // A two-column entry: the key (or command) in its column, the text beside it
@@ -40,30 +55,33 @@ void entry(std::vector<Line>& lines, const std::string& key, int col, const std:
 }
 
 void modes(const View& v, std::vector<Line>& lines, int width) {
-    lines.push_back(Line{}.add(" Modes: F8 goes to the next one (S-F8 back), :mode NAME selects one", Style::title));
+    lines.push_back(
+        Line{}.add(std::string(" ") + tr("Modes: F8 goes to the next one (S-F8 back), :mode NAME selects one"), Style::title));
     Mode now = v.sim->mode();
     Mode m = Mode::automatic;
     do {
-        std::string when = m == now ? "now" : m == next_mode(now, 1) ? "F8 goes here next" : "";
-        entry(lines, std::string(mode_name(m)), 8, std::string(mode_english(m)) + "; " + std::string(mode_how(m)),
-              when, width);
+        std::string when = m == now ? tr("now") : m == next_mode(now, 1) ? tr("F8 goes here next") : "";
+        entry(lines, std::string(mode_name(m)), 8,
+              tr_text(mode_english(m)) + "; " + tr_text(mode_how(m)), when,
+              width);
         m = next_mode(m, 1);
     } while (m != Mode::automatic);
-    entry(lines, "EDIT", 8, "the program editor: :edit N or Alt-e (the selected program)", "", width);
-    entry(lines, "MODIF", 8, "change the blocks to come of an interrupted program: Alt-m or :mode modif", "",
+    entry(lines, "EDIT", 8, tr("the program editor: :edit N or Alt-e (the selected program)"), "", width);
+    entry(lines, "MODIF", 8, tr("change the blocks to come of an interrupted program: Alt-m or :mode modif"), "",
           width);
 }
 
 }  // namespace
 
 void page_help(const View& v, Canvas& c, const Rect& r) {
-    c.rule(r.y, "HELP  keys and commands (PgUp/PgDn scroll)");
+    // TRANSLATORS: the HELP page's title: HELP is the page's name.
+    c.rule(r.y, tr("HELP  keys and commands (PgUp/PgDn scroll)"));
     std::vector<Line> lines;
-    lines.push_back(Line{}.add(" Getting started", Style::title));
+    lines.push_back(Line{}.add(std::string(" ") + tr("Getting started"), Style::title));
     // The text wraps short of the right edge, where the scroll position shows.
     const int width = r.w - 10;
     for (const char* s : kGettingStarted) {
-        auto parts = wrap_text(s, width - 6);
+        auto parts = wrap_text(tr(s), width - 6);
         for (size_t i = 0; i < parts.size(); ++i) lines.push_back(Line{}.add((i ? "      " : "   ") + parts[i]));
     }
     lines.push_back(Line{});
@@ -71,7 +89,7 @@ void page_help(const View& v, Canvas& c, const Rect& r) {
     std::string section;
     for (const HelpLine& h : v.help) {
         bool cmd = !h.key.empty() && h.key[0] == ':';
-        std::string want = cmd ? "Commands (type them on the input line)" : "Keys";
+        std::string want = cmd ? tr("Commands (type them on the input line)") : tr("Keys");
         if (want != section) {
             section = want;
             lines.push_back(Line{});
@@ -81,9 +99,9 @@ void page_help(const View& v, Canvas& c, const Rect& r) {
     }
     if (!v.store_path.empty()) {
         lines.push_back(Line{});
-        lines.push_back(Line{}.add(" Store: ", Style::dim).add(v.store_path));
+        lines.push_back(Line{}.add(std::string(" ") + tr("Store:") + " ", Style::dim).add(v.store_path));
     }
-    lines.push_back(Line{}.add(" Manual: man pupitre (the console), man pupitre-iso (the NUM dialect)", Style::dim));
+    lines.push_back(Line{}.add(std::string(" ") + tr("Manual: man pupitre (the console), man pupitre-iso (the NUM dialect)"), Style::dim));
     draw_lines(lines, v.scroll, c, Rect{r.x, r.y + 1, r.w, r.h - 1});
 }
 

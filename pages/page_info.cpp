@@ -33,7 +33,8 @@ void page_info(const View& v, Canvas& c, const Rect& r) {
     const Interpreter& in = s.interp();
     const Modal& m = in.modal();
     const Frames& f = in.frames();
-    c.rule(r.y, "INFO  functions in force");
+    // TRANSLATORS: the INFO page's title: INFO is the page's name.
+    c.rule(r.y, tr("INFO  functions in force"));
     std::vector<Line> lines;
     auto kv = [&](std::string k, std::string val) {
         Line l;
@@ -58,43 +59,39 @@ void page_info(const View& v, Canvas& c, const Rect& r) {
     if (m.coded_m >= 0) ms += " M" + std::to_string(m.coded_m);
     kv("M", ms);
     char buf[128];
-    const char* unit = m.feed_mode == 95 ? "mm/rev" : m.feed_mode == 93 ? "1/min (inverse time)" : "mm/min";
+    const char* unit = m.feed_mode == 95 ? tr("mm/rev") : m.feed_mode == 93 ? tr("1/min (inverse time)") : "mm/min";
     std::snprintf(buf, sizeof buf, "F%g %s", m.feed, unit);
-    kv("Feed", buf);
-    if (m.spindle_mode == 96)
-        std::snprintf(buf, sizeof buf, "S%g m/min (G96 constant surface speed)%s", m.s, m.smax > 0 ? "" : "");
-    else
-        std::snprintf(buf, sizeof buf, "S%g rev/min", m.s);
-    std::string sp = buf;
-    if (m.smax > 0) {
-        std::snprintf(buf, sizeof buf, "   G92 S%g limit", m.smax);
-        sp += buf;
-    }
-    kv("Spindle", sp);
-    kv("Tool", "T" + std::to_string(m.t) + " (in spindle T" + std::to_string(m.tool_in_spindle) + ")  D" +
-                   std::to_string(m.d));
+    // TRANSLATORS: INFO page labels (Feed, Spindle, Tool, Plane, Transform,
+    // Switches): at most 10 columns each.
+    kv(tr("Feed"), buf);
+    std::string sp = m.spindle_mode == 96 ? strf(tr("S%g m/min (G96 constant surface speed)"), m.s)
+                                          : strf(tr("S%g rev/min"), m.s);
+    if (m.smax > 0) sp += "   " + strf(tr("G92 S%g limit"), m.smax);
+    kv(tr("Spindle"), sp);
+    kv(tr("Tool"), strf(tr("T%d (in spindle T%d)  D%d"), m.t, m.tool_in_spindle, m.d));
     std::string plane = m.plane == 17 ? "XY (G17)" : m.plane == 18 ? "ZX (G18)" : "YZ (G19)";
-    kv("Plane", plane + (m.radcomp == 41 ? "   radius comp. left (G41)"
-                         : m.radcomp == 42 ? "   radius comp. right (G42)"
-                                           : "   no radius compensation (G40)"));
+    kv(tr("Plane"), plane + "   " +
+                        (m.radcomp == 41   ? tr("radius comp. left (G41)")
+                         : m.radcomp == 42 ? tr("radius comp. right (G42)")
+                                           : tr("no radius compensation (G40)")));
     lines.push_back(Line{});
-    lines.push_back(Line{}.add(s.machine().lathe ? " Offsets (X as a radius)" : " Offsets", Style::title));
+    lines.push_back(
+        Line{}.add(std::string(" ") + (s.machine().lathe ? tr("Offsets (X as a radius)") : tr("Offsets")), Style::title));
     kv("PREF", axes_text(s, f.pref));
     kv("DEC1", axes_text(s, f.dec1));
     kv("DEC3", axes_text(s, f.dec3));
     kv("G59", axes_text(s, f.g59));
-    kv("gauge", axes_text(s, f.gauge));
+    kv(tr("gauge"), axes_text(s, f.gauge));
     std::string mir;
     for (int a = 0; a < kAxes; ++a)
         if (f.mirror[size_t(a)]) mir += std::string(1, kAxisNames[size_t(a)]) + " ";
-    std::snprintf(buf, sizeof buf, "mirror %s  scale %s%.3f  ED %.4f deg", mir.empty() ? "none" : mir.c_str(),
-                  f.scale_on ? "" : "(off) ", f.scale, f.ed);
-    kv("Transform", buf);
+    std::string scale_off = f.scale_on ? "" : std::string(tr("(off)")) + " ";
+    kv(tr("Transform"), strf(tr("mirror %s  scale %s%.3f  ED %.4f deg"), mir.empty() ? tr("none") : mir.c_str(),
+                             scale_off.c_str(), f.scale, f.ed));
     lines.push_back(Line{});
-    std::snprintf(buf, sizeof buf, "block skip %s   optional stop M01 %s   overrides %s",
-                  in.options().block_skip ? "ON" : "off", in.options().optional_stop ? "ON" : "off",
-                  m.overrides_off ? "inhibited (M49)" : "active (M48)");
-    kv("Switches", buf);
+    kv(tr("Switches"), strf(tr("block skip %s   optional stop M01 %s   overrides %s"),
+                            in.options().block_skip ? tr("ON") : tr("off"), in.options().optional_stop ? tr("ON") : tr("off"),
+                            m.overrides_off ? tr("inhibited (M49)") : tr("active (M48)")));
     draw_lines(lines, v.scroll, c, Rect{r.x, r.y + 1, r.w, r.h - 1});
 }
 

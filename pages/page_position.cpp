@@ -13,8 +13,7 @@ namespace {
 std::string spindle_text(const Sim& s) {
     char buf[96];
     const char* dir = s.spindle_dir() == 3 ? "M03" : s.spindle_dir() == 4 ? "M04" : s.spindle_dir() == 19 ? "M19" : "M05";
-    std::snprintf(buf, sizeof buf, "%.0f rev/min  %s", s.rpm(), dir);
-    std::string out = buf;
+    std::string out = strf(tr("%.0f rev/min  %s"), s.rpm(), dir);
     if (s.spindle_range() >= 40) out += "  M" + std::to_string(s.spindle_range());
     const Modal& m = s.interp().modal();
     if (m.spindle_mode == 96) {
@@ -25,12 +24,9 @@ std::string spindle_text(const Sim& s) {
 }
 
 std::string feed_text(const Sim& s) {
-    char buf[96];
     const Modal& m = s.interp().modal();
-    const char* unit = m.feed_mode == 95 ? "mm/rev" : m.feed_mode == 93 ? "1/min" : "mm/min";
-    std::snprintf(buf, sizeof buf, "%.0f mm/min now   programmed F%g %s (G%d)", s.feed(), m.feed, unit,
-                  m.feed_mode);
-    return buf;
+    const char* unit = m.feed_mode == 95 ? tr("mm/rev") : m.feed_mode == 93 ? "1/min" : "mm/min";
+    return strf(tr("%.0f mm/min now   programmed F%g %s (G%d)"), s.feed(), m.feed, unit, m.feed_mode);
 }
 
 // Large digits for a big terminal, three rows high, as a panel's position
@@ -76,17 +72,21 @@ void page_position(const View& v, Canvas& c, const Rect& r) {
     const Sim& s = *v.sim;
     const MachineProfile& m = s.machine();
     bool om_first = v.page == PageId::om;
-    c.rule(r.y, om_first ? "OM  machine position" : "OP  program position");
+    // TRANSLATORS: the position page's title: OM (origine mesure) and OP
+    // (origine programme) are the page's names.
+    c.rule(r.y, om_first ? tr("OM  machine position") : tr("OP  program position"));
     Axes op = s.op(), om = s.om(), go = s.to_go();
     int y = r.y + 2;
     // 160x48 and the like: the first column in large digits, the same layout.
     const bool big = r.w >= 120 && r.h >= 40 && !c.ascii();
     const int cx[3] = {6, big ? 50 : 26, big ? 70 : 46};
     const int w0 = big ? 40 : 14;
-    std::string h1 = om_first ? "OM machine" : "OP program", h2 = om_first ? "OP program" : "OM machine";
+    // TRANSLATORS: column headers of the position page, at most 13 columns
+    // each: the machine coordinates (OM), the program's (OP), the distance to go.
+    std::string h1 = om_first ? tr("OM machine") : tr("OP program"), h2 = om_first ? tr("OP program") : tr("OM machine");
     c.text_right(cx[0], y, w0, h1, Style::dim);
     c.text_right(cx[1], y, 14, h2, Style::dim);
-    c.text_right(cx[2], y, 14, "to go", Style::dim);
+    c.text_right(cx[2], y, 14, tr("to go"), Style::dim);
     ++y;
     for (int a = 0; a < kAxes && y < r.y + r.h; ++a) {
         if (!m.has(a)) continue;
@@ -105,7 +105,7 @@ void page_position(const View& v, Canvas& c, const Rect& r) {
     }
     bool any_unhomed = false;
     for (int a = 0; a < kAxes; ++a) any_unhomed |= m.has(a) && !s.interp().homed(a);
-    if (any_unhomed) c.text(cx[2] + 16, r.y + 3, "* not homed (POM)", Style::warn);
+    if (any_unhomed) c.text(cx[2] + 16, r.y + 3, tr("* not homed (POM)"), Style::warn);
     ++y;
     auto row = [&](std::string_view label, const std::string& value, Style st = Style::value) {
         if (y >= r.y + r.h) return;
@@ -113,28 +113,28 @@ void page_position(const View& v, Canvas& c, const Rect& r) {
         c.text(12, y, value, st, r.w - 14);
         ++y;
     };
-    row("Feed", feed_text(s));
-    row("Spindle", spindle_text(s));
+    // TRANSLATORS: labels of the position page (Feed, Spindle, Tool, Program,
+    // Run, Block): at most 9 columns each.
+    row(tr("Feed"), feed_text(s));
+    row(tr("Spindle"), spindle_text(s));
     std::string tool = "T" + std::to_string(s.tool()) + "  D" + std::to_string(s.corrector());
     if (s.m7() || s.m8()) tool += std::string("  ") + (s.m7() ? "M07 " : "") + (s.m8() ? "M08" : "");
-    row("Tool", tool);
+    row(tr("Tool"), tool);
     const Loc& l = s.loc();
-    std::string where = s.selected() >= 0 ? "%" + std::to_string(s.selected()) : "no program selected";
+    std::string where = s.selected() >= 0 ? "%" + std::to_string(s.selected()) : tr("no program selected");
     if (l.line > 0) {
         const ProgramText* t = s.text_of(l.prog);
         bool imd = (t && t->file == "IMD") || l.prog == 0;
-        where += (imd ? std::string("   at IMD") : "   at %" + std::to_string(l.prog)) + " line " + std::to_string(l.line);
+        where += "   " + (imd ? strf(tr("at IMD line %d"), l.line) : strf(tr("at %%%d line %d"), l.prog, l.line));
         if (l.n >= 0) where += "  N" + std::to_string(l.n);
     }
-    row("Program", where);
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%ld block%s   cycle time %.1f s", s.blocks_done(), s.blocks_done() == 1 ? "" : "s",
-                  s.cycle_time());
-    row("Run", buf);
+    row(tr("Program"), where);
+    row(tr("Run"), strf(trn("%ld block   cycle time %.1f s", "%ld blocks   cycle time %.1f s", (unsigned long)s.blocks_done()),
+                        s.blocks_done(), s.cycle_time()));
     // The mode's keys at all times: what Cycle Start does, the jog keys, the step.
     if (!v.mode_hint.empty()) row(mode_name(s.mode()), v.mode_hint, Style::normal);
     if (!v.mode_setting.empty()) row("", v.mode_setting, Style::normal);
-    if (l.line > 0) row("Block", std::string(s.line_of(s.text_of(l.prog), l.line)), Style::select);
+    if (l.line > 0) row(tr("Block"), std::string(s.line_of(s.text_of(l.prog), l.line)), Style::select);
 }
 
 }  // namespace pupitre::pages

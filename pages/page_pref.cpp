@@ -15,10 +15,12 @@ void page_pref(const View& v, Canvas& c, const Rect& r) {
     const Interpreter& in = s.interp();
     const MachineProfile& m = s.machine();
     const Frames& f = in.frames();
-    c.rule(r.y, "PREF  origins");
+    // TRANSLATORS: the PREF page's title: PREF is the page's name.
+    c.rule(r.y, tr("PREF  origins"));
     int y = r.y + 2;
     const int w = 10;
-    const char* heads[] = {"PREF", "DEC1", "DEC3", "G59", "gauge", "OM", "OP"};
+    // TRANSLATORS: a column header of the PREF page (the tool gauge): at most 9 columns.
+    const char* heads[] = {"PREF", "DEC1", "DEC3", "G59", tr("gauge"), "OM", "OP"};
     for (int i = 0; i < 7; ++i) c.text_right(4 + i * w, y, w, heads[i], i < 3 ? Style::title : Style::dim);
     ++y;
     Axes om = s.om(), op = s.op();
@@ -45,32 +47,36 @@ void page_pref(const View& v, Canvas& c, const Rect& r) {
     ++y;
     // The corrector the machine applies (D0 after M02 and RAZ, T kept); a
     // gauge not yet applied is named: a touch-off applies it first.
-    std::string d = "active corrector D" + std::to_string(s.corrector()) + ", tool T" + std::to_string(s.tool());
+    std::string d = strf(tr("active corrector D%d, tool T%d"), s.corrector(), s.tool());
     std::string waiting;
     for (int a = 0; a < kAxes; ++a)
         if (m.has(a) && in.gauge_pending(a) && std::abs(in.active_gauge(a) - f.gauge[size_t(a)]) > 5e-7)
             waiting += std::string(waiting.empty() ? "" : " ") + kAxisNames[size_t(a)];
-    if (!waiting.empty()) d += "; its gauge on " + waiting + " applies at the next move or touch-off";
-    c.text(2, y++, d, waiting.empty() ? Style::dim : Style::warn);
+    if (!waiting.empty()) d += strf(tr("; its gauge on %s applies at the next move or touch-off"), waiting.c_str());
+    c.text(2, y++, d, waiting.empty() ? Style::dim : Style::warn, r.w - 2);
     if (m.lathe && s.to_display(X, 1.0) != 1.0)
-        c.text(2, y++, "X: PREF, DEC1, DEC3, G59 and the gauge are radii; OM and OP diameters (\u00f8).",
-               Style::dim);
+        c.text(2, y++, strf(tr("X: PREF, DEC1, DEC3, G59 and the gauge are radii; OM and OP diameters (%s)."), "\u00f8"),
+               Style::dim, r.w - 2);
     if (!v.last_setting.empty()) {
         // The last touch-off or measurement with its arithmetic, whole (the
         // message line may cut it at 80 columns).
-        c.text(2, ++y, "Last:", Style::dim);
-        for (const auto& part : wrap_text(v.last_setting, r.w - 10))
-            if (y < r.y + r.h - 6) c.text(8, y++, part, Style::value);
+        // TRANSLATORS: PREF page, before the last touch-off and its arithmetic.
+        const char* last = tr("Last:");
+        int lx = std::max(8, 3 + columns(last));
+        c.text(2, ++y, last, Style::dim);
+        for (const auto& part : wrap_text(v.last_setting, r.w - lx - 2))
+            if (y < r.y + r.h - 6) c.text(lx, y++, part, Style::value);
     }
-    if (!v.pending.empty()) c.text(2, y++, "* changed during the run: applies at the next move", Style::warn);
+    if (!v.pending.empty()) c.text(2, y++, tr("* changed during the run: applies at the next move"), Style::warn, r.w - 2);
     int by = r.y + r.h - 5;
-    c.text(2, by, "Touch-off: jog the tool onto the part, then type the coordinate of the", Style::dim);
-    c.text(2, by + 1, std::string("surface: Z 0 (the face)") + (m.lathe ? ", X 59.978 (a diameter)" : ", X 0") +
-                          ", or :touch Z 0.",
-           Style::dim);
-    c.text(2, by + 2, "Direct entry: PREF.Z=-300  DEC1.X=2  DEC3.Z=0.5    Undo: C-z, :undo", Style::dim);
-    std::string state = v.protect ? "memory protection ON (:protect off)" : "memory protection off";
-    if (v.undo_depth) state += "   " + std::to_string(v.undo_depth) + " change(s) to undo";
+    c.text(2, by, tr("Touch-off: jog the tool onto the part, then type the coordinate of the"), Style::dim, r.w - 2);
+    c.text(2, by + 1,
+           m.lathe ? tr("surface: Z 0 (the face), X 59.978 (a diameter), or :touch Z 0.")
+                   : tr("surface: Z 0 (the face), X 0, or :touch Z 0."),
+           Style::dim, r.w - 2);
+    c.text(2, by + 2, tr("Direct entry: PREF.Z=-300  DEC1.X=2  DEC3.Z=0.5    Undo: C-z, :undo"), Style::dim, r.w - 2);
+    std::string state = v.protect ? tr("memory protection ON (:protect off)") : tr("memory protection off");
+    if (v.undo_depth) state += "   " + strf(tr("%zu change(s) to undo"), v.undo_depth);
     c.text(2, by + 3, state, v.protect ? Style::warn : Style::dim);
 }
 

@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/i18n.hpp"
 #include "pages/canvas.hpp"
 #include "pages/view.hpp"
 
@@ -38,13 +39,22 @@ void draw_lines(const std::vector<Line>& lines, int scroll, Canvas& c, const Rec
 // for an empty text).
 std::vector<std::string> wrap_text(const std::string& text, int width);
 
-// "%-6s"-style padding for the columns of a page.
+// A text kept in English in a table (marked with N_ where it is written),
+// in the chosen language; "" stays "" (gettext would answer its header).
+inline std::string tr_text(std::string_view s) {
+    return s.empty() ? std::string() : std::string(tr(std::string(s).c_str()));
+}
+
+// "%-6s"-style padding for the columns of a page, in columns (a translated
+// text may hold "é", two bytes and one column).
 inline std::string pad(std::string s, size_t w) {
-    if (s.size() < w) s.append(w - s.size(), ' ');
+    size_t n = size_t(columns(s));
+    if (n < w) s.append(w - n, ' ');
     return s;
 }
 inline std::string lpad(std::string s, size_t w) {
-    if (s.size() < w) s.insert(0, w - s.size(), ' ');
+    size_t n = size_t(columns(s));
+    if (n < w) s.insert(0, w - n, ' ');
     return s;
 }
 

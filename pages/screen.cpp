@@ -16,6 +16,28 @@ namespace pupitre::pages {
 
 namespace {
 
+// The run state as the status line shows it (core's state_name stays the
+// English word of the traces).
+const char* state_text(RunState st) {
+    switch (st) {
+        // TRANSLATORS: run states on the status line: at most 6 columns each.
+        case RunState::idle: return tr("READY");
+        // TRANSLATORS: run state (a program runs), at most 6 columns.
+        case RunState::running: return tr("CYCLE");
+        // TRANSLATORS: run state (feed hold), at most 6 columns.
+        case RunState::hold: return tr("HOLD");
+        // TRANSLATORS: run state (single block: waits for the next), at most 6 columns.
+        case RunState::block: return tr("BLOCK");
+        // TRANSLATORS: run state (M00/M01 stop), at most 6 columns.
+        case RunState::stopped: return tr("STOP");
+        // TRANSLATORS: run state (end of program), at most 6 columns.
+        case RunState::ended: return tr("END");
+        // TRANSLATORS: run state, at most 6 columns.
+        case RunState::alarm: return tr("ALARM");
+    }
+    return "?";
+}
+
 constexpr std::string_view kPageWords[] = {"om", "op", "prog", "info", "param", "dir", "alarm", "help", "pref", "corr", "edit", "graph", "history"};
 
 void status_line(const View& v, Canvas& c) {
@@ -27,7 +49,7 @@ void status_line(const View& v, Canvas& c) {
     std::string prog = s.selected() >= 0 ? "%" + std::to_string(s.selected()) : "%-";
     x += c.text(x + 1, 0, prog, Style::status) + 1;
     const Loc& l = s.loc();
-    std::string n = l.n >= 0 ? "N" + std::to_string(l.n) : l.line > 0 ? "line " + std::to_string(l.line) : "";
+    std::string n = l.n >= 0 ? "N" + std::to_string(l.n) : l.line > 0 ? strf(tr("line %d"), l.line) : "";
     if (!n.empty()) x += c.text(x + 1, 0, n, Style::status) + 1;
     RunState st = s.state();
     Style ss = st == RunState::alarm ? Style::alarm
@@ -35,14 +57,17 @@ void status_line(const View& v, Canvas& c) {
                : (st == RunState::hold || st == RunState::stopped || st == RunState::block) ? Style::warn
                                                                                             : Style::status;
     x += 1;
-    std::string state = s.alarm_active() ? "ALARM " + std::to_string(s.alarms().back().diag.code)
-                                         : std::string(state_name(st));
+    // TRANSLATORS: status line, the alarm in force with its number.
+    std::string state = s.alarm_active() ? strf(tr("ALARM %d"), s.alarms().back().diag.code)
+                                         : std::string(state_text(st));
     x += c.text(x + 1, 0, " " + state + " ", ss) + 1;
     // The mode key's next mode (F8 cycles them; the HELP page lists them).
     c.text(x + 2, 0, std::string("F8") + (c.ascii() ? ">" : "→") + std::string(mode_name(next_mode(s.mode(), 1))),
            Style::status);
+    // TRANSLATORS: status line, memory protection on: at most 5 columns.
+    std::string lock = v.protect ? std::string(tr("LOCK")) + " " : "";
     char right[112];
-    std::snprintf(right, sizeof right, "%s%s F%d%% S%d%%%s%s %s ", v.protect ? "LOCK " : "", v.machine.c_str(), s.feed_override,
+    std::snprintf(right, sizeof right, "%s%s F%d%% S%d%%%s%s %s ", lock.c_str(), v.machine.c_str(), s.feed_override,
                   s.spindle_override, s.interp().options().block_skip ? " /" : "",
                   s.interp().options().optional_stop ? " M01" : "", v.speed.c_str());
     c.text_right(0, 0, c.width(), right, Style::status);
@@ -97,19 +122,17 @@ namespace {
 // Below 80x24 the layout cannot hold: one clear screen says so, and what
 // runs goes on (DESIGN §2.4).
 void too_small(const View& v, Canvas& c) {
-    char size[64];
-    std::snprintf(size, sizeof size, "this terminal is %dx%d", c.width(), c.height());
     const std::string lines[] = {
-        "Terminal too small",
-        "pupitre needs at least 80x24;",
-        size,
-        "Enlarge the window to go on.",
-        std::string(mode_name(v.sim->mode())) + " " + std::string(state_name(v.sim->state())),
+        tr("Terminal too small"),
+        tr("pupitre needs at least 80x24;"),
+        strf(tr("this terminal is %dx%d"), c.width(), c.height()),
+        tr("Enlarge the window to go on."),
+        std::string(mode_name(v.sim->mode())) + " " + std::string(state_text(v.sim->state())),
     };
     int n = int(std::size(lines));
     int y0 = std::max(0, (c.height() - n) / 2);
     for (int i = 0; i < n && y0 + i < c.height(); ++i) {
-        int w = int(lines[i].size());
+        int w = columns(lines[i]);
         c.text(std::max(0, (c.width() - w) / 2), y0 + i, lines[i], i == 0 ? Style::alarm : Style::normal, c.width());
     }
 }
