@@ -130,7 +130,7 @@ int console(const ConsoleArgs& a) {
     }
     auto opened = store::Store::open(path, o);
     if (opened.error) {
-        std::fprintf(stderr, "pupitre: %s\n", opened.error.message.c_str());
+        std::fprintf(stderr, tr("pupitre: %s\n"), opened.error.message.c_str());
         return store::exit_code(opened.error.fault);
     }
     std::unique_ptr<store::Store> st = std::move(opened.value);
@@ -173,7 +173,7 @@ int console(const ConsoleArgs& a) {
     s.say(news, false);
     console::Terminal term;
     if (std::string err = term.open(theme); !err.empty()) {
-        std::fprintf(stderr, "pupitre: %s\n", err.c_str());
+        std::fprintf(stderr, tr("pupitre: %s\n"), err.c_str());
         return kNoInput;
     }
     bool ascii = a.ascii || !console::Terminal::utf8_locale();

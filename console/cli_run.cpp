@@ -31,7 +31,8 @@ bool load_machine(const std::string& name, MachineProfile& m) {
     ss << in.rdbuf();
     std::string err = parse_machine(ss.str(), m);
     if (!err.empty()) {
-        std::fprintf(stderr, "pupitre: %s: %s\n", name.c_str(), err.c_str());
+        // TRANSLATORS: the machine file, then what is wrong in it.
+        std::fprintf(stderr, tr("pupitre: %s: %s\n"), name.c_str(), err.c_str());
         return false;
     }
     return true;

@@ -21,7 +21,8 @@ using store::Store;
 namespace {
 
 int report(const store::Error& e) {
-    std::fprintf(stderr, "pupitre: %s\n", e.message.c_str());
+    // TRANSLATORS: any message, after the program's name.
+    std::fprintf(stderr, tr("pupitre: %s\n"), e.message.c_str());
     return store::exit_code(e.fault);
 }
 
