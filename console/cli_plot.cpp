@@ -86,11 +86,13 @@ int write_out(const Output& o, const Scene& scene, const PlotArgs& a) {
 int plot(const PlotArgs& a) {
     PathPlane plane = PathPlane::xy;
     if (!a.plane.empty() && !parse_plane(a.plane, plane)) {
-        std::fprintf(stderr, tr("pupitre: --plane %s: expected xy, xz, yz or zx\n"), a.plane.c_str());
+        std::fprintf(stderr, tr("pupitre: --plane %s: expected xy, xz, yz or zx\n"),
+                     a.plane.c_str());
         return kUsage;
     }
     if ((a.svg.empty() && a.png.empty() && a.pdf.empty()) || a.files.empty()) {
-        std::fputs(tr("pupitre: plot needs --svg, --png or --pdf OUT and a program file\n"), stderr);
+        std::fputs(tr("pupitre: plot needs --svg, --png or --pdf OUT and a program file\n"),
+                   stderr);
         return kUsage;
     }
     MachineProfile m;
@@ -131,7 +133,8 @@ int plot(const PlotArgs& a) {
     // A run that fails before any move has nothing to draw: no file is left
     // behind (CLARIFICATIONS 12.10). One that fails later draws what ran.
     if (in.has_errors() && in.moves() == 0) {
-        std::fputs(tr("pupitre: no drawing written: the program failed before its first move\n"), stderr);
+        std::fputs(tr("pupitre: no drawing written: the program failed before its first move\n"),
+                   stderr);
         return kProgramErrors;
     }
     SceneOptions so;

@@ -23,8 +23,10 @@ bool load_machine(const std::string& name, MachineProfile& m) {
     if (builtin_machine(name, m)) return true;
     std::ifstream in(name);
     if (!in) {
-        std::fprintf(stderr, tr("pupitre: unknown machine '%s' (lathe, mill, mill4, mill5, or a .machine file)\n"),
-                     name.c_str());
+        std::fprintf(
+            stderr,
+            tr("pupitre: unknown machine '%s' (lathe, mill, mill4, mill5, or a .machine file)\n"),
+            name.c_str());
         return false;
     }
     std::ostringstream ss;
@@ -62,7 +64,8 @@ int apply_sets(const std::vector<std::string>& sets, Interpreter& in) {
             ok = r.ec == std::errc() && r.ptr == val.data() + val.size();
         }
         if (!ok) {
-            std::fprintf(stderr, tr("pupitre: --set %s: expected NAME=VALUE with a number\n"), s.c_str());
+            std::fprintf(stderr, tr("pupitre: --set %s: expected NAME=VALUE with a number\n"),
+                         s.c_str());
             return kUsage;
         }
         std::string why = in.set(std::string_view(s).substr(0, eq), v);
@@ -82,7 +85,9 @@ class NullSink final : public MachineSink {};
 
 void default_machine_note(const std::string& asked, bool errors) {
     if (asked.empty() && errors)
-        std::fprintf(stderr, tr("pupitre: ran on the %s, the default machine (--machine mill for a machining centre)\n"),
+        std::fprintf(stderr,
+                     tr("pupitre: ran on the %s, the default machine (--machine mill for a "
+                        "machining centre)\n"),
                      kDefaultMachine);
 }
 

@@ -137,12 +137,14 @@ void say_saved(const store::SaveResult& r, const std::string& from) {
                              : strf(tr("%s: unchanged (r%d) from %s"), n.c_str(), r.revision, f);
             break;
         case store::SaveStatus::conflict:
-            // TRANSLATORS: the program (%12), the revision kept aside,
-            // the current revision, who wrote it (then the file imported).
-            s = from.empty() ? strf(tr("%s: CONFLICT: kept aside as r%d; r%d by %s stays current"),
-                                    n.c_str(), r.revision, r.current, r.current_by.c_str())
-                             : strf(tr("%s: CONFLICT: kept aside as r%d; r%d by %s stays current from %s"),
-                                    n.c_str(), r.revision, r.current, r.current_by.c_str(), f);
+            s = from.empty()
+                    // TRANSLATORS: the program (%12), the revision kept aside,
+                    // the current revision, who wrote it.
+                    ? strf(tr("%s: CONFLICT: kept aside as r%d; r%d by %s stays current"),
+                           n.c_str(), r.revision, r.current, r.current_by.c_str())
+                    // TRANSLATORS: as above, then the file imported.
+                    : strf(tr("%s: CONFLICT: kept aside as r%d; r%d by %s stays current from %s"),
+                           n.c_str(), r.revision, r.current, r.current_by.c_str(), f);
             break;
     }
     s += '\n';
@@ -176,7 +178,8 @@ int store_import(const StoreArgs& a) {
     for (size_t i = 0; i < pieces.size(); ++i)
         for (size_t j = 0; j < i; ++j)
             if (pieces[i].number == pieces[j].number) {
-                std::fprintf(stderr, tr("pupitre: %s: program %%%d is also in %s; import one of them\n"),
+                std::fprintf(stderr,
+                             tr("pupitre: %s: program %%%d is also in %s; import one of them\n"),
                              from[i].c_str(), pieces[i].number, from[j].c_str());
                 return kDataErr;
             }
@@ -234,8 +237,8 @@ int store_list(const StoreArgs& a) {
     for (const auto& p : r.value) {
         std::snprintf(line, sizeof line, "%-10s r%-4d %s  %s  %-10s",
                       name_of(p.number, p.index).c_str(), p.revision,
-                      lines_cell(static_cast<long long>(p.lines)).c_str(), when(p.modified_ms).c_str(),
-                      p.modified_by.c_str());
+                      lines_cell(static_cast<long long>(p.lines)).c_str(),
+                      when(p.modified_ms).c_str(), p.modified_by.c_str());
         out += line;
         if (!p.title.empty()) out += "  (" + p.title + ")";
         if (p.conflict) out += "  " + strf(tr("CONFLICT: r%d kept aside"), int(p.conflict));
@@ -268,9 +271,9 @@ int store_history(const StoreArgs& a) {
     std::string out;
     char line[256];
     for (const auto& h : r.value) {
-        std::snprintf(line, sizeof line, "%c r%-4d %s  %-10s %s",
-                      h.revision == current ? '*' : ' ', h.revision, when(h.at_ms).c_str(),
-                      h.who.c_str(), pad(kind_label(h.kind), 8).c_str());
+        std::snprintf(line, sizeof line, "%c r%-4d %s  %-10s %s", h.revision == current ? '*' : ' ',
+                      h.revision, when(h.at_ms).c_str(), h.who.c_str(),
+                      pad(kind_label(h.kind), 8).c_str());
         out += line;
         out += ' ';
         if (h.kind != store::RevisionKind::remove)
@@ -278,8 +281,7 @@ int store_history(const StoreArgs& a) {
         else
             out += std::string(columns(lines_cell(0)), ' ');
         if (!h.source.empty()) out += "  " + h.source;  // as stored: not translated
-        if (h.conflict)
-            out += "  " + strf(tr("CONFLICT: based on r%d, kept aside"), h.based_on);
+        if (h.conflict) out += "  " + strf(tr("CONFLICT: based on r%d, kept aside"), h.based_on);
         out += '\n';
     }
     std::fputs(out.c_str(), stdout);
@@ -295,7 +297,8 @@ int store_restore(const StoreArgs& a) {
     if (r.value.status == store::SaveStatus::unchanged)
         std::printf(tr("%s: r%d is already the current text\n"), name_of(n).c_str(), a.revision);
     else
-        std::printf(tr("%s: r%d restored as r%d\n"), name_of(n).c_str(), a.revision, r.value.revision);
+        std::printf(tr("%s: r%d restored as r%d\n"), name_of(n).c_str(), a.revision,
+                    r.value.revision);
     return kOk;
 }
 
@@ -334,10 +337,11 @@ int RunStore::persist(const Interpreter& in, const std::string& file,
         return store::exit_code(r.error.fault);
     }
     for (const auto& c : r.value)
-        std::fprintf(stderr, tr("pupitre: stored %s = %s (was %s) on %s\n"), c.name.c_str(),
-                     store::format_value(c.name, c.new_value).c_str(),
-                     c.old_value ? store::format_value(c.name, *c.old_value).c_str() : tr("not set"),
-                     in.machine().name.c_str());
+        std::fprintf(
+            stderr, tr("pupitre: stored %s = %s (was %s) on %s\n"), c.name.c_str(),
+            store::format_value(c.name, c.new_value).c_str(),
+            c.old_value ? store::format_value(c.name, *c.old_value).c_str() : tr("not set"),
+            in.machine().name.c_str());
     return kOk;
 }
 

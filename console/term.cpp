@@ -3,15 +3,16 @@
 #define NCURSES_WIDECHAR 1
 #include "console/term.hpp"
 
-#include <algorithm>
-#include <csignal>
-#include <cstdlib>
-#include <cstring>
 #include <curses.h>
 #include <langinfo.h>
 #include <sys/ioctl.h>
 #include <termios.h>
 #include <unistd.h>
+
+#include <algorithm>
+#include <csignal>
+#include <cstdlib>
+#include <cstring>
 
 #include "core/i18n.hpp"
 
@@ -80,10 +81,14 @@ bool Terminal::utf8_locale() {
 bool Terminal::interrupted() { return g_quit != 0; }
 
 std::string Terminal::open(Theme theme) {
-    if (!isatty(STDIN_FILENO) || !isatty(STDOUT_FILENO)) return tr("the console needs a terminal (try pupitre --help)");
+    if (!isatty(STDIN_FILENO) || !isatty(STDOUT_FILENO))
+        return tr("the console needs a terminal (try pupitre --help)");
     if (tcgetattr(STDIN_FILENO, &g_saved) == 0) g_have_saved = true;
-    if (!initscr()) return strf(tr("cannot initialise the terminal (TERM=%s)"), getenv("TERM") ? getenv("TERM") : "");
-    std::string reset = std::string("\033[0m\033[?25h\033[?1049l\r\n") + tr("pupitre: crashed; the terminal is restored") + "\r\n";
+    if (!initscr())
+        return strf(tr("cannot initialise the terminal (TERM=%s)"),
+                    getenv("TERM") ? getenv("TERM") : "");
+    std::string reset = std::string("\033[0m\033[?25h\033[?1049l\r\n") +
+                        tr("pupitre: crashed; the terminal is restored") + "\r\n";
     g_reset_len = std::min(reset.size(), sizeof g_reset);
     std::memcpy(g_reset, reset.data(), g_reset_len);
     g_open = open_ = true;

@@ -179,15 +179,17 @@ Result<SaveResult> Store::save_one(const Piece& p, int based_on, RevisionKind ki
     SaveResult& out = r.value;
     out.number = p.number;
     if (p.number < 0) {
-        r.error = {Fault::bad_data, strf(tr("%s: program number %d is negative"), path_.c_str(), p.number)};
+        r.error = {Fault::bad_data,
+                   strf(tr("%s: program number %d is negative"), path_.c_str(), p.number)};
         return r;
     }
     Header h;
     if ((r.error = parse_program(p.text, pct(p.number), h))) return r;
     if (h.number >= 0 && h.number != p.number) {
-        r.error = {Fault::bad_data,
-                   strf(tr("%%%d: the text's %% line says %%%d; a program is stored under its own number"),
-                        p.number, h.number)};
+        r.error = {
+            Fault::bad_data,
+            strf(tr("%%%d: the text's %% line says %%%d; a program is stored under its own number"),
+                 p.number, h.number)};
         return r;
     }
     const std::string what = strf(tr("cannot save %%%d"), p.number);
@@ -328,10 +330,12 @@ Result<SaveResult> Store::restore(int number, int revision, std::string_view sou
         }
     }
     if (!e && !found)
-        e = {Fault::not_found, strf(tr("%s: no revision %d of %%%d"), path_.c_str(), revision, number)};
+        e = {Fault::not_found,
+             strf(tr("%s: no revision %d of %%%d"), path_.c_str(), revision, number)};
     if (!e && deletion)
-        e = {Fault::bad_data, strf(tr("%s: revision %d of %%%d is its deletion; restore a revision before it"),
-                                   path_.c_str(), revision, number)};
+        e = {Fault::bad_data,
+             strf(tr("%s: revision %d of %%%d is its deletion; restore a revision before it"),
+                  path_.c_str(), revision, number)};
     if (e) {
         rollback();
         r.error = e;
@@ -402,10 +406,11 @@ Result<Program> Store::read(int number, int revision) {
                 r.value.text = u.str(0);
                 r.value.revision = rev;
             } else if (rc == SQLITE_ROW) {
-                e = {Fault::not_found,
-                     strf(tr("%s: revision %d of %%%d is its deletion"), path_.c_str(), rev, number)};
+                e = {Fault::not_found, strf(tr("%s: revision %d of %%%d is its deletion"),
+                                            path_.c_str(), rev, number)};
             } else if (rc == SQLITE_DONE) {
-                e = {Fault::not_found, strf(tr("%s: no revision %d of %%%d"), path_.c_str(), rev, number)};
+                e = {Fault::not_found,
+                     strf(tr("%s: no revision %d of %%%d"), path_.c_str(), rev, number)};
             } else {
                 e = fail(rc, what);
             }
@@ -455,7 +460,8 @@ Result<std::vector<RevisionInfo>> Store::history(int number) {
         r.value.clear();
         r.error = fail(rc, strf(tr("cannot read the history of %%%d"), number));
     } else if (r.value.empty()) {
-        r.error = {Fault::not_found, strf(tr("%s: no program %%%d in the store"), path_.c_str(), number)};
+        r.error = {Fault::not_found,
+                   strf(tr("%s: no program %%%d in the store"), path_.c_str(), number)};
     }
     return r;
 }

@@ -101,7 +101,8 @@ Error precheck(const std::string& path, bool& empty) {
     int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
     if (fd < 0) {
         int e = errno;
-        return {Fault::cannot_create, strf(tr("%s: cannot open the store: %s"), path.c_str(), std::strerror(e))};
+        return {Fault::cannot_create,
+                strf(tr("%s: cannot open the store: %s"), path.c_str(), std::strerror(e))};
     }
     struct stat st;
     if (::fstat(fd, &st) != 0 || S_ISDIR(st.st_mode)) {
@@ -111,14 +112,16 @@ Error precheck(const std::string& path, bool& empty) {
     unsigned char h[100];
     ssize_t n = ::pread(fd, h, sizeof h, 0);
     ::close(fd);
-    if (n < 0) return {Fault::io, strf(tr("%s: cannot read: %s"), path.c_str(), std::strerror(errno))};
+    if (n < 0)
+        return {Fault::io, strf(tr("%s: cannot read: %s"), path.c_str(), std::strerror(errno))};
     if (st.st_size == 0) {
         empty = true;
         return {};
     }
     if (n < 100 || std::memcmp(h, "SQLite format 3", 16) != 0)
         return {Fault::bad_data,
-                strf(tr("%s: not a pupitre store (not an SQLite database); left untouched"), path.c_str())};
+                strf(tr("%s: not a pupitre store (not an SQLite database); left untouched"),
+                     path.c_str())};
     uint32_t page = uint32_t(h[16]) << 8 | h[17];
     if (page == 1) page = 65536;
     uint32_t pages = be32(h + 28);
@@ -127,11 +130,13 @@ Error precheck(const std::string& path, bool& empty) {
     // its header: SQLite settles that itself.
     bool log = file_size(path + "-wal") > 0 || file_size(path + "-journal") > 0;
     if (count_valid && !log && uint64_t(st.st_size) < uint64_t(page) * pages)
-        return {Fault::bad_data,
-                strf(tr("%s: the store is truncated (%lld bytes, its header says %llu); left untouched: "
-                        "restore a backup"),
-                     path.c_str(), static_cast<long long>(st.st_size),
-                     static_cast<unsigned long long>(uint64_t(page) * pages))};
+        return {
+            Fault::bad_data,
+            strf(
+                tr("%s: the store is truncated (%lld bytes, its header says %llu); left untouched: "
+                   "restore a backup"),
+                path.c_str(), static_cast<long long>(st.st_size),
+                static_cast<unsigned long long>(uint64_t(page) * pages))};
     return {};
 }
 
@@ -149,30 +154,37 @@ Error Store::fail(int rc, std::string_view what) {
     std::string head = strf(tr("%s: %s: "), path_.c_str(), std::string(what).c_str());
     switch (primary) {
         case SQLITE_FULL:
-            return {Fault::io,
-                    head + tr("disk full (or the store reached its size limit); nothing was changed")};
+            return {
+                Fault::io,
+                head + tr("disk full (or the store reached its size limit); nothing was changed")};
         case SQLITE_BUSY:
         case SQLITE_LOCKED: {
-            return {Fault::io,
-                    head + strf(tr("the store is locked by another process (waited %.1f s); nothing was "
-                                   "changed, try again"),
-                                opt_.busy_timeout_ms / 1000.0)};
+            return {
+                Fault::io,
+                head +
+                    strf(tr("the store is locked by another process (waited %.1f s); nothing was "
+                            "changed, try again"),
+                         opt_.busy_timeout_ms / 1000.0)};
         }
         case SQLITE_NOTADB:
             return {Fault::bad_data,
                     head + tr("not a pupitre store (not an SQLite database); left untouched")};
         case SQLITE_CORRUPT:
-            return {Fault::bad_data,
-                    head + strf(tr("the store is damaged (%s); nothing was changed: restore a backup, or "
-                                   "try sqlite3's .recover on a copy"),
-                                sqlmsg.c_str())};
+            return {
+                Fault::bad_data,
+                head +
+                    strf(tr("the store is damaged (%s); nothing was changed: restore a backup, or "
+                            "try sqlite3's .recover on a copy"),
+                         sqlmsg.c_str())};
         case SQLITE_CANTOPEN: {
             std::string dir = dir_of(path_);
             if (::access(dir.c_str(), W_OK) != 0)
-                return {Fault::cannot_create,
-                        head + strf(tr("cannot open the store: its directory %s is not writable (SQLite "
-                                       "keeps its -wal and -shm files there)"),
-                                    dir.c_str())};
+                return {
+                    Fault::cannot_create,
+                    head +
+                        strf(tr("cannot open the store: its directory %s is not writable (SQLite "
+                                "keeps its -wal and -shm files there)"),
+                             dir.c_str())};
             int e = db_ ? sqlite3_system_errno(db_) : 0;
             return {Fault::cannot_create,
                     head + (e ? strf(tr("cannot open the store: %s"), std::strerror(e))
@@ -181,16 +193,18 @@ Error Store::fail(int rc, std::string_view what) {
         case SQLITE_READONLY:
         case SQLITE_PERM:
         case SQLITE_AUTH:
-            return {Fault::cannot_create,
-                    head + strf(tr("cannot write the store (%s): check the permissions of the file and "
-                                   "its directory"),
-                                sqlmsg.c_str())};
+            return {
+                Fault::cannot_create,
+                head + strf(tr("cannot write the store (%s): check the permissions of the file and "
+                               "its directory"),
+                            sqlmsg.c_str())};
         case SQLITE_TOOBIG:
             return {Fault::bad_data, head + strf(tr("too big for the store (%s)"), sqlmsg.c_str())};
         case SQLITE_CONSTRAINT:
         case SQLITE_MISMATCH:
-            return {Fault::bad_data,
-                    head + strf(tr("refused by the store (%s); nothing was changed"), sqlmsg.c_str())};
+            return {
+                Fault::bad_data,
+                head + strf(tr("refused by the store (%s); nothing was changed"), sqlmsg.c_str())};
         case SQLITE_IOERR: {
             int e = db_ ? sqlite3_system_errno(db_) : 0;
             if (e == ENOSPC || e == EDQUOT || e == EFBIG)
@@ -312,7 +326,8 @@ int query_text(sqlite3* db, const char* sql, std::string& out) {
 Result<std::unique_ptr<Store>> Store::open(const std::string& path, const Options& o) {
     Result<std::unique_ptr<Store>> r;
     if (path.empty()) {
-        r.error = {Fault::cannot_create, tr("no store path: set HOME or XDG_DATA_HOME, or give --db FILE")};
+        r.error = {Fault::cannot_create,
+                   tr("no store path: set HOME or XDG_DATA_HOME, or give --db FILE")};
         return r;
     }
     std::unique_ptr<Store> st(new Store);
@@ -327,8 +342,9 @@ Result<std::unique_ptr<Store>> Store::open(const std::string& path, const Option
         }
         if (o.create_parents) {
             if (int e = make_dirs(dir_of(path))) {
-                r.error = {Fault::cannot_create, strf(tr("%s: cannot create the directory %s: %s"), path.c_str(),
-                                                      dir_of(path).c_str(), std::strerror(e))};
+                r.error = {Fault::cannot_create,
+                           strf(tr("%s: cannot create the directory %s: %s"), path.c_str(),
+                                dir_of(path).c_str(), std::strerror(e))};
                 return r;
             }
         }
@@ -383,7 +399,8 @@ Error Store::create_file() {
         std::string why = e ? std::strerror(e) : sqlite3_errstr(rc);
         if (rc == SQLITE_CANTOPEN && ::access(dir_of(path_).c_str(), W_OK) != 0)
             why = strf(tr("the directory %s is not writable"), dir_of(path_).c_str());
-        return give_up({Fault::cannot_create, strf(tr("%s: cannot create the store: %s"), path_.c_str(), why.c_str())});
+        return give_up({Fault::cannot_create,
+                        strf(tr("%s: cannot create the store: %s"), path_.c_str(), why.c_str())});
     }
     db_ = db;
     bool fresh = false;
@@ -400,7 +417,8 @@ Error Store::create_file() {
     rc = sqlite3_close(db);  // checkpoints the log into the file and removes it
     db_ = nullptr;
     if (rc != SQLITE_OK)
-        return give_up({Fault::io, strf(tr("%s: cannot create the store: %s"), path_.c_str(), sqlite3_errstr(rc))});
+        return give_up({Fault::io, strf(tr("%s: cannot create the store: %s"), path_.c_str(),
+                                        sqlite3_errstr(rc))});
     if (int fd = ::open(tmp.c_str(), O_RDONLY | O_CLOEXEC); fd >= 0) {
         ::fsync(fd);
         ::close(fd);
@@ -409,7 +427,8 @@ Error Store::create_file() {
     if (!linked && errno != EEXIST) {
         int err = errno;  // EEXIST: another process created it meanwhile; we use theirs
         remove_with_sidecars(tmp);
-        return {Fault::cannot_create, strf(tr("%s: cannot create the store: %s"), path_.c_str(), std::strerror(err))};
+        return {Fault::cannot_create,
+                strf(tr("%s: cannot create the store: %s"), path_.c_str(), std::strerror(err))};
     }
     remove_with_sidecars(tmp);
     if (int fd = ::open(dir_of(path_).c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC); fd >= 0) {
@@ -440,15 +459,17 @@ Error Store::validate_and_migrate(bool& fresh) {
             if (attempt) rollback();
             char id[16];
             std::snprintf(id, sizeof id, "0x%08X", unsigned(uint32_t(app)));
-            return {Fault::bad_data, strf(tr("%s: not a pupitre store (an SQLite database of another "
-                                             "application, application_id %s); left untouched"),
-                                          path_.c_str(), id)};
+            return {Fault::bad_data,
+                    strf(tr("%s: not a pupitre store (an SQLite database of another "
+                            "application, application_id %s); left untouched"),
+                         path_.c_str(), id)};
         }
         if (version > kSchemaVersion) {
             if (attempt) rollback();
-            return {Fault::bad_data, strf(tr("%s: written by a newer pupitre (schema %lld, this pupitre knows "
-                                             "up to %d); left untouched: use a newer pupitre"),
-                                          path_.c_str(), static_cast<long long>(version), int(kSchemaVersion))};
+            return {Fault::bad_data,
+                    strf(tr("%s: written by a newer pupitre (schema %lld, this pupitre knows "
+                            "up to %d); left untouched: use a newer pupitre"),
+                         path_.c_str(), static_cast<long long>(version), int(kSchemaVersion))};
         }
         if (version == kSchemaVersion) {
             if (attempt) rollback();

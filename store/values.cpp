@@ -91,7 +91,8 @@ Result<std::string> Store::machine_profile(std::string_view name) {
     if (rc == SQLITE_ROW)
         r.value = u.str(0);
     else if (rc == SQLITE_DONE)
-        r.error = {Fault::not_found, strf(tr("%s: no machine %s"), path_.c_str(), std::string(name).c_str())};
+        r.error = {Fault::not_found,
+                   strf(tr("%s: no machine %s"), path_.c_str(), std::string(name).c_str())};
     else
         r.error = fail(rc, tr("cannot read the machine profile"));
     return r;
@@ -122,12 +123,13 @@ Result<std::vector<Change>> Store::set_values(std::string_view machine,
     std::vector<Name> names(v.size());
     for (size_t i = 0; i < v.size(); ++i)
         if (!parse_name(v[i].first, names[i])) {
-            r.error = {Fault::bad_data, strf(tr("unknown corrector or origin '%s' (%s)"),
-                                             v[i].first.c_str(),
-                                             "D1.X … D255.DR, PREF.X, DEC1.Z, DEC3.B…")};
+            r.error = {Fault::bad_data,
+                       strf(tr("unknown corrector or origin '%s' (%s)"), v[i].first.c_str(),
+                            "D1.X … D255.DR, PREF.X, DEC1.Z, DEC3.B…")};
             return r;
         }
-    const std::string what = strf(tr("cannot store the correctors and origins of %s"), std::string(machine).c_str());
+    const std::string what =
+        strf(tr("cannot store the correctors and origins of %s"), std::string(machine).c_str());
     if ((r.error = begin_write())) return r;
     auto abort = [&](Error e) {
         rollback();
@@ -264,7 +266,8 @@ Result<int64_t> Store::data_version() {
     if ((r.error = e)) return r;
     int rc = u.step();
     if (rc == SQLITE_ROW) r.value = u.i64(0);
-    else r.error = fail(rc, tr("cannot read the data version"));
+    else
+        r.error = fail(rc, tr("cannot read the data version"));
     return r;
 }
 
