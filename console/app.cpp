@@ -19,9 +19,10 @@
 #include "console/line_readline.hpp"
 #include "console/session.hpp"
 #include "console/term.hpp"
-#include "store/store.hpp"
+#include "core/i18n.hpp"
 #include "pages/canvas.hpp"
 #include "pages/view.hpp"
+#include "store/store.hpp"
 
 namespace pupitre::cli {
 
@@ -47,7 +48,8 @@ bool console_machine(const ConsoleArgs& a, store::Store& s, MachineProfile& m) {
         if (!p.error && !p.value.empty()) {
             std::string err = parse_machine(p.value, m);
             if (!err.empty()) {
-                std::fprintf(stderr, "pupitre: stored machine %s: %s\n", name.c_str(), err.c_str());
+                std::fprintf(stderr, tr("pupitre: stored machine %s: %s\n"), name.c_str(),
+                             err.c_str());
                 return false;
             }
         } else if (!load_machine(name, m)) {
@@ -123,13 +125,15 @@ int console(const ConsoleArgs& a) {
         path = store::default_path();
         o.create_parents = true;
         if (path.empty()) {
-            std::fprintf(stderr, "pupitre: no place for the default store: set HOME or XDG_DATA_HOME, or give --db\n");
+            std::fputs(tr("pupitre: no place for the default store: set HOME or XDG_DATA_HOME, or "
+                          "give --db\n"),
+                       stderr);
             return kCantCreate;
         }
     }
     auto opened = store::Store::open(path, o);
     if (opened.error) {
-        std::fprintf(stderr, "pupitre: %s\n", opened.error.message.c_str());
+        std::fprintf(stderr, tr("pupitre: %s\n"), opened.error.message.c_str());
         return store::exit_code(opened.error.fault);
     }
     std::unique_ptr<store::Store> st = std::move(opened.value);
@@ -141,12 +145,15 @@ int console(const ConsoleArgs& a) {
     const char* no_color = std::getenv("NO_COLOR");
     std::string theme_name = !a.theme.empty() ? a.theme : no_color && *no_color ? "mono" : "colour";
     if (!console::parse_theme(theme_name, theme)) {
-        std::fprintf(stderr, "pupitre: unknown theme '%s' (colour, mono, phosphor)\n", theme_name.c_str());
+        std::fprintf(stderr, tr("pupitre: unknown theme '%s' (colour, mono, phosphor)\n"),
+                     theme_name.c_str());
         return kUsage;
     }
     if (!isatty(STDIN_FILENO) || !isatty(STDOUT_FILENO)) {
-        std::fprintf(stderr, "pupitre: the console needs a terminal; for scripts use pupitre run, check, list "
-                             "(pupitre --help)\n");
+        std::fputs(
+            tr("pupitre: the console needs a terminal; for scripts use pupitre run, check, list "
+               "(pupitre --help)\n"),
+            stderr);
         return kNoInput;
     }
     console::ReadlineInput input;
@@ -164,11 +171,14 @@ int console(const ConsoleArgs& a) {
         if (s.memory().find(n)) s.sim().select(n, news);
     }
     if (news.empty())
-        news = "pupitre " PUPITRE_VERSION ", " + m.name + ": F1 help, F6 programs, F8 mode, F9 Cycle Start";
+        // TRANSLATORS: the console's first message line (80 columns): the
+        // version, the machine profile's name, the keys to begin with.
+        news = strf(tr("pupitre %s, %s: F1 help, F6 programs, F8 mode, F9 Cycle Start"),
+                    PUPITRE_VERSION, m.name.c_str());
     s.say(news, false);
     console::Terminal term;
     if (std::string err = term.open(theme); !err.empty()) {
-        std::fprintf(stderr, "pupitre: %s\n", err.c_str());
+        std::fprintf(stderr, tr("pupitre: %s\n"), err.c_str());
         return kNoInput;
     }
     bool ascii = a.ascii || !console::Terminal::utf8_locale();

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "console/cli.hpp"
+#include "core/i18n.hpp"
 #include "core/interp/interp.hpp"
 #include "core/output/cairo_plot.hpp"
 #include "core/output/scene.hpp"
@@ -61,7 +62,7 @@ int write_out(const Output& o, const Scene& scene, const PlotArgs& a) {
     bool to_stdout = name == "-" && o.file == &PlotArgs::svg;
     std::FILE* f = to_stdout ? stdout : std::fopen(name.c_str(), "wb");
     if (!f) {
-        std::fprintf(stderr, "pupitre: %s: cannot create: %s\n", name.c_str(),
+        std::fprintf(stderr, tr("pupitre: %s: cannot create: %s\n"), name.c_str(),
                      std::strerror(errno));
         return kCantCreate;
     }
@@ -70,8 +71,11 @@ int write_out(const Output& o, const Scene& scene, const PlotArgs& a) {
     int err = errno;
     if (f != stdout && std::fclose(f) != 0) ok = false;
     if (!ok) {
-        std::fprintf(stderr, "pupitre: %s: cannot write the %s%s%s\n", name.c_str(), o.what,
-                     err ? ": " : "", err ? std::strerror(err) : "");
+        if (err)
+            std::fprintf(stderr, tr("pupitre: %s: cannot write the %s: %s\n"), name.c_str(), o.what,
+                         std::strerror(err));
+        else
+            std::fprintf(stderr, tr("pupitre: %s: cannot write the %s\n"), name.c_str(), o.what);
         return kIoErr;
     }
     return kOk;
@@ -82,11 +86,13 @@ int write_out(const Output& o, const Scene& scene, const PlotArgs& a) {
 int plot(const PlotArgs& a) {
     PathPlane plane = PathPlane::xy;
     if (!a.plane.empty() && !parse_plane(a.plane, plane)) {
-        std::fprintf(stderr, "pupitre: --plane %s: expected xy, xz, yz or zx\n", a.plane.c_str());
+        std::fprintf(stderr, tr("pupitre: --plane %s: expected xy, xz, yz or zx\n"),
+                     a.plane.c_str());
         return kUsage;
     }
     if ((a.svg.empty() && a.png.empty() && a.pdf.empty()) || a.files.empty()) {
-        std::fprintf(stderr, "pupitre: plot needs --svg, --png or --pdf OUT and a program file\n");
+        std::fputs(tr("pupitre: plot needs --svg, --png or --pdf OUT and a program file\n"),
+                   stderr);
         return kUsage;
     }
     MachineProfile m;
@@ -100,7 +106,7 @@ int plot(const PlotArgs& a) {
             break;
         }
     if (!main) {
-        std::fprintf(stderr, "pupitre: %s: no program to run\n", a.files.front().c_str());
+        std::fprintf(stderr, tr("pupitre: %s: no program to run\n"), a.files.front().c_str());
         return kDataErr;
     }
     Toolpath path(m);
@@ -127,7 +133,8 @@ int plot(const PlotArgs& a) {
     // A run that fails before any move has nothing to draw: no file is left
     // behind (CLARIFICATIONS 12.10). One that fails later draws what ran.
     if (in.has_errors() && in.moves() == 0) {
-        std::fprintf(stderr, "pupitre: no drawing written: the program failed before its first move\n");
+        std::fputs(tr("pupitre: no drawing written: the program failed before its first move\n"),
+                   stderr);
         return kProgramErrors;
     }
     SceneOptions so;

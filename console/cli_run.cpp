@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "console/cli.hpp"
+#include "core/i18n.hpp"
 #include "core/interp/interp.hpp"
 #include "core/output/trace.hpp"
 
@@ -22,15 +23,18 @@ bool load_machine(const std::string& name, MachineProfile& m) {
     if (builtin_machine(name, m)) return true;
     std::ifstream in(name);
     if (!in) {
-        std::fprintf(stderr, "pupitre: unknown machine '%s' (lathe, mill, mill4, mill5, or a .machine file)\n",
-                     name.c_str());
+        std::fprintf(
+            stderr,
+            tr("pupitre: unknown machine '%s' (lathe, mill, mill4, mill5, or a .machine file)\n"),
+            name.c_str());
         return false;
     }
     std::ostringstream ss;
     ss << in.rdbuf();
     std::string err = parse_machine(ss.str(), m);
     if (!err.empty()) {
-        std::fprintf(stderr, "pupitre: %s: %s\n", name.c_str(), err.c_str());
+        // TRANSLATORS: the machine file, then what is wrong in it.
+        std::fprintf(stderr, tr("pupitre: %s: %s\n"), name.c_str(), err.c_str());
         return false;
     }
     return true;
@@ -60,7 +64,8 @@ int apply_sets(const std::vector<std::string>& sets, Interpreter& in) {
             ok = r.ec == std::errc() && r.ptr == val.data() + val.size();
         }
         if (!ok) {
-            std::fprintf(stderr, "pupitre: --set %s: expected NAME=VALUE with a number\n", s.c_str());
+            std::fprintf(stderr, tr("pupitre: --set %s: expected NAME=VALUE with a number\n"),
+                         s.c_str());
             return kUsage;
         }
         std::string why = in.set(std::string_view(s).substr(0, eq), v);
@@ -80,7 +85,9 @@ class NullSink final : public MachineSink {};
 
 void default_machine_note(const std::string& asked, bool errors) {
     if (asked.empty() && errors)
-        std::fprintf(stderr, "pupitre: ran on the %s, the default machine (--machine mill for a machining centre)\n",
+        std::fprintf(stderr,
+                     tr("pupitre: ran on the %s, the default machine (--machine mill for a "
+                        "machining centre)\n"),
                      kDefaultMachine);
 }
 
@@ -190,7 +197,7 @@ int check(const RunArgs& a) {
                 d.program = p->number;
                 d.line = line;
                 d.n = line_label(body.substr(pos, eol - pos));
-                d.detail += " (in a block the dry run did not reach)";
+                d.detail = strf(tr("%s (in a block the dry run did not reach)"), d.detail.c_str());
                 print_diag(d);
             }
             pos = eol + 1;

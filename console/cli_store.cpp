@@ -7,6 +7,7 @@
 #include <ctime>
 
 #include "console/cli.hpp"
+#include "core/i18n.hpp"
 #include "core/interp/interp.hpp"
 #include "store/link.hpp"
 #include "store/store.hpp"
@@ -20,7 +21,8 @@ using store::Store;
 namespace {
 
 int report(const store::Error& e) {
-    std::fprintf(stderr, "pupitre: %s\n", e.message.c_str());
+    // TRANSLATORS: any message, after the program's name.
+    std::fprintf(stderr, tr("pupitre: %s\n"), e.message.c_str());
     return store::exit_code(e.fault);
 }
 
@@ -53,6 +55,53 @@ std::string name_of(int number, int index = -1) {
     return s;
 }
 
+// Display columns of UTF-8 text (code points): the French words carry accents,
+// and printf's %-10s counts bytes.
+size_t columns(std::string_view s) {
+    size_t n = 0;
+    for (unsigned char c : s) n += (c & 0xc0) != 0x80;
+    return n;
+}
+
+// `s` padded with spaces to `width` display columns.
+std::string pad(std::string s, size_t width) {
+    size_t n = columns(s);
+    if (n < width) s.append(width - n, ' ');
+    return s;
+}
+
+// "     12 lines", as wide in every row (the widest form of the language).
+std::string lines_cell(long long n) {
+    // TRANSLATORS: a column of `pupitre list` and `pupitre history`; keep the
+    // number's width (%7lld), the rows are aligned on it.
+    std::string cell = strf(trn("%7lld lines", "%7lld lines", static_cast<unsigned long>(n)), n);
+    return pad(std::move(cell), columns(strf(trn("%7lld lines", "%7lld lines", 2), 0LL)));
+}
+
+// What made a revision, as `pupitre history` shows it (the store keeps the
+// English word: kind_name).
+const char* kind_label(store::RevisionKind k) {
+    switch (k) {
+        case store::RevisionKind::import:
+            // TRANSLATORS: revision kind, 8 characters at most: `pupitre import`.
+            return tr("import");
+        case store::RevisionKind::save:
+            // TRANSLATORS: revision kind, 8 characters at most: saved in the editor.
+            return tr("save");
+        case store::RevisionKind::restore:
+            // TRANSLATORS: revision kind, 8 characters at most: `pupitre restore`.
+            return tr("restore");
+        case store::RevisionKind::remove:
+            // TRANSLATORS: revision kind, 8 characters at most: `pupitre rm`.
+            return tr("delete");
+        case store::RevisionKind::seed:
+            // TRANSLATORS: revision kind, 8 characters at most: a demo program
+            // stored when the store was created.
+            return tr("seed");
+    }
+    return tr("save");
+}
+
 bool read_file(const std::string& path, std::string& text, std::string& why) {
     std::FILE* f = std::fopen(path.c_str(), "rb");
     if (!f) {
@@ -71,24 +120,35 @@ bool read_file(const std::string& path, std::string& text, std::string& why) {
 }
 
 void say_saved(const store::SaveResult& r, const std::string& from) {
-    std::string what;
+    const std::string n = name_of(r.number);
+    const char* f = from.c_str();
+    std::string s;
     switch (r.status) {
         case store::SaveStatus::created:
-            what = "created as r" + std::to_string(r.revision);
+            s = from.empty() ? strf(tr("%s: created as r%d"), n.c_str(), r.revision)
+                             : strf(tr("%s: created as r%d from %s"), n.c_str(), r.revision, f);
             break;
         case store::SaveStatus::saved:
-            what = "saved as r" + std::to_string(r.revision);
+            s = from.empty() ? strf(tr("%s: saved as r%d"), n.c_str(), r.revision)
+                             : strf(tr("%s: saved as r%d from %s"), n.c_str(), r.revision, f);
             break;
         case store::SaveStatus::unchanged:
-            what = "unchanged (r" + std::to_string(r.revision) + ")";
+            s = from.empty() ? strf(tr("%s: unchanged (r%d)"), n.c_str(), r.revision)
+                             : strf(tr("%s: unchanged (r%d) from %s"), n.c_str(), r.revision, f);
             break;
         case store::SaveStatus::conflict:
-            what = "CONFLICT: kept aside as r" + std::to_string(r.revision) + "; r" +
-                   std::to_string(r.current) + " by " + r.current_by + " stays current";
+            s = from.empty()
+                    // TRANSLATORS: the program (%12), the revision kept aside,
+                    // the current revision, who wrote it.
+                    ? strf(tr("%s: CONFLICT: kept aside as r%d; r%d by %s stays current"),
+                           n.c_str(), r.revision, r.current, r.current_by.c_str())
+                    // TRANSLATORS: as above, then the file imported.
+                    : strf(tr("%s: CONFLICT: kept aside as r%d; r%d by %s stays current from %s"),
+                           n.c_str(), r.revision, r.current, r.current_by.c_str(), f);
             break;
     }
-    std::printf("%s: %s%s%s\n", name_of(r.number).c_str(), what.c_str(),
-                from.empty() ? "" : " from ", from.c_str());
+    s += '\n';
+    std::fputs(s.c_str(), stdout);
 }
 
 }  // namespace
@@ -99,13 +159,13 @@ int store_import(const StoreArgs& a) {
     std::vector<store::Piece> pieces;
     std::vector<std::string> from;
     if (a.number >= 0 && a.files.size() != 1) {
-        std::fprintf(stderr, "pupitre: import --number takes one file\n");
+        std::fputs(tr("pupitre: import --number takes one file\n"), stderr);
         return kUsage;
     }
     for (const auto& f : a.files) {
         std::string text, why;
         if (!read_file(f, text, why)) {
-            std::fprintf(stderr, "pupitre: %s: cannot read: %s\n", f.c_str(), why.c_str());
+            std::fprintf(stderr, tr("pupitre: %s: cannot read: %s\n"), f.c_str(), why.c_str());
             return kNoInput;
         }
         auto r = store::split_file(text, f, a.number);
@@ -119,7 +179,7 @@ int store_import(const StoreArgs& a) {
         for (size_t j = 0; j < i; ++j)
             if (pieces[i].number == pieces[j].number) {
                 std::fprintf(stderr,
-                             "pupitre: %s: program %%%d is also in %s; import one of them\n",
+                             tr("pupitre: %s: program %%%d is also in %s; import one of them\n"),
                              from[i].c_str(), pieces[i].number, from[j].c_str());
                 return kDataErr;
             }
@@ -143,7 +203,7 @@ int store_export(const StoreArgs& a) {
     if (a.output.empty() || a.output == "-") {
         if (std::fwrite(out.data(), 1, out.size(), stdout) != out.size() ||
             std::fflush(stdout) != 0) {
-            std::fprintf(stderr, "pupitre: cannot write the standard output: %s\n",
+            std::fprintf(stderr, tr("pupitre: cannot write the standard output: %s\n"),
                          std::strerror(errno));
             return kIoErr;
         }
@@ -151,7 +211,7 @@ int store_export(const StoreArgs& a) {
     }
     std::FILE* f = std::fopen(a.output.c_str(), "wb");
     if (!f) {
-        std::fprintf(stderr, "pupitre: %s: cannot create: %s\n", a.output.c_str(),
+        std::fprintf(stderr, tr("pupitre: %s: cannot create: %s\n"), a.output.c_str(),
                      std::strerror(errno));
         return kCantCreate;
     }
@@ -160,7 +220,7 @@ int store_export(const StoreArgs& a) {
     int err = errno;
     ok = std::fclose(f) == 0 && ok;
     if (!ok) {
-        std::fprintf(stderr, "pupitre: %s: write error: %s\n", a.output.c_str(),
+        std::fprintf(stderr, tr("pupitre: %s: write error: %s\n"), a.output.c_str(),
                      std::strerror(err));
         return kIoErr;
     }
@@ -175,13 +235,13 @@ int store_list(const StoreArgs& a) {
     std::string out;
     char line[256];
     for (const auto& p : r.value) {
-        std::snprintf(line, sizeof line, "%-10s r%-4d %7lld lines  %s  %-10s",
+        std::snprintf(line, sizeof line, "%-10s r%-4d %s  %s  %-10s",
                       name_of(p.number, p.index).c_str(), p.revision,
-                      static_cast<long long>(p.lines), when(p.modified_ms).c_str(),
-                      p.modified_by.c_str());
+                      lines_cell(static_cast<long long>(p.lines)).c_str(),
+                      when(p.modified_ms).c_str(), p.modified_by.c_str());
         out += line;
         if (!p.title.empty()) out += "  (" + p.title + ")";
-        if (p.conflict) out += "  CONFLICT: r" + std::to_string(p.conflict) + " kept aside";
+        if (p.conflict) out += "  " + strf(tr("CONFLICT: r%d kept aside"), int(p.conflict));
         out += '\n';
     }
     std::fputs(out.c_str(), stdout);
@@ -194,7 +254,7 @@ int store_rm(const StoreArgs& a) {
     int n = a.numbers.front();
     auto r = s->remove(n, store::kHead, "rm");
     if (r.error) return report(r.error);
-    std::printf("%s: deleted (r%d); its history stays: pupitre restore %d REV brings it back\n",
+    std::printf(tr("%s: deleted (r%d); its history stays: pupitre restore %d REV brings it back\n"),
                 name_of(n).c_str(), r.value.revision, n);
     return kOk;
 }
@@ -211,19 +271,17 @@ int store_history(const StoreArgs& a) {
     std::string out;
     char line[256];
     for (const auto& h : r.value) {
-        std::snprintf(line, sizeof line, "%c r%-4d %s  %-10s %-8s",
-                      h.revision == current ? '*' : ' ', h.revision, when(h.at_ms).c_str(),
-                      h.who.c_str(), std::string(kind_name(h.kind)).c_str());
+        std::snprintf(line, sizeof line, "%c r%-4d %s  %-10s %s", h.revision == current ? '*' : ' ',
+                      h.revision, when(h.at_ms).c_str(), h.who.c_str(),
+                      pad(kind_label(h.kind), 8).c_str());
         out += line;
-        if (h.kind != store::RevisionKind::remove) {
-            std::snprintf(line, sizeof line, " %7lld lines", static_cast<long long>(h.lines));
-            out += line;
-        } else {
-            out += "              ";
-        }
-        if (!h.source.empty()) out += "  " + h.source;
-        if (h.conflict)
-            out += "  CONFLICT: based on r" + std::to_string(h.based_on) + ", kept aside";
+        out += ' ';
+        if (h.kind != store::RevisionKind::remove)
+            out += lines_cell(static_cast<long long>(h.lines));
+        else
+            out += std::string(columns(lines_cell(0)), ' ');
+        if (!h.source.empty()) out += "  " + h.source;  // as stored: not translated
+        if (h.conflict) out += "  " + strf(tr("CONFLICT: based on r%d, kept aside"), h.based_on);
         out += '\n';
     }
     std::fputs(out.c_str(), stdout);
@@ -237,9 +295,10 @@ int store_restore(const StoreArgs& a) {
     auto r = s->restore(n, a.revision);
     if (r.error) return report(r.error);
     if (r.value.status == store::SaveStatus::unchanged)
-        std::printf("%s: r%d is already the current text\n", name_of(n).c_str(), a.revision);
+        std::printf(tr("%s: r%d is already the current text\n"), name_of(n).c_str(), a.revision);
     else
-        std::printf("%s: r%d restored as r%d\n", name_of(n).c_str(), a.revision, r.value.revision);
+        std::printf(tr("%s: r%d restored as r%d\n"), name_of(n).c_str(), a.revision,
+                    r.value.revision);
     return kOk;
 }
 
@@ -274,14 +333,15 @@ int RunStore::persist(const Interpreter& in, const std::string& file,
     auto r = store::persist_run(*s_, in, source, profile);
     if (r.error) {
         report(r.error);
-        std::fprintf(stderr, "pupitre: the run's corrector and origin changes were not stored\n");
+        std::fputs(tr("pupitre: the run's corrector and origin changes were not stored\n"), stderr);
         return store::exit_code(r.error.fault);
     }
     for (const auto& c : r.value)
-        std::fprintf(stderr, "pupitre: stored %s = %s (was %s) on %s\n", c.name.c_str(),
-                     store::format_value(c.name, c.new_value).c_str(),
-                     c.old_value ? store::format_value(c.name, *c.old_value).c_str() : "not set",
-                     in.machine().name.c_str());
+        std::fprintf(
+            stderr, tr("pupitre: stored %s = %s (was %s) on %s\n"), c.name.c_str(),
+            store::format_value(c.name, c.new_value).c_str(),
+            c.old_value ? store::format_value(c.name, *c.old_value).c_str() : tr("not set"),
+            in.machine().name.c_str());
     return kOk;
 }
 

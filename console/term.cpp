@@ -3,14 +3,18 @@
 #define NCURSES_WIDECHAR 1
 #include "console/term.hpp"
 
-#include <csignal>
-#include <cstdlib>
-#include <cstring>
 #include <curses.h>
 #include <langinfo.h>
 #include <sys/ioctl.h>
 #include <termios.h>
 #include <unistd.h>
+
+#include <algorithm>
+#include <csignal>
+#include <cstdlib>
+#include <cstring>
+
+#include "core/i18n.hpp"
 
 namespace pupitre::console {
 
@@ -22,12 +26,16 @@ struct termios g_saved;
 bool g_have_saved = false;
 bool g_open = false;
 
+// What a crash writes: made by Terminal::open, in the chosen language, because
+// the handler may not translate (gettext is not async-signal-safe).
+char g_reset[256];
+size_t g_reset_len = 0;
+
 // A crash must not leave the user's terminal raw and on the alternate screen:
 // only async-signal-safe calls here (write, tcsetattr), then the default action.
 void crash_handler(int sig) {
-    static const char reset[] = "\033[0m\033[?25h\033[?1049l\r\npupitre: crashed; the terminal is restored\r\n";
     if (g_open) {
-        ssize_t n = write(STDOUT_FILENO, reset, sizeof reset - 1);
+        ssize_t n = write(STDOUT_FILENO, g_reset, g_reset_len);
         (void)n;
         if (g_have_saved) tcsetattr(STDIN_FILENO, TCSANOW, &g_saved);
     }
@@ -73,9 +81,16 @@ bool Terminal::utf8_locale() {
 bool Terminal::interrupted() { return g_quit != 0; }
 
 std::string Terminal::open(Theme theme) {
-    if (!isatty(STDIN_FILENO) || !isatty(STDOUT_FILENO)) return "the console needs a terminal (try pupitre --help)";
+    if (!isatty(STDIN_FILENO) || !isatty(STDOUT_FILENO))
+        return tr("the console needs a terminal (try pupitre --help)");
     if (tcgetattr(STDIN_FILENO, &g_saved) == 0) g_have_saved = true;
-    if (!initscr()) return "cannot initialise the terminal (TERM=" + std::string(getenv("TERM") ? getenv("TERM") : "") + ")";
+    if (!initscr())
+        return strf(tr("cannot initialise the terminal (TERM=%s)"),
+                    getenv("TERM") ? getenv("TERM") : "");
+    std::string reset = std::string("\033[0m\033[?25h\033[?1049l\r\n") +
+                        tr("pupitre: crashed; the terminal is restored") + "\r\n";
+    g_reset_len = std::min(reset.size(), sizeof g_reset);
+    std::memcpy(g_reset, reset.data(), g_reset_len);
     g_open = open_ = true;
     std::atexit(at_exit);
     for (int s : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) install(s, crash_handler);

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <optional>
 
+#include "core/i18n.hpp"
 #include "store/sql.hpp"
 #include "store/store.hpp"
 #include "store/text.hpp"
@@ -179,17 +180,19 @@ Result<SaveResult> Store::save_one(const Piece& p, int based_on, RevisionKind ki
     out.number = p.number;
     if (p.number < 0) {
         r.error = {Fault::bad_data,
-                   path_ + ": program number " + std::to_string(p.number) + " is negative"};
+                   strf(tr("%s: program number %d is negative"), path_.c_str(), p.number)};
         return r;
     }
     Header h;
     if ((r.error = parse_program(p.text, pct(p.number), h))) return r;
     if (h.number >= 0 && h.number != p.number) {
-        r.error = {Fault::bad_data, pct(p.number) + ": the text's % line says " + pct(h.number) +
-                                        "; a program is stored under its own number"};
+        r.error = {
+            Fault::bad_data,
+            strf(tr("%%%d: the text's %% line says %%%d; a program is stored under its own number"),
+                 p.number, h.number)};
         return r;
     }
-    const std::string what = "cannot save " + pct(p.number);
+    const std::string what = strf(tr("cannot save %%%d"), p.number);
     ProgramRow row;
     if ((r.error = read_row(p.number, row, what))) return r;
     bool same = false;
@@ -273,12 +276,12 @@ Result<std::vector<SaveResult>> Store::save_all(const std::vector<Piece>& pieces
 Result<SaveResult> Store::remove(int number, int based_on, std::string_view source) {
     Result<SaveResult> r;
     r.value.number = number;
-    const std::string what = "cannot delete " + pct(number);
+    const std::string what = strf(tr("cannot delete %%%d"), number);
     if ((r.error = begin_write())) return r;
     ProgramRow row;
     Error e = read_row(number, row, what);
     if (!e && (!row.found || row.deleted))
-        e = {Fault::not_found, path_ + ": no program " + pct(number) + " in the store"};
+        e = {Fault::not_found, strf(tr("%s: no program %%%d in the store"), path_.c_str(), number)};
     if (!e && based_on != kHead && based_on != row.head) {
         // Deleting what someone changed since it was loaded: refused, nothing lost.
         rollback();
@@ -308,7 +311,7 @@ Result<SaveResult> Store::remove(int number, int based_on, std::string_view sour
 Result<SaveResult> Store::restore(int number, int revision, std::string_view source) {
     Result<SaveResult> r;
     r.value.number = number;
-    const std::string what = "cannot restore " + pct(number);
+    const std::string what = strf(tr("cannot restore %%%d"), number);
     if ((r.error = begin_write())) return r;
     Error e;
     std::string text;
@@ -328,10 +331,11 @@ Result<SaveResult> Store::restore(int number, int revision, std::string_view sou
     }
     if (!e && !found)
         e = {Fault::not_found,
-             path_ + ": no revision " + std::to_string(revision) + " of " + pct(number)};
+             strf(tr("%s: no revision %d of %%%d"), path_.c_str(), revision, number)};
     if (!e && deletion)
-        e = {Fault::bad_data, path_ + ": revision " + std::to_string(revision) + " of " +
-                                  pct(number) + " is its deletion; restore a revision before it"};
+        e = {Fault::bad_data,
+             strf(tr("%s: revision %d of %%%d is its deletion; restore a revision before it"),
+                  path_.c_str(), revision, number)};
     if (e) {
         rollback();
         r.error = e;
@@ -358,7 +362,7 @@ Result<std::vector<ProgramInfo>> Store::list() {
     while ((rc = u.step()) == SQLITE_ROW) r.value.push_back(info_of(u));
     if (rc != SQLITE_DONE) {
         r.value.clear();
-        r.error = fail(rc, "cannot list the programs");
+        r.error = fail(rc, tr("cannot list the programs"));
     }
     return r;
 }
@@ -367,7 +371,7 @@ Result<Program> Store::read(int number, int revision) {
     Result<Program> r;
     static const std::string info_sql =
         std::string("SELECT ") + kInfoColumns + " FROM programs WHERE number = ?1";
-    const std::string what = "cannot read " + pct(number);
+    const std::string what = strf(tr("cannot read %%%d"), number);
     // Two statements, one snapshot.
     if (int rc = sqlite3_exec(db_, "BEGIN", nullptr, nullptr, nullptr); rc != SQLITE_OK) {
         r.error = fail(rc, what);
@@ -388,11 +392,11 @@ Result<Program> Store::read(int number, int revision) {
         }
     }
     if (!e && !found)
-        e = {Fault::not_found, path_ + ": no program " + pct(number) + " in the store"};
+        e = {Fault::not_found, strf(tr("%s: no program %%%d in the store"), path_.c_str(), number)};
     if (!e && revision == 0 && r.value.info.deleted)
-        e = {Fault::not_found, path_ + ": " + pct(number) + " was deleted (revision " +
-                                   std::to_string(r.value.info.revision) +
-                                   "); its history keeps the earlier revisions"};
+        e = {Fault::not_found,
+             strf(tr("%s: %%%d was deleted (revision %d); its history keeps the earlier revisions"),
+                  path_.c_str(), number, r.value.info.revision)};
     const int rev = revision == 0 ? r.value.info.revision : revision;
     if (!e) {
         sql::Use u(prepare(kSelectText, e));
@@ -402,11 +406,11 @@ Result<Program> Store::read(int number, int revision) {
                 r.value.text = u.str(0);
                 r.value.revision = rev;
             } else if (rc == SQLITE_ROW) {
-                e = {Fault::not_found, path_ + ": revision " + std::to_string(rev) + " of " +
-                                           pct(number) + " is its deletion"};
+                e = {Fault::not_found, strf(tr("%s: revision %d of %%%d is its deletion"),
+                                            path_.c_str(), rev, number)};
             } else if (rc == SQLITE_DONE) {
                 e = {Fault::not_found,
-                     path_ + ": no revision " + std::to_string(rev) + " of " + pct(number)};
+                     strf(tr("%s: no revision %d of %%%d"), path_.c_str(), rev, number)};
             } else {
                 e = fail(rc, what);
             }
@@ -426,7 +430,7 @@ Error Store::each_program(const std::function<void(int, std::string_view)>& f) {
     if (e) return e;
     int rc;
     while ((rc = u.step()) == SQLITE_ROW) f(u.i32(0), u.view(1));
-    return rc == SQLITE_DONE ? Error{} : fail(rc, "cannot read the programs");
+    return rc == SQLITE_DONE ? Error{} : fail(rc, tr("cannot read the programs"));
 }
 
 Result<std::vector<RevisionInfo>> Store::history(int number) {
@@ -454,9 +458,10 @@ Result<std::vector<RevisionInfo>> Store::history(int number) {
     }
     if (rc != SQLITE_DONE) {
         r.value.clear();
-        r.error = fail(rc, "cannot read the history of " + pct(number));
+        r.error = fail(rc, strf(tr("cannot read the history of %%%d"), number));
     } else if (r.value.empty()) {
-        r.error = {Fault::not_found, path_ + ": no program " + pct(number) + " in the store"};
+        r.error = {Fault::not_found,
+                   strf(tr("%s: no program %%%d in the store"), path_.c_str(), number)};
     }
     return r;
 }

@@ -3,6 +3,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <set>
 
+#include "core/i18n.hpp"
 #include "store/sql.hpp"
 #include "store/store.hpp"
 #include "store/text.hpp"
@@ -63,7 +64,7 @@ Error Store::seed() {
             "INSERT INTO machines (name, profile, builtin, updated_ms) VALUES (?1, ?2, 1, ?3)", e));
         if (e) return e;
         if (int rc = u.bind(1, m.name).bind(2, m.text()).bind(3, now).step(); rc != SQLITE_DONE)
-            return fail(rc, "cannot seed the machine profiles");
+            return fail(rc, tr("cannot seed the machine profiles"));
     }
     std::set<int> used;
     for (const Embedded& d : kDemos) {

@@ -16,6 +16,7 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "core/i18n.hpp"
 #include "store/schema.hpp"
 #include "store/sql.hpp"
 
@@ -100,24 +101,27 @@ Error precheck(const std::string& path, bool& empty) {
     int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
     if (fd < 0) {
         int e = errno;
-        return {Fault::cannot_create, path + ": cannot open the store: " + std::strerror(e)};
+        return {Fault::cannot_create,
+                strf(tr("%s: cannot open the store: %s"), path.c_str(), std::strerror(e))};
     }
     struct stat st;
     if (::fstat(fd, &st) != 0 || S_ISDIR(st.st_mode)) {
         ::close(fd);
-        return {Fault::cannot_create, path + ": is a directory, not a store"};
+        return {Fault::cannot_create, strf(tr("%s: is a directory, not a store"), path.c_str())};
     }
     unsigned char h[100];
     ssize_t n = ::pread(fd, h, sizeof h, 0);
     ::close(fd);
-    if (n < 0) return {Fault::io, path + ": cannot read: " + std::strerror(errno)};
+    if (n < 0)
+        return {Fault::io, strf(tr("%s: cannot read: %s"), path.c_str(), std::strerror(errno))};
     if (st.st_size == 0) {
         empty = true;
         return {};
     }
     if (n < 100 || std::memcmp(h, "SQLite format 3", 16) != 0)
         return {Fault::bad_data,
-                path + ": not a pupitre store (not an SQLite database); left untouched"};
+                strf(tr("%s: not a pupitre store (not an SQLite database); left untouched"),
+                     path.c_str())};
     uint32_t page = uint32_t(h[16]) << 8 | h[17];
     if (page == 1) page = 65536;
     uint32_t pages = be32(h + 28);
@@ -126,10 +130,13 @@ Error precheck(const std::string& path, bool& empty) {
     // its header: SQLite settles that itself.
     bool log = file_size(path + "-wal") > 0 || file_size(path + "-journal") > 0;
     if (count_valid && !log && uint64_t(st.st_size) < uint64_t(page) * pages)
-        return {Fault::bad_data, path + ": the store is truncated (" + std::to_string(st.st_size) +
-                                     " bytes, its header says " +
-                                     std::to_string(uint64_t(page) * pages) +
-                                     "); left untouched: restore a backup"};
+        return {
+            Fault::bad_data,
+            strf(
+                tr("%s: the store is truncated (%lld bytes, its header says %llu); left untouched: "
+                   "restore a backup"),
+                path.c_str(), static_cast<long long>(st.st_size),
+                static_cast<unsigned long long>(uint64_t(page) * pages))};
     return {};
 }
 
@@ -142,64 +149,79 @@ std::atomic<int> g_temp_counter{0};
 Error Store::fail(int rc, std::string_view what) {
     int primary = rc & 0xff;
     std::string sqlmsg = db_ ? sqlite3_errmsg(db_) : sqlite3_errstr(rc);
-    std::string head = path_ + ": " + std::string(what) + ": ";
+    // TRANSLATORS: the beginning of a store error: the store's file, what
+    // could not be done ("cannot read the store"), then why follows.
+    std::string head = strf(tr("%s: %s: "), path_.c_str(), std::string(what).c_str());
     switch (primary) {
         case SQLITE_FULL:
-            return {Fault::io,
-                    head + "disk full (or the store reached its size limit); nothing was changed"};
+            return {
+                Fault::io,
+                head + tr("disk full (or the store reached its size limit); nothing was changed")};
         case SQLITE_BUSY:
         case SQLITE_LOCKED: {
-            char waited[32];
-            std::snprintf(waited, sizeof waited, "%.1f s", opt_.busy_timeout_ms / 1000.0);
-            return {Fault::io, head + "the store is locked by another process (waited " + waited +
-                                   "); nothing was changed, try again"};
+            return {
+                Fault::io,
+                head +
+                    strf(tr("the store is locked by another process (waited %.1f s); nothing was "
+                            "changed, try again"),
+                         opt_.busy_timeout_ms / 1000.0)};
         }
         case SQLITE_NOTADB:
             return {Fault::bad_data,
-                    head + "not a pupitre store (not an SQLite database); left untouched"};
+                    head + tr("not a pupitre store (not an SQLite database); left untouched")};
         case SQLITE_CORRUPT:
-            return {Fault::bad_data, head + "the store is damaged (" + sqlmsg +
-                                         "); nothing was changed: restore a backup, or try "
-                                         "sqlite3's .recover on a copy"};
+            return {
+                Fault::bad_data,
+                head +
+                    strf(tr("the store is damaged (%s); nothing was changed: restore a backup, or "
+                            "try sqlite3's .recover on a copy"),
+                         sqlmsg.c_str())};
         case SQLITE_CANTOPEN: {
             std::string dir = dir_of(path_);
             if (::access(dir.c_str(), W_OK) != 0)
-                return {Fault::cannot_create,
-                        head + "cannot open the store: its directory " + dir +
-                            " is not writable (SQLite keeps its -wal and -shm files there)"};
+                return {
+                    Fault::cannot_create,
+                    head +
+                        strf(tr("cannot open the store: its directory %s is not writable (SQLite "
+                                "keeps its -wal and -shm files there)"),
+                             dir.c_str())};
             int e = db_ ? sqlite3_system_errno(db_) : 0;
-            return {Fault::cannot_create, head + "cannot open the store" +
-                                              (e ? std::string(": ") + std::strerror(e) : "")};
+            return {Fault::cannot_create,
+                    head + (e ? strf(tr("cannot open the store: %s"), std::strerror(e))
+                              : std::string(tr("cannot open the store")))};
         }
         case SQLITE_READONLY:
         case SQLITE_PERM:
         case SQLITE_AUTH:
-            return {Fault::cannot_create,
-                    head + "cannot write the store (" + sqlmsg +
-                        "): check the permissions of the file and its directory"};
+            return {
+                Fault::cannot_create,
+                head + strf(tr("cannot write the store (%s): check the permissions of the file and "
+                               "its directory"),
+                            sqlmsg.c_str())};
         case SQLITE_TOOBIG:
-            return {Fault::bad_data, head + "too big for the store (" + sqlmsg + ")"};
+            return {Fault::bad_data, head + strf(tr("too big for the store (%s)"), sqlmsg.c_str())};
         case SQLITE_CONSTRAINT:
         case SQLITE_MISMATCH:
-            return {Fault::bad_data,
-                    head + "refused by the store (" + sqlmsg + "); nothing was changed"};
+            return {
+                Fault::bad_data,
+                head + strf(tr("refused by the store (%s); nothing was changed"), sqlmsg.c_str())};
         case SQLITE_IOERR: {
             int e = db_ ? sqlite3_system_errno(db_) : 0;
             if (e == ENOSPC || e == EDQUOT || e == EFBIG)
                 return {Fault::io,
-                        head + "disk full (" + std::strerror(e) + "); nothing was changed"};
+                        head + strf(tr("disk full (%s); nothing was changed"), std::strerror(e))};
             // errno is often gone by now (the rollback made other calls).
             if (rc == SQLITE_IOERR_WRITE || rc == SQLITE_IOERR_FSYNC || rc == SQLITE_IOERR_TRUNCATE)
                 return {Fault::io,
-                        head +
-                            "cannot write the store (disk full, quota or file size limit "
-                            "reached, or a device error); nothing was changed"};
-            return {Fault::io, head + "I/O error (" + sqlmsg +
-                                   (e ? std::string(": ") + std::strerror(e) : "") +
-                                   "); nothing was changed"};
+                        head + tr("cannot write the store (disk full, quota or file size limit "
+                                  "reached, or a device error); nothing was changed")};
+            return {Fault::io,
+                    head + (e ? strf(tr("I/O error (%s: %s); nothing was changed"), sqlmsg.c_str(),
+                                     std::strerror(e))
+                              : strf(tr("I/O error (%s); nothing was changed"), sqlmsg.c_str()))};
         }
         default:
-            return {Fault::io, head + sqlmsg + "; nothing was changed"};
+            return {Fault::io, head + strf(tr("%s; nothing was changed"), sqlmsg.c_str())};
     }
 }
 
@@ -214,7 +236,7 @@ sqlite3_stmt* Store::prepare(const char* sql, Error& e) {
     sqlite3_stmt* s = nullptr;
     int rc = sqlite3_prepare_v3(db_, sql, -1, SQLITE_PREPARE_PERSISTENT, &s, nullptr);
     if (rc != SQLITE_OK) {
-        e = fail(rc, "cannot read the store");
+        e = fail(rc, tr("cannot read the store"));
         return nullptr;
     }
     stmts_.emplace(sql, s);
@@ -226,13 +248,13 @@ sqlite3_stmt* Store::prepare(const char* sql, Error& e) {
 // upgrade from a read lock.
 Error Store::begin_write() {
     int rc = sqlite3_exec(db_, "BEGIN IMMEDIATE", nullptr, nullptr, nullptr);
-    return rc == SQLITE_OK ? Error{} : fail(rc, "cannot start a change");
+    return rc == SQLITE_OK ? Error{} : fail(rc, tr("cannot start a change"));
 }
 
 Error Store::commit() {
     int rc = sqlite3_exec(db_, "COMMIT", nullptr, nullptr, nullptr);
     if (rc == SQLITE_OK) return {};
-    Error e = fail(rc, "cannot save the change");
+    Error e = fail(rc, tr("cannot save the change"));
     rollback();
     return e;
 }
@@ -305,7 +327,7 @@ Result<std::unique_ptr<Store>> Store::open(const std::string& path, const Option
     Result<std::unique_ptr<Store>> r;
     if (path.empty()) {
         r.error = {Fault::cannot_create,
-                   "no store path: set HOME or XDG_DATA_HOME, or give --db FILE"};
+                   tr("no store path: set HOME or XDG_DATA_HOME, or give --db FILE")};
         return r;
     }
     std::unique_ptr<Store> st(new Store);
@@ -315,13 +337,14 @@ Result<std::unique_ptr<Store>> Store::open(const std::string& path, const Option
 
     if (!exists(path)) {
         if (!o.create) {
-            r.error = {Fault::not_found, path + ": no such store"};
+            r.error = {Fault::not_found, strf(tr("%s: no such store"), path.c_str())};
             return r;
         }
         if (o.create_parents) {
             if (int e = make_dirs(dir_of(path))) {
-                r.error = {Fault::cannot_create, path + ": cannot create the directory " +
-                                                     dir_of(path) + ": " + std::strerror(e)};
+                r.error = {Fault::cannot_create,
+                           strf(tr("%s: cannot create the directory %s: %s"), path.c_str(),
+                                dir_of(path).c_str(), std::strerror(e))};
                 return r;
             }
         }
@@ -334,7 +357,7 @@ Result<std::unique_ptr<Store>> Store::open(const std::string& path, const Option
                              nullptr);
     if (rc == SQLITE_OK) rc = configure(st->db_, o);
     if (rc != SQLITE_OK) {
-        r.error = st->fail(rc, "cannot open the store");
+        r.error = st->fail(rc, tr("cannot open the store"));
         return r;
     }
     if (empty) {
@@ -375,16 +398,18 @@ Error Store::create_file() {
         int e = db ? sqlite3_system_errno(db) : 0;
         std::string why = e ? std::strerror(e) : sqlite3_errstr(rc);
         if (rc == SQLITE_CANTOPEN && ::access(dir_of(path_).c_str(), W_OK) != 0)
-            why = "the directory " + dir_of(path_) + " is not writable";
-        return give_up({Fault::cannot_create, path_ + ": cannot create the store: " + why});
+            why = strf(tr("the directory %s is not writable"), dir_of(path_).c_str());
+        return give_up({Fault::cannot_create,
+                        strf(tr("%s: cannot create the store: %s"), path_.c_str(), why.c_str())});
     }
     db_ = db;
     bool fresh = false;
     Error e = validate_and_migrate(fresh);
     if (!e) e = exec("PRAGMA journal_mode = WAL");
     if (e) {
-        e.message =
-            path_ + ": cannot create the store: " + e.message.substr(e.message.find(": ") + 2);
+        // fail() began the message with "PATH: ".
+        e.message = strf(tr("%s: cannot create the store: %s"), path_.c_str(),
+                         e.message.substr(e.message.find(": ") + 2).c_str());
         return give_up(e);
     }
     for (auto& [sql, s] : stmts_) sqlite3_finalize(s);
@@ -392,7 +417,8 @@ Error Store::create_file() {
     rc = sqlite3_close(db);  // checkpoints the log into the file and removes it
     db_ = nullptr;
     if (rc != SQLITE_OK)
-        return give_up({Fault::io, path_ + ": cannot create the store: " + sqlite3_errstr(rc)});
+        return give_up({Fault::io, strf(tr("%s: cannot create the store: %s"), path_.c_str(),
+                                        sqlite3_errstr(rc))});
     if (int fd = ::open(tmp.c_str(), O_RDONLY | O_CLOEXEC); fd >= 0) {
         ::fsync(fd);
         ::close(fd);
@@ -401,7 +427,8 @@ Error Store::create_file() {
     if (!linked && errno != EEXIST) {
         int err = errno;  // EEXIST: another process created it meanwhile; we use theirs
         remove_with_sidecars(tmp);
-        return {Fault::cannot_create, path_ + ": cannot create the store: " + std::strerror(err)};
+        return {Fault::cannot_create,
+                strf(tr("%s: cannot create the store: %s"), path_.c_str(), std::strerror(err))};
     }
     remove_with_sidecars(tmp);
     if (int fd = ::open(dir_of(path_).c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC); fd >= 0) {
@@ -425,24 +452,24 @@ Error Store::validate_and_migrate(bool& fresh) {
         if (rc == SQLITE_OK) rc = query_int(db_, "SELECT count(*) FROM sqlite_schema", objects);
         if (rc != SQLITE_OK) {
             if (attempt) rollback();
-            return fail(rc, "cannot read the store");
+            return fail(rc, tr("cannot read the store"));
         }
         bool blank = app == 0 && version == 0 && objects == 0;
         if (!blank && uint32_t(app) != kApplicationId) {
             if (attempt) rollback();
             char id[16];
             std::snprintf(id, sizeof id, "0x%08X", unsigned(uint32_t(app)));
-            return {Fault::bad_data, path_ +
-                                         ": not a pupitre store (an SQLite database of another "
-                                         "application, application_id " +
-                                         id + "); left untouched"};
+            return {Fault::bad_data,
+                    strf(tr("%s: not a pupitre store (an SQLite database of another "
+                            "application, application_id %s); left untouched"),
+                         path_.c_str(), id)};
         }
         if (version > kSchemaVersion) {
             if (attempt) rollback();
-            return {Fault::bad_data, path_ + ": written by a newer pupitre (schema " +
-                                         std::to_string(version) + ", this pupitre knows up to " +
-                                         std::to_string(kSchemaVersion) +
-                                         "); left untouched: use a newer pupitre"};
+            return {Fault::bad_data,
+                    strf(tr("%s: written by a newer pupitre (schema %lld, this pupitre knows "
+                            "up to %d); left untouched: use a newer pupitre"),
+                         path_.c_str(), static_cast<long long>(version), int(kSchemaVersion))};
         }
         if (version == kSchemaVersion) {
             if (attempt) rollback();
@@ -485,7 +512,7 @@ Result<std::string> Store::integrity_check() {
     sqlite3_stmt* s = nullptr;
     int rc = sqlite3_prepare_v2(db_, "PRAGMA integrity_check", -1, &s, nullptr);
     if (rc != SQLITE_OK) {
-        r.error = fail(rc, "cannot check the store");
+        r.error = fail(rc, tr("cannot check the store"));
         return r;
     }
     std::string out;
@@ -496,7 +523,7 @@ Result<std::string> Store::integrity_check() {
     }
     sqlite3_finalize(s);
     if (rc != SQLITE_DONE) {
-        r.error = fail(rc, "cannot check the store");
+        r.error = fail(rc, tr("cannot check the store"));
         return r;
     }
     // Foreign keys are not part of integrity_check.

@@ -8,6 +8,7 @@
 #include <cstring>
 #include <map>
 
+#include "core/i18n.hpp"
 #include "core/parse/program.hpp"
 
 namespace pupitre::store {
@@ -46,8 +47,8 @@ std::vector<HeaderLine> header_lines(std::string_view text) {
 Error no_nul(std::string_view text, std::string_view name) {
     size_t nul = text.find('\0');
     if (nul == std::string_view::npos) return {};
-    return bad(std::string(name) + ":" + std::to_string(line_of(text, nul)) +
-               ": not a program text (NUL byte)");
+    return bad(strf(tr("%s:%d: not a program text (NUL byte)"), std::string(name).c_str(),
+                    line_of(text, nul)));
 }
 
 }  // namespace
@@ -81,22 +82,23 @@ Error parse_piece(std::string_view text, std::string_view name, int first_line, 
     if (Error e = no_nul(text, name)) return e;
     std::vector<HeaderLine> headers = header_lines(text);
     if (headers.empty()) return {};  // a fragment: its number is given by the caller
-    auto where = [&](int line) {
-        return std::string(name) + ":" + std::to_string(first_line - 1 + line);
-    };
+    const std::string file(name);
+    auto where = [&](int line) { return first_line - 1 + line; };
     if (headers.size() > 1)
-        return bad(where(headers[1].line) +
-                   ": a second % line; a stored program holds one program (import cuts a file into "
-                   "its programs)");
+        return bad(strf(
+            tr("%s:%d: a second %% line; a stored program holds one program (import cuts a file "
+               "into its programs)"),
+            file.c_str(), where(headers[1].line)));
     ProgramMemory mem;
     Diag d;
     if (!mem.load_text(std::string(name), std::string(text), d))
         return bad(std::string(name) + ": " + d.detail);
     const auto& progs = mem.programs();
     if (progs.size() != 1)  // ProgramMemory made a program of the blocks before the % line
-        return bad(where(headers[0].line) +
-                   ": blocks before the % line; a stored program starts at its % line "
-                   "(only blank lines and comments may come before it)");
+        return bad(
+            strf(tr("%s:%d: blocks before the %% line; a stored program starts at its %% line "
+                    "(only blank lines and comments may come before it)"),
+                 file.c_str(), where(headers[0].line)));
     h.number = progs[0]->number;
     h.index = progs[0]->index;
     h.title = progs[0]->title;
@@ -122,16 +124,17 @@ Result<std::vector<Piece>> split_file(std::string_view text, std::string_view na
             return r;
         }
         if (number_if_headerless < 0) {
-            r.error = bad(std::string(name) +
-                          ": no % line, so no program number; give it one with --number N");
+            r.error =
+                bad(strf(tr("%s: no %% line, so no program number; give it one with --number N"),
+                         std::string(name).c_str()));
             return r;
         }
         r.value.push_back(Piece{number_if_headerless, std::string(text), source});
         return r;
     }
     if (number_if_headerless >= 0) {
-        r.error =
-            bad(std::string(name) + ": the file has % lines; --number is for a file without one");
+        r.error = bad(strf(tr("%s: the file has %% lines; --number is for a file without one"),
+                           std::string(name).c_str()));
         return r;
     }
     std::map<int, int> seen;  // number -> line of its % line
@@ -143,9 +146,8 @@ Result<std::vector<Piece>> split_file(std::string_view text, std::string_view na
         if ((r.error = parse_piece(piece, name, i == 0 ? 1 : starts[i].line, h))) return r;
         auto [it, fresh] = seen.emplace(h.number, starts[i].line);
         if (!fresh) {
-            r.error = bad(std::string(name) + ":" + std::to_string(starts[i].line) + ": program %" +
-                          std::to_string(h.number) + " again (first at line " +
-                          std::to_string(it->second) + ")");
+            r.error = bad(strf(tr("%s:%d: program %%%d again (first at line %d)"),
+                               std::string(name).c_str(), starts[i].line, h.number, it->second));
             return r;
         }
         r.value.push_back(Piece{h.number, std::string(piece), source});

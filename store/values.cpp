@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <charconv>
 
+#include "core/i18n.hpp"
 #include "store/sql.hpp"
 #include "store/store.hpp"
 
@@ -60,7 +61,7 @@ Error Store::put_machine(std::string_view name, std::string_view profile) {
         if (!e) {
             u.bind(1, name).bind(2, profile).bind(3, now_ms());
             if (int rc = u.step(); rc != SQLITE_DONE)
-                e = fail(rc, "cannot store the machine profile");
+                e = fail(rc, tr("cannot store the machine profile"));
         }
     }
     if (e) {
@@ -77,7 +78,7 @@ Result<std::vector<std::string>> Store::machines() {
     if ((r.error = e)) return r;
     int rc;
     while ((rc = u.step()) == SQLITE_ROW) r.value.push_back(u.str(0));
-    if (rc != SQLITE_DONE) r.error = fail(rc, "cannot list the machines");
+    if (rc != SQLITE_DONE) r.error = fail(rc, tr("cannot list the machines"));
     return r;
 }
 
@@ -90,9 +91,10 @@ Result<std::string> Store::machine_profile(std::string_view name) {
     if (rc == SQLITE_ROW)
         r.value = u.str(0);
     else if (rc == SQLITE_DONE)
-        r.error = {Fault::not_found, path_ + ": no machine " + std::string(name)};
+        r.error = {Fault::not_found,
+                   strf(tr("%s: no machine %s"), path_.c_str(), std::string(name).c_str())};
     else
-        r.error = fail(rc, "cannot read the machine profile");
+        r.error = fail(rc, tr("cannot read the machine profile"));
     return r;
 }
 
@@ -109,7 +111,7 @@ Result<std::map<std::string, int64_t>> Store::values(std::string_view machine) {
     while ((rc = u.step()) == SQLITE_ROW) r.value[u.str(0)] = u.i64(1);
     if (rc != SQLITE_DONE) {
         r.value.clear();
-        r.error = fail(rc, "cannot read the correctors and origins");
+        r.error = fail(rc, tr("cannot read the correctors and origins"));
     }
     return r;
 }
@@ -121,11 +123,13 @@ Result<std::vector<Change>> Store::set_values(std::string_view machine,
     std::vector<Name> names(v.size());
     for (size_t i = 0; i < v.size(); ++i)
         if (!parse_name(v[i].first, names[i])) {
-            r.error = {Fault::bad_data, "unknown corrector or origin '" + v[i].first +
-                                            "' (D1.X … D255.DR, PREF.X, DEC1.Z, DEC3.B…)"};
+            r.error = {Fault::bad_data,
+                       strf(tr("unknown corrector or origin '%s' (%s)"), v[i].first.c_str(),
+                            "D1.X … D255.DR, PREF.X, DEC1.Z, DEC3.B…")};
             return r;
         }
-    const std::string what = "cannot store the correctors and origins of " + std::string(machine);
+    const std::string what =
+        strf(tr("cannot store the correctors and origins of %s"), std::string(machine).c_str());
     if ((r.error = begin_write())) return r;
     auto abort = [&](Error e) {
         rollback();
@@ -236,7 +240,7 @@ Result<std::vector<AuditRow>> Store::audit(std::string_view machine, int limit) 
     }
     if (rc != SQLITE_DONE) {
         r.value.clear();
-        r.error = fail(rc, "cannot read the audit");
+        r.error = fail(rc, tr("cannot read the audit"));
     }
     std::reverse(r.value.begin(), r.value.end());
     return r;
@@ -251,7 +255,7 @@ Result<std::optional<std::string>> Store::setting(std::string_view key) {
     if (rc == SQLITE_ROW)
         r.value = u.str(0);
     else if (rc != SQLITE_DONE)
-        r.error = fail(rc, "cannot read the settings");
+        r.error = fail(rc, tr("cannot read the settings"));
     return r;
 }
 
@@ -262,7 +266,8 @@ Result<int64_t> Store::data_version() {
     if ((r.error = e)) return r;
     int rc = u.step();
     if (rc == SQLITE_ROW) r.value = u.i64(0);
-    else r.error = fail(rc, "cannot read the data version");
+    else
+        r.error = fail(rc, tr("cannot read the data version"));
     return r;
 }
 
@@ -276,7 +281,7 @@ Error Store::set_setting(std::string_view key, std::string_view value) {
                     e));
         if (!e) {
             if (int rc = u.bind(1, key).bind(2, value).step(); rc != SQLITE_DONE)
-                e = fail(rc, "cannot store the setting");
+                e = fail(rc, tr("cannot store the setting"));
         }
     }
     if (e) {
@@ -299,10 +304,10 @@ Error Store::add_imd(std::string_view machine, std::string_view block) {
                 if (!e) {
                     m.bind(1, machine).bind(2, "").bind(3, 0).bind(4, now);
                     if (int rc2 = m.step(); rc2 != SQLITE_DONE)
-                        e = fail(rc2, "cannot store the IMD block");
+                        e = fail(rc2, tr("cannot store the IMD block"));
                 }
             } else if (rc != SQLITE_ROW) {
-                e = fail(rc, "cannot store the IMD block");
+                e = fail(rc, tr("cannot store the IMD block"));
             }
         }
     }
@@ -312,7 +317,7 @@ Error Store::add_imd(std::string_view machine, std::string_view block) {
         if (!e) {
             if (int rc = u.bind(1, now).bind(2, user_).bind(3, machine).bind(4, block).step();
                 rc != SQLITE_DONE)
-                e = fail(rc, "cannot store the IMD block");
+                e = fail(rc, tr("cannot store the IMD block"));
         }
     }
     if (e) {
@@ -336,7 +341,7 @@ Result<std::vector<ImdEntry>> Store::imd_history(std::string_view machine, int l
         r.value.push_back(ImdEntry{u.i64(0), u.i64(1), u.str(2), u.str(3), u.str(4)});
     if (rc != SQLITE_DONE) {
         r.value.clear();
-        r.error = fail(rc, "cannot read the IMD history");
+        r.error = fail(rc, tr("cannot read the IMD history"));
     }
     std::reverse(r.value.begin(), r.value.end());
     return r;
