@@ -59,6 +59,25 @@ bool setup_language(int argc, char** argv) {
     return true;
 }
 
+// A file given on the command line must exist: CLI::ExistingFile's check with
+// its message in the chosen language; a missing file is "cannot open input"
+// (exit 66), anything else a usage error.
+bool g_missing_file = false;
+CLI::Validator existing_file() {
+    return CLI::Validator(
+        [](std::string& f) -> std::string {
+            std::error_code ec;
+            auto st = std::filesystem::status(f, ec);
+            if (!std::filesystem::exists(st)) {
+                g_missing_file = true;
+                return strf(tr("File does not exist: %s"), f.c_str());
+            }
+            if (std::filesystem::is_directory(st)) return strf(tr("File is actually a directory: %s"), f.c_str());
+            return "";
+        },
+        "FILE");
+}
+
 // CLI11's own words, in the chosen language.
 void translate_cli(CLI::App& app) {
     auto f = app.get_formatter();
@@ -67,6 +86,9 @@ void translate_cli(CLI::App& app) {
         f->label(w, tr(w));
     app.option_defaults()->group(tr("Options"));
     app.set_help_flag("-h,--help", tr("Print this help message and exit"));
+    app.failure_message([](const CLI::App*, const CLI::Error& e) {
+        return std::string(e.what()) + "\n" + tr("Run with --help for more information.") + "\n";
+    });
 }
 }  // namespace
 
@@ -109,7 +131,7 @@ int main(int argc, char** argv) {
         sub->add_option("--max-blocks", ra.max_blocks, tr("stop with error 1001 after this many blocks, or twice as many moves (default 20000000)"));
         sub->add_option("files", ra.files, tr("program files; the first program of the first file is run"))
             ->required()
-            ->check(CLI::ExistingFile);
+            ->check(existing_file());
     };
     CLI::App* run = app.add_subcommand("run", tr("dry-run a program and print a summary, or a trace"));
     add_common(run);
@@ -133,7 +155,7 @@ int main(int argc, char** argv) {
     plot->add_option("--pdf", pa.pdf, tr("the picture as a one-page PDF, for printing"))->type_name("OUT");
     plot->add_option("files", pa.files, tr("program files; the first program of the first file is run"))
         ->required()
-        ->check(CLI::ExistingFile);
+        ->check(existing_file());
 
     cli::StoreArgs sa;
     std::vector<std::string> numbers;  // as typed, checked after parsing
@@ -167,11 +189,8 @@ int main(int argc, char** argv) {
     } catch (const CLI::CallForVersion& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
-        // Missing files are "cannot open input", everything else is a usage error.
         app.exit(e);
-        std::string what = e.what();
-        if (what.find("does not exist") != std::string::npos) return cli::kNoInput;
-        return cli::kUsage;
+        return g_missing_file ? cli::kNoInput : cli::kUsage;
     }
     ra.db = db;
     sa.db = db;
