@@ -23,7 +23,8 @@ struct ModeInfo {
 };
 // The NUM names on the status line, with the English the help page gives and
 // what the operator does next. The order is the mode key's (F8).
-// `english` and `how` are shown translated (mode_english, mode_how).
+// `english` and `how` are msgids: mode_english and mode_how return the English,
+// the pages show it with tr().
 constexpr ModeInfo kModes[] = {
     {Mode::automatic, "auto", "AUTO", N_("continuous run"), N_("Cycle Start (F9) runs the selected program")},
     {Mode::single, "seq", "SEQ", N_("single block"), N_("Cycle Start (F9) runs one block")},
@@ -53,13 +54,13 @@ std::string_view mode_name(Mode m) {
 
 std::string_view mode_english(Mode m) {
     for (const auto& i : kModes)
-        if (i.mode == m) return tr(i.english.data());
+        if (i.mode == m) return i.english;
     return "?";
 }
 
 std::string_view mode_how(Mode m) {
     for (const auto& i : kModes)
-        if (i.mode == m) return tr(i.how.data());
+        if (i.mode == m) return i.how;
     return "";
 }
 
