@@ -489,10 +489,10 @@ bool Sim::begin_next() {
                                     "IMD done (%ld blocks): type the next block, or F8 for another mode", blocks_),
                                 blocks_);
             if (e.a == 2) {
-                // TRANSLATORS: the English says "blocks" whatever the number.
-                message_ = strf(trn("M02: end of program %%%d, %ld blocks, cycle time %s",
-                                    "M02: end of program %%%d, %ld blocks, cycle time %s", blocks_),
-                                e.loc.prog, blocks_, fmt_seconds(run_seconds_).c_str());
+                // TRANSLATORS: the second %s counts the blocks run ("%ld blocks").
+                message_ = strf(tr("M02: end of program %%%d, %s, cycle time %s"), e.loc.prog,
+                                strf(trn("%ld blocks", "%ld blocks", blocks_), blocks_).c_str(),
+                                fmt_seconds(run_seconds_).c_str());
                 // The warnings the run printed on the way must not vanish with it.
                 if (run_warning_count_ > 0)
                     message_ += strf(trn("; %zu warning (F7 ALARM)", "; %zu warnings (F7 ALARM)", run_warning_count_),
@@ -685,9 +685,12 @@ void Sim::test_advance(long budget) {
         } else if (r == StepResult::ended) {
             int warnings = 0;
             for (const Diag& d : test_->diags()) warnings += !d.is_error();
-            // TRANSLATORS: the English says "blocks" and "warnings" whatever the numbers.
-            message_ = strf(tr("TEST %%%d: no error, %ld blocks, %d warnings, cycle time %s"), selected_, test_->blocks(),
-                            warnings, fmt_seconds(test_->seconds()).c_str());
+            // TRANSLATORS: the %s count the blocks ("%ld blocks") and the warnings ("%d warnings").
+            message_ = strf(tr("TEST %%%d: no error, %s, %s, cycle time %s"), selected_,
+                            strf(trn("%ld blocks", "%ld blocks", test_->blocks()), test_->blocks()).c_str(),
+                            // TRANSLATORS: the English says "warnings" whatever the number.
+                            strf(trn("%d warnings", "%d warnings", warnings), warnings).c_str(),
+                            fmt_seconds(test_->seconds()).c_str());
             state_ = RunState::ended;
         }
     }
