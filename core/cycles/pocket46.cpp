@@ -4,6 +4,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/cycles/pocket46.hpp"
 #include "core/geometry/geometry.hpp"
+#include "core/i18n.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -388,19 +389,19 @@ bool check(const Def& d, Error& err) {
     bool has56 = false, has5 = false, has6 = false;
     for (size_t i = 0; i < d.sections.size(); ++i) {
         const Section& s = d.sections[i];
-        if (s.elems.empty()) return bad(284, "a contour with no element", int(i));
+        if (s.elems.empty()) return bad(284, tr("a contour with no element"), int(i));
         if (s.nu == 1 || s.nu == 3) ++outer;
         if (s.nu == 2 || s.nu == 4) ++islands;
         if (s.nu == 5) has5 = true;
         if (s.nu == 6) has6 = true;
         if (s.nu <= 4 && (s.elems.back().b - s.elems.front().a).norm() > 1e-3)
-            return bad(281, "the contour does not end where it starts", int(i));
+            return bad(281, tr("the contour does not end where it starts"), int(i));
         if (s.nu <= 4 && std::fabs(area(s.elems)) < 1e-6)
-            return bad(284, "a contour that encloses no area", int(i));
+            return bad(284, tr("a contour that encloses no area"), int(i));
     }
     has56 = has5 || has6;
     if (has56) {
-        if (!has5 || !has6) return bad(283, "facing limits (NU5) and walls (NU6) go together");
+        if (!has5 || !has6) return bad(283, tr("facing limits (NU5) and walls (NU6) go together"));
         ++outer;
         // The sections follow one another and close.
         const Section* prev = nullptr;
@@ -410,22 +411,22 @@ bool check(const Def& d, Error& err) {
             if (s.nu != 5 && s.nu != 6) continue;
             if (!first) first = &s;
             if (prev && (prev->elems.back().b - s.elems.front().a).norm() > 1e-3)
-                return bad(281, "a limit or wall does not start where the previous one ends",
+                return bad(281, tr("a limit or wall does not start where the previous one ends"),
                            int(i));
             prev = &s;
         }
         if ((prev->elems.back().b - first->elems.front().a).norm() > 1e-3)
-            return bad(281, "the limits and walls do not close", -1);
+            return bad(281, tr("the limits and walls do not close"), -1);
     }
     if (outer != 1)
-        return bad(283, outer == 0 ? "no outer profile (NU1, NU3 or NU5/NU6)"
-                                   : "more than one outer profile");
-    if (islands > 127) return bad(285, "more than 127 islands and recesses");
-    if (d.facing() && d.has_e) return bad(293, "a roughing end point (EX EY) in a facing");
-    if (d.q > d.ed) return bad(286, "the step-over Q is larger than the cutter diameter ED");
+        return bad(283, outer == 0 ? tr("no outer profile (NU1, NU3 or NU5/NU6)")
+                                   : tr("more than one outer profile"));
+    if (islands > 127) return bad(285, tr("more than 127 islands and recesses"));
+    if (d.facing() && d.has_e) return bad(293, tr("a roughing end point (EX EY) in a facing"));
+    if (d.q > d.ed) return bad(286, tr("the step-over Q is larger than the cutter diameter ED"));
     Region r = region(d, 0);
     if (r.xhi - r.xlo > 40 * d.q || r.yhi - r.ylo > 40 * d.q)
-        return bad(287, "the pocket is larger than 40 times the step-over Q");
+        return bad(287, tr("the pocket is larger than 40 times the step-over Q"));
     // Islands lie inside the outer profile, apart from each other.
     Region outer_only;
     for (const Section& s : d.sections)
@@ -436,7 +437,7 @@ bool check(const Def& d, Error& err) {
         if (s.nu != 2 && s.nu != 4) continue;
         for (const Elem& e : s.elems)
             if (!inside(outer_only, e.a) && !(s.nu == 4 && d.facing()))
-                return bad(284, "an island is not inside the outer profile", int(i));
+                return bad(284, tr("an island is not inside the outer profile"), int(i));
     }
     return true;
 }
@@ -464,7 +465,7 @@ bool roughing(const Def& d, double R, std::vector<Run>& runs, std::vector<double
             y0 = hi, found = true;
             break;
         }
-    if (!found) return bad(289, "the cutter does not fit in the pocket");
+    if (!found) return bad(289, tr("the cutter does not fit in the pocket"));
     for (double y = reg.yhi; y >= reg.ylo; y -= h)
         if (any(y)) {
             double lo = y, hi = y + h;
@@ -487,11 +488,11 @@ bool roughing(const Def& d, double R, std::vector<Run>& runs, std::vector<double
     std::vector<Seg> segs;
     for (double y : line_y)
         for (auto [x0, x1] : spans(reg, y)) segs.push_back({V2(x0, y), V2(x1, y)});
-    if (segs.empty()) return bad(289, "the cutter does not fit in the pocket");
+    if (segs.empty()) return bad(289, tr("the cutter does not fit in the pocket"));
     V2 cur = segs[0].a;
     if (d.has_l) {
         if (!inside(reg, d.l, 1e-6))
-            return bad(282, "the roughing start point LX LY is not where the cutter can plunge");
+            return bad(282, tr("the roughing start point LX LY is not where the cutter can plunge"));
         cur = d.l;
     }
     bool first = true;
@@ -592,7 +593,7 @@ bool finishing(const Def& d, double R, double J, std::vector<Run>& runs, Error& 
                 if (dd < bd) bd = dd, best = i;
             }
             if (bd > 1e-3) {
-                err = {291, "the finishing start point LX LY is not on the contour", int(si)};
+                err = {291, tr("the finishing start point LX LY is not on the contour"), int(si)};
                 return false;
             }
             Elem e = el[best];
@@ -624,20 +625,20 @@ bool finishing(const Def& d, double R, double J, std::vector<Run>& runs, Error& 
         // A re-entrant corner at the start point cannot be engaged.
         V2 t_in = comp::end_tangent(el.back()), t_out = comp::start_tangent(el.front());
         if (double(side) * cross(t_in, t_out) > 1e-9 && t_in.dot(t_out) < 1 - 1e-9) {
-            err = {288, "the finishing starts in a re-entrant corner", int(si)};
+            err = {288, tr("the finishing starts in a re-entrant corner"), int(si)};
             return false;
         }
         Run run;
         V2 start;
         std::vector<Piece> pcs;
         if (!offset_chain(el, true, r, side, start, pcs) || !path_clear(walls, start, pcs, 1e-6)) {
-            err = {289, "the finishing cutter is too large for the contour", int(si)};
+            err = {289, tr("the finishing cutter is too large for the contour"), int(si)};
             return false;
         }
         V2 nrm = comp::normal(t_out, side);
         run.start = el.front().a + reach * nrm;
         if (!inside(rough, run.start, 1e-6)) {
-            err = {288, "the finishing engages in a zone the roughing did not clear", int(si)};
+            err = {288, tr("the finishing engages in a zone the roughing did not clear"), int(si)};
             return false;
         }
         if ((run.start - start).norm() > 1e-9)
@@ -659,7 +660,7 @@ bool finishing(const Def& d, double R, double J, std::vector<Run>& runs, Error& 
             std::vector<Piece> pcs;
             if (!offset_chain(w, false, r, side, start, pcs) ||
                 !path_clear(walls, start, pcs, 1e-6)) {
-                err = {289, "the finishing cutter is too large for the wall", int(si)};
+                err = {289, tr("the finishing cutter is too large for the wall"), int(si)};
                 return false;
             }
             // In from beyond the open end and out past the other, along the tangents.

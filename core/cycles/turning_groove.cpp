@@ -9,6 +9,7 @@
 #include "core/geometry/geometry.hpp"
 #include "core/cycles/turning_geom.hpp"
 #include "core/cycles/turning_zone.hpp"
+#include "core/i18n.hpp"
 
 namespace pupitre::turning {
 
@@ -69,21 +70,21 @@ double lowest(const Material& m, double x0, double x1) {
 int g65(const Profile& fin, V2 tool, const G65Args& a, std::vector<Move>& out, std::string& why) {
     out.clear();
     if ((a.has_p && a.has_r) || (a.has_x && a.has_z)) {
-        why = "G65 takes P or R, and X or Z, not both";
+        why = tr("G65 takes P or R, and X or Z, not both");
         return 889;
     }
     bool axial = a.has_z && a.has_p, frontal = a.has_x && a.has_r;
     if (!axial && !frontal) {
-        why = "G65 needs Z with P (axial groove) or X with R (frontal groove)";
+        why = tr("G65 needs Z with P (axial groove) or X with R (frontal groove)");
         return 862;
     }
     if (!a.has_ea) {
-        why = "G65 needs the infeed angle EA";
+        why = tr("G65 needs the infeed angle EA");
         return 2;
     }
     double step = axial ? a.p : a.r;
     if (!(step > 0)) {
-        why = "the depth of cut must be positive";
+        why = tr("the depth of cut must be positive");
         return 862;
     }
     if (int e = zone::check_profile(fin, why)) return e;
@@ -92,7 +93,7 @@ int g65(const Profile& fin, V2 tool, const G65Args& a, std::vector<Move>& out, s
     fr.swap = frontal;
     V2 u = fr.to(V2(std::cos(a.ea * kDeg), std::sin(a.ea * kDeg)));
     if (std::fabs(u.y()) < 1e-9) {
-        why = "EA runs parallel to the passes";
+        why = tr("EA runs parallel to the passes");
         return 863;
     }
     fr.s = u.y() < 0 ? 1 : -1;  // the infeed goes down the level axis
@@ -101,7 +102,7 @@ int g65(const Profile& fin, V2 tool, const G65Args& a, std::vector<Move>& out, s
     double xa = axial ? a.z : a.x;
     int d = xa > s.x() + kUm ? 1 : xa < s.x() - kUm ? -1 : 0;
     if (d == 0 || u.x() * d < -1e-9) {
-        why = "the limit of the passes is not on the side EA leads to";
+        why = tr("the limit of the passes is not on the side EA leads to");
         return 863;
     }
 
@@ -121,14 +122,14 @@ int g65(const Profile& fin, V2 tool, const G65Args& a, std::vector<Move>& out, s
         return g65(moved, tool, written, out, why);
     }
     if (m.in_A(s)) {
-        why = "the start point lies inside the finished profile";
+        why = tr("the start point lies inside the finished profile");
         return 875;
     }
     double span = (s - m.F.front().a).norm();
     for (const Elem& e : m.F) span = std::max(span, (s - e.b).norm());
     V2 c;
     if (!first_contact(m, s, u, 2 * span + 100, c)) {
-        why = "the EA line does not meet the finished profile";
+        why = tr("the EA line does not meet the finished profile");
         return 875;
     }
     double y_low = std::min(c.y(), lowest(m, std::min(xa, c.x()), std::max(xa, c.x())));
@@ -179,24 +180,24 @@ int g65(const Profile& fin, V2 tool, const G65Args& a, std::vector<Move>& out, s
 int g66(V2 tool, const G66Args& a, std::vector<Move>& out, std::string& why) {
     out.clear();
     if (a.has_p && a.has_r) {
-        why = "G66 takes P or R, not both";
+        why = tr("G66 takes P or R, not both");
         return 889;
     }
     if (!(a.has_p || a.has_r) || !a.has_x || !a.has_z) {
-        why = "G66 needs X, Z and P or R";
+        why = tr("G66 needs X, Z and P or R");
         return 862;
     }
     double step = a.has_p ? a.p : a.r;
     if (!(step > 0)) {
-        why = "the distance between plunges must be positive";
+        why = tr("the distance between plunges must be positive");
         return 862;
     }
     if (a.d_first == 0 || a.d == 0) {
-        why = a.d == 0 ? "G66 needs the second corrector D" : "no corrector active before G66";
+        why = a.d == 0 ? tr("G66 needs the second corrector D") : tr("no corrector active before G66");
         return 898;
     }
     if (a.milling_tool) {
-        why = "G66 with a milling tool";
+        why = tr("G66 with a milling tool");
         return 864;
     }
     // Frame: plunges along y, spread along x (R: radial groove, plunges along X
@@ -208,7 +209,7 @@ int g66(V2 tool, const G66Args& a, std::vector<Move>& out, std::string& why) {
     V2 Bt = B + fr.to(a.gauge_delta);  // B in the first corrector's terms
     double width = Bt.x() - A.x();
     if (width * (B.x() - A.x()) < 0) {
-        why = "the groove is narrower than the tool";
+        why = tr("the groove is narrower than the tool");
         return 863;
     }
     double slope = std::tan(a.ea * kDeg);
@@ -219,7 +220,7 @@ int g66(V2 tool, const G66Args& a, std::vector<Move>& out, std::string& why) {
         double x = n ? A.x() + width * i / n : A.x();
         double depth = bottom(x) - A.y();
         if (std::fabs(depth) <= kUm || (depth < 0 ? -1 : 1) != dir) {
-            why = "the groove bottom does not lie beyond the approach point";
+            why = tr("the groove bottom does not lie beyond the approach point");
             return 863;
         }
     }

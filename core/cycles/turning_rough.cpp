@@ -9,6 +9,7 @@
 #include "core/geometry/geometry.hpp"
 #include "core/cycles/turning_geom.hpp"
 #include "core/cycles/turning_zone.hpp"
+#include "core/i18n.hpp"
 
 namespace pupitre::turning {
 
@@ -65,11 +66,11 @@ void build_region(const std::vector<V2>& b, const Profile& f, Material& m) {
 
 int check_region(const Material& m, std::string& why) {
     if (m.M.size() < 2 || std::fabs(area(m.M)) < 1e-9) {
-        why = "the stock and the finished profile enclose no material";
+        why = tr("the stock and the finished profile enclose no material");
         return 874;
     }
     if (self_intersects(m.M)) {
-        why = "the stock crosses the finished profile";
+        why = tr("the stock crosses the finished profile");
         return 874;
     }
     return 0;
@@ -131,26 +132,26 @@ int g64(const Profile& fin, const std::vector<V2>& stock, V2 tool, const G64Args
         std::vector<Move>& out, std::string& why) {
     out.clear();
     if (!a.has_p && !a.has_r) {
-        why = "G64 needs P (passes along Z) or R (passes along X)";
+        why = tr("G64 needs P (passes along Z) or R (passes along X)");
         return 873;
     }
     if (a.has_p && a.has_r) {
-        why = "G64 takes P or R, not both";
+        why = tr("G64 takes P or R, not both");
         return 889;
     }
     double step = a.has_p ? a.p : a.r;
     if (!(step > 0)) {
-        why = "the depth of cut must be positive";
+        why = tr("the depth of cut must be positive");
         return 873;
     }
     if (int e = zone::check_profile(fin, why)) return e;
     if (stock.empty()) {
-        why = "no stock point between G64 and G80";
+        why = tr("no stock point between G64 and G80");
         return 872;
     }
     std::vector<Elem> bs = polyline(stock);
-    if (int e = zone::check_axis(fin.elems, "the finished profile", why)) return e;
-    if (int e = zone::check_axis(bs, "the stock", why)) return e;
+    if (int e = zone::check_axis(fin.elems, N_("the finished profile crosses the spindle axis (X below 0)"), why)) return e;
+    if (int e = zone::check_axis(bs, N_("the stock crosses the spindle axis (X below 0)"), why)) return e;
 
     bool rev = stock_reversed(stock, fin);
     std::vector<V2> b = stock;
@@ -184,7 +185,7 @@ int g64(const Profile& fin, const std::vector<V2>& stock, V2 tool, const G64Args
     for (const V2& p : stock) y_top = std::max(y_top, fr.to(p).y());
     for (const Elem& e : m.F) y_min = std::min(y_min, min_y(translated(e, m.t)));
     if ((y_top - y_min) / step > 1e6) {
-        why = "the depth of cut is too small for the stock";
+        why = tr("the depth of cut is too small for the stock");
         return 873;
     }
     std::vector<double> ys = levels(y_top, y_min, step);
@@ -241,35 +242,35 @@ namespace {
 // G63 argument checks (§6.5 errors, the convention of spec/README.md item 37).
 int g63_check(const Profile& fin, const G63Args& a, std::string& why) {
     if (!a.has_p && !a.has_r) {
-        why = "G63 needs P (passes along Z) or R (passes along X)";
+        why = tr("G63 needs P (passes along Z) or R (passes along X)");
         return 873;
     }
     if ((a.has_p && a.has_r) || (a.has_ex && a.has_ez)) {
-        why = "G63 takes P or R, and EZ or EX, not both";
+        why = tr("G63 takes P or R, and EZ or EX, not both");
         return 889;
     }
     if ((a.has_p && !a.has_ez) || (a.has_r && !a.has_ex)) {
-        why = "G63 needs EZ with P or EX with R";
+        why = tr("G63 needs EZ with P or EX with R");
         return 862;
     }
     if (!a.has_x || !a.has_z) {
-        why = "G63 needs its start point X Z";
+        why = tr("G63 needs its start point X Z");
         return 2;
     }
     if (!((a.has_p ? a.p : a.r) > 0)) {
-        why = "the depth of cut must be positive";
+        why = tr("the depth of cut must be positive");
         return 873;
     }
     if (a.er < 0 || a.eq < 0) {
-        why = "ER and EQ must not be negative";
+        why = tr("ER and EQ must not be negative");
         return 889;
     }
     if ((a.has_eb && !(a.eb > 0 && a.eb < 180)) || (a.has_ec && !(a.ec >= 0 && a.ec < 180))) {
-        why = "EB must lie in ]0, 180[ and EC in [0, 180[ degrees";
+        why = tr("EB must lie in ]0, 180[ and EC in [0, 180[ degrees");
         return 876;
     }
     if (int e = zone::check_profile(fin, why)) return e;
-    return zone::check_axis(fin.elems, "the finished profile", why);
+    return zone::check_axis(fin.elems, N_("the finished profile crosses the spindle axis (X below 0)"), why);
 }
 
 // Angle of the profile where a pass enters a groove, from the pass direction
@@ -321,7 +322,7 @@ int g63(const Profile& fin, V2 tool, const G63Args& a, std::vector<Move>& out, s
     double xz = a.has_ez ? a.ez : a.ex;
     int d = sgn(xz - D.x());
     if (d == 0) {
-        why = "the end of the passes is at the start point";
+        why = tr("the end of the passes is at the start point");
         return 862;
     }
     // Start line of the passes: EA, else towards the point EU EW, else square
@@ -335,7 +336,7 @@ int g63(const Profile& fin, V2 tool, const G63Args& a, std::vector<Move>& out, s
     }
     if (u.y() > 0) u = -u;
     if (std::fabs(u.y()) < 1e-9) {
-        why = "the start line EA runs along the passes";
+        why = tr("the start line EA runs along the passes");
         return 875;
     }
     std::vector<Elem> ff = fr.to(fin.elems);
@@ -347,7 +348,7 @@ int g63(const Profile& fin, V2 tool, const G63Args& a, std::vector<Move>& out, s
         bool met = false;
         for (const Elem& e : ff) met = met || ray_hit(e, D, u) < kInf;
         if (!met) {
-            why = "the EA line does not meet the finished profile";
+            why = tr("the EA line does not meet the finished profile");
             return 875;
         }
     }

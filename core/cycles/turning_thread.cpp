@@ -8,6 +8,7 @@
 #include "core/geometry/geometry.hpp"
 #include "core/cycles/turning_geom.hpp"
 #include "core/cycles/turning_zone.hpp"
+#include "core/i18n.hpp"
 
 namespace pupitre::turning {
 
@@ -23,48 +24,48 @@ bool whole(double v) {
 // Syntax and argument checks, in the order a block is read (§6.12 preconditions).
 int g33_check(const G33Args& a, std::string& why) {
     if (!a.has_x || !a.has_z || !a.has_p || !a.has_k) {
-        why = "G33 needs the end point X Z, the depth P and the lead K";
+        why = tr("G33 needs the end point X Z, the depth P and the lead K");
         return 832;
     }
     if (a.has_s && a.has_es) {
-        why = "G33 takes S or ES, not both";
+        why = tr("G33 takes S or ES, not both");
         return 889;
     }
     if (a.k < 0 || a.p < 0 || (a.has_q && a.q < 0) || a.r < 0 || a.k == 0 || a.p == 0) {
-        why = "P and K must be positive, Q and R not negative";
+        why = tr("P and K must be positive, Q and R not negative");
         return 835;
     }
     if (!(a.eb > -90 && a.eb < 90)) {
-        why = "EB must lie between -90 and 90 degrees";
+        why = tr("EB must lie between -90 and 90 degrees");
         return 834;
     }
     if (a.has_f && a.f > 9) {
-        why = "more than 9 thread starts";
+        why = tr("more than 9 thread starts");
         return 884;
     }
     double n = a.has_es ? a.es : a.s;
     if ((a.has_f && (a.f < 1 || !whole(a.f))) || n < 1 || !whole(n)) {
-        why = "the number of starts (F) and of passes (S, ES) must be whole and at least 1";
+        why = tr("the number of starts (F) and of passes (S, ES) must be whole and at least 1");
         return 837;
     }
     if (a.has_q && a.q > a.p) {
-        why = "the last pass Q is deeper than the thread P";
+        why = tr("the last pass Q is deeper than the thread P");
         return 881;
     }
     if (std::fabs(a.ea) > 90) {
-        why = "EA must lie between -90 and 90 degrees";
+        why = tr("EA must lie between -90 and 90 degrees");
         return 881;
     }
     if (a.radius_comp) {
-        why = "threading in radius compensation (G41/G42)";
+        why = tr("threading in radius compensation (G41/G42)");
         return 27;
     }
     if (!a.plane_ok) {
-        why = "threading needs the G18 or G20 plane";
+        why = tr("threading needs the G18 or G20 plane");
         return 836;
     }
     if (!a.spindle_turning) {
-        why = "threading with the spindle stopped";
+        why = tr("threading with the spindle stopped");
         return 831;
     }
     return 0;
@@ -96,17 +97,17 @@ int g33(V2 tool, const G33Args& a, std::vector<Move>& out, std::string& why) {
     auto crest = [&](double x) { return e.y() + (x - e.x()) * slope; };
     double len = e.x() - s.x();
     if (std::fabs(len) <= kUm) {
-        why = "the thread has no length along its axis";
+        why = tr("the thread has no length along its axis");
         return 881;
     }
     int sigma = len > 0 ? 1 : -1;
     double h = s.y() - crest(s.x());  // clearance above the crest line at the start
     if (std::fabs(h) <= kUm) {
-        why = "the start point lies on the thread";
+        why = tr("the start point lies on the thread");
         return 833;
     }
     if (a.r >= std::fabs(len) - kUm) {
-        why = "the exit slope R is as long as the thread";
+        why = tr("the exit slope R is as long as the thread");
         return 881;
     }
     int ext = h > 0 ? 1 : -1;  // external thread: the depth goes down the level axis
@@ -135,19 +136,19 @@ int g33(V2 tool, const G33Args& a, std::vector<Move>& out, std::string& why) {
 int g38(V2 tool, const G38Args& a, std::vector<Move>& out, std::string& why) {
     out.clear();
     if (a.radius_comp) {
-        why = "threading in radius compensation (G41/G42)";
+        why = tr("threading in radius compensation (G41/G42)");
         return 27;
     }
     if (a.has_k && !(a.k > 0)) {
-        why = "the lead K must be positive";
+        why = tr("the lead K must be positive");
         return 835;
     }
     if (!a.has_k && !(a.prev_k > 0)) {
-        why = "G38 needs the lead K";
+        why = tr("G38 needs the lead K");
         return 883;
     }
     if (!a.spindle_turning) {
-        why = "threading with the spindle stopped";
+        why = tr("threading with the spindle stopped");
         return 831;
     }
     if ((a.to - tool).norm() > kTol) {

@@ -5,6 +5,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/cycles/turning_zone.hpp"
 #include "core/geometry/geometry.hpp"
+#include "core/i18n.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -398,21 +399,21 @@ bool seg_clear(const Material& m, const V2& p, const V2& q) {
 
 int check_profile(const Profile& f, std::string& why) {
     if (f.elems.empty()) {
-        why = "the finished profile has no element";
+        why = tr("the finished profile has no element");
         return 871;
     }
     for (size_t i = 0; i + 1 < f.elems.size(); ++i)
         if ((f.elems[i].b - f.elems[i + 1].a).norm() > kUm) {
-            why = "the finished profile is not continuous";
+            why = tr("the finished profile is not continuous");
             return 871;
         }
     return 0;
 }
 
-int check_axis(const std::vector<Elem>& es, const char* what, std::string& why) {
+int check_axis(const std::vector<Elem>& es, const char* message, std::string& why) {
     for (const Elem& e : es)
         if (min_y(e) < -kUm) {
-            why = std::string(what) + " crosses the spindle axis (X below 0)";
+            why = tr(message);
             return 874;
         }
     return 0;

@@ -84,8 +84,9 @@ bool seg_clear(const Material& m, const V2& p, const V2& q);
 
 // 0, or 871 with `why` when the profile is empty or not continuous.
 int check_profile(const Profile& f, std::string& why);
-// 0, or 874 when a point of the elements lies beyond the spindle axis (r < 0).
-int check_axis(const std::vector<Elem>& es, const char* what, std::string& why);
+// 0, or 874 when a point of the elements lies beyond the spindle axis (r < 0);
+// `why` is then tr(message), a text marked with N_().
+int check_axis(const std::vector<Elem>& es, const char* message, std::string& why);
 
 // Length-weighted centroid of elements (the point itself for a lone point).
 V2 centroid(const std::vector<Elem>& es);

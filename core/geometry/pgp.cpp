@@ -9,6 +9,7 @@
 #include "core/geometry/pgp.hpp"
 #include "core/geometry/geometry.hpp"
 #include "core/geometry/pgp_elements.hpp"
+#include "core/i18n.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -63,7 +64,7 @@ St stop(Fail& f, int code, std::string detail) {
 
 St undetermined(const Elt& b, Fail& f) {
     if (middle(b)) return St::Need;
-    return stop(f, 113, "the second element does not determine the junction");
+    return stop(f, 113, tr("the second element does not determine the junction"));
 }
 
 // Where two fully known elements touch (an over-determined tangency).
@@ -98,18 +99,18 @@ St from_fixed(const V2& S, const Sup& A, const Elt& b, bool tan, std::vector<Can
         if (!tan) {
             if (!A.arc && !b.sup.arc) {
                 if (std::fabs(cross(A.d, b.sup.d)) < 1e-9)
-                    return stop(f, 112, "the two lines are parallel");
+                    return stop(f, 112, tr("the two lines are parallel"));
                 if (b.has_end && (b.end - S).norm() < kEq)
-                    return stop(f, 112, "the second line ends at the start of the first");
+                    return stop(f, 112, tr("the second line ends at the start of the first"));
             }
             for (const V2& j : meet(A, b.sup)) add(out, A, b.sup, j);
             return St::Ok;
         }
         if (!A.arc && !b.sup.arc)
-            return stop(f, 113, "two lines cannot be tangent (ES for their intersection)");
+            return stop(f, 113, tr("two lines cannot be tangent (ES for their intersection)"));
         V2 j;
         if (!touching(A, b.sup, j))
-            return stop(f, 113, "the elements are not tangent (ES for their intersection)");
+            return stop(f, 113, tr("the elements are not tangent (ES for their intersection)"));
         add(out, A, b.sup, j);
         return St::Ok;
     }
@@ -126,7 +127,7 @@ St from_fixed(const V2& S, const Sup& A, const Elt& b, bool tan, std::vector<Can
             return St::Ok;
         case Form::Angle:  // tangent to the circle A at its angle
         case Form::Axis:
-            if (!A.arc) return stop(f, 113, "a line cannot be tangent to a line");
+            if (!A.arc) return stop(f, 113, tr("a line cannot be tangent to a line"));
             for (const V2& d : dirs(b))
                 for (int sg : {1, -1}) {
                     V2 t = A.p + sg * A.r * perp(d);
@@ -134,7 +135,7 @@ St from_fixed(const V2& S, const Sup& A, const Elt& b, bool tan, std::vector<Can
                 }
             return St::Ok;
         case Form::Free:  // from the circle A to its end point
-            if (!A.arc) return stop(f, 113, "a line cannot be tangent to a line");
+            if (!A.arc) return stop(f, 113, tr("a line cannot be tangent to a line"));
             if (!b.has_end) return St::Need;
             for (const V2& t : touch_from(A, b.end)) {
                 V2 d = b.end - t;
@@ -142,7 +143,7 @@ St from_fixed(const V2& S, const Sup& A, const Elt& b, bool tan, std::vector<Can
             }
             return St::Ok;
         default:
-            return stop(f, 113, "the second element does not determine the junction");
+            return stop(f, 113, tr("the second element does not determine the junction"));
     }
 }
 
@@ -153,7 +154,7 @@ St solve2(const V2& S, const Elt& a, const Elt& b, char link, std::vector<Cand>&
     if (b.form != Form::Fixed) return undetermined(b, f);
     if (a.form == Form::Free) {  // a line from S tangent to a circle
         if (!b.sup.arc)
-            return stop(f, 113, "a line of unknown direction must be tangent to a circle");
+            return stop(f, 113, tr("a line of unknown direction must be tangent to a circle"));
         for (const V2& t : touch_from(b.sup, S)) {
             V2 d = t - S;
             add(out, line(S, d.norm() < kEq ? tangent(b.sup, t) : V2(d.normalized())), b.sup, t);
@@ -161,13 +162,13 @@ St solve2(const V2& S, const Elt& a, const Elt& b, char link, std::vector<Cand>&
         return St::Ok;
     }
     if (a.form == Form::Radius) {  // a circle through S tangent to b
-        if (!tan) return stop(f, 113, "a circle known by its radius only cannot be secant");
+        if (!tan) return stop(f, 113, tr("a circle known by its radius only cannot be secant"));
         for (const Sup& l : loci(b.sup, a.r))
             for (const V2& q : meet(l, circle(S, a.r, 0)))
                 add(out, circle(q, a.r, a.s), b.sup, contact(b.sup, q, a.r));
         return St::Ok;
     }
-    return stop(f, 113, "the first element does not determine the junction");
+    return stop(f, 113, tr("the first element does not determine the junction"));
 }
 
 // Three blocks, the middle element found from the third one: its radius about
@@ -179,7 +180,7 @@ St solve3_by_third(const V2& S, const Elt& a, const Elt& b, const Sup& C3, char 
         for (double r : radii(C3, b.c))
             mids.push_back({circle(b.c, r, b.s), contact(C3, b.c, r)});
     } else {
-        if (!C3.arc) return stop(f, 123, "a line cannot be tangent to a line");
+        if (!C3.arc) return stop(f, 123, tr("a line cannot be tangent to a line"));
         for (const V2& d : dirs(b))
             for (int sg : {1, -1}) {
                 V2 t = C3.p + sg * C3.r * perp(d);
@@ -197,7 +198,7 @@ St solve3_by_third(const V2& S, const Elt& a, const Elt& b, const Sup& C3, char 
         Fail f2;
         St st = solve2(S, a, m, link0, part, f2);
         if (st == St::Fail && f2.code == 112)
-            return stop(f, 122, "the first two blocks are parallel lines");
+            return stop(f, 122, tr("the first two blocks are parallel lines"));
         if (st != St::Ok) continue;
         for (Cand& cd : part) {
             cd.j[1] = t23;
@@ -216,16 +217,16 @@ St solve3_by_third(const V2& S, const Elt& a, const Elt& b, const Sup& C3, char 
 St solve3(const V2& S, const Elt* e, const char link[2], std::vector<Cand>& out, Fail& f) {
     const Elt &a = e[0], &b = e[1], &c = e[2];
     if (c.form != Form::Fixed)
-        return stop(f, 123, "the third block must fix its element: EA X Y, or I J with R or X Y");
+        return stop(f, 123, tr("the third block must fix its element: EA X Y, or I J with R or X Y"));
     const Sup& C3 = c.sup;
-    if (link[1] == 'S') return stop(f, 123, "the middle element cannot be secant with the third");
+    if (link[1] == 'S') return stop(f, 123, tr("the middle element cannot be secant with the third"));
     if (b.form == Form::Angle || b.form == Form::Axis || b.form == Form::Centre)
         return solve3_by_third(S, a, b, C3, link[0], out, f);
     if (link[0] == 'S')
-        return stop(f, 123, "the first element cannot be secant with this middle element");
+        return stop(f, 123, tr("the first element cannot be secant with this middle element"));
     if (b.form == Form::Radius && !b.has_end) {
         if (a.form != Form::Fixed)
-            return stop(f, 123, "the first element must be fixed for this construction");
+            return stop(f, 123, tr("the first element must be fixed for this construction"));
         for (const Sup& l1 : loci(a.sup, b.r))
             for (const Sup& l3 : loci(C3, b.r))
                 for (const V2& q : meet(l1, l3)) {
@@ -241,7 +242,7 @@ St solve3(const V2& S, const Elt* e, const char link[2], std::vector<Cand>& out,
     }
     if (b.form == Form::Free && !b.has_end) {
         if (a.form != Form::Fixed || !a.sup.arc || !C3.arc)
-            return stop(f, 123, "a line tangent at both ends needs two circles");
+            return stop(f, 123, tr("a line tangent at both ends needs two circles"));
         for (const Tangent& t : common(a.sup, C3)) {
             Cand cd;
             cd.sup[0] = a.sup;
@@ -253,7 +254,7 @@ St solve3(const V2& S, const Elt* e, const char link[2], std::vector<Cand>& out,
         }
         return St::Ok;
     }
-    return stop(f, 123, "these three blocks do not determine the tangency points");
+    return stop(f, 123, tr("these three blocks do not determine the tangency points"));
 }
 
 // The entity being solved: its start, its blocks, their links and discriminants.
@@ -321,7 +322,7 @@ struct Entity {
     // ES±: the order along the line (first met = -, pgp.md §5.2 and §5.4), or the
     // side of the line of centres for two circles (§5.3).
     bool by_secant(const std::vector<Cand>& cs, Cand& pick, Fail& f) const {
-        if (disc[0] == 0) return failed(f, 114, "two intersections: choose one with ES+ or ES-");
+        if (disc[0] == 0) return failed(f, 114, tr("two intersections: choose one with ES+ or ES-"));
         auto key = [&](const Cand& c) {
             if (!c.sup[0].arc) return (c.j[0] - S).dot(c.sup[0].d);
             if (!c.sup[1].arc) return (c.j[0] - c.sup[1].p).dot(c.sup[1].d);
@@ -358,9 +359,8 @@ struct Entity {
                                                  disc[0]);
                     if (m.empty()) {
                         block = 0;
-                        return failed(f, 114,
-                                      std::string("ET") + (disc[0] > 0 ? '+' : '-') +
-                                          " designates none of the tangent solutions");
+                        return failed(f, 114, strf(tr("ET%c designates none of the tangent solutions"),
+                                                   disc[0] > 0 ? '+' : '-'));
                     }
                     one = m[0];
                 }
@@ -373,13 +373,12 @@ struct Entity {
             block = 1;
             if (disc[1] == 0)
                 return failed(f, 124,
-                              "two tangencies between blocks 2 and 3: choose one with ET+ or ET-");
+                              tr("two tangencies between blocks 2 and 3: choose one with ET+ or ET-"));
             std::vector<Cand> m = by_arc(per, 1, disc[1]);
             if (m.size() != 1)
-                return failed(
-                    f, 124,
-                    std::string("ET") + (disc[1] > 0 ? '+' : '-') +
-                        " does not designate one of the two tangencies between blocks 2 and 3");
+                return failed(f, 124,
+                              strf(tr("ET%c does not designate one of the two tangencies between blocks 2 and 3"),
+                                   disc[1] > 0 ? '+' : '-'));
             pick = m[0];
         }
         return true;
@@ -419,8 +418,8 @@ Step entity(const V2& S, const Spec* const* specs, int count, const Sup* over, E
     std::erase_if(cs, [&](const Cand& c) { return !en.feasible(c); });
     if (cs.empty()) {
         failed(f, en.n == 2 ? 113 : 123,
-               en.n == 2 ? "no intersection or tangency between these two blocks"
-                         : "these three blocks give no tangency points");
+               en.n == 2 ? tr("no intersection or tangency between these two blocks")
+                         : tr("these three blocks give no tangency points"));
         return Step::Error;
     }
     return en.choose(cs, pick, f, block) ? Step::Solved : Step::Error;
@@ -456,7 +455,7 @@ bool Solver::fail(Error& err, int code, int tag, std::string detail) {
 
 bool Solver::push(const Spec& s, std::vector<Elem>& out, Error& err) {
     idle_ = 0;
-    if (s.stop && s.has_eb) return fail(err, 131, s.tag, "EB on a block with M0, M1 or M2");
+    if (s.stop && s.has_eb) return fail(err, 131, s.tag, tr("EB on a block with M0, M1 or M2"));
     // The block's own words, checked where it stands in its entity (110, 111, 121).
     Fail f;
     Elt e;
@@ -471,7 +470,7 @@ bool Solver::idle(Error& err) {
     if (!pending()) return true;
     if (++idle_ > 2)
         return fail(err, 136, wait_.empty() ? held_elem_.tag : wait_[0].spec.tag,
-                    "more than 2 blocks without motion between elements to be joined");
+                    tr("more than 2 blocks without motion between elements to be joined"));
     return true;
 }
 
@@ -479,7 +478,7 @@ bool Solver::finish(std::vector<Elem>& out, Error& err) {
     idle_ = 0;
     if (!wait_.empty())
         return fail(err, 131, wait_[0].spec.tag,
-                    "the profile ends before the end point of this element is known");
+                    tr("the profile ends before the end point of this element is known"));
     if (held_) out.push_back(held_elem_);
     held_ = false;
     return true;
@@ -539,7 +538,7 @@ bool Solver::resolve(std::vector<Elem>& out, Error& err) {
 bool Solver::deliver(Elem e, const Spec& s, std::vector<Elem>& out, Error& err) {
     double len = length(e.geo);
     if (held_) {
-        if (len < kEq) return fail(err, 130, s.tag, "zero move in a block joined by EB");
+        if (len < kEq) return fail(err, 130, s.tag, tr("zero move in a block joined by EB"));
         Elem ins;
         ins.tag = held_elem_.tag;
         ins.inserted = true;
@@ -552,7 +551,7 @@ bool Solver::deliver(Elem e, const Spec& s, std::vector<Elem>& out, Error& err) 
         out.push_back(ins);
     }
     if (s.has_eb && s.eb != 0) {
-        if (len < kEq) return fail(err, 130, s.tag, "zero move in a block joined by EB");
+        if (len < kEq) return fail(err, 130, s.tag, tr("zero move in a block joined by EB"));
         held_ = true;
         held_elem_ = e;
         held_eb_ = s.eb;

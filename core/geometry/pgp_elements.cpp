@@ -10,6 +10,7 @@
 
 #include "core/geometry/geometry.hpp"
 #include "core/numfmt.hpp"
+#include "core/i18n.hpp"
 
 namespace pupitre::pgp::detail {
 
@@ -192,13 +193,13 @@ int syntax_code(int pos) {
 // Words that do not belong together, wherever the block stands in its entity.
 bool syntax(const Spec& s, int pos, Fail& f) {
     if (s.link != 0 && s.link != 'S' && s.link != 'T')
-        return failed(f, syntax_code(pos), "ES and ET in the same block");
+        return failed(f, syntax_code(pos), tr("ES and ET in the same block"));
     if (s.g == 1 && (s.has_i || s.has_j || s.has_r))
-        return failed(f, syntax_code(pos), "a line takes no centre I J nor radius R");
-    if (s.g != 1 && s.has_ea) return failed(f, syntax_code(pos), "a circle takes no angle EA");
+        return failed(f, syntax_code(pos), tr("a line takes no centre I J nor radius R"));
+    if (s.g != 1 && s.has_ea) return failed(f, syntax_code(pos), tr("a circle takes no angle EA"));
     if (s.g != 1 && s.has_i != s.has_j)
-        return failed(f, 101, "a circle centre needs both its coordinates");
-    if (s.g != 1 && s.has_r && s.r <= 0) return failed(f, 107, "circle radius R must be positive");
+        return failed(f, 101, tr("a circle centre needs both its coordinates"));
+    if (s.g != 1 && s.has_r && s.r <= 0) return failed(f, 107, tr("circle radius R must be positive"));
     return true;
 }
 
@@ -207,9 +208,9 @@ bool syntax(const Spec& s, int pos, Fail& f) {
 bool arc_by_radius(const Spec& s, int sense, const V2& S, const V2& E, Elt& e, Fail& f) {
     V2 ch = E - S;
     double d = ch.norm();
-    if (d < 1e-9) return failed(f, 107, "circle with R: the end point equals the start point");
+    if (d < 1e-9) return failed(f, 107, tr("circle with R: the end point equals the start point"));
     if (d > 2 * s.r + kChordTol + 1e-9)
-        return failed(f, 107, "circle end point too far: chord " + fixed3(d) + " > 2R " + fixed3(2 * s.r));
+        return failed(f, 107, strf(tr("circle end point too far: chord %s > 2R %s"), fixed3(d).c_str(), fixed3(2 * s.r).c_str()));
     double h = std::sqrt(std::max(0.0, s.r * s.r - d * d / 4));
     int side = s.disc != 0 ? s.disc : sense;
     V2 c = (S + E) / 2 + side * h * perp(ch) / d;
@@ -233,7 +234,7 @@ bool first_line(const Spec& s, const V2& S, const Sup* over, Elt& e, Fail& f) {
         end = V2(s.x, s.y);
     } else if (end1 && has_d) {
         if (!along(S, d, axis, val, end))
-            return failed(f, 102, "the angle EA does not give the other coordinate");
+            return failed(f, 102, tr("the angle EA does not give the other coordinate"));
     } else if (end1) {
         end = S;  // the classic meaning: the other coordinate is unchanged
         end[axis] = val;
@@ -245,8 +246,8 @@ bool first_line(const Spec& s, const V2& S, const Sup* over, Elt& e, Fail& f) {
         return true;
     } else {
         return failed(f, 110,
-                      s.link == 'S' ? "ES on a line needs its angle EA"
-                                    : "a line needs an end point, an angle EA or ET");
+                      s.link == 'S' ? tr("ES on a line needs its angle EA")
+                                    : tr("a line needs an end point, an angle EA or ET"));
     }
     e.form = Form::Complete;
     e.geo.a = S;
@@ -259,17 +260,17 @@ bool first_centre(const Spec& s, const V2& S, const V2& E, Elt& e, Fail& f) {
     bool end2 = s.has_x && s.has_y, end1 = s.has_x != s.has_y;
     V2 c(s.i, s.j);
     double r0 = (S - c).norm();
-    if (r0 < kEq) return failed(f, 107, "circle centre on the start point");
+    if (r0 < kEq) return failed(f, 107, tr("circle centre on the start point"));
     if (s.has_r && std::fabs(s.r - r0) > kArcTol + 1e-9)
         return failed(f, 107,
-                      "radius R " + fixed3(s.r) + " differs from the start radius " + fixed3(r0));
+                      strf(tr("radius R %s differs from the start radius %s"), fixed3(s.r).c_str(), fixed3(r0).c_str()));
     e.sup = circle(c, r0, e.s);
     if (!end2 && !end1) return true;
     double r1 = (E - c).norm();
     if (std::fabs(r1 - r0) > kArcTol + 1e-9)
         return failed(f, 107,
-                      "circle end point inconsistent: start radius " + fixed3(r0) +
-                          ", end radius " + fixed3(r1) + " (more than 0.020 apart)");
+                      strf(tr("circle end point inconsistent: start radius %s, end radius %s (more than 0.020 apart)"),
+                           fixed3(r0).c_str(), fixed3(r1).c_str()));
     e.form = Form::Complete;
     e.geo = piece(e.sup, S, E);
     if ((E - S).norm() < 1e-7) {  // a full circle, as in classic programming
@@ -305,7 +306,7 @@ bool first_elt(const Spec& s, const V2& S, const Sup* over, Elt& e, Fail& f) {
         e.r = s.r;
         return true;
     }
-    return failed(f, 101, "a circle needs its centre I J or its radius R");
+    return failed(f, 101, tr("a circle needs its centre I J or its radius R"));
 }
 
 namespace {
@@ -326,7 +327,7 @@ bool next_line(const Spec& s, int pos, Elt& e, Fail& f) {
             e.end = E;
         } else {
             if (end1 && std::fabs(d[e.end_axis]) < 1e-12)
-                return failed(f, 102, "the angle EA does not give the other coordinate");
+                return failed(f, 102, tr("the angle EA does not give the other coordinate"));
             e.form = Form::Angle;
             e.d = d;
         }
@@ -341,8 +342,8 @@ bool next_line(const Spec& s, int pos, Elt& e, Fail& f) {
         e.form = Form::Free;
     } else {
         return failed(f, syntax_code(pos),
-                      s.link == 'S' ? "ES on a line needs its angle EA"
-                                    : "a line needs an end point, an angle EA or ET");
+                      s.link == 'S' ? tr("ES on a line needs its angle EA")
+                                    : tr("a line needs an end point, an angle EA or ET"));
     }
     return true;
 }
@@ -354,10 +355,10 @@ bool next_centre(const Spec& s, Elt& e, Fail& f) {
     V2 c(s.i, s.j);
     if (end2) {
         double r = (E - c).norm();
-        if (r < kEq) return failed(f, 107, "circle centre on the end point");
+        if (r < kEq) return failed(f, 107, tr("circle centre on the end point"));
         if (s.has_r && std::fabs(s.r - r) > kArcTol + 1e-9)
             return failed(f, 107,
-                          "radius R " + fixed3(s.r) + " differs from the end radius " + fixed3(r));
+                          strf(tr("radius R %s differs from the end radius %s"), fixed3(s.r).c_str(), fixed3(r).c_str()));
         e.sup = circle(c, r, e.s);
         e.has_end = true;
         e.end = E;
@@ -381,7 +382,7 @@ bool next_elt(const Spec& s, int pos, Elt& e, Fail& f) {
     bool end2 = s.has_x && s.has_y, end1 = s.has_x != s.has_y;
     V2 E(s.x, s.y);
     if (s.g == 1) return next_line(s, pos, e, f);
-    if (end1) return failed(f, 101, "a circle whose start is computed needs both end coordinates");
+    if (end1) return failed(f, 101, tr("a circle whose start is computed needs both end coordinates"));
     if (s.has_i) return next_centre(s, e, f);
     if (s.has_r) {
         e.form = Form::Radius;
@@ -390,7 +391,7 @@ bool next_elt(const Spec& s, int pos, Elt& e, Fail& f) {
         e.end = E;
         return true;
     }
-    return failed(f, 101, "a circle needs its centre I J or its radius R");
+    return failed(f, 101, tr("a circle needs its centre I J or its radius R"));
 }
 
 // ---------------------------------------------------------------------------
@@ -402,18 +403,19 @@ int corner(comp::Elem& h, double eb, comp::Elem& e, comp::Elem& ins, std::string
     V2 P = h.b, t1 = comp::end_tangent(h), t2 = comp::start_tangent(e);
     double cr = cross(t1, t2);
     if (eb < 0 && (h.arc || e.arc)) {
-        detail = "a chamfer joins two lines only";
+        detail = tr("a chamfer joins two lines only");
         return 135;
     }
     if (std::fabs(cr) < 1e-9) {
         detail =
-            t1.dot(t2) > 0 ? "EB between two tangent elements" : "EB where the path turns back";
+            t1.dot(t2) > 0 ? tr("EB between two tangent elements") : tr("EB where the path turns back");
         return 113;
     }
     if (eb < 0) {
         double c = -eb, l1 = length(h), l2 = length(e);
         if (c > l1 + kEq || c > l2 + kEq) {
-            detail = "chamfer " + fixed3(c) + " longer than the lines (" + fixed3(l1) + ", " + fixed3(l2) + ")";
+            detail = strf(tr("chamfer %s longer than the lines (%s, %s)"), fixed3(c).c_str(), fixed3(l1).c_str(),
+                          fixed3(l2).c_str());
             return 113;
         }
         V2 a = c > l1 - kEq ? h.a : V2(P - c * t1), b = c > l2 - kEq ? e.b : V2(P + c * t2);
@@ -449,7 +451,7 @@ int corner(comp::Elem& h, double eb, comp::Elem& e, comp::Elem& ins, std::string
                 }
             }
     if (best > 1e299) {
-        detail = "fillet radius " + fixed3(r) + " too large for the elements it joins";
+        detail = strf(tr("fillet radius %s too large for the elements it joins"), fixed3(r).c_str());
         return 113;
     }
     h = h.arc ? piece(s1, h.a, a0) : comp::Elem{false, h.a, a0};

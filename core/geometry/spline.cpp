@@ -2,6 +2,7 @@
 // clamped to the given tangents or natural at free ends.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/geometry/spline.hpp"
+#include "core/i18n.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -59,11 +60,11 @@ std::vector<double> second_derivatives(const std::vector<double>& s, const std::
 
 int build(Curve& c, std::string& why) {
     if (c.pts.size() < 3) {
-        why = "a spline needs at least 3 points (" + std::to_string(c.pts.size()) + " given)";
+        why = strf(tr("a spline needs at least 3 points (%zu given)"), c.pts.size());
         return 604;
     }
     if (c.pts.size() > 255) {
-        why = "a spline has at most 255 points";
+        why = tr("a spline has at most 255 points");
         return 604;
     }
     c.s.assign(c.pts.size(), 0);
@@ -72,7 +73,7 @@ int build(Curve& c, std::string& why) {
         for (size_t k = 0; k < d.size(); ++k) d[k] = c.pts[i][k] - c.pts[i - 1][k];
         double l = norm(d);
         if (l < 1e-6) {
-            why = "two consecutive spline points are the same (point " + std::to_string(i + 1) + ")";
+            why = strf(tr("two consecutive spline points are the same (point %zu)"), size_t(i + 1));
             return 603;
         }
         c.s[i] = c.s[i - 1] + l;
@@ -82,7 +83,7 @@ int build(Curve& c, std::string& why) {
         if (t->empty()) continue;
         double l = norm(*t);
         if (l < 1e-12) {
-            why = "a spline end tangent is a zero vector";
+            why = tr("a spline end tangent is a zero vector");
             return 603;
         }
         for (double x : *t) u->push_back(x / l);  // unit speed along the chord-length parameter

@@ -7,6 +7,7 @@
 
 #include "core/interp/gate.hpp"
 #include "core/interp/plan.hpp"
+#include "core/i18n.hpp"
 
 namespace pupitre {
 
@@ -94,7 +95,7 @@ bool Interpreter::start_imd(const ProgramText* p) {
 
 int Interpreter::jog(int axis, double delta, std::string& why) {
     if (!m_.has(axis)) {
-        why = std::string("the machine has no ") + kAxisNames[size_t(axis)] + " axis";
+        why = strf(tr("the machine has no %c axis"), kAxisNames[size_t(axis)]);
         return 1;
     }
     Axes to = mach_;
@@ -228,7 +229,7 @@ std::string Interpreter::set(std::string_view name, double value, bool immediate
     };
     int axis;
     if (axis_suffix("PREF", axis) || axis_suffix("DEC1", axis) || axis_suffix("DEC3", axis)) {
-        if (!m_.has(axis)) return "axis " + std::string(1, name.back()) + " is not on " + m_.name;
+        if (!m_.has(axis)) return strf(tr("axis %c is not on %s"), name.back(), m_.name.c_str());
         Axes& which = name[0] == 'P' ? frames_.pref : name[3] == '1' ? frames_.dec1 : frames_.dec3;
         which[size_t(axis)] = value;
         if (immediate) recompute_program_pos();
@@ -237,15 +238,15 @@ std::string Interpreter::set(std::string_view name, double value, bool immediate
     if (name.size() >= 2 && name[0] == 'L') {
         double n;
         if (!parse_double(name.substr(1), n) || !LVars::valid(int(n)) || n != std::floor(n))
-            return "no such L variable (L0-L19, L100-L199, L900-L959)";
+            return tr("no such L variable (L0-L19, L100-L199, L900-L959)");
         l_.v[size_t(n)] = value;
         l_.written.set(size_t(n));
         return {};
     }
     if (name.size() >= 2 && name[0] == 'E') {
         double n;
-        if (!parse_double(name.substr(1), n) || n != std::floor(n)) return "bad E parameter number";
-        if (value != std::floor(value)) return "E parameters hold integers (internal units)";
+        if (!parse_double(name.substr(1), n) || n != std::floor(n)) return tr("bad E parameter number");
+        if (value != std::floor(value)) return tr("E parameters hold integers (internal units)");
         std::string why;
         int rc = write_e(int(n), int64_t(value), why);
         e_written_.erase(int(n));  // a setting, not a write by the program
@@ -257,7 +258,7 @@ std::string Interpreter::set(std::string_view name, double value, bool immediate
         double d;
         if (dot == std::string_view::npos || !parse_double(name.substr(1, dot - 1), d) ||
             d < 1 || d > m_.correctors || d != std::floor(d))
-            return "corrector must be D1 to D" + std::to_string(m_.correctors);
+            return strf(tr("corrector must be D1 to D%d"), int(m_.correctors));
         Corrector& c = corr_[size_t(d)];
         std::string_view f = name.substr(dot + 1);
         if (m_.lathe) {
@@ -267,14 +268,14 @@ std::string Interpreter::set(std::string_view name, double value, bool immediate
             else if (f == "C") c.c = int(value);
             else if (f == "DX") c.dx = value;
             else if (f == "DZ") c.dz = value;
-            else return "lathe correctors have X Z R C DX DZ";
+            else return tr("lathe correctors have X Z R C DX DZ");
         } else {
             if (f == "L") c.l = value;
             else if (f == "R") c.r = value;
             else if (f == "DL") c.dl = value;
             else if (f == "DR") c.dr = value;
             else if (f == "A" || f == "TIP") c.tip = value;
-            else return "mill correctors have L R DL DR and the end radius A";
+            else return tr("mill correctors have L R DL DR and the end radius A");
         }
         // The active corrector's new gauge applies at the next move of each of
         // its axes (turning.md §3.4); a new radius at the next G41/G42.
@@ -284,7 +285,8 @@ std::string Interpreter::set(std::string_view name, double value, bool immediate
         }
         return {};
     }
-    return "unknown setting (PREF.X, DEC1.Z, DEC3.Y, D1.R, L5, E80000…)";
+    // TRANSLATORS: %s is an ellipsis (U+2026); msgids stay ASCII.
+    return strf(tr("unknown setting (PREF.X, DEC1.Z, DEC3.Y, D1.R, L5, E80000%s)"), "\u2026");
 }
 
 bool Interpreter::get(std::string_view name, double& out) const {
@@ -324,7 +326,7 @@ bool Interpreter::get(std::string_view name, double& out) const {
 bool Interpreter::start(int program) {
     const ProgramText* p = mem_.find(program);
     if (!p) {
-        fail(25, "program %" + std::to_string(program) + " is not in memory");
+        fail(25, strf(tr("program %%%d is not in memory"), program));
         return false;
     }
     return start(p);
@@ -379,7 +381,7 @@ bool Interpreter::end_of_frame() {
         // Error 20 only for the main program (DESIGN §3, spec README (b) 28).
         loc_.line = f.line - 1;
         loc_.n = -1;
-        fail(20, "end of program %" + std::to_string(main_->number) + " without M02");
+        fail(20, strf(tr("end of program %%%d without M02"), main_->number));
         out_.end(loc_, 0);
         return false;
     }
@@ -430,8 +432,7 @@ bool Interpreter::call(const Plan& p) {
         // G77 -i: the return block of level i (spec README (b) 24).
         int depth = int(stack_.size()) - 1;
         if (p.g77_level > depth) {
-            fail(26, "G77 -" + std::to_string(p.g77_level) + ": there is no call level " +
-                         std::to_string(p.g77_level) + " (depth " + std::to_string(depth) + ")");
+            fail(26, strf(tr("G77 -%d: there is no call level %d (depth %d)"), p.g77_level, p.g77_level, depth));
             return false;
         }
         const Frame& caller = stack_[size_t(p.g77_level - 1)];
@@ -446,13 +447,12 @@ bool Interpreter::call(const Plan& p) {
     if (p.g77_h >= 0) {
         target = mem_.find(p.g77_h);
         if (!target) {
-            fail(25, "G77 H" + std::to_string(p.g77_h) + ": program %" + std::to_string(p.g77_h) +
-                         " is not in memory");
+            fail(25, strf(tr("G77 H%d: program %%%d is not in memory"), p.g77_h, p.g77_h));
             return false;
         }
     }
     if (stack_.size() > 8) {
-        fail(26, "more than 8 nested G77 calls");
+        fail(26, tr("more than 8 nested G77 calls"));
         return false;
     }
     Frame f;
@@ -467,7 +467,7 @@ bool Interpreter::call(const Plan& p) {
     f.saved_m8 = modal_.m8;
     if (p.g77_nn == 0) {
         if (p.g77_h < 0) {
-            fail(25, "G77 needs H (a program) or N labels");
+            fail(25, tr("G77 needs H (a program) or N labels"));
             return false;
         }
         f.whole = true;
@@ -478,8 +478,7 @@ bool Interpreter::call(const Plan& p) {
         const Label* b = target->find_label(p.g77_nn > 1 ? p.g77_n[1] : p.g77_n[0]);
         if (!a || !b) {
             long missing = !a ? p.g77_n[0] : p.g77_n[1];
-            fail(25, "G77: block N" + std::to_string(missing) + " not found in %" +
-                         std::to_string(target->number));
+            fail(25, strf(tr("G77: block N%ld not found in %%%d"), missing, target->number));
             return false;
         }
         // G77 N50 N30 runs the same range as G77 N30 N50, in file order (004:896).
@@ -496,8 +495,7 @@ bool Interpreter::jump(long label) {
     Frame& f = stack_.back();
     const Label* l = f.prog->find_label(label);
     if (!l) {
-        fail(25, "G79: block N" + std::to_string(label) + " not found in %" +
-                     std::to_string(f.prog->number));
+        fail(25, strf(tr("G79: block N%ld not found in %%%d"), label, f.prog->number));
         return false;
     }
     if (l->offset < f.pos) {
@@ -537,12 +535,10 @@ StepResult Interpreter::step() {
         break;
     }
     if (++blocks_ > opt_.max_blocks)
-        return fail(err::kBlockBudget, "more than " + std::to_string(opt_.max_blocks) +
-                                           " blocks executed: endless loop? (G79/G77)");
+        return fail(err::kBlockBudget, strf(tr("more than %ld blocks executed: endless loop? (G79/G77)"), opt_.max_blocks));
     // The work done, not only the blocks: one cycle block makes many moves.
     if (moves_ > 2 * opt_.max_blocks)
-        return fail(err::kBlockBudget, "more than " + std::to_string(2 * opt_.max_blocks) +
-                                           " moves made: endless loop? (G79/G77)");
+        return fail(err::kBlockBudget, strf(tr("more than %ld moves made: endless loop? (G79/G77)"), 2 * opt_.max_blocks));
     size_t depth = stack_.size();
     StepResult r = execute(block_);
     if (r == StepResult::error || ended_) return r;
@@ -564,7 +560,7 @@ StepResult Interpreter::run_to_end() {
 int Interpreter::e_rights(int n, bool write, std::string& why) const {
     auto ro = [&]() {
         if (!write) return 0;
-        why = "E" + std::to_string(n) + " is read-only";
+        why = strf(tr("E%d is read-only"), n);
         return 95;
     };
     int type = n / 10000;
@@ -589,7 +585,7 @@ int Interpreter::e_rights(int n, bool write, std::string& why) const {
     if (n >= 80000 && n <= 80049) return 0;
     if (n == 81000 || n == 82000) return 0;
     if (n >= 90000 && n <= 93007 && (n % 1000) <= 7) return ro();
-    why = "E" + std::to_string(n) + " does not exist";
+    why = strf(tr("E%d does not exist"), n);
     return 91;
 }
 
@@ -602,11 +598,11 @@ double mm_of(int64_t v) { return double(v) / 1000.0; }
 // after an incomplete profile block (96) (program-flow.md §9.4).
 int Interpreter::e_access(std::string& why) const {
     if (modal_.radcomp != 40) {
-        why = "E parameter access under radius compensation (G41/G42)";
+        why = tr("E parameter access under radius compensation (G41/G42)");
         return 140;
     }
     if (pgp_.pending()) {
-        why = "E parameter access after an incomplete profile block";
+        why = tr("E parameter access after an incomplete profile block");
         return 96;
     }
     return 0;
@@ -665,7 +661,7 @@ int Interpreter::write_e(int n, int64_t value, std::string& why) {
     if (int rc = e_access(why)) return rc;
     if (int rc = e_rights(n, true, why)) return rc;
     if (value > INT32_MAX || value < INT32_MIN) {
-        why = "value " + std::to_string(value) + " does not fit an E parameter";
+        why = strf(tr("value %lld does not fit an E parameter"), (long long)value);
         return 92;
     }
     int x = (n / 1000) % 10, k = n % 1000, type = n / 10000;
@@ -698,7 +694,7 @@ int Interpreter::write_e(int n, int64_t value, std::string& why) {
     }
     if (n == 69000) {
         if (value < 1 || value > 9999000) {
-            why = "scale factor E69000 must be 1 to 9999000 (0.001 to 9999)";
+            why = tr("scale factor E69000 must be 1 to 9999000 (0.001 to 9999)");
             return 92;
         }
         e_raw_[n] = value;

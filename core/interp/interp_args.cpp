@@ -3,6 +3,7 @@
 // its number.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/interp/decode.hpp"
+#include "core/i18n.hpp"
 
 namespace pupitre {
 
@@ -43,14 +44,14 @@ bool Interpreter::Decoder::unused_arg(const Word&) { return true; }
 bool Interpreter::Decoder::g4_dwell(const Word& w) {
     double v;
     if (!in.word_value(w, v)) return false;
-    if (v < 0.01 || v > 99.99) return bad(1, "dwell must be 0.01 to 99.99 s", w.col);
+    if (v < 0.01 || v > 99.99) return bad(1, tr("dwell must be 0.01 to 99.99 s"), w.col);
     p.dwell = v;
     return true;
 }
 
 bool Interpreter::Decoder::g16_arg(const Word& w) {
     if (w.v.kind != Operand::SignOnly)
-        return bad(2, "G16 takes P, Q or R followed by a sign only (G16 R+)", w.col);
+        return bad(2, tr("G16 takes P, Q or R followed by a sign only (G16 R+)"), w.col);
     const char c = letter(w);
     p.g16_axis = c == 'P' ? X : c == 'Q' ? Y : Z;
     p.g16_neg = w.v.neg;
@@ -60,7 +61,7 @@ bool Interpreter::Decoder::g16_arg(const Word& w) {
 bool Interpreter::Decoder::g51_arg(const Word& w) {
     int axis = -1;
     if (!axis_addr(w.addr, axis) || w.v.kind != Operand::SignOnly)
-        return bad(3, "G51 takes axis letters with a sign only (G51 X- Y+)", w.col);
+        return bad(3, tr("G51 takes axis letters with a sign only (G51 X- Y+)"), w.col);
     (w.v.neg ? p.g51_on : p.g51_off).set(size_t(axis));
     return true;
 }
@@ -70,7 +71,7 @@ bool Interpreter::Decoder::g59_arg(const Word& w) {
     int axis = -1;
     if (!in.word_value(w, v)) return false;
     if (axis_addr(w.addr, axis)) {
-        if (!m.has(axis)) return bad(1, std::string("axis ") + letter(w) + " is not on this machine", w.col);
+        if (!m.has(axis)) return bad(1, strf(tr("axis %c is not on this machine"), letter(w)), w.col);
         // G52/G59 X on a lathe is a radius (turning.md §2.8).
         p.g59_axis.set(size_t(axis));
         p.g59_val[size_t(axis)] = is_rotary(axis) ? v : v * unit;
@@ -97,7 +98,7 @@ bool Interpreter::Decoder::g92_arg(const Word& w) {
         p.g92_r = true;
         p.g92_r_val = v * unit;
     } else if (axis_addr(w.addr, axis)) {
-        if (!m.has(axis)) return bad(1, std::string("axis ") + c + " is not on this machine", w.col);
+        if (!m.has(axis)) return bad(1, strf(tr("axis %c is not on this machine"), c), w.col);
         p.g92_axis.set(size_t(axis));
         p.g92_val[size_t(axis)] = is_rotary(axis) ? v : (axis == X && diam ? v * unit / 2 : v * unit);
     }
@@ -144,17 +145,17 @@ bool Interpreter::Decoder::g77_arg(const Word& w) {
     const char c = letter(w);
     if (c == 'N') {
         if (!in.word_value(w, v, &iv)) return false;
-        if (p.g77_nn >= 2) return bad(3, "G77 takes at most two N labels", w.col);
+        if (p.g77_nn >= 2) return bad(3, tr("G77 takes at most two N labels"), w.col);
         p.g77_n[p.g77_nn++] = iv;
     } else if (c == 'H') {
         if (!in.word_value(w, v, &iv)) return false;
         p.g77_h = iv;
     } else if (c == 'S') {
         if (!in.word_value(w, v, &iv)) return false;
-        if (iv < 1 || iv > 100) return bad(1, "G77 S repeat count must be 1 to 100", w.col);
+        if (iv < 1 || iv > 100) return bad(1, tr("G77 S repeat count must be 1 to 100"), w.col);
         p.g77_s = iv;
     } else {  // P: PROFIL contour
-        return bad(4, "G77 P (PROFIL contour) is an option this machine does not have", w.col);
+        return bad(4, tr("G77 P (PROFIL contour) is an option this machine does not have"), w.col);
     }
     return true;
 }
@@ -181,7 +182,7 @@ bool Interpreter::Decoder::g76_arg(const Word& w) {
     } else if (p.g76_nn < 2) {
         p.g76_n[p.g76_nn++] = iv;
     } else {
-        return bad(3, "G76 takes at most two N labels", w.col);
+        return bad(3, tr("G76 takes at most two N labels"), w.col);
     }
     return true;
 }
@@ -193,12 +194,12 @@ bool Interpreter::Decoder::profile_cycle_arg(const Word& w) {
         int iv;
         double v;
         if (!in.word_value(w, v, &iv)) return false;
-        if (p.spl_nn >= 2) return bad(3, "a cycle takes two N labels", w.col);
+        if (p.spl_nn >= 2) return bad(3, tr("a cycle takes two N labels"), w.col);
         p.spl_n[p.spl_nn++] = iv;
         return true;
     }
     if (w.addr == addrE('P') && owner_g != 66)
-        return bad(4, "EP (PROFIL contour) is an option this machine does not have", w.col);
+        return bad(4, tr("EP (PROFIL contour) is an option this machine does not have"), w.col);
     return cyc_word(w);
 }
 
@@ -211,7 +212,7 @@ bool Interpreter::Decoder::spline_arg(const Word& w) {
     if (w.addr == addrN('C')) p.spl_nc = iv;
     else if (c == 'H') p.spl_h = iv;
     else if (c == 'N' && p.spl_nn < 2) p.spl_n[p.spl_nn++] = iv;
-    else return bad(3, "G48 takes NC, H and two N labels", w.col);
+    else return bad(3, tr("G48 takes NC, H and two N labels"), w.col);
     return true;
 }
 
@@ -223,8 +224,8 @@ bool Interpreter::Decoder::drill_arg(const Word& w) { return cyc_word(w); }
 bool Interpreter::Decoder::g46_arg(const Word& w) {
     if (w.addr != addrN('R')) return cyc_word(w);
     if (w.v.kind != Operand::SignOnly && w.v.kind != Operand::Blank)
-        return bad(267, "NR takes a sign only (NR+ climb, NR- conventional)", w.col);
-    if (p.ncyc >= 16) return bad(3, "too many cycle words in one block", w.col);
+        return bad(267, tr("NR takes a sign only (NR+ climb, NR- conventional)"), w.col);
+    if (p.ncyc >= 16) return bad(3, tr("too many cycle words in one block"), w.col);
     p.cyc[p.ncyc++] = {w.addr, w.v.neg ? -1.0 : 1.0};
     return true;
 }
@@ -235,7 +236,7 @@ bool Interpreter::Decoder::g78_arg(const Word& w) {
     int iv;
     double v;
     if (!in.word_value(w, v, &iv)) return false;
-    if (iv != 1) return bad(78, "G78 P" + std::to_string(iv) + ": this machine has one axis group (P1)", w.col);
+    if (iv != 1) return bad(78, strf(tr("G78 P%d: this machine has one axis group (P1)"), iv), w.col);
     p.g78_p = true;
     return true;
 }

@@ -10,6 +10,7 @@
 
 #include "core/interp/gate.hpp"
 #include "core/interp/plan.hpp"
+#include "core/i18n.hpp"
 
 namespace pupitre {
 
@@ -106,7 +107,7 @@ bool Interpreter::comp_element(const comp::Elem& e, int g, const Axes& target, d
     out_.profile(loc_, pe);
     if (comp_.waiting_entry) {
         if (e.arc)
-            return fail(140, "the first block in radius compensation must be a line (G00 or G01)"), false;
+            return fail(140, tr("the first block in radius compensation must be a line (G00 or G01)")), false;
         Axes tp = frames_.to_program(mach_);
         comp_.tc = comp::V2(tp[size_t(comp_.a0)], tp[size_t(comp_.a1)]) - comp_.shift;
         comp_.waiting_entry = false;
@@ -128,8 +129,8 @@ bool Interpreter::comp_element(const comp::Elem& e, int g, const Axes& target, d
         p.to = next_from;
         pieces.push_back(p);
     } else if (int rc = comp::join(comp_.pending, comp_.tc, e, comp_.radius, comp_.side, pieces, next_from)) {
-        return fail(rc, "the tool radius " + std::to_string(comp_.radius).substr(0, 7) +
-                            " does not fit the profile here (an offset element vanishes or reverses)"),
+        return fail(rc, strf(tr("the tool radius %s does not fit the profile here (an offset element vanishes or reverses)"),
+                             std::to_string(comp_.radius).substr(0, 7).c_str())),
                false;
     }
     if (!comp_emit(pieces, comp_.ctx)) return false;
@@ -178,7 +179,7 @@ bool Interpreter::comp_other_axes(const Axes& target, const std::bitset<kAxes>& 
 // line) goes from there to the programmed point.
 bool Interpreter::comp_exit(const Plan&, const Axes* target) {
     if (target && (modal_.motion == 2 || modal_.motion == 3))
-        return fail(140, "the block that ends radius compensation (G40) must be a line"), false;
+        return fail(140, tr("the block that ends radius compensation (G40) must be a line")), false;
     if (comp_.has_pending) {
         std::vector<comp::Piece> pieces;
         gate_->holding = false;
@@ -187,7 +188,7 @@ bool Interpreter::comp_exit(const Plan&, const Axes* target) {
             p.to = comp_.pending.b;
             pieces.push_back(p);
         } else if (int rc = comp::finish(comp_.pending, comp_.tc, comp_.radius, comp_.side, pieces)) {
-            return fail(rc, "the tool radius does not fit the last element of the profile"), false;
+            return fail(rc, tr("the tool radius does not fit the last element of the profile")), false;
         }
         if (!comp_emit(pieces, comp_.ctx)) return false;
         gate_->release();

@@ -8,6 +8,7 @@
 #include "core/interp/gate.hpp"
 #include "core/interp/plan.hpp"
 #include "core/numfmt.hpp"
+#include "core/i18n.hpp"
 
 namespace pupitre {
 
@@ -21,23 +22,23 @@ StepResult Interpreter::execute(const Block& b) {
         const Operand& t = a.target;
         if (t.kind == Operand::LVar) {
             if (!LVars::valid(t.index))
-                return fail(91, "L" + std::to_string(t.index) + " does not exist (L0-L19, L100-L199, L900-L959)", a.col);
+                return fail(91, strf(tr("L%d does not exist (L0-L19, L100-L199, L900-L959)"), t.index), a.col);
             if (t.index >= 100 && t.index <= 199 && modal_.radcomp != 40)
-                return fail(140, "writing L" + std::to_string(t.index) + " under radius compensation", a.col);
+                return fail(140, strf(tr("writing L%d under radius compensation"), t.index), a.col);
             if (t.index >= 100 && t.index <= 199 && pgp_.pending())
-                return fail(96, "writing L" + std::to_string(t.index) + " after an incomplete profile block", a.col);
+                return fail(96, strf(tr("writing L%d after an incomplete profile block"), t.index), a.col);
             l_.v[size_t(t.index)] = v;
             l_.written.set(size_t(t.index));
         } else {
             int n = t.index;
             if (t.kind == Operand::EIndirect) {
-                if (!LVars::valid(t.index)) return fail(91, "L" + std::to_string(t.index) + " does not exist", a.col);
+                if (!LVars::valid(t.index)) return fail(91, strf(tr("L%d does not exist"), t.index), a.col);
                 double nn = l_.v[size_t(t.index)];
                 if (nn < 0 || nn > 99999 || nn != std::floor(nn))
-                    return fail(91, "L" + std::to_string(t.index) + " does not hold an E number", a.col);
+                    return fail(91, strf(tr("L%d does not hold an E number"), t.index), a.col);
                 n = int(nn);
             }
-            if (std::fabs(v) > 9.2e18) return fail(92, "value too large for an E parameter", a.col);
+            if (std::fabs(v) > 9.2e18) return fail(92, tr("value too large for an E parameter"), a.col);
             // A decimal stored into E is truncated toward zero (program-flow.md §9.3).
             if (int rc = write_e(n, int64_t(std::trunc(v)), why)) return fail(rc, why, a.col);
         }
@@ -54,8 +55,8 @@ StepResult Interpreter::execute(const Block& b) {
     }
     if (p.unsupported >= 0) {
         const GCode* g = find_g(p.unsupported);
-        return fail(err::kUnsupported, "G" + std::to_string(p.unsupported) + " (" + std::string(g->text) +
-                                           ") is not yet supported by pupitre");
+        return fail(err::kUnsupported, strf(tr("G%d (%s) is not yet supported by pupitre"), p.unsupported,
+                                            tr(std::string(g->text).c_str())));
     }
     // G76+/G76- edit the program memory and do nothing else.
     if (p.g76_sign) return edit_program(b, p) ? StepResult::running : StepResult::error;
@@ -72,23 +73,23 @@ StepResult Interpreter::execute(const Block& b) {
     }
     if (p.has_eb)
         for (int i = 0; i < p.nm; ++i)
-            if (p.m[i] <= 2) return fail(131, "a fillet or chamfer (EB) in a block with M0" + std::to_string(p.m[i]));
+            if (p.m[i] <= 2) return fail(131, strf(tr("a fillet or chamfer (EB) in a block with M0%d"), p.m[i]));
     if (pgp_.pending()) {
         // The held element needs the next blocks (pgp.md §6 item 5).
         if (p.plane >= 0 && p.plane != modal_.plane)
-            return fail(137, "plane change while a profile element is incomplete");
+            return fail(137, tr("plane change while a profile element is incomplete"));
         for (int i = 0; i < p.nm; ++i)
             if (p.m[i] == 2 && !pgp_close()) return StepResult::error;  // the solver says why (101, 131)
     }
     if (p.g[78]) {
         for (int i = 0; i < p.nm; ++i)
             if (p.m[i] == 0 || p.m[i] == 1)
-                return fail(78, "G78 with a program stop M0" + std::to_string(p.m[i]));
+                return fail(78, strf(tr("G78 with a program stop M0%d"), p.m[i]));
     }
 
     // Radius compensation restrictions (turning.md §3.7, milling.md §4.4.2).
     bool comp = modal_.radcomp != 40;
-    if (comp && p.g[16]) return fail(140, "G16 under radius compensation");
+    if (comp && p.g[16]) return fail(140, tr("G16 under radius compensation"));
 
     if (!apply_modal(p)) return StepResult::error;
     if (!do_m_avant(p)) return StepResult::error;
@@ -99,14 +100,14 @@ StepResult Interpreter::execute(const Block& b) {
         clock_ += p.dwell;
         out_.dwell(loc_, p.dwell);
     } else if (p.g[4]) {
-        return fail(2, "G4 needs the dwell time in F (G4 F1.5)");
+        return fail(2, tr("G4 needs the dwell time in F (G4 F1.5)"));
     }
     StepResult r = StepResult::running;
     if (!do_m_apres(p, r)) return StepResult::error;
     if (ended_) return r;
 
     if (p.g[79] && !p.g79_sign) {
-        if (p.g79_n < 0) return fail(2, "G79 needs the label to jump to (G79 N100)");
+        if (p.g79_n < 0) return fail(2, tr("G79 needs the label to jump to (G79 N100)"));
         bool go = true;
         if (b.test.cmp != Cmp::none) {
             double lhs, rhs;
@@ -120,9 +121,9 @@ StepResult Interpreter::execute(const Block& b) {
     }
     if (p.g[48] && !spline_define(p)) return StepResult::error;
     if (p.g[49]) {
-        if (modal_.radcomp != 40) return fail(140, "G49 must be programmed in G40");
+        if (modal_.radcomp != 40) return fail(140, tr("G49 must be programmed in G40"));
         if (p.spl_nc <= 0 || !splines_.erase(p.spl_nc))
-            return fail(605, "G49: curve NC" + std::to_string(p.spl_nc) + " is not defined");
+            return fail(605, strf(tr("G49: curve NC%d is not defined"), p.spl_nc));
     }
     if (p.g[76] && !transfer(p)) return StepResult::error;
     if (p.g[77] && !call(p)) return StepResult::error;
@@ -134,7 +135,7 @@ bool Interpreter::apply_modal(const Plan& p) {
     if (p.motion >= 0) modal_.motion = p.motion;
     if (p.dist >= 0) modal_.incremental = p.dist == 91;
     if (p.plane >= 0 && p.plane != modal_.plane) {
-        if (comp) return fail(138, "plane change under radius compensation (program G40 first)"), false;
+        if (comp) return fail(138, tr("plane change under radius compensation (program G40 first)")), false;
         modal_.plane = p.plane;
     }
     if (p.units >= 0) modal_.inch = p.units == 70;
@@ -154,13 +155,13 @@ bool Interpreter::apply_modal(const Plan& p) {
         modal_.cycle = p.cycle;
     }
     if (p.g[16] && modal_.cycle >= 81 && modal_.cycle <= 89)
-        return fail(890, "G16 while a drilling cycle is active"), false;
+        return fail(890, tr("G16 while a drilling cycle is active")), false;
     if (p.prefdec >= 0 && (p.prefdec == 53) != frames_.g53) {
         frames_.g53 = p.prefdec == 53;
         recompute_program_pos();
     }
     if (p.scale >= 0 && (p.scale == 74) != frames_.scale_on) {
-        if (comp) return fail(143, "G73/G74 under radius compensation"), false;
+        if (comp) return fail(143, tr("G73/G74 under radius compensation")), false;
         frames_.scale_on = p.scale == 74;
         recompute_program_pos();
     }
@@ -171,11 +172,12 @@ bool Interpreter::apply_modal(const Plan& p) {
     // Warning 1115 at every G94/G95 block without F (seed 000: "doit être suivie
     // obligatoirement de l'argument F"; CLARIFICATIONS 18).
     if ((p.feed_mode == 94 || p.feed_mode == 95) && !p.has_f && m_.strict)
-        return fail(2, "G" + std::to_string(p.feed_mode) + " without F (seed 000: F is its mandatory argument)"), false;
+        return fail(2, strf(tr("G%d without F (seed 000: F is its mandatory argument)"), p.feed_mode)), false;
     if ((p.feed_mode == 94 || p.feed_mode == 95) && !p.has_f)
-        warn(err::wFeedModeNoF, "G" + std::to_string(p.feed_mode) + " without F in its block: the feed " +
-                                    (p.feed_mode != modal_.feed_mode ? "unit changes and the next feed move needs F"
-                                                                     : "stays F" + fixed3(modal_.feed)));
+        warn(err::wFeedModeNoF,
+             p.feed_mode != modal_.feed_mode
+                 ? strf(tr("G%d without F in its block: the feed unit changes and the next feed move needs F"), p.feed_mode)
+                 : strf(tr("G%d without F in its block: the feed stays F%s"), p.feed_mode, fixed3(modal_.feed).c_str()));
     if (p.feed_mode >= 0 && p.feed_mode != modal_.feed_mode) {
         modal_.feed_mode = p.feed_mode;
         if (!p.has_f) modal_.feed_set = false;
@@ -196,7 +198,7 @@ bool Interpreter::apply_modal(const Plan& p) {
         // The radius is taken when G41/G42 is programmed; a change of D or R takes
         // effect after G40 and a new G41/G42 (000:898-906).
         if (p.radcomp == 29 && comp_.on)
-            return fail(140, "G29 under G41/G42: program G40 first (000:3932)"), false;
+            return fail(140, tr("G29 under G41/G42: program G40 first (000:3932)")), false;
         if (p.radcomp != 40 && p.radcomp != 29 && !comp_engage(p.radcomp)) return false;
         modal_.radcomp = p.radcomp;
         nonmotion_in_comp_ = 0;
@@ -206,12 +208,12 @@ bool Interpreter::apply_modal(const Plan& p) {
         modal_.tool_axis_neg = p.g16_neg;
         gauge_pending_.set();
     } else if (p.g[16]) {
-        return fail(2, "G16 needs P, Q or R with a sign (G16 R+)"), false;
+        return fail(2, tr("G16 needs P, Q or R with a sign (G16 R+)")), false;
     }
     // G59 offsets, modal per axis (turning.md §2.8); G91 G59 adds.
     if (p.g[59]) {
         if (p.g59_axis.none() && !p.g59_ed && p.g59_ijk.none())
-            return fail(2, "G59 needs at least one axis offset"), false;
+            return fail(2, tr("G59 needs at least one axis offset")), false;
         for (int a = 0; a < kAxes; ++a)
             if (p.g59_axis[size_t(a)])
                 frames_.g59[size_t(a)] = modal_.incremental ? frames_.g59[size_t(a)] + p.g59_val[size_t(a)]
@@ -235,26 +237,26 @@ bool Interpreter::apply_modal(const Plan& p) {
         recompute_program_pos();
     }
     if (p.g[51]) {
-        if (p.g51_on.none() && p.g51_off.none()) return fail(2, "G51 needs axes with a sign (G51 X- Y-)"), false;
+        if (p.g51_on.none() && p.g51_off.none()) return fail(2, tr("G51 needs axes with a sign (G51 X- Y-)")), false;
         frames_.mirror |= p.g51_on;
         frames_.mirror &= ~p.g51_off;
         recompute_program_pos();
     }
     if (p.g[92]) {
         if (p.g92_axis.any() && (p.g92_s || p.g92_r))
-            return fail(3, "G92 presets axes or sets S or R, not both in one block"), false;
+            return fail(3, tr("G92 presets axes or sets S or R, not both in one block")), false;
         if (p.g92_axis.none() && !p.g92_s && !p.g92_r)
-            return fail(2, "G92 needs axes (preset), S (spindle limit) or R (tangential feed)"), false;
+            return fail(2, tr("G92 needs axes (preset), S (spindle limit) or R (tangential feed)")), false;
         // new PREF = PREF + (current point / OP) - programmed value (000:1173-1179).
         for (int a = 0; a < kAxes; ++a)
             if (p.g92_axis[size_t(a)]) frames_.pref[size_t(a)] += prog_[size_t(a)] - p.g92_val[size_t(a)];
         if (p.g92_axis.any()) recompute_program_pos();
         if (p.g92_s) {
-            if (!m_.lathe) return fail(2, "G92 S (spindle limit) is a lathe function"), false;
+            if (!m_.lathe) return fail(2, tr("G92 S (spindle limit) is a lathe function")), false;
             modal_.smax = p.g92_s_val;
             if (modal_.smax > m_.spindle_max) {
-                warn(err::wSpeedClamped, "G92 S" + fixed3(modal_.smax, 63) + " above the spindle maximum " +
-                                             fixed3(m_.spindle_max, 63) + ": limited to it");
+                warn(err::wSpeedClamped, strf(tr("G92 S%s above the spindle maximum %s: limited to it"),
+                                              fixed3(modal_.smax, 63).c_str(), fixed3(m_.spindle_max, 63).c_str()));
                 modal_.smax = m_.spindle_max;
             }
         }
@@ -272,11 +274,12 @@ void Interpreter::warn_spindle_words(const Plan& p) {
     s_raw_ = 0;
     if (!p.has_s || modal_.spindle_mode != 97) return;
     if (raw != 0 && raw != p.s)
-        warn(err::wFractionalRpm, "S from a variable is " + fixed3(raw) + " rev/min, not a whole number: the spindle turns at " +
-                                      std::to_string(std::lround(p.s)) + " rev/min");
+        warn(err::wFractionalRpm, strf(tr("S from a variable is %s rev/min, not a whole number: the spindle turns at %ld rev/min"),
+                                       fixed3(raw).c_str(), std::lround(p.s)));
     else if (p.s != std::floor(p.s))
-        warn(err::wFractionalRpm, "S" + fixed3(p.s) + " rev/min is not a whole number: the spindle turns at " + fixed3(p.s) +
-                                      " rev/min; write whole rev/min (S" + std::to_string(std::lround(p.s)) + ")");
+        warn(err::wFractionalRpm,
+             strf(tr("S%s rev/min is not a whole number: the spindle turns at %s rev/min; write whole rev/min (S%ld)"),
+                  fixed3(p.s).c_str(), fixed3(p.s).c_str(), std::lround(p.s)));
 }
 
 // Warning 1111: an L read before anything set it reads 0 (CLARIFICATIONS 18:
@@ -287,9 +290,9 @@ void Interpreter::report_unset_reads() {
     for (size_t i = 0; i < l_.unset_read.size(); ++i)
         if (l_.unset_read.test(i) && !l_unset_warned_.test(i)) {
             l_unset_warned_.set(i);
-            std::string l = "L" + std::to_string(i);
-            warn(err::wLReadUnset, l + " is read before anything set it: it reads 0; assign it first (" + l +
-                                       "=...) or give it with --set " + l + "=...");
+            warn(err::wLReadUnset,
+                 strf(tr("L%zu is read before anything set it: it reads 0; assign it first (L%zu=...) or give it with --set L%zu=..."),
+                      i, i, i));
         }
     l_.unset_read.reset();
 }
@@ -299,11 +302,11 @@ bool Interpreter::apply_spindle(const Plan& p) {
     if (p.spindle_mode == 96 || p.spindle_mode == 97) {
         bool s_given = p.spindle_mode == 96 ? p.g96_s : p.g97_s;
         if (!s_given)
-            return fail(28, "G" + std::to_string(p.spindle_mode) + " must be followed by S"), false;
+            return fail(28, strf(tr("G%d must be followed by S"), p.spindle_mode)), false;
     }
     if (p.spindle_mode == 96) {
         if (!p.g96_x && !modal_.css_known)
-            return fail(28, "G96: the starting diameter is unknown (program X first, or G96 X.. S..)"), false;
+            return fail(28, tr("G96: the starting diameter is unknown (program X first, or G96 X.. S..)")), false;
         modal_.spindle_mode = 96;
         modal_.css_x0 = p.g96_x ? p.g96_x_val : prog_[X];
         modal_.css_pos0 = prog_[X];
@@ -322,27 +325,27 @@ bool Interpreter::apply_spindle(const Plan& p) {
         int found = -1;
         for (size_t i = 0; i < m_.ranges.size() && found < 0; ++i)
             if (modal_.s >= m_.ranges[i].min && modal_.s <= m_.ranges[i].max) found = int(i);
-        if (found < 0) return fail(29, "S" + fixed3(modal_.s, 63) + " is in no spindle range"), false;
+        if (found < 0) return fail(29, strf(tr("S%s is in no spindle range"), fixed3(modal_.s, 63).c_str())), false;
         modal_.range = found;
     }
     if (modal_.spindle_mode == 96 && !m_.ranges.empty() && modal_.range < 0 &&
         (p.spindle_mode == 96 || p.has_s)) {
         // With automatic ranges the machine takes the range of the highest speeds.
-        if (!m_.auto_range) return fail(29, "constant surface speed needs a spindle range (M40-M45)"), false;
+        if (!m_.auto_range) return fail(29, tr("constant surface speed needs a spindle range (M40-M45)")), false;
         modal_.range = int(m_.ranges.size()) - 1;
     }
     if (modal_.spindle_mode == 97 && p.has_s && modal_.range >= 0) {
         const SpindleRange& r = m_.ranges[size_t(modal_.range)];
         if (modal_.s != 0 && (modal_.s < r.min || modal_.s > r.max))
-            return fail(29, "S" + fixed3(modal_.s, 63) + " is outside range M" + std::to_string(40 + modal_.range) +
-                                " (" + fixed3(r.min, 63) + "-" + fixed3(r.max, 63) + " rev/min)"),
+            return fail(29, strf(tr("S%s is outside range M%d (%s-%s rev/min)"), fixed3(modal_.s, 63).c_str(),
+                                 40 + modal_.range, fixed3(r.min, 63).c_str(), fixed3(r.max, 63).c_str())),
                    false;
     }
     if (modal_.spindle_mode == 97 && p.has_s && modal_.s > m_.spindle_max)
-        warn(err::wSpeedClamped, "S" + fixed3(modal_.s, 63) + " above the spindle maximum " + fixed3(m_.spindle_max, 63) +
-                                     ": limited to it");
+        warn(err::wSpeedClamped, strf(tr("S%s above the spindle maximum %s: limited to it"), fixed3(modal_.s, 63).c_str(),
+                                      fixed3(m_.spindle_max, 63).c_str()));
     if (p.spindle_mode == 96 && (modal_.spindle_dir != 3 && modal_.spindle_dir != 4))
-        warn(err::wSpindleStopped, "G96 with the spindle stopped: the speed applies when it starts");
+        warn(err::wSpindleStopped, tr("G96 with the spindle stopped: the speed applies when it starts"));
     // The speed can only have changed with a spindle word, an M function, or X under G96.
     if (p.has_s || p.spindle_mode >= 0 || p.nm > 0 || p.g[92] || p.g[52] || p.g[59] ||
         (modal_.spindle_mode == 96 && p.axis[X]))
@@ -356,11 +359,11 @@ bool Interpreter::do_m_avant(const Plan& p) {
         int m = p.m[i];
         const MCode* mc = find_m(m);
         if (!mc) {
-            warn(err::wUnknownM, "M" + std::to_string(m) + " has no meaning on this machine");
+            warn(err::wUnknownM, strf(tr("M%d has no meaning on this machine"), m));
             continue;
         }
         if (!mc->all_models && m_.model == 1020)
-            return fail(4, "M" + std::to_string(m) + " needs a NUM 1040 or 1060"), false;
+            return fail(4, strf(tr("M%d needs a NUM 1040 or 1060"), m)), false;
         if (mc->when != MWhen::avant) continue;
         switch (m) {
             case 3: case 4: modal_.spindle_dir = m; break;
@@ -371,13 +374,13 @@ bool Interpreter::do_m_avant(const Plan& p) {
             case 49: modal_.overrides_off = true; break;
             case 62: case 66: case 61: break;
             case 63: case 64: case 65: case 67: case 68: case 69:
-                return fail(899, "M" + std::to_string(m) + ": this machine has one spindle"), false;
+                return fail(899, strf(tr("M%d: this machine has one spindle"), m)), false;
             case 998: modal_.modif_inhibited = false; break;
             case 999: modal_.modif_inhibited = true; break;
             default:
                 if (m >= 40 && m <= 45) {
                     if (size_t(m - 40) >= m_.ranges.size() && !m_.ranges.empty())
-                        return fail(29, "range M" + std::to_string(m) + " does not exist on this machine"), false;
+                        return fail(29, strf(tr("range M%d does not exist on this machine"), m)), false;
                     modal_.range = m - 40;
                 } else if (m >= 200 && m <= 899) {
                     modal_.coded_m = m;
@@ -397,7 +400,7 @@ bool Interpreter::do_m_apres(const Plan& p, StepResult& r) {
         switch (m) {
             case 0:
             case 1:
-                if (comp) return fail(140, "M0" + std::to_string(m) + " under radius compensation"), false;
+                if (comp) return fail(140, strf(tr("M0%d under radius compensation"), m)), false;
                 if (m == 1 && !opt_.optional_stop) break;
                 // M00 and M01 stop the spindle (000:1429).
                 modal_.spindle_dir = 5;
@@ -410,7 +413,7 @@ bool Interpreter::do_m_apres(const Plan& p, StepResult& r) {
                 r = StepResult::stopped;
                 break;
             case 2:
-                if (comp) return fail(140, "M02 under radius compensation"), false;
+                if (comp) return fail(140, tr("M02 under radius compensation")), false;
                 reset_modal_m02();
                 out_.end(loc_, 2);
                 ended_ = true;
@@ -421,7 +424,7 @@ bool Interpreter::do_m_apres(const Plan& p, StepResult& r) {
                 set_spindle_event();
                 break;
             case 6:
-                if (comp) return fail(140, "tool change M06 under radius compensation"), false;
+                if (comp) return fail(140, tr("tool change M06 under radius compensation")), false;
                 modal_.tool_in_spindle = modal_.t;
                 note_tool(modal_.t);
                 clock_ += m_.tool_change_time;

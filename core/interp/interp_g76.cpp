@@ -23,6 +23,7 @@
 #include <cmath>
 
 #include "core/interp/plan.hpp"
+#include "core/i18n.hpp"
 
 namespace pupitre {
 
@@ -52,15 +53,13 @@ bool listed_word(char c) {
 bool Interpreter::transfer(const Plan& p) {
     const ProgramText* target = stack_.back().prog;
     if (p.g76_h >= 0 && !(target = mem_.find(p.g76_h)))
-        return fail(25, "G76 H" + std::to_string(p.g76_h) + ": program %" + std::to_string(p.g76_h) +
-                            " is not in memory"),
-               false;
+        return fail(25, strf(tr("G76 H%d: program %%%d is not in memory"), p.g76_h, p.g76_h)), false;
     size_t from = target->begin, to = target->end;
     if (p.g76_nn > 0) {
         const Label* a = target->find_label(p.g76_n[0]);
         const Label* b = target->find_label(p.g76_nn > 1 ? p.g76_n[1] : p.g76_n[0]);
         if (!a || !b)
-            return fail(25, "G76: block N" + std::to_string(!a ? p.g76_n[0] : p.g76_n[1]) + " not found"), false;
+            return fail(25, strf(tr("G76: block N%ld not found"), !a ? p.g76_n[0] : p.g76_n[1])), false;
         if (b->offset < a->offset) std::swap(a, b);
         from = a->offset;
         to = std::min(target->end, target->text->find('\n', b->offset));
@@ -92,17 +91,16 @@ bool Interpreter::transfer(const Plan& p) {
             while (i < eol && digit(text[i])) n = n * 10 + (text[i++] - '0');
             spaces();
             if (i >= eol || text[i] != '=')
-                return fail(97, "G76: no '=' after " + std::string(is_l ? "L" : "E") + std::to_string(n)), false;
+                return fail(97, strf(tr("G76: no '=' after %c%ld"), is_l ? 'L' : 'E', n)), false;
             size_t field = ++i;
             while (i < eol && !upper(text[i]) && text[i] != '(' && text[i] != '\r') ++i;
             size_t width = i - field;
             if (width < 10)
-                return fail(97, "G76: fewer than 10 characters reserved after " + std::string(is_l ? "L" : "E") +
-                                    std::to_string(n) + "="),
+                return fail(97, strf(tr("G76: fewer than 10 characters reserved after %c%ld="), is_l ? 'L' : 'E', n)),
                        false;
             std::string value;
             if (is_l) {
-                if (!LVars::valid(int(n))) return fail(91, "G76: L" + std::to_string(n) + " does not exist"), false;
+                if (!LVars::valid(int(n))) return fail(91, strf(tr("G76: L%ld does not exist"), n)), false;
                 value = number_text(l_.v[size_t(n)], 6);
             } else {
                 int64_t raw;
@@ -113,8 +111,8 @@ bool Interpreter::transfer(const Plan& p) {
             // Keep the separating space before the next word.
             size_t room = (i < eol && upper(text[i])) ? width - 1 : width;
             if (value.size() > room)
-                return fail(97, "G76: the value " + value + " does not fit the field after " +
-                                    std::string(is_l ? "L" : "E") + std::to_string(n)),
+                return fail(97, strf(tr("G76: the value %s does not fit the field after %c%ld"), value.c_str(),
+                                     is_l ? 'L' : 'E', n)),
                        false;
             value.resize(width, ' ');
             text.replace(field, width, value);
@@ -134,11 +132,11 @@ bool Interpreter::edit_block_text(const Block& b, std::string& out) {
         return fail(d.code, "G76+: " + d.detail, b.g76_block_col - 1 + d.column), false;
     auto col = [&](uint16_t c) { return b.g76_block_col - 1 + c; };
     if (ins.msg_channel >= 0)
-        return fail(1, "G76+: a $ message cannot be inserted", b.g76_block_col), false;
+        return fail(1, tr("G76+: a $ message cannot be inserted"), b.g76_block_col), false;
     if (ins.test.cmp != Cmp::none)
-        return fail(1, "G76+: a G79 condition cannot be inserted", col(ins.test.col)), false;
+        return fail(1, tr("G76+: a G79 condition cannot be inserted"), col(ins.test.col)), false;
     if (ins.empty())
-        return fail(2, "G76+ needs the block to insert after N.. (G76+ N100 G1 X10)",
+        return fail(2, tr("G76+ needs the block to insert after N.. (G76+ N100 G1 X10)"),
                     b.g76_block_col),
                false;
     // Words and assignments in the order they were written.
@@ -147,16 +145,16 @@ bool Interpreter::edit_block_text(const Block& b, std::string& out) {
         char letter = w.addr < 26 ? char('A' + w.addr) : 0;
         if (!letter || !listed_word(letter))
             return fail(1,
-                        "G76+: " + std::string(addr_name(w.addr)) +
-                            " cannot be inserted (N G X Y Z U V W A B C I J K P Q R L0-L19 only)",
+                        strf(tr("G76+: %s cannot be inserted (N G X Y Z U V W A B C I J K P Q R L0-L19 only)"),
+                             std::string(addr_name(w.addr)).c_str()),
                         col(w.col)),
                    false;
         if ((w.v.kind == Operand::LVar && w.v.index > 19) || w.v.kind == Operand::EParam ||
             w.v.kind == Operand::EIndirect)
-            return fail(1, "G76+: only L0-L19 can give a value in an inserted block", col(w.col)),
+            return fail(1, tr("G76+: only L0-L19 can give a value in an inserted block"), col(w.col)),
                    false;
         if (letter == 'G' && (w.gsign || w.glevel))
-            return fail(1, "G76+: G76+/-, G79+/- and G77 -i cannot be inserted", col(w.col)), false;
+            return fail(1, tr("G76+: G76+/-, G79+/- and G77 -i cannot be inserted"), col(w.col)), false;
         double v;
         int iv = 0;
         bool integer = letter == 'N' || letter == 'G';
@@ -174,10 +172,10 @@ bool Interpreter::edit_block_text(const Block& b, std::string& out) {
     for (const Term& t : ins.terms)
         if ((t.v.kind == Operand::LVar && t.v.index > 19) || t.v.kind == Operand::EParam ||
             t.v.kind == Operand::EIndirect)
-            return fail(1, "G76+: only L0-L19 can give a value in an inserted block", b.g76_block_col), false;
+            return fail(1, tr("G76+: only L0-L19 can give a value in an inserted block"), b.g76_block_col), false;
     for (const Assign& a : ins.assigns) {
         if (a.target.kind != Operand::LVar || a.target.index > 19)
-            return fail(1, "G76+: only L0-L19 can be assigned in an inserted block", col(a.col)),
+            return fail(1, tr("G76+: only L0-L19 can be assigned in an inserted block"), col(a.col)),
                    false;
         double v;
         std::string why;
@@ -204,11 +202,12 @@ bool Interpreter::edit_block_text(const Block& b, std::string& out) {
     // address (an L value may be too large for X).
     Block back;
     if (!parse_block(out, back, d))
-        return fail(d.code, "G76+: the block to insert, " + out + ": " + d.detail, b.g76_block_col), false;
+        return fail(d.code, strf(tr("G76+: the block to insert, %s: %s"), out.c_str(), d.detail.c_str()), b.g76_block_col),
+               false;
     for (const Word& w : back.words) {
         double v;
         if (!word_value(w, v)) {
-            diags_.back().detail = "G76+: the block to insert, " + out + ": " + diags_.back().detail;
+            diags_.back().detail = strf(tr("G76+: the block to insert, %s: %s"), out.c_str(), diags_.back().detail.c_str());
             diags_.back().column = b.g76_block_col;
             return false;
         }
@@ -219,8 +218,7 @@ bool Interpreter::edit_block_text(const Block& b, std::string& out) {
 
 bool Interpreter::edit_program(const Block& b, const Plan& p) {
     const char sign = p.g76_sign;
-    const std::string g76 = std::string("G76") + sign;
-    if (m_.model == 1020) return fail(4, g76 + " needs a NUM 1040 or 1060 (000:555)"), false;
+    if (m_.model == 1020) return fail(4, strf(tr("G76%c needs a NUM 1040 or 1060 (000:555)"), sign)), false;
     // The block holds nothing else: its label, G76±, one H and the pointed N.
     size_t g76_at = b.words.size();  // none yet
     int hs = 0;
@@ -230,53 +228,45 @@ bool Interpreter::edit_program(const Block& b, const Plan& p) {
         bool label = i == 0 && w.addr == addr1('N') && b.n >= 0;
         bool arg = g76_at < i && (w.addr == addr1('H') || w.addr == addr1('N'));
         if (!label && i != g76_at && !arg)
-            return fail(3, g76 + " takes only H.. and N.. [+k] (the block must hold nothing else)",
+            return fail(3, strf(tr("G76%c takes only H.. and N.. [+k] (the block must hold nothing else)"), sign),
                         w.col),
                    false;
-        if (w.addr == addr1('H') && ++hs > 1) return fail(3, g76 + ": H written twice", w.col), false;
+        if (w.addr == addr1('H') && ++hs > 1) return fail(3, strf(tr("G76%c: H written twice"), sign), w.col), false;
     }
     if (!b.assigns.empty())
-        return fail(3, g76 + " takes only H.. and N.. [+k]: no assignment in its block", b.assigns[0].col),
+        return fail(3, strf(tr("G76%c takes only H.. and N.. [+k]: no assignment in its block"), sign), b.assigns[0].col),
                false;
     // It moves nothing: under G41/G42 it counts among the blocks without motion.
     if (modal_.radcomp != 40 && ++nonmotion_in_comp_ > 2)
-        return fail(140, "more than 2 blocks in a row without motion in the plane under radius compensation"),
+        return fail(140, tr("more than 2 blocks in a row without motion in the plane under radius compensation")),
                false;
-    if (p.g76_nn > 1) return fail(3, g76 + " points at one block N..", b.words.back().col), false;
+    if (p.g76_nn > 1) return fail(3, strf(tr("G76%c points at one block N.."), sign), b.words.back().col), false;
     const size_t quota = size_t(m_.program_memory_kb * 1024);
 
     if (p.g76_nn == 0) {
         // Creating or deleting a whole program: H is the last word (000:7037, 7068).
         if (p.g76_h < 0)
-            return fail(2, g76 + " needs the program number H (" + g76 + " H300)"), false;
+            return fail(2, strf(tr("G76%c needs the program number H (G76%c H300)"), sign, sign)), false;
         if (b.words.back().addr != addr1('H'))
-            return fail(3, g76 + ": the program number H must be the last word of the block",
+            return fail(3, strf(tr("G76%c: the program number H must be the last word of the block"), sign),
                         b.words.back().col),
                    false;
         if (sign == '+') {
             if (mem_.find(p.g76_h))
-                return fail(err::kProgramExists, "G76+ H" + std::to_string(p.g76_h) +
-                                                     ": program %" + std::to_string(p.g76_h) +
-                                                     " is already in memory"),
+                return fail(err::kProgramExists, strf(tr("G76+ H%d: program %%%d is already in memory"), p.g76_h, p.g76_h)),
                        false;
             if (mem_.size() + 16 > std::max(quota, loaded_size_))
-                return fail(36, "G76+: the part-program memory is full (" +
-                                    std::to_string(quota / 1024) + " KB)"),
-                       false;
+                return fail(36, strf(tr("G76+: the part-program memory is full (%zu KB)"), quota / 1024)), false;
             mem_.create(p.g76_h);
             return true;
         }
         const ProgramText* t = mem_.find(p.g76_h);
         if (!t)
-            return fail(25, "G76- H" + std::to_string(p.g76_h) + ": no program %" +
-                                std::to_string(p.g76_h)),
-                   false;
+            return fail(25, strf(tr("G76- H%d: no program %%%d"), p.g76_h, p.g76_h)), false;
         bool running = t == main_ || std::any_of(stack_.begin(), stack_.end(),
                                                  [&](const Frame& f) { return f.prog == t; });
         if (running)
-            return fail(err::kProgramInUse, "G76- H" + std::to_string(p.g76_h) + ": program %" +
-                                                std::to_string(p.g76_h) + " is running"),
-                   false;
+            return fail(err::kProgramInUse, strf(tr("G76- H%d: program %%%d is running"), p.g76_h, p.g76_h)), false;
         mem_.remove(p.g76_h);
         return true;
     }
@@ -284,11 +274,9 @@ bool Interpreter::edit_program(const Block& b, const Plan& p) {
     // A block: the program H (or this one), the pointed line N.. and k lines on.
     const ProgramText* t = stack_.back().prog;
     if (p.g76_h >= 0 && !(t = mem_.find(p.g76_h)))
-        return fail(25, g76 + " H" + std::to_string(p.g76_h) + ": no program %" +
-                            std::to_string(p.g76_h)),
-               false;
+        return fail(25, strf(tr("G76%c H%d: no program %%%d"), sign, p.g76_h, p.g76_h)), false;
     if (mem_.find(t->number) != t)  // an IMD fragment is not a program of the memory
-        return fail(25, g76 + " without H edits the program that runs: in IMD, give the program H"), false;
+        return fail(25, strf(tr("G76%c without H edits the program that runs: in IMD, give the program H"), sign)), false;
     if (sign == '-') {
         std::string_view rest = b.g76_block;  // comments only
         for (size_t i = 0; i < rest.size(); ++i) {
@@ -296,7 +284,7 @@ bool Interpreter::edit_program(const Block& b, const Plan& p) {
                 size_t close = rest.find(')', i);
                 i = close == std::string_view::npos ? rest.size() : close;
             } else if (rest[i] != ' ' && rest[i] != '\t') {
-                return fail(3, "G76- takes nothing after N.. [+k]", b.g76_block_col + int(i)), false;
+                return fail(3, tr("G76- takes nothing after N.. [+k]"), b.g76_block_col + int(i)), false;
             }
         }
     }
@@ -317,29 +305,23 @@ bool Interpreter::edit_program(const Block& b, const Plan& p) {
         start = t->begin;
         --count;
     } else {
-        return fail(25, g76 + ": no block N" + std::to_string(n) + " in program %" +
-                            std::to_string(t->number)),
-               false;
+        return fail(25, strf(tr("G76%c: no block N%ld in program %%%d"), sign, n, t->number)), false;
     }
     for (; count > 0 && start < t->end; --count) start = next_line(start);
     const bool before_first = count < 0;  // N0 virtual, no +k: insert at the start
     if (!before_first && start >= t->end)
-        return fail(25, g76 + ": program %" + std::to_string(t->number) + " has no line " +
-                            std::to_string(k) + " after N" + std::to_string(n)),
-               false;
+        return fail(25, strf(tr("G76%c: program %%%d has no line %d after N%ld"), sign, t->number, k, n)), false;
 
     Splice s;
     if (sign == '+') {
         std::string text;
         if (!edit_block_text(b, text)) return false;
         if (mem_.size() + text.size() > std::max(quota, loaded_size_))
-            return fail(36, "G76+: the part-program memory is full (" +
-                                std::to_string(quota / 1024) + " KB)"),
-                   false;
+            return fail(36, strf(tr("G76+: the part-program memory is full (%zu KB)"), quota / 1024)), false;
         s = mem_.splice(t, before_first ? start : next_line(start), 0, text);
     } else {
         if (before_first)
-            return fail(25, "G76- N0 points before the first line: give +k (the k-th line)"), false;
+            return fail(25, tr("G76- N0 points before the first line: give +k (the k-th line)")), false;
         s = mem_.splice(t, start, next_line(start) - start, {});
     }
     text_spliced(t, s);

@@ -11,6 +11,7 @@
 #include <cstring>
 
 #include "core/interp/interp.hpp"
+#include "core/i18n.hpp"
 
 namespace pupitre {
 
@@ -84,9 +85,9 @@ bool Interpreter::note_backward_jump(long label) {
     if (seen_states_.size() >= kWindow) seen_states_.clear();
     auto d = state_digest();
     if (seen_states_.insert(DigestKey{d.first, d.second}).second) return true;
-    fail(err::kBlockBudget, "endless loop: G79 N" + std::to_string(label) +
-                                " comes back to a state the program was already in (same block, variables, "
-                                "modal state and position), so it can never end");
+    fail(err::kBlockBudget, strf(tr("endless loop: G79 N%ld comes back to a state the program was already in (same block, "
+                                    "variables, modal state and position), so it can never end"),
+                                 label));
     return false;
 }
 

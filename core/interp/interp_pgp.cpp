@@ -8,6 +8,7 @@
 
 #include "core/interp/gate.hpp"
 #include "core/interp/plan.hpp"
+#include "core/i18n.hpp"
 
 namespace pupitre {
 
@@ -91,8 +92,8 @@ bool Interpreter::pgp_block(const Plan& p, const Axes& target) {
     const bool pending = pgp_.pending();
     // PGP is programmed in absolute; relative words after an incomplete block: 72.
     if (pending && (p.inc[size_t(a0)] || p.inc[size_t(a1)] || p.ijk_inc.any()))
-        return fail(72, "relative programming (G91) after an incomplete profile block"), false;
-    if (p.link == 'X') return fail(110, "ES and ET together in one block"), false;
+        return fail(72, tr("relative programming (G91) after an incomplete profile block")), false;
+    if (p.link == 'X') return fail(110, tr("ES and ET together in one block")), false;
     if (!pending) pgp_.start(pgp::V2(prog_[size_t(a0)], prog_[size_t(a1)]));
     pgp::Spec s;
     s.g = (modal_.motion == 2 || modal_.motion == 3) ? modal_.motion : 1;
@@ -115,7 +116,7 @@ bool Interpreter::pgp_block(const Plan& p, const Axes& target) {
     s.eb_unsigned = p.eb_unsigned;
     s.tag = ++pgp_tag_;
     if (p.has_eb && p.eb_unsigned)
-        warn(err::wUnsignedEB, "EB without a sign is taken as a fillet (EB+): write EB+ or EB- (pupitre-iso(5), PGP)");
+        warn(err::wUnsignedEB, tr("EB without a sign is taken as a fillet (EB+): write EB+ or EB- (pupitre-iso(5), PGP)"));
     pgp_ctx_[s.tag] = CompCtx{loc_, modal_, modal_.motion, target, 0};
     std::vector<pgp::Elem> out;
     pgp::Error e;

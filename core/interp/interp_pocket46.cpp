@@ -12,6 +12,7 @@
 
 #include "core/interp/plan.hpp"
 #include "core/geometry/geometry.hpp"
+#include "core/i18n.hpp"
 
 namespace pupitre {
 
@@ -84,47 +85,43 @@ bool Interpreter::pocket46(const Plan& p) {
     if (!p.g[46]) return p46_contour(p);
     // A G46 block runs no modal function: a plane given there would be ignored.
     if (p.plane >= 0 && p.plane != modal_.plane)
-        return fail(279, "G" + std::to_string(p.plane) +
-                             " in a G46 block: select the plane in a block before G46 NU0"),
-               false;
+        return fail(279, strf(tr("G%d in a G46 block: select the plane in a block before G46 NU0"), p.plane)), false;
     Words w;
     for (int i = 0; i < p.ncyc; ++i) w.has[p.cyc[i].a] = true, w.v[p.cyc[i].a] = p.cyc[i].v;
     if (!w.has[addrN('U')])
-        return fail(268, "G46 needs NU (NU0 header, NU1-NU6 contours, NU9, NU10/15/20 orders)"),
+        return fail(268, tr("G46 needs NU (NU0 header, NU1-NU6 contours, NU9, NU10/15/20 orders)")),
                false;
     const double nuv = w.v[addrN('U')];
     const int nu = int(nuv);
     const bool known = nuv == nu && (nu <= 6 || nu == 9 || nu == 10 || nu == 15 || nu == 20);
-    if (!known) return fail(262, "G46 NU" + num(nuv) + ": NU is 0-6, 9, 10, 15 or 20"), false;
+    if (!known) return fail(262, strf(tr("G46 NU%s: NU is 0-6, 9, 10, 15 or 20"), num(nuv).c_str())), false;
     if (p.nm || p.has_s || p.has_t || p.has_d)
-        return fail(268, "M, S, T or D in a G46 block"), false;
+        return fail(268, tr("M, S, T or D in a G46 block")), false;
     if (nu == 0) {
         // The same NU0 again: the run restarted inside its definition (a
         // block that did not parse stopped it).
         const bool again = p46_.at.prog == loc_.prog && p46_.at.line == loc_.line;
         if (p46_.defining && !again)
-            return fail(274, "G46 NU0 inside a definition (NU9 missing)"), false;
+            return fail(274, tr("G46 NU0 inside a definition (NU9 missing)")), false;
         return p46_header(p, nu);
     }
     if (nu >= 10) {
         if (p46_.defining)
-            return fail(270, "a machining order before the end of the definition (G46 NU9)"), false;
+            return fail(270, tr("a machining order before the end of the definition (G46 NU9)")), false;
         return p46_order(p, nu);
     }
     if (!p46_.defining)
-        return fail(270, "G46 NU" + std::to_string(nu) + " without a G46 NU0 header"), false;
+        return fail(270, strf(tr("G46 NU%d without a G46 NU0 header"), nu)), false;
     // Contour sections accept LX LY (NU1, NU2) and nothing else.
     for (int i = 0; i < p.ncyc; ++i) {
         Addr a = p.cyc[i].a;
         bool lxy = a == addrL('X') || a == addrL('Y');
         if (a != addrN('U') && !(lxy && (nu == 1 || nu == 2)))
-            return fail(267, std::string(addr_name(a)) + " is not a word of G46 NU" +
-                                 std::to_string(nu)),
-                   false;
+            return fail(267, strf(tr("%s is not a word of G46 NU%d"), std::string(addr_name(a)).c_str(), nu)), false;
     }
     if (p.axis.any() || p.ijk.any() || p.has_f)
-        return fail(267, "G46 NU" + std::to_string(nu) + " takes no coordinates"), false;
-    if (w.has[addrL('X')] != w.has[addrL('Y')]) return fail(277, "LX and LY go together"), false;
+        return fail(267, strf(tr("G46 NU%d takes no coordinates"), nu)), false;
+    if (w.has[addrL('X')] != w.has[addrL('Y')]) return fail(277, tr("LX and LY go together")), false;
     if (!p46_close_section()) return false;
     if (nu == 9) {
         p46_.defining = false;
@@ -140,7 +137,7 @@ bool Interpreter::pocket46(const Plan& p) {
     if (w.has[addrL('X')]) s.has_l = true, s.l = p46::V2(w.v[addrL('X')], w.v[addrL('Y')]);
     p46_.def.sections.push_back(s);
     if (p46_.def.sections.size() > 255)
-        return fail(285, "too many contours in one definition"), false;
+        return fail(285, tr("too many contours in one definition")), false;
     p46_.first = true;
     p46_.blocks = 0;
     return true;
@@ -155,19 +152,19 @@ bool Interpreter::p46_header(const Plan& p, int) {
                                   addr1('Q'), addr1('J'), addr1('R'), addrL('X'),
                                   addrL('Y'), addrE('X'), addrE('Y')};
         if (std::find(std::begin(ok), std::end(ok), a) == std::end(ok))
-            return fail(267, std::string(addr_name(a)) + " is not a word of G46 NU0"), false;
+            return fail(267, strf(tr("%s is not a word of G46 NU0"), std::string(addr_name(a)).c_str())), false;
         w.has[a] = true, w.v[a] = p.cyc[i].v;
     }
     if (p.axis.any() || p.ijk.any() || p.has_f)
-        return fail(267, "G46 NU0 takes no coordinates"), false;
+        return fail(267, tr("G46 NU0 takes no coordinates")), false;
     if (!w.has[addrN('P')] || !w.has[addrE('D')] || !w.has[addr1('Q')])
-        return fail(268, "G46 NU0 needs NP, ED and Q"), false;
-    if (w.has[addrL('X')] != w.has[addrL('Y')]) return fail(277, "LX and LY go together"), false;
-    if (w.has[addrE('X')] != w.has[addrE('Y')]) return fail(277, "EX and EY go together"), false;
+        return fail(268, tr("G46 NU0 needs NP, ED and Q")), false;
+    if (w.has[addrL('X')] != w.has[addrL('Y')]) return fail(277, tr("LX and LY go together")), false;
+    if (w.has[addrE('X')] != w.has[addrE('Y')]) return fail(277, tr("EX and EY go together")), false;
     const Frames& f = frames_;
     bool g59 = std::fabs(f.ed) > 1e-12;
     for (int a = 0; a < kAxes; ++a) g59 = g59 || std::fabs(f.g59[size_t(a)]) > 1e-12;
-    if (g59) return fail(275, "G46 NU0 with a G59 offset active"), false;
+    if (g59) return fail(275, tr("G46 NU0 with a G59 offset active")), false;
     p46::Def d;
     d.np = int(w.v[addrN('P')]);
     d.ed = w.v[addrE('D')];
@@ -179,7 +176,7 @@ bool Interpreter::p46_header(const Plan& p, int) {
         (d.rot != 3 && d.rot != 4) || w.v[addr1('R')] != std::floor(w.v[addr1('R')]))
         return fail(
                    282,
-                   "G46 NU0: NP a positive integer, ED and Q positive, J not negative, R03 or R04"),
+                   tr("G46 NU0: NP a positive integer, ED and Q positive, J not negative, R03 or R04")),
                false;
     if (w.has[addrL('X')]) d.has_l = true, d.l = p46::V2(w.v[addrL('X')], w.v[addrL('Y')]);
     if (w.has[addrE('X')]) d.has_e = true, d.e = p46::V2(w.v[addrE('X')], w.v[addrE('Y')]);
@@ -202,22 +199,21 @@ bool Interpreter::p46_contour(const Plan& p) {
     const bool any_g = p.g.any();
     if (!plane_words && !any_g && !p.nm && !p.has_f && !p.has_s && !p.has_t && !p.has_d && !p.ncyc)
         return true;  // a comment line
-    if (p46_.blocks < 0) return fail(269, "a contour block before G46 NU1-NU6"), false;
+    if (p46_.blocks < 0) return fail(269, tr("a contour block before G46 NU1-NU6")), false;
     for (size_t g = 0; g < p.g.size(); ++g)
         if (p.g[g] && g > 3)
-            return fail(279, "G" + std::to_string(g) + " in a pocket contour block"), false;
+            return fail(279, strf(tr("G%zu in a pocket contour block"), g)), false;
     if (p.nm || p.has_f || p.has_s || p.has_t || p.has_d || p.ncyc)
-        return fail(268, "only G0-G3, " + axis_name(ax.a0) + " " + axis_name(ax.a1) + ", " +
-                             centre_name(ax.a0) + " " + centre_name(ax.a1) +
-                             ", R and EB in a pocket contour block"),
+        return fail(268, strf(tr("only G0-G3, %s %s, %s %s, R and EB in a pocket contour block"), axis_name(ax.a0).c_str(),
+                              axis_name(ax.a1).c_str(), centre_name(ax.a0).c_str(), centre_name(ax.a1).c_str())),
                false;
     for (int a = 0; a < kAxes; ++a)
         if (p.axis[size_t(a)] && size_t(a) != a0 && size_t(a) != a1)
-            return fail(264, axis_name(a) + " is outside the contouring plane"), false;
+            return fail(264, strf(tr("%s is outside the contouring plane"), axis_name(a).c_str())), false;
     // The centre word of the normal axis (K in G17) is a coordinate outside the plane.
-    if (p.ijk[an]) return fail(264, centre_name(ax.an) + " is outside the contouring plane"), false;
+    if (p.ijk[an]) return fail(264, strf(tr("%s is outside the contouring plane"), centre_name(ax.an).c_str())), false;
     if (!p.axis[a0] && !p.axis[a1] && !p.has_ea)
-        return fail(264, "no coordinate in the contouring plane"), false;
+        return fail(264, tr("no coordinate in the contouring plane")), false;
     int motion = p.motion >= 0 ? p.motion : p46_.motion;
     p46_.motion = motion;
     p46::V2 t = p46_.pos;
@@ -225,9 +221,9 @@ bool Interpreter::p46_contour(const Plan& p) {
     if (p.axis[a1]) t.y() = p.inc[a1] ? p46_.pos.y() + p.val[a1] : p.val[a1];
     if (p46_.first) {
         if (motion != 0 && motion != 1)
-            return fail(265, "a contour starts with a G0 or G1 positioning"), false;
+            return fail(265, tr("a contour starts with a G0 or G1 positioning")), false;
         if (!p.axis[a0] || !p.axis[a1] || p.has_eb || p.pgp)
-            return fail(280, "the first contour block gives both coordinates of the start point"),
+            return fail(280, tr("the first contour block gives both coordinates of the start point")),
                    false;
         p46_.pos = t;
         p46_.solver = pgp::Solver();
@@ -238,8 +234,8 @@ bool Interpreter::p46_contour(const Plan& p) {
     }
     if (motion == 0)
         return fail(p46_.blocks == 1 ? 292 : 284, p46_.blocks == 1
-                                                      ? "two positionings at the start of a contour"
-                                                      : "G0 inside a contour"),
+                                                      ? tr("two positionings at the start of a contour")
+                                                      : tr("G0 inside a contour")),
                false;
     ++p46_.blocks;
     pgp::Spec s;
@@ -253,12 +249,12 @@ bool Interpreter::p46_contour(const Plan& p) {
     s.link = p.link, s.disc = p.disc;
     s.has_eb = p.has_eb, s.eb = p.eb, s.eb_unsigned = p.eb_unsigned;
     s.tag = loc_.line;
-    if (p.link == 'X') return fail(110, "ES and ET together in one block"), false;
+    if (p.link == 'X') return fail(110, tr("ES and ET together in one block")), false;
     if (p.has_eb && p.eb_unsigned)
-        warn(err::wUnsignedEB, "EB without a sign is taken as a fillet (EB+): write EB+ or EB- (pupitre-iso(5), PGP)");
+        warn(err::wUnsignedEB, tr("EB without a sign is taken as a fillet (EB+): write EB+ or EB- (pupitre-iso(5), PGP)"));
     if ((motion == 2 || motion == 3) && !s.has_i && !s.has_j && !s.has_r && !p.pgp)
-        return fail(269, "a circle without its centre (" + centre_name(ax.a0) + " " +
-                             centre_name(ax.a1) + ") or radius (R)"),
+        return fail(269, strf(tr("a circle without its centre (%s %s) or radius (R)"), centre_name(ax.a0).c_str(),
+                              centre_name(ax.a1).c_str())),
                false;
     std::vector<pgp::Elem> out;
     pgp::Error e;
@@ -275,18 +271,19 @@ bool Interpreter::p46_close_section() {
     if (!p46_.first && !p46_.solver.finish(out, e)) return fail(e.code, e.detail), false;
     for (const pgp::Elem& el : out) p46_.def.sections.back().elems.push_back(el.geo);
     if (p46_.def.sections.back().elems.empty())
-        return fail(284, "a contour section with no element"), false;
+        return fail(284, tr("a contour section with no element")), false;
     return true;
 }
 
 bool Interpreter::p46_fail(const p46::Error& e, const p46::Def& d) {
-    std::string where;
     if (e.section >= 0 && size_t(e.section) < d.sections.size()) {
         const p46::Section& s = d.sections[size_t(e.section)];
-        where = s.n >= 0 ? " (contour N" + std::to_string(s.n) + ")"
-                         : " (contour at line " + std::to_string(s.line) + ")";
+        // TRANSLATORS: %s is the reason of a pocket error; the contour it is about follows.
+        return fail(e.code, s.n >= 0 ? strf(tr("%s (contour N%ld)"), e.why.c_str(), s.n)
+                                     : strf(tr("%s (contour at line %d)"), e.why.c_str(), s.line)),
+               false;
     }
-    return fail(e.code, e.why + where), false;
+    return fail(e.code, e.why), false;
 }
 
 // Runs at one depth: a plunge at each run not linked to the previous one.
@@ -301,10 +298,20 @@ void Interpreter::warn_plunges(const p46::Def& d, const std::vector<p46::Run>& r
     for (const p46::Run& r : runs)
         if (!r.linked && !r.cleanup && (r.start - hole).norm() > 1e-6) away.push_back(r.start);
     if (away.empty()) return;
-    std::string more = away.size() > 1 ? " and " + std::to_string(away.size() - 1) + " more places" : "";
-    warn(err::wPlungeAway, "the roughing plunges with the cutter at " + num(away[0].x()) + " " + num(away[0].y()) +
-                               more + ", away from the hole at " + num(hole.x()) + " " + num(hole.y()) +
-                               " (NU10 drills only there; LX LY of NU0 chooses it)");
+    if (away.size() == 1)
+        warn(err::wPlungeAway, strf(tr("the roughing plunges with the cutter at %s %s, away from the hole at %s %s "
+                                       "(NU10 drills only there; LX LY of NU0 chooses it)"),
+                                    num(away[0].x()).c_str(), num(away[0].y()).c_str(), num(hole.x()).c_str(),
+                                    num(hole.y()).c_str()));
+    else
+        // TRANSLATORS: %zu counts the other places where the cutter plunges (English keeps "more places").
+        warn(err::wPlungeAway, strf(trn("the roughing plunges with the cutter at %s %s and %zu more places, away "
+                                        "from the hole at %s %s (NU10 drills only there; LX LY of NU0 chooses it)",
+                                        "the roughing plunges with the cutter at %s %s and %zu more places, away "
+                                        "from the hole at %s %s (NU10 drills only there; LX LY of NU0 chooses it)",
+                                        away.size() - 1),
+                                    num(away[0].x()).c_str(), num(away[0].y()).c_str(), away.size() - 1,
+                                    num(hole.x()).c_str(), num(hole.y()).c_str()));
 }
 
 bool Interpreter::p46_emit(const P46Axes& ax, const std::vector<p46::Run>& runs, double z,
@@ -352,45 +359,41 @@ bool Interpreter::p46_emit(const P46Axes& ax, const std::vector<p46::Run>& runs,
 bool Interpreter::p46_order(const Plan& p, int nu) {
     Words w;
     for (int i = 0; i < p.ncyc; ++i) w.has[p.cyc[i].a] = true, w.v[p.cyc[i].a] = p.cyc[i].v;
-    if (!w.has[addrN('P')]) return fail(268, "a G46 order needs NP"), false;
+    if (!w.has[addrN('P')]) return fail(268, tr("a G46 order needs NP")), false;
     auto it = p46_.defs.find(int(w.v[addrN('P')]));
     if (it == p46_.defs.end())
-        return fail(270, "pocket NP" + std::to_string(int(w.v[addrN('P')])) + " is not defined"),
-               false;
+        return fail(270, strf(tr("pocket NP%d is not defined"), int(w.v[addrN('P')]))), false;
     const p46::Def& d = it->second;
     if (modal_.plane != d.plane)
-        return fail(273, "the plane changed since the pocket was defined"), false;
+        return fail(273, tr("the plane changed since the pocket was defined")), false;
     const P46Axes ax = p46_axes(d.plane);
     const size_t a0 = size_t(ax.a0), a1 = size_t(ax.a1), an = size_t(ax.an);
     const std::string bottom = axis_name(ax.an);
     if (modal_.tool_axis != ax.an || modal_.tool_axis_neg)
-        return fail(271, "the tool axis (G16) is not perpendicular to the contouring plane (G16 " +
-                             std::string(1, "PQR"[ax.an]) + "+ in G" + std::to_string(d.plane) +
-                             ")"),
+        return fail(271, strf(tr("the tool axis (G16) is not perpendicular to the contouring plane (G16 %c+ in G%d)"),
+                              "PQR"[ax.an], d.plane)),
                false;
-    if (modal_.radcomp != 40) return fail(140, "G46 under radius compensation"), false;
+    if (modal_.radcomp != 40) return fail(140, tr("G46 under radius compensation")), false;
     if (modal_.spindle_dir != d.rot)
-        return fail(278, "the spindle turns " +
-                             std::string(modal_.spindle_dir == 3   ? "M03"
-                                         : modal_.spindle_dir == 4 ? "M04"
-                                                                   : "not") +
-                             ", the pocket asks for R0" + std::to_string(d.rot)),
+        return fail(278, modal_.spindle_dir == 3 || modal_.spindle_dir == 4
+                             ? strf(tr("the spindle turns M0%d, the pocket asks for R0%d"), modal_.spindle_dir, d.rot)
+                             : strf(tr("the spindle turns not, the pocket asks for R0%d"), d.rot)),
                false;
     // A plane coordinate first: in G18 the G17 habit of a Z bottom is refused
     // as a plane coordinate, not taken as a missing bottom.
     for (int a = 0; a < kAxes; ++a)
         if (p.axis[size_t(a)] && size_t(a) != an)
-            return fail(267, "a G46 order takes no plane coordinate (" + axis_name(a) +
-                                 "): its bottom is " + bottom + " in G" + std::to_string(d.plane)),
+            return fail(267, strf(tr("a G46 order takes no plane coordinate (%s): its bottom is %s in G%d"),
+                                  axis_name(a).c_str(), bottom.c_str(), d.plane)),
                    false;
-    if (!p.axis[an]) return fail(268, "a G46 order needs the bottom " + bottom), false;
+    if (!p.axis[an]) return fail(268, strf(tr("a G46 order needs the bottom %s"), bottom.c_str())), false;
     const double zb = p.inc[an] ? prog_[an] + p.val[an] : p.val[an];
     apply_corrector_gauges(std::bitset<kAxes>().set(an));
     first_move_ = false;
 
     if (nu == 10) {
         int code = p.g[81] ? 81 : p.g[83] ? 83 : p.g[87] ? 87 : 0;
-        if (!code) return fail(268, "G46 NU10 needs G81, G83 or G87"), false;
+        if (!code) return fail(268, tr("G46 NU10 needs G81, G83 or G87")), false;
         std::vector<p46::Run> runs;
         std::vector<double> ys;
         p46::Error e;
@@ -422,10 +425,9 @@ bool Interpreter::p46_order(const Plan& p, int nu) {
     const Corrector& c = corr_[size_t(modal_.d)];
     const double R = c.r + c.dr;
     if (modal_.d == 0 || R <= 0)
-        return fail(272, "the pocket needs a cutter with a radius (D0 or R0 active)"), false;
+        return fail(272, tr("the pocket needs a cutter with a radius (D0 or R0 active)")), false;
     if (nu == 15 && std::fabs(2 * R - d.ed) > 1e-3)
-        return fail(272, "the cutter (diameter " + num(2 * R) +
-                             ") is not the roughing cutter ED of the pocket"),
+        return fail(272, strf(tr("the cutter (diameter %s) is not the roughing cutter ED of the pocket"), num(2 * R).c_str())),
                false;
     static const Addr ok15[] = {addrN('U'), addrN('P'), addr1('P'), addrE('R'),
                                 addrE('H'), addrE('P'), addrE('Q')};
@@ -435,29 +437,24 @@ bool Interpreter::p46_order(const Plan& p, int nu) {
         Addr a = p.cyc[i].a;
         bool ok = nu == 15 ? std::find(std::begin(ok15), std::end(ok15), a) != std::end(ok15)
                            : std::find(std::begin(ok20), std::end(ok20), a) != std::end(ok20);
-        if (!ok)
-            return fail(267, std::string(addr_name(a)) + " is not a word of G46 NU" +
-                                 std::to_string(nu)),
-                   false;
+        if (!ok) return fail(267, strf(tr("%s is not a word of G46 NU%d"), std::string(addr_name(a)).c_str(), nu)), false;
     }
     if (p.has_f || p.g.count() > 1)
-        return fail(267, "G46 NU" + std::to_string(nu) + " takes no F and no other G"), false;
+        return fail(267, strf(tr("G46 NU%d takes no F and no other G"), nu)), false;
     if (!w.has[addr1('P')])
-        return fail(268, "G46 NU" + std::to_string(nu) + " needs the axial step P"), false;
+        return fail(268, strf(tr("G46 NU%d needs the axial step P"), nu)), false;
     const Addr fa = nu == 15 ? addrE('P') : addrE('I'), fl = nu == 15 ? addrE('Q') : addrE('J');
     if (!w.has[fa] || !w.has[fl])
-        return fail(268, std::string("G46 NU") + std::to_string(nu) +
-                             (nu == 15 ? " needs EP and EQ" : " needs EI and EJ")),
-               false;
+        return fail(268, strf(nu == 15 ? tr("G46 NU%d needs EP and EQ") : tr("G46 NU%d needs EI and EJ"), nu)), false;
     const double P = w.v[addr1('P')], jf = w.has[addr1('J')] ? w.v[addr1('J')] : 0;
     if (P <= 0 || w.v[fa] <= 0 || w.v[fl] <= 0 || jf < 0)
-        return fail(282, "P, the feeds and J of a G46 order are positive"), false;
+        return fail(282, tr("P, the feeds and J of a G46 order are positive")), false;
     const double clear = w.has[addrE('R')] ? w.v[addrE('R')] : prog_[an];
     const double top = w.has[addrE('H')] ? w.v[addrE('H')] : clear;
     if (top - zb < 1e-9)
-        return fail(276, "the pocket bottom " + bottom + " is not below the attack plane"), false;
+        return fail(276, strf(tr("the pocket bottom %s is not below the attack plane"), bottom.c_str())), false;
     if (clear < top - 1e-9)
-        return fail(282, "the clearance plane ER is below the attack plane EH"), false;
+        return fail(282, tr("the clearance plane ER is below the attack plane EH")), false;
 
     std::vector<p46::Run> runs;
     p46::Error e;

@@ -2,19 +2,20 @@
 // G49 (delete it): turning.md §4.10, milling.md §5.7.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/interp/plan.hpp"
+#include "core/i18n.hpp"
 
 namespace pupitre {
 
 bool Interpreter::spline_define(const Plan& p) {
-    if (modal_.radcomp != 40) return fail(140, "G48 must be programmed in G40"), false;
-    if (p.spl_nc == 0) return fail(600, "G48: the curve number NC must not be 0"), false;
-    if (p.spl_nc < 0 || p.spl_nn < 2) return fail(601, "G48 needs NC and the first and last blocks N.. N.."), false;
+    if (modal_.radcomp != 40) return fail(140, tr("G48 must be programmed in G40")), false;
+    if (p.spl_nc == 0) return fail(600, tr("G48: the curve number NC must not be 0")), false;
+    if (p.spl_nc < 0 || p.spl_nn < 2) return fail(601, tr("G48 needs NC and the first and last blocks N.. N..")), false;
     const ProgramText* prog = stack_.back().prog;
     if (p.spl_h >= 0 && !(prog = mem_.find(p.spl_h)))
-        return fail(25, "G48 H" + std::to_string(p.spl_h) + ": program not in memory"), false;
+        return fail(25, strf(tr("G48 H%d: program not in memory"), p.spl_h)), false;
     const Label* a = prog->find_label(p.spl_n[0]);
     const Label* b = prog->find_label(p.spl_n[1]);
-    if (!a || !b) return fail(25, "G48: block N" + std::to_string(!a ? p.spl_n[0] : p.spl_n[1]) + " not found"), false;
+    if (!a || !b) return fail(25, strf(tr("G48: block N%ld not found"), !a ? p.spl_n[0] : p.spl_n[1])), false;
     if (b->line < a->line) std::swap(a, b);
     // Decode each definition block like a move, without moving.
     std::string_view text = *prog->text;
@@ -37,7 +38,7 @@ bool Interpreter::spline_define(const Plan& p) {
     const auto& first = blocks.front();
     for (int ax = 0; ax < kAxes; ++ax)
         if (first.first[size_t(ax)]) c.axes.push_back(ax);
-    if (c.axes.empty()) return fail(602, "G48: the first block names no axis"), false;
+    if (c.axes.empty()) return fail(602, tr("G48: the first block names no axis")), false;
     for (int ax : c.axes) c.t0.push_back(first.second[size_t(ax)]);
     std::vector<double> prev(c.axes.size(), 0);
     for (size_t i = 1; i + 1 < blocks.size(); ++i) {
@@ -60,8 +61,8 @@ bool Interpreter::spline_define(const Plan& p) {
 
 bool Interpreter::spline_run(const Plan& p) {
     auto it = splines_.find(p.spl_nc);
-    if (it == splines_.end()) return fail(605, "G06: curve NC" + std::to_string(p.spl_nc) + " is not defined"), false;
-    if (p.has_f || p.has_s || p.has_t) return fail(3, "no F, S or T in a G06 block (000:2055)"), false;
+    if (it == splines_.end()) return fail(605, strf(tr("G06: curve NC%d is not defined"), p.spl_nc)), false;
+    if (p.has_f || p.has_s || p.has_t) return fail(3, tr("no F, S or T in a G06 block (000:2055)")), false;
     const spline::Curve& c = it->second;
     for (const auto& pt : spline::sample(c, 0.002)) {
         Axes target = prog_;

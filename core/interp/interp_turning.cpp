@@ -10,6 +10,7 @@
 
 #include "core/interp/plan.hpp"
 #include "core/cycles/turning.hpp"
+#include "core/i18n.hpp"
 
 namespace pupitre {
 
@@ -43,16 +44,16 @@ int high_l_read(const Block& b) {
 void Interpreter::warn_allowance_inside(int g, double i, double k) {
     char ik[64];
     std::snprintf(ik, sizeof ik, "I%g K%g", i, k);
-    warn(err::wAllowanceInside, "G" + std::to_string(g) + " allowance " + ik +
-                                    " points into the finished part: the passes cut it into the part as written"
-                                    " (a bore takes a negative I)");
+    warn(err::wAllowanceInside, strf(tr("G%d allowance %s points into the finished part: the passes cut it into the part "
+                                        "as written (a bore takes a negative I)"),
+                                     g, ik));
 }
 
 bool Interpreter::turning_profile(long na, long nb, turning::Profile& out, comp::V2& first) {
     const ProgramText* prog = stack_.back().prog;
     const Label* a = prog->find_label(na);
     const Label* b = prog->find_label(nb);
-    if (!a || !b) return fail(871, "the profile block N" + std::to_string(!a ? na : nb) + " is not in the program"), false;
+    if (!a || !b) return fail(871, strf(tr("the profile block N%ld is not in the program"), !a ? na : nb)), false;
     bool reversed = b->line < a->line;
     profile_feed_ = 0;
     const Label* lo = reversed ? b : a;
@@ -81,12 +82,19 @@ bool Interpreter::turning_profile(long na, long nb, turning::Profile& out, comp:
         // machine setting `strict`.
         for (const Assign& as : blk.assigns)
             if (as.target.kind == Operand::LVar && as.target.index >= 100)
-                return fail(96, "writing L" + std::to_string(as.target.index) + " in a roughing-cycle profile"), false;
+                return fail(96, strf(tr("writing L%d in a roughing-cycle profile"), as.target.index)), false;
         if (int high = high_l_read(blk); high >= 0) {
-            std::string what = "L" + std::to_string(high) + " read in a roughing-cycle profile (seed 000: L100-L199 and"
-                               " L900-L959 \"ne peuvent pas être employées dans la définition du profil fini\")";
-            if (m_.strict) return fail(96, what), false;
-            warn(err::wProfileL, what + ": the NUM stops with error 96; copy it into L0-L19 before the cycle");
+            // The handbook's words, quoted as written (not translated).
+            const char* seed = "ne peuvent pas \u00eatre employ\u00e9es dans la d\u00e9finition du profil fini";
+            // TRANSLATORS: the second %s is a quotation of the French handbook; keep it as it is.
+            if (m_.strict)
+                return fail(96, strf(tr("L%d read in a roughing-cycle profile (seed 000: L100-L199 and L900-L959 \"%s\")"),
+                                     high, seed)),
+                       false;
+            // TRANSLATORS: the second %s is a quotation of the French handbook; keep it as it is.
+            warn(err::wProfileL, strf(tr("L%d read in a roughing-cycle profile (seed 000: L100-L199 and L900-L959 \"%s\"): "
+                                         "the NUM stops with error 96; copy it into L0-L19 before the cycle"),
+                                      high, seed));
         }
         Plan q;
         if (!decode(blk, q)) return false;
@@ -101,7 +109,7 @@ bool Interpreter::turning_profile(long na, long nb, turning::Profile& out, comp:
                 if (q.axis[size_t(ax)]) continue;
                 double v;
                 if (!coordinate_above(prog, lo->line, ax, v))
-                    return fail(871, "the first block of the profile needs X and Z"), false;
+                    return fail(871, tr("the first block of the profile needs X and Z")), false;
                 q.axis.set(size_t(ax));
                 q.inc.reset(size_t(ax));
                 q.val[size_t(ax)] = v;
@@ -147,10 +155,8 @@ bool Interpreter::turning_profile(long na, long nb, turning::Profile& out, comp:
     if (!solver.finish(elems, e)) return fail(e.code, e.detail), false;
     loc_ = saved;
     modal_ = saved_modal;
-    if (!started || elems.empty()) return fail(871, "the profile N" + std::to_string(na) + "..N" +
-                                                     std::to_string(nb) + " has no element"),
-                                    false;
-    if (count > 50) return fail(871, "a profile has at most 50 blocks"), false;
+    if (!started || elems.empty()) return fail(871, strf(tr("the profile N%ld..N%ld has no element"), na, nb)), false;
+    if (count > 50) return fail(871, tr("a profile has at most 50 blocks")), false;
     out.elems.clear();
     for (const auto& el : elems) out.elems.push_back(el.geo);
     if (reversed) {
@@ -241,7 +247,7 @@ bool Interpreter::turning_emit(const std::vector<turning::Move>& moves, double l
 
 // A block that programs G63, G64, G65, G66, G33 or G38 (G64: the stock follows).
 bool Interpreter::turning_block(const Plan& p) {
-    if (modal_.radcomp != 40) return fail(140, "a turning cycle under radius compensation"), false;
+    if (modal_.radcomp != 40) return fail(140, tr("a turning cycle under radius compensation")), false;
     const bool diam = m_.x_diameter && !modal_.radius_x;
     const comp::V2 tool(prog_[Z], prog_[X]);
     auto xpos = [&](Addr a, bool& has) { double v = cyc(p, a, 0, &has); return diam ? v / 2 : v; };
@@ -249,15 +255,15 @@ bool Interpreter::turning_block(const Plan& p) {
     std::string why;
     int rc = 0;
     if (p.g[64]) {
-        if (p.spl_nn < 2) return fail(871, "G64 needs the profile blocks N.. N.."), false;
+        if (p.spl_nn < 2) return fail(871, tr("G64 needs the profile blocks N.. N..")), false;
         g64_ = turning::G64Args{};
         g64_.i = cyc(p, addr1('I'), 0);
         g64_.k = cyc(p, addr1('K'), 0);
         g64_.p = cyc(p, addr1('P'), 0, &g64_.has_p);
         g64_.r = cyc(p, addr1('R'), 0, &g64_.has_r);
-        if (!g64_.has_p && !g64_.has_r) return fail(873, "G64 needs P (passes along Z) or R (passes along X)"), false;
-        if (g64_.has_p && g64_.has_r) return fail(889, "G64 takes P or R, not both"), false;
-        if (g64_.p < 0 || g64_.r < 0) return fail(835, "G64: P and R are positive"), false;
+        if (!g64_.has_p && !g64_.has_r) return fail(873, tr("G64 needs P (passes along Z) or R (passes along X)")), false;
+        if (g64_.has_p && g64_.has_r) return fail(889, tr("G64 takes P or R, not both")), false;
+        if (g64_.p < 0 || g64_.r < 0) return fail(835, tr("G64: P and R are positive")), false;
         g64_na_ = p.spl_n[0];
         g64_nb_ = p.spl_n[1];
         g64_tool_ = tool;
@@ -267,7 +273,7 @@ bool Interpreter::turning_block(const Plan& p) {
         return true;
     }
     if (p.g[65] || p.g[63]) {
-        if (p.spl_nn < 2) return fail(871, "G" + std::to_string(p.g[65] ? 65 : 63) + " needs the profile N.. N.."), false;
+        if (p.spl_nn < 2) return fail(871, strf(tr("G%d needs the profile N.. N.."), p.g[65] ? 65 : 63)), false;
         turning::Profile prof;
         comp::V2 first;
         if (!turning_profile(p.spl_n[0], p.spl_n[1], prof, first)) return false;
@@ -283,7 +289,7 @@ bool Interpreter::turning_block(const Plan& p) {
             a.p = cyc(p, addr1('P'), 0, &a.has_p);
             a.r = cyc(p, addr1('R'), 0, &a.has_r);
             a.q = cyc(p, addr1('Q'), 0);
-            if (!a.has_ea) return fail(2, "G65 needs the infeed angle EA"), false;
+            if (!a.has_ea) return fail(2, tr("G65 needs the infeed angle EA")), false;
             rc = turning::g65(prof, tool, a, moves, why);
             if (rc == 0 && a.allowance_inside) warn_allowance_inside(65, a.i, a.k);
         } else {
@@ -334,10 +340,10 @@ bool Interpreter::turning_block(const Plan& p) {
         // Warning 1117: the two correctors are the tool's two edges; their
         // difference is its width (seed 000, G66).
         if (a.d > 0 && a.d_first > 0 && a.gauge_delta.norm() < 1e-6)
-            warn(err::wNoToolWidth, "G66: D" + std::to_string(a.d_first) + " and D" + std::to_string(a.d) +
-                                        " have the same gauges, so the tool has no width: the far side of the groove"
-                                        " is cut one tool width off; measure D" + std::to_string(a.d) +
-                                        " on the other edge of the tool");
+            warn(err::wNoToolWidth, strf(tr("G66: D%d and D%d have the same gauges, so the tool has no width: the "
+                                            "far side of the groove is cut one tool width off; measure D%d on the "
+                                            "other edge of the tool"),
+                                         a.d_first, a.d, a.d));
         rc = turning::g66(tool, a, moves, why);
         if (rc) return fail(rc, why), false;
         bool has_ef;
@@ -397,11 +403,11 @@ bool Interpreter::turning_block(const Plan& p) {
 // While a G64 waits for its G80: the blocks are the rough stock, not moves.
 bool Interpreter::turning_stock(const Plan& p) {
     if (p.g[2] || p.g[3] || p.pgp || p.motion == 2 || p.motion == 3)
-        return fail(889, "the rough stock of G64 is made of points, no circle or PGP"), false;
+        return fail(889, tr("the rough stock of G64 is made of points, no circle or PGP")), false;
     comp::V2 last = g64_stock_.empty() ? comp::V2(NAN, NAN) : g64_stock_.back();
     if (!p.axis[X] && !p.axis[Z]) return true;  // a comment or a label: no point
     if (g64_stock_.empty() && (!p.axis[X] || !p.axis[Z]))
-        return fail(872, "the first point of the rough stock needs X and Z"), false;
+        return fail(872, tr("the first point of the rough stock needs X and Z")), false;
     comp::V2 pt(p.axis[Z] ? p.val[Z] : last.x(), p.axis[X] ? p.val[X] : last.y());
     g64_stock_.push_back(pt);
     return true;
@@ -410,7 +416,7 @@ bool Interpreter::turning_stock(const Plan& p) {
 // The G80 that ends a G64: the roughing runs before the rest of the block.
 bool Interpreter::turning_g64_run() {
     g64_pending_ = false;
-    if (g64_stock_.empty()) return fail(872, "G64 without a rough stock before G80"), false;
+    if (g64_stock_.empty()) return fail(872, tr("G64 without a rough stock before G80")), false;
     std::vector<std::array<double, 2>> zr;
     for (const auto& q : g64_stock_) zr.push_back({q.x(), q.y()});
     out_.stock(g64_loc_, zr);

@@ -7,6 +7,7 @@
 
 #include "core/interp/decode.hpp"
 #include "core/numfmt.hpp"
+#include "core/i18n.hpp"
 
 namespace pupitre {
 
@@ -86,11 +87,11 @@ bool Interpreter::word_value(const Word& w, double& out, int* int_out) {
             break;
         case Operand::Number:
             if (v.int_digits > f.max_int || v.frac_digits > f.max_frac) {
-                fail(1, "too many digits after " + std::string(addr_name(w.addr)), w.col);
+                fail(1, strf(tr("too many digits after %s"), std::string(addr_name(w.addr)).c_str()), w.col);
                 return false;
             }
             if (v.has_sign && !f.is_signed) {
-                fail(1, "sign after " + std::string(addr_name(w.addr)) + ", which takes none", w.col);
+                fail(1, strf(tr("sign after %s, which takes none"), std::string(addr_name(w.addr)).c_str()), w.col);
                 return false;
             }
             out = v.neg ? -v.num : v.num;
@@ -104,7 +105,7 @@ bool Interpreter::word_value(const Word& w, double& out, int* int_out) {
     if (int_out) {
         if (out != std::floor(out) || std::fabs(out) > 99999) {
             fail(v.kind == Operand::Number ? 1 : 92,
-                 std::string(addr_name(w.addr)) + " needs a whole number", w.col);
+                 strf(tr("%s needs a whole number"), std::string(addr_name(w.addr)).c_str()), w.col);
             return false;
         }
         *int_out = int(out);
@@ -138,8 +139,9 @@ bool Interpreter::variable_value(const Word& w, double& out) {
         raw *= e_scale(f.fmt);
     }
     if (!f.is_signed && raw < 0) {
-        fail(92, "negative value " + fixed3(raw) + " for " + std::string(addr_name(w.addr)) +
-                     ", which takes none", w.col);
+        fail(92, strf(tr("negative value %s for %s, which takes none"), fixed3(raw).c_str(),
+                      std::string(addr_name(w.addr)).c_str()),
+             w.col);
         return false;
     }
     out = raw;
@@ -208,8 +210,8 @@ bool Interpreter::Decoder::word(const Word& w) {
 // Checks that need the whole block.
 bool Interpreter::Decoder::finish() {
     if (p.g[16] && p.g16_axis < 0 && pqr_sign_col)
-        return bad(3, "the argument of G16 must follow it (G16 R+)", pqr_sign_col);
-    if (p.g[78] && !p.g78_p) return bad(2, "G78 needs P (the axis groups to synchronise)");
+        return bad(3, tr("the argument of G16 must follow it (G16 R+)"), pqr_sign_col);
+    if (p.g[78] && !p.g78_p) return bad(2, tr("G78 needs P (the axis groups to synchronise)"));
     // milling.md §8.6 (impl): the axis values after EM+/EM- are the part's
     // extremes for the graphic display, not a move.
     if (p.em) {
@@ -240,17 +242,20 @@ bool Interpreter::Decoder::g_word(const Word& w) {
 // Whether this machine and model have G`g`.
 bool Interpreter::Decoder::g_known(int g, const GCode* gc, const Word& w) {
     if (!gc || !(gc->machines & (lathe ? kLathe : kMill))) {
-        std::string hint;
-        if (gc && !lathe) hint = " (a lathe function: --machine lathe?)";
-        if (gc && lathe) hint = " (a machining-centre function: --machine mill?)";
-        return bad(2, "G" + std::to_string(g) + " is not a function of the NUM " +
-                          (lathe ? "lathe" : "machining centre") + hint, w.col);
+        const char* what;
+        if (lathe)
+            what = gc ? tr("G%d is not a function of the NUM lathe (a machining-centre function: --machine mill?)")
+                      : tr("G%d is not a function of the NUM lathe");
+        else
+            what = gc ? tr("G%d is not a function of the NUM machining centre (a lathe function: --machine lathe?)")
+                      : tr("G%d is not a function of the NUM machining centre");
+        return bad(2, strf(what, g), w.col);
     }
     if ((gc->starred & (lathe ? kLathe : kMill)) && m.model == 1020)
-        return bad(2, "G" + std::to_string(g) + " needs a NUM 1040 or 1060", w.col);
+        return bad(2, strf(tr("G%d needs a NUM 1040 or 1060"), g), w.col);
     if (gc->support == Support::option)
-        return bad(4, "G" + std::to_string(g) + " (" + std::string(gc->text) +
-                          ") is an option this machine does not have", w.col);
+        return bad(4, strf(tr("G%d (%s) is an option this machine does not have"), g, tr(std::string(gc->text).c_str())),
+                   w.col);
     return true;
 }
 
@@ -274,13 +279,13 @@ void Interpreter::Decoder::g_group(int g, Group group) {
 // What G52, G77 -i, G79± and G76± say by where or how they are written.
 bool Interpreter::Decoder::g_marks(int g, const Word& w) {
     if (g == 52) {
-        if (axis_seen) return bad(3, "G52 must come before the axis words of the block", w.col);
+        if (axis_seen) return bad(3, tr("G52 must come before the axis words of the block"), w.col);
         g52_seen = true;
     }
     if (g == 77) p.g77_level = w.glevel;
-    if (g == 77 && w.glevel && m.model == 1020) return bad(4, "G77 -i needs a NUM 1040 or 1060", w.col);
+    if (g == 77 && w.glevel && m.model == 1020) return bad(4, tr("G77 -i needs a NUM 1040 or 1060"), w.col);
     if (g == 79 && w.gsign && m.model == 1020)
-        return bad(4, std::string("G79") + w.gsign + " needs a NUM 1040 or 1060 (000:560)", w.col);
+        return bad(4, strf(tr("G79%c needs a NUM 1040 or 1060 (000:560)"), w.gsign), w.col);
     if (g == 79 && w.gsign) p.g79_sign = w.gsign;
     if (g == 76) p.g76_sign = w.gsign;
     return true;
@@ -296,7 +301,7 @@ bool Interpreter::Decoder::plain_word(const Word& w) {
         (p.radcomp == 29 || (p.radcomp < 0 && in.modal_.radcomp == 29)))
         return g29_normal(w);
     if (seen.test(w.addr) && w.addr != addr1('M') && w.addr != addr1('G'))
-        return bad(3, std::string(addr_name(w.addr)) + " written twice in the block", w.col);
+        return bad(3, strf(tr("%s written twice in the block"), std::string(addr_name(w.addr)).c_str()), w.col);
     seen.set(w.addr);
     return (this->*plain_readers()[w.addr])(w);
 }
@@ -330,7 +335,7 @@ const std::array<Interpreter::Decoder::Reader, kAddrCount>& Interpreter::Decoder
 bool Interpreter::Decoder::axis_word(const Word& w) {
     const int axis = axis_of(letter(w));
     if (!m.has(axis))
-        return bad(1, std::string("axis ") + letter(w) + " is not on this machine (" + m.name + ")", w.col);
+        return bad(1, strf(tr("axis %c is not on this machine (%s)"), letter(w), m.name.c_str()), w.col);
     double v;
     if (!in.word_value(w, v)) return false;
     axis_seen = true;
@@ -350,7 +355,7 @@ bool Interpreter::Decoder::axis_word(const Word& w) {
 
 bool Interpreter::Decoder::ijk_word(const Word& w) {
     if (p.g[23] && !owned)
-        return bad(3, "the arguments of G23 must not be separated by another address", w.col);
+        return bad(3, tr("the arguments of G23 must not be separated by another address"), w.col);
     double v;
     if (!in.word_value(w, v)) return false;
     int k = letter(w) - 'I';
@@ -394,8 +399,7 @@ bool Interpreter::Decoder::tool_word(const Word& w) {
     double v;
     if (!in.word_value(w, v, &iv)) return false;
     if (iv > m.tools)
-        return bad(1, "tool T" + std::to_string(iv) + " does not exist (the turret has " +
-                          std::to_string(m.tools) + " stations)", w.col);
+        return bad(1, strf(tr("tool T%d does not exist (the turret has %d stations)"), iv, int(m.tools)), w.col);
     p.has_t = true;
     p.t = iv;
     return true;
@@ -407,7 +411,7 @@ bool Interpreter::Decoder::corrector_word(const Word& w) {
     if (!in.word_value(w, v, &iv)) return false;
     if (iv > m.correctors)
         return bad(w.v.kind == Operand::Number ? 8 : 92,
-                   "corrector D" + std::to_string(iv) + " above D" + std::to_string(m.correctors), w.col);
+                   strf(tr("corrector D%d above D%d"), iv, int(m.correctors)), w.col);
     p.has_d = true;
     p.d = iv;
     return true;
@@ -417,11 +421,10 @@ bool Interpreter::Decoder::m_word(const Word& w) {
     int iv;
     double v;
     if (!in.word_value(w, v, &iv)) return false;
-    if (p.nm >= 8) return bad(3, "too many M functions in one block", w.col);
+    if (p.nm >= 8) return bad(3, tr("too many M functions in one block"), w.col);
     // At most one modal and one non-modal coded M per block (004:1063).
     if ((iv >= 200 && iv <= 899 && ++coded_modal > 1) || (iv >= 100 && iv <= 199 && ++coded_nonmodal > 1))
-        return bad(3, "two coded M functions of the same kind in one block (M" + std::to_string(iv) + ")",
-                   w.col);
+        return bad(3, strf(tr("two coded M functions of the same kind in one block (M%d)"), iv), w.col);
     p.m[p.nm++] = iv;
     return true;
 }
@@ -437,7 +440,8 @@ bool Interpreter::Decoder::ed_word(const Word& w) {
 bool Interpreter::Decoder::eg_word(const Word& w) {
     double v;
     if (!in.word_value(w, v)) return false;
-    if (v < 1 || v > 100) return bad(1, "EG (acceleration) must be 1 to 100 %", w.col);
+    // xgettext:no-c-format
+    if (v < 1 || v > 100) return bad(1, tr("EG (acceleration) must be 1 to 100 %"), w.col);
     p.has_eg = true;
     p.eg = v;
     return true;
@@ -491,14 +495,14 @@ bool Interpreter::Decoder::pgp_word(const Word& w) {
         if (w.addr == addrE('T')) p.link = p.link == 'S' ? 'X' : 'T';
         if (w.v.has_sign) p.disc = w.v.neg ? -1 : 1;
         if (w.v.kind == Operand::Number || w.v.kind == Operand::LVar)
-            return bad(w.addr == kAddrEsign ? 3 : 110, std::string(addr_name(w.addr)) + " takes a sign only",
+            return bad(w.addr == kAddrEsign ? 3 : 110, strf(tr("%s takes a sign only"), std::string(addr_name(w.addr)).c_str()),
                        w.col);
     }
     return true;
 }
 
 bool Interpreter::Decoder::no_meaning(const Word& w) {
-    return bad(3, std::string(addr_name(w.addr)) + " has no meaning here (no function in the block takes it)",
+    return bad(3, strf(tr("%s has no meaning here (no function in the block takes it)"), std::string(addr_name(w.addr)).c_str()),
                w.col);
 }
 
@@ -506,7 +510,7 @@ bool Interpreter::Decoder::no_meaning(const Word& w) {
 bool Interpreter::Decoder::cyc_word(const Word& w) {
     double cv;
     if (!in.word_value(w, cv)) return false;
-    if (p.ncyc >= 16) return bad(3, "too many cycle words in one block", w.col);
+    if (p.ncyc >= 16) return bad(3, tr("too many cycle words in one block"), w.col);
     p.cyc[p.ncyc++] = {w.addr, w.addr == addrE('R') || w.addr == addrE('H') ? cv * unit : cv};
     return true;
 }

@@ -1,6 +1,7 @@
 // Machine profile parsing: "key = value" lines, '#' comments.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/interp/machine.hpp"
+#include "core/i18n.hpp"
 
 #include <charconv>
 #include <cstdlib>
@@ -65,9 +66,9 @@ std::string parse_machine(std::string_view text, MachineProfile& m) {
         if (line.empty()) continue;
         size_t eq = line.find('=');
         auto bad = [&](std::string_view why) {
-            return "line " + std::to_string(lineno) + ": " + std::string(why);
+            return strf(tr("line %d: %.*s"), lineno, int(why.size()), why.data());
         };
-        if (eq == std::string_view::npos) return bad("expected key = value");
+        if (eq == std::string_view::npos) return bad(tr("expected key = value"));
         std::string_view key = trim(line.substr(0, eq)), val = trim(line.substr(eq + 1));
         double d1, d2;
         int axis = -1;
@@ -75,54 +76,54 @@ std::string parse_machine(std::string_view text, MachineProfile& m) {
         if (size_t dot = key.find('.'); dot != std::string_view::npos && dot + 2 == key.size()) {
             axis = axis_of(key[dot + 1]);
             sub = key.substr(0, dot);
-            if (axis < 0) return bad("unknown axis in '" + std::string(key) + "'");
+            if (axis < 0) return bad(strf(tr("unknown axis in '%.*s'"), int(key.size()), key.data()));
         }
         if (key == "name") m.name = val;
         else if (key == "description") m.description = val;
         else if (key == "kind") {
             if (val == "lathe") m.lathe = true;
             else if (val == "mill") m.lathe = false;
-            else return bad("kind must be lathe or mill");
+            else return bad(tr("kind must be lathe or mill"));
         } else if (key == "model") {
             if (!number(val, d1) || (d1 != 1020 && d1 != 1040 && d1 != 1060))
-                return bad("model must be 1020, 1040 or 1060");
+                return bad(tr("model must be 1020, 1040 or 1060"));
             m.model = int(d1);
         } else if (key == "axes") {
             for (char c : val) {
                 if (c == ' ') continue;
                 int a = axis_of(c);
-                if (a < 0) return bad("unknown axis letter in axes");
+                if (a < 0) return bad(tr("unknown axis letter in axes"));
                 m.axes[size_t(a)].present = true;
             }
         } else if (key == "x_programming") {
             if (val == "diameter") m.x_diameter = true;
             else if (val == "radius") m.x_diameter = false;
-            else return bad("x_programming must be diameter or radius");
+            else return bad(tr("x_programming must be diameter or radius"));
         } else if (key == "turret") {
             if (val == "rear") m.rear_turret = true;
             else if (val == "front") m.rear_turret = false;
-            else return bad("turret must be rear or front");
+            else return bad(tr("turret must be rear or front"));
         } else if (sub == "travel") {
-            if (!two_numbers(val, d1, d2, ' ') || d1 >= d2) return bad("travel needs MIN MAX");
+            if (!two_numbers(val, d1, d2, ' ') || d1 >= d2) return bad(tr("travel needs MIN MAX"));
             m.axes[size_t(axis)].min = d1;
             m.axes[size_t(axis)].max = d2;
         } else if (sub == "rapid") {
-            if (!number(val, d1) || d1 <= 0) return bad("rapid must be positive");
+            if (!number(val, d1) || d1 <= 0) return bad(tr("rapid must be positive"));
             m.axes[size_t(axis)].rapid = d1;
         } else if (sub == "home") {
-            if (!number(val, d1)) return bad("home needs a number");
+            if (!number(val, d1)) return bad(tr("home needs a number"));
             m.home[size_t(axis)] = d1;
         } else if (sub == "pref") {
-            if (!number(val, d1)) return bad("pref needs a number");
+            if (!number(val, d1)) return bad(tr("pref needs a number"));
             m.pref[size_t(axis)] = d1;
         } else if (sub == "dec1") {
-            if (!number(val, d1)) return bad("dec1 needs a number");
+            if (!number(val, d1)) return bad(tr("dec1 needs a number"));
             m.dec1[size_t(axis)] = d1;
         } else if (key == "feed.max") {
-            if (!number(val, d1) || d1 <= 0) return bad("feed.max must be positive");
+            if (!number(val, d1) || d1 <= 0) return bad(tr("feed.max must be positive"));
             m.max_feed = d1;
         } else if (key == "spindle.max") {
-            if (!number(val, d1) || d1 <= 0) return bad("spindle.max must be positive");
+            if (!number(val, d1) || d1 <= 0) return bad(tr("spindle.max must be positive"));
             m.spindle_max = d1;
         } else if (key == "spindle.ranges") {
             m.ranges.clear();
@@ -131,50 +132,50 @@ std::string parse_machine(std::string_view text, MachineProfile& m) {
                 size_t sp = v.find(' ');
                 std::string_view r = v.substr(0, sp);
                 v = sp == std::string_view::npos ? std::string_view{} : v.substr(sp);
-                if (!two_numbers(r, d1, d2, '-') || d1 > d2) return bad("ranges are MIN-MAX MIN-MAX…");
+                if (!two_numbers(r, d1, d2, '-') || d1 > d2) return bad(strf(tr("ranges are MIN-MAX MIN-MAX%s"), "\u2026"));  // %s: an ellipsis
                 m.ranges.push_back({d1, d2});
             }
-            if (m.ranges.size() > 6) return bad("at most 6 ranges (M40-M45)");
+            if (m.ranges.size() > 6) return bad(tr("at most 6 ranges (M40-M45)"));
         } else if (key == "spindle.auto_range") {
-            if (!yes_no(val, m.auto_range)) return bad("auto_range must be yes or no");
+            if (!yes_no(val, m.auto_range)) return bad(tr("auto_range must be yes or no"));
         } else if (key == "strict") {
-            if (!yes_no(val, m.strict)) return bad("strict must be yes or no");
+            if (!yes_no(val, m.strict)) return bad(tr("strict must be yes or no"));
         } else if (key == "tools") {
-            if (!number(val, d1) || d1 < 1 || d1 > 999) return bad("tools must be 1..999");
+            if (!number(val, d1) || d1 < 1 || d1 > 999) return bad(tr("tools must be 1..999"));
             m.tools = int(d1);
         } else if (key == "correctors") {
-            if (!number(val, d1) || d1 < 1 || d1 > 255) return bad("correctors must be 1..255");
+            if (!number(val, d1) || d1 < 1 || d1 > 255) return bad(tr("correctors must be 1..255"));
             m.correctors = int(d1);
         } else if (key == "tool_change_time") {
-            if (!number(val, d1) || d1 < 0) return bad("tool_change_time must be >= 0");
+            if (!number(val, d1) || d1 < 0) return bad(tr("tool_change_time must be >= 0"));
             m.tool_change_time = d1;
         } else if (key == "homing") {
-            if (val != "required" && val != "none") return bad("homing must be required or none");
+            if (val != "required" && val != "none") return bad(tr("homing must be required or none"));
             m.homing_required = val == "required";
         } else if (key == "program_memory") {
-            if (!number(val, d1) || d1 < 1) return bad("program_memory must be at least 1 (kilobytes)");
+            if (!number(val, d1) || d1 < 1) return bad(tr("program_memory must be at least 1 (kilobytes)"));
             m.program_memory_kb = d1;
         } else if (key == "jog.feed") {
-            if (!number(val, d1) || d1 <= 0) return bad("jog.feed must be positive");
+            if (!number(val, d1) || d1 <= 0) return bad(tr("jog.feed must be positive"));
             m.jog_feed = d1;
         } else if (key == "kinematics") {
-            if (val != "table" && val != "table-head") return bad("kinematics must be table or table-head");
+            if (val != "table" && val != "table-head") return bad(tr("kinematics must be table or table-head"));
             m.kinematics = val;
         } else if (key == "kinematics.lx" || key == "kinematics.ly" || key == "kinematics.lz") {
-            if (!number(val, d1)) return bad("kinematics constants are lengths");
+            if (!number(val, d1)) return bad(tr("kinematics constants are lengths"));
             (key.back() == 'x' ? m.kin_lx : key.back() == 'y' ? m.kin_ly : m.kin_lz) = d1;
         } else {
-            return bad("unknown key '" + std::string(key) + "'");
+            return bad(strf(tr("unknown key '%.*s'"), int(key.size()), key.data()));
         }
     }
-    if (m.name.empty()) return "the profile has no name";
+    if (m.name.empty()) return tr("the profile has no name");
     bool any = false;
     for (auto& a : m.axes) any = any || a.present;
-    if (!any) return "the profile declares no axes";
-    if (m.lathe && (!m.has(X) || !m.has(Z))) return "a lathe needs the X and Z axes";
+    if (!any) return tr("the profile declares no axes");
+    if (m.lathe && (!m.has(X) || !m.has(Z))) return tr("a lathe needs the X and Z axes");
     if (!m.lathe) m.x_diameter = false;
-    if (m.kinematics == "table" && !m.has(B)) return "table kinematics need the B axis";
-    if (m.kinematics == "table-head" && (!m.has(B) || !m.has(C))) return "table-head kinematics need B and C";
+    if (m.kinematics == "table" && !m.has(B)) return tr("table kinematics need the B axis");
+    if (m.kinematics == "table-head" && (!m.has(B) || !m.has(C))) return tr("table-head kinematics need B and C");
     return {};
 }
 

@@ -9,6 +9,7 @@
 #include "core/interp/plan.hpp"
 #include "core/numfmt.hpp"
 #include "core/geometry/geometry.hpp"
+#include "core/i18n.hpp"
 
 namespace pupitre {
 
@@ -38,13 +39,17 @@ bool Interpreter::check_travel(const Axes& mach) {
         double v = mach[size_t(a)], lo = travel_lo_[size_t(a)], hi = travel_hi_[size_t(a)];
         if (!homed_[size_t(a)] && std::abs(v - mach_[size_t(a)]) > 1e-9) {
             // 000:13307: a programmed move of an axis whose POM is not done.
-            fail(159, std::string("axis ") + kAxisNames[size_t(a)] + " is not homed: do the POM first");
+            fail(159, strf(tr("axis %c is not homed: do the POM first"), kAxisNames[size_t(a)]));
             return false;
         }
         if (v >= lo - 1e-6 && v <= hi + 1e-6) continue;
-        std::string axis(1, kAxisNames[size_t(a)]);
-        fail(150 + a, axis + " travel limit: the move goes to " + axis + f3(v) + " on the OM scale" +
-                          (a == X && m_.lathe ? " (radius)" : "") + ", beyond " + f3(v < lo ? lo : hi));
+        const char axis = kAxisNames[size_t(a)];
+        if (a == X && m_.lathe)
+            fail(150 + a, strf(tr("%c travel limit: the move goes to %c%s on the OM scale (radius), beyond %s"),
+                               axis, axis, f3(v).c_str(), f3(v < lo ? lo : hi).c_str()));
+        else
+            fail(150 + a, strf(tr("%c travel limit: the move goes to %c%s on the OM scale, beyond %s"), axis, axis,
+                               f3(v).c_str(), f3(v < lo ? lo : hi).c_str()));
         return false;
     }
     return true;
@@ -84,14 +89,16 @@ double Interpreter::feed_time(double len, double xa, double xb) {
 void Interpreter::check_tiny_feed() {
     if (!feed_programmed_ && !feed_before_f_warned_) {
         feed_before_f_warned_ = true;
-        warn(err::wFeedBeforeF, "feed move before any F: it runs at F" + f3(modal_.feed) +
-                                    (modal_.feed_mode == 95 ? " mm/rev" : " mm/min") +
-                                    ", the power-on feed; program F in this block or before it");
+        warn(err::wFeedBeforeF,
+             strf(modal_.feed_mode == 95
+                      ? tr("feed move before any F: it runs at F%s mm/rev, the power-on feed; program F in this block or before it")
+                      : tr("feed move before any F: it runs at F%s mm/min, the power-on feed; program F in this block or before it"),
+                  f3(modal_.feed).c_str()));
     }
     if (modal_.feed_mode == 94 && modal_.feed < 1.0 && !tiny_feed_warned_) {
         tiny_feed_warned_ = true;
-        warn(err::wTinyFeed, "F" + f3(modal_.feed) + " in G94 is " + f3(modal_.feed) +
-                                 " mm/min: a feed per revolution needs G95");
+        warn(err::wTinyFeed, strf(tr("F%s in G94 is %s mm/min: a feed per revolution needs G95"), f3(modal_.feed).c_str(),
+                                  f3(modal_.feed).c_str()));
     }
 }
 
@@ -110,8 +117,10 @@ void Interpreter::warn_idle_words(const Plan& p) {
     for (int k = 0; k < 3; ++k)
         if (p.ijk[size_t(k)]) w += std::string(" ") + char('I' + k);
     if (w.empty() || p.g[23]) return;
-    warn(err::wIdleWord, "word" + std::string(w.size() > 2 ? "s" : "") + w + " has no effect in a G" +
-                             std::to_string(modal_.motion) + " block: the move is a straight line (a circle needs G2 or G3)");
+    warn(err::wIdleWord, strf(trn("word%s has no effect in a G%d block: the move is a straight line (a circle needs G2 or G3)",
+                                  "words%s has no effect in a G%d block: the move is a straight line (a circle needs G2 or G3)",
+                                  w.size() / 2),
+                              w.c_str(), modal_.motion));
 }
 
 bool Interpreter::do_motion(const Plan& p) {
@@ -123,14 +132,14 @@ bool Interpreter::do_motion(const Plan& p) {
         if (p.axis[size_t(a0)] || p.axis[size_t(a1)]) {
             nonmotion_in_comp_ = 0;
         } else if (++nonmotion_in_comp_ > 2) {
-            return fail(140, "more than 2 blocks in a row without motion in the plane under radius compensation"),
+            return fail(140, tr("more than 2 blocks in a row without motion in the plane under radius compensation")),
                    false;
         }
     }
     if (g52) {
-        if (comp) return fail(27, "G52 move under radius compensation (program G40 first)"), false;
-        if (modal_.incremental) return fail(3, "G52 needs absolute programming (G90)"), false;
-        if (modal_.motion == 2 || modal_.motion == 3) return fail(3, "G52 moves are linear (G0 or G1)"), false;
+        if (comp) return fail(27, tr("G52 move under radius compensation (program G40 first)")), false;
+        if (modal_.incremental) return fail(3, tr("G52 needs absolute programming (G90)")), false;
+        if (modal_.motion == 2 || modal_.motion == 3) return fail(3, tr("G52 moves are linear (G0 or G1)")), false;
     }
     if (modal_.radcomp == 29 && !g52) return g29_move(p);
     // The end of a compensated profile: held PGP elements are resolved first.
@@ -147,7 +156,7 @@ bool Interpreter::do_motion(const Plan& p) {
         return pocket(p);
     }
     if (p.g[31] || (modal_.cycle >= 81 && modal_.cycle <= 89)) {
-        if (g52) return fail(3, "G52 in a drilling cycle block"), false;
+        if (g52) return fail(3, tr("G52 in a drilling cycle block")), false;
         if (p.axis.any() && !g52) apply_corrector_gauges(p.axis);
         first_move_ = false;
         return cycle_block(p);
@@ -180,12 +189,12 @@ bool Interpreter::do_motion(const Plan& p) {
     if (p.axis.none()) {
         bool arcwords = p.ijk.any() || p.has_r;
         if (p.g[23] || ((p.motion == 2 || p.motion == 3) && arcwords))
-            return fail(101, "circle without its end point"), false;
+            return fail(101, tr("circle without its end point")), false;
         return true;
     }
     if ((p.has_r || p.ijk.any()) && (modal_.motion == 0 || modal_.motion == 1)) warn_idle_words(p);
     if (first_move_ && p.inc.any())
-        warn(err::wIncrementalFirst, "first move written in G91: relative to the position after homing");
+        warn(err::wIncrementalFirst, tr("first move written in G91: relative to the position after homing"));
     first_move_ = false;
     if (p.axis[X] && !g52) modal_.css_known = true;
     if (!g52) apply_corrector_gauges(p.axis);
@@ -247,18 +256,18 @@ bool Interpreter::do_motion(const Plan& p) {
 bool Interpreter::g29_move(const Plan& p) {
     if (p.axis.none() && p.g29_has.none()) return true;
     if (!(p.axis[X] && p.axis[Y] && p.axis[Z]) || p.g29_has.count() != 3)
-        return fail(146, "a G29 block needs all of X Y Z and P Q R (000:13291)"), false;
+        return fail(146, tr("a G29 block needs all of X Y Z and P Q R (000:13291)")), false;
     if (modal_.motion != 0 && modal_.motion != 1)
-        return fail(146, "G29 blocks are linear moves (G0 or G1)"), false;
+        return fail(146, tr("G29 blocks are linear moves (G0 or G1)")), false;
     Eigen::Vector3d n(p.g29_n[0], p.g29_n[1], p.g29_n[2]);
     if (std::fabs(n.squaredNorm() - 1) > 1e-3)
-        return fail(145, "P Q R is not a unit vector: P2+Q2+R2 = " + f3(n.squaredNorm()) + " (000:13290)"), false;
+        return fail(145, strf(tr("P Q R is not a unit vector: P2+Q2+R2 = %s (000:13290)"), f3(n.squaredNorm()).c_str())), false;
     n.normalize();
     Eigen::Vector3d u = Eigen::Vector3d::Zero();
     u[modal_.tool_axis == X ? 0 : modal_.tool_axis == Y ? 1 : 2] = modal_.tool_axis_neg ? -1 : 1;
     const Corrector& c = corr_[size_t(std::max(modal_.d, 0))];
     double r = c.r + c.dr, tip_r = c.tip;
-    if (tip_r > r) return fail(146, "the end radius @ is larger than the tool radius R"), false;
+    if (tip_r > r) return fail(146, tr("the end radius @ is larger than the tool radius R")), false;
     Eigen::Vector3d pc;
     for (int a = 0; a < 3; ++a) pc[a] = p.inc[size_t(a)] ? prog_[size_t(a)] + p.val[size_t(a)] : p.val[size_t(a)];
     Eigen::Vector3d w = n - n.dot(u) * u;
@@ -298,15 +307,15 @@ bool Interpreter::linear(int g, const Axes& mach, bool g52, const std::bitset<kA
         e.rpm = spindle_at(prog_[X]);
     } else {
         if (!modal_.feed_set)
-            return fail(2, "no feed F programmed since G" + std::to_string(modal_.feed_mode) + " changed the unit"), false;
-        if (modal_.feed <= 0) return fail(1, "feed F0 in a feed move"), false;
+            return fail(2, strf(tr("no feed F programmed since G%d changed the unit"), modal_.feed_mode)), false;
+        if (modal_.feed <= 0) return fail(1, tr("feed F0 in a feed move")), false;
         if (modal_.feed_mode == 94 && modal_.feed * (modal_.inch ? 25.4 : 1) > m_.max_feed)
-            warn(err::wFeedClamped, "F" + f3(modal_.feed) + " above the machine maximum " + f3(m_.max_feed) +
-                                        " mm/min: limited to it");
+            warn(err::wFeedClamped, strf(tr("F%s above the machine maximum %s mm/min: limited to it"), f3(modal_.feed).c_str(),
+                                             f3(m_.max_feed).c_str()));
         check_tiny_feed();
         e.feed = feed_rate(e.rpm);
         t = feed_time(e.length, start_prog[X], end_prog[X]);
-        if (t < 0) return fail(831, "feed per revolution (G95) with the spindle stopped"), false;
+        if (t < 0) return fail(831, tr("feed per revolution (G95) with the spindle stopped")), false;
         if (modal_.feed_mode == 93) e.feed = t > 0 ? e.length / t * 60.0 : 0;
     }
     return finish_move(e, mach, end_prog, t);
@@ -335,19 +344,18 @@ bool Interpreter::arc(const Plan& p, const Axes& target) {
     int i0 = ijk_index(a0), i1 = ijk_index(a1), in = ijk_index(an);
     bool centre = p.ijk[size_t(i0)] && p.ijk[size_t(i1)];
     if (!p.axis[size_t(a0)] || !p.axis[size_t(a1)] || centre == p.has_r) {
-        std::string need = std::string(1, kAxisNames[size_t(a0)]) + kAxisNames[size_t(a1)];
-        return fail(101, "G" + std::to_string(modal_.motion) + " needs " + need + " and either " +
-                             char('I' + i0) + char('I' + i1) + " or R, even if unchanged"),
+        return fail(101, strf(tr("G%d needs %c%c and either %c%c or R, even if unchanged"), modal_.motion,
+                              kAxisNames[size_t(a0)], kAxisNames[size_t(a1)], 'I' + i0, 'I' + i1)),
                false;
     }
     for (int a = 0; a < kAxes; ++a)
         if (p.axis[size_t(a)] && a != a0 && a != a1 && (lathe || a != an))
-            return fail(106, std::string("axis ") + kAxisNames[size_t(a)] + " in a circle: only the axis normal to the plane may move (helix)"), false;
+            return fail(106, strf(tr("axis %c in a circle: only the axis normal to the plane may move (helix)"),
+                                  kAxisNames[size_t(a)])),
+                   false;
     bool helix = !lathe && p.axis[size_t(an)];
     if (p.ijk[size_t(in)] && !helix)
-        return fail(107, std::string("helix pitch ") + char('I' + in) + " without the " + kAxisNames[size_t(an)] +
-                             " end point"),
-               false;
+        return fail(107, strf(tr("helix pitch %c without the %c end point"), 'I' + in, kAxisNames[size_t(an)])), false;
 
     Eigen::Vector2d s(prog_[size_t(a0)], prog_[size_t(a1)]), e(target[size_t(a0)], target[size_t(a1)]);
     Eigen::Vector2d c;
@@ -356,10 +364,10 @@ bool Interpreter::arc(const Plan& p, const Axes& target) {
     if (p.has_r) {
         double d = (e - s).norm();
         double r = p.r;
-        if (r <= 0) return fail(107, "circle radius R must be positive"), false;
-        if (d < 1e-9) return fail(107, "circle with R: the end point equals the start point"), false;
+        if (r <= 0) return fail(107, tr("circle radius R must be positive")), false;
+        if (d < 1e-9) return fail(107, tr("circle with R: the end point equals the start point")), false;
         if (d > 2 * r + 0.001)
-            return fail(107, "circle end point too far: chord " + f3(d) + " > 2R " + f3(2 * r)), false;
+            return fail(107, strf(tr("circle end point too far: chord %s > 2R %s"), f3(d).c_str(), f3(2 * r).c_str())), false;
         // The shorter arc (004:622): the centre on the left of the chord for G3.
         double h = std::sqrt(std::max(0.0, r * r - d * d / 4));
         Eigen::Vector2d left(-(e - s).y() / d, (e - s).x() / d);
@@ -371,10 +379,10 @@ bool Interpreter::arc(const Plan& p, const Axes& target) {
         if (p.ijk_inc[size_t(i1)]) c.y() += s.y();
         r0 = (s - c).norm();
         r1 = (e - c).norm();
-        if (r0 < 1e-9) return fail(107, "circle centre on the start point"), false;
+        if (r0 < 1e-9) return fail(107, tr("circle centre on the start point")), false;
         if (std::fabs(r0 - r1) > kArcTolerance + 1e-9)
-            return fail(107, "circle end point inconsistent: start radius " + f3(r0) + ", end radius " + f3(r1) +
-                                 " (more than 0.020 apart)"),
+            return fail(107, strf(tr("circle end point inconsistent: start radius %s, end radius %s (more than 0.020 apart)"),
+                                  f3(r0).c_str(), f3(r1).c_str())),
                    false;
     }
     double as = std::atan2(s.y() - c.y(), s.x() - c.x());
@@ -420,14 +428,14 @@ bool Interpreter::arc3(const Plan& p, const Axes& target) {
     int a1 = lathe ? X : modal_.plane == 17 ? Y : modal_.plane == 18 ? X : Z;
     int i0 = ijk_index(a0), i1 = ijk_index(a1);
     if (!p.axis[size_t(a0)] || !p.axis[size_t(a1)] || !p.ijk[size_t(i0)] || !p.ijk[size_t(i1)])
-        return fail(101, "G23 needs the end point and the intermediate point"), false;
+        return fail(101, tr("G23 needs the end point and the intermediate point")), false;
     Eigen::Vector2d s(prog_[size_t(a0)], prog_[size_t(a1)]), e(target[size_t(a0)], target[size_t(a1)]);
     Eigen::Vector2d m(p.ijk_val[i0], p.ijk_val[i1]);
     if (p.ijk_inc[size_t(i0)]) m.x() += s.x();
     if (p.ijk_inc[size_t(i1)]) m.y() += s.y();
     Eigen::Vector2d u = m - s, v = e - s;
     double cross = u.x() * v.y() - u.y() * v.x();
-    if (std::fabs(cross) < 1e-9) return fail(101, "G23: the three points are on one line"), false;
+    if (std::fabs(cross) < 1e-9) return fail(101, tr("G23: the three points are on one line")), false;
     // Circumcentre of s, m, e.
     double uu = u.squaredNorm(), vv = v.squaredNorm();
     Eigen::Vector2d c = s + Eigen::Vector2d(v.y() * uu - u.y() * vv, u.x() * vv - v.x() * uu) / (2 * cross);
@@ -500,9 +508,9 @@ bool Interpreter::emit_arc(int g, const Axes& target, int a0, int a1, double c0,
     double dh = helix_axis >= 0 ? std::fabs(mach[size_t(helix_axis)] - mach_[size_t(helix_axis)]) : 0;
     e.length = std::hypot(arclen, dh);
     if (!modal_.feed_set)
-        return fail(2, "no feed F programmed since G" + std::to_string(modal_.feed_mode) + " changed the unit"), false;
-    if (modal_.feed <= 0) return fail(1, "feed F0 in a feed move"), false;
-    if (modal_.feed_mode == 93) return fail(4, "G02/G03 are not allowed in inverse-time feed (G93)"), false;
+        return fail(2, strf(tr("no feed F programmed since G%d changed the unit"), modal_.feed_mode)), false;
+    if (modal_.feed <= 0) return fail(1, tr("feed F0 in a feed move")), false;
+    if (modal_.feed_mode == 93) return fail(4, tr("G02/G03 are not allowed in inverse-time feed (G93)")), false;
     check_tiny_feed();
     e.feed = feed_rate(e.rpm);
     double t = 0;
@@ -518,16 +526,16 @@ bool Interpreter::emit_arc(int g, const Axes& target, int a0, int a1, double c0,
                 return prog_[X];
             };
             double piece = feed_time(e.length / kPieces, x_at(double(i) / kPieces), x_at(double(i + 1) / kPieces));
-            if (piece < 0) return fail(831, "feed per revolution (G95) with the spindle stopped"), false;
+            if (piece < 0) return fail(831, tr("feed per revolution (G95) with the spindle stopped")), false;
             t += piece;
         }
     } else {
         t = feed_time(e.length, prog_[X], target[X]);
-        if (t < 0) return fail(831, "feed per revolution (G95) with the spindle stopped"), false;
+        if (t < 0) return fail(831, tr("feed per revolution (G95) with the spindle stopped")), false;
     }
     if (modal_.feed_mode == 94 && modal_.feed * (modal_.inch ? 25.4 : 1) > m_.max_feed)
-        warn(err::wFeedClamped, "F" + f3(modal_.feed) + " above the machine maximum " + f3(m_.max_feed) +
-                                    " mm/min: limited to it");
+        warn(err::wFeedClamped, strf(tr("F%s above the machine maximum %s mm/min: limited to it"), f3(modal_.feed).c_str(),
+                                             f3(m_.max_feed).c_str()));
     return finish_move(e, mach, target, t);
 }
 

@@ -8,6 +8,7 @@
 #include <cstdio>
 
 #include "core/numfmt.hpp"
+#include "core/i18n.hpp"
 
 namespace pupitre {
 
@@ -15,17 +16,18 @@ namespace {
 
 // One table for the layers' looks, read by both back-ends and the legend.
 // Widths and dashes are paper millimetres; rapids are dashed, cuts solid.
+// The legend's words are shown translated (tr(st.legend)).
 constexpr LayerStyle kStyles[kLayerCount] = {
-    {"axis", "spindle axis", {127, 127, 127}, 0.18, {4, 1, 0.5, 1}, 1},
-    {"stock", "stock (G64)", {160, 82, 45}, 0.3, {1.2, 0.8, 0, 0}, 1},
-    {"extremes", "EM- / EM+ extremes", {51, 102, 204}, 0.2, {0.6, 0.6, 0, 0}, 1},
-    {"profile", "programmed profile", {142, 68, 173}, 0.2, {0, 0, 0, 0}, 1},
-    {"rapid", "rapid G0", {128, 128, 128}, 0.2, {1.6, 1.0, 0, 0}, 1},
-    {"feed", "feed G1 G2 G3", {31, 78, 156}, 0.35, {0, 0, 0, 0}, 1},
-    {"comp", "compensated path G41 G42", {11, 122, 75}, 0.35, {0, 0, 0, 0}, 1},
-    {"travel", "beyond the travel", {224, 128, 0}, 0.5, {0, 0, 0, 0}, 1},
-    {"gouge", "block in error, where it stopped", {212, 0, 0}, 0.5, {0, 0, 0, 0}, 1},
-    {"mirror", "mirror image below the axis", {31, 78, 156}, 0.35, {0, 0, 0, 0}, 0.35},
+    {"axis", N_("spindle axis"), {127, 127, 127}, 0.18, {4, 1, 0.5, 1}, 1},
+    {"stock", N_("stock (G64)"), {160, 82, 45}, 0.3, {1.2, 0.8, 0, 0}, 1},
+    {"extremes", N_("EM- / EM+ extremes"), {51, 102, 204}, 0.2, {0.6, 0.6, 0, 0}, 1},
+    {"profile", N_("programmed profile"), {142, 68, 173}, 0.2, {0, 0, 0, 0}, 1},
+    {"rapid", N_("rapid G0"), {128, 128, 128}, 0.2, {1.6, 1.0, 0, 0}, 1},
+    {"feed", N_("feed G1 G2 G3"), {31, 78, 156}, 0.35, {0, 0, 0, 0}, 1},
+    {"comp", N_("compensated path G41 G42"), {11, 122, 75}, 0.35, {0, 0, 0, 0}, 1},
+    {"travel", N_("beyond the travel"), {224, 128, 0}, 0.5, {0, 0, 0, 0}, 1},
+    {"gouge", N_("block in error, where it stopped"), {212, 0, 0}, 0.5, {0, 0, 0, 0}, 1},
+    {"mirror", N_("mirror image below the axis"), {31, 78, 156}, 0.35, {0, 0, 0, 0}, 0.35},
 };
 
 // The page (paper mm): margins, the narrowest block of text, the widest page,
@@ -126,12 +128,15 @@ void find_layers(Scene& s) {
 std::vector<std::string> title_lines(const Scene& s) {
     const Toolpath& p = *s.path;
     const MachineProfile& m = p.machine();
-    std::string prog = p.program >= 0 ? "%" + std::to_string(p.program) : "(no program)";
+    std::string prog = p.program >= 0 ? "%" + std::to_string(p.program) : std::string(tr("(no program)"));
     if (!p.title.empty()) prog += "  " + p.title;
-    std::string mach = "machine " + (s.opt.machine.empty() ? m.name : s.opt.machine);
+    // TRANSLATORS: the plot's title: the machine profile's name.
+    std::string mach = strf(tr("machine %s"), (s.opt.machine.empty() ? m.name : s.opt.machine).c_str());
     if (!m.description.empty()) mach += " (" + m.description + ")";
-    mach += " \u00b7 plane " + std::string(plane_name(s.opt.plane));
-    if (s.lathe) mach += ", X up as a radius (true to shape)";
+    // TRANSLATORS: the plot's title: XY, ZX...
+    mach += " \u00b7 " + strf(tr("plane %s"), std::string(plane_name(s.opt.plane)).c_str());
+    // TRANSLATORS: the end of the plot's title on a lathe.
+    if (s.lathe) mach += tr(", X up as a radius (true to shape)");
     return {prog, mach};
 }
 
@@ -140,13 +145,17 @@ std::vector<std::pair<std::string, Rgb>> note_lines(const Scene& s) {
     const Toolpath& p = *s.path;
     const MachineProfile& m = p.machine();
     std::vector<std::pair<std::string, Rgb>> out;
-    std::string fit = "frame fitted to " + fit_words(p, s.fit);
-    if (s.fit.outside) fit += ", clipped at the frame";
+    // TRANSLATORS: a note of the plot; %s is a noun phrase such as "the cutting moves of %300".
+    std::string fit = strf(tr("frame fitted to %s"), fit_words(p, s.fit).c_str());
+    if (s.fit.outside) fit += tr(", clipped at the frame");
     out.push_back({fit, kGrey});
-    char buf[160];
-    std::snprintf(buf, sizeof buf, " \u00b7 %zu moves \u00b7 path %.3f mm", p.size(), p.length());
-    out.push_back({"cycle time " + hms(s.opt.seconds >= 0 ? s.opt.seconds : p.seconds()) + buf, kInk});
-    std::string ext = "extents";
+    // TRANSLATORS: the English says "moves" whatever the number.
+    out.push_back({strf(tr("cycle time %s"), hms(s.opt.seconds >= 0 ? s.opt.seconds : p.seconds()).c_str()) + " \u00b7 " +
+                       strf(trn("%zu moves", "%zu moves", p.size()), p.size()) + " \u00b7 " +
+                       strf(tr("path %.3f mm"), p.length()),
+                   kInk});
+    // TRANSLATORS: a note of the plot, followed by the extents of each axis (X -10/20  Z 0/50).
+    std::string ext = tr("extents");
     const PathBox& b = p.bounds();
     for (int a = X; a <= Z && !b.empty(); ++a) {
         if (!m.has(a)) continue;
@@ -154,12 +163,15 @@ std::vector<std::pair<std::string, Rgb>> note_lines(const Scene& s) {
         ext += std::string("  ") + kAxisNames[size_t(a)] + (f == 2 ? "\u00f8 " : " ") +
                fixed3_zeroed(f * b.lo[a], 0.0005, 47) + "/" + fixed3_zeroed(f * b.hi[a], 0.0005, 47);
     }
-    if (p.travel_moves()) ext += " \u00b7 " + std::to_string(p.travel_moves()) + " moves beyond travel";
+    // TRANSLATORS: the English says "moves" whatever the number.
+    if (p.travel_moves())
+        ext += " \u00b7 " + strf(trn("%zu moves beyond travel", "%zu moves beyond travel", p.travel_moves()), p.travel_moves());
     out.push_back({ext, kInk});
     for (const PathError& e : p.errors()) {
-        std::string t = "error " + std::to_string(e.code) + " line " + std::to_string(e.loc.line);
-        if (e.loc.n >= 0) t += " N" + std::to_string(e.loc.n);
-        out.push_back({t + ": " + e.detail, kRed});
+        if (e.loc.n >= 0)
+            out.push_back({strf(tr("error %d line %d N%ld: %s"), e.code, e.loc.line, e.loc.n, e.detail.c_str()), kRed});
+        else
+            out.push_back({strf(tr("error %d line %d: %s"), e.code, e.loc.line, e.detail.c_str()), kRed});
     }
     return out;
 }
@@ -213,28 +225,32 @@ double axes_and_scale(Scene& s, double x, double y) {
     Mark end = text_mark(Mark::scale, bx + bw, by - 1.2, buf, kSmall, kInk);
     end.right = true;
     s.marks.push_back(end);
+    // TRANSLATORS: %s is the scale of the plot, 1:2 or 5:1.
     s.marks.push_back(text_mark(Mark::scale, bx + bw + 3, by + bh,
-                                "drawn at " + s.ratio + " on paper (PDF, SVG)", kSmall, kGrey));
+                                strf(tr("drawn at %s on paper (PDF, SVG)"), s.ratio.c_str()), kSmall, kGrey));
     return 14;
 }
 
 // The legend: a sample of each layer drawn, flowing in rows. Returns the height used.
 double legend(Scene& s, double x, double y, double room) {
     double cx = x, row = y + kBody;
-    s.marks.push_back(text_mark(Mark::legend, cx, row, "legend", kBody, kInk, true));
-    cx += text_ems("legend", true) * kBody + 4;
+    // TRANSLATORS: the title of the plot's legend.
+    const char* title = tr("legend");
+    s.marks.push_back(text_mark(Mark::legend, cx, row, title, kBody, kInk, true));
+    cx += text_ems(title, true) * kBody + 4;
     for (size_t l = 0; l < kLayerCount; ++l) {
         if (!s.present[l]) continue;
         const LayerStyle& st = kStyles[l];
-        double w = 9.5 + text_ems(st.legend) * kBody + 5;
+        const char* words = tr(st.legend);
+        double w = 9.5 + text_ems(words) * kBody + 5;
         if (cx + w > x + room && cx > x) {
-            cx = x + text_ems("legend", true) * kBody + 4;
+            cx = x + text_ems(title, true) * kBody + 4;
             row += kBody * 1.7;
         }
         Mark sample = line_mark(Mark::legend, cx, row - 0.8, cx + 8, row - 0.8, st.colour, st.width);
         sample.layer = int(l);
         s.marks.push_back(sample);
-        s.marks.push_back(text_mark(Mark::legend, cx + 9.5, row, st.legend, kBody, kInk));
+        s.marks.push_back(text_mark(Mark::legend, cx + 9.5, row, words, kBody, kInk));
         cx += w;
     }
     return row - y + 2;
@@ -275,7 +291,8 @@ void lay_out(Scene& s) {
         s.marks.push_back(text_mark(Mark::notes, x, y, fit_text(words, kBody, content), kBody, colour));
     }
     y += kSmall * 1.8;
-    s.marks.push_back(text_mark(Mark::notes, x, y, "drawn by " + s.opt.generator, kSmall, kGrey));
+    // TRANSLATORS: %s is the program that drew the plot: pupitre 1.2.
+    s.marks.push_back(text_mark(Mark::notes, x, y, strf(tr("drawn by %s"), s.opt.generator.c_str()), kSmall, kGrey));
     s.page_w = content + 2 * kMargin;
     s.page_h = y + kMargin;
 }

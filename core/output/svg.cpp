@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/output/svg.hpp"
 #include "core/geometry/geometry.hpp"
+#include "core/i18n.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -347,12 +348,15 @@ std::string Writer::head() const {
     s += ' ';
     xy(s, paper(sc_.page_w), paper(sc_.page_h));
     s += "\">\n<title>" + xml_escape(sc_.title) + "</title>\n<desc>" +
-         xml_escape("Toolpath in the program frame, plane " + std::string(plane_name(sc_.opt.plane)) +
-                    "; lengths in mm; the horizontal axis to the right and the vertical one up" +
-                    (sc_.lathe ? " (lathe: Z across, X as a radius up, y = -X/2 of the diameters)."
-                               : ".") +
-                    " Drawn at " + sc_.ratio + "; the frame shows " + fit_words(p_, sc_.fit) +
-                    ", and clips what reaches beyond it.") +
+         xml_escape(strf(sc_.lathe ? tr("Toolpath in the program frame, plane %s; lengths in mm; the horizontal axis to "
+                                        "the right and the vertical one up (lathe: Z across, X as a radius up, y = -X/2 "
+                                        "of the diameters). Drawn at %s; the frame shows %s, and clips what reaches "
+                                        "beyond it.")
+                                   : tr("Toolpath in the program frame, plane %s; lengths in mm; the horizontal axis to "
+                                        "the right and the vertical one up. Drawn at %s; the frame shows %s, and clips "
+                                        "what reaches beyond it."),
+                         std::string(plane_name(sc_.opt.plane)).c_str(), sc_.ratio.c_str(),
+                         fit_words(p_, sc_.fit).c_str())) +
          "</desc>\n<defs>\n<clipPath id=\"window\"><rect x=\"";
     append_mm(s, sc_.wx0);
     s += "\" y=\"";

@@ -7,6 +7,7 @@
 
 #include "core/parse/block.hpp"
 #include "core/geometry/geometry.hpp"
+#include "core/i18n.hpp"
 
 namespace pupitre {
 
@@ -315,20 +316,22 @@ void count_outside(const Toolpath& p, PathPlane plane, size_t upto, PathFit& f) 
 }
 
 std::string fit_words(const Toolpath& p, const PathFit& f) {
-    std::string of = p.program >= 0 ? " of %" + std::to_string(p.program) : std::string();
+    // What the plot's frame shows, a noun phrase ("frame fitted to %s").
     switch (f.what) {
         case PathFit::start:
-            return "the start point (no move yet)";
+            return tr("the start point (no move yet)");
         case PathFit::moves:
-            return "the whole path" + of + " (no cutting move)";
+            return p.program >= 0 ? strf(tr("the whole path of %%%d (no cutting move)"), p.program)
+                                  : std::string(tr("the whole path (no cutting move)"));
         case PathFit::cuts:
             break;
     }
-    std::string s = "the cutting moves" + of, more;
-    if (f.mirror_out) more = "the mirror image left out, far from the axis";
+    std::string s = p.program >= 0 ? strf(tr("the cutting moves of %%%d"), p.program) : std::string(tr("the cutting moves")),
+                more;
+    if (f.mirror_out) more = tr("the mirror image left out, far from the axis");
     if (f.outside)
-        more += (more.empty() ? "" : "; ") + std::to_string(f.outside) +
-                (f.outside == 1 ? " rapid reaches" : " rapids reach") + " beyond";
+        more += (more.empty() ? "" : "; ") +
+                strf(trn("%zu rapid reaches beyond", "%zu rapids reach beyond", f.outside), f.outside);
     return more.empty() ? s : s + " (" + more + ")";
 }
 

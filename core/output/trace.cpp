@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/geometry/kinematics.hpp"
+#include "core/i18n.hpp"
 
 namespace pupitre {
 
@@ -227,14 +228,19 @@ void diag_json(std::string& o, const Diag& d) {
 
 std::string summary_text(const Interpreter& in, const std::string& file) {
     std::string o;
-    o += "%" + std::to_string(in.main_program()) + " (" + file + ") on " + in.machine().name + ": ";
-    o += std::to_string(in.blocks()) + " blocks, " + std::to_string(in.moves()) + " moves, path " +
-         fixed(in.path_length(), 3) + " mm, cycle time " + clock_text(in.seconds()) + " (" +
-         fixed(in.seconds(), 3) + " s)\n";
-    o += "final OP: " + axes_text(in, in.program_pos()) + "\n";
-    o += "final OM: " + axes_text(in, in.machine_pos()) + "\n";
+    // TRANSLATORS: a count in the summary of a run; the English says "blocks" whatever the number.
+    std::string blocks = strf(trn("%ld blocks", "%ld blocks", in.blocks()), in.blocks());
+    // TRANSLATORS: a count in the summary of a run; the English says "moves" whatever the number.
+    std::string moves = strf(trn("%ld moves", "%ld moves", in.moves()), in.moves());
+    // TRANSLATORS: the first line of the summary of a run: program number, file, machine profile, then the counts
+    // of blocks and moves, the path length, the cycle time h:mm:ss and in seconds.
+    o += strf(tr("%%%d (%s) on %s: %s, %s, path %s mm, cycle time %s (%s s)\n"), in.main_program(), file.c_str(),
+              in.machine().name.c_str(), blocks.c_str(), moves.c_str(), fixed(in.path_length(), 3).c_str(),
+              clock_text(in.seconds()).c_str(), fixed(in.seconds(), 3).c_str());
+    o += strf(tr("final OP: %s\n"), axes_text(in, in.program_pos()).c_str());
+    o += strf(tr("final OM: %s\n"), axes_text(in, in.machine_pos()).c_str());
     if (!in.tools_used().empty()) {
-        o += "tools:";
+        o += tr("tools:");
         for (int t : in.tools_used()) o += " T" + std::to_string(t);
         o += '\n';
     }

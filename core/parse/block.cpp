@@ -10,6 +10,7 @@
 //   message    -> '$' digit text-up-to-'('-or-end
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/parse/block.hpp"
+#include "core/i18n.hpp"
 
 #include <charconv>
 #include <cstring>
@@ -82,7 +83,7 @@ struct Parser {
         pos = i;
         v.int_digits = uint8_t(std::min<size_t>(int_digits, 255));
         v.frac_digits = uint8_t(std::min<size_t>(frac_digits, 255));
-        if (int_digits == 0 && frac_digits == 0) return fail(1, start, "number expected");
+        if (int_digits == 0 && frac_digits == 0) return fail(1, start, tr("number expected"));
         if (int_digits + frac_digits <= 15) {
             // Mantissa and power of ten are exact doubles, so the one division rounds
             // correctly: the value from_chars would give, faster.
@@ -92,14 +93,14 @@ struct Parser {
         } else {
             std::string_view span = s.substr(start, pos - start);
             char buf[64];
-            if (span.size() >= sizeof buf - 1) return fail(1, start, "too many digits");
+            if (span.size() >= sizeof buf - 1) return fail(1, start, tr("too many digits"));
             size_t k = 0;
             if (span.front() == '.') buf[k++] = '0';
             std::memcpy(buf + k, span.data(), span.size());
             k += span.size();
             if (buf[k - 1] == '.') buf[k++] = '0';
             auto r = std::from_chars(buf, buf + k, v.num);
-            if (r.ec != std::errc()) return fail(1, start, "number out of range");
+            if (r.ec != std::errc()) return fail(1, start, tr("number out of range"));
         }
         v.kind = Operand::Number;
         return true;
@@ -111,9 +112,9 @@ struct Parser {
         while (is_digit(peek())) {
             n = n * 10 + (s[pos] - '0');
             ++pos;
-            if (int(pos - start) > max_digits) return fail(91, start, "parameter number too long");
+            if (int(pos - start) > max_digits) return fail(91, start, tr("parameter number too long"));
         }
-        if (pos == start) return fail(93, start, "parameter number expected");
+        if (pos == start) return fail(93, start, tr("parameter number expected"));
         out = int32_t(n);
         return true;
     }
@@ -127,7 +128,7 @@ struct Parser {
             base = 926;
             ++pos;
         }
-        if (!is_upper(peek()) || peek(1) != '\'') return fail(93, start, "bad symbol, expected 'A'..'Z' or 'EA'..'EZ'");
+        if (!is_upper(peek()) || peek(1) != '\'') return fail(93, start, tr("bad symbol, expected 'A'..'Z' or 'EA'..'EZ'"));
         l = base + (s[pos] - 'A');
         pos += 2;
         return true;
@@ -203,7 +204,7 @@ struct Parser {
             skip_spaces();
             char c = peek();
             if (c == '+' || c == '-' || c == 'S' || c == 'C' || c == 'A' || c == 'R' || c == 'T') {
-                if (t.nprefix >= sizeof t.prefix) return fail(93, pos, "too many functions in a term");
+                if (t.nprefix >= sizeof t.prefix) return fail(93, pos, tr("too many functions in a term"));
                 t.prefix[t.nprefix++] = c;
                 ++pos;
                 continue;
@@ -215,8 +216,8 @@ struct Parser {
         bool found;
         if (!variable(t.v, found)) return false;
         if (!found) {
-            if (pos >= s.size()) return fail(93, pos, "expression ends without a value");
-            return fail(93, pos, std::string("'") + c + "' cannot appear in an expression");
+            if (pos >= s.size()) return fail(93, pos, tr("expression ends without a value"));
+            return fail(93, pos, strf(tr("'%c' cannot appear in an expression"), c));
         }
         return true;
     }
@@ -249,7 +250,7 @@ struct Parser {
 
     bool assign(const Operand& target, size_t col) {
         skip_spaces();
-        if (peek() != '=') return fail(93, pos, "'=' expected after the parameter");
+        if (peek() != '=') return fail(93, pos, tr("'=' expected after the parameter"));
         ++pos;
         Assign a;
         a.target = target;
@@ -268,7 +269,7 @@ struct Parser {
         else if (a == '<') { c = Cmp::lt; ++pos; }
         else if (a == '>') { c = Cmp::gt; ++pos; }
         else if (a == '=') { c = Cmp::eq; ++pos; }
-        else return fail(93, pos, "comparison operator expected (= <> < <= > >=)");
+        else return fail(93, pos, tr("comparison operator expected (= <> < <= > >=)"));
         return true;
     }
 
@@ -317,7 +318,7 @@ struct Parser {
                 return true;
             }
             if (!is_upper(n) || n == 'O' || n == 'L')
-                return fail(1, col, "address E must be followed by a letter (EA, EB…) or a parameter number");
+                return fail(1, col, strf(tr("address E must be followed by a letter (EA, EB%s) or a parameter number"), "\u2026"));
             w.addr = addrE(n);
             pos += 2;
         } else if (c == 'N' && (peek(1) == 'C' || peek(1) == 'U' || peek(1) == 'P' || peek(1) == 'R')) {
@@ -374,14 +375,14 @@ struct Parser {
             if (c == '(') {
                 size_t close = s.find(')', pos);
                 if (close == std::string_view::npos)
-                    return fail(17, pos, "end of block inside a comment");
+                    return fail(17, pos, tr("end of block inside a comment"));
                 pos = close + 1;
                 continue;
             }
             if (c == '$') {
-                if (!is_digit(peek(1))) return fail(1, pos, "'$' must be followed by a channel digit 0-6");
+                if (!is_digit(peek(1))) return fail(1, pos, tr("'$' must be followed by a channel digit 0-6"));
                 int ch = peek(1) - '0';
-                if (ch > 6) return fail(1, pos, "message channel must be $0 to $6");
+                if (ch > 6) return fail(1, pos, tr("message channel must be $0 to $6"));
                 pos += 2;
                 size_t end = s.find('(', pos);
                 if (end == std::string_view::npos) end = s.size();
@@ -396,7 +397,7 @@ struct Parser {
             }
             if (first_word || (b.words.size() == 1 && b.words[0].addr == addr1('N'))) {
                 if (structured_keyword())
-                    return fail(4, pos, "structured programming (IF, WHILE, FOR…) is an option this machine does not have");
+                    return fail(4, pos, strf(tr("structured programming (IF, WHILE, FOR%s) is an option this machine does not have"), "\u2026"));
             }
             first_word = false;
             if (c == 'L' && is_upper(peek(1)) && peek(1) != 'O') {
@@ -413,17 +414,17 @@ struct Parser {
                 Operand target;
                 bool found;
                 if (!variable(target, found)) return false;
-                if (!found) return fail(93, col, "bad parameter");
+                if (!found) return fail(93, col, tr("bad parameter"));
                 if (!assignment_follows(pos)) {
                     if (target.kind == Operand::LVar)
-                        return fail(93, col, "L variable not followed by '='");
-                    return fail(93, col, "E parameter not followed by '='");
+                        return fail(93, col, tr("L variable not followed by '='"));
+                    return fail(93, col, tr("E parameter not followed by '='"));
                 }
                 if (!assign(target, col)) return false;
                 continue;
             }
             if (is_upper(c)) {
-                if (c == 'O') return fail(1, pos, "the letter O is not an ISO address (did you mean 0?)");
+                if (c == 'O') return fail(1, pos, tr("the letter O is not an ISO address (did you mean 0?)"));
                 if (!word(c)) return false;
                 if (g76_edit_ && b.words.size() > g76_edit_ && b.words.back().addr == addr1('N')) {
                     if (!g76_tail()) return false;
@@ -433,23 +434,23 @@ struct Parser {
                     const Operand& v = b.words[0].v;
                     if (v.kind == Operand::Number) {
                         if (v.frac_digits || v.int_digits > 5)
-                            return fail(1, b.words[0].col - 1, "block number must have 1 to 5 digits");
+                            return fail(1, b.words[0].col - 1, tr("block number must have 1 to 5 digits"));
                         b.n = long(v.num);
                     } else if (v.kind == Operand::Blank) {
                         b.n = 0;
                     } else {
-                        return fail(1, b.words[0].col - 1, "block number must be a number");
+                        return fail(1, b.words[0].col - 1, tr("block number must be a number"));
                     }
                 }
                 continue;
             }
             if (c >= 'a' && c <= 'z')
-                return fail(1, pos, std::string("lower-case letter '") + c + "' outside a comment");
+                return fail(1, pos, strf(tr("lower-case letter '%c' outside a comment"), c));
             if (is_digit(c) || c == '.' || c == '+' || c == '-')
-                return fail(1, pos, "value without an address letter");
+                return fail(1, pos, tr("value without an address letter"));
             if (static_cast<unsigned char>(c) < 32 || static_cast<unsigned char>(c) > 126)
-                return fail(1, pos, "character outside the ISO set");
-            return fail(1, pos, std::string("unknown character '") + c + "'");
+                return fail(1, pos, tr("character outside the ISO set"));
+            return fail(1, pos, strf(tr("unknown character '%c'"), c));
         }
         return true;
     }
@@ -462,7 +463,7 @@ struct Parser {
             int k = 0, digits = 0;
             size_t at = p++;
             while (p < s.size() && is_digit(s[p])) {
-                if (++digits > 5) return fail(1, at, "the line offset +k has more than 5 digits");
+                if (++digits > 5) return fail(1, at, tr("the line offset +k has more than 5 digits"));
                 k = k * 10 + (s[p++] - '0');
             }
             b.g76_k = k;
@@ -488,8 +489,7 @@ bool parse_block(std::string_view line, Block& out, Diag& d) {
     if (line.size() > kMaxBlockChars) {
         d.code = 1;
         d.column = int(kMaxBlockChars) + 1;
-        d.detail = "block longer than " + std::to_string(kMaxBlockChars) + " characters (" +
-                   std::to_string(line.size()) + ")";
+        d.detail = strf(tr("block longer than %zu characters (%zu)"), size_t(kMaxBlockChars), line.size());
         return false;
     }
     Parser p{line, 0, out, d};

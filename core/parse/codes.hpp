@@ -46,7 +46,7 @@ struct GCode {
     uint8_t starred;     // MachineKinds on which it is NUM 1040/1060 only (starred)
     Support support;
     std::string_view args;  // addresses the function owns, space separated ("X Z S R")
-    std::string_view text;
+    std::string_view text;  // English, a msgid: shown with tr(std::string(text).c_str())
 };
 
 enum class MWhen : uint8_t { avant, apres };
@@ -56,7 +56,7 @@ struct MCode {
     MWhen when;
     bool modal;
     bool all_models;
-    std::string_view text;
+    std::string_view text;  // English, a msgid: shown with tr(std::string(text).c_str())
 };
 
 const GCode* find_g(int number);

@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "core/numfmt.hpp"
+#include "core/i18n.hpp"
 
 namespace pupitre {
 
@@ -18,7 +19,7 @@ int eval_operand(const Operand& o, const LVars& l, EAccess& e, double& out, std:
             break;
         case Operand::LVar:
             if (!LVars::valid(o.index)) {
-                why = "L" + std::to_string(o.index) + " does not exist (L0-L19, L100-L199, L900-L959)";
+                why = strf(tr("L%d does not exist (L0-L19, L100-L199, L900-L959)"), o.index);
                 return 91;
             }
             out = l.v[size_t(o.index)];
@@ -32,14 +33,14 @@ int eval_operand(const Operand& o, const LVars& l, EAccess& e, double& out, std:
         }
         case Operand::EIndirect: {
             if (!LVars::valid(o.index)) {
-                why = "L" + std::to_string(o.index) + " does not exist";
+                why = strf(tr("L%d does not exist"), o.index);
                 return 91;
             }
             double n = l.v[size_t(o.index)];
             if (!l.written.test(size_t(o.index))) l.unset_read.set(size_t(o.index)), l.any_unset_read = true;
             if (n < 0 || n > 99999 || n != std::floor(n)) {
-                why = "E parameter number " + std::to_string(n) + " taken from L" +
-                      std::to_string(o.index) + " is not an E number";
+                why = strf(tr("E parameter number %s taken from L%d is not an E number"), std::to_string(n).c_str(),
+                           o.index);
                 return 91;
             }
             int64_t raw;
@@ -70,7 +71,7 @@ int apply_prefix(const Term& t, double& v, std::string& why) {
             case 'T': v = std::trunc(v); break;
             case 'R':
                 if (v < 0) {
-                    why = "square root of a negative number (" + fixed3(v) + ")";
+                    why = strf(tr("square root of a negative number (%s)"), fixed3(v).c_str());
                     return 94;
                 }
                 v = std::sqrt(v);
@@ -103,7 +104,7 @@ int eval_expr(const Block& b, Expr x, const LVars& l, EAccess& e, double& out, s
             case '*': acc *= v; break;
             case '/':
                 if (v == 0) {
-                    why = "division by zero";
+                    why = tr("division by zero");
                     return 94;
                 }
                 acc /= v;
@@ -113,7 +114,7 @@ int eval_expr(const Block& b, Expr x, const LVars& l, EAccess& e, double& out, s
         }
     }
     if (!std::isfinite(acc)) {
-        why = "result is not a finite number";
+        why = tr("result is not a finite number");
         return 94;
     }
     out = acc;

@@ -1,6 +1,7 @@
 // Program memory: splitting files into % programs, label index.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/parse/program.hpp"
+#include "core/i18n.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -55,7 +56,7 @@ const Label* ProgramText::find_label(long n) const {
 bool ProgramMemory::load_file(const std::string& path, Diag& d) {
     std::ifstream in(path, std::ios::binary);
     if (!in) {
-        d = Diag{Severity::error, err::kCannotRead, path, -1, 0, -1, 0, "cannot open the file"};
+        d = Diag{Severity::error, err::kCannotRead, path, -1, 0, -1, 0, tr("cannot open the file")};
         return false;
     }
     // A regular file is read in one piece (a program is kept whole in memory
@@ -75,7 +76,7 @@ bool ProgramMemory::load_file(const std::string& path, Diag& d) {
         text = std::move(ss).str();
     }
     if (in.bad()) {
-        d = Diag{Severity::error, err::kCannotRead, path, -1, 0, -1, 0, "read error"};
+        d = Diag{Severity::error, err::kCannotRead, path, -1, 0, -1, 0, tr("read error")};
         return false;
     }
     return load_text(path, std::move(text), d);
@@ -134,7 +135,7 @@ bool ProgramMemory::load_text(std::string name, std::string text, Diag& d) {
     // A NUL byte is never part of a program: refuse binary input up front.
     if (text.find('\0') != std::string::npos) {
         d = Diag{Severity::error, err::kNotText, name, -1, 0, -1, 0,
-                 "not a text file (NUL byte found)"};
+                 tr("not a text file (NUL byte found)")};
         return false;
     }
     // Every line ends with '\n', so G76+ can insert after the last one.
@@ -187,16 +188,15 @@ bool ProgramMemory::load_text(std::string name, std::string text, Diag& d) {
     close(all.size());
     if (cur == anon.get() && anonymous_has_blocks) found.push_back(std::move(anon));
     if (found.empty()) {
-        d = Diag{Severity::error, err::kNoProgram, name, -1, 0, -1, 0, "no program in the file"};
+        d = Diag{Severity::error, err::kNoProgram, name, -1, 0, -1, 0, tr("no program in the file")};
         return false;
     }
     for (auto& p : found) {
         if (const ProgramText* old = find(p->number)) {
             warnings_.push_back(Diag{Severity::warning, err::wDuplicateProgram, p->file, p->number,
                                      p->first_line - 1, -1, 0,
-                                     "program %" + std::to_string(p->number) +
-                                         " is already loaded from " + old->file +
-                                         "; this copy is ignored"});
+                                     strf(tr("program %%%d is already loaded from %s; this copy is ignored"),
+                                          p->number, old->file.c_str())});
             continue;
         }
         progs_.push_back(std::move(p));
@@ -333,7 +333,7 @@ bool ProgramMemory::replace(int number, std::string name, std::string text, Diag
     auto& got = fresh.progs_;
     if (got.empty() || got.front()->number != number) {
         d = Diag{Severity::error, err::kNoProgram, name, -1, 0, -1, 0,
-                 "the text does not start with %" + std::to_string(number)};
+                 strf(tr("the text does not start with %%%d"), number)};
         return false;
     }
     for (auto& p : progs_)

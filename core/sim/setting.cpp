@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/numfmt.hpp"
+#include "core/i18n.hpp"
 
 namespace pupitre::setting {
 
@@ -30,18 +31,22 @@ std::string om_term(const Interpreter& in, int axis) {
 }
 
 std::string surface_term(const Interpreter& in, int axis, double typed) {
-    return diameter_x(in, axis) ? " - surface \u00f8" + num(typed) + "/2" : " - surface " + num(typed);
+    // TRANSLATORS: a term of the touch-off formula on the message line: the surface the operator typed.
+    const char* surface = tr("surface");
+    return diameter_x(in, axis) ? std::string(" - ") + surface + " \u00f8" + num(typed) + "/2"
+                                : std::string(" - ") + surface + " " + num(typed);
 }
 
 std::string result_name(const Interpreter& in, const std::string& name, int axis) {
-    return diameter_x(in, axis) ? name + " (radius)" : name;
+    // TRANSLATORS: %s is PREF.X or D1.X, a radius while the lathe's X is shown as a diameter.
+    return diameter_x(in, axis) ? strf(tr("%s (radius)"), name.c_str()) : name;
 }
 
 std::string frame_problem(const Interpreter& in) {
     const Frames& f = in.frames();
     if (f.mirror.any() || f.scale_on || std::abs(f.ed) > 1e-12)
-        return "a mirror (G51), a scale factor (G74) or an angular offset (ED) is in force: RAZ first";
-    if (f.g53) return "G53 is in force (PREF and DEC1 suspended): RAZ first";
+        return tr("a mirror (G51), a scale factor (G74) or an angular offset (ED) is in force: RAZ first");
+    if (f.g53) return tr("G53 is in force (PREF and DEC1 suspended): RAZ first");
     return {};
 }
 
@@ -57,7 +62,7 @@ double measure_gauge(double om, double g59, double pref, double dec1, double dec
 
 std::string touch_off(const Interpreter& in, int axis, double surface, Touch& t) {
     const MachineProfile& m = in.machine();
-    if (!m.has(axis)) return std::string("the machine has no ") + kAxisNames[size_t(axis)] + " axis";
+    if (!m.has(axis)) return strf(tr("the machine has no %c axis"), kAxisNames[size_t(axis)]);
     if (std::string p = frame_problem(in); !p.empty()) return p;
     const Frames& f = in.frames();
     size_t a = size_t(axis);
@@ -68,19 +73,20 @@ std::string touch_off(const Interpreter& in, int axis, double surface, Touch& t)
     t.before = f.pref[a];
     t.after = touch_pref(in.machine_pos()[a], f.g59[a], f.dec1[a], f.dec3[a], gauge, s);
     t.formula = result_name(in, t.name, axis) + " = " + om_term(in, axis) + term("DEC1", f.dec1[a]) +
-                term("DEC3", f.dec3[a]) + term("G59", f.g59[a]) + term("gauge", gauge) +
+                // TRANSLATORS: a term of the touch-off formula on the message line: the tool gauge.
+                term("DEC3", f.dec3[a]) + term("G59", f.g59[a]) + term(tr("gauge"), gauge) +
                 surface_term(in, axis, surface) + " = " + num(t.after);
     return {};
 }
 
 std::string measure(const Interpreter& in, int d, int axis, double surface, Touch& t) {
     const MachineProfile& m = in.machine();
-    if (d < 1 || d > m.correctors) return "corrector must be D1 to D" + std::to_string(m.correctors);
-    if (!m.has(axis)) return std::string("the machine has no ") + kAxisNames[size_t(axis)] + " axis";
+    if (d < 1 || d > m.correctors) return strf(tr("corrector must be D1 to D%d"), int(m.correctors));
+    if (!m.has(axis)) return strf(tr("the machine has no %c axis"), kAxisNames[size_t(axis)]);
     if (!m.lathe && axis != in.modal().tool_axis)
-        return std::string("on a machining centre a gauge is measured along the tool axis (") +
-               kAxisNames[size_t(in.modal().tool_axis)] + ")";
-    if (m.lathe && axis != X && axis != Z) return "a lathe gauge is measured on X or Z";
+        return strf(tr("on a machining centre a gauge is measured along the tool axis (%c)"),
+                    kAxisNames[size_t(in.modal().tool_axis)]);
+    if (m.lathe && axis != X && axis != Z) return tr("a lathe gauge is measured on X or Z");
     if (std::string p = frame_problem(in); !p.empty()) return p;
     const Frames& f = in.frames();
     size_t a = size_t(axis);
@@ -98,7 +104,8 @@ std::string measure(const Interpreter& in, int d, int axis, double surface, Touc
     t.after = total - dyn;
     t.formula = result_name(in, t.name, axis) + " = " + om_term(in, axis) + term("PREF", f.pref[a]) +
                 term("DEC1", f.dec1[a]) + term("DEC3", f.dec3[a]) + term("G59", f.g59[a]) +
-                surface_term(in, axis, surface) + term("dynamic", dyn) + " = " + num(t.after);
+                // TRANSLATORS: a term of the measure formula on the message line: the dynamic correction (DX, DZ, DL).
+                surface_term(in, axis, surface) + term(tr("dynamic"), dyn) + " = " + num(t.after);
     return {};
 }
 

@@ -4,6 +4,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/sim/sim.hpp"
 #include "core/geometry/geometry.hpp"
+#include "core/i18n.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -22,16 +23,18 @@ struct ModeInfo {
 };
 // The NUM names on the status line, with the English the help page gives and
 // what the operator does next. The order is the mode key's (F8).
+// `english` and `how` are msgids: mode_english and mode_how return the English,
+// the pages show it with tr().
 constexpr ModeInfo kModes[] = {
-    {Mode::automatic, "auto", "AUTO", "continuous run", "Cycle Start (F9) runs the selected program"},
-    {Mode::single, "seq", "SEQ", "single block", "Cycle Start (F9) runs one block"},
-    {Mode::dry, "dry", "DRY RUN", "dry run: feeds at the machine maximum", "Cycle Start (F9) runs it"},
-    {Mode::test, "test", "TEST", "program check, no motion", "Cycle Start (F9) checks the program"},
-    {Mode::rns, "rns", "RNS", "block search and resume", "type the N to find, then Cycle Start (F9)"},
-    {Mode::imd, "imd", "IMD", "manual data input", "type a block, Enter, then Cycle Start (F9)"},
-    {Mode::jog, "jog", "JOG", "continuous jog", "hold an arrow key to move an axis (keys on OP)"},
-    {Mode::inc, "inc", "INC", "incremental jog", "an arrow key moves one step (keys on OP)"},
-    {Mode::pom, "pom", "POM", "homing", "Cycle Start (F9) homes the axes"},
+    {Mode::automatic, "auto", "AUTO", N_("continuous run"), N_("Cycle Start (F9) runs the selected program")},
+    {Mode::single, "seq", "SEQ", N_("single block"), N_("Cycle Start (F9) runs one block")},
+    {Mode::dry, "dry", "DRY RUN", N_("dry run: feeds at the machine maximum"), N_("Cycle Start (F9) runs it")},
+    {Mode::test, "test", "TEST", N_("program check, no motion"), N_("Cycle Start (F9) checks the program")},
+    {Mode::rns, "rns", "RNS", N_("block search and resume"), N_("type the N to find, then Cycle Start (F9)")},
+    {Mode::imd, "imd", "IMD", N_("manual data input"), N_("type a block, Enter, then Cycle Start (F9)")},
+    {Mode::jog, "jog", "JOG", N_("continuous jog"), N_("hold an arrow key to move an axis (keys on OP)")},
+    {Mode::inc, "inc", "INC", N_("incremental jog"), N_("an arrow key moves one step (keys on OP)")},
+    {Mode::pom, "pom", "POM", N_("homing"), N_("Cycle Start (F9) homes the axes")},
 };
 
 std::string fmt_seconds(double s) {
@@ -104,22 +107,22 @@ Sim::~Sim() = default;
 
 bool Sim::set_mode(Mode m, std::string& why) {
     if (in_cycle()) {
-        why = "a program is in cycle: let it end or press RAZ before changing mode";
+        why = tr("a program is in cycle: let it end or press RAZ before changing mode");
         return false;
     }
     mode_ = m;
     if (state_ == RunState::ended) state_ = RunState::idle;
-    if (m == Mode::rns && search_n_ < 0) message_ = "RNS: type the N number of the block to search, then Cycle Start";
+    if (m == Mode::rns && search_n_ < 0) message_ = tr("RNS: type the N number of the block to search, then Cycle Start");
     return true;
 }
 
 bool Sim::select(int program, std::string& why) {
     if (in_cycle()) {
-        why = "a program is in cycle: RAZ first";
+        why = tr("a program is in cycle: RAZ first");
         return false;
     }
     if (!mem_.find(program)) {
-        why = "program %" + std::to_string(program) + " is not in memory";
+        why = strf(tr("program %%%d is not in memory"), program);
         return false;
     }
     if (selected_ != program) {
@@ -136,11 +139,11 @@ bool Sim::select(int program, std::string& why) {
 
 bool Sim::imd(std::string_view blocks, std::string& why) {
     if (mode_ != Mode::imd) {
-        why = "blocks are typed in IMD mode";
+        why = tr("blocks are typed in IMD mode");
         return false;
     }
     if (in_cycle()) {
-        why = "the previous IMD block is still running";
+        why = tr("the previous IMD block is still running");
         return false;
     }
     imd_ = std::make_unique<ProgramText>();
@@ -154,22 +157,22 @@ bool Sim::imd(std::string_view blocks, std::string& why) {
 
 bool Sim::search(long n, std::string& why) {
     if (in_cycle()) {
-        why = "a program is in cycle: RAZ first";
+        why = tr("a program is in cycle: RAZ first");
         return false;
     }
     if (n < 0) {
-        why = "RNS needs a block number N";
+        why = tr("RNS needs a block number N");
         return false;
     }
     search_n_ = n;
-    message_ = "RNS N" + std::to_string(n) + ": Cycle Start searches the block";
+    message_ = strf(tr("RNS N%ld: Cycle Start searches the block"), n);
     return true;
 }
 
 bool Sim::cycle_start(std::string& why) {
     switch (state_) {
         case RunState::alarm:
-            why = "alarm " + std::to_string(alarms_.back().diag.code) + " is active: RAZ first";
+            why = strf(tr("alarm %d is active: RAZ first"), alarms_.back().diag.code);
             return false;
         case RunState::running: return true;
         case RunState::hold:
@@ -187,7 +190,7 @@ bool Sim::cycle_start(std::string& why) {
     message_.clear();
     auto need_program = [&]() {
         if (selected_ >= 0 && mem_.find(selected_)) return true;
-        why = "no program selected: choose one on the DIR page or with :load N";
+        why = tr("no program selected: choose one on the DIR page or with :load N");
         return false;
     };
     switch (mode_) {
@@ -218,7 +221,7 @@ bool Sim::cycle_start(std::string& why) {
         case Mode::rns:
             if (!need_program()) return false;
             if (search_n_ < 0) {
-                why = "RNS: type the N number of the block to search first";
+                why = tr("RNS: type the N number of the block to search first");
                 return false;
             }
             in_->start(selected_);
@@ -226,7 +229,7 @@ bool Sim::cycle_start(std::string& why) {
             break;
         case Mode::imd:
             if (!imd_) {
-                why = "IMD: type a block first";
+                why = tr("IMD: type a block first");
                 return false;
             }
             in_->start_imd(imd_.get());
@@ -250,7 +253,7 @@ bool Sim::cycle_start(std::string& why) {
         }
         case Mode::jog:
         case Mode::inc:
-            why = "JOG/INC: move an axis with the jog keys or :jog AXIS DIST";
+            why = tr("JOG/INC: move an axis with the jog keys or :jog AXIS DIST");
             return false;
     }
     interp_done_ = false;
@@ -306,21 +309,21 @@ void Sim::raz() {
 
 bool Sim::jog(int axis, double delta, std::string& why) {
     if (state_ == RunState::running && !manual_) {
-        why = "a program is in cycle";
+        why = tr("a program is in cycle");
         return false;
     }
     if ((in_cycle() && !manual_) || state_ == RunState::alarm) {
-        why = state_ == RunState::alarm ? "an alarm is active: RAZ first" : "a program is interrupted: RAZ before jogging";
+        why = state_ == RunState::alarm ? tr("an alarm is active: RAZ first") : tr("a program is interrupted: RAZ before jogging");
         return false;
     }
     if (!m_.has(axis)) {
-        why = std::string("the machine has no ") + kAxisNames[size_t(axis)] + " axis";
+        why = strf(tr("the machine has no %c axis"), kAxisNames[size_t(axis)]);
         return false;
     }
     double internal = delta / in_->to_display(axis, 1.0);
     int code = in_->jog(axis, internal, why);
     if (code) {
-        why = "error " + std::to_string(code) + ": " + why;
+        why = strf(tr("error %d: %s"), code, why.c_str());
         return false;
     }
     double feed = jog_feed > 0 ? jog_feed : m_.jog_feed;
@@ -476,22 +479,24 @@ bool Sim::begin_next() {
         case Ev::message: message_ = e.text; break;
         case Ev::stop:
             state_ = RunState::stopped;
-            message_ = e.a == 88 ? "G88: operator check; Cycle Start goes on"
-                                 : "M" + std::string(e.a < 10 ? "0" : "") + std::to_string(e.a) +
-                                       ": program stop; Cycle Start goes on";
+            message_ = e.a == 88 ? std::string(tr("G88: operator check; Cycle Start goes on"))
+                                 : strf(tr("M%02d: program stop; Cycle Start goes on"), e.a);
             break;
         case Ev::end:
             state_ = RunState::ended;
             if (e.a != 2 && mode_ == Mode::imd)
-                message_ = "IMD done (" + std::to_string(blocks_) + (blocks_ == 1 ? " block" : " blocks") +
-                           "): type the next block, or F8 for another mode";
+                message_ = strf(trn("IMD done (%ld block): type the next block, or F8 for another mode",
+                                    "IMD done (%ld blocks): type the next block, or F8 for another mode", blocks_),
+                                blocks_);
             if (e.a == 2) {
-                message_ = "M02: end of program %" + std::to_string(e.loc.prog) + ", " +
-                           std::to_string(blocks_) + " blocks, cycle time " + fmt_seconds(run_seconds_);
+                // TRANSLATORS: the second %s counts the blocks run ("%ld blocks").
+                message_ = strf(tr("M02: end of program %%%d, %s, cycle time %s"), e.loc.prog,
+                                strf(trn("%ld blocks", "%ld blocks", blocks_), blocks_).c_str(),
+                                fmt_seconds(run_seconds_).c_str());
                 // The warnings the run printed on the way must not vanish with it.
                 if (run_warning_count_ > 0)
-                    message_ += "; " + std::to_string(run_warning_count_) +
-                                (run_warning_count_ == 1 ? " warning" : " warnings") + " (F7 ALARM)";
+                    message_ += strf(trn("; %zu warning (F7 ALARM)", "; %zu warnings (F7 ALARM)", run_warning_count_),
+                                     run_warning_count_);
             }
             break;
         case Ev::dwell: break;
@@ -591,7 +596,7 @@ void Sim::raise_from_interp() {
             if (path_) path_->add_error(x);
         }
         else {
-            message_ = "warning " + std::to_string(x.code) + ": " + x.detail;
+            message_ = strf(tr("warning %d: %s"), x.code, x.detail.c_str());
             if (run_warnings_.size() < kMaxRunWarnings) run_warnings_.push_back(x);
             ++run_warning_count_;
         }
@@ -607,7 +612,7 @@ bool Sim::step_interp(long& budget) {
     }
     if (interp_done_) {
         if (state_ == RunState::running && manual_ && mode_ == Mode::pom)
-            message_ = "POM done: every axis is homed; F8 to choose the next mode";
+            message_ = tr("POM done: every axis is homed; F8 to choose the next mode");
         if (state_ == RunState::running) state_ = manual_ ? RunState::idle : RunState::ended;
         manual_ = false;
         return false;
@@ -634,7 +639,7 @@ bool Sim::step_interp(long& budget) {
         mode_ = Mode::automatic;
         state_ = RunState::stopped;
         loc_ = Loc{in_->location().prog, next_line, search_n_};
-        message_ = "RNS: N" + std::to_string(search_n_) + " found, state rebuilt; Cycle Start rejoins it, AUTO";
+        message_ = strf(tr("RNS: N%ld found, state rebuilt; Cycle Start rejoins it, AUTO"), search_n_);
         return false;
     }
     --budget;
@@ -651,7 +656,7 @@ bool Sim::step_interp(long& budget) {
             if (searching_) {
                 searching_ = false;
                 state_ = RunState::idle;
-                message_ = "RNS: N" + std::to_string(search_n_) + " is not in the program";
+                message_ = strf(tr("RNS: N%ld is not in the program"), search_n_);
                 return false;
             }
             break;
@@ -680,9 +685,12 @@ void Sim::test_advance(long budget) {
         } else if (r == StepResult::ended) {
             int warnings = 0;
             for (const Diag& d : test_->diags()) warnings += !d.is_error();
-            message_ = "TEST %" + std::to_string(selected_) + ": no error, " + std::to_string(test_->blocks()) +
-                       " blocks, " + std::to_string(warnings) + " warnings, cycle time " +
-                       fmt_seconds(test_->seconds());
+            // TRANSLATORS: the %s count the blocks ("%ld blocks") and the warnings ("%d warnings").
+            message_ = strf(tr("TEST %%%d: no error, %s, %s, cycle time %s"), selected_,
+                            strf(trn("%ld blocks", "%ld blocks", test_->blocks()), test_->blocks()).c_str(),
+                            // TRANSLATORS: the English says "warnings" whatever the number.
+                            strf(trn("%d warnings", "%d warnings", warnings), warnings).c_str(),
+                            fmt_seconds(test_->seconds()).c_str());
             state_ = RunState::ended;
         }
     }
