@@ -92,6 +92,10 @@ void default_machine_note(const std::string& asked, bool errors) {
 }
 
 int run(const RunArgs& a) {
+    // The JSON summary holds the diagnostics' messages: machine-readable output
+    // does not change with the language, so a --json run speaks English
+    // throughout, its diagnostics on stderr included (pupitre(1), --lang).
+    if (a.json) i18n::use_english();
     MachineProfile m;
     const std::string machine = batch_machine(a.machine);
     if (!load_machine(machine, m)) return kUsage;

@@ -141,6 +141,11 @@ void init(const std::string& lang, const std::string& localedir) {
     g_active = true;
 }
 
+void use_english() {
+    g_active = false;
+    g_lang = "en";
+}
+
 std::string_view language() { return g_lang; }
 
 std::string available(const std::string& localedir) {

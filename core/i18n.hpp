@@ -42,6 +42,10 @@ std::string choose(std::string_view override, const std::string& wanted_list, co
 // generated), LC_NUMERIC "C" always, and the catalogue from `localedir`.
 void init(const std::string& lang, const std::string& localedir);
 
+// English from here on, whatever init() chose: `run --json` carries the
+// diagnostics' messages, and its output must not change with the language.
+void use_english();
+
 // The language chosen by init(): "en" by default.
 std::string_view language();
 // The languages with a catalogue in `localedir`, plus "en", sorted.
