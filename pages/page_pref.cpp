@@ -53,7 +53,7 @@ void page_pref(const View& v, Canvas& c, const Rect& r) {
         if (m.has(a) && in.gauge_pending(a) && std::abs(in.active_gauge(a) - f.gauge[size_t(a)]) > 5e-7)
             waiting += std::string(waiting.empty() ? "" : " ") + kAxisNames[size_t(a)];
     if (!waiting.empty()) d += strf(tr("; its gauge on %s applies at the next move or touch-off"), waiting.c_str());
-    c.text(2, y++, d, waiting.empty() ? Style::dim : Style::warn, r.w - 2);
+    for (const auto& part : wrap_text(d, r.w - 2)) c.text(2, y++, part, waiting.empty() ? Style::dim : Style::warn);
     if (m.lathe && s.to_display(X, 1.0) != 1.0)
         c.text(2, y++, strf(tr("X: PREF, DEC1, DEC3, G59 and the gauge are radii; OM and OP diameters (%s)."), "\u00f8"),
                Style::dim, r.w - 2);
