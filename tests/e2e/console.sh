@@ -204,6 +204,77 @@ setting)
     wait_for 'D2.X \(radius\) = OM ø300.000/2 - PREF 16.666 .* = 83.334'
     wait_for '^  2 +83.334 '
     ;;
+french)
+    # The console in French (issue 20), as a student in a French lab finds it:
+    # LANG and LC_NUMERIC French, no French locale needed. Home, a tool by
+    # IMD, a touch-off typed with a decimal comma, an alarm with the manual's
+    # own text, the help page; the colours still reach the screen; numbers
+    # keep the decimal point. Then --lang en wins over the environment, and
+    # --ascii keeps the letters of accented words.
+    E2E_ENV="LANGUAGE= LANG=fr_FR.UTF-8 LC_NUMERIC=fr_FR.UTF-8" start
+    wait_for 'OP  position programme'
+    wait_for '1AIDE +2OP/OM'
+    wait_for 'F1 aide, F6 programmes, F8 mode, F9 Départ cycle'
+    cmd ":set D1.X=63.345"
+    cmd ":set D1.Z=38.237"
+    cmd ":mode pom"
+    keys F9
+    wait_for '^ POM .*PRÊT' 20
+    wait_for 'POM faite'
+    cmd ":mode imd"
+    cmd "T1 D1 M6"
+    keys F9
+    wait_for '^ IMD .*FIN' 10
+    wait_for 'IMD terminé \(1 bloc\)'
+    cmd ":mode jog"
+    cmd ":jog Z -100"
+    cmd ":jog X -80"
+    wait_for '^ JOG .*PRÊT' 20
+    cmd ":page pref"
+    wait_for 'PREF  origines'
+    wait_for 'correcteur actif D1, outil T1'
+    cmd "Z 0"
+    wait_for 'PREF.Z = OM 100.000 - jauge 38.237 - surface 0.000 = 61.763'
+    cmd "X 59,978"
+    wait_for 'X 59,978 lu comme 59.978'
+    wait_for 'PREF.X \(rayon\) = OM ø220.000/2 - jauge 63.345 - surface ø59.978/2 ='
+    wait_for '^ +16.666 \(avant 0.000\)'
+    status=$(screen_e | head -1)
+    [[ $status == *'[37m'*'[44m'* || $status == *'37;44'* ]] || fail "the status line is not white on blue: $status"
+    cmd ":page op"
+    wait_for 'OP  position programme'
+    [ "$(op_value X)" = "59.978" ] || fail "after the touch-off X should read 59.978"
+    [ "$(op_value Z)" = "0.000" ] || fail "after the touch-off Z should read 0.000"
+    cmd ":mode imd"
+    cmd "G2 X10 Z0 R2"
+    keys F9
+    wait_for 'ALARME 107' 10
+    row=$(sgr_line 'ALARME 107')
+    [[ $row == *'[41m'* ]] || fail "the alarm is not on red: $row"
+    keys F7
+    wait_for 'ALARME  1 depuis la mise sous tension'
+    wait_for 'PGP : cercle défini par rayon'
+    keys F12
+    keys F1
+    wait_for 'AIDE  touches et commandes'
+    wait_for 'Premiers pas'
+    screen | grep -q 'Cycle Start' && fail "the help page still says Cycle Start in French"
+    cmd ":quit"
+    wait_for '^EXIT=0'
+    next_server
+    E2E_ENV="LANGUAGE= LANG=fr_FR.UTF-8" start --lang en
+    wait_for 'OP  program position'
+    wait_for '1HELP +2OP/OM'
+    cmd ":quit"
+    wait_for '^EXIT=0'
+    next_server
+    E2E_ENV="LANGUAGE=fr LANG=C.UTF-8" start --ascii
+    wait_for '^ AUTO .* PRET '
+    wait_for '9DEPART'
+    screen | LC_ALL=C grep -q '[^ -~]' && fail "--ascii drew a non-ASCII character in French"
+    cmd ":quit"
+    wait_for '^EXIT=0'
+    ;;
 edit)
     # A program typed in the editor, saved with an error: the cursor stands on
     # the faulty block with its NUM number; corrected, saved, in the store.

@@ -17,6 +17,8 @@ mkdir -p "$HOME"
 screen() { T capture-pane -p -t e2e 2>/dev/null; }
 # The screen with its SGR colour and attribute sequences (capture-pane -e).
 screen_e() { T capture-pane -e -p -t e2e 2>/dev/null; }
+# sgr_line REGEX: the coloured capture of the first line matching REGEX.
+sgr_line() { screen_e | grep -E -m1 -- "$1"; }
 fail() {
     echo "FAIL ($case): $*"
     echo "---- screen ----"
@@ -58,7 +60,7 @@ start() {
     # the terminal was given back as it was.
     T -f /dev/null new-session -d -s e2e -x "${W:-80}" -y "${H:-24}" \
         "env LANG=C.UTF-8 TERM=screen ${E2E_ENV:-} '$bin' $* ; echo EXIT=\$? ; stty -a > '$work/stty' ; sleep 30"
-    wait_for 'F1 help|1HELP' 10
+    wait_for 'F1 help|1HELP|1AIDE' 10
 }
 pom() {
     cmd ":mode pom"

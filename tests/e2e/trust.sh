@@ -16,8 +16,6 @@ tool1() {
     keys F9
     wait_for '^ IMD .*END' 10
 }
-# sgr_line REGEX: the coloured capture of the first line matching REGEX.
-sgr_line() { screen_e | grep -E -m1 -- "$1"; }
 
 case $case in
 gauge)
