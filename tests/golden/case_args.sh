@@ -1,5 +1,7 @@
-# Sourced by golden.sh and tests/i18n/golden_fr.sh: the machine and the
-# program arguments of one case of cases.txt.
+# Sourced by golden.sh, tests/plot/plot.sh and tests/i18n/golden_fr.sh: the
+# machine and the program arguments of one case of $here/cases.txt (needs
+# $here, $root and $shared). Arguments: shared:F (../shared/programs), local:F
+# (tests/golden/programs), bad:F (tests/bad), plot:F (tests/plot/programs).
 #   golden_case NAME   sets $machine and the array $args (exit 77: shared/ missing)
 # SPDX-License-Identifier: GPL-3.0-or-later
 golden_case() {
@@ -13,7 +15,9 @@ golden_case() {
             shared:*) f="$shared/programs/${w#shared:}"
                       [ -f "$f" ] || { echo "golden: $f missing (shared/ not beside the repo)" >&2; exit 77; }
                       args+=("$f") ;;
-            local:*)  args+=("$here/programs/${w#local:}") ;;
+            local:*)  args+=("$root/tests/golden/programs/${w#local:}") ;;
+            bad:*)    args+=("$root/tests/bad/${w#bad:}") ;;
+            plot:*)   args+=("$root/tests/plot/programs/${w#plot:}") ;;
             *)        args+=("$w") ;;
         esac
     done

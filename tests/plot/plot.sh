@@ -13,21 +13,8 @@ here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
 shared=${PUPITRE_SHARED:-$root/../shared}
 command -v python3 >/dev/null || { echo "plot: python3 is needed" >&2; exit 77; }
-line=$(grep -E "^$name[[:space:]]" "$here/cases.txt" || true)
-[ -n "$line" ] || { echo "plot: no case '$name' in cases.txt" >&2; exit 2; }
-read -r _ machine rest <<<"$line"
-args=()
-for w in $rest; do
-    case $w in
-        shared:*) f="$shared/programs/${w#shared:}"
-                  [ -f "$f" ] || { echo "plot: $f missing (shared/ not beside the repo)" >&2; exit 77; }
-                  args+=("$f") ;;
-        local:*)  args+=("$root/tests/golden/programs/${w#local:}") ;;
-        bad:*)    args+=("$root/tests/bad/${w#bad:}") ;;
-        plot:*)   args+=("$here/programs/${w#plot:}") ;;
-        *)        args+=("$w") ;;
-    esac
-done
+. "$root/tests/golden/case_args.sh"
+golden_case "$name"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 if [ -n "${PUPITRE_PLOT:-}" ]; then read -r -a plot <<<"$PUPITRE_PLOT"; else plot=("$bin" plot); fi
