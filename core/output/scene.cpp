@@ -132,7 +132,8 @@ std::vector<std::string> title_lines(const Scene& s) {
     if (!p.title.empty()) prog += "  " + p.title;
     // TRANSLATORS: the plot's title: the machine profile's name.
     std::string mach = strf(tr("machine %s"), (s.opt.machine.empty() ? m.name : s.opt.machine).c_str());
-    if (!m.description.empty()) mach += " (" + m.description + ")";
+    // A shipped profile's description is in the catalogue (scripts/lib/extract-pot).
+    if (!m.description.empty()) mach += std::string(" (") + tr(m.description.c_str()) + ")";
     // TRANSLATORS: the plot's title: XY, ZX...
     mach += " \u00b7 " + strf(tr("plane %s"), std::string(plane_name(s.opt.plane)).c_str());
     // TRANSLATORS: the end of the plot's title on a lathe.
