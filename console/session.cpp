@@ -547,8 +547,9 @@ std::vector<std::string> Session::complete(std::string_view word) const {
     }
     std::string up(word);
     for (char& c : up) c = char(std::toupper(static_cast<unsigned char>(c)));
+    // The codes' texts are catalogue msgids (codes.cpp marks them N_).
     auto add = [&](std::string code, std::string_view text) {
-        if (code.rfind(up, 0) == 0) out.push_back(code + "  " + std::string(text));
+        if (code.rfind(up, 0) == 0) out.push_back(code + "  " + tr(std::string(text).c_str()));
     };
     if (first == 'G')
         for (const GCode& g : all_g()) {
