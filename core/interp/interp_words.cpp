@@ -171,7 +171,7 @@ Interpreter::Decoder::Decoder(Interpreter& interp, Plan& plan, const Block& b)
         if (w.addr != addr1('G') || w.v.kind != Operand::Number) continue;
         const double g = w.v.num;
         if (g == 70 || g == 71) inch = g == 70;
-        const int gi = int(g);
+        const int gi = g >= 0 && g < 1e6 ? int(g) : -1;  // no UB on G1e41
         if (gi == 80 || (gi >= 81 && gi <= 89) || gi == 31) cycle_code = gi;
     }
     unit = inch ? 25.4 : 1.0;

@@ -71,7 +71,7 @@ struct Parser {
     bool number(Operand& v) {
         const size_t start = pos, n = s.size();
         const char* p = s.data();
-        int64_t m = 0;
+        uint64_t m = 0;  // wraps past 19 digits, where the from_chars path takes over
         size_t i = pos;
         while (i < n && is_digit(p[i])) m = m * 10 + (p[i++] - '0');
         size_t int_digits = i - start, frac_digits = 0;
@@ -330,7 +330,8 @@ struct Parser {
         }
         if (!operand(w.v)) return false;
         if (c == 'G' && w.addr == addr1('G') && w.v.kind == Operand::Number) {
-            int g = int(w.v.num);
+            // A G number out of int's range is no G76/G77/G79 (decode says error 2).
+            int g = w.v.num >= 0 && w.v.num < 1e6 ? int(w.v.num) : -1;
             if ((g == 76 || g == 79) && (peek() == '+' || peek() == '-')) {
                 w.gsign = peek();
                 ++pos;
