@@ -162,6 +162,12 @@ bool Interpreter::DrillRun::check_code() {
         return in.fail(2, strf(tr("G%d needs P (first peck) or ES (number of pecks)"), code)), false;
     if ((code == 83 || code == 87) && c.has_p && c.has_q && c.q > c.p)
         return in.fail(881, tr("the last peck Q is larger than the first P")), false;
+    // A peck under the resolution, a negative one or a fraction of a peck
+    // would loop or divide by zero (found by fuzzing): incompatible values.
+    if ((code == 83 || code == 87) && ((c.has_p && c.p < 0.001) || (c.has_q && c.q < 0)))
+        return in.fail(881, tr("the pecks P and Q must be positive, P at least 0.001 mm")), false;
+    if ((code == 83 || code == 87) && c.has_es && (c.es < 1 || c.es != std::floor(c.es)))
+        return in.fail(881, tr("ES must be a whole number of pecks, 1 or more")), false;
     if (code == 31 && (!c.has_k || !c.has_p))
         return in.fail(883, tr("G31 needs the pitch (K) and the retract (P)")), false;
     if (code == 31 && c.has_starts && (c.starts < 1 || c.starts > 9 || c.starts != std::floor(c.starts)))
@@ -204,6 +210,11 @@ bool Interpreter::DrillRun::dwell_bottom() { return move(1, c.z) && dwell(c.ef) 
 
 // Peck law (milling.md §6.5, spec README (b) 18).
 bool Interpreter::DrillRun::pecks(std::vector<double>& out) {
+    // More pecks than any hole needs: an input mistake, not hours of moves.
+    constexpr double kMaxPecks = 100000;
+    const double wanted = c.has_es && c.es >= 1 ? c.es : depth / std::max(c.p, 1e-300);
+    if (!(wanted <= kMaxPecks))
+        return in.fail(881, strf(tr("more than %d pecks for this hole"), int(kMaxPecks))), false;
     if (c.has_es && c.es >= 1) {
         int n = int(std::lround(c.es));
         double first = c.has_p ? c.p : -1, last = c.has_q ? c.q : -1;
