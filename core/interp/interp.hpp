@@ -6,6 +6,7 @@
 #include <array>
 #include <bitset>
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <unordered_set>
@@ -281,6 +282,17 @@ private:
     // interp.cpp
     bool fetch(std::string_view& line, int& lineno);
     StepResult execute(const Block& b);
+    // interp_exec.cpp: the steps of execute().
+    // The inline ones run for every block, where a call would cost more than
+    // their tests; they are defined and called in interp_exec.cpp only.
+    inline bool assign_all(const Block& b);
+    bool assign_l(const Operand& t, double v, int col);
+    bool assign_e(const Operand& t, double v, int col);
+    std::optional<StepResult> run_apart(const Block& b, const Plan& p);
+    bool block_allowed(const Plan& p);
+    inline bool do_dwell(const Plan& p);
+    bool do_g79(const Block& b, const Plan& p);
+    bool do_flow(const Block& b, const Plan& p);
     StepResult fail(int code, std::string detail, int column = 0);
     void warn(int code, std::string detail);
     bool call(const Plan& p);

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "core/interp/gate.hpp"
 #include "core/interp/plan.hpp"
@@ -12,42 +13,53 @@
 
 namespace pupitre {
 
-StepResult Interpreter::execute(const Block& b) {
-    // 1. Parametric assignments, left to right.
+// An assignment to L: L100-L199 are the profile's and compensation's own
+// variables, so they may not change under them.
+bool Interpreter::assign_l(const Operand& t, double v, int col) {
+    if (!LVars::valid(t.index))
+        return fail(91, strf(tr("L%d does not exist (L0-L19, L100-L199, L900-L959)"), t.index), col), false;
+    if (t.index >= 100 && t.index <= 199 && modal_.radcomp != 40)
+        return fail(140, strf(tr("writing L%d under radius compensation"), t.index), col), false;
+    if (t.index >= 100 && t.index <= 199 && pgp_.pending())
+        return fail(96, strf(tr("writing L%d after an incomplete profile block"), t.index), col), false;
+    l_.v[size_t(t.index)] = v;
+    l_.written.set(size_t(t.index));
+    return true;
+}
+
+// An assignment to E, direct or through an L that holds the E number.
+bool Interpreter::assign_e(const Operand& t, double v, int col) {
+    int n = t.index;
+    if (t.kind == Operand::EIndirect) {
+        if (!LVars::valid(t.index)) return fail(91, strf(tr("L%d does not exist"), t.index), col), false;
+        double nn = l_.v[size_t(t.index)];
+        if (nn < 0 || nn > 99999 || nn != std::floor(nn))
+            return fail(91, strf(tr("L%d does not hold an E number"), t.index), col), false;
+        n = int(nn);
+    }
+    if (std::fabs(v) > 9.2e18) return fail(92, tr("value too large for an E parameter"), col), false;
+    // A decimal stored into E is truncated toward zero (program-flow.md §9.3).
+    std::string why;
+    if (int rc = write_e(n, int64_t(std::trunc(v)), why)) return fail(rc, why, col), false;
+    return true;
+}
+
+// Left to right, each assignment seeing the ones before it (L1=2 L2=L1*3).
+bool Interpreter::assign_all(const Block& b) {
     for (const Assign& a : b.assigns) {
         col_ = a.col;
         double v;
         std::string why;
-        if (int rc = eval_expr(b, a.expr, l_, *this, v, why)) return fail(rc, why, a.col);
-        const Operand& t = a.target;
-        if (t.kind == Operand::LVar) {
-            if (!LVars::valid(t.index))
-                return fail(91, strf(tr("L%d does not exist (L0-L19, L100-L199, L900-L959)"), t.index), a.col);
-            if (t.index >= 100 && t.index <= 199 && modal_.radcomp != 40)
-                return fail(140, strf(tr("writing L%d under radius compensation"), t.index), a.col);
-            if (t.index >= 100 && t.index <= 199 && pgp_.pending())
-                return fail(96, strf(tr("writing L%d after an incomplete profile block"), t.index), a.col);
-            l_.v[size_t(t.index)] = v;
-            l_.written.set(size_t(t.index));
-        } else {
-            int n = t.index;
-            if (t.kind == Operand::EIndirect) {
-                if (!LVars::valid(t.index)) return fail(91, strf(tr("L%d does not exist"), t.index), a.col);
-                double nn = l_.v[size_t(t.index)];
-                if (nn < 0 || nn > 99999 || nn != std::floor(nn))
-                    return fail(91, strf(tr("L%d does not hold an E number"), t.index), a.col);
-                n = int(nn);
-            }
-            if (std::fabs(v) > 9.2e18) return fail(92, tr("value too large for an E parameter"), a.col);
-            // A decimal stored into E is truncated toward zero (program-flow.md §9.3).
-            if (int rc = write_e(n, int64_t(std::trunc(v)), why)) return fail(rc, why, a.col);
-        }
+        if (int rc = eval_expr(b, a.expr, l_, *this, v, why)) return fail(rc, why, a.col), false;
+        bool ok = a.target.kind == Operand::LVar ? assign_l(a.target, v, a.col) : assign_e(a.target, v, a.col);
+        if (!ok) return false;
     }
+    return true;
+}
 
-    Plan p;
-    bool decoded = decode(b, p);
-    if (l_.any_unset_read) report_unset_reads();
-    if (!decoded) return StepResult::error;
+// The blocks that do not go through the steps of an ordinary block: what they
+// do is their whole effect. Empty for an ordinary block.
+std::optional<StepResult> Interpreter::run_apart(const Block& b, const Plan& p) {
     if (g64_pending_) {
         // G64's rough stock until G80, which runs the roughing first (turning.md §6.3).
         if (p.cycle != 80) return turning_stock(p) ? StepResult::running : StepResult::error;
@@ -71,62 +83,94 @@ StepResult Interpreter::execute(const Block& b) {
         p46_.defining = false;  // a definition with an error is not kept
         return StepResult::error;
     }
+    return std::nullopt;
+}
+
+// The refusals that come before the block's modal words, M functions and
+// moves take effect.
+bool Interpreter::block_allowed(const Plan& p) {
     if (p.has_eb)
         for (int i = 0; i < p.nm; ++i)
-            if (p.m[i] <= 2) return fail(131, strf(tr("a fillet or chamfer (EB) in a block with M0%d"), p.m[i]));
+            if (p.m[i] <= 2) return fail(131, strf(tr("a fillet or chamfer (EB) in a block with M0%d"), p.m[i])), false;
     if (pgp_.pending()) {
         // The held element needs the next blocks (pgp.md §6 item 5).
         if (p.plane >= 0 && p.plane != modal_.plane)
-            return fail(137, tr("plane change while a profile element is incomplete"));
+            return fail(137, tr("plane change while a profile element is incomplete")), false;
         for (int i = 0; i < p.nm; ++i)
-            if (p.m[i] == 2 && !pgp_close()) return StepResult::error;  // the solver says why (101, 131)
+            if (p.m[i] == 2 && !pgp_close()) return false;  // the solver says why (101, 131)
     }
     if (p.g[78]) {
         for (int i = 0; i < p.nm; ++i)
             if (p.m[i] == 0 || p.m[i] == 1)
-                return fail(78, strf(tr("G78 with a program stop M0%d"), p.m[i]));
+                return fail(78, strf(tr("G78 with a program stop M0%d"), p.m[i])), false;
     }
-
     // Radius compensation restrictions (turning.md §3.7, milling.md §4.4.2).
     bool comp = modal_.radcomp != 40;
-    if (comp && p.g[16]) return fail(140, tr("G16 under radius compensation"));
+    if (comp && p.g[16]) return fail(140, tr("G16 under radius compensation")), false;
+    return true;
+}
 
-    if (!apply_modal(p)) return StepResult::error;
-    if (!do_m_avant(p)) return StepResult::error;
-    if (!apply_spindle(p)) return StepResult::error;
-    if (b.msg_channel >= 0) out_.message(loc_, b.msg_channel, b.msg);
-    if (!do_motion(p)) return StepResult::error;
+bool Interpreter::do_dwell(const Plan& p) {
     if (p.dwell >= 0) {
         clock_ += p.dwell;
         out_.dwell(loc_, p.dwell);
     } else if (p.g[4]) {
-        return fail(2, tr("G4 needs the dwell time in F (G4 F1.5)"));
+        return fail(2, tr("G4 needs the dwell time in F (G4 F1.5)")), false;
     }
+    return true;
+}
+
+// G79's condition is read once the rest of the block is done: it sees the
+// block's own assignments.
+bool Interpreter::do_g79(const Block& b, const Plan& p) {
+    if (p.g79_n < 0) return fail(2, tr("G79 needs the label to jump to (G79 N100)")), false;
+    bool go = true;
+    if (b.test.cmp != Cmp::none) {
+        double lhs, rhs;
+        std::string why;
+        if (int rc = eval_expr(b, b.test.lhs, l_, *this, lhs, why)) return fail(rc, why, b.test.col), false;
+        if (int rc = eval_expr(b, b.test.rhs, l_, *this, rhs, why)) return fail(rc, why, b.test.col), false;
+        go = compare(b.test.cmp, lhs, rhs);
+        if (l_.any_unset_read) report_unset_reads();
+    }
+    return !go || jump(p.g79_n);
+}
+
+// The functions that act on the program rather than the machine come last:
+// a jump or a call leaves the block, so everything else in it must be done.
+bool Interpreter::do_flow(const Block& b, const Plan& p) {
+    if (p.g[79] && !p.g79_sign && !do_g79(b, p)) return false;
+    if (p.g[48] && !spline_define(p)) return false;
+    if (p.g[49]) {
+        if (modal_.radcomp != 40) return fail(140, tr("G49 must be programmed in G40")), false;
+        if (p.spl_nc <= 0 || !splines_.erase(p.spl_nc))
+            return fail(605, strf(tr("G49: curve NC%d is not defined"), p.spl_nc)), false;
+    }
+    if (p.g[76] && !transfer(p)) return false;
+    if (p.g[77] && !call(p)) return false;
+    return true;
+}
+
+// The steps of turning.md §1.7.5 in their order. Each step returns false once
+// it has reported the error that stops the block. The steps an ordinary move
+// does not need are called only when the block holds their words: this runs
+// for every block, and a call costs more than the test.
+StepResult Interpreter::execute(const Block& b) {
+    if (!assign_all(b)) return StepResult::error;
+    Plan p;
+    bool decoded = decode(b, p);
+    if (l_.any_unset_read) report_unset_reads();
+    if (!decoded) return StepResult::error;
+    if (g64_pending_ || p.unsupported >= 0 || p.g76_sign || p.g[46] || p46_.defining)
+        if (std::optional<StepResult> apart = run_apart(b, p)) return *apart;
+    if ((p.has_eb || p.g[78] || p.g[16] || pgp_.pending()) && !block_allowed(p)) return StepResult::error;
+    if (!apply_modal(p) || !do_m_avant(p) || !apply_spindle(p)) return StepResult::error;
+    if (b.msg_channel >= 0) out_.message(loc_, b.msg_channel, b.msg);
+    if (!do_motion(p) || !do_dwell(p)) return StepResult::error;
     StepResult r = StepResult::running;
     if (!do_m_apres(p, r)) return StepResult::error;
     if (ended_) return r;
-
-    if (p.g[79] && !p.g79_sign) {
-        if (p.g79_n < 0) return fail(2, tr("G79 needs the label to jump to (G79 N100)"));
-        bool go = true;
-        if (b.test.cmp != Cmp::none) {
-            double lhs, rhs;
-            std::string why;
-            if (int rc = eval_expr(b, b.test.lhs, l_, *this, lhs, why)) return fail(rc, why, b.test.col);
-            if (int rc = eval_expr(b, b.test.rhs, l_, *this, rhs, why)) return fail(rc, why, b.test.col);
-            go = compare(b.test.cmp, lhs, rhs);
-            if (l_.any_unset_read) report_unset_reads();
-        }
-        if (go && !jump(p.g79_n)) return StepResult::error;
-    }
-    if (p.g[48] && !spline_define(p)) return StepResult::error;
-    if (p.g[49]) {
-        if (modal_.radcomp != 40) return fail(140, tr("G49 must be programmed in G40"));
-        if (p.spl_nc <= 0 || !splines_.erase(p.spl_nc))
-            return fail(605, strf(tr("G49: curve NC%d is not defined"), p.spl_nc));
-    }
-    if (p.g[76] && !transfer(p)) return StepResult::error;
-    if (p.g[77] && !call(p)) return StepResult::error;
+    if ((p.g[79] || p.g[48] || p.g[49] || p.g[76] || p.g[77]) && !do_flow(b, p)) return StepResult::error;
     return r;
 }
 
