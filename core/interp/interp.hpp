@@ -282,7 +282,7 @@ private:
     // interp.cpp
     bool fetch(std::string_view& line, int& lineno);
     StepResult execute(const Block& b);
-    // interp_exec.cpp: the steps of execute().
+    // interp_exec.cpp: the steps of execute() and the modal groups of apply_modal().
     // The inline ones run for every block, where a call would cost more than
     // their tests; they are defined and called in interp_exec.cpp only.
     inline bool assign_all(const Block& b);
@@ -293,6 +293,15 @@ private:
     inline bool do_dwell(const Plan& p);
     bool do_g79(const Block& b, const Plan& p);
     bool do_flow(const Block& b, const Plan& p);
+    inline bool modal_interpolation(const Plan& p);
+    inline bool modal_cycle(const Plan& p);
+    inline bool modal_frame_switches(const Plan& p);
+    bool modal_feed(const Plan& p);
+    bool modal_tool(const Plan& p);
+    bool modal_g59(const Plan& p);
+    inline bool modal_frame(const Plan& p);
+    bool modal_g92(const Plan& p);
+    void ed_axes(int& a0, int& a1) const;
     StepResult fail(int code, std::string detail, int column = 0);
     void warn(int code, std::string detail);
     bool call(const Plan& p);

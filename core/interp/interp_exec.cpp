@@ -174,15 +174,22 @@ StepResult Interpreter::execute(const Block& b) {
     return r;
 }
 
-bool Interpreter::apply_modal(const Plan& p) {
-    bool comp = modal_.radcomp != 40;
+// G0-G3, G90/G91, G17-G19, G70/G71. The plane cannot change under compensation:
+// the offset contour is computed in it.
+bool Interpreter::modal_interpolation(const Plan& p) {
     if (p.motion >= 0) modal_.motion = p.motion;
     if (p.dist >= 0) modal_.incremental = p.dist == 91;
     if (p.plane >= 0 && p.plane != modal_.plane) {
-        if (comp) return fail(138, tr("plane change under radius compensation (program G40 first)")), false;
+        if (modal_.radcomp != 40)
+            return fail(138, tr("plane change under radius compensation (program G40 first)")), false;
         modal_.plane = p.plane;
     }
     if (p.units >= 0) modal_.inch = p.units == 70;
+    return true;
+}
+
+// G31 and G80-G89. G16 is checked against the cycle this block leaves active.
+bool Interpreter::modal_cycle(const Plan& p) {
     if (p.g[31] && modal_.cycle != 80)
         modal_.cycle = 80;  // G31 cancels an active drilling cycle, as G80 would
     if (p.cycle >= 0 && p.cycle != modal_.cycle) {
@@ -200,15 +207,25 @@ bool Interpreter::apply_modal(const Plan& p) {
     }
     if (p.g[16] && modal_.cycle >= 81 && modal_.cycle <= 89)
         return fail(890, tr("G16 while a drilling cycle is active")), false;
+    return true;
+}
+
+// G52/G53 and G73/G74 change the program point the position is read in.
+bool Interpreter::modal_frame_switches(const Plan& p) {
     if (p.prefdec >= 0 && (p.prefdec == 53) != frames_.g53) {
         frames_.g53 = p.prefdec == 53;
         recompute_program_pos();
     }
     if (p.scale >= 0 && (p.scale == 74) != frames_.scale_on) {
-        if (comp) return fail(143, tr("G73/G74 under radius compensation")), false;
+        if (modal_.radcomp != 40) return fail(143, tr("G73/G74 under radius compensation")), false;
         frames_.scale_on = p.scale == 74;
         recompute_program_pos();
     }
+    return true;
+}
+
+// G93-G95 and F.
+bool Interpreter::modal_feed(const Plan& p) {
     // Feed: turning.md §5.2 wants F in the block that changes the unit, but seven
     // handbook programs write "G95 G92 S1500" or "G80 G40 G95" and give F later
     // (000:9661, 10037, 10186…): the unit changes, and a feed move made before a
@@ -231,6 +248,12 @@ bool Interpreter::apply_modal(const Plan& p) {
         modal_.feed_set = true;
         feed_programmed_ = true;
     }
+    return true;
+}
+
+// T, D, G40-G42 and G29. A new D is announced at once unless M06 in the block
+// announces the change itself.
+bool Interpreter::modal_tool(const Plan& p) {
     if (p.has_t) modal_.t = p.t;
     if (p.has_d && p.d != modal_.d) {
         modal_.d = p.d;
@@ -254,29 +277,43 @@ bool Interpreter::apply_modal(const Plan& p) {
     } else if (p.g[16]) {
         return fail(2, tr("G16 needs P, Q or R with a sign (G16 R+)")), false;
     }
-    // G59 offsets, modal per axis (turning.md §2.8); G91 G59 adds.
-    if (p.g[59]) {
-        if (p.g59_axis.none() && !p.g59_ed && p.g59_ijk.none())
-            return fail(2, tr("G59 needs at least one axis offset")), false;
-        for (int a = 0; a < kAxes; ++a)
-            if (p.g59_axis[size_t(a)])
-                frames_.g59[size_t(a)] = modal_.incremental ? frames_.g59[size_t(a)] + p.g59_val[size_t(a)]
-                                                            : p.g59_val[size_t(a)];
-        int a0 = m_.lathe ? Z : modal_.plane == 17 ? X : modal_.plane == 18 ? Z : Y;
-        int a1 = m_.lathe ? X : modal_.plane == 17 ? Y : modal_.plane == 18 ? X : Z;
-        auto ijk_of = [](int axis) { return axis == X ? 0 : axis == Y ? 1 : 2; };
-        if (p.g59_ijk[size_t(ijk_of(a0))]) frames_.ed_c0 = p.g59_ijk_val[ijk_of(a0)];
-        if (p.g59_ijk[size_t(ijk_of(a1))]) frames_.ed_c1 = p.g59_ijk_val[ijk_of(a1)];
-        if (p.g59_ed) {
-            frames_.ed_a0 = a0;
-            frames_.ed_a1 = a1;
-            frames_.ed = modal_.incremental ? frames_.ed + p.g59_ed_val : p.g59_ed_val;
-        }
-        recompute_program_pos();
+    return true;
+}
+
+// The axes ED turns about: the plane's two axes, (Z, X) on a lathe.
+void Interpreter::ed_axes(int& a0, int& a1) const {
+    a0 = m_.lathe ? Z : modal_.plane == 17 ? X : modal_.plane == 18 ? Z : Y;
+    a1 = m_.lathe ? X : modal_.plane == 17 ? Y : modal_.plane == 18 ? X : Z;
+}
+
+// G59 offsets, modal per axis (turning.md §2.8); G91 G59 adds.
+bool Interpreter::modal_g59(const Plan& p) {
+    if (p.g59_axis.none() && !p.g59_ed && p.g59_ijk.none())
+        return fail(2, tr("G59 needs at least one axis offset")), false;
+    for (int a = 0; a < kAxes; ++a)
+        if (p.g59_axis[size_t(a)])
+            frames_.g59[size_t(a)] = modal_.incremental ? frames_.g59[size_t(a)] + p.g59_val[size_t(a)]
+                                                        : p.g59_val[size_t(a)];
+    int a0, a1;
+    ed_axes(a0, a1);
+    auto ijk_of = [](int axis) { return axis == X ? 0 : axis == Y ? 1 : 2; };
+    if (p.g59_ijk[size_t(ijk_of(a0))]) frames_.ed_c0 = p.g59_ijk_val[ijk_of(a0)];
+    if (p.g59_ijk[size_t(ijk_of(a1))]) frames_.ed_c1 = p.g59_ijk_val[ijk_of(a1)];
+    if (p.g59_ed) {
+        frames_.ed_a0 = a0;
+        frames_.ed_a1 = a1;
+        frames_.ed = modal_.incremental ? frames_.ed + p.g59_ed_val : p.g59_ed_val;
     }
+    recompute_program_pos();
+    return true;
+}
+
+// The frame words: G59, ED, G51. They come after G90/G91 and the plane, which
+// say how they add up and about which axes ED turns.
+bool Interpreter::modal_frame(const Plan& p) {
+    if (p.g[59] && !modal_g59(p)) return false;
     if (p.has_ed) {
-        frames_.ed_a0 = m_.lathe ? Z : modal_.plane == 17 ? X : modal_.plane == 18 ? Z : Y;
-        frames_.ed_a1 = m_.lathe ? X : modal_.plane == 17 ? Y : modal_.plane == 18 ? X : Z;
+        ed_axes(frames_.ed_a0, frames_.ed_a1);
         frames_.ed = modal_.incremental ? frames_.ed + p.ed : p.ed;
         recompute_program_pos();
     }
@@ -286,26 +323,48 @@ bool Interpreter::apply_modal(const Plan& p) {
         frames_.mirror &= ~p.g51_off;
         recompute_program_pos();
     }
-    if (p.g[92]) {
-        if (p.g92_axis.any() && (p.g92_s || p.g92_r))
-            return fail(3, tr("G92 presets axes or sets S or R, not both in one block")), false;
-        if (p.g92_axis.none() && !p.g92_s && !p.g92_r)
-            return fail(2, tr("G92 needs axes (preset), S (spindle limit) or R (tangential feed)")), false;
-        // new PREF = PREF + (current point / OP) - programmed value (000:1173-1179).
-        for (int a = 0; a < kAxes; ++a)
-            if (p.g92_axis[size_t(a)]) frames_.pref[size_t(a)] += prog_[size_t(a)] - p.g92_val[size_t(a)];
-        if (p.g92_axis.any()) recompute_program_pos();
-        if (p.g92_s) {
-            if (!m_.lathe) return fail(2, tr("G92 S (spindle limit) is a lathe function")), false;
-            modal_.smax = p.g92_s_val;
-            if (modal_.smax > m_.spindle_max) {
-                warn(err::wSpeedClamped, strf(tr("G92 S%s above the spindle maximum %s: limited to it"),
-                                              fixed3(modal_.smax, 63).c_str(), fixed3(m_.spindle_max, 63).c_str()));
-                modal_.smax = m_.spindle_max;
-            }
+    return true;
+}
+
+// G92: a preset of the axes, or the spindle limit S, or the tangential feed R.
+bool Interpreter::modal_g92(const Plan& p) {
+    if (p.g92_axis.any() && (p.g92_s || p.g92_r))
+        return fail(3, tr("G92 presets axes or sets S or R, not both in one block")), false;
+    if (p.g92_axis.none() && !p.g92_s && !p.g92_r)
+        return fail(2, tr("G92 needs axes (preset), S (spindle limit) or R (tangential feed)")), false;
+    // new PREF = PREF + (current point / OP) - programmed value (000:1173-1179).
+    for (int a = 0; a < kAxes; ++a)
+        if (p.g92_axis[size_t(a)]) frames_.pref[size_t(a)] += prog_[size_t(a)] - p.g92_val[size_t(a)];
+    if (p.g92_axis.any()) recompute_program_pos();
+    if (p.g92_s) {
+        if (!m_.lathe) return fail(2, tr("G92 S (spindle limit) is a lathe function")), false;
+        modal_.smax = p.g92_s_val;
+        if (modal_.smax > m_.spindle_max) {
+            warn(err::wSpeedClamped, strf(tr("G92 S%s above the spindle maximum %s: limited to it"),
+                                          fixed3(modal_.smax, 63).c_str(), fixed3(m_.spindle_max, 63).c_str()));
+            modal_.smax = m_.spindle_max;
         }
-        if (p.g92_r) modal_.g92r = p.g92_r_val;
     }
+    if (p.g92_r) modal_.g92r = p.g92_r_val;
+    return true;
+}
+
+// The modal groups in the order they take effect: a later group reads what an
+// earlier one set (G59 and ED read G90/G91 and the plane), and a refusal stops
+// the block with the groups before it applied. A table of direct calls, each
+// guarded by the words of its group, rather than an array of member pointers:
+// this runs for every block, and a call costs more than the test.
+bool Interpreter::apply_modal(const Plan& p) {
+    const bool feed = p.feed_mode >= 0 || p.has_f;
+    const bool tool = p.has_t || p.has_d || p.radcomp >= 0 || p.g16_axis >= 0 || p.g[16];
+    if (!modal_interpolation(p) ||        // G0-G3, G90/G91, G17-G19, G70/G71
+        !modal_cycle(p) ||                // G31, G80-G89
+        !modal_frame_switches(p) ||       // G52/G53, G73/G74
+        (feed && !modal_feed(p)) ||       // G93-G95, F
+        (tool && !modal_tool(p)) ||       // T, D, G40-G42, G29, G16
+        !modal_frame(p) ||                // G59, ED, G51
+        (p.g[92] && !modal_g92(p)))       // G92
+        return false;
     if (p.g75_n >= -1) modal_.g75 = p.g75_n == 0 ? -1 : p.g75_n;
     if (p.has_eg) modal_.eg = p.eg;
     return true;
