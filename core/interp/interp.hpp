@@ -455,6 +455,13 @@ private:
     bool coordinate_above(const ProgramText* prog, int line, int axis, double& v);
     static double cyc(const Plan& p, Addr a, double dflt, bool* has = nullptr);
     bool turning_profile(long na, long nb, turning::Profile& out, comp::V2& first);
+    struct ProfileRead;
+    bool profile_l_words(const Block& blk);
+    bool profile_start(Plan& q, ProfileRead& r);
+    pgp::Spec profile_spec(const Plan& q, const comp::V2& cur, int line) const;
+    bool profile_block(Plan& q, int line, ProfileRead& r);
+    static void profile_as_called(const std::vector<pgp::Elem>& elems, bool reversed, turning::Profile& out,
+                                  comp::V2& first);
     void warn_allowance_inside(int g, double i, double k);
     bool turning_emit(const std::vector<turning::Move>& moves, double lead, double infeed);
     bool turning_block(const Plan& p);

@@ -49,6 +49,122 @@ void Interpreter::warn_allowance_inside(int g, double i, double k) {
                                      g, ik));
 }
 
+// What the reading of a finished profile carries from one block to the next.
+struct Interpreter::ProfileRead {
+    const ProgramText* prog = nullptr;
+    int first_line = 0;  // of the profile as written
+    pgp::Solver solver;
+    std::vector<pgp::Elem> elems;
+    comp::V2 pos;
+    comp::V2 start;  // the profile's first point, as written
+    bool started = false;
+    int count = 0;  // blocks after the start point
+};
+
+// 000:2464 forbids L100-L199 and L900-L959 in the finished profile, yet the
+// handbook's own %2000 reads L151-L153 in one (000:8839-8866): writes are
+// refused (96); a read is warning 1114, or the NUM's error 96 under the
+// machine setting `strict`.
+bool Interpreter::profile_l_words(const Block& blk) {
+    for (const Assign& as : blk.assigns)
+        if (as.target.kind == Operand::LVar && as.target.index >= 100)
+            return fail(96, strf(tr("writing L%d in a roughing-cycle profile"), as.target.index)), false;
+    if (int high = high_l_read(blk); high >= 0) {
+        // The handbook's words, quoted as written (not translated).
+        const char* seed = "ne peuvent pas \u00eatre employ\u00e9es dans la d\u00e9finition du profil fini";
+        // TRANSLATORS: the second %s is a quotation of the French handbook; keep it as it is.
+        if (m_.strict)
+            return fail(96, strf(tr("L%d read in a roughing-cycle profile (seed 000: L100-L199 and L900-L959 \"%s\")"),
+                                 high, seed)),
+                   false;
+        // TRANSLATORS: the second %s is a quotation of the French handbook; keep it as it is.
+        warn(err::wProfileL, strf(tr("L%d read in a roughing-cycle profile (seed 000: L100-L199 and L900-L959 \"%s\"): "
+                                     "the NUM stops with error 96; copy it into L0-L19 before the cycle"),
+                                  high, seed));
+    }
+    return true;
+}
+
+// The first block of the profile is its start point. A coordinate it
+// does not write is the one in force there: the nearest block above
+// that writes it (%555: G65 N120 N170 starts at N120 G1 X60).
+bool Interpreter::profile_start(Plan& q, ProfileRead& r) {
+    for (int ax : {X, Z}) {
+        if (q.axis[size_t(ax)]) continue;
+        double v;
+        if (!coordinate_above(r.prog, r.first_line, ax, v))
+            return fail(871, tr("the first block of the profile needs X and Z")), false;
+        q.axis.set(size_t(ax));
+        q.inc.reset(size_t(ax));
+        q.val[size_t(ax)] = v;
+    }
+    r.pos = comp::V2(q.inc[Z] ? r.pos.x() + q.val[Z] : q.val[Z], q.inc[X] ? r.pos.y() + q.val[X] : q.val[X]);
+    r.start = r.pos;
+    r.solver.start(r.pos);
+    r.started = true;
+    return true;
+}
+
+// A profile block in the solver's plane: Z is its first axis, X its second
+// (I and K the centre's), as the PGP of the lathe writes them.
+pgp::Spec Interpreter::profile_spec(const Plan& q, const comp::V2& cur, int line) const {
+    pgp::Spec s;
+    s.g = (modal_.motion == 2 || modal_.motion == 3) ? modal_.motion : 1;
+    s.has_x = q.axis[Z];
+    s.x = q.inc[Z] ? cur.x() + q.val[Z] : q.val[Z];
+    s.has_y = q.axis[X];
+    s.y = q.inc[X] ? cur.y() + q.val[X] : q.val[X];
+    s.has_ea = q.has_ea;
+    s.ea = q.ea;
+    s.has_i = q.ijk[2];
+    s.i = q.ijk_val[2] + (q.ijk_inc[2] ? cur.x() : 0);
+    s.has_j = q.ijk[0];
+    s.j = q.ijk_val[0] + (q.ijk_inc[0] ? cur.y() : 0);
+    s.has_r = q.has_r;
+    s.r = q.r;
+    s.link = q.link == 'X' ? 'S' : q.link;
+    s.disc = q.disc;
+    s.has_eb = q.has_eb;
+    s.eb = q.eb;
+    s.eb_unsigned = q.eb_unsigned;
+    s.tag = line;
+    return s;
+}
+
+// One block of the profile, decoded: its modal words, then the element it adds.
+// A block that moves nothing still goes to the solver, which allows only two
+// of them while an element is incomplete (error 136).
+bool Interpreter::profile_block(Plan& q, int line, ProfileRead& r) {
+    if (q.motion >= 0) modal_.motion = q.motion;
+    if (q.dist >= 0) modal_.incremental = q.dist == 91;
+    if (q.has_f && profile_feed_ <= 0) profile_feed_ = q.f;
+    if (!r.started) return profile_start(q, r);
+    pgp::Error e;
+    bool motion = q.axis[X] || q.axis[Z] || q.pgp || q.ijk.any() || q.has_r;
+    if (!motion) {
+        if (!r.solver.idle(e)) return fail(e.code, e.detail), false;
+        return true;
+    }
+    if (!r.solver.push(profile_spec(q, r.solver.position(), line), r.elems, e)) return fail(e.code, e.detail), false;
+    ++r.count;
+    return true;
+}
+
+// The elements in the order the cycle calls them: written N<b> before N<a>,
+// the same elements from the last point to the first.
+void Interpreter::profile_as_called(const std::vector<pgp::Elem>& elems, bool reversed, turning::Profile& out,
+                                    comp::V2& first) {
+    out.elems.clear();
+    for (const auto& el : elems) out.elems.push_back(el.geo);
+    if (!reversed) return;
+    std::reverse(out.elems.begin(), out.elems.end());
+    for (auto& el : out.elems) {
+        std::swap(el.a, el.b);
+        el.sweep = -el.sweep;
+    }
+    first = out.elems.front().a;
+}
+
 bool Interpreter::turning_profile(long na, long nb, turning::Profile& out, comp::V2& first) {
     const ProgramText* prog = stack_.back().prog;
     const Label* a = prog->find_label(na);
@@ -62,12 +178,11 @@ bool Interpreter::turning_profile(long na, long nb, turning::Profile& out, comp:
     Loc saved = loc_;
     Modal saved_modal = modal_;
     Block blk;
-    pgp::Solver solver;
-    std::vector<pgp::Elem> elems;
-    comp::V2 pos(prog_[Z], prog_[X]);
-    bool started = false;
+    ProfileRead r;
+    r.prog = prog;
+    r.first_line = lo->line;
+    r.pos = comp::V2(prog_[Z], prog_[X]);
     size_t pos_off = lo->offset;
-    int count = 0;
     for (int line = lo->line; line <= hi->line && pos_off < prog->end; ++line) {
         size_t eol = std::min(text.find('\n', pos_off), prog->end);
         std::string_view l = text.substr(pos_off, eol - pos_off);
@@ -76,98 +191,19 @@ bool Interpreter::turning_profile(long na, long nb, turning::Profile& out, comp:
         loc_ = Loc{prog->number, line, line_label(l)};
         if (!parse_block(l, blk, d)) return fail(d.code, d.detail, d.column), false;
         if (blk.empty()) continue;
-        // 000:2464 forbids L100-L199 and L900-L959 in the finished profile, yet the
-        // handbook's own %2000 reads L151-L153 in one (000:8839-8866): writes are
-        // refused (96); a read is warning 1114, or the NUM's error 96 under the
-        // machine setting `strict`.
-        for (const Assign& as : blk.assigns)
-            if (as.target.kind == Operand::LVar && as.target.index >= 100)
-                return fail(96, strf(tr("writing L%d in a roughing-cycle profile"), as.target.index)), false;
-        if (int high = high_l_read(blk); high >= 0) {
-            // The handbook's words, quoted as written (not translated).
-            const char* seed = "ne peuvent pas \u00eatre employ\u00e9es dans la d\u00e9finition du profil fini";
-            // TRANSLATORS: the second %s is a quotation of the French handbook; keep it as it is.
-            if (m_.strict)
-                return fail(96, strf(tr("L%d read in a roughing-cycle profile (seed 000: L100-L199 and L900-L959 \"%s\")"),
-                                     high, seed)),
-                       false;
-            // TRANSLATORS: the second %s is a quotation of the French handbook; keep it as it is.
-            warn(err::wProfileL, strf(tr("L%d read in a roughing-cycle profile (seed 000: L100-L199 and L900-L959 \"%s\"): "
-                                         "the NUM stops with error 96; copy it into L0-L19 before the cycle"),
-                                      high, seed));
-        }
+        if (!profile_l_words(blk)) return false;
         Plan q;
-        if (!decode(blk, q)) return false;
-        if (q.motion >= 0) modal_.motion = q.motion;
-        if (q.dist >= 0) modal_.incremental = q.dist == 91;
-        if (q.has_f && profile_feed_ <= 0) profile_feed_ = q.f;
-        if (!started) {
-            // The first block of the profile is its start point. A coordinate it
-            // does not write is the one in force there: the nearest block above
-            // that writes it (%555: G65 N120 N170 starts at N120 G1 X60).
-            for (int ax : {X, Z}) {
-                if (q.axis[size_t(ax)]) continue;
-                double v;
-                if (!coordinate_above(prog, lo->line, ax, v))
-                    return fail(871, tr("the first block of the profile needs X and Z")), false;
-                q.axis.set(size_t(ax));
-                q.inc.reset(size_t(ax));
-                q.val[size_t(ax)] = v;
-            }
-            pos = comp::V2(q.inc[Z] ? pos.x() + q.val[Z] : q.val[Z], q.inc[X] ? pos.y() + q.val[X] : q.val[X]);
-            first = pos;
-            solver.start(pos);
-            started = true;
-            continue;
-        }
-        bool motion = q.axis[X] || q.axis[Z] || q.pgp || q.ijk.any() || q.has_r;
-        if (!motion) {
-            pgp::Error e;
-            if (!solver.idle(e)) return fail(e.code, e.detail), false;
-            continue;
-        }
-        pgp::Spec s;
-        s.g = (modal_.motion == 2 || modal_.motion == 3) ? modal_.motion : 1;
-        comp::V2 cur = solver.position();
-        s.has_x = q.axis[Z];
-        s.x = q.inc[Z] ? cur.x() + q.val[Z] : q.val[Z];
-        s.has_y = q.axis[X];
-        s.y = q.inc[X] ? cur.y() + q.val[X] : q.val[X];
-        s.has_ea = q.has_ea;
-        s.ea = q.ea;
-        s.has_i = q.ijk[2];
-        s.i = q.ijk_val[2] + (q.ijk_inc[2] ? cur.x() : 0);
-        s.has_j = q.ijk[0];
-        s.j = q.ijk_val[0] + (q.ijk_inc[0] ? cur.y() : 0);
-        s.has_r = q.has_r;
-        s.r = q.r;
-        s.link = q.link == 'X' ? 'S' : q.link;
-        s.disc = q.disc;
-        s.has_eb = q.has_eb;
-        s.eb = q.eb;
-        s.eb_unsigned = q.eb_unsigned;
-        s.tag = line;
-        pgp::Error e;
-        if (!solver.push(s, elems, e)) return fail(e.code, e.detail), false;
-        ++count;
+        if (!decode(blk, q) || !profile_block(q, line, r)) return false;
     }
     pgp::Error e;
-    if (!solver.finish(elems, e)) return fail(e.code, e.detail), false;
+    if (!r.solver.finish(r.elems, e)) return fail(e.code, e.detail), false;
     loc_ = saved;
     modal_ = saved_modal;
-    if (!started || elems.empty()) return fail(871, strf(tr("the profile N%ld..N%ld has no element"), na, nb)), false;
-    if (count > 50) return fail(871, tr("a profile has at most 50 blocks")), false;
-    out.elems.clear();
-    for (const auto& el : elems) out.elems.push_back(el.geo);
-    if (reversed) {
-        // Called backwards: the same elements from the last point to the first.
-        std::reverse(out.elems.begin(), out.elems.end());
-        for (auto& el : out.elems) {
-            std::swap(el.a, el.b);
-            el.sweep = -el.sweep;
-        }
-        first = out.elems.front().a;
-    }
+    if (!r.started || r.elems.empty())
+        return fail(871, strf(tr("the profile N%ld..N%ld has no element"), na, nb)), false;
+    if (r.count > 50) return fail(871, tr("a profile has at most 50 blocks")), false;
+    first = r.start;
+    profile_as_called(r.elems, reversed, out, first);
     return true;
 }
 
