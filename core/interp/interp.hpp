@@ -465,6 +465,14 @@ private:
     void warn_allowance_inside(int g, double i, double k);
     bool turning_emit(const std::vector<turning::Move>& moves, double lead, double infeed);
     bool turning_block(const Plan& p);
+    bool turning_g64(const Plan& p);
+    bool turning_g65_g63(const Plan& p);
+    bool turning_g66(const Plan& p);
+    bool turning_g33(const Plan& p);
+    bool turning_g38(const Plan& p);
+    bool turning_emit_ef(const Plan& p, const std::vector<turning::Move>& moves);
+    static turning::G65Args g65_args(const Plan& p);
+    turning::G63Args g63_args(const Plan& p) const;
     bool turning_stock(const Plan& p);
     bool turning_g64_run();
     bool comp_engage(int g);
