@@ -424,6 +424,11 @@ private:
     bool p46_close_section();
     bool p46_header(const Plan& p, int nu);
     bool p46_order(const Plan& p, int nu);
+    struct P46Cut;
+    bool p46_order_allowed(const Plan& p, const p46::Def& d);
+    bool p46_drill(const Plan& p, const p46::Def& d);
+    bool p46_cutter(const Plan& p, int nu, const p46::Def& d, double& R);
+    bool p46_cut(const p46::Def& d, int nu, const P46Cut& c);
     bool p46_fail(const p46::Error& e, const p46::Def& d);
     // The axes of a G46 plane: first, second and normal (interp_pocket46.cpp).
     struct P46Axes {
