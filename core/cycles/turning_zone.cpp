@@ -220,76 +220,107 @@ void ray_crossings(const Elem& e, double Y, std::vector<std::pair<double, int>>&
         p = q;
     }
 }
-}  // namespace
 
-std::vector<Interval> m_intervals(const Material& m, double Y, int d) {
-    struct X {
-        double x;
-        int mask;
-    };
-    // Only the elements of M near the line matter (YIndex): the crossings, the
-    // boundary within kTol, and the winding numbers by the crossings of a ray.
-    if (!m.m_index.built_for(m.M)) m.m_index.build(m.M, 10 * kTol);
-    std::vector<int> near;
-    m.m_index.query(Y, near);
-    std::sort(near.begin(), near.end());
-    std::vector<X> xs;
+// A point where the line meets M, with the kinds of the edges met there.
+struct Cut {
+    double x;
+    int mask;
+};
+
+// The kind an interval's end takes from the edges met there: the stock before
+// the closing edges before the profile.
+int kind_of(int mask) {
+    if (mask & (1 << kStock)) return int(kStock);
+    if (mask & (1 << kClosing)) return int(kClosing);
+    return int(kProfile);
+}
+
+// The crossings of the line with the elements `near`, merged where they lie
+// within kTol of each other, in rising x; and the crossings of the ray, for
+// the winding numbers.
+std::vector<Cut> line_cuts(const Material& m, double Y, const std::vector<int>& near,
+                           std::vector<std::pair<double, int>>& ray) {
+    std::vector<Cut> xs;
     std::vector<double> tmp;
-    std::vector<std::pair<double, int>> ray;
     for (int i : near) {
         tmp.clear();
         cross_h(m.M[size_t(i)], Y, tmp);
         for (double x : tmp) xs.push_back({x, 1 << m.kind[size_t(i)]});
         ray_crossings(m.M[size_t(i)], Y, ray);
     }
-    std::sort(xs.begin(), xs.end(), [](const X& a, const X& b) { return a.x < b.x; });
-    std::vector<X> pts;
-    for (const X& x : xs) {
+    std::sort(xs.begin(), xs.end(), [](const Cut& a, const Cut& b) { return a.x < b.x; });
+    std::vector<Cut> pts;
+    for (const Cut& x : xs) {
         if (!pts.empty() && x.x - pts.back().x <= kTol)
             pts.back().mask |= x.mask;
         else
             pts.push_back(x);
     }
-    auto kind_of = [](int mask) {
-        if (mask & (1 << kStock)) return int(kStock);
-        if (mask & (1 << kClosing)) return int(kClosing);
-        return int(kProfile);
-    };
-    // Winding number right of x: the sum of the crossings beyond it.
-    std::sort(ray.begin(), ray.end());
-    std::vector<int> beyond(ray.size() + 1, 0);
-    for (size_t i = ray.size(); i-- > 0;) beyond[i] = beyond[i + 1] + ray[i].second;
-    // On the boundary: the elements whose extent along x holds the point, swept
-    // with the midpoints, which come in rising x.
-    auto x_lo = [&](int i) {
-        const Elem& e = m.M[size_t(i)];
-        return (e.arc ? e.c.x() - e.r() : std::min(e.a.x(), e.b.x())) - 10 * kTol;
-    };
-    auto x_hi = [&](int i) {
-        const Elem& e = m.M[size_t(i)];
-        return (e.arc ? e.c.x() + e.r() : std::max(e.a.x(), e.b.x())) + 10 * kTol;
-    };
-    std::vector<std::pair<double, int>> by_lo;
-    for (int i : near) by_lo.push_back({x_lo(i), i});
-    std::sort(by_lo.begin(), by_lo.end());
-    std::vector<int> active;
-    size_t next = 0;
-    auto inside = [&](double x) {
-        while (next < by_lo.size() && by_lo[next].first <= x) active.push_back(by_lo[next++].second);
-        V2 q(x, Y);
-        for (size_t k = 0; k < active.size();) {
-            int i = active[k];
+    return pts;
+}
+
+// Whether a point of the line is in M, asked at rising x: on the boundary, the
+// elements whose extent along x holds the point, kept in a sweep so that each
+// is tested only while it can hold one; else the winding number right of x,
+// the sum of the crossings beyond it.
+class InsideSweep {
+public:
+    InsideSweep(const Material& m, double Y, const std::vector<int>& near, std::vector<std::pair<double, int>>& ray)
+        : m_(m), Y_(Y), ray_(ray) {
+        std::sort(ray.begin(), ray.end());
+        beyond_.assign(ray_.size() + 1, 0);
+        for (size_t i = ray_.size(); i-- > 0;) beyond_[i] = beyond_[i + 1] + ray_[i].second;
+        for (int i : near) by_lo_.push_back({x_lo(i), i});
+        std::sort(by_lo_.begin(), by_lo_.end());
+    }
+
+    bool operator()(double x) {
+        while (next_ < by_lo_.size() && by_lo_[next_].first <= x) active_.push_back(by_lo_[next_++].second);
+        V2 q(x, Y_);
+        for (size_t k = 0; k < active_.size();) {
+            int i = active_[k];
             if (x_hi(i) < x) {  // behind the sweep for good
-                active[k] = active.back();
-                active.pop_back();
+                active_[k] = active_.back();
+                active_.pop_back();
                 continue;
             }
-            if (dist(m.M[size_t(i)], q) <= kTol) return true;
+            if (dist(m_.M[size_t(i)], q) <= kTol) return true;
             ++k;
         }
-        auto it = std::upper_bound(ray.begin(), ray.end(), std::pair<double, int>(x, 2));
-        return beyond[size_t(it - ray.begin())] != 0;
-    };
+        auto it = std::upper_bound(ray_.begin(), ray_.end(), std::pair<double, int>(x, 2));
+        return beyond_[size_t(it - ray_.begin())] != 0;
+    }
+
+private:
+    double x_lo(int i) const {
+        const Elem& e = m_.M[size_t(i)];
+        return (e.arc ? e.c.x() - e.r() : std::min(e.a.x(), e.b.x())) - 10 * kTol;
+    }
+    double x_hi(int i) const {
+        const Elem& e = m_.M[size_t(i)];
+        return (e.arc ? e.c.x() + e.r() : std::max(e.a.x(), e.b.x())) + 10 * kTol;
+    }
+
+    const Material& m_;
+    double Y_;
+    const std::vector<std::pair<double, int>>& ray_;
+    std::vector<int> beyond_;
+    std::vector<std::pair<double, int>> by_lo_;
+    std::vector<int> active_;
+    size_t next_ = 0;
+};
+}  // namespace
+
+std::vector<Interval> m_intervals(const Material& m, double Y, int d) {
+    // Only the elements of M near the line matter (YIndex): the crossings, the
+    // boundary within kTol, and the winding numbers by the crossings of a ray.
+    if (!m.m_index.built_for(m.M)) m.m_index.build(m.M, 10 * kTol);
+    std::vector<int> near;
+    m.m_index.query(Y, near);
+    std::sort(near.begin(), near.end());
+    std::vector<std::pair<double, int>> ray;
+    const std::vector<Cut> pts = line_cuts(m, Y, near, ray);
+    InsideSweep inside(m, Y, near, ray);
     // Runs of inside sub-intervals, as index ranges into pts.
     std::vector<std::pair<size_t, size_t>> runs;
     bool open = false;

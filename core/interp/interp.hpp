@@ -6,6 +6,7 @@
 #include <array>
 #include <bitset>
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <unordered_set>
@@ -281,6 +282,26 @@ private:
     // interp.cpp
     bool fetch(std::string_view& line, int& lineno);
     StepResult execute(const Block& b);
+    // interp_exec.cpp: the steps of execute() and the modal groups of apply_modal().
+    // The inline ones run for every block, where a call would cost more than
+    // their tests; they are defined and called in interp_exec.cpp only.
+    inline bool assign_all(const Block& b);
+    bool assign_l(const Operand& t, double v, int col);
+    bool assign_e(const Operand& t, double v, int col);
+    std::optional<StepResult> run_apart(const Block& b, const Plan& p);
+    bool block_allowed(const Plan& p);
+    inline bool do_dwell(const Plan& p);
+    bool do_g79(const Block& b, const Plan& p);
+    bool do_flow(const Block& b, const Plan& p);
+    inline bool modal_interpolation(const Plan& p);
+    inline bool modal_cycle(const Plan& p);
+    inline bool modal_frame_switches(const Plan& p);
+    bool modal_feed(const Plan& p);
+    bool modal_tool(const Plan& p);
+    bool modal_g59(const Plan& p);
+    inline bool modal_frame(const Plan& p);
+    bool modal_g92(const Plan& p);
+    void ed_axes(int& a0, int& a1) const;
     StepResult fail(int code, std::string detail, int column = 0);
     void warn(int code, std::string detail);
     bool call(const Plan& p);
@@ -403,6 +424,11 @@ private:
     bool p46_close_section();
     bool p46_header(const Plan& p, int nu);
     bool p46_order(const Plan& p, int nu);
+    struct P46Cut;
+    bool p46_order_allowed(const Plan& p, const p46::Def& d);
+    bool p46_drill(const Plan& p, const p46::Def& d);
+    bool p46_cutter(const Plan& p, int nu, const p46::Def& d, double& R);
+    bool p46_cut(const p46::Def& d, int nu, const P46Cut& c);
     bool p46_fail(const p46::Error& e, const p46::Def& d);
     // The axes of a G46 plane: first, second and normal (interp_pocket46.cpp).
     struct P46Axes {
@@ -434,9 +460,24 @@ private:
     bool coordinate_above(const ProgramText* prog, int line, int axis, double& v);
     static double cyc(const Plan& p, Addr a, double dflt, bool* has = nullptr);
     bool turning_profile(long na, long nb, turning::Profile& out, comp::V2& first);
+    struct ProfileRead;
+    bool profile_l_words(const Block& blk);
+    bool profile_start(Plan& q, ProfileRead& r);
+    pgp::Spec profile_spec(const Plan& q, const comp::V2& cur, int line) const;
+    bool profile_block(Plan& q, int line, ProfileRead& r);
+    static void profile_as_called(const std::vector<pgp::Elem>& elems, bool reversed, turning::Profile& out,
+                                  comp::V2& first);
     void warn_allowance_inside(int g, double i, double k);
     bool turning_emit(const std::vector<turning::Move>& moves, double lead, double infeed);
     bool turning_block(const Plan& p);
+    bool turning_g64(const Plan& p);
+    bool turning_g65_g63(const Plan& p);
+    bool turning_g66(const Plan& p);
+    bool turning_g33(const Plan& p);
+    bool turning_g38(const Plan& p);
+    bool turning_emit_ef(const Plan& p, const std::vector<turning::Move>& moves);
+    static turning::G65Args g65_args(const Plan& p);
+    turning::G63Args g63_args(const Plan& p) const;
     bool turning_stock(const Plan& p);
     bool turning_g64_run();
     bool comp_engage(int g);

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "core/interp/gate.hpp"
 #include "core/interp/plan.hpp"
@@ -12,42 +13,53 @@
 
 namespace pupitre {
 
-StepResult Interpreter::execute(const Block& b) {
-    // 1. Parametric assignments, left to right.
+// An assignment to L: L100-L199 are the profile's and compensation's own
+// variables, so they may not change under them.
+bool Interpreter::assign_l(const Operand& t, double v, int col) {
+    if (!LVars::valid(t.index))
+        return fail(91, strf(tr("L%d does not exist (L0-L19, L100-L199, L900-L959)"), t.index), col), false;
+    if (t.index >= 100 && t.index <= 199 && modal_.radcomp != 40)
+        return fail(140, strf(tr("writing L%d under radius compensation"), t.index), col), false;
+    if (t.index >= 100 && t.index <= 199 && pgp_.pending())
+        return fail(96, strf(tr("writing L%d after an incomplete profile block"), t.index), col), false;
+    l_.v[size_t(t.index)] = v;
+    l_.written.set(size_t(t.index));
+    return true;
+}
+
+// An assignment to E, direct or through an L that holds the E number.
+bool Interpreter::assign_e(const Operand& t, double v, int col) {
+    int n = t.index;
+    if (t.kind == Operand::EIndirect) {
+        if (!LVars::valid(t.index)) return fail(91, strf(tr("L%d does not exist"), t.index), col), false;
+        double nn = l_.v[size_t(t.index)];
+        if (nn < 0 || nn > 99999 || nn != std::floor(nn))
+            return fail(91, strf(tr("L%d does not hold an E number"), t.index), col), false;
+        n = int(nn);
+    }
+    if (std::fabs(v) > 9.2e18) return fail(92, tr("value too large for an E parameter"), col), false;
+    // A decimal stored into E is truncated toward zero (program-flow.md §9.3).
+    std::string why;
+    if (int rc = write_e(n, int64_t(std::trunc(v)), why)) return fail(rc, why, col), false;
+    return true;
+}
+
+// Left to right, each assignment seeing the ones before it (L1=2 L2=L1*3).
+bool Interpreter::assign_all(const Block& b) {
     for (const Assign& a : b.assigns) {
         col_ = a.col;
         double v;
         std::string why;
-        if (int rc = eval_expr(b, a.expr, l_, *this, v, why)) return fail(rc, why, a.col);
-        const Operand& t = a.target;
-        if (t.kind == Operand::LVar) {
-            if (!LVars::valid(t.index))
-                return fail(91, strf(tr("L%d does not exist (L0-L19, L100-L199, L900-L959)"), t.index), a.col);
-            if (t.index >= 100 && t.index <= 199 && modal_.radcomp != 40)
-                return fail(140, strf(tr("writing L%d under radius compensation"), t.index), a.col);
-            if (t.index >= 100 && t.index <= 199 && pgp_.pending())
-                return fail(96, strf(tr("writing L%d after an incomplete profile block"), t.index), a.col);
-            l_.v[size_t(t.index)] = v;
-            l_.written.set(size_t(t.index));
-        } else {
-            int n = t.index;
-            if (t.kind == Operand::EIndirect) {
-                if (!LVars::valid(t.index)) return fail(91, strf(tr("L%d does not exist"), t.index), a.col);
-                double nn = l_.v[size_t(t.index)];
-                if (nn < 0 || nn > 99999 || nn != std::floor(nn))
-                    return fail(91, strf(tr("L%d does not hold an E number"), t.index), a.col);
-                n = int(nn);
-            }
-            if (std::fabs(v) > 9.2e18) return fail(92, tr("value too large for an E parameter"), a.col);
-            // A decimal stored into E is truncated toward zero (program-flow.md §9.3).
-            if (int rc = write_e(n, int64_t(std::trunc(v)), why)) return fail(rc, why, a.col);
-        }
+        if (int rc = eval_expr(b, a.expr, l_, *this, v, why)) return fail(rc, why, a.col), false;
+        bool ok = a.target.kind == Operand::LVar ? assign_l(a.target, v, a.col) : assign_e(a.target, v, a.col);
+        if (!ok) return false;
     }
+    return true;
+}
 
-    Plan p;
-    bool decoded = decode(b, p);
-    if (l_.any_unset_read) report_unset_reads();
-    if (!decoded) return StepResult::error;
+// The blocks that do not go through the steps of an ordinary block: what they
+// do is their whole effect. Empty for an ordinary block.
+std::optional<StepResult> Interpreter::run_apart(const Block& b, const Plan& p) {
     if (g64_pending_) {
         // G64's rough stock until G80, which runs the roughing first (turning.md §6.3).
         if (p.cycle != 80) return turning_stock(p) ? StepResult::running : StepResult::error;
@@ -71,74 +83,113 @@ StepResult Interpreter::execute(const Block& b) {
         p46_.defining = false;  // a definition with an error is not kept
         return StepResult::error;
     }
+    return std::nullopt;
+}
+
+// The refusals that come before the block's modal words, M functions and
+// moves take effect.
+bool Interpreter::block_allowed(const Plan& p) {
     if (p.has_eb)
         for (int i = 0; i < p.nm; ++i)
-            if (p.m[i] <= 2) return fail(131, strf(tr("a fillet or chamfer (EB) in a block with M0%d"), p.m[i]));
+            if (p.m[i] <= 2) return fail(131, strf(tr("a fillet or chamfer (EB) in a block with M0%d"), p.m[i])), false;
     if (pgp_.pending()) {
         // The held element needs the next blocks (pgp.md §6 item 5).
         if (p.plane >= 0 && p.plane != modal_.plane)
-            return fail(137, tr("plane change while a profile element is incomplete"));
+            return fail(137, tr("plane change while a profile element is incomplete")), false;
         for (int i = 0; i < p.nm; ++i)
-            if (p.m[i] == 2 && !pgp_close()) return StepResult::error;  // the solver says why (101, 131)
+            if (p.m[i] == 2 && !pgp_close()) return false;  // the solver says why (101, 131)
     }
     if (p.g[78]) {
         for (int i = 0; i < p.nm; ++i)
             if (p.m[i] == 0 || p.m[i] == 1)
-                return fail(78, strf(tr("G78 with a program stop M0%d"), p.m[i]));
+                return fail(78, strf(tr("G78 with a program stop M0%d"), p.m[i])), false;
     }
-
     // Radius compensation restrictions (turning.md §3.7, milling.md §4.4.2).
     bool comp = modal_.radcomp != 40;
-    if (comp && p.g[16]) return fail(140, tr("G16 under radius compensation"));
+    if (comp && p.g[16]) return fail(140, tr("G16 under radius compensation")), false;
+    return true;
+}
 
-    if (!apply_modal(p)) return StepResult::error;
-    if (!do_m_avant(p)) return StepResult::error;
-    if (!apply_spindle(p)) return StepResult::error;
-    if (b.msg_channel >= 0) out_.message(loc_, b.msg_channel, b.msg);
-    if (!do_motion(p)) return StepResult::error;
+bool Interpreter::do_dwell(const Plan& p) {
     if (p.dwell >= 0) {
         clock_ += p.dwell;
         out_.dwell(loc_, p.dwell);
     } else if (p.g[4]) {
-        return fail(2, tr("G4 needs the dwell time in F (G4 F1.5)"));
+        return fail(2, tr("G4 needs the dwell time in F (G4 F1.5)")), false;
     }
+    return true;
+}
+
+// G79's condition is read once the rest of the block is done: it sees the
+// block's own assignments.
+bool Interpreter::do_g79(const Block& b, const Plan& p) {
+    if (p.g79_n < 0) return fail(2, tr("G79 needs the label to jump to (G79 N100)")), false;
+    bool go = true;
+    if (b.test.cmp != Cmp::none) {
+        double lhs, rhs;
+        std::string why;
+        if (int rc = eval_expr(b, b.test.lhs, l_, *this, lhs, why)) return fail(rc, why, b.test.col), false;
+        if (int rc = eval_expr(b, b.test.rhs, l_, *this, rhs, why)) return fail(rc, why, b.test.col), false;
+        go = compare(b.test.cmp, lhs, rhs);
+        if (l_.any_unset_read) report_unset_reads();
+    }
+    return !go || jump(p.g79_n);
+}
+
+// The functions that act on the program rather than the machine come last:
+// a jump or a call leaves the block, so everything else in it must be done.
+bool Interpreter::do_flow(const Block& b, const Plan& p) {
+    if (p.g[79] && !p.g79_sign && !do_g79(b, p)) return false;
+    if (p.g[48] && !spline_define(p)) return false;
+    if (p.g[49]) {
+        if (modal_.radcomp != 40) return fail(140, tr("G49 must be programmed in G40")), false;
+        if (p.spl_nc <= 0 || !splines_.erase(p.spl_nc))
+            return fail(605, strf(tr("G49: curve NC%d is not defined"), p.spl_nc)), false;
+    }
+    if (p.g[76] && !transfer(p)) return false;
+    if (p.g[77] && !call(p)) return false;
+    return true;
+}
+
+// The steps of turning.md §1.7.5 in their order. Each step returns false once
+// it has reported the error that stops the block. The steps an ordinary move
+// does not need are called only when the block holds their words: this runs
+// for every block, and a call costs more than the test.
+StepResult Interpreter::execute(const Block& b) {
+    if (!assign_all(b)) return StepResult::error;
+    Plan p;
+    bool decoded = decode(b, p);
+    if (l_.any_unset_read) report_unset_reads();
+    if (!decoded) return StepResult::error;
+    if (g64_pending_ || p.unsupported >= 0 || p.g76_sign || p.g[46] || p46_.defining)
+        if (std::optional<StepResult> apart = run_apart(b, p)) return *apart;
+    if ((p.has_eb || p.g[78] || p.g[16] || pgp_.pending()) && !block_allowed(p)) return StepResult::error;
+    if (!apply_modal(p) || !do_m_avant(p) || !apply_spindle(p)) return StepResult::error;
+    if (b.msg_channel >= 0) out_.message(loc_, b.msg_channel, b.msg);
+    if (!do_motion(p) || !do_dwell(p)) return StepResult::error;
     StepResult r = StepResult::running;
     if (!do_m_apres(p, r)) return StepResult::error;
     if (ended_) return r;
-
-    if (p.g[79] && !p.g79_sign) {
-        if (p.g79_n < 0) return fail(2, tr("G79 needs the label to jump to (G79 N100)"));
-        bool go = true;
-        if (b.test.cmp != Cmp::none) {
-            double lhs, rhs;
-            std::string why;
-            if (int rc = eval_expr(b, b.test.lhs, l_, *this, lhs, why)) return fail(rc, why, b.test.col);
-            if (int rc = eval_expr(b, b.test.rhs, l_, *this, rhs, why)) return fail(rc, why, b.test.col);
-            go = compare(b.test.cmp, lhs, rhs);
-            if (l_.any_unset_read) report_unset_reads();
-        }
-        if (go && !jump(p.g79_n)) return StepResult::error;
-    }
-    if (p.g[48] && !spline_define(p)) return StepResult::error;
-    if (p.g[49]) {
-        if (modal_.radcomp != 40) return fail(140, tr("G49 must be programmed in G40"));
-        if (p.spl_nc <= 0 || !splines_.erase(p.spl_nc))
-            return fail(605, strf(tr("G49: curve NC%d is not defined"), p.spl_nc));
-    }
-    if (p.g[76] && !transfer(p)) return StepResult::error;
-    if (p.g[77] && !call(p)) return StepResult::error;
+    if ((p.g[79] || p.g[48] || p.g[49] || p.g[76] || p.g[77]) && !do_flow(b, p)) return StepResult::error;
     return r;
 }
 
-bool Interpreter::apply_modal(const Plan& p) {
-    bool comp = modal_.radcomp != 40;
+// G0-G3, G90/G91, G17-G19, G70/G71. The plane cannot change under compensation:
+// the offset contour is computed in it.
+bool Interpreter::modal_interpolation(const Plan& p) {
     if (p.motion >= 0) modal_.motion = p.motion;
     if (p.dist >= 0) modal_.incremental = p.dist == 91;
     if (p.plane >= 0 && p.plane != modal_.plane) {
-        if (comp) return fail(138, tr("plane change under radius compensation (program G40 first)")), false;
+        if (modal_.radcomp != 40)
+            return fail(138, tr("plane change under radius compensation (program G40 first)")), false;
         modal_.plane = p.plane;
     }
     if (p.units >= 0) modal_.inch = p.units == 70;
+    return true;
+}
+
+// G31 and G80-G89. G16 is checked against the cycle this block leaves active.
+bool Interpreter::modal_cycle(const Plan& p) {
     if (p.g[31] && modal_.cycle != 80)
         modal_.cycle = 80;  // G31 cancels an active drilling cycle, as G80 would
     if (p.cycle >= 0 && p.cycle != modal_.cycle) {
@@ -156,15 +207,25 @@ bool Interpreter::apply_modal(const Plan& p) {
     }
     if (p.g[16] && modal_.cycle >= 81 && modal_.cycle <= 89)
         return fail(890, tr("G16 while a drilling cycle is active")), false;
+    return true;
+}
+
+// G52/G53 and G73/G74 change the program point the position is read in.
+bool Interpreter::modal_frame_switches(const Plan& p) {
     if (p.prefdec >= 0 && (p.prefdec == 53) != frames_.g53) {
         frames_.g53 = p.prefdec == 53;
         recompute_program_pos();
     }
     if (p.scale >= 0 && (p.scale == 74) != frames_.scale_on) {
-        if (comp) return fail(143, tr("G73/G74 under radius compensation")), false;
+        if (modal_.radcomp != 40) return fail(143, tr("G73/G74 under radius compensation")), false;
         frames_.scale_on = p.scale == 74;
         recompute_program_pos();
     }
+    return true;
+}
+
+// G93-G95 and F.
+bool Interpreter::modal_feed(const Plan& p) {
     // Feed: turning.md §5.2 wants F in the block that changes the unit, but seven
     // handbook programs write "G95 G92 S1500" or "G80 G40 G95" and give F later
     // (000:9661, 10037, 10186…): the unit changes, and a feed move made before a
@@ -187,6 +248,12 @@ bool Interpreter::apply_modal(const Plan& p) {
         modal_.feed_set = true;
         feed_programmed_ = true;
     }
+    return true;
+}
+
+// T, D, G40-G42 and G29. A new D is announced at once unless M06 in the block
+// announces the change itself.
+bool Interpreter::modal_tool(const Plan& p) {
     if (p.has_t) modal_.t = p.t;
     if (p.has_d && p.d != modal_.d) {
         modal_.d = p.d;
@@ -210,29 +277,43 @@ bool Interpreter::apply_modal(const Plan& p) {
     } else if (p.g[16]) {
         return fail(2, tr("G16 needs P, Q or R with a sign (G16 R+)")), false;
     }
-    // G59 offsets, modal per axis (turning.md §2.8); G91 G59 adds.
-    if (p.g[59]) {
-        if (p.g59_axis.none() && !p.g59_ed && p.g59_ijk.none())
-            return fail(2, tr("G59 needs at least one axis offset")), false;
-        for (int a = 0; a < kAxes; ++a)
-            if (p.g59_axis[size_t(a)])
-                frames_.g59[size_t(a)] = modal_.incremental ? frames_.g59[size_t(a)] + p.g59_val[size_t(a)]
-                                                            : p.g59_val[size_t(a)];
-        int a0 = m_.lathe ? Z : modal_.plane == 17 ? X : modal_.plane == 18 ? Z : Y;
-        int a1 = m_.lathe ? X : modal_.plane == 17 ? Y : modal_.plane == 18 ? X : Z;
-        auto ijk_of = [](int axis) { return axis == X ? 0 : axis == Y ? 1 : 2; };
-        if (p.g59_ijk[size_t(ijk_of(a0))]) frames_.ed_c0 = p.g59_ijk_val[ijk_of(a0)];
-        if (p.g59_ijk[size_t(ijk_of(a1))]) frames_.ed_c1 = p.g59_ijk_val[ijk_of(a1)];
-        if (p.g59_ed) {
-            frames_.ed_a0 = a0;
-            frames_.ed_a1 = a1;
-            frames_.ed = modal_.incremental ? frames_.ed + p.g59_ed_val : p.g59_ed_val;
-        }
-        recompute_program_pos();
+    return true;
+}
+
+// The axes ED turns about: the plane's two axes, (Z, X) on a lathe.
+void Interpreter::ed_axes(int& a0, int& a1) const {
+    a0 = m_.lathe ? Z : modal_.plane == 17 ? X : modal_.plane == 18 ? Z : Y;
+    a1 = m_.lathe ? X : modal_.plane == 17 ? Y : modal_.plane == 18 ? X : Z;
+}
+
+// G59 offsets, modal per axis (turning.md §2.8); G91 G59 adds.
+bool Interpreter::modal_g59(const Plan& p) {
+    if (p.g59_axis.none() && !p.g59_ed && p.g59_ijk.none())
+        return fail(2, tr("G59 needs at least one axis offset")), false;
+    for (int a = 0; a < kAxes; ++a)
+        if (p.g59_axis[size_t(a)])
+            frames_.g59[size_t(a)] = modal_.incremental ? frames_.g59[size_t(a)] + p.g59_val[size_t(a)]
+                                                        : p.g59_val[size_t(a)];
+    int a0, a1;
+    ed_axes(a0, a1);
+    auto ijk_of = [](int axis) { return axis == X ? 0 : axis == Y ? 1 : 2; };
+    if (p.g59_ijk[size_t(ijk_of(a0))]) frames_.ed_c0 = p.g59_ijk_val[ijk_of(a0)];
+    if (p.g59_ijk[size_t(ijk_of(a1))]) frames_.ed_c1 = p.g59_ijk_val[ijk_of(a1)];
+    if (p.g59_ed) {
+        frames_.ed_a0 = a0;
+        frames_.ed_a1 = a1;
+        frames_.ed = modal_.incremental ? frames_.ed + p.g59_ed_val : p.g59_ed_val;
     }
+    recompute_program_pos();
+    return true;
+}
+
+// The frame words: G59, ED, G51. They come after G90/G91 and the plane, which
+// say how they add up and about which axes ED turns.
+bool Interpreter::modal_frame(const Plan& p) {
+    if (p.g[59] && !modal_g59(p)) return false;
     if (p.has_ed) {
-        frames_.ed_a0 = m_.lathe ? Z : modal_.plane == 17 ? X : modal_.plane == 18 ? Z : Y;
-        frames_.ed_a1 = m_.lathe ? X : modal_.plane == 17 ? Y : modal_.plane == 18 ? X : Z;
+        ed_axes(frames_.ed_a0, frames_.ed_a1);
         frames_.ed = modal_.incremental ? frames_.ed + p.ed : p.ed;
         recompute_program_pos();
     }
@@ -242,26 +323,48 @@ bool Interpreter::apply_modal(const Plan& p) {
         frames_.mirror &= ~p.g51_off;
         recompute_program_pos();
     }
-    if (p.g[92]) {
-        if (p.g92_axis.any() && (p.g92_s || p.g92_r))
-            return fail(3, tr("G92 presets axes or sets S or R, not both in one block")), false;
-        if (p.g92_axis.none() && !p.g92_s && !p.g92_r)
-            return fail(2, tr("G92 needs axes (preset), S (spindle limit) or R (tangential feed)")), false;
-        // new PREF = PREF + (current point / OP) - programmed value (000:1173-1179).
-        for (int a = 0; a < kAxes; ++a)
-            if (p.g92_axis[size_t(a)]) frames_.pref[size_t(a)] += prog_[size_t(a)] - p.g92_val[size_t(a)];
-        if (p.g92_axis.any()) recompute_program_pos();
-        if (p.g92_s) {
-            if (!m_.lathe) return fail(2, tr("G92 S (spindle limit) is a lathe function")), false;
-            modal_.smax = p.g92_s_val;
-            if (modal_.smax > m_.spindle_max) {
-                warn(err::wSpeedClamped, strf(tr("G92 S%s above the spindle maximum %s: limited to it"),
-                                              fixed3(modal_.smax, 63).c_str(), fixed3(m_.spindle_max, 63).c_str()));
-                modal_.smax = m_.spindle_max;
-            }
+    return true;
+}
+
+// G92: a preset of the axes, or the spindle limit S, or the tangential feed R.
+bool Interpreter::modal_g92(const Plan& p) {
+    if (p.g92_axis.any() && (p.g92_s || p.g92_r))
+        return fail(3, tr("G92 presets axes or sets S or R, not both in one block")), false;
+    if (p.g92_axis.none() && !p.g92_s && !p.g92_r)
+        return fail(2, tr("G92 needs axes (preset), S (spindle limit) or R (tangential feed)")), false;
+    // new PREF = PREF + (current point / OP) - programmed value (000:1173-1179).
+    for (int a = 0; a < kAxes; ++a)
+        if (p.g92_axis[size_t(a)]) frames_.pref[size_t(a)] += prog_[size_t(a)] - p.g92_val[size_t(a)];
+    if (p.g92_axis.any()) recompute_program_pos();
+    if (p.g92_s) {
+        if (!m_.lathe) return fail(2, tr("G92 S (spindle limit) is a lathe function")), false;
+        modal_.smax = p.g92_s_val;
+        if (modal_.smax > m_.spindle_max) {
+            warn(err::wSpeedClamped, strf(tr("G92 S%s above the spindle maximum %s: limited to it"),
+                                          fixed3(modal_.smax, 63).c_str(), fixed3(m_.spindle_max, 63).c_str()));
+            modal_.smax = m_.spindle_max;
         }
-        if (p.g92_r) modal_.g92r = p.g92_r_val;
     }
+    if (p.g92_r) modal_.g92r = p.g92_r_val;
+    return true;
+}
+
+// The modal groups in the order they take effect: a later group reads what an
+// earlier one set (G59 and ED read G90/G91 and the plane), and a refusal stops
+// the block with the groups before it applied. A table of direct calls, each
+// guarded by the words of its group, rather than an array of member pointers:
+// this runs for every block, and a call costs more than the test.
+bool Interpreter::apply_modal(const Plan& p) {
+    const bool feed = p.feed_mode >= 0 || p.has_f;
+    const bool tool = p.has_t || p.has_d || p.radcomp >= 0 || p.g16_axis >= 0 || p.g[16];
+    if (!modal_interpolation(p) ||        // G0-G3, G90/G91, G17-G19, G70/G71
+        !modal_cycle(p) ||                // G31, G80-G89
+        !modal_frame_switches(p) ||       // G52/G53, G73/G74
+        (feed && !modal_feed(p)) ||       // G93-G95, F
+        (tool && !modal_tool(p)) ||       // T, D, G40-G42, G29, G16
+        !modal_frame(p) ||                // G59, ED, G51
+        (p.g[92] && !modal_g92(p)))       // G92
+        return false;
     if (p.g75_n >= -1) modal_.g75 = p.g75_n == 0 ? -1 : p.g75_n;
     if (p.has_eg) modal_.eg = p.eg;
     return true;

@@ -354,20 +354,20 @@ bool Interpreter::p46_emit(const P46Axes& ax, const std::vector<p46::Run>& runs,
     return go(0, prog_[a0], prog_[a1], clear, 0);
 }
 
-// G46 NU10 NP.. G81/G83/G87 Z.. ... | NU15 NP.. Z.. P.. [ER] [EH] EP EQ |
-// NU20 NP.. Z.. P.. [ER] [EH] EI EJ [J]   (Z: the normal axis, Y in G18, X in G19)
-bool Interpreter::p46_order(const Plan& p, int nu) {
-    Words w;
-    for (int i = 0; i < p.ncyc; ++i) w.has[p.cyc[i].a] = true, w.v[p.cyc[i].a] = p.cyc[i].v;
-    if (!w.has[addrN('P')]) return fail(268, tr("a G46 order needs NP")), false;
-    auto it = p46_.defs.find(int(w.v[addrN('P')]));
-    if (it == p46_.defs.end())
-        return fail(270, strf(tr("pocket NP%d is not defined"), int(w.v[addrN('P')]))), false;
-    const p46::Def& d = it->second;
+// What a NU15 or NU20 order cuts, from its words: the bottom, the cutter's
+// radius, the axial step P, J of NU20, the clearance (ER) and attack (EH)
+// heights, and the axial and lateral feeds (EP EQ, EI EJ).
+struct Interpreter::P46Cut {
+    double zb = 0, R = 0, P = 0, jf = 0, clear = 0, top = 0, f_ax = 0, f_lat = 0;
+};
+
+// The checks every G46 order makes against the machine state and the block,
+// before it plans anything: the pocket was defined for this plane and tool.
+bool Interpreter::p46_order_allowed(const Plan& p, const p46::Def& d) {
     if (modal_.plane != d.plane)
         return fail(273, tr("the plane changed since the pocket was defined")), false;
     const P46Axes ax = p46_axes(d.plane);
-    const size_t a0 = size_t(ax.a0), a1 = size_t(ax.a1), an = size_t(ax.an);
+    const size_t an = size_t(ax.an);
     const std::string bottom = axis_name(ax.an);
     if (modal_.tool_axis != ax.an || modal_.tool_axis_neg)
         return fail(271, strf(tr("the tool axis (G16) is not perpendicular to the contouring plane (G16 %c+ in G%d)"),
@@ -387,43 +387,49 @@ bool Interpreter::p46_order(const Plan& p, int nu) {
                                   axis_name(a).c_str(), bottom.c_str(), d.plane)),
                    false;
     if (!p.axis[an]) return fail(268, strf(tr("a G46 order needs the bottom %s"), bottom.c_str())), false;
-    const double zb = p.inc[an] ? prog_[an] + p.val[an] : p.val[an];
-    apply_corrector_gauges(std::bitset<kAxes>().set(an));
-    first_move_ = false;
+    return true;
+}
 
-    if (nu == 10) {
-        int code = p.g[81] ? 81 : p.g[83] ? 83 : p.g[87] ? 87 : 0;
-        if (!code) return fail(268, tr("G46 NU10 needs G81, G83 or G87")), false;
-        std::vector<p46::Run> runs;
-        std::vector<double> ys;
-        p46::Error e;
-        if (!p46::roughing(d, d.ed / 2, runs, ys, e)) return p46_fail(e, d);
-        Modal saved = modal_;
-        CycleParams saved_cyc = cyc_;
-        cyc_ = CycleParams{};
-        modal_.motion = 0;
-        modal_.cycle = code;
-        modal_.feed_mode = 94;
-        if (p.has_f) modal_.feed = p.f, feed_programmed_ = true;
-        Plan q = p;
-        q.axis.reset();
-        q.axis.set(an);
-        q.inc.reset();
-        bool ok = cycle_words(q, code);  // the cycle axis is the normal axis (cycle_axis())
-        q.axis.set(a0).set(a1);
-        // Seed 000: LX LY of NU0 is "the start and/or drilling point for
-        // roughing": one hole there, else where the roughing first plunges
-        // (issue 19 item 4); the roughing warns where it plunges elsewhere.
-        const p46::V2 hole = d.has_l ? d.l : runs.front().start;
-        q.val[a0] = hole.x(), q.val[a1] = hole.y();
-        if (ok) ok = cycle_run(q, code);
-        cyc_ = saved_cyc;
-        modal_ = saved;
-        return ok;
-    }
+// NU10: the drilling cycle of the block, run once at the hole of the pocket,
+// with the modal state of the program left as it was.
+bool Interpreter::p46_drill(const Plan& p, const p46::Def& d) {
+    const P46Axes ax = p46_axes(d.plane);
+    const size_t a0 = size_t(ax.a0), a1 = size_t(ax.a1), an = size_t(ax.an);
+    int code = p.g[81] ? 81 : p.g[83] ? 83 : p.g[87] ? 87 : 0;
+    if (!code) return fail(268, tr("G46 NU10 needs G81, G83 or G87")), false;
+    std::vector<p46::Run> runs;
+    std::vector<double> ys;
+    p46::Error e;
+    if (!p46::roughing(d, d.ed / 2, runs, ys, e)) return p46_fail(e, d);
+    Modal saved = modal_;
+    CycleParams saved_cyc = cyc_;
+    cyc_ = CycleParams{};
+    modal_.motion = 0;
+    modal_.cycle = code;
+    modal_.feed_mode = 94;
+    if (p.has_f) modal_.feed = p.f, feed_programmed_ = true;
+    Plan q = p;
+    q.axis.reset();
+    q.axis.set(an);
+    q.inc.reset();
+    bool ok = cycle_words(q, code);  // the cycle axis is the normal axis (cycle_axis())
+    q.axis.set(a0).set(a1);
+    // Seed 000: LX LY of NU0 is "the start and/or drilling point for
+    // roughing": one hole there, else where the roughing first plunges
+    // (issue 19 item 4); the roughing warns where it plunges elsewhere.
+    const p46::V2 hole = d.has_l ? d.l : runs.front().start;
+    q.val[a0] = hole.x(), q.val[a1] = hole.y();
+    if (ok) ok = cycle_run(q, code);
+    cyc_ = saved_cyc;
+    modal_ = saved;
+    return ok;
+}
 
+// NU15 and NU20 take only their own words, and the roughing needs the cutter
+// the pocket was defined for (ED).
+bool Interpreter::p46_cutter(const Plan& p, int nu, const p46::Def& d, double& R) {
     const Corrector& c = corr_[size_t(modal_.d)];
-    const double R = c.r + c.dr;
+    R = c.r + c.dr;
     if (modal_.d == 0 || R <= 0)
         return fail(272, tr("the pocket needs a cutter with a radius (D0 or R0 active)")), false;
     if (nu == 15 && std::fabs(2 * R - d.ed) > 1e-3)
@@ -441,32 +447,24 @@ bool Interpreter::p46_order(const Plan& p, int nu) {
     }
     if (p.has_f || p.g.count() > 1)
         return fail(267, strf(tr("G46 NU%d takes no F and no other G"), nu)), false;
-    if (!w.has[addr1('P')])
-        return fail(268, strf(tr("G46 NU%d needs the axial step P"), nu)), false;
-    const Addr fa = nu == 15 ? addrE('P') : addrE('I'), fl = nu == 15 ? addrE('Q') : addrE('J');
-    if (!w.has[fa] || !w.has[fl])
-        return fail(268, strf(nu == 15 ? tr("G46 NU%d needs EP and EQ") : tr("G46 NU%d needs EI and EJ"), nu)), false;
-    const double P = w.v[addr1('P')], jf = w.has[addr1('J')] ? w.v[addr1('J')] : 0;
-    if (P <= 0 || w.v[fa] <= 0 || w.v[fl] <= 0 || jf < 0)
-        return fail(282, tr("P, the feeds and J of a G46 order are positive")), false;
-    const double clear = w.has[addrE('R')] ? w.v[addrE('R')] : prog_[an];
-    const double top = w.has[addrE('H')] ? w.v[addrE('H')] : clear;
-    if (top - zb < 1e-9)
-        return fail(276, strf(tr("the pocket bottom %s is not below the attack plane"), bottom.c_str())), false;
-    if (clear < top - 1e-9)
-        return fail(282, tr("the clearance plane ER is below the attack plane EH")), false;
+    return true;
+}
 
+// The passes of NU15 (roughing) or NU20 (finishing), layer by layer down to the
+// bottom, then the roughing's end point.
+bool Interpreter::p46_cut(const p46::Def& d, int nu, const P46Cut& c) {
+    const P46Axes ax = p46_axes(d.plane);
     std::vector<p46::Run> runs;
     p46::Error e;
     if (nu == 15) {
         std::vector<double> ys;
-        if (!p46::roughing(d, R, runs, ys, e)) return p46_fail(e, d);
+        if (!p46::roughing(d, c.R, runs, ys, e)) return p46_fail(e, d);
         warn_plunges(d, runs);
     } else {
         bool any = false;
         for (const auto& s : d.sections) any = any || s.nu == 1 || s.nu == 2 || s.nu == 6;
         if (!any) return true;  // NU20 is ignored for facing outlines and recesses (000:6369)
-        if (!p46::finishing(d, R, jf, runs, e)) return p46_fail(e, d);
+        if (!p46::finishing(d, c.R, c.jf, runs, e)) return p46_fail(e, d);
     }
     Modal saved = modal_;
     modal_.feed_mode = 94;
@@ -474,21 +472,58 @@ bool Interpreter::p46_order(const Plan& p, int nu) {
     modal_.motion = 1;
     OwnFeed own(*this);  // the order's EP and EQ
     bool ok = true;
-    if (prog_[an] < clear - 1e-9) ok = cycle_axis_move(0, clear);
-    double approach = top;
-    for (double z : layers(top, zb, P)) {
+    if (prog_[size_t(ax.an)] < c.clear - 1e-9) ok = cycle_axis_move(0, c.clear);
+    double approach = c.top;
+    for (double z : layers(c.top, c.zb, c.P)) {
         if (!ok) break;
-        ok = p46_emit(ax, runs, z, approach, clear, w.v[fa], w.v[fl]);
+        ok = p46_emit(ax, runs, z, approach, c.clear, c.f_ax, c.f_lat);
         approach = z;
     }
     // The roughing end point EX EY of the header (000:6109), at the clearance.
     if (ok && nu == 15 && d.has_e) {
         Axes t = prog_;
-        t[a0] = d.e.x(), t[a1] = d.e.y();
+        t[size_t(ax.a0)] = d.e.x(), t[size_t(ax.a1)] = d.e.y();
         ok = cycle_move(0, t);
     }
     modal_ = saved;
     return ok;
+}
+
+// G46 NU10 NP.. G81/G83/G87 Z.. ... | NU15 NP.. Z.. P.. [ER] [EH] EP EQ |
+// NU20 NP.. Z.. P.. [ER] [EH] EI EJ [J]   (Z: the normal axis, Y in G18, X in G19)
+bool Interpreter::p46_order(const Plan& p, int nu) {
+    Words w;
+    for (int i = 0; i < p.ncyc; ++i) w.has[p.cyc[i].a] = true, w.v[p.cyc[i].a] = p.cyc[i].v;
+    if (!w.has[addrN('P')]) return fail(268, tr("a G46 order needs NP")), false;
+    auto it = p46_.defs.find(int(w.v[addrN('P')]));
+    if (it == p46_.defs.end())
+        return fail(270, strf(tr("pocket NP%d is not defined"), int(w.v[addrN('P')]))), false;
+    const p46::Def& d = it->second;
+    if (!p46_order_allowed(p, d)) return false;
+    const size_t an = size_t(p46_axes(d.plane).an);
+    const std::string bottom = axis_name(int(an));
+    P46Cut c;
+    c.zb = p.inc[an] ? prog_[an] + p.val[an] : p.val[an];
+    apply_corrector_gauges(std::bitset<kAxes>().set(an));
+    first_move_ = false;
+    if (nu == 10) return p46_drill(p, d);
+    if (!p46_cutter(p, nu, d, c.R)) return false;
+    if (!w.has[addr1('P')])
+        return fail(268, strf(tr("G46 NU%d needs the axial step P"), nu)), false;
+    const Addr fa = nu == 15 ? addrE('P') : addrE('I'), fl = nu == 15 ? addrE('Q') : addrE('J');
+    if (!w.has[fa] || !w.has[fl])
+        return fail(268, strf(nu == 15 ? tr("G46 NU%d needs EP and EQ") : tr("G46 NU%d needs EI and EJ"), nu)), false;
+    c.P = w.v[addr1('P')], c.jf = w.has[addr1('J')] ? w.v[addr1('J')] : 0;
+    c.f_ax = w.v[fa], c.f_lat = w.v[fl];
+    if (c.P <= 0 || c.f_ax <= 0 || c.f_lat <= 0 || c.jf < 0)
+        return fail(282, tr("P, the feeds and J of a G46 order are positive")), false;
+    c.clear = w.has[addrE('R')] ? w.v[addrE('R')] : prog_[an];
+    c.top = w.has[addrE('H')] ? w.v[addrE('H')] : c.clear;
+    if (c.top - c.zb < 1e-9)
+        return fail(276, strf(tr("the pocket bottom %s is not below the attack plane"), bottom.c_str())), false;
+    if (c.clear < c.top - 1e-9)
+        return fail(282, tr("the clearance plane ER is below the attack plane EH")), false;
+    return p46_cut(d, nu, c);
 }
 
 }  // namespace pupitre

@@ -49,6 +49,122 @@ void Interpreter::warn_allowance_inside(int g, double i, double k) {
                                      g, ik));
 }
 
+// What the reading of a finished profile carries from one block to the next.
+struct Interpreter::ProfileRead {
+    const ProgramText* prog = nullptr;
+    int first_line = 0;  // of the profile as written
+    pgp::Solver solver;
+    std::vector<pgp::Elem> elems;
+    comp::V2 pos;
+    comp::V2 start;  // the profile's first point, as written
+    bool started = false;
+    int count = 0;  // blocks after the start point
+};
+
+// 000:2464 forbids L100-L199 and L900-L959 in the finished profile, yet the
+// handbook's own %2000 reads L151-L153 in one (000:8839-8866): writes are
+// refused (96); a read is warning 1114, or the NUM's error 96 under the
+// machine setting `strict`.
+bool Interpreter::profile_l_words(const Block& blk) {
+    for (const Assign& as : blk.assigns)
+        if (as.target.kind == Operand::LVar && as.target.index >= 100)
+            return fail(96, strf(tr("writing L%d in a roughing-cycle profile"), as.target.index)), false;
+    if (int high = high_l_read(blk); high >= 0) {
+        // The handbook's words, quoted as written (not translated).
+        const char* seed = "ne peuvent pas \u00eatre employ\u00e9es dans la d\u00e9finition du profil fini";
+        // TRANSLATORS: the second %s is a quotation of the French handbook; keep it as it is.
+        if (m_.strict)
+            return fail(96, strf(tr("L%d read in a roughing-cycle profile (seed 000: L100-L199 and L900-L959 \"%s\")"),
+                                 high, seed)),
+                   false;
+        // TRANSLATORS: the second %s is a quotation of the French handbook; keep it as it is.
+        warn(err::wProfileL, strf(tr("L%d read in a roughing-cycle profile (seed 000: L100-L199 and L900-L959 \"%s\"): "
+                                     "the NUM stops with error 96; copy it into L0-L19 before the cycle"),
+                                  high, seed));
+    }
+    return true;
+}
+
+// The first block of the profile is its start point. A coordinate it
+// does not write is the one in force there: the nearest block above
+// that writes it (%555: G65 N120 N170 starts at N120 G1 X60).
+bool Interpreter::profile_start(Plan& q, ProfileRead& r) {
+    for (int ax : {X, Z}) {
+        if (q.axis[size_t(ax)]) continue;
+        double v;
+        if (!coordinate_above(r.prog, r.first_line, ax, v))
+            return fail(871, tr("the first block of the profile needs X and Z")), false;
+        q.axis.set(size_t(ax));
+        q.inc.reset(size_t(ax));
+        q.val[size_t(ax)] = v;
+    }
+    r.pos = comp::V2(q.inc[Z] ? r.pos.x() + q.val[Z] : q.val[Z], q.inc[X] ? r.pos.y() + q.val[X] : q.val[X]);
+    r.start = r.pos;
+    r.solver.start(r.pos);
+    r.started = true;
+    return true;
+}
+
+// A profile block in the solver's plane: Z is its first axis, X its second
+// (I and K the centre's), as the PGP of the lathe writes them.
+pgp::Spec Interpreter::profile_spec(const Plan& q, const comp::V2& cur, int line) const {
+    pgp::Spec s;
+    s.g = (modal_.motion == 2 || modal_.motion == 3) ? modal_.motion : 1;
+    s.has_x = q.axis[Z];
+    s.x = q.inc[Z] ? cur.x() + q.val[Z] : q.val[Z];
+    s.has_y = q.axis[X];
+    s.y = q.inc[X] ? cur.y() + q.val[X] : q.val[X];
+    s.has_ea = q.has_ea;
+    s.ea = q.ea;
+    s.has_i = q.ijk[2];
+    s.i = q.ijk_val[2] + (q.ijk_inc[2] ? cur.x() : 0);
+    s.has_j = q.ijk[0];
+    s.j = q.ijk_val[0] + (q.ijk_inc[0] ? cur.y() : 0);
+    s.has_r = q.has_r;
+    s.r = q.r;
+    s.link = q.link == 'X' ? 'S' : q.link;
+    s.disc = q.disc;
+    s.has_eb = q.has_eb;
+    s.eb = q.eb;
+    s.eb_unsigned = q.eb_unsigned;
+    s.tag = line;
+    return s;
+}
+
+// One block of the profile, decoded: its modal words, then the element it adds.
+// A block that moves nothing still goes to the solver, which allows only two
+// of them while an element is incomplete (error 136).
+bool Interpreter::profile_block(Plan& q, int line, ProfileRead& r) {
+    if (q.motion >= 0) modal_.motion = q.motion;
+    if (q.dist >= 0) modal_.incremental = q.dist == 91;
+    if (q.has_f && profile_feed_ <= 0) profile_feed_ = q.f;
+    if (!r.started) return profile_start(q, r);
+    pgp::Error e;
+    bool motion = q.axis[X] || q.axis[Z] || q.pgp || q.ijk.any() || q.has_r;
+    if (!motion) {
+        if (!r.solver.idle(e)) return fail(e.code, e.detail), false;
+        return true;
+    }
+    if (!r.solver.push(profile_spec(q, r.solver.position(), line), r.elems, e)) return fail(e.code, e.detail), false;
+    ++r.count;
+    return true;
+}
+
+// The elements in the order the cycle calls them: written N<b> before N<a>,
+// the same elements from the last point to the first.
+void Interpreter::profile_as_called(const std::vector<pgp::Elem>& elems, bool reversed, turning::Profile& out,
+                                    comp::V2& first) {
+    out.elems.clear();
+    for (const auto& el : elems) out.elems.push_back(el.geo);
+    if (!reversed) return;
+    std::reverse(out.elems.begin(), out.elems.end());
+    for (auto& el : out.elems) {
+        std::swap(el.a, el.b);
+        el.sweep = -el.sweep;
+    }
+    first = out.elems.front().a;
+}
+
 bool Interpreter::turning_profile(long na, long nb, turning::Profile& out, comp::V2& first) {
     const ProgramText* prog = stack_.back().prog;
     const Label* a = prog->find_label(na);
@@ -62,12 +178,11 @@ bool Interpreter::turning_profile(long na, long nb, turning::Profile& out, comp:
     Loc saved = loc_;
     Modal saved_modal = modal_;
     Block blk;
-    pgp::Solver solver;
-    std::vector<pgp::Elem> elems;
-    comp::V2 pos(prog_[Z], prog_[X]);
-    bool started = false;
+    ProfileRead r;
+    r.prog = prog;
+    r.first_line = lo->line;
+    r.pos = comp::V2(prog_[Z], prog_[X]);
     size_t pos_off = lo->offset;
-    int count = 0;
     for (int line = lo->line; line <= hi->line && pos_off < prog->end; ++line) {
         size_t eol = std::min(text.find('\n', pos_off), prog->end);
         std::string_view l = text.substr(pos_off, eol - pos_off);
@@ -76,98 +191,19 @@ bool Interpreter::turning_profile(long na, long nb, turning::Profile& out, comp:
         loc_ = Loc{prog->number, line, line_label(l)};
         if (!parse_block(l, blk, d)) return fail(d.code, d.detail, d.column), false;
         if (blk.empty()) continue;
-        // 000:2464 forbids L100-L199 and L900-L959 in the finished profile, yet the
-        // handbook's own %2000 reads L151-L153 in one (000:8839-8866): writes are
-        // refused (96); a read is warning 1114, or the NUM's error 96 under the
-        // machine setting `strict`.
-        for (const Assign& as : blk.assigns)
-            if (as.target.kind == Operand::LVar && as.target.index >= 100)
-                return fail(96, strf(tr("writing L%d in a roughing-cycle profile"), as.target.index)), false;
-        if (int high = high_l_read(blk); high >= 0) {
-            // The handbook's words, quoted as written (not translated).
-            const char* seed = "ne peuvent pas \u00eatre employ\u00e9es dans la d\u00e9finition du profil fini";
-            // TRANSLATORS: the second %s is a quotation of the French handbook; keep it as it is.
-            if (m_.strict)
-                return fail(96, strf(tr("L%d read in a roughing-cycle profile (seed 000: L100-L199 and L900-L959 \"%s\")"),
-                                     high, seed)),
-                       false;
-            // TRANSLATORS: the second %s is a quotation of the French handbook; keep it as it is.
-            warn(err::wProfileL, strf(tr("L%d read in a roughing-cycle profile (seed 000: L100-L199 and L900-L959 \"%s\"): "
-                                         "the NUM stops with error 96; copy it into L0-L19 before the cycle"),
-                                      high, seed));
-        }
+        if (!profile_l_words(blk)) return false;
         Plan q;
-        if (!decode(blk, q)) return false;
-        if (q.motion >= 0) modal_.motion = q.motion;
-        if (q.dist >= 0) modal_.incremental = q.dist == 91;
-        if (q.has_f && profile_feed_ <= 0) profile_feed_ = q.f;
-        if (!started) {
-            // The first block of the profile is its start point. A coordinate it
-            // does not write is the one in force there: the nearest block above
-            // that writes it (%555: G65 N120 N170 starts at N120 G1 X60).
-            for (int ax : {X, Z}) {
-                if (q.axis[size_t(ax)]) continue;
-                double v;
-                if (!coordinate_above(prog, lo->line, ax, v))
-                    return fail(871, tr("the first block of the profile needs X and Z")), false;
-                q.axis.set(size_t(ax));
-                q.inc.reset(size_t(ax));
-                q.val[size_t(ax)] = v;
-            }
-            pos = comp::V2(q.inc[Z] ? pos.x() + q.val[Z] : q.val[Z], q.inc[X] ? pos.y() + q.val[X] : q.val[X]);
-            first = pos;
-            solver.start(pos);
-            started = true;
-            continue;
-        }
-        bool motion = q.axis[X] || q.axis[Z] || q.pgp || q.ijk.any() || q.has_r;
-        if (!motion) {
-            pgp::Error e;
-            if (!solver.idle(e)) return fail(e.code, e.detail), false;
-            continue;
-        }
-        pgp::Spec s;
-        s.g = (modal_.motion == 2 || modal_.motion == 3) ? modal_.motion : 1;
-        comp::V2 cur = solver.position();
-        s.has_x = q.axis[Z];
-        s.x = q.inc[Z] ? cur.x() + q.val[Z] : q.val[Z];
-        s.has_y = q.axis[X];
-        s.y = q.inc[X] ? cur.y() + q.val[X] : q.val[X];
-        s.has_ea = q.has_ea;
-        s.ea = q.ea;
-        s.has_i = q.ijk[2];
-        s.i = q.ijk_val[2] + (q.ijk_inc[2] ? cur.x() : 0);
-        s.has_j = q.ijk[0];
-        s.j = q.ijk_val[0] + (q.ijk_inc[0] ? cur.y() : 0);
-        s.has_r = q.has_r;
-        s.r = q.r;
-        s.link = q.link == 'X' ? 'S' : q.link;
-        s.disc = q.disc;
-        s.has_eb = q.has_eb;
-        s.eb = q.eb;
-        s.eb_unsigned = q.eb_unsigned;
-        s.tag = line;
-        pgp::Error e;
-        if (!solver.push(s, elems, e)) return fail(e.code, e.detail), false;
-        ++count;
+        if (!decode(blk, q) || !profile_block(q, line, r)) return false;
     }
     pgp::Error e;
-    if (!solver.finish(elems, e)) return fail(e.code, e.detail), false;
+    if (!r.solver.finish(r.elems, e)) return fail(e.code, e.detail), false;
     loc_ = saved;
     modal_ = saved_modal;
-    if (!started || elems.empty()) return fail(871, strf(tr("the profile N%ld..N%ld has no element"), na, nb)), false;
-    if (count > 50) return fail(871, tr("a profile has at most 50 blocks")), false;
-    out.elems.clear();
-    for (const auto& el : elems) out.elems.push_back(el.geo);
-    if (reversed) {
-        // Called backwards: the same elements from the last point to the first.
-        std::reverse(out.elems.begin(), out.elems.end());
-        for (auto& el : out.elems) {
-            std::swap(el.a, el.b);
-            el.sweep = -el.sweep;
-        }
-        first = out.elems.front().a;
-    }
+    if (!r.started || r.elems.empty())
+        return fail(871, strf(tr("the profile N%ld..N%ld has no element"), na, nb)), false;
+    if (r.count > 50) return fail(871, tr("a profile has at most 50 blocks")), false;
+    first = r.start;
+    profile_as_called(r.elems, reversed, out, first);
     return true;
 }
 
@@ -245,143 +281,167 @@ bool Interpreter::turning_emit(const std::vector<turning::Move>& moves, double l
     return true;
 }
 
-// A block that programs G63, G64, G65, G66, G33 or G38 (G64: the stock follows).
-bool Interpreter::turning_block(const Plan& p) {
-    if (modal_.radcomp != 40) return fail(140, tr("a turning cycle under radius compensation")), false;
+namespace {
+// The X and Z of a cycle's arguments, as the block writes them.
+template <class Args, class P>
+void block_end(Args& a, const P& p) {
+    a.has_x = p.axis[X];
+    a.x = p.val[X];
+    a.has_z = p.axis[Z];
+    a.z = p.val[Z];
+}
+}  // namespace
+
+// G64 only records its arguments: its rough stock is in the blocks that follow,
+// up to the G80 that runs it (turning_g64_run).
+bool Interpreter::turning_g64(const Plan& p) {
+    if (p.spl_nn < 2) return fail(871, tr("G64 needs the profile blocks N.. N..")), false;
+    g64_ = turning::G64Args{};
+    g64_.i = cyc(p, addr1('I'), 0);
+    g64_.k = cyc(p, addr1('K'), 0);
+    g64_.p = cyc(p, addr1('P'), 0, &g64_.has_p);
+    g64_.r = cyc(p, addr1('R'), 0, &g64_.has_r);
+    if (!g64_.has_p && !g64_.has_r) return fail(873, tr("G64 needs P (passes along Z) or R (passes along X)")), false;
+    if (g64_.has_p && g64_.has_r) return fail(889, tr("G64 takes P or R, not both")), false;
+    if (g64_.p < 0 || g64_.r < 0) return fail(835, tr("G64: P and R are positive")), false;
+    g64_na_ = p.spl_n[0];
+    g64_nb_ = p.spl_n[1];
+    g64_tool_ = comp::V2(prog_[Z], prog_[X]);
+    g64_stock_.clear();
+    g64_loc_ = loc_;
+    g64_pending_ = true;
+    return true;
+}
+
+turning::G65Args Interpreter::g65_args(const Plan& p) {
+    turning::G65Args a;
+    block_end(a, p);
+    a.i = cyc(p, addr1('I'), 0);
+    a.k = cyc(p, addr1('K'), 0);
+    a.ea = cyc(p, addrE('A'), 0, &a.has_ea);
+    a.p = cyc(p, addr1('P'), 0, &a.has_p);
+    a.r = cyc(p, addr1('R'), 0, &a.has_r);
+    a.q = cyc(p, addr1('Q'), 0);
+    return a;
+}
+
+// EX and EU are diameters when the machine shows X as a diameter.
+turning::G63Args Interpreter::g63_args(const Plan& p) const {
     const bool diam = m_.x_diameter && !modal_.radius_x;
-    const comp::V2 tool(prog_[Z], prog_[X]);
     auto xpos = [&](Addr a, bool& has) { double v = cyc(p, a, 0, &has); return diam ? v / 2 : v; };
+    turning::G63Args a;
+    block_end(a, p);
+    a.ex = xpos(addrE('X'), a.has_ex);
+    a.ez = cyc(p, addrE('Z'), 0, &a.has_ez);
+    a.p = cyc(p, addr1('P'), 0, &a.has_p);
+    a.r = cyc(p, addr1('R'), 0, &a.has_r);
+    a.ea = cyc(p, addrE('A'), 0, &a.has_ea);
+    a.eu = xpos(addrE('U'), a.has_eu);
+    a.ew = cyc(p, addrE('W'), 0, &a.has_ew);
+    a.eb = cyc(p, addrE('B'), 90, &a.has_eb);
+    a.ec = cyc(p, addrE('C'), 0, &a.has_ec);
+    a.er = cyc(p, addrE('R'), 0);
+    a.q = cyc(p, addr1('Q'), 0);
+    a.eq = cyc(p, addrE('Q'), 0);
+    return a;
+}
+
+// The moves of G65, G63 and G66 run with the infeed at EF when the block gives it.
+bool Interpreter::turning_emit_ef(const Plan& p, const std::vector<turning::Move>& moves) {
+    bool has_ef;
+    double ef = cyc(p, addrE('F'), 0, &has_ef);
+    return turning_emit(moves, 0, has_ef ? ef : 0);
+}
+
+// G65 and G63 cut along the finished profile N<a>..N<b>, read first: its errors
+// come before those of the arguments.
+bool Interpreter::turning_g65_g63(const Plan& p) {
+    if (p.spl_nn < 2) return fail(871, strf(tr("G%d needs the profile N.. N.."), p.g[65] ? 65 : 63)), false;
+    const comp::V2 tool(prog_[Z], prog_[X]);
+    turning::Profile prof;
+    comp::V2 first;
+    if (!turning_profile(p.spl_n[0], p.spl_n[1], prof, first)) return false;
     std::vector<turning::Move> moves;
     std::string why;
     int rc = 0;
-    if (p.g[64]) {
-        if (p.spl_nn < 2) return fail(871, tr("G64 needs the profile blocks N.. N..")), false;
-        g64_ = turning::G64Args{};
-        g64_.i = cyc(p, addr1('I'), 0);
-        g64_.k = cyc(p, addr1('K'), 0);
-        g64_.p = cyc(p, addr1('P'), 0, &g64_.has_p);
-        g64_.r = cyc(p, addr1('R'), 0, &g64_.has_r);
-        if (!g64_.has_p && !g64_.has_r) return fail(873, tr("G64 needs P (passes along Z) or R (passes along X)")), false;
-        if (g64_.has_p && g64_.has_r) return fail(889, tr("G64 takes P or R, not both")), false;
-        if (g64_.p < 0 || g64_.r < 0) return fail(835, tr("G64: P and R are positive")), false;
-        g64_na_ = p.spl_n[0];
-        g64_nb_ = p.spl_n[1];
-        g64_tool_ = tool;
-        g64_stock_.clear();
-        g64_loc_ = loc_;
-        g64_pending_ = true;
-        return true;
+    if (p.g[65]) {
+        turning::G65Args a = g65_args(p);
+        if (!a.has_ea) return fail(2, tr("G65 needs the infeed angle EA")), false;
+        rc = turning::g65(prof, tool, a, moves, why);
+        if (rc == 0 && a.allowance_inside) warn_allowance_inside(65, a.i, a.k);
+    } else {
+        rc = turning::g63(prof, tool, g63_args(p), moves, why);
     }
-    if (p.g[65] || p.g[63]) {
-        if (p.spl_nn < 2) return fail(871, strf(tr("G%d needs the profile N.. N.."), p.g[65] ? 65 : 63)), false;
-        turning::Profile prof;
-        comp::V2 first;
-        if (!turning_profile(p.spl_n[0], p.spl_n[1], prof, first)) return false;
-        if (p.g[65]) {
-            turning::G65Args a;
-            a.has_x = p.axis[X];
-            a.x = p.val[X];
-            a.has_z = p.axis[Z];
-            a.z = p.val[Z];
-            a.i = cyc(p, addr1('I'), 0);
-            a.k = cyc(p, addr1('K'), 0);
-            a.ea = cyc(p, addrE('A'), 0, &a.has_ea);
-            a.p = cyc(p, addr1('P'), 0, &a.has_p);
-            a.r = cyc(p, addr1('R'), 0, &a.has_r);
-            a.q = cyc(p, addr1('Q'), 0);
-            if (!a.has_ea) return fail(2, tr("G65 needs the infeed angle EA")), false;
-            rc = turning::g65(prof, tool, a, moves, why);
-            if (rc == 0 && a.allowance_inside) warn_allowance_inside(65, a.i, a.k);
-        } else {
-            turning::G63Args a;
-            a.has_x = p.axis[X];
-            a.x = p.val[X];
-            a.has_z = p.axis[Z];
-            a.z = p.val[Z];
-            a.ex = xpos(addrE('X'), a.has_ex);
-            a.ez = cyc(p, addrE('Z'), 0, &a.has_ez);
-            a.p = cyc(p, addr1('P'), 0, &a.has_p);
-            a.r = cyc(p, addr1('R'), 0, &a.has_r);
-            a.ea = cyc(p, addrE('A'), 0, &a.has_ea);
-            a.eu = xpos(addrE('U'), a.has_eu);
-            a.ew = cyc(p, addrE('W'), 0, &a.has_ew);
-            a.eb = cyc(p, addrE('B'), 90, &a.has_eb);
-            a.ec = cyc(p, addrE('C'), 0, &a.has_ec);
-            a.er = cyc(p, addrE('R'), 0);
-            a.q = cyc(p, addr1('Q'), 0);
-            a.eq = cyc(p, addrE('Q'), 0);
-            rc = turning::g63(prof, tool, a, moves, why);
-        }
-        if (rc) return fail(rc, why), false;
-        bool has_ef;
-        double ef = cyc(p, addrE('F'), 0, &has_ef);
-        if (!turning_emit(moves, 0, has_ef ? ef : 0)) return false;
-        modal_.motion = 0;  // the state is G00 after the cycle (000:2462)
-        return true;
+    if (rc) return fail(rc, why), false;
+    if (!turning_emit_ef(p, moves)) return false;
+    modal_.motion = 0;  // the state is G00 after the cycle (000:2462)
+    return true;
+}
+
+// G66 cuts a groove with the tool's two edges, the active corrector and D:
+// the difference of their gauges is the tool's width.
+bool Interpreter::turning_g66(const Plan& p) {
+    turning::G66Args a;
+    a.d_first = modal_.d;
+    a.d = int(cyc(p, addr1('D'), 0));
+    if (a.d > 0 && a.d <= m_.correctors && modal_.d > 0) {
+        const Corrector& c1 = corr_[size_t(modal_.d)];
+        const Corrector& c2 = corr_[size_t(a.d)];
+        a.gauge_delta = comp::V2((c2.z + c2.dz) - (c1.z + c1.dz), (c2.x + c2.dx / 2) - (c1.x + c1.dx / 2));
     }
-    if (p.g[66]) {
-        turning::G66Args a;
-        a.d_first = modal_.d;
-        a.d = int(cyc(p, addr1('D'), 0));
-        if (a.d > 0 && a.d <= m_.correctors && modal_.d > 0) {
-            const Corrector& c1 = corr_[size_t(modal_.d)];
-            const Corrector& c2 = corr_[size_t(a.d)];
-            a.gauge_delta = comp::V2((c2.z + c2.dz) - (c1.z + c1.dz), (c2.x + c2.dx / 2) - (c1.x + c1.dx / 2));
-        }
-        a.has_x = p.axis[X];
-        a.x = p.val[X];
-        a.has_z = p.axis[Z];
-        a.z = p.val[Z];
-        a.ea = cyc(p, addrE('A'), 0);
-        a.p = cyc(p, addr1('P'), 0, &a.has_p);
-        a.r = cyc(p, addr1('R'), 0, &a.has_r);
-        a.ep = cyc(p, addrE('P'), 0);
-        a.ef = cyc(p, addrE('F'), 0);
-        // Warning 1117: the two correctors are the tool's two edges; their
-        // difference is its width (seed 000, G66).
-        if (a.d > 0 && a.d_first > 0 && a.gauge_delta.norm() < 1e-6)
-            warn(err::wNoToolWidth, strf(tr("G66: D%d and D%d have the same gauges, so the tool has no width: the "
-                                            "far side of the groove is cut one tool width off; measure D%d on the "
-                                            "other edge of the tool"),
-                                         a.d_first, a.d, a.d));
-        rc = turning::g66(tool, a, moves, why);
-        if (rc) return fail(rc, why), false;
-        bool has_ef;
-        double ef = cyc(p, addrE('F'), 0, &has_ef);
-        if (!turning_emit(moves, 0, has_ef ? ef : 0)) return false;
-        // The second corrector is active afterwards; the tool has not moved
-        // (turning.md §6.6).
-        modal_.d = a.d;
-        frames_.gauge[X] = gauge_for(a.d, X);
-        frames_.gauge[Z] = gauge_for(a.d, Z);
-        gauge_pending_.reset();
-        recompute_program_pos();
-        modal_.motion = 0;
-        return true;
-    }
-    if (p.g[33]) {
-        turning::G33Args a;
-        a.has_x = p.axis[X];
-        a.x = p.val[X];
-        a.has_z = p.axis[Z];
-        a.z = p.val[Z];
-        a.k = cyc(p, addr1('K'), 0, &a.has_k);
-        a.ea = cyc(p, addrE('A'), 0);
-        a.eb = cyc(p, addrE('B'), 0);
-        a.p = cyc(p, addr1('P'), 0, &a.has_p);
-        a.q = cyc(p, addr1('Q'), 0, &a.has_q);
-        a.r = cyc(p, addr1('R'), 0);
-        a.f = cyc(p, addr1('F'), 1, &a.has_f);
-        a.s = cyc(p, addr1('S'), 1, &a.has_s);
-        a.es = cyc(p, addrE('S'), 1, &a.has_es);
-        a.spindle_turning = modal_.spindle_dir == 3 || modal_.spindle_dir == 4;
-        a.plane_ok = true;
-        a.radius_comp = modal_.radcomp != 40;
-        rc = turning::g33(tool, a, moves, why);
-        if (rc) return fail(rc, why), false;
-        return turning_emit(moves, a.k, 0);
-    }
-    // G38: chained threading, modal in the motion group.
+    block_end(a, p);
+    a.ea = cyc(p, addrE('A'), 0);
+    a.p = cyc(p, addr1('P'), 0, &a.has_p);
+    a.r = cyc(p, addr1('R'), 0, &a.has_r);
+    a.ep = cyc(p, addrE('P'), 0);
+    a.ef = cyc(p, addrE('F'), 0);
+    // Warning 1117: the two correctors are the tool's two edges; their
+    // difference is its width (seed 000, G66).
+    if (a.d > 0 && a.d_first > 0 && a.gauge_delta.norm() < 1e-6)
+        warn(err::wNoToolWidth, strf(tr("G66: D%d and D%d have the same gauges, so the tool has no width: the "
+                                        "far side of the groove is cut one tool width off; measure D%d on the "
+                                        "other edge of the tool"),
+                                     a.d_first, a.d, a.d));
+    std::vector<turning::Move> moves;
+    std::string why;
+    if (int rc = turning::g66(comp::V2(prog_[Z], prog_[X]), a, moves, why)) return fail(rc, why), false;
+    if (!turning_emit_ef(p, moves)) return false;
+    // The second corrector is active afterwards; the tool has not moved
+    // (turning.md §6.6).
+    modal_.d = a.d;
+    frames_.gauge[X] = gauge_for(a.d, X);
+    frames_.gauge[Z] = gauge_for(a.d, Z);
+    gauge_pending_.reset();
+    recompute_program_pos();
+    modal_.motion = 0;
+    return true;
+}
+
+// G33: one thread, its passes planned by the cycle, at the lead K.
+bool Interpreter::turning_g33(const Plan& p) {
+    turning::G33Args a;
+    block_end(a, p);
+    a.k = cyc(p, addr1('K'), 0, &a.has_k);
+    a.ea = cyc(p, addrE('A'), 0);
+    a.eb = cyc(p, addrE('B'), 0);
+    a.p = cyc(p, addr1('P'), 0, &a.has_p);
+    a.q = cyc(p, addr1('Q'), 0, &a.has_q);
+    a.r = cyc(p, addr1('R'), 0);
+    a.f = cyc(p, addr1('F'), 1, &a.has_f);
+    a.s = cyc(p, addr1('S'), 1, &a.has_s);
+    a.es = cyc(p, addrE('S'), 1, &a.has_es);
+    a.spindle_turning = modal_.spindle_dir == 3 || modal_.spindle_dir == 4;
+    a.plane_ok = true;
+    a.radius_comp = modal_.radcomp != 40;
+    std::vector<turning::Move> moves;
+    std::string why;
+    if (int rc = turning::g33(comp::V2(prog_[Z], prog_[X]), a, moves, why)) return fail(rc, why), false;
+    return turning_emit(moves, a.k, 0);
+}
+
+// G38: chained threading, modal in the motion group. A block without K keeps
+// the lead of the previous one, so that the chain is one thread.
+bool Interpreter::turning_g38(const Plan& p) {
     turning::G38Args a;
     a.to = comp::V2(p.axis[Z] ? (p.inc[Z] ? prog_[Z] + p.val[Z] : p.val[Z]) : prog_[Z],
                     p.axis[X] ? (p.inc[X] ? prog_[X] + p.val[X] : p.val[X]) : prog_[X]);
@@ -394,10 +454,28 @@ bool Interpreter::turning_block(const Plan& p) {
     a.prev_k = g38_lead_;
     a.spindle_turning = modal_.spindle_dir == 3 || modal_.spindle_dir == 4;
     a.radius_comp = modal_.radcomp != 40;
-    rc = turning::g38(tool, a, moves, why);
-    if (rc) return fail(rc, why), false;
+    std::vector<turning::Move> moves;
+    std::string why;
+    if (int rc = turning::g38(comp::V2(prog_[Z], prog_[X]), a, moves, why)) return fail(rc, why), false;
     g38_lead_ = k;
     return turning_emit(moves, k, 0);
+}
+
+// A block that programs G63, G64, G65, G66, G33 or G38 (G64: the stock follows).
+// The first function present in this order is the block's cycle.
+bool Interpreter::turning_block(const Plan& p) {
+    if (modal_.radcomp != 40) return fail(140, tr("a turning cycle under radius compensation")), false;
+    static constexpr struct {
+        int g;
+        bool (Interpreter::*run)(const Plan&);
+    } kCycles[] = {{64, &Interpreter::turning_g64},
+                   {65, &Interpreter::turning_g65_g63},
+                   {63, &Interpreter::turning_g65_g63},
+                   {66, &Interpreter::turning_g66},
+                   {33, &Interpreter::turning_g33}};
+    for (const auto& c : kCycles)
+        if (p.g[size_t(c.g)]) return (this->*c.run)(p);
+    return turning_g38(p);
 }
 
 // While a G64 waits for its G80: the blocks are the rough stock, not moves.
