@@ -291,6 +291,7 @@ bool Interpreter::turning_block(const Plan& p) {
             a.q = cyc(p, addr1('Q'), 0);
             if (!a.has_ea) return fail(2, tr("G65 needs the infeed angle EA")), false;
             rc = turning::g65(prof, tool, a, moves, why);
+            if (rc == 0 && opt_.on_g65) opt_.on_g65(prof, tool, a, moves);
             if (rc == 0 && a.allowance_inside) warn_allowance_inside(65, a.i, a.k);
         } else {
             turning::G63Args a;
@@ -311,6 +312,7 @@ bool Interpreter::turning_block(const Plan& p) {
             a.q = cyc(p, addr1('Q'), 0);
             a.eq = cyc(p, addrE('Q'), 0);
             rc = turning::g63(prof, tool, a, moves, why);
+            if (rc == 0 && opt_.on_g63) opt_.on_g63(prof, tool, a, moves);
         }
         if (rc) return fail(rc, why), false;
         bool has_ef;
@@ -346,6 +348,7 @@ bool Interpreter::turning_block(const Plan& p) {
                                          a.d_first, a.d, a.d));
         rc = turning::g66(tool, a, moves, why);
         if (rc) return fail(rc, why), false;
+        if (opt_.on_g66) opt_.on_g66(tool, a, moves);
         bool has_ef;
         double ef = cyc(p, addrE('F'), 0, &has_ef);
         if (!turning_emit(moves, 0, has_ef ? ef : 0)) return false;

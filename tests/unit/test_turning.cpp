@@ -1052,6 +1052,303 @@ TEST(G65, Errors) {
     EXPECT_TRUE(mv.empty());
 }
 
+// ------------------------------------------- G65, G63: issue 19 item 1 ----
+
+namespace {
+// A profile generated in a frame where the passes run along x, the levels step
+// down y and the part lies below the profile, and its map to (z, r): axial
+// (x = ±z, y = r, or 60 - r for a bore) or frontal (x = r, y = ±z).
+struct FrameMap {
+    bool frontal = false, bore = false;
+    double sx = 1, sy = 1;
+    V2 operator()(V2 p) const {
+        if (frontal) return V2(sy * p.y(), sx > 0 ? 10 + p.x() : 120 - p.x());
+        return V2(sx * p.x(), bore ? 60 - p.y() : p.y());
+    }
+    // The linear part (allowances, directions).
+    V2 dir(V2 v) const { return (*this)(v) - (*this)(V2(0, 0)); }
+    bool flips() const {  // orientation reversed
+        V2 a = dir(V2(1, 0)), b = dir(V2(0, 1));
+        return a.x() * b.y() - a.y() * b.x() < 0;
+    }
+};
+
+// A profile through frame points; arcs given as (end, centre, ccw in the frame).
+struct FramePath {
+    std::vector<V2> pts{};  // densified, for the part polygon
+    Profile f{};
+    const FrameMap* m = nullptr;
+    V2 cur{0, 0};
+    void start(V2 p) { cur = p, pts = {p}; }
+    void line(V2 p) {
+        f.elems.push_back(L((*m)(cur), (*m)(p)));
+        pts.push_back(p);
+        cur = p;
+    }
+    void arc(V2 p, V2 c, bool ccw) {
+        f.elems.push_back(Arc((*m)(cur), (*m)(p), (*m)(c), ccw != m->flips()));
+        double r = (cur - c).norm(), a0 = std::atan2(cur.y() - c.y(), cur.x() - c.x());
+        double s = std::atan2(p.y() - c.y(), p.x() - c.x()) - a0;
+        if (ccw && s <= 0) s += 2 * kPi;
+        if (!ccw && s >= 0) s -= 2 * kPi;
+        for (int i = 1; i <= 2000; ++i)
+            pts.push_back(c + r * V2(std::cos(a0 + s * i / 2000), std::sin(a0 + s * i / 2000)));
+        pts.back() = p;
+        cur = p;
+    }
+    // The part: the profile closed far below its ends (frame), in (z, r).
+    std::vector<V2> part(double below) const {
+        std::vector<V2> out;
+        for (V2 p : pts) out.push_back((*m)(p));
+        out.push_back((*m)(V2(pts.back().x(), below)));
+        out.push_back((*m)(V2(pts.front().x(), below)));
+        return out;
+    }
+};
+
+std::vector<V2> shifted_pts(std::vector<V2> v, V2 t) {
+    for (V2& p : v) p += t;
+    return v;
+}
+
+// No move, feed or rapid, of a cycle with no stock (G65, G63) comes deeper
+// than 0.1 µm into the part (the polygon `part`) or into the
+// allowance zone of the oracle (swept band or normal allowance).
+int check_out_of_part(const Oracle& o, const std::vector<V2>& part, V2 tool,
+                      const std::vector<Move>& mv, const std::string& what) {
+    int bad = 0;
+    for (const Seg& s : segs(tool, mv)) {
+        int n = std::max(50, int((s.b - s.a).norm() / 0.02));
+        for (int i = 0; i <= n; ++i) {
+            V2 q = s.a + (s.b - s.a) * (double(i) / n);
+            // Deeper than 0.1 µm, measured on the exact profile (the polygon's
+            // chords cut arcs by less than that).
+            bool in_part = in_polygon(part, q) && polyline_dist(part, q, true) > 1e-6 && o.dist_f(q) > 1e-4;
+            if ((in_part || o.in_A(q)) && ++bad <= 2)
+                ADD_FAILURE() << what << ": G" << s.g << (in_part ? " in the part" : " in the allowance")
+                              << " at Z" << q.x() << " r" << q.y() << " on " << s.a.transpose() << " -> "
+                              << s.b.transpose();
+        }
+    }
+    EXPECT_EQ(bad, 0) << what << ": points inside the profile plus allowance";
+    return bad;
+}
+
+const char* kGrooveShapes[] = {"square", "trapezoid", "round", "stepped", "ridge", "dovetail", "chamfered"};
+
+// A groove of shape k in a land at height H, from x1 to x2 (frame).
+void groove(FramePath& p, int k, double x1, double x2, double H, double h, double u1, double u2) {
+    double w = x2 - x1, xm = x1 + w * (.35 + .3 * u1);
+    switch (k) {
+        case 0: p.line(V2(x1, H - h)), p.line(V2(x2, H - h)); break;
+        case 1: p.line(V2(x1 + w / 3 * u1, H - h)), p.line(V2(x2 - w / 3 * u2, H - h)); break;
+        case 2: {  // straight walls down to an arc bottom (a half circle at most)
+            double h0 = std::max(0.0, h - w / 2) * u1, yc = H - h0;
+            double r = w / 2, sag = std::min(r, h - h0 + 1e-9);
+            if (h0 > 0) p.line(V2(x1, yc));
+            // A circle through both walls' feet, its lowest point `sag` below them.
+            double R = (r * r + sag * sag) / (2 * sag);
+            p.arc(V2(x2, yc), V2((x1 + x2) / 2, yc - sag + R), true);
+            break;
+        }
+        case 3:
+            if (u2 < .5) p.line(V2(x1, H - h)), p.line(V2(xm, H - h)), p.line(V2(xm, H - h / 2)), p.line(V2(x2, H - h / 2));
+            else p.line(V2(x1, H - h / 2)), p.line(V2(xm, H - h / 2)), p.line(V2(xm, H - h)), p.line(V2(x2, H - h));
+            break;
+        case 4:
+            p.line(V2(x1, H - h)), p.line(V2(xm - 1, H - h)), p.line(V2(xm - 1, H - h / 2 * (1 + u2))),
+                p.line(V2(xm + 1, H - h / 2 * (1 + u2))), p.line(V2(xm + 1, H - h)), p.line(V2(x2, H - h));
+            break;
+        case 5: p.line(V2(x1 - h / 2 * u1, H - h)), p.line(V2(x2 + h / 2 * u2, H - h)); break;
+        default:  // 45° chamfers at the groove's edges
+            p.line(V2(x1 + .8, H - .8)), p.line(V2(x1 + .8, H - h)), p.line(V2(x2 - .8, H - h)),
+                p.line(V2(x2 - .8, H - .8));
+            break;
+    }
+    p.line(V2(x2, H));
+}
+}  // namespace
+
+// A dovetail groove (both walls undercut by 1 mm over its 4 mm depth): the
+// passes under the far overhang stop where it leaves less than the clearance
+// above them, those under the near one start where it leaves it, and the way
+// out goes back along the infeeds: no retract, return or exit rapid enters
+// the part (issue 19 item 1; before, the retracts rose into the far overhang
+// and the exit into the near one). And a round bottom without allowance whose
+// EA line meets its far side: no pass runs from that point into the part.
+TEST(G65, UndercutWallsAndRoundBottom) {
+    Profile f = poly_profile({P(60, 0), P(60, 10), P(52, 9), P(52, 21), P(60, 20), P(60, 30)});
+    std::vector<V2> part{P(60, 0), P(60, 10), P(52, 9), P(52, 21), P(60, 20), P(60, 30), P(-60, 30), P(-60, 0)};
+    G65Args a;
+    a.has_z = true, a.z = 5, a.has_p = true, a.p = 1.5, a.i = .3, a.k = .2, a.has_ea = true, a.ea = -100;
+    std::vector<Move> mv;
+    std::string why;
+    V2 tool = P(64, 18);
+    ASSERT_EQ(g65(f, tool, a, mv, why), 0) << why;
+    Oracle o(f, {tool}, V2(.2, .3));
+    check_out_of_part(o, part, tool, mv, "dovetail");
+    double low = 1e300;
+    for (const Seg& s : feeds(tool, mv)) low = std::min(low, s.b.y());
+    EXPECT_NEAR(low, 26.3, 1e-9);  // the bottom is roughed, I.3 above it
+    EXPECT_TRUE(mv.back().to.isApprox(tool, 1e-12));
+    // A half-round bottom R4 under a Ø62 land, the EA line from X70 Z18 at
+    // -135° meeting the arc's left half at r ~28.2.
+    Profile r;
+    r.elems = {L(P(62, 0), P(62, 10)), Arc(P(62, 10), P(62, 18), P(62, 14), true), L(P(62, 18), P(62, 30))};
+    std::vector<V2> rpart = densify(r);
+    rpart.push_back(P(-60, 30)), rpart.push_back(P(-60, 0));
+    a = G65Args{};
+    a.has_z = true, a.z = 5, a.has_p = true, a.p = 1.3, a.has_ea = true, a.ea = -135;
+    tool = P(70, 18);
+    ASSERT_EQ(g65(r, tool, a, mv, why), 0) << why;
+    Oracle ro(r, {tool}, V2(0, 0));
+    check_out_of_part(ro, rpart, tool, mv, "round bottom");
+}
+
+// Generated grooves of seven shapes (square, sloped walls, round bottom,
+// stepped, a ridge, undercut walls, chamfered edges), axial (P) and frontal
+// (R), outside and bore, cut towards both ends, allowances of both signs
+// (a wrong I is roughed as written), start points over the groove or beyond
+// its wall, EA from 25° to 90° off the passes: no move of G65, feed or rapid,
+// enters the part plus its allowance; no feed passes the limit.
+TEST(G65, GeneratedGroovesNeverEnterThePart) {
+    std::mt19937 rng(20261126);
+    std::uniform_real_distribution<double> u(0, 1);
+    int runs = 0, inside = 0, failing = 0;
+    for (int n = 0; n < 224; ++n) {
+        const int shape = n % 7;
+        FrameMap map;
+        map.frontal = (n / 7) % 2;
+        map.bore = !map.frontal && (n / 14) % 2;
+        map.sx = (n / 28) % 2 ? -1 : 1;
+        map.sy = map.frontal && (n / 14) % 2 ? -1 : 1;
+        const bool wrong = (n / 56) % 4 == 3;
+        double H = 30 + 8 * u(rng), x1 = 8 + 5 * u(rng), w = 6 + 8 * u(rng), h = 2 + 6 * u(rng);
+        double x2 = x1 + w, Lx = x2 + 10;
+        FramePath p;
+        p.m = &map;
+        p.start(V2(0, H));
+        p.line(V2(x1, H));
+        groove(p, shape, x1, x2, H, h, u(rng), u(rng));
+        p.line(V2(Lx, H));
+        // The profile called as written or backwards.
+        Profile f = u(rng) < .5 ? p.f : reversed(p.f);
+        V2 S(x2 - w / 4 + (w / 4 + 3) * u(rng), H + .5 + 3 * u(rng));
+        double phi = (25 + 65 * u(rng)) * kPi / 180;
+        V2 ea = map.dir(V2(-std::cos(phi), -std::sin(phi)));
+        double xa = x1 - 3 + 4 * u(rng);
+        // The allowance in the frame: along the passes either way, off the part
+        // (or into it: a wrong I).
+        V2 ty((u(rng) < .5 ? -1 : 1) * .6 * u(rng), (wrong ? -1 : 1) * (.1 + .6 * u(rng)));
+        V2 t = map.dir(ty);
+        G65Args a;
+        if (map.frontal) {
+            a.has_x = a.has_r = true, a.x = map(V2(xa, 0)).y(), a.r = .7 + 2 * u(rng);
+        } else {
+            a.has_z = a.has_p = true, a.z = map(V2(xa, 0)).x(), a.p = .7 + 2 * u(rng);
+        }
+        a.k = t.x(), a.i = t.y(), a.has_ea = true;
+        a.ea = std::atan2(ea.y(), ea.x()) * 180 / kPi;
+        V2 tool = map(S);
+        std::string name = "groove " + std::to_string(n) + " " + kGrooveShapes[shape] +
+                           (map.frontal ? " R" : " P") + (map.bore ? " bore" : "") + (map.sx < 0 ? " mirrored" : "") +
+                           (wrong ? " wrong I" : "") + " EA" + std::to_string(a.ea);
+        std::vector<Move> mv;
+        std::string why;
+        int rc = g65(f, tool, a, mv, why);
+        if (rc == 875) continue;  // the EA line passes the groove (a start beyond the wall)
+        ASSERT_EQ(rc, 0) << name << ": " << why;
+        ++runs;
+        inside += a.allowance_inside;
+        EXPECT_EQ(a.allowance_inside, wrong) << name;
+        std::vector<V2> part = p.part(-20);
+        Oracle o(a.allowance_inside ? shifted(f, t) : f, {tool}, a.allowance_inside ? V2(0, 0) : t);
+        if (check_out_of_part(o, a.allowance_inside ? shifted_pts(part, t) : part, tool, mv, name)) ++failing;
+        for (const Seg& s : feeds(tool, mv)) {
+            double lim = map.frontal ? a.x : a.z;
+            auto along = [&](V2 q) { return map.frontal ? q.y() : q.x(); };
+            double sgn = map.sx;  // the limit lies towards -x in the frame
+            EXPECT_GE(sgn * (along(s.b) - lim), -1e-6) << name;
+        }
+    }
+    EXPECT_EQ(failing, 0);
+    EXPECT_GE(runs, 180);
+    EXPECT_GE(inside, 20);
+}
+
+// Every G65, G63 and G66 of the handbook programs (../shared/programs), run by
+// the interpreter: no move enters the part plus its allowance (issue 19 item
+// 1). The part is the profile closed far away on the side the infeed (G65)
+// or the levels (G63) go to; G66 stays inside the groove it is given.
+TEST(G65, HandbookProgramsNeverEnterThePart) {
+    const std::string dir = std::string(PUPITRE_SHARED) + "/programs/";
+    if (!std::filesystem::exists(dir + "INDEX.tsv")) GTEST_SKIP() << "no " << dir;
+    const std::vector<std::string> runs{"000_p555_cycles_x.iso", "000_p555_cycles_z.iso", "000_p555_jauges.iso",
+                                        "004_p555.iso", "000_p100_g63.iso", "000_p2_mandrin_cone.iso"};
+    int seen65 = 0, seen63 = 0, seen66 = 0;
+    // The profile closed 1000 mm away along `away`.
+    auto part_of = [](const Profile& f, V2 away) {
+        Profile g = f;
+        std::vector<V2> pts = densify(g);
+        V2 a = pts.front(), b = pts.back();
+        pts.push_back(b + 1000 * away);
+        pts.push_back(a + 1000 * away);
+        return pts;
+    };
+    for (const std::string& file : runs) {
+        MachineProfile m;
+        builtin_machine("lathe", m);
+        ProgramMemory mem;
+        std::ifstream in(dir + file);
+        std::stringstream text;
+        text << in.rdbuf();
+        Diag d;
+        mem.load_text(file, text.str(), d);
+        RunOptions o;
+        o.on_g65 = [&](const Profile& fin, V2 tool, const G65Args& a, const std::vector<Move>& mv) {
+            ++seen65;
+            V2 t(a.k, a.i), u(std::cos(a.ea * kPi / 180), std::sin(a.ea * kPi / 180));
+            V2 away = a.has_p ? V2(0, u.y() < 0 ? -1 : 1) : V2(u.x() < 0 ? -1 : 1, 0);
+            Profile f = a.allowance_inside ? shifted(fin, t) : fin;
+            Oracle oracle(f, {tool}, a.allowance_inside ? V2(0, 0) : t);
+            check_out_of_part(oracle, part_of(f, away), tool, mv, file + " G65");
+        };
+        o.on_g63 = [&](const Profile& fin, V2 tool, const G63Args& a, const std::vector<Move>& mv) {
+            ++seen63;
+            double lv = a.has_p ? a.x : a.z, lim = a.has_p ? a.eu : a.ew;
+            V2 away = a.has_p ? V2(0, lim > lv ? 1 : -1) : V2(lim > lv ? 1 : -1, 0);
+            Oracle oracle(fin, {tool}, V2(0, 0));
+            oracle.er = a.er;
+            check_out_of_part(oracle, part_of(fin, away), tool, mv, file + " G63");
+        };
+        o.on_g66 = [&](V2 tool, const G66Args& a, const std::vector<Move>& mv) {
+            ++seen66;
+            // The groove in the first corrector's terms: from A to B read by the
+            // second corrector, down to the bottom line through it.
+            V2 B = V2(a.z, a.x) + a.gauge_delta;
+            double lo = std::min(a.has_r ? tool.x() : tool.y(), a.has_r ? B.x() : B.y());
+            double hi = std::max(a.has_r ? tool.x() : tool.y(), a.has_r ? B.x() : B.y());
+            for (const Seg& s : segs(tool, mv))
+                for (V2 q : {s.a, s.b}) {
+                    double along = a.has_r ? q.x() : q.y(), across = a.has_r ? q.y() : q.x();
+                    double from = a.has_r ? tool.y() : tool.x(), bottom = a.has_r ? B.y() : B.x();
+                    double slope = std::tan(a.ea * kPi / 180);
+                    double bot = bottom + (along - (a.has_r ? B.x() : B.y())) * slope;
+                    EXPECT_GE(along, lo - 1e-6) << file;
+                    EXPECT_LE(along, hi + 1e-6) << file;
+                    EXPECT_GE((across - bot) * (from - bot), -1e-9) << file << ": beyond the bottom";
+                }
+        };
+        struct Quiet final : MachineSink {} sink;
+        Interpreter interp(m, mem, sink, o);
+        interp.start(mem.first());
+        interp.run_to_end();
+    }
+    EXPECT_EQ(seen65, 4);
+    EXPECT_EQ(seen63, 1);
+    EXPECT_EQ(seen66, 1);
+}
+
 // ---------------------------------------------------------------- G63 ----
 
 // %100's interior profile (000:2708-2767) with its R2 fillets resolved: tangent
