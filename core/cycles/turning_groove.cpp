@@ -65,45 +65,6 @@ double lowest(const Material& m, double x0, double x1) {
     for (const Elem& e : m.F) y = std::min(y, min_y_in(translated(e, m.t), x0, x1));
     return y;
 }
-
-// The part of a pass along y = Y from x0 towards x1 (direction d) whose
-// retract by the clearance h, straight up, stays out of the part and its
-// allowance: the first run of x where the vertical segment of height h above
-// the line is clear, as (start, end) along d; start == end when there is none.
-// A pass under an undercut wall (a dovetail groove) stops where the overhang
-// leaves less than the clearance above it, and starts, under an overhang on
-// its own side, where it leaves the clearance (issue 19 item 1: no rapid of
-// the retract and return of turning.md §6.4 step 3 enters the part).
-std::pair<double, double> clear_below(const Material& m, double Y, double h, double x0, double x1, int d) {
-    if ((x1 - x0) * d <= kTol || h <= kTol) return {x0, x1};
-    auto between = [&](double x) { return (x - x0) * d > kTol && (x1 - x) * d > kTol; };
-    // Whether the vertical segment meets A changes only at the ends of A's
-    // boundary curves, at their extremes along x and where they cross its ends.
-    std::vector<double> cuts{x0, x1}, xs;
-    for (const Elem& e : m.U) {
-        xs.assign({e.a.x(), e.b.x()});
-        if (e.arc)
-            for (double sg : {-1.0, 1.0})
-                if (on_arc(e, e.c + V2(sg * e.r(), 0))) xs.push_back(e.c.x() + sg * e.r());
-        cross_h(e, Y + kUm, xs);
-        cross_h(e, Y + h, xs);
-        for (double x : xs)
-            if (between(x)) cuts.push_back(x);
-    }
-    std::sort(cuts.begin(), cuts.end(), [d](double a, double b) { return a * d < b * d; });
-    bool open = false;
-    double start = x0, end = x0;
-    for (size_t j = 0; j + 1 < cuts.size(); ++j) {
-        if (std::fabs(cuts[j + 1] - cuts[j]) <= kTol) continue;
-        double mid = (cuts[j] + cuts[j + 1]) / 2;
-        bool clear = zone::seg_clear(m, V2(mid, Y + kUm), V2(mid, Y + h));
-        if (clear && !open) start = cuts[j], open = true;
-        if (!clear && open) break;
-        if (clear) end = cuts[j + 1];
-    }
-    if (!open) return {x0, x0};
-    return {start, end};
-}
 }  // namespace
 
 int g65(const Profile& fin, V2 tool, const G65Args& a, std::vector<Move>& out, std::string& why) {
@@ -198,7 +159,7 @@ int g65(const Profile& fin, V2 tool, const G65Args& a, std::vector<Move>& out, s
         bool ok = !runs.empty() && std::fabs(runs[0].first - e.x()) <= kTol &&
                   std::fabs(runs[0].second - e.x()) > kUm;
         if (ok) {
-            auto [from, to] = clear_below(m, y, cl, e.x(), runs[0].second, d);
+            auto [from, to] = zone::clear_below(m, y, cl, e.x(), runs[0].second, d);
             ok = std::fabs(to - from) > kUm;
             e = V2(from, y);
             runs[0] = {from, to};

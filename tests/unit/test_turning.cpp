@@ -1276,6 +1276,103 @@ TEST(G65, GeneratedGroovesNeverEnterThePart) {
     EXPECT_GE(inside, 20);
 }
 
+
+// A dovetail groove in a Ø60 land, entered with EB150 and ER.4: each pass in
+// it ends where its retract by the clearance stays clear of the overhang and
+// of ER's rounded corners, and the groove is entered only where the climb out
+// at that end is clear (issue 19 item 1; before, the retracts rose into the
+// overhang's allowance).
+TEST(G63, DovetailGrooveRetractsStayClear) {
+    Profile f = poly_profile({P(60, 0), P(60, 3), P(54, 2.5), P(54, 10), P(60, 9), P(60, 20), P(50, 20), P(50, 30)});
+    std::vector<V2> part = densify(f);
+    part.push_back(P(-60, 30)), part.push_back(P(-60, 0));
+    G63Args a;
+    a.has_x = a.has_z = true, a.x = 32, a.z = 31, a.has_p = true, a.p = 1.5, a.has_ez = true, a.ez = 0,
+    a.has_eu = true, a.eu = 25, a.has_eb = true, a.eb = 150, a.er = .4;
+    std::vector<Move> mv;
+    std::string why;
+    V2 tool = P(72, 35);
+    ASSERT_EQ(g63(f, tool, a, mv, why), 0) << why;
+    Oracle o(f, {tool}, V2(0, 0));
+    o.er = .4;
+    check_out_of_part(o, part, tool, mv, "G63 dovetail");
+    int in_groove = 0;
+    for (const Seg& s : feeds(tool, mv)) in_groove += s.b.y() < 30 - 1e-9 && s.b.x() < 9;
+    EXPECT_GT(in_groove, 0);  // the groove is still roughed
+}
+// Generated profiles for G63: a land with a groove of each shape (or none),
+// then one to three steps down (shoulders or cones) with a second groove half
+// the time, axial (P, EZ, EU) and frontal (R, EX, EW), outside and bore, cut
+// towards both ends, ER from 0 to 0.6 and EB from 60° to 150°: no move, feed
+// or rapid, enters the part plus ER; the feeds stay above the last level.
+TEST(G63, GeneratedProfilesNeverEnterThePart) {
+    std::mt19937 rng(20261127);
+    std::uniform_real_distribution<double> u(0, 1);
+    int failing = 0, entered = 0;
+    const char* shapes[] = {"plain", "square", "trapezoid", "round", "stepped", "ridge", "dovetail"};
+    for (int n = 0; n < 112; ++n) {
+        const int shape = n % 7;
+        FrameMap map;
+        map.frontal = (n / 7) % 2;
+        map.bore = !map.frontal && (n / 14) % 2;
+        map.sx = (n / 28) % 2 ? -1 : 1;
+        map.sy = map.frontal && (n / 14) % 2 ? -1 : 1;
+        FramePath p;
+        p.m = &map;
+        double Y0 = 30 + 8 * u(rng), y = Y0, x = 0;
+        p.start(V2(0, Y0));
+        for (int k = 0, steps = 1 + int(u(rng) * 3); k <= steps; ++k) {
+            double len = 6 + 6 * u(rng);
+            int gs = k == 0 ? shape : (u(rng) < .5 && shape ? 1 + int(u(rng) * 6) : 0);
+            if (gs) {
+                double x1 = x + 2 + 2 * u(rng), w = 4 + 4 * u(rng), h = 1.5 + 3 * u(rng);
+                p.line(V2(x1, y));
+                groove(p, gs - 1, x1, x1 + w, y, h, u(rng), u(rng));
+                x = x1 + w;
+            }
+            x += len;
+            p.line(V2(x, y));
+            if (k == steps) break;
+            double ny = y - 2 - 4 * u(rng);
+            x += u(rng) < .4 ? 2 + 3 * u(rng) : 0;
+            y = ny;
+            p.line(V2(x, y));
+        }
+        const double y_u = y;
+        V2 D(x + 1 + 2 * u(rng), Y0 + .5 + 2 * u(rng));
+        V2 tool = map(D + V2(4, 4));
+        G63Args a;
+        double step = .8 + 2 * u(rng);
+        V2 dz = map(D);
+        a.has_x = a.has_z = true, a.x = dz.y(), a.z = dz.x();
+        if (map.frontal) {
+            a.has_r = a.has_ex = a.has_ew = true, a.r = step, a.ex = map(V2(0, 0)).y(), a.ew = map(V2(0, y_u)).x();
+        } else {
+            a.has_p = a.has_ez = a.has_eu = true, a.p = step, a.ez = map(V2(0, 0)).x(), a.eu = map(V2(0, y_u)).y();
+        }
+        a.er = n % 5 == 0 ? 0 : .1 + .5 * u(rng);
+        a.has_eb = true, a.eb = 60 + 90 * u(rng);
+        Profile f = u(rng) < .5 ? p.f : reversed(p.f);
+        std::string name = "profile " + std::to_string(n) + " " + shapes[shape] + (map.frontal ? " R" : " P") +
+                           (map.bore ? " bore" : "") + (map.sx < 0 ? " mirrored" : "") + " ER" +
+                           std::to_string(a.er) + " EB" + std::to_string(a.eb);
+        std::vector<Move> mv;
+        std::string why;
+        ASSERT_EQ(g63(f, tool, a, mv, why), 0) << name << ": " << why;
+        ASSERT_FALSE(feeds(tool, mv).empty()) << name;
+        Oracle o(f, {tool}, V2(0, 0));
+        o.er = a.er;
+        if (check_out_of_part(o, p.part(-20), tool, mv, name)) ++failing;
+        for (const Seg& s : feeds(tool, mv)) {
+            entered += s.infeed;
+            V2 lv = map.dir(V2(0, 1));
+            EXPECT_GE(s.b.dot(lv) - map(V2(0, y_u)).dot(lv), -1e-6) << name;
+        }
+    }
+    EXPECT_EQ(failing, 0);
+    EXPECT_GT(entered, 20);
+}
+
 // Every G65, G63 and G66 of the handbook programs (../shared/programs), run by
 // the interpreter: no move enters the part plus its allowance (issue 19 item
 // 1). The part is the profile closed far away on the side the infeed (G65)
