@@ -245,7 +245,11 @@ int g66(V2 tool, const G66Args& a, std::vector<Move>& out, std::string& why) {
         em.go(0, V2(x, A.y()));
         em.go(1, V2(x, bottom(x)), false, a.ef);
         if (a.ep > 0 && i > 0) {
-            double h = a.ep / std::sqrt(2.0);  // 45°, back over the cut part of the groove
+            // 45°, back over the cut part of the groove (000:2795: "EP..
+            // Valeur du déplacement à 45° en fin de passe"), and no further
+            // back than the first plunge: a longer EP would run into the
+            // groove's start flank (issue 19 item 1, [DECISION]).
+            double h = std::min(a.ep / std::sqrt(2.0), std::fabs(x - A.x()));
             em.go(1, V2(x - side * h, bottom(x) - dir * h));
         }
         em.go(0, V2(em.cur.x(), A.y()));

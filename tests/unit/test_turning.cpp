@@ -1642,6 +1642,81 @@ TEST(G66, Frontal) {
     for (int i = 0; i < 5; ++i) EXPECT_TRUE(s[i].b.isApprox(V2(-6, 20 + 2.5 * i), 1e-9)) << i;
 }
 
+// A 10 mm groove 5 deep with a 3 mm tool, plunges 1.75 apart and EP4: the
+// 45° move after the second plunge would go 2.83 back, 1.08 into the first
+// flank; it stops over the first plunge (issue 19 item 1).
+TEST(G66, EpStopsOverTheFirstPlunge) {
+    G66Args a;
+    a.d_first = 1, a.d = 2, a.gauge_delta = V2(-3, 0), a.has_x = a.has_z = true, a.x = 20, a.z = 10,
+    a.has_r = true, a.r = 2, a.ep = 4;
+    std::vector<Move> mv;
+    std::string why;
+    V2 tool = P(60, 0);
+    ASSERT_EQ(g66(tool, a, mv, why), 0) << why;
+    for (const Seg& s : segs(tool, mv)) EXPECT_GE(s.b.x(), -1e-9) << s.b.transpose();
+    std::vector<Seg> f = feeds(tool, mv);
+    ASSERT_EQ(f.size(), 5u + 4u);
+    EXPECT_TRUE(f[2].b.isApprox(V2(0, 21.75), 1e-9)) << f[2].b.transpose();  // after the plunge at Z1.75
+    EXPECT_NEAR((f[4].b - f[4].a).norm(), 4, 1e-9);  // from the third plunge on, EP whole
+}
+
+// Generated grooves for G66 (issue 19 item 1): radial (R) and frontal (P),
+// cut either way, tool widths 2 to 5 mm (the correctors' difference), bottoms
+// sloped up to 15° either way, EP up to twice the spacing of the plunges. The
+// groove is the rectangle from A's flank to B's, from the approach level to
+// the bottom line: no move of the tool's reference edge (the first
+// corrector's) leaves it below the approach level.
+TEST(G66, GeneratedGroovesStayInTheGroove) {
+    std::mt19937 rng(20261128);
+    std::uniform_real_distribution<double> u(0, 1);
+    int failing = 0;
+    for (int n = 0; n < 64; ++n) {
+        const bool frontal = n % 2, back = (n / 2) % 2, bore = (n / 4) % 2;
+        // Frame: x along the groove's width, y the plunge (down into the part).
+        auto to_zr = [&](V2 q) {
+            double x = back ? -q.x() : q.x(), y = bore ? -q.y() : q.y();
+            return frontal ? V2(y, 40 + x) : V2(x, 40 + y);
+        };
+        double w = 2 + 3 * u(rng), width = w + 2 + 8 * u(rng), depth = 2 + 6 * u(rng);
+        double spacing = .5 + w * .8 * u(rng), slope = (u(rng) - .5) * 30;
+        G66Args a;
+        a.d_first = 1, a.d = 2;
+        V2 A(0, 2), B(width, -depth);  // B for the second corrector: the far flank
+        V2 Bzr = to_zr(B), Azr = to_zr(A);
+        // The second corrector reads the tool's other edge: B in the first
+        // corrector's terms is B - w along the width.
+        a.gauge_delta = to_zr(V2(-w, 0)) - to_zr(V2(0, 0));
+        a.has_x = a.has_z = true, a.x = Bzr.y(), a.z = Bzr.x();
+        (frontal ? a.has_p : a.has_r) = true;
+        (frontal ? a.p : a.r) = spacing;
+        V2 ea = to_zr(V2(std::cos(slope * kPi / 180), std::sin(slope * kPi / 180))) - to_zr(V2(0, 0));
+        a.ea = std::atan2(frontal ? ea.x() : ea.y(), frontal ? ea.y() : ea.x()) * 180 / kPi;
+        a.ep = u(rng) < .3 ? 0 : 2 * spacing * u(rng);
+        std::vector<Move> mv;
+        std::string why;
+        std::string name = "G66 " + std::to_string(n) + (frontal ? " P" : " R") + (back ? " back" : "") +
+                           (bore ? " bore" : "") + " EA" + std::to_string(a.ea) + " EP" + std::to_string(a.ep);
+        ASSERT_EQ(g66(Azr, a, mv, why), 0) << name << ": " << why;
+        // The groove in the frame of the first corrector: x from 0 to width - w,
+        // y from the approach (2) down to the bottom line through B - w.
+        int bad = 0;
+        V2 inv_o = to_zr(V2(0, 0)), ex = to_zr(V2(1, 0)) - inv_o, ey = to_zr(V2(0, 1)) - inv_o;
+        auto frame = [&](V2 q) { return V2((q - inv_o).dot(ex), (q - inv_o).dot(ey)); };
+        double t = std::tan(slope * kPi / 180);
+        for (const Seg& sg : segs(Azr, mv))
+            for (int i = 0; i <= 20; ++i) {
+                V2 q = frame(sg.a + (sg.b - sg.a) * (i / 20.0));
+                double bottom = -depth + (q.x() - (width - w)) * t;
+                bool below_top = q.y() < 0 - 1e-9;  // the land at y 0
+                if ((q.y() < bottom - 1e-6 || (below_top && (q.x() < -1e-6 || q.x() > width - w + 1e-6))) &&
+                    ++bad <= 2)
+                    ADD_FAILURE() << name << ": G" << sg.g << " at x " << q.x() << " y " << q.y();
+            }
+        failing += bad > 0;
+    }
+    EXPECT_EQ(failing, 0);
+}
+
 TEST(G66, Errors) {
     std::vector<Move> mv;
     std::string why;
