@@ -14,6 +14,7 @@
 #include <string>
 
 #include "core/cycles/pocket46.hpp"
+#include "helpers.hpp"
 
 using namespace pupitre;
 using comp::Elem;
@@ -248,4 +249,76 @@ TEST(Pocket46, GeneratedPocketsNeverEnterTheWallsOrIslands) {
     EXPECT_EQ(failing, 0);
     EXPECT_GE(planned, 55);
     EXPECT_GE(finished, 40);
+}
+
+// G45 (milling.md §7.1): generated rectangular pockets with corner radii,
+// circles and oblongs, cutters R3 to R8, step-overs from R/2 to 1.9R, layers,
+// allowances I and J, run by the interpreter. The cutter centre keeps R from
+// every wall (R + J but for the finishing contour) and never goes below the
+// floor: each point of each move of the cycle's block, against the shape's
+// exact signed distance, to the µm the cycle rounds its contours to.
+TEST(Pocket, GeneratedPocketsNeverEnterTheWalls) {
+    std::mt19937 rng(20261130);
+    std::uniform_real_distribution<double> u(0, 1);
+    int ran = 0, failing = 0;
+    for (int n = 0; n < 45; ++n) {
+        const int shape = n % 3;  // rectangle, circle, oblong
+        const double R = 3 + 5 * u(rng), Q = R * (.5 + 1.4 * u(rng)), P = 3 + 7 * u(rng), Z = -5 - 15 * u(rng);
+        const double I = .2 + .6 * u(rng), J = .2 + .6 * u(rng), cx = 40 * u(rng) - 20, cy = 40 * u(rng) - 20;
+        double ex = 0, ey = 0, eb = 0;
+        char buf[160];
+        if (shape == 0) {
+            ex = 2 * R + 6 + 60 * u(rng), ey = 2 * R + 6 + 60 * u(rng);
+            eb = std::min(R + 6 * u(rng), std::min(ex, ey) / 2);
+            std::snprintf(buf, sizeof buf, "EX%.3f EY%.3f EB%.3f", ex, ey, eb);
+        } else if (shape == 1) {
+            eb = R + 3 + 25 * u(rng);
+            std::snprintf(buf, sizeof buf, "EB%.3f", eb);
+        } else {
+            eb = R + 3 + 15 * u(rng), ex = 2 * eb + 2 + 30 * u(rng);
+            std::snprintf(buf, sizeof buf, "EX%.3f EB%.3f", ex, eb);
+        }
+        // The values as the program writes them (3 decimals).
+        auto r3 = [](double v) { return std::round(v * 1000) / 1000; };
+        ex = r3(ex), ey = r3(ey), eb = r3(eb);
+        char block[400];
+        std::snprintf(block, sizeof block,
+                      "%%1\nT3 D3 M6\nM3 M40 S1000\nG0 X%.3f Y%.3f Z10\n"
+                      "N100 G45 X%.3f Y%.3f Z%.3f ER3 %s P%.3f Q%.3f I%.3f J%.3f EP150 EQ350 EJ150\nZ100\nM2\n",
+                      cx, cy, cx, cy, Z, buf, P, Q, I, J);
+        test::Prog r(block, "mill", {{"D3.R", R}});
+        std::string name = "G45 " + std::to_string(n) + " " + buf + " R" + std::to_string(R);
+        if (r.error()) {
+            ADD_FAILURE() << name << ": error " << r.error();
+            continue;
+        }
+        ++ran;
+        auto sdf = [&](V2 p) {
+            p -= V2(r3(cx), r3(cy));
+            if (shape == 1) return p.norm() - eb;
+            if (shape == 2) return V2(std::max(std::fabs(p.x()) - (ex / 2 - eb), 0.0), p.y()).norm() - eb;
+            V2 q(std::fabs(p.x()) - (ex / 2 - eb), std::fabs(p.y()) - (ey / 2 - eb));
+            return V2(std::max(q.x(), 0.0), std::max(q.y(), 0.0)).norm() + std::min(std::max(q.x(), q.y()), 0.0) - eb;
+        };
+        int bad = 0;
+        V2 at(r3(cx), r3(cy));
+        for (const MoveEvent& m : r.cap.moves) {
+            V2 to(m.to_prog[X], m.to_prog[Y]);
+            if (m.loc.n == 100) {
+                comp::Piece pc;
+                pc.to = to;
+                if (m.g == 2 || m.g == 3) pc.arc = true, pc.c = V2(m.c0, m.c1), pc.sweep = m.sweep * kPi / 180;
+                for (V2 q : along(at, pc))
+                    // 1 µm: the cycle's contours are whole µm (ceil_um).
+                    if (sdf(q) > -R + 1e-3 && ++bad <= 2)
+                        ADD_FAILURE() << name << ": G" << m.g << " at " << q.transpose() << ", " << -sdf(q)
+                                      << " from the wall";
+                if (m.to_prog[Z] < r3(Z) - 1e-6 && ++bad <= 2) ADD_FAILURE() << name << ": below the floor";
+            }
+            at = to;
+        }
+        failing += bad > 0;
+    }
+    EXPECT_EQ(failing, 0);
+    EXPECT_EQ(ran, 45);
 }
