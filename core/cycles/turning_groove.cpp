@@ -59,6 +59,39 @@ bool first_contact(const Material& m, const V2& s, const V2& u, double limit, V2
     return false;
 }
 
+// The part, in a frame where it lies below the profile: the profile closed by
+// two verticals down from its ends and a line far below (a loop of elements
+// for winding numbers).
+std::vector<Elem> part_loop(const std::vector<Elem>& F) {
+    double lo = kInf, span = 0;
+    for (const Elem& e : F) lo = std::min(lo, min_y(e)), span = std::max(span, length(e));
+    lo -= 100 + 10 * span * double(F.size());
+    V2 a = F.front().a, b = F.back().b;
+    std::vector<Elem> loop = F;
+    loop.push_back(line(b, V2(b.x(), lo)));
+    loop.push_back(line(V2(b.x(), lo), V2(a.x(), lo)));
+    loop.push_back(line(V2(a.x(), lo), a));
+    return loop;
+}
+
+// Where the level y, followed from x0 towards x1 (direction d), leaves the
+// part: x0 when it is not inside, else the first crossing of the profile
+// after which the level is out of it (x1 when it never is).
+double leave_part(const std::vector<Elem>& F, const std::vector<Elem>& loop, double y, double x0, double x1,
+                  int d) {
+    auto inside = [&](double x) { return !on_loop(loop, V2(x, y)) && winding(loop, V2(x, y)) != 0; };
+    if (!inside(x0)) return x0;
+    std::vector<double> xs;
+    for (const Elem& e : F) cross_h(e, y, xs);
+    xs.erase(std::remove_if(xs.begin(), xs.end(), [&](double x) { return (x - x0) * d <= kTol || (x1 - x) * d < 0; }),
+             xs.end());
+    std::sort(xs.begin(), xs.end(), [d](double a, double b) { return a * d < b * d; });
+    xs.push_back(x1);
+    for (size_t i = 0; i + 1 < xs.size(); ++i)
+        if ((xs[i + 1] - xs[i]) * d > kTol && !inside((xs[i] + xs[i + 1]) / 2)) return xs[i];
+    return x1;
+}
+
 // Lowest point of the translated profile between x0 and x1.
 double lowest(const Material& m, double x0, double x1) {
     double y = kInf;
@@ -135,6 +168,7 @@ int g65(const Profile& fin, V2 tool, const G65Args& a, std::vector<Move>& out, s
     double y_low = std::min(c.y(), lowest(m, std::min(xa, c.x()), std::max(xa, c.x())));
     double cl = std::min(a.q > 0 ? a.q : std::max(0.0, a.clearance), step / 2);
 
+    const std::vector<Elem> loop = part_loop(m.F);
     Emit em{fr, out, s};
     V2 prev = s;
     std::vector<V2> path{s};  // the infeed points, the way back out
@@ -148,7 +182,13 @@ int g65(const Profile& fin, V2 tool, const G65Args& a, std::vector<Move>& out, s
         double xe = s.x() + u.x() * (s.y() - y) / -u.y();
         V2 e(xe, y);
         if (y < c.y() - kTol) {
-            auto runs = zone::free_runs(m, y, xe, xa, d);
+            // Below C the EA line may run inside the part (a start point
+            // beyond the groove's wall, its line meeting the land first):
+            // the zone's side there is the profile from C on, where the
+            // level leaves the part (000:2605-2612: the zone is bounded by
+            // the profile and the lines S-A and S-C).
+            double from = leave_part(m.F, loop, y, xe, xa, d);
+            auto runs = zone::free_runs(m, y, from, xa, d);
             if (runs.empty()) {
                 if (last) break;
                 continue;

@@ -1205,6 +1205,37 @@ TEST(G65, UndercutWallsAndRoundBottom) {
     check_out_of_part(ro, rpart, tool, mv, "round bottom");
 }
 
+// %555's groove with the start point moved beyond its right flank, X62 Z55:
+// the EA line (r = z - 24) meets the translated Ø60 land first, at Z54.5.
+// The zone is bounded by the profile from there (000:2605-2612), so below
+// the land each pass starts where its level leaves the part plus allowance,
+// on the translated flank r = z - 19.7 (before, the cycle found its start
+// inside the part at every level and ran nothing at all).
+TEST(G65, StartBeyondTheWall) {
+    G65Args a;
+    a.has_z = true, a.z = 20, a.has_p = true, a.p = 2, a.i = .5, a.k = .2, a.has_ea = true, a.ea = -135;
+    std::vector<Move> mv;
+    std::string why;
+    V2 tool = P(62, 55);
+    Profile f = poly_profile({P(60, 10), P(60, 20), P(40, 30), P(40, 40), P(60, 50), P(60, 60)});
+    ASSERT_EQ(g65(f, tool, a, mv, why), 0) << why;
+    std::vector<Seg> s = feeds(tool, mv);
+    ASSERT_FALSE(s.empty());
+    double low = 1e300;
+    int on_flank = 0;
+    for (const Seg& g : s) {
+        low = std::min(low, g.b.y());
+        if (!g.infeed && g.a.y() < 30 && std::fabs(g.a.x() - (g.a.y() + 19.7)) < 1e-6) ++on_flank;
+    }
+    EXPECT_NEAR(low, 20.5, 1e-9);  // the translated bottom
+    EXPECT_GE(on_flank, 4);        // levels 29, 27, 25, 23, 21 (and 20.5)
+    std::vector<V2> part = densify(f);
+    part.push_back(P(-60, 60)), part.push_back(P(-60, 10));
+    Oracle o(f, {tool}, V2(.2, .5));
+    check_out_of_part(o, part, tool, mv, "G65 beyond the wall");
+    EXPECT_TRUE(mv.back().to.isApprox(tool, 1e-12));
+}
+
 // Generated grooves of seven shapes (square, sloped walls, round bottom,
 // stepped, a ridge, undercut walls, chamfered edges), axial (P) and frontal
 // (R), outside and bore, cut towards both ends, allowances of both signs
@@ -1214,7 +1245,7 @@ TEST(G65, UndercutWallsAndRoundBottom) {
 TEST(G65, GeneratedGroovesNeverEnterThePart) {
     std::mt19937 rng(20261126);
     std::uniform_real_distribution<double> u(0, 1);
-    int runs = 0, inside = 0, failing = 0;
+    int runs = 0, inside = 0, failing = 0, idle = 0;
     for (int n = 0; n < 224; ++n) {
         const int shape = n % 7;
         FrameMap map;
@@ -1259,6 +1290,7 @@ TEST(G65, GeneratedGroovesNeverEnterThePart) {
         if (rc == 875) continue;  // the EA line passes the groove (a start beyond the wall)
         ASSERT_EQ(rc, 0) << name << ": " << why;
         ++runs;
+        idle += feeds(tool, mv).size() < 2;
         inside += a.allowance_inside;
         EXPECT_EQ(a.allowance_inside, wrong) << name;
         std::vector<V2> part = p.part(-20);
@@ -1274,6 +1306,12 @@ TEST(G65, GeneratedGroovesNeverEnterThePart) {
     EXPECT_EQ(failing, 0);
     EXPECT_GE(runs, 180);
     EXPECT_GE(inside, 20);
+    // Every groove gets its passes but three (of 224), whose start point lies
+    // beyond a square wall that takes no allowance (K along it, or a wrong I
+    // roughed as written): the way down to the first level slides along the
+    // wall's face, which seg_clear counts as entering the part, so every
+    // level is skipped. Nothing is cut there; nothing gouges either.
+    EXPECT_LE(idle, 3);
 }
 
 
