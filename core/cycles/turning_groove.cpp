@@ -59,6 +59,39 @@ bool first_contact(const Material& m, const V2& s, const V2& u, double limit, V2
     return false;
 }
 
+// The part, in a frame where it lies below the profile: the profile closed by
+// two verticals down from its ends and a line far below (a loop of elements
+// for winding numbers).
+std::vector<Elem> part_loop(const std::vector<Elem>& F) {
+    double lo = kInf, span = 0;
+    for (const Elem& e : F) lo = std::min(lo, min_y(e)), span = std::max(span, length(e));
+    lo -= 100 + 10 * span * double(F.size());
+    V2 a = F.front().a, b = F.back().b;
+    std::vector<Elem> loop = F;
+    loop.push_back(line(b, V2(b.x(), lo)));
+    loop.push_back(line(V2(b.x(), lo), V2(a.x(), lo)));
+    loop.push_back(line(V2(a.x(), lo), a));
+    return loop;
+}
+
+// Where the level y, followed from x0 towards x1 (direction d), leaves the
+// part: x0 when it is not inside, else the first crossing of the profile
+// after which the level is out of it (x1 when it never is).
+double leave_part(const std::vector<Elem>& F, const std::vector<Elem>& loop, double y, double x0, double x1,
+                  int d) {
+    auto inside = [&](double x) { return !on_loop(loop, V2(x, y)) && winding(loop, V2(x, y)) != 0; };
+    if (!inside(x0)) return x0;
+    std::vector<double> xs;
+    for (const Elem& e : F) cross_h(e, y, xs);
+    xs.erase(std::remove_if(xs.begin(), xs.end(), [&](double x) { return (x - x0) * d <= kTol || (x1 - x) * d < 0; }),
+             xs.end());
+    std::sort(xs.begin(), xs.end(), [d](double a, double b) { return a * d < b * d; });
+    xs.push_back(x1);
+    for (size_t i = 0; i + 1 < xs.size(); ++i)
+        if ((xs[i + 1] - xs[i]) * d > kTol && !inside((xs[i] + xs[i + 1]) / 2)) return xs[i];
+    return x1;
+}
+
 // Lowest point of the translated profile between x0 and x1.
 double lowest(const Material& m, double x0, double x1) {
     double y = kInf;
@@ -135,8 +168,10 @@ int g65(const Profile& fin, V2 tool, const G65Args& a, std::vector<Move>& out, s
     double y_low = std::min(c.y(), lowest(m, std::min(xa, c.x()), std::max(xa, c.x())));
     double cl = std::min(a.q > 0 ? a.q : std::max(0.0, a.clearance), step / 2);
 
+    const std::vector<Elem> loop = part_loop(m.F);
     Emit em{fr, out, s};
     V2 prev = s;
+    std::vector<V2> path{s};  // the infeed points, the way back out
     for (int k = 1;; ++k) {
         double y = s.y() - k * step;
         bool last = y <= y_low + kUm;
@@ -147,7 +182,13 @@ int g65(const Profile& fin, V2 tool, const G65Args& a, std::vector<Move>& out, s
         double xe = s.x() + u.x() * (s.y() - y) / -u.y();
         V2 e(xe, y);
         if (y < c.y() - kTol) {
-            auto runs = zone::free_runs(m, y, xe, xa, d);
+            // Below C the EA line may run inside the part (a start point
+            // beyond the groove's wall, its line meeting the land first):
+            // the zone's side there is the profile from C on, where the
+            // level leaves the part (000:2605-2612: the zone is bounded by
+            // the profile and the lines S-A and S-C).
+            double from = leave_part(m.F, loop, y, xe, xa, d);
+            auto runs = zone::free_runs(m, y, from, xa, d);
             if (runs.empty()) {
                 if (last) break;
                 continue;
@@ -157,6 +198,12 @@ int g65(const Profile& fin, V2 tool, const G65Args& a, std::vector<Move>& out, s
         auto runs = zone::free_runs(m, y, e.x(), xa, d);
         bool ok = !runs.empty() && std::fabs(runs[0].first - e.x()) <= kTol &&
                   std::fabs(runs[0].second - e.x()) > kUm;
+        if (ok) {
+            auto [from, to] = zone::clear_below(m, y, cl, e.x(), runs[0].second, d);
+            ok = std::fabs(to - from) > kUm;
+            e = V2(from, y);
+            runs[0] = {from, to};
+        }
         std::vector<V2> infeed{e};
         if (ok && y < c.y() - kTol && !zone::seg_clear(m, prev, e)) {
             infeed = {V2(e.x(), prev.y()), e};  // along the last pass, then down
@@ -164,6 +211,7 @@ int g65(const Profile& fin, V2 tool, const G65Args& a, std::vector<Move>& out, s
         }
         if (ok) {
             for (const V2& p : infeed) em.go(1, p, true);
+            path.insert(path.end(), infeed.begin(), infeed.end());
             em.go(1, V2(runs[0].second, y));
             em.go(0, V2(runs[0].second, y + cl));
             em.go(0, V2(e.x(), y + cl));
@@ -172,7 +220,13 @@ int g65(const Profile& fin, V2 tool, const G65Args& a, std::vector<Move>& out, s
         }
         if (last) break;
     }
-    em.go(0, V2(em.cur.x(), s.y()));
+    // Out: up to the start level, then to S (§6.4 step 4); where an overhang
+    // on the start side hides that way, back along the infeeds.
+    if (zone::seg_clear(m, em.cur, V2(em.cur.x(), s.y())) && zone::seg_clear(m, V2(em.cur.x(), s.y()), s)) {
+        em.go(0, V2(em.cur.x(), s.y()));
+    } else {
+        for (size_t i = path.size(); i-- > 1;) em.go(0, path[i - 1]);
+    }
     em.go(0, s);
     return 0;
 }
@@ -231,7 +285,11 @@ int g66(V2 tool, const G66Args& a, std::vector<Move>& out, std::string& why) {
         em.go(0, V2(x, A.y()));
         em.go(1, V2(x, bottom(x)), false, a.ef);
         if (a.ep > 0 && i > 0) {
-            double h = a.ep / std::sqrt(2.0);  // 45°, back over the cut part of the groove
+            // 45°, back over the cut part of the groove (000:2795: "EP..
+            // Valeur du déplacement à 45° en fin de passe"), and no further
+            // back than the first plunge: a longer EP would run into the
+            // groove's start flank (issue 19 item 1, [DECISION]).
+            double h = std::min(a.ep / std::sqrt(2.0), std::fabs(x - A.x()));
             em.go(1, V2(x - side * h, bottom(x) - dir * h));
         }
         em.go(0, V2(em.cur.x(), A.y()));

@@ -389,6 +389,14 @@ int g63(const Profile& fin, V2 tool, const G63Args& a, std::vector<Move>& out, s
         if (runs.empty() || std::fabs(runs[0].first - xs) > kTol ||
             std::fabs(runs[0].second - xs) <= kUm)
             continue;
+        // Each run ends where its retract by the clearance stays out of the
+        // allowance (a rounded corner of ER, an undercut wall), a groove's run
+        // at the farthest point whose climb out of it is clear: no retract
+        // enters the part plus ER (issue 19 item 1).
+        auto [f0, t0] = zone::clear_below(m, y, c, xs, runs[0].second, d);
+        if (std::fabs(f0 - xs) > kTol || std::fabs(t0 - xs) <= kUm) continue;
+        if (std::fabs(t0 - runs[0].second) > kTol) runs.resize(1);  // hidden beyond: no groove
+        runs[0].second = t0;
         V2 start(xs - d * c, y);
         if (first) em.go(0, V2(start.x(), D.y()));
         first = false;
@@ -399,6 +407,13 @@ int g63(const Profile& fin, V2 tool, const G63Args& a, std::vector<Move>& out, s
         for (size_t j = 1; j < runs.size(); ++j) {
             V2 down, entry(runs[j].first, y);
             if (entry_angle(m, entry, d, down) > eb + 1e-9) break;
+            // The run ends at the farthest point whose climb out is clear.
+            double climb = std::max(y + c, top_of_A(m, xs, runs[j].second) + c);
+            auto out_ok = zone::clear_runs(m, y, climb - y, runs[j].first, runs[j].second, d);
+            if (out_ok.empty()) break;
+            double tj = out_ok.back().second;
+            if (std::fabs(tj - runs[j].first) <= kUm) break;
+            runs[j].second = tj;
             double over = std::max(y + c, top_of_A(m, end, entry.x()) + c);
             if (std::fabs(down.y()) < std::sin(5 * kDeg)) down = V2(0, -1);
             double lean = (over - y) * down.x() / -down.y();

@@ -428,6 +428,42 @@ bool seg_clear(const Material& m, const V2& p, const V2& q) {
     return true;
 }
 
+// Whether the vertical segment meets A changes only at the ends of A's boundary
+// curves, at their extremes along x and where they cross its ends.
+std::vector<std::pair<double, double>> clear_runs(const Material& m, double Y, double h, double x0, double x1,
+                                                  int d) {
+    if ((x1 - x0) * d <= kTol || h <= kTol) return {{x0, x1}};
+    auto between = [&](double x) { return (x - x0) * d > kTol && (x1 - x) * d > kTol; };
+    std::vector<double> cuts{x0, x1}, xs;
+    for (const Elem& e : m.U) {
+        xs.assign({e.a.x(), e.b.x()});
+        if (e.arc)
+            for (double sg : {-1.0, 1.0})
+                if (on_arc(e, e.c + V2(sg * e.r(), 0))) xs.push_back(e.c.x() + sg * e.r());
+        cross_h(e, Y + kUm, xs);
+        cross_h(e, Y + h, xs);
+        for (double x : xs)
+            if (between(x)) cuts.push_back(x);
+    }
+    std::sort(cuts.begin(), cuts.end(), [d](double a, double b) { return a * d < b * d; });
+    std::vector<std::pair<double, double>> runs;
+    bool open = false;
+    for (size_t j = 0; j + 1 < cuts.size(); ++j) {
+        if (std::fabs(cuts[j + 1] - cuts[j]) <= kTol) continue;
+        double mid = (cuts[j] + cuts[j + 1]) / 2;
+        bool clear = seg_clear(m, V2(mid, Y + kUm), V2(mid, Y + h));
+        if (clear && open) runs.back().second = cuts[j + 1];
+        else if (clear) runs.push_back({cuts[j], cuts[j + 1]});
+        open = clear;
+    }
+    return runs;
+}
+
+std::pair<double, double> clear_below(const Material& m, double Y, double h, double x0, double x1, int d) {
+    auto runs = clear_runs(m, Y, h, x0, x1, d);
+    return runs.empty() ? std::pair<double, double>{x0, x0} : runs.front();
+}
+
 int check_profile(const Profile& f, std::string& why) {
     if (f.elems.empty()) {
         why = tr("the finished profile has no element");

@@ -82,6 +82,19 @@ double first_hidden(const Material& m, double Y, double x0, double x1, int d);
 // The segment p-q never enters A.
 bool seg_clear(const Material& m, const V2& p, const V2& q);
 
+// The part of a pass along y = Y from x0 towards x1 (direction d) whose
+// retract by the clearance h, straight up, stays out of A: the first run of x
+// where the vertical segment of height h above the line is clear, as (start,
+// end) along d; start == end when there is none. Under an undercut wall (a
+// dovetail groove) or a rounded corner of a normal allowance, a pass stops
+// where less than the clearance is left above it, and starts, under an
+// overhang on its own side, where it is left (issue 19 item 1: no retract or
+// return rapid of G65 or G63 enters the part plus its allowance).
+std::pair<double, double> clear_below(const Material& m, double Y, double h, double x0, double x1, int d);
+// All the runs of x between x0 and x1 where that vertical segment is clear.
+std::vector<std::pair<double, double>> clear_runs(const Material& m, double Y, double h, double x0, double x1,
+                                                  int d);
+
 // 0, or 871 with `why` when the profile is empty or not continuous.
 int check_profile(const Profile& f, std::string& why);
 // 0, or 874 when a point of the elements lies beyond the spindle axis (r < 0);

@@ -144,6 +144,12 @@ struct RunOptions {
     std::function<void(const turning::Profile&, const std::vector<comp::V2>&, comp::V2, const turning::G64Args&,
                        const std::vector<turning::Move>&)>
         on_g64;
+    // Tests: the same for each G65, G63 and G66 as run (issue 19 item 1).
+    std::function<void(const turning::Profile&, comp::V2, const turning::G65Args&, const std::vector<turning::Move>&)>
+        on_g65;
+    std::function<void(const turning::Profile&, comp::V2, const turning::G63Args&, const std::vector<turning::Move>&)>
+        on_g63;
+    std::function<void(comp::V2, const turning::G66Args&, const std::vector<turning::Move>&)> on_g66;
 };
 
 enum class StepResult {

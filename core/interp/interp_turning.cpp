@@ -368,9 +368,12 @@ bool Interpreter::turning_g65_g63(const Plan& p) {
         turning::G65Args a = g65_args(p);
         if (!a.has_ea) return fail(2, tr("G65 needs the infeed angle EA")), false;
         rc = turning::g65(prof, tool, a, moves, why);
+        if (rc == 0 && opt_.on_g65) opt_.on_g65(prof, tool, a, moves);
         if (rc == 0 && a.allowance_inside) warn_allowance_inside(65, a.i, a.k);
     } else {
-        rc = turning::g63(prof, tool, g63_args(p), moves, why);
+        turning::G63Args a = g63_args(p);
+        rc = turning::g63(prof, tool, a, moves, why);
+        if (rc == 0 && opt_.on_g63) opt_.on_g63(prof, tool, a, moves);
     }
     if (rc) return fail(rc, why), false;
     if (!turning_emit_ef(p, moves)) return false;
@@ -404,7 +407,9 @@ bool Interpreter::turning_g66(const Plan& p) {
                                      a.d_first, a.d, a.d));
     std::vector<turning::Move> moves;
     std::string why;
-    if (int rc = turning::g66(comp::V2(prog_[Z], prog_[X]), a, moves, why)) return fail(rc, why), false;
+    const comp::V2 tool(prog_[Z], prog_[X]);
+    if (int rc = turning::g66(tool, a, moves, why)) return fail(rc, why), false;
+    if (opt_.on_g66) opt_.on_g66(tool, a, moves);
     if (!turning_emit_ef(p, moves)) return false;
     // The second corrector is active afterwards; the tool has not moved
     // (turning.md §6.6).

@@ -1052,6 +1052,438 @@ TEST(G65, Errors) {
     EXPECT_TRUE(mv.empty());
 }
 
+// ------------------------------------------- G65, G63: issue 19 item 1 ----
+
+namespace {
+// A profile generated in a frame where the passes run along x, the levels step
+// down y and the part lies below the profile, and its map to (z, r): axial
+// (x = ±z, y = r, or 60 - r for a bore) or frontal (x = r, y = ±z).
+struct FrameMap {
+    bool frontal = false, bore = false;
+    double sx = 1, sy = 1;
+    V2 operator()(V2 p) const {
+        if (frontal) return V2(sy * p.y(), sx > 0 ? 10 + p.x() : 120 - p.x());
+        return V2(sx * p.x(), bore ? 60 - p.y() : p.y());
+    }
+    // The linear part (allowances, directions).
+    V2 dir(V2 v) const { return (*this)(v) - (*this)(V2(0, 0)); }
+    bool flips() const {  // orientation reversed
+        V2 a = dir(V2(1, 0)), b = dir(V2(0, 1));
+        return a.x() * b.y() - a.y() * b.x() < 0;
+    }
+};
+
+// A profile through frame points; arcs given as (end, centre, ccw in the frame).
+struct FramePath {
+    std::vector<V2> pts{};  // densified, for the part polygon
+    Profile f{};
+    const FrameMap* m = nullptr;
+    V2 cur{0, 0};
+    void start(V2 p) { cur = p, pts = {p}; }
+    void line(V2 p) {
+        f.elems.push_back(L((*m)(cur), (*m)(p)));
+        pts.push_back(p);
+        cur = p;
+    }
+    void arc(V2 p, V2 c, bool ccw) {
+        f.elems.push_back(Arc((*m)(cur), (*m)(p), (*m)(c), ccw != m->flips()));
+        double r = (cur - c).norm(), a0 = std::atan2(cur.y() - c.y(), cur.x() - c.x());
+        double s = std::atan2(p.y() - c.y(), p.x() - c.x()) - a0;
+        if (ccw && s <= 0) s += 2 * kPi;
+        if (!ccw && s >= 0) s -= 2 * kPi;
+        for (int i = 1; i <= 2000; ++i)
+            pts.push_back(c + r * V2(std::cos(a0 + s * i / 2000), std::sin(a0 + s * i / 2000)));
+        pts.back() = p;
+        cur = p;
+    }
+    // The part: the profile closed far below its ends (frame), in (z, r).
+    std::vector<V2> part(double below) const {
+        std::vector<V2> out;
+        for (V2 p : pts) out.push_back((*m)(p));
+        out.push_back((*m)(V2(pts.back().x(), below)));
+        out.push_back((*m)(V2(pts.front().x(), below)));
+        return out;
+    }
+};
+
+std::vector<V2> shifted_pts(std::vector<V2> v, V2 t) {
+    for (V2& p : v) p += t;
+    return v;
+}
+
+// No move, feed or rapid, of a cycle with no stock (G65, G63) comes deeper
+// than 0.1 µm into the part (the polygon `part`) or into the
+// allowance zone of the oracle (swept band or normal allowance).
+int check_out_of_part(const Oracle& o, const std::vector<V2>& part, V2 tool,
+                      const std::vector<Move>& mv, const std::string& what) {
+    int bad = 0;
+    for (const Seg& s : segs(tool, mv)) {
+        int n = std::max(50, int((s.b - s.a).norm() / 0.02));
+        for (int i = 0; i <= n; ++i) {
+            V2 q = s.a + (s.b - s.a) * (double(i) / n);
+            // Deeper than 0.1 µm, measured on the exact profile (the polygon's
+            // chords cut arcs by less than that).
+            bool in_part = in_polygon(part, q) && polyline_dist(part, q, true) > 1e-6 && o.dist_f(q) > 1e-4;
+            if ((in_part || o.in_A(q)) && ++bad <= 2)
+                ADD_FAILURE() << what << ": G" << s.g << (in_part ? " in the part" : " in the allowance")
+                              << " at Z" << q.x() << " r" << q.y() << " on " << s.a.transpose() << " -> "
+                              << s.b.transpose();
+        }
+    }
+    EXPECT_EQ(bad, 0) << what << ": points inside the profile plus allowance";
+    return bad;
+}
+
+const char* kGrooveShapes[] = {"square", "trapezoid", "round", "stepped", "ridge", "dovetail", "chamfered"};
+
+// A groove of shape k in a land at height H, from x1 to x2 (frame).
+void groove(FramePath& p, int k, double x1, double x2, double H, double h, double u1, double u2) {
+    double w = x2 - x1, xm = x1 + w * (.35 + .3 * u1);
+    switch (k) {
+        case 0: p.line(V2(x1, H - h)), p.line(V2(x2, H - h)); break;
+        case 1: p.line(V2(x1 + w / 3 * u1, H - h)), p.line(V2(x2 - w / 3 * u2, H - h)); break;
+        case 2: {  // straight walls down to an arc bottom (a half circle at most)
+            double h0 = std::max(0.0, h - w / 2) * u1, yc = H - h0;
+            double r = w / 2, sag = std::min(r, h - h0 + 1e-9);
+            if (h0 > 0) p.line(V2(x1, yc));
+            // A circle through both walls' feet, its lowest point `sag` below them.
+            double R = (r * r + sag * sag) / (2 * sag);
+            p.arc(V2(x2, yc), V2((x1 + x2) / 2, yc - sag + R), true);
+            break;
+        }
+        case 3:
+            if (u2 < .5) p.line(V2(x1, H - h)), p.line(V2(xm, H - h)), p.line(V2(xm, H - h / 2)), p.line(V2(x2, H - h / 2));
+            else p.line(V2(x1, H - h / 2)), p.line(V2(xm, H - h / 2)), p.line(V2(xm, H - h)), p.line(V2(x2, H - h));
+            break;
+        case 4:
+            p.line(V2(x1, H - h)), p.line(V2(xm - 1, H - h)), p.line(V2(xm - 1, H - h / 2 * (1 + u2))),
+                p.line(V2(xm + 1, H - h / 2 * (1 + u2))), p.line(V2(xm + 1, H - h)), p.line(V2(x2, H - h));
+            break;
+        case 5: p.line(V2(x1 - h / 2 * u1, H - h)), p.line(V2(x2 + h / 2 * u2, H - h)); break;
+        default:  // 45° chamfers at the groove's edges
+            p.line(V2(x1 + .8, H - .8)), p.line(V2(x1 + .8, H - h)), p.line(V2(x2 - .8, H - h)),
+                p.line(V2(x2 - .8, H - .8));
+            break;
+    }
+    p.line(V2(x2, H));
+}
+}  // namespace
+
+// A dovetail groove (both walls undercut by 1 mm over its 4 mm depth): the
+// passes under the far overhang stop where it leaves less than the clearance
+// above them, those under the near one start where it leaves it, and the way
+// out goes back along the infeeds: no retract, return or exit rapid enters
+// the part (issue 19 item 1; before, the retracts rose into the far overhang
+// and the exit into the near one). And a round bottom without allowance whose
+// EA line meets its far side: no pass runs from that point into the part.
+TEST(G65, UndercutWallsAndRoundBottom) {
+    Profile f = poly_profile({P(60, 0), P(60, 10), P(52, 9), P(52, 21), P(60, 20), P(60, 30)});
+    std::vector<V2> part{P(60, 0), P(60, 10), P(52, 9), P(52, 21), P(60, 20), P(60, 30), P(-60, 30), P(-60, 0)};
+    G65Args a;
+    a.has_z = true, a.z = 5, a.has_p = true, a.p = 1.5, a.i = .3, a.k = .2, a.has_ea = true, a.ea = -100;
+    std::vector<Move> mv;
+    std::string why;
+    V2 tool = P(64, 18);
+    ASSERT_EQ(g65(f, tool, a, mv, why), 0) << why;
+    Oracle o(f, {tool}, V2(.2, .3));
+    check_out_of_part(o, part, tool, mv, "dovetail");
+    double low = 1e300;
+    for (const Seg& s : feeds(tool, mv)) low = std::min(low, s.b.y());
+    EXPECT_NEAR(low, 26.3, 1e-9);  // the bottom is roughed, I.3 above it
+    EXPECT_TRUE(mv.back().to.isApprox(tool, 1e-12));
+    // A half-round bottom R4 under a Ø62 land, the EA line from X70 Z18 at
+    // -135° meeting the arc's left half at r ~28.2.
+    Profile r;
+    r.elems = {L(P(62, 0), P(62, 10)), Arc(P(62, 10), P(62, 18), P(62, 14), true), L(P(62, 18), P(62, 30))};
+    std::vector<V2> rpart = densify(r);
+    rpart.push_back(P(-60, 30)), rpart.push_back(P(-60, 0));
+    a = G65Args{};
+    a.has_z = true, a.z = 5, a.has_p = true, a.p = 1.3, a.has_ea = true, a.ea = -135;
+    tool = P(70, 18);
+    ASSERT_EQ(g65(r, tool, a, mv, why), 0) << why;
+    Oracle ro(r, {tool}, V2(0, 0));
+    check_out_of_part(ro, rpart, tool, mv, "round bottom");
+}
+
+// %555's groove with the start point moved beyond its right flank, X62 Z55:
+// the EA line (r = z - 24) meets the translated Ø60 land first, at Z54.5.
+// The zone is bounded by the profile from there (000:2605-2612), so below
+// the land each pass starts where its level leaves the part plus allowance,
+// on the translated flank r = z - 19.7 (before, the cycle found its start
+// inside the part at every level and ran nothing at all).
+TEST(G65, StartBeyondTheWall) {
+    G65Args a;
+    a.has_z = true, a.z = 20, a.has_p = true, a.p = 2, a.i = .5, a.k = .2, a.has_ea = true, a.ea = -135;
+    std::vector<Move> mv;
+    std::string why;
+    V2 tool = P(62, 55);
+    Profile f = poly_profile({P(60, 10), P(60, 20), P(40, 30), P(40, 40), P(60, 50), P(60, 60)});
+    ASSERT_EQ(g65(f, tool, a, mv, why), 0) << why;
+    std::vector<Seg> s = feeds(tool, mv);
+    ASSERT_FALSE(s.empty());
+    double low = 1e300;
+    int on_flank = 0;
+    for (const Seg& g : s) {
+        low = std::min(low, g.b.y());
+        if (!g.infeed && g.a.y() < 30 && std::fabs(g.a.x() - (g.a.y() + 19.7)) < 1e-6) ++on_flank;
+    }
+    EXPECT_NEAR(low, 20.5, 1e-9);  // the translated bottom
+    EXPECT_GE(on_flank, 4);        // levels 29, 27, 25, 23, 21 (and 20.5)
+    std::vector<V2> part = densify(f);
+    part.push_back(P(-60, 60)), part.push_back(P(-60, 10));
+    Oracle o(f, {tool}, V2(.2, .5));
+    check_out_of_part(o, part, tool, mv, "G65 beyond the wall");
+    EXPECT_TRUE(mv.back().to.isApprox(tool, 1e-12));
+}
+
+// Generated grooves of seven shapes (square, sloped walls, round bottom,
+// stepped, a ridge, undercut walls, chamfered edges), axial (P) and frontal
+// (R), outside and bore, cut towards both ends, allowances of both signs
+// (a wrong I is roughed as written), start points over the groove or beyond
+// its wall, EA from 25° to 90° off the passes: no move of G65, feed or rapid,
+// enters the part plus its allowance; no feed passes the limit.
+TEST(G65, GeneratedGroovesNeverEnterThePart) {
+    std::mt19937 rng(20261126);
+    std::uniform_real_distribution<double> u(0, 1);
+    int runs = 0, inside = 0, failing = 0, idle = 0;
+    for (int n = 0; n < 224; ++n) {
+        const int shape = n % 7;
+        FrameMap map;
+        map.frontal = (n / 7) % 2;
+        map.bore = !map.frontal && (n / 14) % 2;
+        map.sx = (n / 28) % 2 ? -1 : 1;
+        map.sy = map.frontal && (n / 14) % 2 ? -1 : 1;
+        const bool wrong = (n / 56) % 4 == 3;
+        double H = 30 + 8 * u(rng), x1 = 8 + 5 * u(rng), w = 6 + 8 * u(rng), h = 2 + 6 * u(rng);
+        double x2 = x1 + w, Lx = x2 + 10;
+        FramePath p;
+        p.m = &map;
+        p.start(V2(0, H));
+        p.line(V2(x1, H));
+        groove(p, shape, x1, x2, H, h, u(rng), u(rng));
+        p.line(V2(Lx, H));
+        // The profile called as written or backwards.
+        Profile f = u(rng) < .5 ? p.f : reversed(p.f);
+        V2 S(x2 - w / 4 + (w / 4 + 3) * u(rng), H + .5 + 3 * u(rng));
+        double phi = (25 + 65 * u(rng)) * kPi / 180;
+        V2 ea = map.dir(V2(-std::cos(phi), -std::sin(phi)));
+        double xa = x1 - 3 + 4 * u(rng);
+        // The allowance in the frame: along the passes either way, off the part
+        // (or into it: a wrong I).
+        V2 ty((u(rng) < .5 ? -1 : 1) * .6 * u(rng), (wrong ? -1 : 1) * (.1 + .6 * u(rng)));
+        V2 t = map.dir(ty);
+        G65Args a;
+        if (map.frontal) {
+            a.has_x = a.has_r = true, a.x = map(V2(xa, 0)).y(), a.r = .7 + 2 * u(rng);
+        } else {
+            a.has_z = a.has_p = true, a.z = map(V2(xa, 0)).x(), a.p = .7 + 2 * u(rng);
+        }
+        a.k = t.x(), a.i = t.y(), a.has_ea = true;
+        a.ea = std::atan2(ea.y(), ea.x()) * 180 / kPi;
+        V2 tool = map(S);
+        std::string name = "groove " + std::to_string(n) + " " + kGrooveShapes[shape] +
+                           (map.frontal ? " R" : " P") + (map.bore ? " bore" : "") + (map.sx < 0 ? " mirrored" : "") +
+                           (wrong ? " wrong I" : "") + " EA" + std::to_string(a.ea);
+        std::vector<Move> mv;
+        std::string why;
+        int rc = g65(f, tool, a, mv, why);
+        if (rc == 875) continue;  // the EA line passes the groove (a start beyond the wall)
+        ASSERT_EQ(rc, 0) << name << ": " << why;
+        ++runs;
+        idle += feeds(tool, mv).size() < 2;
+        inside += a.allowance_inside;
+        EXPECT_EQ(a.allowance_inside, wrong) << name;
+        std::vector<V2> part = p.part(-20);
+        Oracle o(a.allowance_inside ? shifted(f, t) : f, {tool}, a.allowance_inside ? V2(0, 0) : t);
+        if (check_out_of_part(o, a.allowance_inside ? shifted_pts(part, t) : part, tool, mv, name)) ++failing;
+        for (const Seg& s : feeds(tool, mv)) {
+            double lim = map.frontal ? a.x : a.z;
+            auto along = [&](V2 q) { return map.frontal ? q.y() : q.x(); };
+            double sgn = map.sx;  // the limit lies towards -x in the frame
+            EXPECT_GE(sgn * (along(s.b) - lim), -1e-6) << name;
+        }
+    }
+    EXPECT_EQ(failing, 0);
+    EXPECT_GE(runs, 180);
+    EXPECT_GE(inside, 20);
+    // Every groove gets its passes but three (of 224), whose start point lies
+    // beyond a square wall that takes no allowance (K along it, or a wrong I
+    // roughed as written): the way down to the first level slides along the
+    // wall's face, which seg_clear counts as entering the part, so every
+    // level is skipped. Nothing is cut there; nothing gouges either.
+    EXPECT_LE(idle, 3);
+}
+
+
+// A dovetail groove in a Ø60 land, entered with EB150 and ER.4: each pass in
+// it ends where its retract by the clearance stays clear of the overhang and
+// of ER's rounded corners, and the groove is entered only where the climb out
+// at that end is clear (issue 19 item 1; before, the retracts rose into the
+// overhang's allowance).
+TEST(G63, DovetailGrooveRetractsStayClear) {
+    Profile f = poly_profile({P(60, 0), P(60, 3), P(54, 2.5), P(54, 10), P(60, 9), P(60, 20), P(50, 20), P(50, 30)});
+    std::vector<V2> part = densify(f);
+    part.push_back(P(-60, 30)), part.push_back(P(-60, 0));
+    G63Args a;
+    a.has_x = a.has_z = true, a.x = 32, a.z = 31, a.has_p = true, a.p = 1.5, a.has_ez = true, a.ez = 0,
+    a.has_eu = true, a.eu = 25, a.has_eb = true, a.eb = 150, a.er = .4;
+    std::vector<Move> mv;
+    std::string why;
+    V2 tool = P(72, 35);
+    ASSERT_EQ(g63(f, tool, a, mv, why), 0) << why;
+    Oracle o(f, {tool}, V2(0, 0));
+    o.er = .4;
+    check_out_of_part(o, part, tool, mv, "G63 dovetail");
+    int in_groove = 0;
+    for (const Seg& s : feeds(tool, mv)) in_groove += s.b.y() < 30 - 1e-9 && s.b.x() < 9;
+    EXPECT_GT(in_groove, 0);  // the groove is still roughed
+}
+// Generated profiles for G63: a land with a groove of each shape (or none),
+// then one to three steps down (shoulders or cones) with a second groove half
+// the time, axial (P, EZ, EU) and frontal (R, EX, EW), outside and bore, cut
+// towards both ends, ER from 0 to 0.6 and EB from 60° to 150°: no move, feed
+// or rapid, enters the part plus ER; the feeds stay above the last level.
+TEST(G63, GeneratedProfilesNeverEnterThePart) {
+    std::mt19937 rng(20261127);
+    std::uniform_real_distribution<double> u(0, 1);
+    int failing = 0, entered = 0;
+    const char* shapes[] = {"plain", "square", "trapezoid", "round", "stepped", "ridge", "dovetail"};
+    for (int n = 0; n < 112; ++n) {
+        const int shape = n % 7;
+        FrameMap map;
+        map.frontal = (n / 7) % 2;
+        map.bore = !map.frontal && (n / 14) % 2;
+        map.sx = (n / 28) % 2 ? -1 : 1;
+        map.sy = map.frontal && (n / 14) % 2 ? -1 : 1;
+        FramePath p;
+        p.m = &map;
+        double Y0 = 30 + 8 * u(rng), y = Y0, x = 0;
+        p.start(V2(0, Y0));
+        for (int k = 0, steps = 1 + int(u(rng) * 3); k <= steps; ++k) {
+            double len = 6 + 6 * u(rng);
+            int gs = k == 0 ? shape : (u(rng) < .5 && shape ? 1 + int(u(rng) * 6) : 0);
+            if (gs) {
+                double x1 = x + 2 + 2 * u(rng), w = 4 + 4 * u(rng), h = 1.5 + 3 * u(rng);
+                p.line(V2(x1, y));
+                groove(p, gs - 1, x1, x1 + w, y, h, u(rng), u(rng));
+                x = x1 + w;
+            }
+            x += len;
+            p.line(V2(x, y));
+            if (k == steps) break;
+            double ny = y - 2 - 4 * u(rng);
+            x += u(rng) < .4 ? 2 + 3 * u(rng) : 0;
+            y = ny;
+            p.line(V2(x, y));
+        }
+        const double y_u = y;
+        V2 D(x + 1 + 2 * u(rng), Y0 + .5 + 2 * u(rng));
+        V2 tool = map(D + V2(4, 4));
+        G63Args a;
+        double step = .8 + 2 * u(rng);
+        V2 dz = map(D);
+        a.has_x = a.has_z = true, a.x = dz.y(), a.z = dz.x();
+        if (map.frontal) {
+            a.has_r = a.has_ex = a.has_ew = true, a.r = step, a.ex = map(V2(0, 0)).y(), a.ew = map(V2(0, y_u)).x();
+        } else {
+            a.has_p = a.has_ez = a.has_eu = true, a.p = step, a.ez = map(V2(0, 0)).x(), a.eu = map(V2(0, y_u)).y();
+        }
+        a.er = n % 5 == 0 ? 0 : .1 + .5 * u(rng);
+        a.has_eb = true, a.eb = 60 + 90 * u(rng);
+        Profile f = u(rng) < .5 ? p.f : reversed(p.f);
+        std::string name = "profile " + std::to_string(n) + " " + shapes[shape] + (map.frontal ? " R" : " P") +
+                           (map.bore ? " bore" : "") + (map.sx < 0 ? " mirrored" : "") + " ER" +
+                           std::to_string(a.er) + " EB" + std::to_string(a.eb);
+        std::vector<Move> mv;
+        std::string why;
+        ASSERT_EQ(g63(f, tool, a, mv, why), 0) << name << ": " << why;
+        ASSERT_FALSE(feeds(tool, mv).empty()) << name;
+        Oracle o(f, {tool}, V2(0, 0));
+        o.er = a.er;
+        if (check_out_of_part(o, p.part(-20), tool, mv, name)) ++failing;
+        for (const Seg& s : feeds(tool, mv)) {
+            entered += s.infeed;
+            V2 lv = map.dir(V2(0, 1));
+            EXPECT_GE(s.b.dot(lv) - map(V2(0, y_u)).dot(lv), -1e-6) << name;
+        }
+    }
+    EXPECT_EQ(failing, 0);
+    EXPECT_GT(entered, 20);
+}
+
+// Every G65, G63 and G66 of the handbook programs (../shared/programs), run by
+// the interpreter: no move enters the part plus its allowance (issue 19 item
+// 1). The part is the profile closed far away on the side the infeed (G65)
+// or the levels (G63) go to; G66 stays inside the groove it is given.
+TEST(G65, HandbookProgramsNeverEnterThePart) {
+    const std::string dir = std::string(PUPITRE_SHARED) + "/programs/";
+    if (!std::filesystem::exists(dir + "INDEX.tsv")) GTEST_SKIP() << "no " << dir;
+    const std::vector<std::string> runs{"000_p555_cycles_x.iso", "000_p555_cycles_z.iso", "000_p555_jauges.iso",
+                                        "004_p555.iso", "000_p100_g63.iso", "000_p2_mandrin_cone.iso"};
+    int seen65 = 0, seen63 = 0, seen66 = 0;
+    // The profile closed 1000 mm away along `away`.
+    auto part_of = [](const Profile& f, V2 away) {
+        Profile g = f;
+        std::vector<V2> pts = densify(g);
+        V2 a = pts.front(), b = pts.back();
+        pts.push_back(b + 1000 * away);
+        pts.push_back(a + 1000 * away);
+        return pts;
+    };
+    for (const std::string& file : runs) {
+        MachineProfile m;
+        builtin_machine("lathe", m);
+        ProgramMemory mem;
+        std::ifstream in(dir + file);
+        std::stringstream text;
+        text << in.rdbuf();
+        Diag d;
+        mem.load_text(file, text.str(), d);
+        RunOptions o;
+        o.on_g65 = [&](const Profile& fin, V2 tool, const G65Args& a, const std::vector<Move>& mv) {
+            ++seen65;
+            V2 t(a.k, a.i), u(std::cos(a.ea * kPi / 180), std::sin(a.ea * kPi / 180));
+            V2 away = a.has_p ? V2(0, u.y() < 0 ? -1 : 1) : V2(u.x() < 0 ? -1 : 1, 0);
+            Profile f = a.allowance_inside ? shifted(fin, t) : fin;
+            Oracle oracle(f, {tool}, a.allowance_inside ? V2(0, 0) : t);
+            check_out_of_part(oracle, part_of(f, away), tool, mv, file + " G65");
+        };
+        o.on_g63 = [&](const Profile& fin, V2 tool, const G63Args& a, const std::vector<Move>& mv) {
+            ++seen63;
+            double lv = a.has_p ? a.x : a.z, lim = a.has_p ? a.eu : a.ew;
+            V2 away = a.has_p ? V2(0, lim > lv ? 1 : -1) : V2(lim > lv ? 1 : -1, 0);
+            Oracle oracle(fin, {tool}, V2(0, 0));
+            oracle.er = a.er;
+            check_out_of_part(oracle, part_of(fin, away), tool, mv, file + " G63");
+        };
+        o.on_g66 = [&](V2 tool, const G66Args& a, const std::vector<Move>& mv) {
+            ++seen66;
+            // The groove in the first corrector's terms: from A to B read by the
+            // second corrector, down to the bottom line through it.
+            V2 B = V2(a.z, a.x) + a.gauge_delta;
+            double lo = std::min(a.has_r ? tool.x() : tool.y(), a.has_r ? B.x() : B.y());
+            double hi = std::max(a.has_r ? tool.x() : tool.y(), a.has_r ? B.x() : B.y());
+            for (const Seg& s : segs(tool, mv))
+                for (V2 q : {s.a, s.b}) {
+                    double along = a.has_r ? q.x() : q.y(), across = a.has_r ? q.y() : q.x();
+                    double from = a.has_r ? tool.y() : tool.x(), bottom = a.has_r ? B.y() : B.x();
+                    double slope = std::tan(a.ea * kPi / 180);
+                    double bot = bottom + (along - (a.has_r ? B.x() : B.y())) * slope;
+                    EXPECT_GE(along, lo - 1e-6) << file;
+                    EXPECT_LE(along, hi + 1e-6) << file;
+                    EXPECT_GE((across - bot) * (from - bot), -1e-9) << file << ": beyond the bottom";
+                }
+        };
+        struct Quiet final : MachineSink {} sink;
+        Interpreter interp(m, mem, sink, o);
+        interp.start(mem.first());
+        interp.run_to_end();
+    }
+    EXPECT_EQ(seen65, 4);
+    EXPECT_EQ(seen63, 1);
+    EXPECT_EQ(seen66, 1);
+}
+
 // ---------------------------------------------------------------- G63 ----
 
 // %100's interior profile (000:2708-2767) with its R2 fillets resolved: tangent
@@ -1246,6 +1678,81 @@ TEST(G66, Frontal) {
     std::vector<Seg> s = feeds(tool, mv);
     ASSERT_EQ(s.size(), 5u);
     for (int i = 0; i < 5; ++i) EXPECT_TRUE(s[i].b.isApprox(V2(-6, 20 + 2.5 * i), 1e-9)) << i;
+}
+
+// A 10 mm groove 5 deep with a 3 mm tool, plunges 1.75 apart and EP4: the
+// 45° move after the second plunge would go 2.83 back, 1.08 into the first
+// flank; it stops over the first plunge (issue 19 item 1).
+TEST(G66, EpStopsOverTheFirstPlunge) {
+    G66Args a;
+    a.d_first = 1, a.d = 2, a.gauge_delta = V2(-3, 0), a.has_x = a.has_z = true, a.x = 20, a.z = 10,
+    a.has_r = true, a.r = 2, a.ep = 4;
+    std::vector<Move> mv;
+    std::string why;
+    V2 tool = P(60, 0);
+    ASSERT_EQ(g66(tool, a, mv, why), 0) << why;
+    for (const Seg& s : segs(tool, mv)) EXPECT_GE(s.b.x(), -1e-9) << s.b.transpose();
+    std::vector<Seg> f = feeds(tool, mv);
+    ASSERT_EQ(f.size(), 5u + 4u);
+    EXPECT_TRUE(f[2].b.isApprox(V2(0, 21.75), 1e-9)) << f[2].b.transpose();  // after the plunge at Z1.75
+    EXPECT_NEAR((f[4].b - f[4].a).norm(), 4, 1e-9);  // from the third plunge on, EP whole
+}
+
+// Generated grooves for G66 (issue 19 item 1): radial (R) and frontal (P),
+// cut either way, tool widths 2 to 5 mm (the correctors' difference), bottoms
+// sloped up to 15° either way, EP up to twice the spacing of the plunges. The
+// groove is the rectangle from A's flank to B's, from the approach level to
+// the bottom line: no move of the tool's reference edge (the first
+// corrector's) leaves it below the approach level.
+TEST(G66, GeneratedGroovesStayInTheGroove) {
+    std::mt19937 rng(20261128);
+    std::uniform_real_distribution<double> u(0, 1);
+    int failing = 0;
+    for (int n = 0; n < 64; ++n) {
+        const bool frontal = n % 2, back = (n / 2) % 2, bore = (n / 4) % 2;
+        // Frame: x along the groove's width, y the plunge (down into the part).
+        auto to_zr = [&](V2 q) {
+            double x = back ? -q.x() : q.x(), y = bore ? -q.y() : q.y();
+            return frontal ? V2(y, 40 + x) : V2(x, 40 + y);
+        };
+        double w = 2 + 3 * u(rng), width = w + 2 + 8 * u(rng), depth = 2 + 6 * u(rng);
+        double spacing = .5 + w * .8 * u(rng), slope = (u(rng) - .5) * 30;
+        G66Args a;
+        a.d_first = 1, a.d = 2;
+        V2 A(0, 2), B(width, -depth);  // B for the second corrector: the far flank
+        V2 Bzr = to_zr(B), Azr = to_zr(A);
+        // The second corrector reads the tool's other edge: B in the first
+        // corrector's terms is B - w along the width.
+        a.gauge_delta = to_zr(V2(-w, 0)) - to_zr(V2(0, 0));
+        a.has_x = a.has_z = true, a.x = Bzr.y(), a.z = Bzr.x();
+        (frontal ? a.has_p : a.has_r) = true;
+        (frontal ? a.p : a.r) = spacing;
+        V2 ea = to_zr(V2(std::cos(slope * kPi / 180), std::sin(slope * kPi / 180))) - to_zr(V2(0, 0));
+        a.ea = std::atan2(frontal ? ea.x() : ea.y(), frontal ? ea.y() : ea.x()) * 180 / kPi;
+        a.ep = u(rng) < .3 ? 0 : 2 * spacing * u(rng);
+        std::vector<Move> mv;
+        std::string why;
+        std::string name = "G66 " + std::to_string(n) + (frontal ? " P" : " R") + (back ? " back" : "") +
+                           (bore ? " bore" : "") + " EA" + std::to_string(a.ea) + " EP" + std::to_string(a.ep);
+        ASSERT_EQ(g66(Azr, a, mv, why), 0) << name << ": " << why;
+        // The groove in the frame of the first corrector: x from 0 to width - w,
+        // y from the approach (2) down to the bottom line through B - w.
+        int bad = 0;
+        V2 inv_o = to_zr(V2(0, 0)), ex = to_zr(V2(1, 0)) - inv_o, ey = to_zr(V2(0, 1)) - inv_o;
+        auto frame = [&](V2 q) { return V2((q - inv_o).dot(ex), (q - inv_o).dot(ey)); };
+        double t = std::tan(slope * kPi / 180);
+        for (const Seg& sg : segs(Azr, mv))
+            for (int i = 0; i <= 20; ++i) {
+                V2 q = frame(sg.a + (sg.b - sg.a) * (i / 20.0));
+                double bottom = -depth + (q.x() - (width - w)) * t;
+                bool below_top = q.y() < 0 - 1e-9;  // the land at y 0
+                if ((q.y() < bottom - 1e-6 || (below_top && (q.x() < -1e-6 || q.x() > width - w + 1e-6))) &&
+                    ++bad <= 2)
+                    ADD_FAILURE() << name << ": G" << sg.g << " at x " << q.x() << " y " << q.y();
+            }
+        failing += bad > 0;
+    }
+    EXPECT_EQ(failing, 0);
 }
 
 TEST(G66, Errors) {
