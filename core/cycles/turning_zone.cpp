@@ -374,23 +374,32 @@ std::vector<std::pair<double, double>> free_runs(const Material& m, double Y, do
     return runs;
 }
 
-double first_hidden(const Material& m, double Y, double x0, double x1, int d) {
-    if ((x1 - x0) * d <= kTol) return x1;
-    const double lift = Y + kUm;  // a pass may run along A's upper edge itself
+namespace {
+// Whether a vertical from (x, y0) up to y1 meets A changes only at the ends
+// of A's boundary curves, at their extremes along x and where they cross y0
+// or y1: those x strictly between x0 and x1, with x0 and x1, sorted along d.
+std::vector<double> critical_xs(const Material& m, double y0, double y1, double x0, double x1, int d) {
     auto between = [&](double x) { return (x - x0) * d > kTol && (x1 - x) * d > kTol; };
-    // Whether the vertical above (x, Y) meets A changes only at the ends of
-    // A's boundary curves, at their extremes along x and where they cross it.
     std::vector<double> cuts{x0, x1}, xs;
     for (const Elem& e : m.U) {
         xs.assign({e.a.x(), e.b.x()});
         if (e.arc)
             for (double sg : {-1.0, 1.0})
                 if (on_arc(e, e.c + V2(sg * e.r(), 0))) xs.push_back(e.c.x() + sg * e.r());
-        cross_h(e, lift, xs);
+        cross_h(e, y0, xs);
+        if (y1 != y0) cross_h(e, y1, xs);
         for (double x : xs)
             if (between(x)) cuts.push_back(x);
     }
     std::sort(cuts.begin(), cuts.end(), [d](double a, double b) { return a * d < b * d; });
+    return cuts;
+}
+}  // namespace
+
+double first_hidden(const Material& m, double Y, double x0, double x1, int d) {
+    if ((x1 - x0) * d <= kTol) return x1;
+    const double lift = Y + kUm;  // a pass may run along A's upper edge itself
+    const std::vector<double> cuts = critical_xs(m, lift, lift, x0, x1, d);
     for (size_t j = 0; j + 1 < cuts.size(); ++j) {
         double mid = (cuts[j] + cuts[j + 1]) / 2;
         if (std::fabs(cuts[j + 1] - cuts[j]) <= kTol) continue;
@@ -428,24 +437,11 @@ bool seg_clear(const Material& m, const V2& p, const V2& q) {
     return true;
 }
 
-// Whether the vertical segment meets A changes only at the ends of A's boundary
-// curves, at their extremes along x and where they cross its ends.
+// The stretches of [x0, x1] where the vertical from Y up by h stays out of A.
 std::vector<std::pair<double, double>> clear_runs(const Material& m, double Y, double h, double x0, double x1,
                                                   int d) {
     if ((x1 - x0) * d <= kTol || h <= kTol) return {{x0, x1}};
-    auto between = [&](double x) { return (x - x0) * d > kTol && (x1 - x) * d > kTol; };
-    std::vector<double> cuts{x0, x1}, xs;
-    for (const Elem& e : m.U) {
-        xs.assign({e.a.x(), e.b.x()});
-        if (e.arc)
-            for (double sg : {-1.0, 1.0})
-                if (on_arc(e, e.c + V2(sg * e.r(), 0))) xs.push_back(e.c.x() + sg * e.r());
-        cross_h(e, Y + kUm, xs);
-        cross_h(e, Y + h, xs);
-        for (double x : xs)
-            if (between(x)) cuts.push_back(x);
-    }
-    std::sort(cuts.begin(), cuts.end(), [d](double a, double b) { return a * d < b * d; });
+    const std::vector<double> cuts = critical_xs(m, Y + kUm, Y + h, x0, x1, d);
     std::vector<std::pair<double, double>> runs;
     bool open = false;
     for (size_t j = 0; j + 1 < cuts.size(); ++j) {
