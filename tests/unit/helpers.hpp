@@ -5,9 +5,23 @@
 #include <string>
 #include <vector>
 
+#include "core/geometry/comp.hpp"
 #include "core/interp/interp.hpp"
 
 namespace pupitre::test {
+
+// The test oracles' point-in-polygon (even-odd rule), independent of the
+// product's geometry.
+inline bool in_polygon(const std::vector<comp::V2>& poly, comp::V2 q) {
+    bool c = false;
+    for (size_t i = 0, n = poly.size(); i < n; ++i) {
+        comp::V2 a = poly[i], b = poly[(i + 1) % n];
+        if ((a.y() > q.y()) != (b.y() > q.y()) &&
+            a.x() + (q.y() - a.y()) * (b.x() - a.x()) / (b.y() - a.y()) > q.x())
+            c = !c;
+    }
+    return c;
+}
 
 struct Capture final : MachineSink {
     std::vector<MoveEvent> moves;

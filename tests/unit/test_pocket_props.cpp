@@ -18,6 +18,7 @@
 
 using namespace pupitre;
 using comp::Elem;
+using test::in_polygon;
 using comp::V2;
 
 namespace {
@@ -60,16 +61,6 @@ std::vector<V2> polygon(const std::vector<Elem>& es) {
             out.push_back(e.c + r * V2(std::cos(a0 + e.sweep * i / 64), std::sin(a0 + e.sweep * i / 64)));
     }
     return out;
-}
-bool in_polygon(const std::vector<V2>& poly, V2 q) {
-    bool c = false;
-    for (size_t i = 0, n = poly.size(); i < n; ++i) {
-        V2 a = poly[i], b = poly[(i + 1) % n];
-        if ((a.y() > q.y()) != (b.y() > q.y()) &&
-            a.x() + (q.y() - a.y()) * (b.x() - a.x()) / (b.y() - a.y()) > q.x())
-            c = !c;
-    }
-    return c;
 }
 
 std::vector<Elem> rect(V2 lo, V2 hi, double round, bool ccw) {

@@ -16,10 +16,12 @@
 
 #include "core/cycles/turning.hpp"
 #include "core/interp/interp.hpp"
+#include "helpers.hpp"
 
 using namespace pupitre;
 using namespace pupitre::turning;
 using comp::Elem;
+using test::in_polygon;
 
 namespace {
 constexpr double kPi = std::numbers::pi;
@@ -127,16 +129,6 @@ bool segs_meet(V2 p, V2 q, V2 a, V2 b) {
         return true;
     return seg_point(p, a, b) < 1e-12 || seg_point(q, a, b) < 1e-12 || seg_point(a, p, q) < 1e-12 ||
            seg_point(b, p, q) < 1e-12;
-}
-bool in_polygon(const std::vector<V2>& poly, V2 q) {
-    bool c = false;
-    for (size_t i = 0, n = poly.size(); i < n; ++i) {
-        V2 a = poly[i], b = poly[(i + 1) % n];
-        if ((a.y() > q.y()) != (b.y() > q.y()) &&
-            a.x() + (q.y() - a.y()) * (b.x() - a.x()) / (b.y() - a.y()) > q.x())
-            c = !c;
-    }
-    return c;
 }
 double polyline_dist(const std::vector<V2>& pl, V2 q, bool closed) {
     double d = 1e300;
