@@ -182,6 +182,8 @@ int main(int argc, char** argv) {
     rest->add_option("number", number, tr("program number"))->required();
     rest->add_option("revision", sa.revision, tr("revision (see history)"))->required();
 
+    // TRANSLATORS: the heading of the list of commands in --help.
+    for (CLI::App* sub : app.get_subcommands({})) sub->group(tr("Subcommands"));
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
