@@ -78,6 +78,27 @@ CLI::Validator existing_file() {
         "FILE");
 }
 
+// CLI11's commonest errors in the chosen language: each English text is a
+// prefix or a suffix around what was typed (CLI/Error.hpp); the others stay
+// as CLI11 writes them.
+std::string cli_error_text(std::string_view what) {
+    static const struct {
+        std::string_view prefix, suffix;
+        const char* msgid;
+    } kTexts[] = {
+        {"The following argument was not expected: ", "", N_("The following argument was not expected: %s")},
+        {"The following arguments were not expected: ", "", N_("The following arguments were not expected: %s")},
+        {"Could not convert: ", "", N_("Could not convert: %s")},
+        {"", " is required", N_("%s is required")},
+    };
+    for (const auto& t : kTexts)
+        if (what.size() > t.prefix.size() + t.suffix.size() && what.starts_with(t.prefix) && what.ends_with(t.suffix)) {
+            std::string arg(what.substr(t.prefix.size(), what.size() - t.prefix.size() - t.suffix.size()));
+            return strf(tr(t.msgid), arg.c_str());
+        }
+    return std::string(what);
+}
+
 // CLI11's own words, in the chosen language.
 void translate_cli(CLI::App& app) {
     auto f = app.get_formatter();
@@ -87,7 +108,7 @@ void translate_cli(CLI::App& app) {
     app.option_defaults()->group(tr("Options"));
     app.set_help_flag("-h,--help", tr("Print this help message and exit"));
     app.failure_message([](const CLI::App*, const CLI::Error& e) {
-        return std::string(e.what()) + "\n" + tr("Run with --help for more information.") + "\n";
+        return cli_error_text(e.what()) + "\n" + tr("Run with --help for more information.") + "\n";
     });
 }
 }  // namespace
