@@ -756,6 +756,11 @@ TEST(G64, RandomShaftsProperties) {
 // groove, along Z and along X, allowances of both signs. No move, feed or
 // rapid, enters the part plus its allowance (translated as written when the
 // allowance points into the part); without a groove the material is covered.
+namespace {
+int check_out_of_part(const Oracle& o, const std::vector<V2>& part, V2 tool, const std::vector<Move>& mv,
+                      const std::string& what);
+}  // namespace
+
 TEST(G64, RandomGroovesBoresAndSigns) {
     std::mt19937 rng(20261125);
     std::uniform_real_distribution<double> u(0, 1);
@@ -816,6 +821,18 @@ TEST(G64, RandomGroovesBoresAndSigns) {
         inside += a.allowance_inside;
         Oracle o(a.allowance_inside ? shifted(f, t) : f, stock, a.allowance_inside ? V2(0, 0) : t);
         check_clear(o, tool, mv, std::min(1.0, step / 2), name.c_str());
+        if (variant != 3) {
+            // The same profile with no allowance: the allowance zone is then
+            // empty, so the part itself is the oracle (closed far inside it).
+            G64Args bare = a;
+            bare.i = bare.k = 0;
+            std::vector<Move> mz;
+            ASSERT_EQ(g64(called, st, tool, bare, mz, why), 0) << name << " with no allowance: " << why;
+            std::vector<V2> part = pts;
+            part.push_back(V2(pts.back().x(), bore ? 60 : -1));
+            part.push_back(V2(pts.front().x(), bore ? 60 : -1));
+            check_out_of_part(Oracle(f, stock, V2(0, 0)), part, tool, mz, name + " with no allowance");
+        }
         if (groove || variant == 3) continue;
         ++tried;
         double low = 1e300;
