@@ -410,22 +410,28 @@ TEST(G64, P555AlongX) {
     EXPECT_TRUE(mv.back().to.isApprox(tool, 1e-12));
 }
 
+namespace {
+// G64 on the profile f over `stock` as a program calls it: P passes along Z,
+// or R passes along X with the profile and the stock called from their other
+// end (000:2530-2545).
+int g64_called(const Profile& f, const std::vector<V2>& stock, V2 tool, G64Args& a, bool along_x, double step,
+               std::vector<Move>& mv, std::string& why) {
+    (along_x ? a.has_r : a.has_p) = true;
+    (along_x ? a.r : a.p) = step;
+    std::vector<V2> st = along_x ? std::vector<V2>(stock.rbegin(), stock.rend()) : stock;
+    return g64(along_x ? reversed(f) : f, st, tool, a, mv, why);
+}
+
+}  // namespace
+
 TEST(G64, P555Properties) {
     for (bool along_x : {false, true}) {
         G64Args a;
         a.i = .5, a.k = .2;
-        (along_x ? a.has_r : a.has_p) = true;
-        (along_x ? a.r : a.p) = along_x ? 3 : 2;
         std::vector<Move> mv;
         std::string why;
         V2 tool = P(200, 150);
-        // Along X the profile is called from its end and the stock from the axis
-        // (000:2530-2545).
-        std::vector<V2> stock(kStock555.rbegin(), kStock555.rend());
-        ASSERT_EQ(
-            g64(along_x ? reversed(p555()) : p555(), along_x ? stock : kStock555, tool, a, mv, why),
-            0)
-            << why;
+        ASSERT_EQ(g64_called(p555(), kStock555, tool, a, along_x, along_x ? 3 : 2, mv, why), 0) << why;
         Oracle o(p555(), kStock555, V2(.2, .5));
         check_clear(o, tool, mv, 1, along_x ? "R3" : "P2");
         // The groove between the Ø60 lands is G65's work in both variants
@@ -729,14 +735,10 @@ TEST(G64, RandomShaftsProperties) {
         G64Args a;
         a.i = .8 * u(rng), a.k = .8 * u(rng);
         double step = .7 + 2.5 * u(rng);
-        (along_x ? a.has_r : a.has_p) = true;
-        (along_x ? a.r : a.p) = step;
-        Profile called = along_x ? reversed(f) : f;
-        std::vector<V2> st = along_x ? std::vector<V2>(stock.rbegin(), stock.rend()) : stock;
         std::vector<Move> mv;
         std::string why;
         V2 tool(z + 30, top + 20);
-        ASSERT_EQ(g64(called, st, tool, a, mv, why), 0) << n << ": " << why;
+        ASSERT_EQ(g64_called(f, stock, tool, a, along_x, step, mv, why), 0) << n << ": " << why;
         Oracle o(f, stock, V2(a.k, a.i));
         std::string name = "shaft " + std::to_string(n);
         double c = std::min(1.0, step / 2);
@@ -806,15 +808,11 @@ TEST(G64, RandomGroovesBoresAndSigns) {
         a.i = .1 + .7 * u(rng);
         if (bore || variant == 3) a.i = -a.i;  // the right sign on a bore; wrong outside
         double step = .8 + 2 * u(rng);
-        (along_x ? a.has_r : a.has_p) = true;
-        (along_x ? a.r : a.p) = step;
-        Profile called = along_x ? reversed(f) : f;
-        std::vector<V2> st = along_x ? std::vector<V2>(stock.rbegin(), stock.rend()) : stock;
         std::vector<Move> mv;
         std::string why;
         std::string name = "profile " + std::to_string(n) + (bore ? " bore" : " outside") +
                            (groove ? " groove" : "") + (along_x ? " R" : " P");
-        ASSERT_EQ(g64(called, st, tool, a, mv, why), 0) << name << ": " << why;
+        ASSERT_EQ(g64_called(f, stock, tool, a, along_x, step, mv, why), 0) << name << ": " << why;
         ASSERT_FALSE(feeds(tool, mv).empty()) << name;
         EXPECT_EQ(a.allowance_inside, variant == 3) << name;
         V2 t(a.k, a.i);
@@ -827,7 +825,7 @@ TEST(G64, RandomGroovesBoresAndSigns) {
             G64Args bare = a;
             bare.i = bare.k = 0;
             std::vector<Move> mz;
-            ASSERT_EQ(g64(called, st, tool, bare, mz, why), 0) << name << " with no allowance: " << why;
+            ASSERT_EQ(g64_called(f, stock, tool, bare, along_x, step, mz, why), 0) << name << " with no allowance: " << why;
             std::vector<V2> part = pts;
             part.push_back(V2(pts.back().x(), bore ? 60 : -1));
             part.push_back(V2(pts.front().x(), bore ? 60 : -1));
