@@ -48,9 +48,11 @@ bool setup_language(int argc, char** argv) {
         else if (a.starts_with("--lang=")) want = std::string(a.substr(7));
     }
     std::string dir = locale_dir();
-    std::string lang = i18n::choose(want, i18n::wanted([](const char* n) -> const char* { return std::getenv(n); }), dir);
+    const std::string env = i18n::wanted([](const char* n) -> const char* { return std::getenv(n); });
+    std::string lang = i18n::choose(want, env, dir);
     if (lang.empty()) {
-        i18n::init("en", dir);
+        // Said in the environment's language, the one the user reads.
+        i18n::init(i18n::choose("", env, dir), dir);
         std::fprintf(stderr, tr("pupitre: no catalogue for the language '%s' (available: %s)\n"), want.c_str(),
                      i18n::available(dir).c_str());
         return false;
