@@ -36,6 +36,11 @@ struct RunArgs {
     bool optional_stop = false;
     long max_blocks = 20'000'000;
     std::string db;  // --db: the store is program memory and machine state
+    // The workshop (pupitre-setup(5)): a setup's name or file, the
+    // measurements to take after the run, where to write the part.
+    std::string setup;
+    std::vector<std::string> measures;
+    std::string part_out;
 };
 
 int run(const RunArgs& a);

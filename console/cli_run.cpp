@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cstdio>
 #include <fstream>
+#include <memory>
 #include <set>
 #include <sstream>
 
@@ -10,6 +11,7 @@
 #include "core/i18n.hpp"
 #include "core/interp/interp.hpp"
 #include "core/output/trace.hpp"
+#include "core/workshop/report.hpp"
 
 namespace pupitre::cli {
 
@@ -81,6 +83,54 @@ namespace {
 
 class NullSink final : public MachineSink {};
 
+// --setup: a shipped setup's name or a setup file; prints the problem.
+bool load_setup(const std::string& name, const MachineProfile& m, workshop::Setup& s) {
+    if (!m.lathe) {
+        std::fprintf(stderr, tr("pupitre: --setup: the workshop has a lathe only yet (--machine lathe)\n"));
+        return false;
+    }
+    if (workshop::builtin_setup(name, s)) return true;
+    std::ifstream in(name);
+    if (!in) {
+        std::fprintf(stderr, tr("pupitre: unknown setup '%s' (lathe, or a .setup file)\n"), name.c_str());
+        return false;
+    }
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    if (std::string err = workshop::parse_setup(ss.str(), s); !err.empty()) {
+        std::fprintf(stderr, tr("pupitre: %s: %s\n"), name.c_str(), err.c_str());
+        return false;
+    }
+    return true;
+}
+
+// The file a program came from, for a diagnostic found outside the interpreter.
+void place(Diag& d, const ProgramMemory& mem) {
+    d.file = "-";
+    for (const auto& p : mem.programs())
+        if (p->number == d.program) {
+            d.file = p->file;
+            break;
+        }
+}
+
+int write_part(const std::string& path, const workshop::LatheWorld& w, const std::string& title) {
+    bool svg = path.size() > 4 && path.compare(path.size() - 4, 4, ".svg") == 0;
+    std::string text = svg ? workshop::part_svg(w, title) : workshop::part_zr(w);
+    FILE* f = path == "-" ? stdout : std::fopen(path.c_str(), "w");
+    if (!f) {
+        std::fprintf(stderr, tr("pupitre: cannot write %s\n"), path.c_str());
+        return kCantCreate;
+    }
+    bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
+    ok = (f == stdout ? std::fflush(f) : std::fclose(f)) == 0 && ok;
+    if (!ok) {
+        std::fprintf(stderr, tr("pupitre: cannot write %s\n"), path.c_str());
+        return kIoErr;
+    }
+    return kOk;
+}
+
 }  // namespace
 
 void default_machine_note(const std::string& asked, bool errors) {
@@ -99,6 +149,12 @@ int run(const RunArgs& a) {
     MachineProfile m;
     const std::string machine = batch_machine(a.machine);
     if (!load_machine(machine, m)) return kUsage;
+    workshop::Setup setup;
+    if (a.setup.empty() && (!a.measures.empty() || !a.part_out.empty())) {
+        std::fprintf(stderr, tr("pupitre: --measure and --part-out need a --setup\n"));
+        return kUsage;
+    }
+    if (!a.setup.empty() && !load_setup(a.setup, m, setup)) return kUsage;
     ProgramMemory mem;
     if (int rc = load_all(a.files, mem)) return rc;
     RunStore store;
@@ -110,11 +166,14 @@ int run(const RunArgs& a) {
     std::setvbuf(stdout, outbuf, _IOFBF, sizeof outbuf);
     TraceWriter trace(stdout, m);
     NullSink quiet;
+    MachineSink& out = a.trace ? static_cast<MachineSink&>(trace) : quiet;
+    std::unique_ptr<workshop::Workshop> shop;
+    if (!a.setup.empty()) shop = std::make_unique<workshop::Workshop>(m, setup, &out);
     RunOptions o;
     o.block_skip = a.block_skip;
     o.optional_stop = a.optional_stop;
     o.max_blocks = a.max_blocks;
-    Interpreter in(m, mem, a.trace ? static_cast<MachineSink&>(trace) : quiet, o);
+    Interpreter in(m, mem, shop ? static_cast<MachineSink&>(*shop) : out, o);
     if (!a.db.empty())
         if (int rc = store.seed(in)) return rc;
     if (int rc = apply_sets(a.sets, in)) return rc;
@@ -125,22 +184,45 @@ int run(const RunArgs& a) {
             break;
         }
     in.start(main);
-    in.run_to_end();
+    if (!shop) {
+        in.run_to_end();
+    } else {
+        // A crash stops the machine where it is (pupitre-setup(5)).
+        for (StepResult r = StepResult::running; !shop->crashed() &&
+                                                 (r == StepResult::running || r == StepResult::stopped);)
+            r = in.step();
+    }
     std::fflush(stdout);
     for (const Diag& d : in.diags()) print_diag(d);
-    default_machine_note(a.machine, in.has_errors());
+    std::vector<Diag> crashes;
+    std::vector<workshop::Asked> asked;
+    if (shop) {
+        for (const workshop::Crash& c : shop->crashes()) {
+            crashes.push_back(workshop::crash_diag(c));
+            place(crashes.back(), mem);
+            print_diag(crashes.back());
+        }
+        for (const std::string& spec : a.measures) {
+            asked.emplace_back();
+            asked.back().error = shop->measure(spec, asked.back().r);
+        }
+    }
+    const bool errors = in.has_errors() || !crashes.empty();
+    default_machine_note(a.machine, errors);
     if (a.json) {
-        std::string s = summary_json(in, a.files.front());
+        std::string s = summary_json(in, a.files.front(), crashes, shop ? workshop::workshop_json(*shop, asked) : "");
         std::fputs(s.c_str(), stdout);
     } else if (!a.trace) {
-        std::string s = summary_text(in, a.files.front());
+        std::string s = summary_text(in, a.files.front()) + workshop::readings_text(asked);
         std::fputs(s.c_str(), stdout);
     }
     std::fflush(stdout);
+    if (shop && !a.part_out.empty())
+        if (int rc = write_part(a.part_out, shop->world(), a.files.front())) return rc;
     // What the program wrote into correctors and origins stays, as on the NUM.
     if (!a.db.empty())
         if (int rc = store.persist(in, a.files.front(), machine)) return rc;
-    return in.has_errors() ? kProgramErrors : kOk;
+    return errors ? kProgramErrors : kOk;
 }
 
 int check(const RunArgs& a) {

@@ -247,7 +247,8 @@ std::string summary_text(const Interpreter& in, const std::string& file) {
     return o;
 }
 
-std::string summary_json(const Interpreter& in, const std::string& file) {
+std::string summary_json(const Interpreter& in, const std::string& file, const std::vector<Diag>& more,
+                         std::string_view fields) {
     std::string o = "{\"file\":";
     append_json_string(o, file);
     o += ",\"program\":" + std::to_string(in.main_program());
@@ -313,6 +314,11 @@ std::string summary_json(const Interpreter& in, const std::string& file) {
         first = false;
         diag_json(o, d);
     }
+    for (const Diag& d : more) {
+        if (!first) o += ',';
+        first = false;
+        diag_json(o, d);
+    }
     o += "],\"warnings\":[";
     first = true;
     for (const Diag& d : in.diags()) {
@@ -321,7 +327,9 @@ std::string summary_json(const Interpreter& in, const std::string& file) {
         first = false;
         diag_json(o, d);
     }
-    o += "]}\n";
+    o += ']';
+    o += fields;
+    o += "}\n";
     return o;
 }
 

@@ -36,6 +36,9 @@ void append_fixed4(std::string& s, double v);
 void append_json_string(std::string& s, std::string_view v);
 
 std::string summary_text(const Interpreter& in, const std::string& file);
-std::string summary_json(const Interpreter& in, const std::string& file);
+// `more` are errors found outside the interpreter (the workshop's crashes);
+// `fields` is JSON inserted before the closing brace (",\"workshop\":{…}").
+std::string summary_json(const Interpreter& in, const std::string& file, const std::vector<Diag>& more = {},
+                         std::string_view fields = {});
 
 }  // namespace pupitre

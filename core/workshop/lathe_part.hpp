@@ -1,0 +1,78 @@
+// The lathe's physical world in its half-section (Z, R): the stock as the
+// tools leave it, the chuck and the tailstock, the tools' true shapes. Exact
+// 2-D Booleans by Clipper (libpolyclipping) on integers of 0.1 µm; arcs and
+// nose radii become polygons within 0.5 µm (issue 15: ≤ 1 µm chord error).
+// Z is the machine's, R the distance from the spindle axis.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+#include <clipper.hpp>
+#include <string>
+#include <vector>
+
+#include "core/workshop/setup.hpp"
+
+namespace pupitre::workshop {
+
+using CPath = ClipperLib::Path;
+using CPaths = ClipperLib::Paths;
+
+inline constexpr double kUnit = 1e-4;    // mm per Clipper unit
+inline constexpr double kChord = 5e-4;   // mm: the largest chord error of a polygonised arc
+
+ClipperLib::IntPoint to_int(Pt p);       // (Z, R) mm -> units
+Pt to_mm(const ClipperLib::IntPoint& p);
+
+// A polygon of `r` around `c` (mm) within kChord of the circle.
+CPath circle(Pt c, double r);
+// Points along an arc from `a` about `c` by `sweep` radians (+: towards +R
+// from +Z, counter-clockwise in (Z, R)), within kChord; `a` is not included.
+void arc_points(Pt a, Pt c, double sweep, std::vector<Pt>& out);
+
+// A tool's true shape relative to its tool point P: the insert (nose circle
+// and its two cutting edges) and the holder that carries it.
+struct ToolShape {
+    CPath insert, holder;
+};
+ToolShape tool_shape(const ToolTruth& t);
+
+// What a move ran into.
+enum class Obstacle { none, material, chuck, tailstock };
+
+class LatheWorld {
+public:
+    explicit LatheWorld(const LatheSetup& s);
+    void new_part();                          // fresh stock from the setup
+    const CPaths& material() const { return part_; }
+    const CPaths& chuck() const { return chuck_; }
+    const CPaths& tailstock() const { return tail_; }
+    const LatheSetup& setup() const { return s_; }
+
+    // The area a shape sweeps along a tool point's path (mm; at least one
+    // point), mirrored about the axis so that a tool past the centre cuts
+    // what it meets on the other side.
+    static CPaths sweep(const CPath& shape, const std::vector<Pt>& path);
+    // How deep `swept` goes into an obstacle (mm): twice the area over the
+    // perimeter of the largest overlap, 0 when it only touches.
+    double depth_into(const CPaths& swept, Obstacle what) const;
+    // Removes `swept` from the material; returns the area removed (mm²).
+    double cut(const CPaths& swept);
+    // A part drawn elsewhere (the store's): replaces the material.
+    void set_material(CPaths p) { part_ = std::move(p); }
+
+    // --- what the instruments read, from the material itself ---
+    bool right_face(double& z) const;                  // the part's right-hand face
+    // The outside and inside radius of the material at machine Z `z`; false
+    // when there is no material there (inside: false too when it is solid).
+    bool outer_radius(double z, double& r) const;
+    bool inner_radius(double z, double& r) const;
+    // The Z extent of the groove whose bottom is at `z`; false if `z` is not
+    // on a bottom (the profile leaves the level on both sides).
+    bool groove(double z, double& left, double& right) const;
+
+private:
+    LatheSetup s_;
+    CPaths part_, chuck_, tail_;
+    void crossings(double z, std::vector<double>& rs) const;
+};
+
+}  // namespace pupitre::workshop

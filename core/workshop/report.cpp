@@ -1,0 +1,140 @@
+// The workshop's reports (see report.hpp).
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/workshop/report.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/i18n.hpp"
+#include "core/numfmt.hpp"
+#include "core/output/trace.hpp"
+
+namespace pupitre::workshop {
+
+Diag crash_diag(const Crash& c) {
+    Diag d;
+    d.code = c.code;
+    d.program = c.loc.prog;
+    d.line = c.loc.line;
+    d.n = c.loc.n;
+    d.detail = c.what;
+    return d;
+}
+
+std::string workshop_json(const Workshop& w, const std::vector<Asked>& asked) {
+    std::string o = ",\"workshop\":{\"setup\":";
+    append_json_string(o, w.setup().name);
+    o += ",\"crashes\":[";
+    for (size_t i = 0; i < w.crashes().size(); ++i) {
+        const Crash& c = w.crashes()[i];
+        if (i) o += ',';
+        o += "{\"code\":" + std::to_string(c.code) + ",\"prog\":" + std::to_string(c.loc.prog) +
+             ",\"line\":" + std::to_string(c.loc.line) + ",\"n\":" + (c.loc.n < 0 ? "null" : std::to_string(c.loc.n)) +
+             ",\"tool\":" + std::to_string(c.tool) + ",\"om\":{\"X\":";
+        append_fixed4(o, w.machine().x_diameter ? 2 * c.om[X] : c.om[X]);  // as the trace
+        o += ",\"Z\":";
+        append_fixed4(o, c.om[Z]);
+        o += "},\"message\":";
+        append_json_string(o, c.what);
+        o += '}';
+    }
+    o += "],\"measurements\":[";
+    for (size_t i = 0; i < asked.size(); ++i) {
+        const Asked& a = asked[i];
+        if (i) o += ',';
+        o += "{\"spec\":";
+        append_json_string(o, a.r.spec);
+        if (!a.error.empty()) {
+            o += ",\"error\":";
+            append_json_string(o, a.error);
+        } else {
+            o += ",\"instrument\":";
+            append_json_string(o, a.r.instrument);
+            o += ",\"value\":";
+            append_fixed4(o, a.r.value);
+            o += ",\"resolution\":";
+            append_fixed4(o, a.r.resolution);
+        }
+        o += '}';
+    }
+    o += "]}";
+    return o;
+}
+
+std::string readings_text(const std::vector<Asked>& asked) {
+    std::string o;
+    for (const Asked& a : asked) {
+        if (!a.error.empty()) {
+            // TRANSLATORS: a measurement asked with --measure, and why there is no reading.
+            o += strf(tr("%s: no reading: %s\n"), a.r.spec.c_str(), a.error.c_str());
+            continue;
+        }
+        int decimals = a.r.resolution < 0.005 ? 3 : 2;
+        // TRANSLATORS: a reading: what was asked, the value in mm, the instrument.
+        o += strf(tr("%s: %.*f mm (%s)\n"), a.r.spec.c_str(), decimals, a.r.value, a.r.instrument.c_str());
+    }
+    return o;
+}
+
+std::string part_zr(const LatheWorld& w) {
+    double face = 0;
+    std::string o = "# pupitre part: half-section, Z from the right-hand face, R a radius (mm)\n";
+    if (!w.right_face(face)) return o;
+    bool first = true;
+    for (const CPath& q : w.material()) {
+        if (!first) o += '\n';
+        first = false;
+        for (const auto& v : q) {
+            Pt p = to_mm(v);
+            o += fixed3_zeroed(p[0] - face, 5e-5) + ' ' + fixed3_zeroed(p[1], 5e-5) + '\n';
+        }
+    }
+    return o;
+}
+
+namespace {
+
+void svg_path(std::string& o, const CPaths& ps, double face, const char* style) {
+    o += "<path " + std::string(style) + " d=\"";
+    for (const CPath& q : ps) {
+        for (size_t i = 0; i < q.size(); ++i) {
+            Pt p = to_mm(q[i]);
+            o += (i ? " L" : "M") + fixed3(p[0] - face) + ',' + fixed3(-p[1]);
+        }
+        o += " Z ";
+    }
+    o += "\"/>\n";
+}
+
+}  // namespace
+
+std::string part_svg(const LatheWorld& w, const std::string& title) {
+    double face = 0;
+    w.right_face(face);
+    // Everything drawn, with a margin of 5 mm.
+    double left = 1e300, right = -1e300, top = 0;
+    for (const CPaths* ps : {&w.material(), &w.chuck(), &w.tailstock()})
+        for (const CPath& q : *ps)
+            for (const auto& v : q) {
+                Pt p = to_mm(v);
+                left = std::min(left, p[0] - face), right = std::max(right, p[0] - face), top = std::max(top, p[1]);
+            }
+    if (left > right) left = -10, right = 0;
+    left -= 5, right += 5, top += 5;
+    std::string o = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+    o += "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" + fixed3(left) + ' ' + fixed3(-top) + ' ' +
+         fixed3(right - left) + ' ' + fixed3(top + 5) + "\" width=\"" + fixed3((right - left) * 8) + "\" height=\"" +
+         fixed3((top + 5) * 8) + "\">\n<title>";
+    for (char c : title) o += c == '<' ? std::string("&lt;") : c == '&' ? std::string("&amp;") : std::string(1, c);
+    o += "</title>\n";
+    // The spindle axis, the part filled, the jaws and the chuck outlined.
+    o += "<line x1=\"" + fixed3(left) + "\" y1=\"0\" x2=\"" + fixed3(right) +
+         "\" y2=\"0\" stroke=\"#888\" stroke-width=\"0.2\" stroke-dasharray=\"4 1 1 1\"/>\n";
+    svg_path(o, w.material(), face, "fill=\"#9bb0c8\" stroke=\"#1d3557\" stroke-width=\"0.1\" fill-rule=\"nonzero\"");
+    svg_path(o, w.chuck(), face, "fill=\"none\" stroke=\"#444\" stroke-width=\"0.3\"");
+    if (!w.tailstock().empty()) svg_path(o, w.tailstock(), face, "fill=\"none\" stroke=\"#444\" stroke-width=\"0.3\"");
+    o += "</svg>\n";
+    return o;
+}
+
+}  // namespace pupitre::workshop

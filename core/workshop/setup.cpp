@@ -1,0 +1,220 @@
+// Setup files: "key = value" lines, '#' comments (pupitre-setup(5)).
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/workshop/setup.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <functional>
+
+#include "core/i18n.hpp"
+
+namespace pupitre {
+namespace data {
+std::string_view setup_lathe();
+}  // namespace data
+
+namespace workshop {
+
+const ToolTruth* Setup::tool(int position) const {
+    for (const ToolTruth& t : tools)
+        if (t.position == position) return &t;
+    return nullptr;
+}
+
+namespace {
+
+std::string_view trim(std::string_view s) {
+    while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+    while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
+    return s;
+}
+
+bool number(std::string_view s, double& v) {
+    s = trim(s);
+    if (s.empty()) return false;
+    auto r = std::from_chars(s.data(), s.data() + s.size(), v);
+    return r.ec == std::errc() && r.ptr == s.data() + s.size() && std::isfinite(v) && std::abs(v) < 1e5;
+}
+
+// Reads a number into `out` if it lies in [lo, hi]; else says why.
+std::string in_range(std::string_view val, double lo, double hi, double& out) {
+    double v = 0;
+    if (!number(val, v)) return tr("expected a number");
+    if (v < lo || v > hi) return strf(tr("must be from %g to %g"), lo, hi);
+    out = v;
+    return {};
+}
+
+constexpr double kBig = 5000;  // mm: no workshop is larger
+
+// The setup's keys, by table: name, its smallest and largest value, the field.
+struct Key {
+    const char* name;
+    double lo, hi;
+    double LatheSetup::*field;
+};
+constexpr Key kLatheKeys[] = {
+    {"axis.x", -kBig, kBig, &LatheSetup::axis_x},
+    {"chuck.z", -kBig, kBig, &LatheSetup::chuck_z},
+    {"chuck.diameter", 10, 2000, &LatheSetup::chuck_diameter},
+    {"chuck.length", 1, 1000, &LatheSetup::chuck_length},
+    {"jaw.length", 1, 500, &LatheSetup::jaw_length},
+    {"jaw.height", 1, 500, &LatheSetup::jaw_height},
+    {"jaw.reach", 1, 500, &LatheSetup::jaw_reach},
+    {"stock.diameter", 0.1, 2000, &LatheSetup::stock_diameter},
+    {"stock.length", 0.1, kBig, &LatheSetup::stock_length},
+    {"stock.stickout", 0.1, kBig, &LatheSetup::stickout},
+    {"stock.bore", 0, 2000, &LatheSetup::bore},
+    {"tailstock.quill", 1, 500, &LatheSetup::quill_diameter},
+};
+
+struct ToolKey {
+    const char* name;
+    double lo, hi;
+    double ToolTruth::*field;
+};
+constexpr ToolKey kToolKeys[] = {
+    {"x", -kBig, kBig, &ToolTruth::x},       {"z", -kBig, kBig, &ToolTruth::z},
+    {"radius", 0, 10, &ToolTruth::radius},   {"angle", 20, 175, &ToolTruth::angle},
+    {"edge", 0.5, 100, &ToolTruth::edge},    {"wear", 0, 1000, &ToolTruth::wear},
+};
+
+// "z,x z,x ...": at least three points.
+std::string points(std::string_view val, std::vector<Pt>& out) {
+    out.clear();
+    while (!(val = trim(val)).empty()) {
+        size_t end = val.find_first_of(" \t");
+        std::string_view p = val.substr(0, end);
+        val = end == std::string_view::npos ? std::string_view{} : val.substr(end);
+        size_t comma = p.find(',');
+        Pt q{};
+        if (comma == std::string_view::npos || !number(p.substr(0, comma), q[0]) ||
+            !number(p.substr(comma + 1), q[1]))
+            return tr("expected points as Z,X Z,X Z,X");
+        out.push_back(q);
+        if (out.size() > 64) return tr("at most 64 points");
+    }
+    if (out.size() < 3) return tr("expected points as Z,X Z,X Z,X");
+    return {};
+}
+
+ToolTruth& tool_at(Setup& s, int position) {
+    for (ToolTruth& t : s.tools)
+        if (t.position == position) return t;
+    s.tools.push_back(ToolTruth{});
+    s.tools.back().position = position;
+    return s.tools.back();
+}
+
+// tool.N.FIELD = value
+std::string tool_key(Setup& s, std::string_view key, std::string_view val) {
+    key.remove_prefix(5);  // "tool."
+    int n = 0;
+    auto r = std::from_chars(key.data(), key.data() + key.size(), n);
+    if (r.ec != std::errc() || r.ptr == key.data() || n < 1 || n > 99 || r.ptr == key.data() + key.size() ||
+        *r.ptr != '.')
+        return tr("expected tool.N.FIELD with N from 1 to 99");
+    std::string_view field = key.substr(size_t(r.ptr - key.data()) + 1);
+    ToolTruth& t = tool_at(s, n);
+    for (const ToolKey& k : kToolKeys)
+        if (field == k.name) return in_range(val, k.lo, k.hi, t.*k.field);
+    if (field == "orientation") {
+        double c = 0;
+        if (std::string e = in_range(val, 0, 8, c); !e.empty()) return e;
+        if (c != std::floor(c)) return tr("must be a whole number from 0 to 8");
+        t.orientation = int(c);
+        return {};
+    }
+    if (field == "spindle") {
+        if (val == "M3" || val == "M03") t.spindle = 3;
+        else if (val == "M4" || val == "M04") t.spindle = 4;
+        else if (val == "any") t.spindle = 0;
+        else return tr("expected M3, M4 or any");
+        return {};
+    }
+    if (field == "probe") {
+        if (val == "yes") t.probe = true;
+        else if (val == "no") t.probe = false;
+        else return tr("expected yes or no");
+        return {};
+    }
+    if (field == "holder") return points(val, t.holder);
+    return strf(tr("unknown tool field '%.*s'"), int(field.size()), field.data());
+}
+
+std::string one_key(Setup& s, std::string_view key, std::string_view val) {
+    if (key == "name") return s.name = std::string(val), std::string{};
+    if (key == "description") return s.description = std::string(val), std::string{};
+    if (key == "kind") {
+        if (val != "lathe") return tr("only the lathe has a workshop yet (kind = lathe)");
+        s.kind = std::string(val);
+        return {};
+    }
+    if (key.substr(0, 5) == "tool.") return tool_key(s, key, val);
+    if (key == "stock.profile") return points(val, s.lathe.profile);
+    if (key == "tailstock.z") {
+        s.lathe.tailstock = true;
+        return in_range(val, -kBig, kBig, s.lathe.tailstock_z);
+    }
+    for (const Key& k : kLatheKeys)
+        if (key == k.name) return in_range(val, k.lo, k.hi, s.lathe.*k.field);
+    return strf(tr("unknown key '%.*s'"), int(key.size()), key.data());
+}
+
+// What no single line can say: the stock fits, the tools make sense.
+std::string consistent(const Setup& s) {
+    const LatheSetup& l = s.lathe;
+    if (s.kind.empty()) return tr("kind = lathe is missing");
+    if (l.bore >= l.stock_diameter) return tr("stock.bore must be smaller than stock.diameter");
+    if (l.stickout >= l.stock_length) return tr("stock.stickout must be shorter than stock.length");
+    if (l.stock_diameter / 2 + l.jaw_height > l.chuck_diameter / 2 + 100)
+        return tr("the jaws reach far beyond the chuck: check chuck.diameter and jaw.height");
+    if (l.tailstock && l.tailstock_z <= l.chuck_z + l.stickout - 1e-9)
+        return tr("tailstock.z must be to the right of the stock's face");
+    for (const Pt& p : l.profile)
+        if (p[0] > 1e-9 || p[0] < -l.stock_length - 1e-9 || p[1] < 0 || p[1] > l.stock_diameter / 2 + 1e-9)
+            return tr("stock.profile must lie within the bar: Z from -stock.length to 0, R from 0 to the radius");
+    for (const ToolTruth& t : s.tools)
+        if (t.edge <= t.radius) return strf(tr("tool.%d: edge must be longer than radius"), t.position);
+    return {};
+}
+
+}  // namespace
+
+std::string parse_setup(std::string_view text, Setup& s) {
+    s = Setup{};
+    Setup out;
+    int lineno = 0;
+    while (!text.empty()) {
+        ++lineno;
+        size_t eol = text.find('\n');
+        std::string_view line = text.substr(0, eol);
+        text = eol == std::string_view::npos ? std::string_view{} : text.substr(eol + 1);
+        if (size_t hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
+        line = trim(line);
+        if (line.empty()) continue;
+        size_t eq = line.find('=');
+        std::string why = eq == std::string_view::npos
+                              ? std::string(tr("expected key = value"))
+                              : one_key(out, trim(line.substr(0, eq)), trim(line.substr(eq + 1)));
+        if (!why.empty()) {
+            std::string_view key = trim(line.substr(0, eq));
+            if (eq == std::string_view::npos) return strf(tr("line %d: %s"), lineno, why.c_str());
+            return strf(tr("line %d: %.*s: %s"), lineno, int(key.size()), key.data(), why.c_str());
+        }
+        if (out.tools.size() > 99) return strf(tr("line %d: too many tools"), lineno);
+    }
+    if (std::string why = consistent(out); !why.empty()) return why;
+    s = std::move(out);
+    return {};
+}
+
+bool builtin_setup(std::string_view name, Setup& s) {
+    if (name != "lathe") return false;
+    return parse_setup(data::setup_lathe(), s).empty();
+}
+
+std::vector<std::string> builtin_setup_names() { return {"lathe"}; }
+
+}  // namespace workshop
+}  // namespace pupitre

@@ -1,0 +1,70 @@
+// The workshop's truth (DESIGN §5): where the chuck and the stock really are
+// and what each tool really measures, in the machine frame. The interpreter
+// never sees it; the workshop turns the OM path into cuts, contacts and
+// crashes with it. Text format: pupitre-setup(5).
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+#include <array>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace pupitre::workshop {
+
+using Pt = std::array<double, 2>;  // (Z, X) in mm, X a radius
+
+// A tool as it really is. The tip is given the way a presetter reads it and a
+// corrector holds it: the true gauge, OM - P for each axis, P being the
+// theoretical tool point of the nose (turning.md §3.5). On a lathe X is a radius.
+struct ToolTruth {
+    int position = 0;        // turret position 1..n
+    double x = 0, z = 0;     // true gauge (mm)
+    double radius = 0;       // nose radius (mm)
+    int orientation = 3;     // C1..C8 as in the corrector (turning.md §3.5); C0: a point
+    double angle = 80;       // the insert's tip angle (degrees)
+    double edge = 10;        // length of its cutting edges from the nose (mm)
+    int spindle = 0;         // 3 or 4: the direction it cuts with; 0: either
+    double wear = 0;         // µm per metre of cut
+    // The holder's outline, points relative to P (Z, X); empty: the default
+    // shank for the orientation (pupitre-setup(5)).
+    std::vector<Pt> holder;
+    bool probe = false;      // an electric touch probe: never cuts
+};
+
+struct LatheSetup {
+    // Chuck: the machine Z of the jaws' front face; the spindle axis's machine
+    // X as a tool point would read it (so the true PREF X).
+    double axis_x = 0;
+    double chuck_z = 0;
+    double chuck_diameter = 200, chuck_length = 80;   // the body behind the jaws
+    double jaw_length = 25, jaw_height = 20;          // along Z, radially above the stock
+    double jaw_reach = 25;                            // how far the bar goes into the jaws
+    // Bar stock.
+    double stock_diameter = 60, stock_length = 120, stickout = 95;  // stickout: from the jaws' face
+    double bore = 0;                                  // diameter, 0: solid
+    // A blank that is not a bar (a forging, a casting, a part turned
+    // before): its half-section, Z from the stock's right-hand face (<= 0)
+    // and R, replacing the bar's rectangle.
+    std::vector<Pt> profile;
+    // Tailstock centre: the machine Z of its point, if any.
+    bool tailstock = false;
+    double tailstock_z = 0, quill_diameter = 40;
+};
+
+struct Setup {
+    std::string name, description;
+    std::string kind;  // "lathe" (the machining centre's setup: a later issue)
+    LatheSetup lathe;
+    std::vector<ToolTruth> tools;  // by position, in file order
+    const ToolTruth* tool(int position) const;
+};
+
+// Parses a setup; returns "" or "line N: what is wrong". On error `s` is
+// left default.
+std::string parse_setup(std::string_view text, Setup& s);
+// A setup shipped in data/setups (lathe); false if there is none by that name.
+bool builtin_setup(std::string_view name, Setup& s);
+// The names of the shipped setups.
+std::vector<std::string> builtin_setup_names();
+
+}  // namespace pupitre::workshop

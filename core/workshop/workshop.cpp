@@ -1,0 +1,297 @@
+// The workshop: events in, cuts and crashes out (see workshop.hpp).
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/workshop/workshop.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+
+#include "core/geometry/geometry.hpp"
+#include "core/i18n.hpp"
+#include "core/numfmt.hpp"
+
+namespace pupitre::workshop {
+
+namespace {
+
+// The tool-point path cut at `f` (0..1) of its length.
+std::vector<Pt> prefix(const std::vector<Pt>& p, double f, double* at_index = nullptr) {
+    double total = 0;
+    for (size_t i = 1; i < p.size(); ++i) total += std::hypot(p[i][0] - p[i - 1][0], p[i][1] - p[i - 1][1]);
+    std::vector<Pt> out{p.front()};
+    double left = f * total;
+    for (size_t i = 1; i < p.size(); ++i) {
+        double l = std::hypot(p[i][0] - p[i - 1][0], p[i][1] - p[i - 1][1]);
+        if (l >= left) {
+            double t = l > 0 ? left / l : 0;
+            out.push_back({p[i - 1][0] + t * (p[i][0] - p[i - 1][0]), p[i - 1][1] + t * (p[i][1] - p[i - 1][1])});
+            if (at_index) *at_index = double(i - 1) + t;
+            return out;
+        }
+        left -= l;
+        out.push_back(p[i]);
+    }
+    if (at_index) *at_index = double(p.size() - 1);
+    return out;
+}
+
+double length_of(const std::vector<Pt>& p) {
+    double total = 0;
+    for (size_t i = 1; i < p.size(); ++i) total += std::hypot(p[i][0] - p[i - 1][0], p[i][1] - p[i - 1][1]);
+    return total;
+}
+
+}  // namespace
+
+Workshop::Workshop(const MachineProfile& m, const Setup& s, MachineSink* next)
+    : m_(m), setup_(s), world_(s.lathe), next_(next) {
+    int top = 0;
+    for (const ToolTruth& t : setup_.tools) top = std::max(top, t.position);
+    tools_.resize(size_t(top) + 1);
+    for (const ToolTruth& t : setup_.tools) {
+        Tool& slot = tools_[size_t(t.position)];
+        slot.truth = setup_.tool(t.position);
+        slot.shape = tool_shape(t);
+    }
+}
+
+Workshop::Tool* Workshop::current() {
+    return tool_ > 0 && size_t(tool_) < tools_.size() && tools_[size_t(tool_)].truth ? &tools_[size_t(tool_)] : nullptr;
+}
+const Workshop::Tool* Workshop::current() const { return const_cast<Workshop*>(this)->current(); }
+
+double Workshop::cut_length(int tool) const {
+    return tool > 0 && size_t(tool) < tools_.size() ? tools_[size_t(tool)].cut : 0;
+}
+
+Pt Workshop::tip(const Axes& om) const {
+    const Tool* t = current();
+    if (!t) return {om[Z], om[X] - setup_.lathe.axis_x};
+    const ToolTruth& tt = *t->truth;
+    Pt p{om[Z] - tt.z, om[X] - tt.x - setup_.lathe.axis_x};
+    if (tt.wear > 0 && t->cut > 0) {
+        // Wear takes the nose back into the insert, along its bisector
+        // (pupitre-setup(5)): µm per metre of cut.
+        static constexpr int kNose[9][2] = {{-1, -1}, {1, 1}, {1, -1}, {-1, -1}, {-1, 1},
+                                            {0, 1},   {1, 0}, {0, -1}, {-1, 0}};
+        const int c = std::clamp(tt.orientation, 0, 8);
+        double ux = -kNose[c][0], uz = -kNose[c][1], n = std::hypot(ux, uz);
+        double w = tt.wear * 1e-3 * (t->cut / 1000);
+        p[0] += w * uz / n;
+        p[1] += w * ux / n;
+    }
+    return p;
+}
+
+void Workshop::path_of(const MoveEvent& e, std::vector<Axes>& out) const {
+    out.clear();
+    out.push_back(e.from_mach);
+    if (e.g == 2 || e.g == 3) {
+        const int a0 = e.plane_a0, a1 = e.plane_a1;
+        Pt c{e.c0 + e.to_mach[size_t(a0)] - e.to_prog[size_t(a0)], e.c1 + e.to_mach[size_t(a1)] - e.to_prog[size_t(a1)]};
+        std::vector<Pt> pts;
+        arc_points({e.from_mach[size_t(a0)], e.from_mach[size_t(a1)]}, c, e.sweep * geometry::kDeg, pts);
+        for (size_t i = 0; i + 1 < pts.size(); ++i) {
+            double f = double(i + 1) / double(pts.size());
+            Axes p = e.from_mach;
+            for (size_t a = 0; a < p.size(); ++a) p[a] += f * (e.to_mach[a] - e.from_mach[a]);
+            p[size_t(a0)] = pts[i][0];
+            p[size_t(a1)] = pts[i][1];
+            out.push_back(p);
+        }
+    }
+    out.push_back(e.to_mach);
+}
+
+std::string Workshop::where(const Pt& p) const {
+    // The contact in the part's terms, which do not depend on PREF: the
+    // diameter and the distance from the stock's face as it was loaded.
+    double face = setup_.lathe.chuck_z + setup_.lathe.stickout;
+    // TRANSLATORS: where a crash happened: a diameter, then the distance from the stock's face.
+    return strf(tr("at \u00f8%s, %s mm from the stock's face"), fixed3(2 * std::abs(p[1])).c_str(),
+                fixed3(p[0] - face).c_str());
+}
+
+bool Workshop::check(const MoveEvent& e, const std::vector<Pt>& tips, const std::vector<Axes>& oms) {
+    Tool* t = current();
+    if (!t) return true;
+    const ToolTruth& tt = *t->truth;
+    struct Hit {
+        int code;
+        const CPath* shape;
+        Obstacle what;
+    };
+    bool feed = e.g != 0, stopped = dir_ != 3 && dir_ != 4;
+    bool cutting = feed && !stopped && !tt.probe && (tt.spindle == 0 || tt.spindle == dir_);
+    int insert_code = tt.probe ? kCrashProbe
+                      : !feed  ? kCrashRapid
+                      : stopped ? kCrashStopped
+                                : kCrashDirection;
+    Hit hits[] = {{kCrashChuck, &t->shape.insert, Obstacle::chuck},
+                  {kCrashChuck, &t->shape.holder, Obstacle::chuck},
+                  {kCrashChuck, &t->shape.insert, Obstacle::tailstock},
+                  {kCrashChuck, &t->shape.holder, Obstacle::tailstock},
+                  {kCrashHolder, &t->shape.holder, Obstacle::material},
+                  {insert_code, &t->shape.insert, Obstacle::material}};
+    double first = 2;
+    const Hit* worst = nullptr;
+    for (const Hit& h : hits) {
+        if (h.code == insert_code && h.what == Obstacle::material && cutting) continue;
+        if (world_.depth_into(LatheWorld::sweep(*h.shape, tips), h.what) <= kCrashDepth) continue;
+        // The first point of contact along the move, to 0.1 µm.
+        double lo = 0, hi = 1, total = length_of(tips);
+        for (int i = 0; i < 60 && (hi - lo) * total > 1e-4; ++i) {
+            double mid = (lo + hi) / 2;
+            if (world_.depth_into(LatheWorld::sweep(*h.shape, prefix(tips, mid)), h.what) > kCrashDepth) hi = mid;
+            else lo = mid;
+        }
+        if (hi < first) first = hi, worst = &h;
+    }
+    double f = worst ? first : 1;
+    std::vector<Pt> done = prefix(tips, f);
+    if (cutting) {
+        double removed = world_.cut(LatheWorld::sweep(t->shape.insert, done));
+        if (removed > 1e-9) t->cut += length_of(done);
+    }
+    if (!worst) return true;
+    double at = 0;
+    prefix(tips, f, &at);
+    size_t i = std::min(size_t(at), oms.size() - 1), j = std::min(i + 1, oms.size() - 1);
+    Crash c;
+    c.code = worst->code;
+    c.loc = e.loc;
+    c.tool = tool_;
+    for (size_t a = 0; a < c.om.size(); ++a) c.om[a] = oms[i][a] + (at - double(i)) * (oms[j][a] - oms[i][a]);
+    const std::string place = where(done.back());
+    const bool holder = worst->shape == &t->shape.holder;
+    switch (c.code) {
+    case kCrashRapid: c.what = strf(tr("crash: T%d rapid (G0) into the part %s"), tool_, place.c_str()); break;
+    case kCrashStopped:
+        c.what = strf(tr("crash: T%d fed into the part with the spindle stopped %s"), tool_, place.c_str());
+        break;
+    case kCrashDirection:
+        c.what = strf(tr("crash: T%d cuts with M%d, the spindle turns M%d, %s"), tool_, tt.spindle, dir_,
+                      place.c_str());
+        break;
+    case kCrashProbe: c.what = strf(tr("crash: the probe T%d was driven into the part %s"), tool_, place.c_str()); break;
+    case kCrashHolder: c.what = strf(tr("crash: the holder of T%d hit the part %s"), tool_, place.c_str()); break;
+    default:
+        c.what = worst->what == Obstacle::chuck
+                     ? strf(holder ? tr("crash: the holder of T%d hit the chuck %s")
+                                   : tr("crash: T%d hit the chuck %s"),
+                            tool_, place.c_str())
+                     : strf(holder ? tr("crash: the holder of T%d hit the tailstock %s")
+                                   : tr("crash: T%d hit the tailstock %s"),
+                            tool_, place.c_str());
+    }
+    crashes_.push_back(std::move(c));
+    return false;
+}
+
+void Workshop::move(const MoveEvent& e) {
+    if (crashed()) return;  // the machine stopped at the contact
+    std::vector<Axes> oms;
+    path_of(e, oms);
+    std::vector<Pt> tips;
+    tips.reserve(oms.size());
+    for (const Axes& om : oms) tips.push_back(tip(om));
+    if (check(e, tips, oms)) {
+        if (next_) next_->move(e);
+        return;
+    }
+    // The move as far as the contact.
+    MoveEvent cut = e;
+    const Axes& stop = crashes_.back().om;
+    double f = e.length > 0 ? 0 : 1;
+    for (size_t a = 0; a < stop.size(); ++a) {
+        cut.to_prog[a] += stop[a] - e.to_mach[a];
+        double whole = e.to_mach[a] - e.from_mach[a];
+        if (std::abs(whole) > 1e-9) f = std::max(f, (stop[a] - e.from_mach[a]) / whole);
+    }
+    cut.to_mach = stop;
+    cut.sweep *= f;
+    cut.length *= f;
+    cut.seconds *= f;
+    if (next_) next_->move(cut);
+}
+
+void Workshop::tool(const Loc& l, int t, int d, double s, bool m6) {
+    if (m6 || t != tool_) tool_ = t;
+    if (next_) next_->tool(l, t, d, s, m6);
+}
+
+void Workshop::spindle(const SpindleEvent& e) {
+    dir_ = e.dir;
+    rpm_ = e.rpm;
+    if (next_) next_->spindle(e);
+}
+
+// --- instruments ---
+
+namespace {
+
+struct Instrument {
+    const char* word;       // the request's first word
+    const char* name;       // N_()-marked: what reads it
+    double resolution;
+    bool needs_z;
+};
+constexpr Instrument kInstruments[] = {
+    {"dia", N_("micrometer"), 0.001, true},
+    {"bore", N_("bore gauge"), 0.001, true},
+    {"groove", N_("caliper"), 0.01, true},
+    {"length", N_("depth gauge"), 0.01, false},
+};
+
+double rounded(double v, double res) { return std::round(v / res) * res; }
+
+}  // namespace
+
+std::string Workshop::measure(std::string_view spec, Reading& r) const {
+    r = Reading{};
+    r.spec = std::string(spec);
+    std::string_view s = spec;
+    while (!s.empty() && s.front() == ' ') s.remove_prefix(1);
+    size_t sp = s.find(' ');
+    std::string_view word = s.substr(0, sp), rest = sp == std::string_view::npos ? "" : s.substr(sp + 1);
+    while (!rest.empty() && rest.front() == ' ') rest.remove_prefix(1);
+    while (!rest.empty() && rest.back() == ' ') rest.remove_suffix(1);
+    const Instrument* in = nullptr;
+    for (const Instrument& i : kInstruments)
+        if (word == i.word) in = &i;
+    if (!in) return tr("expected dia Z-n, bore Z-n, groove Z-n or length");
+    double face = 0;
+    if (!world_.right_face(face)) return tr("there is no part");
+    double dz = 0;
+    if (in->needs_z) {
+        if (rest.size() < 2 || (rest[0] != 'Z' && rest[0] != 'z'))
+            return strf(tr("%s needs a Z: how far from the part's right-hand face (Z-20)"), in->word);
+        auto res = std::from_chars(rest.data() + 1, rest.data() + rest.size(), dz);
+        if (res.ec != std::errc() || res.ptr != rest.data() + rest.size() || !std::isfinite(dz))
+            return strf(tr("%s needs a Z: how far from the part's right-hand face (Z-20)"), in->word);
+        if (dz > 0) return tr("Z is measured from the part's right-hand face: a negative distance (Z-20)");
+    } else if (!rest.empty()) {
+        return strf(tr("%s takes no Z"), in->word);
+    }
+    const double z = face + dz;
+    r.instrument = tr(in->name);
+    r.resolution = in->resolution;
+    double v = 0, a = 0, b = 0;
+    if (in->word == std::string_view("dia")) {
+        if (!world_.outer_radius(z, v)) return tr("no material there");
+        v *= 2;
+    } else if (in->word == std::string_view("bore")) {
+        if (!world_.outer_radius(z, a)) return tr("no material there");
+        if (!world_.inner_radius(z, v)) return tr("the part is solid there");
+        v *= 2;
+    } else if (in->word == std::string_view("groove")) {
+        if (!world_.groove(z, a, b)) return tr("no groove there: Z must be on a groove's bottom");
+        v = b - a;
+    } else {
+        v = face - setup_.lathe.chuck_z;  // from the jaws' face
+    }
+    r.value = rounded(v, in->resolution);
+    return {};
+}
+
+}  // namespace pupitre::workshop

@@ -1,0 +1,106 @@
+// The workshop (DESIGN §5): the interpreter's events, OM positions computed
+// from what the operator entered, become what really happens to the setup's
+// true part and tools: cuts, contacts, crashes. A MachineSink that passes
+// every event on to the next sink (the trace, the console's queue).
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/interp/interp.hpp"
+#include "core/workshop/lathe_part.hpp"
+#include "core/workshop/setup.hpp"
+
+namespace pupitre::workshop {
+
+// Workshop alarms, 1200-1299 (DESIGN §2.2; pupitre(1), DIAGNOSTICS).
+inline constexpr int kCrashRapid = 1200;         // a rapid into the material
+inline constexpr int kCrashStopped = 1201;       // a feed into the material, spindle stopped
+inline constexpr int kCrashChuck = 1202;         // the tool or holder hits the chuck or tailstock
+inline constexpr int kCrashHolder = 1203;        // the holder or shank hits the material
+inline constexpr int kCrashDirection = 1204;     // cutting with the spindle turning the wrong way
+inline constexpr int kCrashProbe = 1205;         // a touch probe driven into the material
+
+// A contact deeper than this is a crash; a tool that only touches (a finishing
+// pass along a cut face) is not (mm, about twice the chord error).
+inline constexpr double kCrashDepth = 2e-3;
+
+struct Crash {
+    int code = 0;
+    Loc loc;
+    int tool = 0;
+    Axes om{};        // where the motion stopped: the contact
+    std::string what; // the message: what hit what, where
+};
+
+// One instrument's reading (pupitre-setup(5), MEASUREMENTS).
+struct Reading {
+    std::string spec;        // as asked: "dia Z-20"
+    std::string instrument;  // "micrometer", "caliper", …
+    double value = 0;        // mm, rounded to the instrument's resolution
+    double resolution = 0;   // mm
+};
+
+class Workshop final : public MachineSink {
+public:
+    // `next` receives every event after the workshop (may be null).
+    Workshop(const MachineProfile& m, const Setup& s, MachineSink* next);
+
+    const Setup& setup() const { return setup_; }
+    const MachineProfile& machine() const { return m_; }
+    LatheWorld& world() { return world_; }
+    const LatheWorld& world() const { return world_; }
+    bool crashed() const { return !crashes_.empty(); }
+    const std::vector<Crash>& crashes() const { return crashes_; }
+    void clear_crash() { crashes_.clear(); }  // RAZ: the alarm is acknowledged
+    int tool() const { return tool_; }
+    double cut_length(int tool) const;  // mm of feed in material so far
+
+    // The true tool point of the tool in use for a machine position (Z, R).
+    Pt tip(const Axes& om) const;
+    // Reads an instrument; "" or what is wrong with the request.
+    std::string measure(std::string_view spec, Reading& r) const;
+
+    // MachineSink
+    void move(const MoveEvent& e) override;
+    void dwell(const Loc& l, double s) override { if (next_) next_->dwell(l, s); }
+    void tool(const Loc& l, int t, int d, double s, bool m6) override;
+    void spindle(const SpindleEvent& e) override;
+    void coolant(const Loc& l, bool a, bool b) override { if (next_) next_->coolant(l, a, b); }
+    void stop(const Loc& l, int m) override { if (next_) next_->stop(l, m); }
+    void message(const Loc& l, int c, std::string_view t) override { if (next_) next_->message(l, c, t); }
+    void end(const Loc& l, int m) override { if (next_) next_->end(l, m); }
+    void stock(const Loc& l, const std::vector<std::array<double, 2>>& zr) override {
+        if (next_) next_->stock(l, zr);
+    }
+    void profile(const Loc& l, const ProfileElem& p) override { if (next_) next_->profile(l, p); }
+
+private:
+    struct Tool {
+        const ToolTruth* truth = nullptr;
+        ToolShape shape;
+        double cut = 0;  // mm of feed in material
+    };
+    Tool* current();
+    const Tool* current() const;
+    // The machine positions along a move, arcs within the chord error.
+    void path_of(const MoveEvent& e, std::vector<Axes>& out) const;
+    // Checks a path of the tool; on a crash records it and returns false,
+    // `stop` being the index fraction where the motion ends.
+    bool check(const MoveEvent& e, const std::vector<Pt>& tips, const std::vector<Axes>& oms);
+    std::string where(const Pt& p) const;
+
+    const MachineProfile& m_;
+    Setup setup_;
+    LatheWorld world_;
+    MachineSink* next_;
+    std::vector<Tool> tools_;  // by turret position (0: none)
+    int tool_ = 0;
+    int dir_ = 5;
+    double rpm_ = 0;
+    std::vector<Crash> crashes_;
+};
+
+}  // namespace pupitre::workshop

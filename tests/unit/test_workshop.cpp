@@ -1,0 +1,300 @@
+// The workshop against parts worked out by hand (issue 15): the setup file,
+// the material, contacts and crashes, the instruments. The shipped lathe
+// setup's truth: the axis at X -20 (radius), the stock's face at Z 35, T1's
+// gauge X 52.347 Z 41.215, nose radius 0.8, C3 (data/setups/lathe.setup).
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+
+#include "core/workshop/report.hpp"
+#include "core/workshop/workshop.hpp"
+
+namespace pupitre {
+namespace data {
+std::string_view setup_lathe();
+}
+
+namespace workshop {
+namespace {
+
+// A program run in the workshop of the shipped lathe setup, changed by
+// `extra` setup lines, with the operator's values `sets`.
+struct Shop {
+    MachineProfile machine;
+    ProgramMemory mem;
+    workshop::Setup setup;
+    std::unique_ptr<Workshop> shop;
+    std::unique_ptr<Interpreter> in;
+    std::string setup_error;
+
+    Shop(const std::string& program, std::vector<std::pair<std::string, double>> sets,
+         const std::string& extra = "") {
+        builtin_machine("lathe", machine);
+        setup_error = parse_setup(std::string(data::setup_lathe()) + "\n" + extra, setup);
+        shop = std::make_unique<Workshop>(machine, setup, nullptr);
+        Diag d;
+        mem.load_text("test.iso", program, d);
+        in = std::make_unique<Interpreter>(machine, mem, *shop, RunOptions{});
+        for (auto& [k, v] : sets) in->set(k, v);
+        in->start(mem.first());
+        for (StepResult r = StepResult::running;
+             !shop->crashed() && (r == StepResult::running || r == StepResult::stopped);)
+            r = in->step();
+    }
+    double read(const std::string& spec) {
+        Reading r;
+        std::string e = shop->measure(spec, r);
+        EXPECT_EQ(e, "") << spec;
+        return r.value;
+    }
+    int crash() const { return shop->crashed() ? shop->crashes().front().code : 0; }
+};
+
+// The operator's values that match the truth.
+std::vector<std::pair<std::string, double>> right(double pref_x = -20, double pref_z = 35, double d1x = 52.347,
+                                                  double d1z = 41.215) {
+    return {{"PREF.X", pref_x}, {"PREF.Z", pref_z}, {"D1.X", d1x}, {"D1.Z", d1z}};
+}
+
+const char* kTurn = R"(%10
+N10 T1 D1 M6
+N20 S1000 M3
+N30 G95 F0.2
+N40 G0 X56 Z2
+N50 G1 Z-40
+N60 X62
+N70 G0 Z2
+N80 X50
+N90 G1 Z-20
+N100 X58
+N110 G0 X100 Z50
+N120 M2
+)";
+
+TEST(Setup, ShippedLatheParses) {
+    workshop::Setup s;
+    ASSERT_TRUE(builtin_setup("lathe", s));
+    EXPECT_EQ(s.name, "lathe");
+    EXPECT_DOUBLE_EQ(s.lathe.axis_x, -20);
+    EXPECT_DOUBLE_EQ(s.lathe.chuck_z + s.lathe.stickout, 35);
+    ASSERT_NE(s.tool(1), nullptr);
+    EXPECT_DOUBLE_EQ(s.tool(1)->x, 52.347);
+    EXPECT_EQ(s.tool(3)->orientation, 2);
+    EXPECT_EQ(s.tool(9), nullptr);
+}
+
+TEST(Setup, ErrorsNameTheLine) {
+    workshop::Setup s;
+    EXPECT_EQ(parse_setup("kind = lathe\nstock.diameter = abc\n", s), "line 2: stock.diameter: expected a number");
+    EXPECT_EQ(parse_setup("kind = lathe\nfoo = 1\n", s), "line 2: foo: unknown key 'foo'");
+    EXPECT_EQ(parse_setup("kind = lathe\ntool.0.x = 1\n", s), "line 2: tool.0.x: expected tool.N.FIELD with N from 1 to 99");
+    EXPECT_EQ(parse_setup("kind = lathe\ntool.1.orientation = 2.5\n", s),
+              "line 2: tool.1.orientation: must be a whole number from 0 to 8");
+    EXPECT_EQ(parse_setup("kind = lathe\nstock.bore = 70\n", s), "stock.bore must be smaller than stock.diameter");
+    EXPECT_EQ(parse_setup("stock.diameter = 10\n", s), "kind = lathe is missing");
+    EXPECT_EQ(parse_setup("kind = mill\n", s), "line 1: kind: only the lathe has a workshop yet (kind = lathe)");
+    EXPECT_EQ(parse_setup("kind = lathe\njaw.height\n", s), "line 2: expected key = value");
+    EXPECT_EQ(parse_setup("kind = lathe\ntool.2.holder = 1,2 3\n", s), "line 2: tool.2.holder: expected points as Z,X Z,X Z,X");
+    EXPECT_EQ(s.name, "");  // nothing half-read
+}
+
+TEST(Workshop, RightValuesTurnTheDrawing) {
+    Shop s(kTurn, right());
+    EXPECT_EQ(s.crash(), 0);
+    EXPECT_DOUBLE_EQ(s.read("dia Z-10"), 50.000);
+    EXPECT_DOUBLE_EQ(s.read("dia Z-30"), 56.000);
+    EXPECT_DOUBLE_EQ(s.read("dia Z-50"), 60.000);
+    EXPECT_DOUBLE_EQ(s.read("length"), 95.00);
+}
+
+TEST(Workshop, PrefXWrongByATenthMakesEveryDiameterTwoTenthsLarger) {
+    // PREF X is a radius: +0.1 puts the tool 0.1 further from the axis.
+    Shop s(kTurn, right(-19.9));
+    EXPECT_DOUBLE_EQ(s.read("dia Z-10"), 50.200);
+    EXPECT_DOUBLE_EQ(s.read("dia Z-30"), 56.200);
+}
+
+TEST(Workshop, ZGaugeOffMovesEveryFace) {
+    // Facing 1 mm off the stock, then a shoulder 20 mm from the program's Z0.
+    const char* face = R"(%11
+N10 T1 D1 M6
+N20 S1000 M3 G95 F0.2
+N30 G0 X64 Z-1
+N40 G1 X-2
+N50 G0 Z2
+N60 X50
+N70 G1 Z-20
+N80 X62
+N90 G0 X100 Z50
+N100 M2
+)";
+    Shop good(face, right());
+    EXPECT_DOUBLE_EQ(good.read("length"), 94.00);
+    // The gauge entered 0.05 too long: the tool really stops 0.05 short (+Z).
+    Shop off(face, right(-20, 35, 52.347, 41.265));
+    EXPECT_DOUBLE_EQ(off.read("length"), 94.05);
+    // The shoulder moved with the face: 19 mm from it, Ø50 before, Ø60 after.
+    EXPECT_DOUBLE_EQ(off.read("dia Z-18"), 50.000);
+    EXPECT_DOUBLE_EQ(off.read("dia Z-20"), 60.000);
+    EXPECT_EQ(off.crash(), 0);
+}
+
+TEST(Workshop, UncompensatedNoseLeavesItsCuspOnATaper) {
+    // A 45° chamfer followed by the tool point P with no G41/G42: the nose
+    // (r 0.8, C3) stands r·(√2 - 1) off the line, R + r·(2 - √2) at any Z:
+    // the diameter is 2·0.8·(2 - √2) = 0.937 too large in the middle.
+    const char* taper = R"(%12
+N10 T1 D1 M6
+N20 S1000 M3 G95 F0.2
+N30 G0 X48 Z2
+N40 G1 Z0
+N50 X56 Z-4
+N60 Z-30
+N70 X62
+N80 G0 X100 Z50
+N90 M2
+)";
+    Shop s(taper, right());
+    ASSERT_EQ(s.crash(), 0);
+    EXPECT_NEAR(s.read("dia Z-2"), 52 + 1.6 * (2 - std::sqrt(2.0)), 0.0006);
+    EXPECT_DOUBLE_EQ(s.read("dia Z-20"), 56.000);
+}
+
+TEST(Workshop, WornToolLeavesMaterial) {
+    // 1000 µm per metre: the first pass (G1 Z2 -> Z-50, 52 mm) wears 0.052 mm,
+    // along C3's bisector: R + 0.052/√2 on the second pass.
+    const char* two = R"(%13
+N10 T1 D1 M6
+N20 S1000 M3 G95 F0.2
+N30 G0 X56 Z2
+N40 G1 Z-50
+N50 G0 X62
+N60 Z2
+N70 X50
+N80 G1 Z-20
+N90 G0 X100 Z50
+N100 M2
+)";
+    Shop s(two, right(), "tool.1.wear = 1000\n");
+    ASSERT_EQ(s.setup_error, "");
+    EXPECT_NEAR(s.shop->cut_length(1), 52 + 50.0 / 1, 60);  // both passes cut
+    EXPECT_NEAR(s.read("dia Z-10"), 50 + 2 * 0.052 / std::sqrt(2.0), 0.0006);
+}
+
+TEST(Workshop, RapidIntoThePartIsACrashThatStopsAtTheContact) {
+    // PREF Z entered as 25 instead of 35: the approach X56 Z2 ends 8 mm
+    // inside the bar, and the rapid from the turret's start position (tool
+    // point R 97.6, Z 158.8) enters it through Ø60.
+    Shop s(kTurn, right(-20, 25));
+    ASSERT_EQ(s.crash(), kCrashRapid);
+    const Crash& c = s.shop->crashes().front();
+    EXPECT_EQ(c.loc.n, 40);
+    // G0 X56 Z2 from the home position: the tool point reaches the bar's
+    // Ø60 first; the machine stops with the insert just into it.
+    Pt p = s.shop->tip(c.om);
+    // Stopped as the nose entered the bar through its Ø60: P, the nose's
+    // lowest point for C3, is on the line to Z 27 R 28, just below R 30.
+    EXPECT_NEAR(p[1], 30, 0.01);
+    EXPECT_GT(p[0], 27);
+    EXPECT_NE(c.what.find("rapid (G0) into the part"), std::string::npos);
+}
+
+TEST(Workshop, FeedWithTheSpindleStoppedIsACrash) {
+    std::string p = kTurn;
+    p.replace(p.find("S1000 M3"), 8, "S1000 M5");
+    p.replace(p.find("G95 F0.2"), 8, "G94 F100");
+    Shop s(p, right());
+    EXPECT_EQ(s.crash(), kCrashStopped);
+    EXPECT_EQ(s.shop->crashes().front().loc.n, 50);
+}
+
+TEST(Workshop, WrongSpindleDirectionForTheToolIsACrash) {
+    Shop s(kTurn, right(), "tool.1.spindle = M4\n");
+    EXPECT_EQ(s.crash(), kCrashDirection);
+}
+
+TEST(Workshop, TheChuckStopsTheTool) {
+    std::string p = kTurn;
+    p.replace(p.find("G1 Z-40"), 7, "G1 Z-99");
+    Shop s(p, right());
+    ASSERT_EQ(s.crash(), kCrashChuck);
+    // The jaws grip the bar at Ø60, their face 95 mm from the stock's face:
+    // the insert's leading edge, square above the nose, meets it when P
+    // reaches it.
+    Pt at = s.shop->tip(s.shop->crashes().front().om);
+    EXPECT_NEAR(at[0] - 35, -95.0, 0.003);
+}
+
+TEST(Workshop, TooDeepACutBringsTheHolderIn) {
+    // Ø60 -> Ø34 in one pass: 13 mm of radius, more than the insert's 10.8.
+    std::string p = kTurn;
+    p.replace(p.find("X56 Z2"), 6, "X34 Z2");
+    Shop s(p, right());
+    EXPECT_EQ(s.crash(), kCrashHolder);
+}
+
+TEST(Workshop, ProbeDrivenIntoThePartIsACrash) {
+    Shop s(kTurn, right(), "tool.1.probe = yes\n");
+    EXPECT_EQ(s.crash(), kCrashProbe);
+}
+
+TEST(Workshop, SharpToolFollowsAnArcExactly) {
+    // A point tool (r 0) traces the programmed arc: G2 (clockwise, X up)
+    // from Ø50 Z0 to Ø60 Z-5 with R5 is the concave quarter about Ø60 Z0:
+    // R(z) = 30 - √(25 - z²), at z = -2.5: 30 - √18.75.
+    const char* arc = R"(%14
+N10 T1 D1 M6
+N20 S1000 M3 G95 F0.2
+N30 G0 X50 Z2
+N40 G1 Z0
+N50 G2 X60 Z-5 R5
+N60 G1 X62
+N70 G0 X100 Z50
+N80 M2
+)";
+    Shop s(arc, right(), "tool.1.radius = 0\n");
+    ASSERT_EQ(s.crash(), 0);
+    // Within the path's chord error (0.5 µm on the radius, 1 µm on the
+    // diameter) and the micrometer's rounding (0.5 µm).
+    EXPECT_NEAR(s.read("dia Z-2.5"), 2 * (30 - std::sqrt(18.75)), 2 * kChord + 0.0005 + 1e-9);
+}
+
+TEST(Instruments, BoreGrooveAndErrors) {
+    workshop::Setup st;
+    ASSERT_EQ(parse_setup(std::string(data::setup_lathe()) + "\nstock.bore = 20\n", st), "");
+    MachineProfile m;
+    builtin_machine("lathe", m);
+    Workshop w(m, st, nullptr);
+    // A groove 4 mm wide, 3 deep, 10 mm from the face (Z 35).
+    CPaths g{{to_int({21, 27}), to_int({25, 27}), to_int({25, 31}), to_int({21, 31})}};
+    w.world().cut(g);
+    Reading r;
+    EXPECT_EQ(w.measure("bore Z-5", r), "");
+    EXPECT_DOUBLE_EQ(r.value, 20.000);
+    EXPECT_EQ(w.measure("groove Z-12", r), "");
+    EXPECT_DOUBLE_EQ(r.value, 4.00);
+    EXPECT_EQ(r.instrument, "caliper");
+    EXPECT_EQ(w.measure("dia Z-12", r), "");
+    EXPECT_DOUBLE_EQ(r.value, 54.000);
+    EXPECT_EQ(w.measure("groove Z-5", r), "no groove there: Z must be on a groove's bottom");
+    EXPECT_EQ(w.measure("dia Z5", r), "Z is measured from the part's right-hand face: a negative distance (Z-20)");
+    EXPECT_EQ(w.measure("dia", r), "dia needs a Z: how far from the part's right-hand face (Z-20)");
+    EXPECT_EQ(w.measure("dia Z-200", r), "no material there");
+    EXPECT_EQ(w.measure("weight", r), "expected dia Z-n, bore Z-n, groove Z-n or length");
+    EXPECT_EQ(w.measure("length Z-3", r), "length takes no Z");
+}
+
+TEST(Instruments, PartExportIsTheHalfSection) {
+    Shop s(kTurn, right());
+    std::string zr = part_zr(s.shop->world());
+    EXPECT_EQ(zr.rfind("# pupitre part", 0), 0u);
+    EXPECT_NE(zr.find("\n0.000 25.000\n"), std::string::npos);
+    std::string svg = part_svg(s.shop->world(), "t<1>");
+    EXPECT_NE(svg.find("<title>t&lt;1></title>"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace workshop
+}  // namespace pupitre
