@@ -7,6 +7,9 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <fstream>
+#include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -209,7 +212,91 @@ Effect touch(Session& s, const CommandCall& c) {
     return s.touch(axis, v);
 }
 
+// ---- the workshop (pupitre-setup(5)) ----
+
+// An instrument's reading of the part: ":measure dia Z-20".
+Effect read_instrument(Session& s, const CommandCall& c) {
+    const workshop::Workshop* w = s.sim().shop();
+    if (!w) {
+        s.say(tr("no workshop: :setup lathe puts a part in the chuck"), true);
+        return Effect::redraw;
+    }
+    workshop::Reading r;
+    std::string spec(c.rest());
+    while (!spec.empty() && spec.front() == ' ') spec.erase(0, 1);
+    if (std::string why = w->measure(spec, r); !why.empty()) {
+        s.say(strf(tr("%s: %s"), spec.c_str(), why.c_str()), true);
+        return Effect::redraw;
+    }
+    int decimals = r.resolution < 0.005 ? 3 : 2;
+    // TRANSLATORS: the instrument, what it measured, the reading in mm.
+    s.say(strf(tr("%s: %s = %.*f mm"), r.instrument.c_str(), spec.c_str(), decimals, r.value));
+    return Effect::redraw;
+}
+
+bool instrument_word(std::string_view w) {
+    return w == "dia" || w == "bore" || w == "groove" || w == "length";
+}
+
+Effect setup(Session& s, const CommandCall& c) {
+    std::string_view what = c.arg(1);
+    workshop::Workshop* now = s.sim().shop();
+    if (what.empty()) {
+        s.say(now ? strf(tr("workshop: setup %s, %s"), now->setup().name.c_str(), now->setup().description.c_str())
+                  : std::string(tr("no workshop: the machine moves a point (:setup lathe)")));
+        return Effect::redraw;
+    }
+    if (s.sim().in_cycle()) {
+        s.say(tr("a program is in cycle"), true);
+        return Effect::redraw;
+    }
+    if (what == "off") {
+        s.sim().set_workshop(nullptr);
+        s.say(tr("workshop off: the machine moves a point"));
+        return Effect::redraw;
+    }
+    if (!s.machine().lathe) {
+        s.say(tr("the workshop has a lathe only yet"), true);
+        return Effect::redraw;
+    }
+    workshop::Setup st;
+    std::string name(what);
+    if (!workshop::builtin_setup(name, st)) {
+        std::ifstream in(name);
+        if (!in) {
+            s.say(strf(tr("unknown setup '%s' (lathe, or a .setup file)"), name.c_str()), true);
+            return Effect::redraw;
+        }
+        std::ostringstream text;
+        text << in.rdbuf();
+        if (std::string why = workshop::parse_setup(text.str(), st); !why.empty()) {
+            s.say(strf(tr("%s: %s"), name.c_str(), why.c_str()), true);
+            return Effect::redraw;
+        }
+    }
+    s.sim().set_workshop(std::make_unique<workshop::Workshop>(s.machine(), st, nullptr));
+    s.say(strf(tr("workshop: setup %s, %s; fresh stock in the chuck"), st.name.c_str(), st.description.c_str()));
+    return Effect::redraw;
+}
+
+Effect part(Session& s, const CommandCall& c) {
+    workshop::Workshop* w = s.sim().shop();
+    if (c.arg(1) != "new") return usage(s, ":part new");
+    if (!w) {
+        s.say(tr("no workshop: :setup lathe puts a part in the chuck"), true);
+        return Effect::redraw;
+    }
+    if (s.sim().in_cycle()) {
+        s.say(tr("a program is in cycle"), true);
+        return Effect::redraw;
+    }
+    w->world().new_part();
+    s.say(tr("fresh stock in the chuck"));
+    return Effect::redraw;
+}
+
 Effect measure(Session& s, const CommandCall& c) {
+    if (instrument_word(c.arg(1))) return read_instrument(s, c);
     double v;
     long d = 0;
     int axis;
@@ -338,6 +425,11 @@ constexpr Command kCommands[] = {
      N_("touch-off: PREF so that the tool point reads VALUE (X a diameter on the lathe)"), touch},
     {"measure", ":measure Dn AXIS VALUE",
      N_("tool measurement: the gauge of Dn from a touched face or diameter"), measure},
+    {"", ":measure dia Z-n|bore Z-n|groove Z-n|length",
+     N_("read an instrument on the workshop's part, from its right-hand face"), nullptr},
+    {"setup", ":setup [lathe|FILE|off]",
+     N_("the workshop: a true part, chuck and tools the moves cut and touch"), setup},
+    {"part", ":part new", N_("the workshop: fresh stock in the chuck"), part},
     {"undo", ":undo", N_("undo the last change of an origin or a corrector"),
      [](Session& s, const CommandCall&) { return s.undo(); }},
     {"protect", ":protect on|off [PIN]",

@@ -530,7 +530,28 @@ pages::View Session::view() const {
     tool_now_ = sim_->op();
     v.graph.tool = &tool_now_;
     v.graph.cache = &graph_cache_;
+    view_part();
+    if (sim_->shop()) v.graph.part = &part_now_;
     return v;
+}
+
+// The workshop's part where the program frame puts it: as the tool in use,
+// with the gauge and origins entered, would read its points (so a wrong
+// PREF shows as a path beside the part, as on the machine).
+void Session::view_part() const {
+    part_now_.clear();
+    const workshop::Workshop* w = sim_->shop();
+    if (!w) return;
+    const Axes om = sim_->om();
+    const workshop::Pt tip = w->tip(om);
+    const double dz = tool_now_[Z] - tip[0], dx = tool_now_[X] - tip[1];
+    for (const workshop::CPath& q : w->world().material()) {
+        part_now_.emplace_back();
+        for (const auto& v : q) {
+            workshop::Pt p = workshop::to_mm(v);
+            part_now_.back().push_back({p[0] + dz, p[1] + dx});
+        }
+    }
 }
 
 std::vector<std::string> Session::complete(std::string_view word) const {

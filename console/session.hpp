@@ -159,6 +159,8 @@ private:
     Toolpath path_{m_};
     mutable pages::GraphCache graph_cache_;
     mutable Axes tool_now_{};
+    mutable std::vector<std::vector<std::array<double, 2>>> part_now_;  // GRAPH: the workshop's part
+    void view_part() const;
     std::unique_ptr<store::Store> store_;
     LineInput& input_;
     ProgramMemory mem_;

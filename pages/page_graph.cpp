@@ -35,6 +35,7 @@ using ::pupitre::geometry::kPi;
 
 const InkStyles kStyles = {
     Style::normal,  // none
+    Style::dim,     // part
     Style::dim,     // axis
     Style::dim,     // mirror
     Style::dim,     // stock
@@ -94,6 +95,30 @@ void draw_stock(const GraphView& g, const ViewXf& xf, DotRaster& r) {
                               ys * poly[k][1], Ink::stock);
 }
 
+// The workshop's part: its half-section filled row by row (even-odd), with
+// its mirror image below the axis.
+void fill_part(const GraphView& g, const ViewXf& xf, DotRaster& r) {
+    if (!g.part) return;
+    std::vector<double> xs;
+    for (int j = 0; j < xf.h; ++j) {
+        double y = xf.wy(j);
+        if (y < 0 && !g.mirror) continue;
+        double R = std::abs(y);
+        xs.clear();
+        for (const auto& poly : *g.part)
+            for (size_t k = 0; k < poly.size(); ++k) {
+                const auto &a = poly[k], &b = poly[(k + 1) % poly.size()];
+                if ((a[1] <= R && R < b[1]) || (b[1] <= R && R < a[1]))
+                    xs.push_back(a[0] + (b[0] - a[0]) * (R - a[1]) / (b[1] - a[1]));
+            }
+        std::sort(xs.begin(), xs.end());
+        for (size_t k = 0; k + 1 < xs.size(); k += 2) {
+            int i0 = std::max(0, int(std::ceil(xf.dx(xs[k]) - 0.5))), i1 = std::min(xf.w - 1, int(std::floor(xf.dx(xs[k + 1]) + 0.5)));
+            for (int i = i0; i <= i1; ++i) r.dot(i, j, Ink::part);
+        }
+    }
+}
+
 // The marks of the frame that do not depend on the moves drawn so far.
 void draw_frame_marks(const GraphView& g, const ViewXf& xf, bool lathe, DotRaster& r) {
     const Toolpath& p = *g.path;
@@ -101,6 +126,7 @@ void draw_frame_marks(const GraphView& g, const ViewXf& xf, bool lathe, DotRaste
     plane_axes(g.plane, h, v);
     if (lathe && g.plane == PathPlane::zx) {
         r.phase = 0;
+        fill_part(g, xf, r);
         draw_line(r, xf, xf.wx(-1), 0, xf.wx(xf.w), 0, Ink::axis, kDashDot);  // the spindle axis
         draw_stock(g, xf, r);
     }
@@ -318,6 +344,15 @@ void graph_extent(const GraphView& g, double& x0, double& y0, double& x1, double
     // The part, not the trip from the tool-change position (the plot's rule).
     PathFit f = fit_box(*g.path, g.plane, mirrored(g), false);
     x0 = f.x0, y0 = f.y0, x1 = f.x1, y1 = f.y1;
+    // The workshop's part, whole, with the path.
+    if (!g.part || g.part->empty() || g.plane != PathPlane::zx || !g.path->machine().lathe) return;
+    bool none = g.path->empty();
+    for (const auto& poly : *g.part)
+        for (const auto& p : poly) {
+            if (none) x0 = x1 = p[0], y0 = y1 = p[1], none = false;
+            x0 = std::min(x0, p[0]), x1 = std::max(x1, p[0]);
+            y0 = std::min(y0, mirrored(g) ? -p[1] : p[1]), y1 = std::max(y1, p[1]);
+        }
 }
 
 std::string graph_fit_words(const GraphView& g) {
@@ -344,7 +379,8 @@ ViewXf graph_window(const GraphView& g, const Rect& page) {
 }
 
 void page_graph(const GraphView& g, const MachineProfile& m, Canvas& c, const Rect& r) {
-    if (!g.path || (g.path->empty() && g.path->errors().empty())) {
+    bool part = g.part && !g.part->empty() && m.lathe;
+    if (!g.path || (g.path->empty() && g.path->errors().empty() && !part)) {
         c.rule(r.y, title_of(g));
         c.text(r.x + 2, r.y + 2, tr("No toolpath yet: run a program in AUTO, SEQ, DRY RUN or TEST."),
                Style::dim, r.w - 4);

@@ -5,9 +5,11 @@
 // they take a view and return the next one, so the console binds them as data.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "core/output/toolpath.hpp"
 #include "pages/canvas.hpp"
@@ -47,6 +49,9 @@ struct GraphView {
     bool mirror = true;           // lathe: the half-profile's mirror image below the axis
     Glyphs glyphs = Glyphs::braille;  // braille or quadrant blocks; ASCII when the canvas is ASCII
     GraphCache* cache = nullptr;      // null: every frame draws every move
+    // The workshop's part (lathe): its half-section as polygons, (Z, X as a
+    // radius) in the program frame; null: no workshop.
+    const std::vector<std::vector<std::array<double, 2>>>* part = nullptr;
 };
 
 void page_graph(const GraphView& g, const MachineProfile& m, Canvas& c, const Rect& r);

@@ -16,6 +16,7 @@ namespace pupitre::pages {
 // so a cutting move is never hidden by the rapid that shares its cell.
 enum class Ink : uint8_t {
     none,
+    part,  // the workshop's part, filled
     axis,
     mirror,
     stock,

@@ -288,7 +288,53 @@ void Sim::feed_hold() {
     if (state_ == RunState::running) state_ = RunState::hold;
 }
 
+void Sim::set_workshop(std::unique_ptr<workshop::Workshop> w) {
+    shop_ = std::move(w);
+    if (!shop_) return;
+    // The turret and the spindle as they are now.
+    shop_->tool(Loc{}, tool_, corr_, 0, true);
+    shop_->spindle(sp_);
+}
+
+// The workshop meets the move as the machine starts it: a crash cuts it short
+// and ends the run with an alarm once the axes have stopped; a jog stops at
+// the first contact.
+void Sim::through_workshop(Ev& e) {
+    if (!shop_ || e.kind != Ev::move || mode_ == Mode::test) return;
+    workshop::Outcome o = manual_ ? shop_->jog(e.m, mode_ == Mode::jog) : shop_->apply(e.m);
+    if (!o.crashed && !o.touched) return;
+    e.m = workshop::Workshop::truncated(e.m, o.stop, o.fraction);
+    dur_ = duration(e);
+    for (int a = 0; a < kAxes; ++a) op_off1_[size_t(a)] = e.m.to_mach[size_t(a)] - e.m.to_prog[size_t(a)];
+    q_.clear();
+    planned_ = o.stop;
+    in_->place(o.stop);
+    message_ = o.what;
+    if (o.touched) return;
+    Diag d = workshop_diag(shop_->crashes().back());
+    alarms_.push_back(Alarm{d, clock_});
+    if (path_) path_->add_error(d);
+    interp_done_ = true;
+    pending_alarm_ = true;
+}
+
+Diag Sim::workshop_diag(const workshop::Crash& c) const {
+    Diag d;
+    d.code = c.code;
+    d.program = c.loc.prog;
+    d.line = c.loc.line;
+    d.n = c.loc.n;
+    d.detail = c.what;
+    const ProgramText* p = c.loc.prog > 0 || (imd_ && c.loc.line > 0) ? text_of(c.loc.prog) : nullptr;
+    d.file = p ? p->file : "-";
+    return d;
+}
+
 void Sim::raz() {
+    if (shop_) {
+        shop_->clear_crash();
+        shop_->spindle(SpindleEvent{});
+    }
     q_.clear();
     cur_.reset();
     test_.reset();
@@ -465,6 +511,7 @@ bool Sim::begin_next() {
                 op_off0_[size_t(a)] = e.m.from_mach[size_t(a)] - op_from_[size_t(a)];
                 op_off1_[size_t(a)] = e.m.to_mach[size_t(a)] - e.m.to_prog[size_t(a)];
             }
+            through_workshop(e);
             if (e.m.rpm > 0 && e.kind == Ev::move && !manual_) sp_.rpm = e.m.rpm;
             if (path_ && e.kind == Ev::move && !manual_ && e.loc.line > 0) {
                 const auto& ew = in_->e_written();  // E31000/E31001: the drawing's line types
@@ -473,9 +520,15 @@ bool Sim::begin_next() {
                 path_->add(e.m);
             }
             break;
-        case Ev::spindle: sp_ = e.sp; break;
+        case Ev::spindle:
+            sp_ = e.sp;
+            if (shop_) shop_->spindle(e.sp);
+            break;
         case Ev::coolant: m7_ = e.a, m8_ = e.b; break;
-        case Ev::tool: tool_ = e.a, corr_ = e.b; break;
+        case Ev::tool:
+            tool_ = e.a, corr_ = e.b;
+            if (shop_) shop_->tool(e.loc, e.a, e.b, 0, true);
+            break;
         case Ev::message: message_ = e.text; break;
         case Ev::stop:
             state_ = RunState::stopped;

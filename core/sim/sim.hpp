@@ -12,6 +12,7 @@
 
 #include "core/interp/interp.hpp"
 #include "core/output/toolpath.hpp"
+#include "core/workshop/workshop.hpp"
 
 namespace pupitre {
 
@@ -51,6 +52,13 @@ public:
     Interpreter& interp() { return *in_; }
     const Interpreter& interp() const { return *in_; }
     const MachineProfile& machine() const { return m_; }
+
+    // The workshop (pupitre-setup(5)): with one, the moves the machine makes
+    // cut its part, and a contact stops a jog or raises a crash alarm. Null:
+    // the machine moves a point, as before.
+    void set_workshop(std::unique_ptr<workshop::Workshop> w);
+    workshop::Workshop* shop() { return shop_.get(); }
+    const workshop::Workshop* shop() const { return shop_.get(); }
 
     // --- controls ---
     Mode mode() const { return mode_; }
@@ -175,6 +183,8 @@ private:
     bool step_interp(long& budget); // false: nothing more to run now
     void test_advance(long budget);
     void queue_move_to(const Axes& mach, int g, Loc loc, double feed, bool home_axis, int axis);
+    void through_workshop(Ev& e);  // a move about to be made meets the part
+    Diag workshop_diag(const workshop::Crash& c) const;
 
     const MachineProfile& m_;
     ProgramMemory& mem_;
@@ -183,6 +193,7 @@ private:
     std::unique_ptr<Interpreter> test_;  // TEST mode: a second interpreter, no motion
     std::unique_ptr<MachineSink> null_;
     Toolpath* path_ = nullptr;
+    std::unique_ptr<workshop::Workshop> shop_;
 
     Mode mode_ = Mode::automatic;
     RunState state_ = RunState::idle;

@@ -52,6 +52,14 @@ Workshop::Workshop(const MachineProfile& m, const Setup& s, MachineSink* next)
         Tool& slot = tools_[size_t(t.position)];
         slot.truth = setup_.tool(t.position);
         slot.shape = tool_shape(t);
+        for (auto [from, to] : {std::pair{&slot.shape.insert, &slot.near.insert},
+                                std::pair{&slot.shape.holder, &slot.near.holder}}) {
+            ClipperLib::ClipperOffset grow;
+            grow.AddPath(*from, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
+            CPaths out;
+            grow.Execute(out, kNear / kUnit);
+            *to = out.empty() ? *from : out.front();
+        }
     }
 }
 
@@ -112,6 +120,18 @@ std::string Workshop::where(const Pt& p) const {
                 fixed3(p[0] - face).c_str());
 }
 
+double Workshop::first_contact(const CPath& shape, const std::vector<Pt>& tips, Obstacle what, double depth) const {
+    if (world_.depth_into(LatheWorld::sweep(shape, tips), what) <= depth) return 2;
+    // Bisection along the move, to 0.1 µm.
+    double lo = 0, hi = 1, total = length_of(tips);
+    for (int i = 0; i < 60 && (hi - lo) * total > 1e-4; ++i) {
+        double mid = (lo + hi) / 2;
+        if (world_.depth_into(LatheWorld::sweep(shape, prefix(tips, mid)), what) > depth) hi = mid;
+        else lo = mid;
+    }
+    return hi;
+}
+
 bool Workshop::check(const MoveEvent& e, const std::vector<Pt>& tips, const std::vector<Axes>& oms) {
     Tool* t = current();
     if (!t) return true;
@@ -137,15 +157,8 @@ bool Workshop::check(const MoveEvent& e, const std::vector<Pt>& tips, const std:
     const Hit* worst = nullptr;
     for (const Hit& h : hits) {
         if (h.code == insert_code && h.what == Obstacle::material && cutting) continue;
-        if (world_.depth_into(LatheWorld::sweep(*h.shape, tips), h.what) <= kCrashDepth) continue;
-        // The first point of contact along the move, to 0.1 µm.
-        double lo = 0, hi = 1, total = length_of(tips);
-        for (int i = 0; i < 60 && (hi - lo) * total > 1e-4; ++i) {
-            double mid = (lo + hi) / 2;
-            if (world_.depth_into(LatheWorld::sweep(*h.shape, prefix(tips, mid)), h.what) > kCrashDepth) hi = mid;
-            else lo = mid;
-        }
-        if (hi < first) first = hi, worst = &h;
+        double f = first_contact(*h.shape, tips, h.what, kCrashDepth);
+        if (f < first) first = f, worst = &h;
     }
     double f = worst ? first : 1;
     std::vector<Pt> done = prefix(tips, f);
@@ -161,6 +174,7 @@ bool Workshop::check(const MoveEvent& e, const std::vector<Pt>& tips, const std:
     c.code = worst->code;
     c.loc = e.loc;
     c.tool = tool_;
+    c.fraction = f;
     for (size_t a = 0; a < c.om.size(); ++a) c.om[a] = oms[i][a] + (at - double(i)) * (oms[j][a] - oms[i][a]);
     const std::string place = where(done.back());
     const bool holder = worst->shape == &t->shape.holder;
@@ -188,31 +202,81 @@ bool Workshop::check(const MoveEvent& e, const std::vector<Pt>& tips, const std:
     return false;
 }
 
-void Workshop::move(const MoveEvent& e) {
-    if (crashed()) return;  // the machine stopped at the contact
+Outcome Workshop::apply(const MoveEvent& e) {
+    Outcome o;
+    if (crashed()) return o;
     std::vector<Axes> oms;
     path_of(e, oms);
     std::vector<Pt> tips;
     tips.reserve(oms.size());
     for (const Axes& om : oms) tips.push_back(tip(om));
-    if (check(e, tips, oms)) {
-        if (next_) next_->move(e);
-        return;
-    }
-    // The move as far as the contact.
+    if (check(e, tips, oms)) return o;
+    o.crashed = true;
+    o.stop = crashes_.back().om;
+    o.fraction = crashes_.back().fraction;
+    o.what = crashes_.back().what;
+    return o;
+}
+
+Outcome Workshop::jog(const MoveEvent& e, bool continuous) {
+    Outcome o;
+    const Tool* t = current();
+    if (!t || crashed()) return o;
+    std::vector<Axes> oms;
+    path_of(e, oms);
+    std::vector<Pt> tips;
+    for (const Axes& om : oms) tips.push_back(tip(om));
+    const std::vector<Pt> here{tips.front()};
+    const CPath* shapes[] = {&t->shape.insert, &t->shape.holder};
+    const CPath* near[] = {&t->near.insert, &t->near.holder};
+    const Obstacle things[] = {Obstacle::material, Obstacle::chuck, Obstacle::tailstock};
+    double first = 2;
+    Obstacle hit = Obstacle::none;
+    bool holder = false;
+    for (int k = 0; k < 2; ++k)
+        for (Obstacle w : things) {
+            // At a contact, an increment goes on as a feed; a held JOG key
+            // slides along or away, and stops again before going deeper.
+            bool touching = world_.depth_into(LatheWorld::sweep(*near[k], here), w) > kTouchDepth;
+            if (touching && !continuous) return apply(e);
+            double limit = touching ? std::max(kNear, world_.depth_into(LatheWorld::sweep(*shapes[k], here), w))
+                                    : kTouchDepth;
+            if (double f = first_contact(*shapes[k], tips, w, limit); f < first)
+                first = f, hit = w, holder = k == 1;
+        }
+    if (hit == Obstacle::none) return apply(e);
+    double at = 0;
+    std::vector<Pt> done = prefix(tips, first, &at);
+    size_t i = std::min(size_t(at), oms.size() - 1), j = std::min(i + 1, oms.size() - 1);
+    for (size_t a = 0; a < o.stop.size(); ++a) o.stop[a] = oms[i][a] + (at - double(i)) * (oms[j][a] - oms[i][a]);
+    o.touched = true;
+    o.fraction = first;
+    const std::string place = where(done.back());
+    const char* what = hit == Obstacle::material ? (holder ? tr("the holder of T%d touched the part %s")
+                                                           : tr("T%d touched the part %s"))
+                       : hit == Obstacle::chuck  ? (holder ? tr("the holder of T%d touched the chuck %s")
+                                                           : tr("T%d touched the chuck %s"))
+                                                 : (holder ? tr("the holder of T%d touched the tailstock %s")
+                                                           : tr("T%d touched the tailstock %s"));
+    o.what = strf(what, tool_, place.c_str());
+    return o;
+}
+
+MoveEvent Workshop::truncated(const MoveEvent& e, const Axes& stop, double fraction) {
     MoveEvent cut = e;
-    const Axes& stop = crashes_.back().om;
-    double f = e.length > 0 ? 0 : 1;
-    for (size_t a = 0; a < stop.size(); ++a) {
-        cut.to_prog[a] += stop[a] - e.to_mach[a];
-        double whole = e.to_mach[a] - e.from_mach[a];
-        if (std::abs(whole) > 1e-9) f = std::max(f, (stop[a] - e.from_mach[a]) / whole);
-    }
+    const double f = std::clamp(fraction, 0.0, 1.0);
+    for (size_t a = 0; a < stop.size(); ++a) cut.to_prog[a] += stop[a] - e.to_mach[a];
     cut.to_mach = stop;
     cut.sweep *= f;
     cut.length *= f;
     cut.seconds *= f;
-    if (next_) next_->move(cut);
+    return cut;
+}
+
+void Workshop::move(const MoveEvent& e) {
+    if (crashed()) return;  // the machine stopped at the contact
+    Outcome o = apply(e);
+    if (next_) next_->move(o.crashed ? truncated(e, o.stop, o.fraction) : e);
 }
 
 void Workshop::tool(const Loc& l, int t, int d, double s, bool m6) {

@@ -23,6 +23,20 @@ inline constexpr int kCrashHolder = 1203;        // the holder or shank hits the
 inline constexpr int kCrashDirection = 1204;     // cutting with the spindle turning the wrong way
 inline constexpr int kCrashProbe = 1205;         // a touch probe driven into the material
 
+// What a move came to.
+struct Outcome {
+    bool crashed = false;  // crashes().back() says how
+    bool touched = false;  // a jog stopped at a contact: `what` says where
+    Axes stop{};           // where the motion ended (the contact), when either
+    double fraction = 1;   // of the move's length
+    std::string what;
+};
+
+// A jog stops when the tool comes this close into something (mm); it is at
+// a contact when grown by kNear it overlaps it (a face it has just cut).
+inline constexpr double kTouchDepth = 1e-4;
+inline constexpr double kNear = 1e-3;
+
 // A contact deeper than this is a crash; a tool that only touches (a finishing
 // pass along a cut face) is not (mm, about twice the chord error).
 inline constexpr double kCrashDepth = 2e-3;
@@ -32,6 +46,7 @@ struct Crash {
     Loc loc;
     int tool = 0;
     Axes om{};        // where the motion stopped: the contact
+    double fraction = 1;  // of the move's length done
     std::string what; // the message: what hit what, where
 };
 
@@ -63,6 +78,17 @@ public:
     // Reads an instrument; "" or what is wrong with the request.
     std::string measure(std::string_view spec, Reading& r) const;
 
+    // A program's move as the machine makes it (the console calls this as it
+    // animates the move; move() does it for a batch run).
+    Outcome apply(const MoveEvent& e);
+    // JOG and INC: the move stops at the first contact of the tool or its
+    // holder with the part, the chuck or the tailstock. From a contact an
+    // increment goes on as a feed (a cut with the spindle turning, else a
+    // crash); a `continuous` jog (a held key) stops again before going deeper.
+    Outcome jog(const MoveEvent& e, bool continuous);
+    // The move cut short where it stopped: `stop`, `fraction` of its length.
+    static MoveEvent truncated(const MoveEvent& e, const Axes& stop, double fraction);
+
     // MachineSink
     void move(const MoveEvent& e) override;
     void dwell(const Loc& l, double s) override { if (next_) next_->dwell(l, s); }
@@ -81,6 +107,7 @@ private:
     struct Tool {
         const ToolTruth* truth = nullptr;
         ToolShape shape;
+        ToolShape near;  // grown by kNear: touching what it is next to
         double cut = 0;  // mm of feed in material
     };
     Tool* current();
@@ -91,6 +118,9 @@ private:
     // `stop` being the index fraction where the motion ends.
     bool check(const MoveEvent& e, const std::vector<Pt>& tips, const std::vector<Axes>& oms);
     std::string where(const Pt& p) const;
+    // The first fraction of the path where `shape` comes deeper than `depth`
+    // into `what`; 2 when it never does.
+    double first_contact(const CPath& shape, const std::vector<Pt>& tips, Obstacle what, double depth) const;
 
     const MachineProfile& m_;
     Setup setup_;
