@@ -399,9 +399,10 @@ void Session::check_run_end() {
         if (d.n >= 0) where += " N" + std::to_string(d.n);
         // TRANSLATORS: the message line: ALARM 107 (%300 N20 line 12): the detail.
         say(strf(tr("ALARM %d (%s line %d): %s"), d.code, where.c_str(), d.line, d.detail.c_str()), true);
-    } else if (st != last_state_ && !sim_->message().empty()) {
+    } else if ((st != last_state_ || sim_->workshop_news() != news_seen_) && !sim_->message().empty()) {
         say(sim_->message());
     }
+    news_seen_ = sim_->workshop_news();
     if (st != last_state_ && (st == RunState::ended || st == RunState::alarm || st == RunState::idle)) persist_run();
     last_state_ = st;
 }

@@ -159,6 +159,7 @@ private:
     Toolpath path_{m_};
     mutable pages::GraphCache graph_cache_;
     mutable Axes tool_now_{};
+    uint64_t news_seen_ = 0;  // the Sim's workshop news already said
     mutable std::vector<std::vector<std::array<double, 2>>> part_now_;  // GRAPH: the workshop's part
     void view_part() const;
     std::unique_ptr<store::Store> store_;

@@ -310,6 +310,7 @@ void Sim::through_workshop(Ev& e) {
     planned_ = o.stop;
     in_->place(o.stop);
     message_ = o.what;
+    ++workshop_news_;
     if (o.touched) return;
     Diag d = workshop_diag(shop_->crashes().back());
     alarms_.push_back(Alarm{d, clock_});

@@ -130,6 +130,9 @@ public:
     static constexpr size_t kMaxRunWarnings = 100;
     bool alarm_active() const { return state_ == RunState::alarm; }
     const std::string& message() const { return message_; }     // $0 text or cycle news
+    // Counts the workshop's news (a contact that stopped a jog): the console
+    // says them even when the state did not change between two frames.
+    uint64_t workshop_news() const { return workshop_news_; }
     long test_blocks() const { return test_blocks_; }
     bool overrides_inhibited() const { return in_->modal().overrides_off; }
     double to_display(int axis, double v) const { return in_->to_display(axis, v); }
@@ -194,6 +197,7 @@ private:
     std::unique_ptr<MachineSink> null_;
     Toolpath* path_ = nullptr;
     std::unique_ptr<workshop::Workshop> shop_;
+    uint64_t workshop_news_ = 0;
 
     Mode mode_ = Mode::automatic;
     RunState state_ = RunState::idle;

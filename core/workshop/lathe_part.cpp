@@ -19,8 +19,8 @@ Pt to_mm(const IntPoint& p) { return {double(p.X) * kUnit, double(p.Y) * kUnit};
 
 namespace {
 
-// Segments for an arc of radius r and `angle` radians within kChord: the
-// vertices sit kChord/2 outside the circle, so the chords are within ±kChord/2.
+// Segments for an arc of radius r and `angle` radians with chords within
+// kChord of it.
 int segments(double r, double angle) {
     if (r <= kChord) return 1;
     double step = 2 * std::acos(std::max(-1.0, 1 - kChord / r));
@@ -87,13 +87,14 @@ CPath default_holder(int sx, int sz, double edge) {
 }  // namespace
 
 CPath circle(Pt c, double r) {
+    // Inscribed, with a vertex on each axis: the points that turn a diameter
+    // or a face are exact; elsewhere the polygon is within kChord inside.
     CPath p;
     if (r <= kChord) return {to_int(c)};
-    int n = std::max(8, segments(r, 2 * kPi));
-    double rv = r + kChord / 2;
+    int n = (std::max(8, segments(r, 2 * kPi)) + 3) / 4 * 4;
     for (int i = 0; i < n; ++i) {
         double a = 2 * kPi * i / n;
-        p.push_back(to_int({c[0] + rv * std::cos(a), c[1] + rv * std::sin(a)}));
+        p.push_back(to_int({c[0] + r * std::cos(a), c[1] + r * std::sin(a)}));
     }
     return p;
 }

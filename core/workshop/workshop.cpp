@@ -116,11 +116,12 @@ std::string Workshop::where(const Pt& p) const {
     // diameter and the distance from the stock's face as it was loaded.
     double face = setup_.lathe.chuck_z + setup_.lathe.stickout;
     // TRANSLATORS: where a crash happened: a diameter, then the distance from the stock's face.
-    return strf(tr("at \u00f8%s, %s mm from the stock's face"), fixed3(2 * std::abs(p[1])).c_str(),
-                fixed3(p[0] - face).c_str());
+    return strf(tr("at \u00f8%s, %s mm from the stock's face"), fixed3_zeroed(2 * std::abs(p[1]), 5e-4).c_str(),
+                fixed3_zeroed(p[0] - face, 5e-4).c_str());
 }
 
-double Workshop::first_contact(const CPath& shape, const std::vector<Pt>& tips, Obstacle what, double depth) const {
+double Workshop::first_contact(const CPath& shape, const std::vector<Pt>& tips, Obstacle what, double depth,
+                               bool before) const {
     if (world_.depth_into(LatheWorld::sweep(shape, tips), what) <= depth) return 2;
     // Bisection along the move, to 0.1 µm.
     double lo = 0, hi = 1, total = length_of(tips);
@@ -129,7 +130,7 @@ double Workshop::first_contact(const CPath& shape, const std::vector<Pt>& tips, 
         if (world_.depth_into(LatheWorld::sweep(shape, prefix(tips, mid)), what) > depth) hi = mid;
         else lo = mid;
     }
-    return hi;
+    return before ? lo : hi;
 }
 
 bool Workshop::check(const MoveEvent& e, const std::vector<Pt>& tips, const std::vector<Axes>& oms) {
@@ -239,9 +240,9 @@ Outcome Workshop::jog(const MoveEvent& e, bool continuous) {
             // slides along or away, and stops again before going deeper.
             bool touching = world_.depth_into(LatheWorld::sweep(*near[k], here), w) > kTouchDepth;
             if (touching && !continuous) return apply(e);
-            double limit = touching ? std::max(kNear, world_.depth_into(LatheWorld::sweep(*shapes[k], here), w))
+            double limit = touching ? std::max(kTouchDepth, world_.depth_into(LatheWorld::sweep(*shapes[k], here), w))
                                     : kTouchDepth;
-            if (double f = first_contact(*shapes[k], tips, w, limit); f < first)
+            if (double f = first_contact(*shapes[k], tips, w, limit, true); f < first)
                 first = f, hit = w, holder = k == 1;
         }
     if (hit == Obstacle::none) return apply(e);

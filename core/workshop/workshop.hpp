@@ -119,8 +119,10 @@ private:
     bool check(const MoveEvent& e, const std::vector<Pt>& tips, const std::vector<Axes>& oms);
     std::string where(const Pt& p) const;
     // The first fraction of the path where `shape` comes deeper than `depth`
-    // into `what`; 2 when it never does.
-    double first_contact(const CPath& shape, const std::vector<Pt>& tips, Obstacle what, double depth) const;
+    // into `what` (`before`: the last one where it does not yet, within
+    // 0.1 µm); 2 when it never does.
+    double first_contact(const CPath& shape, const std::vector<Pt>& tips, Obstacle what, double depth,
+                         bool before = false) const;
 
     const MachineProfile& m_;
     Setup setup_;

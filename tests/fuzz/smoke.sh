@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # A short fuzzing pass for CI: seeds from the golden programs and the handbook
-# corpus (or, for the key decoder, terminal key sequences), then SECONDS of
+# corpus (or, for the key decoder, terminal key sequences; for the workshop's
+# setup files, the shipped setups and tests/fuzz/setups), then SECONDS of
 # mutation. Fails on any crash, leak or sanitizer report.
-#   smoke.sh FUZZ_BINARY [SECONDS] [programs|keys]
+#   smoke.sh FUZZ_BINARY [SECONDS] [programs|keys|setups]
 # SPDX-License-Identifier: GPL-3.0-or-later
 set -euo pipefail
 bin=$1 secs=${2:-45} kind=${3:-programs}
@@ -18,6 +19,9 @@ if [ "$kind" = keys ]; then
         printf "\x03\x05\x81\x02$seq" >"$corpus/seed$i"
         i=$((i + 1))
     done
+elif [ "$kind" = setups ]; then
+    # The shipped setup, the handbook's %555 blank and small bad files.
+    cp "$root"/data/setups/*.setup "$root"/tests/workshop/*.setup "$here"/setups/*.setup "$corpus"/
 else
     cp "$root"/tests/golden/programs/*.iso "$root"/data/demo/*.iso "$corpus"/
     [ -d "$root/tests/bad" ] && cp "$root"/tests/bad/*.iso "$corpus"/ 2>/dev/null || true
@@ -29,6 +33,7 @@ artifacts=$(dirname "$bin")/fuzz-artifacts/
 mkdir -p "$artifacts"
 dict=()
 [ "$kind" = programs ] && dict=(-dict="$here/num.dict")
+[ "$kind" = setups ] && dict=(-dict="$here/setup.dict")
 "$bin" "${dict[@]}" -artifact_prefix="$artifacts" -max_total_time="$secs" -timeout=10 -rss_limit_mb=2048 -max_len=4096 \
     -print_final_stats=1 "$corpus" 2>&1 | tail -n 15
 echo "fuzz smoke: no crash in ${secs}s"

@@ -1,0 +1,125 @@
+#!/usr/bin/env bash
+# The workshop in the real console (issue 15), driven by keys in tmux as a
+# student would: a true part in the chuck (:setup lathe), touch-offs on a
+# face and a diameter the tool really meets, a program that turns the part,
+# the instruments, and the crashes.
+#   workshop.sh PUPITRE_BINARY CASE
+# SPDX-License-Identifier: GPL-3.0-or-later
+set -uo pipefail
+bin=$(realpath "$1") case=$2
+. "$(dirname "$0")/lib.sh"
+W=100 H=30
+
+# The message line (above the input line).
+message() { screen | tail -3 | head -1; }
+
+case $case in
+touchoff)
+    # T1 is the reference tool (D1 left at zero): PREF takes its gauge. The
+    # shipped setup's truth: axis at X -20 (radius), the bar's face at Z 35,
+    # T1 at X 52.347 Z 41.215 from the turret's reference (data/setups).
+    "$bin" import "$(dirname "$0")/programs/turn_reference.iso" >/dev/null || fail "import"
+    start
+    pom
+    cmd ":setup lathe"
+    wait_for 'workshop: setup lathe'
+    cmd ":speed max"
+    cmd ":mode imd"
+    cmd "T1 D1 M6"
+    keys F9
+    wait_for 'IMD done' 10
+    cmd "S800 M3"
+    keys F9
+    wait_for 'IMD done' 10
+    # The diameter: over the bar, down until the tool touches it.
+    cmd ":mode jog"
+    cmd ":jog Z -150"
+    cmd ":jog X -200"
+    wait_for 'T1 touched the part at ø60.000' 20
+    [ "$(op_value X)" = "124.694" ] || fail "the touch should stop at OM X 124.694 (ø60 + 2 × 52.347 - 2 × 20)"
+    # An increment from the contact cuts (the spindle turns): 0.5 deep, then
+    # along +Z out of the bar, a skimmed diameter.
+    cmd ":mode inc"
+    cmd ":jog X -1"
+    cmd ":jog Z 40"
+    wait_for '^ +Z +90.000' 10
+    cmd ":measure dia Z-10"
+    wait_for 'micrometer: dia Z-10 = 59.000 mm'
+    # The touch-off on the skimmed diameter: X moved only along Z since.
+    # T1's true gauge is in PREF: -20 + 52.347.
+    cmd ":touch X 59"
+    wait_for 'PREF.X \(radius\) = OM ø123.694/2 - surface ø59.000/2 = 32.347' 5
+    # The face: touched at ø39, then faced 0.5 from above the bar.
+    cmd ":mode jog"
+    cmd ":jog X -20"
+    cmd ":jog Z -20"
+    wait_for 'T1 touched the part at ø39.000, 0.000 mm from the stock' 10
+    cmd ":jog X 24"
+    cmd ":mode inc"
+    cmd ":jog Z -0.5"
+    cmd ":jog X -66"
+    # The insert's trailing edge meets the skimmed ø59's corner first.
+    wait_for 'T1 touched the part at ø58.882, -0.500 mm' 10
+    cmd ":jog X -66"
+    wait_for '^ +Xø +-7.118' 10
+    cmd ":touch Z 0"
+    wait_for 'PREF.Z = OM 75.715 - surface 0.000 = 75.715' 5
+    cmd ":jog X 120"
+    cmd ":measure length"
+    wait_for 'depth gauge: length = 94.50 mm'
+    # The program turns the drawing's diameters.
+    cmd ":load 710"
+    cmd ":mode auto"
+    keys F9
+    wait_for 'M02: end of program %710' 30
+    cmd ":measure dia Z-10"
+    wait_for 'micrometer: dia Z-10 = 50.000 mm'
+    cmd ":measure dia Z-30"
+    wait_for 'micrometer: dia Z-30 = 56.000 mm'
+    cmd ":measure dia Z-60"
+    wait_for 'micrometer: dia Z-60 = 60.000 mm'
+    # GRAPH shows the part under the path.
+    cmd ":page graph"
+    wait_for '⣿⣿⣿'
+    ;;
+crash)
+    start
+    pom
+    cmd ":setup lathe"
+    cmd ":speed max"
+    cmd ":mode imd"
+    cmd "T1 D1 M6"
+    keys F9
+    wait_for 'IMD done' 10
+    # The spindle stopped, an increment into the bar: a crash, not a cut.
+    cmd ":mode jog"
+    cmd ":jog Z -150"
+    cmd ":jog X -200"
+    wait_for 'T1 touched the part' 20
+    # A held key goes no deeper than the contact.
+    cmd ":jog X -5"
+    [ "$(op_value X)" = "124.694" ] || fail "JOG from a contact must not go deeper: $(op_value X)"
+    cmd ":mode inc"
+    cmd ":jog X -0.2"
+    wait_for 'ALARM 1201' 10
+    sgr_line 'ALARM 1201' | grep -q $'\e\\[' || fail "the alarm is not coloured"
+    keys F12
+    wait_for 'READY' 10
+    # A rapid through the bar in IMD: 1200, stopped at the contact.
+    cmd ":mode imd"
+    cmd "S800 M3"
+    keys F9
+    wait_for 'IMD done' 10
+    cmd "G0 X100 Z0"
+    keys F9
+    wait_for 'ALARM 1200' 10
+    cmd ":page alarm"
+    wait_for 'crash: T1 rapid \(G0\) into the part'
+    ;;
+*)
+    echo "unknown case $case"
+    exit 2
+    ;;
+esac
+cmd ":quit!"
+wait_for '^EXIT=0' 10
