@@ -253,6 +253,7 @@ Effect setup(Session& s, const CommandCall& c) {
     if (what == "off") {
         s.sim().set_workshop(nullptr);
         s.say(tr("workshop off: the machine moves a point"));
+        s.save_workshop();
         return Effect::redraw;
     }
     if (!s.machine().lathe) {
@@ -276,6 +277,7 @@ Effect setup(Session& s, const CommandCall& c) {
     }
     s.sim().set_workshop(std::make_unique<workshop::Workshop>(s.machine(), st, nullptr));
     s.say(strf(tr("workshop: setup %s, %s; fresh stock in the chuck"), st.name.c_str(), st.description.c_str()));
+    s.save_workshop();
     return Effect::redraw;
 }
 
@@ -292,6 +294,7 @@ Effect part(Session& s, const CommandCall& c) {
     }
     w->world().new_part();
     s.say(tr("fresh stock in the chuck"));
+    s.save_workshop();
     return Effect::redraw;
 }
 

@@ -54,10 +54,37 @@ std::string Session::load_store() {
         for (auto it = r.value.rbegin(); it != r.value.rend(); ++it) input_.add_history(it->block);
     for (const auto& [name, v] : store::persistent_writes(sim_->interp())) persisted_[name] = v;
     if (auto r = store_->setting("protect.on"); !r.error && r.value) protect = *r.value == "1";
+    if (std::string w = load_workshop(); !w.empty() && problem.empty()) problem = w;
     refresh_dir();
     remember_store();
     if (problem.empty()) problem = recovered_note();
     return problem;
+}
+
+// The workshop this machine had when the console last stopped: the same
+// setup and the part as the tools left it (pupitre-setup(5)).
+std::string Session::load_workshop() {
+    auto r = store_->workshop(m_.name);
+    if (r.error) return r.error.message;
+    if (!r.value || !m_.lathe) return {};
+    workshop::Setup st;
+    if (std::string why = workshop::parse_setup(r.value->setup, st); !why.empty())
+        return strf(tr("the stored workshop is not a setup (%s): :setup lathe loads one"), why.c_str());
+    auto w = std::make_unique<workshop::Workshop>(m_, st, nullptr);
+    if (!w->world().from_text(r.value->part))
+        return tr("the stored part could not be read: the workshop starts with fresh stock");
+    workshop_saved_ = w->world().generation();
+    sim_->set_workshop(std::move(w));
+    return {};
+}
+
+void Session::save_workshop() {
+    const workshop::Workshop* w = sim_->shop();
+    if (w) workshop_saved_ = w->world().generation();
+    if (!store_) return;
+    store::Error e = w ? store_->put_workshop(m_.name, w->setup().source, w->world().to_text())
+                       : store_->put_workshop(m_.name, "", "");
+    if (e) say(strf(tr("the workshop was not stored: %s"), e.message.c_str()), true);
 }
 
 void Session::refresh_dir() {
@@ -408,6 +435,8 @@ void Session::check_run_end() {
 }
 
 void Session::persist_run() {
+    if (const workshop::Workshop* w = sim_->shop(); w && w->world().generation() != workshop_saved_)
+        save_workshop();
     // The programs G76, G76+ and G76- changed: a revision each, or a deletion.
     std::vector<int> edited = mem_.take_changed();
     if (store_ && !edited.empty() && protect) {

@@ -51,6 +51,8 @@ public:
 
     // State the actions and commands change.
     Sim& sim() { return *sim_; }
+    // Keeps the workshop (setup and part) of this machine in the store.
+    void save_workshop();
     const Sim& sim() const { return *sim_; }
     pages::PageId page = pages::PageId::op;
     int scroll = 0;
@@ -160,6 +162,8 @@ private:
     mutable pages::GraphCache graph_cache_;
     mutable Axes tool_now_{};
     uint64_t news_seen_ = 0;  // the Sim's workshop news already said
+    uint64_t workshop_saved_ = 0;  // the part's generation the store holds
+    std::string load_workshop();
     mutable std::vector<std::vector<std::array<double, 2>>> part_now_;  // GRAPH: the workshop's part
     void view_part() const;
     std::unique_ptr<store::Store> store_;

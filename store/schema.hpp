@@ -91,6 +91,17 @@ CREATE TABLE imd_history (
 ) STRICT;
 CREATE INDEX imd_by_machine ON imd_history (machine, id);
 )sql",
+    // 2: the workshop of each machine (issue 15): the setup in use, as its
+    // text (pupitre-setup(5)), and the part as the tools left it.
+    R"sql(
+CREATE TABLE workshops (
+    machine    TEXT PRIMARY KEY REFERENCES machines (name),
+    setup      TEXT NOT NULL,                -- the setup file's text
+    part       TEXT NOT NULL,                -- the half-section: "Z R" in 0.1 µm, one outline per line
+    updated_ms INTEGER NOT NULL,
+    who        TEXT NOT NULL
+) STRICT;
+)sql",
 };
 
 inline constexpr int kCount = int(sizeof kMigrations / sizeof kMigrations[0]);

@@ -19,7 +19,7 @@ struct sqlite3_stmt;
 namespace pupitre::store {
 
 inline constexpr uint32_t kApplicationId = 0x4E554D31;  // "NUM1" in PRAGMA application_id
-inline constexpr int kSchemaVersion = 1;                // PRAGMA user_version we write
+inline constexpr int kSchemaVersion = 2;                // PRAGMA user_version we write
 
 // What went wrong, as the exit code the command line gives (sysexits).
 enum class Fault {
@@ -205,6 +205,14 @@ public:
 
     // Settings (key/value text) and the IMD history.
     Result<std::optional<std::string>> setting(std::string_view key);
+    // The workshop of a machine (pupitre-setup(5)): the setup's text and the
+    // part's text; none when the machine has no workshop. An empty setup
+    // removes it.
+    struct Workshop {
+        std::string setup, part;
+    };
+    Result<std::optional<Workshop>> workshop(std::string_view machine);
+    Error put_workshop(std::string_view machine, std::string_view setup, std::string_view part);
     Error set_setting(std::string_view key, std::string_view value);
     Error add_imd(std::string_view machine, std::string_view block);
     Result<std::vector<ImdEntry>> imd_history(std::string_view machine, int limit = 100);

@@ -259,6 +259,51 @@ Result<std::optional<std::string>> Store::setting(std::string_view key) {
     return r;
 }
 
+Result<std::optional<Store::Workshop>> Store::workshop(std::string_view machine) {
+    Result<std::optional<Workshop>> r;
+    Error e;
+    sql::Use u(prepare("SELECT setup, part FROM workshops WHERE machine = ?1", e));
+    if ((r.error = e)) return r;
+    int rc = u.bind(1, machine).step();
+    if (rc == SQLITE_ROW)
+        r.value = Workshop{u.str(0), u.str(1)};
+    else if (rc != SQLITE_DONE)
+        r.error = fail(rc, tr("cannot read the workshop"));
+    return r;
+}
+
+Error Store::put_workshop(std::string_view machine, std::string_view setup, std::string_view part) {
+    if (Error e = begin_write()) return e;
+    Error e;
+    {
+        if (!setup.empty()) {
+            sql::Use m(prepare(kMachineExists, e));
+            if (!e && m.bind(1, machine).step() == SQLITE_DONE) {
+                sql::Use add(prepare(kInsertMachine, e));
+                if (!e) {
+                    add.bind(1, machine).bind(2, "").bind(3, 0).bind(4, now_ms());
+                    if (int rc = add.step(); rc != SQLITE_DONE) e = fail(rc, tr("cannot store the workshop"));
+                }
+            }
+        }
+        const char* sql = setup.empty() ? "DELETE FROM workshops WHERE machine = ?1"
+                                        : "INSERT INTO workshops (machine, setup, part, updated_ms, who) "
+                                          "VALUES (?1, ?2, ?3, ?4, ?5) ON CONFLICT (machine) DO UPDATE "
+                                          "SET setup = ?2, part = ?3, updated_ms = ?4, who = ?5";
+        sql::Use u(e ? nullptr : prepare(sql, e));
+        if (!e) {
+            u.bind(1, machine);
+            if (!setup.empty()) u.bind(2, setup).bind(3, part).bind(4, now_ms()).bind(5, user_);
+            if (int rc = u.step(); rc != SQLITE_DONE) e = fail(rc, tr("cannot store the workshop"));
+        }
+    }
+    if (e) {
+        rollback();
+        return e;
+    }
+    return commit();
+}
+
 Result<int64_t> Store::data_version() {
     Result<int64_t> r;
     Error e;

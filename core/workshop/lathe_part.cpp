@@ -3,6 +3,8 @@
 #include "core/workshop/lathe_part.hpp"
 
 #include <algorithm>
+#include <charconv>
+#include <cstdlib>
 #include <cmath>
 
 #include "core/geometry/geometry.hpp"
@@ -168,6 +170,7 @@ LatheWorld::LatheWorld(const LatheSetup& s) : s_(s) {
 
 void LatheWorld::new_part() {
     double right = s_.chuck_z + s_.stickout, left = right - s_.stock_length;
+    ++generation_;
     part_ = {rect(left, s_.bore / 2, right, s_.stock_diameter / 2)};
     if (!s_.profile.empty()) {
         CPath p;
@@ -219,8 +222,50 @@ double LatheWorld::depth_into(const CPaths& swept, Obstacle what) const {
 
 double LatheWorld::cut(const CPaths& swept) {
     double before = area_mm2(part_);
-    part_ = clip(part_, swept, ClipperLib::ctDifference);
-    return before - area_mm2(part_);
+    CPaths after = clip(part_, swept, ClipperLib::ctDifference);
+    double removed = before - area_mm2(after);
+    if (removed > 0) {
+        part_ = std::move(after);
+        ++generation_;
+    }
+    return removed;
+}
+
+std::string LatheWorld::to_text() const {
+    std::string o;
+    for (const CPath& q : part_) {
+        for (size_t i = 0; i < q.size(); ++i)
+            o += (i ? " " : "") + std::to_string(q[i].X) + ' ' + std::to_string(q[i].Y);
+        o += '\n';
+    }
+    return o;
+}
+
+bool LatheWorld::from_text(std::string_view text) {
+    CPaths out;
+    while (!text.empty()) {
+        size_t eol = text.find('\n');
+        std::string_view line = text.substr(0, eol);
+        text = eol == std::string_view::npos ? std::string_view{} : text.substr(eol + 1);
+        CPath q;
+        const char* p = line.data();
+        const char* end = line.data() + line.size();
+        while (p < end) {
+            long long v[2];
+            for (long long& x : v) {
+                while (p < end && *p == ' ') ++p;
+                auto r = std::from_chars(p, end, x);
+                if (r.ec != std::errc() || std::llabs(x) > 100000000000LL) return false;  // 10 km
+                p = r.ptr;
+            }
+            q.emplace_back(ClipperLib::cInt(v[0]), ClipperLib::cInt(v[1]));
+            while (p < end && *p == ' ') ++p;
+        }
+        if (q.size() >= 3) out.push_back(std::move(q));
+        else if (!q.empty()) return false;
+    }
+    set_material(std::move(out));
+    return true;
 }
 
 bool LatheWorld::right_face(double& z) const {

@@ -6,7 +6,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 #include <clipper.hpp>
+#include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/workshop/setup.hpp"
@@ -57,7 +59,17 @@ public:
     // Removes `swept` from the material; returns the area removed (mm²).
     double cut(const CPaths& swept);
     // A part drawn elsewhere (the store's): replaces the material.
-    void set_material(CPaths p) { part_ = std::move(p); }
+    void set_material(CPaths p) {
+        part_ = std::move(p);
+        ++generation_;
+    }
+    // Counts the changes of the material (a cut, fresh stock).
+    uint64_t generation() const { return generation_; }
+    // The material as text for the store: one outline per line, "Z R" pairs
+    // of integers in 0.1 µm; and back (false, and nothing changed, when the
+    // text is not one).
+    std::string to_text() const;
+    bool from_text(std::string_view text);
 
     // --- what the instruments read, from the material itself ---
     bool right_face(double& z) const;                  // the part's right-hand face
@@ -72,6 +84,7 @@ public:
 private:
     LatheSetup s_;
     CPaths part_, chuck_, tail_;
+    uint64_t generation_ = 0;
     void crossings(double z, std::vector<double>& rs) const;
 };
 

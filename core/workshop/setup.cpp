@@ -183,6 +183,7 @@ std::string consistent(const Setup& s) {
 
 std::string parse_setup(std::string_view text, Setup& s) {
     s = Setup{};
+    const std::string_view whole = text;
     Setup out;
     int lineno = 0;
     while (!text.empty()) {
@@ -205,6 +206,7 @@ std::string parse_setup(std::string_view text, Setup& s) {
         if (out.tools.size() > 99) return strf(tr("line %d: too many tools"), lineno);
     }
     if (std::string why = consistent(out); !why.empty()) return why;
+    out.source = std::string(whole);
     s = std::move(out);
     return {};
 }

@@ -52,6 +52,7 @@ struct LatheSetup {
 };
 
 struct Setup {
+    std::string source;  // the text it was read from (the store keeps it)
     std::string name, description;
     std::string kind;  // "lathe" (the machining centre's setup: a later issue)
     LatheSetup lathe;

@@ -81,6 +81,17 @@ touchoff)
     # GRAPH shows the part under the path.
     cmd ":page graph"
     wait_for '⣿⣿⣿'
+    # A restart shows the same part; :part new brings fresh stock.
+    cmd ":quit!"
+    wait_for '^EXIT=0' 10
+    next_server
+    start
+    cmd ":measure dia Z-10"
+    wait_for 'micrometer: dia Z-10 = 50.000 mm'
+    cmd ":part new"
+    wait_for 'fresh stock in the chuck'
+    cmd ":measure dia Z-10"
+    wait_for 'micrometer: dia Z-10 = 60.000 mm'
     ;;
 crash)
     start

@@ -418,3 +418,22 @@ TEST(StoreValues, SettingsAndImdHistory) {
     EXPECT_EQ(s->imd_history("mill", 1).value[0].block, "M3 S1000");
     EXPECT_EQ(s->imd_history("newmachine").value.size(), 1u);
 }
+
+// The workshop of a machine (issue 15): kept, replaced, removed; a machine
+// the store did not know is added.
+TEST(StoreValues, WorkshopIsKeptPerMachine) {
+    TempDir t;
+    auto s = test::open_store(t / "w.db");
+    EXPECT_FALSE(s->workshop("lathe").value);
+    ASSERT_FALSE(s->put_workshop("lathe", "kind = lathe\n", "0 0 10 0 10 10\n"));
+    ASSERT_FALSE(s->put_workshop("lathe", "kind = lathe\nname = b\n", "1 1 2 1 2 2\n"));
+    auto w = s->workshop("lathe").value;
+    ASSERT_TRUE(w);
+    EXPECT_EQ(w->setup, "kind = lathe\nname = b\n");
+    EXPECT_EQ(w->part, "1 1 2 1 2 2\n");
+    ASSERT_FALSE(s->put_workshop("lathe2", "kind = lathe\n", ""));
+    EXPECT_TRUE(s->workshop("lathe2").value);
+    EXPECT_FALSE(s->workshop("mill").value);
+    ASSERT_FALSE(s->put_workshop("lathe", "", ""));
+    EXPECT_FALSE(s->workshop("lathe").value);
+}

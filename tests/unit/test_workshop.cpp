@@ -288,6 +288,20 @@ TEST(Instruments, BoreGrooveAndErrors) {
     EXPECT_EQ(w.measure("length Z-3", r), "length takes no Z");
 }
 
+TEST(Instruments, PartTextRoundTrips) {
+    Shop s(kTurn, right());
+    std::string text = s.shop->world().to_text();
+    LatheWorld w(s.setup.lathe);
+    ASSERT_TRUE(w.from_text(text));
+    EXPECT_EQ(w.to_text(), text);
+    EXPECT_EQ(w.material(), s.shop->world().material());
+    uint64_t g = w.generation();
+    EXPECT_FALSE(w.from_text("1 2 3\n"));
+    EXPECT_FALSE(w.from_text("1 2 x 4 5 6\n"));
+    EXPECT_EQ(w.generation(), g);  // nothing changed
+    EXPECT_EQ(w.to_text(), text);
+}
+
 TEST(Instruments, PartExportIsTheHalfSection) {
     Shop s(kTurn, right());
     std::string zr = part_zr(s.shop->world());
