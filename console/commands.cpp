@@ -230,12 +230,15 @@ Effect read_instrument(Session& s, const CommandCall& c) {
     }
     int decimals = r.resolution < 0.005 ? 3 : 2;
     // TRANSLATORS: the instrument, what it measured, the reading in mm.
-    s.say(strf(tr("%s: %s = %.*f mm"), r.instrument.c_str(), spec.c_str(), decimals, r.value));
+    std::string said = strf(tr("%s: %s = %.*f mm"), r.instrument.c_str(), spec.c_str(), decimals, r.value);
+    // TRANSLATORS: after a presetter's reading: its uncertainty in mm.
+    if (r.uncertainty > 0) said += strf(tr(" (\u00b1%.3f)"), r.uncertainty);
+    s.say(said);
     return Effect::redraw;
 }
 
 bool instrument_word(std::string_view w) {
-    return w == "dia" || w == "bore" || w == "groove" || w == "length";
+    return w == "dia" || w == "bore" || w == "groove" || w == "length" || w == "tool";
 }
 
 Effect setup(Session& s, const CommandCall& c) {
@@ -428,8 +431,8 @@ constexpr Command kCommands[] = {
      N_("touch-off: PREF so that the tool point reads VALUE (X a diameter on the lathe)"), touch},
     {"measure", ":measure Dn AXIS VALUE",
      N_("tool measurement: the gauge of Dn from a touched face or diameter"), measure},
-    {"", ":measure dia Z-n|bore Z-n|groove Z-n|length",
-     N_("read an instrument on the workshop's part, from its right-hand face"), nullptr},
+    {"", ":measure dia Z-n|bore Z-n|groove Z-n|length|tool Tn X|Z|R",
+     N_("read an instrument on the workshop's part, from its right-hand face, or the presetter"), nullptr},
     {"setup", ":setup [lathe|FILE|off]",
      N_("the workshop: a true part, chuck and tools the moves cut and touch"), setup},
     {"part", ":part new", N_("the workshop: fresh stock in the chuck"), part},

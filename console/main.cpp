@@ -163,7 +163,7 @@ int main(int argc, char** argv) {
     run->add_flag("--optional-stop", ra.optional_stop, tr("M01 stops (the optional-stop switch is on)"));
     run->add_option("--setup", ra.setup, tr("run in the workshop: the true chuck, stock and tools (lathe, or a .setup file)"))
         ->type_name("SETUP");
-    run->add_option("--measure", ra.measures, tr("after the run, read an instrument: 'dia Z-20', 'bore Z-5', 'groove Z-30', 'length'"))
+    run->add_option("--measure", ra.measures, tr("after the run, read an instrument: 'dia Z-20', 'bore Z-5', 'groove Z-30', 'length', 'tool T1 X'"))
         ->type_name("WHAT");
     run->add_option("--part-out", ra.part_out, tr("write the cut part: its half-section as (Z, R) points, or SVG if FILE ends in .svg"))
         ->type_name("FILE");

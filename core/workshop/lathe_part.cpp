@@ -57,6 +57,20 @@ CPath hull(CPath p) {
     return h;
 }
 
+// True when every turn of the outline goes the same way.
+bool convex(const CPath& p) {
+    if (p.size() < 3) return true;
+    int sign = 0;
+    for (size_t i = 0; i < p.size(); ++i) {
+        const IntPoint &a = p[i], &b = p[(i + 1) % p.size()], &c = p[(i + 2) % p.size()];
+        double t = double(b.X - a.X) * double(c.Y - b.Y) - double(b.Y - a.Y) * double(c.X - b.X);
+        int s = t > 0 ? 1 : t < 0 ? -1 : 0;
+        if (s && sign && s != sign) return false;
+        if (s) sign = s;
+    }
+    return true;
+}
+
 CPaths clip(const CPaths& a, const CPaths& b, ClipperLib::ClipType op) {
     ClipperLib::Clipper c;
     c.AddPaths(a, ClipperLib::ptSubject, true);
@@ -87,6 +101,21 @@ CPath default_holder(int sx, int sz, double edge) {
 }
 
 }  // namespace
+
+// A sweep that reaches below the axis, with its mirror image: a tool past
+// the centre cuts what it meets on the other side.
+static CPaths mirrored(CPaths out) {
+    bool below = false;
+    for (const CPath& q : out)
+        for (const IntPoint& v : q) below = below || v.Y < 0;
+    if (!below) return out;
+    CPaths mirror = out;
+    for (CPath& q : mirror) {
+        for (IntPoint& v : q) v.Y = -v.Y;
+        ClipperLib::ReversePath(q);
+    }
+    return clip(out, mirror, ClipperLib::ctUnion);
+}
 
 CPath circle(Pt c, double r) {
     // Inscribed, with a vertex on each axis: the points that turn a diameter
@@ -165,6 +194,8 @@ LatheWorld::LatheWorld(const LatheSetup& s) : s_(s) {
         CPath tip{to_int({tz, 0}), to_int({tz + cone, 0}), to_int({tz + cone, 8})};
         tail_ = clip({tip, rect(tz + cone, 0, tz + cone + 120, rq)}, {}, ClipperLib::ctUnion);
     }
+    chuck_box_ = box(chuck_);
+    tail_box_ = box(tail_);
     new_part();
 }
 
@@ -185,6 +216,15 @@ CPaths LatheWorld::sweep(const CPath& shape, const std::vector<Pt>& path) {
     CPaths out;
     CPath p;
     for (const Pt& q : path) p.push_back(to_int(q));
+    if (p.size() <= 2 && convex(shape)) {
+        // A convex shape along a straight move sweeps the hull of its two
+        // places: exact, and much cheaper than the sum.
+        CPath both;
+        for (const IntPoint& d : p)
+            for (const IntPoint& q : shape) both.emplace_back(q.X + d.X, q.Y + d.Y);
+        out.push_back(hull(std::move(both)));
+        return mirrored(std::move(out));
+    }
     if (p.size() > 1) ClipperLib::MinkowskiSum(shape, p, out, false);
     for (const IntPoint& d : p) {
         CPath moved = shape;
@@ -192,22 +232,32 @@ CPaths LatheWorld::sweep(const CPath& shape, const std::vector<Pt>& path) {
         out.push_back(std::move(moved));
     }
     out = clip(out, {}, ClipperLib::ctUnion);
-    bool below = false;
-    for (const CPath& q : out)
-        for (const IntPoint& v : q) below = below || v.Y < 0;
-    if (!below) return out;
-    CPaths mirror = out;
-    for (CPath& q : mirror) {
-        for (IntPoint& v : q) v.Y = -v.Y;
-        ClipperLib::ReversePath(q);
-    }
-    CPaths all = clip(out, mirror, ClipperLib::ctUnion);
-    return all;
+    return mirrored(std::move(out));
+}
+
+LatheWorld::Box LatheWorld::box(const CPaths& p) {
+    Box b;
+    bool any = false;
+    for (const CPath& q : p)
+        for (const IntPoint& v : q) {
+            if (!any) b.x0 = b.x1 = v.X, b.y0 = b.y1 = v.Y, any = true;
+            b.x0 = std::min(b.x0, v.X), b.x1 = std::max(b.x1, v.X);
+            b.y0 = std::min(b.y0, v.Y), b.y1 = std::max(b.y1, v.Y);
+        }
+    return b;
+}
+
+const LatheWorld::Box& LatheWorld::box_of(Obstacle what) const {
+    if (what == Obstacle::chuck) return chuck_box_;
+    if (what == Obstacle::tailstock) return tail_box_;
+    if (part_box_gen_ != generation_) part_box_ = box(part_), part_box_gen_ = generation_;
+    return part_box_;
 }
 
 double LatheWorld::depth_into(const CPaths& swept, Obstacle what) const {
     const CPaths& o = what == Obstacle::material ? part_ : what == Obstacle::chuck ? chuck_ : tail_;
     if (o.empty() || swept.empty()) return 0;
+    if (!box(swept).meets(box_of(what))) return 0;  // far apart: no Boolean needed
     double deepest = 0;
     for (const CPath& q : clip(swept, o, ClipperLib::ctIntersection)) {
         double a = std::abs(ClipperLib::Area(q)) * kUnit * kUnit, per = 0;

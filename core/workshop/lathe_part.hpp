@@ -82,6 +82,15 @@ public:
     bool groove(double z, double& left, double& right) const;
 
 private:
+    struct Box {
+        ClipperLib::cInt x0 = 0, y0 = 0, x1 = -1, y1 = -1;  // empty when x1 < x0
+        bool meets(const Box& o) const { return x0 <= o.x1 && o.x0 <= x1 && y0 <= o.y1 && o.y0 <= y1; }
+    };
+    static Box box(const CPaths& p);
+    const Box& box_of(Obstacle what) const;
+    mutable Box part_box_;
+    mutable uint64_t part_box_gen_ = ~uint64_t(0);
+    Box chuck_box_, tail_box_;
     LatheSetup s_;
     CPaths part_, chuck_, tail_;
     uint64_t generation_ = 0;

@@ -54,6 +54,10 @@ std::string workshop_json(const Workshop& w, const std::vector<Asked>& asked) {
             append_fixed4(o, a.r.value);
             o += ",\"resolution\":";
             append_fixed4(o, a.r.resolution);
+            if (a.r.uncertainty > 0) {
+                o += ",\"uncertainty\":";
+                append_fixed4(o, a.r.uncertainty);
+            }
         }
         o += '}';
     }
@@ -70,8 +74,13 @@ std::string readings_text(const std::vector<Asked>& asked) {
             continue;
         }
         int decimals = a.r.resolution < 0.005 ? 3 : 2;
-        // TRANSLATORS: a reading: what was asked, the value in mm, the instrument.
-        o += strf(tr("%s: %.*f mm (%s)\n"), a.r.spec.c_str(), decimals, a.r.value, a.r.instrument.c_str());
+        if (a.r.uncertainty > 0)
+            // TRANSLATORS: a presetter's reading: what was asked, the value and its uncertainty in mm, the instrument.
+            o += strf(tr("%s: %.*f mm \u00b1%.3f (%s)\n"), a.r.spec.c_str(), decimals, a.r.value, a.r.uncertainty,
+                      a.r.instrument.c_str());
+        else
+            // TRANSLATORS: a reading: what was asked, the value in mm, the instrument.
+            o += strf(tr("%s: %.*f mm (%s)\n"), a.r.spec.c_str(), decimals, a.r.value, a.r.instrument.c_str());
     }
     return o;
 }

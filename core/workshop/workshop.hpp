@@ -56,6 +56,7 @@ struct Reading {
     std::string instrument;  // "micrometer", "caliper", …
     double value = 0;        // mm, rounded to the instrument's resolution
     double resolution = 0;   // mm
+    double uncertainty = 0;  // mm, ± (the presetter's); 0: within the resolution
 };
 
 class Workshop final : public MachineSink {
@@ -118,11 +119,13 @@ private:
     // `stop` being the index fraction where the motion ends.
     bool check(const MoveEvent& e, const std::vector<Pt>& tips, const std::vector<Axes>& oms);
     std::string where(const Pt& p) const;
+    std::string presetter(std::string_view rest, Reading& r) const;
     // The first fraction of the path where `shape` comes deeper than `depth`
     // into `what` (`before`: the last one where it does not yet, within
     // 0.1 µm); 2 when it never does.
+    // `whole`: the shape's sweep along the whole path, when already made.
     double first_contact(const CPath& shape, const std::vector<Pt>& tips, Obstacle what, double depth,
-                         bool before = false) const;
+                         bool before = false, const CPaths* whole = nullptr) const;
 
     const MachineProfile& m_;
     Setup setup_;

@@ -105,6 +105,19 @@ y
 :undo
 :undo
 :undo
+:measure dia Z-10
+:setup
+:setup nowhere.setup
+:part
+:part new
+:setup lathe
+:setup
+:measure dia Z-10
+:measure groove Z-10
+:measure tool T1 X
+:measure dia
+:part new
+:setup off
 :protect
 :protect
 :protect pin 1234

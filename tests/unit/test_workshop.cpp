@@ -284,8 +284,34 @@ TEST(Instruments, BoreGrooveAndErrors) {
     EXPECT_EQ(w.measure("dia Z5", r), "Z is measured from the part's right-hand face: a negative distance (Z-20)");
     EXPECT_EQ(w.measure("dia", r), "dia needs a Z: how far from the part's right-hand face (Z-20)");
     EXPECT_EQ(w.measure("dia Z-200", r), "no material there");
-    EXPECT_EQ(w.measure("weight", r), "expected dia Z-n, bore Z-n, groove Z-n or length");
+    EXPECT_EQ(w.measure("weight", r), "expected dia Z-n, bore Z-n, groove Z-n, length or tool Tn X|Z|R");
     EXPECT_EQ(w.measure("length Z-3", r), "length takes no Z");
+}
+
+TEST(Instruments, PresetterReadsTheTruthWithinItsUncertainty) {
+    workshop::Setup st;
+    ASSERT_TRUE(builtin_setup("lathe", st));
+    MachineProfile m;
+    builtin_machine("lathe", m);
+    Workshop w(m, st, nullptr);
+    Reading r;
+    for (const char* f : {"X", "Z", "R"}) {
+        for (int t : {1, 2, 3, 4}) {
+            ASSERT_EQ(w.measure("tool T" + std::to_string(t) + " " + f, r), "");
+            const ToolTruth& tt = *st.tool(t);
+            double truth = f[0] == 'X' ? tt.x : f[0] == 'Z' ? tt.z : tt.radius;
+            EXPECT_LE(std::abs(r.value - truth), r.uncertainty + 1e-9) << t << f;
+            EXPECT_EQ(r.uncertainty, 0.002);
+            EXPECT_EQ(r.instrument, "presetter");
+        }
+    }
+    // The same reading every time: the presetter's error is fixed.
+    Reading again;
+    w.measure("tool T1 X", r);
+    w.measure("tool T1 X", again);
+    EXPECT_EQ(r.value, again.value);
+    EXPECT_EQ(w.measure("tool T9 X", r), "there is no T9 on the turret");
+    EXPECT_EQ(w.measure("tool T1 Q", r), "tool needs a tool and a field: tool T1 X, tool T1 Z or tool T1 R");
 }
 
 TEST(Instruments, PartTextRoundTrips) {
