@@ -13,6 +13,9 @@ class Interpreter;
 namespace store {
 class Store;
 }
+namespace workshop {
+struct Setup;
+}
 }  // namespace pupitre
 
 namespace pupitre::cli {
@@ -52,6 +55,9 @@ int apply_sets(const std::vector<std::string>& sets, Interpreter& in);          
 bool load_machine(const std::string& name, MachineProfile& m);
 // The machine a batch command runs on: --machine, else the default.
 inline std::string batch_machine(const std::string& asked) { return asked.empty() ? kDefaultMachine : asked; }
+// --setup: a shipped setup's name or a setup file (pupitre-setup(5)); prints
+// the problem and returns false.
+bool load_setup(const std::string& name, const MachineProfile& m, workshop::Setup& s);
 // After a run with errors on the default machine, says which machine ran.
 void default_machine_note(const std::string& asked, bool errors);
 

@@ -7,12 +7,14 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <memory>
 #include <vector>
 
 #include "console/cli.hpp"
 #include "core/i18n.hpp"
 #include "core/interp/interp.hpp"
 #include "core/output/cairo_plot.hpp"
+#include "core/workshop/report.hpp"
 #include "core/output/scene.hpp"
 #include "core/output/svg.hpp"
 #include "core/output/toolpath.hpp"
@@ -23,9 +25,9 @@ namespace {
 
 // Runs to the end as `run` does (stops are resumed), following the program's
 // line types (E31000, E31001) and the first plane other than G17 it selects.
-void run_collecting(Interpreter& in, Toolpath& path, int& plane_seen) {
+void run_collecting(Interpreter& in, Toolpath& path, int& plane_seen, const workshop::Workshop* shop) {
     int rapid = -1, feed = -1;
-    for (;;) {
+    while (!shop || !shop->crashed()) {
         StepResult r = in.step();
         const auto& e = in.e_written();
         if (!e.empty()) {
@@ -37,6 +39,26 @@ void run_collecting(Interpreter& in, Toolpath& path, int& plane_seen) {
         if (!plane_seen && in.modal().plane != 17) plane_seen = in.modal().plane;
         if (r != StepResult::running && r != StepResult::stopped) return;
     }
+}
+
+// The part where the program frame puts it: a point of the part is where a
+// tool with a right gauge would read it, PREF and DEC1 as entered.
+std::vector<std::vector<std::array<double, 2>>> part_in_program_frame(const workshop::Workshop& w,
+                                                                      const Interpreter& in) {
+    const Axes& om = in.machine_pos();
+    const Axes& op = in.program_pos();
+    const Axes& gauge = in.frames().gauge;
+    const double dz = op[Z] - (om[Z] - gauge[Z]);
+    const double dx = op[X] - (om[X] - gauge[X]) + w.setup().lathe.axis_x;
+    std::vector<std::vector<std::array<double, 2>>> out;
+    for (const workshop::CPath& q : w.world().material()) {
+        out.emplace_back();
+        for (const auto& v : q) {
+            workshop::Pt p = workshop::to_mm(v);
+            out.back().push_back({p[0] + dz, p[1] + dx});
+        }
+    }
+    return out;
 }
 
 PathPlane chosen_plane(const Toolpath& path, const MachineProfile& m, int plane_seen) {
@@ -109,11 +131,15 @@ int plot(const PlotArgs& a) {
         std::fprintf(stderr, tr("pupitre: %s: no program to run\n"), a.files.front().c_str());
         return kDataErr;
     }
+    workshop::Setup setup;
+    if (!a.setup.empty() && !load_setup(a.setup, m, setup)) return kUsage;
     Toolpath path(m);
+    std::unique_ptr<workshop::Workshop> shop;
+    if (!a.setup.empty()) shop = std::make_unique<workshop::Workshop>(m, setup, &path);
     RunOptions o;
     o.block_skip = a.block_skip;
     o.max_blocks = a.max_blocks;
-    Interpreter in(m, mem, path, o);
+    Interpreter in(m, mem, shop ? static_cast<MachineSink&>(*shop) : path, o);
     if (int rc = apply_sets(a.sets, in)) return rc;
     path.start_at(in.program_pos());
     path.program = main->number;
@@ -124,12 +150,24 @@ int plot(const PlotArgs& a) {
         path.set_extremes(lo, hi, mlo, mhi);
     int plane_seen = 0;
     in.start(main);
-    run_collecting(in, path, plane_seen);
+    run_collecting(in, path, plane_seen, shop.get());
     for (const Diag& d : in.diags()) {
         print_diag(d);
         path.add_error(d);
     }
-    default_machine_note(a.machine, in.has_errors());
+    bool crashed = shop && shop->crashed();
+    if (shop) {
+        for (const workshop::Crash& c : shop->crashes()) {
+            Diag d = workshop::crash_diag(c);
+            d.file = a.files.front();
+            for (const auto& p : mem.programs())
+                if (p->number == d.program) d.file = p->file;
+            print_diag(d);
+            path.add_error(d);
+        }
+        path.set_part(part_in_program_frame(*shop, in));
+    }
+    default_machine_note(a.machine, in.has_errors() || crashed);
     // A run that fails before any move has nothing to draw: no file is left
     // behind (CLARIFICATIONS 12.10). One that fails later draws what ran.
     if (in.has_errors() && in.moves() == 0) {
@@ -145,7 +183,7 @@ int plot(const PlotArgs& a) {
     for (const Output& out : kOutputs)
         if (!(a.*out.file).empty())
             if (int rc = write_out(out, scene, a)) return rc;
-    return in.has_errors() ? kProgramErrors : kOk;
+    return in.has_errors() || crashed ? kProgramErrors : kOk;
 }
 
 }  // namespace pupitre::cli

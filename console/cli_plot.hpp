@@ -18,6 +18,7 @@ struct PlotArgs {
     std::vector<std::string> sets;   // NAME=VALUE, as `run --set`
     bool block_skip = false;
     long max_blocks = 20'000'000;
+    std::string setup;               // --setup: the workshop's part drawn under the path
 };
 
 // Runs the program to its end (or its first error) and writes the drawing; the

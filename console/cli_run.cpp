@@ -83,6 +83,8 @@ namespace {
 
 class NullSink final : public MachineSink {};
 
+}  // namespace
+
 // --setup: a shipped setup's name or a setup file; prints the problem.
 bool load_setup(const std::string& name, const MachineProfile& m, workshop::Setup& s) {
     if (!m.lathe) {
@@ -103,6 +105,8 @@ bool load_setup(const std::string& name, const MachineProfile& m, workshop::Setu
     }
     return true;
 }
+
+namespace {
 
 // The file a program came from, for a diagnostic found outside the interpreter.
 void place(Diag& d, const ProgramMemory& mem) {

@@ -182,6 +182,8 @@ int main(int argc, char** argv) {
     plot->add_option("--svg", pa.svg, tr("the SVG file to write ('-': the standard output)"))->type_name("OUT");
     plot->add_option("--png", pa.png, tr("the picture as a PNG, 1600 pixels wide"))->type_name("OUT");
     plot->add_option("--pdf", pa.pdf, tr("the picture as a one-page PDF, for printing"))->type_name("OUT");
+    plot->add_option("--setup", pa.setup, tr("draw the part the workshop cut under the path (lathe, or a .setup file)"))
+        ->type_name("SETUP");
     plot->add_option("files", pa.files, tr("program files; the first program of the first file is run"))
         ->required()
         ->check(existing_file());

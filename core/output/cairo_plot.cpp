@@ -121,6 +121,24 @@ void MovePen::arc(size_t i) {
 
 void stock_and_frames(cairo_t* cr, const Scene& sc) {
     const Toolpath& p = *sc.path;
+    if (sc.present[size_t(Layer::part)]) {
+        const LayerStyle& st = layer_style(Layer::part);
+        cairo_save(cr);
+        cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);
+        for (double ys : {1.0, -1.0}) {
+            if (ys < 0 && !sc.opt.mirror) continue;
+            for (const auto& poly : p.part()) {
+                for (size_t k = 0; k < poly.size(); ++k)
+                    (k ? cairo_line_to : cairo_move_to)(cr, sc.px(poly[k][0]), sc.py(ys * poly[k][1]));
+                cairo_close_path(cr);
+            }
+        }
+        cairo_set_source_rgba(cr, st.colour.r / 255.0, st.colour.g / 255.0, st.colour.b / 255.0, 0.45);
+        cairo_fill_preserve(cr);
+        set_layer_pen(cr, Layer::part);
+        cairo_stroke(cr);
+        cairo_restore(cr);
+    }
     if (sc.lathe) {
         set_layer_pen(cr, Layer::axis);
         cairo_move_to(cr, sc.px(sc.wx0), sc.py(0));

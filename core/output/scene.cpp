@@ -18,6 +18,7 @@ namespace {
 // Widths and dashes are paper millimetres; rapids are dashed, cuts solid.
 // The legend's words are shown translated (tr(st.legend)).
 constexpr LayerStyle kStyles[kLayerCount] = {
+    {"part", N_("the part as cut (workshop)"), {120, 144, 176}, 0.15, {0, 0, 0, 0}, 1},
     {"axis", N_("spindle axis"), {127, 127, 127}, 0.18, {4, 1, 0.5, 1}, 1},
     {"stock", N_("stock (G64)"), {160, 82, 45}, 0.3, {1.2, 0.8, 0, 0}, 1},
     {"extremes", N_("EM- / EM+ extremes"), {51, 102, 204}, 0.2, {0.6, 0.6, 0, 0}, 1},
@@ -117,6 +118,7 @@ void find_layers(Scene& s) {
     // The axis and the mirror are drawn on the lathe, in the legend when in the frame.
     s.present[size_t(Layer::axis)] = s.lathe && s.wy0 <= 0 && s.wy1 >= 0;
     s.present[size_t(Layer::stock)] = s.lathe && !p.stock().empty();
+    s.present[size_t(Layer::part)] = s.lathe && !p.part().empty();
     uint16_t both = p.extremes_mask_lo() & p.extremes_mask_hi();
     s.present[size_t(Layer::extremes)] = (both >> s.h & 1) && (both >> s.v & 1);
     for (const ProfileElem& e : p.profile_elems())

@@ -18,6 +18,7 @@ namespace pupitre {
 
 // The layers of the drawing, in drawing order (later ones on top).
 enum class Layer : uint8_t {
+    part,      // the workshop's part as cut, filled
     axis,      // the lathe's spindle axis
     stock,     // the G64 rough stock
     extremes,  // the EM- / EM+ frame

@@ -183,6 +183,26 @@ std::string Writer::group_open(Layer l) const {
 // promises them), the EM± frame.
 std::string Writer::frame_layers() const {
     std::string s;
+    if (sc_.present[size_t(Layer::part)]) {
+        const LayerStyle& st = layer_style(Layer::part);
+        char fill[64];
+        std::snprintf(fill, sizeof fill, " fill=\"#%02x%02x%02x\" fill-opacity=\"0.45\" fill-rule=\"evenodd\"",
+                      st.colour.r, st.colour.g, st.colour.b);
+        s += std::string("<g id=\"part\"") + fill + pen_attrs(st, sc_.k) + ">\n";
+        for (double ys : {-1.0, 1.0}) {
+            if (ys > 0 && !sc_.opt.mirror) continue;
+            s += "<path d=\"";
+            for (const auto& poly : p_.part()) {
+                for (size_t k = 0; k < poly.size(); ++k) {
+                    s += k ? " L" : "M";
+                    xy(s, poly[k][0], ys * poly[k][1]);
+                }
+                s += " Z ";
+            }
+            s += "\"/>\n";
+        }
+        s += "</g>\n";
+    }
     if (sc_.lathe) {
         s += group_open(Layer::axis) + "<path d=\"M";
         xy(s, sc_.wx0, 0);

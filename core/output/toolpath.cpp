@@ -41,6 +41,7 @@ void Toolpath::clear() {
     locs_.clear();
     errors_.clear();
     stock_.clear();
+    part_.clear();
     profile_.clear();
     has_start_ = false;
     all_ = cut_ = PathBox{};

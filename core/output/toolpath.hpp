@@ -135,6 +135,10 @@ class Toolpath final : public MachineSink {
     Loc loc(size_t i) const;
     const std::vector<PathError>& errors() const { return errors_; }
     const std::vector<std::vector<std::array<double, 2>>>& stock() const { return stock_; }
+    // The workshop's part as cut (pupitre-setup(5)): its half-section, (Z, X
+    // as a radius) in the program frame; drawn filled under the path.
+    void set_part(std::vector<std::vector<std::array<double, 2>>> p) { part_ = std::move(p); }
+    const std::vector<std::vector<std::array<double, 2>>>& part() const { return part_; }
     // The programmed profile of the compensated moves (G41/G42), element by element.
     const std::vector<ProfileElem>& profile_elems() const { return profile_; }
     // Extents of every move, and of the cutting moves only (feed and compensated).
@@ -176,6 +180,7 @@ class Toolpath final : public MachineSink {
     std::vector<LocRun> locs_;
     std::vector<PathError> errors_;
     std::vector<std::vector<std::array<double, 2>>> stock_;
+    std::vector<std::vector<std::array<double, 2>>> part_;
     std::vector<ProfileElem> profile_;
     double start_[3] = {0, 0, 0};
     bool has_start_ = false;

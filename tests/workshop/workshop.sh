@@ -76,4 +76,16 @@ bad=$(tail -n +2 "$work/x.zr" | grep -Ev '^(-?[0-9]+\.[0-9]{3} -?[0-9]+\.[0-9]{3
 grep -qx '0.000 25.000' "$work/x.zr" || fail "(e) x.zr should start the Ø50 at the face"
 grep -qx -- '-20.000 28.000' "$work/x.zr" || fail "(e) x.zr should have the Ø56 from the shoulder at Z-20"
 grep -qx -- '-40.000 30.000' "$work/x.zr" || fail "(e) x.zr should have the Ø60 from Z-40"
+
+# (f) plot --setup draws the part under the path; a crash is drawn and exits 1.
+"$bin" plot --setup lathe "${truth[@]}" --svg "$work/plot.svg" turn.iso 2>"$work/err" ||
+    fail "(f) plot --setup: $(cat "$work/err")"
+grep -q '<g id="part"' "$work/plot.svg" || fail "(f) the plot should have the part's layer"
+grep -q 'the part as cut (workshop)' "$work/plot.svg" || fail "(f) the legend should name the part"
+"$bin" plot turn.iso --svg "$work/plain.svg" 2>/dev/null
+grep -q 'id="part"' "$work/plain.svg" && fail "(f) no part without --setup"
+"$bin" plot --setup lathe --set PREF.X=-20 --set PREF.Z=25 --set D1.X=52.347 --set D1.Z=41.215 \
+    --svg "$work/crash.svg" turn.iso 2>"$work/err"
+[ $? -eq 1 ] || fail "(f) a crash in plot should exit 1"
+grep -Eq 'error 1200: crash:' "$work/err" || fail "(f) plot should print the crash: $(cat "$work/err")"
 echo ok
