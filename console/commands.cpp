@@ -284,6 +284,27 @@ Effect setup(Session& s, const CommandCall& c) {
     return Effect::redraw;
 }
 
+// The paper test: a shim of known thickness between the tool and the part.
+Effect shim(Session& s, const CommandCall& c) {
+    workshop::Workshop* w = s.sim().shop();
+    if (!w) {
+        s.say(tr("no workshop: :setup lathe puts a part in the chuck"), true);
+        return Effect::redraw;
+    }
+    double mm = 0;
+    if (c.arg(1) == "off") {
+        w->set_shim(0);
+        s.say(tr("no shim on the part"));
+        return Effect::redraw;
+    }
+    if (!number(c.arg(1), mm) || mm < 0.005 || mm > 50 || !c.arg(2).empty())
+        return usage(s, tr(":shim MM (0.005 to 50) or :shim off"));
+    w->set_shim(mm);
+    s.say(strf(tr("a %s mm shim on the part: a jog stops when the tool pinches it; subtract it when you touch off"),
+               pages::fmt_len(mm).c_str()));
+    return Effect::redraw;
+}
+
 Effect part(Session& s, const CommandCall& c) {
     workshop::Workshop* w = s.sim().shop();
     if (c.arg(1) != "new") return usage(s, ":part new");
@@ -436,6 +457,8 @@ constexpr Command kCommands[] = {
     {"setup", ":setup [lathe|FILE|off]",
      N_("the workshop: a true part, chuck and tools the moves cut and touch"), setup},
     {"part", ":part new", N_("the workshop: fresh stock in the chuck"), part},
+    {"shim", ":shim MM|off",
+     N_("the paper test: a shim of MM on the part stops a jog when the tool pinches it"), shim},
     {"undo", ":undo", N_("undo the last change of an origin or a corrector"),
      [](Session& s, const CommandCall&) { return s.undo(); }},
     {"protect", ":protect on|off [PIN]",

@@ -35,6 +35,16 @@ std::vector<Pt> prefix(const std::vector<Pt>& p, double f, double* at_index = nu
     return out;
 }
 
+// The outline grown by `by` mm (round corners).
+CPath grown(const CPath& shape, double by) {
+    ClipperLib::ClipperOffset grow;
+    grow.AddPath(shape, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
+    grow.ArcTolerance = kChord / kUnit;
+    CPaths out;
+    grow.Execute(out, by / kUnit);
+    return out.empty() ? shape : out.front();
+}
+
 double length_of(const std::vector<Pt>& p) {
     double total = 0;
     for (size_t i = 1; i < p.size(); ++i) total += std::hypot(p[i][0] - p[i - 1][0], p[i][1] - p[i - 1][1]);
@@ -52,14 +62,8 @@ Workshop::Workshop(const MachineProfile& m, const Setup& s, MachineSink* next)
         Tool& slot = tools_[size_t(t.position)];
         slot.truth = setup_.tool(t.position);
         slot.shape = tool_shape(t);
-        for (auto [from, to] : {std::pair{&slot.shape.insert, &slot.near.insert},
-                                std::pair{&slot.shape.holder, &slot.near.holder}}) {
-            ClipperLib::ClipperOffset grow;
-            grow.AddPath(*from, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
-            CPaths out;
-            grow.Execute(out, kNear / kUnit);
-            *to = out.empty() ? *from : out.front();
-        }
+        slot.near.insert = grown(slot.shape.insert, kNear);
+        slot.near.holder = grown(slot.shape.holder, kNear);
     }
 }
 
@@ -238,17 +242,37 @@ Outcome Workshop::jog(const MoveEvent& e, bool continuous) {
     double first = 2;
     Obstacle hit = Obstacle::none;
     bool holder = false;
+    // A shim on the part (the paper test): the insert meets the part a shim's
+    // thickness early, and cannot cut through it.
+    CPath shim_insert, shim_near;
+    if (shim_ > 0) {
+        shim_insert = grown(t->shape.insert, shim_);
+        shim_near = grown(t->shape.insert, shim_ + kNear);
+    }
+    bool on_shim = false;
     for (int k = 0; k < 2; ++k) {
         const CPaths near_here = LatheWorld::sweep(*near[k], here), at_here = LatheWorld::sweep(*shapes[k], here);
         const CPaths whole = LatheWorld::sweep(*shapes[k], tips);
         for (Obstacle w : things) {
+            const bool shim = k == 0 && w == Obstacle::material && shim_ > 0;
+            const CPath& shape = shim ? shim_insert : *shapes[k];
             // At a contact, an increment goes on as a feed; a held JOG key
             // slides along or away, and stops again before going deeper.
-            bool touching = world_.depth_into(near_here, w) > kTouchDepth;
+            bool touching = world_.depth_into(shim ? LatheWorld::sweep(shim_near, here) : near_here, w) > kTouchDepth;
+            if (touching && !continuous && shim) {
+                o.touched = true;
+                o.fraction = 0;
+                o.stop = oms.front();
+                o.what = strf(tr("the shim is between T%d and the part: :shim off before cutting"), tool_);
+                return o;
+            }
             if (touching && !continuous) return apply(e);
-            double limit = touching ? std::max(kTouchDepth, world_.depth_into(at_here, w)) : kTouchDepth;
-            if (double f = first_contact(*shapes[k], tips, w, limit, true, &whole); f < first)
-                first = f, hit = w, holder = k == 1;
+            double limit = touching ? std::max(kTouchDepth, world_.depth_into(shim ? LatheWorld::sweep(shape, here)
+                                                                                   : at_here, w))
+                                    : kTouchDepth;
+            const CPaths shim_whole = shim ? LatheWorld::sweep(shape, tips) : CPaths{};
+            if (double f = first_contact(shape, tips, w, limit, true, shim ? &shim_whole : &whole); f < first)
+                first = f, hit = w, holder = k == 1, on_shim = shim;
         }
     }
     if (hit == Obstacle::none) return apply(e);
@@ -265,7 +289,8 @@ Outcome Workshop::jog(const MoveEvent& e, bool continuous) {
                                                            : tr("T%d touched the chuck %s"))
                                                  : (holder ? tr("the holder of T%d touched the tailstock %s")
                                                            : tr("T%d touched the tailstock %s"));
-    o.what = strf(what, tool_, place.c_str());
+    o.what = on_shim ? strf(tr("T%d touched the %s mm shim on the part %s"), tool_, fixed3(shim_).c_str(), place.c_str())
+                     : strf(what, tool_, place.c_str());
     return o;
 }
 

@@ -73,6 +73,10 @@ public:
     void clear_crash() { crashes_.clear(); }  // RAZ: the alarm is acknowledged
     int tool() const { return tool_; }
     double cut_length(int tool) const;  // mm of feed in material so far
+    // A shim (or a cigarette paper) of this thickness on the part: a jog
+    // stops when the tool pinches it (the paper test); 0: none.
+    void set_shim(double mm) { shim_ = mm; }
+    double shim() const { return shim_; }
 
     // The true tool point of the tool in use for a machine position (Z, R).
     Pt tip(const Axes& om) const;
@@ -133,6 +137,7 @@ private:
     MachineSink* next_;
     std::vector<Tool> tools_;  // by turret position (0: none)
     int tool_ = 0;
+    double shim_ = 0;
     int dir_ = 5;
     double rpm_ = 0;
     std::vector<Crash> crashes_;

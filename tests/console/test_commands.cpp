@@ -116,6 +116,9 @@ y
 :measure groove Z-10
 :measure tool T1 X
 :measure dia
+:shim
+:shim 0.05
+:shim off
 :part new
 :setup off
 :protect

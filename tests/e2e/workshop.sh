@@ -127,6 +127,32 @@ crash)
     cmd ":page alarm"
     wait_for 'crash: T1 rapid \(G0\) into the part'
     ;;
+shim)
+    # The paper test: a 0.05 shim on the bar; the jog stops 0.05 above it
+    # (Ø60.1), and the touch-off subtracts it.
+    start
+    pom
+    cmd ":setup lathe"
+    cmd ":speed max"
+    cmd ":mode imd"
+    cmd "T1 D1 M6"
+    keys F9
+    wait_for 'IMD done' 10
+    cmd ":mode jog"
+    cmd ":jog Z -150"
+    cmd ":shim 0.05"
+    wait_for 'a 0.050 mm shim on the part'
+    cmd ":jog X -200"
+    wait_for 'T1 touched the 0.050 mm shim on the part at ø60.100' 20
+    [ "$(op_value X)" = "124.794" ] || fail "the shim should stop the tool at OM X 124.794"
+    cmd ":mode inc"
+    cmd ":jog X -0.1"
+    wait_for 'the shim is between T1 and the part: :shim off before cutting'
+    cmd ":touch X 60.1"
+    wait_for 'PREF.X \(radius\) = OM ø124.794/2 - surface ø60.100/2 = 32.347' 5
+    cmd ":shim off"
+    wait_for 'no shim on the part'
+    ;;
 *)
     echo "unknown case $case"
     exit 2

@@ -288,6 +288,76 @@ TEST(Instruments, BoreGrooveAndErrors) {
     EXPECT_EQ(w.measure("length Z-3", r), "length takes no Z");
 }
 
+// A jog of T1 straight down onto the bar's Ø60, 20 mm from its face.
+MoveEvent jog_down(double from_r, double to_r) {
+    MoveEvent e;
+    e.g = 1;
+    e.from_mach[Z] = e.to_mach[Z] = 35 - 20 + 41.215;
+    e.from_mach[X] = from_r + 52.347 - 20;
+    e.to_mach[X] = to_r + 52.347 - 20;
+    e.to_prog = e.to_mach;
+    e.length = std::abs(from_r - to_r);
+    return e;
+}
+
+TEST(Contacts, AJogStopsAtTheDiameterAndAShimStopsItAShimEarly) {
+    workshop::Setup st;
+    ASSERT_TRUE(builtin_setup("lathe", st));
+    MachineProfile m;
+    builtin_machine("lathe", m);
+    Workshop w(m, st, nullptr);
+    w.tool(Loc{}, 1, 1, 0, true);
+    Outcome o = w.jog(jog_down(40, 20), true);
+    ASSERT_TRUE(o.touched);
+    // P (the nose's bottom for C3) stops before entering, within the
+    // contact's resolution (0.1 µm of thickness, about 0.2 µm deep).
+    EXPECT_NEAR(w.tip(o.stop)[1], 30, 3e-4);
+    EXPECT_NE(o.what.find("T1 touched the part at \u00f860.000, -20.000 mm"), std::string::npos) << o.what;
+    // The paper test: a 0.05 shim on the part.
+    w.set_shim(0.05);
+    o = w.jog(jog_down(40, 20), true);
+    ASSERT_TRUE(o.touched);
+    EXPECT_NEAR(w.tip(o.stop)[1], 30.05, 3e-4);
+    EXPECT_NE(o.what.find("touched the 0.050 mm shim"), std::string::npos) << o.what;
+    // From there an increment does not cut through the shim.
+    Outcome inc = w.jog(jog_down(w.tip(o.stop)[1], w.tip(o.stop)[1] - 0.1), false);
+    EXPECT_TRUE(inc.touched);
+    EXPECT_EQ(inc.fraction, 0);
+    EXPECT_NE(inc.what.find(":shim off"), std::string::npos);
+    // Without the shim the same increment cuts (the spindle turns).
+    w.set_shim(0);
+    SpindleEvent on;
+    on.dir = 3;
+    on.rpm = 800;
+    w.spindle(on);
+    double r = w.tip(o.stop)[1];
+    inc = w.jog(jog_down(r, 29.9), false);  // an increment stops at the part first
+    ASSERT_TRUE(inc.touched);
+    r = w.tip(inc.stop)[1];
+    inc = w.jog(jog_down(r, 29.9), false);  // then cuts
+    EXPECT_FALSE(inc.touched);
+    EXPECT_FALSE(inc.crashed);
+    // The nose (r 0.8) is lowest under its centre, 0.8 from P along +Z.
+    Reading rd;
+    ASSERT_EQ(w.measure("dia Z-19.2", rd), "");
+    EXPECT_DOUBLE_EQ(rd.value, 59.8);
+}
+
+TEST(Contacts, FromAContactAnIncrementWithTheSpindleStoppedIsACrash) {
+    workshop::Setup st;
+    ASSERT_TRUE(builtin_setup("lathe", st));
+    MachineProfile m;
+    builtin_machine("lathe", m);
+    Workshop w(m, st, nullptr);
+    w.tool(Loc{}, 1, 1, 0, true);
+    Outcome o = w.jog(jog_down(40, 20), false);
+    ASSERT_TRUE(o.touched);
+    double r = w.tip(o.stop)[1];
+    o = w.jog(jog_down(r, r - 0.2), false);
+    EXPECT_TRUE(o.crashed);
+    EXPECT_EQ(w.crashes().front().code, kCrashStopped);
+}
+
 TEST(Instruments, PresetterReadsTheTruthWithinItsUncertainty) {
     workshop::Setup st;
     ASSERT_TRUE(builtin_setup("lathe", st));
