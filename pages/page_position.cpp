@@ -120,6 +120,14 @@ void page_position(const View& v, Canvas& c, const Rect& r) {
     std::string tool = "T" + std::to_string(s.tool()) + "  D" + std::to_string(s.corrector());
     if (s.m7() || s.m8()) tool += std::string("  ") + (s.m7() ? "M07 " : "") + (s.m8() ? "M08" : "");
     row(tr("Tool"), tool);
+    // The touch probe's lamp (the workshop's electric probe in the spindle).
+    if (const workshop::Workshop* w = s.shop(); w && w->probe_in_use()) {
+        bool lit = w->probe_contact(s.om());
+        // TRANSLATORS: OP page: the touch probe's lamp, lit or not; at most 9 columns for the label.
+        row(tr("Probe"), lit ? (c.ascii() ? std::string("* ") : std::string("\u25cf ")) + tr("contact")
+                             : (c.ascii() ? std::string("o ") : std::string("\u25cb ")) + tr("open"),
+            lit ? Style::alarm : Style::dim);
+    }
     const Loc& l = s.loc();
     std::string where = s.selected() >= 0 ? "%" + std::to_string(s.selected()) : tr("no program selected");
     if (l.line > 0) {

@@ -72,6 +72,20 @@ Workshop::Tool* Workshop::current() {
 }
 const Workshop::Tool* Workshop::current() const { return const_cast<Workshop*>(this)->current(); }
 
+bool Workshop::probe_in_use() const {
+    const Tool* t = current();
+    return t && t->truth->probe;
+}
+
+bool Workshop::probe_contact(const Axes& om) const {
+    const Tool* t = current();
+    if (!t || !t->truth->probe) return false;
+    const CPaths ball = LatheWorld::sweep(t->near.insert, {tip(om)});
+    for (Obstacle w : {Obstacle::material, Obstacle::chuck, Obstacle::tailstock})
+        if (world_.depth_into(ball, w) > kTouchDepth) return true;
+    return false;
+}
+
 double Workshop::cut_length(int tool) const {
     return tool > 0 && size_t(tool) < tools_.size() ? tools_[size_t(tool)].cut : 0;
 }

@@ -78,6 +78,10 @@ public:
     void set_shim(double mm) { shim_ = mm; }
     double shim() const { return shim_; }
 
+    // An electric touch probe in use, and its lamp: lit when the ball touches
+    // the part, the chuck or the tailstock at machine position `om`.
+    bool probe_in_use() const;
+    bool probe_contact(const Axes& om) const;
     // The true tool point of the tool in use for a machine position (Z, R).
     Pt tip(const Axes& om) const;
     // Reads an instrument; "" or what is wrong with the request.

@@ -153,6 +153,36 @@ shim)
     cmd ":shim off"
     wait_for 'no shim on the part'
     ;;
+probe)
+    # The electric probe's lamp on the OP page: out, then lit at the contact
+    # (in the alarm colour), out again when the jog backs off.
+    setup=$(realpath "$(dirname "$0")/../workshop/probe.setup")
+    start
+    pom
+    cmd ":setup $setup"
+    wait_for 'workshop: setup lathe-probe'
+    cmd ":speed max"
+    cmd ":mode imd"
+    cmd "T5 D5 M6"
+    keys F9
+    wait_for 'IMD done' 10
+    cmd ":page op"
+    wait_for '^  Probe +○ open'
+    cmd ":mode jog"
+    cmd ":jog Z -150"
+    cmd ":jog X -200"
+    wait_for 'T5 touched the part' 20
+    wait_for '^  Probe +● contact'
+    sgr_line '● contact' | grep -q $'\e\\[' || fail "the lamp is not coloured"
+    cmd ":jog X 2"
+    wait_for '^  Probe +○ open'
+    # Driven on into the bar: a crash.
+    cmd ":jog X -3"
+    wait_for 'T5 touched the part' 10
+    cmd ":mode inc"
+    cmd ":jog X -0.5"
+    wait_for 'ALARM 1205' 10
+    ;;
 *)
     echo "unknown case $case"
     exit 2
