@@ -143,10 +143,11 @@ void arc_points(Pt a, Pt c, double sweep, std::vector<Pt>& out) {
 ToolShape tool_shape(const ToolTruth& t) {
     if (t.probe) {
         // An electric touch probe: a ball of the tool's radius centred on P
-        // (its corrector's R, C0), on a 3 mm stem rising along +X.
+        // (its corrector's R, C0), on a stem 1.2 radii wide rising along +X.
         ToolShape probe;
-        probe.insert = circle({0, 0}, std::max(t.radius, 0.05));
-        probe.holder = t.holder.empty() ? rect(-1.5, std::max(t.radius, 0.05) * 0.5, 1.5, 80) : CPath{};
+        const double r = std::max(t.radius, 0.05);
+        probe.insert = circle({0, 0}, r);
+        probe.holder = t.holder.empty() ? rect(-0.6 * r, 0.5 * r, 0.6 * r, 80) : CPath{};
         for (const Pt& q : t.holder) probe.holder.push_back(to_int(q));
         if (ClipperLib::Area(probe.holder) < 0) ClipperLib::ReversePath(probe.holder);
         return probe;
