@@ -1,0 +1,65 @@
+// The workshop in the console's Sim (issue 15, CLARIFICATIONS "The workshop"):
+// a crash in every mode that moves the machine, the motion stopped at the
+// contact, RAZ, and a workshop that outlives the run.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <gtest/gtest.h>
+
+#include "tests/console/fixture.hpp"
+
+namespace pupitre::test {
+namespace {
+
+// tests/workshop/turn.iso (%10) on the shipped lathe setup with PREF Z 10 mm
+// short: the approach G0 X56 Z2 ends inside the bar, a rapid into the part.
+void crash_in(const char* mode, int starts) {
+    Console c("lathe", {"tests/workshop/turn.iso"});
+    c.type(":setup lathe");
+    ASSERT_TRUE(c.s->sim().shop());
+    for (const char* set : {":set PREF.X=-20", ":set PREF.Z=25", ":set D1.X=52.347", ":set D1.Z=41.215"}) c.type(set);
+    c.type(":mode pom");
+    c.named("F9");
+    c.run_until_settled();
+    c.type(":load 10");
+    c.type(std::string(":mode ") + mode);
+    c.type(":speed max");
+    for (int i = 0; i < starts && c.s->sim().state() != RunState::alarm; ++i) {
+        c.named("F9");
+        c.run_until_settled();
+    }
+    ASSERT_EQ(c.s->sim().state(), RunState::alarm) << mode;
+    const Diag& d = c.s->sim().alarms().back().diag;
+    EXPECT_EQ(d.code, 1200) << mode;
+    EXPECT_EQ(d.n, 40) << mode;
+    EXPECT_EQ(d.file.substr(d.file.size() - 8), "turn.iso");
+    EXPECT_NE(c.message().find("ALARM 1200"), std::string::npos) << c.message();
+    // The axes stopped at the contact, short of the programmed X56 Z2: the
+    // tool point just inside the bar's Ø60.
+    workshop::Pt p = c.s->sim().shop()->tip(c.s->sim().om());
+    EXPECT_NEAR(p[1], 30, 0.01) << mode;
+    EXPECT_GT(c.s->sim().op()[X] * 2, 56.5) << mode;
+    c.named("F12");  // RAZ
+    EXPECT_EQ(c.s->sim().state(), RunState::idle);
+    EXPECT_FALSE(c.s->sim().shop()->crashed());
+    EXPECT_TRUE(c.s->sim().shop());
+}
+
+TEST(WorkshopSession, ARapidIntoThePartIsACrashInAuto) { crash_in("auto", 1); }
+TEST(WorkshopSession, ARapidIntoThePartIsACrashInSingleBlock) { crash_in("seq", 10); }
+TEST(WorkshopSession, ARapidIntoThePartIsACrashInDryRun) { crash_in("dry", 1); }
+
+TEST(WorkshopSession, TestModeMovesNothingAndCrashesNothing) {
+    Console c("lathe", {"tests/workshop/turn.iso"});
+    c.type(":setup lathe");
+    for (const char* set : {":set PREF.X=-20", ":set PREF.Z=25", ":set D1.X=52.347", ":set D1.Z=41.215"}) c.type(set);
+    c.type(":load 10");
+    c.type(":mode test");
+    c.named("F9");
+    c.run_until_settled();
+    EXPECT_NE(c.s->sim().state(), RunState::alarm);
+    workshop::Reading r;
+    ASSERT_EQ(c.s->sim().shop()->measure("dia Z-10", r), "");
+    EXPECT_DOUBLE_EQ(r.value, 60.0);  // the graphic test cut nothing
+}
+
+}  // namespace
+}  // namespace pupitre::test
