@@ -7,6 +7,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <memory>
 #include <sstream>
@@ -14,6 +15,7 @@
 #include <vector>
 
 #include "console/session.hpp"
+#include "core/workshop/report.hpp"
 #include "core/i18n.hpp"
 
 namespace pupitre::console {
@@ -305,13 +307,28 @@ Effect shim(Session& s, const CommandCall& c) {
     return Effect::redraw;
 }
 
+// ":part export FILE": the part as SVG (.svg) or as its (Z, R) outline.
+Effect export_part(Session& s, const workshop::Workshop& w, std::string_view file) {
+    std::string path(file);
+    bool svg = path.size() > 4 && path.compare(path.size() - 4, 4, ".svg") == 0;
+    std::string text = svg ? workshop::part_svg(w.world(), w.setup().name) : workshop::part_zr(w.world());
+    std::FILE* f = std::fopen(path.c_str(), "w");
+    bool ok = f && std::fwrite(text.data(), 1, text.size(), f) == text.size();
+    if (f) ok = std::fclose(f) == 0 && ok;
+    if (!ok) s.say(strf(tr("cannot write %s"), path.c_str()), true);
+    else s.say(strf(tr("the part written to %s"), path.c_str()));
+    return Effect::redraw;
+}
+
 Effect part(Session& s, const CommandCall& c) {
     workshop::Workshop* w = s.sim().shop();
-    if (c.arg(1) != "new") return usage(s, ":part new");
+    bool exporting = c.arg(1) == "export" && !c.arg(2).empty() && c.arg(3).empty();
+    if (c.arg(1) != "new" && !exporting) return usage(s, ":part new | :part export FILE");
     if (!w) {
         s.say(tr("no workshop: :setup lathe puts a part in the chuck"), true);
         return Effect::redraw;
     }
+    if (exporting) return export_part(s, *w, c.arg(2));
     if (s.sim().in_cycle()) {
         s.say(tr("a program is in cycle"), true);
         return Effect::redraw;
@@ -457,6 +474,7 @@ constexpr Command kCommands[] = {
     {"setup", ":setup [lathe|FILE|off]",
      N_("the workshop: a true part, chuck and tools the moves cut and touch"), setup},
     {"part", ":part new", N_("the workshop: fresh stock in the chuck"), part},
+    {"", ":part export FILE", N_("the part as cut: SVG if FILE ends in .svg, else its Z R outline"), nullptr},
     {"shim", ":shim MM|off",
      N_("the paper test: a shim of MM on the part stops a jog when the tool pinches it"), shim},
     {"undo", ":undo", N_("undo the last change of an origin or a corrector"),

@@ -561,7 +561,7 @@ pages::View Session::view() const {
     v.graph.tool = &tool_now_;
     v.graph.cache = &graph_cache_;
     view_part();
-    if (sim_->shop()) v.graph.part = &part_now_;
+    if (sim_->shop()) v.graph.part = &part_now_, v.graph.chuck = &chuck_now_;
     return v;
 }
 
@@ -570,18 +570,24 @@ pages::View Session::view() const {
 // PREF shows as a path beside the part, as on the machine).
 void Session::view_part() const {
     part_now_.clear();
+    chuck_now_.clear();
     const workshop::Workshop* w = sim_->shop();
     if (!w) return;
     const Axes om = sim_->om();
     const workshop::Pt tip = w->tip(om);
     const double dz = tool_now_[Z] - tip[0], dx = tool_now_[X] - tip[1];
-    for (const workshop::CPath& q : w->world().material()) {
-        part_now_.emplace_back();
-        for (const auto& v : q) {
-            workshop::Pt p = workshop::to_mm(v);
-            part_now_.back().push_back({p[0] + dz, p[1] + dx});
+    auto place = [&](const workshop::CPaths& from, std::vector<std::vector<std::array<double, 2>>>& to) {
+        for (const workshop::CPath& q : from) {
+            to.emplace_back();
+            for (const auto& v : q) {
+                workshop::Pt p = workshop::to_mm(v);
+                to.back().push_back({p[0] + dz, p[1] + dx});
+            }
         }
-    }
+    };
+    place(w->world().material(), part_now_);
+    place(w->world().chuck(), chuck_now_);
+    place(w->world().tailstock(), chuck_now_);
 }
 
 std::vector<std::string> Session::complete(std::string_view word) const {

@@ -165,6 +165,7 @@ private:
     uint64_t workshop_saved_ = 0;  // the part's generation the store holds
     std::string load_workshop();
     mutable std::vector<std::vector<std::array<double, 2>>> part_now_;  // GRAPH: the workshop's part
+    mutable std::vector<std::vector<std::array<double, 2>>> chuck_now_;  // and its chuck and tailstock
     void view_part() const;
     std::unique_ptr<store::Store> store_;
     LineInput& input_;

@@ -127,6 +127,14 @@ void draw_frame_marks(const GraphView& g, const ViewXf& xf, bool lathe, DotRaste
     if (lathe && g.plane == PathPlane::zx) {
         r.phase = 0;
         fill_part(g, xf, r);
+        if (g.chuck)  // the jaws and the chuck's body, outlined (and their mirror image)
+            for (const auto& poly : *g.chuck)
+                for (size_t k = 0; k < poly.size(); ++k)
+                    for (double ys : {1.0, -1.0})
+                        if (ys > 0 || g.mirror) {
+                            const auto &a = poly[k], &b = poly[(k + 1) % poly.size()];
+                            draw_line(r, xf, a[0], ys * a[1], b[0], ys * b[1], Ink::stock);
+                        }
         draw_line(r, xf, xf.wx(-1), 0, xf.wx(xf.w), 0, Ink::axis, kDashDot);  // the spindle axis
         draw_stock(g, xf, r);
     }

@@ -52,6 +52,8 @@ struct GraphView {
     // The workshop's part (lathe): its half-section as polygons, (Z, X as a
     // radius) in the program frame; null: no workshop.
     const std::vector<std::vector<std::array<double, 2>>>* part = nullptr;
+    // Its chuck's jaws and body (and tailstock), outlined, in the same frame.
+    const std::vector<std::vector<std::array<double, 2>>>* chuck = nullptr;
 };
 
 void page_graph(const GraphView& g, const MachineProfile& m, Canvas& c, const Rect& r);

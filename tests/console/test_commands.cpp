@@ -119,6 +119,8 @@ y
 :shim
 :shim 0.05
 :shim off
+:part export
+:part export /nonexistent-dir/part.svg
 :part new
 :setup off
 :protect

@@ -81,6 +81,10 @@ touchoff)
     # GRAPH shows the part under the path.
     cmd ":page graph"
     wait_for '⣿⣿⣿'
+    # The part as cut, exported from the console.
+    cmd ":part export $work/part.svg"
+    wait_for "the part written to"
+    grep -q '<path' "$work/part.svg" || fail ":part export wrote no SVG path"
     # A restart shows the same part; :part new brings fresh stock.
     cmd ":quit!"
     wait_for '^EXIT=0' 10
