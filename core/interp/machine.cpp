@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/interp/machine.hpp"
 #include "core/i18n.hpp"
+#include "core/keyvalue.hpp"
 
 #include <charconv>
 #include <cstdlib>
@@ -23,18 +24,8 @@ int axis_of(char letter) {
 }
 
 namespace {
-std::string_view trim(std::string_view s) {
-    while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-    while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
-    return s;
-}
-
-bool number(std::string_view s, double& v) {
-    s = trim(s);
-    if (s.empty()) return false;
-    auto r = std::from_chars(s.data(), s.data() + s.size(), v);
-    return r.ec == std::errc() && r.ptr == s.data() + s.size();
-}
+using kv::number;
+using kv::trim;
 
 bool two_numbers(std::string_view s, double& a, double& b, char sep) {
     s = trim(s);
@@ -55,15 +46,7 @@ bool yes_no(std::string_view s, bool& v) {
 std::string parse_machine(std::string_view text, MachineProfile& m) {
     m = MachineProfile{};
     int lineno = 0;
-    while (!text.empty()) {
-        ++lineno;
-        size_t eol = text.find('\n');
-        std::string_view line = text.substr(0, eol);
-        text = eol == std::string_view::npos ? std::string_view{} : text.substr(eol + 1);
-        size_t hash = line.find('#');
-        if (hash != std::string_view::npos) line = line.substr(0, hash);
-        line = trim(line);
-        if (line.empty()) continue;
+    for (std::string_view line; kv::next_line(text, line, lineno);) {
         size_t eq = line.find('=');
         auto bad = [&](std::string_view why) {
             return strf(tr("line %d: %.*s"), lineno, int(why.size()), why.data());

@@ -3,6 +3,7 @@
 // feed hold, RAZ, single block, overrides, block search, IMD, JOG, POM).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/sim/sim.hpp"
+#include "core/workshop/report.hpp"
 #include "core/geometry/geometry.hpp"
 #include "core/i18n.hpp"
 
@@ -320,12 +321,7 @@ void Sim::through_workshop(Ev& e) {
 }
 
 Diag Sim::workshop_diag(const workshop::Crash& c) const {
-    Diag d;
-    d.code = c.code;
-    d.program = c.loc.prog;
-    d.line = c.loc.line;
-    d.n = c.loc.n;
-    d.detail = c.what;
+    Diag d = workshop::crash_diag(c);
     const ProgramText* p = c.loc.prog > 0 || (imd_ && c.loc.line > 0) ? text_of(c.loc.prog) : nullptr;
     d.file = p ? p->file : "-";
     return d;

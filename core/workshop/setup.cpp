@@ -7,6 +7,7 @@
 #include <functional>
 
 #include "core/i18n.hpp"
+#include "core/keyvalue.hpp"
 
 namespace pupitre {
 namespace data {
@@ -23,18 +24,10 @@ const ToolTruth* Setup::tool(int position) const {
 
 namespace {
 
-std::string_view trim(std::string_view s) {
-    while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-    while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
-    return s;
-}
+using kv::trim;
 
-bool number(std::string_view s, double& v) {
-    s = trim(s);
-    if (s.empty()) return false;
-    auto r = std::from_chars(s.data(), s.data() + s.size(), v);
-    return r.ec == std::errc() && r.ptr == s.data() + s.size() && std::isfinite(v) && std::abs(v) < 1e5;
-}
+// A number of a setup: finite, and below 100 km (no workshop is larger).
+bool number(std::string_view s, double& v) { return kv::number(s, v) && std::isfinite(v) && std::abs(v) < 1e5; }
 
 // Reads a number into `out` if it lies in [lo, hi]; else says why.
 std::string in_range(std::string_view val, double lo, double hi, double& out) {
@@ -186,14 +179,7 @@ std::string parse_setup(std::string_view text, Setup& s) {
     const std::string_view whole = text;
     Setup out;
     int lineno = 0;
-    while (!text.empty()) {
-        ++lineno;
-        size_t eol = text.find('\n');
-        std::string_view line = text.substr(0, eol);
-        text = eol == std::string_view::npos ? std::string_view{} : text.substr(eol + 1);
-        if (size_t hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
-        line = trim(line);
-        if (line.empty()) continue;
+    for (std::string_view line; kv::next_line(text, line, lineno);) {
         size_t eq = line.find('=');
         std::string why = eq == std::string_view::npos
                               ? std::string(tr("expected key = value"))

@@ -54,6 +54,14 @@ workshop::Setup p555_setup() {
 
 struct Null final : MachineSink {};
 
+// The operator's values that match p555.setup's truth.
+void set_right(Interpreter& in) {
+    in.set("PREF.X", -20);
+    in.set("PREF.Z", -54);
+    in.set("D1.X", 52.347);
+    in.set("D1.Z", 41.215);
+}
+
 void run(benchmark::State& st, bool with_shop) {
     MachineProfile m;
     builtin_machine("lathe", m);
@@ -66,10 +74,7 @@ void run(benchmark::State& st, bool with_shop) {
         mem.load_text("p555.iso", kP555, d);
         workshop::Workshop shop(m, s, &null);
         Interpreter in(m, mem, with_shop ? static_cast<MachineSink&>(shop) : null);
-        in.set("PREF.X", -20);
-        in.set("PREF.Z", -54);
-        in.set("D1.X", 52.347);
-        in.set("D1.Z", 41.215);
+        set_right(in);
         in.start(mem.first());
         in.run_to_end();
         moves = in.moves();
@@ -115,10 +120,7 @@ void BM_GraphFramePart(benchmark::State& st) {
     mem.load_text("p555.iso", kP555, d);
     workshop::Workshop shop(m, s, &path);
     Interpreter in(m, mem, shop);
-    in.set("PREF.X", -20);
-    in.set("PREF.Z", -54);
-    in.set("D1.X", 52.347);
-    in.set("D1.Z", 41.215);
+    set_right(in);
     in.start(mem.first());
     in.run_to_end();
     // The part in the program frame: the tool's truth and gauge agree here.

@@ -12,6 +12,21 @@ W=100 H=30
 
 # The message line (above the input line).
 message() { screen | tail -3 | head -1; }
+# Homed, the setup SETUP (default lathe) in the chuck, max speed, tool T in
+# the turret (default T1 D1), then JOG over the bar.
+ready() {
+    local setup=${1:-lathe} tool=${2:-T1 D1 M6}
+    start
+    pom
+    cmd ":setup $setup"
+    cmd ":speed max"
+    cmd ":mode imd"
+    cmd "$tool"
+    keys F9
+    wait_for 'IMD done' 10
+    cmd ":mode jog"
+    cmd ":jog Z -150"
+}
 
 case $case in
 touchoff)
@@ -98,17 +113,8 @@ touchoff)
     wait_for 'micrometer: dia Z-10 = 60.000 mm'
     ;;
 crash)
-    start
-    pom
-    cmd ":setup lathe"
-    cmd ":speed max"
-    cmd ":mode imd"
-    cmd "T1 D1 M6"
-    keys F9
-    wait_for 'IMD done' 10
     # The spindle stopped, an increment into the bar: a crash, not a cut.
-    cmd ":mode jog"
-    cmd ":jog Z -150"
+    ready
     cmd ":jog X -200"
     wait_for 'T1 touched the part' 20
     # A held key goes no deeper than the contact.
@@ -134,16 +140,7 @@ crash)
 shim)
     # The paper test: a 0.05 shim on the bar; the jog stops 0.05 above it
     # (Ø60.1), and the touch-off subtracts it.
-    start
-    pom
-    cmd ":setup lathe"
-    cmd ":speed max"
-    cmd ":mode imd"
-    cmd "T1 D1 M6"
-    keys F9
-    wait_for 'IMD done' 10
-    cmd ":mode jog"
-    cmd ":jog Z -150"
+    ready
     cmd ":shim 0.05"
     wait_for 'a 0.050 mm shim on the part'
     cmd ":jog X -200"
@@ -160,20 +157,9 @@ shim)
 probe)
     # The electric probe's lamp on the OP page: out, then lit at the contact
     # (in the alarm colour), out again when the jog backs off.
-    setup=$(realpath "$(dirname "$0")/../workshop/probe.setup")
-    start
-    pom
-    cmd ":setup $setup"
-    wait_for 'workshop: setup lathe-probe'
-    cmd ":speed max"
-    cmd ":mode imd"
-    cmd "T5 D5 M6"
-    keys F9
-    wait_for 'IMD done' 10
+    ready "$(realpath "$(dirname "$0")/../workshop/probe.setup")" "T5 D5 M6"
     cmd ":page op"
     wait_for '^  Probe +○ open'
-    cmd ":mode jog"
-    cmd ":jog Z -150"
     cmd ":jog X -200"
     wait_for 'T5 touched the part' 20
     wait_for '^  Probe +● contact'

@@ -300,13 +300,22 @@ MoveEvent jog_down(double from_r, double to_r) {
     return e;
 }
 
-TEST(Contacts, AJogStopsAtTheDiameterAndAShimStopsItAShimEarly) {
+// The shipped lathe's workshop with T1 in place, the spindle stopped.
+struct T1OnTheLathe {
     workshop::Setup st;
-    ASSERT_TRUE(builtin_setup("lathe", st));
     MachineProfile m;
-    builtin_machine("lathe", m);
-    Workshop w(m, st, nullptr);
-    w.tool(Loc{}, 1, 1, 0, true);
+    std::unique_ptr<Workshop> shop;
+    T1OnTheLathe() {
+        builtin_setup("lathe", st);
+        builtin_machine("lathe", m);
+        shop = std::make_unique<Workshop>(m, st, nullptr);
+        shop->tool(Loc{}, 1, 1, 0, true);
+    }
+};
+
+TEST(Contacts, AJogStopsAtTheDiameterAndAShimStopsItAShimEarly) {
+    T1OnTheLathe t1;
+    Workshop& w = *t1.shop;
     Outcome o = w.jog(jog_down(40, 20), true);
     ASSERT_TRUE(o.touched);
     // P (the nose's bottom for C3) stops before entering, within the
@@ -344,12 +353,8 @@ TEST(Contacts, AJogStopsAtTheDiameterAndAShimStopsItAShimEarly) {
 }
 
 TEST(Contacts, FromAContactAnIncrementWithTheSpindleStoppedIsACrash) {
-    workshop::Setup st;
-    ASSERT_TRUE(builtin_setup("lathe", st));
-    MachineProfile m;
-    builtin_machine("lathe", m);
-    Workshop w(m, st, nullptr);
-    w.tool(Loc{}, 1, 1, 0, true);
+    T1OnTheLathe t1;
+    Workshop& w = *t1.shop;
     Outcome o = w.jog(jog_down(40, 20), false);
     ASSERT_TRUE(o.touched);
     double r = w.tip(o.stop)[1];
