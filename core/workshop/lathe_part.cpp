@@ -222,8 +222,8 @@ void LatheWorld::new_part() {
 }
 
 CPaths LatheWorld::sweep(const CPath& shape, const std::vector<Pt>& path) {
-    // Clipper's sum sweeps the shape's edges; the shape itself at each point
-    // of the path fills what a short move's edges leave.
+    // Clipper's sum sweeps the shape's edges; the shape itself at both ends
+    // fills what the edges leave.
     CPaths out;
     CPath p;
     for (const Pt& q : path) p.push_back(to_int(q));
@@ -237,7 +237,9 @@ CPaths LatheWorld::sweep(const CPath& shape, const std::vector<Pt>& path) {
         return mirrored(std::move(out));
     }
     if (p.size() > 1) ClipperLib::MinkowskiSum(shape, p, out, false);
-    for (const IntPoint& d : p) {
+    // What the edges never cross was under the shape where the path starts
+    // or where it ends.
+    for (const IntPoint& d : {p.front(), p.back()}) {
         CPath moved = shape;
         for (IntPoint& q : moved) q.X += d.X, q.Y += d.Y;
         out.push_back(std::move(moved));

@@ -233,11 +233,28 @@ Outcome Workshop::apply(const MoveEvent& e) {
     std::vector<Pt> tips;
     tips.reserve(oms.size());
     for (const Axes& om : oms) tips.push_back(tip(om));
-    if (check(e, tips, oms)) return o;
-    o.crashed = true;
-    o.stop = crashes_.back().om;
-    o.fraction = crashes_.back().fraction;
-    o.what = crashes_.back().what;
+    // A long arc is met piece by piece, so that each Boolean stays small (a
+    // half circle of R 300 is 860 chords) and the first piece that crashes
+    // ends it.
+    constexpr size_t kPiece = 32;  // chords
+    const double total = length_of(tips);
+    double before = 0;
+    for (size_t i = 0; i + 1 < tips.size(); i += kPiece) {
+        const size_t j = std::min(i + kPiece, tips.size() - 1);
+        const std::vector<Pt> piece(tips.begin() + long(i), tips.begin() + long(j) + 1);
+        const std::vector<Axes> at(oms.begin() + long(i), oms.begin() + long(j) + 1);
+        const double len = length_of(piece);
+        if (!check(e, piece, at)) {
+            Crash& c = crashes_.back();
+            c.fraction = total > 0 ? (before + c.fraction * len) / total : 1;
+            o.crashed = true;
+            o.stop = c.om;
+            o.fraction = c.fraction;
+            o.what = c.what;
+            return o;
+        }
+        before += len;
+    }
     return o;
 }
 

@@ -88,6 +88,31 @@ void BM_P555RunWorkshop(benchmark::State& st) { run(st, true); }
 BENCHMARK(BM_P555Run)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_P555RunWorkshop)->Unit(benchmark::kMillisecond);
 
+// A half circle of R 300 through the bar (860 chords): met piece by piece.
+void BM_LongArc(benchmark::State& st) {
+    MachineProfile m;
+    builtin_machine("lathe", m);
+    workshop::Setup s;
+    workshop::builtin_setup("lathe", s);
+    const char* text = "%20\nN10 T1 D1 M6\nN20 S1000 M3 G95 F0.2\nN30 G0 X600 Z100\nN40 G2 X600 Z-500 R300\nN50 M2\n";
+    Null null;
+    for (auto _ : st) {
+        ProgramMemory mem;
+        Diag d;
+        mem.load_text("arc.iso", text, d);
+        workshop::Workshop shop(m, s, &null);
+        Interpreter in(m, mem, shop);
+        in.set("PREF.X", -20);
+        in.set("PREF.Z", 35);
+        in.set("D1.X", 52.347);
+        in.set("D1.Z", 41.215);
+        in.start(mem.first());
+        in.run_to_end();
+        benchmark::DoNotOptimize(shop.world().material().size());
+    }
+}
+BENCHMARK(BM_LongArc)->Unit(benchmark::kMillisecond);
+
 // One INC step of 0.1 mm towards the bar's Ø60 from 0.05 mm above it: the
 // contact search along the step (the shipped setup, T1).
 void BM_JogContact(benchmark::State& st) {
