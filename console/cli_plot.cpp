@@ -61,6 +61,20 @@ std::vector<std::vector<std::array<double, 2>>> part_in_program_frame(const work
     return out;
 }
 
+// The workshop's crashes (printed, drawn as the block in error) and its part.
+void draw_workshop(const workshop::Workshop& shop, const Interpreter& in, const ProgramMemory& mem,
+                   const std::string& file, Toolpath& path) {
+    for (const workshop::Crash& c : shop.crashes()) {
+        Diag d = workshop::crash_diag(c);
+        d.file = file;
+        for (const auto& p : mem.programs())
+            if (p->number == d.program) d.file = p->file;
+        print_diag(d);
+        path.add_error(d);
+    }
+    path.set_part(part_in_program_frame(shop, in));
+}
+
 PathPlane chosen_plane(const Toolpath& path, const MachineProfile& m, int plane_seen) {
     if (m.lathe || path.arc_plane() != 17 || !plane_seen) return path.default_plane();
     return plane_seen == 18 ? PathPlane::xz : plane_seen == 19 ? PathPlane::yz : PathPlane::xy;
@@ -156,17 +170,7 @@ int plot(const PlotArgs& a) {
         path.add_error(d);
     }
     bool crashed = shop && shop->crashed();
-    if (shop) {
-        for (const workshop::Crash& c : shop->crashes()) {
-            Diag d = workshop::crash_diag(c);
-            d.file = a.files.front();
-            for (const auto& p : mem.programs())
-                if (p->number == d.program) d.file = p->file;
-            print_diag(d);
-            path.add_error(d);
-        }
-        path.set_part(part_in_program_frame(*shop, in));
-    }
+    if (shop) draw_workshop(*shop, in, mem, a.files.front(), path);
     default_machine_note(a.machine, in.has_errors() || crashed);
     // A run that fails before any move has nothing to draw: no file is left
     // behind (CLARIFICATIONS 12.10). One that fails later draws what ran.

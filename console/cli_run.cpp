@@ -118,6 +118,33 @@ void place(Diag& d, const ProgramMemory& mem) {
         }
 }
 
+// Runs to the end, an error or a stop; with a workshop, also to its crash,
+// where the machine stops (pupitre-setup(5)).
+void run_in(Interpreter& in, const workshop::Workshop* shop) {
+    if (!shop) {
+        in.run_to_end();
+        return;
+    }
+    for (StepResult r = StepResult::running;
+         !shop->crashed() && (r == StepResult::running || r == StepResult::stopped);)
+        r = in.step();
+}
+
+// The crashes as diagnostics (printed), and the readings asked for.
+void workshop_results(const workshop::Workshop& shop, const ProgramMemory& mem,
+                      const std::vector<std::string>& measures, std::vector<Diag>& crashes,
+                      std::vector<workshop::Asked>& asked) {
+    for (const workshop::Crash& c : shop.crashes()) {
+        crashes.push_back(workshop::crash_diag(c));
+        place(crashes.back(), mem);
+        print_diag(crashes.back());
+    }
+    for (const std::string& spec : measures) {
+        asked.emplace_back();
+        asked.back().error = shop.measure(spec, asked.back().r);
+    }
+}
+
 int write_part(const std::string& path, const workshop::LatheWorld& w, const std::string& title) {
     bool svg = path.size() > 4 && path.compare(path.size() - 4, 4, ".svg") == 0;
     std::string text = svg ? workshop::part_svg(w, title) : workshop::part_zr(w);
@@ -188,29 +215,12 @@ int run(const RunArgs& a) {
             break;
         }
     in.start(main);
-    if (!shop) {
-        in.run_to_end();
-    } else {
-        // A crash stops the machine where it is (pupitre-setup(5)).
-        for (StepResult r = StepResult::running; !shop->crashed() &&
-                                                 (r == StepResult::running || r == StepResult::stopped);)
-            r = in.step();
-    }
+    run_in(in, shop.get());
     std::fflush(stdout);
     for (const Diag& d : in.diags()) print_diag(d);
     std::vector<Diag> crashes;
     std::vector<workshop::Asked> asked;
-    if (shop) {
-        for (const workshop::Crash& c : shop->crashes()) {
-            crashes.push_back(workshop::crash_diag(c));
-            place(crashes.back(), mem);
-            print_diag(crashes.back());
-        }
-        for (const std::string& spec : a.measures) {
-            asked.emplace_back();
-            asked.back().error = shop->measure(spec, asked.back().r);
-        }
-    }
+    if (shop) workshop_results(*shop, mem, a.measures, crashes, asked);
     const bool errors = in.has_errors() || !crashes.empty();
     default_machine_note(a.machine, errors);
     if (a.json) {

@@ -151,6 +151,26 @@ double Workshop::first_contact(const CPath& shape, const std::vector<Pt>& tips, 
     return before ? lo : hi;
 }
 
+// What hit what, where: the crash's message.
+std::string Workshop::crash_text(int code, bool holder, Obstacle what, const ToolTruth& tt,
+                                 const std::string& place) const {
+    const char* p = place.c_str();
+    switch (code) {
+        case kCrashRapid: return strf(tr("crash: T%d rapid (G0) into the part %s"), tool_, p);
+        case kCrashStopped: return strf(tr("crash: T%d fed into the part with the spindle stopped %s"), tool_, p);
+        case kCrashDirection:
+            return strf(tr("crash: T%d cuts with M%d, the spindle turns M%d, %s"), tool_, tt.spindle, dir_, p);
+        case kCrashProbe: return strf(tr("crash: the probe T%d was driven into the part %s"), tool_, p);
+        case kCrashHolder: return strf(tr("crash: the holder of T%d hit the part %s"), tool_, p);
+        default: break;
+    }
+    if (what == Obstacle::chuck)
+        return strf(holder ? tr("crash: the holder of T%d hit the chuck %s") : tr("crash: T%d hit the chuck %s"),
+                    tool_, p);
+    return strf(holder ? tr("crash: the holder of T%d hit the tailstock %s") : tr("crash: T%d hit the tailstock %s"),
+                tool_, p);
+}
+
 bool Workshop::check(const MoveEvent& e, const std::vector<Pt>& tips, const std::vector<Axes>& oms) {
     Tool* t = current();
     if (!t) return true;
@@ -199,28 +219,7 @@ bool Workshop::check(const MoveEvent& e, const std::vector<Pt>& tips, const std:
     c.tool = tool_;
     c.fraction = f;
     for (size_t a = 0; a < c.om.size(); ++a) c.om[a] = oms[i][a] + (at - double(i)) * (oms[j][a] - oms[i][a]);
-    const std::string place = where(done.back());
-    const bool holder = worst->shape == &t->shape.holder;
-    switch (c.code) {
-    case kCrashRapid: c.what = strf(tr("crash: T%d rapid (G0) into the part %s"), tool_, place.c_str()); break;
-    case kCrashStopped:
-        c.what = strf(tr("crash: T%d fed into the part with the spindle stopped %s"), tool_, place.c_str());
-        break;
-    case kCrashDirection:
-        c.what = strf(tr("crash: T%d cuts with M%d, the spindle turns M%d, %s"), tool_, tt.spindle, dir_,
-                      place.c_str());
-        break;
-    case kCrashProbe: c.what = strf(tr("crash: the probe T%d was driven into the part %s"), tool_, place.c_str()); break;
-    case kCrashHolder: c.what = strf(tr("crash: the holder of T%d hit the part %s"), tool_, place.c_str()); break;
-    default:
-        c.what = worst->what == Obstacle::chuck
-                     ? strf(holder ? tr("crash: the holder of T%d hit the chuck %s")
-                                   : tr("crash: T%d hit the chuck %s"),
-                            tool_, place.c_str())
-                     : strf(holder ? tr("crash: the holder of T%d hit the tailstock %s")
-                                   : tr("crash: T%d hit the tailstock %s"),
-                            tool_, place.c_str());
-    }
+    c.what = crash_text(c.code, worst->shape == &t->shape.holder, worst->what, tt, where(done.back()));
     crashes_.push_back(std::move(c));
     return false;
 }
@@ -313,16 +312,21 @@ Outcome Workshop::jog(const MoveEvent& e, bool continuous) {
     for (size_t a = 0; a < o.stop.size(); ++a) o.stop[a] = oms[i][a] + (at - double(i)) * (oms[j][a] - oms[i][a]);
     o.touched = true;
     o.fraction = first;
-    const std::string place = where(done.back());
+    o.what = touch_text(hit, holder, on_shim, where(done.back()));
+    return o;
+}
+
+// What a jog touched, where.
+std::string Workshop::touch_text(Obstacle hit, bool holder, bool on_shim, const std::string& place) const {
+    if (on_shim)
+        return strf(tr("T%d touched the %s mm shim on the part %s"), tool_, fixed3(shim_).c_str(), place.c_str());
     const char* what = hit == Obstacle::material ? (holder ? tr("the holder of T%d touched the part %s")
                                                            : tr("T%d touched the part %s"))
                        : hit == Obstacle::chuck  ? (holder ? tr("the holder of T%d touched the chuck %s")
                                                            : tr("T%d touched the chuck %s"))
                                                  : (holder ? tr("the holder of T%d touched the tailstock %s")
                                                            : tr("T%d touched the tailstock %s"));
-    o.what = on_shim ? strf(tr("T%d touched the %s mm shim on the part %s"), tool_, fixed3(shim_).c_str(), place.c_str())
-                     : strf(what, tool_, place.c_str());
-    return o;
+    return strf(what, tool_, place.c_str());
 }
 
 MoveEvent Workshop::truncated(const MoveEvent& e, const Axes& stop, double fraction) {
@@ -343,13 +347,12 @@ void Workshop::move(const MoveEvent& e) {
 }
 
 void Workshop::tool(const Loc& l, int t, int d, double s, bool m6) {
-    if (m6 || t != tool_) tool_ = t;
+    tool_ = t;  // the lathe's turret indexes on T
     if (next_) next_->tool(l, t, d, s, m6);
 }
 
 void Workshop::spindle(const SpindleEvent& e) {
     dir_ = e.dir;
-    rpm_ = e.rpm;
     if (next_) next_->spindle(e);
 }
 
@@ -400,8 +403,8 @@ std::string Workshop::presetter(std::string_view rest, Reading& r) const {
     r.instrument = tr("presetter");
     r.resolution = 0.001;
     r.uncertainty = kPresetter;
-    r.value = std::max(0.0, std::round((v + off) * 1000) / 1000);
-    if (field != 'R') r.value = std::round((v + off) * 1000) / 1000;
+    const double read = std::round((v + off) * 1000) / 1000;
+    r.value = field == 'R' ? std::max(0.0, read) : read;  // a radius is never negative
     return {};
 }
 

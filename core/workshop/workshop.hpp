@@ -128,6 +128,8 @@ private:
     bool check(const MoveEvent& e, const std::vector<Pt>& tips, const std::vector<Axes>& oms);
     std::string where(const Pt& p) const;
     std::string presetter(std::string_view rest, Reading& r) const;
+    std::string crash_text(int code, bool holder, Obstacle what, const ToolTruth& tt, const std::string& place) const;
+    std::string touch_text(Obstacle hit, bool holder, bool on_shim, const std::string& place) const;
     // The first fraction of the path where `shape` comes deeper than `depth`
     // into `what` (`before`: the last one where it does not yet, within
     // 0.1 µm); 2 when it never does.
@@ -143,7 +145,6 @@ private:
     int tool_ = 0;
     double shim_ = 0;
     int dir_ = 5;
-    double rpm_ = 0;
     std::vector<Crash> crashes_;
 };
 

@@ -1,0 +1,47 @@
+// The Sim's side of the workshop (DESIGN §5): each move meets the part as
+// the machine starts it (see sim.hpp, set_workshop).
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/sim/sim.hpp"
+#include "core/workshop/report.hpp"
+
+namespace pupitre {
+
+void Sim::set_workshop(std::unique_ptr<workshop::Workshop> w) {
+    shop_ = std::move(w);
+    if (!shop_) return;
+    // The turret and the spindle as they are now.
+    shop_->tool(Loc{}, tool_, corr_, 0, true);
+    shop_->spindle(sp_);
+}
+
+// The workshop meets the move as the machine starts it: a crash cuts it short
+// and ends the run with an alarm once the axes have stopped; a jog stops at
+// the first contact.
+void Sim::through_workshop(Ev& e) {
+    if (!shop_ || e.kind != Ev::move || mode_ == Mode::test) return;
+    workshop::Outcome o = manual_ ? shop_->jog(e.m, mode_ == Mode::jog) : shop_->apply(e.m);
+    if (!o.crashed && !o.touched) return;
+    e.m = workshop::Workshop::truncated(e.m, o.stop, o.fraction);
+    dur_ = duration(e);
+    for (int a = 0; a < kAxes; ++a) op_off1_[size_t(a)] = e.m.to_mach[size_t(a)] - e.m.to_prog[size_t(a)];
+    q_.clear();
+    planned_ = o.stop;
+    in_->place(o.stop);
+    message_ = o.what;
+    ++workshop_news_;
+    if (o.touched) return;
+    Diag d = workshop_diag(shop_->crashes().back());
+    alarms_.push_back(Alarm{d, clock_});
+    if (path_) path_->add_error(d);
+    interp_done_ = true;
+    pending_alarm_ = true;
+}
+
+Diag Sim::workshop_diag(const workshop::Crash& c) const {
+    Diag d = workshop::crash_diag(c);
+    const ProgramText* p = c.loc.prog > 0 || (imd_ && c.loc.line > 0) ? text_of(c.loc.prog) : nullptr;
+    d.file = p ? p->file : "-";
+    return d;
+}
+
+}  // namespace pupitre
