@@ -237,6 +237,22 @@ TEST(Workshop, TooDeepACutBringsTheHolderIn) {
     EXPECT_EQ(s.crash(), kCrashHolder);
 }
 
+TEST(Workshop, TheTailstockStopsTheTool) {
+    // A centre at Z 45 (10 mm beyond the bar's face); the approach rapid
+    // X20 Z12 would take the insert through the centre's cone.
+    const char* p = R"(%15
+N10 T1 D1 M6
+N20 S1000 M3 G95 F0.2
+N30 G0 X20 Z12
+N40 M2
+)";
+    Shop s(p, right(), "tailstock.z = 45\n");
+    ASSERT_EQ(s.setup_error, "");
+    ASSERT_EQ(s.crash(), kCrashChuck);
+    EXPECT_NE(s.shop->crashes().front().what.find("the tailstock"), std::string::npos)
+        << s.shop->crashes().front().what;
+}
+
 TEST(Workshop, ProbeDrivenIntoThePartIsACrash) {
     Shop s(kTurn, right(), "tool.1.probe = yes\n");
     EXPECT_EQ(s.crash(), kCrashProbe);
