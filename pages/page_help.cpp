@@ -17,6 +17,8 @@ const char* const kGettingStarted[] = {
     N_("4. Touch off: jog the tool onto the part, Alt-p for the PREF page, type Z 0 for the face or "
        "X 59.978 for a diameter; the OP page then reads what you typed."),
     N_("5. Run: F6 lists the programs (Enter selects), F8 to AUTO, F9 runs; F10 holds, F12 (RAZ) abandons."),
+    N_("6. A real part: :setup lathe puts a bar in the chuck; a jog stops when the tool touches it, "
+       ":measure dia Z-20 reads the part (pupitre-setup(5))."),
     N_("The prompt says where typed text goes (IMD>, PREF>, D5>, EDIT>); Escape empties it. "
        "Commands start with ':' (Tab completes). RAZ is F12 (or Alt-r), off the F1-F10 row."),
 };
