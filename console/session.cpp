@@ -71,11 +71,10 @@ std::string Session::load_workshop() {
     if (std::string why = workshop::parse_setup(r.value->setup, st); !why.empty())
         return strf(tr("the stored workshop is not a setup (%s): :setup lathe loads one"), why.c_str());
     auto w = std::make_unique<workshop::Workshop>(m_, st, nullptr);
-    if (!w->world().from_text(r.value->part))
-        return tr("the stored part could not be read: the workshop starts with fresh stock");
-    workshop_saved_ = w->world().generation();
+    const bool read = w->world().from_text(r.value->part);  // else fresh stock, as built
+    workshop_saved_ = read ? w->world().generation() : 0;
     sim_->set_workshop(std::move(w));
-    return {};
+    return read ? std::string() : std::string(tr("the stored part could not be read: the workshop starts with fresh stock"));
 }
 
 void Session::save_workshop() {
