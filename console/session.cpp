@@ -559,8 +559,10 @@ pages::View Session::view() const {
     tool_now_ = sim_->op();
     v.graph.tool = &tool_now_;
     v.graph.cache = &graph_cache_;
-    view_part();
-    if (sim_->shop()) v.graph.part = &part_now_, v.graph.chuck = &chuck_now_;
+    if (sim_->shop() && page == pages::PageId::graph) {  // only the GRAPH page draws the part
+        view_part();
+        v.graph.part = &part_now_, v.graph.chuck = &chuck_now_;
+    }
     return v;
 }
 

@@ -8,17 +8,14 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/geometry/geometry.hpp"
 #include "core/interp/gate.hpp"
 #include "core/interp/plan.hpp"
 #include "core/i18n.hpp"
 
 namespace pupitre {
 
-namespace {
-// Lathe nose orientation C0-C8: the tool point P = nose centre + R·(sx, sz)
-// (turning.md §3.5, [DECISION] table).
-constexpr int kNose[9][2] = {{0, 0}, {1, 1}, {1, -1}, {-1, -1}, {-1, 1}, {0, 1}, {1, 0}, {0, -1}, {-1, 0}};
-}  // namespace
+using geometry::kNose;
 
 bool Interpreter::comp_engage(int g) {
     const Corrector& c = corr_[size_t(modal_.d)];

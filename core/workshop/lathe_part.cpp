@@ -86,10 +86,6 @@ double area_mm2(const CPaths& p) {
     return a * kUnit * kUnit;
 }
 
-// The nose's orientation C0-C8 as in the interpreter (turning.md §3.5): the
-// tool point P = nose centre + R·(sx, sz). C0 (P at the nose centre) takes
-// C3's insert: an outside tool.
-constexpr int kNose[9][2] = {{-1, -1}, {1, 1}, {1, -1}, {-1, -1}, {-1, 1}, {0, 1}, {1, 0}, {0, -1}, {-1, 0}};
 
 // The default holder, relative to P (Z, R) (pupitre-setup(5)): a boring bar
 // along +Z below a tip that points outwards; otherwise a 16 mm shank rising
@@ -115,6 +111,13 @@ static CPaths mirrored(CPaths out) {
         ClipperLib::ReversePath(q);
     }
     return clip(out, mirror, ClipperLib::ctUnion);
+}
+
+void nose_direction(int c, int& sx, int& sz) {
+    // C0 (P at the nose centre) takes C3's insert: an outside tool.
+    const int k = c >= 1 && c <= 8 ? c : 3;
+    sx = geometry::kNose[k][0];
+    sz = geometry::kNose[k][1];
 }
 
 CPath circle(Pt c, double r) {
@@ -153,7 +156,8 @@ ToolShape tool_shape(const ToolTruth& t) {
         return probe;
     }
     const int c = std::clamp(t.orientation, 0, 8);
-    const int sx = kNose[c][0], sz = kNose[c][1];
+    int sx = 0, sz = 0;
+    nose_direction(c, sx, sz);
     const double r = t.radius;
     Pt centre{-r * sz, -r * sx};
     if (c == 0) centre = {0, 0};
@@ -327,7 +331,8 @@ bool LatheWorld::from_text(std::string_view text) {
         if (q.size() >= 3) out.push_back(std::move(q));
         else if (!q.empty()) return false;
     }
-    set_material(std::move(out));
+    part_ = std::move(out);
+    ++generation_;
     return true;
 }
 

@@ -30,6 +30,10 @@ CPath circle(Pt c, double r);
 // from +Z, counter-clockwise in (Z, R)), within kChord; `a` is not included.
 void arc_points(Pt a, Pt c, double sweep, std::vector<Pt>& out);
 
+// The direction from the nose centre to the tool point P of orientation C
+// (geometry::kNose), C0 taken as C3 for the insert's shape.
+void nose_direction(int c, int& sx, int& sz);
+
 // A tool's true shape relative to its tool point P: the insert (nose circle
 // and its two cutting edges) and the holder that carries it.
 struct ToolShape {
@@ -58,11 +62,6 @@ public:
     double depth_into(const CPaths& swept, Obstacle what) const;
     // Removes `swept` from the material; returns the area removed (mm²).
     double cut(const CPaths& swept);
-    // A part drawn elsewhere (the store's): replaces the material.
-    void set_material(CPaths p) {
-        part_ = std::move(p);
-        ++generation_;
-    }
     // Counts the changes of the material (a cut, fresh stock).
     uint64_t generation() const { return generation_; }
     // The material as text for the store: one outline per line, "Z R" pairs

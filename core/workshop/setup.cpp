@@ -202,7 +202,5 @@ bool builtin_setup(std::string_view name, Setup& s) {
     return parse_setup(data::setup_lathe(), s).empty();
 }
 
-std::vector<std::string> builtin_setup_names() { return {"lathe"}; }
-
 }  // namespace workshop
 }  // namespace pupitre

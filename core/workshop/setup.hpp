@@ -65,7 +65,5 @@ struct Setup {
 std::string parse_setup(std::string_view text, Setup& s);
 // A setup shipped in data/setups (lathe); false if there is none by that name.
 bool builtin_setup(std::string_view name, Setup& s);
-// The names of the shipped setups.
-std::vector<std::string> builtin_setup_names();
 
 }  // namespace pupitre::workshop

@@ -98,10 +98,9 @@ Pt Workshop::tip(const Axes& om) const {
     if (tt.wear > 0 && t->cut > 0) {
         // Wear takes the nose back into the insert, along its bisector
         // (pupitre-setup(5)): µm per metre of cut.
-        static constexpr int kNose[9][2] = {{-1, -1}, {1, 1}, {1, -1}, {-1, -1}, {-1, 1},
-                                            {0, 1},   {1, 0}, {0, -1}, {-1, 0}};
-        const int c = std::clamp(tt.orientation, 0, 8);
-        double ux = -kNose[c][0], uz = -kNose[c][1], n = std::hypot(ux, uz);
+        int sx = 0, sz = 0;
+        nose_direction(tt.orientation, sx, sz);
+        double ux = -sx, uz = -sz, n = std::hypot(ux, uz);
         double w = tt.wear * 1e-3 * (t->cut / 1000);
         p[0] += w * uz / n;
         p[1] += w * ux / n;
