@@ -62,4 +62,19 @@ struct Console {
     std::string message() const { return s->view().message; }
 };
 
+// The lathe homed, T1 D1 (gauges X 63.345 Z 38.237, the exam's) active as
+// typed in IMD, then JOG: where a setter starts.
+inline void setter_lathe(Console& c) {
+    c.type(":mode pom");
+    c.named("F9");
+    c.run_until_settled();
+    c.type(":set D1.X=63.345");
+    c.type(":set D1.Z=38.237");
+    c.type(":mode imd");
+    c.type("T1 D1 M6");
+    c.named("F9");
+    c.run_until_settled();
+    c.type(":mode jog");
+}
+
 }  // namespace pupitre::test

@@ -344,19 +344,6 @@ TEST(Bindings, HelpAndSoftKeysComeFromTheTable) {
 
 namespace {
 
-// The lathe homed, T1 D1 active (typed in IMD), the turret jogged to a point.
-void setter_lathe(Console& c) {
-    c.type(":mode pom");
-    c.named("F9");
-    c.run_until_settled();
-    c.type(":set D1.X=63.345");
-    c.type(":set D1.Z=38.237");
-    c.type(":mode imd");
-    c.type("T1 D1 M6");
-    c.named("F9");
-    c.run_until_settled();
-    c.type(":mode jog");
-}
 
 }  // namespace
 

@@ -216,13 +216,7 @@ TEST(Screen, PrefAndCorrPages) {
 // wraps instead of losing its end (found driving the French console).
 TEST(Screen, PrefCorrectorLineWraps) {
     Console c("lathe", kLatheFiles);
-    homed_lathe(c);
-    c.type(":set D1.X=63.345");
-    c.type(":set D1.Z=38.237");
-    c.type(":mode imd");
-    c.type("T1 D1 M6");
-    c.named("F9");
-    c.run_until_settled();
+    setter_lathe(c);
     c.type(":page pref");
     const std::string screen = c.screen();
     EXPECT_NE(screen.find("active corrector D1, tool T1; its gauge on X Z applies at the next move or"),

@@ -1080,6 +1080,17 @@ struct FrameMap {
     }
 };
 
+// The n-th of the generated frames: outside or bore, frontal or not, each
+// way along the passes (n / 7: the shape is n % 7).
+FrameMap frame_of(int n) {
+    FrameMap map;
+    map.frontal = (n / 7) % 2;
+    map.bore = !map.frontal && (n / 14) % 2;
+    map.sx = (n / 28) % 2 ? -1 : 1;
+    map.sy = map.frontal && (n / 14) % 2 ? -1 : 1;
+    return map;
+}
+
 // A profile through frame points; arcs given as (end, centre, ccw in the frame).
 struct FramePath {
     std::vector<V2> pts{};  // densified, for the part polygon
@@ -1255,11 +1266,7 @@ TEST(G65, GeneratedGroovesNeverEnterThePart) {
     int runs = 0, inside = 0, failing = 0, idle = 0;
     for (int n = 0; n < 224; ++n) {
         const int shape = n % 7;
-        FrameMap map;
-        map.frontal = (n / 7) % 2;
-        map.bore = !map.frontal && (n / 14) % 2;
-        map.sx = (n / 28) % 2 ? -1 : 1;
-        map.sy = map.frontal && (n / 14) % 2 ? -1 : 1;
+        const FrameMap map = frame_of(n);
         const bool wrong = (n / 56) % 4 == 3;
         double H = 30 + 8 * u(rng), x1 = 8 + 5 * u(rng), w = 6 + 8 * u(rng), h = 2 + 6 * u(rng);
         double x2 = x1 + w, Lx = x2 + 10;
@@ -1357,11 +1364,7 @@ TEST(G63, GeneratedProfilesNeverEnterThePart) {
     const char* shapes[] = {"plain", "square", "trapezoid", "round", "stepped", "ridge", "dovetail"};
     for (int n = 0; n < 112; ++n) {
         const int shape = n % 7;
-        FrameMap map;
-        map.frontal = (n / 7) % 2;
-        map.bore = !map.frontal && (n / 14) % 2;
-        map.sx = (n / 28) % 2 ? -1 : 1;
-        map.sy = map.frontal && (n / 14) % 2 ? -1 : 1;
+        const FrameMap map = frame_of(n);
         FramePath p;
         p.m = &map;
         double Y0 = 30 + 8 * u(rng), y = Y0, x = 0;
