@@ -3,6 +3,10 @@
 // contact, RAZ, and a workshop that outlives the run.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <string>
 
 #include "tests/console/fixture.hpp"
 
@@ -59,6 +63,29 @@ TEST(WorkshopSession, TestModeMovesNothingAndCrashesNothing) {
     workshop::Reading r;
     ASSERT_EQ(c.s->sim().shop()->measure("dia Z-10", r), "");
     EXPECT_DOUBLE_EQ(r.value, 60.0);  // the graphic test cut nothing
+}
+
+// The store keeps the workshop: a part it cannot read comes back as fresh
+// stock, said on the message line, with the setup still in the chuck.
+TEST(WorkshopSession, AStoredPartThatCannotBeReadComesBackAsFreshStock) {
+    std::string path = ::testing::TempDir() + "/workshop_" + std::to_string(::getpid()) + ".db";
+    for (const char* ext : {"", "-wal", "-shm"}) std::remove((path + ext).c_str());
+    {
+        auto opened = store::Store::open(path);
+        ASSERT_FALSE(opened.error) << opened.error.message;
+        workshop::Setup st;
+        ASSERT_TRUE(workshop::builtin_setup("lathe", st));
+        ASSERT_FALSE(opened.value->put_workshop("lathe", st.source, "1 2 x\n"));
+    }
+    auto opened = store::Store::open(path);
+    ASSERT_FALSE(opened.error) << opened.error.message;
+    Console c("lathe", {}, std::move(opened.value));
+    ASSERT_TRUE(c.s->sim().shop());
+    EXPECT_EQ(c.s->sim().shop()->setup().name, "lathe");
+    workshop::Reading r;
+    ASSERT_EQ(c.s->sim().shop()->measure("dia Z-10", r), "");
+    EXPECT_DOUBLE_EQ(r.value, 60.0);
+    for (const char* ext : {"", "-wal", "-shm"}) std::remove((path + ext).c_str());
 }
 
 }  // namespace
