@@ -428,14 +428,14 @@ void Interpreter::after_block(int lineno) {
 
 bool Interpreter::call(const Plan& p) {
     const ProgramText* target = stack_.back().prog;
-    if (p.g77_level > 0) {
+    if (p.g77.level > 0) {
         // G77 -i: the return block of level i (spec README (b) 24).
         int depth = int(stack_.size()) - 1;
-        if (p.g77_level > depth) {
-            fail(26, strf(tr("G77 -%d: there is no call level %d (depth %d)"), p.g77_level, p.g77_level, depth));
+        if (p.g77.level > depth) {
+            fail(26, strf(tr("G77 -%d: there is no call level %d (depth %d)"), p.g77.level, p.g77.level, depth));
             return false;
         }
-        const Frame& caller = stack_[size_t(p.g77_level - 1)];
+        const Frame& caller = stack_[size_t(p.g77.level - 1)];
         Frame f;
         f.prog = caller.prog;
         f.call = true;
@@ -444,10 +444,10 @@ bool Interpreter::call(const Plan& p) {
         stack_.push_back(f);
         return true;
     }
-    if (p.g77_h >= 0) {
-        target = mem_.find(p.g77_h);
+    if (p.g77.h >= 0) {
+        target = mem_.find(p.g77.h);
         if (!target) {
-            fail(25, strf(tr("G77 H%d: program %%%d is not in memory"), p.g77_h, p.g77_h));
+            fail(25, strf(tr("G77 H%d: program %%%d is not in memory"), p.g77.h, p.g77.h));
             return false;
         }
     }
@@ -458,15 +458,15 @@ bool Interpreter::call(const Plan& p) {
     Frame f;
     f.prog = target;
     f.call = true;
-    f.repeats = p.g77_s;
+    f.repeats = p.g77.s;
     f.saved_radcomp = modal_.radcomp;
     f.saved_dir = modal_.spindle_dir;
     f.saved_range = modal_.range;
     f.saved_s = modal_.s;
     f.saved_m7 = modal_.m7;
     f.saved_m8 = modal_.m8;
-    if (p.g77_nn == 0) {
-        if (p.g77_h < 0) {
+    if (p.g77.nn == 0) {
+        if (p.g77.h < 0) {
             fail(25, tr("G77 needs H (a program) or N labels"));
             return false;
         }
@@ -474,10 +474,10 @@ bool Interpreter::call(const Plan& p) {
         f.pos = f.range_pos = target->begin;
         f.line = f.range_line = target->first_line;
     } else {
-        const Label* a = target->find_label(p.g77_n[0]);
-        const Label* b = target->find_label(p.g77_nn > 1 ? p.g77_n[1] : p.g77_n[0]);
+        const Label* a = target->find_label(p.g77.n[0]);
+        const Label* b = target->find_label(p.g77.nn > 1 ? p.g77.n[1] : p.g77.n[0]);
         if (!a || !b) {
-            long missing = !a ? p.g77_n[0] : p.g77_n[1];
+            long missing = !a ? p.g77.n[0] : p.g77.n[1];
             fail(25, strf(tr("G77: block N%ld not found in %%%d"), missing, target->number));
             return false;
         }

@@ -53,8 +53,8 @@ bool Interpreter::Decoder::g16_arg(const Word& w) {
     if (w.v.kind != Operand::SignOnly)
         return bad(2, tr("G16 takes P, Q or R followed by a sign only (G16 R+)"), w.col);
     const char c = letter(w);
-    p.g16_axis = c == 'P' ? X : c == 'Q' ? Y : Z;
-    p.g16_neg = w.v.neg;
+    p.g16.axis = c == 'P' ? X : c == 'Q' ? Y : Z;
+    p.g16.neg = w.v.neg;
     return true;
 }
 
@@ -62,7 +62,7 @@ bool Interpreter::Decoder::g51_arg(const Word& w) {
     int axis = -1;
     if (!axis_addr(w.addr, axis) || w.v.kind != Operand::SignOnly)
         return bad(3, tr("G51 takes axis letters with a sign only (G51 X- Y+)"), w.col);
-    (w.v.neg ? p.g51_on : p.g51_off).set(size_t(axis));
+    (w.v.neg ? p.g51.on : p.g51.off).set(size_t(axis));
     return true;
 }
 
@@ -73,15 +73,15 @@ bool Interpreter::Decoder::g59_arg(const Word& w) {
     if (axis_addr(w.addr, axis)) {
         if (!m.has(axis)) return bad(1, strf(tr("axis %c is not on this machine"), letter(w)), w.col);
         // G52/G59 X on a lathe is a radius (turning.md §2.8).
-        p.g59_axis.set(size_t(axis));
-        p.g59_val[size_t(axis)] = is_rotary(axis) ? v : v * unit;
+        p.g59.axis.set(size_t(axis));
+        p.g59.val[size_t(axis)] = is_rotary(axis) ? v : v * unit;
     } else if (w.addr == addrE('D')) {
-        p.g59_ed = true;
-        p.g59_ed_val = v;
+        p.g59.has_ed = true;
+        p.g59.ed = v;
     } else {
         int k = letter(w) - 'I';
-        p.g59_ijk.set(size_t(k));
-        p.g59_ijk_val[k] = (k == 0 && diam) ? v * unit / 2 : v * unit;
+        p.g59.ijk.set(size_t(k));
+        p.g59.ijk_val[k] = (k == 0 && diam) ? v * unit / 2 : v * unit;
     }
     return true;
 }
@@ -92,15 +92,15 @@ bool Interpreter::Decoder::g92_arg(const Word& w) {
     if (!in.word_value(w, v)) return false;
     const char c = letter(w);
     if (c == 'S') {
-        p.g92_s = true;
-        p.g92_s_val = v;
+        p.g92.has_s = true;
+        p.g92.s = v;
     } else if (c == 'R') {
-        p.g92_r = true;
-        p.g92_r_val = v * unit;
+        p.g92.has_r = true;
+        p.g92.r = v * unit;
     } else if (axis_addr(w.addr, axis)) {
         if (!m.has(axis)) return bad(1, strf(tr("axis %c is not on this machine"), c), w.col);
-        p.g92_axis.set(size_t(axis));
-        p.g92_val[size_t(axis)] = is_rotary(axis) ? v : (axis == X && diam ? v * unit / 2 : v * unit);
+        p.g92.axis.set(size_t(axis));
+        p.g92.val[size_t(axis)] = is_rotary(axis) ? v : (axis == X && diam ? v * unit / 2 : v * unit);
     }
     return true;
 }
@@ -109,12 +109,12 @@ bool Interpreter::Decoder::g96_arg(const Word& w) {
     double v;
     if (!in.word_value(w, v)) return false;
     if (letter(w) == 'X') {
-        p.g96_x = true;
-        p.g96_x_val = diam ? v * unit / 2 : v * unit;
+        p.spindle.has_x = true;
+        p.spindle.x = diam ? v * unit / 2 : v * unit;
     } else {
-        p.g96_s = true;
-        p.has_s = true;
-        p.s = v;
+        p.spindle.g96_s = true;
+        p.tech.has_s = true;
+        p.tech.s = v;
     }
     return true;
 }
@@ -122,9 +122,9 @@ bool Interpreter::Decoder::g96_arg(const Word& w) {
 bool Interpreter::Decoder::g97_arg(const Word& w) {
     double v;
     if (!in.word_value(w, v)) return false;
-    p.g97_s = true;
-    p.has_s = true;
-    p.s = v;
+    p.spindle.g97_s = true;
+    p.tech.has_s = true;
+    p.tech.s = v;
     return true;
 }
 
@@ -132,9 +132,9 @@ bool Interpreter::Decoder::g97_arg(const Word& w) {
 bool Interpreter::Decoder::feed_mode_arg(const Word& w) {
     double v;
     if (!in.word_value(w, v)) return false;
-    p.g94_f = true;
-    p.has_f = true;
-    p.f = v;
+    p.tech.f_with_mode = true;
+    p.tech.has_f = true;
+    p.tech.f = v;
     return true;
 }
 
@@ -145,15 +145,15 @@ bool Interpreter::Decoder::g77_arg(const Word& w) {
     const char c = letter(w);
     if (c == 'N') {
         if (!in.word_value(w, v, &iv)) return false;
-        if (p.g77_nn >= 2) return bad(3, tr("G77 takes at most two N labels"), w.col);
-        p.g77_n[p.g77_nn++] = iv;
+        if (p.g77.nn >= 2) return bad(3, tr("G77 takes at most two N labels"), w.col);
+        p.g77.n[p.g77.nn++] = iv;
     } else if (c == 'H') {
         if (!in.word_value(w, v, &iv)) return false;
-        p.g77_h = iv;
+        p.g77.h = iv;
     } else if (c == 'S') {
         if (!in.word_value(w, v, &iv)) return false;
         if (iv < 1 || iv > 100) return bad(1, tr("G77 S repeat count must be 1 to 100"), w.col);
-        p.g77_s = iv;
+        p.g77.s = iv;
     } else {  // P: PROFIL contour
         return bad(4, tr("G77 P (PROFIL contour) is an option this machine does not have"), w.col);
     }
@@ -166,9 +166,9 @@ bool Interpreter::Decoder::label_arg(const Word& w) {
     double v;
     if (letter(w) != 'N') return true;  // G10 EF: feed limit after interrupt, unused
     if (!in.word_value(w, v, &iv)) return false;
-    if (owner_g == 79) p.g79_n = iv;
-    else if (owner_g == 75) p.g75_n = iv;
-    else p.g10_n = iv;
+    if (owner_g == 79) p.flow.g79_n = iv;
+    else if (owner_g == 75) p.flow.g75_n = iv;
+    else p.flow.g10_n = iv;
     return true;
 }
 
@@ -178,9 +178,9 @@ bool Interpreter::Decoder::g76_arg(const Word& w) {
     double v;
     if (!in.word_value(w, v, &iv)) return false;
     if (letter(w) == 'H') {
-        p.g76_h = iv;
-    } else if (p.g76_nn < 2) {
-        p.g76_n[p.g76_nn++] = iv;
+        p.g76.h = iv;
+    } else if (p.g76.nn < 2) {
+        p.g76.n[p.g76.nn++] = iv;
     } else {
         return bad(3, tr("G76 takes at most two N labels"), w.col);
     }
@@ -194,8 +194,8 @@ bool Interpreter::Decoder::profile_cycle_arg(const Word& w) {
         int iv;
         double v;
         if (!in.word_value(w, v, &iv)) return false;
-        if (p.spl_nn >= 2) return bad(3, tr("a cycle takes two N labels"), w.col);
-        p.spl_n[p.spl_nn++] = iv;
+        if (p.spline.nn >= 2) return bad(3, tr("a cycle takes two N labels"), w.col);
+        p.spline.n[p.spline.nn++] = iv;
         return true;
     }
     if (w.addr == addrE('P') && owner_g != 66)
@@ -209,9 +209,9 @@ bool Interpreter::Decoder::spline_arg(const Word& w) {
     double v;
     if (!in.word_value(w, v, &iv)) return false;
     const char c = letter(w);
-    if (w.addr == addrN('C')) p.spl_nc = iv;
-    else if (c == 'H') p.spl_h = iv;
-    else if (c == 'N' && p.spl_nn < 2) p.spl_n[p.spl_nn++] = iv;
+    if (w.addr == addrN('C')) p.spline.nc = iv;
+    else if (c == 'H') p.spline.h = iv;
+    else if (c == 'N' && p.spline.nn < 2) p.spline.n[p.spline.nn++] = iv;
     else return bad(3, tr("G48 takes NC, H and two N labels"), w.col);
     return true;
 }
@@ -225,8 +225,8 @@ bool Interpreter::Decoder::g46_arg(const Word& w) {
     if (w.addr != addrN('R')) return cyc_word(w);
     if (w.v.kind != Operand::SignOnly && w.v.kind != Operand::Blank)
         return bad(267, tr("NR takes a sign only (NR+ climb, NR- conventional)"), w.col);
-    if (p.ncyc >= 16) return bad(3, tr("too many cycle words in one block"), w.col);
-    p.cyc[p.ncyc++] = {w.addr, w.v.neg ? -1.0 : 1.0};
+    if (p.cycle_words.n >= 16) return bad(3, tr("too many cycle words in one block"), w.col);
+    p.cycle_words.word[p.cycle_words.n++] = {w.addr, w.v.neg ? -1.0 : 1.0};
     return true;
 }
 
@@ -237,7 +237,7 @@ bool Interpreter::Decoder::g78_arg(const Word& w) {
     double v;
     if (!in.word_value(w, v, &iv)) return false;
     if (iv != 1) return bad(78, strf(tr("G78 P%d: this machine has one axis group (P1)"), iv), w.col);
-    p.g78_p = true;
+    p.flow.g78_p = true;
     return true;
 }
 

@@ -48,9 +48,9 @@ bool Interpreter::cycle_words(const Plan& p, int code) {
     CycleParams& c = cyc_;
     auto ax = cycle_axis();
     const bool diam = m_.lathe && m_.x_diameter && !modal_.radius_x && ax == X;
-    for (int i = 0; i < p.ncyc; ++i) {
-        Addr a = p.cyc[i].a;
-        double v = p.cyc[i].v;
+    for (int i = 0; i < p.cycle_words.n; ++i) {
+        Addr a = p.cycle_words.word[i].a;
+        double v = p.cycle_words.word[i].v;
         if (a == addrE('R')) c.er = diam ? v / 2 : v, c.has_er = true;
         else if (a == addrE('H')) c.eh = diam ? v / 2 : v, c.has_eh = true;
         else if (a == addrE('F')) c.ef = v, c.has_ef = true;
@@ -67,8 +67,8 @@ bool Interpreter::cycle_words(const Plan& p, int code) {
             return fail(835, strf(tr("%s must be positive in a cycle"), std::string(addr_name(a)).c_str())), false;
     }
     // The bottom is the cycle-axis word, absolute also in G91 (milling.md §6.1.3).
-    if (p.axis[size_t(ax)]) {
-        c.z = p.inc[size_t(ax)] ? prog_[size_t(ax)] + p.val[size_t(ax)] : p.val[size_t(ax)];
+    if (p.to.axis[size_t(ax)]) {
+        c.z = p.to.inc[size_t(ax)] ? prog_[size_t(ax)] + p.to.val[size_t(ax)] : p.to.val[size_t(ax)];
         c.has_z = true;
     }
     (void)code;
@@ -181,14 +181,14 @@ bool Interpreter::DrillRun::approach(const Plan& p) {
     // 1. Up to ER first if the tool is below it.
     if (h(prog[size_t(ax)]) < h(c.er) - 1e-9 && !move(0, c.er)) return false;
     // 2. Positioning in the plane with the modal interpolation (%333 moves by G2).
-    std::bitset<kAxes> plane = p.axis;
+    std::bitset<kAxes> plane = p.to.axis;
     plane.reset(size_t(ax));
     if (plane.any()) {
         Plan q = p;
-        q.axis.reset(size_t(ax));
+        q.to.axis.reset(size_t(ax));
         Axes target = prog;
         for (int a = 0; a < kAxes; ++a)
-            if (q.axis[size_t(a)]) target[size_t(a)] = q.inc[size_t(a)] ? prog[size_t(a)] + q.val[size_t(a)] : q.val[size_t(a)];
+            if (q.to.axis[size_t(a)]) target[size_t(a)] = q.to.inc[size_t(a)] ? prog[size_t(a)] + q.to.val[size_t(a)] : q.to.val[size_t(a)];
         bool ok;
         const int motion = in.modal_.motion;
         if (motion == 2 || motion == 3) {
@@ -368,13 +368,13 @@ bool Interpreter::cycle_block(const Plan& p) {
     const int code = p.g[31] ? 31 : modal_.cycle;
     if (!cycle_words(p, code)) return false;
     const int ax = cycle_axis();
-    std::bitset<kAxes> plane = p.axis;
+    std::bitset<kAxes> plane = p.to.axis;
     plane.reset(size_t(ax));
-    bool written = p.cycle == code || code == 31;
+    bool written = p.mode.cycle == code || code == 31;
     if (written || plane.any()) return cycle_run(p, code);
     // ER alone: go to the new retract plane, no machining (004:956, 000:6393).
     bool er_only = false;
-    for (int i = 0; i < p.ncyc; ++i) er_only = er_only || p.cyc[i].a == addrE('R');
+    for (int i = 0; i < p.cycle_words.n; ++i) er_only = er_only || p.cycle_words.word[i].a == addrE('R');
     if (er_only && !cycle_axis_move(0, cyc_.er)) return false;
     return true;
 }

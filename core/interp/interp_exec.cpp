@@ -62,16 +62,16 @@ bool Interpreter::assign_all(const Block& b) {
 std::optional<StepResult> Interpreter::run_apart(const Block& b, const Plan& p) {
     if (g64_pending_) {
         // G64's rough stock until G80, which runs the roughing first (turning.md §6.3).
-        if (p.cycle != 80) return turning_stock(p) ? StepResult::running : StepResult::error;
+        if (p.mode.cycle != 80) return turning_stock(p) ? StepResult::running : StepResult::error;
         if (!turning_g64_run()) return StepResult::error;
     }
-    if (p.unsupported >= 0) {
-        const GCode* g = find_g(p.unsupported);
-        return fail(err::kUnsupported, strf(tr("G%d (%s) is not yet supported by pupitre"), p.unsupported,
+    if (p.unsupported.g >= 0) {
+        const GCode* g = find_g(p.unsupported.g);
+        return fail(err::kUnsupported, strf(tr("G%d (%s) is not yet supported by pupitre"), p.unsupported.g,
                                             tr(std::string(g->text).c_str())));
     }
     // G76+/G76- edit the program memory and do nothing else.
-    if (p.g76_sign) return edit_program(b, p) ? StepResult::running : StepResult::error;
+    if (p.g76.sign) return edit_program(b, p) ? StepResult::running : StepResult::error;
     // G46 blocks, and the contour blocks of a G46 definition, move nothing but
     // what the pocket orders plan (milling.md §7.2).
     // A definition left open by a run that stopped inside it (RAZ, an error
@@ -89,20 +89,20 @@ std::optional<StepResult> Interpreter::run_apart(const Block& b, const Plan& p) 
 // The refusals that come before the block's modal words, M functions and
 // moves take effect.
 bool Interpreter::block_allowed(const Plan& p) {
-    if (p.has_eb)
-        for (int i = 0; i < p.nm; ++i)
-            if (p.m[i] <= 2) return fail(131, strf(tr("a fillet or chamfer (EB) in a block with M0%d"), p.m[i])), false;
+    if (p.pgp.has_eb)
+        for (int i = 0; i < p.tech.nm; ++i)
+            if (p.tech.m[i] <= 2) return fail(131, strf(tr("a fillet or chamfer (EB) in a block with M0%d"), p.tech.m[i])), false;
     if (pgp_.pending()) {
         // The held element needs the next blocks (pgp.md §6 item 5).
-        if (p.plane >= 0 && p.plane != modal_.plane)
+        if (p.mode.plane >= 0 && p.mode.plane != modal_.plane)
             return fail(137, tr("plane change while a profile element is incomplete")), false;
-        for (int i = 0; i < p.nm; ++i)
-            if (p.m[i] == 2 && !pgp_close()) return false;  // the solver says why (101, 131)
+        for (int i = 0; i < p.tech.nm; ++i)
+            if (p.tech.m[i] == 2 && !pgp_close()) return false;  // the solver says why (101, 131)
     }
     if (p.g[78]) {
-        for (int i = 0; i < p.nm; ++i)
-            if (p.m[i] == 0 || p.m[i] == 1)
-                return fail(78, strf(tr("G78 with a program stop M0%d"), p.m[i])), false;
+        for (int i = 0; i < p.tech.nm; ++i)
+            if (p.tech.m[i] == 0 || p.tech.m[i] == 1)
+                return fail(78, strf(tr("G78 with a program stop M0%d"), p.tech.m[i])), false;
     }
     // Radius compensation restrictions (turning.md §3.7, milling.md §4.4.2).
     bool comp = modal_.radcomp != 40;
@@ -123,7 +123,7 @@ bool Interpreter::do_dwell(const Plan& p) {
 // G79's condition is read once the rest of the block is done: it sees the
 // block's own assignments.
 bool Interpreter::do_g79(const Block& b, const Plan& p) {
-    if (p.g79_n < 0) return fail(2, tr("G79 needs the label to jump to (G79 N100)")), false;
+    if (p.flow.g79_n < 0) return fail(2, tr("G79 needs the label to jump to (G79 N100)")), false;
     bool go = true;
     if (b.test.cmp != Cmp::none) {
         double lhs, rhs;
@@ -133,18 +133,18 @@ bool Interpreter::do_g79(const Block& b, const Plan& p) {
         go = compare(b.test.cmp, lhs, rhs);
         if (l_.any_unset_read) report_unset_reads();
     }
-    return !go || jump(p.g79_n);
+    return !go || jump(p.flow.g79_n);
 }
 
 // The functions that act on the program rather than the machine come last:
 // a jump or a call leaves the block, so everything else in it must be done.
 bool Interpreter::do_flow(const Block& b, const Plan& p) {
-    if (p.g[79] && !p.g79_sign && !do_g79(b, p)) return false;
+    if (p.g[79] && !p.flow.g79_sign && !do_g79(b, p)) return false;
     if (p.g[48] && !spline_define(p)) return false;
     if (p.g[49]) {
         if (modal_.radcomp != 40) return fail(140, tr("G49 must be programmed in G40")), false;
-        if (p.spl_nc <= 0 || !splines_.erase(p.spl_nc))
-            return fail(605, strf(tr("G49: curve NC%d is not defined"), p.spl_nc)), false;
+        if (p.spline.nc <= 0 || !splines_.erase(p.spline.nc))
+            return fail(605, strf(tr("G49: curve NC%d is not defined"), p.spline.nc)), false;
     }
     if (p.g[76] && !transfer(p)) return false;
     if (p.g[77] && !call(p)) return false;
@@ -161,9 +161,9 @@ StepResult Interpreter::execute(const Block& b) {
     bool decoded = decode(b, p);
     if (l_.any_unset_read) report_unset_reads();
     if (!decoded) return StepResult::error;
-    if (g64_pending_ || p.unsupported >= 0 || p.g76_sign || p.g[46] || p46_.defining)
+    if (g64_pending_ || p.unsupported.g >= 0 || p.g76.sign || p.g[46] || p46_.defining)
         if (std::optional<StepResult> apart = run_apart(b, p)) return *apart;
-    if ((p.has_eb || p.g[78] || p.g[16] || pgp_.pending()) && !block_allowed(p)) return StepResult::error;
+    if ((p.pgp.has_eb || p.g[78] || p.g[16] || pgp_.pending()) && !block_allowed(p)) return StepResult::error;
     if (!apply_modal(p) || !do_m_avant(p) || !apply_spindle(p)) return StepResult::error;
     if (b.msg_channel >= 0) out_.message(loc_, b.msg_channel, b.msg);
     if (!do_motion(p) || !do_dwell(p)) return StepResult::error;
@@ -177,14 +177,14 @@ StepResult Interpreter::execute(const Block& b) {
 // G0-G3, G90/G91, G17-G19, G70/G71. The plane cannot change under compensation:
 // the offset contour is computed in it.
 bool Interpreter::modal_interpolation(const Plan& p) {
-    if (p.motion >= 0) modal_.motion = p.motion;
-    if (p.dist >= 0) modal_.incremental = p.dist == 91;
-    if (p.plane >= 0 && p.plane != modal_.plane) {
+    if (p.mode.motion >= 0) modal_.motion = p.mode.motion;
+    if (p.mode.dist >= 0) modal_.incremental = p.mode.dist == 91;
+    if (p.mode.plane >= 0 && p.mode.plane != modal_.plane) {
         if (modal_.radcomp != 40)
             return fail(138, tr("plane change under radius compensation (program G40 first)")), false;
-        modal_.plane = p.plane;
+        modal_.plane = p.mode.plane;
     }
-    if (p.units >= 0) modal_.inch = p.units == 70;
+    if (p.mode.units >= 0) modal_.inch = p.mode.units == 70;
     return true;
 }
 
@@ -192,8 +192,8 @@ bool Interpreter::modal_interpolation(const Plan& p) {
 bool Interpreter::modal_cycle(const Plan& p) {
     if (p.g[31] && modal_.cycle != 80)
         modal_.cycle = 80;  // G31 cancels an active drilling cycle, as G80 would
-    if (p.cycle >= 0 && p.cycle != modal_.cycle) {
-        if (p.cycle == 80) {
+    if (p.mode.cycle >= 0 && p.mode.cycle != modal_.cycle) {
+        if (p.mode.cycle == 80) {
             cyc_ = CycleParams{};
         } else {
             // Another cycle keeps Z, ER and EH and resets the rest (milling.md §6.1.3).
@@ -203,7 +203,7 @@ bool Interpreter::modal_cycle(const Plan& p) {
             keep.has_eh = cyc_.has_eh, keep.eh = cyc_.eh;
             cyc_ = keep;
         }
-        modal_.cycle = p.cycle;
+        modal_.cycle = p.mode.cycle;
     }
     if (p.g[16] && modal_.cycle >= 81 && modal_.cycle <= 89)
         return fail(890, tr("G16 while a drilling cycle is active")), false;
@@ -212,13 +212,13 @@ bool Interpreter::modal_cycle(const Plan& p) {
 
 // G52/G53 and G73/G74 change the program point the position is read in.
 bool Interpreter::modal_frame_switches(const Plan& p) {
-    if (p.prefdec >= 0 && (p.prefdec == 53) != frames_.g53) {
-        frames_.g53 = p.prefdec == 53;
+    if (p.mode.prefdec >= 0 && (p.mode.prefdec == 53) != frames_.g53) {
+        frames_.g53 = p.mode.prefdec == 53;
         recompute_program_pos();
     }
-    if (p.scale >= 0 && (p.scale == 74) != frames_.scale_on) {
+    if (p.mode.scale >= 0 && (p.mode.scale == 74) != frames_.scale_on) {
         if (modal_.radcomp != 40) return fail(143, tr("G73/G74 under radius compensation")), false;
-        frames_.scale_on = p.scale == 74;
+        frames_.scale_on = p.mode.scale == 74;
         recompute_program_pos();
     }
     return true;
@@ -232,19 +232,19 @@ bool Interpreter::modal_feed(const Plan& p) {
     // new F is the error (2, F being G95's mandatory argument).
     // Warning 1115 at every G94/G95 block without F (seed 000: "doit être suivie
     // obligatoirement de l'argument F"; CLARIFICATIONS 18).
-    if ((p.feed_mode == 94 || p.feed_mode == 95) && !p.has_f && m_.strict)
-        return fail(2, strf(tr("G%d without F (seed 000: F is its mandatory argument)"), p.feed_mode)), false;
-    if ((p.feed_mode == 94 || p.feed_mode == 95) && !p.has_f)
+    if ((p.mode.feed == 94 || p.mode.feed == 95) && !p.tech.has_f && m_.strict)
+        return fail(2, strf(tr("G%d without F (seed 000: F is its mandatory argument)"), p.mode.feed)), false;
+    if ((p.mode.feed == 94 || p.mode.feed == 95) && !p.tech.has_f)
         warn(err::wFeedModeNoF,
-             p.feed_mode != modal_.feed_mode
-                 ? strf(tr("G%d without F in its block: the feed unit changes and the next feed move needs F"), p.feed_mode)
-                 : strf(tr("G%d without F in its block: the feed stays F%s"), p.feed_mode, fixed3(modal_.feed).c_str()));
-    if (p.feed_mode >= 0 && p.feed_mode != modal_.feed_mode) {
-        modal_.feed_mode = p.feed_mode;
-        if (!p.has_f) modal_.feed_set = false;
+             p.mode.feed != modal_.feed_mode
+                 ? strf(tr("G%d without F in its block: the feed unit changes and the next feed move needs F"), p.mode.feed)
+                 : strf(tr("G%d without F in its block: the feed stays F%s"), p.mode.feed, fixed3(modal_.feed).c_str()));
+    if (p.mode.feed >= 0 && p.mode.feed != modal_.feed_mode) {
+        modal_.feed_mode = p.mode.feed;
+        if (!p.tech.has_f) modal_.feed_set = false;
     }
-    if (p.has_f) {
-        modal_.feed = p.f;
+    if (p.tech.has_f) {
+        modal_.feed = p.tech.f;
         modal_.feed_set = true;
         feed_programmed_ = true;
     }
@@ -254,25 +254,25 @@ bool Interpreter::modal_feed(const Plan& p) {
 // T, D, G40-G42 and G29. A new D is announced at once unless M06 in the block
 // announces the change itself.
 bool Interpreter::modal_tool(const Plan& p) {
-    if (p.has_t) modal_.t = p.t;
-    if (p.has_d && p.d != modal_.d) {
-        modal_.d = p.d;
+    if (p.tech.has_t) modal_.t = p.tech.t;
+    if (p.tech.has_d && p.tech.d != modal_.d) {
+        modal_.d = p.tech.d;
         gauge_pending_.set();
-        if (!p.nm || std::find(p.m, p.m + p.nm, 6) == p.m + p.nm)
+        if (!p.tech.nm || std::find(p.tech.m, p.tech.m + p.tech.nm, 6) == p.tech.m + p.tech.nm)
             out_.tool(loc_, modal_.tool_in_spindle, modal_.d, 0, false);
     }
-    if (p.radcomp >= 0 && p.radcomp != modal_.radcomp) {
+    if (p.mode.radcomp >= 0 && p.mode.radcomp != modal_.radcomp) {
         // The radius is taken when G41/G42 is programmed; a change of D or R takes
         // effect after G40 and a new G41/G42 (000:898-906).
-        if (p.radcomp == 29 && comp_.on)
+        if (p.mode.radcomp == 29 && comp_.on)
             return fail(140, tr("G29 under G41/G42: program G40 first (000:3932)")), false;
-        if (p.radcomp != 40 && p.radcomp != 29 && !comp_engage(p.radcomp)) return false;
-        modal_.radcomp = p.radcomp;
+        if (p.mode.radcomp != 40 && p.mode.radcomp != 29 && !comp_engage(p.mode.radcomp)) return false;
+        modal_.radcomp = p.mode.radcomp;
         nonmotion_in_comp_ = 0;
     }
-    if (p.g16_axis >= 0) {
-        modal_.tool_axis = p.g16_axis;
-        modal_.tool_axis_neg = p.g16_neg;
+    if (p.g16.axis >= 0) {
+        modal_.tool_axis = p.g16.axis;
+        modal_.tool_axis_neg = p.g16.neg;
         gauge_pending_.set();
     } else if (p.g[16]) {
         return fail(2, tr("G16 needs P, Q or R with a sign (G16 R+)")), false;
@@ -288,21 +288,21 @@ void Interpreter::ed_axes(int& a0, int& a1) const {
 
 // G59 offsets, modal per axis (turning.md §2.8); G91 G59 adds.
 bool Interpreter::modal_g59(const Plan& p) {
-    if (p.g59_axis.none() && !p.g59_ed && p.g59_ijk.none())
+    if (p.g59.axis.none() && !p.g59.has_ed && p.g59.ijk.none())
         return fail(2, tr("G59 needs at least one axis offset")), false;
     for (int a = 0; a < kAxes; ++a)
-        if (p.g59_axis[size_t(a)])
-            frames_.g59[size_t(a)] = modal_.incremental ? frames_.g59[size_t(a)] + p.g59_val[size_t(a)]
-                                                        : p.g59_val[size_t(a)];
+        if (p.g59.axis[size_t(a)])
+            frames_.g59[size_t(a)] = modal_.incremental ? frames_.g59[size_t(a)] + p.g59.val[size_t(a)]
+                                                        : p.g59.val[size_t(a)];
     int a0, a1;
     ed_axes(a0, a1);
     auto ijk_of = [](int axis) { return axis == X ? 0 : axis == Y ? 1 : 2; };
-    if (p.g59_ijk[size_t(ijk_of(a0))]) frames_.ed_c0 = p.g59_ijk_val[ijk_of(a0)];
-    if (p.g59_ijk[size_t(ijk_of(a1))]) frames_.ed_c1 = p.g59_ijk_val[ijk_of(a1)];
-    if (p.g59_ed) {
+    if (p.g59.ijk[size_t(ijk_of(a0))]) frames_.ed_c0 = p.g59.ijk_val[ijk_of(a0)];
+    if (p.g59.ijk[size_t(ijk_of(a1))]) frames_.ed_c1 = p.g59.ijk_val[ijk_of(a1)];
+    if (p.g59.has_ed) {
         frames_.ed_a0 = a0;
         frames_.ed_a1 = a1;
-        frames_.ed = modal_.incremental ? frames_.ed + p.g59_ed_val : p.g59_ed_val;
+        frames_.ed = modal_.incremental ? frames_.ed + p.g59.ed : p.g59.ed;
     }
     recompute_program_pos();
     return true;
@@ -312,15 +312,15 @@ bool Interpreter::modal_g59(const Plan& p) {
 // say how they add up and about which axes ED turns.
 bool Interpreter::modal_frame(const Plan& p) {
     if (p.g[59] && !modal_g59(p)) return false;
-    if (p.has_ed) {
+    if (p.tech.has_ed) {
         ed_axes(frames_.ed_a0, frames_.ed_a1);
-        frames_.ed = modal_.incremental ? frames_.ed + p.ed : p.ed;
+        frames_.ed = modal_.incremental ? frames_.ed + p.tech.ed : p.tech.ed;
         recompute_program_pos();
     }
     if (p.g[51]) {
-        if (p.g51_on.none() && p.g51_off.none()) return fail(2, tr("G51 needs axes with a sign (G51 X- Y-)")), false;
-        frames_.mirror |= p.g51_on;
-        frames_.mirror &= ~p.g51_off;
+        if (p.g51.on.none() && p.g51.off.none()) return fail(2, tr("G51 needs axes with a sign (G51 X- Y-)")), false;
+        frames_.mirror |= p.g51.on;
+        frames_.mirror &= ~p.g51.off;
         recompute_program_pos();
     }
     return true;
@@ -328,24 +328,24 @@ bool Interpreter::modal_frame(const Plan& p) {
 
 // G92: a preset of the axes, or the spindle limit S, or the tangential feed R.
 bool Interpreter::modal_g92(const Plan& p) {
-    if (p.g92_axis.any() && (p.g92_s || p.g92_r))
+    if (p.g92.axis.any() && (p.g92.has_s || p.g92.has_r))
         return fail(3, tr("G92 presets axes or sets S or R, not both in one block")), false;
-    if (p.g92_axis.none() && !p.g92_s && !p.g92_r)
+    if (p.g92.axis.none() && !p.g92.has_s && !p.g92.has_r)
         return fail(2, tr("G92 needs axes (preset), S (spindle limit) or R (tangential feed)")), false;
     // new PREF = PREF + (current point / OP) - programmed value (000:1173-1179).
     for (int a = 0; a < kAxes; ++a)
-        if (p.g92_axis[size_t(a)]) frames_.pref[size_t(a)] += prog_[size_t(a)] - p.g92_val[size_t(a)];
-    if (p.g92_axis.any()) recompute_program_pos();
-    if (p.g92_s) {
+        if (p.g92.axis[size_t(a)]) frames_.pref[size_t(a)] += prog_[size_t(a)] - p.g92.val[size_t(a)];
+    if (p.g92.axis.any()) recompute_program_pos();
+    if (p.g92.has_s) {
         if (!m_.lathe) return fail(2, tr("G92 S (spindle limit) is a lathe function")), false;
-        modal_.smax = p.g92_s_val;
+        modal_.smax = p.g92.s;
         if (modal_.smax > m_.spindle_max) {
             warn(err::wSpeedClamped, strf(tr("G92 S%s above the spindle maximum %s: limited to it"),
                                           fixed3(modal_.smax, 63).c_str(), fixed3(m_.spindle_max, 63).c_str()));
             modal_.smax = m_.spindle_max;
         }
     }
-    if (p.g92_r) modal_.g92r = p.g92_r_val;
+    if (p.g92.has_r) modal_.g92r = p.g92.r;
     return true;
 }
 
@@ -355,8 +355,8 @@ bool Interpreter::modal_g92(const Plan& p) {
 // guarded by the words of its group, rather than an array of member pointers:
 // this runs for every block, and a call costs more than the test.
 bool Interpreter::apply_modal(const Plan& p) {
-    const bool feed = p.feed_mode >= 0 || p.has_f;
-    const bool tool = p.has_t || p.has_d || p.radcomp >= 0 || p.g16_axis >= 0 || p.g[16];
+    const bool feed = p.mode.feed >= 0 || p.tech.has_f;
+    const bool tool = p.tech.has_t || p.tech.has_d || p.mode.radcomp >= 0 || p.g16.axis >= 0 || p.g[16];
     if (!modal_interpolation(p) ||        // G0-G3, G90/G91, G17-G19, G70/G71
         !modal_cycle(p) ||                // G31, G80-G89
         !modal_frame_switches(p) ||       // G52/G53, G73/G74
@@ -365,8 +365,8 @@ bool Interpreter::apply_modal(const Plan& p) {
         !modal_frame(p) ||                // G59, ED, G51
         (p.g[92] && !modal_g92(p)))       // G92
         return false;
-    if (p.g75_n >= -1) modal_.g75 = p.g75_n == 0 ? -1 : p.g75_n;
-    if (p.has_eg) modal_.eg = p.eg;
+    if (p.flow.g75_n >= -1) modal_.g75 = p.flow.g75_n == 0 ? -1 : p.flow.g75_n;
+    if (p.tech.has_eg) modal_.eg = p.tech.eg;
     return true;
 }
 
@@ -375,14 +375,14 @@ bool Interpreter::apply_modal(const Plan& p) {
 void Interpreter::warn_spindle_words(const Plan& p) {
     double raw = s_raw_;
     s_raw_ = 0;
-    if (!p.has_s || modal_.spindle_mode != 97) return;
-    if (raw != 0 && raw != p.s)
+    if (!p.tech.has_s || modal_.spindle_mode != 97) return;
+    if (raw != 0 && raw != p.tech.s)
         warn(err::wFractionalRpm, strf(tr("S from a variable is %s rev/min, not a whole number: the spindle turns at %ld rev/min"),
-                                       fixed3(raw).c_str(), std::lround(p.s)));
-    else if (p.s != std::floor(p.s))
+                                       fixed3(raw).c_str(), std::lround(p.tech.s)));
+    else if (p.tech.s != std::floor(p.tech.s))
         warn(err::wFractionalRpm,
              strf(tr("S%s rev/min is not a whole number: the spindle turns at %s rev/min; write whole rev/min (S%ld)"),
-                  fixed3(p.s).c_str(), fixed3(p.s).c_str(), std::lround(p.s)));
+                  fixed3(p.tech.s).c_str(), fixed3(p.tech.s).c_str(), std::lround(p.tech.s)));
 }
 
 // Warning 1111: an L read before anything set it reads 0 (CLARIFICATIONS 18:
@@ -402,26 +402,26 @@ void Interpreter::report_unset_reads() {
 
 // Spindle speed after the avant M functions (M3/M4/M40-M45 act before S is used).
 bool Interpreter::apply_spindle(const Plan& p) {
-    if (p.spindle_mode == 96 || p.spindle_mode == 97) {
-        bool s_given = p.spindle_mode == 96 ? p.g96_s : p.g97_s;
+    if (p.mode.spindle == 96 || p.mode.spindle == 97) {
+        bool s_given = p.mode.spindle == 96 ? p.spindle.g96_s : p.spindle.g97_s;
         if (!s_given)
-            return fail(28, strf(tr("G%d must be followed by S"), p.spindle_mode)), false;
+            return fail(28, strf(tr("G%d must be followed by S"), p.mode.spindle)), false;
     }
-    if (p.spindle_mode == 96) {
-        if (!p.g96_x && !modal_.css_known)
+    if (p.mode.spindle == 96) {
+        if (!p.spindle.has_x && !modal_.css_known)
             return fail(28, tr("G96: the starting diameter is unknown (program X first, or G96 X.. S..)")), false;
         modal_.spindle_mode = 96;
-        modal_.css_x0 = p.g96_x ? p.g96_x_val : prog_[X];
+        modal_.css_x0 = p.spindle.has_x ? p.spindle.x : prog_[X];
         modal_.css_pos0 = prog_[X];
         modal_.css_known = true;
-    } else if (p.spindle_mode == 97) {
+    } else if (p.mode.spindle == 97) {
         modal_.spindle_mode = 97;
     }
-    if (p.has_s) modal_.s = p.s;
-    if (p.has_s || s_raw_ != 0) warn_spindle_words(p);
+    if (p.tech.has_s) modal_.s = p.tech.s;
+    if (p.tech.has_s || s_raw_ != 0) warn_spindle_words(p);
     bool range_written = false;
-    for (int i = 0; i < p.nm; ++i) range_written = range_written || (p.m[i] >= 40 && p.m[i] <= 45);
-    if (modal_.spindle_mode == 97 && p.has_s && m_.auto_range && !range_written && modal_.range < 0 &&
+    for (int i = 0; i < p.tech.nm; ++i) range_written = range_written || (p.tech.m[i] >= 40 && p.tech.m[i] <= 45);
+    if (modal_.spindle_mode == 97 && p.tech.has_s && m_.auto_range && !range_written && modal_.range < 0 &&
         !m_.ranges.empty() && modal_.s > 0) {
         // Automatic range: with none in force, the first range holding S
         // (turning.md §5.12); a range the program chose stays in force.
@@ -432,34 +432,34 @@ bool Interpreter::apply_spindle(const Plan& p) {
         modal_.range = found;
     }
     if (modal_.spindle_mode == 96 && !m_.ranges.empty() && modal_.range < 0 &&
-        (p.spindle_mode == 96 || p.has_s)) {
+        (p.mode.spindle == 96 || p.tech.has_s)) {
         // With automatic ranges the machine takes the range of the highest speeds.
         if (!m_.auto_range) return fail(29, tr("constant surface speed needs a spindle range (M40-M45)")), false;
         modal_.range = int(m_.ranges.size()) - 1;
     }
-    if (modal_.spindle_mode == 97 && p.has_s && modal_.range >= 0) {
+    if (modal_.spindle_mode == 97 && p.tech.has_s && modal_.range >= 0) {
         const SpindleRange& r = m_.ranges[size_t(modal_.range)];
         if (modal_.s != 0 && (modal_.s < r.min || modal_.s > r.max))
             return fail(29, strf(tr("S%s is outside range M%d (%s-%s rev/min)"), fixed3(modal_.s, 63).c_str(),
                                  40 + modal_.range, fixed3(r.min, 63).c_str(), fixed3(r.max, 63).c_str())),
                    false;
     }
-    if (modal_.spindle_mode == 97 && p.has_s && modal_.s > m_.spindle_max)
+    if (modal_.spindle_mode == 97 && p.tech.has_s && modal_.s > m_.spindle_max)
         warn(err::wSpeedClamped, strf(tr("S%s above the spindle maximum %s: limited to it"), fixed3(modal_.s, 63).c_str(),
                                       fixed3(m_.spindle_max, 63).c_str()));
-    if (p.spindle_mode == 96 && (modal_.spindle_dir != 3 && modal_.spindle_dir != 4))
+    if (p.mode.spindle == 96 && (modal_.spindle_dir != 3 && modal_.spindle_dir != 4))
         warn(err::wSpindleStopped, tr("G96 with the spindle stopped: the speed applies when it starts"));
     // The speed can only have changed with a spindle word, an M function, or X under G96.
-    if (p.has_s || p.spindle_mode >= 0 || p.nm > 0 || p.g[92] || p.g[52] || p.g[59] ||
-        (modal_.spindle_mode == 96 && p.axis[X]))
+    if (p.tech.has_s || p.mode.spindle >= 0 || p.tech.nm > 0 || p.g[92] || p.g[52] || p.g[59] ||
+        (modal_.spindle_mode == 96 && p.to.axis[X]))
         set_spindle_event();
     return true;
 }
 
 bool Interpreter::do_m_avant(const Plan& p) {
     bool coolant = false;
-    for (int i = 0; i < p.nm; ++i) {
-        int m = p.m[i];
+    for (int i = 0; i < p.tech.nm; ++i) {
+        int m = p.tech.m[i];
         const MCode* mc = find_m(m);
         if (!mc) {
             warn(err::wUnknownM, strf(tr("M%d has no meaning on this machine"), m));
@@ -496,8 +496,8 @@ bool Interpreter::do_m_avant(const Plan& p) {
 
 bool Interpreter::do_m_apres(const Plan& p, StepResult& r) {
     bool comp = modal_.radcomp != 40;
-    for (int i = 0; i < p.nm; ++i) {
-        int m = p.m[i];
+    for (int i = 0; i < p.tech.nm; ++i) {
+        int m = p.tech.m[i];
         const MCode* mc = find_m(m);
         if (mc && mc->when != MWhen::apres) continue;
         switch (m) {

@@ -52,14 +52,14 @@ bool listed_word(char c) {
 // length, so labels and positions stay valid.
 bool Interpreter::transfer(const Plan& p) {
     const ProgramText* target = stack_.back().prog;
-    if (p.g76_h >= 0 && !(target = mem_.find(p.g76_h)))
-        return fail(25, strf(tr("G76 H%d: program %%%d is not in memory"), p.g76_h, p.g76_h)), false;
+    if (p.g76.h >= 0 && !(target = mem_.find(p.g76.h)))
+        return fail(25, strf(tr("G76 H%d: program %%%d is not in memory"), p.g76.h, p.g76.h)), false;
     size_t from = target->begin, to = target->end;
-    if (p.g76_nn > 0) {
-        const Label* a = target->find_label(p.g76_n[0]);
-        const Label* b = target->find_label(p.g76_nn > 1 ? p.g76_n[1] : p.g76_n[0]);
+    if (p.g76.nn > 0) {
+        const Label* a = target->find_label(p.g76.n[0]);
+        const Label* b = target->find_label(p.g76.nn > 1 ? p.g76.n[1] : p.g76.n[0]);
         if (!a || !b)
-            return fail(25, strf(tr("G76: block N%ld not found"), !a ? p.g76_n[0] : p.g76_n[1])), false;
+            return fail(25, strf(tr("G76: block N%ld not found"), !a ? p.g76.n[0] : p.g76.n[1])), false;
         if (b->offset < a->offset) std::swap(a, b);
         from = a->offset;
         to = std::min(target->end, target->text->find('\n', b->offset));
@@ -217,7 +217,7 @@ bool Interpreter::edit_block_text(const Block& b, std::string& out) {
 }
 
 bool Interpreter::edit_program(const Block& b, const Plan& p) {
-    const char sign = p.g76_sign;
+    const char sign = p.g76.sign;
     if (m_.model == 1020) return fail(4, strf(tr("G76%c needs a NUM 1040 or 1060 (000:555)"), sign)), false;
     // The block holds nothing else: its label, G76±, one H and the pointed N.
     size_t g76_at = b.words.size();  // none yet
@@ -240,41 +240,41 @@ bool Interpreter::edit_program(const Block& b, const Plan& p) {
     if (modal_.radcomp != 40 && ++nonmotion_in_comp_ > 2)
         return fail(140, tr("more than 2 blocks in a row without motion in the plane under radius compensation")),
                false;
-    if (p.g76_nn > 1) return fail(3, strf(tr("G76%c points at one block N.."), sign), b.words.back().col), false;
+    if (p.g76.nn > 1) return fail(3, strf(tr("G76%c points at one block N.."), sign), b.words.back().col), false;
     const size_t quota = size_t(m_.program_memory_kb * 1024);
 
-    if (p.g76_nn == 0) {
+    if (p.g76.nn == 0) {
         // Creating or deleting a whole program: H is the last word (000:7037, 7068).
-        if (p.g76_h < 0)
+        if (p.g76.h < 0)
             return fail(2, strf(tr("G76%c needs the program number H (G76%c H300)"), sign, sign)), false;
         if (b.words.back().addr != addr1('H'))
             return fail(3, strf(tr("G76%c: the program number H must be the last word of the block"), sign),
                         b.words.back().col),
                    false;
         if (sign == '+') {
-            if (mem_.find(p.g76_h))
-                return fail(err::kProgramExists, strf(tr("G76+ H%d: program %%%d is already in memory"), p.g76_h, p.g76_h)),
+            if (mem_.find(p.g76.h))
+                return fail(err::kProgramExists, strf(tr("G76+ H%d: program %%%d is already in memory"), p.g76.h, p.g76.h)),
                        false;
             if (mem_.size() + 16 > std::max(quota, loaded_size_))
                 return fail(36, strf(tr("G76+: the part-program memory is full (%zu KB)"), quota / 1024)), false;
-            mem_.create(p.g76_h);
+            mem_.create(p.g76.h);
             return true;
         }
-        const ProgramText* t = mem_.find(p.g76_h);
+        const ProgramText* t = mem_.find(p.g76.h);
         if (!t)
-            return fail(25, strf(tr("G76- H%d: no program %%%d"), p.g76_h, p.g76_h)), false;
+            return fail(25, strf(tr("G76- H%d: no program %%%d"), p.g76.h, p.g76.h)), false;
         bool running = t == main_ || std::any_of(stack_.begin(), stack_.end(),
                                                  [&](const Frame& f) { return f.prog == t; });
         if (running)
-            return fail(err::kProgramInUse, strf(tr("G76- H%d: program %%%d is running"), p.g76_h, p.g76_h)), false;
-        mem_.remove(p.g76_h);
+            return fail(err::kProgramInUse, strf(tr("G76- H%d: program %%%d is running"), p.g76.h, p.g76.h)), false;
+        mem_.remove(p.g76.h);
         return true;
     }
 
     // A block: the program H (or this one), the pointed line N.. and k lines on.
     const ProgramText* t = stack_.back().prog;
-    if (p.g76_h >= 0 && !(t = mem_.find(p.g76_h)))
-        return fail(25, strf(tr("G76%c H%d: no program %%%d"), sign, p.g76_h, p.g76_h)), false;
+    if (p.g76.h >= 0 && !(t = mem_.find(p.g76.h)))
+        return fail(25, strf(tr("G76%c H%d: no program %%%d"), sign, p.g76.h, p.g76.h)), false;
     if (mem_.find(t->number) != t)  // an IMD fragment is not a program of the memory
         return fail(25, strf(tr("G76%c without H edits the program that runs: in IMD, give the program H"), sign)), false;
     if (sign == '-') {
@@ -288,7 +288,7 @@ bool Interpreter::edit_program(const Block& b, const Plan& p) {
             }
         }
     }
-    const long n = p.g76_n[0];
+    const long n = p.g76.n[0];
     const int k = std::max(b.g76_k, 0);
     std::string_view all = *t->text;
     auto next_line = [&](size_t pos) {

@@ -22,15 +22,15 @@ void Interpreter::plane_axes(int& a0, int& a1) const {
 }
 
 bool Interpreter::pgp_wanted(const Plan& p) const {
-    if (p.pgp || pgp_.pending()) return true;
+    if (p.pgp.any || pgp_.pending()) return true;
     if (modal_.motion != 2 && modal_.motion != 3) return false;
     // An incomplete circle: PGP completes it from the next block (pgp.md §3).
     int a0, a1;
     plane_axes(a0, a1);
-    bool words = p.axis[size_t(a0)] || p.axis[size_t(a1)] || p.ijk.any() || p.has_r;
-    bool centre = p.ijk[size_t(ijk_of(a0))] && p.ijk[size_t(ijk_of(a1))];
-    bool complete = p.axis[size_t(a0)] && p.axis[size_t(a1)] && (centre != p.has_r);
-    return words && !complete && (p.motion == 2 || p.motion == 3 || p.motion < 0);
+    bool words = p.to.axis[size_t(a0)] || p.to.axis[size_t(a1)] || p.to.ijk.any() || p.to.has_r;
+    bool centre = p.to.ijk[size_t(ijk_of(a0))] && p.to.ijk[size_t(ijk_of(a1))];
+    bool complete = p.to.axis[size_t(a0)] && p.to.axis[size_t(a1)] && (centre != p.to.has_r);
+    return words && !complete && (p.mode.motion == 2 || p.mode.motion == 3 || p.mode.motion < 0);
 }
 
 bool Interpreter::pgp_fail(const pgp::Error& e) {
@@ -91,31 +91,31 @@ bool Interpreter::pgp_block(const Plan& p, const Axes& target) {
     const int i0 = ijk_of(a0), i1 = ijk_of(a1);
     const bool pending = pgp_.pending();
     // PGP is programmed in absolute; relative words after an incomplete block: 72.
-    if (pending && (p.inc[size_t(a0)] || p.inc[size_t(a1)] || p.ijk_inc.any()))
+    if (pending && (p.to.inc[size_t(a0)] || p.to.inc[size_t(a1)] || p.to.ijk_inc.any()))
         return fail(72, tr("relative programming (G91) after an incomplete profile block")), false;
-    if (p.link == 'X') return fail(110, tr("ES and ET together in one block")), false;
+    if (p.pgp.link == 'X') return fail(110, tr("ES and ET together in one block")), false;
     if (!pending) pgp_.start(pgp::V2(prog_[size_t(a0)], prog_[size_t(a1)]));
     pgp::Spec s;
     s.g = (modal_.motion == 2 || modal_.motion == 3) ? modal_.motion : 1;
-    s.has_x = p.axis[size_t(a0)];
+    s.has_x = p.to.axis[size_t(a0)];
     s.x = target[size_t(a0)];
-    s.has_y = p.axis[size_t(a1)];
+    s.has_y = p.to.axis[size_t(a1)];
     s.y = target[size_t(a1)];
-    s.has_ea = p.has_ea;
-    s.ea = p.ea;
-    s.has_i = p.ijk[size_t(i0)];
-    s.i = p.ijk_val[i0] + (p.ijk_inc[size_t(i0)] ? prog_[size_t(a0)] : 0);
-    s.has_j = p.ijk[size_t(i1)];
-    s.j = p.ijk_val[i1] + (p.ijk_inc[size_t(i1)] ? prog_[size_t(a1)] : 0);
-    s.has_r = p.has_r;
-    s.r = p.r;
-    s.link = p.link;
-    s.disc = p.disc;
-    s.has_eb = p.has_eb;
-    s.eb = p.eb;
-    s.eb_unsigned = p.eb_unsigned;
+    s.has_ea = p.pgp.has_ea;
+    s.ea = p.pgp.ea;
+    s.has_i = p.to.ijk[size_t(i0)];
+    s.i = p.to.ijk_val[i0] + (p.to.ijk_inc[size_t(i0)] ? prog_[size_t(a0)] : 0);
+    s.has_j = p.to.ijk[size_t(i1)];
+    s.j = p.to.ijk_val[i1] + (p.to.ijk_inc[size_t(i1)] ? prog_[size_t(a1)] : 0);
+    s.has_r = p.to.has_r;
+    s.r = p.to.r;
+    s.link = p.pgp.link;
+    s.disc = p.pgp.disc;
+    s.has_eb = p.pgp.has_eb;
+    s.eb = p.pgp.eb;
+    s.eb_unsigned = p.pgp.eb_unsigned;
     s.tag = ++pgp_tag_;
-    if (p.has_eb && p.eb_unsigned)
+    if (p.pgp.has_eb && p.pgp.eb_unsigned)
         warn(err::wUnsignedEB, tr("EB without a sign is taken as a fillet (EB+): write EB+ or EB- (pupitre-iso(5), PGP)"));
     pgp_ctx_[s.tag] = CompCtx{loc_, modal_, modal_.motion, target, 0};
     std::vector<pgp::Elem> out;

@@ -145,9 +145,9 @@ bool Interpreter::pocket(const Plan& p) {
 
 // The words of the block; the feeds EP EQ EI EJ are kept for the next G45.
 bool Interpreter::Pocket45::words(const Plan& p) {
-    for (int i = 0; i < p.ncyc; ++i) {
-        Addr a = p.cyc[i].a;
-        double v = p.cyc[i].v;
+    for (int i = 0; i < p.cycle_words.n; ++i) {
+        Addr a = p.cycle_words.word[i].a;
+        double v = p.cycle_words.word[i].v;
         W* w = a == addrE('X') ? &ex : a == addrE('Y') ? &ey : a == addrE('B') ? &eb : a == addr1('P') ? &P
              : a == addr1('Q') ? &Q : a == addr1('I') ? &I : a == addr1('J') ? &J : a == addrE('R') ? &er
              : a == addrE('G') ? &eg : nullptr;
@@ -206,10 +206,10 @@ bool Interpreter::Pocket45::feeds() {
 // The centre (X Y of the block, else the current point), the bottom and the top.
 bool Interpreter::Pocket45::place(const Plan& p) {
     const Axes& prog = in.prog_;
-    cx = p.axis[X] ? (p.inc[X] ? prog[X] + p.val[X] : p.val[X]) : prog[X];
-    cy = p.axis[Y] ? (p.inc[Y] ? prog[Y] + p.val[Y] : p.val[Y]) : prog[Y];
-    if (!p.axis[Z]) return in.fail(882, tr("G45: the pocket bottom Z is not programmed")), false;
-    zb = p.inc[Z] ? prog[Z] + p.val[Z] : p.val[Z];
+    cx = p.to.axis[X] ? (p.to.inc[X] ? prog[X] + p.to.val[X] : p.to.val[X]) : prog[X];
+    cy = p.to.axis[Y] ? (p.to.inc[Y] ? prog[Y] + p.to.val[Y] : p.to.val[Y]) : prog[Y];
+    if (!p.to.axis[Z]) return in.fail(882, tr("G45: the pocket bottom Z is not programmed")), false;
+    zb = p.to.inc[Z] ? prog[Z] + p.to.val[Z] : p.to.val[Z];
     top = er.has ? er.v : prog[Z];
     if (er.has && std::fabs(er.v - zb) < 1e-9) return in.fail(891, tr("G45: ER is the pocket bottom")), false;
     ccw = !(eg.has && std::lround(eg.v) == 2);

@@ -84,10 +84,10 @@ Interpreter::P46Axes Interpreter::p46_axes(int plane) {
 bool Interpreter::pocket46(const Plan& p) {
     if (!p.g[46]) return p46_contour(p);
     // A G46 block runs no modal function: a plane given there would be ignored.
-    if (p.plane >= 0 && p.plane != modal_.plane)
-        return fail(279, strf(tr("G%d in a G46 block: select the plane in a block before G46 NU0"), p.plane)), false;
+    if (p.mode.plane >= 0 && p.mode.plane != modal_.plane)
+        return fail(279, strf(tr("G%d in a G46 block: select the plane in a block before G46 NU0"), p.mode.plane)), false;
     Words w;
-    for (int i = 0; i < p.ncyc; ++i) w.has[p.cyc[i].a] = true, w.v[p.cyc[i].a] = p.cyc[i].v;
+    for (int i = 0; i < p.cycle_words.n; ++i) w.has[p.cycle_words.word[i].a] = true, w.v[p.cycle_words.word[i].a] = p.cycle_words.word[i].v;
     if (!w.has[addrN('U')])
         return fail(268, tr("G46 needs NU (NU0 header, NU1-NU6 contours, NU9, NU10/15/20 orders)")),
                false;
@@ -95,7 +95,7 @@ bool Interpreter::pocket46(const Plan& p) {
     const int nu = int(nuv);
     const bool known = nuv == nu && (nu <= 6 || nu == 9 || nu == 10 || nu == 15 || nu == 20);
     if (!known) return fail(262, strf(tr("G46 NU%s: NU is 0-6, 9, 10, 15 or 20"), num(nuv).c_str())), false;
-    if (p.nm || p.has_s || p.has_t || p.has_d)
+    if (p.tech.nm || p.tech.has_s || p.tech.has_t || p.tech.has_d)
         return fail(268, tr("M, S, T or D in a G46 block")), false;
     if (nu == 0) {
         // The same NU0 again: the run restarted inside its definition (a
@@ -113,13 +113,13 @@ bool Interpreter::pocket46(const Plan& p) {
     if (!p46_.defining)
         return fail(270, strf(tr("G46 NU%d without a G46 NU0 header"), nu)), false;
     // Contour sections accept LX LY (NU1, NU2) and nothing else.
-    for (int i = 0; i < p.ncyc; ++i) {
-        Addr a = p.cyc[i].a;
+    for (int i = 0; i < p.cycle_words.n; ++i) {
+        Addr a = p.cycle_words.word[i].a;
         bool lxy = a == addrL('X') || a == addrL('Y');
         if (a != addrN('U') && !(lxy && (nu == 1 || nu == 2)))
             return fail(267, strf(tr("%s is not a word of G46 NU%d"), std::string(addr_name(a)).c_str(), nu)), false;
     }
-    if (p.axis.any() || p.ijk.any() || p.has_f)
+    if (p.to.axis.any() || p.to.ijk.any() || p.tech.has_f)
         return fail(267, strf(tr("G46 NU%d takes no coordinates"), nu)), false;
     if (w.has[addrL('X')] != w.has[addrL('Y')]) return fail(277, tr("LX and LY go together")), false;
     if (!p46_close_section()) return false;
@@ -146,16 +146,16 @@ bool Interpreter::pocket46(const Plan& p) {
 // N.. G46 NU0 NP.. ED.. Q.. [J..] [NR±] [R03/R04] [LX.. LY..] [EX.. EY..]
 bool Interpreter::p46_header(const Plan& p, int) {
     Words w;
-    for (int i = 0; i < p.ncyc; ++i) {
-        Addr a = p.cyc[i].a;
+    for (int i = 0; i < p.cycle_words.n; ++i) {
+        Addr a = p.cycle_words.word[i].a;
         static const Addr ok[] = {addrN('U'), addrN('P'), addrN('R'), addrE('D'),
                                   addr1('Q'), addr1('J'), addr1('R'), addrL('X'),
                                   addrL('Y'), addrE('X'), addrE('Y')};
         if (std::find(std::begin(ok), std::end(ok), a) == std::end(ok))
             return fail(267, strf(tr("%s is not a word of G46 NU0"), std::string(addr_name(a)).c_str())), false;
-        w.has[a] = true, w.v[a] = p.cyc[i].v;
+        w.has[a] = true, w.v[a] = p.cycle_words.word[i].v;
     }
-    if (p.axis.any() || p.ijk.any() || p.has_f)
+    if (p.to.axis.any() || p.to.ijk.any() || p.tech.has_f)
         return fail(267, tr("G46 NU0 takes no coordinates")), false;
     if (!w.has[addrN('P')] || !w.has[addrE('D')] || !w.has[addr1('Q')])
         return fail(268, tr("G46 NU0 needs NP, ED and Q")), false;
@@ -195,34 +195,34 @@ bool Interpreter::p46_header(const Plan& p, int) {
 bool Interpreter::p46_contour(const Plan& p) {
     const P46Axes ax = p46_axes(p46_.def.plane);
     const size_t a0 = size_t(ax.a0), a1 = size_t(ax.a1), an = size_t(ax.an);
-    const bool plane_words = p.axis.any() || p.ijk.any() || p.has_r || p.pgp;
+    const bool plane_words = p.to.axis.any() || p.to.ijk.any() || p.to.has_r || p.pgp.any;
     const bool any_g = p.g.any();
-    if (!plane_words && !any_g && !p.nm && !p.has_f && !p.has_s && !p.has_t && !p.has_d && !p.ncyc)
+    if (!plane_words && !any_g && !p.tech.nm && !p.tech.has_f && !p.tech.has_s && !p.tech.has_t && !p.tech.has_d && !p.cycle_words.n)
         return true;  // a comment line
     if (p46_.blocks < 0) return fail(269, tr("a contour block before G46 NU1-NU6")), false;
     for (size_t g = 0; g < p.g.size(); ++g)
         if (p.g[g] && g > 3)
             return fail(279, strf(tr("G%zu in a pocket contour block"), g)), false;
-    if (p.nm || p.has_f || p.has_s || p.has_t || p.has_d || p.ncyc)
+    if (p.tech.nm || p.tech.has_f || p.tech.has_s || p.tech.has_t || p.tech.has_d || p.cycle_words.n)
         return fail(268, strf(tr("only G0-G3, %s %s, %s %s, R and EB in a pocket contour block"), axis_name(ax.a0).c_str(),
                               axis_name(ax.a1).c_str(), centre_name(ax.a0).c_str(), centre_name(ax.a1).c_str())),
                false;
     for (int a = 0; a < kAxes; ++a)
-        if (p.axis[size_t(a)] && size_t(a) != a0 && size_t(a) != a1)
+        if (p.to.axis[size_t(a)] && size_t(a) != a0 && size_t(a) != a1)
             return fail(264, strf(tr("%s is outside the contouring plane"), axis_name(a).c_str())), false;
     // The centre word of the normal axis (K in G17) is a coordinate outside the plane.
-    if (p.ijk[an]) return fail(264, strf(tr("%s is outside the contouring plane"), centre_name(ax.an).c_str())), false;
-    if (!p.axis[a0] && !p.axis[a1] && !p.has_ea)
+    if (p.to.ijk[an]) return fail(264, strf(tr("%s is outside the contouring plane"), centre_name(ax.an).c_str())), false;
+    if (!p.to.axis[a0] && !p.to.axis[a1] && !p.pgp.has_ea)
         return fail(264, tr("no coordinate in the contouring plane")), false;
-    int motion = p.motion >= 0 ? p.motion : p46_.motion;
+    int motion = p.mode.motion >= 0 ? p.mode.motion : p46_.motion;
     p46_.motion = motion;
     p46::V2 t = p46_.pos;
-    if (p.axis[a0]) t.x() = p.inc[a0] ? p46_.pos.x() + p.val[a0] : p.val[a0];
-    if (p.axis[a1]) t.y() = p.inc[a1] ? p46_.pos.y() + p.val[a1] : p.val[a1];
+    if (p.to.axis[a0]) t.x() = p.to.inc[a0] ? p46_.pos.x() + p.to.val[a0] : p.to.val[a0];
+    if (p.to.axis[a1]) t.y() = p.to.inc[a1] ? p46_.pos.y() + p.to.val[a1] : p.to.val[a1];
     if (p46_.first) {
         if (motion != 0 && motion != 1)
             return fail(265, tr("a contour starts with a G0 or G1 positioning")), false;
-        if (!p.axis[a0] || !p.axis[a1] || p.has_eb || p.pgp)
+        if (!p.to.axis[a0] || !p.to.axis[a1] || p.pgp.has_eb || p.pgp.any)
             return fail(280, tr("the first contour block gives both coordinates of the start point")),
                    false;
         p46_.pos = t;
@@ -240,19 +240,19 @@ bool Interpreter::p46_contour(const Plan& p) {
     ++p46_.blocks;
     pgp::Spec s;
     s.g = motion;
-    s.has_x = p.axis[a0], s.x = t.x();
-    s.has_y = p.axis[a1], s.y = t.y();
-    s.has_ea = p.has_ea, s.ea = p.ea;
-    s.has_i = p.ijk[a0], s.i = p.ijk_val[a0] + (p.ijk_inc[a0] ? p46_.pos.x() : 0);
-    s.has_j = p.ijk[a1], s.j = p.ijk_val[a1] + (p.ijk_inc[a1] ? p46_.pos.y() : 0);
-    s.has_r = p.has_r, s.r = p.r;
-    s.link = p.link, s.disc = p.disc;
-    s.has_eb = p.has_eb, s.eb = p.eb, s.eb_unsigned = p.eb_unsigned;
+    s.has_x = p.to.axis[a0], s.x = t.x();
+    s.has_y = p.to.axis[a1], s.y = t.y();
+    s.has_ea = p.pgp.has_ea, s.ea = p.pgp.ea;
+    s.has_i = p.to.ijk[a0], s.i = p.to.ijk_val[a0] + (p.to.ijk_inc[a0] ? p46_.pos.x() : 0);
+    s.has_j = p.to.ijk[a1], s.j = p.to.ijk_val[a1] + (p.to.ijk_inc[a1] ? p46_.pos.y() : 0);
+    s.has_r = p.to.has_r, s.r = p.to.r;
+    s.link = p.pgp.link, s.disc = p.pgp.disc;
+    s.has_eb = p.pgp.has_eb, s.eb = p.pgp.eb, s.eb_unsigned = p.pgp.eb_unsigned;
     s.tag = loc_.line;
-    if (p.link == 'X') return fail(110, tr("ES and ET together in one block")), false;
-    if (p.has_eb && p.eb_unsigned)
+    if (p.pgp.link == 'X') return fail(110, tr("ES and ET together in one block")), false;
+    if (p.pgp.has_eb && p.pgp.eb_unsigned)
         warn(err::wUnsignedEB, tr("EB without a sign is taken as a fillet (EB+): write EB+ or EB- (pupitre-iso(5), PGP)"));
-    if ((motion == 2 || motion == 3) && !s.has_i && !s.has_j && !s.has_r && !p.pgp)
+    if ((motion == 2 || motion == 3) && !s.has_i && !s.has_j && !s.has_r && !p.pgp.any)
         return fail(269, strf(tr("a circle without its centre (%s %s) or radius (R)"), centre_name(ax.a0).c_str(),
                               centre_name(ax.a1).c_str())),
                false;
@@ -382,11 +382,11 @@ bool Interpreter::p46_order_allowed(const Plan& p, const p46::Def& d) {
     // A plane coordinate first: in G18 the G17 habit of a Z bottom is refused
     // as a plane coordinate, not taken as a missing bottom.
     for (int a = 0; a < kAxes; ++a)
-        if (p.axis[size_t(a)] && size_t(a) != an)
+        if (p.to.axis[size_t(a)] && size_t(a) != an)
             return fail(267, strf(tr("a G46 order takes no plane coordinate (%s): its bottom is %s in G%d"),
                                   axis_name(a).c_str(), bottom.c_str(), d.plane)),
                    false;
-    if (!p.axis[an]) return fail(268, strf(tr("a G46 order needs the bottom %s"), bottom.c_str())), false;
+    if (!p.to.axis[an]) return fail(268, strf(tr("a G46 order needs the bottom %s"), bottom.c_str())), false;
     return true;
 }
 
@@ -407,18 +407,18 @@ bool Interpreter::p46_drill(const Plan& p, const p46::Def& d) {
     modal_.motion = 0;
     modal_.cycle = code;
     modal_.feed_mode = 94;
-    if (p.has_f) modal_.feed = p.f, feed_programmed_ = true;
+    if (p.tech.has_f) modal_.feed = p.tech.f, feed_programmed_ = true;
     Plan q = p;
-    q.axis.reset();
-    q.axis.set(an);
-    q.inc.reset();
+    q.to.axis.reset();
+    q.to.axis.set(an);
+    q.to.inc.reset();
     bool ok = cycle_words(q, code);  // the cycle axis is the normal axis (cycle_axis())
-    q.axis.set(a0).set(a1);
+    q.to.axis.set(a0).set(a1);
     // Seed 000: LX LY of NU0 is "the start and/or drilling point for
     // roughing": one hole there, else where the roughing first plunges
     // (issue 19 item 4); the roughing warns where it plunges elsewhere.
     const p46::V2 hole = d.has_l ? d.l : runs.front().start;
-    q.val[a0] = hole.x(), q.val[a1] = hole.y();
+    q.to.val[a0] = hole.x(), q.to.val[a1] = hole.y();
     if (ok) ok = cycle_run(q, code);
     cyc_ = saved_cyc;
     modal_ = saved;
@@ -439,13 +439,13 @@ bool Interpreter::p46_cutter(const Plan& p, int nu, const p46::Def& d, double& R
                                 addrE('H'), addrE('P'), addrE('Q')};
     static const Addr ok20[] = {addrN('U'), addrN('P'), addr1('P'), addrE('R'),
                                 addrE('H'), addrE('I'), addrE('J'), addr1('J')};
-    for (int i = 0; i < p.ncyc; ++i) {
-        Addr a = p.cyc[i].a;
+    for (int i = 0; i < p.cycle_words.n; ++i) {
+        Addr a = p.cycle_words.word[i].a;
         bool ok = nu == 15 ? std::find(std::begin(ok15), std::end(ok15), a) != std::end(ok15)
                            : std::find(std::begin(ok20), std::end(ok20), a) != std::end(ok20);
         if (!ok) return fail(267, strf(tr("%s is not a word of G46 NU%d"), std::string(addr_name(a)).c_str(), nu)), false;
     }
-    if (p.has_f || p.g.count() > 1)
+    if (p.tech.has_f || p.g.count() > 1)
         return fail(267, strf(tr("G46 NU%d takes no F and no other G"), nu)), false;
     return true;
 }
@@ -493,7 +493,7 @@ bool Interpreter::p46_cut(const p46::Def& d, int nu, const P46Cut& c) {
 // NU20 NP.. Z.. P.. [ER] [EH] EI EJ [J]   (Z: the normal axis, Y in G18, X in G19)
 bool Interpreter::p46_order(const Plan& p, int nu) {
     Words w;
-    for (int i = 0; i < p.ncyc; ++i) w.has[p.cyc[i].a] = true, w.v[p.cyc[i].a] = p.cyc[i].v;
+    for (int i = 0; i < p.cycle_words.n; ++i) w.has[p.cycle_words.word[i].a] = true, w.v[p.cycle_words.word[i].a] = p.cycle_words.word[i].v;
     if (!w.has[addrN('P')]) return fail(268, tr("a G46 order needs NP")), false;
     auto it = p46_.defs.find(int(w.v[addrN('P')]));
     if (it == p46_.defs.end())
@@ -503,7 +503,7 @@ bool Interpreter::p46_order(const Plan& p, int nu) {
     const size_t an = size_t(p46_axes(d.plane).an);
     const std::string bottom = axis_name(int(an));
     P46Cut c;
-    c.zb = p.inc[an] ? prog_[an] + p.val[an] : p.val[an];
+    c.zb = p.to.inc[an] ? prog_[an] + p.to.val[an] : p.to.val[an];
     apply_corrector_gauges(std::bitset<kAxes>().set(an));
     first_move_ = false;
     if (nu == 10) return p46_drill(p, d);

@@ -8,14 +8,14 @@ namespace pupitre {
 
 bool Interpreter::spline_define(const Plan& p) {
     if (modal_.radcomp != 40) return fail(140, tr("G48 must be programmed in G40")), false;
-    if (p.spl_nc == 0) return fail(600, tr("G48: the curve number NC must not be 0")), false;
-    if (p.spl_nc < 0 || p.spl_nn < 2) return fail(601, tr("G48 needs NC and the first and last blocks N.. N..")), false;
+    if (p.spline.nc == 0) return fail(600, tr("G48: the curve number NC must not be 0")), false;
+    if (p.spline.nc < 0 || p.spline.nn < 2) return fail(601, tr("G48 needs NC and the first and last blocks N.. N..")), false;
     const ProgramText* prog = stack_.back().prog;
-    if (p.spl_h >= 0 && !(prog = mem_.find(p.spl_h)))
-        return fail(25, strf(tr("G48 H%d: program not in memory"), p.spl_h)), false;
-    const Label* a = prog->find_label(p.spl_n[0]);
-    const Label* b = prog->find_label(p.spl_n[1]);
-    if (!a || !b) return fail(25, strf(tr("G48: block N%ld not found"), !a ? p.spl_n[0] : p.spl_n[1])), false;
+    if (p.spline.h >= 0 && !(prog = mem_.find(p.spline.h)))
+        return fail(25, strf(tr("G48 H%d: program not in memory"), p.spline.h)), false;
+    const Label* a = prog->find_label(p.spline.n[0]);
+    const Label* b = prog->find_label(p.spline.n[1]);
+    if (!a || !b) return fail(25, strf(tr("G48: block N%ld not found"), !a ? p.spline.n[0] : p.spline.n[1])), false;
     if (b->line < a->line) std::swap(a, b);
     // Decode each definition block like a move, without moving.
     std::string_view text = *prog->text;
@@ -30,7 +30,7 @@ bool Interpreter::spline_define(const Plan& p) {
         if (!parse_block(text.substr(pos, eol - pos), blk, d)) return fail(d.code, d.detail, d.column), false;
         Plan q;
         if (!decode(blk, q)) return false;
-        if (line == a->line || line == b->line || q.axis.any()) blocks.push_back({q.axis, q.val});
+        if (line == a->line || line == b->line || q.to.axis.any()) blocks.push_back({q.to.axis, q.to.val});
         pos = eol + 1;
     }
     loc_ = saved;
@@ -55,14 +55,14 @@ bool Interpreter::spline_define(const Plan& p) {
         for (int ax : c.axes) c.t1.push_back(last.second[size_t(ax)]);
     std::string why;
     if (int rc = spline::build(c, why)) return fail(rc, "G48: " + why), false;
-    splines_[p.spl_nc] = std::move(c);
+    splines_[p.spline.nc] = std::move(c);
     return true;
 }
 
 bool Interpreter::spline_run(const Plan& p) {
-    auto it = splines_.find(p.spl_nc);
-    if (it == splines_.end()) return fail(605, strf(tr("G06: curve NC%d is not defined"), p.spl_nc)), false;
-    if (p.has_f || p.has_s || p.has_t) return fail(3, tr("no F, S or T in a G06 block (000:2055)")), false;
+    auto it = splines_.find(p.spline.nc);
+    if (it == splines_.end()) return fail(605, strf(tr("G06: curve NC%d is not defined"), p.spline.nc)), false;
+    if (p.tech.has_f || p.tech.has_s || p.tech.has_t) return fail(3, tr("no F, S or T in a G06 block (000:2055)")), false;
     const spline::Curve& c = it->second;
     for (const auto& pt : spline::sample(c, 0.002)) {
         Axes target = prog_;

@@ -15,10 +15,10 @@
 namespace pupitre {
 
 double Interpreter::cyc(const Plan& p, Addr a, double dflt, bool* has) {
-    for (int i = 0; i < p.ncyc; ++i)
-        if (p.cyc[i].a == a) {
+    for (int i = 0; i < p.cycle_words.n; ++i)
+        if (p.cycle_words.word[i].a == a) {
             if (has) *has = true;
-            return p.cyc[i].v;
+            return p.cycle_words.word[i].v;
         }
     if (has) *has = false;
     return dflt;
@@ -90,15 +90,15 @@ bool Interpreter::profile_l_words(const Block& blk) {
 // that writes it (%555: G65 N120 N170 starts at N120 G1 X60).
 bool Interpreter::profile_start(Plan& q, ProfileRead& r) {
     for (int ax : {X, Z}) {
-        if (q.axis[size_t(ax)]) continue;
+        if (q.to.axis[size_t(ax)]) continue;
         double v;
         if (!coordinate_above(r.prog, r.first_line, ax, v))
             return fail(871, tr("the first block of the profile needs X and Z")), false;
-        q.axis.set(size_t(ax));
-        q.inc.reset(size_t(ax));
-        q.val[size_t(ax)] = v;
+        q.to.axis.set(size_t(ax));
+        q.to.inc.reset(size_t(ax));
+        q.to.val[size_t(ax)] = v;
     }
-    r.pos = comp::V2(q.inc[Z] ? r.pos.x() + q.val[Z] : q.val[Z], q.inc[X] ? r.pos.y() + q.val[X] : q.val[X]);
+    r.pos = comp::V2(q.to.inc[Z] ? r.pos.x() + q.to.val[Z] : q.to.val[Z], q.to.inc[X] ? r.pos.y() + q.to.val[X] : q.to.val[X]);
     r.start = r.pos;
     r.solver.start(r.pos);
     r.started = true;
@@ -110,23 +110,23 @@ bool Interpreter::profile_start(Plan& q, ProfileRead& r) {
 pgp::Spec Interpreter::profile_spec(const Plan& q, const comp::V2& cur, int line) const {
     pgp::Spec s;
     s.g = (modal_.motion == 2 || modal_.motion == 3) ? modal_.motion : 1;
-    s.has_x = q.axis[Z];
-    s.x = q.inc[Z] ? cur.x() + q.val[Z] : q.val[Z];
-    s.has_y = q.axis[X];
-    s.y = q.inc[X] ? cur.y() + q.val[X] : q.val[X];
-    s.has_ea = q.has_ea;
-    s.ea = q.ea;
-    s.has_i = q.ijk[2];
-    s.i = q.ijk_val[2] + (q.ijk_inc[2] ? cur.x() : 0);
-    s.has_j = q.ijk[0];
-    s.j = q.ijk_val[0] + (q.ijk_inc[0] ? cur.y() : 0);
-    s.has_r = q.has_r;
-    s.r = q.r;
-    s.link = q.link == 'X' ? 'S' : q.link;
-    s.disc = q.disc;
-    s.has_eb = q.has_eb;
-    s.eb = q.eb;
-    s.eb_unsigned = q.eb_unsigned;
+    s.has_x = q.to.axis[Z];
+    s.x = q.to.inc[Z] ? cur.x() + q.to.val[Z] : q.to.val[Z];
+    s.has_y = q.to.axis[X];
+    s.y = q.to.inc[X] ? cur.y() + q.to.val[X] : q.to.val[X];
+    s.has_ea = q.pgp.has_ea;
+    s.ea = q.pgp.ea;
+    s.has_i = q.to.ijk[2];
+    s.i = q.to.ijk_val[2] + (q.to.ijk_inc[2] ? cur.x() : 0);
+    s.has_j = q.to.ijk[0];
+    s.j = q.to.ijk_val[0] + (q.to.ijk_inc[0] ? cur.y() : 0);
+    s.has_r = q.to.has_r;
+    s.r = q.to.r;
+    s.link = q.pgp.link == 'X' ? 'S' : q.pgp.link;
+    s.disc = q.pgp.disc;
+    s.has_eb = q.pgp.has_eb;
+    s.eb = q.pgp.eb;
+    s.eb_unsigned = q.pgp.eb_unsigned;
     s.tag = line;
     return s;
 }
@@ -135,12 +135,12 @@ pgp::Spec Interpreter::profile_spec(const Plan& q, const comp::V2& cur, int line
 // A block that moves nothing still goes to the solver, which allows only two
 // of them while an element is incomplete (error 136).
 bool Interpreter::profile_block(Plan& q, int line, ProfileRead& r) {
-    if (q.motion >= 0) modal_.motion = q.motion;
-    if (q.dist >= 0) modal_.incremental = q.dist == 91;
-    if (q.has_f && profile_feed_ <= 0) profile_feed_ = q.f;
+    if (q.mode.motion >= 0) modal_.motion = q.mode.motion;
+    if (q.mode.dist >= 0) modal_.incremental = q.mode.dist == 91;
+    if (q.tech.has_f && profile_feed_ <= 0) profile_feed_ = q.tech.f;
     if (!r.started) return profile_start(q, r);
     pgp::Error e;
-    bool motion = q.axis[X] || q.axis[Z] || q.pgp || q.ijk.any() || q.has_r;
+    bool motion = q.to.axis[X] || q.to.axis[Z] || q.pgp.any || q.to.ijk.any() || q.to.has_r;
     if (!motion) {
         if (!r.solver.idle(e)) return fail(e.code, e.detail), false;
         return true;
@@ -224,8 +224,8 @@ bool Interpreter::coordinate_above(const ProgramText* prog, int line, int axis, 
         if (!parse_block(text.substr(starts[i], eol - starts[i]), blk, d)) return false;
         Plan q;
         if (!decode(blk, q)) return false;
-        if (q.axis[size_t(axis)] && !q.inc[size_t(axis)] && !q.g[52]) {
-            v = q.val[size_t(axis)];
+        if (q.to.axis[size_t(axis)] && !q.to.inc[size_t(axis)] && !q.g[52]) {
+            v = q.to.val[size_t(axis)];
             return true;
         }
     }
@@ -285,17 +285,17 @@ namespace {
 // The X and Z of a cycle's arguments, as the block writes them.
 template <class Args, class P>
 void block_end(Args& a, const P& p) {
-    a.has_x = p.axis[X];
-    a.x = p.val[X];
-    a.has_z = p.axis[Z];
-    a.z = p.val[Z];
+    a.has_x = p.to.axis[X];
+    a.x = p.to.val[X];
+    a.has_z = p.to.axis[Z];
+    a.z = p.to.val[Z];
 }
 }  // namespace
 
 // G64 only records its arguments: its rough stock is in the blocks that follow,
 // up to the G80 that runs it (turning_g64_run).
 bool Interpreter::turning_g64(const Plan& p) {
-    if (p.spl_nn < 2) return fail(871, tr("G64 needs the profile blocks N.. N..")), false;
+    if (p.spline.nn < 2) return fail(871, tr("G64 needs the profile blocks N.. N..")), false;
     g64_ = turning::G64Args{};
     g64_.i = cyc(p, addr1('I'), 0);
     g64_.k = cyc(p, addr1('K'), 0);
@@ -304,8 +304,8 @@ bool Interpreter::turning_g64(const Plan& p) {
     if (!g64_.has_p && !g64_.has_r) return fail(873, tr("G64 needs P (passes along Z) or R (passes along X)")), false;
     if (g64_.has_p && g64_.has_r) return fail(889, tr("G64 takes P or R, not both")), false;
     if (g64_.p < 0 || g64_.r < 0) return fail(835, tr("G64: P and R are positive")), false;
-    g64_na_ = p.spl_n[0];
-    g64_nb_ = p.spl_n[1];
+    g64_na_ = p.spline.n[0];
+    g64_nb_ = p.spline.n[1];
     g64_tool_ = comp::V2(prog_[Z], prog_[X]);
     g64_stock_.clear();
     g64_loc_ = loc_;
@@ -356,11 +356,11 @@ bool Interpreter::turning_emit_ef(const Plan& p, const std::vector<turning::Move
 // G65 and G63 cut along the finished profile N<a>..N<b>, read first: its errors
 // come before those of the arguments.
 bool Interpreter::turning_g65_g63(const Plan& p) {
-    if (p.spl_nn < 2) return fail(871, strf(tr("G%d needs the profile N.. N.."), p.g[65] ? 65 : 63)), false;
+    if (p.spline.nn < 2) return fail(871, strf(tr("G%d needs the profile N.. N.."), p.g[65] ? 65 : 63)), false;
     const comp::V2 tool(prog_[Z], prog_[X]);
     turning::Profile prof;
     comp::V2 first;
-    if (!turning_profile(p.spl_n[0], p.spl_n[1], prof, first)) return false;
+    if (!turning_profile(p.spline.n[0], p.spline.n[1], prof, first)) return false;
     std::vector<turning::Move> moves;
     std::string why;
     int rc = 0;
@@ -448,11 +448,11 @@ bool Interpreter::turning_g33(const Plan& p) {
 // the lead of the previous one, so that the chain is one thread.
 bool Interpreter::turning_g38(const Plan& p) {
     turning::G38Args a;
-    a.to = comp::V2(p.axis[Z] ? (p.inc[Z] ? prog_[Z] + p.val[Z] : p.val[Z]) : prog_[Z],
-                    p.axis[X] ? (p.inc[X] ? prog_[X] + p.val[X] : p.val[X]) : prog_[X]);
+    a.to = comp::V2(p.to.axis[Z] ? (p.to.inc[Z] ? prog_[Z] + p.to.val[Z] : p.to.val[Z]) : prog_[Z],
+                    p.to.axis[X] ? (p.to.inc[X] ? prog_[X] + p.to.val[X] : p.to.val[X]) : prog_[X]);
     bool has_k;
     double k = cyc(p, addr1('K'), 0, &has_k);
-    if (!has_k && p.ijk[2]) k = p.ijk_val[2], has_k = true;  // K in a following G38 block
+    if (!has_k && p.to.ijk[2]) k = p.to.ijk_val[2], has_k = true;  // K in a following G38 block
     if (!has_k) k = g38_lead_, has_k = g38_lead_ > 0;
     a.has_k = has_k;
     a.k = k;
@@ -485,13 +485,13 @@ bool Interpreter::turning_block(const Plan& p) {
 
 // While a G64 waits for its G80: the blocks are the rough stock, not moves.
 bool Interpreter::turning_stock(const Plan& p) {
-    if (p.g[2] || p.g[3] || p.pgp || p.motion == 2 || p.motion == 3)
+    if (p.g[2] || p.g[3] || p.pgp.any || p.mode.motion == 2 || p.mode.motion == 3)
         return fail(889, tr("the rough stock of G64 is made of points, no circle or PGP")), false;
     comp::V2 last = g64_stock_.empty() ? comp::V2(NAN, NAN) : g64_stock_.back();
-    if (!p.axis[X] && !p.axis[Z]) return true;  // a comment or a label: no point
-    if (g64_stock_.empty() && (!p.axis[X] || !p.axis[Z]))
+    if (!p.to.axis[X] && !p.to.axis[Z]) return true;  // a comment or a label: no point
+    if (g64_stock_.empty() && (!p.to.axis[X] || !p.to.axis[Z]))
         return fail(872, tr("the first point of the rough stock needs X and Z")), false;
-    comp::V2 pt(p.axis[Z] ? p.val[Z] : last.x(), p.axis[X] ? p.val[X] : last.y());
+    comp::V2 pt(p.to.axis[Z] ? p.to.val[Z] : last.x(), p.to.axis[X] ? p.to.val[X] : last.y());
     g64_stock_.push_back(pt);
     return true;
 }

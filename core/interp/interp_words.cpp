@@ -176,7 +176,7 @@ Interpreter::Decoder::Decoder(Interpreter& interp, Plan& plan, const Block& b)
     }
     unit = inch ? 25.4 : 1.0;
     const int modal_cycle = in.modal_.cycle;
-    p.cycle_words = cycle_code == 31 || (cycle_code >= 81 && cycle_code <= 89) ||
+    p.cycle_words.active = cycle_code == 31 || (cycle_code >= 81 && cycle_code <= 89) ||
                     (cycle_code < 0 && modal_cycle >= 81 && modal_cycle <= 89);
 }
 
@@ -209,14 +209,14 @@ bool Interpreter::Decoder::word(const Word& w) {
 
 // Checks that need the whole block.
 bool Interpreter::Decoder::finish() {
-    if (p.g[16] && p.g16_axis < 0 && pqr_sign_col)
+    if (p.g[16] && p.g16.axis < 0 && pqr_sign_col)
         return bad(3, tr("the argument of G16 must follow it (G16 R+)"), pqr_sign_col);
-    if (p.g[78] && !p.g78_p) return bad(2, tr("G78 needs P (the axis groups to synchronise)"));
+    if (p.g[78] && !p.flow.g78_p) return bad(2, tr("G78 needs P (the axis groups to synchronise)"));
     // milling.md §8.6 (impl): the axis values after EM+/EM- are the part's
     // extremes for the graphic display, not a move.
-    if (p.em) {
-        p.axis.reset();
-        p.inc.reset();
+    if (p.to.em) {
+        p.to.axis.reset();
+        p.to.inc.reset();
     }
     return true;
 }
@@ -230,7 +230,7 @@ bool Interpreter::Decoder::g_word(const Word& w) {
     if (!in.word_value(w, gv, &g)) return false;
     const GCode* gc = find_g(g);
     if (!g_known(g, gc, w)) return false;
-    if (gc->support == Support::later && p.unsupported < 0) p.unsupported = g;
+    if (gc->support == Support::later && p.unsupported.g < 0) p.unsupported.g = g;
     p.g.set(size_t(g));
     g_group(g, gc->group);
     if (!g_marks(g, w)) return false;
@@ -262,16 +262,16 @@ bool Interpreter::Decoder::g_known(int g, const GCode* gc, const Word& w) {
 // The G that the block keeps for a modal group (the last one written).
 void Interpreter::Decoder::g_group(int g, Group group) {
     switch (group) {
-        case Group::motion: p.motion = g; break;
-        case Group::dist: p.dist = g; inc = (g == 91); break;
-        case Group::plane: p.plane = g; break;
-        case Group::radcomp: p.radcomp = g; break;
-        case Group::prefdec: p.prefdec = g; break;
-        case Group::feed: p.feed_mode = g; break;
-        case Group::spindle: p.spindle_mode = g; break;
-        case Group::units: p.units = g; break;
-        case Group::scale: p.scale = g; break;
-        case Group::cycle: p.cycle = g; break;
+        case Group::motion: p.mode.motion = g; break;
+        case Group::dist: p.mode.dist = g; inc = (g == 91); break;
+        case Group::plane: p.mode.plane = g; break;
+        case Group::radcomp: p.mode.radcomp = g; break;
+        case Group::prefdec: p.mode.prefdec = g; break;
+        case Group::feed: p.mode.feed = g; break;
+        case Group::spindle: p.mode.spindle = g; break;
+        case Group::units: p.mode.units = g; break;
+        case Group::scale: p.mode.scale = g; break;
+        case Group::cycle: p.mode.cycle = g; break;
         default: break;
     }
 }
@@ -282,12 +282,12 @@ bool Interpreter::Decoder::g_marks(int g, const Word& w) {
         if (axis_seen) return bad(3, tr("G52 must come before the axis words of the block"), w.col);
         g52_seen = true;
     }
-    if (g == 77) p.g77_level = w.glevel;
+    if (g == 77) p.g77.level = w.glevel;
     if (g == 77 && w.glevel && m.model == 1020) return bad(4, tr("G77 -i needs a NUM 1040 or 1060"), w.col);
     if (g == 79 && w.gsign && m.model == 1020)
         return bad(4, strf(tr("G79%c needs a NUM 1040 or 1060 (000:560)"), w.gsign), w.col);
-    if (g == 79 && w.gsign) p.g79_sign = w.gsign;
-    if (g == 76) p.g76_sign = w.gsign;
+    if (g == 79 && w.gsign) p.flow.g79_sign = w.gsign;
+    if (g == 76) p.g76.sign = w.gsign;
     return true;
 }
 
@@ -298,7 +298,7 @@ bool Interpreter::Decoder::plain_word(const Word& w) {
     // In G29 every block gives the surface normal with P Q R.
     const char c = letter(w);
     if ((c == 'P' || c == 'Q' || c == 'R') && w.v.kind != Operand::SignOnly &&
-        (p.radcomp == 29 || (p.radcomp < 0 && in.modal_.radcomp == 29)))
+        (p.mode.radcomp == 29 || (p.mode.radcomp < 0 && in.modal_.radcomp == 29)))
         return g29_normal(w);
     if (seen.test(w.addr) && w.addr != addr1('M') && w.addr != addr1('G'))
         return bad(3, strf(tr("%s written twice in the block"), std::string(addr_name(w.addr)).c_str()), w.col);
@@ -339,16 +339,16 @@ bool Interpreter::Decoder::axis_word(const Word& w) {
     double v;
     if (!in.word_value(w, v)) return false;
     axis_seen = true;
-    p.axis.set(size_t(axis));
-    if (inc && !g52_seen) p.inc.set(size_t(axis));
+    p.to.axis.set(size_t(axis));
+    if (inc && !g52_seen) p.to.inc.set(size_t(axis));
     if (is_rotary(axis)) {
-        p.val[size_t(axis)] = v;
+        p.to.val[size_t(axis)] = v;
     } else if (axis == X && lathe) {
         // Absolute X is a diameter; incremental X and G52 X are radii (DESIGN §3).
         bool as_diam = diam && !inc && !g52_seen;
-        p.val[size_t(axis)] = as_diam ? v * unit / 2 : v * unit;
+        p.to.val[size_t(axis)] = as_diam ? v * unit / 2 : v * unit;
     } else {
-        p.val[size_t(axis)] = v * unit;
+        p.to.val[size_t(axis)] = v * unit;
     }
     return true;
 }
@@ -359,38 +359,38 @@ bool Interpreter::Decoder::ijk_word(const Word& w) {
     double v;
     if (!in.word_value(w, v)) return false;
     int k = letter(w) - 'I';
-    p.ijk.set(size_t(k));
-    if (inc) p.ijk_inc.set(size_t(k));
-    p.ijk_val[k] = (k == 0 && diam && !inc) ? v * unit / 2 : v * unit;
+    p.to.ijk.set(size_t(k));
+    if (inc) p.to.ijk_inc.set(size_t(k));
+    p.to.ijk_val[k] = (k == 0 && diam && !inc) ? v * unit / 2 : v * unit;
     return true;
 }
 
 bool Interpreter::Decoder::r_word(const Word& w) {
     if (w.v.kind == Operand::SignOnly) {
-        p.r_sign = w.v.neg ? -1 : 1;
+        p.to.r_sign = w.v.neg ? -1 : 1;
         if (!pqr_sign_col) pqr_sign_col = w.col;
         return true;
     }
     double v;
     if (!in.word_value(w, v)) return false;
-    p.has_r = true;
-    p.r = v * unit;
+    p.to.has_r = true;
+    p.to.r = v * unit;
     return true;
 }
 
 bool Interpreter::Decoder::feed_word(const Word& w) {
     double v;
     if (!in.word_value(w, v)) return false;
-    p.has_f = true;
-    p.f = v;
+    p.tech.has_f = true;
+    p.tech.f = v;
     return true;
 }
 
 bool Interpreter::Decoder::speed_word(const Word& w) {
     double v;
     if (!in.word_value(w, v)) return false;
-    p.has_s = true;
-    p.s = v;
+    p.tech.has_s = true;
+    p.tech.s = v;
     return true;
 }
 
@@ -400,8 +400,8 @@ bool Interpreter::Decoder::tool_word(const Word& w) {
     if (!in.word_value(w, v, &iv)) return false;
     if (iv > m.tools)
         return bad(1, strf(tr("tool T%d does not exist (the turret has %d stations)"), iv, int(m.tools)), w.col);
-    p.has_t = true;
-    p.t = iv;
+    p.tech.has_t = true;
+    p.tech.t = iv;
     return true;
 }
 
@@ -412,8 +412,8 @@ bool Interpreter::Decoder::corrector_word(const Word& w) {
     if (iv > m.correctors)
         return bad(w.v.kind == Operand::Number ? 8 : 92,
                    strf(tr("corrector D%d above D%d"), iv, int(m.correctors)), w.col);
-    p.has_d = true;
-    p.d = iv;
+    p.tech.has_d = true;
+    p.tech.d = iv;
     return true;
 }
 
@@ -421,19 +421,19 @@ bool Interpreter::Decoder::m_word(const Word& w) {
     int iv;
     double v;
     if (!in.word_value(w, v, &iv)) return false;
-    if (p.nm >= 8) return bad(3, tr("too many M functions in one block"), w.col);
+    if (p.tech.nm >= 8) return bad(3, tr("too many M functions in one block"), w.col);
     // At most one modal and one non-modal coded M per block (004:1063).
     if ((iv >= 200 && iv <= 899 && ++coded_modal > 1) || (iv >= 100 && iv <= 199 && ++coded_nonmodal > 1))
         return bad(3, strf(tr("two coded M functions of the same kind in one block (M%d)"), iv), w.col);
-    p.m[p.nm++] = iv;
+    p.tech.m[p.tech.nm++] = iv;
     return true;
 }
 
 bool Interpreter::Decoder::ed_word(const Word& w) {
     double v;
     if (!in.word_value(w, v)) return false;
-    p.has_ed = true;
-    p.ed = v;
+    p.tech.has_ed = true;
+    p.tech.ed = v;
     return true;
 }
 
@@ -442,27 +442,27 @@ bool Interpreter::Decoder::eg_word(const Word& w) {
     if (!in.word_value(w, v)) return false;
     // xgettext:no-c-format
     if (v < 1 || v > 100) return bad(1, tr("EG (acceleration) must be 1 to 100 %"), w.col);
-    p.has_eg = true;
-    p.eg = v;
+    p.tech.has_eg = true;
+    p.tech.eg = v;
     return true;
 }
 
 bool Interpreter::Decoder::ec_word(const Word& w) {
     double v;
     if (!in.word_value(w, v)) return false;
-    p.has_ec = true;
-    p.ec = v;
+    p.tech.has_ec = true;
+    p.tech.ec = v;
     return true;
 }
 
 bool Interpreter::Decoder::em_word(const Word&) {  // EM+/EM-: part extremes for the graphic
-    p.em = true;
+    p.to.em = true;
     return true;
 }
 
 // P Q ER EH EF EP EK: words of the active drilling cycle; else P± Q± alone.
 bool Interpreter::Decoder::cycle_or_sign(const Word& w) {
-    if (p.cycle_words) return cyc_word(w);
+    if (p.cycle_words.active) return cyc_word(w);
     const char c = letter(w);
     if ((c == 'P' || c == 'Q') && w.v.kind == Operand::SignOnly) {
         if (!pqr_sign_col) pqr_sign_col = w.col;
@@ -473,27 +473,27 @@ bool Interpreter::Decoder::cycle_or_sign(const Word& w) {
 
 // ES EA: words of the active drilling cycle, else of the profile geometry.
 bool Interpreter::Decoder::cycle_or_pgp(const Word& w) {
-    return p.cycle_words ? cyc_word(w) : pgp_word(w);
+    return p.cycle_words.active ? cyc_word(w) : pgp_word(w);
 }
 
 // EA EB ES ET E±: profile geometry; ES± ET± carry the discriminant as their
 // sign (pgp.md §2).
 bool Interpreter::Decoder::pgp_word(const Word& w) {
-    p.pgp = true;
+    p.pgp.any = true;
     double v;
     if (w.addr == addrE('A')) {
         if (!in.word_value(w, v)) return false;
-        p.has_ea = true;
-        p.ea = v;
+        p.pgp.has_ea = true;
+        p.pgp.ea = v;
     } else if (w.addr == addrE('B')) {
         if (!in.word_value(w, v)) return false;
-        p.has_eb = true;
-        p.eb = v * unit;
-        p.eb_unsigned = !w.v.has_sign;
+        p.pgp.has_eb = true;
+        p.pgp.eb = v * unit;
+        p.pgp.eb_unsigned = !w.v.has_sign;
     } else {
-        if (w.addr == addrE('S')) p.link = p.link == 'T' ? 'X' : 'S';
-        if (w.addr == addrE('T')) p.link = p.link == 'S' ? 'X' : 'T';
-        if (w.v.has_sign) p.disc = w.v.neg ? -1 : 1;
+        if (w.addr == addrE('S')) p.pgp.link = p.pgp.link == 'T' ? 'X' : 'S';
+        if (w.addr == addrE('T')) p.pgp.link = p.pgp.link == 'S' ? 'X' : 'T';
+        if (w.v.has_sign) p.pgp.disc = w.v.neg ? -1 : 1;
         if (w.v.kind == Operand::Number || w.v.kind == Operand::LVar)
             return bad(w.addr == kAddrEsign ? 3 : 110, strf(tr("%s takes a sign only"), std::string(addr_name(w.addr)).c_str()),
                        w.col);
@@ -510,8 +510,8 @@ bool Interpreter::Decoder::no_meaning(const Word& w) {
 bool Interpreter::Decoder::cyc_word(const Word& w) {
     double cv;
     if (!in.word_value(w, cv)) return false;
-    if (p.ncyc >= 16) return bad(3, tr("too many cycle words in one block"), w.col);
-    p.cyc[p.ncyc++] = {w.addr, w.addr == addrE('R') || w.addr == addrE('H') ? cv * unit : cv};
+    if (p.cycle_words.n >= 16) return bad(3, tr("too many cycle words in one block"), w.col);
+    p.cycle_words.word[p.cycle_words.n++] = {w.addr, w.addr == addrE('R') || w.addr == addrE('H') ? cv * unit : cv};
     return true;
 }
 
@@ -519,8 +519,8 @@ bool Interpreter::Decoder::cyc_word(const Word& w) {
 bool Interpreter::Decoder::g29_normal(const Word& w) {
     double v;
     if (!in.word_value(w, v)) return false;
-    p.g29_has.set(size_t(letter(w) - 'P'));
-    p.g29_n[letter(w) - 'P'] = v;
+    p.g29.has.set(size_t(letter(w) - 'P'));
+    p.g29.n[letter(w) - 'P'] = v;
     return true;
 }
 

@@ -113,9 +113,9 @@ double Interpreter::feed_rate(double& rpm_out) {
 // no cycle moves nothing (usually a G2/G3 left out).
 void Interpreter::warn_idle_words(const Plan& p) {
     std::string w;
-    if (p.has_r) w += " R";
+    if (p.to.has_r) w += " R";
     for (int k = 0; k < 3; ++k)
-        if (p.ijk[size_t(k)]) w += std::string(" ") + char('I' + k);
+        if (p.to.ijk[size_t(k)]) w += std::string(" ") + char('I' + k);
     if (w.empty() || p.g[23]) return;
     warn(err::wIdleWord, strf(trn("word%s has no effect in a G%d block: the move is a straight line (a circle needs G2 or G3)",
                                   "words%s has no effect in a G%d block: the move is a straight line (a circle needs G2 or G3)",
@@ -129,7 +129,7 @@ bool Interpreter::do_motion(const Plan& p) {
     int a0 = m_.lathe ? Z : modal_.plane == 17 ? X : modal_.plane == 18 ? Z : Y;
     int a1 = m_.lathe ? X : modal_.plane == 17 ? Y : modal_.plane == 18 ? X : Z;
     if (comp) {
-        if (p.axis[size_t(a0)] || p.axis[size_t(a1)]) {
+        if (p.to.axis[size_t(a0)] || p.to.axis[size_t(a1)]) {
             nonmotion_in_comp_ = 0;
         } else if (++nonmotion_in_comp_ > 2) {
             return fail(140, tr("more than 2 blocks in a row without motion in the plane under radius compensation")),
@@ -144,64 +144,64 @@ bool Interpreter::do_motion(const Plan& p) {
     if (modal_.radcomp == 29 && !g52) return g29_move(p);
     // The end of a compensated profile: held PGP elements are resolved first.
     if (comp_.on && modal_.radcomp == 40 && pgp_.pending() && !pgp_close()) return false;
-    if (comp_.on && modal_.radcomp == 40 && p.axis.none()) return comp_exit(p, nullptr);
+    if (comp_.on && modal_.radcomp == 40 && p.to.axis.none()) return comp_exit(p, nullptr);
     if (p.g[6]) return spline_run(p);
-    if (p.g[33] || p.g[63] || p.g[64] || p.g[65] || p.g[66] || (modal_.motion == 38 && p.axis.any())) {
+    if (p.g[33] || p.g[63] || p.g[64] || p.g[65] || p.g[66] || (modal_.motion == 38 && p.to.axis.any())) {
         first_move_ = false;
         return turning_block(p);
     }
     if (p.g[45]) {
-        if (p.axis.any()) apply_corrector_gauges(p.axis);
+        if (p.to.axis.any()) apply_corrector_gauges(p.to.axis);
         first_move_ = false;
         return pocket(p);
     }
     if (p.g[31] || (modal_.cycle >= 81 && modal_.cycle <= 89)) {
         if (g52) return fail(3, tr("G52 in a drilling cycle block")), false;
-        if (p.axis.any() && !g52) apply_corrector_gauges(p.axis);
+        if (p.to.axis.any() && !g52) apply_corrector_gauges(p.to.axis);
         first_move_ = false;
         return cycle_block(p);
     }
     if (!g52 && !(comp_.on && modal_.radcomp == 40) && pgp_wanted(p)) {
         int a0p, a1p;
         plane_axes(a0p, a1p);
-        bool plane = p.pgp || p.axis[size_t(a0p)] || p.axis[size_t(a1p)] || p.ijk.any() || p.has_r;
+        bool plane = p.pgp.any || p.to.axis[size_t(a0p)] || p.to.axis[size_t(a1p)] || p.to.ijk.any() || p.to.has_r;
         if (plane) {
             Axes target = prog_;
             for (int a = 0; a < kAxes; ++a)
-                if (p.axis[size_t(a)])
-                    target[size_t(a)] = p.inc[size_t(a)] ? prog_[size_t(a)] + p.val[size_t(a)] : p.val[size_t(a)];
-            if (p.axis.any()) apply_corrector_gauges(p.axis);
+                if (p.to.axis[size_t(a)])
+                    target[size_t(a)] = p.to.inc[size_t(a)] ? prog_[size_t(a)] + p.to.val[size_t(a)] : p.to.val[size_t(a)];
+            if (p.to.axis.any()) apply_corrector_gauges(p.to.axis);
             first_move_ = false;
             return pgp_block(p, target);
         }
         pgp::Error e;
         if (!pgp_.idle(e)) return fail(e.code, e.detail), false;  // at the block that overflows
-        if (p.axis.any()) {
+        if (p.to.axis.any()) {
             // A move out of the plane: made when the held elements are out.
             Axes target = prog_;
             for (int a = 0; a < kAxes; ++a)
-                if (p.axis[size_t(a)])
-                    target[size_t(a)] = p.inc[size_t(a)] ? prog_[size_t(a)] + p.val[size_t(a)] : p.val[size_t(a)];
-            return comp_other_axes(target, p.axis);
+                if (p.to.axis[size_t(a)])
+                    target[size_t(a)] = p.to.inc[size_t(a)] ? prog_[size_t(a)] + p.to.val[size_t(a)] : p.to.val[size_t(a)];
+            return comp_other_axes(target, p.to.axis);
         }
         return true;
     }
-    if (p.axis.none()) {
-        bool arcwords = p.ijk.any() || p.has_r;
-        if (p.g[23] || ((p.motion == 2 || p.motion == 3) && arcwords))
+    if (p.to.axis.none()) {
+        bool arcwords = p.to.ijk.any() || p.to.has_r;
+        if (p.g[23] || ((p.mode.motion == 2 || p.mode.motion == 3) && arcwords))
             return fail(101, tr("circle without its end point")), false;
         return true;
     }
-    if ((p.has_r || p.ijk.any()) && (modal_.motion == 0 || modal_.motion == 1)) warn_idle_words(p);
-    if (first_move_ && p.inc.any())
+    if ((p.to.has_r || p.to.ijk.any()) && (modal_.motion == 0 || modal_.motion == 1)) warn_idle_words(p);
+    if (first_move_ && p.to.inc.any())
         warn(err::wIncrementalFirst, tr("first move written in G91: relative to the position after homing"));
     first_move_ = false;
-    if (p.axis[X] && !g52) modal_.css_known = true;
-    if (!g52) apply_corrector_gauges(p.axis);
+    if (p.to.axis[X] && !g52) modal_.css_known = true;
+    if (!g52) apply_corrector_gauges(p.to.axis);
 
     Axes target = prog_;
     for (int a = 0; a < kAxes; ++a)
-        if (p.axis[size_t(a)]) target[size_t(a)] = p.inc[size_t(a)] ? prog_[size_t(a)] + p.val[size_t(a)] : p.val[size_t(a)];
+        if (p.to.axis[size_t(a)]) target[size_t(a)] = p.to.inc[size_t(a)] ? prog_[size_t(a)] + p.to.val[size_t(a)] : p.to.val[size_t(a)];
 
     if (g52) {
         // G40 and G52 in one block (the book's own form, %222 N170): the
@@ -209,9 +209,9 @@ bool Interpreter::do_motion(const Plan& p) {
         if (comp_.on && !comp_exit(p, nullptr)) return false;
         Axes mach = mach_;
         for (int a = 0; a < kAxes; ++a)
-            if (p.axis[size_t(a)]) mach[size_t(a)] = p.val[size_t(a)];
+            if (p.to.axis[size_t(a)]) mach[size_t(a)] = p.to.val[size_t(a)];
         if (!check_travel(mach)) return false;
-        if (!linear(modal_.motion, mach, true, p.axis)) return false;
+        if (!linear(modal_.motion, mach, true, p.to.axis)) return false;
         // G96 starts again from the recomputed program X (turning.md §5.8).
         modal_.css_x0 = modal_.css_pos0 = prog_[X];
         return true;
@@ -222,30 +222,30 @@ bool Interpreter::do_motion(const Plan& p) {
     if (comp_.on) {
         comp::V2 s(prog_[size_t(comp_.a0)], prog_[size_t(comp_.a1)]);
         comp::V2 e(target[size_t(comp_.a0)], target[size_t(comp_.a1)]);
-        if ((e - s).norm() > 1e-9 || (comp_.waiting_entry && (p.axis[size_t(comp_.a0)] || p.axis[size_t(comp_.a1)]))) {
+        if ((e - s).norm() > 1e-9 || (comp_.waiting_entry && (p.to.axis[size_t(comp_.a0)] || p.to.axis[size_t(comp_.a1)]))) {
             comp::Elem line;
             line.a = s;
             line.b = e;
             return comp_element(line, modal_.motion, target, 0);
         }
-        return comp_other_axes(target, p.axis);
+        return comp_other_axes(target, p.to.axis);
     }
-    if (p.r_sign != 0 && modal_.d > 0) {
+    if (p.to.r_sign != 0 && modal_.d > 0) {
         // R- stops one tool radius short of the point, R+ beyond it (milling.md §4.5).
         const Corrector& c = corr_[size_t(modal_.d)];
         double r = c.r + (m_.lathe ? 0 : c.dr);
         double len = linear_length(prog_, target);
         if (len > 1e-9)
             for (int a = X; a <= W; ++a)
-                target[size_t(a)] += p.r_sign * r * (target[size_t(a)] - prog_[size_t(a)]) / len;
+                target[size_t(a)] += p.to.r_sign * r * (target[size_t(a)] - prog_[size_t(a)]) / len;
     }
     Axes mach = frames_.to_machine(target);
     if (frames_.ed == 0)
         for (int a = 0; a < kAxes; ++a)
-            if (!p.axis[size_t(a)] && !frames_.mirror[size_t(a)]) mach[size_t(a)] = mach_[size_t(a)];
+            if (!p.to.axis[size_t(a)] && !frames_.mirror[size_t(a)]) mach[size_t(a)] = mach_[size_t(a)];
     if (!check_travel(mach)) return false;
     prog_next_ = target;
-    return linear(modal_.motion, mach, false, p.axis);
+    return linear(modal_.motion, mach, false, p.to.axis);
 }
 
 // G29, tool correction in space (milling.md §4.6): each block gives a contact
@@ -254,12 +254,12 @@ bool Interpreter::do_motion(const Plan& p) {
 // end radius @ touches that point:
 //   Ct = Pc + @ N;  w = unit(N - (N.u) u);  Oc = Ct + (R - @) w;  tip = Oc - @ u.
 bool Interpreter::g29_move(const Plan& p) {
-    if (p.axis.none() && p.g29_has.none()) return true;
-    if (!(p.axis[X] && p.axis[Y] && p.axis[Z]) || p.g29_has.count() != 3)
+    if (p.to.axis.none() && p.g29.has.none()) return true;
+    if (!(p.to.axis[X] && p.to.axis[Y] && p.to.axis[Z]) || p.g29.has.count() != 3)
         return fail(146, tr("a G29 block needs all of X Y Z and P Q R (000:13291)")), false;
     if (modal_.motion != 0 && modal_.motion != 1)
         return fail(146, tr("G29 blocks are linear moves (G0 or G1)")), false;
-    Eigen::Vector3d n(p.g29_n[0], p.g29_n[1], p.g29_n[2]);
+    Eigen::Vector3d n(p.g29.n[0], p.g29.n[1], p.g29.n[2]);
     if (std::fabs(n.squaredNorm() - 1) > 1e-3)
         return fail(145, strf(tr("P Q R is not a unit vector: P2+Q2+R2 = %s (000:13290)"), f3(n.squaredNorm()).c_str())), false;
     n.normalize();
@@ -269,19 +269,19 @@ bool Interpreter::g29_move(const Plan& p) {
     double r = c.r + c.dr, tip_r = c.tip;
     if (tip_r > r) return fail(146, tr("the end radius @ is larger than the tool radius R")), false;
     Eigen::Vector3d pc;
-    for (int a = 0; a < 3; ++a) pc[a] = p.inc[size_t(a)] ? prog_[size_t(a)] + p.val[size_t(a)] : p.val[size_t(a)];
+    for (int a = 0; a < 3; ++a) pc[a] = p.to.inc[size_t(a)] ? prog_[size_t(a)] + p.to.val[size_t(a)] : p.to.val[size_t(a)];
     Eigen::Vector3d w = n - n.dot(u) * u;
     w = w.norm() > 1e-12 ? Eigen::Vector3d(w.normalized()) : Eigen::Vector3d::Zero();
     Eigen::Vector3d tip = pc + tip_r * n + (r - tip_r) * w - tip_r * u;
     first_move_ = false;
-    apply_corrector_gauges(p.axis);
+    apply_corrector_gauges(p.to.axis);
     Axes target = prog_;
     for (int a = 0; a < kAxes; ++a)
-        if (p.axis[size_t(a)]) target[size_t(a)] = a < 3 ? tip[a] : (p.inc[size_t(a)] ? prog_[size_t(a)] + p.val[size_t(a)] : p.val[size_t(a)]);
+        if (p.to.axis[size_t(a)]) target[size_t(a)] = a < 3 ? tip[a] : (p.to.inc[size_t(a)] ? prog_[size_t(a)] + p.to.val[size_t(a)] : p.to.val[size_t(a)]);
     Axes mach = frames_.to_machine(target);
     if (!check_travel(mach)) return false;
     prog_next_ = target;
-    return linear(modal_.motion, mach, false, p.axis);
+    return linear(modal_.motion, mach, false, p.to.axis);
 }
 
 bool Interpreter::linear(int g, const Axes& mach, bool g52, const std::bitset<kAxes>&) {
@@ -342,28 +342,28 @@ bool Interpreter::arc(const Plan& p, const Axes& target) {
     int a1 = lathe ? X : modal_.plane == 17 ? Y : modal_.plane == 18 ? X : Z;
     int an = lathe ? Y : modal_.plane == 17 ? Z : modal_.plane == 18 ? Y : X;
     int i0 = ijk_index(a0), i1 = ijk_index(a1), in = ijk_index(an);
-    bool centre = p.ijk[size_t(i0)] && p.ijk[size_t(i1)];
-    if (!p.axis[size_t(a0)] || !p.axis[size_t(a1)] || centre == p.has_r) {
+    bool centre = p.to.ijk[size_t(i0)] && p.to.ijk[size_t(i1)];
+    if (!p.to.axis[size_t(a0)] || !p.to.axis[size_t(a1)] || centre == p.to.has_r) {
         return fail(101, strf(tr("G%d needs %c%c and either %c%c or R, even if unchanged"), modal_.motion,
                               kAxisNames[size_t(a0)], kAxisNames[size_t(a1)], 'I' + i0, 'I' + i1)),
                false;
     }
     for (int a = 0; a < kAxes; ++a)
-        if (p.axis[size_t(a)] && a != a0 && a != a1 && (lathe || a != an))
+        if (p.to.axis[size_t(a)] && a != a0 && a != a1 && (lathe || a != an))
             return fail(106, strf(tr("axis %c in a circle: only the axis normal to the plane may move (helix)"),
                                   kAxisNames[size_t(a)])),
                    false;
-    bool helix = !lathe && p.axis[size_t(an)];
-    if (p.ijk[size_t(in)] && !helix)
+    bool helix = !lathe && p.to.axis[size_t(an)];
+    if (p.to.ijk[size_t(in)] && !helix)
         return fail(107, strf(tr("helix pitch %c without the %c end point"), 'I' + in, kAxisNames[size_t(an)])), false;
 
     Eigen::Vector2d s(prog_[size_t(a0)], prog_[size_t(a1)]), e(target[size_t(a0)], target[size_t(a1)]);
     Eigen::Vector2d c;
     double r0, r1;
     bool ccw = modal_.motion == 3;
-    if (p.has_r) {
+    if (p.to.has_r) {
         double d = (e - s).norm();
-        double r = p.r;
+        double r = p.to.r;
         if (r <= 0) return fail(107, tr("circle radius R must be positive")), false;
         if (d < 1e-9) return fail(107, tr("circle with R: the end point equals the start point")), false;
         if (d > 2 * r + 0.001)
@@ -374,9 +374,9 @@ bool Interpreter::arc(const Plan& p, const Axes& target) {
         c = (s + e) / 2 + (ccw ? h : -h) * left;
         r0 = r1 = r;
     } else {
-        c = Eigen::Vector2d(p.ijk_val[i0], p.ijk_val[i1]);
-        if (p.ijk_inc[size_t(i0)]) c.x() += s.x();
-        if (p.ijk_inc[size_t(i1)]) c.y() += s.y();
+        c = Eigen::Vector2d(p.to.ijk_val[i0], p.to.ijk_val[i1]);
+        if (p.to.ijk_inc[size_t(i0)]) c.x() += s.x();
+        if (p.to.ijk_inc[size_t(i1)]) c.y() += s.y();
         r0 = (s - c).norm();
         r1 = (e - c).norm();
         if (r0 < 1e-9) return fail(107, tr("circle centre on the start point")), false;
@@ -396,10 +396,10 @@ bool Interpreter::arc(const Plan& p, const Axes& target) {
         while (sw >= -1e-12) sw -= 2 * kPi;
         if (full) sw = -2 * kPi;
     }
-    if (helix && p.ijk[size_t(in)]) {
+    if (helix && p.to.ijk[size_t(in)]) {
         // The pitch chooses the number of extra turns (000:4745, 004:628).
         double dz = std::fabs(target[size_t(an)] - prog_[size_t(an)]);
-        double k = std::fabs(p.ijk_val[in]);
+        double k = std::fabs(p.to.ijk_val[in]);
         double th0 = std::fabs(sw) * 180 / kPi;
         if (dz > 1e-9 && k > 1e-9) {
             int best = 0;
@@ -427,12 +427,12 @@ bool Interpreter::arc3(const Plan& p, const Axes& target) {
     int a0 = lathe ? Z : modal_.plane == 17 ? X : modal_.plane == 18 ? Z : Y;
     int a1 = lathe ? X : modal_.plane == 17 ? Y : modal_.plane == 18 ? X : Z;
     int i0 = ijk_index(a0), i1 = ijk_index(a1);
-    if (!p.axis[size_t(a0)] || !p.axis[size_t(a1)] || !p.ijk[size_t(i0)] || !p.ijk[size_t(i1)])
+    if (!p.to.axis[size_t(a0)] || !p.to.axis[size_t(a1)] || !p.to.ijk[size_t(i0)] || !p.to.ijk[size_t(i1)])
         return fail(101, tr("G23 needs the end point and the intermediate point")), false;
     Eigen::Vector2d s(prog_[size_t(a0)], prog_[size_t(a1)]), e(target[size_t(a0)], target[size_t(a1)]);
-    Eigen::Vector2d m(p.ijk_val[i0], p.ijk_val[i1]);
-    if (p.ijk_inc[size_t(i0)]) m.x() += s.x();
-    if (p.ijk_inc[size_t(i1)]) m.y() += s.y();
+    Eigen::Vector2d m(p.to.ijk_val[i0], p.to.ijk_val[i1]);
+    if (p.to.ijk_inc[size_t(i0)]) m.x() += s.x();
+    if (p.to.ijk_inc[size_t(i1)]) m.y() += s.y();
     Eigen::Vector2d u = m - s, v = e - s;
     double cross = u.x() * v.y() - u.y() * v.x();
     if (std::fabs(cross) < 1e-9) return fail(101, tr("G23: the three points are on one line")), false;
