@@ -427,6 +427,7 @@ private:
     } p46_;
     bool pocket46(const Plan& p);
     bool p46_contour(const Plan& p);
+    bool p46_section(const Plan& p, int nu);
     bool p46_close_section();
     bool p46_header(const Plan& p, int nu);
     bool p46_order(const Plan& p, int nu);
@@ -441,6 +442,9 @@ private:
         int a0, a1, an;
     };
     static P46Axes p46_axes(int plane);
+    bool p46_contour_words(const Plan& p, const P46Axes& ax, bool tech_words);
+    bool p46_contour_start(const Plan& p, const P46Axes& ax, int motion, p46::V2 t);
+    bool p46_contour_elem(const Plan& p, const P46Axes& ax, int motion, p46::V2 t);
     void warn_plunges(const p46::Def& d, const std::vector<p46::Run>& runs);
     bool p46_emit(const P46Axes& ax, const std::vector<p46::Run>& runs, double z, double approach,
                   double clear, double f_ax, double f_lat);

@@ -44,6 +44,14 @@ struct Words {
     bool ok(Addr a) const { return has[a]; }
 };
 
+// The words of a G46 block, by address (C: the Plan's CycleWords, private to the interpreter).
+template <class C>
+Words words_of(const C& c) {
+    Words w;
+    for (int i = 0; i < c.n; ++i) w.has[c.word[i].a] = true, w.v[c.word[i].a] = c.word[i].v;
+    return w;
+}
+
 std::string axis_name(int a) {
     return std::string(1, kAxisNames[size_t(a)]);
 }
@@ -86,8 +94,7 @@ bool Interpreter::pocket46(const Plan& p) {
     // A G46 block runs no modal function: a plane given there would be ignored.
     if (p.mode.plane >= 0 && p.mode.plane != modal_.plane)
         return fail(279, strf(tr("G%d in a G46 block: select the plane in a block before G46 NU0"), p.mode.plane)), false;
-    Words w;
-    for (int i = 0; i < p.cycle_words.n; ++i) w.has[p.cycle_words.word[i].a] = true, w.v[p.cycle_words.word[i].a] = p.cycle_words.word[i].v;
+    const Words w = words_of(p.cycle_words);
     if (!w.has[addrN('U')])
         return fail(268, tr("G46 needs NU (NU0 header, NU1-NU6 contours, NU9, NU10/15/20 orders)")),
                false;
@@ -110,6 +117,13 @@ bool Interpreter::pocket46(const Plan& p) {
             return fail(270, tr("a machining order before the end of the definition (G46 NU9)")), false;
         return p46_order(p, nu);
     }
+    return p46_section(p, nu);
+}
+
+// G46 NU1-NU6 opens a contour section (NU1, NU2 may give the drilling point LX
+// LY); NU9 closes the definition and checks it.
+bool Interpreter::p46_section(const Plan& p, int nu) {
+    const Words w = words_of(p.cycle_words);
     if (!p46_.defining)
         return fail(270, strf(tr("G46 NU%d without a G46 NU0 header"), nu)), false;
     // Contour sections accept LX LY (NU1, NU2) and nothing else.
@@ -194,16 +208,35 @@ bool Interpreter::p46_header(const Plan& p, int) {
 // in the plane of the definition.
 bool Interpreter::p46_contour(const Plan& p) {
     const P46Axes ax = p46_axes(p46_.def.plane);
-    const size_t a0 = size_t(ax.a0), a1 = size_t(ax.a1), an = size_t(ax.an);
     const bool plane_words = p.to.axis.any() || p.to.ijk.any() || p.to.has_r || p.pgp.any;
-    const bool any_g = p.g.any();
-    if (!plane_words && !any_g && !p.tech.nm && !p.tech.has_f && !p.tech.has_s && !p.tech.has_t && !p.tech.has_d && !p.cycle_words.n)
-        return true;  // a comment line
+    const bool tech_words = p.tech.nm || p.tech.has_f || p.tech.has_s || p.tech.has_t ||
+                            p.tech.has_d || p.cycle_words.n;
+    if (!plane_words && !p.g.any() && !tech_words) return true;  // a comment line
+    if (!p46_contour_words(p, ax, tech_words)) return false;
+    const size_t a0 = size_t(ax.a0), a1 = size_t(ax.a1);
+    const int motion = p.mode.motion >= 0 ? p.mode.motion : p46_.motion;
+    p46_.motion = motion;
+    p46::V2 t = p46_.pos;
+    if (p.to.axis[a0]) t.x() = p.to.inc[a0] ? p46_.pos.x() + p.to.val[a0] : p.to.val[a0];
+    if (p.to.axis[a1]) t.y() = p.to.inc[a1] ? p46_.pos.y() + p.to.val[a1] : p.to.val[a1];
+    if (p46_.first) return p46_contour_start(p, ax, motion, t);
+    if (motion == 0)
+        return fail(p46_.blocks == 1 ? 292 : 284, p46_.blocks == 1
+                                                      ? tr("two positionings at the start of a contour")
+                                                      : tr("G0 inside a contour")),
+               false;
+    return p46_contour_elem(p, ax, motion, t);
+}
+
+// The words a contour block may carry: G0-G3, the plane's coordinates and
+// centres, R, EA, EB and the PGP links.
+bool Interpreter::p46_contour_words(const Plan& p, const P46Axes& ax, bool tech_words) {
+    const size_t a0 = size_t(ax.a0), a1 = size_t(ax.a1), an = size_t(ax.an);
     if (p46_.blocks < 0) return fail(269, tr("a contour block before G46 NU1-NU6")), false;
     for (size_t g = 0; g < p.g.size(); ++g)
         if (p.g[g] && g > 3)
             return fail(279, strf(tr("G%zu in a pocket contour block"), g)), false;
-    if (p.tech.nm || p.tech.has_f || p.tech.has_s || p.tech.has_t || p.tech.has_d || p.cycle_words.n)
+    if (tech_words)
         return fail(268, strf(tr("only G0-G3, %s %s, %s %s, R and EB in a pocket contour block"), axis_name(ax.a0).c_str(),
                               axis_name(ax.a1).c_str(), centre_name(ax.a0).c_str(), centre_name(ax.a1).c_str())),
                false;
@@ -214,29 +247,28 @@ bool Interpreter::p46_contour(const Plan& p) {
     if (p.to.ijk[an]) return fail(264, strf(tr("%s is outside the contouring plane"), centre_name(ax.an).c_str())), false;
     if (!p.to.axis[a0] && !p.to.axis[a1] && !p.pgp.has_ea)
         return fail(264, tr("no coordinate in the contouring plane")), false;
-    int motion = p.mode.motion >= 0 ? p.mode.motion : p46_.motion;
-    p46_.motion = motion;
-    p46::V2 t = p46_.pos;
-    if (p.to.axis[a0]) t.x() = p.to.inc[a0] ? p46_.pos.x() + p.to.val[a0] : p.to.val[a0];
-    if (p.to.axis[a1]) t.y() = p.to.inc[a1] ? p46_.pos.y() + p.to.val[a1] : p.to.val[a1];
-    if (p46_.first) {
-        if (motion != 0 && motion != 1)
-            return fail(265, tr("a contour starts with a G0 or G1 positioning")), false;
-        if (!p.to.axis[a0] || !p.to.axis[a1] || p.pgp.has_eb || p.pgp.any)
-            return fail(280, tr("the first contour block gives both coordinates of the start point")),
-                   false;
-        p46_.pos = t;
-        p46_.solver = pgp::Solver();
-        p46_.solver.start(t);
-        p46_.first = false;
-        p46_.blocks = 1;
-        return true;
-    }
-    if (motion == 0)
-        return fail(p46_.blocks == 1 ? 292 : 284, p46_.blocks == 1
-                                                      ? tr("two positionings at the start of a contour")
-                                                      : tr("G0 inside a contour")),
+    return true;
+}
+
+// The first contour block: a G0 or G1 to the start point, both coordinates given.
+bool Interpreter::p46_contour_start(const Plan& p, const P46Axes& ax, int motion, p46::V2 t) {
+    if (motion != 0 && motion != 1)
+        return fail(265, tr("a contour starts with a G0 or G1 positioning")), false;
+    if (!p.to.axis[size_t(ax.a0)] || !p.to.axis[size_t(ax.a1)] || p.pgp.has_eb || p.pgp.any)
+        return fail(280, tr("the first contour block gives both coordinates of the start point")),
                false;
+    p46_.pos = t;
+    p46_.solver = pgp::Solver();
+    p46_.solver.start(t);
+    p46_.first = false;
+    p46_.blocks = 1;
+    return true;
+}
+
+// One element of the contour, solved by the PGP solver (pgp.md), which may
+// hold it until the next element fixes its end.
+bool Interpreter::p46_contour_elem(const Plan& p, const P46Axes& ax, int motion, p46::V2 t) {
+    const size_t a0 = size_t(ax.a0), a1 = size_t(ax.a1);
     ++p46_.blocks;
     pgp::Spec s;
     s.g = motion;
