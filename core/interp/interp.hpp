@@ -340,6 +340,13 @@ private:
 
     // motion.cpp
     bool do_motion(const Plan& p);
+    Axes target_of(const Plan& p) const;
+    bool motion_allowed(const Plan& p);
+    std::optional<bool> motion_family(const Plan& p);
+    bool pgp_motion(const Plan& p);
+    bool g52_move(const Plan& p);
+    bool comp_line(const Plan& p, const Axes& target);
+    bool straight(const Plan& p, Axes target);
     bool linear(int g, const Axes& target_prog, bool g52, const std::bitset<kAxes>& axes);
     bool g29_move(const Plan& p);
     bool arc(const Plan& p, const Axes& target_prog);

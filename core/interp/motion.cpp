@@ -123,8 +123,45 @@ void Interpreter::warn_idle_words(const Plan& p) {
                               w.c_str(), modal_.motion));
 }
 
+// The target of a block in program coordinates: its axis words over the
+// current position.
+Axes Interpreter::target_of(const Plan& p) const {
+    Axes target = prog_;
+    for (size_t a = 0; a < size_t(kAxes); ++a)
+        if (p.to.axis[a]) target[a] = p.to.inc[a] ? prog_[a] + p.to.val[a] : p.to.val[a];
+    return target;
+}
+
+// The motion of a block (turning.md §1.7.5, step 4): a cycle, a profile
+// element or a move.
 bool Interpreter::do_motion(const Plan& p) {
+    if (!motion_allowed(p)) return false;
+    if (std::optional<bool> done = motion_family(p)) return *done;
+    if (p.to.axis.none()) {
+        bool arcwords = p.to.ijk.any() || p.to.has_r;
+        if (p.g[23] || ((p.mode.motion == 2 || p.mode.motion == 3) && arcwords))
+            return fail(101, tr("circle without its end point")), false;
+        return true;
+    }
     const bool g52 = p.g[52];
+    if ((p.to.has_r || p.to.ijk.any()) && (modal_.motion == 0 || modal_.motion == 1)) warn_idle_words(p);
+    if (first_move_ && p.to.inc.any())
+        warn(err::wIncrementalFirst, tr("first move written in G91: relative to the position after homing"));
+    first_move_ = false;
+    if (p.to.axis[X] && !g52) modal_.css_known = true;
+    if (g52) return g52_move(p);
+    apply_corrector_gauges(p.to.axis);
+    Axes target = target_of(p);
+    if (comp_.on && modal_.radcomp == 40) return comp_exit(p, &target);
+    if (p.g[23]) return arc3(p, target);
+    if (modal_.motion == 2 || modal_.motion == 3) return arc(p, target);
+    if (comp_.on) return comp_line(p, target);
+    return straight(p, target);
+}
+
+// What a block may not do before it moves: a third block without motion in
+// the plane under compensation, a G52 move that cannot be made.
+bool Interpreter::motion_allowed(const Plan& p) {
     const bool comp = modal_.radcomp != 40;
     int a0 = m_.lathe ? Z : modal_.plane == 17 ? X : modal_.plane == 18 ? Z : Y;
     int a1 = m_.lathe ? X : modal_.plane == 17 ? Y : modal_.plane == 18 ? X : Z;
@@ -136,11 +173,19 @@ bool Interpreter::do_motion(const Plan& p) {
                    false;
         }
     }
-    if (g52) {
+    if (p.g[52]) {
         if (comp) return fail(27, tr("G52 move under radius compensation (program G40 first)")), false;
         if (modal_.incremental) return fail(3, tr("G52 needs absolute programming (G90)")), false;
         if (modal_.motion == 2 || modal_.motion == 3) return fail(3, tr("G52 moves are linear (G0 or G1)")), false;
     }
+    return true;
+}
+
+// The blocks that a family of functions runs: G29, the end of a compensated
+// profile, splines, turning cycles, pockets, drilling cycles and PGP.  No
+// value: the block is a plain move.
+std::optional<bool> Interpreter::motion_family(const Plan& p) {
+    const bool g52 = p.g[52];
     if (modal_.radcomp == 29 && !g52) return g29_move(p);
     // The end of a compensated profile: held PGP elements are resolved first.
     if (comp_.on && modal_.radcomp == 40 && pgp_.pending() && !pgp_close()) return false;
@@ -157,81 +202,64 @@ bool Interpreter::do_motion(const Plan& p) {
     }
     if (p.g[31] || (modal_.cycle >= 81 && modal_.cycle <= 89)) {
         if (g52) return fail(3, tr("G52 in a drilling cycle block")), false;
-        if (p.to.axis.any() && !g52) apply_corrector_gauges(p.to.axis);
+        if (p.to.axis.any()) apply_corrector_gauges(p.to.axis);
         first_move_ = false;
         return cycle_block(p);
     }
-    if (!g52 && !(comp_.on && modal_.radcomp == 40) && pgp_wanted(p)) {
-        int a0p, a1p;
-        plane_axes(a0p, a1p);
-        bool plane = p.pgp.any || p.to.axis[size_t(a0p)] || p.to.axis[size_t(a1p)] || p.to.ijk.any() || p.to.has_r;
-        if (plane) {
-            Axes target = prog_;
-            for (int a = 0; a < kAxes; ++a)
-                if (p.to.axis[size_t(a)])
-                    target[size_t(a)] = p.to.inc[size_t(a)] ? prog_[size_t(a)] + p.to.val[size_t(a)] : p.to.val[size_t(a)];
-            if (p.to.axis.any()) apply_corrector_gauges(p.to.axis);
-            first_move_ = false;
-            return pgp_block(p, target);
-        }
-        pgp::Error e;
-        if (!pgp_.idle(e)) return fail(e.code, e.detail), false;  // at the block that overflows
-        if (p.to.axis.any()) {
-            // A move out of the plane: made when the held elements are out.
-            Axes target = prog_;
-            for (int a = 0; a < kAxes; ++a)
-                if (p.to.axis[size_t(a)])
-                    target[size_t(a)] = p.to.inc[size_t(a)] ? prog_[size_t(a)] + p.to.val[size_t(a)] : p.to.val[size_t(a)];
-            return comp_other_axes(target, p.to.axis);
-        }
-        return true;
-    }
-    if (p.to.axis.none()) {
-        bool arcwords = p.to.ijk.any() || p.to.has_r;
-        if (p.g[23] || ((p.mode.motion == 2 || p.mode.motion == 3) && arcwords))
-            return fail(101, tr("circle without its end point")), false;
-        return true;
-    }
-    if ((p.to.has_r || p.to.ijk.any()) && (modal_.motion == 0 || modal_.motion == 1)) warn_idle_words(p);
-    if (first_move_ && p.to.inc.any())
-        warn(err::wIncrementalFirst, tr("first move written in G91: relative to the position after homing"));
-    first_move_ = false;
-    if (p.to.axis[X] && !g52) modal_.css_known = true;
-    if (!g52) apply_corrector_gauges(p.to.axis);
+    if (!g52 && !(comp_.on && modal_.radcomp == 40) && pgp_wanted(p)) return pgp_motion(p);
+    return std::nullopt;
+}
 
-    Axes target = prog_;
-    for (int a = 0; a < kAxes; ++a)
-        if (p.to.axis[size_t(a)]) target[size_t(a)] = p.to.inc[size_t(a)] ? prog_[size_t(a)] + p.to.val[size_t(a)] : p.to.val[size_t(a)];
+// A block while PGP may hold elements: an element in the plane, or a move out
+// of it made when the held elements are out.
+bool Interpreter::pgp_motion(const Plan& p) {
+    int a0, a1;
+    plane_axes(a0, a1);
+    if (p.pgp.any || p.to.axis[size_t(a0)] || p.to.axis[size_t(a1)] || p.to.ijk.any() || p.to.has_r) {
+        const Axes target = target_of(p);
+        if (p.to.axis.any()) apply_corrector_gauges(p.to.axis);
+        first_move_ = false;
+        return pgp_block(p, target);
+    }
+    pgp::Error e;
+    if (!pgp_.idle(e)) return fail(e.code, e.detail), false;  // at the block that overflows
+    if (p.to.axis.any()) return comp_other_axes(target_of(p), p.to.axis);
+    return true;
+}
 
-    if (g52) {
-        // G40 and G52 in one block (the book's own form, %222 N170): the
-        // compensated profile ends at its last point before the G52 move.
-        if (comp_.on && !comp_exit(p, nullptr)) return false;
-        Axes mach = mach_;
-        for (int a = 0; a < kAxes; ++a)
-            if (p.to.axis[size_t(a)]) mach[size_t(a)] = p.to.val[size_t(a)];
-        if (!check_travel(mach)) return false;
-        if (!linear(modal_.motion, mach, true, p.to.axis)) return false;
-        // G96 starts again from the recomputed program X (turning.md §5.8).
-        modal_.css_x0 = modal_.css_pos0 = prog_[X];
-        return true;
+// G52: a move in machine coordinates.  With G40 in the same block (the book's
+// own form, %222 N170) the compensated profile ends at its last point first.
+bool Interpreter::g52_move(const Plan& p) {
+    if (comp_.on && !comp_exit(p, nullptr)) return false;
+    Axes mach = mach_;
+    for (size_t a = 0; a < size_t(kAxes); ++a)
+        if (p.to.axis[a]) mach[a] = p.to.val[a];
+    if (!check_travel(mach)) return false;
+    if (!linear(modal_.motion, mach, true, p.to.axis)) return false;
+    // G96 starts again from the recomputed program X (turning.md §5.8).
+    modal_.css_x0 = modal_.css_pos0 = prog_[X];
+    return true;
+}
+
+// A straight move under radius compensation: an element of the profile, or
+// a move of the other axes only.
+bool Interpreter::comp_line(const Plan& p, const Axes& target) {
+    comp::V2 s(prog_[size_t(comp_.a0)], prog_[size_t(comp_.a1)]);
+    comp::V2 e(target[size_t(comp_.a0)], target[size_t(comp_.a1)]);
+    if ((e - s).norm() > 1e-9 ||
+        (comp_.waiting_entry && (p.to.axis[size_t(comp_.a0)] || p.to.axis[size_t(comp_.a1)]))) {
+        comp::Elem line;
+        line.a = s;
+        line.b = e;
+        return comp_element(line, modal_.motion, target, 0);
     }
-    if (comp_.on && modal_.radcomp == 40) return comp_exit(p, &target);
-    if (p.g[23]) return arc3(p, target);
-    if (modal_.motion == 2 || modal_.motion == 3) return arc(p, target);
-    if (comp_.on) {
-        comp::V2 s(prog_[size_t(comp_.a0)], prog_[size_t(comp_.a1)]);
-        comp::V2 e(target[size_t(comp_.a0)], target[size_t(comp_.a1)]);
-        if ((e - s).norm() > 1e-9 || (comp_.waiting_entry && (p.to.axis[size_t(comp_.a0)] || p.to.axis[size_t(comp_.a1)]))) {
-            comp::Elem line;
-            line.a = s;
-            line.b = e;
-            return comp_element(line, modal_.motion, target, 0);
-        }
-        return comp_other_axes(target, p.to.axis);
-    }
+    return comp_other_axes(target, p.to.axis);
+}
+
+// A straight G0/G1 move without compensation; R- stops one tool radius short
+// of the point, R+ beyond it (milling.md §4.5).
+bool Interpreter::straight(const Plan& p, Axes target) {
     if (p.to.r_sign != 0 && modal_.d > 0) {
-        // R- stops one tool radius short of the point, R+ beyond it (milling.md §4.5).
         const Corrector& c = corr_[size_t(modal_.d)];
         double r = c.r + (m_.lathe ? 0 : c.dr);
         double len = linear_length(prog_, target);
