@@ -350,6 +350,17 @@ private:
     bool linear(int g, const Axes& target_prog, bool g52, const std::bitset<kAxes>& axes);
     bool g29_move(const Plan& p);
     bool arc(const Plan& p, const Axes& target_prog);
+    // The axes of a circle's plane and their centre words (motion.cpp).
+    struct ArcAxes {
+        int a0, a1, an, i0, i1, in;
+        bool helix;  // the normal axis moves too
+    };
+    bool arc_words(const Plan& p, const ArcAxes& ax);
+    bool arc_centre(const Plan& p, const ArcAxes& ax, const comp::V2& s, const comp::V2& e,
+                    comp::V2& c, double& r0, double& r1);
+    static double arc_sweep(const comp::V2& s, const comp::V2& e, const comp::V2& c,
+                            bool ccw);
+    static int helix_turns(double dz, double k, double th0);
     bool arc3(const Plan& p, const Axes& target_prog);
     bool emit_arc(int g, const Axes& target, int a0, int a1, double c0, double c1, double sweep_rad,
                   double r0, double r1, int helix_axis);

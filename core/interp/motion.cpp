@@ -366,10 +366,33 @@ bool Interpreter::finish_move(MoveEvent& e, const Axes& mach, const Axes& prog, 
 
 bool Interpreter::arc(const Plan& p, const Axes& target) {
     const bool lathe = m_.lathe;
-    int a0 = lathe ? Z : modal_.plane == 17 ? X : modal_.plane == 18 ? Z : Y;
-    int a1 = lathe ? X : modal_.plane == 17 ? Y : modal_.plane == 18 ? X : Z;
-    int an = lathe ? Y : modal_.plane == 17 ? Z : modal_.plane == 18 ? Y : X;
-    int i0 = ijk_index(a0), i1 = ijk_index(a1), in = ijk_index(an);
+    ArcAxes ax;
+    ax.a0 = lathe ? Z : modal_.plane == 17 ? X : modal_.plane == 18 ? Z : Y;
+    ax.a1 = lathe ? X : modal_.plane == 17 ? Y : modal_.plane == 18 ? X : Z;
+    ax.an = lathe ? Y : modal_.plane == 17 ? Z : modal_.plane == 18 ? Y : X;
+    ax.i0 = ijk_index(ax.a0), ax.i1 = ijk_index(ax.a1), ax.in = ijk_index(ax.an);
+    ax.helix = !lathe && p.to.axis[size_t(ax.an)];
+    if (!arc_words(p, ax)) return false;
+    const Eigen::Vector2d s(prog_[size_t(ax.a0)], prog_[size_t(ax.a1)]);
+    const Eigen::Vector2d e(target[size_t(ax.a0)], target[size_t(ax.a1)]);
+    const bool ccw = modal_.motion == 3;
+    Eigen::Vector2d c;
+    double r0, r1;
+    if (!arc_centre(p, ax, s, e, c, r0, r1)) return false;
+    double sw = arc_sweep(s, e, c, ccw);
+    if (ax.helix && p.to.ijk[size_t(ax.in)])
+        sw += (ccw ? 1 : -1) * 2 * kPi *
+              helix_turns(std::fabs(target[size_t(ax.an)] - prog_[size_t(ax.an)]),
+                          std::fabs(p.to.ijk_val[ax.in]), std::fabs(sw) * 180 / kPi);
+    if (comp_.on)
+        return comp_element(comp::Elem{.arc = true, .a = s, .b = e, .c = c, .sweep = sw}, modal_.motion, target, r0);
+    return emit_arc(modal_.motion, target, ax.a0, ax.a1, c.x(), c.y(), sw, r0, r1, ax.helix ? ax.an : -1);
+}
+
+// The words a G2/G3 block needs: both coordinates of the plane, and either
+// the centre or R; only the normal axis may move (a helix).
+bool Interpreter::arc_words(const Plan& p, const ArcAxes& ax) {
+    const int a0 = ax.a0, a1 = ax.a1, an = ax.an, i0 = ax.i0, i1 = ax.i1, in = ax.in;
     bool centre = p.to.ijk[size_t(i0)] && p.to.ijk[size_t(i1)];
     if (!p.to.axis[size_t(a0)] || !p.to.axis[size_t(a1)] || centre == p.to.has_r) {
         return fail(101, strf(tr("G%d needs %c%c and either %c%c or R, even if unchanged"), modal_.motion,
@@ -377,18 +400,19 @@ bool Interpreter::arc(const Plan& p, const Axes& target) {
                false;
     }
     for (int a = 0; a < kAxes; ++a)
-        if (p.to.axis[size_t(a)] && a != a0 && a != a1 && (lathe || a != an))
+        if (p.to.axis[size_t(a)] && a != a0 && a != a1 && (m_.lathe || a != an))
             return fail(106, strf(tr("axis %c in a circle: only the axis normal to the plane may move (helix)"),
                                   kAxisNames[size_t(a)])),
                    false;
-    bool helix = !lathe && p.to.axis[size_t(an)];
-    if (p.to.ijk[size_t(in)] && !helix)
+    if (p.to.ijk[size_t(in)] && !ax.helix)
         return fail(107, strf(tr("helix pitch %c without the %c end point"), 'I' + in, kAxisNames[size_t(an)])), false;
+    return true;
+}
 
-    Eigen::Vector2d s(prog_[size_t(a0)], prog_[size_t(a1)]), e(target[size_t(a0)], target[size_t(a1)]);
-    Eigen::Vector2d c;
-    double r0, r1;
-    bool ccw = modal_.motion == 3;
+// The centre and the radii at both ends, from R (the shorter arc) or from
+// the centre words.
+bool Interpreter::arc_centre(const Plan& p, const ArcAxes& ax, const comp::V2& s,
+                             const comp::V2& e, comp::V2& c, double& r0, double& r1) {
     if (p.to.has_r) {
         double d = (e - s).norm();
         double r = p.to.r;
@@ -399,20 +423,26 @@ bool Interpreter::arc(const Plan& p, const Axes& target) {
         // The shorter arc (004:622): the centre on the left of the chord for G3.
         double h = std::sqrt(std::max(0.0, r * r - d * d / 4));
         Eigen::Vector2d left(-(e - s).y() / d, (e - s).x() / d);
-        c = (s + e) / 2 + (ccw ? h : -h) * left;
+        c = (s + e) / 2 + (modal_.motion == 3 ? h : -h) * left;
         r0 = r1 = r;
-    } else {
-        c = Eigen::Vector2d(p.to.ijk_val[i0], p.to.ijk_val[i1]);
-        if (p.to.ijk_inc[size_t(i0)]) c.x() += s.x();
-        if (p.to.ijk_inc[size_t(i1)]) c.y() += s.y();
-        r0 = (s - c).norm();
-        r1 = (e - c).norm();
-        if (r0 < 1e-9) return fail(107, tr("circle centre on the start point")), false;
-        if (std::fabs(r0 - r1) > kArcTolerance + 1e-9)
-            return fail(107, strf(tr("circle end point inconsistent: start radius %s, end radius %s (more than 0.020 apart)"),
-                                  f3(r0).c_str(), f3(r1).c_str())),
-                   false;
+        return true;
     }
+    c = Eigen::Vector2d(p.to.ijk_val[ax.i0], p.to.ijk_val[ax.i1]);
+    if (p.to.ijk_inc[size_t(ax.i0)]) c.x() += s.x();
+    if (p.to.ijk_inc[size_t(ax.i1)]) c.y() += s.y();
+    r0 = (s - c).norm();
+    r1 = (e - c).norm();
+    if (r0 < 1e-9) return fail(107, tr("circle centre on the start point")), false;
+    if (std::fabs(r0 - r1) > kArcTolerance + 1e-9)
+        return fail(107, strf(tr("circle end point inconsistent: start radius %s, end radius %s (more than 0.020 apart)"),
+                              f3(r0).c_str(), f3(r1).c_str())),
+               false;
+    return true;
+}
+
+// The signed sweep from s to e about c: a full turn when they meet.
+double Interpreter::arc_sweep(const comp::V2& s, const comp::V2& e, const comp::V2& c,
+                              bool ccw) {
     double as = std::atan2(s.y() - c.y(), s.x() - c.x());
     double ae = std::atan2(e.y() - c.y(), e.x() - c.x());
     double sw = ae - as;
@@ -424,30 +454,24 @@ bool Interpreter::arc(const Plan& p, const Axes& target) {
         while (sw >= -1e-12) sw -= 2 * kPi;
         if (full) sw = -2 * kPi;
     }
-    if (helix && p.to.ijk[size_t(in)]) {
-        // The pitch chooses the number of extra turns (000:4745, 004:628).
-        double dz = std::fabs(target[size_t(an)] - prog_[size_t(an)]);
-        double k = std::fabs(p.to.ijk_val[in]);
-        double th0 = std::fabs(sw) * 180 / kPi;
-        if (dz > 1e-9 && k > 1e-9) {
-            int best = 0;
-            double err = 1e300;
-            for (int n = 0; n < 100000; ++n) {
-                double pitch = dz * 360.0 / (th0 + 360.0 * n);
-                double d = std::fabs(pitch - k);
-                if (d < err) {
-                    err = d;
-                    best = n;
-                } else {
-                    break;  // |pitch - k| decreases then increases
-                }
-            }
-            sw += (ccw ? 1 : -1) * 2 * kPi * best;
-        }
+    return sw;
+}
+
+// The extra turns of a helix: the number whose pitch is nearest the
+// programmed one (000:4745, 004:628).  dz: the rise, k: the pitch, th0: the
+// sweep in degrees.
+int Interpreter::helix_turns(double dz, double k, double th0) {
+    if (dz <= 1e-9 || k <= 1e-9) return 0;
+    int best = 0;
+    double err = 1e300;
+    for (int n = 0; n < 100000; ++n) {
+        double pitch = dz * 360.0 / (th0 + 360.0 * n);
+        double d = std::fabs(pitch - k);
+        if (d >= err) break;  // |pitch - k| decreases then increases
+        err = d;
+        best = n;
     }
-    if (comp_.on)
-        return comp_element(comp::Elem{.arc = true, .a = s, .b = e, .c = c, .sweep = sw}, modal_.motion, target, r0);
-    return emit_arc(modal_.motion, target, a0, a1, c.x(), c.y(), sw, r0, r1, helix ? an : -1);
+    return best;
 }
 
 bool Interpreter::arc3(const Plan& p, const Axes& target) {
