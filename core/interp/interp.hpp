@@ -313,8 +313,17 @@ private:
     bool call(const Plan& p);
     bool jump(long label);
     bool transfer(const Plan& p);
+    bool transfer_line(const ProgramText* target, size_t pos, size_t eol);
+    bool transfer_field(const ProgramText* target, bool is_l, long n, size_t field, size_t width,
+                        bool word_follows);
     // interp_g76.cpp: G76+ / G76- (program-flow.md §6.1-6.4)
     bool edit_program(const Block& b, const Plan& p);
+    bool edit_block_alone(const Block& b, char sign);
+    bool edit_whole_program(const Block& b, const Plan& p);
+    bool edit_line(const Block& b, const Plan& p);
+    bool inserted_words(const Block& b, const Block& ins, std::vector<std::pair<uint16_t, std::string>>& parts);
+    bool inserted_assigns(const Block& b, const Block& ins, std::vector<std::pair<uint16_t, std::string>>& parts);
+    bool inserted_reads_back(const Block& b, const std::string& out);
     bool edit_block_text(const Block& b, std::string& out);
     void text_spliced(const ProgramText* p, const Splice& s);
     bool end_of_frame();

@@ -64,62 +64,76 @@ bool Interpreter::transfer(const Plan& p) {
         from = a->offset;
         to = std::min(target->end, target->text->find('\n', b->offset));
     }
-    std::string& text = *target->text;
-    auto upper = [](char c) { return c >= 'A' && c <= 'Z'; };
-    auto digit = [](char c) { return c >= '0' && c <= '9'; };
-    size_t pos = from;
-    while (pos < to) {
-        size_t eol = std::min(to, text.find('\n', pos));
-        size_t i = pos;
-        auto spaces = [&]() {
-            while (i < eol && (text[i] == ' ' || text[i] == '\t')) ++i;
-        };
-        spaces();
-        if (i < eol && text[i] == '/') ++i;
-        spaces();
-        if (i < eol && text[i] == 'N' && i + 1 < eol && (digit(text[i + 1]) || text[i + 1] == ' ')) {
-            ++i;
-            spaces();
-            while (i < eol && digit(text[i])) ++i;
-        }
-        for (;;) {
-            spaces();
-            if (i + 1 >= eol || (text[i] != 'L' && text[i] != 'E') || !digit(text[i + 1])) break;
-            bool is_l = text[i] == 'L';
-            ++i;
-            long n = 0;
-            while (i < eol && digit(text[i])) n = n * 10 + (text[i++] - '0');
-            spaces();
-            if (i >= eol || text[i] != '=')
-                return fail(97, strf(tr("G76: no '=' after %c%ld"), is_l ? 'L' : 'E', n)), false;
-            size_t field = ++i;
-            while (i < eol && !upper(text[i]) && text[i] != '(' && text[i] != '\r') ++i;
-            size_t width = i - field;
-            if (width < 10)
-                return fail(97, strf(tr("G76: fewer than 10 characters reserved after %c%ld="), is_l ? 'L' : 'E', n)),
-                       false;
-            std::string value;
-            if (is_l) {
-                if (!LVars::valid(int(n))) return fail(91, strf(tr("G76: L%ld does not exist"), n)), false;
-                value = number_text(l_.v[size_t(n)], 6);
-            } else {
-                int64_t raw;
-                std::string why;
-                if (int rc = read_e(int(n), raw, why)) return fail(rc, "G76: " + why), false;
-                value = std::to_string(raw);
-            }
-            // Keep the separating space before the next word.
-            size_t room = (i < eol && upper(text[i])) ? width - 1 : width;
-            if (value.size() > room)
-                return fail(97, strf(tr("G76: the value %s does not fit the field after %c%ld"), value.c_str(),
-                                     is_l ? 'L' : 'E', n)),
-                       false;
-            value.resize(width, ' ');
-            text.replace(field, width, value);
-            if (mem_.find(target->number) == target) mem_.mark_changed(target->number);  // not an IMD fragment
-        }
+    for (size_t pos = from; pos < to;) {
+        const size_t eol = std::min(to, target->text->find('\n', pos));
+        if (!transfer_line(target, pos, eol)) return false;
         pos = eol + 1;
     }
+    return true;
+}
+
+namespace {
+bool digit(char c) { return c >= '0' && c <= '9'; }
+bool upper(char c) { return c >= 'A' && c <= 'Z'; }
+}  // namespace
+
+// The L and E assignments that open one line [pos, eol), after its label.
+bool Interpreter::transfer_line(const ProgramText* target, size_t pos, size_t eol) {
+    const std::string& text = *target->text;
+    size_t i = pos;
+    auto spaces = [&]() {
+        while (i < eol && (text[i] == ' ' || text[i] == '\t')) ++i;
+    };
+    spaces();
+    if (i < eol && text[i] == '/') ++i;
+    spaces();
+    if (i < eol && text[i] == 'N' && i + 1 < eol && (digit(text[i + 1]) || text[i + 1] == ' ')) {
+        ++i;
+        spaces();
+        while (i < eol && digit(text[i])) ++i;
+    }
+    for (;;) {
+        spaces();
+        if (i + 1 >= eol || (text[i] != 'L' && text[i] != 'E') || !digit(text[i + 1])) return true;
+        const bool is_l = text[i] == 'L';
+        ++i;
+        long n = 0;
+        while (i < eol && digit(text[i])) n = n * 10 + (text[i++] - '0');
+        spaces();
+        if (i >= eol || text[i] != '=')
+            return fail(97, strf(tr("G76: no '=' after %c%ld"), is_l ? 'L' : 'E', n)), false;
+        const size_t field = ++i;
+        while (i < eol && !upper(text[i]) && text[i] != '(' && text[i] != '\r') ++i;
+        // Keep the separating space before the next word.
+        const bool word_follows = i < eol && upper(text[i]);
+        if (!transfer_field(target, is_l, n, field, i - field, word_follows)) return false;
+    }
+}
+
+// Writes the value of Ln or En into its field of `width` characters.
+bool Interpreter::transfer_field(const ProgramText* target, bool is_l, long n, size_t field, size_t width,
+                                 bool word_follows) {
+    if (width < 10)
+        return fail(97, strf(tr("G76: fewer than 10 characters reserved after %c%ld="), is_l ? 'L' : 'E', n)),
+               false;
+    std::string value;
+    if (is_l) {
+        if (!LVars::valid(int(n))) return fail(91, strf(tr("G76: L%ld does not exist"), n)), false;
+        value = number_text(l_.v[size_t(n)], 6);
+    } else {
+        int64_t raw;
+        std::string why;
+        if (int rc = read_e(int(n), raw, why)) return fail(rc, "G76: " + why), false;
+        value = std::to_string(raw);
+    }
+    const size_t room = word_follows ? width - 1 : width;
+    if (value.size() > room)
+        return fail(97, strf(tr("G76: the value %s does not fit the field after %c%ld"), value.c_str(),
+                             is_l ? 'L' : 'E', n)),
+               false;
+    value.resize(width, ' ');
+    target->text->replace(field, width, value);
+    if (mem_.find(target->number) == target) mem_.mark_changed(target->number);  // not an IMD fragment
     return true;
 }
 
@@ -130,17 +144,41 @@ bool Interpreter::edit_block_text(const Block& b, std::string& out) {
     Diag d;
     if (!parse_block(raw, ins, d))
         return fail(d.code, "G76+: " + d.detail, b.g76_block_col - 1 + d.column), false;
-    auto col = [&](uint16_t c) { return b.g76_block_col - 1 + c; };
     if (ins.msg_channel >= 0)
         return fail(1, tr("G76+: a $ message cannot be inserted"), b.g76_block_col), false;
     if (ins.test.cmp != Cmp::none)
-        return fail(1, tr("G76+: a G79 condition cannot be inserted"), col(ins.test.col)), false;
+        return fail(1, tr("G76+: a G79 condition cannot be inserted"), b.g76_block_col - 1 + ins.test.col), false;
     if (ins.empty())
         return fail(2, tr("G76+ needs the block to insert after N.. (G76+ N100 G1 X10)"),
                     b.g76_block_col),
                false;
     // Words and assignments in the order they were written.
     std::vector<std::pair<uint16_t, std::string>> parts;
+    if (!inserted_words(b, ins, parts) || !inserted_assigns(b, ins, parts)) return false;
+    std::stable_sort(parts.begin(), parts.end(),
+                     [](const auto& x, const auto& y) { return x.first < y.first; });
+    if (ins.skip) out += '/';
+    for (size_t i = 0; i < parts.size(); ++i) {
+        if (i) out += ' ';
+        out += parts[i].second;
+    }
+    // The comments, as written (parse_block saw each one closed).
+    for (size_t i = raw.find('('); i != std::string_view::npos; i = raw.find('(', i)) {
+        size_t close = raw.find(')', i);
+        if (close == std::string_view::npos) break;
+        out += ' ';
+        out += raw.substr(i, close - i + 1);
+        i = close + 1;
+    }
+    if (!inserted_reads_back(b, out)) return false;
+    out += '\n';
+    return true;
+}
+
+// The words of the inserted block, their values computed now.
+bool Interpreter::inserted_words(const Block& b, const Block& ins,
+                                 std::vector<std::pair<uint16_t, std::string>>& parts) {
+    auto col = [&](uint16_t c) { return b.g76_block_col - 1 + c; };
     for (const Word& w : ins.words) {
         char letter = w.addr < 26 ? char('A' + w.addr) : 0;
         if (!letter || !listed_word(letter))
@@ -168,6 +206,13 @@ bool Interpreter::edit_block_text(const Block& b, std::string& out) {
                          : number_text(v, letter >= 'A' && letter <= 'C' ? 4 : 3);
         parts.emplace_back(w.col, std::move(t));
     }
+    return true;
+}
+
+// The assignments of the inserted block (L0-L19 only), their values computed now.
+bool Interpreter::inserted_assigns(const Block& b, const Block& ins,
+                                   std::vector<std::pair<uint16_t, std::string>>& parts) {
+    auto col = [&](uint16_t c) { return b.g76_block_col - 1 + c; };
     // Expressions read L0-L19 only.
     for (const Term& t : ins.terms)
         if ((t.v.kind == Operand::LVar && t.v.index > 19) || t.v.kind == Operand::EParam ||
@@ -183,24 +228,14 @@ bool Interpreter::edit_block_text(const Block& b, std::string& out) {
             return fail(rc, "G76+: " + why, col(a.col)), false;
         parts.emplace_back(a.col, "L" + std::to_string(a.target.index) + "=" + number_text(v, 6));
     }
-    std::stable_sort(parts.begin(), parts.end(),
-                     [](const auto& x, const auto& y) { return x.first < y.first; });
-    if (ins.skip) out += '/';
-    for (size_t i = 0; i < parts.size(); ++i) {
-        if (i) out += ' ';
-        out += parts[i].second;
-    }
-    // The comments, as written (parse_block saw each one closed).
-    for (size_t i = raw.find('('); i != std::string_view::npos; i = raw.find('(', i)) {
-        size_t close = raw.find(')', i);
-        if (close == std::string_view::npos) break;
-        out += ' ';
-        out += raw.substr(i, close - i + 1);
-        i = close + 1;
-    }
-    // What is written must read back: the block length, the digits of each
-    // address (an L value may be too large for X).
+    return true;
+}
+
+// What is written must read back: the block length, the digits of each
+// address (an L value may be too large for X).
+bool Interpreter::inserted_reads_back(const Block& b, const std::string& out) {
     Block back;
+    Diag d;
     if (!parse_block(out, back, d))
         return fail(d.code, strf(tr("G76+: the block to insert, %s: %s"), out.c_str(), d.detail.c_str()), b.g76_block_col),
                false;
@@ -212,14 +247,26 @@ bool Interpreter::edit_block_text(const Block& b, std::string& out) {
             return false;
         }
     }
-    out += '\n';
     return true;
 }
 
+// G76+ / G76- (000:7037-7130): creates or deletes a program, or inserts or
+// deletes one line of a program in memory.
 bool Interpreter::edit_program(const Block& b, const Plan& p) {
     const char sign = p.g76.sign;
     if (m_.model == 1020) return fail(4, strf(tr("G76%c needs a NUM 1040 or 1060 (000:555)"), sign)), false;
-    // The block holds nothing else: its label, G76±, one H and the pointed N.
+    if (!edit_block_alone(b, sign)) return false;
+    // It moves nothing: under G41/G42 it counts among the blocks without motion.
+    if (modal_.radcomp != 40 && ++nonmotion_in_comp_ > 2)
+        return fail(140, tr("more than 2 blocks in a row without motion in the plane under radius compensation")),
+               false;
+    if (p.g76.nn > 1) return fail(3, strf(tr("G76%c points at one block N.."), sign), b.words.back().col), false;
+    if (p.g76.nn == 0) return edit_whole_program(b, p);
+    return edit_line(b, p);
+}
+
+// The block holds nothing else: its label, G76±, one H and the pointed N.
+bool Interpreter::edit_block_alone(const Block& b, char sign) {
     size_t g76_at = b.words.size();  // none yet
     int hs = 0;
     for (size_t i = 0; i < b.words.size(); ++i) {
@@ -236,42 +283,43 @@ bool Interpreter::edit_program(const Block& b, const Plan& p) {
     if (!b.assigns.empty())
         return fail(3, strf(tr("G76%c takes only H.. and N.. [+k]: no assignment in its block"), sign), b.assigns[0].col),
                false;
-    // It moves nothing: under G41/G42 it counts among the blocks without motion.
-    if (modal_.radcomp != 40 && ++nonmotion_in_comp_ > 2)
-        return fail(140, tr("more than 2 blocks in a row without motion in the plane under radius compensation")),
-               false;
-    if (p.g76.nn > 1) return fail(3, strf(tr("G76%c points at one block N.."), sign), b.words.back().col), false;
-    const size_t quota = size_t(m_.program_memory_kb * 1024);
+    return true;
+}
 
-    if (p.g76.nn == 0) {
-        // Creating or deleting a whole program: H is the last word (000:7037, 7068).
-        if (p.g76.h < 0)
-            return fail(2, strf(tr("G76%c needs the program number H (G76%c H300)"), sign, sign)), false;
-        if (b.words.back().addr != addr1('H'))
-            return fail(3, strf(tr("G76%c: the program number H must be the last word of the block"), sign),
-                        b.words.back().col),
+// Creating or deleting a whole program: H is the last word (000:7037, 7068).
+bool Interpreter::edit_whole_program(const Block& b, const Plan& p) {
+    const char sign = p.g76.sign;
+    const size_t quota = size_t(m_.program_memory_kb * 1024);
+    if (p.g76.h < 0)
+        return fail(2, strf(tr("G76%c needs the program number H (G76%c H300)"), sign, sign)), false;
+    if (b.words.back().addr != addr1('H'))
+        return fail(3, strf(tr("G76%c: the program number H must be the last word of the block"), sign),
+                    b.words.back().col),
+               false;
+    if (sign == '+') {
+        if (mem_.find(p.g76.h))
+            return fail(err::kProgramExists, strf(tr("G76+ H%d: program %%%d is already in memory"), p.g76.h, p.g76.h)),
                    false;
-        if (sign == '+') {
-            if (mem_.find(p.g76.h))
-                return fail(err::kProgramExists, strf(tr("G76+ H%d: program %%%d is already in memory"), p.g76.h, p.g76.h)),
-                       false;
-            if (mem_.size() + 16 > std::max(quota, loaded_size_))
-                return fail(36, strf(tr("G76+: the part-program memory is full (%zu KB)"), quota / 1024)), false;
-            mem_.create(p.g76.h);
-            return true;
-        }
-        const ProgramText* t = mem_.find(p.g76.h);
-        if (!t)
-            return fail(25, strf(tr("G76- H%d: no program %%%d"), p.g76.h, p.g76.h)), false;
-        bool running = t == main_ || std::any_of(stack_.begin(), stack_.end(),
-                                                 [&](const Frame& f) { return f.prog == t; });
-        if (running)
-            return fail(err::kProgramInUse, strf(tr("G76- H%d: program %%%d is running"), p.g76.h, p.g76.h)), false;
-        mem_.remove(p.g76.h);
+        if (mem_.size() + 16 > std::max(quota, loaded_size_))
+            return fail(36, strf(tr("G76+: the part-program memory is full (%zu KB)"), quota / 1024)), false;
+        mem_.create(p.g76.h);
         return true;
     }
+    const ProgramText* t = mem_.find(p.g76.h);
+    if (!t)
+        return fail(25, strf(tr("G76- H%d: no program %%%d"), p.g76.h, p.g76.h)), false;
+    bool running = t == main_ || std::any_of(stack_.begin(), stack_.end(),
+                                             [&](const Frame& f) { return f.prog == t; });
+    if (running)
+        return fail(err::kProgramInUse, strf(tr("G76- H%d: program %%%d is running"), p.g76.h, p.g76.h)), false;
+    mem_.remove(p.g76.h);
+    return true;
+}
 
-    // A block: the program H (or this one), the pointed line N.. and k lines on.
+// A line: the program H (or this one), the pointed line N.. and k lines on;
+// G76+ inserts after it, G76- deletes it.
+bool Interpreter::edit_line(const Block& b, const Plan& p) {
+    const char sign = p.g76.sign;
     const ProgramText* t = stack_.back().prog;
     if (p.g76.h >= 0 && !(t = mem_.find(p.g76.h)))
         return fail(25, strf(tr("G76%c H%d: no program %%%d"), sign, p.g76.h, p.g76.h)), false;
@@ -311,11 +359,11 @@ bool Interpreter::edit_program(const Block& b, const Plan& p) {
     const bool before_first = count < 0;  // N0 virtual, no +k: insert at the start
     if (!before_first && start >= t->end)
         return fail(25, strf(tr("G76%c: program %%%d has no line %d after N%ld"), sign, t->number, k, n)), false;
-
     Splice s;
     if (sign == '+') {
         std::string text;
         if (!edit_block_text(b, text)) return false;
+        const size_t quota = size_t(m_.program_memory_kb * 1024);
         if (mem_.size() + text.size() > std::max(quota, loaded_size_))
             return fail(36, strf(tr("G76+: the part-program memory is full (%zu KB)"), quota / 1024)), false;
         s = mem_.splice(t, before_first ? start : next_line(start), 0, text);
