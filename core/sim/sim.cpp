@@ -188,38 +188,20 @@ bool Sim::cycle_start(std::string& why) {
             break;
     }
     message_.clear();
-    auto need_program = [&]() {
-        if (selected_ >= 0 && mem_.find(selected_)) return true;
-        why = tr("no program selected: choose one on the DIR page or with :load N");
-        return false;
-    };
     switch (mode_) {
         case Mode::automatic:
         case Mode::single:
         case Mode::dry:
-            if (!need_program()) return false;
+            if (!need_program(why)) return false;
             in_->start(selected_);
             new_path(op());
             break;
-        case Mode::test: {
-            if (!need_program()) return false;
-            RunOptions o = in_->options();
-            o.require_homing = false;
-            new_path(in_->program_pos());
-            // TEST changes nothing: its own correctors, frames, variables and
-            // program memory (a G76+/G76- it runs edits a copy).
-            test_.reset();
-            test_mem_ = std::make_unique<ProgramMemory>(mem_.clone());
-            lc_ = LineCache{};
-            test_ = std::make_unique<Interpreter>(m_, *test_mem_, path_ ? static_cast<MachineSink&>(*path_) : *null_, o);
-            for (int d = 0; d < 256; ++d) test_->corrector(d) = in_->corrector(d);
-            test_->frames_mut() = in_->frames();
-            test_->start(selected_);
-            test_blocks_ = 0;
+        case Mode::test:
+            if (!need_program(why)) return false;
+            start_test();
             break;
-        }
         case Mode::rns:
-            if (!need_program()) return false;
+            if (!need_program(why)) return false;
             if (search_n_ < 0) {
                 why = tr("RNS: type the N number of the block to search first");
                 return false;
@@ -234,23 +216,7 @@ bool Sim::cycle_start(std::string& why) {
             }
             in_->start_imd(imd_.get());
             break;
-        case Mode::pom: {
-            // Lathe: X retracts first; mill: Z (the tool axis) first (safe order).
-            std::vector<int> order = m_.lathe ? std::vector<int>{X, Z} : std::vector<int>{Z, X, Y};
-            for (int a = 0; a < kAxes; ++a)
-                if (std::find(order.begin(), order.end(), a) == order.end()) order.push_back(a);
-            Axes planned = in_->machine_pos();
-            for (int a : order) {
-                if (!m_.has(a)) continue;
-                Axes to = planned;
-                to[size_t(a)] = m_.home[size_t(a)];
-                queue_move_to(to, 0, Loc{}, m_.axes[size_t(a)].rapid, true, a);
-                planned = to;
-            }
-            manual_ = true;
-            state_ = RunState::running;
-            return true;
-        }
+        case Mode::pom: start_pom(); return true;
         case Mode::jog:
         case Mode::inc:
             why = tr("JOG/INC: move an axis with the jog keys or :jog AXIS DIST");
@@ -266,6 +232,46 @@ bool Sim::cycle_start(std::string& why) {
     run_warning_count_ = 0;
     state_ = RunState::running;
     return true;
+}
+
+bool Sim::need_program(std::string& why) const {
+    if (selected_ >= 0 && mem_.find(selected_)) return true;
+    why = tr("no program selected: choose one on the DIR page or with :load N");
+    return false;
+}
+
+// TEST changes nothing: its own correctors, frames, variables and program
+// memory (a G76+/G76- it runs edits a copy).
+void Sim::start_test() {
+    RunOptions o = in_->options();
+    o.require_homing = false;
+    new_path(in_->program_pos());
+    test_.reset();
+    test_mem_ = std::make_unique<ProgramMemory>(mem_.clone());
+    lc_ = LineCache{};
+    test_ = std::make_unique<Interpreter>(m_, *test_mem_, path_ ? static_cast<MachineSink&>(*path_) : *null_, o);
+    for (int d = 0; d < 256; ++d) test_->corrector(d) = in_->corrector(d);
+    test_->frames_mut() = in_->frames();
+    test_->start(selected_);
+    test_blocks_ = 0;
+}
+
+// POM: each axis to its home, one after the other.  Lathe: X retracts first;
+// mill: Z (the tool axis) first (safe order).
+void Sim::start_pom() {
+    std::vector<int> order = m_.lathe ? std::vector<int>{X, Z} : std::vector<int>{Z, X, Y};
+    for (int a = 0; a < kAxes; ++a)
+        if (std::find(order.begin(), order.end(), a) == order.end()) order.push_back(a);
+    Axes planned = in_->machine_pos();
+    for (int a : order) {
+        if (!m_.has(a)) continue;
+        Axes to = planned;
+        to[size_t(a)] = m_.home[size_t(a)];
+        queue_move_to(to, 0, Loc{}, m_.axes[size_t(a)].rapid, true, a);
+        planned = to;
+    }
+    manual_ = true;
+    state_ = RunState::running;
 }
 
 // A run of the selected program starts a new drawing, with the program's EM+
@@ -615,6 +621,24 @@ void Sim::raise_from_interp() {
 }
 
 // The queue is empty: runs the next block, or settles the state.
+// RNS: the state is rebuilt up to the block; the axes rejoin its start.
+void Sim::rns_found(int next_line) {
+    searching_ = false;
+    queue_move_to(in_->machine_pos(), 0, in_->location(), 0, false, X);
+    Ev& rejoin = q_.back();
+    rejoin.m.seconds = 0;
+    for (int a = 0; a < kAxes; ++a)
+        if (m_.has(a) && m_.axes[size_t(a)].rapid > 0)
+            rejoin.m.seconds = std::max(rejoin.m.seconds, std::abs(rejoin.m.to_mach[size_t(a)] - om_[size_t(a)]) /
+                                                              m_.axes[size_t(a)].rapid * 60.0);
+    rejoin.m.to_prog = in_->program_pos();
+    rejoin.feed_move = false;
+    mode_ = Mode::automatic;
+    state_ = RunState::stopped;
+    loc_ = Loc{in_->location().prog, next_line, search_n_};
+    message_ = strf(tr("RNS: N%ld found, state rebuilt; Cycle Start rejoins it, AUTO"), search_n_);
+}
+
 bool Sim::step_interp(long& budget) {
     if (pending_alarm_) {
         pending_alarm_ = false;
@@ -636,21 +660,7 @@ bool Sim::step_interp(long& budget) {
     if (budget <= 0) return false;
     int next_line = 0;
     if (searching_ && in_->next_label(&next_line) == search_n_) {
-        // RNS: the state is rebuilt up to the block; the axes rejoin its start.
-        searching_ = false;
-        queue_move_to(in_->machine_pos(), 0, in_->location(), 0, false, X);
-        Ev& rejoin = q_.back();
-        rejoin.m.seconds = 0;
-        for (int a = 0; a < kAxes; ++a)
-            if (m_.has(a) && m_.axes[size_t(a)].rapid > 0)
-                rejoin.m.seconds = std::max(rejoin.m.seconds, std::abs(rejoin.m.to_mach[size_t(a)] - om_[size_t(a)]) /
-                                                                  m_.axes[size_t(a)].rapid * 60.0);
-        rejoin.m.to_prog = in_->program_pos();
-        rejoin.feed_move = false;
-        mode_ = Mode::automatic;
-        state_ = RunState::stopped;
-        loc_ = Loc{in_->location().prog, next_line, search_n_};
-        message_ = strf(tr("RNS: N%ld found, state rebuilt; Cycle Start rejoins it, AUTO"), search_n_);
+        rns_found(next_line);
         return false;
     }
     --budget;

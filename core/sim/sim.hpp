@@ -177,6 +177,10 @@ private:
     }
     void push(Ev e);
     void new_path(const Axes& start);
+    bool need_program(std::string& why) const;
+    void start_test();
+    void start_pom();
+    void rns_found(int next_line);
     bool begin_next();              // takes the next event; false if none
     void finish_current();          // the current event is done
     double duration(const Ev& e) const;
