@@ -349,13 +349,14 @@ private:
 
     // motion.cpp
     bool do_motion(const Plan& p);
-    Axes target_of(const Plan& p) const;
-    bool motion_allowed(const Plan& p);
-    std::optional<bool> motion_family(const Plan& p);
-    bool pgp_motion(const Plan& p);
-    bool g52_move(const Plan& p);
-    bool comp_line(const Plan& p, const Axes& target);
-    bool straight(const Plan& p, Axes target);
+    // Inlined into do_motion, which every block runs (tests/perf).
+    [[gnu::always_inline]] inline Axes target_of(const Plan& p) const;
+    [[gnu::always_inline]] inline bool motion_allowed(const Plan& p);
+    [[gnu::always_inline]] inline std::optional<bool> motion_family(const Plan& p);
+    inline bool pgp_motion(const Plan& p);
+    inline bool g52_move(const Plan& p);
+    inline bool comp_line(const Plan& p, const Axes& target);
+    [[gnu::always_inline]] inline bool straight(const Plan& p, Axes target);
     bool linear(int g, const Axes& target_prog, bool g52, const std::bitset<kAxes>& axes);
     bool g29_move(const Plan& p);
     bool arc(const Plan& p, const Axes& target_prog);
@@ -364,10 +365,10 @@ private:
         int a0, a1, an, i0, i1, in;
         bool helix;  // the normal axis moves too
     };
-    bool arc_words(const Plan& p, const ArcAxes& ax);
-    bool arc_centre(const Plan& p, const ArcAxes& ax, const comp::V2& s, const comp::V2& e,
+    [[gnu::always_inline]] inline bool arc_words(const Plan& p, const ArcAxes& ax);
+    [[gnu::always_inline]] inline bool arc_centre(const Plan& p, const ArcAxes& ax, const comp::V2& s, const comp::V2& e,
                     comp::V2& c, double& r0, double& r1);
-    static double arc_sweep(const comp::V2& s, const comp::V2& e, const comp::V2& c,
+    static inline double arc_sweep(const comp::V2& s, const comp::V2& e, const comp::V2& c,
                             bool ccw);
     static int helix_turns(double dz, double k, double th0);
     bool arc3(const Plan& p, const Axes& target_prog);

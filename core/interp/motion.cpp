@@ -125,7 +125,7 @@ void Interpreter::warn_idle_words(const Plan& p) {
 
 // The target of a block in program coordinates: its axis words over the
 // current position.
-Axes Interpreter::target_of(const Plan& p) const {
+inline Axes Interpreter::target_of(const Plan& p) const {
     Axes target = prog_;
     for (size_t a = 0; a < size_t(kAxes); ++a)
         if (p.to.axis[a]) target[a] = p.to.inc[a] ? prog_[a] + p.to.val[a] : p.to.val[a];
@@ -161,7 +161,7 @@ bool Interpreter::do_motion(const Plan& p) {
 
 // What a block may not do before it moves: a third block without motion in
 // the plane under compensation, a G52 move that cannot be made.
-bool Interpreter::motion_allowed(const Plan& p) {
+inline bool Interpreter::motion_allowed(const Plan& p) {
     const bool comp = modal_.radcomp != 40;
     int a0 = m_.lathe ? Z : modal_.plane == 17 ? X : modal_.plane == 18 ? Z : Y;
     int a1 = m_.lathe ? X : modal_.plane == 17 ? Y : modal_.plane == 18 ? X : Z;
@@ -184,7 +184,7 @@ bool Interpreter::motion_allowed(const Plan& p) {
 // The blocks that a family of functions runs: G29, the end of a compensated
 // profile, splines, turning cycles, pockets, drilling cycles and PGP.  No
 // value: the block is a plain move.
-std::optional<bool> Interpreter::motion_family(const Plan& p) {
+inline std::optional<bool> Interpreter::motion_family(const Plan& p) {
     const bool g52 = p.g[52];
     if (modal_.radcomp == 29 && !g52) return g29_move(p);
     // The end of a compensated profile: held PGP elements are resolved first.
@@ -212,7 +212,7 @@ std::optional<bool> Interpreter::motion_family(const Plan& p) {
 
 // A block while PGP may hold elements: an element in the plane, or a move out
 // of it made when the held elements are out.
-bool Interpreter::pgp_motion(const Plan& p) {
+inline bool Interpreter::pgp_motion(const Plan& p) {
     int a0, a1;
     plane_axes(a0, a1);
     if (p.pgp.any || p.to.axis[size_t(a0)] || p.to.axis[size_t(a1)] || p.to.ijk.any() || p.to.has_r) {
@@ -229,7 +229,7 @@ bool Interpreter::pgp_motion(const Plan& p) {
 
 // G52: a move in machine coordinates.  With G40 in the same block (the book's
 // own form, %222 N170) the compensated profile ends at its last point first.
-bool Interpreter::g52_move(const Plan& p) {
+inline bool Interpreter::g52_move(const Plan& p) {
     if (comp_.on && !comp_exit(p, nullptr)) return false;
     Axes mach = mach_;
     for (size_t a = 0; a < size_t(kAxes); ++a)
@@ -243,7 +243,7 @@ bool Interpreter::g52_move(const Plan& p) {
 
 // A straight move under radius compensation: an element of the profile, or
 // a move of the other axes only.
-bool Interpreter::comp_line(const Plan& p, const Axes& target) {
+inline bool Interpreter::comp_line(const Plan& p, const Axes& target) {
     comp::V2 s(prog_[size_t(comp_.a0)], prog_[size_t(comp_.a1)]);
     comp::V2 e(target[size_t(comp_.a0)], target[size_t(comp_.a1)]);
     if ((e - s).norm() > 1e-9 ||
@@ -258,7 +258,7 @@ bool Interpreter::comp_line(const Plan& p, const Axes& target) {
 
 // A straight G0/G1 move without compensation; R- stops one tool radius short
 // of the point, R+ beyond it (milling.md §4.5).
-bool Interpreter::straight(const Plan& p, Axes target) {
+inline bool Interpreter::straight(const Plan& p, Axes target) {
     if (p.to.r_sign != 0 && modal_.d > 0) {
         const Corrector& c = corr_[size_t(modal_.d)];
         double r = c.r + (m_.lathe ? 0 : c.dr);
@@ -391,7 +391,7 @@ bool Interpreter::arc(const Plan& p, const Axes& target) {
 
 // The words a G2/G3 block needs: both coordinates of the plane, and either
 // the centre or R; only the normal axis may move (a helix).
-bool Interpreter::arc_words(const Plan& p, const ArcAxes& ax) {
+inline bool Interpreter::arc_words(const Plan& p, const ArcAxes& ax) {
     const int a0 = ax.a0, a1 = ax.a1, an = ax.an, i0 = ax.i0, i1 = ax.i1, in = ax.in;
     bool centre = p.to.ijk[size_t(i0)] && p.to.ijk[size_t(i1)];
     if (!p.to.axis[size_t(a0)] || !p.to.axis[size_t(a1)] || centre == p.to.has_r) {
@@ -411,7 +411,7 @@ bool Interpreter::arc_words(const Plan& p, const ArcAxes& ax) {
 
 // The centre and the radii at both ends, from R (the shorter arc) or from
 // the centre words.
-bool Interpreter::arc_centre(const Plan& p, const ArcAxes& ax, const comp::V2& s,
+inline bool Interpreter::arc_centre(const Plan& p, const ArcAxes& ax, const comp::V2& s,
                              const comp::V2& e, comp::V2& c, double& r0, double& r1) {
     if (p.to.has_r) {
         double d = (e - s).norm();
@@ -441,7 +441,7 @@ bool Interpreter::arc_centre(const Plan& p, const ArcAxes& ax, const comp::V2& s
 }
 
 // The signed sweep from s to e about c: a full turn when they meet.
-double Interpreter::arc_sweep(const comp::V2& s, const comp::V2& e, const comp::V2& c,
+inline double Interpreter::arc_sweep(const comp::V2& s, const comp::V2& e, const comp::V2& c,
                               bool ccw) {
     double as = std::atan2(s.y() - c.y(), s.x() - c.x());
     double ae = std::atan2(e.y() - c.y(), e.x() - c.x());
