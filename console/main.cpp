@@ -113,51 +113,57 @@ void translate_cli(CLI::App& app) {
         return cli_error_text(e.what()) + "\n" + tr("Run with --help for more information.") + "\n";
     });
 }
-}  // namespace
 
-int main(int argc, char** argv) {
-    if (!setup_language(argc, argv)) return cli::kUsage;
-    CLI::App app{tr("pupitre - the operator panel of a NUM 1020/1040/1060 CNC, with the machine simulated")};
-    app.set_version_flag("--version", std::string("pupitre ") + PUPITRE_VERSION,
-                         tr("Display program version information and exit"));
-    app.require_subcommand(0, 1);
-    // --db is the program's option; run and check pass it up when given after them.
-    app.fallthrough();
-    translate_cli(app);
+// What the command line fills in. CLI11 keeps pointers to these fields: the
+// object stays where main() made it.
+struct CommandLine {
     std::string lang;  // read by setup_language() already; here for --help and the parser
-    app.add_option("--lang", lang,
+    std::string db;
+    cli::ConsoleArgs ca;
+    cli::RunArgs ra;
+    cli::PlotArgs pa;
+    cli::StoreArgs sa;
+    std::vector<std::string> numbers;  // as typed, checked after parsing
+    std::string number;
+};
+
+// The program's own options: --lang, --db, and the console's.
+void add_program_options(CLI::App& app, CommandLine& c) {
+    app.add_option("--lang", c.lang,
                    tr("the language of the texts people read: en or fr (default: LANGUAGE, LC_ALL, "
                       "LC_MESSAGES, LANG; else en)"))
         ->type_name("LANG");
-    std::string db;
     app.add_option(
-           "--db", db,
+           "--db", c.db,
            tr("the program store (default $XDG_DATA_HOME/pupitre/pupitre.db, created on first use); "
            "run and check use a store only when given"))
         ->type_name("FILE");
 
-    cli::ConsoleArgs ca;
+    cli::ConsoleArgs& ca = c.ca;
     app.add_option("--machine", ca.machine,
                    tr("the console's machine: lathe, mill, mill4, mill5, a stored profile or a .machine file "
                    "(default: the last one used, else lathe)"));
     app.add_option("--theme", ca.theme, tr("the console's colours: colour, mono or phosphor (default colour; mono when NO_COLOR is set)"));
     app.add_flag("--ascii", ca.ascii, tr("draw the console with ASCII only, even on a UTF-8 terminal"));
+}
 
-    cli::RunArgs ra;
-    auto add_common = [&](CLI::App* sub) {
-        sub->add_option("--machine", ra.machine,
-                        tr("machine profile: lathe, mill, mill4, mill5, or a .machine file (default lathe)"));
-        sub->add_option("--set", ra.sets, tr("seed the machine before the run: PREF.X=-120.5, D1.R=4, L5=2, E80000=18000"))
-            ->type_name("NAME=VALUE")
-            ->allow_extra_args(false);
-        sub->add_flag("--block-skip", ra.block_skip, tr("skip the blocks that start with '/'"));
-        sub->add_option("--max-blocks", ra.max_blocks, tr("stop with error 1001 after this many blocks, or twice as many moves (default 20000000)"));
-        sub->add_option("files", ra.files, tr("program files; the first program of the first file is run"))
-            ->required()
-            ->check(existing_file());
-    };
+// The options run and check share.
+void add_run_options(CLI::App* sub, cli::RunArgs& ra) {
+    sub->add_option("--machine", ra.machine,
+                    tr("machine profile: lathe, mill, mill4, mill5, or a .machine file (default lathe)"));
+    sub->add_option("--set", ra.sets, tr("seed the machine before the run: PREF.X=-120.5, D1.R=4, L5=2, E80000=18000"))
+        ->type_name("NAME=VALUE")
+        ->allow_extra_args(false);
+    sub->add_flag("--block-skip", ra.block_skip, tr("skip the blocks that start with '/'"));
+    sub->add_option("--max-blocks", ra.max_blocks, tr("stop with error 1001 after this many blocks, or twice as many moves (default 20000000)"));
+    sub->add_option("files", ra.files, tr("program files; the first program of the first file is run"))
+        ->required()
+        ->check(existing_file());
+}
+
+CLI::App* add_run(CLI::App& app, cli::RunArgs& ra) {
     CLI::App* run = app.add_subcommand("run", tr("dry-run a program and print a summary, or a trace"));
-    add_common(run);
+    add_run_options(run, ra);
     run->add_flag("--trace", ra.trace, tr("one JSON line per machine event"));
     run->add_flag("--json", ra.json, tr("the summary as JSON"));
     run->add_flag("--optional-stop", ra.optional_stop, tr("M01 stops (the optional-stop switch is on)"));
@@ -167,9 +173,10 @@ int main(int argc, char** argv) {
         ->type_name("WHAT");
     run->add_option("--part-out", ra.part_out, tr("write the cut part: its half-section as (Z, R) points, or SVG if FILE ends in .svg"))
         ->type_name("FILE");
-    CLI::App* check = app.add_subcommand("check", tr("report every problem a dry run would meet, without a trace"));
-    add_common(check);
-    cli::PlotArgs pa;
+    return run;
+}
+
+CLI::App* add_plot(CLI::App& app, cli::PlotArgs& pa) {
     CLI::App* plot = app.add_subcommand("plot", tr("draw the toolpath of a dry run as SVG, PNG or PDF"));
     plot->add_option("--machine", pa.machine,
                      tr("machine profile: lathe, mill, mill4, mill5, or a .machine file (default lathe)"));
@@ -187,10 +194,18 @@ int main(int argc, char** argv) {
     plot->add_option("files", pa.files, tr("program files; the first program of the first file is run"))
         ->required()
         ->check(existing_file());
+    return plot;
+}
 
-    cli::StoreArgs sa;
-    std::vector<std::string> numbers;  // as typed, checked after parsing
-    std::string number;
+// A subcommand and what runs it.
+struct Command {
+    CLI::App* sub;
+    int (*run)(const CommandLine& c);
+};
+
+// import, export, list, rm, history, restore: the program store.
+void add_store(CLI::App& app, CommandLine& c, std::vector<Command>& commands) {
+    cli::StoreArgs& sa = c.sa;
     CLI::App* imp =
         // xgettext:no-c-format
         app.add_subcommand("import", tr("store the % programs of files (one transaction for all)"));
@@ -201,17 +216,77 @@ int main(int argc, char** argv) {
     imp->add_option("--number", sa.number, tr("the number for a file with no % line"))->type_name("N");
     CLI::App* exp =
         app.add_subcommand("export", tr("write stored programs exactly as imported or saved"));
-    exp->add_option("numbers", numbers, tr("program numbers, written one after the other"))->required();
+    exp->add_option("numbers", c.numbers, tr("program numbers, written one after the other"))->required();
     exp->add_option("-o,--output", sa.output, tr("write to FILE instead of the standard output"))
         ->type_name("FILE");
     CLI::App* list = app.add_subcommand("list", tr("list the stored programs"));
     CLI::App* rm = app.add_subcommand("rm", tr("delete a stored program (its history stays)"));
-    rm->add_option("number", number, tr("program number"))->required();
+    rm->add_option("number", c.number, tr("program number"))->required();
     CLI::App* hist = app.add_subcommand("history", tr("the revisions of a stored program"));
-    hist->add_option("number", number, tr("program number"))->required();
+    hist->add_option("number", c.number, tr("program number"))->required();
     CLI::App* rest = app.add_subcommand("restore", tr("make an earlier revision current again"));
-    rest->add_option("number", number, tr("program number"))->required();
+    rest->add_option("number", c.number, tr("program number"))->required();
     rest->add_option("revision", sa.revision, tr("revision (see history)"))->required();
+    commands.push_back({imp, [](const CommandLine& k) { return cli::store_import(k.sa); }});
+    commands.push_back({exp, [](const CommandLine& k) { return cli::store_export(k.sa); }});
+    commands.push_back({list, [](const CommandLine& k) { return cli::store_list(k.sa); }});
+    commands.push_back({rm, [](const CommandLine& k) { return cli::store_rm(k.sa); }});
+    commands.push_back({hist, [](const CommandLine& k) { return cli::store_history(k.sa); }});
+    commands.push_back({rest, [](const CommandLine& k) { return cli::store_restore(k.sa); }});
+}
+
+// The program numbers as typed (300 or %300), into sa.numbers; false (and
+// says which) when one is not a number.
+bool read_numbers(CommandLine& c) {
+    if (!c.number.empty()) c.numbers.push_back(c.number);
+    for (const auto& t : c.numbers) {
+        int n = 0;
+        if (!parse_number(t, n)) {
+            std::fprintf(stderr, tr("pupitre: '%s' is not a program number\n"), t.c_str());
+            return false;
+        }
+        c.sa.numbers.push_back(n);
+    }
+    return true;
+}
+
+// The subcommand given, else the console; an exception is an internal error.
+int dispatch(CommandLine& c, const std::vector<Command>& commands) {
+    try {
+        for (const Command& k : commands)
+            if (*k.sub) return k.run(c);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, tr("pupitre: internal error: %s\n"), e.what());
+        return cli::kSoftware;
+    }
+    c.ca.db = c.db;
+    try {
+        return cli::console(c.ca);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, tr("pupitre: internal error: %s\n"), e.what());
+        return cli::kSoftware;
+    }
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (!setup_language(argc, argv)) return cli::kUsage;
+    CLI::App app{tr("pupitre - the operator panel of a NUM 1020/1040/1060 CNC, with the machine simulated")};
+    app.set_version_flag("--version", std::string("pupitre ") + PUPITRE_VERSION,
+                         tr("Display program version information and exit"));
+    app.require_subcommand(0, 1);
+    // --db is the program's option; run and check pass it up when given after them.
+    app.fallthrough();
+    translate_cli(app);
+    CommandLine c;
+    add_program_options(app, c);
+    std::vector<Command> commands;
+    commands.push_back({add_run(app, c.ra), [](const CommandLine& k) { return cli::run(k.ra); }});
+    CLI::App* check = app.add_subcommand("check", tr("report every problem a dry run would meet, without a trace"));
+    add_run_options(check, c.ra);
+    commands.push_back({check, [](const CommandLine& k) { return cli::check(k.ra); }});
+    commands.push_back({add_plot(app, c.pa), [](const CommandLine& k) { return cli::plot(k.pa); }});
+    add_store(app, c, commands);
 
     // TRANSLATORS: the heading of the list of commands in --help.
     for (CLI::App* sub : app.get_subcommands({})) sub->group(tr("Subcommands"));
@@ -225,36 +300,8 @@ int main(int argc, char** argv) {
         app.exit(e);
         return g_missing_file ? cli::kNoInput : cli::kUsage;
     }
-    ra.db = db;
-    sa.db = db;
-    if (!number.empty()) numbers.push_back(number);
-    for (const auto& t : numbers) {
-        int n = 0;
-        if (!parse_number(t, n)) {
-            std::fprintf(stderr, tr("pupitre: '%s' is not a program number\n"), t.c_str());
-            return cli::kUsage;
-        }
-        sa.numbers.push_back(n);
-    }
-    try {
-        if (*run) return cli::run(ra);
-        if (*check) return cli::check(ra);
-        if (*plot) return cli::plot(pa);
-        if (*imp) return cli::store_import(sa);
-        if (*exp) return cli::store_export(sa);
-        if (*list) return cli::store_list(sa);
-        if (*rm) return cli::store_rm(sa);
-        if (*hist) return cli::store_history(sa);
-        if (*rest) return cli::store_restore(sa);
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, tr("pupitre: internal error: %s\n"), e.what());
-        return cli::kSoftware;
-    }
-    ca.db = db;
-    try {
-        return cli::console(ca);
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, tr("pupitre: internal error: %s\n"), e.what());
-        return cli::kSoftware;
-    }
+    c.ra.db = c.db;
+    c.sa.db = c.db;
+    if (!read_numbers(c)) return cli::kUsage;
+    return dispatch(c, commands);
 }

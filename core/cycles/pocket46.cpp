@@ -573,104 +573,141 @@ bool roughing(const Def& d, double R, std::vector<Run>& runs, std::vector<double
     return true;
 }
 
+namespace {
+// What the finishing of each contour and wall shares.
+struct Finish {
+    double R = 0;  // the finishing tool's radius
+    int side = 1;
+    double r = 0;      // R + J: the offset of its centre
+    Region walls;      // the finishing tool's clearances
+    Region rough;      // what roughing has cleared
+    double reach = 0;  // how far from the contour the tool engages
+};
+
+// The contour from LX LY round to LX LY: rotated when the point is a vertex,
+// else its element split there.
+std::vector<Elem> rotated_to(const std::vector<Elem>& el, size_t best, const V2& l) {
+    Elem e = el[best];
+    std::vector<Elem> rot;
+    if ((l - e.a).norm() < 1e-6) {
+        rot.insert(rot.end(), el.begin() + long(best), el.end());
+        rot.insert(rot.end(), el.begin(), el.begin() + long(best));
+    } else if ((l - e.b).norm() < 1e-6) {
+        rot.insert(rot.end(), el.begin() + long(best) + 1, el.end());
+        rot.insert(rot.end(), el.begin(), el.begin() + long(best) + 1);
+    } else {
+        Elem e1 = e, e2 = e;
+        V2 p = l;
+        if (e.arc) p = e.c + (l - e.c).normalized() * e.r();
+        e1.b = p, e2.a = p;
+        if (e.arc) {
+            double a1 = std::atan2(cross(e.a - e.c, p - e.c), (e.a - e.c).dot(p - e.c));
+            if (e.sweep > 0 && a1 < 0) a1 += 2 * kPi;
+            if (e.sweep < 0 && a1 > 0) a1 -= 2 * kPi;
+            e1.sweep = a1, e2.sweep = e.sweep - a1;
+        }
+        rot.push_back(e2);
+        rot.insert(rot.end(), el.begin() + long(best) + 1, el.end());
+        rot.insert(rot.end(), el.begin(), el.begin() + long(best));
+        rot.push_back(e1);
+    }
+    return rot;
+}
+
+// Start at LX LY, which must lie on the contour (error 291).
+bool start_at_l(const Section& s, int si, std::vector<Elem>& el, Error& err) {
+    size_t best = 0;
+    double bd = 1e300;
+    for (size_t i = 0; i < el.size(); ++i) {
+        double dd = distance(el[i], s.l);
+        if (dd < bd) bd = dd, best = i;
+    }
+    if (bd > 1e-3) {
+        err = {291, tr("the finishing start point LX LY is not on the contour"), si};
+        return false;
+    }
+    el = rotated_to(el, best, s.l);
+    return true;
+}
+
+// One NU1/NU2 contour: from its start (LX LY or its first point), engaged
+// along the normal from the zone the roughing cleared, round and back out.
+bool contour_run(const Finish& f, const Section& s, int si, std::vector<Run>& runs, Error& err) {
+    std::vector<Elem> el = oriented(s.elems, s.nu == 1, f.side);
+    if (s.has_l && !start_at_l(s, si, el, err)) return false;
+    // A re-entrant corner at the start point cannot be engaged.
+    V2 t_in = comp::end_tangent(el.back()), t_out = comp::start_tangent(el.front());
+    if (double(f.side) * cross(t_in, t_out) > 1e-9 && t_in.dot(t_out) < 1 - 1e-9) {
+        err = {288, tr("the finishing starts in a re-entrant corner"), si};
+        return false;
+    }
+    Run run;
+    V2 start;
+    std::vector<Piece> pcs;
+    if (!offset_chain(el, true, f.r, f.side, start, pcs) ||
+        !path_clear(f.walls, start, pcs, 1e-6)) {
+        err = {289, tr("the finishing cutter is too large for the contour"), si};
+        return false;
+    }
+    V2 nrm = comp::normal(t_out, f.side);
+    run.start = el.front().a + f.reach * nrm;
+    if (!inside(f.rough, run.start, 1e-6)) {
+        err = {288, tr("the finishing engages in a zone the roughing did not clear"), si};
+        return false;
+    }
+    if ((run.start - start).norm() > 1e-9) run.pieces.push_back({false, start, {0, 0}, 0, false});
+    run.pieces.insert(run.pieces.end(), pcs.begin(), pcs.end());
+    if ((run.start - start).norm() > 1e-9)
+        run.pieces.push_back({false, run.start, {0, 0}, 0, false});
+    runs.push_back(run);
+    return true;
+}
+
+// One NU6 wall, travelled as the facing's outline goes (keep) or the other way:
+// in from beyond the open end and out past the other, along the tangents.
+bool wall_run(const Finish& f, const Section& s, bool keep, int si, std::vector<Run>& runs,
+              Error& err) {
+    std::vector<Elem> w = wall_as(s, keep);
+    Run run;
+    V2 start;
+    std::vector<Piece> pcs;
+    if (!offset_chain(w, false, f.r, f.side, start, pcs) ||
+        !path_clear(f.walls, start, pcs, 1e-6)) {
+        err = {289, tr("the finishing cutter is too large for the wall"), si};
+        return false;
+    }
+    V2 t0 = comp::start_tangent(w.front()), t1 = comp::end_tangent(w.back());
+    V2 end = pcs.empty() ? start : pcs.back().to;
+    run.start = start - (f.R + 1) * t0;
+    run.pieces.push_back({false, start, {0, 0}, 0, false});
+    run.pieces.insert(run.pieces.end(), pcs.begin(), pcs.end());
+    run.pieces.push_back({false, V2(end + (f.R + 1) * t1), {0, 0}, 0, false});
+    runs.push_back(run);
+    return true;
+}
+}  // namespace
+
 bool finishing(const Def& d, double R, double J, std::vector<Run>& runs, Error& err) {
     runs.clear();
-    const int side = d.sense();
-    const double r = R + J;
-    Region walls = region(d, r);               // the finishing tool's clearances
-    Region rough = region(d, d.ed / 2 + d.j);  // what roughing has cleared
-    const double reach = std::max(r, d.ed / 2 + d.j);
+    Finish f;
+    f.R = R;
+    f.side = d.sense();
+    f.r = R + J;
+    f.walls = region(d, f.r);
+    f.rough = region(d, d.ed / 2 + d.j);
+    f.reach = std::max(f.r, d.ed / 2 + d.j);
     for (size_t si = 0; si < d.sections.size(); ++si) {
         const Section& s = d.sections[si];
         if (s.nu != 1 && s.nu != 2) continue;
-        std::vector<Elem> el = oriented(s.elems, s.nu == 1, side);
-        // Start at LX LY (on the contour) or at the first point.
-        if (s.has_l) {
-            size_t best = 0;
-            double bd = 1e300;
-            for (size_t i = 0; i < el.size(); ++i) {
-                double dd = distance(el[i], s.l);
-                if (dd < bd) bd = dd, best = i;
-            }
-            if (bd > 1e-3) {
-                err = {291, tr("the finishing start point LX LY is not on the contour"), int(si)};
-                return false;
-            }
-            Elem e = el[best];
-            std::vector<Elem> rot;
-            if ((s.l - e.a).norm() < 1e-6) {
-                rot.insert(rot.end(), el.begin() + long(best), el.end());
-                rot.insert(rot.end(), el.begin(), el.begin() + long(best));
-            } else if ((s.l - e.b).norm() < 1e-6) {
-                rot.insert(rot.end(), el.begin() + long(best) + 1, el.end());
-                rot.insert(rot.end(), el.begin(), el.begin() + long(best) + 1);
-            } else {
-                Elem e1 = e, e2 = e;
-                V2 p = s.l;
-                if (e.arc) p = e.c + (s.l - e.c).normalized() * e.r();
-                e1.b = p, e2.a = p;
-                if (e.arc) {
-                    double a1 = std::atan2(cross(e.a - e.c, p - e.c), (e.a - e.c).dot(p - e.c));
-                    if (e.sweep > 0 && a1 < 0) a1 += 2 * kPi;
-                    if (e.sweep < 0 && a1 > 0) a1 -= 2 * kPi;
-                    e1.sweep = a1, e2.sweep = e.sweep - a1;
-                }
-                rot.push_back(e2);
-                rot.insert(rot.end(), el.begin() + long(best) + 1, el.end());
-                rot.insert(rot.end(), el.begin(), el.begin() + long(best));
-                rot.push_back(e1);
-            }
-            el = rot;
-        }
-        // A re-entrant corner at the start point cannot be engaged.
-        V2 t_in = comp::end_tangent(el.back()), t_out = comp::start_tangent(el.front());
-        if (double(side) * cross(t_in, t_out) > 1e-9 && t_in.dot(t_out) < 1 - 1e-9) {
-            err = {288, tr("the finishing starts in a re-entrant corner"), int(si)};
-            return false;
-        }
-        Run run;
-        V2 start;
-        std::vector<Piece> pcs;
-        if (!offset_chain(el, true, r, side, start, pcs) || !path_clear(walls, start, pcs, 1e-6)) {
-            err = {289, tr("the finishing cutter is too large for the contour"), int(si)};
-            return false;
-        }
-        V2 nrm = comp::normal(t_out, side);
-        run.start = el.front().a + reach * nrm;
-        if (!inside(rough, run.start, 1e-6)) {
-            err = {288, tr("the finishing engages in a zone the roughing did not clear"), int(si)};
-            return false;
-        }
-        if ((run.start - start).norm() > 1e-9)
-            run.pieces.push_back({false, start, {0, 0}, 0, false});
-        run.pieces.insert(run.pieces.end(), pcs.begin(), pcs.end());
-        if ((run.start - start).norm() > 1e-9)
-            run.pieces.push_back({false, run.start, {0, 0}, 0, false});
-        runs.push_back(run);
+        if (!contour_run(f, s, int(si), runs, err)) return false;
     }
     std::vector<Elem> ch = chain56(d);
     if (!ch.empty()) {
-        bool keep = (area(ch) > 0) == (side > 0);
+        bool keep = (area(ch) > 0) == (f.side > 0);
         for (size_t si = 0; si < d.sections.size(); ++si) {
             const Section& s = d.sections[si];
             if (s.nu != 6) continue;
-            std::vector<Elem> w = wall_as(s, keep);
-            Run run;
-            V2 start;
-            std::vector<Piece> pcs;
-            if (!offset_chain(w, false, r, side, start, pcs) ||
-                !path_clear(walls, start, pcs, 1e-6)) {
-                err = {289, tr("the finishing cutter is too large for the wall"), int(si)};
-                return false;
-            }
-            // In from beyond the open end and out past the other, along the tangents.
-            V2 t0 = comp::start_tangent(w.front()), t1 = comp::end_tangent(w.back());
-            V2 end = pcs.empty() ? start : pcs.back().to;
-            run.start = start - (R + 1) * t0;
-            run.pieces.push_back({false, start, {0, 0}, 0, false});
-            run.pieces.insert(run.pieces.end(), pcs.begin(), pcs.end());
-            run.pieces.push_back({false, V2(end + (R + 1) * t1), {0, 0}, 0, false});
-            runs.push_back(run);
+            if (!wall_run(f, s, keep, int(si), runs, err)) return false;
         }
     }
     return true;

@@ -98,10 +98,9 @@ double lowest(const Material& m, double x0, double x1) {
     for (const Elem& e : m.F) y = std::min(y, min_y_in(translated(e, m.t), x0, x1));
     return y;
 }
-}  // namespace
 
-int g65(const Profile& fin, V2 tool, const G65Args& a, std::vector<Move>& out, std::string& why) {
-    out.clear();
+// G65 argument checks (§6.4 errors).
+int g65_check(const Profile& fin, const G65Args& a, std::string& why) {
     if ((a.has_p && a.has_r) || (a.has_x && a.has_z)) {
         why = tr("G65 takes P or R, and X or Z, not both");
         return 889;
@@ -120,119 +119,150 @@ int g65(const Profile& fin, V2 tool, const G65Args& a, std::vector<Move>& out, s
         why = tr("the depth of cut must be positive");
         return 862;
     }
-    if (int e = zone::check_profile(fin, why)) return e;
+    return zone::check_profile(fin, why);
+}
 
+// What the steps of G65 share: the frame, the infeed line from S, the limit of
+// the passes, the material and the lowest level.
+struct G65Plan {
     Frame fr;
-    fr.swap = frontal;
-    V2 u = fr.to(V2(std::cos(a.ea * kDeg), std::sin(a.ea * kDeg)));
-    if (std::fabs(u.y()) < 1e-9) {
+    V2 u, s;        // the infeed direction EA and the start point S, in the frame
+    double xa = 0;  // the limit of the passes
+    int d = 0;      // direction of the passes along x
+    double step = 0;
+    Material m;              // in the frame, with the allowance I K
+    V2 c;                    // C: where the EA line meets the profile plus the allowance
+    double y_low = 0;        // the last level
+    double cl = 0;           // the retract clearance
+    std::vector<Elem> loop;  // the part, for "inside"
+};
+
+// The roughing as it goes: the last infeed point, and the infeed points as the
+// way back out.
+struct G65Walk {
+    Emit em;
+    V2 prev;
+    std::vector<V2> path;
+};
+
+// The frame of the passes: the infeed EA goes down the level axis, and the
+// passes run from S towards the limit Z (X) on the side EA leads to.
+int g65_frame(const G65Args& a, V2 tool, G65Plan& p, std::string& why) {
+    bool axial = a.has_z && a.has_p, frontal = a.has_x && a.has_r;
+    p.step = axial ? a.p : a.r;
+    p.fr.swap = frontal;
+    p.u = p.fr.to(V2(std::cos(a.ea * kDeg), std::sin(a.ea * kDeg)));
+    if (std::fabs(p.u.y()) < 1e-9) {
         why = tr("EA runs parallel to the passes");
         return 863;
     }
-    fr.s = u.y() < 0 ? 1 : -1;  // the infeed goes down the level axis
-    u = fr.to(V2(std::cos(a.ea * kDeg), std::sin(a.ea * kDeg)));
-    V2 s = fr.to(tool);
-    double xa = axial ? a.z : a.x;
-    int d = xa > s.x() + kUm ? 1 : xa < s.x() - kUm ? -1 : 0;
-    if (d == 0 || u.x() * d < -1e-9) {
+    p.fr.s = p.u.y() < 0 ? 1 : -1;  // the infeed goes down the level axis
+    p.u = p.fr.to(V2(std::cos(a.ea * kDeg), std::sin(a.ea * kDeg)));
+    p.s = p.fr.to(tool);
+    p.xa = axial ? a.z : a.x;
+    p.d = p.xa > p.s.x() + kUm ? 1 : p.xa < p.s.x() - kUm ? -1 : 0;
+    if (p.d == 0 || p.u.x() * p.d < -1e-9) {
         why = tr("the limit of the passes is not on the side EA leads to");
         return 863;
     }
-
-    Material m;
-    m.F = fr.to(fin.elems);
-    m.translate(fr.to(V2(a.k, a.i)));
-    // The allowance as written (turning.md §11 item 6): pointing down the level
-    // axis it lies inside the part; the passes rough the translated profile and
-    // cut into it, the caller warns (1116). Along the passes a groove has walls
-    // facing both ways, so that component alone says nothing.
-    if (m.t.y() < -kUm) {
-        a.allowance_inside = true;
-        Profile moved;
-        for (const Elem& e : fin.elems) moved.elems.push_back(translated(e, V2(a.k, a.i)));
-        G65Args written = a;
-        written.i = written.k = 0;
-        return g65(moved, tool, written, out, why);
-    }
-    if (m.in_A(s)) {
-        why = tr("the start point lies inside the finished profile");
-        return 875;
-    }
-    double span = (s - m.F.front().a).norm();
-    for (const Elem& e : m.F) span = std::max(span, (s - e.b).norm());
-    V2 c;
-    if (!first_contact(m, s, u, 2 * span + 100, c)) {
-        why = tr("the EA line does not meet the finished profile");
-        return 875;
-    }
-    double y_low = std::min(c.y(), lowest(m, std::min(xa, c.x()), std::max(xa, c.x())));
-    double cl = std::min(a.q > 0 ? a.q : std::max(0.0, a.clearance), step / 2);
-
-    const std::vector<Elem> loop = part_loop(m.F);
-    Emit em{fr, out, s};
-    V2 prev = s;
-    std::vector<V2> path{s};  // the infeed points, the way back out
-    for (int k = 1;; ++k) {
-        double y = s.y() - k * step;
-        bool last = y <= y_low + kUm;
-        if (last) y = y_low;
-        if (y >= s.y() - kTol) break;
-        // Start of the pass: on the EA line down to C, below it where the level
-        // leaves the profile towards the limit.
-        double xe = s.x() + u.x() * (s.y() - y) / -u.y();
-        V2 e(xe, y);
-        if (y < c.y() - kTol) {
-            // Below C the EA line may run inside the part (a start point
-            // beyond the groove's wall, its line meeting the land first):
-            // the zone's side there is the profile from C on, where the
-            // level leaves the part (000:2605-2612: the zone is bounded by
-            // the profile and the lines S-A and S-C).
-            double from = leave_part(m.F, loop, y, xe, xa, d);
-            auto runs = zone::free_runs(m, y, from, xa, d);
-            if (runs.empty()) {
-                if (last) break;
-                continue;
-            }
-            e = V2(runs[0].first, y);
-        }
-        auto runs = zone::free_runs(m, y, e.x(), xa, d);
-        bool ok = !runs.empty() && std::fabs(runs[0].first - e.x()) <= kTol &&
-                  std::fabs(runs[0].second - e.x()) > kUm;
-        if (ok) {
-            auto [from, to] = zone::clear_below(m, y, cl, e.x(), runs[0].second, d);
-            ok = std::fabs(to - from) > kUm;
-            e = V2(from, y);
-            runs[0] = {from, to};
-        }
-        std::vector<V2> infeed{e};
-        if (ok && y < c.y() - kTol && !zone::seg_clear(m, prev, e)) {
-            infeed = {V2(e.x(), prev.y()), e};  // along the last pass, then down
-            ok = zone::seg_clear(m, prev, infeed[0]) && zone::seg_clear(m, infeed[0], e);
-        }
-        if (ok) {
-            for (const V2& p : infeed) em.go(1, p, true);
-            path.insert(path.end(), infeed.begin(), infeed.end());
-            em.go(1, V2(runs[0].second, y));
-            em.go(0, V2(runs[0].second, y + cl));
-            em.go(0, V2(e.x(), y + cl));
-            em.go(0, e);
-            prev = e;
-        }
-        if (last) break;
-    }
-    // Out: up to the start level, then to S (§6.4 step 4); where an overhang
-    // on the start side hides that way, back along the infeeds.
-    if (zone::seg_clear(m, em.cur, V2(em.cur.x(), s.y())) && zone::seg_clear(m, V2(em.cur.x(), s.y()), s)) {
-        em.go(0, V2(em.cur.x(), s.y()));
-    } else {
-        for (size_t i = path.size(); i-- > 1;) em.go(0, path[i - 1]);
-    }
-    em.go(0, s);
     return 0;
 }
 
-int g66(V2 tool, const G66Args& a, std::vector<Move>& out, std::string& why) {
-    out.clear();
+// S outside the part; C, the first contact of the EA line (§6.4 step 1); the
+// levels go down to C or to the profile's lowest point before the limit.
+int g65_contact(const G65Args& a, G65Plan& p, std::string& why) {
+    const Material& m = p.m;
+    if (m.in_A(p.s)) {
+        why = tr("the start point lies inside the finished profile");
+        return 875;
+    }
+    double span = (p.s - m.F.front().a).norm();
+    for (const Elem& e : m.F) span = std::max(span, (p.s - e.b).norm());
+    if (!first_contact(m, p.s, p.u, 2 * span + 100, p.c)) {
+        why = tr("the EA line does not meet the finished profile");
+        return 875;
+    }
+    p.y_low = std::min(p.c.y(), lowest(m, std::min(p.xa, p.c.x()), std::max(p.xa, p.c.x())));
+    p.cl = std::min(a.q > 0 ? a.q : std::max(0.0, a.clearance), p.step / 2);
+    return 0;
+}
+
+// Start of the pass at level y: on the EA line down to C, below it where the
+// level leaves the profile towards the limit; false when nothing is left.
+bool pass_start(const G65Plan& p, double y, V2& e) {
+    double xe = p.s.x() + p.u.x() * (p.s.y() - y) / -p.u.y();
+    e = V2(xe, y);
+    if (y < p.c.y() - kTol) {
+        // Below C the EA line may run inside the part (a start point
+        // beyond the groove's wall, its line meeting the land first):
+        // the zone's side there is the profile from C on, where the
+        // level leaves the part (000:2605-2612: the zone is bounded by
+        // the profile and the lines S-A and S-C).
+        double from = leave_part(p.m.F, p.loop, y, xe, p.xa, p.d);
+        auto runs = zone::free_runs(p.m, y, from, p.xa, p.d);
+        if (runs.empty()) return false;
+        e = V2(runs[0].first, y);
+    }
+    return true;
+}
+
+// One pass at level y from e (§6.4 step 3): the infeed, along the level as far
+// as its retract stays clear, the retract and back to e.
+void g65_pass(G65Walk& w, const G65Plan& p, double y, V2 e) {
+    const Material& m = p.m;
+    auto runs = zone::free_runs(m, y, e.x(), p.xa, p.d);
+    bool ok = !runs.empty() && std::fabs(runs[0].first - e.x()) <= kTol &&
+              std::fabs(runs[0].second - e.x()) > kUm;
+    if (ok) {
+        auto [from, to] = zone::clear_below(m, y, p.cl, e.x(), runs[0].second, p.d);
+        ok = std::fabs(to - from) > kUm;
+        e = V2(from, y);
+        runs[0] = {from, to};
+    }
+    std::vector<V2> infeed{e};
+    if (ok && y < p.c.y() - kTol && !zone::seg_clear(m, w.prev, e)) {
+        infeed = {V2(e.x(), w.prev.y()), e};  // along the last pass, then down
+        ok = zone::seg_clear(m, w.prev, infeed[0]) && zone::seg_clear(m, infeed[0], e);
+    }
+    if (!ok) return;
+    for (const V2& q : infeed) w.em.go(1, q, true);
+    w.path.insert(w.path.end(), infeed.begin(), infeed.end());
+    w.em.go(1, V2(runs[0].second, y));
+    w.em.go(0, V2(runs[0].second, y + p.cl));
+    w.em.go(0, V2(e.x(), y + p.cl));
+    w.em.go(0, e);
+    w.prev = e;
+}
+
+// The levels from S down every P (R), the last one at the lowest level (§6.4 step 2).
+void g65_passes(G65Walk& w, const G65Plan& p) {
+    for (int k = 1;; ++k) {
+        double y = p.s.y() - k * p.step;
+        bool last = y <= p.y_low + kUm;
+        if (last) y = p.y_low;
+        if (y >= p.s.y() - kTol) break;
+        V2 e;
+        if (pass_start(p, y, e)) g65_pass(w, p, y, e);
+        if (last) break;
+    }
+}
+
+// Out: up to the start level, then to S (§6.4 step 4); where an overhang
+// on the start side hides that way, back along the infeeds.
+void g65_out(G65Walk& w, const G65Plan& p) {
+    Emit& em = w.em;
+    const V2& s = p.s;
+    if (zone::seg_clear(p.m, em.cur, V2(em.cur.x(), s.y())) &&
+        zone::seg_clear(p.m, V2(em.cur.x(), s.y()), s)) {
+        em.go(0, V2(em.cur.x(), s.y()));
+    } else {
+        for (size_t i = w.path.size(); i-- > 1;) em.go(0, w.path[i - 1]);
+    }
+    em.go(0, s);
+}
+
+// G66 argument checks (§6.6 errors).
+int g66_check(const G66Args& a, std::string& why) {
     if (a.has_p && a.has_r) {
         why = tr("G66 takes P or R, not both");
         return 889;
@@ -247,13 +277,49 @@ int g66(V2 tool, const G66Args& a, std::vector<Move>& out, std::string& why) {
         return 862;
     }
     if (a.d_first == 0 || a.d == 0) {
-        why = a.d == 0 ? tr("G66 needs the second corrector D") : tr("no corrector active before G66");
+        why = a.d == 0 ? tr("G66 needs the second corrector D")
+                       : tr("no corrector active before G66");
         return 898;
     }
     if (a.milling_tool) {
         why = tr("G66 with a milling tool");
         return 864;
     }
+    return 0;
+}
+}  // namespace
+
+int g65(const Profile& fin, V2 tool, const G65Args& a, std::vector<Move>& out, std::string& why) {
+    out.clear();
+    if (int e = g65_check(fin, a, why)) return e;
+    G65Plan p;
+    if (int e = g65_frame(a, tool, p, why)) return e;
+    p.m.F = p.fr.to(fin.elems);
+    p.m.translate(p.fr.to(V2(a.k, a.i)));
+    // The allowance as written (turning.md §11 item 6): pointing down the level
+    // axis it lies inside the part; the passes rough the translated profile and
+    // cut into it, the caller warns (1116). Along the passes a groove has walls
+    // facing both ways, so that component alone says nothing.
+    if (p.m.t.y() < -kUm) {
+        a.allowance_inside = true;
+        Profile moved;
+        for (const Elem& e : fin.elems) moved.elems.push_back(translated(e, V2(a.k, a.i)));
+        G65Args written = a;
+        written.i = written.k = 0;
+        return g65(moved, tool, written, out, why);
+    }
+    if (int e = g65_contact(a, p, why)) return e;
+    p.loop = part_loop(p.m.F);
+    G65Walk w{Emit{p.fr, out, p.s}, p.s, {p.s}};
+    g65_passes(w, p);
+    g65_out(w, p);
+    return 0;
+}
+
+int g66(V2 tool, const G66Args& a, std::vector<Move>& out, std::string& why) {
+    out.clear();
+    if (int e = g66_check(a, why)) return e;
+    double step = a.has_p ? a.p : a.r;
     // Frame: plunges along y, spread along x (R: radial groove, plunges along X
     // spread along Z; P: frontal groove, plunges along Z spread along X).
     Frame fr;

@@ -304,143 +304,212 @@ bool clear_path(const Material& m, V2 from, const std::vector<V2>& pts) {
     }
     return true;
 }
-}  // namespace
 
-int g63(const Profile& fin, V2 tool, const G63Args& a, std::vector<Move>& out, std::string& why) {
-    out.clear();
-    if (int e = g63_check(fin, a, why)) return e;
-    double step = a.has_p ? a.p : a.r;
+// What the steps of G63 share: the frame, the start point D, the end and
+// direction of the passes, the start line and the material plus ER.
+struct G63Plan {
     Frame fr;
-    fr.swap = a.has_r;
-    V2 dr(a.z, a.x);  // start point D in (z, r)
-    auto lev = [&](const V2& p) { return fr.swap ? p.x() : p.y(); };
-    bool has_lim = fr.swap ? a.has_ew : a.has_eu;
-    double lim = fr.swap ? a.ew : a.eu;
-    double ref = has_lim ? lim : lev(zone::centroid(fin.elems));
-    fr.s = lev(dr) < ref - kUm ? -1 : 1;
-    V2 D = fr.to(dr);
-    double xz = a.has_ez ? a.ez : a.ex;
-    int d = sgn(xz - D.x());
-    if (d == 0) {
+    V2 dr;          // start point D in (z, r)
+    V2 D;           // D in the frame
+    double xz = 0;  // end of the passes, EZ or EX
+    int d = 0;      // direction of the passes along x
+    bool has_lim = false;
+    double lim = 0;  // EU (or EW): the lowest level
+    V2 u{0, -1};     // start line of the passes, downwards
+    double y_u = 0;  // the last level
+    Material m;      // in the frame, offset by ER
+    double c = 0;    // the retract clearance
+    double eb = 90;  // the steepest groove entry
+    // The point of the start line at level y.
+    V2 on_start_line(double y) const { return V2(D.x() + u.x() * (D.y() - y) / -u.y(), y); }
+};
+using Runs = std::vector<std::pair<double, double>>;
+
+// The frame of the passes, mirrored so that D lies above EU (EW), else above
+// the profile; the passes run from D towards EZ (EX).
+int g63_frame(const Profile& fin, const G63Args& a, G63Plan& p, std::string& why) {
+    p.fr.swap = a.has_r;
+    p.dr = V2(a.z, a.x);
+    auto lev = [&](const V2& q) { return p.fr.swap ? q.x() : q.y(); };
+    p.has_lim = p.fr.swap ? a.has_ew : a.has_eu;
+    p.lim = p.fr.swap ? a.ew : a.eu;
+    double ref = p.has_lim ? p.lim : lev(zone::centroid(fin.elems));
+    p.fr.s = lev(p.dr) < ref - kUm ? -1 : 1;
+    p.D = p.fr.to(p.dr);
+    p.xz = a.has_ez ? a.ez : a.ex;
+    p.d = sgn(p.xz - p.D.x());
+    if (p.d == 0) {
         why = tr("the end of the passes is at the start point");
         return 862;
     }
-    // Start line of the passes: EA, else towards the point EU EW, else square
-    // to the passes through D.
-    V2 u(0, -1);
+    return 0;
+}
+
+// Start line of the passes: EA, else towards the point EU EW, else square
+// to the passes through D; the levels go down to EU (EW), else the profile.
+int g63_start_line(const Profile& fin, const G63Args& a, G63Plan& p, std::string& why) {
+    const Frame& fr = p.fr;
     if (a.has_ea) {
-        u = fr.to(V2(std::cos(a.ea * kDeg), std::sin(a.ea * kDeg)));
+        p.u = fr.to(V2(std::cos(a.ea * kDeg), std::sin(a.ea * kDeg)));
     } else if (a.has_eu || a.has_ew) {
-        V2 pu = fr.to(V2(a.has_ew ? a.ew : a.z, a.has_eu ? a.eu : a.x)) - D;
-        if (pu.norm() > kUm && std::fabs(pu.y()) > kUm) u = pu.normalized();
+        V2 pu = fr.to(V2(a.has_ew ? a.ew : a.z, a.has_eu ? a.eu : a.x)) - p.D;
+        if (pu.norm() > kUm && std::fabs(pu.y()) > kUm) p.u = pu.normalized();
     }
-    if (u.y() > 0) u = -u;
-    if (std::fabs(u.y()) < 1e-9) {
+    if (p.u.y() > 0) p.u = -p.u;
+    if (std::fabs(p.u.y()) < 1e-9) {
         why = tr("the start line EA runs along the passes");
         return 875;
     }
     std::vector<Elem> ff = fr.to(fin.elems);
     double y_min = kInf;
     for (const Elem& e : ff) y_min = std::min(y_min, min_y(e));
-    double y_u = has_lim ? fr.s * lim : y_min;
-    auto on_start_line = [&](double y) { return V2(D.x() + u.x() * (D.y() - y) / -u.y(), y); };
+    p.y_u = p.has_lim ? fr.s * p.lim : y_min;
     if (a.has_ea) {
         bool met = false;
-        for (const Elem& e : ff) met = met || ray_hit(e, D, u) < kInf;
+        for (const Elem& e : ff) met = met || ray_hit(e, p.D, p.u) < kInf;
         if (!met) {
             why = tr("the EA line does not meet the finished profile");
             return 875;
         }
     }
-    // Stock: the start line, the start level, the end of the passes (§6.5 step 2).
-    std::vector<V2> b{fr.back(on_start_line(std::min(y_u, D.y()))), dr, fr.back(V2(xz, D.y()))};
+    return 0;
+}
+
+// Stock: the start line, the start level, the end of the passes (§6.5 step 2);
+// the material it closes with the profile, offset by ER (step 3).
+int g63_material(const Profile& fin, const G63Args& a, G63Plan& p, std::string& why) {
+    std::vector<V2> b{p.fr.back(p.on_start_line(std::min(p.y_u, p.D.y()))), p.dr,
+                      p.fr.back(V2(p.xz, p.D.y()))};
     bool rev = stock_reversed(b, fin);
     if (rev) std::reverse(b.begin(), b.end());
     Material real;
     real.F = fin.elems;
     build_region(b, fin, real);
     if (int e = check_region(real, why)) return e;
-    Material m = to_frame(real, fr);
-    m.offset(a.er);
+    p.m = to_frame(real, p.fr);
+    p.m.offset(a.er);
+    return 0;
+}
 
-    double c = std::min(a.q > 0 ? a.q : std::max(0.0, a.clearance), step / 2);
-    double eb = a.has_eb ? a.eb : 90;
-    std::vector<double> ys = levels(D.y(), y_u, step);
+// The levels every P (R) from D down to EU (EW) or the profile (§6.5 step 4),
+// none closer than EQ to the one above it.
+std::vector<double> g63_levels(const G63Args& a, const G63Plan& p, double step) {
+    std::vector<double> ys = levels(p.D.y(), p.y_u, step);
     if (ys.size() >= 2 && ys[ys.size() - 2] - ys.back() < a.eq - kTol) ys.pop_back();
-    if (ys.size() == 1 && D.y() - ys.back() < a.eq - kTol) ys.pop_back();
+    if (ys.size() == 1 && p.D.y() - ys.back() < a.eq - kTol) ys.pop_back();
+    return ys;
+}
 
-    Emit em{fr, out, fr.to(tool)};
-    em.go(0, D);
-    bool first = true;
-    for (double y : ys) {
-        auto ivs = zone::m_intervals(m, y, d);
-        if (d < 0) std::reverse(ivs.begin(), ivs.end());
-        size_t k = 0;
-        while (k < ivs.size() && ivs[k].front == zone::kProfile) ++k;
-        if (k == ivs.size()) continue;
-        double xs = d > 0 ? ivs[k].a : ivs[k].b;
-        std::vector<std::pair<double, double>> runs;
-        for (; k < ivs.size(); ++k) {
-            double x0 = d > 0 ? ivs[k].a : ivs[k].b, x1 = d > 0 ? ivs[k].b : ivs[k].a;
-            if ((x0 - xz) * d >= 0) break;
-            if ((x1 - xz) * d > 0) x1 = xz;
-            for (auto r : zone::free_runs(m, y, x0, x1, d)) runs.push_back(r);
-        }
-        if (runs.empty() || std::fabs(runs[0].first - xs) > kTol ||
-            std::fabs(runs[0].second - xs) <= kUm)
-            continue;
-        // Each run ends where its retract by the clearance stays out of the
-        // allowance (a rounded corner of ER, an undercut wall), a groove's run
-        // at the farthest point whose climb out of it is clear: no retract
-        // enters the part plus ER (issue 19 item 1).
-        auto [f0, t0] = zone::clear_below(m, y, c, xs, runs[0].second, d);
-        if (std::fabs(f0 - xs) > kTol || std::fabs(t0 - xs) <= kUm) continue;
-        if (std::fabs(t0 - runs[0].second) > kTol) runs.resize(1);  // hidden beyond: no groove
-        runs[0].second = t0;
-        V2 start(xs - d * c, y);
-        if (first) em.go(0, V2(start.x(), D.y()));
-        first = false;
-        em.go(0, start);
-        em.go(1, V2(runs[0].second, y));
-        double end = runs[0].second;
-        bool entered = false;
-        for (size_t j = 1; j < runs.size(); ++j) {
-            V2 down, entry(runs[j].first, y);
-            if (entry_angle(m, entry, d, down) > eb + 1e-9) break;
-            // The run ends at the farthest point whose climb out is clear.
-            double climb = std::max(y + c, top_of_A(m, xs, runs[j].second) + c);
-            auto out_ok = zone::clear_runs(m, y, climb - y, runs[j].first, runs[j].second, d);
-            if (out_ok.empty()) break;
-            double tj = out_ok.back().second;
-            if (std::fabs(tj - runs[j].first) <= kUm) break;
-            runs[j].second = tj;
-            double over = std::max(y + c, top_of_A(m, end, entry.x()) + c);
-            if (std::fabs(down.y()) < std::sin(5 * kDeg)) down = V2(0, -1);
-            double lean = (over - y) * down.x() / -down.y();
-            std::vector<V2> path{V2(end, over), V2(entry.x() - lean, over), entry,
-                                 V2(runs[j].second, y)};
-            if (!clear_path(m, V2(end, y + c), path)) {
-                path[1] = V2(entry.x(), over);
-                if (!clear_path(m, V2(end, y + c), path)) break;
-            }
-            em.go(0, V2(end, y + c));
-            em.go(1, path[0]);
-            em.go(1, path[1]);
-            em.go(1, path[2], true);
-            em.go(1, path[3]);
-            end = runs[j].second;
-            entered = true;
+// The runs of level y outside the material plus ER, from the first interval
+// met from the stock up to the end of the passes; false when the level cuts
+// nothing. `xs` is where the pass starts.
+bool level_runs(const G63Plan& p, double y, double& xs, Runs& runs) {
+    const int d = p.d;
+    auto ivs = zone::m_intervals(p.m, y, d);
+    if (d < 0) std::reverse(ivs.begin(), ivs.end());
+    size_t k = 0;
+    while (k < ivs.size() && ivs[k].front == zone::kProfile) ++k;
+    if (k == ivs.size()) return false;
+    xs = d > 0 ? ivs[k].a : ivs[k].b;
+    for (; k < ivs.size(); ++k) {
+        double x0 = d > 0 ? ivs[k].a : ivs[k].b, x1 = d > 0 ? ivs[k].b : ivs[k].a;
+        if ((x0 - p.xz) * d >= 0) break;
+        if ((x1 - p.xz) * d > 0) x1 = p.xz;
+        for (auto r : zone::free_runs(p.m, y, x0, x1, d)) runs.push_back(r);
+    }
+    if (runs.empty() || std::fabs(runs[0].first - xs) > kTol ||
+        std::fabs(runs[0].second - xs) <= kUm)
+        return false;
+    // Each run ends where its retract by the clearance stays out of the
+    // allowance (a rounded corner of ER, an undercut wall), a groove's run
+    // at the farthest point whose climb out of it is clear: no retract
+    // enters the part plus ER (issue 19 item 1).
+    auto [f0, t0] = zone::clear_below(p.m, y, p.c, xs, runs[0].second, p.d);
+    if (std::fabs(f0 - xs) > kTol || std::fabs(t0 - xs) <= kUm) return false;
+    if (std::fabs(t0 - runs[0].second) > kTol) runs.resize(1);  // hidden beyond: no groove
+    runs[0].second = t0;
+    return true;
+}
+
+// Enters the grooves of the level one after the other (§6.5: the passes enter
+// grooves whose entry is no steeper than EB), over the land between them;
+// returns where the pass ends, `entered` when it went into a groove.
+double enter_grooves(Emit& em, const G63Plan& p, double y, double xs, Runs& runs, bool& entered) {
+    const Material& m = p.m;
+    const double c = p.c;
+    double end = runs[0].second;
+    for (size_t j = 1; j < runs.size(); ++j) {
+        V2 down, entry(runs[j].first, y);
+        if (entry_angle(m, entry, p.d, down) > p.eb + 1e-9) break;
+        // The run ends at the farthest point whose climb out is clear.
+        double climb = std::max(y + c, top_of_A(m, xs, runs[j].second) + c);
+        auto out_ok = zone::clear_runs(m, y, climb - y, runs[j].first, runs[j].second, p.d);
+        if (out_ok.empty()) break;
+        double tj = out_ok.back().second;
+        if (std::fabs(tj - runs[j].first) <= kUm) break;
+        runs[j].second = tj;
+        double over = std::max(y + c, top_of_A(m, end, entry.x()) + c);
+        if (std::fabs(down.y()) < std::sin(5 * kDeg)) down = V2(0, -1);
+        double lean = (over - y) * down.x() / -down.y();
+        std::vector<V2> path{V2(end, over), V2(entry.x() - lean, over), entry,
+                             V2(runs[j].second, y)};
+        if (!clear_path(m, V2(end, y + c), path)) {
+            path[1] = V2(entry.x(), over);
+            if (!clear_path(m, V2(end, y + c), path)) break;
         }
         em.go(0, V2(end, y + c));
-        if (entered) {
-            double back = std::max(y + c, top_of_A(m, xs, end) + c);
-            em.go(1, V2(end, back));
-            em.go(1, V2(start.x(), back));
-        }
-        em.go(0, V2(start.x(), y + c));
+        em.go(1, path[0]);
+        em.go(1, path[1]);
+        em.go(1, path[2], true);
+        em.go(1, path[3]);
+        end = runs[j].second;
+        entered = true;
     }
-    em.go(0, V2(em.cur.x(), D.y()));
-    em.go(0, D);
+    return end;
+}
+
+// One pass at level y (§6.5 steps 5 and 6): in from the start line, along the level
+// and into the grooves it may enter, then out by the clearance and back over
+// the part plus ER.
+void g63_pass(Emit& em, const G63Plan& p, double y, bool& first) {
+    double xs = 0;
+    Runs runs;
+    if (!level_runs(p, y, xs, runs)) return;
+    const double c = p.c;
+    V2 start(xs - p.d * c, y);
+    if (first) em.go(0, V2(start.x(), p.D.y()));
+    first = false;
+    em.go(0, start);
+    em.go(1, V2(runs[0].second, y));
+    bool entered = false;
+    double end = enter_grooves(em, p, y, xs, runs, entered);
+    em.go(0, V2(end, y + c));
+    if (entered) {
+        double back = std::max(y + c, top_of_A(p.m, xs, end) + c);
+        em.go(1, V2(end, back));
+        em.go(1, V2(start.x(), back));
+    }
+    em.go(0, V2(start.x(), y + c));
+}
+}  // namespace
+
+int g63(const Profile& fin, V2 tool, const G63Args& a, std::vector<Move>& out, std::string& why) {
+    out.clear();
+    if (int e = g63_check(fin, a, why)) return e;
+    double step = a.has_p ? a.p : a.r;
+    G63Plan p;
+    if (int e = g63_frame(fin, a, p, why)) return e;
+    if (int e = g63_start_line(fin, a, p, why)) return e;
+    if (int e = g63_material(fin, a, p, why)) return e;
+    p.c = std::min(a.q > 0 ? a.q : std::max(0.0, a.clearance), step / 2);
+    p.eb = a.has_eb ? a.eb : 90;
+
+    Emit em{p.fr, out, p.fr.to(tool)};
+    em.go(0, p.D);
+    bool first = true;
+    for (double y : g63_levels(a, p, step)) g63_pass(em, p, y, first);
+    em.go(0, V2(em.cur.x(), p.D.y()));
+    em.go(0, p.D);
     return 0;
 }
 

@@ -41,8 +41,223 @@ bool yes_no(std::string_view s, bool& v) {
     else return false;
     return true;
 }
+
+// One "key = value" line; `axis` is the X of a per-axis key such as travel.X.
+struct Line {
+    std::string_view key, val;
+    size_t axis = 0;
+};
+// Reads the value of a line into the profile: empty, or what is wrong with it.
+using Reader = std::string (*)(const Line& l, MachineProfile& m);
+struct KeyReader {
+    std::string_view key;
+    Reader read;
+};
+
+// A value that is one of two words, into a flag (true for the first).
+std::string one_of(std::string_view val, const char* yes, const char* no, bool& out,
+                   const char* why) {
+    if (val == yes)
+        out = true;
+    else if (val == no)
+        out = false;
+    else
+        return why;
+    return {};
+}
+
+// A number, unless it is out of range (`out_of_range`, as written so that a
+// NaN passes where it always has); else `why`.
+std::string number_unless(std::string_view val, bool (*out_of_range)(double), double& out,
+                          const char* why) {
+    double d;
+    if (!number(val, d) || out_of_range(d)) return why;
+    out = d;
+    return {};
+}
+bool not_positive(double d) {
+    return d <= 0;
+}
+bool never(double) {
+    return false;
+}
+
+std::string read_name(const Line& l, MachineProfile& m) {
+    m.name = l.val;
+    return {};
+}
+std::string read_description(const Line& l, MachineProfile& m) {
+    m.description = l.val;
+    return {};
+}
+std::string read_kind(const Line& l, MachineProfile& m) {
+    return one_of(l.val, "lathe", "mill", m.lathe, tr("kind must be lathe or mill"));
+}
+std::string read_model(const Line& l, MachineProfile& m) {
+    double d;
+    if (!number(l.val, d) || (d != 1020 && d != 1040 && d != 1060))
+        return tr("model must be 1020, 1040 or 1060");
+    m.model = int(d);
+    return {};
+}
+std::string read_axes(const Line& l, MachineProfile& m) {
+    for (char c : l.val) {
+        if (c == ' ') continue;
+        int a = axis_of(c);
+        if (a < 0) return tr("unknown axis letter in axes");
+        m.axes[size_t(a)].present = true;
+    }
+    return {};
+}
+std::string read_x_programming(const Line& l, MachineProfile& m) {
+    return one_of(l.val, "diameter", "radius", m.x_diameter,
+                  tr("x_programming must be diameter or radius"));
+}
+std::string read_turret(const Line& l, MachineProfile& m) {
+    return one_of(l.val, "rear", "front", m.rear_turret, tr("turret must be rear or front"));
+}
+std::string read_travel(const Line& l, MachineProfile& m) {
+    double d1, d2;
+    if (!two_numbers(l.val, d1, d2, ' ') || d1 >= d2) return tr("travel needs MIN MAX");
+    m.axes[l.axis].min = d1;
+    m.axes[l.axis].max = d2;
+    return {};
+}
+std::string read_rapid(const Line& l, MachineProfile& m) {
+    return number_unless(l.val, not_positive, m.axes[l.axis].rapid, tr("rapid must be positive"));
+}
+std::string read_home(const Line& l, MachineProfile& m) {
+    return number_unless(l.val, never, m.home[l.axis], tr("home needs a number"));
+}
+std::string read_pref(const Line& l, MachineProfile& m) {
+    return number_unless(l.val, never, m.pref[l.axis], tr("pref needs a number"));
+}
+std::string read_dec1(const Line& l, MachineProfile& m) {
+    return number_unless(l.val, never, m.dec1[l.axis], tr("dec1 needs a number"));
+}
+std::string read_feed_max(const Line& l, MachineProfile& m) {
+    return number_unless(l.val, not_positive, m.max_feed, tr("feed.max must be positive"));
+}
+std::string read_spindle_max(const Line& l, MachineProfile& m) {
+    return number_unless(l.val, not_positive, m.spindle_max, tr("spindle.max must be positive"));
+}
+std::string read_spindle_ranges(const Line& l, MachineProfile& m) {
+    m.ranges.clear();
+    std::string_view v = l.val;
+    double d1, d2;
+    while (!(v = trim(v)).empty()) {
+        size_t sp = v.find(' ');
+        std::string_view r = v.substr(0, sp);
+        v = sp == std::string_view::npos ? std::string_view{} : v.substr(sp);
+        if (!two_numbers(r, d1, d2, '-') || d1 > d2)
+            return strf(tr("ranges are MIN-MAX MIN-MAX%s"), "\u2026");  // %s: an ellipsis
+        m.ranges.push_back({d1, d2});
+    }
+    if (m.ranges.size() > 6) return tr("at most 6 ranges (M40-M45)");
+    return {};
+}
+std::string read_auto_range(const Line& l, MachineProfile& m) {
+    if (!yes_no(l.val, m.auto_range)) return tr("auto_range must be yes or no");
+    return {};
+}
+std::string read_strict(const Line& l, MachineProfile& m) {
+    if (!yes_no(l.val, m.strict)) return tr("strict must be yes or no");
+    return {};
+}
+std::string read_tools(const Line& l, MachineProfile& m) {
+    double d;
+    if (!number(l.val, d) || d < 1 || d > 999) return tr("tools must be 1..999");
+    m.tools = int(d);
+    return {};
+}
+std::string read_correctors(const Line& l, MachineProfile& m) {
+    double d;
+    if (!number(l.val, d) || d < 1 || d > 255) return tr("correctors must be 1..255");
+    m.correctors = int(d);
+    return {};
+}
+std::string read_tool_change_time(const Line& l, MachineProfile& m) {
+    return number_unless(
+        l.val, [](double d) { return d < 0; }, m.tool_change_time,
+        tr("tool_change_time must be >= 0"));
+}
+std::string read_homing(const Line& l, MachineProfile& m) {
+    return one_of(l.val, "required", "none", m.homing_required,
+                  tr("homing must be required or none"));
+}
+std::string read_program_memory(const Line& l, MachineProfile& m) {
+    return number_unless(
+        l.val, [](double d) { return d < 1; }, m.program_memory_kb,
+        tr("program_memory must be at least 1 (kilobytes)"));
+}
+std::string read_jog_feed(const Line& l, MachineProfile& m) {
+    return number_unless(l.val, not_positive, m.jog_feed, tr("jog.feed must be positive"));
+}
+std::string read_kinematics(const Line& l, MachineProfile& m) {
+    if (l.val != "table" && l.val != "table-head")
+        return tr("kinematics must be table or table-head");
+    m.kinematics = l.val;
+    return {};
+}
+std::string read_kinematics_l(const Line& l, MachineProfile& m) {
+    double& out = l.key.back() == 'x' ? m.kin_lx : l.key.back() == 'y' ? m.kin_ly : m.kin_lz;
+    return number_unless(l.val, never, out, tr("kinematics constants are lengths"));
+}
+
+// The keys of a profile (pupitre-machine(5)).
+constexpr KeyReader kKeys[] = {
+    {"name", read_name},
+    {"description", read_description},
+    {"kind", read_kind},
+    {"model", read_model},
+    {"axes", read_axes},
+    {"x_programming", read_x_programming},
+    {"turret", read_turret},
+    {"feed.max", read_feed_max},
+    {"spindle.max", read_spindle_max},
+    {"spindle.ranges", read_spindle_ranges},
+    {"spindle.auto_range", read_auto_range},
+    {"strict", read_strict},
+    {"tools", read_tools},
+    {"correctors", read_correctors},
+    {"tool_change_time", read_tool_change_time},
+    {"homing", read_homing},
+    {"program_memory", read_program_memory},
+    {"jog.feed", read_jog_feed},
+    {"kinematics", read_kinematics},
+    {"kinematics.lx", read_kinematics_l},
+    {"kinematics.ly", read_kinematics_l},
+    {"kinematics.lz", read_kinematics_l},
+};
+// The per-axis keys, written NAME.X (X any axis letter).
+constexpr KeyReader kAxisKeys[] = {
+    {"travel", read_travel}, {"rapid", read_rapid}, {"home", read_home},
+    {"pref", read_pref},     {"dec1", read_dec1},
+};
+
+Reader reader_of(std::string_view key, const KeyReader* begin, const KeyReader* end) {
+    for (const KeyReader* k = begin; k != end; ++k)
+        if (k->key == key) return k->read;
+    return nullptr;
+}
+
+// The profile as a whole, once every line is read.
+std::string check_whole(MachineProfile& m) {
+    if (m.name.empty()) return tr("the profile has no name");
+    bool any = false;
+    for (auto& a : m.axes) any = any || a.present;
+    if (!any) return tr("the profile declares no axes");
+    if (m.lathe && (!m.has(X) || !m.has(Z))) return tr("a lathe needs the X and Z axes");
+    if (!m.lathe) m.x_diameter = false;
+    if (m.kinematics == "table" && !m.has(B)) return tr("table kinematics need the B axis");
+    if (m.kinematics == "table-head" && (!m.has(B) || !m.has(C)))
+        return tr("table-head kinematics need B and C");
+    return {};
+}
 }  // namespace
 
+// profile -> { line } ; line -> key '=' value [ '#' comment ] ;
+// key -> NAME | NAME '.' AXIS   (travel.X, rapid.Z, ...)
 std::string parse_machine(std::string_view text, MachineProfile& m) {
     m = MachineProfile{};
     int lineno = 0;
@@ -52,114 +267,21 @@ std::string parse_machine(std::string_view text, MachineProfile& m) {
             return strf(tr("line %d: %.*s"), lineno, int(why.size()), why.data());
         };
         if (eq == std::string_view::npos) return bad(tr("expected key = value"));
-        std::string_view key = trim(line.substr(0, eq)), val = trim(line.substr(eq + 1));
-        double d1, d2;
-        int axis = -1;
-        std::string_view sub;
+        Line l{trim(line.substr(0, eq)), trim(line.substr(eq + 1))};
+        std::string_view key = l.key, sub;
         if (size_t dot = key.find('.'); dot != std::string_view::npos && dot + 2 == key.size()) {
-            axis = axis_of(key[dot + 1]);
+            int axis = axis_of(key[dot + 1]);
             sub = key.substr(0, dot);
-            if (axis < 0) return bad(strf(tr("unknown axis in '%.*s'"), int(key.size()), key.data()));
+            if (axis < 0)
+                return bad(strf(tr("unknown axis in '%.*s'"), int(key.size()), key.data()));
+            l.axis = size_t(axis);
         }
-        if (key == "name") m.name = val;
-        else if (key == "description") m.description = val;
-        else if (key == "kind") {
-            if (val == "lathe") m.lathe = true;
-            else if (val == "mill") m.lathe = false;
-            else return bad(tr("kind must be lathe or mill"));
-        } else if (key == "model") {
-            if (!number(val, d1) || (d1 != 1020 && d1 != 1040 && d1 != 1060))
-                return bad(tr("model must be 1020, 1040 or 1060"));
-            m.model = int(d1);
-        } else if (key == "axes") {
-            for (char c : val) {
-                if (c == ' ') continue;
-                int a = axis_of(c);
-                if (a < 0) return bad(tr("unknown axis letter in axes"));
-                m.axes[size_t(a)].present = true;
-            }
-        } else if (key == "x_programming") {
-            if (val == "diameter") m.x_diameter = true;
-            else if (val == "radius") m.x_diameter = false;
-            else return bad(tr("x_programming must be diameter or radius"));
-        } else if (key == "turret") {
-            if (val == "rear") m.rear_turret = true;
-            else if (val == "front") m.rear_turret = false;
-            else return bad(tr("turret must be rear or front"));
-        } else if (sub == "travel") {
-            if (!two_numbers(val, d1, d2, ' ') || d1 >= d2) return bad(tr("travel needs MIN MAX"));
-            m.axes[size_t(axis)].min = d1;
-            m.axes[size_t(axis)].max = d2;
-        } else if (sub == "rapid") {
-            if (!number(val, d1) || d1 <= 0) return bad(tr("rapid must be positive"));
-            m.axes[size_t(axis)].rapid = d1;
-        } else if (sub == "home") {
-            if (!number(val, d1)) return bad(tr("home needs a number"));
-            m.home[size_t(axis)] = d1;
-        } else if (sub == "pref") {
-            if (!number(val, d1)) return bad(tr("pref needs a number"));
-            m.pref[size_t(axis)] = d1;
-        } else if (sub == "dec1") {
-            if (!number(val, d1)) return bad(tr("dec1 needs a number"));
-            m.dec1[size_t(axis)] = d1;
-        } else if (key == "feed.max") {
-            if (!number(val, d1) || d1 <= 0) return bad(tr("feed.max must be positive"));
-            m.max_feed = d1;
-        } else if (key == "spindle.max") {
-            if (!number(val, d1) || d1 <= 0) return bad(tr("spindle.max must be positive"));
-            m.spindle_max = d1;
-        } else if (key == "spindle.ranges") {
-            m.ranges.clear();
-            std::string_view v = val;
-            while (!(v = trim(v)).empty()) {
-                size_t sp = v.find(' ');
-                std::string_view r = v.substr(0, sp);
-                v = sp == std::string_view::npos ? std::string_view{} : v.substr(sp);
-                if (!two_numbers(r, d1, d2, '-') || d1 > d2) return bad(strf(tr("ranges are MIN-MAX MIN-MAX%s"), "\u2026"));  // %s: an ellipsis
-                m.ranges.push_back({d1, d2});
-            }
-            if (m.ranges.size() > 6) return bad(tr("at most 6 ranges (M40-M45)"));
-        } else if (key == "spindle.auto_range") {
-            if (!yes_no(val, m.auto_range)) return bad(tr("auto_range must be yes or no"));
-        } else if (key == "strict") {
-            if (!yes_no(val, m.strict)) return bad(tr("strict must be yes or no"));
-        } else if (key == "tools") {
-            if (!number(val, d1) || d1 < 1 || d1 > 999) return bad(tr("tools must be 1..999"));
-            m.tools = int(d1);
-        } else if (key == "correctors") {
-            if (!number(val, d1) || d1 < 1 || d1 > 255) return bad(tr("correctors must be 1..255"));
-            m.correctors = int(d1);
-        } else if (key == "tool_change_time") {
-            if (!number(val, d1) || d1 < 0) return bad(tr("tool_change_time must be >= 0"));
-            m.tool_change_time = d1;
-        } else if (key == "homing") {
-            if (val != "required" && val != "none") return bad(tr("homing must be required or none"));
-            m.homing_required = val == "required";
-        } else if (key == "program_memory") {
-            if (!number(val, d1) || d1 < 1) return bad(tr("program_memory must be at least 1 (kilobytes)"));
-            m.program_memory_kb = d1;
-        } else if (key == "jog.feed") {
-            if (!number(val, d1) || d1 <= 0) return bad(tr("jog.feed must be positive"));
-            m.jog_feed = d1;
-        } else if (key == "kinematics") {
-            if (val != "table" && val != "table-head") return bad(tr("kinematics must be table or table-head"));
-            m.kinematics = val;
-        } else if (key == "kinematics.lx" || key == "kinematics.ly" || key == "kinematics.lz") {
-            if (!number(val, d1)) return bad(tr("kinematics constants are lengths"));
-            (key.back() == 'x' ? m.kin_lx : key.back() == 'y' ? m.kin_ly : m.kin_lz) = d1;
-        } else {
-            return bad(strf(tr("unknown key '%.*s'"), int(key.size()), key.data()));
-        }
+        Reader read = reader_of(key, std::begin(kKeys), std::end(kKeys));
+        if (!read) read = reader_of(sub, std::begin(kAxisKeys), std::end(kAxisKeys));
+        if (!read) return bad(strf(tr("unknown key '%.*s'"), int(key.size()), key.data()));
+        if (std::string why = read(l, m); !why.empty()) return bad(why);
     }
-    if (m.name.empty()) return tr("the profile has no name");
-    bool any = false;
-    for (auto& a : m.axes) any = any || a.present;
-    if (!any) return tr("the profile declares no axes");
-    if (m.lathe && (!m.has(X) || !m.has(Z))) return tr("a lathe needs the X and Z axes");
-    if (!m.lathe) m.x_diameter = false;
-    if (m.kinematics == "table" && !m.has(B)) return tr("table kinematics need the B axis");
-    if (m.kinematics == "table-head" && (!m.has(B) || !m.has(C))) return tr("table-head kinematics need B and C");
-    return {};
+    return check_whole(m);
 }
 
 std::vector<std::string> builtin_machines() { return {"lathe", "mill", "mill4", "mill5"}; }
