@@ -59,21 +59,6 @@ bool first_contact(const Material& m, const V2& s, const V2& u, double limit, V2
     return false;
 }
 
-// The part, in a frame where it lies below the profile: the profile closed by
-// two verticals down from its ends and a line far below (a loop of elements
-// for winding numbers).
-std::vector<Elem> part_loop(const std::vector<Elem>& F) {
-    double lo = kInf, span = 0;
-    for (const Elem& e : F) lo = std::min(lo, min_y(e)), span = std::max(span, length(e));
-    lo -= 100 + 10 * span * double(F.size());
-    V2 a = F.front().a, b = F.back().b;
-    std::vector<Elem> loop = F;
-    loop.push_back(line(b, V2(b.x(), lo)));
-    loop.push_back(line(V2(b.x(), lo), V2(a.x(), lo)));
-    loop.push_back(line(V2(a.x(), lo), a));
-    return loop;
-}
-
 // Where the level y, followed from x0 towards x1 (direction d), leaves the
 // part: x0 when it is not inside, else the first crossing of the profile
 // after which the level is out of it (x1 when it never is).
@@ -309,7 +294,7 @@ int g65(const Profile& fin, V2 tool, const G65Args& a, std::vector<Move>& out, s
         return g65(moved, tool, written, out, why);
     }
     if (int e = g65_contact(a, p, why)) return e;
-    p.loop = part_loop(p.m.F);
+    p.loop = zone::part_loop(p.m.F);
     G65Walk w{Emit{p.fr, out, p.s}, p.s, {p.s}};
     g65_passes(w, p);
     g65_out(w, p);

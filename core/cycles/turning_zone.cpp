@@ -409,10 +409,51 @@ double first_hidden(const Material& m, double Y, double x0, double x1, int d) {
     return x1;
 }
 
+// The part, in a frame where it lies below the profile: the profile closed by
+// two verticals down from its ends and a line far below (a loop of elements
+// for winding numbers).
+std::vector<Elem> part_loop(const std::vector<Elem>& F) {
+    double lo = kInf, span = 0;
+    for (const Elem& e : F) lo = std::min(lo, min_y(e)), span = std::max(span, length(e));
+    lo -= 100 + 10 * span * double(F.size());
+    V2 a = F.front().a, b = F.back().b;
+    std::vector<Elem> loop = F;
+    loop.push_back(line(b, V2(b.x(), lo)));
+    loop.push_back(line(V2(b.x(), lo), V2(a.x(), lo)));
+    loop.push_back(line(V2(a.x(), lo), a));
+    return loop;
+}
+
 bool seg_clear(const Material& m, const V2& p, const V2& q) {
     double len = (q - p).norm();
     if (len < kTol) return !m.in_A(p);
     Elem s = line(p, q);
+    // The straight elements of F that the segment runs along: a tool sliding
+    // down a square wall's face touches the part there without entering it,
+    // and meets the wall's ends on the way (issue 19: G65 grooves whose start
+    // lies beyond a wall that takes no allowance).
+    std::vector<const Elem*> along;
+    auto on_line = [](const Elem& e, const V2& x) {
+        const V2 d = e.b - e.a;
+        return std::fabs(geometry::cross(d, x - e.a)) <= kTol * d.norm();
+    };
+    for (const Elem& e : m.F)
+        if (!e.arc && (e.b - e.a).norm() > kTol && on_line(e, p) && on_line(e, q)) along.push_back(&e);
+    auto on_wall = [&](const V2& x) {
+        for (const Elem* e : along)
+            if (dist(*e, x) <= kTol) return true;
+        return false;
+    };
+    // On such a wall, a face that takes no allowance (the allowance points
+    // into the part there) bounds A: a point on it touches A without being in
+    // it.  The face's free side is the one out of the part.
+    std::vector<Elem> part;
+    auto face_bare = [&](const V2& x) {
+        if (part.empty()) part = part_loop(m.F);
+        const V2 n = perp(q - p).normalized() * (10 * kUm);
+        const V2 free = winding(part, V2(x + n)) == 0 ? V2(x + n) : V2(x - n);
+        return !m.in_A(free);
+    };
     std::vector<double> ts{0, 1};
     std::vector<V2> pts;
     for (const Elem& e : m.F) {
@@ -420,19 +461,21 @@ bool seg_clear(const Material& m, const V2& p, const V2& q) {
         intersect(e, s, pts);
         for (const V2& x : pts) {
             double t = (x - p).dot(q - p) / (len * len);
-            if (t * len > kTol && (1 - t) * len > kTol) return false;  // into the part
+            if (t * len > kTol && (1 - t) * len > kTol && !on_wall(x)) return false;  // into the part
         }
     }
     for (const Elem& e : m.U) {
         pts.clear();
         intersect(e, s, pts);
-        for (const V2& x : pts) ts.push_back((x - p).dot(q - p) / (len * len));
+        for (const V2& x : pts)
+            if (!m.zero() || !on_wall(x)) ts.push_back((x - p).dot(q - p) / (len * len));
     }
     std::sort(ts.begin(), ts.end());
     for (size_t j = 0; j + 1 < ts.size(); ++j) {
         if ((ts[j + 1] - ts[j]) * len <= kTol) continue;
         if (m.zero() && ts[j] * len > kTol) return false;  // meets the profile on the way
-        if (m.in_A(p + (ts[j] + ts[j + 1]) / 2 * (q - p))) return false;
+        const V2 mid = p + (ts[j] + ts[j + 1]) / 2 * (q - p);
+        if (m.in_A(mid) && !(on_wall(mid) && (m.zero() || face_bare(mid)))) return false;
     }
     return true;
 }

@@ -79,7 +79,11 @@ std::vector<std::pair<double, double>> free_runs(const Material& m, double Y, do
 // the line meets A (the point is "hidden"), or x1. What the profile hides from
 // the retract side is a groove, left to G65 (turning.md §6.3 item 5).
 double first_hidden(const Material& m, double Y, double x0, double x1, int d);
-// The segment p-q never enters A.
+// The part, in a frame where it lies below the profile: the profile closed by
+// two verticals down from its ends and a line far below (for winding numbers).
+std::vector<Elem> part_loop(const std::vector<Elem>& F);
+// The segment p-q never enters A; sliding along a wall's face that takes no
+// allowance is touching it, not entering.
 bool seg_clear(const Material& m, const V2& p, const V2& q);
 
 // The part of a pass along y = Y from x0 towards x1 (direction d) whose

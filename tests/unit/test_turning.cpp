@@ -1254,6 +1254,33 @@ TEST(G65, StartBeyondTheWall) {
     EXPECT_TRUE(mv.back().to.isApprox(tool, 1e-12));
 }
 
+// A square groove whose start point lies beyond its near wall, K pointing into
+// that wall (the face takes no allowance): the EA line meets the land, so each
+// level is reached along the last one and down the wall's face. Every level
+// of P2 is cut (before, the way down the face counted as entering the part,
+// the levels X58 and X54 were skipped and the bottom was cut in one pass 5 mm
+// deep).
+TEST(G65, StartBeyondASquareWall) {
+    Profile f = poly_profile({P(60, 0), P(60, -10), P(50, -10), P(50, -20), P(60, -20), P(60, -30)});
+    G65Args a;
+    a.has_z = true, a.z = -20, a.has_p = true, a.p = 2, a.i = .5, a.k = .2, a.has_ea = true, a.ea = -135;
+    std::vector<Move> mv;
+    std::string why;
+    V2 tool = P(62, -5);
+    ASSERT_EQ(g65(f, tool, a, mv, why), 0) << why;
+    std::vector<double> levels;
+    for (const Seg& s : feeds(tool, mv))
+        if (!s.infeed) levels.push_back(s.a.y());
+    ASSERT_EQ(levels.size(), 3u);
+    EXPECT_NEAR(levels[0], 29, 1e-9);
+    EXPECT_NEAR(levels[1], 27, 1e-9);
+    EXPECT_NEAR(levels[2], 25.5, 1e-9);  // the bottom, I.5 above it
+    std::vector<V2> part = densify(f);
+    part.push_back(P(-60, -30)), part.push_back(P(-60, 0));
+    Oracle o(f, {tool}, V2(.2, .5));
+    check_out_of_part(o, part, tool, mv, "G65 beyond a square wall");
+}
+
 // Generated grooves of seven shapes (square, sloped walls, round bottom,
 // stepped, a ridge, undercut walls, chamfered edges), axial (P) and frontal
 // (R), outside and bore, cut towards both ends, allowances of both signs
@@ -1320,12 +1347,12 @@ TEST(G65, GeneratedGroovesNeverEnterThePart) {
     EXPECT_EQ(failing, 0);
     EXPECT_GE(runs, 180);
     EXPECT_GE(inside, 20);
-    // Every groove gets its passes but three (of 224), whose start point lies
-    // beyond a square wall that takes no allowance (K along it, or a wrong I
-    // roughed as written): the way down to the first level slides along the
-    // wall's face, which seg_clear counts as entering the part, so every
-    // level is skipped. Nothing is cut there; nothing gouges either.
-    EXPECT_LE(idle, 3);
+    // Every groove gets its passes, those whose start point lies beyond a
+    // square wall that takes no allowance included: the way down to each
+    // level slides along the wall's face, which touches the part without
+    // entering it (before, seg_clear counted it as entering, and 3 of 224
+    // grooves were left uncut).
+    EXPECT_EQ(idle, 0);
 }
 
 
