@@ -126,11 +126,10 @@ std::vector<double> levels(double y_top, double y_min, double step) {
     }
     return ys;
 }
-}  // namespace
-
-int g64(const Profile& fin, const std::vector<V2>& stock, V2 tool, const G64Args& a,
-        std::vector<Move>& out, std::string& why) {
-    out.clear();
+// The arguments, the finished profile and the stock, in the order the NUM
+// checks them (§6.3 step 1): the first fault's error number, or 0.
+int check_g64(const Profile& fin, const std::vector<V2>& stock, const std::vector<Elem>& bs,
+              const G64Args& a, std::string& why) {
     if (!a.has_p && !a.has_r) {
         why = tr("G64 needs P (passes along Z) or R (passes along X)");
         return 873;
@@ -149,38 +148,44 @@ int g64(const Profile& fin, const std::vector<V2>& stock, V2 tool, const G64Args
         why = tr("no stock point between G64 and G80");
         return 872;
     }
-    std::vector<Elem> bs = polyline(stock);
     if (int e = zone::check_axis(fin.elems, N_("the finished profile crosses the spindle axis (X below 0)"), why)) return e;
     if (int e = zone::check_axis(bs, N_("the stock crosses the spindle axis (X below 0)"), why)) return e;
+    return 0;
+}
 
-    bool rev = stock_reversed(stock, fin);
-    std::vector<V2> b = stock;
-    if (rev) std::reverse(b.begin(), b.end());
-    Material real;
-    real.F = fin.elems;
-    build_region(b, fin, real);
-    if (int e = check_region(real, why)) return e;
+// The coordinate along which the levels step, and the one the passes run along.
+double level_of(const Frame& fr, const V2& p) {
+    return fr.swap ? p.x() : p.y();
+}
+double along(const Frame& fr, const V2& p) {
+    return fr.swap ? p.y() : p.x();
+}
 
-    // Frame: passes along x; the material above the profile (§6.3 step 2). Its
-    // side is the mean normal of the profile towards the material, which is the
-    // profile's chord turned a quarter towards the side M lies on; when that
-    // says nothing along the level axis, the tool is on the side of the stock
-    // where the levels start.
+// Frame: passes along x; the material above the profile (§6.3 step 2). Its
+// side is the mean normal of the profile towards the material, which is the
+// profile's chord turned a quarter towards the side M lies on; when that
+// says nothing along the level axis, the tool is on the side of the stock
+// where the levels start.
+Frame pass_frame(const Profile& fin, const Material& real, const std::vector<V2>& stock, V2 tool,
+                 bool along_x) {
     Frame fr;
-    fr.swap = a.has_r;
-    auto lev = [&](const V2& p) { return fr.swap ? p.x() : p.y(); };
-    auto ax = [&](const V2& p) { return fr.swap ? p.y() : p.x(); };
+    fr.swap = along_x;
     V2 chord = fin.elems.back().b - fin.elems.front().a;
     V2 side = area(real.M) < 0 ? V2(-chord.y(), chord.x()) : V2(chord.y(), -chord.x());
-    if (std::fabs(lev(side)) > kUm * std::max(1.0, chord.norm())) {
-        fr.s = lev(side) > 0 ? 1 : -1;
+    if (std::fabs(level_of(fr, side)) > kUm * std::max(1.0, chord.norm())) {
+        fr.s = level_of(fr, side) > 0 ? 1 : -1;
     } else {
         double lo = kInf;
-        for (const V2& p : stock) lo = std::min(lo, lev(p));
-        fr.s = lev(tool) < lo - kUm ? -1 : 1;
+        for (const V2& p : stock) lo = std::min(lo, level_of(fr, p));
+        fr.s = level_of(fr, tool) < lo - kUm ? -1 : 1;
     }
-    Material m = to_frame(real, fr);
-    m.translate(fr.to(V2(a.k, a.i)));
+    return fr;
+}
+
+// The pass levels in the frame, from the stock's top down to the translated
+// profile's lowest point; 873 when the step would make too many of them.
+int pass_levels(const Material& m, const std::vector<V2>& stock, const Frame& fr, double step,
+                std::vector<double>& ys, std::string& why) {
     double y_top = -kInf, y_min = kInf;
     for (const V2& p : stock) y_top = std::max(y_top, fr.to(p).y());
     for (const Elem& e : m.F) y_min = std::min(y_min, min_y(translated(e, m.t)));
@@ -188,32 +193,27 @@ int g64(const Profile& fin, const std::vector<V2>& stock, V2 tool, const G64Args
         why = tr("the depth of cut is too small for the stock");
         return 873;
     }
-    std::vector<double> ys = levels(y_top, y_min, step);
-    // Cutting direction: from the stock into the material, towards the profile
-    // (§6.3 step 4: from the end of the called profile towards its start, when
-    // the stock is written from its start; the reverse when it is written from
-    // its end, as in the cabestan programs).
+    ys = levels(y_top, y_min, step);
+    return 0;
+}
+
+// Cutting direction: from the stock into the material, towards the profile
+// (§6.3 step 4: from the end of the called profile towards its start, when
+// the stock is written from its start; the reverse when it is written from
+// its end, as in the cabestan programs).
+int pass_direction(const Material& m, const std::vector<double>& ys, const Profile& fin,
+                   const std::vector<Elem>& bs, bool rev, const Frame& fr) {
     V2 f0 = fin.elems.front().a, fn = fin.elems.back().b;
     int d = cut_direction(m, ys);
-    if (d == 0) d = rev ? sgn(ax(fn) - ax(f0)) : sgn(ax(f0) - ax(fn));
-    if (d == 0) d = sgn(ax(zone::centroid(fin.elems)) - ax(zone::centroid(bs)));
+    if (d == 0) d = rev ? sgn(along(fr, fn) - along(fr, f0)) : sgn(along(fr, f0) - along(fr, fn));
+    if (d == 0) d = sgn(along(fr, zone::centroid(fin.elems)) - along(fr, zone::centroid(bs)));
     if (d == 0) d = -1;
-    // The allowance is a signed translation (turning.md §11 item 6): the NUM
-    // cannot know which side is material. Where it points into the part (a
-    // positive I on a bore, seed 000: "I et K peuvent être munies du signe −
-    // (sur-épaisseur pour un alésage)"), the passes rough the translated
-    // profile as written and cut into the part; the caller warns (1116).
-    if (m.t.y() < -kUm || m.t.x() * d > kUm) {
-        a.allowance_inside = true;
-        Profile moved;
-        for (const Elem& e : fin.elems) moved.elems.push_back(translated(e, V2(a.k, a.i)));
-        G64Args written = a;
-        written.i = written.k = 0;
-        return g64(moved, stock, tool, written, out, why);
-    }
-    double c = std::min(std::max(0.0, a.clearance), step / 2);
+    return d;
+}
 
-    Emit em{fr, out, fr.to(tool)};
+// One pass per level, over the first interval met from the stock, up to where
+// the profile hides the material (§6.3 step 4); then back to the start point.
+void rough_passes(Emit& em, const Material& m, const std::vector<double>& ys, int d, double c) {
     V2 s = em.cur;
     bool first = true;
     for (double y : ys) {
@@ -235,6 +235,47 @@ int g64(const Profile& fin, const std::vector<V2>& stock, V2 tool, const G64Args
         em.go(0, V2(em.cur.x(), s.y()));
         em.go(0, s);
     }
+}
+}  // namespace
+
+int g64(const Profile& fin, const std::vector<V2>& stock, V2 tool, const G64Args& a,
+        std::vector<Move>& out, std::string& why) {
+    out.clear();
+    std::vector<Elem> bs = polyline(stock);
+    if (int e = check_g64(fin, stock, bs, a, why)) return e;
+    double step = a.has_p ? a.p : a.r;
+
+    bool rev = stock_reversed(stock, fin);
+    std::vector<V2> b = stock;
+    if (rev) std::reverse(b.begin(), b.end());
+    Material real;
+    real.F = fin.elems;
+    build_region(b, fin, real);
+    if (int e = check_region(real, why)) return e;
+
+    Frame fr = pass_frame(fin, real, stock, tool, a.has_r);
+    Material m = to_frame(real, fr);
+    m.translate(fr.to(V2(a.k, a.i)));
+    std::vector<double> ys;
+    if (int e = pass_levels(m, stock, fr, step, ys, why)) return e;
+    int d = pass_direction(m, ys, fin, bs, rev, fr);
+    // The allowance is a signed translation (turning.md §11 item 6): the NUM
+    // cannot know which side is material. Where it points into the part (a
+    // positive I on a bore, seed 000: "I et K peuvent être munies du signe −
+    // (sur-épaisseur pour un alésage)"), the passes rough the translated
+    // profile as written and cut into the part; the caller warns (1116).
+    if (m.t.y() < -kUm || m.t.x() * d > kUm) {
+        a.allowance_inside = true;
+        Profile moved;
+        for (const Elem& e : fin.elems) moved.elems.push_back(translated(e, V2(a.k, a.i)));
+        G64Args written = a;
+        written.i = written.k = 0;
+        return g64(moved, stock, tool, written, out, why);
+    }
+    double c = std::min(std::max(0.0, a.clearance), step / 2);
+
+    Emit em{fr, out, fr.to(tool)};
+    rough_passes(em, m, ys, d, c);
     return 0;
 }
 
