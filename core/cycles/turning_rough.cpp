@@ -3,7 +3,10 @@
 // G63 roughing with grooves (§6.5), the same passes entering grooves.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <algorithm>
+#include <functional>
 #include <cmath>
+
+#include <Eigen/Geometry>
 
 #include "core/cycles/turning.hpp"
 #include "core/geometry/geometry.hpp"
@@ -184,6 +187,26 @@ Frame pass_frame(const Profile& fin, const Material& real, const std::vector<V2>
 
 // The pass levels in the frame, from the stock's top down to the translated
 // profile's lowest point; 873 when the step would make too many of them.
+// [DECISION] (issue 19) A level at the height of each land: every line of
+// the profile plus allowance that runs along the passes, between the top of
+// the stock and the last level, gets a pass, so the lands are left at the
+// allowance and not up to one depth of cut above it.  Seed 000:2597-2600:
+// after "G64 ... I.5 K.2 P2", %555 places G65's start point at X62 Z50 in
+// rapid, 0.5 mm above the ø60 lands plus allowance; lands left at ø64 by
+// the levels alone would be in its way.
+void add_land_levels(const Material& m, double y_top, std::vector<double>& ys) {
+    if (ys.empty()) return;
+    const double y_last = ys.back();
+    for (const Elem& f : m.F) {
+        const Elem e = translated(f, m.t);
+        if (e.arc || std::fabs(e.a.y() - e.b.y()) > kTol || std::fabs(e.a.x() - e.b.x()) <= kUm) continue;
+        const double y = e.a.y();
+        if (y >= y_top - kUm || y <= y_last + kUm) continue;
+        if (std::any_of(ys.begin(), ys.end(), [&](double l) { return std::fabs(l - y) <= kUm; })) continue;
+        ys.insert(std::upper_bound(ys.begin(), ys.end(), y, std::greater<double>()), y);
+    }
+}
+
 int pass_levels(const Material& m, const std::vector<V2>& stock, const Frame& fr, double step,
                 std::vector<double>& ys, std::string& why) {
     double y_top = -kInf, y_min = kInf;
@@ -194,6 +217,7 @@ int pass_levels(const Material& m, const std::vector<V2>& stock, const Frame& fr
         return 873;
     }
     ys = levels(y_top, y_min, step);
+    add_land_levels(m, y_top, ys);
     return 0;
 }
 
@@ -209,6 +233,123 @@ int pass_direction(const Material& m, const std::vector<double>& ys, const Profi
     if (d == 0) d = sgn(along(fr, zone::centroid(fin.elems)) - along(fr, zone::centroid(bs)));
     if (d == 0) d = -1;
     return d;
+}
+
+// The point of e at t in [0, 1] along it, and the piece of e from t0 to t1.
+V2 point_at(const Elem& e, double t) {
+    if (!e.arc) return e.a + t * (e.b - e.a);
+    return e.c + Eigen::Rotation2Dd(t * e.sweep) * (e.a - e.c);
+}
+Elem piece(const Elem& e, double t0, double t1) {
+    Elem p = e;
+    p.a = point_at(e, t0), p.b = point_at(e, t1);
+    p.sweep = e.sweep * (t1 - t0);
+    return p;
+}
+
+// The profile plus allowance that the passes reached: a point of it is
+// reached when it lies in the material, the level line just above it runs clear of the part plus
+// allowance from the stock side (it is not behind a bump), and the vertical
+// above it too (it is not hidden from the retract side): what is neither is a
+// groove, left to G65.
+struct Reach {
+    const Material& m;
+    int d;
+    double y_top, span;
+    bool operator()(const V2& p) const {
+        const V2 q(p.x(), p.y() + 1e-4);  // 0.1 µm above it
+        return m.in_M(q) && zone::seg_clear(m, V2(p.x() - d * span, q.y()), q) && zone::seg_clear(m, q, V2(p.x(), y_top));
+    }
+};
+
+// The stretches of the profile plus allowance that the passes reached, in the
+// order of the passes' direction, each as a list of elements.
+std::vector<std::vector<Elem>> reached_stretches(const Material& m, const std::vector<Elem>& fp, int d,
+                                                 double y_top) {
+    double span = y_top;
+    for (const Elem& e : fp) span = std::max({span, std::fabs(e.a.x()), std::fabs(e.b.x())});
+    const Reach reach{m, d, y_top, 4 * span + 100};
+    std::vector<std::vector<Elem>> out;
+    bool open = false;
+    for (const Elem& e : fp) {
+        const int n = std::clamp(int(std::ceil(length(e) / 0.5)), 4, 64);
+        double t0 = 0;
+        bool in = reach(point_at(e, 0.5 / n));
+        for (int k = 1; k <= n; ++k) {
+            const bool next = k < n && reach(point_at(e, (k + 0.5) / n));
+            if (k < n && next == in) continue;
+            double t1 = 1;
+            if (k < n) {  // where reach changes, to 0.1 µm
+                double lo = (k - 0.5) / n, hi = (k + 0.5) / n;
+                while ((hi - lo) * length(e) > 1e-4) {
+                    const double mid = (lo + hi) / 2;
+                    (reach(point_at(e, mid)) == in ? lo : hi) = mid;
+                }
+                t1 = (lo + hi) / 2;
+            }
+            if (!in) {
+                open = false;
+            } else if ((t1 - t0) * length(e) > kUm) {
+                if (!open) out.emplace_back();
+                out.back().push_back(piece(e, t0, t1));
+                open = true;
+            }
+            t0 = t1;
+            in = next;
+        }
+    }
+    return out;
+}
+
+// [DECISION] (issue 19) G64 ends with a pass along the profile plus allowance
+// over what the passes reached, in their direction: it takes off the steps
+// the levels leave on cones and arcs (the seeds give no toolpath; seed
+// 000:2626 has %555 rapid to X142 Z0 with G41 after the cycle, which
+// the steps left on the N110 arc would be in the way of).  The way to each
+// stretch and back runs at feed within the clearance of the material, in rapid
+// above it.
+void contour_pass(Emit& em, const Material& m, int d, double c, double y_safe) {
+    double y_top = -kInf;
+    for (const Elem& e : m.M) y_top = std::max(y_top, max_y(e));
+    if (y_top == -kInf) y_top = y_safe;
+    y_top = std::min(y_top, y_safe);
+    // The profile plus allowance in the passes' direction; where it ends, the
+    // profile itself ends on the closing side of the material.
+    std::vector<Elem> fp;
+    for (const Elem& e : m.F) fp.push_back(translated(e, m.t));
+    V2 end = m.F.back().b;
+    if ((fp.back().b.x() - fp.front().a.x()) * d < 0) {
+        std::reverse(fp.begin(), fp.end());
+        for (Elem& e : fp) e = reversed(e);
+        end = m.F.front().a;
+    }
+    // Above the material at x, by the clearance: the way down runs in rapid
+    // to there (in the air above the stock), then at feed.
+    auto above = [&](const V2& p) {
+        double y = -kInf;
+        std::vector<V2> pts;
+        for (const Elem& e : m.M) intersect(e, line(V2(p.x(), p.y()), V2(p.x(), y_top + 1)), pts);
+        for (const V2& q : pts) y = std::max(y, q.y());
+        return std::max(y, p.y()) + c;
+    };
+    for (const std::vector<Elem>& s : reached_stretches(m, fp, d, y_top)) {
+        const V2 a = s.front().a;
+        em.go(0, V2(em.cur.x(), y_safe));
+        em.go(0, V2(a.x(), y_safe));
+        em.go(0, V2(a.x(), above(a)));
+        em.go(1, a);
+        for (const Elem& e : s) {
+            if (e.arc)
+                em.arc(e);
+            else
+                em.go(1, e.b);
+        }
+        // At the end of the profile, on along the level to where the material
+        // ends: the allowance along the passes leaves a strip there (%555 Z0).
+        if ((s.back().b - fp.back().b).norm() <= kUm && (end.x() - em.cur.x()) * d > kUm)
+            em.go(1, V2(end.x(), em.cur.y()));
+        em.go(1, V2(em.cur.x(), above(em.cur)));
+    }
 }
 
 // One pass per level, over the first interval met from the stock, up to where
@@ -232,6 +373,7 @@ void rough_passes(Emit& em, const Material& m, const std::vector<double>& ys, in
         }
     }
     if (!first) {
+        contour_pass(em, m, d, c, s.y());
         em.go(0, V2(em.cur.x(), s.y()));
         em.go(0, s);
     }

@@ -548,4 +548,14 @@ void Emit::go(int g, const V2& p, bool infeed, double dwell) {
     cur = p;
 }
 
+void Emit::arc(const Elem& e) {
+    Move mv;
+    mv.sweep = e.sweep * fr.det();
+    mv.g = mv.sweep > 0 ? 3 : 2;
+    mv.to = fr.back(e.b);
+    mv.c = fr.back(e.c);
+    out.push_back(mv);
+    cur = e.b;
+}
+
 }  // namespace pupitre::turning::zone

@@ -114,6 +114,7 @@ struct Emit {
     std::vector<Move>& out;
     V2 cur;  // frame coordinates
     void go(int g, const V2& p, bool infeed = false, double dwell = 0);
+    void arc(const Elem& e);  // at feed, from cur (e.a) along e
 };
 
 }  // namespace pupitre::turning::zone

@@ -13,6 +13,7 @@
 #include <numbers>
 #include <random>
 #include <sstream>
+#include <Eigen/Geometry>
 
 #include "core/cycles/turning.hpp"
 #include "core/interp/interp.hpp"
@@ -99,9 +100,22 @@ struct Seg {
     int g;
     bool infeed;
 };
+// The moves as segments; an arc (G64's pass along the profile) as chords of
+// at most 0.1 µm sagitta, so that sampling them stays on the arc.
 std::vector<Seg> segs(V2 from, const std::vector<Move>& mv) {
     std::vector<Seg> out;
     for (const Move& m : mv) {
+        if (m.g == 2 || m.g == 3) {
+            const double r = (from - m.c).norm();
+            const int n = std::max(1, int(std::ceil(std::fabs(m.sweep) / std::sqrt(8e-7 / r))));
+            for (int k = 1; k <= n; ++k) {
+                const double a = m.sweep * k / n;
+                const V2 q = k == n ? m.to : V2(m.c + Eigen::Rotation2Dd(a) * (from - m.c));
+                out.push_back({k == 1 ? from : out.back().b, q, m.g, false});
+            }
+            from = m.to;
+            continue;
+        }
         out.push_back({from, m.to, m.g, m.infeed});
         from = m.to;
     }
@@ -250,10 +264,10 @@ void check_clear(const Oracle& o, V2 tool, const std::vector<Move>& mv, double c
             // A rapid may graze the zone where it sticks out of the material
             // (at the stock's edge); inside the material it is a gouge.
             bool in_material = in_polygon(o.m, q) && polyline_dist(o.m, q, true) > 1e-6;
-            if (o.in_A(q) && (s.g == 1 || in_material) && ++bad_a <= 2)
+            if (o.in_A(q) && (s.g != 0 || in_material) && ++bad_a <= 2)
                 ADD_FAILURE() << what << ": G" << s.g << " in A at Z" << q.x() << " r" << q.y()
                               << " on " << s.a.transpose() << " -> " << s.b.transpose();
-            if (s.g == 1 && !o.in_M(q, c + 1e-6)) ++bad_m;
+            if (s.g != 0 && !o.in_M(q, c + 1e-6)) ++bad_m;
         }
     }
     EXPECT_EQ(bad_a, 0) << what << ": points inside the profile plus allowance";
@@ -319,10 +333,12 @@ struct Row {
     double level, start, end;
 };
 
+// The level passes come first; the pass along the profile plus allowance
+// follows them (P555EndsAlongTheAllowanceProfile checks it).
 void expect_passes(V2 tool, const std::vector<Move>& mv, bool swap, double c, int d,
                    const std::vector<Row>& rows) {
     std::vector<Seg> p = feeds(tool, mv);
-    ASSERT_EQ(p.size(), rows.size());
+    ASSERT_GE(p.size(), rows.size());
     for (size_t i = 0; i < rows.size(); ++i) {
         auto ax = [&](V2 v) { return swap ? v.y() : v.x(); };
         auto lv = [&](V2 v) { return swap ? v.x() : v.y(); };
@@ -357,22 +373,28 @@ TEST(G64, P555AlongZ) {
                    {42.0000, 58.461538, 10.200000}, {40.0000, 61.692308, 10.200000},
                    {38.0000, 64.923077, 10.200000}, {36.0000, 68.153846, 10.200000},
                    {34.0000, 71.384615, 10.200000}, {32.0000, 74.615385, 10.200000},
+                   // The Ø60 lands plus I.5: over the groove, to the face N120.
+                   {30.5000, 77.038462, 10.200000},
                    {30.0000, 77.846154, 61.057143}, {28.0000, 81.076923, 64.485714},
                    {26.0000, 84.307692, 67.914286}, {24.0000, 87.538462, 71.342857},
-                   {22.0000, 90.769231, 74.771429}, {20.0000, 94.000000, 78.200000},
+                   // The Ø40 groove bottom plus I.5, to the cone N180.
+                   {22.0000, 90.769231, 74.771429}, {20.5000, 93.192308, 77.342857},
+                   {20.0000, 94.000000, 78.200000},
                    {18.0000, 94.000000, 81.628571}, {16.0000, 94.000000, 85.057143},
                    {14.0000, 94.000000, 88.485714}, {12.0000, 94.000000, 90.200000},
                    {10.0000, 94.000000, 90.200000}, {8.0000, 94.000000, 90.200000},
                    {6.0000, 94.000000, 90.200000},  {4.0000, 94.000000, 90.200000},
                    {2.0000, 94.000000, 90.200000},  {0.5000, 94.000000, 90.200000}});
     // Approach along Z then down; each pass: rapid in, feed, retract 1 mm
-    // radially, rapid back; at the end up to X200 then to Z150 (§6.3 steps 4, 6).
+    // radially, rapid back; then the pass along the profile plus allowance,
+    // which ends at its start Z0 (r 70.5); at the end up to X200 then to Z150
+    // (§6.3 steps 4, 6).
     ASSERT_GE(mv.size(), 6u);
     EXPECT_TRUE(mv[0].g == 0 && mv[0].to.isApprox(V2(14.230769, 100), 1e-6));
     EXPECT_TRUE(mv[1].g == 0 && mv[1].to.isApprox(V2(14.230769, 70), 1e-6));
     EXPECT_TRUE(mv[3].g == 0 && mv[3].to.isApprox(V2(3.322498, 71), 1e-6));
     EXPECT_TRUE(mv[4].g == 0 && mv[4].to.isApprox(V2(14.230769, 71), 1e-6));
-    EXPECT_TRUE(mv[mv.size() - 2].to.isApprox(V2(95, 100), 1e-9));
+    EXPECT_TRUE(mv[mv.size() - 2].to.isApprox(V2(0, 100), 1e-9));
     EXPECT_TRUE(mv.back().to.isApprox(tool, 1e-12));
     // The groove between the two Ø60 lands is never entered.
     for (const Seg& s : feeds(tool, mv))
@@ -391,7 +413,9 @@ TEST(G64, P555AlongX) {
     std::vector<V2> stock{P(0, 94), P(40, 94), P(144, 10), P(144, 0)};
     ASSERT_EQ(g64(reversed(p555()), stock, tool, a, mv, why), 0) << why;
     expect_passes(tool, mv, true, 1, -1,
-                  {{91.0000, 21.857143, 0.000000},  {88.0000, 23.714286, 14.283333},
+                  {{91.0000, 21.857143, 0.000000},
+                   {90.2000, 22.352381, 0.000000},  // the face N190 plus K.2, along it to the axis
+                   {88.0000, 23.714286, 14.283333},
                    {85.0000, 25.571429, 16.033333}, {82.0000, 27.428571, 17.783333},
                    {79.0000, 29.285714, 19.533333}, {76.0000, 31.142857, 21.283333},
                    {73.0000, 33.000000, 23.033333}, {70.0000, 34.857143, 24.783333},
@@ -404,7 +428,9 @@ TEST(G64, P555AlongX) {
                    {31.0000, 59.000000, 30.500000}, {28.0000, 60.857143, 30.500000},
                    {25.0000, 62.714286, 30.500000}, {22.0000, 64.571429, 30.500000},
                    {19.0000, 66.428571, 30.500000}, {16.0000, 68.285714, 30.500000},
-                   {13.0000, 70.142857, 30.500000}, {10.0000, 72.000000, 62.489974},
+                   {13.0000, 70.142857, 30.500000},
+                   {10.2000, 71.876190, 30.500000},  // the face N120 plus K.2, to the Ø60 land
+                   {10.0000, 72.000000, 62.489974},
                    {7.0000, 72.000000, 67.832121},  {4.0000, 72.000000, 69.749865},
                    {1.0000, 72.000000, 70.467949},  {0.2000, 72.000000, 70.500000}});
     EXPECT_TRUE(mv.back().to.isApprox(tool, 1e-12));
@@ -423,6 +449,42 @@ int g64_called(const Profile& f, const std::vector<V2>& stock, V2 tool, G64Args&
 }
 
 }  // namespace
+
+// [DECISION] of issue 19: G64 ends with a pass along the profile plus
+// allowance over what the passes reached. On %555, along Z and along X, every
+// point of the translated profile lies on that pass (a feed or an arc), but
+// the groove Z20-Z50 left to G65: its flanks and bottom below the Ø60 lands.
+TEST(G64, P555EndsAlongTheAllowanceProfile) {
+    for (bool along_x : {false, true}) {
+        G64Args a;
+        a.i = .5, a.k = .2;
+        std::vector<Move> mv;
+        std::string why;
+        V2 tool = P(200, 150);
+        ASSERT_EQ(g64_called(p555(), kStock555, tool, a, along_x, along_x ? 3 : 2, mv, why), 0) << why;
+        std::vector<Seg> cut;
+        for (const Seg& s : segs(tool, mv))
+            if (s.g != 0) cut.push_back(s);
+        std::vector<V2> fp = densify(shifted(p555(), V2(.2, .5)));
+        int on = 0, off = 0, groove = 0;
+        for (size_t i = 0; i + 1 < fp.size(); ++i)
+            // Along a line, ten points; on an arc, its vertices (they lie on it).
+            for (int k = 0; k < ((fp[i + 1] - fp[i]).norm() > .2 ? 10 : 1); ++k) {
+                V2 q = fp[i] + (fp[i + 1] - fp[i]) * (k / 10.0);
+                if (q.x() > 20.2 + 1e-6 && q.x() < 50.2 - 1e-6 && q.y() < 30.5 - 1e-6) {
+                    ++groove;
+                    continue;
+                }
+                bool hit = false;
+                for (const Seg& s : cut) hit = hit || seg_point(q, s.a, s.b) < 1e-6;
+                (hit ? on : off)++;
+                if (!hit && off <= 3) ADD_FAILURE() << (along_x ? "X" : "Z") << ": not on the pass at Z" << q.x() << " r" << q.y();
+            }
+        EXPECT_GT(on, 100);
+        EXPECT_GT(groove, 10);
+        EXPECT_EQ(off, 0);
+    }
+}
 
 TEST(G64, P555Properties) {
     for (bool along_x : {false, true}) {
@@ -466,10 +528,12 @@ TEST(G64, P1Chuck) {
                   {{30, 1, -44.25},
                    {27.5, 1, -44.25},
                    {25, 1, -44.25},
+                   {24.725, 1, -44.25},  // the Ø48.25 land plus I.6
                    {22.5, 1, -20.25},
                    {20, 1, -20.25},
                    {17.5, 1, -20.25},
-                   {15, 1, -20.25}});
+                   {15, 1, -20.25},
+                   {14.097, 1, -20.25}});  // the Ø26.994 land plus I.6
     Oracle o(f, stock, V2(.5, .6));
     check_clear(o, tool, mv, 1, "%1");
     check_cover(o, tool, mv, false, 1, 2.5, 12.097, "%1");
@@ -497,6 +561,7 @@ TEST(G64, P2Cone) {
                    {20, 1, -73.739708},
                    {17.5, 1, -56.961275},
                    {15, 1, -40.182842},
+                   {13.229, 1, -28.297},  // the Ø25.258 land plus I.6, to the cone's end
                    {12.5, 1, 0.229}});
     Oracle o(f, stock, V2(.5, .6));
     check_clear(o, tool, mv, 1, "%2");
@@ -518,6 +583,7 @@ TEST(G64, PalierP1001) {
     ASSERT_EQ(g64(f, stock, tool, a, mv, why), 0) << why;
     std::vector<Row> rows;
     for (double r = 50; r > 25; r -= 2) rows.push_back({r, 51.5, 15.4});
+    rows.push_back({25.4, 51.5, 15.4});  // the Ø49.8 land plus I.5
     rows.push_back({24, 51.5, 50.3});
     expect_passes(tool, mv, false, 1, -1, rows);
     Oracle o(f, stock, V2(.4, .5));

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The workshop in batch (pupitre-setup(5)): turn.iso cut in the shipped lathe
 # setup and measured (golden JSON in turn.json), a wrong PREF read by the
-# micrometer, a wrong PREF Z that crashes, the usage errors, --part-out.
+# micrometer, a wrong PREF Z that crashes, the usage errors, --part-out, and
+# the handbook's %555 on its blank.
 #   workshop.sh PUPITRE_BINARY
 # SPDX-License-Identifier: GPL-3.0-or-later
 set -uo pipefail
@@ -88,4 +89,14 @@ grep -q 'id="part"' "$work/plain.svg" && fail "(f) no part without --setup"
     --svg "$work/crash.svg" turn.iso 2>"$work/err"
 [ $? -eq 1 ] || fail "(f) a crash in plot should exit 1"
 grep -Eq 'error 1200: crash:' "$work/err" || fail "(f) plot should print the crash: $(cat "$work/err")"
+# (g) The handbook's %555 (G64 then G65, a copy of shared/programs
+# 000_p555_cycles_x.iso) on its blank: G64 leaves the Ø60 lands at Ø61 (I.5),
+# so N340's rapid to X62 Z50 and the G65 after it run clear of the part
+# (issue 19: before, the lands stayed at Ø64 and N340 crashed).
+p555=(--set PREF.X=-20 --set PREF.Z=-54 --set D1.X=52.347 --set D1.Z=41.215 --set D1.R=0.8 --set D1.C=3
+    --set D3.X=48.112 --set D3.Z=44.730 --set D3.R=0.4 --set D3.C=8)
+out=$("$bin" run --setup p555.setup "${p555[@]}" --measure "dia Z-40" --measure "dia Z-80" p555_x.iso 2>"$work/err")
+grep -Eq ': N3[45]0: error 12' "$work/err" && fail "(g) %555 crashed at N340/N350: $(cat "$work/err")"
+grep -qx 'dia Z-40: 61.000 mm (micrometer)' <<<"$out" || fail "(g) the Ø60 land by Z50-Z60 should be Ø61: $out"
+grep -qx 'dia Z-80: 61.000 mm (micrometer)' <<<"$out" || fail "(g) the Ø60 land by Z10-Z20 should be Ø61: $out"
 echo ok
