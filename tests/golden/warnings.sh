@@ -23,7 +23,8 @@ trap 'rm -f "$actual"' EXIT
     done
     grep -E '^[a-z]' "$here/cases.txt" | while read -r _ machine rest; do
         for w in $rest; do
-            case $w in local:*) list "$here/programs" "${w#local:}" "$machine" ;; esac
+            # The copies of shared programs are listed with the corpus above.
+            case $w in local:*) [ -f "$shared/${w#local:}" ] || list "$here/programs" "${w#local:}" "$machine" ;; esac
         done
     done | sort -u
 } >"$actual"

@@ -16,7 +16,8 @@ using namespace pupitre::pages;
 
 namespace {
 
-const std::string kShared = PUPITRE_SHARED;
+// The handbook programs the snapshots draw, copied from ../shared/programs.
+const std::string kPrograms = std::string(PUPITRE_SOURCE_DIR) + "/tests/golden/programs";
 const std::string kSource = PUPITRE_SOURCE_DIR;
 
 void snapshot(const std::string& name, const std::string& screen) {
@@ -50,14 +51,12 @@ std::string styles(const Canvas& c) {
 }
 
 struct Lathe555 : test::PlotRun {
-    Lathe555() : PlotRun("lathe", {kShared + "/programs/004_p555.iso"}) {}
+    Lathe555() : PlotRun("lathe", {kPrograms + "/004_p555.iso"}) {}
 };
 struct Mill200 : test::PlotRun {
-    Mill200() : PlotRun("mill", {kShared + "/programs/000_p200_boitier.iso"}, {{"D3.R", 8}}) {}
+    Mill200() : PlotRun("mill", {kPrograms + "/000_p200_boitier.iso"}, {{"D3.R", 8}}) {}
 };
 
-// The handbook programs live in shared/ beside the repository.
-const char* const kNoShared = " (shared/ not beside the repo)";
 
 GraphView view_of(const test::PlotRun& r) {
     GraphView g;
@@ -70,7 +69,7 @@ GraphView view_of(const test::PlotRun& r) {
 
 TEST(GraphSnapshot, LatheP555) {
     Lathe555 r;
-    if (!r.load_error.empty()) GTEST_SKIP() << r.load_error << kNoShared;
+    ASSERT_TRUE(r.load_error.empty()) << r.load_error;
     ASSERT_FALSE(r.in->has_errors());
     GraphView g = view_of(r);
     EXPECT_EQ(g.plane, PathPlane::zx);
@@ -81,7 +80,7 @@ TEST(GraphSnapshot, LatheP555) {
 
 TEST(GraphSnapshot, MillPocketP200) {
     Mill200 r;
-    if (!r.load_error.empty()) GTEST_SKIP() << r.load_error << kNoShared;
+    ASSERT_TRUE(r.load_error.empty()) << r.load_error;
     ASSERT_FALSE(r.in->has_errors());
     GraphView g = view_of(r);
     EXPECT_EQ(g.plane, PathPlane::xy);
@@ -94,7 +93,7 @@ TEST(GraphSnapshot, MillPocketP200) {
 
 TEST(GraphSnapshot, MillZoomCursorAndTool) {
     Mill200 r;
-    if (!r.load_error.empty()) GTEST_SKIP() << r.load_error << kNoShared;
+    ASSERT_TRUE(r.load_error.empty()) << r.load_error;
     GraphView g = view_of(r);
     Rect page{0, 1, 80, 20};
     // The cursor on the circular pocket, zoomed 4x about it, the tool half-way.

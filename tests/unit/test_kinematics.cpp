@@ -65,8 +65,8 @@ TEST(Kinematics, Program170ComputesItsOwnFrame) {
     ASSERT_TRUE(builtin_machine("mill4", m));
     ProgramMemory mem;
     Diag d;
-    const std::string path = std::string(PUPITRE_SHARED) + "/programs/004_p170.iso";
-    if (!mem.load_file(path, d)) GTEST_SKIP() << "shared/ not beside the repository";
+    const std::string path = std::string(PUPITRE_SOURCE_DIR) + "/tests/golden/programs/004_p170.iso";
+    ASSERT_TRUE(mem.load_file(path, d)) << d.detail;
     test::Capture cap;
     Interpreter in(m, mem, cap);
     in.start(mem.first());
