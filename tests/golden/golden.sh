@@ -6,6 +6,7 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 set -euo pipefail
 bin=$1 name=$2 bless=${3:-}
+[ "${PUPITRE_BLESS:-}" = 1 ] && bless=--bless  # the one bless switch, as for the snapshots
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
 shared=${PUPITRE_SHARED:-$root/../shared}

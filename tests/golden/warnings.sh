@@ -7,6 +7,7 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 set -euo pipefail
 bin=$1 bless=${2:-}
+[ "${PUPITRE_BLESS:-}" = 1 ] && bless=--bless  # the one bless switch, as for the snapshots
 here=$(cd "$(dirname "$0")" && pwd)
 shared=${PUPITRE_SHARED:-$here/../../../shared}/programs
 [ -f "$shared/INDEX.tsv" ] || { echo "warnings: $shared missing (a corpus sweep)" >&2; exit 77; }
