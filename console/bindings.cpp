@@ -335,7 +335,6 @@ bool matches(const std::string& want, std::string_view have) {
 
 }  // namespace
 
-const std::vector<Action>& all_actions() { return kActions; }
 
 const Action* find_action(std::string_view name) {
     for (const Action& a : kActions)

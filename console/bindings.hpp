@@ -25,7 +25,6 @@ struct Action {
 };
 
 const Action* find_action(std::string_view name);
-const std::vector<Action>& all_actions();
 
 struct Context {
     std::string page;  // "" = any

@@ -27,19 +27,6 @@ std::string_view kind_name(RevisionKind k) {
     return "save";
 }
 
-std::string_view status_name(SaveStatus s) {
-    switch (s) {
-        case SaveStatus::created:
-            return "created";
-        case SaveStatus::saved:
-            return "saved";
-        case SaveStatus::unchanged:
-            return "unchanged";
-        case SaveStatus::conflict:
-            return "conflict";
-    }
-    return "saved";
-}
 
 namespace {
 

@@ -101,7 +101,6 @@ struct RevisionInfo {
 };
 
 enum class SaveStatus { created, saved, unchanged, conflict };
-std::string_view status_name(SaveStatus s);
 
 struct SaveResult {
     int number = 0;

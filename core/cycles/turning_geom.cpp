@@ -226,22 +226,6 @@ double dist(const Elem& e, const V2& p) {
     return (closest(e, p) - p).norm();
 }
 
-double seg_dist(const Elem& e, const V2& p, const V2& q) {
-    Elem s = line(p, q);
-    std::vector<V2> pts;
-    intersect(e, s, pts);
-    if (!pts.empty()) return 0;
-    double best = std::min({dist(e, p), dist(e, q), dist(s, e.a), dist(s, e.b)});
-    if (e.arc) {
-        V2 f = s.a + std::clamp(seg_param(s, e.c), 0.0, 1.0) * (s.b - s.a);
-        V2 w = f - e.c;
-        if (w.norm() > kTol) {
-            V2 onc = e.c + e.r() * w.normalized();
-            if (on_arc(e, onc)) best = std::min(best, dist(s, onc));
-        }
-    }
-    return best;
-}
 
 namespace {
 bool arc_has_dir(const Elem& e, const V2& dir) {

@@ -40,7 +40,6 @@ double ray_hit(const Elem& e, const V2& p, const V2& u);
 double dist(const Elem& e, const V2& p);
 // Closest point of e to p, and the unit tangent of e there (direction a -> b).
 V2 closest(const Elem& e, const V2& p, V2* tangent = nullptr);
-double seg_dist(const Elem& e, const V2& p, const V2& q);  // e to segment p-q
 
 double min_y(const Elem& e);
 double max_y(const Elem& e);

@@ -387,7 +387,6 @@ private:
     double s_raw_ = 0;                     // S read from a variable before rounding (1113)
     std::bitset<960> l_unset_warned_;      // warning 1111, once per variable
     double spindle_at(double x_radius) const;
-    double css_rpm(double x_prog_radius) const;
     double feed_time(double length, double x0, double x1);
     void set_spindle_event();
 
@@ -523,7 +522,6 @@ private:
     bool comp_other_axes(const Axes& target, const std::bitset<kAxes>& axes);
     bool comp_exit(const Plan& p, const Axes* target);
     bool comp_emit(const std::vector<comp::Piece>& pieces, const CompCtx& ctx);
-    bool comp_line_to(const comp::V2& to, const CompCtx& ctx, const Axes& other);
     RunOptions opt_;
 
     Modal modal_;

@@ -87,13 +87,6 @@ bool Interpreter::comp_emit(const std::vector<comp::Piece>& pieces, const CompCt
     return ok;
 }
 
-bool Interpreter::comp_line_to(const comp::V2& to, const CompCtx& ctx, const Axes& other) {
-    comp::Piece p;
-    p.to = to;
-    CompCtx c = ctx;
-    c.target = other;
-    return comp_emit({p}, c);
-}
 
 bool Interpreter::comp_element(const comp::Elem& e, int g, const Axes& target, double rp) {
     CompCtx ctx{loc_, modal_, g, target, rp};

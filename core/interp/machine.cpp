@@ -284,7 +284,6 @@ std::string parse_machine(std::string_view text, MachineProfile& m) {
     return check_whole(m);
 }
 
-std::vector<std::string> builtin_machines() { return {"lathe", "mill", "mill4", "mill5"}; }
 
 bool builtin_machine(std::string_view name, MachineProfile& out) {
     std::string_view text;

@@ -60,7 +60,6 @@ struct MachineProfile {
 // Parses a profile. Returns an empty string on success, else the error.
 std::string parse_machine(std::string_view text, MachineProfile& out);
 // The profiles shipped in data/machines (embedded): lathe, mill, mill4, mill5.
-std::vector<std::string> builtin_machines();
 bool builtin_machine(std::string_view name, MachineProfile& out);
 
 }  // namespace pupitre

@@ -222,7 +222,6 @@ struct Parser {
         return true;
     }
 
-    bool is_cmp_char(char c) const { return c == '<' || c == '>' || c == '='; }
 
     // expr -> term { binop term }; stops before a comparator or the next word.
     bool expr(Expr& e) {

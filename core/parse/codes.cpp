@@ -9,24 +9,6 @@
 
 namespace pupitre {
 
-std::string_view group_name(Group g) {
-    switch (g) {
-        case Group::none: return "non-modal";
-        case Group::motion: return "motion";
-        case Group::dist: return "distance";
-        case Group::plane: return "plane";
-        case Group::radcomp: return "radius compensation";
-        case Group::prefdec: return "PREF/DEC1";
-        case Group::feed: return "feed";
-        case Group::spindle: return "spindle";
-        case Group::units: return "units";
-        case Group::scale: return "scale";
-        case Group::cycle: return "cycle";
-        case Group::toolaxis: return "tool axis";
-        case Group::coord: return "coordinates";
-    }
-    return "?";
-}
 
 namespace {
 

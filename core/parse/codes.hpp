@@ -28,7 +28,6 @@ enum class Group : uint8_t {
     toolaxis,  // G16
     coord,     // G20 G21 G22
 };
-std::string_view group_name(Group g);
 
 enum MachineKinds : uint8_t { kLathe = 1, kMill = 2, kBoth = 3 };
 
