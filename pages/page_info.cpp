@@ -26,28 +26,27 @@ std::string axes_text(const Sim& s, const Axes& v) {
     return out;
 }
 
-}  // namespace
+// One labelled line of the page.
+void kv(std::vector<Line>& lines, std::string k, std::string val) {
+    Line l;
+    l.add(" " + pad(std::move(k), 11), Style::dim).add(std::move(val), Style::value);
+    lines.push_back(std::move(l));
+}
 
-void page_info(const View& v, Canvas& c, const Rect& r) {
-    const Sim& s = *v.sim;
-    const Interpreter& in = s.interp();
-    const Modal& m = in.modal();
-    const Frames& f = in.frames();
-    // TRANSLATORS: the INFO page's title: INFO is the page's name.
-    c.rule(r.y, tr("INFO  functions in force"));
-    std::vector<Line> lines;
-    auto kv = [&](std::string k, std::string val) {
-        Line l;
-        l.add(" " + pad(std::move(k), 11), Style::dim).add(std::move(val), Style::value);
-        lines.push_back(std::move(l));
-    };
+// The G functions in force, one a group, then G53, G51 and G74 when active.
+std::string g_functions(const Modal& m, const Frames& f) {
     std::string gs = g(m.motion) + " " + g(m.plane) + " " + g(m.radcomp) + " " + (m.incremental ? "G91" : "G90") +
                      " " + g(m.feed_mode) + " " + g(m.spindle_mode) + " " + (m.inch ? "G70" : "G71") + " " +
                      g(m.cycle);
     if (f.g53) gs += " G53";
     if (f.mirror.any()) gs += " G51";
     if (f.scale_on) gs += " G74";
-    kv("G", gs);
+    return gs;
+}
+
+// The M functions in force: spindle, range, coolant, overrides, clamp, M999,
+// the last coded M.
+std::string m_functions(const Modal& m) {
     std::string ms = m.spindle_dir == 3 ? "M03" : m.spindle_dir == 4 ? "M04" : m.spindle_dir == 19 ? "M19" : "M05";
     if (m.range >= 0) ms += " M4" + std::to_string(m.range);
     ms += m.m7 ? " M07" : "";
@@ -57,41 +56,71 @@ void page_info(const View& v, Canvas& c, const Rect& r) {
     ms += m.clamped ? " M10" : " M11";
     if (m.modif_inhibited) ms += " M999";
     if (m.coded_m >= 0) ms += " M" + std::to_string(m.coded_m);
-    kv("M", ms);
+    return ms;
+}
+
+// G and M, then F S T D, the plane and the radius compensation.
+void modal_lines(const Sim& s, std::vector<Line>& lines) {
+    const Interpreter& in = s.interp();
+    const Modal& m = in.modal();
+    kv(lines, "G", g_functions(m, in.frames()));
+    kv(lines, "M", m_functions(m));
     char buf[128];
     const char* unit = m.feed_mode == 95 ? tr("mm/rev") : m.feed_mode == 93 ? tr("1/min (inverse time)") : "mm/min";
     std::snprintf(buf, sizeof buf, "F%g %s", m.feed, unit);
     // TRANSLATORS: INFO page labels (Feed, Spindle, Tool, Plane, Transform,
     // Switches): at most 10 columns each.
-    kv(tr("Feed"), buf);
+    kv(lines, tr("Feed"), buf);
     std::string sp = m.spindle_mode == 96 ? strf(tr("S%g m/min (G96 constant surface speed)"), m.s)
                                           : strf(tr("S%g rev/min"), m.s);
     if (m.smax > 0) sp += "   " + strf(tr("G92 S%g limit"), m.smax);
-    kv(tr("Spindle"), sp);
-    kv(tr("Tool"), strf(tr("T%d (in spindle T%d)  D%d"), m.t, m.tool_in_spindle, m.d));
+    kv(lines, tr("Spindle"), sp);
+    kv(lines, tr("Tool"), strf(tr("T%d (in spindle T%d)  D%d"), m.t, m.tool_in_spindle, m.d));
     std::string plane = m.plane == 17 ? "XY (G17)" : m.plane == 18 ? "ZX (G18)" : "YZ (G19)";
-    kv(tr("Plane"), plane + "   " +
-                        (m.radcomp == 41   ? tr("radius comp. left (G41)")
-                         : m.radcomp == 42 ? tr("radius comp. right (G42)")
-                                           : tr("no radius compensation (G40)")));
-    lines.push_back(Line{});
+    kv(lines, tr("Plane"),
+       plane + "   " +
+           (m.radcomp == 41   ? tr("radius comp. left (G41)")
+            : m.radcomp == 42 ? tr("radius comp. right (G42)")
+                              : tr("no radius compensation (G40)")));
+}
+
+// The offsets of each axis, the mirror, scale and rotation, the switches.
+void offset_lines(const Sim& s, std::vector<Line>& lines) {
+    const Interpreter& in = s.interp();
+    const Modal& m = in.modal();
+    const Frames& f = in.frames();
     lines.push_back(
         Line{}.add(std::string(" ") + (s.machine().lathe ? tr("Offsets (X as a radius)") : tr("Offsets")), Style::title));
-    kv("PREF", axes_text(s, f.pref));
-    kv("DEC1", axes_text(s, f.dec1));
-    kv("DEC3", axes_text(s, f.dec3));
-    kv("G59", axes_text(s, f.g59));
-    kv(tr("gauge"), axes_text(s, f.gauge));
+    kv(lines, "PREF", axes_text(s, f.pref));
+    kv(lines, "DEC1", axes_text(s, f.dec1));
+    kv(lines, "DEC3", axes_text(s, f.dec3));
+    kv(lines, "G59", axes_text(s, f.g59));
+    kv(lines, tr("gauge"), axes_text(s, f.gauge));
     std::string mir;
     for (int a = 0; a < kAxes; ++a)
         if (f.mirror[size_t(a)]) mir += std::string(1, kAxisNames[size_t(a)]) + " ";
     std::string scale_off = f.scale_on ? "" : std::string(tr("(off)")) + " ";
-    kv(tr("Transform"), strf(tr("mirror %s  scale %s%.3f  ED %.4f deg"), mir.empty() ? tr("none") : mir.c_str(),
-                             scale_off.c_str(), f.scale, f.ed));
+    kv(lines, tr("Transform"),
+       strf(tr("mirror %s  scale %s%.3f  ED %.4f deg"), mir.empty() ? tr("none") : mir.c_str(),
+            scale_off.c_str(), f.scale, f.ed));
     lines.push_back(Line{});
-    kv(tr("Switches"), strf(tr("block skip %s   optional stop M01 %s   overrides %s"),
-                            in.options().block_skip ? tr("ON") : tr("off"), in.options().optional_stop ? tr("ON") : tr("off"),
-                            m.overrides_off ? tr("inhibited (M49)") : tr("active (M48)")));
+    kv(lines, tr("Switches"),
+       strf(tr("block skip %s   optional stop M01 %s   overrides %s"),
+            in.options().block_skip ? tr("ON") : tr("off"),
+            in.options().optional_stop ? tr("ON") : tr("off"),
+            m.overrides_off ? tr("inhibited (M49)") : tr("active (M48)")));
+}
+
+}  // namespace
+
+void page_info(const View& v, Canvas& c, const Rect& r) {
+    const Sim& s = *v.sim;
+    // TRANSLATORS: the INFO page's title: INFO is the page's name.
+    c.rule(r.y, tr("INFO  functions in force"));
+    std::vector<Line> lines;
+    modal_lines(s, lines);
+    lines.push_back(Line{});
+    offset_lines(s, lines);
     draw_lines(lines, v.scroll, c, Rect{r.x, r.y + 1, r.w, r.h - 1});
 }
 

@@ -66,15 +66,12 @@ void big_text(Canvas& c, int right, int y, const std::string& s, Style st) {
     }
 }
 
-}  // namespace
-
-void page_position(const View& v, Canvas& c, const Rect& r) {
+// The axes: the first origin's column (in large digits on a big page), the
+// other origin's, the distance to go; '*' marks an axis not homed. Returns the
+// row after the table.
+int axes_table(const View& v, Canvas& c, const Rect& r, bool om_first) {
     const Sim& s = *v.sim;
     const MachineProfile& m = s.machine();
-    bool om_first = v.page == PageId::om;
-    // TRANSLATORS: the position page's title: OM (origine mesure) and OP
-    // (origine programme) are the page's names.
-    c.rule(r.y, om_first ? tr("OM  machine position") : tr("OP  program position"));
     Axes op = s.op(), om = s.om(), go = s.to_go();
     int y = r.y + 2;
     // 160x48 and the like: the first column in large digits, the same layout.
@@ -106,28 +103,43 @@ void page_position(const View& v, Canvas& c, const Rect& r) {
     bool any_unhomed = false;
     for (int a = 0; a < kAxes; ++a) any_unhomed |= m.has(a) && !s.interp().homed(a);
     if (any_unhomed) c.text(cx[2] + 16, r.y + 3, tr("* not homed (POM)"), Style::warn);
-    ++y;
-    auto row = [&](std::string_view label, const std::string& value, Style st = Style::value) {
+    return y;
+}
+
+// The labelled rows under the axes, as many as the page holds.
+struct Rows {
+    Canvas& c;
+    const Rect& r;
+    int y;
+    void add(std::string_view label, const std::string& value, Style st = Style::value) {
         if (y >= r.y + r.h) return;
         c.text(2, y, label, Style::dim);
         c.text(12, y, value, st, r.w - 14);
         ++y;
-    };
-    // TRANSLATORS: labels of the position page (Feed, Spindle, Tool, Program,
-    // Run, Block): at most 9 columns each.
-    row(tr("Feed"), feed_text(s));
-    row(tr("Spindle"), spindle_text(s));
+    }
+};
+
+// The tool, its corrector and the coolant; the touch probe's lamp when the
+// workshop's electric probe is in the spindle.
+void tool_rows(const Sim& s, Rows& rows) {
     std::string tool = "T" + std::to_string(s.tool()) + "  D" + std::to_string(s.corrector());
     if (s.m7() || s.m8()) tool += std::string("  ") + (s.m7() ? "M07 " : "") + (s.m8() ? "M08" : "");
-    row(tr("Tool"), tool);
-    // The touch probe's lamp (the workshop's electric probe in the spindle).
+    rows.add(tr("Tool"), tool);
     if (const workshop::Workshop* w = s.shop(); w && w->probe_in_use()) {
         bool lit = w->probe_contact(s.om());
+        const Canvas& c = rows.c;
         // TRANSLATORS: OP page: the touch probe's lamp, lit or not; at most 9 columns for the label.
-        row(tr("Probe"), lit ? (c.ascii() ? std::string("* ") : std::string("\u25cf ")) + tr("contact")
-                             : (c.ascii() ? std::string("o ") : std::string("\u25cb ")) + tr("open"),
-            lit ? Style::alarm : Style::dim);
+        rows.add(tr("Probe"),
+                 lit ? (c.ascii() ? std::string("* ") : std::string("\u25cf ")) + tr("contact")
+                     : (c.ascii() ? std::string("o ") : std::string("\u25cb ")) + tr("open"),
+                 lit ? Style::alarm : Style::dim);
     }
+}
+
+// The selected program and where the run is, the blocks done and the cycle
+// time, the mode's keys, the current block.
+void program_rows(const View& v, Rows& rows) {
+    const Sim& s = *v.sim;
     const Loc& l = s.loc();
     std::string where = s.selected() >= 0 ? "%" + std::to_string(s.selected()) : tr("no program selected");
     if (l.line > 0) {
@@ -136,13 +148,32 @@ void page_position(const View& v, Canvas& c, const Rect& r) {
         where += "   " + (imd ? strf(tr("at IMD line %d"), l.line) : strf(tr("at %%%d line %d"), l.prog, l.line));
         if (l.n >= 0) where += "  N" + std::to_string(l.n);
     }
-    row(tr("Program"), where);
-    row(tr("Run"), strf(trn("%ld block   cycle time %.1f s", "%ld blocks   cycle time %.1f s", (unsigned long)s.blocks_done()),
-                        s.blocks_done(), s.cycle_time()));
+    rows.add(tr("Program"), where);
+    rows.add(tr("Run"), strf(trn("%ld block   cycle time %.1f s", "%ld blocks   cycle time %.1f s",
+                                 (unsigned long)s.blocks_done()),
+                             s.blocks_done(), s.cycle_time()));
     // The mode's keys at all times: what Cycle Start does, the jog keys, the step.
-    if (!v.mode_hint.empty()) row(mode_name(s.mode()), v.mode_hint, Style::normal);
-    if (!v.mode_setting.empty()) row("", v.mode_setting, Style::normal);
-    if (l.line > 0) row(tr("Block"), std::string(s.line_of(s.text_of(l.prog), l.line)), Style::select);
+    if (!v.mode_hint.empty()) rows.add(mode_name(s.mode()), v.mode_hint, Style::normal);
+    if (!v.mode_setting.empty()) rows.add("", v.mode_setting, Style::normal);
+    if (l.line > 0)
+        rows.add(tr("Block"), std::string(s.line_of(s.text_of(l.prog), l.line)), Style::select);
+}
+
+}  // namespace
+
+void page_position(const View& v, Canvas& c, const Rect& r) {
+    const Sim& s = *v.sim;
+    bool om_first = v.page == PageId::om;
+    // TRANSLATORS: the position page's title: OM (origine mesure) and OP
+    // (origine programme) are the page's names.
+    c.rule(r.y, om_first ? tr("OM  machine position") : tr("OP  program position"));
+    Rows rows{c, r, axes_table(v, c, r, om_first) + 1};
+    // TRANSLATORS: labels of the position page (Feed, Spindle, Tool, Program,
+    // Run, Block): at most 9 columns each.
+    rows.add(tr("Feed"), feed_text(s));
+    rows.add(tr("Spindle"), spindle_text(s));
+    tool_rows(s, rows);
+    program_rows(v, rows);
 }
 
 }  // namespace pupitre::pages

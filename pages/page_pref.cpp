@@ -10,13 +10,14 @@
 
 namespace pupitre::pages {
 
-void page_pref(const View& v, Canvas& c, const Rect& r) {
+namespace {
+
+// The origins of each axis, the G59 offset, the gauge, OM and OP; an origin
+// changed during a run is marked. Returns the row after the table.
+int origins_table(const View& v, Canvas& c, const Rect& r) {
     const Sim& s = *v.sim;
-    const Interpreter& in = s.interp();
     const MachineProfile& m = s.machine();
-    const Frames& f = in.frames();
-    // TRANSLATORS: the PREF page's title: PREF is the page's name.
-    c.rule(r.y, tr("PREF  origins"));
+    const Frames& f = s.interp().frames();
     int y = r.y + 2;
     const int w = 10;
     // TRANSLATORS: a column header of the PREF page (the tool gauge): at most 9 columns.
@@ -44,7 +45,16 @@ void page_pref(const View& v, Canvas& c, const Rect& r) {
         }
         ++y;
     }
-    ++y;
+    return y;
+}
+
+// The active corrector, the lathe's radii note, the last touch-off and the
+// origins waiting for a move, from row y.
+void setting_notes(const View& v, Canvas& c, const Rect& r, int y) {
+    const Sim& s = *v.sim;
+    const Interpreter& in = s.interp();
+    const MachineProfile& m = s.machine();
+    const Frames& f = in.frames();
     // The corrector the machine applies (D0 after M02 and RAZ, T kept); a
     // gauge not yet applied is named: a touch-off applies it first.
     std::string d = strf(tr("active corrector D%d, tool T%d"), s.corrector(), s.tool());
@@ -68,6 +78,11 @@ void page_pref(const View& v, Canvas& c, const Rect& r) {
             if (y < r.y + r.h - 6) c.text(lx, y++, part, Style::value);
     }
     if (!v.pending.empty()) c.text(2, y++, tr("* changed during the run: applies at the next move"), Style::warn, r.w - 2);
+}
+
+// The touch-off help and the memory protection, on the page's last rows.
+void touch_off_help(const View& v, Canvas& c, const Rect& r) {
+    const MachineProfile& m = v.sim->machine();
     int by = r.y + r.h - 5;
     c.text(2, by, tr("Touch-off: jog the tool onto the part, then type the coordinate of the"), Style::dim, r.w - 2);
     c.text(2, by + 1,
@@ -78,6 +93,16 @@ void page_pref(const View& v, Canvas& c, const Rect& r) {
     std::string state = v.protect ? tr("memory protection ON (:protect off)") : tr("memory protection off");
     if (v.undo_depth) state += "   " + strf(tr("%zu change(s) to undo"), v.undo_depth);
     c.text(2, by + 3, state, v.protect ? Style::warn : Style::dim);
+}
+
+}  // namespace
+
+void page_pref(const View& v, Canvas& c, const Rect& r) {
+    // TRANSLATORS: the PREF page's title: PREF is the page's name.
+    c.rule(r.y, tr("PREF  origins"));
+    int y = origins_table(v, c, r);
+    setting_notes(v, c, r, y + 1);
+    touch_off_help(v, c, r);
 }
 
 }  // namespace pupitre::pages

@@ -58,6 +58,21 @@ std::string pct(int n) {
     return "%" + std::to_string(n);
 }
 
+// A program is stored under its own number: not negative, and the same as the
+// one its % line gives, if any. `h` receives the text's header.
+Error check_number(const Piece& p, const std::string& path, Header& h) {
+    if (p.number < 0)
+        return {Fault::bad_data,
+                strf(tr("%s: program number %d is negative"), path.c_str(), p.number)};
+    if (Error e = parse_program(p.text, pct(p.number), h)) return e;
+    if (h.number >= 0 && h.number != p.number)
+        return {
+            Fault::bad_data,
+            strf(tr("%%%d: the text's %% line says %%%d; a program is stored under its own number"),
+                 p.number, h.number)};
+    return {};
+}
+
 constexpr const char* kSelectRow =
     "SELECT head, last_rev, conflict, deleted, size, modified_by FROM programs WHERE number = ?1";
 constexpr const char* kSelectText = "SELECT text FROM revisions WHERE program = ?1 AND rev = ?2";
@@ -165,20 +180,8 @@ Result<SaveResult> Store::save_one(const Piece& p, int based_on, RevisionKind ki
     Result<SaveResult> r;
     SaveResult& out = r.value;
     out.number = p.number;
-    if (p.number < 0) {
-        r.error = {Fault::bad_data,
-                   strf(tr("%s: program number %d is negative"), path_.c_str(), p.number)};
-        return r;
-    }
     Header h;
-    if ((r.error = parse_program(p.text, pct(p.number), h))) return r;
-    if (h.number >= 0 && h.number != p.number) {
-        r.error = {
-            Fault::bad_data,
-            strf(tr("%%%d: the text's %% line says %%%d; a program is stored under its own number"),
-                 p.number, h.number)};
-        return r;
-    }
+    if ((r.error = check_number(p, path_, h))) return r;
     const std::string what = strf(tr("cannot save %%%d"), p.number);
     ProgramRow row;
     if ((r.error = read_row(p.number, row, what))) return r;

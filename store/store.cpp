@@ -146,83 +146,114 @@ std::atomic<int> g_temp_counter{0};
 
 // ---- errors ----
 
+namespace {
+// What an SQLite failure is explained from: the result code, the start of the
+// message (the store's file and what could not be done), SQLite's own text.
+struct Failure {
+    int rc;
+    const std::string& head;
+    const std::string& sqlmsg;
+    sqlite3* db;
+    const std::string& path;
+    int busy_timeout_ms;
+};
+
+Error disk_full(const Failure& f) {
+    return {Fault::io,
+            f.head + tr("disk full (or the store reached its size limit); nothing was changed")};
+}
+
+Error locked(const Failure& f) {
+    return {Fault::io,
+            f.head + strf(tr("the store is locked by another process (waited %.1f s); nothing was "
+                             "changed, try again"),
+                          f.busy_timeout_ms / 1000.0)};
+}
+
+Error not_a_store(const Failure& f) {
+    return {Fault::bad_data,
+            f.head + tr("not a pupitre store (not an SQLite database); left untouched")};
+}
+
+Error damaged(const Failure& f) {
+    return {Fault::bad_data,
+            f.head + strf(tr("the store is damaged (%s); nothing was changed: restore a backup, or "
+                             "try sqlite3's .recover on a copy"),
+                          f.sqlmsg.c_str())};
+}
+
+// SQLite keeps its -wal and -shm files beside the store: an unwritable
+// directory is the likely cause, else the system's errno.
+Error cannot_open(const Failure& f) {
+    std::string dir = dir_of(f.path);
+    if (::access(dir.c_str(), W_OK) != 0)
+        return {Fault::cannot_create,
+                f.head + strf(tr("cannot open the store: its directory %s is not writable (SQLite "
+                                 "keeps its -wal and -shm files there)"),
+                              dir.c_str())};
+    int e = f.db ? sqlite3_system_errno(f.db) : 0;
+    return {Fault::cannot_create,
+            f.head + (e ? strf(tr("cannot open the store: %s"), std::strerror(e))
+                        : std::string(tr("cannot open the store")))};
+}
+
+Error cannot_write(const Failure& f) {
+    return {Fault::cannot_create,
+            f.head + strf(tr("cannot write the store (%s): check the permissions of the file and "
+                             "its directory"),
+                          f.sqlmsg.c_str())};
+}
+
+Error too_big(const Failure& f) {
+    return {Fault::bad_data, f.head + strf(tr("too big for the store (%s)"), f.sqlmsg.c_str())};
+}
+
+Error refused(const Failure& f) {
+    return {Fault::bad_data,
+            f.head + strf(tr("refused by the store (%s); nothing was changed"), f.sqlmsg.c_str())};
+}
+
+Error io_error(const Failure& f) {
+    int e = f.db ? sqlite3_system_errno(f.db) : 0;
+    if (e == ENOSPC || e == EDQUOT || e == EFBIG)
+        return {Fault::io,
+                f.head + strf(tr("disk full (%s); nothing was changed"), std::strerror(e))};
+    // errno is often gone by now (the rollback made other calls).
+    if (f.rc == SQLITE_IOERR_WRITE || f.rc == SQLITE_IOERR_FSYNC || f.rc == SQLITE_IOERR_TRUNCATE)
+        return {Fault::io,
+                f.head + tr("cannot write the store (disk full, quota or file size limit "
+                            "reached, or a device error); nothing was changed")};
+    return {Fault::io,
+            f.head + (e ? strf(tr("I/O error (%s: %s); nothing was changed"), f.sqlmsg.c_str(),
+                               std::strerror(e))
+                        : strf(tr("I/O error (%s); nothing was changed"), f.sqlmsg.c_str()))};
+}
+
+// The explanation of each primary result code; any other is an I/O fault with
+// SQLite's text.
+struct Explain {
+    int primary;
+    Error (*explain)(const Failure&);
+};
+constexpr Explain kExplain[] = {
+    {SQLITE_FULL, disk_full},        {SQLITE_BUSY, locked},        {SQLITE_LOCKED, locked},
+    {SQLITE_NOTADB, not_a_store},    {SQLITE_CORRUPT, damaged},    {SQLITE_CANTOPEN, cannot_open},
+    {SQLITE_READONLY, cannot_write}, {SQLITE_PERM, cannot_write},  {SQLITE_AUTH, cannot_write},
+    {SQLITE_TOOBIG, too_big},        {SQLITE_CONSTRAINT, refused}, {SQLITE_MISMATCH, refused},
+    {SQLITE_IOERR, io_error},
+};
+}  // namespace
+
 Error Store::fail(int rc, std::string_view what) {
     int primary = rc & 0xff;
     std::string sqlmsg = db_ ? sqlite3_errmsg(db_) : sqlite3_errstr(rc);
     // TRANSLATORS: the beginning of a store error: the store's file, what
     // could not be done ("cannot read the store"), then why follows.
     std::string head = strf(tr("%s: %s: "), path_.c_str(), std::string(what).c_str());
-    switch (primary) {
-        case SQLITE_FULL:
-            return {
-                Fault::io,
-                head + tr("disk full (or the store reached its size limit); nothing was changed")};
-        case SQLITE_BUSY:
-        case SQLITE_LOCKED: {
-            return {
-                Fault::io,
-                head +
-                    strf(tr("the store is locked by another process (waited %.1f s); nothing was "
-                            "changed, try again"),
-                         opt_.busy_timeout_ms / 1000.0)};
-        }
-        case SQLITE_NOTADB:
-            return {Fault::bad_data,
-                    head + tr("not a pupitre store (not an SQLite database); left untouched")};
-        case SQLITE_CORRUPT:
-            return {
-                Fault::bad_data,
-                head +
-                    strf(tr("the store is damaged (%s); nothing was changed: restore a backup, or "
-                            "try sqlite3's .recover on a copy"),
-                         sqlmsg.c_str())};
-        case SQLITE_CANTOPEN: {
-            std::string dir = dir_of(path_);
-            if (::access(dir.c_str(), W_OK) != 0)
-                return {
-                    Fault::cannot_create,
-                    head +
-                        strf(tr("cannot open the store: its directory %s is not writable (SQLite "
-                                "keeps its -wal and -shm files there)"),
-                             dir.c_str())};
-            int e = db_ ? sqlite3_system_errno(db_) : 0;
-            return {Fault::cannot_create,
-                    head + (e ? strf(tr("cannot open the store: %s"), std::strerror(e))
-                              : std::string(tr("cannot open the store")))};
-        }
-        case SQLITE_READONLY:
-        case SQLITE_PERM:
-        case SQLITE_AUTH:
-            return {
-                Fault::cannot_create,
-                head + strf(tr("cannot write the store (%s): check the permissions of the file and "
-                               "its directory"),
-                            sqlmsg.c_str())};
-        case SQLITE_TOOBIG:
-            return {Fault::bad_data, head + strf(tr("too big for the store (%s)"), sqlmsg.c_str())};
-        case SQLITE_CONSTRAINT:
-        case SQLITE_MISMATCH:
-            return {
-                Fault::bad_data,
-                head + strf(tr("refused by the store (%s); nothing was changed"), sqlmsg.c_str())};
-        case SQLITE_IOERR: {
-            int e = db_ ? sqlite3_system_errno(db_) : 0;
-            if (e == ENOSPC || e == EDQUOT || e == EFBIG)
-                return {Fault::io,
-                        head + strf(tr("disk full (%s); nothing was changed"), std::strerror(e))};
-            // errno is often gone by now (the rollback made other calls).
-            if (rc == SQLITE_IOERR_WRITE || rc == SQLITE_IOERR_FSYNC || rc == SQLITE_IOERR_TRUNCATE)
-                return {Fault::io,
-                        head + tr("cannot write the store (disk full, quota or file size limit "
-                                  "reached, or a device error); nothing was changed")};
-            return {Fault::io,
-                    head + (e ? strf(tr("I/O error (%s: %s); nothing was changed"), sqlmsg.c_str(),
-                                     std::strerror(e))
-                              : strf(tr("I/O error (%s); nothing was changed"), sqlmsg.c_str()))};
-        }
-        default:
-            return {Fault::io, head + strf(tr("%s; nothing was changed"), sqlmsg.c_str())};
-    }
+    Failure f{rc, head, sqlmsg, db_, path_, opt_.busy_timeout_ms};
+    for (const Explain& x : kExplain)
+        if (x.primary == primary) return x.explain(f);
+    return {Fault::io, head + strf(tr("%s; nothing was changed"), sqlmsg.c_str())};
 }
 
 Error Store::exec(const char* sql) {

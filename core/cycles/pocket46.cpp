@@ -380,54 +380,56 @@ bool offset_chain(const std::vector<Elem>& el, bool closed, double r, int side, 
     return true;
 }
 
-bool check(const Def& d, Error& err) {
-    auto bad = [&](int code, std::string why, int sec = -1) {
-        err = {code, std::move(why), sec};
-        return false;
-    };
+namespace {
+bool refuse(Error& err, int code, std::string why, int sec = -1) {
+    err = {code, std::move(why), sec};
+    return false;
+}
+
+// How many outer profiles and islands the sections declare, and whether the
+// facing's limits (NU5) and walls (NU6) are there.
+struct Roles {
     int outer = 0, islands = 0;
-    bool has56 = false, has5 = false, has6 = false;
+    bool has5 = false, has6 = false;
+};
+
+// Each section has elements; an NU1..NU4 contour closes and encloses an area.
+bool check_sections(const Def& d, Roles& n, Error& err) {
     for (size_t i = 0; i < d.sections.size(); ++i) {
         const Section& s = d.sections[i];
-        if (s.elems.empty()) return bad(284, tr("a contour with no element"), int(i));
-        if (s.nu == 1 || s.nu == 3) ++outer;
-        if (s.nu == 2 || s.nu == 4) ++islands;
-        if (s.nu == 5) has5 = true;
-        if (s.nu == 6) has6 = true;
+        if (s.elems.empty()) return refuse(err, 284, tr("a contour with no element"), int(i));
+        if (s.nu == 1 || s.nu == 3) ++n.outer;
+        if (s.nu == 2 || s.nu == 4) ++n.islands;
+        if (s.nu == 5) n.has5 = true;
+        if (s.nu == 6) n.has6 = true;
         if (s.nu <= 4 && (s.elems.back().b - s.elems.front().a).norm() > 1e-3)
-            return bad(281, tr("the contour does not end where it starts"), int(i));
+            return refuse(err, 281, tr("the contour does not end where it starts"), int(i));
         if (s.nu <= 4 && std::fabs(area(s.elems)) < 1e-6)
-            return bad(284, tr("a contour that encloses no area"), int(i));
+            return refuse(err, 284, tr("a contour that encloses no area"), int(i));
     }
-    has56 = has5 || has6;
-    if (has56) {
-        if (!has5 || !has6) return bad(283, tr("facing limits (NU5) and walls (NU6) go together"));
-        ++outer;
-        // The sections follow one another and close.
-        const Section* prev = nullptr;
-        const Section* first = nullptr;
-        for (size_t i = 0; i < d.sections.size(); ++i) {
-            const Section& s = d.sections[i];
-            if (s.nu != 5 && s.nu != 6) continue;
-            if (!first) first = &s;
-            if (prev && (prev->elems.back().b - s.elems.front().a).norm() > 1e-3)
-                return bad(281, tr("a limit or wall does not start where the previous one ends"),
-                           int(i));
-            prev = &s;
-        }
-        if ((prev->elems.back().b - first->elems.front().a).norm() > 1e-3)
-            return bad(281, tr("the limits and walls do not close"), -1);
+    return true;
+}
+
+// The NU5/NU6 sections follow one another and close.
+bool check_chain56(const Def& d, Error& err) {
+    const Section* prev = nullptr;
+    const Section* first = nullptr;
+    for (size_t i = 0; i < d.sections.size(); ++i) {
+        const Section& s = d.sections[i];
+        if (s.nu != 5 && s.nu != 6) continue;
+        if (!first) first = &s;
+        if (prev && (prev->elems.back().b - s.elems.front().a).norm() > 1e-3)
+            return refuse(err, 281,
+                          tr("a limit or wall does not start where the previous one ends"), int(i));
+        prev = &s;
     }
-    if (outer != 1)
-        return bad(283, outer == 0 ? tr("no outer profile (NU1, NU3 or NU5/NU6)")
-                                   : tr("more than one outer profile"));
-    if (islands > 127) return bad(285, tr("more than 127 islands and recesses"));
-    if (d.facing() && d.has_e) return bad(293, tr("a roughing end point (EX EY) in a facing"));
-    if (d.q > d.ed) return bad(286, tr("the step-over Q is larger than the cutter diameter ED"));
-    Region r = region(d, 0);
-    if (r.xhi - r.xlo > 40 * d.q || r.yhi - r.ylo > 40 * d.q)
-        return bad(287, tr("the pocket is larger than 40 times the step-over Q"));
-    // Islands lie inside the outer profile, apart from each other.
+    if ((prev->elems.back().b - first->elems.front().a).norm() > 1e-3)
+        return refuse(err, 281, tr("the limits and walls do not close"), -1);
+    return true;
+}
+
+// Islands lie inside the outer profile, apart from each other.
+bool check_islands(const Def& d, bool has56, Error& err) {
     Region outer_only;
     for (const Section& s : d.sections)
         if (s.nu == 1 || s.nu == 3) outer_only.loops.push_back(loop_of(s.elems));
@@ -437,26 +439,42 @@ bool check(const Def& d, Error& err) {
         if (s.nu != 2 && s.nu != 4) continue;
         for (const Elem& e : s.elems)
             if (!inside(outer_only, e.a) && !(s.nu == 4 && d.facing()))
-                return bad(284, tr("an island is not inside the outer profile"), int(i));
+                return refuse(err, 284, tr("an island is not inside the outer profile"), int(i));
     }
     return true;
 }
+}  // namespace
 
-bool roughing(const Def& d, double R, std::vector<Run>& runs, std::vector<double>& line_y,
-              Error& err) {
-    runs.clear();
-    line_y.clear();
-    const double c = R + d.j;
-    const int side = d.sense();
-    Region reg = region(d, c);
-    auto bad = [&](int code, std::string why) {
-        err = {code, std::move(why), -1};
-        return false;
-    };
-    // The lowest and highest lines that cut: scan, then bisect.
-    const double h = std::max({1e-3, std::min(0.05, d.q / 4), (reg.yhi - reg.ylo) / 20000});
+bool check(const Def& d, Error& err) {
+    Roles n;
+    if (!check_sections(d, n, err)) return false;
+    bool has56 = n.has5 || n.has6;
+    if (has56) {
+        if (!n.has5 || !n.has6)
+            return refuse(err, 283, tr("facing limits (NU5) and walls (NU6) go together"));
+        ++n.outer;
+        if (!check_chain56(d, err)) return false;
+    }
+    if (n.outer != 1)
+        return refuse(err, 283, n.outer == 0 ? tr("no outer profile (NU1, NU3 or NU5/NU6)")
+                                             : tr("more than one outer profile"));
+    if (n.islands > 127) return refuse(err, 285, tr("more than 127 islands and recesses"));
+    if (d.facing() && d.has_e)
+        return refuse(err, 293, tr("a roughing end point (EX EY) in a facing"));
+    if (d.q > d.ed)
+        return refuse(err, 286, tr("the step-over Q is larger than the cutter diameter ED"));
+    Region r = region(d, 0);
+    if (r.xhi - r.xlo > 40 * d.q || r.yhi - r.ylo > 40 * d.q)
+        return refuse(err, 287, tr("the pocket is larger than 40 times the step-over Q"));
+    return check_islands(d, has56, err);
+}
+
+namespace {
+// The lowest (y0) and highest (y1) lines that cut: scan, then bisect; false
+// when no line cuts.
+bool cutting_range(const Region& reg, double q, double& y0, double& y1) {
+    const double h = std::max({1e-3, std::min(0.05, q / 4), (reg.yhi - reg.ylo) / 20000});
     auto any = [&](double y) { return !spans(reg, y).empty(); };
-    double y0 = 0, y1 = 0;
     bool found = false;
     for (double y = reg.ylo; y <= reg.yhi; y += h)
         if (any(y)) {
@@ -465,7 +483,7 @@ bool roughing(const Def& d, double R, std::vector<Run>& runs, std::vector<double
             y0 = hi, found = true;
             break;
         }
-    if (!found) return bad(289, tr("the cutter does not fit in the pocket"));
+    if (!found) return false;
     for (double y = reg.yhi; y >= reg.ylo; y -= h)
         if (any(y)) {
             double lo = y, hi = y + h;
@@ -473,7 +491,13 @@ bool roughing(const Def& d, double R, std::vector<Run>& runs, std::vector<double
             y1 = lo;
             break;
         }
-    int n = std::max(0, int(std::ceil((y1 - y0) / d.q - 1e-9)));
+    return true;
+}
+
+// The ordinates of the passes from y0 to y1 at an even step Q' <= Q (rounded
+// up to the micron); one line midway when the range is narrower than Q.
+void pass_lines(double y0, double y1, double q, std::vector<double>& line_y) {
+    int n = std::max(0, int(std::ceil((y1 - y0) / q - 1e-9)));
     if (n == 0) {
         line_y.push_back((y0 + y1) / 2);
     } else {
@@ -481,49 +505,53 @@ bool roughing(const Def& d, double R, std::vector<Run>& runs, std::vector<double
         for (int k = 0; k < n; ++k) line_y.push_back(y0 + k * step);
         line_y.push_back(y1);
     }
-    struct Seg {
-        V2 a, b;
-        bool done = false;
+}
+
+struct Seg {
+    V2 a, b;
+    bool done = false;
+};
+
+// The nearest end of a segment not yet cut that a move at feed reaches, else
+// the nearest end: its segment, and whether it is cut from b to a.
+std::pair<size_t, bool> next_segment(const Region& reg, const std::vector<Seg>& segs, V2 cur,
+                                     double q, bool first) {
+    struct Cand {
+        double d;
+        size_t i;
+        bool rev;
     };
-    std::vector<Seg> segs;
-    for (double y : line_y)
-        for (auto [x0, x1] : spans(reg, y)) segs.push_back({V2(x0, y), V2(x1, y)});
-    if (segs.empty()) return bad(289, tr("the cutter does not fit in the pocket"));
-    V2 cur = segs[0].a;
-    if (d.has_l) {
-        if (!inside(reg, d.l, 1e-6))
-            return bad(282, tr("the roughing start point LX LY is not where the cutter can plunge"));
-        cur = d.l;
+    std::vector<Cand> cands;
+    for (size_t i = 0; i < segs.size(); ++i) {
+        if (segs[i].done) continue;
+        cands.push_back({(segs[i].a - cur).norm(), i, false});
+        cands.push_back({(segs[i].b - cur).norm(), i, true});
     }
+    std::sort(cands.begin(), cands.end(), [](const Cand& x, const Cand& y) {
+        return x.d < y.d - 1e-9 ||
+               (x.d < y.d + 1e-9 && (x.i < y.i || (x.i == y.i && x.rev < y.rev)));
+    });
+    size_t best = cands[0].i;
+    bool rev = cands[0].rev;
+    if (!first)
+        for (size_t k = 0; k < std::min<size_t>(cands.size(), 8); ++k) {
+            const Cand& cd = cands[k];
+            if (cd.d > 3 * q) break;
+            if (link_ok(reg, cur, cd.rev ? segs[cd.i].b : segs[cd.i].a)) {
+                best = cd.i, rev = cd.rev;
+                break;
+            }
+        }
+    return {best, rev};
+}
+
+// The zig-zag passes: each segment once, the next one the nearest reached at
+// feed; the first from LX LY when given. Returns where the last one ends.
+V2 zigzag(const Def& d, const Region& reg, std::vector<Seg>& segs, V2 cur,
+          std::vector<Run>& runs) {
     bool first = true;
     for (size_t left = segs.size(); left > 0; --left) {
-        // The nearest end that a move at feed reaches, else the nearest end.
-        struct Cand {
-            double d;
-            size_t i;
-            bool rev;
-        };
-        std::vector<Cand> cands;
-        for (size_t i = 0; i < segs.size(); ++i) {
-            if (segs[i].done) continue;
-            cands.push_back({(segs[i].a - cur).norm(), i, false});
-            cands.push_back({(segs[i].b - cur).norm(), i, true});
-        }
-        std::sort(cands.begin(), cands.end(), [](const Cand& x, const Cand& y) {
-            return x.d < y.d - 1e-9 ||
-                   (x.d < y.d + 1e-9 && (x.i < y.i || (x.i == y.i && x.rev < y.rev)));
-        });
-        size_t best = cands[0].i;
-        bool rev = cands[0].rev;
-        if (!first)
-            for (size_t k = 0; k < std::min<size_t>(cands.size(), 8); ++k) {
-                const Cand& cd = cands[k];
-                if (cd.d > 3 * d.q) break;
-                if (link_ok(reg, cur, cd.rev ? segs[cd.i].b : segs[cd.i].a)) {
-                    best = cd.i, rev = cd.rev;
-                    break;
-                }
-            }
+        auto [best, rev] = next_segment(reg, segs, cur, d.q, first);
         Seg& s = segs[best];
         s.done = true;
         V2 a = rev ? s.b : s.a, b = rev ? s.a : s.b;
@@ -541,35 +569,66 @@ bool roughing(const Def& d, double R, std::vector<Run>& runs, std::vector<double
         cur = b;
         first = false;
     }
-    // The clean-up contours: walls at R + J, facing outlines on the outline.
-    // Where a clean-up contour comes closer to another wall than its clearance
-    // (a gap narrower than the cutter), only its stretches that keep clear run.
-    auto add = [&](const std::vector<Elem>& el, bool closed, double r, bool region_inside) {
-        std::vector<Elem> o = closed ? oriented(el, region_inside, side) : el;
-        V2 start;
-        std::vector<Piece> pcs;
-        if (!offset_chain(o, closed, r, side, start, pcs))
-            return true;  // a vanished offset: nothing to clean
-        for (Run& run : clip(reg, start, pcs)) {
-            run.linked = link_ok(reg, cur, run.start);
-            run.cleanup = true;
-            cur = end_of(run);
-            runs.push_back(run);
-        }
-        return true;
-    };
+    return cur;
+}
+
+// One clean-up contour at offset r. Where it comes closer to another wall than
+// its clearance (a gap narrower than the cutter), only its stretches that keep
+// clear run; a vanished offset leaves nothing to clean.
+void cleanup(const Region& reg, const std::vector<Elem>& el, bool closed, double r,
+             bool region_inside, int side, V2& cur, std::vector<Run>& runs) {
+    std::vector<Elem> o = closed ? oriented(el, region_inside, side) : el;
+    V2 start;
+    std::vector<Piece> pcs;
+    if (!offset_chain(o, closed, r, side, start, pcs)) return;
+    for (Run& run : clip(reg, start, pcs)) {
+        run.linked = link_ok(reg, cur, run.start);
+        run.cleanup = true;
+        cur = end_of(run);
+        runs.push_back(run);
+    }
+}
+
+// The clean-up contours: walls at R + J, facing outlines on the outline.
+void cleanups(const Def& d, const Region& reg, double c, V2 cur, std::vector<Run>& runs) {
+    const int side = d.sense();
     for (const Section& s : d.sections) {
-        if (s.nu == 1 && !add(s.elems, true, c, true)) return false;
-        if (s.nu == 3 && !add(s.elems, true, 0, true)) return false;
-        if (s.nu == 2 && !add(s.elems, true, c, false)) return false;
+        if (s.nu == 1) cleanup(reg, s.elems, true, c, true, side, cur, runs);
+        if (s.nu == 3) cleanup(reg, s.elems, true, 0, true, side, cur, runs);
+        if (s.nu == 2) cleanup(reg, s.elems, true, c, false, side, cur, runs);
     }
     std::vector<Elem> ch = chain56(d);
     if (!ch.empty()) {
         bool keep = (area(ch) > 0) == (side > 0);
-        for (const Section& s : d.sections) {
-            if (s.nu == 6 && !add(wall_as(s, keep), false, c, true)) return false;
-        }
+        for (const Section& s : d.sections)
+            if (s.nu == 6) cleanup(reg, wall_as(s, keep), false, c, true, side, cur, runs);
     }
+}
+}  // namespace
+
+bool roughing(const Def& d, double R, std::vector<Run>& runs, std::vector<double>& line_y,
+              Error& err) {
+    runs.clear();
+    line_y.clear();
+    const double c = R + d.j;
+    Region reg = region(d, c);
+    double y0 = 0, y1 = 0;
+    if (!cutting_range(reg, d.q, y0, y1))
+        return refuse(err, 289, tr("the cutter does not fit in the pocket"));
+    pass_lines(y0, y1, d.q, line_y);
+    std::vector<Seg> segs;
+    for (double y : line_y)
+        for (auto [x0, x1] : spans(reg, y)) segs.push_back({V2(x0, y), V2(x1, y)});
+    if (segs.empty()) return refuse(err, 289, tr("the cutter does not fit in the pocket"));
+    V2 cur = segs[0].a;
+    if (d.has_l) {
+        if (!inside(reg, d.l, 1e-6))
+            return refuse(err, 282,
+                          tr("the roughing start point LX LY is not where the cutter can plunge"));
+        cur = d.l;
+    }
+    cur = zigzag(d, reg, segs, cur, runs);
+    cleanups(d, reg, c, cur, runs);
     return true;
 }
 

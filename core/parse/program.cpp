@@ -129,35 +129,23 @@ bool blank_or_comment(std::string_view line) {
     }
     return true;
 }
-}  // namespace
 
-bool ProgramMemory::load_text(std::string name, std::string text, Diag& d) {
-    // A NUL byte is never part of a program: refuse binary input up front.
-    if (text.find('\0') != std::string::npos) {
-        d = Diag{Severity::error, err::kNotText, name, -1, 0, -1, 0,
-                 tr("not a text file (NUL byte found)")};
-        return false;
-    }
-    // Every line ends with '\n', so G76+ can insert after the last one.
-    if (!text.empty() && text.back() != '\n') text.push_back('\n');
-    auto shared = std::make_shared<std::string>(std::move(text));
+// The programs of a file, one from each header line to the next. Text before
+// the first header forms program 0 when it holds blocks (004_rectangle.iso is
+// such a fragment).
+std::vector<std::unique_ptr<ProgramText>> split_programs(
+    const std::string& name, const std::shared_ptr<std::string>& shared) {
     std::string_view all = *shared;
     std::vector<std::unique_ptr<ProgramText>> found;
-    ProgramText* cur = nullptr;
     bool anonymous_has_blocks = false;
     size_t pos = 0;
     int line = 1;
-    auto close = [&](size_t at) {
-        if (cur) cur->end = at;
-    };
-    // Text before the first header forms program 0 when it holds blocks
-    // (004_rectangle.iso is such a fragment).
     auto anon = std::make_unique<ProgramText>();
     anon->file = name;
     anon->text = shared;
     anon->begin = 0;
     anon->first_line = 1;
-    cur = anon.get();
+    ProgramText* cur = anon.get();
     while (pos < all.size()) {
         size_t eol = all.find('\n', pos);
         if (eol == std::string_view::npos) eol = all.size();
@@ -165,7 +153,7 @@ bool ProgramMemory::load_text(std::string name, std::string text, Diag& d) {
         int number, index;
         std::string title;
         if (header_line(l, number, index, title)) {
-            close(pos);
+            cur->end = pos;
             if (cur == anon.get()) {
                 if (anonymous_has_blocks) found.push_back(std::move(anon));
             }
@@ -185,8 +173,23 @@ bool ProgramMemory::load_text(std::string name, std::string text, Diag& d) {
         pos = eol + 1;
         ++line;
     }
-    close(all.size());
+    cur->end = all.size();
     if (cur == anon.get() && anonymous_has_blocks) found.push_back(std::move(anon));
+    return found;
+}
+}  // namespace
+
+bool ProgramMemory::load_text(std::string name, std::string text, Diag& d) {
+    // A NUL byte is never part of a program: refuse binary input up front.
+    if (text.find('\0') != std::string::npos) {
+        d = Diag{Severity::error, err::kNotText, name, -1, 0, -1, 0,
+                 tr("not a text file (NUL byte found)")};
+        return false;
+    }
+    // Every line ends with '\n', so G76+ can insert after the last one.
+    if (!text.empty() && text.back() != '\n') text.push_back('\n');
+    auto shared = std::make_shared<std::string>(std::move(text));
+    std::vector<std::unique_ptr<ProgramText>> found = split_programs(name, shared);
     if (found.empty()) {
         d = Diag{Severity::error, err::kNoProgram, name, -1, 0, -1, 0, tr("no program in the file")};
         return false;
