@@ -31,8 +31,10 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 std::string config_bindings_path() {
-    if (const char* x = std::getenv("XDG_CONFIG_HOME"); x && *x) return std::string(x) + "/pupitre/bindings";
-    if (const char* h = std::getenv("HOME"); h && *h) return std::string(h) + "/.config/pupitre/bindings";
+    if (const char* x = std::getenv("XDG_CONFIG_HOME"); x && *x)
+        return std::string(x) + "/pupitre/bindings";
+    if (const char* h = std::getenv("HOME"); h && *h)
+        return std::string(h) + "/.config/pupitre/bindings";
     return {};
 }
 
@@ -78,7 +80,8 @@ int event_loop(console::Session& s, console::Terminal& term, bool ascii) {
         if (term.resized()) dirty = true;
         s.rows = term.rows();
         if (dirty) {
-            if (canvas.width() != term.cols() || canvas.height() != term.rows()) canvas.resize(term.cols(), term.rows());
+            if (canvas.width() != term.cols() || canvas.height() != term.rows())
+                canvas.resize(term.cols(), term.rows());
             pages::View v = s.view();
             pages::render_screen(v, canvas);
             int cx, cy;
@@ -95,7 +98,8 @@ int event_loop(console::Session& s, console::Terminal& term, bool ascii) {
         if (r > 0 && (pfd.revents & (POLLIN | POLLHUP | POLLERR))) {
             char buf[4096];
             ssize_t n = read(STDIN_FILENO, buf, sizeof buf);
-            if (n == 0 || (n < 0 && errno != EINTR && errno != EAGAIN)) return kOk;  // the terminal is gone
+            if (n == 0 || (n < 0 && errno != EINTR && errno != EAGAIN))
+                return kOk;  // the terminal is gone
             if (n > 0) dec.feed(std::string_view(buf, size_t(n)), keys);
             last_byte = now;
         } else if (dec.pending() && now - last_byte >= std::chrono::milliseconds(25)) {

@@ -15,13 +15,21 @@ std::string_view bindings_txt();
 
 namespace pupitre::console {
 
-std::string_view default_bindings() { return data::bindings_txt(); }
+std::string_view default_bindings() {
+    return data::bindings_txt();
+}
 
 namespace {
 
-bool always(const Session&, std::string_view) { return true; }
-bool input_empty(const Session& s) { return s.input().text().empty(); }
-bool on_dir(const Session& s, std::string_view) { return s.page == pages::PageId::dir && input_empty(s); }
+bool always(const Session&, std::string_view) {
+    return true;
+}
+bool input_empty(const Session& s) {
+    return s.input().text().empty();
+}
+bool on_dir(const Session& s, std::string_view) {
+    return s.page == pages::PageId::dir && input_empty(s);
+}
 bool jogging(const Session& s, std::string_view) {
     Mode m = s.sim().mode();
     return (m == Mode::jog || m == Mode::inc) && input_empty(s) && s.page != pages::PageId::edit;
@@ -55,8 +63,10 @@ Effect page(Session& s, std::string_view arg) {
 Effect mode_step(Session& s, int dir) {
     Mode m = next_mode(s.sim().mode(), dir);
     std::string why;
-    if (!s.sim().set_mode(m, why)) s.say(why, true);
-    else s.say(s.mode_news(m));
+    if (!s.sim().set_mode(m, why))
+        s.say(why, true);
+    else
+        s.say(s.mode_news(m));
     return Effect::redraw;
 }
 
@@ -72,7 +82,9 @@ Effect dir_move(Session& s, std::string_view arg) {
     return Effect::redraw;
 }
 
-bool on_corr(const Session& s, std::string_view) { return s.page == pages::PageId::corr && input_empty(s); }
+bool on_corr(const Session& s, std::string_view) {
+    return s.page == pages::PageId::corr && input_empty(s);
+}
 
 Effect corr_move(Session& s, std::string_view arg) {
     s.corr_cursor = std::clamp(s.corr_cursor + to_int(arg), 1, s.machine().correctors);
@@ -84,9 +96,13 @@ bool on_edit(const Session& s, std::string_view) {
 }
 
 Effect edit_move(Session& s, std::string_view arg) {
-    if (arg == "home") s.editor.cursor = 0;
-    else if (arg == "end") s.editor.cursor = int(s.editor.lines().size()) - 1;
-    else s.editor.move(to_int(arg) * (std::abs(to_int(arg)) == 10 ? std::max(1, s.rows - 8) / 10 : 1));
+    if (arg == "home")
+        s.editor.cursor = 0;
+    else if (arg == "end")
+        s.editor.cursor = int(s.editor.lines().size()) - 1;
+    else
+        s.editor.move(to_int(arg) *
+                      (std::abs(to_int(arg)) == 10 ? std::max(1, s.rows - 8) / 10 : 1));
     s.modify_pending = false;
     return Effect::redraw;
 }
@@ -94,8 +110,10 @@ Effect edit_move(Session& s, std::string_view arg) {
 // Edit operations that answer "" or why they were refused.
 Effect edit_op(Session& s, std::string (Editor::*op)(), const char* done) {
     std::string why = (s.editor.*op)();
-    if (!why.empty()) s.say(why, true);
-    else s.say(done);
+    if (!why.empty())
+        s.say(why, true);
+    else
+        s.say(done);
     return Effect::redraw;
 }
 
@@ -111,7 +129,9 @@ Effect edit_modify(Session& s, std::string_view) {
     return Effect::redraw;
 }
 
-bool on_graph(const Session& s, std::string_view) { return s.page == pages::PageId::graph && input_empty(s); }
+bool on_graph(const Session& s, std::string_view) {
+    return s.page == pages::PageId::graph && input_empty(s);
+}
 
 Effect dir_load(Session& s, std::string_view) {
     if (s.programs().empty()) return Effect::none;
@@ -177,19 +197,25 @@ Effect inc_step(Session& s, std::string_view) {
 const std::vector<Action> kActions = {
     {"page", "show the %s page", always, page, "%S"},
     // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
-    {"mode-next", "next mode", always, [](Session& s, std::string_view) { return mode_step(s, 1); }, N_("MODE")},
+    {"mode-next", "next mode", always, [](Session& s, std::string_view) { return mode_step(s, 1); },
+     N_("MODE")},
     // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
-    {"mode-prev", "previous mode", always, [](Session& s, std::string_view) { return mode_step(s, -1); }, N_("MODE-")},
+    {"mode-prev", "previous mode", always,
+     [](Session& s, std::string_view) { return mode_step(s, -1); }, N_("MODE-")},
     {"mode", "the %s mode", always,
      [](Session& s, std::string_view a) { return s.command("mode " + std::string(a)); }, "%S"},
     // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
-    {"cycle-start", "Cycle Start", always, [](Session& s, std::string_view) { return s.command("cycle"); }, N_("START")},
+    {"cycle-start", "Cycle Start", always,
+     [](Session& s, std::string_view) { return s.command("cycle"); }, N_("START")},
     // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
-    {"feed-hold", "feed hold", always, [](Session& s, std::string_view) { return s.command("stop"); }, N_("HOLD")},
+    {"feed-hold", "feed hold", always,
+     [](Session& s, std::string_view) { return s.command("stop"); }, N_("HOLD")},
     // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
-    {"raz", "RAZ (reset)", always, [](Session& s, std::string_view) { return s.command("raz"); }, N_("RAZ")},
+    {"raz", "RAZ (reset)", always, [](Session& s, std::string_view) { return s.command("raz"); },
+     N_("RAZ")},
     // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
-    {"quit", "leave the console", always, [](Session& s, std::string_view) { return s.command("quit"); }, N_("QUIT")},
+    {"quit", "leave the console", always,
+     [](Session& s, std::string_view) { return s.command("quit"); }, N_("QUIT")},
     // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
     {"scroll", "scroll the page by %s screen", always, scroll, N_("SCROLL")},
     // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
@@ -197,7 +223,8 @@ const std::vector<Action> kActions = {
     // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
     {"dir-load", "select the program under the cursor", on_dir, dir_load, N_("LOAD")},
     // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
-    {"dir-delete", "delete the program under the cursor (twice to confirm)", on_dir, dir_delete, N_("DELETE")},
+    {"dir-delete", "delete the program under the cursor (twice to confirm)", on_dir, dir_delete,
+     N_("DELETE")},
     {"jog", "jog %s", jogging, jog, "%S"},
     // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
     {"corr-move", "choose the corrector %s", on_corr, corr_move, N_("D")},
@@ -205,38 +232,45 @@ const std::vector<Action> kActions = {
     {"graph-zoom", "zoom %s about the cursor", on_graph,
      [](Session& s, std::string_view a) { return s.graph_key("zoom", a); }, N_("ZOOM")},
     // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
-    {"graph-pan", "pan the drawing (%s)", on_graph, [](Session& s, std::string_view a) { return s.graph_key("pan", a); },
-     N_("PAN")},
+    {"graph-pan", "pan the drawing (%s)", on_graph,
+     [](Session& s, std::string_view a) { return s.graph_key("pan", a); }, N_("PAN")},
     // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
     {"graph-cursor", "move the cursor (%s): its coordinates are shown", on_graph,
      [](Session& s, std::string_view a) { return s.graph_key("cursor", a); }, N_("CURSOR")},
     // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
-    {"graph-fit", "fit the cutting moves", on_graph, [](Session& s, std::string_view) { return s.graph_key("fit", ""); },
-     N_("FIT")},
+    {"graph-fit", "fit the cutting moves", on_graph,
+     [](Session& s, std::string_view) { return s.graph_key("fit", ""); }, N_("FIT")},
     // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
     {"graph-plane", "next plane (XY, XZ, YZ; the lathe draws ZX)", on_graph,
      [](Session& s, std::string_view) { return s.graph_key("plane", ""); }, N_("PLANE")},
     // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
     {"edit-move", "move the editor's cursor (%s)", on_edit, edit_move, N_("MOVE")},
     // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
-    {"edit-modify", "put the block under the cursor on the input line to modify it", on_edit, edit_modify, N_("MODIFY")},
+    {"edit-modify", "put the block under the cursor on the input line to modify it", on_edit,
+     edit_modify, N_("MODIFY")},
     {"edit-delete", "delete the block under the cursor (or the marked blocks)", on_edit,
-     [](Session& s, std::string_view) { return edit_op(s, &Editor::erase, tr("deleted")); }, N_("DELETE")},
+     [](Session& s, std::string_view) { return edit_op(s, &Editor::erase, tr("deleted")); },
+     N_("DELETE")},
     {"edit-mark", "mark: the blocks between the mark and the cursor form a range", on_edit,
      [](Session& s, std::string_view) {
          s.editor.toggle_mark();
-         s.say(s.editor.mark >= 0 ? tr("mark set: move the cursor, then M-w copies, C-w cuts, Del deletes")
-                                  : tr("mark cleared"));
+         s.say(s.editor.mark >= 0
+                   ? tr("mark set: move the cursor, then M-w copies, C-w cuts, Del deletes")
+                   : tr("mark cleared"));
          return Effect::redraw;
      },
      N_("MARK")},
     {"edit-copy", "copy the block (or the marked range)", on_edit,
-     [](Session& s, std::string_view) { return edit_op(s, &Editor::copy, tr("copied")); }, N_("COPY")},
+     [](Session& s, std::string_view) { return edit_op(s, &Editor::copy, tr("copied")); },
+     N_("COPY")},
     {"edit-cut", "cut the block (or the marked range), to paste elsewhere (move)", on_edit,
-     [](Session& s, std::string_view) { return edit_op(s, &Editor::cut, tr("cut: C-y pastes it after the cursor")); },
+     [](Session& s, std::string_view) {
+         return edit_op(s, &Editor::cut, tr("cut: C-y pastes it after the cursor"));
+     },
      N_("CUT")},
     {"edit-paste", "paste the copied blocks after the cursor", on_edit,
-     [](Session& s, std::string_view) { return edit_op(s, &Editor::paste, tr("pasted")); }, N_("PASTE")},
+     [](Session& s, std::string_view) { return edit_op(s, &Editor::paste, tr("pasted")); },
+     N_("PASTE")},
     // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
     {"undo", "undo the last change of an origin or corrector", always,
      [](Session& s, std::string_view) { return s.undo(); }, N_("UNDO")},
@@ -254,13 +288,15 @@ const std::vector<Action> kActions = {
     // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
     {"speed-next", "animation speed x1, x10, max", always,
      [](Session& s, std::string_view) {
-         s.speed = s.speed == Speed::real ? Speed::x10 : s.speed == Speed::x10 ? Speed::max : Speed::real;
+         s.speed = s.speed == Speed::real  ? Speed::x10
+                   : s.speed == Speed::x10 ? Speed::max
+                                           : Speed::real;
          return Effect::redraw;
      },
      N_("SPEED")},
     // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
-    {"toggle-skip", "block skip switch (/)", always, [](Session& s, std::string_view) { return s.command("skip"); },
-     N_("SKIP")},
+    {"toggle-skip", "block skip switch (/)", always,
+     [](Session& s, std::string_view) { return s.command("skip"); }, N_("SKIP")},
     // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
     {"toggle-m01", "optional stop switch (M01)", always,
      [](Session& s, std::string_view) { return s.command("m01"); }, N_("M01")},
@@ -308,7 +344,8 @@ const std::vector<Action> kActions = {
 
 std::string_view trim(std::string_view s) {
     while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-    while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
+    while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r'))
+        s.remove_suffix(1);
     return s;
 }
 
@@ -335,7 +372,6 @@ bool matches(const std::string& want, std::string_view have) {
 
 }  // namespace
 
-
 const Action* find_action(std::string_view name) {
     for (const Action& a : kActions)
         if (a.name == name) return &a;
@@ -344,15 +380,16 @@ const Action* find_action(std::string_view name) {
 
 // The soft-key labels of the pages (F1-F7 and the like), for the catalogue.
 // TRANSLATORS: a page's soft-key label: at most 6 columns (5 on F10).
-[[maybe_unused]] const char* const kPageLabels[] = {N_("HELP"), N_("OP/OM"), N_("PROG/GR"), N_("INFO"), N_("SET"), N_("DIR"),
-                                                    N_("ALARM"), N_("PREF"), N_("CORR"), N_("PARAM"), N_("GRAPH"),
-                                                    N_("EDIT"), N_("HISTORY")};
+[[maybe_unused]] const char* const kPageLabels[] = {
+    N_("HELP"), N_("OP/OM"), N_("PROG/GR"), N_("INFO"),  N_("SET"),  N_("DIR"),    N_("ALARM"),
+    N_("PREF"), N_("CORR"),  N_("PARAM"),   N_("GRAPH"), N_("EDIT"), N_("HISTORY")};
 
 std::string help_text(const Action& a, std::string_view arg) {
     std::string h = pages::tr_text(a.help);
     if (a.name == "page" && arg == "pos") return tr("show the OP page, again for OM");
     if (a.name == "page" && arg == "set") return tr("show the PARAM, PREF and CORR pages in turn");
-    if (a.name == "page" && arg == "prog") return tr("show the PROG page, again for the GRAPH page");
+    if (a.name == "page" && arg == "prog")
+        return tr("show the PROG page, again for the GRAPH page");
     if (size_t p = h.find("%s"); p != std::string::npos) h.replace(p, 2, arg);
     return h;
 }
@@ -360,7 +397,10 @@ std::string help_text(const Action& a, std::string_view arg) {
 std::string soft_label(const Action& a, std::string_view arg) {
     std::string l = a.label == "%S" ? std::string(a.label) : pages::tr_text(a.label);
     if (size_t p = l.find("%S"); p != std::string::npos) {
-        std::string up(arg == "pos" ? "OP/OM" : arg == "set" ? "SET" : arg == "prog" ? "PROG/GR" : arg);
+        std::string up(arg == "pos"    ? "OP/OM"
+                       : arg == "set"  ? "SET"
+                       : arg == "prog" ? "PROG/GR"
+                                       : arg);
         for (char& c : up) c = char(std::toupper(static_cast<unsigned char>(c)));
         // A page's soft key in the language of the panel (the modes keep their NUM names).
         if (a.name == "page") up = pages::tr_text(up);
@@ -389,15 +429,19 @@ std::string Bindings::parse(std::string_view text, std::string_view origin) {
         std::string_view line = text.substr(0, eol);
         text = eol == std::string_view::npos ? std::string_view{} : text.substr(eol + 1);
         ++lineno;
-        if (size_t hash = line.find('#'); hash != std::string_view::npos && (hash == 0 || line[hash - 1] == ' '))
+        if (size_t hash = line.find('#');
+            hash != std::string_view::npos && (hash == 0 || line[hash - 1] == ' '))
             line = line.substr(0, hash);
         line = trim(line);
         if (line.empty()) continue;
-        auto bad = [&](const std::string& what) { return std::string(origin) + ":" + std::to_string(lineno) + ": " + what; };
+        auto bad = [&](const std::string& what) {
+            return std::string(origin) + ":" + std::to_string(lineno) + ": " + what;
+        };
         Binding b;
         b.line = lineno;
         b.key_text = next_word(line);
-        if (!parse_key_name(b.key_text, b.key)) return bad(strf(tr("'%s' is not a key name"), b.key_text.c_str()));
+        if (!parse_key_name(b.key_text, b.key))
+            return bad(strf(tr("'%s' is not a key name"), b.key_text.c_str()));
         b.action = next_word(line);
         if (!find_action(b.action)) return bad(strf(tr("'%s' is not an action"), b.action.c_str()));
         std::string w = next_word(line);
@@ -412,10 +456,14 @@ std::string Bindings::parse(std::string_view text, std::string_view origin) {
                 size_t comma = ctx.find(',');
                 std::string_view c = ctx.substr(0, comma);
                 ctx = comma == std::string_view::npos ? std::string_view{} : ctx.substr(comma + 1);
-                if (c.rfind("page=", 0) == 0) b.when.page = c.substr(5);
-                else if (c.rfind("mode=", 0) == 0) b.when.mode = c.substr(5);
-                else if (c == "lathe" || c == "mill") b.when.kind = c;
-                else return bad(strf(tr("unknown context '%s'"), std::string(c).c_str()));
+                if (c.rfind("page=", 0) == 0)
+                    b.when.page = c.substr(5);
+                else if (c.rfind("mode=", 0) == 0)
+                    b.when.mode = c.substr(5);
+                else if (c == "lathe" || c == "mill")
+                    b.when.kind = c;
+                else
+                    return bad(strf(tr("unknown context '%s'"), std::string(c).c_str()));
             }
         }
         if (!next_word(line).empty()) return bad(tr("too many words"));
@@ -424,8 +472,8 @@ std::string Bindings::parse(std::string_view text, std::string_view origin) {
     return {};
 }
 
-std::vector<const Binding*> Bindings::find(const Key& k, std::string_view page, std::string_view mode,
-                                           std::string_view kind) const {
+std::vector<const Binding*> Bindings::find(const Key& k, std::string_view page,
+                                           std::string_view mode, std::string_view kind) const {
     std::vector<const Binding*> out;
     for (auto it = list_.rbegin(); it != list_.rend(); ++it) {  // a later line wins
         const Binding& b = *it;
@@ -438,7 +486,8 @@ std::vector<const Binding*> Bindings::find(const Key& k, std::string_view page, 
     auto weight = [](const Binding* b) {
         return int(!b->when.page.empty()) + int(!b->when.mode.empty()) + int(!b->when.kind.empty());
     };
-    std::stable_sort(out.begin(), out.end(), [&](auto* a, auto* b) { return weight(a) > weight(b); });
+    std::stable_sort(out.begin(), out.end(),
+                     [&](auto* a, auto* b) { return weight(a) > weight(b); });
     return out;
 }
 

@@ -42,7 +42,7 @@ struct Binding {
 };
 
 class Bindings {
-public:
+  public:
     // Adds the lines of a bindings text. Returns "" or "NAME:LINE: problem".
     std::string parse(std::string_view text, std::string_view origin);
     void clear() { list_.clear(); }
@@ -51,7 +51,7 @@ public:
     std::vector<const Binding*> find(const Key& k, std::string_view page, std::string_view mode,
                                      std::string_view kind) const;
 
-private:
+  private:
     std::vector<Binding> list_;
 };
 

@@ -30,8 +30,8 @@ inline constexpr int kOk = 0, kProgramErrors = 1, kUsage = 64, kDataErr = 65, kN
 inline constexpr const char* kDefaultMachine = "lathe";
 
 struct RunArgs {
-    std::string machine;  // "": kDefaultMachine
-    std::vector<std::string> sets;   // NAME=VALUE
+    std::string machine;            // "": kDefaultMachine
+    std::vector<std::string> sets;  // NAME=VALUE
     std::vector<std::string> files;
     bool trace = false;
     bool json = false;
@@ -49,12 +49,14 @@ struct RunArgs {
 int run(const RunArgs& a);
 // Shared by run, check and plot (cli_run.cpp). Each prints its problems.
 void print_diag(const Diag& d);
-int load_all(const std::vector<std::string>& files, ProgramMemory& mem);          // an exit code
-int apply_sets(const std::vector<std::string>& sets, Interpreter& in);            // --set; an exit code
+int load_all(const std::vector<std::string>& files, ProgramMemory& mem);  // an exit code
+int apply_sets(const std::vector<std::string>& sets, Interpreter& in);    // --set; an exit code
 // A built-in profile or a .machine file; prints the problem and returns false.
 bool load_machine(const std::string& name, MachineProfile& m);
 // The machine a batch command runs on: --machine, else the default.
-inline std::string batch_machine(const std::string& asked) { return asked.empty() ? kDefaultMachine : asked; }
+inline std::string batch_machine(const std::string& asked) {
+    return asked.empty() ? kDefaultMachine : asked;
+}
 // --setup: a shipped setup's name or a setup file (pupitre-setup(5)); prints
 // the problem and returns false.
 bool load_setup(const std::string& name, const MachineProfile& m, workshop::Setup& s);
@@ -64,9 +66,9 @@ void default_machine_note(const std::string& asked, bool errors);
 // The console (console/app.cpp): pupitre with no command.
 struct ConsoleArgs {
     std::string db;
-    std::string machine;        // "" = the last one used, else lathe
-    std::string theme;  // empty: colour, or mono when NO_COLOR is set (no-color.org)
-    bool ascii = false;         // no UTF-8 line drawing even on a UTF-8 terminal
+    std::string machine;  // "" = the last one used, else lathe
+    std::string theme;    // empty: colour, or mono when NO_COLOR is set (no-color.org)
+    bool ascii = false;   // no UTF-8 line drawing even on a UTF-8 terminal
 };
 int console(const ConsoleArgs& a);
 int check(const RunArgs& a);
@@ -91,7 +93,7 @@ int store_restore(const StoreArgs& a);
 // The store of one `run` or `check --db` (cli_store.cpp). Each call prints its
 // problems and returns an exit code, 0 when all is well.
 class RunStore {
-public:
+  public:
     RunStore();
     ~RunStore();
     int open(const std::string& db);
@@ -102,7 +104,7 @@ public:
     // The run's writes to correctors and origins, kept with an audit row each.
     int persist(const Interpreter& in, const std::string& file, const std::string& machine_arg);
 
-private:
+  private:
     std::unique_ptr<store::Store> s_;
 };
 

@@ -14,10 +14,10 @@
 #include "core/i18n.hpp"
 #include "core/interp/interp.hpp"
 #include "core/output/cairo_plot.hpp"
-#include "core/workshop/report.hpp"
 #include "core/output/scene.hpp"
 #include "core/output/svg.hpp"
 #include "core/output/toolpath.hpp"
+#include "core/workshop/report.hpp"
 
 namespace pupitre::cli {
 
@@ -25,7 +25,8 @@ namespace {
 
 // Runs to the end as `run` does (stops are resumed), following the program's
 // line types (E31000, E31001) and the first plane other than G17 it selects.
-void run_collecting(Interpreter& in, Toolpath& path, int& plane_seen, const workshop::Workshop* shop) {
+void run_collecting(Interpreter& in, Toolpath& path, int& plane_seen,
+                    const workshop::Workshop* shop) {
     int rapid = -1, feed = -1;
     while (!shop || !shop->crashed()) {
         StepResult r = in.step();
@@ -87,10 +88,12 @@ struct Output {
     bool (*write)(const Scene&, const PlotArgs&, std::FILE*);
 };
 constexpr Output kOutputs[] = {
-    {&PlotArgs::svg, "SVG", [](const Scene& s, const PlotArgs&, std::FILE* f) { return write_svg(s, f); }},
+    {&PlotArgs::svg, "SVG",
+     [](const Scene& s, const PlotArgs&, std::FILE* f) { return write_svg(s, f); }},
     {&PlotArgs::png, "PNG",
      [](const Scene& s, const PlotArgs& a, std::FILE* f) { return write_png(s, a.png_width, f); }},
-    {&PlotArgs::pdf, "PDF", [](const Scene& s, const PlotArgs&, std::FILE* f) { return write_pdf(s, f); }},
+    {&PlotArgs::pdf, "PDF",
+     [](const Scene& s, const PlotArgs&, std::FILE* f) { return write_pdf(s, f); }},
 };
 
 int write_out(const Output& o, const Scene& scene, const PlotArgs& a) {

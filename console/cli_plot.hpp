@@ -8,7 +8,7 @@
 namespace pupitre::cli {
 
 struct PlotArgs {
-    std::string machine;              // "": the lathe, as every batch command
+    std::string machine;             // "": the lathe, as every batch command
     std::string plane;               // xy|xz|yz|zx; "" = the program's (the lathe's ZX)
     std::string svg;                 // output file; "-" for the standard output
     std::string png;                 // the picture as a PNG (Cairo), "" for none
@@ -18,7 +18,7 @@ struct PlotArgs {
     std::vector<std::string> sets;   // NAME=VALUE, as `run --set`
     bool block_skip = false;
     long max_blocks = 20'000'000;
-    std::string setup;               // --setup: the workshop's part drawn under the path
+    std::string setup;  // --setup: the workshop's part drawn under the path
 };
 
 // Runs the program to its end (or its first error) and writes the drawing; the

@@ -88,13 +88,15 @@ class NullSink final : public MachineSink {};
 // --setup: a shipped setup's name or a setup file; prints the problem.
 bool load_setup(const std::string& name, const MachineProfile& m, workshop::Setup& s) {
     if (!m.lathe) {
-        std::fprintf(stderr, tr("pupitre: --setup: the workshop has a lathe only yet (--machine lathe)\n"));
+        std::fprintf(stderr,
+                     tr("pupitre: --setup: the workshop has a lathe only yet (--machine lathe)\n"));
         return false;
     }
     if (workshop::builtin_setup(name, s)) return true;
     std::ifstream in(name);
     if (!in) {
-        std::fprintf(stderr, tr("pupitre: unknown setup '%s' (lathe, or a .setup file)\n"), name.c_str());
+        std::fprintf(stderr, tr("pupitre: unknown setup '%s' (lathe, or a .setup file)\n"),
+                     name.c_str());
         return false;
     }
     std::ostringstream ss;
@@ -224,7 +226,8 @@ int run(const RunArgs& a) {
     const bool errors = in.has_errors() || !crashes.empty();
     default_machine_note(a.machine, errors);
     if (a.json) {
-        std::string s = summary_json(in, a.files.front(), crashes, shop ? workshop::workshop_json(*shop, asked) : "");
+        std::string s = summary_json(in, a.files.front(), crashes,
+                                     shop ? workshop::workshop_json(*shop, asked) : "");
         std::fputs(s.c_str(), stdout);
     } else if (!a.trace) {
         std::string s = summary_text(in, a.files.front()) + workshop::readings_text(asked);
@@ -291,7 +294,8 @@ int check(const RunArgs& a) {
             size_t eol = body.find('\n', pos);
             if (eol == std::string_view::npos) eol = body.size();
             Diag d;
-            if (!parse_block(body.substr(pos, eol - pos), b, d) && !reported.count({p->file, line})) {
+            if (!parse_block(body.substr(pos, eol - pos), b, d) &&
+                !reported.count({p->file, line})) {
                 d.severity = Severity::warning;
                 d.file = p->file;
                 d.program = p->number;

@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "console/session.hpp"
-#include "core/workshop/report.hpp"
 #include "core/i18n.hpp"
+#include "core/workshop/report.hpp"
 
 namespace pupitre::console {
 
@@ -192,7 +192,8 @@ Effect panel_switch(Session& s, const CommandCall& c, bool skip) {
     bool v;
     if (!on_off(c.arg(1), sw, v)) return usage(s, skip ? ":skip on|off" : ":m01 on|off");
     sw = v;
-    s.say(skip ? (v ? tr("block skip ON") : tr("block skip off")) : (v ? tr("optional stop M01 ON") : tr("optional stop M01 off")));
+    s.say(skip ? (v ? tr("block skip ON") : tr("block skip off"))
+               : (v ? tr("optional stop M01 ON") : tr("optional stop M01 off")));
     return Effect::redraw;
 }
 
@@ -232,7 +233,8 @@ Effect read_instrument(Session& s, const CommandCall& c) {
     }
     int decimals = r.resolution < 0.005 ? 3 : 2;
     // TRANSLATORS: the instrument, what it measured, the reading in mm.
-    std::string said = strf(tr("%s: %s = %.*f mm"), r.instrument.c_str(), spec.c_str(), decimals, r.value);
+    std::string said =
+        strf(tr("%s: %s = %.*f mm"), r.instrument.c_str(), spec.c_str(), decimals, r.value);
     // TRANSLATORS: after a presetter's reading: its uncertainty in mm.
     if (r.uncertainty > 0) said += strf(tr(" (\u00b1%.3f)"), r.uncertainty);
     s.say(said);
@@ -247,7 +249,8 @@ Effect setup(Session& s, const CommandCall& c) {
     std::string_view what = c.arg(1);
     workshop::Workshop* now = s.sim().shop();
     if (what.empty()) {
-        s.say(now ? strf(tr("workshop: setup %s, %s"), now->setup().name.c_str(), now->setup().description.c_str())
+        s.say(now ? strf(tr("workshop: setup %s, %s"), now->setup().name.c_str(),
+                         now->setup().description.c_str())
                   : std::string(tr("no workshop: the machine moves a point (:setup lathe)")));
         return Effect::redraw;
     }
@@ -281,7 +284,8 @@ Effect setup(Session& s, const CommandCall& c) {
         }
     }
     s.sim().set_workshop(std::make_unique<workshop::Workshop>(s.machine(), st, nullptr));
-    s.say(strf(tr("workshop: setup %s, %s; fresh stock in the chuck"), st.name.c_str(), st.description.c_str()));
+    s.say(strf(tr("workshop: setup %s, %s; fresh stock in the chuck"), st.name.c_str(),
+               st.description.c_str()));
     s.save_workshop();
     return Effect::redraw;
 }
@@ -302,7 +306,8 @@ Effect shim(Session& s, const CommandCall& c) {
     if (!number(c.arg(1), mm) || mm < 0.005 || mm > 50 || !c.arg(2).empty())
         return usage(s, tr(":shim MM (0.005 to 50) or :shim off"));
     w->set_shim(mm);
-    s.say(strf(tr("a %s mm shim on the part: a jog stops when the tool pinches it; subtract it when you touch off"),
+    s.say(strf(tr("a %s mm shim on the part: a jog stops when the tool pinches it; subtract it "
+                  "when you touch off"),
                pages::fmt_len(mm).c_str()));
     return Effect::redraw;
 }
@@ -311,12 +316,15 @@ Effect shim(Session& s, const CommandCall& c) {
 Effect export_part(Session& s, const workshop::Workshop& w, std::string_view file) {
     std::string path(file);
     bool svg = path.size() > 4 && path.compare(path.size() - 4, 4, ".svg") == 0;
-    std::string text = svg ? workshop::part_svg(w.world(), w.setup().name) : workshop::part_zr(w.world());
+    std::string text =
+        svg ? workshop::part_svg(w.world(), w.setup().name) : workshop::part_zr(w.world());
     std::FILE* f = std::fopen(path.c_str(), "w");
     bool ok = f && std::fwrite(text.data(), 1, text.size(), f) == text.size();
     if (f) ok = std::fclose(f) == 0 && ok;
-    if (!ok) s.say(strf(tr("cannot write %s"), path.c_str()), true);
-    else s.say(strf(tr("the part written to %s"), path.c_str()));
+    if (!ok)
+        s.say(strf(tr("cannot write %s"), path.c_str()), true);
+    else
+        s.say(strf(tr("the part written to %s"), path.c_str()));
     return Effect::redraw;
 }
 
@@ -407,7 +415,8 @@ Effect renum(Session& s, const CommandCall& c) {
     if (c.words.size() > 2 && !integer(c.words[2], step)) return usage(s, ":renum [START [STEP]]");
     if (start < 0 || step < 1) return usage(s, ":renum [START [STEP]]");
     int k = s.editor.renumber(start, step);
-    s.say(strf(tr("%d blocks renumbered from N%ld by %ld; G77/G79/cycle references follow"), k, start, step));
+    s.say(strf(tr("%d blocks renumbered from N%ld by %ld; G77/G79/cycle references follow"), k,
+               start, step));
     return Effect::redraw;
 }
 
@@ -446,7 +455,8 @@ constexpr Command kCommands[] = {
     {"set", ":set NAME=VALUE",
      N_("PREF.X=-120.5, DEC1.Z=3, D1.R=0.8, L5=2, E80000=18000 (names as --set)"),
      [](Session& s, const CommandCall& c) { return s.set_value(c.rest()); }},
-    {"search", ":search N", N_("RNS: the block to search for (same as typing N in RNS mode)"), search},
+    {"search", ":search N", N_("RNS: the block to search for (same as typing N in RNS mode)"),
+     search},
     {"feed", ":feed PCT",
      // xgettext:no-c-format
      N_("feed override, 0 to 120 % (ignored under M49)"),
@@ -470,11 +480,13 @@ constexpr Command kCommands[] = {
     {"measure", ":measure Dn AXIS VALUE",
      N_("tool measurement: the gauge of Dn from a touched face or diameter"), measure},
     {"", ":measure dia Z-n|bore Z-n|groove Z-n|length|tool Tn X|Z|R",
-     N_("read an instrument on the workshop's part, from its right-hand face, or the presetter"), nullptr},
+     N_("read an instrument on the workshop's part, from its right-hand face, or the presetter"),
+     nullptr},
     {"setup", ":setup [lathe|FILE|off]",
      N_("the workshop: a true part, chuck and tools the moves cut and touch"), setup},
     {"part", ":part new", N_("the workshop: fresh stock in the chuck"), part},
-    {"", ":part export FILE", N_("the part as cut: SVG if FILE ends in .svg, else its Z R outline"), nullptr},
+    {"", ":part export FILE", N_("the part as cut: SVG if FILE ends in .svg, else its Z R outline"),
+     nullptr},
     {"shim", ":shim MM|off",
      N_("the paper test: a shim of MM on the part stops a jog when the tool pinches it"), shim},
     {"undo", ":undo", N_("undo the last change of an origin or a corrector"),
@@ -482,7 +494,8 @@ constexpr Command kCommands[] = {
     {"protect", ":protect on|off [PIN]",
      N_("the memory-protect key: locks programs, origins and correctors"),
      [](Session& s, const CommandCall& c) { return s.protect_command(c.rest()); }},
-    {"", ":protect pin [NEWPIN]", N_("set (or remove) the PIN that unlocks the protection"), nullptr},
+    {"", ":protect pin [NEWPIN]", N_("set (or remove) the PIN that unlocks the protection"),
+     nullptr},
     {"edit", ":edit N",
      // xgettext:no-c-format
      N_("EDIT: open program %N (new if absent; without N the one selected)"), edit},
@@ -533,7 +546,8 @@ Effect Session::command(std::string_view text) {
     CommandCall call{text, words(text)};
     if (call.words.empty()) return Effect::none;
     if (const Command* c = find_command(call.name())) return c->run(*this, call);
-    say(strf(tr("unknown command :%s (F1 lists the commands)"), std::string(call.name()).c_str()), true);
+    say(strf(tr("unknown command :%s (F1 lists the commands)"), std::string(call.name()).c_str()),
+        true);
     return Effect::redraw;
 }
 
@@ -553,7 +567,8 @@ Effect Session::cycle_command() {
     if (!sim().message().empty())
         say(sim().message());
     else if (sim().selected() >= 0 && runs_program)
-        say(strf(tr("Cycle Start: %%%d in %s"), sim().selected(), std::string(mode_name(m)).c_str()));
+        say(strf(tr("Cycle Start: %%%d in %s"), sim().selected(),
+                 std::string(mode_name(m)).c_str()));
     else
         say(strf(tr("Cycle Start (%s)"), std::string(mode_name(m)).c_str()));
     return Effect::redraw;

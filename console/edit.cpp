@@ -19,7 +19,9 @@ Effect Session::edit_open(int number) {
         return Effect::redraw;
     }
     if (editor.is_open() && editor.dirty && editor.number != number) {
-        say(strf(tr("%%%d has changes: :save it (or :save! despite errors, :close to drop them)"), editor.number), true);
+        say(strf(tr("%%%d has changes: :save it (or :save! despite errors, :close to drop them)"),
+                 editor.number),
+            true);
         return Effect::redraw;
     }
     std::string text;
@@ -35,7 +37,8 @@ Effect Session::edit_open(int number) {
         }
     } else if (const ProgramText* p = mem_.find(number)) {
         text = std::string(*p->text, p->begin, p->end - p->begin);
-        text = "%" + std::to_string(number) + (p->title.empty() ? "" : " " + p->title) + "\n" + text;
+        text =
+            "%" + std::to_string(number) + (p->title.empty() ? "" : " " + p->title) + "\n" + text;
     } else {
         fresh = true;
     }
@@ -44,12 +47,16 @@ Effect Session::edit_open(int number) {
     journaled_changes_ = editor.changes;
     modify_pending = false;
     show_page(pages::PageId::edit);
-    say(fresh ? strf(tr("new program %%%d: type its blocks, then :save"), number)
-              : strf(tr("%%%d r%d: type a block to insert it after >, Enter modifies the one under >"), number, rev));
+    say(fresh
+            ? strf(tr("new program %%%d: type its blocks, then :save"), number)
+            : strf(
+                  tr("%%%d r%d: type a block to insert it after >, Enter modifies the one under >"),
+                  number, rev));
     release_lease();
     if (std::string who = other_editor(number); !who.empty())
-        say(strf(tr("%%%d is open in another console (%s): the second save will be kept as a conflict"), number,
-                 who.c_str()),
+        say(strf(tr("%%%d is open in another console (%s): the second save will be kept as a "
+                    "conflict"),
+                 number, who.c_str()),
             true);
     if (store_) take_lease(number);
     offer_journal(number, text);
@@ -63,8 +70,11 @@ Effect Session::edit_text(const std::string& block) {
     }
     std::string why = modify_pending ? editor.replace(block) : editor.insert_after(block);
     modify_pending = false;
-    if (!why.empty()) say(why, true);
-    else say(editor.dirty ? strf(tr("block %d (not saved)"), editor.cursor + 1) : strf(tr("block %d"), editor.cursor + 1));
+    if (!why.empty())
+        say(why, true);
+    else
+        say(editor.dirty ? strf(tr("block %d (not saved)"), editor.cursor + 1)
+                         : strf(tr("block %d"), editor.cursor + 1));
     return Effect::redraw;
 }
 
@@ -79,19 +89,24 @@ Effect Session::edit_save(bool force) {
     }
     if (!unprotected("programs")) return Effect::redraw;
     if (sim_->in_cycle() && sim_->selected() == editor.number) {
-        say(strf(tr("%%%d is in cycle: RAZ first, or MODIF to change the blocks to come"), editor.number), true);
+        say(strf(tr("%%%d is in cycle: RAZ first, or MODIF to change the blocks to come"),
+                 editor.number),
+            true);
         return Effect::redraw;
     }
     Diag d;
     if (!editor.check(d) && !force) {
         std::string at = strf(tr("line %d"), d.line) + (d.n >= 0 ? " N" + std::to_string(d.n) : "");
         // TRANSLATORS: "line 12 N40: error 107: the detail (not saved; ...)".
-        say(strf(tr("%s: error %d: %s (not saved; :save! forces)"), at.c_str(), d.code, d.detail.c_str()), true);
+        say(strf(tr("%s: error %d: %s (not saved; :save! forces)"), at.c_str(), d.code,
+                 d.detail.c_str()),
+            true);
         return Effect::redraw;
     }
     std::string text = editor.text();
     if (store_) {
-        auto r = store_->save(editor.number, text, editor.revision > 0 ? editor.revision : store::kNew, "page EDIT");
+        auto r = store_->save(editor.number, text,
+                              editor.revision > 0 ? editor.revision : store::kNew, "page EDIT");
         if (r.error) {
             say(strf(tr("not saved: %s"), r.error.message.c_str()), true);
             return Effect::redraw;
@@ -99,8 +114,9 @@ Effect Session::edit_save(bool force) {
         drop_journal(editor.number);  // the text is in the store (a conflict keeps it too)
         if (r.value.status == store::SaveStatus::conflict) {
             editor.dirty = false;  // the text is safe in the store, as the CONFLICT revision
-            say(strf(tr("conflict: r%d by %s came first; yours is kept as r%d (:history %d)"), int(r.value.current),
-                     r.value.current_by.c_str(), int(r.value.revision), editor.number),
+            say(strf(tr("conflict: r%d by %s came first; yours is kept as r%d (:history %d)"),
+                     int(r.value.current), r.value.current_by.c_str(), int(r.value.revision),
+                     editor.number),
                 true);
             return Effect::redraw;
         }
@@ -115,9 +131,11 @@ Effect Session::edit_save(bool force) {
     editor.dirty = false;
     drop_journal(editor.number);
     refresh_dir();
-    std::string news = store_ ? strf(tr("%%%d saved as revision %d"), editor.number, editor.revision)
-                              : strf(tr("%%%d saved"), editor.number);
-    if (editor.error_line >= 0) news += " " + strf(tr("with a syntax error at line %d"), editor.error_line + 1);
+    std::string news = store_
+                           ? strf(tr("%%%d saved as revision %d"), editor.number, editor.revision)
+                           : strf(tr("%%%d saved"), editor.number);
+    if (editor.error_line >= 0)
+        news += " " + strf(tr("with a syntax error at line %d"), editor.error_line + 1);
     say(news);
     return Effect::redraw;
 }
@@ -138,14 +156,16 @@ Effect Session::edit_history() {
         std::time_t t = std::time_t(it->at_ms / 1000);
         char when[32];
         std::strftime(when, sizeof when, "%Y-%m-%d %H:%M", std::localtime(&t));
-        history_.push_back(pages::HistoryRow{it->revision, std::string(store::kind_name(it->kind)), when, it->who,
-                                             it->source, it->lines, it->conflict});
+        history_.push_back(pages::HistoryRow{it->revision, std::string(store::kind_name(it->kind)),
+                                             when, it->who, it->source, it->lines, it->conflict});
     }
     history_number_ = editor.number;
     history_current_ = editor.revision;
-    if (auto info = store_->read(editor.number); !info.error) history_current_ = info.value.revision;
+    if (auto info = store_->read(editor.number); !info.error)
+        history_current_ = info.value.revision;
     show_page(pages::PageId::history);
-    say(strf(tr("%zu revision(s) of %%%d: :restore REV makes one current again"), history_.size(), editor.number));
+    say(strf(tr("%zu revision(s) of %%%d: :restore REV makes one current again"), history_.size(),
+             editor.number));
     return Effect::redraw;
 }
 
@@ -169,7 +189,8 @@ Effect Session::edit_restore(int rev) {
         sim_->invalidate_text_cache();
     }
     refresh_dir();
-    say(strf(tr("%%%d: revision %d is current again (as revision %d)"), n, rev, int(r.value.revision)));
+    say(strf(tr("%%%d: revision %d is current again (as revision %d)"), n, rev,
+             int(r.value.revision)));
     return Effect::redraw;
 }
 
@@ -207,8 +228,8 @@ Effect Session::modif_start() {
     editor.cursor = std::min(int(editor.lines().size()) - 1, editor.locked);
     modif = true;
     show_page(pages::PageId::edit);
-    say(strf(tr("MODIF %%%d: the blocks from line %d on may change; Cycle Start runs them"), p->number,
-             editor.locked + 1));
+    say(strf(tr("MODIF %%%d: the blocks from line %d on may change; Cycle Start runs them"),
+             p->number, editor.locked + 1));
     return Effect::redraw;
 }
 

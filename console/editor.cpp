@@ -43,7 +43,8 @@ std::string Editor::text() const {
 
 bool Editor::editable(int line, std::string& why) const {
     if (line < locked) {
-        why = tr("this block is already prepared: MODIF changes the blocks after the one in progress");
+        why = tr(
+            "this block is already prepared: MODIF changes the blocks after the one in progress");
         return false;
     }
     if (line == 0 && !lines_.empty() && !lines_[0].empty() && lines_[0][0] == '%') {
@@ -64,7 +65,8 @@ void Editor::range(int& a, int& b) const {
 
 std::string Editor::insert_after(std::string block) {
     std::string why;
-    if (cursor + 1 < locked) return tr("this place is already prepared: MODIF inserts after the block in progress");
+    if (cursor + 1 < locked)
+        return tr("this place is already prepared: MODIF inserts after the block in progress");
     if (block.find('\n') != std::string::npos) return tr("one block at a time");
     lines_.insert(lines_.begin() + cursor + 1, std::move(block));
     ++cursor;
@@ -128,7 +130,9 @@ std::string Editor::paste() {
     return {};
 }
 
-void Editor::move(int delta) { cursor = std::clamp(cursor + delta, 0, int(lines_.size()) - 1); }
+void Editor::move(int delta) {
+    cursor = std::clamp(cursor + delta, 0, int(lines_.size()) - 1);
+}
 
 bool Editor::goto_n(long n) {
     for (size_t i = 0; i < lines_.size(); ++i)

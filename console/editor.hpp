@@ -14,20 +14,20 @@
 namespace pupitre::console {
 
 class Editor {
-public:
+  public:
     // `text`: the program as stored (its % line first).
     void open(int number, std::string_view text, int revision, bool is_new);
     void close() { open_ = false; }
     bool is_open() const { return open_; }
 
     int number = -1;
-    int revision = 0;     // the store revision the text was loaded from (0: new)
+    int revision = 0;  // the store revision the text was loaded from (0: new)
     bool dirty = false;
     uint64_t changes = 0;  // counts every change (the recovery journal follows it)
-    int cursor = 0;       // index in lines()
-    int mark = -1;        // the other end of a block range, -1 when none
-    int locked = 0;       // MODIF: lines [0, locked) are prepared and cannot change
-    int error_line = -1;  // the line the last check stopped on
+    int cursor = 0;        // index in lines()
+    int mark = -1;         // the other end of a block range, -1 when none
+    int locked = 0;        // MODIF: lines [0, locked) are prepared and cannot change
+    int error_line = -1;   // the line the last check stopped on
 
     const std::vector<std::string>& lines() const { return lines_; }
     std::string text() const;  // the lines joined, each ended by a newline
@@ -38,7 +38,7 @@ public:
     std::string erase();                          // the current block or the marked range
     std::string copy();                           // to the clipboard
     std::string cut();
-    std::string paste();                          // after the cursor
+    std::string paste();  // after the cursor
     void toggle_mark() { mark = mark < 0 ? cursor : -1; }
     void move(int delta);
     // Searches; false when not found (the cursor stays).
@@ -51,7 +51,7 @@ public:
     // the cursor on it.
     bool check(Diag& d);
 
-private:
+  private:
     bool editable(int line, std::string& why) const;
     void range(int& a, int& b) const;
     bool open_ = false;

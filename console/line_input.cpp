@@ -14,7 +14,8 @@ void PlainLineInput::feed(std::string_view bytes) {
             if (on_line) on_line(line);
         } else if (u == 0x7f || u == 0x08) {
             // Backspace removes a whole UTF-8 code point.
-            while (!text_.empty() && (static_cast<unsigned char>(text_.back()) & 0xc0) == 0x80) text_.pop_back();
+            while (!text_.empty() && (static_cast<unsigned char>(text_.back()) & 0xc0) == 0x80)
+                text_.pop_back();
             if (!text_.empty()) text_.pop_back();
         } else if (u == 0x15) {
             text_.clear();  // Ctrl-U

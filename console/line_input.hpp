@@ -10,7 +10,7 @@
 namespace pupitre::console {
 
 class LineInput {
-public:
+  public:
     virtual ~LineInput() = default;
     // Bytes of the keys no binding took (text, editing keys, history keys).
     virtual void feed(std::string_view bytes) = 0;
@@ -31,7 +31,7 @@ public:
 // A minimal editor for tests and for terminals without readline: printable
 // text, Backspace, Ctrl-U, Enter.
 class PlainLineInput final : public LineInput {
-public:
+  public:
     void feed(std::string_view bytes) override;
     std::string text() const override { return text_; }
     int cursor() const override;
@@ -40,7 +40,7 @@ public:
     void set_text(const std::string& t) override { text_ = t; }
     const std::vector<std::string>& history() const { return history_; }
 
-private:
+  private:
     std::string text_;
     std::vector<std::string> history_;
 };

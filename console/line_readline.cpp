@@ -3,14 +3,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "console/line_readline.hpp"
 
+#include <readline/history.h>
+#include <readline/readline.h>
+
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <string>
 #include <vector>
-
-#include <readline/history.h>
-#include <readline/readline.h>
 
 namespace pupitre::console {
 
@@ -27,7 +27,9 @@ int getc_hook(FILE*) {
     return EOF;  // never reached: feed() calls readline only while bytes remain
 }
 
-int input_available() { return g_pos < g_bytes.size(); }
+int input_available() {
+    return g_pos < g_bytes.size();
+}
 void no_redisplay() {}
 void no_prep(int) {}
 void no_deprep() {}
@@ -106,12 +108,15 @@ void ReadlineInput::feed(std::string_view bytes) {
     while (g_pos < g_bytes.size()) rl_callback_read_char();
 }
 
-std::string ReadlineInput::text() const { return rl_line_buffer ? std::string(rl_line_buffer) : std::string(); }
+std::string ReadlineInput::text() const {
+    return rl_line_buffer ? std::string(rl_line_buffer) : std::string();
+}
 
 int ReadlineInput::cursor() const {
     if (!rl_line_buffer) return 0;
     int n = 0;
-    for (int i = 0; i < rl_point && rl_line_buffer[i]; ++i) n += (static_cast<unsigned char>(rl_line_buffer[i]) & 0xc0) != 0x80;
+    for (int i = 0; i < rl_point && rl_line_buffer[i]; ++i)
+        n += (static_cast<unsigned char>(rl_line_buffer[i]) & 0xc0) != 0x80;
     return n;
 }
 

@@ -8,7 +8,7 @@
 namespace pupitre::console {
 
 class ReadlineInput final : public LineInput {
-public:
+  public:
     ReadlineInput();
     ~ReadlineInput() override;
     void feed(std::string_view bytes) override;

@@ -44,17 +44,20 @@ bool setup_language(int argc, char** argv) {
     for (int i = 1; i < argc; ++i) {
         std::string_view a = argv[i];
         if (a == "--") break;
-        if (a == "--lang" && i + 1 < argc) want = argv[i + 1];
-        else if (a.starts_with("--lang=")) want = std::string(a.substr(7));
+        if (a == "--lang" && i + 1 < argc)
+            want = argv[i + 1];
+        else if (a.starts_with("--lang="))
+            want = std::string(a.substr(7));
     }
     std::string dir = locale_dir();
-    const std::string env = i18n::wanted([](const char* n) -> const char* { return std::getenv(n); });
+    const std::string env =
+        i18n::wanted([](const char* n) -> const char* { return std::getenv(n); });
     std::string lang = i18n::choose(want, env, dir);
     if (lang.empty()) {
         // Said in the environment's language, the one the user reads.
         i18n::init(i18n::choose("", env, dir), dir);
-        std::fprintf(stderr, tr("pupitre: no catalogue for the language '%s' (available: %s)\n"), want.c_str(),
-                     i18n::available(dir).c_str());
+        std::fprintf(stderr, tr("pupitre: no catalogue for the language '%s' (available: %s)\n"),
+                     want.c_str(), i18n::available(dir).c_str());
         return false;
     }
     i18n::init(lang, dir);
@@ -74,7 +77,8 @@ CLI::Validator existing_file() {
                 g_missing_file = true;
                 return strf(tr("File does not exist: %s"), f.c_str());
             }
-            if (std::filesystem::is_directory(st)) return strf(tr("File is actually a directory: %s"), f.c_str());
+            if (std::filesystem::is_directory(st))
+                return strf(tr("File is actually a directory: %s"), f.c_str());
             return "";
         },
         "FILE");
@@ -88,14 +92,18 @@ std::string cli_error_text(std::string_view what) {
         std::string_view prefix, suffix;
         const char* msgid;
     } kTexts[] = {
-        {"The following argument was not expected: ", "", N_("The following argument was not expected: %s")},
-        {"The following arguments were not expected: ", "", N_("The following arguments were not expected: %s")},
+        {"The following argument was not expected: ", "",
+         N_("The following argument was not expected: %s")},
+        {"The following arguments were not expected: ", "",
+         N_("The following arguments were not expected: %s")},
         {"Could not convert: ", "", N_("Could not convert: %s")},
         {"", " is required", N_("%s is required")},
     };
     for (const auto& t : kTexts)
-        if (what.size() > t.prefix.size() + t.suffix.size() && what.starts_with(t.prefix) && what.ends_with(t.suffix)) {
-            std::string arg(what.substr(t.prefix.size(), what.size() - t.prefix.size() - t.suffix.size()));
+        if (what.size() > t.prefix.size() + t.suffix.size() && what.starts_with(t.prefix) &&
+            what.ends_with(t.suffix)) {
+            std::string arg(
+                what.substr(t.prefix.size(), what.size() - t.prefix.size() - t.suffix.size()));
             return strf(tr(t.msgid), arg.c_str());
         }
     return std::string(what);
@@ -104,8 +112,8 @@ std::string cli_error_text(std::string_view what) {
 // CLI11's own words, in the chosen language.
 void translate_cli(CLI::App& app) {
     auto f = app.get_formatter();
-    for (const char* w : {N_("Usage"), N_("OPTIONS"), N_("SUBCOMMAND"), N_("SUBCOMMANDS"), N_("Positionals"),
-                          N_("REQUIRED"), N_("Needs"), N_("Excludes")})
+    for (const char* w : {N_("Usage"), N_("OPTIONS"), N_("SUBCOMMAND"), N_("SUBCOMMANDS"),
+                          N_("Positionals"), N_("REQUIRED"), N_("Needs"), N_("Excludes")})
         f->label(w, tr(w));
     app.option_defaults()->group(tr("Options"));
     app.set_help_flag("-h,--help", tr("Print this help message and exit"));
@@ -133,65 +141,94 @@ void add_program_options(CLI::App& app, CommandLine& c) {
                    tr("the language of the texts people read: en or fr (default: LANGUAGE, LC_ALL, "
                       "LC_MESSAGES, LANG; else en)"))
         ->type_name("LANG");
-    app.add_option(
-           "--db", c.db,
-           tr("the program store (default $XDG_DATA_HOME/pupitre/pupitre.db, created on first use); "
-           "run and check use a store only when given"))
+    app.add_option("--db", c.db,
+                   tr("the program store (default $XDG_DATA_HOME/pupitre/pupitre.db, created on "
+                      "first use); "
+                      "run and check use a store only when given"))
         ->type_name("FILE");
 
     cli::ConsoleArgs& ca = c.ca;
-    app.add_option("--machine", ca.machine,
-                   tr("the console's machine: lathe, mill, mill4, mill5, a stored profile or a .machine file "
-                   "(default: the last one used, else lathe)"));
-    app.add_option("--theme", ca.theme, tr("the console's colours: colour, mono or phosphor (default colour; mono when NO_COLOR is set)"));
-    app.add_flag("--ascii", ca.ascii, tr("draw the console with ASCII only, even on a UTF-8 terminal"));
+    app.add_option(
+        "--machine", ca.machine,
+        tr("the console's machine: lathe, mill, mill4, mill5, a stored profile or a .machine file "
+           "(default: the last one used, else lathe)"));
+    app.add_option("--theme", ca.theme,
+                   tr("the console's colours: colour, mono or phosphor (default colour; mono when "
+                      "NO_COLOR is set)"));
+    app.add_flag("--ascii", ca.ascii,
+                 tr("draw the console with ASCII only, even on a UTF-8 terminal"));
 }
 
 // The options run and check share.
 void add_run_options(CLI::App* sub, cli::RunArgs& ra) {
-    sub->add_option("--machine", ra.machine,
-                    tr("machine profile: lathe, mill, mill4, mill5, or a .machine file (default lathe)"));
-    sub->add_option("--set", ra.sets, tr("seed the machine before the run: PREF.X=-120.5, D1.R=4, L5=2, E80000=18000"))
+    sub->add_option(
+        "--machine", ra.machine,
+        tr("machine profile: lathe, mill, mill4, mill5, or a .machine file (default lathe)"));
+    sub->add_option(
+           "--set", ra.sets,
+           tr("seed the machine before the run: PREF.X=-120.5, D1.R=4, L5=2, E80000=18000"))
         ->type_name("NAME=VALUE")
         ->allow_extra_args(false);
     sub->add_flag("--block-skip", ra.block_skip, tr("skip the blocks that start with '/'"));
-    sub->add_option("--max-blocks", ra.max_blocks, tr("stop with error 1001 after this many blocks, or twice as many moves (default 20000000)"));
-    sub->add_option("files", ra.files, tr("program files; the first program of the first file is run"))
+    sub->add_option("--max-blocks", ra.max_blocks,
+                    tr("stop with error 1001 after this many blocks, or twice as many moves "
+                       "(default 20000000)"));
+    sub->add_option("files", ra.files,
+                    tr("program files; the first program of the first file is run"))
         ->required()
         ->check(existing_file());
 }
 
 CLI::App* add_run(CLI::App& app, cli::RunArgs& ra) {
-    CLI::App* run = app.add_subcommand("run", tr("dry-run a program and print a summary, or a trace"));
+    CLI::App* run =
+        app.add_subcommand("run", tr("dry-run a program and print a summary, or a trace"));
     add_run_options(run, ra);
     run->add_flag("--trace", ra.trace, tr("one JSON line per machine event"));
     run->add_flag("--json", ra.json, tr("the summary as JSON"));
-    run->add_flag("--optional-stop", ra.optional_stop, tr("M01 stops (the optional-stop switch is on)"));
-    run->add_option("--setup", ra.setup, tr("run in the workshop: the true chuck, stock and tools (lathe, or a .setup file)"))
+    run->add_flag("--optional-stop", ra.optional_stop,
+                  tr("M01 stops (the optional-stop switch is on)"));
+    run->add_option(
+           "--setup", ra.setup,
+           tr("run in the workshop: the true chuck, stock and tools (lathe, or a .setup file)"))
         ->type_name("SETUP");
-    run->add_option("--measure", ra.measures, tr("after the run, read an instrument: 'dia Z-20', 'bore Z-5', 'groove Z-30', 'length', 'tool T1 X'"))
+    run->add_option("--measure", ra.measures,
+                    tr("after the run, read an instrument: 'dia Z-20', 'bore Z-5', 'groove Z-30', "
+                       "'length', 'tool T1 X'"))
         ->type_name("WHAT");
-    run->add_option("--part-out", ra.part_out, tr("write the cut part: its half-section as (Z, R) points, or SVG if FILE ends in .svg"))
+    run->add_option(
+           "--part-out", ra.part_out,
+           tr("write the cut part: its half-section as (Z, R) points, or SVG if FILE ends in .svg"))
         ->type_name("FILE");
     return run;
 }
 
 CLI::App* add_plot(CLI::App& app, cli::PlotArgs& pa) {
-    CLI::App* plot = app.add_subcommand("plot", tr("draw the toolpath of a dry run as SVG, PNG or PDF"));
-    plot->add_option("--machine", pa.machine,
-                     tr("machine profile: lathe, mill, mill4, mill5, or a .machine file (default lathe)"));
-    plot->add_option("--plane", pa.plane, tr("xy, xz, yz or zx (default: the program's; zx on the lathe)"));
-    plot->add_option("--set", pa.sets, tr("seed the machine before the run: PREF.X=-120.5, D1.R=4, L5=2"))
+    CLI::App* plot =
+        app.add_subcommand("plot", tr("draw the toolpath of a dry run as SVG, PNG or PDF"));
+    plot->add_option(
+        "--machine", pa.machine,
+        tr("machine profile: lathe, mill, mill4, mill5, or a .machine file (default lathe)"));
+    plot->add_option("--plane", pa.plane,
+                     tr("xy, xz, yz or zx (default: the program's; zx on the lathe)"));
+    plot->add_option("--set", pa.sets,
+                     tr("seed the machine before the run: PREF.X=-120.5, D1.R=4, L5=2"))
         ->type_name("NAME=VALUE")
         ->allow_extra_args(false);
     plot->add_flag("--block-skip", pa.block_skip, tr("skip the blocks that start with '/'"));
-    plot->add_option("--max-blocks", pa.max_blocks, tr("stop with error 1001 after this many blocks, or twice as many moves (default 20000000)"));
-    plot->add_option("--svg", pa.svg, tr("the SVG file to write ('-': the standard output)"))->type_name("OUT");
-    plot->add_option("--png", pa.png, tr("the picture as a PNG, 1600 pixels wide"))->type_name("OUT");
-    plot->add_option("--pdf", pa.pdf, tr("the picture as a one-page PDF, for printing"))->type_name("OUT");
-    plot->add_option("--setup", pa.setup, tr("draw the part the workshop cut under the path (lathe, or a .setup file)"))
+    plot->add_option("--max-blocks", pa.max_blocks,
+                     tr("stop with error 1001 after this many blocks, or twice as many moves "
+                        "(default 20000000)"));
+    plot->add_option("--svg", pa.svg, tr("the SVG file to write ('-': the standard output)"))
+        ->type_name("OUT");
+    plot->add_option("--png", pa.png, tr("the picture as a PNG, 1600 pixels wide"))
+        ->type_name("OUT");
+    plot->add_option("--pdf", pa.pdf, tr("the picture as a one-page PDF, for printing"))
+        ->type_name("OUT");
+    plot->add_option("--setup", pa.setup,
+                     tr("draw the part the workshop cut under the path (lathe, or a .setup file)"))
         ->type_name("SETUP");
-    plot->add_option("files", pa.files, tr("program files; the first program of the first file is run"))
+    plot->add_option("files", pa.files,
+                     tr("program files; the first program of the first file is run"))
         ->required()
         ->check(existing_file());
     return plot;
@@ -210,13 +247,16 @@ void add_store(CLI::App& app, CommandLine& c, std::vector<Command>& commands) {
         // xgettext:no-c-format
         app.add_subcommand("import", tr("store the % programs of files (one transaction for all)"));
     // xgettext:no-c-format
-    imp->add_option("files", sa.files, tr("program files; each % program is stored under its number"))
+    imp->add_option("files", sa.files,
+                    tr("program files; each % program is stored under its number"))
         ->required();
     // xgettext:no-c-format
-    imp->add_option("--number", sa.number, tr("the number for a file with no % line"))->type_name("N");
+    imp->add_option("--number", sa.number, tr("the number for a file with no % line"))
+        ->type_name("N");
     CLI::App* exp =
         app.add_subcommand("export", tr("write stored programs exactly as imported or saved"));
-    exp->add_option("numbers", c.numbers, tr("program numbers, written one after the other"))->required();
+    exp->add_option("numbers", c.numbers, tr("program numbers, written one after the other"))
+        ->required();
     exp->add_option("-o,--output", sa.output, tr("write to FILE instead of the standard output"))
         ->type_name("FILE");
     CLI::App* list = app.add_subcommand("list", tr("list the stored programs"));
@@ -271,7 +311,8 @@ int dispatch(CommandLine& c, const std::vector<Command>& commands) {
 
 int main(int argc, char** argv) {
     if (!setup_language(argc, argv)) return cli::kUsage;
-    CLI::App app{tr("pupitre - the operator panel of a NUM 1020/1040/1060 CNC, with the machine simulated")};
+    CLI::App app{
+        tr("pupitre - the operator panel of a NUM 1020/1040/1060 CNC, with the machine simulated")};
     app.set_version_flag("--version", std::string("pupitre ") + PUPITRE_VERSION,
                          tr("Display program version information and exit"));
     app.require_subcommand(0, 1);
@@ -282,7 +323,8 @@ int main(int argc, char** argv) {
     add_program_options(app, c);
     std::vector<Command> commands;
     commands.push_back({add_run(app, c.ra), [](const CommandLine& k) { return cli::run(k.ra); }});
-    CLI::App* check = app.add_subcommand("check", tr("report every problem a dry run would meet, without a trace"));
+    CLI::App* check = app.add_subcommand(
+        "check", tr("report every problem a dry run would meet, without a trace"));
     add_run_options(check, c.ra);
     commands.push_back({check, [](const CommandLine& k) { return cli::check(k.ra); }});
     commands.push_back({add_plot(app, c.pa), [](const CommandLine& k) { return cli::plot(k.pa); }});

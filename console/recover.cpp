@@ -8,12 +8,12 @@
 // confirmed, remove it. The next :edit N (and the start message) offers the
 // text: :recover loads it, :discard drops it.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include <cstdio>
 #include <dirent.h>
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 
@@ -65,7 +65,9 @@ void Session::sync_journal() {
     if (fd >= 0) ::close(fd);
     if (!ok || ::rename(tmp.c_str(), path.c_str()) != 0) {
         ::unlink(tmp.c_str());
-        say(strf(tr("the recovery journal cannot be written (%s): :save often"), journal_dir().c_str()), true);
+        say(strf(tr("the recovery journal cannot be written (%s): :save often"),
+                 journal_dir().c_str()),
+            true);
     }
 }
 
@@ -84,7 +86,9 @@ bool Session::read_journal(int number, std::string& text, int& base) const {
     if (!std::getline(f, head)) return false;
     int n = -1;
     base = 0;
-    if (std::sscanf(head.c_str(), "(PUPITRE RECOVERY OF %%%d BASED ON REVISION %d)", &n, &base) != 2 || n != number)
+    if (std::sscanf(head.c_str(), "(PUPITRE RECOVERY OF %%%d BASED ON REVISION %d)", &n, &base) !=
+            2 ||
+        n != number)
         return false;
     std::stringstream ss;
     ss << f.rdbuf();
@@ -120,7 +124,9 @@ void Session::offer_journal(int number, const std::string& loaded) {
         drop_journal(number);
         return;
     }
-    say(strf(tr("%%%d has unsaved changes from an earlier session: :recover loads them, :discard drops them"), number),
+    say(strf(tr("%%%d has unsaved changes from an earlier session: :recover loads them, :discard "
+                "drops them"),
+             number),
         true);
 }
 
@@ -155,12 +161,13 @@ Effect Session::recover_command(bool discard) {
 Effect Session::quit_command(bool force) {
     if (!force && editor.is_open() && editor.dirty && !modif) {
         int n = editor.number;
-        confirm(strf(tr("%%%d has unsaved changes: quit and drop them? (:save first, or :quit!)"), n),
-                [this, n] {
-                    drop_journal(n);
-                    release_lease();
-                    quit = true;
-                });
+        confirm(
+            strf(tr("%%%d has unsaved changes: quit and drop them? (:save first, or :quit!)"), n),
+            [this, n] {
+                drop_journal(n);
+                release_lease();
+                quit = true;
+            });
         return Effect::redraw;
     }
     if (force && editor.is_open() && !modif) drop_journal(editor.number);

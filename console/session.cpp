@@ -69,12 +69,15 @@ std::string Session::load_workshop() {
     if (!r.value || !m_.lathe) return {};
     workshop::Setup st;
     if (std::string why = workshop::parse_setup(r.value->setup, st); !why.empty())
-        return strf(tr("the stored workshop is not a setup (%s): :setup lathe loads one"), why.c_str());
+        return strf(tr("the stored workshop is not a setup (%s): :setup lathe loads one"),
+                    why.c_str());
     auto w = std::make_unique<workshop::Workshop>(m_, st, nullptr);
     const bool read = w->world().from_text(r.value->part);  // else fresh stock, as built
     workshop_saved_ = read ? w->world().generation() : 0;
     sim_->set_workshop(std::move(w));
-    return read ? std::string() : std::string(tr("the stored part could not be read: the workshop starts with fresh stock"));
+    return read ? std::string()
+                : std::string(tr(
+                      "the stored part could not be read: the workshop starts with fresh stock"));
 }
 
 void Session::save_workshop() {
@@ -92,7 +95,8 @@ void Session::refresh_dir() {
         if (auto r = store_->list(); !r.error) {
             for (const auto& p : r.value) {
                 if (p.deleted) continue;
-                dir_.push_back(pages::DirEntry{p.number, p.title, int(p.lines), p.revision, p.conflict});
+                dir_.push_back(
+                    pages::DirEntry{p.number, p.title, int(p.lines), p.revision, p.conflict});
             }
             return;
         }
@@ -125,9 +129,12 @@ bool Session::select_program(int number) {
     for (size_t i = 0; i < dir_.size(); ++i)
         if (dir_[i].number == number) dir_cursor = int(i);
     Mode m = sim_->mode();
-    bool runs = m == Mode::automatic || m == Mode::single || m == Mode::dry || m == Mode::test || m == Mode::rns;
-    say(runs ? strf(tr("%%%d selected: Cycle Start (F9) runs it in %s"), number, std::string(mode_name(m)).c_str())
-             : strf(tr("%%%d selected: F8 to AUTO (or SEQ, DRY RUN, TEST), then Cycle Start (F9)"), number));
+    bool runs = m == Mode::automatic || m == Mode::single || m == Mode::dry || m == Mode::test ||
+                m == Mode::rns;
+    say(runs ? strf(tr("%%%d selected: Cycle Start (F9) runs it in %s"), number,
+                    std::string(mode_name(m)).c_str())
+             : strf(tr("%%%d selected: F8 to AUTO (or SEQ, DRY RUN, TEST), then Cycle Start (F9)"),
+                    number));
     return true;
 }
 
@@ -149,7 +156,8 @@ bool Session::delete_program(int number) {
     refresh_dir();
     dir_cursor = std::min(dir_cursor, std::max(0, int(dir_.size()) - 1));
     // TRANSLATORS: the program's number, three times.
-    say(strf(tr("%%%d deleted; its history stays (:history %d, then :restore %d REV)"), number, number, number));
+    say(strf(tr("%%%d deleted; its history stays (:history %d, then :restore %d REV)"), number,
+             number, number));
     return true;
 }
 
@@ -185,15 +193,19 @@ bool Session::for_line_editor(const Key& k) {
         case KeyCode::character:
         case KeyCode::enter:
         case KeyCode::tab:
-        case KeyCode::backspace: return true;
+        case KeyCode::backspace:
+            return true;
         case KeyCode::left:
-        case KeyCode::right: return !k.shift && !k.alt;  // C-Left, C-Right: a word
+        case KeyCode::right:
+            return !k.shift && !k.alt;  // C-Left, C-Right: a word
         case KeyCode::up:
         case KeyCode::down:
         case KeyCode::home:
         case KeyCode::end:
-        case KeyCode::del: return !k.shift && !k.alt && !k.ctrl;
-        default: return false;
+        case KeyCode::del:
+            return !k.shift && !k.alt && !k.ctrl;
+        default:
+            return false;
     }
 }
 
@@ -229,17 +241,26 @@ Effect Session::submit(const std::string& raw) {
 
 Session::Target Session::target() const {
     switch (page) {
-        case pages::PageId::edit: return Target::edit;
-        case pages::PageId::pref: return Target::pref;
-        case pages::PageId::corr: return Target::corr;
-        case pages::PageId::param: return Target::param;
-        default: break;
+        case pages::PageId::edit:
+            return Target::edit;
+        case pages::PageId::pref:
+            return Target::pref;
+        case pages::PageId::corr:
+            return Target::corr;
+        case pages::PageId::param:
+            return Target::param;
+        default:
+            break;
     }
     switch (sim_->mode()) {
-        case Mode::imd: return Target::imd;
-        case Mode::rns: return Target::rns;
-        case Mode::inc: return Target::inc;
-        default: return Target::other;
+        case Mode::imd:
+            return Target::imd;
+        case Mode::rns:
+            return Target::rns;
+        case Mode::inc:
+            return Target::inc;
+        default:
+            return Target::other;
     }
 }
 
@@ -249,14 +270,22 @@ std::string Session::prompt() const {
     switch (target()) {
         // TRANSLATORS: the prompt while a block is modified in EDIT (EDIT and
         // MODIF are NUM names and stay).
-        case Target::edit: return modify_pending ? tr("MODIFY> ") : modif ? "MODIF> " : "EDIT> ";
-        case Target::pref: return "PREF> ";
-        case Target::corr: return "D" + std::to_string(corr_cursor) + "> ";
-        case Target::param: return "L/E= ";
-        case Target::imd: return "IMD> ";
-        case Target::rns: return "RNS N> ";
-        case Target::inc: return "INC> ";
-        case Target::other: break;
+        case Target::edit:
+            return modify_pending ? tr("MODIFY> ") : modif ? "MODIF> " : "EDIT> ";
+        case Target::pref:
+            return "PREF> ";
+        case Target::corr:
+            return "D" + std::to_string(corr_cursor) + "> ";
+        case Target::param:
+            return "L/E= ";
+        case Target::imd:
+            return "IMD> ";
+        case Target::rns:
+            return "RNS N> ";
+        case Target::inc:
+            return "INC> ";
+        case Target::other:
+            break;
     }
     return "> ";
 }
@@ -268,13 +297,19 @@ std::string Session::mode_hint(Mode m) const {
     if (!homed && runs) return tr("home first: F8 to POM, then Cycle Start (F9)");
     switch (sim_->state()) {  // a program in cycle: what the panel's buttons do now
         case RunState::running:
-            if (m != Mode::jog && m != Mode::inc && m != Mode::pom) return tr("F10 feed hold, F12 (RAZ) abandons the run");
+            if (m != Mode::jog && m != Mode::inc && m != Mode::pom)
+                return tr("F10 feed hold, F12 (RAZ) abandons the run");
             break;
-        case RunState::hold: return tr("Cycle Start (F9) resumes, F12 (RAZ) abandons the run");
-        case RunState::block: return tr("Cycle Start (F9) runs the next block, F12 (RAZ) abandons");
-        case RunState::stopped: return tr("Cycle Start (F9) goes on, F12 (RAZ) abandons the run");
-        case RunState::alarm: return tr("F12 (RAZ) acknowledges the alarm (F7: the ALARM page)");
-        default: break;
+        case RunState::hold:
+            return tr("Cycle Start (F9) resumes, F12 (RAZ) abandons the run");
+        case RunState::block:
+            return tr("Cycle Start (F9) runs the next block, F12 (RAZ) abandons");
+        case RunState::stopped:
+            return tr("Cycle Start (F9) goes on, F12 (RAZ) abandons the run");
+        case RunState::alarm:
+            return tr("F12 (RAZ) acknowledges the alarm (F7: the ALARM page)");
+        default:
+            break;
     }
     if (m != Mode::jog && m != Mode::inc) return pages::tr_text(mode_how(m));
     // The jog keys as bound for this machine (data/bindings.txt or the user's).
@@ -283,13 +318,15 @@ std::string Session::mode_hint(Mode m) const {
     for (const Binding& b : bindings.list()) {
         if (b.action != "jog") continue;
         auto f = bindings.find(b.key, "op", word, m_.lathe ? "lathe" : "mill");
-        if (!f.empty() && f.front() == &b) keys += (keys.empty() ? "" : ", ") + b.key_text + " " + b.arg;
+        if (!f.empty() && f.front() == &b)
+            keys += (keys.empty() ? "" : ", ") + b.key_text + " " + b.arg;
     }
     return keys.empty() ? ":jog AXIS DIST" : keys;
 }
 
 std::string Session::mode_setting(Mode m) const {
-    if (m == Mode::inc) return strf(tr("step %s mm (Alt-i: next step)"), pages::fmt_len(sim_->increment).c_str());
+    if (m == Mode::inc)
+        return strf(tr("step %s mm (Alt-i: next step)"), pages::fmt_len(sim_->increment).c_str());
     if (m != Mode::jog) return {};
     return strf(tr("feed %.0f mm/min"), sim_->jog_feed > 0 ? sim_->jog_feed : m_.jog_feed);
 }
@@ -297,7 +334,8 @@ std::string Session::mode_setting(Mode m) const {
 std::string Session::mode_news(Mode m) const {
     // Short enough for 80 columns; the OP page keeps the keys, the status line
     // the next mode.
-    return std::string(mode_name(m)) + ": " + pages::tr_text(mode_english(m)) + "; " + pages::tr_text(mode_how(m));
+    return std::string(mode_name(m)) + ": " + pages::tr_text(mode_english(m)) + "; " +
+           pages::tr_text(mode_how(m));
 }
 
 // Text that is not a command goes where the prompt says (target()): the page
@@ -311,8 +349,10 @@ Effect Session::plain_text(const std::string& text) {
         auto run = std::move(on_confirm);
         pending_confirm.clear();
         on_confirm = nullptr;
-        if (answer == "y" || answer == "yes" || answer == "o" || answer == "oui") run();
-        else say(tr("cancelled: nothing changed"));
+        if (answer == "y" || answer == "yes" || answer == "o" || answer == "oui")
+            run();
+        else
+            say(tr("cancelled: nothing changed"));
         return Effect::redraw;
     }
     long before = refusals_;
@@ -326,10 +366,14 @@ Effect Session::route_text(const std::string& text) {
     std::string_view t = text;
     switch (target()) {
         case Target::pref:
-        case Target::corr: return setting_text(t);
-        case Target::edit: return edit_text(text);
-        case Target::param: return set_value(t);
-        default: break;
+        case Target::corr:
+            return setting_text(t);
+        case Target::edit:
+            return edit_text(text);
+        case Target::param:
+            return set_value(t);
+        default:
+            break;
     }
     if (sim_->mode() == Mode::imd) {
         if (sim_->interp().modal().modif_inhibited) {
@@ -351,8 +395,10 @@ Effect Session::route_text(const std::string& text) {
         std::string_view w = t;
         if (!w.empty() && (w.front() == 'N' || w.front() == 'n')) w.remove_prefix(1);
         std::string why;
-        if (!to_long(w, n) || !sim_->search(n, why)) say(why.empty() ? std::string(tr("RNS: type a block number, e.g. N120")) : why, true);
-        else say(sim_->message());
+        if (!to_long(w, n) || !sim_->search(n, why))
+            say(why.empty() ? std::string(tr("RNS: type a block number, e.g. N120")) : why, true);
+        else
+            say(sim_->message());
         return Effect::redraw;
     }
     if (sim_->mode() == Mode::inc) return command("inc " + text);  // one rule for the step
@@ -362,7 +408,9 @@ Effect Session::route_text(const std::string& text) {
         select_program(int(n));
         return Effect::redraw;
     }
-    say(tr("blocks are typed in IMD mode (F8, or :mode imd); commands start with ':' (F1 for help)"), true);
+    say(tr("blocks are typed in IMD mode (F8, or :mode imd); commands start with ':' (F1 for "
+           "help)"),
+        true);
     return Effect::redraw;
 }
 
@@ -371,7 +419,8 @@ Effect Session::set_value(std::string_view a) {
     size_t eq = a.find('=');
     std::string name(trim(a.substr(0, eq)));
     double v = 0;
-    std::string_view val = eq == std::string_view::npos ? std::string_view{} : trim(a.substr(eq + 1));
+    std::string_view val =
+        eq == std::string_view::npos ? std::string_view{} : trim(a.substr(eq + 1));
     auto [p, ec] = std::from_chars(val.data(), val.data() + val.size(), v);
     if (eq == std::string_view::npos || ec != std::errc() || p != val.data() + val.size()) {
         say(tr("set: NAME=VALUE, e.g. L5=2, E80000=18000, PREF.X=-120.5, D1.R=0.8"), true);
@@ -405,15 +454,23 @@ void Session::tick(double dt) {
         return;
     }
     switch (speed) {
-        case Speed::real: sim_->advance(dt, 2000); break;
-        case Speed::x10: sim_->advance(dt * 10, 5000); break;
-        case Speed::max: sim_->advance(1e9, 20000); break;
+        case Speed::real:
+            sim_->advance(dt, 2000);
+            break;
+        case Speed::x10:
+            sim_->advance(dt * 10, 5000);
+            break;
+        case Speed::max:
+            sim_->advance(1e9, 20000);
+            break;
     }
     check_run_end();
     follow_store(dt);
 }
 
-bool Session::busy() const { return sim_->state() == RunState::running; }
+bool Session::busy() const {
+    return sim_->state() == RunState::running;
+}
 
 // News of the run for the message line, and the program's writes to the store.
 void Session::check_run_end() {
@@ -424,12 +481,16 @@ void Session::check_run_end() {
         std::string where = d.program > 0 ? "%" + std::to_string(d.program) : std::string("IMD");
         if (d.n >= 0) where += " N" + std::to_string(d.n);
         // TRANSLATORS: the message line: ALARM 107 (%300 N20 line 12): the detail.
-        say(strf(tr("ALARM %d (%s line %d): %s"), d.code, where.c_str(), d.line, d.detail.c_str()), true);
-    } else if ((st != last_state_ || sim_->workshop_news() != news_seen_) && !sim_->message().empty()) {
+        say(strf(tr("ALARM %d (%s line %d): %s"), d.code, where.c_str(), d.line, d.detail.c_str()),
+            true);
+    } else if ((st != last_state_ || sim_->workshop_news() != news_seen_) &&
+               !sim_->message().empty()) {
         say(sim_->message());
     }
     news_seen_ = sim_->workshop_news();
-    if (st != last_state_ && (st == RunState::ended || st == RunState::alarm || st == RunState::idle)) persist_run();
+    if (st != last_state_ &&
+        (st == RunState::ended || st == RunState::alarm || st == RunState::idle))
+        persist_run();
     last_state_ = st;
 }
 
@@ -439,14 +500,18 @@ void Session::persist_run() {
     // The programs G76, G76+ and G76- changed: a revision each, or a deletion.
     std::vector<int> edited = mem_.take_changed();
     if (store_ && !edited.empty() && protect) {
-        say(tr("memory protection is on: the programs G76 changed stay in memory, not in the store"), true);
+        say(tr("memory protection is on: the programs G76 changed stay in memory, not in the "
+               "store"),
+            true);
     } else if (store_ && !edited.empty()) {
         std::string source = "G76 in %" + std::to_string(sim_->selected()) + " (console)";
         for (int n : edited) {
             const ProgramText* p = mem_.find(n);
             auto r = p ? store_->save(n, program_text(*p), store::kHead, source)
                        : store_->remove(n, store::kHead, source);
-            if (r.error) say(strf(tr("%%%d changed by G76 was not stored: %s"), n, r.error.message.c_str()), true);
+            if (r.error)
+                say(strf(tr("%%%d changed by G76 was not stored: %s"), n, r.error.message.c_str()),
+                    true);
         }
         refresh_dir();
     }
@@ -461,7 +526,9 @@ void Session::persist_run() {
     if (fresh.empty()) return;
     std::string source = "program %" + std::to_string(sim_->selected()) + " (console)";
     if (auto r = store_->set_values(m_.name, fresh, source); r.error)
-        say(strf(tr("the program's corrector and origin writes were not stored: %s"), r.error.message.c_str()), true);
+        say(strf(tr("the program's corrector and origin writes were not stored: %s"),
+                 r.error.message.c_str()),
+            true);
 }
 
 // ---- view ----
@@ -493,12 +560,13 @@ void Session::view_keys(pages::View& v) const {
     }
     for (const Binding& b : bindings.list()) {
         const Action* a = find_action(b.action);
-        if (a) v.help.push_back(pages::HelpLine{b.key_text, help_text(*a, b.arg), context_text(b.when)});
+        if (a)
+            v.help.push_back(
+                pages::HelpLine{b.key_text, help_text(*a, b.arg), context_text(b.when)});
     }
     for (const Command& c : commands())
         if (!c.usage.empty())
-            v.help.push_back(pages::HelpLine{std::string(c.usage),
-                                             pages::tr_text(c.help), ""});
+            v.help.push_back(pages::HelpLine{std::string(c.usage), pages::tr_text(c.help), ""});
 }
 
 void Session::view_editor(pages::View& v) const {
@@ -577,7 +645,8 @@ void Session::view_part() const {
     const Axes om = sim_->om();
     const workshop::Pt tip = w->tip(om);
     const double dz = tool_now_[Z] - tip[0], dx = tool_now_[X] - tip[1];
-    auto place = [&](const workshop::CPaths& from, std::vector<std::vector<std::array<double, 2>>>& to) {
+    auto place = [&](const workshop::CPaths& from,
+                     std::vector<std::vector<std::array<double, 2>>>& to) {
         for (const workshop::CPath& q : from) {
             to.emplace_back();
             for (const auto& v : q) {

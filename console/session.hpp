@@ -27,7 +27,7 @@ namespace pupitre::console {
 enum class Speed { real, x10, max };
 
 class Session {
-public:
+  public:
     // `store` may be null (tests, or a store that cannot be opened): programs
     // then come from `memory` only and nothing is persisted.
     Session(const MachineProfile& m, std::unique_ptr<store::Store> store, LineInput& input);
@@ -39,8 +39,8 @@ public:
     ProgramMemory& memory() { return mem_; }
 
     Effect on_key(const Key& k);
-    Effect submit(const std::string& line);     // Enter on the input line
-    Effect command(std::string_view text);      // a ':' command, without the ':'
+    Effect submit(const std::string& line);         // Enter on the input line
+    Effect command(std::string_view text);          // a ':' command, without the ':'
     Effect set_value(std::string_view assignment);  // NAME=VALUE, as :set and --set
     // Lets `wall_seconds` of real time pass: the animation advances.
     void tick(double wall_seconds);
@@ -137,7 +137,7 @@ public:
     std::string pending_confirm;  // what is asked; empty: nothing
     std::function<void()> on_confirm;
 
-private:
+  private:
     Effect plain_text(const std::string& line);
     Effect route_text(const std::string& line);
     static bool for_line_editor(const Key& k);
@@ -161,11 +161,13 @@ private:
     Toolpath path_{m_};
     mutable pages::GraphCache graph_cache_;
     mutable Axes tool_now_{};
-    uint64_t news_seen_ = 0;  // the Sim's workshop news already said
+    uint64_t news_seen_ = 0;       // the Sim's workshop news already said
     uint64_t workshop_saved_ = 0;  // the part's generation the store holds
     std::string load_workshop();
-    mutable std::vector<std::vector<std::array<double, 2>>> part_now_;  // GRAPH: the workshop's part
-    mutable std::vector<std::vector<std::array<double, 2>>> chuck_now_;  // and its chuck and tailstock
+    mutable std::vector<std::vector<std::array<double, 2>>>
+        part_now_;  // GRAPH: the workshop's part
+    mutable std::vector<std::vector<std::array<double, 2>>>
+        chuck_now_;  // and its chuck and tailstock
     void view_part() const;
     std::unique_ptr<store::Store> store_;
     LineInput& input_;
@@ -177,11 +179,12 @@ private:
     long refusals_ = 0;
     std::string last_setting_;  // the PREF and CORR pages show its arithmetic
     uint64_t journaled_changes_ = 0;
-    int64_t data_version_ = -1;                   // PRAGMA data_version last seen
+    int64_t data_version_ = -1;  // PRAGMA data_version last seen
     double poll_wait_ = 0, lease_wait_ = 0;
-    bool store_pending_ = false;  // another console's change waits for the end of a run
-    int leased_ = -1;             // the program this console's lease names
-    std::vector<pages::DirEntry> dir_seen_;  // the store's programs at the last look  // the editor's changes already in the journal
+    bool store_pending_ = false;              // another console's change waits for the end of a run
+    int leased_ = -1;                         // the program this console's lease names
+    std::vector<pages::DirEntry> dir_seen_;   // the store's programs at the last look  // the
+                                              // editor's changes already in the journal
     std::vector<pages::HistoryRow> history_;  // the HISTORY page (:history)
     int history_number_ = -1, history_current_ = 0;  // error messages said, to tell a refused entry
     RunState last_state_ = RunState::idle;
@@ -193,7 +196,7 @@ private:
     };
     std::vector<Undo> undo_;
     std::map<std::string, long> pending_origin_;  // name -> interpreter moves when set
-    Effect setting_text(std::string_view text);  // typed on the PREF or CORR page
+    Effect setting_text(std::string_view text);   // typed on the PREF or CORR page
 };
 
 }  // namespace pupitre::console

@@ -2,6 +2,8 @@
 // measurement, changes made during a run, undo, and the memory-protect key.
 // Every change is stored with an audit row (the store's set_values).
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/sim/setting.hpp"
+
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -11,16 +13,19 @@
 #include "console/session.hpp"
 #include "console/sha256.hpp"
 #include "core/i18n.hpp"
-#include "core/sim/setting.hpp"
 #include "store/store.hpp"
 
 namespace pupitre::console {
 
 namespace {
 
-std::string mm(double v) { return pages::fmt_len(v); }
+std::string mm(double v) {
+    return pages::fmt_len(v);
+}
 
-bool is_origin(std::string_view n) { return n.rfind("PREF.", 0) == 0 || n.rfind("DEC1.", 0) == 0 || n.rfind("DEC3.", 0) == 0; }
+bool is_origin(std::string_view n) {
+    return n.rfind("PREF.", 0) == 0 || n.rfind("DEC1.", 0) == 0 || n.rfind("DEC3.", 0) == 0;
+}
 
 // The store keeps µm (lathe X radii, DX a diameter), 0.0001° for rotary
 // origins, the code for C (store/link.hpp).
@@ -40,7 +45,8 @@ bool parse_num(std::string_view s, double& v, bool* comma = nullptr) {
     if (!s.empty() && s.front() == '+') s.remove_prefix(1);
     std::string text(s);
     size_t c = text.find(',');
-    if (c != std::string::npos && text.find(',', c + 1) == std::string::npos && text.find('.') == std::string::npos) {
+    if (c != std::string::npos && text.find(',', c + 1) == std::string::npos &&
+        text.find('.') == std::string::npos) {
         text[c] = '.';
         if (comma) *comma = true;
     }
@@ -50,7 +56,8 @@ bool parse_num(std::string_view s, double& v, bool* comma = nullptr) {
 
 // The field of a corrector a setting names ("D3.X" -> "X"), or "".
 std::string corrector_field(const std::string& name) {
-    if (name.size() < 3 || name[0] != 'D' || !std::isdigit(static_cast<unsigned char>(name[1]))) return {};
+    if (name.size() < 3 || name[0] != 'D' || !std::isdigit(static_cast<unsigned char>(name[1])))
+        return {};
     size_t dot = name.find('.');
     return dot == std::string::npos ? std::string() : name.substr(dot + 1);
 }
@@ -59,11 +66,14 @@ std::string corrector_field(const std::string& name) {
 
 bool Session::unprotected(std::string_view what) {
     if (!protect) return true;
-    say(what == "programs"                 ? tr("memory protection is on: programs cannot be changed (:protect off)")
-        : what == "origins and correctors" ? tr("memory protection is on: origins and correctors cannot be changed (:protect off)")
-        : what == "the PIN"                ? tr("memory protection is on: the PIN cannot be changed (:protect off)")
-                                           : strf(tr("memory protection is on: %s cannot be changed (:protect off)"),
-                                                  std::string(what).c_str()),
+    say(what == "programs"
+            ? tr("memory protection is on: programs cannot be changed (:protect off)")
+        : what == "origins and correctors"
+            ? tr("memory protection is on: origins and correctors cannot be changed (:protect off)")
+        : what == "the PIN"
+            ? tr("memory protection is on: the PIN cannot be changed (:protect off)")
+            : strf(tr("memory protection is on: %s cannot be changed (:protect off)"),
+                   std::string(what).c_str()),
         true);
     return false;
 }
@@ -80,8 +90,8 @@ bool Session::apply_setting(const std::string& name, double value, const std::st
         return false;
     }
     if (corrector_field(name) == "R" && value < 0) {
-        say(strf(tr("%s: a tool or nose radius is never negative (its wear goes in %s)"), name.c_str(),
-                 m_.lathe ? "DX/DZ" : "DR"),
+        say(strf(tr("%s: a tool or nose radius is never negative (its wear goes in %s)"),
+                 name.c_str(), m_.lathe ? "DX/DZ" : "DR"),
             true);
         return false;
     }
@@ -102,9 +112,10 @@ bool Session::apply_setting(const std::string& name, double value, const std::st
     std::string news = name + " " + (code ? std::to_string(int(old)) : mm(old)) + " -> " +
                        (code ? std::to_string(int(value)) : mm(value));
     if (running)
-        news += std::string(" ") +
-                (is_origin(name) ? tr("(applies at the next move)")
-                                 : tr("(applies as the manual says: gauge at the next move of its axis, radius at the next G41/G42)"));
+        news += std::string(" ") + (is_origin(name)
+                                        ? tr("(applies at the next move)")
+                                        : tr("(applies as the manual says: gauge at the next move "
+                                             "of its axis, radius at the next G41/G42)"));
     if (store_) {
         auto r = store_->set_values(m_.name, {{name, internal(name, value)}}, source);
         if (r.error) {
@@ -136,14 +147,16 @@ static std::string at_rest(const Sim& s) {
 // A gauge longer than the axis travel cannot be a tool's: it asks first.
 bool Session::implausible_gauge(const std::string& name, double value, std::string& why) const {
     std::string field = corrector_field(name);
-    int axis = field == "X" || field == "DX" ? X : field == "Z" || field == "DZ" ? Z
-             : field == "L" || field == "DL" ? sim_->interp().modal().tool_axis : -1;
+    int axis = field == "X" || field == "DX"   ? X
+               : field == "Z" || field == "DZ" ? Z
+               : field == "L" || field == "DL" ? sim_->interp().modal().tool_axis
+                                               : -1;
     if (axis < 0 || !m_.has(axis)) return false;
     const AxisConfig& ax = m_.axes[size_t(axis)];
     double travel = ax.max - ax.min;
     if (!(travel > 0 && travel < 1e8) || std::abs(value) <= travel) return false;
-    why = strf(tr("%s = %s is longer than the %c travel (%s). Keep it?"), name.c_str(), mm(value).c_str(),
-               kAxisNames[size_t(axis)], mm(travel).c_str());
+    why = strf(tr("%s = %s is longer than the %c travel (%s). Keep it?"), name.c_str(),
+               mm(value).c_str(), kAxisNames[size_t(axis)], mm(travel).c_str());
     return true;
 }
 
@@ -163,8 +176,8 @@ Effect Session::touch(int axis, double surface) {
     if (sim_->corrector() == 0) {
         // D0: the gauge is zero, so PREF would place the turret reference (or the
         // spindle nose), not a tool point, on the surface. Rare, never silent.
-        confirm(strf(tr("D0, no tool gauge (T%d): the turret reference would read %c %s."), sim_->tool(),
-                     kAxisNames[size_t(axis)], mm(surface).c_str()),
+        confirm(strf(tr("D0, no tool gauge (T%d): the turret reference would read %c %s."),
+                     sim_->tool(), kAxisNames[size_t(axis)], mm(surface).c_str()),
                 [this, axis, surface] { touch_now(axis, surface); });
         return Effect::redraw;
     }
@@ -184,7 +197,9 @@ Effect Session::touch_now(int axis, double surface) {
         say(strf(tr("touch-off: %s"), why.c_str()), true);
         return Effect::redraw;
     }
-    if (apply_setting(t.name, t.after, "touch-off " + std::string(1, kAxisNames[size_t(axis)]) + " " + mm(surface))) {
+    if (apply_setting(
+            t.name, t.after,
+            "touch-off " + std::string(1, kAxisNames[size_t(axis)]) + " " + mm(surface))) {
         last_setting_ = t.formula + " " + strf(tr("(was %s)"), mm(t.before).c_str());
         say(last_setting_);
     }
@@ -201,7 +216,8 @@ Effect Session::measure(int d, int axis, double surface) {
         say(strf(tr("measure: %s"), why.c_str()), true);
         return Effect::redraw;
     }
-    if (apply_setting(t.name, t.after, "measure " + std::string(1, kAxisNames[size_t(axis)]) + " " + mm(surface))) {
+    if (apply_setting(t.name, t.after,
+                      "measure " + std::string(1, kAxisNames[size_t(axis)]) + " " + mm(surface))) {
         last_setting_ = t.formula + " " + strf(tr("(was %s)"), mm(t.before).c_str());
         say(last_setting_);
     }
@@ -263,7 +279,8 @@ Effect Session::protect_command(std::string_view args) {
             std::random_device rd;
             char salt[17];
             std::snprintf(salt, sizeof salt, "%08x%08x", rd(), rd());
-            store_->set_setting("protect.pin", std::string(salt) + ":" + sha256_hex(std::string(salt) + rest));
+            store_->set_setting("protect.pin",
+                                std::string(salt) + ":" + sha256_hex(std::string(salt) + rest));
             say(tr("PIN set: :protect off PIN is needed to unlock"));
         }
     } else {
@@ -274,7 +291,8 @@ Effect Session::protect_command(std::string_view args) {
 
 // The message line says how a decimal comma was read.
 void Session::echo_comma(std::string_view typed, double v) {
-    message_ = strf(tr("read %s as %s: %s"), std::string(typed).c_str(), mm(v).c_str(), message_.c_str());
+    message_ =
+        strf(tr("read %s as %s: %s"), std::string(typed).c_str(), mm(v).c_str(), message_.c_str());
 }
 
 // Text typed on the PREF page: NAME=VALUE, or AXIS VALUE for a touch-off.
@@ -294,7 +312,8 @@ Effect Session::setting_text(std::string_view text) {
             say(strf(tr("%s: not a number (use a decimal point: 1.5)"), name.c_str()), true);
             return Effect::redraw;
         }
-        if (corr && name.find('.') == std::string::npos) name = "D" + std::to_string(corr_cursor) + "." + name;
+        if (corr && name.find('.') == std::string::npos)
+            name = "D" + std::to_string(corr_cursor) + "." + name;
         std::string source = corr ? "page CORR" : "page PREF";
         std::string why;
         if (implausible_gauge(name, v, why)) {
@@ -306,22 +325,25 @@ Effect Session::setting_text(std::string_view text) {
     }
     if (corr && t.size() > 1 && t[0] == 'D' && std::isdigit(static_cast<unsigned char>(t[1]))) {
         int d = std::atoi(t.c_str() + 1);
-        if (d < 1 || d > m_.correctors) say(strf(tr("correctors are D1 to D%d"), m_.correctors), true);
-        else corr_cursor = d;
+        if (d < 1 || d > m_.correctors)
+            say(strf(tr("correctors are D1 to D%d"), m_.correctors), true);
+        else
+            corr_cursor = d;
         return Effect::redraw;
     }
     int axis = t.empty() ? -1 : axis_of(t[0]);
     double v;
     bool comma = false;
     if (axis >= 0 && parse_num(std::string_view(t).substr(1), v, &comma)) {
-        if (!corr) touch(axis, v);
+        if (!corr)
+            touch(axis, v);
         else if (corr_cursor != sim_->corrector() && at_rest(*sim_).empty()) {
             // The tool touching is the one of the active corrector: measuring
             // another asks first (CLARIFICATIONS 12.5; :measure never asks).
             int d = corr_cursor;
             // TRANSLATORS: the corrector under the cursor, the active one, the first again.
-            confirm(strf(tr("D%d is not the active corrector (D%d): measure D%d with this tool?"), d, sim_->corrector(),
-                         d),
+            confirm(strf(tr("D%d is not the active corrector (D%d): measure D%d with this tool?"),
+                         d, sim_->corrector(), d),
                     [this, d, axis, v] { measure(d, axis, v); });
         } else {
             measure(corr_cursor, axis, v);
@@ -329,9 +351,11 @@ Effect Session::setting_text(std::string_view text) {
         if (comma && !message_error_) echo_comma(text, v);
         return Effect::redraw;
     }
-    say(corr ? strf(tr("CORR: X=63.345 sets a field of D%d, D5 chooses a corrector, X 59.978 measures by a touched diameter"),
+    say(corr ? strf(tr("CORR: X=63.345 sets a field of D%d, D5 chooses a corrector, X 59.978 "
+                       "measures by a touched diameter"),
                     corr_cursor)
-             : std::string(tr("PREF: PREF.Z=-300 or DEC1.X=2 sets a value, Z 0 or X 59.978 touches off")),
+             : std::string(
+                   tr("PREF: PREF.Z=-300 or DEC1.X=2 sets a value, Z 0 or X 59.978 touches off")),
         true);
     return Effect::redraw;
 }

@@ -21,7 +21,9 @@ constexpr std::array<uint32_t, 64> kK = {
     0x19a4c116, 0x1e376c08, 0x2748774c, 0x34b0bcb5, 0x391c0cb3, 0x4ed8aa4a, 0x5b9cca4f, 0x682e6ff3,
     0x748f82ee, 0x78a5636f, 0x84c87814, 0x8cc70208, 0x90befffa, 0xa4506ceb, 0xbef9a3f7, 0xc67178f2};
 
-uint32_t rotr(uint32_t x, int n) { return (x >> n) | (x << (32 - n)); }
+uint32_t rotr(uint32_t x, int n) {
+    return (x >> n) | (x << (32 - n));
+}
 
 }  // namespace
 
@@ -36,7 +38,8 @@ std::string sha256_hex(std::string_view data) {
     for (size_t off = 0; off < m.size(); off += 64) {
         std::array<uint32_t, 64> w{};
         for (int i = 0; i < 16; ++i)
-            w[size_t(i)] = uint32_t(m[off + size_t(4 * i)]) << 24 | uint32_t(m[off + size_t(4 * i) + 1]) << 16 |
+            w[size_t(i)] = uint32_t(m[off + size_t(4 * i)]) << 24 |
+                           uint32_t(m[off + size_t(4 * i) + 1]) << 16 |
                            uint32_t(m[off + size_t(4 * i) + 2]) << 8 | m[off + size_t(4 * i) + 3];
         for (size_t i = 16; i < 64; ++i) {
             uint32_t s0 = rotr(w[i - 15], 7) ^ rotr(w[i - 15], 18) ^ (w[i - 15] >> 3);

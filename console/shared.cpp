@@ -38,7 +38,9 @@ std::string host() {
     return h;
 }
 
-std::string lease_key(int number) { return "editing." + std::to_string(number); }
+std::string lease_key(int number) {
+    return "editing." + std::to_string(number);
+}
 
 }  // namespace
 
@@ -91,22 +93,26 @@ void Session::sync_from_store() {
     dir_seen_ = dir_;
     for (const auto& e : dir_) {
         bool same = false;
-        for (const auto& b : before) same = same || (b.number == e.number && b.revision == e.revision);
+        for (const auto& b : before)
+            same = same || (b.number == e.number && b.revision == e.revision);
         if (same) continue;
         auto p = store_->read(e.number);
         if (p.error) continue;
         const ProgramText* mine = mem_.find(e.number);
         if (mine && program_text(*mine) == p.value.text) continue;
         Diag d;
-        if (!mem_.replace(e.number, "store:%" + std::to_string(e.number), p.value.text, d)) continue;
-        news += (news.empty() ? "%" : ", %") + std::to_string(e.number) + " r" + std::to_string(e.revision);
+        if (!mem_.replace(e.number, "store:%" + std::to_string(e.number), p.value.text, d))
+            continue;
+        news += (news.empty() ? "%" : ", %") + std::to_string(e.number) + " r" +
+                std::to_string(e.revision);
         if (editor.is_open() && editor.number == e.number && editor.revision != e.revision)
             news += std::string(" ") + tr("(open here: :save keeps yours as a conflict)");
     }
     for (const auto& b : before) {
         bool still = false;
         for (const auto& e : dir_) still = still || e.number == b.number;
-        if (!still && mem_.remove(b.number)) news += (news.empty() ? "" : ", ") + strf(tr("%%%d deleted"), b.number);
+        if (!still && mem_.remove(b.number))
+            news += (news.empty() ? "" : ", ") + strf(tr("%%%d deleted"), b.number);
     }
     sim_->invalidate_text_cache();
     if (!news.empty()) say(strf(tr("another console changed: %s"), news.c_str()));
@@ -115,7 +121,8 @@ void Session::sync_from_store() {
 // The lease of a program open in EDIT: "user host pid time".
 void Session::take_lease(int number) {
     lease_wait_ = kLeaseRefresh;
-    std::string mine = store_->user() + " " + host() + " " + std::to_string(getpid()) + " " + std::to_string(now_ms());
+    std::string mine = store_->user() + " " + host() + " " + std::to_string(getpid()) + " " +
+                       std::to_string(now_ms());
     // This connection's own commits leave its data_version as it is: the
     // next poll still sees every other console's commit.
     store_->set_setting(lease_key(number), mine);
@@ -136,7 +143,8 @@ std::string Session::other_editor(int number) const {
     char who[128] = {}, where[256] = {};
     long pid = 0;
     long long at = 0;
-    if (std::sscanf(r.value->c_str(), "%127s %255s %ld %lld", who, where, &pid, &at) != 4) return {};
+    if (std::sscanf(r.value->c_str(), "%127s %255s %ld %lld", who, where, &pid, &at) != 4)
+        return {};
     if (where == host() && pid == getpid()) return {};
     if (now_ms() - at > kLeaseStaleMs) return {};
     if (where == host() && kill(pid_t(pid), 0) != 0) return {};  // that console has gone

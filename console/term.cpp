@@ -43,8 +43,12 @@ void crash_handler(int sig) {
     std::raise(sig);
 }
 
-void quit_handler(int) { g_quit = 1; }
-void winch_handler(int) { g_winch = 1; }
+void quit_handler(int) {
+    g_quit = 1;
+}
+void winch_handler(int) {
+    g_winch = 1;
+}
 
 void install(int sig, void (*h)(int)) {
     struct sigaction sa;
@@ -61,15 +65,21 @@ void at_exit() {
     }
 }
 
-short pair_of(pages::Style s) { return short(int(s) + 1); }
+short pair_of(pages::Style s) {
+    return short(int(s) + 1);
+}
 
 }  // namespace
 
 bool parse_theme(const std::string& name, Theme& out) {
-    if (name == "colour" || name == "color") out = Theme::colour;
-    else if (name == "mono") out = Theme::mono;
-    else if (name == "phosphor") out = Theme::phosphor;
-    else return false;
+    if (name == "colour" || name == "color")
+        out = Theme::colour;
+    else if (name == "mono")
+        out = Theme::mono;
+    else if (name == "phosphor")
+        out = Theme::phosphor;
+    else
+        return false;
     return true;
 }
 
@@ -78,7 +88,9 @@ bool Terminal::utf8_locale() {
     return cs && (std::strcmp(cs, "UTF-8") == 0 || std::strcmp(cs, "utf8") == 0);
 }
 
-bool Terminal::interrupted() { return g_quit != 0; }
+bool Terminal::interrupted() {
+    return g_quit != 0;
+}
 
 std::string Terminal::open(Theme theme) {
     if (!isatty(STDIN_FILENO) || !isatty(STDOUT_FILENO))
@@ -129,11 +141,20 @@ void Terminal::theme_colours(Theme t) {
         short f, b;
     };
     const P colour[] = {
-        {S::normal, -1, -1},           {S::dim, COLOR_CYAN, -1},        {S::title, COLOR_YELLOW, -1},
-        {S::value, -1, -1},            {S::big, COLOR_GREEN, -1},       {S::select, COLOR_BLACK, COLOR_CYAN},
-        {S::alarm, COLOR_WHITE, COLOR_RED}, {S::warn, COLOR_BLACK, COLOR_YELLOW}, {S::ok, COLOR_BLACK, COLOR_GREEN},
-        {S::status, COLOR_WHITE, COLOR_BLUE}, {S::key, -1, -1},         {S::softkey, COLOR_BLACK, COLOR_CYAN},
-        {S::input, -1, -1},           {S::softkey_on, COLOR_WHITE, COLOR_BLUE},
+        {S::normal, -1, -1},
+        {S::dim, COLOR_CYAN, -1},
+        {S::title, COLOR_YELLOW, -1},
+        {S::value, -1, -1},
+        {S::big, COLOR_GREEN, -1},
+        {S::select, COLOR_BLACK, COLOR_CYAN},
+        {S::alarm, COLOR_WHITE, COLOR_RED},
+        {S::warn, COLOR_BLACK, COLOR_YELLOW},
+        {S::ok, COLOR_BLACK, COLOR_GREEN},
+        {S::status, COLOR_WHITE, COLOR_BLUE},
+        {S::key, -1, -1},
+        {S::softkey, COLOR_BLACK, COLOR_CYAN},
+        {S::input, -1, -1},
+        {S::softkey_on, COLOR_WHITE, COLOR_BLUE},
     };
     for (const P& p : colour) {
         if (t == Theme::phosphor) {
@@ -151,7 +172,8 @@ bool Terminal::resized() {
     if (!g_winch) return false;
     g_winch = 0;
     struct winsize ws;
-    if (ioctl(STDOUT_FILENO, TIOCGWINSZ, &ws) == 0 && ws.ws_row > 0 && ws.ws_col > 0) resizeterm(ws.ws_row, ws.ws_col);
+    if (ioctl(STDOUT_FILENO, TIOCGWINSZ, &ws) == 0 && ws.ws_row > 0 && ws.ws_col > 0)
+        resizeterm(ws.ws_row, ws.ws_col);
     getmaxyx(stdscr, rows_, cols_);
     clearok(stdscr, TRUE);
     return true;
@@ -166,16 +188,34 @@ void Terminal::draw(const pages::Canvas& c, int cx, int cy) {
             short pair = 0;
             if (theme_ == Theme::mono) {
                 switch (cell.st) {
-                    case S::title: case S::big: a = A_BOLD; break;
-                    case S::softkey_on: a = A_BOLD; break;  // the others are in reverse
-                    case S::dim: a = A_DIM; break;
-                    case S::select: case S::status: case S::softkey: case S::ok: a = A_REVERSE; break;
-                    case S::alarm: case S::warn: a = A_REVERSE | A_BOLD; break;
-                    default: break;
+                    case S::title:
+                    case S::big:
+                        a = A_BOLD;
+                        break;
+                    case S::softkey_on:
+                        a = A_BOLD;
+                        break;  // the others are in reverse
+                    case S::dim:
+                        a = A_DIM;
+                        break;
+                    case S::select:
+                    case S::status:
+                    case S::softkey:
+                    case S::ok:
+                        a = A_REVERSE;
+                        break;
+                    case S::alarm:
+                    case S::warn:
+                        a = A_REVERSE | A_BOLD;
+                        break;
+                    default:
+                        break;
                 }
             } else {
                 pair = pair_of(cell.st);
-                if (cell.st == S::title || cell.st == S::big || cell.st == S::alarm || cell.st == S::softkey_on) a |= A_BOLD;
+                if (cell.st == S::title || cell.st == S::big || cell.st == S::alarm ||
+                    cell.st == S::softkey_on)
+                    a |= A_BOLD;
             }
             wchar_t wc[2] = {wchar_t(cell.ch), 0};
             cchar_t cc;

@@ -13,7 +13,7 @@ enum class Theme { colour, mono, phosphor };
 bool parse_theme(const std::string& name, Theme& out);
 
 class Terminal {
-public:
+  public:
     // Takes the terminal: raw mode, no echo, alternate screen. "" or why not.
     std::string open(Theme theme);
     void close();  // idempotent
@@ -29,7 +29,7 @@ public:
     // Whether the terminal's locale can show UTF-8 (else the ASCII fallback).
     static bool utf8_locale();
 
-private:
+  private:
     void theme_colours(Theme t);
     bool open_ = false;
     Theme theme_ = Theme::mono;

@@ -72,7 +72,8 @@ std::string_view num_error_text(int code) {
 // What the ALARM page says of our own numbers; pupitre(1), DIAGNOSTICS, says more.
 std::string_view pupitre_diag_text(int code) {
     static const std::pair<int, const char*> kTexts[] = {
-        {err::kBlockBudget, N_("Endless loop: the program comes back to a state it was in, or exceeds the work budget")},
+        {err::kBlockBudget, N_("Endless loop: the program comes back to a state it was in, or "
+                               "exceeds the work budget")},
         {err::kNotText, N_("The file is not text")},
         {err::kNoProgram, N_("The file holds no program")},
         {err::kCannotRead, N_("The file cannot be opened or read")},
@@ -83,18 +84,24 @@ std::string_view pupitre_diag_text(int code) {
         {err::wUnknownM, N_("Warning: an M function with no meaning on the NUM, ignored")},
         {err::wSpindleStopped, N_("Warning: G96 while the spindle is not turning")},
         {err::wIncrementalFirst, N_("Warning: the first move is written in G91")},
-        {err::wDuplicateProgram, N_("Warning: a program number loaded twice; this copy is ignored")},
+        {err::wDuplicateProgram,
+         N_("Warning: a program number loaded twice; this copy is ignored")},
         {err::wUnsignedEB, N_("Warning: EB without a sign, taken as a fillet")},
-        {err::wTinyFeed, N_("Warning: a feed below 1 mm/min in G94 (a feed per revolution without G95?)")},
+        {err::wTinyFeed,
+         N_("Warning: a feed below 1 mm/min in G94 (a feed per revolution without G95?)")},
         {err::wFeedBeforeF, N_("Warning: a feed move before any F runs at the power-on feed")},
         {err::wLReadUnset, N_("Warning: an L variable read before anything set it reads 0")},
-        {err::wIdleWord, N_("Warning: R, I, J or K in a G0/G1 block has no effect (a G2/G3 left out?)")},
+        {err::wIdleWord,
+         N_("Warning: R, I, J or K in a G0/G1 block has no effect (a G2/G3 left out?)")},
         {err::wFractionalRpm, N_("Warning: a spindle speed in rev/min that is not a whole number")},
-        {err::wProfileL, N_("Warning: L100-L199 or L900-L959 read in a roughing-cycle profile (error 96 on the NUM)")},
+        {err::wProfileL, N_("Warning: L100-L199 or L900-L959 read in a roughing-cycle profile "
+                            "(error 96 on the NUM)")},
         {err::wFeedModeNoF, N_("Warning: G94 or G95 without F in its block")},
-        {err::wAllowanceInside, N_("Warning: a finishing allowance whose sign puts it inside the part")},
+        {err::wAllowanceInside,
+         N_("Warning: a finishing allowance whose sign puts it inside the part")},
         {err::wNoToolWidth, N_("Warning: G66 correctors that give no tool width")},
-        {err::wPlungeAway, N_("Warning: a G46 roughing plunges with the cutter away from the drilled hole")},
+        {err::wPlungeAway,
+         N_("Warning: a G46 roughing plunges with the cutter away from the drilled hole")},
     };
     for (const auto& [n, text] : kTexts)
         if (n == code) return tr(text);

@@ -26,15 +26,15 @@ inline constexpr int wDuplicateProgram = 1107;
 inline constexpr int wUnsignedEB = 1108;
 inline constexpr int wTinyFeed = 1109;
 // The quiet mistakes of the handbook audit (issue 19): what runs is named.
-inline constexpr int wFeedBeforeF = 1110;     // a feed move before any F
-inline constexpr int wLReadUnset = 1111;      // an L read before anything set it
-inline constexpr int wIdleWord = 1112;        // R, I, J or K with no effect in a G0/G1 block
-inline constexpr int wFractionalRpm = 1113;   // S in rev/min not a whole number
-inline constexpr int wProfileL = 1114;        // L100-L199/L900-L959 read in a roughing profile
-inline constexpr int wFeedModeNoF = 1115;     // G94/G95 without F in the block
-inline constexpr int wAllowanceInside = 1116; // G64/G65 allowance towards the inside of the part
-inline constexpr int wNoToolWidth = 1117;     // G66 correctors that give no tool width
-inline constexpr int wPlungeAway = 1118;      // G46 roughing plunges with the cutter away from the hole
+inline constexpr int wFeedBeforeF = 1110;      // a feed move before any F
+inline constexpr int wLReadUnset = 1111;       // an L read before anything set it
+inline constexpr int wIdleWord = 1112;         // R, I, J or K with no effect in a G0/G1 block
+inline constexpr int wFractionalRpm = 1113;    // S in rev/min not a whole number
+inline constexpr int wProfileL = 1114;         // L100-L199/L900-L959 read in a roughing profile
+inline constexpr int wFeedModeNoF = 1115;      // G94/G95 without F in the block
+inline constexpr int wAllowanceInside = 1116;  // G64/G65 allowance towards the inside of the part
+inline constexpr int wNoToolWidth = 1117;      // G66 correctors that give no tool width
+inline constexpr int wPlungeAway = 1118;  // G46 roughing plunges with the cutter away from the hole
 }  // namespace err
 
 enum class Severity { error, warning };
@@ -42,12 +42,12 @@ enum class Severity { error, warning };
 struct Diag {
     Severity severity = Severity::error;
     int code = 0;
-    std::string file;     // where the program text came from ("-" for none)
-    int program = -1;     // %number, -1 when unknown
-    int line = 0;         // 1-based line in `file`, 0 when unknown
-    long n = -1;          // N number of the block, -1 when the block has none
-    int column = 0;       // 1-based column in the line, 0 when unknown
-    std::string detail;   // the specific message
+    std::string file;    // where the program text came from ("-" for none)
+    int program = -1;    // %number, -1 when unknown
+    int line = 0;        // 1-based line in `file`, 0 when unknown
+    long n = -1;         // N number of the block, -1 when the block has none
+    int column = 0;      // 1-based column in the line, 0 when unknown
+    std::string detail;  // the specific message
 
     bool is_error() const { return severity == Severity::error; }
 };

@@ -5,12 +5,12 @@
 #include <libintl.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <clocale>
 #include <cstdarg>
 #include <cstdio>
 #include <cstdlib>
-#include <cctype>
 #include <cstring>
 #include <filesystem>
 #include <vector>
@@ -19,14 +19,17 @@ namespace pupitre {
 namespace {
 
 constexpr const char* kDomain = "pupitre";
-bool g_active = false;     // a catalogue other than English is bound
+bool g_active = false;  // a catalogue other than English is bound
 std::string g_lang = "en";
 
-bool is_c_locale(const char* loc) { return !loc || !std::strcmp(loc, "C") || !std::strcmp(loc, "POSIX"); }
+bool is_c_locale(const char* loc) {
+    return !loc || !std::strcmp(loc, "C") || !std::strcmp(loc, "POSIX");
+}
 
 bool has_catalogue(const std::string& localedir, const std::string& lang) {
     std::error_code ec;
-    return std::filesystem::is_regular_file(localedir + "/" + lang + "/LC_MESSAGES/" + kDomain + ".mo", ec);
+    return std::filesystem::is_regular_file(
+        localedir + "/" + lang + "/LC_MESSAGES/" + kDomain + ".mo", ec);
 }
 
 // "fr_FR.UTF-8@euro" -> "fr_FR", "fr".
@@ -40,7 +43,8 @@ void add_candidates(std::string_view name, std::vector<std::string>& out) {
 bool says_utf8(const char* loc) {
     if (!loc) return false;
     std::string s(loc);
-    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    std::transform(s.begin(), s.end(), s.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
     return s.find("utf-8") != std::string::npos || s.find("utf8") != std::string::npos;
 }
 
@@ -51,7 +55,9 @@ const char* env_or_null(const char* name) {
 
 }  // namespace
 
-const char* tr(const char* msgid) { return g_active ? dgettext(kDomain, msgid) : msgid; }
+const char* tr(const char* msgid) {
+    return g_active ? dgettext(kDomain, msgid) : msgid;
+}
 
 const char* trn(const char* one, const char* many, unsigned long n) {
     return g_active ? dngettext(kDomain, one, many, n) : (n == 1 ? one : many);
@@ -99,7 +105,8 @@ std::string wanted(Getenv get) {
     return out;
 }
 
-std::string choose(std::string_view override, const std::string& wanted_list, const std::string& localedir) {
+std::string choose(std::string_view override, const std::string& wanted_list,
+                   const std::string& localedir) {
     auto usable = [&](const std::string& l) { return l == "en" || has_catalogue(localedir, l); };
     if (!override.empty()) {
         std::vector<std::string> c;
@@ -146,7 +153,9 @@ void use_english() {
     g_lang = "en";
 }
 
-std::string_view language() { return g_lang; }
+std::string_view language() {
+    return g_lang;
+}
 
 std::string available(const std::string& localedir) {
     std::vector<std::string> langs{"en"};

@@ -13,10 +13,13 @@ namespace pupitre {
 // the catalogue has no translation). xgettext keywords: tr, trn:1,2, N_.
 const char* tr(const char* msgid) __attribute__((format_arg(1)));
 // The form for n (ngettext): "%d warning" / "%d warnings".
-const char* trn(const char* one, const char* many, unsigned long n) __attribute__((format_arg(1), format_arg(2)));
+const char* trn(const char* one, const char* many, unsigned long n)
+    __attribute__((format_arg(1), format_arg(2)));
 // Marks a text for the catalogue where it is stored (tables); translate with
 // tr() where it is shown.
-constexpr const char* N_(const char* msgid) { return msgid; }
+constexpr const char* N_(const char* msgid) {
+    return msgid;
+}
 // printf into a std::string, positional arguments (%1$s) allowed, so that a
 // translation may reorder them. Numbers always print with a decimal point:
 // LC_NUMERIC stays "C" (i18n::init).
@@ -35,7 +38,8 @@ std::string wanted(Getenv get);
 // The language to use: `override` (--lang) when given, else the first of
 // wanted()'s candidates that has a catalogue in `localedir` ("en" needs none),
 // else "en". An unknown override is an error: returns "".
-std::string choose(std::string_view override, const std::string& wanted_list, const std::string& localedir);
+std::string choose(std::string_view override, const std::string& wanted_list,
+                   const std::string& localedir);
 
 // Sets the process up for `lang`: the locale from the environment for
 // characters (falling back to C.UTF-8 where the named locale is not

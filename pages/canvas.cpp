@@ -55,7 +55,9 @@ std::string utf8(char32_t c) {
     return out;
 }
 
-Canvas::Canvas(int width, int height, bool ascii) : w_(0), h_(0), ascii_(ascii) { resize(width, height); }
+Canvas::Canvas(int width, int height, bool ascii) : w_(0), h_(0), ascii_(ascii) {
+    resize(width, height);
+}
 
 void Canvas::resize(int width, int height) {
     w_ = std::max(width, 1);
@@ -63,7 +65,9 @@ void Canvas::resize(int width, int height) {
     cells_.assign(size_t(w_ * h_), Cell{});
 }
 
-void Canvas::clear() { std::fill(cells_.begin(), cells_.end(), Cell{}); }
+void Canvas::clear() {
+    std::fill(cells_.begin(), cells_.end(), Cell{});
+}
 
 namespace {
 // The ASCII face of a character: the letter of an accented Latin-1 one (the
@@ -74,14 +78,28 @@ char32_t ascii_of(char32_t ch) {
         "aaaaaaaceeeeiiiidnooooo/ouuuuyty";
     if (ch >= 0xC0 && ch <= 0xFF) return char32_t(kLatin1[ch - 0xC0]);
     switch (ch) {
-    case U'\u00a0': case U'\u202f': return U' ';  // no-break spaces
-    case U'\u00ab': case U'\u00bb': case U'\u201c': case U'\u201d': return U'"';
-    case U'\u2018': case U'\u2019': return U'\'';
-    case U'\u2013': case U'\u2014': return U'-';
-    case U'\u0152': return U'O';  // Œ
-    case U'\u0153': return U'o';  // œ
-    case U'\u2192': return U'>';
-    default: return U'?';
+        case U'\u00a0':
+        case U'\u202f':
+            return U' ';  // no-break spaces
+        case U'\u00ab':
+        case U'\u00bb':
+        case U'\u201c':
+        case U'\u201d':
+            return U'"';
+        case U'\u2018':
+        case U'\u2019':
+            return U'\'';
+        case U'\u2013':
+        case U'\u2014':
+            return U'-';
+        case U'\u0152':
+            return U'O';  // Œ
+        case U'\u0153':
+            return U'o';  // œ
+        case U'\u2192':
+            return U'>';
+        default:
+            return U'?';
     }
 }
 }  // namespace
@@ -119,7 +137,8 @@ void Canvas::fill(const Rect& r, char32_t ch, Style st) {
 
 void Canvas::style(const Rect& r, Style st) {
     for (int y = std::max(r.y, 0); y < std::min(r.y + r.h, h_); ++y)
-        for (int x = std::max(r.x, 0); x < std::min(r.x + r.w, w_); ++x) cells_[size_t(y * w_ + x)].st = st;
+        for (int x = std::max(r.x, 0); x < std::min(r.x + r.w, w_); ++x)
+            cells_[size_t(y * w_ + x)].st = st;
 }
 
 void Canvas::hline(int x, int y, int w, Style st) {

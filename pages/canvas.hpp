@@ -13,18 +13,18 @@ namespace pupitre::pages {
 // Logical styles: the console's theme maps each to colours and attributes.
 enum class Style : uint8_t {
     normal,
-    dim,       // labels, units, frames
-    title,     // page titles
-    value,     // the numbers that matter
-    big,       // the main coordinate column
-    select,    // the selected line (cursor, current block)
-    alarm,     // alarm numbers and texts
-    warn,      // hold, stop, pending
-    ok,        // running, end of program
-    status,    // the status line
-    key,       // the F-key number of a soft key
-    softkey,   // a soft-key label
-    input,     // the input line
+    dim,         // labels, units, frames
+    title,       // page titles
+    value,       // the numbers that matter
+    big,         // the main coordinate column
+    select,      // the selected line (cursor, current block)
+    alarm,       // alarm numbers and texts
+    warn,        // hold, stop, pending
+    ok,          // running, end of program
+    status,      // the status line
+    key,         // the F-key number of a soft key
+    softkey,     // a soft-key label
+    input,       // the input line
     softkey_on,  // the soft key of the page on screen
     count_,
 };
@@ -40,7 +40,7 @@ struct Rect {
 };
 
 class Canvas {
-public:
+  public:
     Canvas(int width, int height, bool ascii = false);
 
     int width() const { return w_; }
@@ -69,7 +69,7 @@ public:
     char32_t horiz() const { return ascii_ ? U'-' : U'─'; }
     char32_t vert() const { return ascii_ ? U'|' : U'│'; }
 
-private:
+  private:
     int w_, h_;
     bool ascii_;
     std::vector<Cell> cells_;

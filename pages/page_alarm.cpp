@@ -12,7 +12,8 @@ namespace pupitre::pages {
 namespace {
 
 std::string where(const Diag& d) {
-    std::string s = d.file == "IMD" || d.program < 0 ? std::string("IMD") : "%" + std::to_string(d.program);
+    std::string s =
+        d.file == "IMD" || d.program < 0 ? std::string("IMD") : "%" + std::to_string(d.program);
     if (d.line > 0) s += " " + strf(tr("line %d"), d.line);
     if (d.n >= 0) s += " N" + std::to_string(d.n);
     return s;
@@ -34,20 +35,24 @@ void page_alarm(const View& v, Canvas& c, const Rect& r) {
     std::vector<Line> lines;
     if (s.alarm_active()) {
         const Diag& d = all.back().diag;
-        lines.push_back(Line{}.add(" " + strf(tr("ALARM %d"), d.code), Style::alarm).add("   " + where(d), Style::value));
+        lines.push_back(Line{}
+                            .add(" " + strf(tr("ALARM %d"), d.code), Style::alarm)
+                            .add("   " + where(d), Style::value));
         for (const std::string& l : wrap_text(explain(d.code), std::max(20, r.w - 4)))
             lines.push_back(Line{}.add("   " + l, Style::normal));
         for (const std::string& l : wrap_text(d.detail, std::max(20, r.w - 4)))
             lines.push_back(Line{}.add("   " + l, Style::value));
-        lines.push_back(Line{}.add(std::string("   ") + tr("RAZ (F12 or :raz) acknowledges it."), Style::dim));
+        lines.push_back(
+            Line{}.add(std::string("   ") + tr("RAZ (F12 or :raz) acknowledges it."), Style::dim));
     } else {
         lines.push_back(Line{}.add(std::string(" ") + tr("No alarm in force."), Style::dim));
     }
     lines.push_back(Line{});
     // The warnings of the last run: what ran instead of what was written.
     if (s.run_warning_count() > 0) {
-        lines.push_back(Line{}.add(" " + strf(tr("Warnings of the last run (%zu)"), size_t(s.run_warning_count())),
-                                   Style::title));
+        lines.push_back(Line{}.add(
+            " " + strf(tr("Warnings of the last run (%zu)"), size_t(s.run_warning_count())),
+            Style::title));
         for (const Diag& w : s.run_warnings()) {
             lines.push_back(Line{}
                                 .add("   " + lpad(std::to_string(w.code), 4), Style::value)
@@ -57,12 +62,14 @@ void page_alarm(const View& v, Canvas& c, const Rect& r) {
                 lines.push_back(Line{}.add("         " + l, Style::dim));
         }
         if (s.run_warning_count() > s.run_warnings().size())
-            lines.push_back(Line{}.add("   " + strf(tr("and %zu more (pupitre check lists them all)"),
-                                                    size_t(s.run_warning_count() - s.run_warnings().size())),
-                                       Style::dim));
+            lines.push_back(
+                Line{}.add("   " + strf(tr("and %zu more (pupitre check lists them all)"),
+                                        size_t(s.run_warning_count() - s.run_warnings().size())),
+                           Style::dim));
         lines.push_back(Line{});
     }
-    if (!all.empty()) lines.push_back(Line{}.add(std::string(" ") + tr("History (newest first)"), Style::title));
+    if (!all.empty())
+        lines.push_back(Line{}.add(std::string(" ") + tr("History (newest first)"), Style::title));
     for (size_t i = all.size(); i-- > 0;) {
         const Alarm& a = all[i];
         char t[32];

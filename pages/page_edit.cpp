@@ -14,13 +14,17 @@ void page_edit(const View& v, Canvas& c, const Rect& r) {
         c.rule(r.y, "EDIT");
         c.text(2, r.y + 2,
                // xgettext:no-c-format
-               tr("No program open: :edit N opens program %N (a new one if it does not exist),"), Style::dim);
+               tr("No program open: :edit N opens program %N (a new one if it does not exist),"),
+               Style::dim);
         c.text(2, r.y + 3, tr("or choose one on the DIR page (F6) and type :edit."), Style::dim);
         return;
     }
     const auto& lines = *v.edit_lines;
-    std::string title = std::string(v.edit_modif ? "MODIF" : "EDIT") + "  %" + std::to_string(v.edit_number);
-    if (!v.edit_modif) title += "  " + (v.edit_revision > 0 ? strf(tr("revision %d"), v.edit_revision) : std::string(tr("new")));
+    std::string title =
+        std::string(v.edit_modif ? "MODIF" : "EDIT") + "  %" + std::to_string(v.edit_number);
+    if (!v.edit_modif)
+        title += "  " + (v.edit_revision > 0 ? strf(tr("revision %d"), v.edit_revision)
+                                             : std::string(tr("new")));
     if (v.edit_dirty) title += std::string("  ") + tr("modified");
     c.rule(r.y, title);
     int rows = r.h - 2;
@@ -34,15 +38,20 @@ void page_edit(const View& v, Canvas& c, const Rect& r) {
         bool locked = k < v.edit_locked;
         Style st = k == v.edit_error ? Style::alarm : locked ? Style::dim : Style::normal;
         c.text_right(r.x, y, 5, std::to_string(k + 1), Style::dim);
-        c.put(r.x + 5, y, locked ? U'#' : (k >= ma && k <= mb && ma >= 0) ? U'|' : U' ', Style::dim);
+        c.put(r.x + 5, y,
+              locked                            ? U'#'
+              : (k >= ma && k <= mb && ma >= 0) ? U'|'
+                                                : U' ',
+              Style::dim);
         c.text(r.x + 7, y, lines[size_t(k)], st, r.w - 8);
         if (k == v.edit_cursor) {
             c.style(Rect{r.x, y, r.w, 1}, k == v.edit_error ? Style::alarm : Style::select);
             c.put(r.x + 6, y, U'>', k == v.edit_error ? Style::alarm : Style::select);
         }
     }
-    std::string help = v.edit_modify ? tr("Enter replaces the block; Ctrl-U clears the line")
-                                     : tr("type a block: inserted after >   Enter: modify   Del: delete   :save");
+    std::string help =
+        v.edit_modify ? tr("Enter replaces the block; Ctrl-U clears the line")
+                      : tr("type a block: inserted after >   Enter: modify   Del: delete   :save");
     if (v.edit_modif && !v.edit_modify)
         help = tr("# blocks already prepared; Cycle Start runs the changed text, RAZ drops it");
     c.text(2, r.y + r.h - 1, help, Style::dim, r.w - 3);

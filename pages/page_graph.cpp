@@ -9,9 +9,9 @@
 #include <cstdio>
 #include <string>
 
+#include "core/geometry/geometry.hpp"
 #include "core/i18n.hpp"
 #include "pages/view.hpp"
-#include "core/geometry/geometry.hpp"
 
 namespace pupitre::pages {
 
@@ -21,11 +21,16 @@ namespace pupitre::pages {
 // 2 dashed, 3 dotted, 4 dash-dot.
 static uint16_t line_pattern(const PathMove& mv) {
     switch (mv.ltype) {
-        case 1: return kSolid;
-        case 2: return kDashed;
-        case 3: return kDotted;
-        case 4: return kDashDot;
-        default: return mv.kind == PathKind::rapid ? kDashed : kSolid;
+        case 1:
+            return kSolid;
+        case 2:
+            return kDashed;
+        case 3:
+            return kDotted;
+        case 4:
+            return kDashDot;
+        default:
+            return mv.kind == PathKind::rapid ? kDashed : kSolid;
     }
 }
 
@@ -113,7 +118,8 @@ void fill_part(const GraphView& g, const ViewXf& xf, DotRaster& r) {
             }
         std::sort(xs.begin(), xs.end());
         for (size_t k = 0; k + 1 < xs.size(); k += 2) {
-            int i0 = std::max(0, int(std::ceil(xf.dx(xs[k]) - 0.5))), i1 = std::min(xf.w - 1, int(std::floor(xf.dx(xs[k + 1]) + 0.5)));
+            int i0 = std::max(0, int(std::ceil(xf.dx(xs[k]) - 0.5))),
+                i1 = std::min(xf.w - 1, int(std::floor(xf.dx(xs[k + 1]) + 0.5)));
             for (int i = i0; i <= i1; ++i) r.dot(i, j, Ink::part);
         }
     }
@@ -281,7 +287,8 @@ void info_lines(const GraphView& g, const ViewXf& xf, Canvas& c, const Rect& r) 
         x += c.text(x, y2, t, Style::warn, room());
     }
     for (const PathError& e : p.errors()) {
-        std::string t = strf(tr("error %d"), e.code) + (e.loc.n >= 0 ? " N" + std::to_string(e.loc.n) : "") + " " +
+        std::string t = strf(tr("error %d"), e.code) +
+                        (e.loc.n >= 0 ? " N" + std::to_string(e.loc.n) : "") + " " +
                         strf(tr("line %d"), e.loc.line) + "  ";
         x += c.text(x, y2, t, travel_error(e.code) ? Style::warn : Style::alarm, room());
     }
@@ -390,8 +397,9 @@ void page_graph(const GraphView& g, const MachineProfile& m, Canvas& c, const Re
     bool part = g.part && !g.part->empty() && m.lathe;
     if (!g.path || (g.path->empty() && g.path->errors().empty() && !part)) {
         c.rule(r.y, title_of(g));
-        c.text(r.x + 2, r.y + 2, tr("No toolpath yet: run a program in AUTO, SEQ, DRY RUN or TEST."),
-               Style::dim, r.w - 4);
+        c.text(r.x + 2, r.y + 2,
+               tr("No toolpath yet: run a program in AUTO, SEQ, DRY RUN or TEST."), Style::dim,
+               r.w - 4);
         return;
     }
     const Toolpath& p = *g.path;

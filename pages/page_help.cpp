@@ -14,10 +14,13 @@ const char* const kGettingStarted[] = {
     N_("1. Home: F8 until the status line shows POM, then Cycle Start (F9)."),
     N_("2. Jog: F8 to JOG, hold an arrow key (the OP page lists the keys); INC moves one step."),
     N_("3. Tool: F8 to IMD, type T1 D1 M6, Enter, then F9 (Cycle Start)."),
-    N_("4. Touch off: jog the tool onto the part, Alt-p for the PREF page, type Z 0 for the face or "
+    N_("4. Touch off: jog the tool onto the part, Alt-p for the PREF page, type Z 0 for the face "
+       "or "
        "X 59.978 for a diameter; the OP page then reads what you typed."),
-    N_("5. Run: F6 lists the programs (Enter selects), F8 to AUTO, F9 runs; F10 holds, F12 (RAZ) abandons."),
-    N_("6. A real part: :setup lathe puts a bar in the chuck; a jog stops when the tool touches it, "
+    N_("5. Run: F6 lists the programs (Enter selects), F8 to AUTO, F9 runs; F10 holds, F12 (RAZ) "
+       "abandons."),
+    N_("6. A real part: :setup lathe puts a bar in the chuck; a jog stops when the tool touches "
+       "it, "
        ":measure dia Z-20 reads the part (pupitre-setup(5))."),
     N_("The prompt says where typed text goes (IMD>, PREF>, D5>, EDIT>); Escape empties it. "
        "Commands start with ':' (Tab completes). RAZ is F12 (or Alt-r), off the F1-F10 row."),
@@ -27,15 +30,24 @@ const char* const kGettingStarted[] = {
 // the status line and traces name the modes), for the catalogue; the HELP
 // page and the message line show them through tr().
 [[maybe_unused]] const char* const kModeTexts[] = {
-    N_("continuous run"), N_("Cycle Start (F9) runs the selected program"),
-    N_("single block"), N_("Cycle Start (F9) runs one block"),
-    N_("dry run: feeds at the machine maximum"), N_("Cycle Start (F9) runs it"),
-    N_("program check, no motion"), N_("Cycle Start (F9) checks the program"),
-    N_("block search and resume"), N_("type the N to find, then Cycle Start (F9)"),
-    N_("manual data input"), N_("type a block, Enter, then Cycle Start (F9)"),
-    N_("continuous jog"), N_("hold an arrow key to move an axis (keys on OP)"),
-    N_("incremental jog"), N_("an arrow key moves one step (keys on OP)"),
-    N_("homing"), N_("Cycle Start (F9) homes the axes"),
+    N_("continuous run"),
+    N_("Cycle Start (F9) runs the selected program"),
+    N_("single block"),
+    N_("Cycle Start (F9) runs one block"),
+    N_("dry run: feeds at the machine maximum"),
+    N_("Cycle Start (F9) runs it"),
+    N_("program check, no motion"),
+    N_("Cycle Start (F9) checks the program"),
+    N_("block search and resume"),
+    N_("type the N to find, then Cycle Start (F9)"),
+    N_("manual data input"),
+    N_("type a block, Enter, then Cycle Start (F9)"),
+    N_("continuous jog"),
+    N_("hold an arrow key to move an axis (keys on OP)"),
+    N_("incremental jog"),
+    N_("an arrow key moves one step (keys on OP)"),
+    N_("homing"),
+    N_("Cycle Start (F9) homes the axes"),
 };
 
 // A two-column entry: the key (or command) in its column, the text beside it
@@ -49,27 +61,33 @@ void entry(std::vector<Line>& lines, const std::string& key, int col, const std:
     auto parts = wrap_text(text, std::max(20, width - indent - 1));
     for (size_t i = 0; i < parts.size(); ++i) {
         Line l;
-        if (i == 0 && !own_line) l.add("   " + pad(key, size_t(col + 1)), Style::value);
-        else l.add(std::string(size_t(indent), ' '));
+        if (i == 0 && !own_line)
+            l.add("   " + pad(key, size_t(col + 1)), Style::value);
+        else
+            l.add(std::string(size_t(indent), ' '));
         l.add(parts[i]);
         lines.push_back(std::move(l));
     }
 }
 
 void modes(const View& v, std::vector<Line>& lines, int width) {
-    lines.push_back(
-        Line{}.add(std::string(" ") + tr("Modes: F8 goes to the next one (S-F8 back), :mode NAME selects one"), Style::title));
+    lines.push_back(Line{}.add(
+        std::string(" ") + tr("Modes: F8 goes to the next one (S-F8 back), :mode NAME selects one"),
+        Style::title));
     Mode now = v.sim->mode();
     Mode m = Mode::automatic;
     do {
-        std::string when = m == now ? tr("now") : m == next_mode(now, 1) ? tr("F8 goes here next") : "";
+        std::string when = m == now                 ? tr("now")
+                           : m == next_mode(now, 1) ? tr("F8 goes here next")
+                                                    : "";
         entry(lines, std::string(mode_name(m)), 8,
-              tr_text(mode_english(m)) + "; " + tr_text(mode_how(m)), when,
-              width);
+              tr_text(mode_english(m)) + "; " + tr_text(mode_how(m)), when, width);
         m = next_mode(m, 1);
     } while (m != Mode::automatic);
-    entry(lines, "EDIT", 8, tr("the program editor: :edit N or Alt-e (the selected program)"), "", width);
-    entry(lines, "MODIF", 8, tr("change the blocks to come of an interrupted program: Alt-m or :mode modif"), "",
+    entry(lines, "EDIT", 8, tr("the program editor: :edit N or Alt-e (the selected program)"), "",
+          width);
+    entry(lines, "MODIF", 8,
+          tr("change the blocks to come of an interrupted program: Alt-m or :mode modif"), "",
           width);
 }
 
@@ -84,7 +102,8 @@ void page_help(const View& v, Canvas& c, const Rect& r) {
     const int width = r.w - 10;
     for (const char* s : kGettingStarted) {
         auto parts = wrap_text(tr(s), width - 6);
-        for (size_t i = 0; i < parts.size(); ++i) lines.push_back(Line{}.add((i ? "      " : "   ") + parts[i]));
+        for (size_t i = 0; i < parts.size(); ++i)
+            lines.push_back(Line{}.add((i ? "      " : "   ") + parts[i]));
     }
     lines.push_back(Line{});
     modes(v, lines, width);
@@ -101,9 +120,13 @@ void page_help(const View& v, Canvas& c, const Rect& r) {
     }
     if (!v.store_path.empty()) {
         lines.push_back(Line{});
-        lines.push_back(Line{}.add(std::string(" ") + tr("Store:") + " ", Style::dim).add(v.store_path));
+        lines.push_back(
+            Line{}.add(std::string(" ") + tr("Store:") + " ", Style::dim).add(v.store_path));
     }
-    lines.push_back(Line{}.add(std::string(" ") + tr("Manual: man pupitre (the console), man pupitre-iso (the NUM dialect)"), Style::dim));
+    lines.push_back(
+        Line{}.add(std::string(" ") +
+                       tr("Manual: man pupitre (the console), man pupitre-iso (the NUM dialect)"),
+                   Style::dim));
     draw_lines(lines, v.scroll, c, Rect{r.x, r.y + 1, r.w, r.h - 1});
 }
 

@@ -35,9 +35,9 @@ void kv(std::vector<Line>& lines, std::string k, std::string val) {
 
 // The G functions in force, one a group, then G53, G51 and G74 when active.
 std::string g_functions(const Modal& m, const Frames& f) {
-    std::string gs = g(m.motion) + " " + g(m.plane) + " " + g(m.radcomp) + " " + (m.incremental ? "G91" : "G90") +
-                     " " + g(m.feed_mode) + " " + g(m.spindle_mode) + " " + (m.inch ? "G70" : "G71") + " " +
-                     g(m.cycle);
+    std::string gs = g(m.motion) + " " + g(m.plane) + " " + g(m.radcomp) + " " +
+                     (m.incremental ? "G91" : "G90") + " " + g(m.feed_mode) + " " +
+                     g(m.spindle_mode) + " " + (m.inch ? "G70" : "G71") + " " + g(m.cycle);
     if (f.g53) gs += " G53";
     if (f.mirror.any()) gs += " G51";
     if (f.scale_on) gs += " G74";
@@ -47,7 +47,10 @@ std::string g_functions(const Modal& m, const Frames& f) {
 // The M functions in force: spindle, range, coolant, overrides, clamp, M999,
 // the last coded M.
 std::string m_functions(const Modal& m) {
-    std::string ms = m.spindle_dir == 3 ? "M03" : m.spindle_dir == 4 ? "M04" : m.spindle_dir == 19 ? "M19" : "M05";
+    std::string ms = m.spindle_dir == 3    ? "M03"
+                     : m.spindle_dir == 4  ? "M04"
+                     : m.spindle_dir == 19 ? "M19"
+                                           : "M05";
     if (m.range >= 0) ms += " M4" + std::to_string(m.range);
     ms += m.m7 ? " M07" : "";
     ms += m.m8 ? " M08" : "";
@@ -66,7 +69,9 @@ void modal_lines(const Sim& s, std::vector<Line>& lines) {
     kv(lines, "G", g_functions(m, in.frames()));
     kv(lines, "M", m_functions(m));
     char buf[128];
-    const char* unit = m.feed_mode == 95 ? tr("mm/rev") : m.feed_mode == 93 ? tr("1/min (inverse time)") : "mm/min";
+    const char* unit = m.feed_mode == 95   ? tr("mm/rev")
+                       : m.feed_mode == 93 ? tr("1/min (inverse time)")
+                                           : "mm/min";
     std::snprintf(buf, sizeof buf, "F%g %s", m.feed, unit);
     // TRANSLATORS: INFO page labels (Feed, Spindle, Tool, Plane, Transform,
     // Switches): at most 10 columns each.
@@ -89,8 +94,9 @@ void offset_lines(const Sim& s, std::vector<Line>& lines) {
     const Interpreter& in = s.interp();
     const Modal& m = in.modal();
     const Frames& f = in.frames();
-    lines.push_back(
-        Line{}.add(std::string(" ") + (s.machine().lathe ? tr("Offsets (X as a radius)") : tr("Offsets")), Style::title));
+    lines.push_back(Line{}.add(
+        std::string(" ") + (s.machine().lathe ? tr("Offsets (X as a radius)") : tr("Offsets")),
+        Style::title));
     kv(lines, "PREF", axes_text(s, f.pref));
     kv(lines, "DEC1", axes_text(s, f.dec1));
     kv(lines, "DEC3", axes_text(s, f.dec3));

@@ -24,7 +24,8 @@ void l_block(std::vector<Line>& lines, const LVars& l, int from, int to, int col
         for (int k = 0; k < cols && n + k <= to; ++k) {
             int i = n + k;
             line.add(pad("L" + std::to_string(i), 6), Style::dim);
-            line.add(pad(num(l.v[size_t(i)]), 12), l.written[size_t(i)] ? Style::value : Style::normal);
+            line.add(pad(num(l.v[size_t(i)]), 12),
+                     l.written[size_t(i)] ? Style::value : Style::normal);
         }
         lines.push_back(std::move(line));
     }
@@ -37,16 +38,22 @@ void page_param(const View& v, Canvas& c, const Rect& r) {
     // TRANSLATORS: the PARAM page's title: PARAM is the page's name.
     c.rule(r.y, tr("PARAM  L variables and E parameters"));
     std::vector<Line> lines;
-    lines.push_back(Line{}.add(std::string(" ") + tr("Type L5=2 or E80000=18000 to set a value; PgUp/PgDn scroll."), Style::dim));
+    lines.push_back(Line{}.add(
+        std::string(" ") + tr("Type L5=2 or E80000=18000 to set a value; PgUp/PgDn scroll."),
+        Style::dim));
     int cols = r.w >= 100 ? 6 : 4;
     lines.push_back(Line{}.add(std::string(" ") + tr("Local variables L0-L19"), Style::title));
     l_block(lines, in.lvars(), 0, 19, cols);
     lines.push_back(Line{}.add(std::string(" ") + tr("Global variables L100-L199"), Style::title));
     l_block(lines, in.lvars(), 100, 199, cols);
-    lines.push_back(Line{}.add(std::string(" ") + tr("E parameters written by the programs"), Style::title));
-    if (in.e_written().empty()) lines.push_back(Line{}.add(std::string("   ") + tr("none yet"), Style::dim));
+    lines.push_back(
+        Line{}.add(std::string(" ") + tr("E parameters written by the programs"), Style::title));
+    if (in.e_written().empty())
+        lines.push_back(Line{}.add(std::string("   ") + tr("none yet"), Style::dim));
     for (const auto& [n, val] : in.e_written())
-        lines.push_back(Line{}.add("   " + pad("E" + std::to_string(n), 9), Style::dim).add(std::to_string(val), Style::value));
+        lines.push_back(Line{}
+                            .add("   " + pad("E" + std::to_string(n), 9), Style::dim)
+                            .add(std::to_string(val), Style::value));
     draw_lines(lines, v.scroll, c, Rect{r.x, r.y + 1, r.w, r.h - 1});
 }
 

@@ -12,7 +12,10 @@ namespace {
 
 std::string spindle_text(const Sim& s) {
     char buf[96];
-    const char* dir = s.spindle_dir() == 3 ? "M03" : s.spindle_dir() == 4 ? "M04" : s.spindle_dir() == 19 ? "M19" : "M05";
+    const char* dir = s.spindle_dir() == 3    ? "M03"
+                      : s.spindle_dir() == 4  ? "M04"
+                      : s.spindle_dir() == 19 ? "M19"
+                                              : "M05";
     std::string out = strf(tr("%.0f rev/min  %s"), s.rpm(), dir);
     if (s.spindle_range() >= 40) out += "  M" + std::to_string(s.spindle_range());
     const Modal& m = s.interp().modal();
@@ -26,7 +29,8 @@ std::string spindle_text(const Sim& s) {
 std::string feed_text(const Sim& s) {
     const Modal& m = s.interp().modal();
     const char* unit = m.feed_mode == 95 ? tr("mm/rev") : m.feed_mode == 93 ? "1/min" : "mm/min";
-    return strf(tr("%.0f mm/min now   programmed F%g %s (G%d)"), s.feed(), m.feed, unit, m.feed_mode);
+    return strf(tr("%.0f mm/min now   programmed F%g %s (G%d)"), s.feed(), m.feed, unit,
+                m.feed_mode);
 }
 
 // Large digits for a big terminal, three rows high, as a panel's position
@@ -80,7 +84,8 @@ int axes_table(const View& v, Canvas& c, const Rect& r, bool om_first) {
     const int w0 = big ? 40 : 14;
     // TRANSLATORS: column headers of the position page, at most 13 columns
     // each: the machine coordinates (OM), the program's (OP), the distance to go.
-    std::string h1 = om_first ? tr("OM machine") : tr("OP program"), h2 = om_first ? tr("OP program") : tr("OM machine");
+    std::string h1 = om_first ? tr("OM machine") : tr("OP program"),
+                h2 = om_first ? tr("OP program") : tr("OM machine");
     c.text_right(cx[0], y, w0, h1, Style::dim);
     c.text_right(cx[1], y, 14, h2, Style::dim);
     c.text_right(cx[2], y, 14, tr("to go"), Style::dim);
@@ -94,8 +99,10 @@ int axes_table(const View& v, Canvas& c, const Rect& r, bool om_first) {
         if (!s.interp().homed(a)) c.text(2 + columns(name) + 1, row, "*", Style::warn);
         double vo = s.to_display(a, op[size_t(a)]), vm = s.to_display(a, om[size_t(a)]);
         double vg = s.to_display(a, go[size_t(a)]);
-        if (big) big_text(c, cx[0] + w0, y, fmt_axis(a, om_first ? vm : vo), Style::big);
-        else c.text_right(cx[0], y, w0, fmt_axis(a, om_first ? vm : vo), Style::big);
+        if (big)
+            big_text(c, cx[0] + w0, y, fmt_axis(a, om_first ? vm : vo), Style::big);
+        else
+            c.text_right(cx[0], y, w0, fmt_axis(a, om_first ? vm : vo), Style::big);
         c.text_right(cx[1], row, 14, fmt_axis(a, om_first ? vo : vm), Style::value);
         c.text_right(cx[2], row, 14, fmt_axis(a, vg), Style::value);
         y += big ? 4 : 1;
@@ -123,12 +130,14 @@ struct Rows {
 // workshop's electric probe is in the spindle.
 void tool_rows(const Sim& s, Rows& rows) {
     std::string tool = "T" + std::to_string(s.tool()) + "  D" + std::to_string(s.corrector());
-    if (s.m7() || s.m8()) tool += std::string("  ") + (s.m7() ? "M07 " : "") + (s.m8() ? "M08" : "");
+    if (s.m7() || s.m8())
+        tool += std::string("  ") + (s.m7() ? "M07 " : "") + (s.m8() ? "M08" : "");
     rows.add(tr("Tool"), tool);
     if (const workshop::Workshop* w = s.shop(); w && w->probe_in_use()) {
         bool lit = w->probe_contact(s.om());
         const Canvas& c = rows.c;
-        // TRANSLATORS: OP page: the touch probe's lamp, lit or not; at most 9 columns for the label.
+        // TRANSLATORS: OP page: the touch probe's lamp, lit or not; at most 9 columns for the
+        // label.
         rows.add(tr("Probe"),
                  lit ? (c.ascii() ? std::string("* ") : std::string("\u25cf ")) + tr("contact")
                      : (c.ascii() ? std::string("o ") : std::string("\u25cb ")) + tr("open"),
@@ -141,11 +150,13 @@ void tool_rows(const Sim& s, Rows& rows) {
 void program_rows(const View& v, Rows& rows) {
     const Sim& s = *v.sim;
     const Loc& l = s.loc();
-    std::string where = s.selected() >= 0 ? "%" + std::to_string(s.selected()) : tr("no program selected");
+    std::string where =
+        s.selected() >= 0 ? "%" + std::to_string(s.selected()) : tr("no program selected");
     if (l.line > 0) {
         const ProgramText* t = s.text_of(l.prog);
         bool imd = (t && t->file == "IMD") || l.prog == 0;
-        where += "   " + (imd ? strf(tr("at IMD line %d"), l.line) : strf(tr("at %%%d line %d"), l.prog, l.line));
+        where += "   " + (imd ? strf(tr("at IMD line %d"), l.line)
+                              : strf(tr("at %%%d line %d"), l.prog, l.line));
         if (l.n >= 0) where += "  N" + std::to_string(l.n);
     }
     rows.add(tr("Program"), where);

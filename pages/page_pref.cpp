@@ -22,15 +22,20 @@ int origins_table(const View& v, Canvas& c, const Rect& r) {
     const int w = 10;
     // TRANSLATORS: a column header of the PREF page (the tool gauge): at most 9 columns.
     const char* heads[] = {"PREF", "DEC1", "DEC3", "G59", tr("gauge"), "OM", "OP"};
-    for (int i = 0; i < 7; ++i) c.text_right(4 + i * w, y, w, heads[i], i < 3 ? Style::title : Style::dim);
+    for (int i = 0; i < 7; ++i)
+        c.text_right(4 + i * w, y, w, heads[i], i < 3 ? Style::title : Style::dim);
     ++y;
     Axes om = s.om(), op = s.op();
     for (int a = 0; a < kAxes && y < r.y + r.h - 6; ++a) {
         if (!m.has(a)) continue;
         std::string name(1, kAxisNames[size_t(a)]);
         c.text(2, y, name, Style::title);
-        const double vals[] = {f.pref[size_t(a)],  f.dec1[size_t(a)],          f.dec3[size_t(a)],
-                               f.g59[size_t(a)],   f.gauge[size_t(a)],         s.to_display(a, om[size_t(a)]),
+        const double vals[] = {f.pref[size_t(a)],
+                               f.dec1[size_t(a)],
+                               f.dec3[size_t(a)],
+                               f.g59[size_t(a)],
+                               f.gauge[size_t(a)],
+                               s.to_display(a, om[size_t(a)]),
                                s.to_display(a, op[size_t(a)])};
         for (int i = 0; i < 7; ++i) {
             bool pending = false;
@@ -41,7 +46,10 @@ int origins_table(const View& v, Canvas& c, const Rect& r) {
             // OM and OP show the lathe's X as the OP page does: a diameter.
             bool dia = i >= 5 && a == X && m.lathe && s.to_display(X, 1.0) != 1.0;
             std::string t = (dia ? "\u00f8" : "") + fmt_axis(a, vals[i]) + (pending ? "*" : "");
-            c.text_right(4 + i * w, y, w, t, pending ? Style::warn : i < 3 ? Style::value : Style::normal);
+            c.text_right(4 + i * w, y, w, t,
+                         pending ? Style::warn
+                         : i < 3 ? Style::value
+                                 : Style::normal);
         }
         ++y;
     }
@@ -60,13 +68,19 @@ void setting_notes(const View& v, Canvas& c, const Rect& r, int y) {
     std::string d = strf(tr("active corrector D%d, tool T%d"), s.corrector(), s.tool());
     std::string waiting;
     for (int a = 0; a < kAxes; ++a)
-        if (m.has(a) && in.gauge_pending(a) && std::abs(in.active_gauge(a) - f.gauge[size_t(a)]) > 5e-7)
+        if (m.has(a) && in.gauge_pending(a) &&
+            std::abs(in.active_gauge(a) - f.gauge[size_t(a)]) > 5e-7)
             waiting += std::string(waiting.empty() ? "" : " ") + kAxisNames[size_t(a)];
-    if (!waiting.empty()) d += strf(tr("; its gauge on %s applies at the next move or touch-off"), waiting.c_str());
-    for (const auto& part : wrap_text(d, r.w - 2)) c.text(2, y++, part, waiting.empty() ? Style::dim : Style::warn);
+    if (!waiting.empty())
+        d += strf(tr("; its gauge on %s applies at the next move or touch-off"), waiting.c_str());
+    for (const auto& part : wrap_text(d, r.w - 2))
+        c.text(2, y++, part, waiting.empty() ? Style::dim : Style::warn);
     if (m.lathe && s.to_display(X, 1.0) != 1.0)
-        c.text(2, y++, strf(tr("X: PREF, DEC1, DEC3, G59 and the gauge are radii; OM and OP diameters (%s)."), "\u00f8"),
-               Style::dim, r.w - 2);
+        c.text(
+            2, y++,
+            strf(tr("X: PREF, DEC1, DEC3, G59 and the gauge are radii; OM and OP diameters (%s)."),
+                 "\u00f8"),
+            Style::dim, r.w - 2);
     if (!v.last_setting.empty()) {
         // The last touch-off or measurement with its arithmetic, whole (the
         // message line may cut it at 80 columns).
@@ -77,20 +91,25 @@ void setting_notes(const View& v, Canvas& c, const Rect& r, int y) {
         for (const auto& part : wrap_text(v.last_setting, r.w - lx - 2))
             if (y < r.y + r.h - 6) c.text(lx, y++, part, Style::value);
     }
-    if (!v.pending.empty()) c.text(2, y++, tr("* changed during the run: applies at the next move"), Style::warn, r.w - 2);
+    if (!v.pending.empty())
+        c.text(2, y++, tr("* changed during the run: applies at the next move"), Style::warn,
+               r.w - 2);
 }
 
 // The touch-off help and the memory protection, on the page's last rows.
 void touch_off_help(const View& v, Canvas& c, const Rect& r) {
     const MachineProfile& m = v.sim->machine();
     int by = r.y + r.h - 5;
-    c.text(2, by, tr("Touch-off: jog the tool onto the part, then type the coordinate of the"), Style::dim, r.w - 2);
+    c.text(2, by, tr("Touch-off: jog the tool onto the part, then type the coordinate of the"),
+           Style::dim, r.w - 2);
     c.text(2, by + 1,
            m.lathe ? tr("surface: Z 0 (the face), X 59.978 (a diameter), or :touch Z 0.")
                    : tr("surface: Z 0 (the face), X 0, or :touch Z 0."),
            Style::dim, r.w - 2);
-    c.text(2, by + 2, tr("Direct entry: PREF.Z=-300  DEC1.X=2  DEC3.Z=0.5    Undo: C-z, :undo"), Style::dim, r.w - 2);
-    std::string state = v.protect ? tr("memory protection ON (:protect off)") : tr("memory protection off");
+    c.text(2, by + 2, tr("Direct entry: PREF.Z=-300  DEC1.X=2  DEC3.Z=0.5    Undo: C-z, :undo"),
+           Style::dim, r.w - 2);
+    std::string state =
+        v.protect ? tr("memory protection ON (:protect off)") : tr("memory protection off");
     if (v.undo_depth) state += "   " + strf(tr("%zu change(s) to undo"), v.undo_depth);
     c.text(2, by + 3, state, v.protect ? Style::warn : Style::dim);
 }

@@ -17,7 +17,9 @@ void page_program(const View& v, Canvas& c, const Rect& r) {
     }
     c.rule(r.y, title);
     if (!p) {
-        c.text(2, r.y + 2, tr("No program selected: choose one on the DIR page (F6) or type :load N."), Style::dim);
+        c.text(2, r.y + 2,
+               tr("No program selected: choose one on the DIR page (F6) or type :load N."),
+               Style::dim);
         return;
     }
     int rows = r.h - 1;

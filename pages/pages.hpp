@@ -19,9 +19,9 @@ void page_param(const View& v, Canvas& c, const Rect& r);
 void page_dir(const View& v, Canvas& c, const Rect& r);
 void page_alarm(const View& v, Canvas& c, const Rect& r);
 void page_help(const View& v, Canvas& c, const Rect& r);
-void page_pref(const View& v, Canvas& c, const Rect& r);   // origins, touch-off
-void page_corr(const View& v, Canvas& c, const Rect& r);   // tool correctors, measurement
-void page_edit(const View& v, Canvas& c, const Rect& r);   // EDIT and MODIF
+void page_pref(const View& v, Canvas& c, const Rect& r);     // origins, touch-off
+void page_corr(const View& v, Canvas& c, const Rect& r);     // tool correctors, measurement
+void page_edit(const View& v, Canvas& c, const Rect& r);     // EDIT and MODIF
 void page_history(const View& v, Canvas& c, const Rect& r);  // a program's revisions
 
 // A line of a long page: styled parts, optionally the whole row restyled.

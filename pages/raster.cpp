@@ -1,10 +1,11 @@
 // The dot raster (see raster.hpp).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "pages/raster.hpp"
-#include "core/geometry/geometry.hpp"
 
 #include <algorithm>
 #include <cmath>
+
+#include "core/geometry/geometry.hpp"
 
 namespace pupitre::pages {
 

@@ -21,24 +21,33 @@ namespace {
 const char* state_text(RunState st) {
     switch (st) {
         // TRANSLATORS: run states on the status line: at most 6 columns each.
-        case RunState::idle: return tr("READY");
+        case RunState::idle:
+            return tr("READY");
         // TRANSLATORS: run state (a program runs), at most 6 columns.
-        case RunState::running: return tr("CYCLE");
+        case RunState::running:
+            return tr("CYCLE");
         // TRANSLATORS: run state (feed hold), at most 6 columns.
-        case RunState::hold: return tr("HOLD");
+        case RunState::hold:
+            return tr("HOLD");
         // TRANSLATORS: run state (single block: waits for the next), at most 6 columns.
-        case RunState::block: return tr("BLOCK");
+        case RunState::block:
+            return tr("BLOCK");
         // TRANSLATORS: run state (M00/M01 stop), at most 6 columns.
-        case RunState::stopped: return tr("STOP");
+        case RunState::stopped:
+            return tr("STOP");
         // TRANSLATORS: run state (end of program), at most 6 columns.
-        case RunState::ended: return tr("END");
+        case RunState::ended:
+            return tr("END");
         // TRANSLATORS: run state, at most 6 columns.
-        case RunState::alarm: return tr("ALARM");
+        case RunState::alarm:
+            return tr("ALARM");
     }
     return "?";
 }
 
-constexpr std::string_view kPageWords[] = {"om", "op", "prog", "info", "param", "dir", "alarm", "help", "pref", "corr", "edit", "graph", "history"};
+constexpr std::string_view kPageWords[] = {"om",   "op",    "prog",   "info", "param",
+                                           "dir",  "alarm", "help",   "pref", "corr",
+                                           "edit", "graph", "history"};
 
 void status_line(const View& v, Canvas& c) {
     const Sim& s = *v.sim;
@@ -49,26 +58,31 @@ void status_line(const View& v, Canvas& c) {
     std::string prog = s.selected() >= 0 ? "%" + std::to_string(s.selected()) : "%-";
     x += c.text(x + 1, 0, prog, Style::status) + 1;
     const Loc& l = s.loc();
-    std::string n = l.n >= 0 ? "N" + std::to_string(l.n) : l.line > 0 ? strf(tr("line %d"), l.line) : "";
+    std::string n = l.n >= 0     ? "N" + std::to_string(l.n)
+                    : l.line > 0 ? strf(tr("line %d"), l.line)
+                                 : "";
     if (!n.empty()) x += c.text(x + 1, 0, n, Style::status) + 1;
     RunState st = s.state();
-    Style ss = st == RunState::alarm ? Style::alarm
+    Style ss = st == RunState::alarm     ? Style::alarm
                : st == RunState::running ? Style::ok
-               : (st == RunState::hold || st == RunState::stopped || st == RunState::block) ? Style::warn
-                                                                                            : Style::status;
+               : (st == RunState::hold || st == RunState::stopped || st == RunState::block)
+                   ? Style::warn
+                   : Style::status;
     x += 1;
     // TRANSLATORS: status line, the alarm in force with its number.
     std::string state = s.alarm_active() ? strf(tr("ALARM %d"), s.alarms().back().diag.code)
                                          : std::string(state_text(st));
     x += c.text(x + 1, 0, " " + state + " ", ss) + 1;
     // The mode key's next mode (F8 cycles them; the HELP page lists them).
-    c.text(x + 2, 0, std::string("F8") + (c.ascii() ? ">" : "→") + std::string(mode_name(next_mode(s.mode(), 1))),
+    c.text(x + 2, 0,
+           std::string("F8") + (c.ascii() ? ">" : "→") +
+               std::string(mode_name(next_mode(s.mode(), 1))),
            Style::status);
     // TRANSLATORS: status line, memory protection on: at most 5 columns.
     std::string lock = v.protect ? std::string(tr("LOCK")) + " " : "";
     char right[112];
-    std::snprintf(right, sizeof right, "%s%s F%d%% S%d%%%s%s %s ", lock.c_str(), v.machine.c_str(), s.feed_override,
-                  s.spindle_override, s.interp().options().block_skip ? " /" : "",
+    std::snprintf(right, sizeof right, "%s%s F%d%% S%d%%%s%s %s ", lock.c_str(), v.machine.c_str(),
+                  s.feed_override, s.spindle_override, s.interp().options().block_skip ? " /" : "",
                   s.interp().options().optional_stop ? " M01" : "", v.speed.c_str());
     c.text_right(0, 0, c.width(), right, Style::status);
 }
@@ -94,7 +108,9 @@ void softkeys(const View& v, Canvas& c, int y) {
 
 }  // namespace
 
-std::string_view page_word(PageId p) { return kPageWords[int(p)]; }
+std::string_view page_word(PageId p) {
+    return kPageWords[int(p)];
+}
 
 bool parse_page(std::string_view word, PageId& out) {
     for (int i = 0; i < int(std::size(kPageWords)); ++i)
@@ -105,7 +121,9 @@ bool parse_page(std::string_view word, PageId& out) {
     return false;
 }
 
-std::string fmt_len(double v) { return fixed3_zeroed(v, 0.0005); }
+std::string fmt_len(double v) {
+    return fixed3_zeroed(v, 0.0005);
+}
 
 std::string fmt_axis(int axis, double v) {
     char buf[32];
@@ -133,7 +151,8 @@ void too_small(const View& v, Canvas& c) {
     int y0 = std::max(0, (c.height() - n) / 2);
     for (int i = 0; i < n && y0 + i < c.height(); ++i) {
         int w = columns(lines[i]);
-        c.text(std::max(0, (c.width() - w) / 2), y0 + i, lines[i], i == 0 ? Style::alarm : Style::normal, c.width());
+        c.text(std::max(0, (c.width() - w) / 2), y0 + i, lines[i],
+               i == 0 ? Style::alarm : Style::normal, c.width());
     }
 }
 
@@ -167,18 +186,30 @@ void render_screen(const View& v, Canvas& c) {
 void render_page(const View& v, Canvas& c, const Rect& r) {
     switch (v.page) {
         case PageId::om:
-        case PageId::op: return page_position(v, c, r);
-        case PageId::prog: return page_program(v, c, r);
-        case PageId::info: return page_info(v, c, r);
-        case PageId::param: return page_param(v, c, r);
-        case PageId::dir: return page_dir(v, c, r);
-        case PageId::alarm: return page_alarm(v, c, r);
-        case PageId::help: return page_help(v, c, r);
-        case PageId::pref: return page_pref(v, c, r);
-        case PageId::corr: return page_corr(v, c, r);
-        case PageId::edit: return page_edit(v, c, r);
-        case PageId::graph: return page_graph(v.graph, v.sim->machine(), c, r);
-        case PageId::history: return page_history(v, c, r);
+        case PageId::op:
+            return page_position(v, c, r);
+        case PageId::prog:
+            return page_program(v, c, r);
+        case PageId::info:
+            return page_info(v, c, r);
+        case PageId::param:
+            return page_param(v, c, r);
+        case PageId::dir:
+            return page_dir(v, c, r);
+        case PageId::alarm:
+            return page_alarm(v, c, r);
+        case PageId::help:
+            return page_help(v, c, r);
+        case PageId::pref:
+            return page_pref(v, c, r);
+        case PageId::corr:
+            return page_corr(v, c, r);
+        case PageId::edit:
+            return page_edit(v, c, r);
+        case PageId::graph:
+            return page_graph(v.graph, v.sim->machine(), c, r);
+        case PageId::history:
+            return page_history(v, c, r);
     }
 }
 
@@ -213,8 +244,8 @@ void draw_lines(const std::vector<Line>& lines, int scroll, Canvas& c, const Rec
     }
     if (n > r.h) {
         // Where we are in a long page: "12-31/140" at the bottom right.
-        std::string where = std::to_string(scroll + 1) + "-" + std::to_string(std::min(n, scroll + r.h)) + "/" +
-                            std::to_string(n);
+        std::string where = std::to_string(scroll + 1) + "-" +
+                            std::to_string(std::min(n, scroll + r.h)) + "/" + std::to_string(n);
         c.text_right(r.x, r.y + r.h - 1, r.w, " " + where + " ", Style::dim);
     }
 }

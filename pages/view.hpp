@@ -13,7 +13,7 @@
 namespace pupitre::pages {
 
 enum class PageId { om, op, prog, info, param, dir, alarm, help, pref, corr, edit, graph, history };
-std::string_view page_word(PageId p);            // om, op, prog, …
+std::string_view page_word(PageId p);  // om, op, prog, …
 bool parse_page(std::string_view word, PageId& out);
 
 struct SoftKey {
@@ -49,17 +49,17 @@ struct HistoryRow {
 struct View {
     const Sim* sim = nullptr;
     const ProgramMemory* memory = nullptr;
-    std::string machine;    // profile name
+    std::string machine;  // profile name
     PageId page = PageId::op;
-    int scroll = 0;         // page scroll (lines) for long pages
+    int scroll = 0;  // page scroll (lines) for long pages
     // Bottom of the screen.
     std::string message;
     bool message_error = false;
-    std::string prompt;     // before the input line ("IMD> ", "> ")
+    std::string prompt;        // before the input line ("IMD> ", "> ")
     std::string mode_hint;     // what to do in this mode: Cycle Start, or the jog keys
     std::string mode_setting;  // the INC step or the JOG feed, "" in other modes
-    std::string input;      // the input line text
-    int input_cursor = 0;   // in columns
+    std::string input;         // the input line text
+    int input_cursor = 0;      // in columns
     std::vector<SoftKey> softkeys;
     // Speed of the animation as the status line shows it ("x1", "x10", "max").
     std::string speed;

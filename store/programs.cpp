@@ -27,7 +27,6 @@ std::string_view kind_name(RevisionKind k) {
     return "save";
 }
 
-
 namespace {
 
 void bind_value(sql::Use& u, int i, int v) {

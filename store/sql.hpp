@@ -13,7 +13,7 @@ namespace pupitre::store::sql {
 // A cached statement in use: bound, stepped, and reset when it goes out of scope
 // so the next user finds it clean (and no read transaction stays open).
 class Use {
-public:
+  public:
     explicit Use(sqlite3_stmt* s) : s_(s) {}
     ~Use() {
         if (s_) {
@@ -61,7 +61,7 @@ public:
         return p ? std::string_view(static_cast<const char*>(p), size_t(n)) : std::string_view();
     }
 
-private:
+  private:
     sqlite3_stmt* s_;
 };
 

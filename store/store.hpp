@@ -152,7 +152,7 @@ struct ImdEntry {
 // One connection to a store file. Not shared between threads: a thread or a
 // process opens its own; SQLite serialises the writers (WAL, BEGIN IMMEDIATE).
 class Store {
-public:
+  public:
     // Opens (and on first use creates and seeds) the store at `path`. Never
     // modifies a file that is not a pupitre store, a store of a newer schema, or
     // a damaged one: those give bad_data.
@@ -223,7 +223,7 @@ public:
     // PRAGMA integrity_check: "ok" or the problems found.
     Result<std::string> integrity_check();
 
-private:
+  private:
     Store() = default;
     Error fail(int rc, std::string_view what);
     Error exec(const char* sql);

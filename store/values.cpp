@@ -282,14 +282,16 @@ Error Store::put_workshop(std::string_view machine, std::string_view setup, std:
                 sql::Use add(prepare(kInsertMachine, e));
                 if (!e) {
                     add.bind(1, machine).bind(2, "").bind(3, 0).bind(4, now_ms());
-                    if (int rc = add.step(); rc != SQLITE_DONE) e = fail(rc, tr("cannot store the workshop"));
+                    if (int rc = add.step(); rc != SQLITE_DONE)
+                        e = fail(rc, tr("cannot store the workshop"));
                 }
             }
         }
-        const char* sql = setup.empty() ? "DELETE FROM workshops WHERE machine = ?1"
-                                        : "INSERT INTO workshops (machine, setup, part, updated_ms, who) "
-                                          "VALUES (?1, ?2, ?3, ?4, ?5) ON CONFLICT (machine) DO UPDATE "
-                                          "SET setup = ?2, part = ?3, updated_ms = ?4, who = ?5";
+        const char* sql = setup.empty()
+                              ? "DELETE FROM workshops WHERE machine = ?1"
+                              : "INSERT INTO workshops (machine, setup, part, updated_ms, who) "
+                                "VALUES (?1, ?2, ?3, ?4, ?5) ON CONFLICT (machine) DO UPDATE "
+                                "SET setup = ?2, part = ?3, updated_ms = ?4, who = ?5";
         sql::Use u(e ? nullptr : prepare(sql, e));
         if (!e) {
             u.bind(1, machine);
@@ -310,7 +312,8 @@ Result<int64_t> Store::data_version() {
     sql::Use u(prepare("PRAGMA data_version", e));
     if ((r.error = e)) return r;
     int rc = u.step();
-    if (rc == SQLITE_ROW) r.value = u.i64(0);
+    if (rc == SQLITE_ROW)
+        r.value = u.i64(0);
     else
         r.error = fail(rc, tr("cannot read the data version"));
     return r;

@@ -3,19 +3,20 @@
 // contours by the radius-compensation offsets of core/comp.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/cycles/pocket46.hpp"
-#include "core/geometry/geometry.hpp"
-#include "core/i18n.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
+#include "core/geometry/geometry.hpp"
+#include "core/i18n.hpp"
+
 namespace pupitre::p46 {
 
 namespace {
-using ::pupitre::geometry::kPi;
-using ::pupitre::geometry::cross;
 using ::pupitre::geometry::ceil_um;
+using ::pupitre::geometry::cross;
+using ::pupitre::geometry::kPi;
 
 // Points along an element (its start excluded), chords within 0.1 µm of arcs.
 void tessellate(const Elem& e, std::vector<V2>& out) {
@@ -456,8 +457,9 @@ bool check(const Def& d, Error& err) {
         if (!check_chain56(d, err)) return false;
     }
     if (n.outer != 1)
-        return refuse(err, 283, n.outer == 0 ? tr("no outer profile (NU1, NU3 or NU5/NU6)")
-                                             : tr("more than one outer profile"));
+        return refuse(err, 283,
+                      n.outer == 0 ? tr("no outer profile (NU1, NU3 or NU5/NU6)")
+                                   : tr("more than one outer profile"));
     if (n.islands > 127) return refuse(err, 285, tr("more than 127 islands and recesses"));
     if (d.facing() && d.has_e)
         return refuse(err, 293, tr("a roughing end point (EX EY) in a facing"));
@@ -547,8 +549,7 @@ std::pair<size_t, bool> next_segment(const Region& reg, const std::vector<Seg>& 
 
 // The zig-zag passes: each segment once, the next one the nearest reached at
 // feed; the first from LX LY when given. Returns where the last one ends.
-V2 zigzag(const Def& d, const Region& reg, std::vector<Seg>& segs, V2 cur,
-          std::vector<Run>& runs) {
+V2 zigzag(const Def& d, const Region& reg, std::vector<Seg>& segs, V2 cur, std::vector<Run>& runs) {
     bool first = true;
     for (size_t left = segs.size(); left > 0; --left) {
         auto [best, rev] = next_segment(reg, segs, cur, d.q, first);

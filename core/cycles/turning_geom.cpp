@@ -3,11 +3,12 @@
 // profile), winding numbers with arcs, distances.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/cycles/turning_geom.hpp"
-#include "core/geometry/geometry.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+
+#include "core/geometry/geometry.hpp"
 
 namespace pupitre::turning::geom {
 
@@ -226,7 +227,6 @@ double dist(const Elem& e, const V2& p) {
     return (closest(e, p) - p).norm();
 }
 
-
 namespace {
 bool arc_has_dir(const Elem& e, const V2& dir) {
     return on_arc(e, V2(e.c + e.r() * dir));
@@ -345,13 +345,16 @@ bool self_intersects(const std::vector<Elem>& loop) {
     for (size_t i = 0; i < n; ++i) {
         const Elem& e = loop[i];
         double r = e.arc ? e.r() : 0;
-        V2 lo = e.arc ? V2(e.c.x() - r, e.c.y() - r) : V2(std::min(e.a.x(), e.b.x()), std::min(e.a.y(), e.b.y()));
-        V2 hi = e.arc ? V2(e.c.x() + r, e.c.y() + r) : V2(std::max(e.a.x(), e.b.x()), std::max(e.a.y(), e.b.y()));
+        V2 lo = e.arc ? V2(e.c.x() - r, e.c.y() - r)
+                      : V2(std::min(e.a.x(), e.b.x()), std::min(e.a.y(), e.b.y()));
+        V2 hi = e.arc ? V2(e.c.x() + r, e.c.y() + r)
+                      : V2(std::max(e.a.x(), e.b.x()), std::max(e.a.y(), e.b.y()));
         box[i] = {lo.x() - pad, hi.x() + pad, lo.y() - pad, hi.y() + pad};
     }
     std::vector<size_t> order(n);
     for (size_t i = 0; i < n; ++i) order[i] = i;
-    std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return box[a].x0 < box[b].x0; });
+    std::sort(order.begin(), order.end(),
+              [&](size_t a, size_t b) { return box[a].x0 < box[b].x0; });
     std::vector<V2> pts;
     for (size_t oi = 0; oi < n; ++oi) {
         for (size_t oj = oi + 1; oj < n && box[order[oj]].x0 <= box[order[oi]].x1; ++oj) {

@@ -6,9 +6,9 @@
 #include <cmath>
 
 #include "core/cycles/turning.hpp"
-#include "core/geometry/geometry.hpp"
 #include "core/cycles/turning_geom.hpp"
 #include "core/cycles/turning_zone.hpp"
+#include "core/geometry/geometry.hpp"
 #include "core/i18n.hpp"
 
 namespace pupitre::turning {
@@ -62,13 +62,16 @@ bool first_contact(const Material& m, const V2& s, const V2& u, double limit, V2
 // Where the level y, followed from x0 towards x1 (direction d), leaves the
 // part: x0 when it is not inside, else the first crossing of the profile
 // after which the level is out of it (x1 when it never is).
-double leave_part(const std::vector<Elem>& F, const std::vector<Elem>& loop, double y, double x0, double x1,
-                  int d) {
-    auto inside = [&](double x) { return !on_loop(loop, V2(x, y)) && winding(loop, V2(x, y)) != 0; };
+double leave_part(const std::vector<Elem>& F, const std::vector<Elem>& loop, double y, double x0,
+                  double x1, int d) {
+    auto inside = [&](double x) {
+        return !on_loop(loop, V2(x, y)) && winding(loop, V2(x, y)) != 0;
+    };
     if (!inside(x0)) return x0;
     std::vector<double> xs;
     for (const Elem& e : F) cross_h(e, y, xs);
-    xs.erase(std::remove_if(xs.begin(), xs.end(), [&](double x) { return (x - x0) * d <= kTol || (x1 - x) * d < 0; }),
+    xs.erase(std::remove_if(xs.begin(), xs.end(),
+                            [&](double x) { return (x - x0) * d <= kTol || (x1 - x) * d < 0; }),
              xs.end());
     std::sort(xs.begin(), xs.end(), [d](double a, double b) { return a * d < b * d; });
     xs.push_back(x1);

@@ -2,16 +2,15 @@
 // between the stock and the finished profile translated by the allowances; and
 // G63 roughing with grooves (§6.5), the same passes entering grooves.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include <algorithm>
-#include <functional>
-#include <cmath>
-
 #include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <functional>
 
 #include "core/cycles/turning.hpp"
-#include "core/geometry/geometry.hpp"
 #include "core/cycles/turning_geom.hpp"
 #include "core/cycles/turning_zone.hpp"
+#include "core/geometry/geometry.hpp"
 #include "core/i18n.hpp"
 
 namespace pupitre::turning {
@@ -151,8 +150,11 @@ int check_g64(const Profile& fin, const std::vector<V2>& stock, const std::vecto
         why = tr("no stock point between G64 and G80");
         return 872;
     }
-    if (int e = zone::check_axis(fin.elems, N_("the finished profile crosses the spindle axis (X below 0)"), why)) return e;
-    if (int e = zone::check_axis(bs, N_("the stock crosses the spindle axis (X below 0)"), why)) return e;
+    if (int e = zone::check_axis(
+            fin.elems, N_("the finished profile crosses the spindle axis (X below 0)"), why))
+        return e;
+    if (int e = zone::check_axis(bs, N_("the stock crosses the spindle axis (X below 0)"), why))
+        return e;
     return 0;
 }
 
@@ -199,10 +201,12 @@ void add_land_levels(const Material& m, double y_top, std::vector<double>& ys) {
     const double y_last = ys.back();
     for (const Elem& f : m.F) {
         const Elem e = translated(f, m.t);
-        if (e.arc || std::fabs(e.a.y() - e.b.y()) > kTol || std::fabs(e.a.x() - e.b.x()) <= kUm) continue;
+        if (e.arc || std::fabs(e.a.y() - e.b.y()) > kTol || std::fabs(e.a.x() - e.b.x()) <= kUm)
+            continue;
         const double y = e.a.y();
         if (y >= y_top - kUm || y <= y_last + kUm) continue;
-        if (std::any_of(ys.begin(), ys.end(), [&](double l) { return std::fabs(l - y) <= kUm; })) continue;
+        if (std::any_of(ys.begin(), ys.end(), [&](double l) { return std::fabs(l - y) <= kUm; }))
+            continue;
         ys.insert(std::upper_bound(ys.begin(), ys.end(), y, std::greater<double>()), y);
     }
 }
@@ -258,14 +262,15 @@ struct Reach {
     double y_top, span;
     bool operator()(const V2& p) const {
         const V2 q(p.x(), p.y() + 1e-4);  // 0.1 µm above it
-        return m.in_M(q) && zone::seg_clear(m, V2(p.x() - d * span, q.y()), q) && zone::seg_clear(m, q, V2(p.x(), y_top));
+        return m.in_M(q) && zone::seg_clear(m, V2(p.x() - d * span, q.y()), q) &&
+               zone::seg_clear(m, q, V2(p.x(), y_top));
     }
 };
 
 // The stretches of the profile plus allowance that the passes reached, in the
 // order of the passes' direction, each as a list of elements.
-std::vector<std::vector<Elem>> reached_stretches(const Material& m, const std::vector<Elem>& fp, int d,
-                                                 double y_top) {
+std::vector<std::vector<Elem>> reached_stretches(const Material& m, const std::vector<Elem>& fp,
+                                                 int d, double y_top) {
     double span = y_top;
     for (const Elem& e : fp) span = std::max({span, std::fabs(e.a.x()), std::fabs(e.b.x())});
     const Reach reach{m, d, y_top, 4 * span + 100};
@@ -453,7 +458,8 @@ int g63_check(const Profile& fin, const G63Args& a, std::string& why) {
         return 876;
     }
     if (int e = zone::check_profile(fin, why)) return e;
-    return zone::check_axis(fin.elems, N_("the finished profile crosses the spindle axis (X below 0)"), why);
+    return zone::check_axis(fin.elems,
+                            N_("the finished profile crosses the spindle axis (X below 0)"), why);
 }
 
 // Angle of the profile where a pass enters a groove, from the pass direction

@@ -5,9 +5,9 @@
 #include <cmath>
 
 #include "core/cycles/turning.hpp"
-#include "core/geometry/geometry.hpp"
 #include "core/cycles/turning_geom.hpp"
 #include "core/cycles/turning_zone.hpp"
+#include "core/geometry/geometry.hpp"
 #include "core/i18n.hpp"
 
 namespace pupitre::turning {

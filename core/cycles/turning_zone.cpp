@@ -4,12 +4,13 @@
 // crossings), then sub-intervals are classified at their midpoints.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/cycles/turning_zone.hpp"
-#include "core/geometry/geometry.hpp"
-#include "core/i18n.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+
+#include "core/geometry/geometry.hpp"
+#include "core/i18n.hpp"
 
 namespace pupitre::turning::zone {
 
@@ -146,9 +147,12 @@ int YIndex::make(std::vector<int>& ids) {
     const double c = *mid;
     std::vector<int> below, above, here;
     for (int i : ids) {
-        if (hi_[size_t(i)] < c) below.push_back(i);
-        else if (lo_[size_t(i)] > c) above.push_back(i);
-        else here.push_back(i);
+        if (hi_[size_t(i)] < c)
+            below.push_back(i);
+        else if (lo_[size_t(i)] > c)
+            above.push_back(i);
+        else
+            here.push_back(i);
     }
     int k = int(nodes_.size());
     nodes_.emplace_back();
@@ -205,11 +209,13 @@ void ray_crossings(const Elem& e, double Y, std::vector<std::pair<double, int>>&
         out.push_back({x, q.y() > p.y() ? 1 : -1});
     };
     if (!e.arc) return piece(e.a, e.b, 0);
-    const double r = e.r(), t0 = std::atan2(e.a.y() - e.c.y(), e.a.x() - e.c.x()), t1 = t0 + e.sweep;
+    const double r = e.r(), t0 = std::atan2(e.a.y() - e.c.y(), e.a.x() - e.c.x()),
+                 t1 = t0 + e.sweep;
     const double lo = std::min(t0, t1), hi = std::max(t0, t1), eps = 1e-12;
     std::vector<double> ts{t0};
     // The angles pi/2 + k pi strictly inside the sweep, in the sense of travel.
-    for (double t = kPi / 2 + std::ceil((lo + eps - kPi / 2) / kPi) * kPi; t < hi - eps; t += kPi) ts.push_back(t);
+    for (double t = kPi / 2 + std::ceil((lo + eps - kPi / 2) / kPi) * kPi; t < hi - eps; t += kPi)
+        ts.push_back(t);
     if (e.sweep < 0) std::reverse(ts.begin() + 1, ts.end());
     ts.push_back(t1);
     V2 p = e.a;
@@ -264,8 +270,9 @@ std::vector<Cut> line_cuts(const Material& m, double Y, const std::vector<int>& 
 // is tested only while it can hold one; else the winding number right of x,
 // the sum of the crossings beyond it.
 class InsideSweep {
-public:
-    InsideSweep(const Material& m, double Y, const std::vector<int>& near, std::vector<std::pair<double, int>>& ray)
+  public:
+    InsideSweep(const Material& m, double Y, const std::vector<int>& near,
+                std::vector<std::pair<double, int>>& ray)
         : m_(m), Y_(Y), ray_(ray) {
         std::sort(ray.begin(), ray.end());
         beyond_.assign(ray_.size() + 1, 0);
@@ -275,7 +282,8 @@ public:
     }
 
     bool operator()(double x) {
-        while (next_ < by_lo_.size() && by_lo_[next_].first <= x) active_.push_back(by_lo_[next_++].second);
+        while (next_ < by_lo_.size() && by_lo_[next_].first <= x)
+            active_.push_back(by_lo_[next_++].second);
         V2 q(x, Y_);
         for (size_t k = 0; k < active_.size();) {
             int i = active_[k];
@@ -291,7 +299,7 @@ public:
         return beyond_[size_t(it - ray_.begin())] != 0;
     }
 
-private:
+  private:
     double x_lo(int i) const {
         const Elem& e = m_.M[size_t(i)];
         return (e.arc ? e.c.x() - e.r() : std::min(e.a.x(), e.b.x())) - 10 * kTol;
@@ -378,7 +386,8 @@ namespace {
 // Whether a vertical from (x, y0) up to y1 meets A changes only at the ends
 // of A's boundary curves, at their extremes along x and where they cross y0
 // or y1: those x strictly between x0 and x1, with x0 and x1, sorted along d.
-std::vector<double> critical_xs(const Material& m, double y0, double y1, double x0, double x1, int d) {
+std::vector<double> critical_xs(const Material& m, double y0, double y1, double x0, double x1,
+                                int d) {
     auto between = [&](double x) { return (x - x0) * d > kTol && (x1 - x) * d > kTol; };
     std::vector<double> cuts{x0, x1}, xs;
     for (const Elem& e : m.U) {
@@ -438,7 +447,8 @@ bool seg_clear(const Material& m, const V2& p, const V2& q) {
         return std::fabs(geometry::cross(d, x - e.a)) <= kTol * d.norm();
     };
     for (const Elem& e : m.F)
-        if (!e.arc && (e.b - e.a).norm() > kTol && on_line(e, p) && on_line(e, q)) along.push_back(&e);
+        if (!e.arc && (e.b - e.a).norm() > kTol && on_line(e, p) && on_line(e, q))
+            along.push_back(&e);
     auto on_wall = [&](const V2& x) {
         for (const Elem* e : along)
             if (dist(*e, x) <= kTol) return true;
@@ -461,7 +471,8 @@ bool seg_clear(const Material& m, const V2& p, const V2& q) {
         intersect(e, s, pts);
         for (const V2& x : pts) {
             double t = (x - p).dot(q - p) / (len * len);
-            if (t * len > kTol && (1 - t) * len > kTol && !on_wall(x)) return false;  // into the part
+            if (t * len > kTol && (1 - t) * len > kTol && !on_wall(x))
+                return false;  // into the part
         }
     }
     for (const Elem& e : m.U) {
@@ -481,8 +492,8 @@ bool seg_clear(const Material& m, const V2& p, const V2& q) {
 }
 
 // The stretches of [x0, x1] where the vertical from Y up by h stays out of A.
-std::vector<std::pair<double, double>> clear_runs(const Material& m, double Y, double h, double x0, double x1,
-                                                  int d) {
+std::vector<std::pair<double, double>> clear_runs(const Material& m, double Y, double h, double x0,
+                                                  double x1, int d) {
     if ((x1 - x0) * d <= kTol || h <= kTol) return {{x0, x1}};
     const std::vector<double> cuts = critical_xs(m, Y + kUm, Y + h, x0, x1, d);
     std::vector<std::pair<double, double>> runs;
@@ -491,14 +502,17 @@ std::vector<std::pair<double, double>> clear_runs(const Material& m, double Y, d
         if (std::fabs(cuts[j + 1] - cuts[j]) <= kTol) continue;
         double mid = (cuts[j] + cuts[j + 1]) / 2;
         bool clear = seg_clear(m, V2(mid, Y + kUm), V2(mid, Y + h));
-        if (clear && open) runs.back().second = cuts[j + 1];
-        else if (clear) runs.push_back({cuts[j], cuts[j + 1]});
+        if (clear && open)
+            runs.back().second = cuts[j + 1];
+        else if (clear)
+            runs.push_back({cuts[j], cuts[j + 1]});
         open = clear;
     }
     return runs;
 }
 
-std::pair<double, double> clear_below(const Material& m, double Y, double h, double x0, double x1, int d) {
+std::pair<double, double> clear_below(const Material& m, double Y, double h, double x0, double x1,
+                                      int d) {
     auto runs = clear_runs(m, Y, h, x0, x1, d);
     return runs.empty() ? std::pair<double, double>{x0, x0} : runs.front();
 }

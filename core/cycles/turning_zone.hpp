@@ -23,13 +23,15 @@ enum Kind { kStock = 0, kClosing = 1, kProfile = 2 };
 // meet. A centred interval tree: a G64 on a stock of thousands of points asks
 // hundreds of thousands of level lines, each meeting a few elements.
 class YIndex {
-public:
+  public:
     void build(const std::vector<Elem>& es, double pad);
-    bool built_for(const std::vector<Elem>& es) const { return src_ == es.data() && n_ == es.size(); }
+    bool built_for(const std::vector<Elem>& es) const {
+        return src_ == es.data() && n_ == es.size();
+    }
     // Appends the elements whose extent, widened by the pad, holds y.
     void query(double y, std::vector<int>& out) const;
 
-private:
+  private:
     struct Node {
         double c = 0;
         int left = -1, right = -1;
@@ -94,10 +96,11 @@ bool seg_clear(const Material& m, const V2& p, const V2& q);
 // where less than the clearance is left above it, and starts, under an
 // overhang on its own side, where it is left (issue 19 item 1: no retract or
 // return rapid of G65 or G63 enters the part plus its allowance).
-std::pair<double, double> clear_below(const Material& m, double Y, double h, double x0, double x1, int d);
+std::pair<double, double> clear_below(const Material& m, double Y, double h, double x0, double x1,
+                                      int d);
 // All the runs of x between x0 and x1 where that vertical segment is clear.
-std::vector<std::pair<double, double>> clear_runs(const Material& m, double Y, double h, double x0, double x1,
-                                                  int d);
+std::vector<std::pair<double, double>> clear_runs(const Material& m, double Y, double h, double x0,
+                                                  double x1, int d);
 
 // 0, or 871 with `why` when the profile is empty or not continuous.
 int check_profile(const Profile& f, std::string& why);

@@ -3,10 +3,11 @@
 // outside corners (S4 L757), error 149 when the tool does not fit (000:13293).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/geometry/comp.hpp"
-#include "core/geometry/geometry.hpp"
 
 #include <cmath>
 #include <numbers>
+
+#include "core/geometry/geometry.hpp"
 
 namespace pupitre::comp {
 
@@ -28,9 +29,11 @@ namespace {
 using ::pupitre::geometry::kPi;
 constexpr double kEps = 1e-7;
 
-using ::pupitre::geometry::perp;
 using ::pupitre::geometry::cross;
-double sgn(double v) { return v < 0 ? -1.0 : 1.0; }
+using ::pupitre::geometry::perp;
+double sgn(double v) {
+    return v < 0 ? -1.0 : 1.0;
+}
 
 // Angle travelled from u to v about the origin, turning in direction s (+1 ccw,
 // -1 cw), in [0, 2π).
@@ -127,7 +130,9 @@ V2 end_tangent(const Elem& e) {
     return sgn(e.sweep) * perp(e.b - e.c).normalized();
 }
 
-V2 normal(const V2& t, int side) { return double(side) * perp(t); }
+V2 normal(const V2& t, int side) {
+    return double(side) * perp(t);
+}
 
 bool offset(const Elem& e, double radius, int side, Elem& out) {
     out = e;
@@ -168,7 +173,8 @@ int join(const Elem& p, const V2& from, const Elem& next, double radius, int sid
         arc.connecting = true;
         arc.to = no.a;
         arc.c = corner;
-        double ang = std::fabs(std::atan2(cross(po.b - corner, no.a - corner), (po.b - corner).dot(no.a - corner)));
+        double ang = std::fabs(
+            std::atan2(cross(po.b - corner, no.a - corner), (po.b - corner).dot(no.a - corner)));
         if (std::fabs(cr) <= 1e-12 && dt < 0) ang = kPi;
         arc.sweep = -double(side) * ang;
         path.push_back(arc);

@@ -9,7 +9,9 @@
 namespace pupitre {
 
 namespace {
-Eigen::Rotation2Dd rotation(double deg) { return Eigen::Rotation2Dd(deg * std::numbers::pi / 180.0); }
+Eigen::Rotation2Dd rotation(double deg) {
+    return Eigen::Rotation2Dd(deg * std::numbers::pi / 180.0);
+}
 }  // namespace
 
 Axes Frames::to_machine(const Axes& prog) const {

@@ -12,14 +12,14 @@ namespace pupitre {
 
 struct Frames {
     Axes pref{}, dec1{}, dec3{}, g59{};
-    bool g53 = false;          // PREF and DEC1 suspended
-    std::bitset<kAxes> mirror; // G51
-    bool scale_on = false;     // G74
-    double scale = 1.0;        // E69000 / 1000
-    double ed = 0;             // angular offset, degrees, in the plane (a0, a1)
-    int ed_a0 = X, ed_a1 = Y;  // plane axes of the rotation
+    bool g53 = false;             // PREF and DEC1 suspended
+    std::bitset<kAxes> mirror;    // G51
+    bool scale_on = false;        // G74
+    double scale = 1.0;           // E69000 / 1000
+    double ed = 0;                // angular offset, degrees, in the plane (a0, a1)
+    int ed_a0 = X, ed_a1 = Y;     // plane axes of the rotation
     double ed_c0 = 0, ed_c1 = 0;  // rotation centre (program coordinates)
-    Axes gauge{};              // tool gauge applied on each axis
+    Axes gauge{};                 // tool gauge applied on each axis
 
     // Program point -> machine position of the reference.
     Axes to_machine(const Axes& prog) const;

@@ -1,9 +1,10 @@
 // Kinematic models of the mill4 and mill5 (004:1588-1801; milling.md §9.3-9.4).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/geometry/kinematics.hpp"
-#include "core/geometry/geometry.hpp"
 
 #include <cmath>
+
+#include "core/geometry/geometry.hpp"
 
 namespace pupitre::kin {
 
@@ -25,10 +26,11 @@ bool orthonormal(const Eigen::Matrix3d& m) {
 }
 }  // namespace
 
-// H_RpRo = Trans(-L_X,0,-L_Z) . Rot_Y(B) . Trans(X,0,0) . Trans(0,0,Z) . Trans(0,Y,0) . Trans(L_X,0,L_Z)
+// H_RpRo = Trans(-L_X,0,-L_Z) . Rot_Y(B) . Trans(X,0,0) . Trans(0,0,Z) . Trans(0,Y,0) .
+// Trans(L_X,0,L_Z)
 Eigen::Isometry3d forward4(const Pose4& p, double lx, double lz) {
-    return trans(-lx, 0, -lz) * rot(p.b, Eigen::Vector3d::UnitY()) * trans(p.x, 0, 0) * trans(0, 0, p.z) *
-           trans(0, p.y, 0) * trans(lx, 0, lz);
+    return trans(-lx, 0, -lz) * rot(p.b, Eigen::Vector3d::UnitY()) * trans(p.x, 0, 0) *
+           trans(0, 0, p.z) * trans(0, p.y, 0) * trans(lx, 0, lz);
 }
 
 std::optional<Pose4> inverse4(const Eigen::Isometry3d& h, double lx, double lz) {
@@ -46,11 +48,13 @@ std::optional<Pose4> inverse4(const Eigen::Isometry3d& h, double lx, double lz) 
     return p;
 }
 
-// H_RpRo = Trans(-L_X,-L_Y,0) . Rot_Z(C) . Trans(0,Y,0) . Trans(X,0,0) . Trans(L_X,L_Y,Z+L_Z) . Rot_Y(B)
+// H_RpRo = Trans(-L_X,-L_Y,0) . Rot_Z(C) . Trans(0,Y,0) . Trans(X,0,0) . Trans(L_X,L_Y,Z+L_Z) .
+// Rot_Y(B)
 //          . Trans(0,0,-L_Z)
 Eigen::Isometry3d forward5(const Pose5& p, double lx, double ly, double lz) {
-    return trans(-lx, -ly, 0) * rot(p.c, Eigen::Vector3d::UnitZ()) * trans(0, p.y, 0) * trans(p.x, 0, 0) *
-           trans(lx, ly, p.z + lz) * rot(p.b, Eigen::Vector3d::UnitY()) * trans(0, 0, -lz);
+    return trans(-lx, -ly, 0) * rot(p.c, Eigen::Vector3d::UnitZ()) * trans(0, p.y, 0) *
+           trans(p.x, 0, 0) * trans(lx, ly, p.z + lz) * rot(p.b, Eigen::Vector3d::UnitY()) *
+           trans(0, 0, -lz);
 }
 
 std::optional<Pose5> inverse5(const Eigen::Isometry3d& h, double lx, double ly, double lz) {

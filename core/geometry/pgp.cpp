@@ -7,22 +7,23 @@
 // built in pgp_elements.cpp.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/geometry/pgp.hpp"
-#include "core/geometry/geometry.hpp"
-#include "core/geometry/pgp_elements.hpp"
-#include "core/i18n.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+
+#include "core/geometry/geometry.hpp"
+#include "core/geometry/pgp_elements.hpp"
+#include "core/i18n.hpp"
 
 namespace pupitre::pgp {
 
 using namespace detail;
 
 namespace {
+using ::pupitre::geometry::cross;
 using ::pupitre::geometry::kPi;
 using ::pupitre::geometry::perp;
-using ::pupitre::geometry::cross;
 
 // ---------------------------------------------------------------------------
 // Entities.
@@ -177,8 +178,7 @@ St solve3_by_third(const V2& S, const Elt& a, const Elt& b, const Sup& C3, char 
                    std::vector<Cand>& out, Fail& f) {
     std::vector<std::pair<Sup, V2>> mids;
     if (b.form == Form::Centre) {
-        for (double r : radii(C3, b.c))
-            mids.push_back({circle(b.c, r, b.s), contact(C3, b.c, r)});
+        for (double r : radii(C3, b.c)) mids.push_back({circle(b.c, r, b.s), contact(C3, b.c, r)});
     } else {
         if (!C3.arc) return stop(f, 123, tr("a line cannot be tangent to a line"));
         for (const V2& d : dirs(b))
@@ -217,9 +217,11 @@ St solve3_by_third(const V2& S, const Elt& a, const Elt& b, const Sup& C3, char 
 St solve3(const V2& S, const Elt* e, const char link[2], std::vector<Cand>& out, Fail& f) {
     const Elt &a = e[0], &b = e[1], &c = e[2];
     if (c.form != Form::Fixed)
-        return stop(f, 123, tr("the third block must fix its element: EA X Y, or I J with R or X Y"));
+        return stop(f, 123,
+                    tr("the third block must fix its element: EA X Y, or I J with R or X Y"));
     const Sup& C3 = c.sup;
-    if (link[1] == 'S') return stop(f, 123, tr("the middle element cannot be secant with the third"));
+    if (link[1] == 'S')
+        return stop(f, 123, tr("the middle element cannot be secant with the third"));
     if (b.form == Form::Angle || b.form == Form::Axis || b.form == Form::Centre)
         return solve3_by_third(S, a, b, C3, link[0], out, f);
     if (link[0] == 'S')
@@ -322,7 +324,8 @@ struct Entity {
     // ES±: the order along the line (first met = -, pgp.md §5.2 and §5.4), or the
     // side of the line of centres for two circles (§5.3).
     bool by_secant(const std::vector<Cand>& cs, Cand& pick, Fail& f) const {
-        if (disc[0] == 0) return failed(f, 114, tr("two intersections: choose one with ES+ or ES-"));
+        if (disc[0] == 0)
+            return failed(f, 114, tr("two intersections: choose one with ES+ or ES-"));
         auto key = [&](const Cand& c) {
             if (!c.sup[0].arc) return (c.j[0] - S).dot(c.sup[0].d);
             if (!c.sup[1].arc) return (c.j[0] - c.sup[1].p).dot(c.sup[1].d);
@@ -359,8 +362,9 @@ struct Entity {
                                                  disc[0]);
                     if (m.empty()) {
                         block = 0;
-                        return failed(f, 114, strf(tr("ET%c designates none of the tangent solutions"),
-                                                   disc[0] > 0 ? '+' : '-'));
+                        return failed(f, 114,
+                                      strf(tr("ET%c designates none of the tangent solutions"),
+                                           disc[0] > 0 ? '+' : '-'));
                     }
                     one = m[0];
                 }
@@ -372,12 +376,14 @@ struct Entity {
             // ET± of the middle block (pgp.md §5.5) must designate one solution.
             block = 1;
             if (disc[1] == 0)
-                return failed(f, 124,
-                              tr("two tangencies between blocks 2 and 3: choose one with ET+ or ET-"));
+                return failed(
+                    f, 124,
+                    tr("two tangencies between blocks 2 and 3: choose one with ET+ or ET-"));
             std::vector<Cand> m = by_arc(per, 1, disc[1]);
             if (m.size() != 1)
                 return failed(f, 124,
-                              strf(tr("ET%c does not designate one of the two tangencies between blocks 2 and 3"),
+                              strf(tr("ET%c does not designate one of the two tangencies between "
+                                      "blocks 2 and 3"),
                                    disc[1] > 0 ? '+' : '-'));
             pick = m[0];
         }

@@ -17,22 +17,22 @@ using V2 = comp::V2;
 
 // What one motion block says about its element, in plane coordinates.
 struct Spec {
-    int g = 1;                  // 1 line, 2 clockwise arc, 3 counter-clockwise arc
+    int g = 1;                          // 1 line, 2 clockwise arc, 3 counter-clockwise arc
     bool has_x = false, has_y = false;  // end point, first / second plane axis
     double x = 0, y = 0;
-    bool has_ea = false;        // line angle, degrees from the first axis
+    bool has_ea = false;  // line angle, degrees from the first axis
     double ea = 0;
     bool has_i = false, has_j = false;  // absolute centre, first / second axis
     double i = 0, j = 0;
-    bool has_r = false;         // arc radius
+    bool has_r = false;  // arc radius
     double r = 0;
-    char link = 0;              // 0, 'S' (ES: secant with the next), 'T' (ET: tangent)
-    int disc = 0;               // +1 (E+), -1 (E-), 0 none
-    bool has_eb = false;        // EB: + fillet radius, - chamfer leg (sign kept)
+    char link = 0;        // 0, 'S' (ES: secant with the next), 'T' (ET: tangent)
+    int disc = 0;         // +1 (E+), -1 (E-), 0 none
+    bool has_eb = false;  // EB: + fillet radius, - chamfer leg (sign kept)
     double eb = 0;
-    bool eb_unsigned = false;   // EB written without a sign (taken as a fillet)
-    int tag = 0;                // caller's id of the block (returned with its elements)
-    bool stop = false;          // M0, M1 or M2 in the block (with EB: error 131)
+    bool eb_unsigned = false;  // EB written without a sign (taken as a fillet)
+    int tag = 0;               // caller's id of the block (returned with its elements)
+    bool stop = false;         // M0, M1 or M2 in the block (with EB: error 131)
 };
 
 // A resolved element. Fillets and chamfers are elements of their own, tagged
@@ -40,17 +40,17 @@ struct Spec {
 struct Elem {
     comp::Elem geo;
     int tag = 0;
-    bool inserted = false;      // a fillet or chamfer made by EB
+    bool inserted = false;  // a fillet or chamfer made by EB
 };
 
 struct Error {
-    int code = 0;               // NUM error number (101-137), 0 if none
-    int tag = 0;                // block it belongs to
+    int code = 0;  // NUM error number (101-137), 0 if none
+    int tag = 0;   // block it belongs to
     std::string detail;
 };
 
 class Solver {
-public:
+  public:
     // The known start point of the next element (the current position).
     void start(const V2& p);
     // Adds a block's element. Resolved elements are appended to `out` (possibly
@@ -68,7 +68,7 @@ public:
     // The end point of the last resolved element.
     V2 position() const;
 
-private:
+  private:
     // A block waiting for the blocks that determine it; the first one starts at
     // pos_. `fixed` when solving the previous entity already found its support:
     // a line through p with unit travel direction d, or a circle about p of
@@ -86,10 +86,10 @@ private:
     bool deliver(Elem e, const Spec& s, std::vector<Elem>& out, Error& err);
     bool fail(Error& err, int code, int tag, std::string detail);
 
-    std::vector<Item> wait_;    // blocks of the entity being solved
+    std::vector<Item> wait_;  // blocks of the entity being solved
     V2 pos_{0, 0};
     int idle_ = 0;
-    bool held_ = false;         // an element with EB waits for the next element
+    bool held_ = false;  // an element with EB waits for the next element
     Elem held_elem_;
     double held_eb_ = 0;
 };

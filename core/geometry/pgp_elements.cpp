@@ -9,14 +9,14 @@
 #include <numbers>
 
 #include "core/geometry/geometry.hpp"
-#include "core/numfmt.hpp"
 #include "core/i18n.hpp"
+#include "core/numfmt.hpp"
 
 namespace pupitre::pgp::detail {
 
+using ::pupitre::geometry::cross;
 using ::pupitre::geometry::kPi;
 using ::pupitre::geometry::perp;
-using ::pupitre::geometry::cross;
 
 V2 dir(double deg) {
     double a = deg * kPi / 180;
@@ -199,7 +199,8 @@ bool syntax(const Spec& s, int pos, Fail& f) {
     if (s.g != 1 && s.has_ea) return failed(f, syntax_code(pos), tr("a circle takes no angle EA"));
     if (s.g != 1 && s.has_i != s.has_j)
         return failed(f, 101, tr("a circle centre needs both its coordinates"));
-    if (s.g != 1 && s.has_r && s.r <= 0) return failed(f, 107, tr("circle radius R must be positive"));
+    if (s.g != 1 && s.has_r && s.r <= 0)
+        return failed(f, 107, tr("circle radius R must be positive"));
     return true;
 }
 
@@ -210,7 +211,9 @@ bool arc_by_radius(const Spec& s, int sense, const V2& S, const V2& E, Elt& e, F
     double d = ch.norm();
     if (d < 1e-9) return failed(f, 107, tr("circle with R: the end point equals the start point"));
     if (d > 2 * s.r + kChordTol + 1e-9)
-        return failed(f, 107, strf(tr("circle end point too far: chord %s > 2R %s"), fixed3(d).c_str(), fixed3(2 * s.r).c_str()));
+        return failed(f, 107,
+                      strf(tr("circle end point too far: chord %s > 2R %s"), fixed3(d).c_str(),
+                           fixed3(2 * s.r).c_str()));
     double h = std::sqrt(std::max(0.0, s.r * s.r - d * d / 4));
     int side = s.disc != 0 ? s.disc : sense;
     V2 c = (S + E) / 2 + side * h * perp(ch) / d;
@@ -263,13 +266,15 @@ bool first_centre(const Spec& s, const V2& S, const V2& E, Elt& e, Fail& f) {
     if (r0 < kEq) return failed(f, 107, tr("circle centre on the start point"));
     if (s.has_r && std::fabs(s.r - r0) > kArcTol + 1e-9)
         return failed(f, 107,
-                      strf(tr("radius R %s differs from the start radius %s"), fixed3(s.r).c_str(), fixed3(r0).c_str()));
+                      strf(tr("radius R %s differs from the start radius %s"), fixed3(s.r).c_str(),
+                           fixed3(r0).c_str()));
     e.sup = circle(c, r0, e.s);
     if (!end2 && !end1) return true;
     double r1 = (E - c).norm();
     if (std::fabs(r1 - r0) > kArcTol + 1e-9)
         return failed(f, 107,
-                      strf(tr("circle end point inconsistent: start radius %s, end radius %s (more than 0.020 apart)"),
+                      strf(tr("circle end point inconsistent: start radius %s, end radius %s (more "
+                              "than 0.020 apart)"),
                            fixed3(r0).c_str(), fixed3(r1).c_str()));
     e.form = Form::Complete;
     e.geo = piece(e.sup, S, E);
@@ -358,7 +363,8 @@ bool next_centre(const Spec& s, Elt& e, Fail& f) {
         if (r < kEq) return failed(f, 107, tr("circle centre on the end point"));
         if (s.has_r && std::fabs(s.r - r) > kArcTol + 1e-9)
             return failed(f, 107,
-                          strf(tr("radius R %s differs from the end radius %s"), fixed3(s.r).c_str(), fixed3(r).c_str()));
+                          strf(tr("radius R %s differs from the end radius %s"),
+                               fixed3(s.r).c_str(), fixed3(r).c_str()));
         e.sup = circle(c, r, e.s);
         e.has_end = true;
         e.end = E;
@@ -382,7 +388,8 @@ bool next_elt(const Spec& s, int pos, Elt& e, Fail& f) {
     bool end2 = s.has_x && s.has_y, end1 = s.has_x != s.has_y;
     V2 E(s.x, s.y);
     if (s.g == 1) return next_line(s, pos, e, f);
-    if (end1) return failed(f, 101, tr("a circle whose start is computed needs both end coordinates"));
+    if (end1)
+        return failed(f, 101, tr("a circle whose start is computed needs both end coordinates"));
     if (s.has_i) return next_centre(s, e, f);
     if (s.has_r) {
         e.form = Form::Radius;
@@ -407,15 +414,15 @@ int corner(comp::Elem& h, double eb, comp::Elem& e, comp::Elem& ins, std::string
         return 135;
     }
     if (std::fabs(cr) < 1e-9) {
-        detail =
-            t1.dot(t2) > 0 ? tr("EB between two tangent elements") : tr("EB where the path turns back");
+        detail = t1.dot(t2) > 0 ? tr("EB between two tangent elements")
+                                : tr("EB where the path turns back");
         return 113;
     }
     if (eb < 0) {
         double c = -eb, l1 = length(h), l2 = length(e);
         if (c > l1 + kEq || c > l2 + kEq) {
-            detail = strf(tr("chamfer %s longer than the lines (%s, %s)"), fixed3(c).c_str(), fixed3(l1).c_str(),
-                          fixed3(l2).c_str());
+            detail = strf(tr("chamfer %s longer than the lines (%s, %s)"), fixed3(c).c_str(),
+                          fixed3(l1).c_str(), fixed3(l2).c_str());
             return 113;
         }
         V2 a = c > l1 - kEq ? h.a : V2(P - c * t1), b = c > l2 - kEq ? e.b : V2(P + c * t2);
@@ -451,7 +458,8 @@ int corner(comp::Elem& h, double eb, comp::Elem& e, comp::Elem& ins, std::string
                 }
             }
     if (best > 1e299) {
-        detail = strf(tr("fillet radius %s too large for the elements it joins"), fixed3(r).c_str());
+        detail =
+            strf(tr("fillet radius %s too large for the elements it joins"), fixed3(r).c_str());
         return 113;
     }
     h = h.arc ? piece(s1, h.a, a0) : comp::Elem{false, h.a, a0};

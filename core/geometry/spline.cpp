@@ -2,10 +2,11 @@
 // clamped to the given tangents or natural at free ends.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/geometry/spline.hpp"
-#include "core/i18n.hpp"
 
 #include <algorithm>
 #include <cmath>
+
+#include "core/i18n.hpp"
 
 namespace pupitre::spline {
 
@@ -18,8 +19,8 @@ double norm(const std::vector<double>& v) {
 
 // Second derivatives of the spline through (s[i], y[i]); d0/d1 are the end slopes,
 // NaN for a natural end.
-std::vector<double> second_derivatives(const std::vector<double>& s, const std::vector<double>& y, double d0,
-                                       double d1) {
+std::vector<double> second_derivatives(const std::vector<double>& s, const std::vector<double>& y,
+                                       double d0, double d1) {
     size_t n = s.size();
     std::vector<double> a(n, 0), b(n, 0), c(n, 0), r(n, 0);
     for (size_t i = 1; i + 1 < n; ++i) {
@@ -121,8 +122,10 @@ std::vector<std::vector<double>> sample(const Curve& c, double tol) {
         int n = int(std::ceil(h / std::sqrt(8 * tol / curv)));
         n = std::clamp(n, 1, 400);
         for (int j = 1; j <= n; ++j) {
-            if (j == n) out.push_back(c.pts[i]);
-            else out.push_back(at(c, c.s[i - 1] + h * j / n));
+            if (j == n)
+                out.push_back(c.pts[i]);
+            else
+                out.push_back(at(c, c.s[i - 1] + h * j / n));
         }
     }
     return out;

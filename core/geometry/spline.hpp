@@ -10,12 +10,12 @@
 namespace pupitre::spline {
 
 struct Curve {
-    std::vector<int> axes;                    // axis indexes used (from the first block)
-    std::vector<std::vector<double>> pts;     // points, one value per axis
-    std::vector<double> t0, t1;               // end tangents (direction), empty if free
+    std::vector<int> axes;                 // axis indexes used (from the first block)
+    std::vector<std::vector<double>> pts;  // points, one value per axis
+    std::vector<double> t0, t1;            // end tangents (direction), empty if free
     // Second derivatives per axis at each point (after build()).
     std::vector<std::vector<double>> m;
-    std::vector<double> s;                    // chord-length parameter of each point
+    std::vector<double> s;  // chord-length parameter of each point
 };
 
 // Checks and prepares the curve. Returns 0 or a NUM error number (603, 604).

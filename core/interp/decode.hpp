@@ -27,14 +27,14 @@ struct Interpreter::Decoder {
     Plan& p;
     const MachineProfile& m;
     const bool lathe, diam;
-    double unit = 1.0;        // 25.4 when G70 is in force for the block
-    bool inc;                 // G91, positionally
+    double unit = 1.0;             // 25.4 when G70 is in force for the block
+    bool inc;                      // G91, positionally
     const GCode* owner = nullptr;  // the G function owning the words that follow
     int owner_g = -1;
-    bool owned = false;       // the word being read belongs to `owner`
+    bool owned = false;  // the word being read belongs to `owner`
     std::bitset<kAddrCount> seen;
     bool g52_seen = false, axis_seen = false;
-    int pqr_sign_col = 0;     // a P± Q± R± met before any G16 (turning.md §1.7.2: error 3)
+    int pqr_sign_col = 0;  // a P± Q± R± met before any G16 (turning.md §1.7.2: error 3)
     int coded_modal = 0, coded_nonmodal = 0;
 
     bool bad(int code, std::string detail, int column = 0);

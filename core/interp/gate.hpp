@@ -12,27 +12,41 @@
 namespace pupitre {
 
 class GateSink final : public MachineSink {
-public:
+  public:
     explicit GateSink(MachineSink& real) : real_(real) {}
     bool holding = false;
     std::vector<std::function<void()>> queue;
 
-    void move(const MoveEvent& e) override { pass([this, e] { real_.move(e); }); }
-    void dwell(const Loc& l, double s) override { pass([this, l, s] { real_.dwell(l, s); }); }
+    void move(const MoveEvent& e) override {
+        pass([this, e] { real_.move(e); });
+    }
+    void dwell(const Loc& l, double s) override {
+        pass([this, l, s] { real_.dwell(l, s); });
+    }
     void tool(const Loc& l, int t, int d, double s, bool m6) override {
         pass([=, this] { real_.tool(l, t, d, s, m6); });
     }
-    void spindle(const SpindleEvent& e) override { pass([this, e] { real_.spindle(e); }); }
-    void coolant(const Loc& l, bool m7, bool m8) override { pass([=, this] { real_.coolant(l, m7, m8); }); }
-    void stop(const Loc& l, int m) override { pass([=, this] { real_.stop(l, m); }); }
+    void spindle(const SpindleEvent& e) override {
+        pass([this, e] { real_.spindle(e); });
+    }
+    void coolant(const Loc& l, bool m7, bool m8) override {
+        pass([=, this] { real_.coolant(l, m7, m8); });
+    }
+    void stop(const Loc& l, int m) override {
+        pass([=, this] { real_.stop(l, m); });
+    }
     void message(const Loc& l, int ch, std::string_view t) override {
         pass([this, l, ch, text = std::string(t)] { real_.message(l, ch, text); });
     }
-    void end(const Loc& l, int m) override { pass([=, this] { real_.end(l, m); }); }
+    void end(const Loc& l, int m) override {
+        pass([=, this] { real_.end(l, m); });
+    }
     void stock(const Loc& l, const std::vector<std::array<double, 2>>& s) override {
         pass([this, l, s] { real_.stock(l, s); });
     }
-    void profile(const Loc& l, const ProfileElem& e) override { pass([=, this] { real_.profile(l, e); }); }
+    void profile(const Loc& l, const ProfileElem& e) override {
+        pass([=, this] { real_.profile(l, e); });
+    }
 
     // Runs the held entries in order, with holding off.
     void release() {
@@ -42,11 +56,13 @@ public:
         for (auto& f : q) f();
     }
 
-private:
+  private:
     template <class F>
     void pass(F&& f) {
-        if (holding) queue.emplace_back(std::forward<F>(f));
-        else f();
+        if (holding)
+            queue.emplace_back(std::forward<F>(f));
+        else
+            f();
     }
     MachineSink& real_;
 };

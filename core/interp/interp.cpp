@@ -5,15 +5,20 @@
 #include <charconv>
 #include <cmath>
 
+#include "core/i18n.hpp"
 #include "core/interp/gate.hpp"
 #include "core/interp/plan.hpp"
-#include "core/i18n.hpp"
 
 namespace pupitre {
 
 Interpreter::Interpreter(const MachineProfile& m, ProgramMemory& mem, MachineSink& sink,
                          RunOptions o)
-    : m_(m), mem_(mem), sink_(sink), gate_(std::make_unique<GateSink>(sink)), out_(*gate_), opt_(o) {
+    : m_(m),
+      mem_(mem),
+      sink_(sink),
+      gate_(std::make_unique<GateSink>(sink)),
+      out_(*gate_),
+      opt_(o) {
     power_on();
 }
 
@@ -33,8 +38,10 @@ void Interpreter::power_on() {
     // The power-on spindle state (stopped, no range) is not an event.
     last_sp_ = SpindleEvent{};
     sp_emitted_ = true;
-    if (opt_.require_homing) homed_.reset();
-    else homed_.set();
+    if (opt_.require_homing)
+        homed_.reset();
+    else
+        homed_.set();
     update_travel();
 }
 
@@ -179,7 +186,9 @@ void Interpreter::warn(int code, std::string detail) {
     diags_.push_back(std::move(d));
 }
 
-void Interpreter::recompute_program_pos() { prog_ = frames_.to_program(mach_); }
+void Interpreter::recompute_program_pos() {
+    prog_ = frames_.to_program(mach_);
+}
 
 double Interpreter::gauge_for(int d, int axis) const {
     if (d <= 0) return 0;
@@ -245,7 +254,8 @@ std::string Interpreter::set(std::string_view name, double value, bool immediate
     }
     if (name.size() >= 2 && name[0] == 'E') {
         double n;
-        if (!parse_double(name.substr(1), n) || n != std::floor(n)) return tr("bad E parameter number");
+        if (!parse_double(name.substr(1), n) || n != std::floor(n))
+            return tr("bad E parameter number");
         if (value != std::floor(value)) return tr("E parameters hold integers (internal units)");
         std::string why;
         int rc = write_e(int(n), int64_t(value), why);
@@ -256,32 +266,47 @@ std::string Interpreter::set(std::string_view name, double value, bool immediate
     if (name.size() >= 4 && name[0] == 'D') {
         size_t dot = name.find('.');
         double d;
-        if (dot == std::string_view::npos || !parse_double(name.substr(1, dot - 1), d) ||
-            d < 1 || d > m_.correctors || d != std::floor(d))
+        if (dot == std::string_view::npos || !parse_double(name.substr(1, dot - 1), d) || d < 1 ||
+            d > m_.correctors || d != std::floor(d))
             return strf(tr("corrector must be D1 to D%d"), int(m_.correctors));
         Corrector& c = corr_[size_t(d)];
         std::string_view f = name.substr(dot + 1);
         if (m_.lathe) {
-            if (f == "X") c.x = value;
-            else if (f == "Z") c.z = value;
-            else if (f == "R") c.r = value;
-            else if (f == "C") c.c = int(value);
-            else if (f == "DX") c.dx = value;
-            else if (f == "DZ") c.dz = value;
-            else return tr("lathe correctors have X Z R C DX DZ");
+            if (f == "X")
+                c.x = value;
+            else if (f == "Z")
+                c.z = value;
+            else if (f == "R")
+                c.r = value;
+            else if (f == "C")
+                c.c = int(value);
+            else if (f == "DX")
+                c.dx = value;
+            else if (f == "DZ")
+                c.dz = value;
+            else
+                return tr("lathe correctors have X Z R C DX DZ");
         } else {
-            if (f == "L") c.l = value;
-            else if (f == "R") c.r = value;
-            else if (f == "DL") c.dl = value;
-            else if (f == "DR") c.dr = value;
-            else if (f == "A" || f == "TIP") c.tip = value;
-            else return tr("mill correctors have L R DL DR and the end radius A");
+            if (f == "L")
+                c.l = value;
+            else if (f == "R")
+                c.r = value;
+            else if (f == "DL")
+                c.dl = value;
+            else if (f == "DR")
+                c.dr = value;
+            else if (f == "A" || f == "TIP")
+                c.tip = value;
+            else
+                return tr("mill correctors have L R DL DR and the end radius A");
         }
         // The active corrector's new gauge applies at the next move of each of
         // its axes (turning.md §3.4); a new radius at the next G41/G42.
         if (int(d) == modal_.d) {
-            if (m_.lathe) gauge_pending_.set(X), gauge_pending_.set(Z);
-            else gauge_pending_.set(size_t(modal_.tool_axis));
+            if (m_.lathe)
+                gauge_pending_.set(X), gauge_pending_.set(Z);
+            else
+                gauge_pending_.set(size_t(modal_.tool_axis));
         }
         return {};
     }
@@ -291,32 +316,48 @@ std::string Interpreter::set(std::string_view name, double value, bool immediate
 
 bool Interpreter::get(std::string_view name, double& out) const {
     int axis = name.size() >= 6 && name[name.size() - 2] == '.' ? axis_of(name.back()) : -1;
-    if (axis >= 0 && (name.substr(0, 5) == "PREF." || name.substr(0, 5) == "DEC1." || name.substr(0, 5) == "DEC3.")) {
-        const Axes& which = name[0] == 'P' ? frames_.pref : name[3] == '1' ? frames_.dec1 : frames_.dec3;
+    if (axis >= 0 && (name.substr(0, 5) == "PREF." || name.substr(0, 5) == "DEC1." ||
+                      name.substr(0, 5) == "DEC3.")) {
+        const Axes& which = name[0] == 'P'   ? frames_.pref
+                            : name[3] == '1' ? frames_.dec1
+                                             : frames_.dec3;
         out = which[size_t(axis)];
         return true;
     }
     if (name.size() >= 4 && name[0] == 'D') {
         size_t dot = name.find('.');
         double d;
-        if (dot == std::string_view::npos || !parse_double(name.substr(1, dot - 1), d) || d < 1 || d > 255)
+        if (dot == std::string_view::npos || !parse_double(name.substr(1, dot - 1), d) || d < 1 ||
+            d > 255)
             return false;
         const Corrector& c = corr_[size_t(d)];
         std::string_view f = name.substr(dot + 1);
         if (m_.lathe) {
-            if (f == "X") out = c.x;
-            else if (f == "Z") out = c.z;
-            else if (f == "R") out = c.r;
-            else if (f == "C") out = c.c;
-            else if (f == "DX") out = c.dx;
-            else if (f == "DZ") out = c.dz;
-            else return false;
+            if (f == "X")
+                out = c.x;
+            else if (f == "Z")
+                out = c.z;
+            else if (f == "R")
+                out = c.r;
+            else if (f == "C")
+                out = c.c;
+            else if (f == "DX")
+                out = c.dx;
+            else if (f == "DZ")
+                out = c.dz;
+            else
+                return false;
         } else {
-            if (f == "L") out = c.l;
-            else if (f == "R") out = c.r;
-            else if (f == "DL") out = c.dl;
-            else if (f == "DR") out = c.dr;
-            else return false;
+            if (f == "L")
+                out = c.l;
+            else if (f == "R")
+                out = c.r;
+            else if (f == "DL")
+                out = c.dl;
+            else if (f == "DR")
+                out = c.dr;
+            else
+                return false;
         }
         return true;
     }
@@ -410,8 +451,8 @@ void Interpreter::after_block(int lineno) {
         if (done.prog != stack_.back().prog) {
             // External range: the state before the call is restored (000:6737).
             modal_.radcomp = done.saved_radcomp;
-            bool changed = modal_.spindle_dir != done.saved_dir || modal_.range != done.saved_range ||
-                           modal_.s != done.saved_s;
+            bool changed = modal_.spindle_dir != done.saved_dir ||
+                           modal_.range != done.saved_range || modal_.s != done.saved_s;
             modal_.spindle_dir = done.saved_dir;
             modal_.range = done.saved_range;
             modal_.s = done.saved_s;
@@ -432,7 +473,8 @@ bool Interpreter::call(const Plan& p) {
         // G77 -i: the return block of level i (spec README (b) 24).
         int depth = int(stack_.size()) - 1;
         if (p.g77.level > depth) {
-            fail(26, strf(tr("G77 -%d: there is no call level %d (depth %d)"), p.g77.level, p.g77.level, depth));
+            fail(26, strf(tr("G77 -%d: there is no call level %d (depth %d)"), p.g77.level,
+                          p.g77.level, depth));
             return false;
         }
         const Frame& caller = stack_[size_t(p.g77.level - 1)];
@@ -513,8 +555,9 @@ StepResult Interpreter::step() {
     std::string_view line;
     int lineno;
     for (;;) {
-        if (!fetch(line, lineno)) return ended_ ? (has_errors() ? StepResult::error : StepResult::ended)
-                                                : StepResult::ended;
+        if (!fetch(line, lineno))
+            return ended_ ? (has_errors() ? StepResult::error : StepResult::ended)
+                          : StepResult::ended;
         loc_ = Loc{stack_.back().prog->number, lineno, -1};
         cur_text_ = line;
         cur_line_ = lineno;
@@ -535,10 +578,13 @@ StepResult Interpreter::step() {
         break;
     }
     if (++blocks_ > opt_.max_blocks)
-        return fail(err::kBlockBudget, strf(tr("more than %ld blocks executed: endless loop? (G79/G77)"), opt_.max_blocks));
+        return fail(
+            err::kBlockBudget,
+            strf(tr("more than %ld blocks executed: endless loop? (G79/G77)"), opt_.max_blocks));
     // The work done, not only the blocks: one cycle block makes many moves.
     if (moves_ > 2 * opt_.max_blocks)
-        return fail(err::kBlockBudget, strf(tr("more than %ld moves made: endless loop? (G79/G77)"), 2 * opt_.max_blocks));
+        return fail(err::kBlockBudget, strf(tr("more than %ld moves made: endless loop? (G79/G77)"),
+                                            2 * opt_.max_blocks));
     size_t depth = stack_.size();
     StepResult r = execute(block_);
     if (r == StepResult::error || ended_) return r;
@@ -570,7 +616,8 @@ int Interpreter::e_rights(int n, bool write, std::string& why) const {
     if (n >= 20000 && n <= 20031) return ro();
     if (n >= 30000 && n <= 30127) return 0;
     if (n >= 40000 && n <= 40127) return ro();
-    if (n == 11000 || n == 11001 || n == 11003 || n == 11004 || n == 11005 || n == 11007 || n == 11015)
+    if (n == 11000 || n == 11001 || n == 11003 || n == 11004 || n == 11005 || n == 11007 ||
+        n == 11015)
         return 0;
     if (n >= 21000 && n <= 21255) return ro();
     if (n == 31000 || n == 31001 || n == 32000) return 0;
@@ -590,8 +637,12 @@ int Interpreter::e_rights(int n, bool write, std::string& why) const {
 }
 
 namespace {
-int64_t um(double mm) { return int64_t(std::llround(mm * 1000.0)); }
-double mm_of(int64_t v) { return double(v) / 1000.0; }
+int64_t um(double mm) {
+    return int64_t(std::llround(mm * 1000.0));
+}
+double mm_of(int64_t v) {
+    return double(v) / 1000.0;
+}
 }  // namespace
 
 // An E access stops the block preparation: not under compensation (140) nor
@@ -612,16 +663,26 @@ int Interpreter::read_e(int n, int64_t& out, std::string& why) {
     if (int rc = e_access(why)) return rc;
     if (int rc = e_rights(n, false, why)) return rc;
     int x = (n / 1000) % 10, k = n % 1000, type = n / 10000;
-    auto unit = [&](int axis, double v) { return is_rotary(axis) ? int64_t(std::llround(v * 1e4)) : um(v); };
+    auto unit = [&](int axis, double v) {
+        return is_rotary(axis) ? int64_t(std::llround(v * 1e4)) : um(v);
+    };
     out = 0;
-    if (n == 11005) out = (m_.lathe && m_.x_diameter && !modal_.radius_x) ? 1 : 0;
-    else if (n == 11000) out = frames_.ed != 0;
-    else if (n == 11003) out = frames_.mirror.any();
-    else if (n == 11004) out = frames_.scale_on;
-    else if (n >= 21000 && n <= 21255) out = 1;
-    else if (n == 50000) out = modal_.d;
-    else if (n == 51000) out = corr_[size_t(modal_.d)].c;
-    else if (n == 52000) out = um(corr_[size_t(modal_.d)].r);
+    if (n == 11005)
+        out = (m_.lathe && m_.x_diameter && !modal_.radius_x) ? 1 : 0;
+    else if (n == 11000)
+        out = frames_.ed != 0;
+    else if (n == 11003)
+        out = frames_.mirror.any();
+    else if (n == 11004)
+        out = frames_.scale_on;
+    else if (n >= 21000 && n <= 21255)
+        out = 1;
+    else if (n == 50000)
+        out = modal_.d;
+    else if (n == 51000)
+        out = corr_[size_t(modal_.d)].c;
+    else if (n == 52000)
+        out = um(corr_[size_t(modal_.d)].r);
     else if (type == 5 && k >= 1 && k <= 255 && n < 56000) {
         const Corrector& c = corr_[size_t(k)];
         int fam = (n / 1000) % 10;
@@ -633,19 +694,27 @@ int Interpreter::read_e(int n, int64_t& out, std::string& why) {
             out = fam == 5 ? c.c : um(v[fam]);
         }
     } else if (type == 6 && x <= 8 && k <= 5) {
-        const Axes* src[] = {&frames_.pref, &frames_.dec1, nullptr, nullptr, &frames_.dec3, &frames_.g59};
-        if (src[k]) out = unit(x, (*src[k])[size_t(x)]);
-        else if (e_raw_.count(n)) out = e_raw_[n];
-        else out = unit(x, k == 2 ? m_.axes[size_t(x)].min : m_.axes[size_t(x)].max);
+        const Axes* src[] = {&frames_.pref, &frames_.dec1, nullptr,
+                             nullptr,       &frames_.dec3, &frames_.g59};
+        if (src[k])
+            out = unit(x, (*src[k])[size_t(x)]);
+        else if (e_raw_.count(n))
+            out = e_raw_[n];
+        else
+            out = unit(x, k == 2 ? m_.axes[size_t(x)].min : m_.axes[size_t(x)].max);
     } else if (n == 69000) {
         out = e_raw_.count(n) ? e_raw_[n] : 1000;
     } else if (n == 73000 || n == 74000) {
         out = 0;
     } else if (type == 7 && x <= 8 && k <= 6) {
-        if (k == 0 || k == 1) out = unit(x, prog_[size_t(x)]);
-        else if (k == 2) out = unit(x, m_.axes[size_t(x)].min);
-        else if (k == 3) out = unit(x, m_.axes[size_t(x)].max);
-        else out = e_raw_.count(n) ? e_raw_[n] : 0;
+        if (k == 0 || k == 1)
+            out = unit(x, prog_[size_t(x)]);
+        else if (k == 2)
+            out = unit(x, m_.axes[size_t(x)].min);
+        else if (k == 3)
+            out = unit(x, m_.axes[size_t(x)].max);
+        else
+            out = e_raw_.count(n) ? e_raw_[n] : 0;
     } else if (n == 79001) {
         out = int64_t(std::llround(rpm_));
     } else if (n == 79002) {
@@ -676,12 +745,16 @@ int Interpreter::write_e(int n, int64_t value, std::string& why) {
         int fam = (n / 1000) % 10;
         if (m_.lathe) {
             double* f[] = {&c.x, &c.z, &c.r, &c.dx, &c.dz};
-            if (fam == 5) c.c = int(value);
-            else *f[fam] = mm_of(value);
+            if (fam == 5)
+                c.c = int(value);
+            else
+                *f[fam] = mm_of(value);
         } else {
             double* f[] = {&c.l, &c.tip, &c.r, &c.dl, &c.dr};
-            if (fam == 5) c.c = int(value);
-            else *f[fam] = mm_of(value);
+            if (fam == 5)
+                c.c = int(value);
+            else
+                *f[fam] = mm_of(value);
         }
         if (k == modal_.d) gauge_pending_.set();
         return 0;

@@ -5,61 +5,60 @@
 #pragma once
 #include <array>
 #include <bitset>
+#include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <unordered_set>
 #include <vector>
 
-#include <functional>
-#include <memory>
-
-#include "core/parse/block.hpp"
-#include "core/geometry/comp.hpp"
-#include "core/geometry/pgp.hpp"
 #include "core/cycles/pocket46.hpp"
-#include "core/parse/codes.hpp"
-#include "core/diag.hpp"
-#include "core/parse/eval.hpp"
-#include "core/geometry/frames.hpp"
-#include "core/interp/machine.hpp"
-#include "core/parse/program.hpp"
-#include "core/geometry/spline.hpp"
 #include "core/cycles/turning.hpp"
+#include "core/diag.hpp"
+#include "core/geometry/comp.hpp"
+#include "core/geometry/frames.hpp"
+#include "core/geometry/pgp.hpp"
+#include "core/geometry/spline.hpp"
+#include "core/interp/machine.hpp"
+#include "core/parse/block.hpp"
+#include "core/parse/codes.hpp"
+#include "core/parse/eval.hpp"
+#include "core/parse/program.hpp"
 
 namespace pupitre {
 
 struct Loc {
-    int prog = 0;   // %number
+    int prog = 0;  // %number
     int line = 0;
-    long n = -1;    // N of the block, -1 if none
+    long n = -1;  // N of the block, -1 if none
 };
 
 struct MoveEvent {
     Loc loc;
-    int g = 1;             // 0, 1, 2, 3
+    int g = 1;  // 0, 1, 2, 3
     bool g52 = false;
-    Axes from_mach{}, to_mach{};  // machine positions of the reference (internal units)
-    Axes to_prog{};               // program point reached (internal units)
-    int plane_a0 = X, plane_a1 = Y;   // arc plane axes (first, second)
-    double c0 = 0, c1 = 0;            // arc centre, program coordinates (internal units)
-    double sweep = 0;                 // degrees, negative for G2
-    double length = 0;                // mm (degrees for a rotary-only move)
-    double feed = 0;                  // mm/min actually used, at the start
-    double rpm = 0;                   // spindle speed at the start
-    double seconds = 0;               // duration
-    bool x_diameter = false;          // lathe X shown as a diameter
-    bool comp = false;                // a piece of the radius-compensated tool path
+    Axes from_mach{}, to_mach{};     // machine positions of the reference (internal units)
+    Axes to_prog{};                  // program point reached (internal units)
+    int plane_a0 = X, plane_a1 = Y;  // arc plane axes (first, second)
+    double c0 = 0, c1 = 0;           // arc centre, program coordinates (internal units)
+    double sweep = 0;                // degrees, negative for G2
+    double length = 0;               // mm (degrees for a rotary-only move)
+    double feed = 0;                 // mm/min actually used, at the start
+    double rpm = 0;                  // spindle speed at the start
+    double seconds = 0;              // duration
+    bool x_diameter = false;         // lathe X shown as a diameter
+    bool comp = false;               // a piece of the radius-compensated tool path
 };
 
 struct SpindleEvent {
     Loc loc;
     double rpm = 0;
-    int dir = 5;           // 3 cw, 4 ccw, 5 stopped, 19 indexed
+    int dir = 5;  // 3 cw, 4 ccw, 5 stopped, 19 indexed
     bool css = false;
-    double vc = 0;         // m/min under G96
-    int range = -1;        // 40..45, -1 for none
+    double vc = 0;   // m/min under G96
+    int range = -1;  // 40..45, -1 for none
 };
 
 // A programmed element in the plane of radius compensation (axes a0, a1):
@@ -72,7 +71,7 @@ struct ProfileElem {
 };
 
 class MachineSink {
-public:
+  public:
     virtual ~MachineSink() = default;
     virtual void move(const MoveEvent&) {}
     virtual void dwell(const Loc&, double /*seconds*/) {}
@@ -105,22 +104,22 @@ struct Modal {
     int plane = 17;
     int radcomp = 40;
     int feed_mode = 94;
-    double feed = 1000;        // mm/min (G94), mm/rev (G95), 1/min (G93)
-    bool feed_set = true;      // false after G94/G95/G93 changed the unit without F
+    double feed = 1000;    // mm/min (G94), mm/rev (G95), 1/min (G93)
+    bool feed_set = true;  // false after G94/G95/G93 changed the unit without F
     int spindle_mode = 97;
-    double s = 0;              // rev/min (G97) or m/min (G96)
-    bool css_known = false;    // a starting diameter is known for G96
-    double css_x0 = 0;         // G96 starting X (radius) at registration
-    double css_pos0 = 0;       // program X (radius) when registered
-    double smax = 0;           // G92 S limit, 0 = none
-    int spindle_dir = 5;       // 3, 4, 5 or 19
-    int range = -1;            // 0..5 for M40..M45
+    double s = 0;            // rev/min (G97) or m/min (G96)
+    bool css_known = false;  // a starting diameter is known for G96
+    double css_x0 = 0;       // G96 starting X (radius) at registration
+    double css_pos0 = 0;     // program X (radius) when registered
+    double smax = 0;         // G92 S limit, 0 = none
+    int spindle_dir = 5;     // 3, 4, 5 or 19
+    int range = -1;          // 0..5 for M40..M45
     bool inch = false;
     int cycle = 80;
-    int tool_axis = Z;         // G16: axis of the tool vector
+    int tool_axis = Z;  // G16: axis of the tool vector
     bool tool_axis_neg = false;
-    int d = 0;                 // active corrector
-    int t = 0;                 // selected tool
+    int d = 0;  // active corrector
+    int t = 0;  // selected tool
     int tool_in_spindle = 0;
     double g92r = 0;
     bool m7 = false, m8 = false;
@@ -134,35 +133,38 @@ struct Modal {
 };
 
 struct RunOptions {
-    bool block_skip = false;      // operator switch: '/' blocks are skipped
-    bool optional_stop = false;   // operator switch: M01 stops
-    long max_blocks = 20'000'000; // endless-loop guard (error 1001)
-    bool require_homing = false;  // the console's machines: moves before POM give 159
+    bool block_skip = false;       // operator switch: '/' blocks are skipped
+    bool optional_stop = false;    // operator switch: M01 stops
+    long max_blocks = 20'000'000;  // endless-loop guard (error 1001)
+    bool require_homing = false;   // the console's machines: moves before POM give 159
     // Tests: sees each G64 as run, its finished profile, stock, tool position,
     // arguments and moves (issue 19: every program's roughing checked against
     // its part, segment by segment).
-    std::function<void(const turning::Profile&, const std::vector<comp::V2>&, comp::V2, const turning::G64Args&,
-                       const std::vector<turning::Move>&)>
+    std::function<void(const turning::Profile&, const std::vector<comp::V2>&, comp::V2,
+                       const turning::G64Args&, const std::vector<turning::Move>&)>
         on_g64;
     // Tests: the same for each G65, G63 and G66 as run (issue 19 item 1).
-    std::function<void(const turning::Profile&, comp::V2, const turning::G65Args&, const std::vector<turning::Move>&)>
+    std::function<void(const turning::Profile&, comp::V2, const turning::G65Args&,
+                       const std::vector<turning::Move>&)>
         on_g65;
-    std::function<void(const turning::Profile&, comp::V2, const turning::G63Args&, const std::vector<turning::Move>&)>
+    std::function<void(const turning::Profile&, comp::V2, const turning::G63Args&,
+                       const std::vector<turning::Move>&)>
         on_g63;
-    std::function<void(comp::V2, const turning::G66Args&, const std::vector<turning::Move>&)> on_g66;
+    std::function<void(comp::V2, const turning::G66Args&, const std::vector<turning::Move>&)>
+        on_g66;
 };
 
 enum class StepResult {
-    running,   // a block was executed; call step() again
-    stopped,   // M00/M01/M12: waiting for cycle start (call step() to resume)
-    ended,     // M02 (or end of a fragment with error 20 reported)
-    error,     // an error stopped the run: see diags()
+    running,  // a block was executed; call step() again
+    stopped,  // M00/M01/M12: waiting for cycle start (call step() to resume)
+    ended,    // M02 (or end of a fragment with error 20 reported)
+    error,    // an error stopped the run: see diags()
 };
 
 class GateSink;
 
 class Interpreter final : private EAccess {
-public:
+  public:
     Interpreter(const MachineProfile& m, ProgramMemory& mem, MachineSink& sink, RunOptions o = {});
     ~Interpreter();
 
@@ -190,7 +192,7 @@ public:
     bool comp_active() const { return comp_.on; }
     double comp_radius() const { return comp_.radius; }
 
-    bool start(int program);                  // false: no such program (error 25 reported)
+    bool start(int program);  // false: no such program (error 25 reported)
     bool start(const ProgramText* p);
     // IMD (manual data input): runs a fragment whose end is not error 20. The
     // modal state and the position carry over from whatever ran before.
@@ -248,18 +250,18 @@ public:
     // Display conversion: lathe X as a diameter unless E11005 = 0.
     double to_display(int axis, double internal) const;
 
-private:
+  private:
     struct Frame {
         const ProgramText* prog = nullptr;
-        size_t pos = 0;       // next line to read
-        int line = 0;         // its number
-        bool call = false;    // pushed by G77
-        bool whole = false;   // a whole program (else a block range)
-        size_t range_pos = 0; // first block of the range
+        size_t pos = 0;        // next line to read
+        int line = 0;          // its number
+        bool call = false;     // pushed by G77
+        bool whole = false;    // a whole program (else a block range)
+        size_t range_pos = 0;  // first block of the range
         int range_line = 0;
-        int end_line = 0;     // last block of the range (inclusive)
-        bool emptied = false; // G76- deleted every line of the range: no next pass
-        int repeats = 1;      // executions left, this one included
+        int end_line = 0;      // last block of the range (inclusive)
+        bool emptied = false;  // G76- deleted every line of the range: no next pass
+        int repeats = 1;       // executions left, this one included
         int saved_radcomp = 40;
         int saved_dir = 5, saved_range = -1;
         double saved_s = 0;
@@ -279,7 +281,9 @@ private:
     struct OwnFeed {
         Interpreter& in;
         const bool was;
-        explicit OwnFeed(Interpreter& i) : in(i), was(i.feed_programmed_) { in.feed_programmed_ = true; }
+        explicit OwnFeed(Interpreter& i) : in(i), was(i.feed_programmed_) {
+            in.feed_programmed_ = true;
+        }
         ~OwnFeed() { in.feed_programmed_ = was; }
         OwnFeed(const OwnFeed&) = delete;
         OwnFeed& operator=(const OwnFeed&) = delete;
@@ -321,8 +325,10 @@ private:
     bool edit_block_alone(const Block& b, char sign);
     bool edit_whole_program(const Block& b, const Plan& p);
     bool edit_line(const Block& b, const Plan& p);
-    bool inserted_words(const Block& b, const Block& ins, std::vector<std::pair<uint16_t, std::string>>& parts);
-    bool inserted_assigns(const Block& b, const Block& ins, std::vector<std::pair<uint16_t, std::string>>& parts);
+    bool inserted_words(const Block& b, const Block& ins,
+                        std::vector<std::pair<uint16_t, std::string>>& parts);
+    bool inserted_assigns(const Block& b, const Block& ins,
+                          std::vector<std::pair<uint16_t, std::string>>& parts);
     bool inserted_reads_back(const Block& b, const std::string& out);
     bool edit_block_text(const Block& b, std::string& out);
     void text_spliced(const ProgramText* p, const Splice& s);
@@ -366,62 +372,65 @@ private:
         bool helix;  // the normal axis moves too
     };
     [[gnu::always_inline]] inline bool arc_words(const Plan& p, const ArcAxes& ax);
-    [[gnu::always_inline]] inline bool arc_centre(const Plan& p, const ArcAxes& ax, const comp::V2& s, const comp::V2& e,
-                    comp::V2& c, double& r0, double& r1);
+    [[gnu::always_inline]] inline bool arc_centre(const Plan& p, const ArcAxes& ax,
+                                                  const comp::V2& s, const comp::V2& e, comp::V2& c,
+                                                  double& r0, double& r1);
     static inline double arc_sweep(const comp::V2& s, const comp::V2& e, const comp::V2& c,
-                            bool ccw);
+                                   bool ccw);
     static int helix_turns(double dz, double k, double th0);
     bool arc3(const Plan& p, const Axes& target_prog);
     bool emit_arc(int g, const Axes& target, int a0, int a1, double c0, double c1, double sweep_rad,
                   double r0, double r1, int helix_axis);
     bool check_travel(const Axes& mach);
     bool finish_move(MoveEvent& e, const Axes& mach, const Axes& prog, double seconds);
-    double feed_rate(double& rpm_out);     // mm/min for the move start
+    double feed_rate(double& rpm_out);  // mm/min for the move start
     void check_tiny_feed();
     void report_unset_reads();
     void warn_idle_words(const Plan& p);
     void warn_spindle_words(const Plan& p);
     bool tiny_feed_warned_ = false;
-    bool feed_programmed_ = false;         // an F was programmed (warning 1110)
+    bool feed_programmed_ = false;  // an F was programmed (warning 1110)
     bool feed_before_f_warned_ = false;
-    double s_raw_ = 0;                     // S read from a variable before rounding (1113)
-    std::bitset<960> l_unset_warned_;      // warning 1111, once per variable
+    double s_raw_ = 0;                 // S read from a variable before rounding (1113)
+    std::bitset<960> l_unset_warned_;  // warning 1111, once per variable
     double spindle_at(double x_radius) const;
     double feed_time(double length, double x0, double x1);
     void set_spindle_event();
 
     const MachineProfile& m_;
     ProgramMemory& mem_;
-    MachineSink& sink_;            // the real sink
+    MachineSink& sink_;               // the real sink
     std::unique_ptr<GateSink> gate_;  // holds events while a compensated move waits
-    MachineSink& out_;             // where events go: the gate
+    MachineSink& out_;                // where events go: the gate
 
     // Tool radius compensation with a non-zero radius (interp_comp.cpp).
     struct CompCtx {
         Loc loc;
         Modal modal;
         int g = 1;
-        Axes target{};   // programmed target, all axes
-        double rp = 0;   // programmed arc radius (tangential feed), 0 for a line
+        Axes target{};  // programmed target, all axes
+        double rp = 0;  // programmed arc radius (tangential feed), 0 for a line
     };
     struct Comp {
         bool on = false;
         bool waiting_entry = false;  // engaged, no move yet
         bool has_pending = false;
         bool pending_is_entry = false;
-        int side = 1;                // +1 left (G41), -1 right (G42), mirror included
+        int side = 1;  // +1 left (G41), -1 right (G42), mirror included
         double radius = 0;
         int a0 = X, a1 = Y;
-        comp::V2 shift{0, 0};        // lathe: nose centre to tool point, R·(sz, sx)
+        comp::V2 shift{0, 0};  // lathe: nose centre to tool point, R·(sz, sx)
         comp::Elem pending;
         CompCtx ctx;
-        comp::V2 tc{0, 0};           // tool centre where the next piece starts
+        comp::V2 tc{0, 0};  // tool centre where the next piece starts
     } comp_;
     // Drilling cycles G81-G89 and G31 (interp_cycles.cpp): modal parameters.
     struct CycleParams {
         bool has_z = false, has_er = false, has_eh = false, has_ef = false;
-        bool has_p = false, has_q = false, has_es = false, has_ep = false, has_k = false, has_starts = false;
-        double z = 0, er = 0, eh = 0, ef = 0, p = 0, q = 0, es = 0, ep = 0, ec = 0, ea = 0, k = 0, ek = 0;
+        bool has_p = false, has_q = false, has_es = false, has_ep = false, has_k = false,
+             has_starts = false;
+        double z = 0, er = 0, eh = 0, ef = 0, p = 0, q = 0, es = 0, ep = 0, ec = 0, ea = 0, k = 0,
+               ek = 0;
         double starts = 1;
     } cyc_;
     int cycle_axis() const;
@@ -443,12 +452,12 @@ private:
     struct P46 {
         bool defining = false;
         p46::Def def;
-        bool first = true;       // the next contour block is the section's positioning
-        int blocks = 0;          // contour blocks read in the section
-        int motion = 1;          // modal interpolation inside the definition
+        bool first = true;  // the next contour block is the section's positioning
+        int blocks = 0;     // contour blocks read in the section
+        int motion = 1;     // modal interpolation inside the definition
         p46::V2 pos{0, 0};
-        long last_block = -1;    // blocks_ at the last definition block
-        Loc at;                  // where the open definition's NU0 is
+        long last_block = -1;  // blocks_ at the last definition block
+        Loc at;                // where the open definition's NU0 is
         pgp::Solver solver;
         std::map<int, p46::Def> defs;
     } p46_;
@@ -502,8 +511,8 @@ private:
     bool profile_start(Plan& q, ProfileRead& r);
     pgp::Spec profile_spec(const Plan& q, const comp::V2& cur, int line) const;
     bool profile_block(Plan& q, int line, ProfileRead& r);
-    static void profile_as_called(const std::vector<pgp::Elem>& elems, bool reversed, turning::Profile& out,
-                                  comp::V2& first);
+    static void profile_as_called(const std::vector<pgp::Elem>& elems, bool reversed,
+                                  turning::Profile& out, comp::V2& first);
     void warn_allowance_inside(int g, double i, double k);
     bool turning_emit(const std::vector<turning::Move>& moves, double lead, double infeed);
     bool turning_block(const Plan& p);
@@ -529,14 +538,14 @@ private:
     std::bitset<kAxes> gauge_pending_;
     std::array<Corrector, 256> corr_{};
     LVars l_;
-    std::map<int, int64_t> e_raw_;       // E parameters with no machine meaning (E80000…)
-    Axes travel_lo_{}, travel_hi_{};     // static travel narrowed by E6x002 / E6x003
+    std::map<int, int64_t> e_raw_;    // E parameters with no machine meaning (E80000…)
+    Axes travel_lo_{}, travel_hi_{};  // static travel narrowed by E6x002 / E6x003
     void update_travel();
-    std::map<int, int64_t> e_written_;   // every E written by the program
-    Axes mach_{};   // machine position of the reference
-    Axes prog_{};   // current program point
-    Axes prog_next_{};  // program point at the end of the linear move being made
-    double rpm_ = 0;  // actual spindle speed
+    std::map<int, int64_t> e_written_;  // every E written by the program
+    Axes mach_{};                       // machine position of the reference
+    Axes prog_{};                       // current program point
+    Axes prog_next_{};                  // program point at the end of the linear move being made
+    double rpm_ = 0;                    // actual spindle speed
     std::vector<Frame> stack_;
     const ProgramText* main_ = nullptr;
     Loc loc_;
@@ -558,7 +567,7 @@ private:
     bool note_backward_jump(long label);
     double path_ = 0, clock_ = 0;
     bool ended_ = false;
-    bool imd_ = false;  // the main program is an IMD fragment
+    bool imd_ = false;            // the main program is an IMD fragment
     bool comp_emitting_ = false;  // moves now made are compensated pieces
     std::bitset<kAxes> homed_;
     bool first_move_ = true;
@@ -566,11 +575,12 @@ private:
     SpindleEvent last_sp_;  // last spindle state reported
     bool sp_emitted_ = false;
     bool x_known_ = false;  // an X was programmed (G96 start diameter)
-    Block block_;  // reused parse buffer
-    Diag parse_diag_;  // filled only when a block does not parse
+    Block block_;           // reused parse buffer
+    Diag parse_diag_;       // filled only when a block does not parse
     std::string_view cur_text_;
     int cur_line_ = 0;
-    size_t loaded_size_ = 0;  // program memory at the start of the run (G76+ quota)  // line of the block being executed (G76+/G76- move it)
+    size_t loaded_size_ = 0;  // program memory at the start of the run (G76+ quota)  // line of the
+                              // block being executed (G76+/G76- move it)
 };
 
 }  // namespace pupitre

@@ -2,33 +2,51 @@
 // X.., G77 N.. N.. H.., the cycle words… one reader per function, picked by
 // its number.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "core/interp/decode.hpp"
 #include "core/i18n.hpp"
+#include "core/interp/decode.hpp"
 
 namespace pupitre {
 
 const Interpreter::Decoder::ArgReader* Interpreter::Decoder::arg_reader(int g) {
     static constexpr ArgReader table[] = {
-        {4, false, &Decoder::g4_dwell},       {16, false, &Decoder::g16_arg},
-        {51, false, &Decoder::g51_arg},       {59, false, &Decoder::g59_arg},
-        {92, false, &Decoder::g92_arg},       {96, false, &Decoder::g96_arg},
-        {97, false, &Decoder::g97_arg},       {93, false, &Decoder::feed_mode_arg},
-        {94, false, &Decoder::feed_mode_arg}, {95, false, &Decoder::feed_mode_arg},
-        {77, false, &Decoder::g77_arg},       {79, false, &Decoder::label_arg},
-        {75, false, &Decoder::label_arg},     {10, false, &Decoder::label_arg},
-        {76, false, &Decoder::g76_arg},       {6, false, &Decoder::spline_arg},
-        {48, false, &Decoder::spline_arg},    {49, false, &Decoder::spline_arg},
-        {78, false, &Decoder::g78_arg},       {29, false, &Decoder::g29_normal},
+        {4, false, &Decoder::g4_dwell},
+        {16, false, &Decoder::g16_arg},
+        {51, false, &Decoder::g51_arg},
+        {59, false, &Decoder::g59_arg},
+        {92, false, &Decoder::g92_arg},
+        {96, false, &Decoder::g96_arg},
+        {97, false, &Decoder::g97_arg},
+        {93, false, &Decoder::feed_mode_arg},
+        {94, false, &Decoder::feed_mode_arg},
+        {95, false, &Decoder::feed_mode_arg},
+        {77, false, &Decoder::g77_arg},
+        {79, false, &Decoder::label_arg},
+        {75, false, &Decoder::label_arg},
+        {10, false, &Decoder::label_arg},
+        {76, false, &Decoder::g76_arg},
+        {6, false, &Decoder::spline_arg},
+        {48, false, &Decoder::spline_arg},
+        {49, false, &Decoder::spline_arg},
+        {78, false, &Decoder::g78_arg},
+        {29, false, &Decoder::g29_normal},
         {23, false, nullptr},  // G23 X.. Z.. I.. K..: default meanings
         {46, true, &Decoder::g46_arg},
-        {33, true, &Decoder::profile_cycle_arg}, {38, true, &Decoder::profile_cycle_arg},
-        {63, true, &Decoder::profile_cycle_arg}, {64, true, &Decoder::profile_cycle_arg},
-        {65, true, &Decoder::profile_cycle_arg}, {66, true, &Decoder::profile_cycle_arg},
-        {31, true, &Decoder::drill_arg}, {45, true, &Decoder::drill_arg},
-        {81, true, &Decoder::drill_arg}, {82, true, &Decoder::drill_arg},
-        {83, true, &Decoder::drill_arg}, {84, true, &Decoder::drill_arg},
-        {85, true, &Decoder::drill_arg}, {86, true, &Decoder::drill_arg},
-        {87, true, &Decoder::drill_arg}, {88, true, &Decoder::drill_arg},
+        {33, true, &Decoder::profile_cycle_arg},
+        {38, true, &Decoder::profile_cycle_arg},
+        {63, true, &Decoder::profile_cycle_arg},
+        {64, true, &Decoder::profile_cycle_arg},
+        {65, true, &Decoder::profile_cycle_arg},
+        {66, true, &Decoder::profile_cycle_arg},
+        {31, true, &Decoder::drill_arg},
+        {45, true, &Decoder::drill_arg},
+        {81, true, &Decoder::drill_arg},
+        {82, true, &Decoder::drill_arg},
+        {83, true, &Decoder::drill_arg},
+        {84, true, &Decoder::drill_arg},
+        {85, true, &Decoder::drill_arg},
+        {86, true, &Decoder::drill_arg},
+        {87, true, &Decoder::drill_arg},
+        {88, true, &Decoder::drill_arg},
         {89, true, &Decoder::drill_arg},
     };
     // Arguments of functions not run yet (cycles, splines…).
@@ -38,7 +56,9 @@ const Interpreter::Decoder::ArgReader* Interpreter::Decoder::arg_reader(int g) {
     return &unused;
 }
 
-bool Interpreter::Decoder::unused_arg(const Word&) { return true; }
+bool Interpreter::Decoder::unused_arg(const Word&) {
+    return true;
+}
 
 // G4 F: dwell seconds.
 bool Interpreter::Decoder::g4_dwell(const Word& w) {
@@ -71,7 +91,8 @@ bool Interpreter::Decoder::g59_arg(const Word& w) {
     int axis = -1;
     if (!in.word_value(w, v)) return false;
     if (axis_addr(w.addr, axis)) {
-        if (!m.has(axis)) return bad(1, strf(tr("axis %c is not on this machine"), letter(w)), w.col);
+        if (!m.has(axis))
+            return bad(1, strf(tr("axis %c is not on this machine"), letter(w)), w.col);
         // G52/G59 X on a lathe is a radius (turning.md §2.8).
         p.g59.axis.set(size_t(axis));
         p.g59.val[size_t(axis)] = is_rotary(axis) ? v : v * unit;
@@ -100,7 +121,8 @@ bool Interpreter::Decoder::g92_arg(const Word& w) {
     } else if (axis_addr(w.addr, axis)) {
         if (!m.has(axis)) return bad(1, strf(tr("axis %c is not on this machine"), c), w.col);
         p.g92.axis.set(size_t(axis));
-        p.g92.val[size_t(axis)] = is_rotary(axis) ? v : (axis == X && diam ? v * unit / 2 : v * unit);
+        p.g92.val[size_t(axis)] =
+            is_rotary(axis) ? v : (axis == X && diam ? v * unit / 2 : v * unit);
     }
     return true;
 }
@@ -166,9 +188,12 @@ bool Interpreter::Decoder::label_arg(const Word& w) {
     double v;
     if (letter(w) != 'N') return true;  // G10 EF: feed limit after interrupt, unused
     if (!in.word_value(w, v, &iv)) return false;
-    if (owner_g == 79) p.flow.g79_n = iv;
-    else if (owner_g == 75) p.flow.g75_n = iv;
-    else p.flow.g10_n = iv;
+    if (owner_g == 79)
+        p.flow.g79_n = iv;
+    else if (owner_g == 75)
+        p.flow.g75_n = iv;
+    else
+        p.flow.g10_n = iv;
     return true;
 }
 
@@ -209,16 +234,22 @@ bool Interpreter::Decoder::spline_arg(const Word& w) {
     double v;
     if (!in.word_value(w, v, &iv)) return false;
     const char c = letter(w);
-    if (w.addr == addrN('C')) p.spline.nc = iv;
-    else if (c == 'H') p.spline.h = iv;
-    else if (c == 'N' && p.spline.nn < 2) p.spline.n[p.spline.nn++] = iv;
-    else return bad(3, tr("G48 takes NC, H and two N labels"), w.col);
+    if (w.addr == addrN('C'))
+        p.spline.nc = iv;
+    else if (c == 'H')
+        p.spline.h = iv;
+    else if (c == 'N' && p.spline.nn < 2)
+        p.spline.n[p.spline.nn++] = iv;
+    else
+        return bad(3, tr("G48 takes NC, H and two N labels"), w.col);
     return true;
 }
 
 // G31 G45 G81-G89: the cycle words (positions and bottom keep their default
 // meaning).
-bool Interpreter::Decoder::drill_arg(const Word& w) { return cyc_word(w); }
+bool Interpreter::Decoder::drill_arg(const Word& w) {
+    return cyc_word(w);
+}
 
 // G46 NU.. (milling.md §7.2): NR+ / NR- keep their sign only.
 bool Interpreter::Decoder::g46_arg(const Word& w) {
@@ -236,7 +267,8 @@ bool Interpreter::Decoder::g78_arg(const Word& w) {
     int iv;
     double v;
     if (!in.word_value(w, v, &iv)) return false;
-    if (iv != 1) return bad(78, strf(tr("G78 P%d: this machine has one axis group (P1)"), iv), w.col);
+    if (iv != 1)
+        return bad(78, strf(tr("G78 P%d: this machine has one axis group (P1)"), iv), w.col);
     p.flow.g78_p = true;
     return true;
 }

@@ -9,9 +9,9 @@
 #include <numbers>
 
 #include "core/geometry/geometry.hpp"
+#include "core/i18n.hpp"
 #include "core/interp/gate.hpp"
 #include "core/interp/plan.hpp"
-#include "core/i18n.hpp"
 
 namespace pupitre {
 
@@ -34,7 +34,8 @@ bool Interpreter::comp_engage(int g) {
     comp_.a1 = m_.lathe ? X : modal_.plane == 17 ? Y : modal_.plane == 18 ? X : Z;
     comp_.side = g == 41 ? 1 : -1;
     // A mirror on one axis of the plane swaps left and right (milling.md §3.8).
-    if (frames_.mirror[size_t(comp_.a0)] != frames_.mirror[size_t(comp_.a1)]) comp_.side = -comp_.side;
+    if (frames_.mirror[size_t(comp_.a0)] != frames_.mirror[size_t(comp_.a1)])
+        comp_.side = -comp_.side;
     if (m_.lathe) {
         int code = (c.c >= 0 && c.c <= 8) ? c.c : 0;
         comp_.shift = comp::V2(kNose[code][1] * r, kNose[code][0] * r);  // (Z, X)
@@ -75,7 +76,8 @@ bool Interpreter::comp_emit(const std::vector<comp::Piece>& pieces, const CompCt
                 for (int a = 0; a < kAxes; ++a)
                     if (a != a0 && a != a1) tgt[size_t(a)] = prog_[size_t(a)];
             }
-            ok = emit_arc(pc.sweep > 0 ? 3 : 2, tgt, a0, a1, c0, c1, pc.sweep, r, r, pc.connecting ? -1 : an);
+            ok = emit_arc(pc.sweep > 0 ? 3 : 2, tgt, a0, a1, c0, c1, pc.sweep, r, r,
+                          pc.connecting ? -1 : an);
             modal_.feed = feed;
         }
         if (!ok) break;
@@ -87,17 +89,23 @@ bool Interpreter::comp_emit(const std::vector<comp::Piece>& pieces, const CompCt
     return ok;
 }
 
-
 bool Interpreter::comp_element(const comp::Elem& e, int g, const Axes& target, double rp) {
     CompCtx ctx{loc_, modal_, g, target, rp};
     // The drawing's programmed profile: reported before the offset, so that a
     // gouge (149) shows the element the tool could not follow.
-    ProfileElem pe{comp_.a0, comp_.a1, {e.a.x(), e.a.y()}, {e.b.x(), e.b.y()}, {e.c.x(), e.c.y()},
-                   e.sweep * 180 / std::numbers::pi, e.arc};
+    ProfileElem pe{comp_.a0,
+                   comp_.a1,
+                   {e.a.x(), e.a.y()},
+                   {e.b.x(), e.b.y()},
+                   {e.c.x(), e.c.y()},
+                   e.sweep * 180 / std::numbers::pi,
+                   e.arc};
     out_.profile(loc_, pe);
     if (comp_.waiting_entry) {
         if (e.arc)
-            return fail(140, tr("the first block in radius compensation must be a line (G00 or G01)")), false;
+            return fail(140,
+                        tr("the first block in radius compensation must be a line (G00 or G01)")),
+                   false;
         Axes tp = frames_.to_program(mach_);
         comp_.tc = comp::V2(tp[size_t(comp_.a0)], tp[size_t(comp_.a1)]) - comp_.shift;
         comp_.waiting_entry = false;
@@ -114,12 +122,15 @@ bool Interpreter::comp_element(const comp::Elem& e, int g, const Axes& target, d
     gate_->holding = false;
     if (comp_.pending_is_entry) {
         // The entry ends on the normal to the next element at its start (000:3938).
-        next_from = comp_.pending.b + comp_.radius * comp::normal(comp::start_tangent(e), comp_.side);
+        next_from =
+            comp_.pending.b + comp_.radius * comp::normal(comp::start_tangent(e), comp_.side);
         comp::Piece p;
         p.to = next_from;
         pieces.push_back(p);
-    } else if (int rc = comp::join(comp_.pending, comp_.tc, e, comp_.radius, comp_.side, pieces, next_from)) {
-        return fail(rc, strf(tr("the tool radius %s does not fit the profile here (an offset element vanishes or reverses)"),
+    } else if (int rc = comp::join(comp_.pending, comp_.tc, e, comp_.radius, comp_.side, pieces,
+                                   next_from)) {
+        return fail(rc, strf(tr("the tool radius %s does not fit the profile here (an offset "
+                                "element vanishes or reverses)"),
                              std::to_string(comp_.radius).substr(0, 7).c_str())),
                false;
     }
@@ -147,7 +158,8 @@ bool Interpreter::comp_other_axes(const Axes& target, const std::bitset<kAxes>& 
         prog_ = frames_.to_program(mach_);
         Axes tgt = prog_;
         for (int a = 0; a < kAxes; ++a)
-            if (axes[size_t(a)] && a != comp_.a0 && a != comp_.a1) tgt[size_t(a)] = ctx.target[size_t(a)];
+            if (axes[size_t(a)] && a != comp_.a0 && a != comp_.a1)
+                tgt[size_t(a)] = ctx.target[size_t(a)];
         prog_next_ = tgt;
         Axes mach = frames_.to_machine(tgt);
         bool ok = check_travel(mach) && linear(ctx.g, mach, false, axes);
@@ -177,8 +189,10 @@ bool Interpreter::comp_exit(const Plan&, const Axes* target) {
             comp::Piece p;
             p.to = comp_.pending.b;
             pieces.push_back(p);
-        } else if (int rc = comp::finish(comp_.pending, comp_.tc, comp_.radius, comp_.side, pieces)) {
-            return fail(rc, tr("the tool radius does not fit the last element of the profile")), false;
+        } else if (int rc =
+                       comp::finish(comp_.pending, comp_.tc, comp_.radius, comp_.side, pieces)) {
+            return fail(rc, tr("the tool radius does not fit the last element of the profile")),
+                   false;
         }
         if (!comp_emit(pieces, comp_.ctx)) return false;
         gate_->release();

@@ -7,8 +7,8 @@
 #include <cstdio>
 #include <optional>
 
-#include "core/interp/plan.hpp"
 #include "core/i18n.hpp"
+#include "core/interp/plan.hpp"
 
 namespace pupitre {
 
@@ -22,7 +22,8 @@ int Interpreter::cycle_axis() const {
 // One elementary move of a cycle along its axis, or in the plane.
 bool Interpreter::cycle_move(int g, const Axes& target) {
     bool same = true;
-    for (int a = 0; a < kAxes; ++a) same = same && std::fabs(target[size_t(a)] - prog_[size_t(a)]) < 1e-12;
+    for (int a = 0; a < kAxes; ++a)
+        same = same && std::fabs(target[size_t(a)] - prog_[size_t(a)]) < 1e-12;
     if (same) return true;  // a cycle never makes an empty move
     prog_next_ = target;
     Axes mach = frames_.to_machine(target);
@@ -51,24 +52,39 @@ bool Interpreter::cycle_words(const Plan& p, int code) {
     for (int i = 0; i < p.cycle_words.n; ++i) {
         Addr a = p.cycle_words.word[i].a;
         double v = p.cycle_words.word[i].v;
-        if (a == addrE('R')) c.er = diam ? v / 2 : v, c.has_er = true;
-        else if (a == addrE('H')) c.eh = diam ? v / 2 : v, c.has_eh = true;
-        else if (a == addrE('F')) c.ef = v, c.has_ef = true;
-        else if (a == addr1('P')) c.p = v, c.has_p = true;
-        else if (a == addr1('Q')) c.q = v, c.has_q = true;
-        else if (a == addrE('S')) c.es = v, c.has_es = true;
-        else if (a == addrE('P')) c.ep = v, c.has_ep = true;
-        else if (a == addrE('C')) c.ec = v;
-        else if (a == addrE('A')) c.ea = v;
-        else if (a == addr1('K') || a == addr1('I') || a == addr1('J')) c.k = v, c.has_k = true;
-        else if (a == addrE('K')) c.ek = v;
-        else if (a == addr1('F')) c.starts = v, c.has_starts = true;
+        if (a == addrE('R'))
+            c.er = diam ? v / 2 : v, c.has_er = true;
+        else if (a == addrE('H'))
+            c.eh = diam ? v / 2 : v, c.has_eh = true;
+        else if (a == addrE('F'))
+            c.ef = v, c.has_ef = true;
+        else if (a == addr1('P'))
+            c.p = v, c.has_p = true;
+        else if (a == addr1('Q'))
+            c.q = v, c.has_q = true;
+        else if (a == addrE('S'))
+            c.es = v, c.has_es = true;
+        else if (a == addrE('P'))
+            c.ep = v, c.has_ep = true;
+        else if (a == addrE('C'))
+            c.ec = v;
+        else if (a == addrE('A'))
+            c.ea = v;
+        else if (a == addr1('K') || a == addr1('I') || a == addr1('J'))
+            c.k = v, c.has_k = true;
+        else if (a == addrE('K'))
+            c.ek = v;
+        else if (a == addr1('F'))
+            c.starts = v, c.has_starts = true;
         if ((a == addr1('P') || a == addr1('Q') || a == addrE('S') || a == addr1('K')) && v < 0)
-            return fail(835, strf(tr("%s must be positive in a cycle"), std::string(addr_name(a)).c_str())), false;
+            return fail(835, strf(tr("%s must be positive in a cycle"),
+                                  std::string(addr_name(a)).c_str())),
+                   false;
     }
     // The bottom is the cycle-axis word, absolute also in G91 (milling.md §6.1.3).
     if (p.to.axis[size_t(ax)]) {
-        c.z = p.to.inc[size_t(ax)] ? prog_[size_t(ax)] + p.to.val[size_t(ax)] : p.to.val[size_t(ax)];
+        c.z =
+            p.to.inc[size_t(ax)] ? prog_[size_t(ax)] + p.to.val[size_t(ax)] : p.to.val[size_t(ax)];
         c.has_z = true;
     }
     (void)code;
@@ -125,10 +141,11 @@ Interpreter::DrillRun::Step Interpreter::DrillRun::machining(int code) {
         int code;
         Step step;
     } table[] = {
-        {81, &DrillRun::plain},         {82, &DrillRun::dwell_bottom},  {83, &DrillRun::peck},
-        {87, &DrillRun::peck},          {84, &DrillRun::tap},           {85, &DrillRun::bore_feed_out},
-        {86, &DrillRun::bore_oriented}, {88, &DrillRun::bore_stop},     {89, &DrillRun::bore_dwell},
-        {31, &DrillRun::thread},
+        {81, &DrillRun::plain},         {82, &DrillRun::dwell_bottom},
+        {83, &DrillRun::peck},          {87, &DrillRun::peck},
+        {84, &DrillRun::tap},           {85, &DrillRun::bore_feed_out},
+        {86, &DrillRun::bore_oriented}, {88, &DrillRun::bore_stop},
+        {89, &DrillRun::bore_dwell},    {31, &DrillRun::thread},
     };
     for (const auto& e : table)
         if (e.code == code) return e.step;
@@ -140,15 +157,18 @@ bool Interpreter::DrillRun::check() {
     if (!in.m_.lathe && in.modal_.tool_axis != ax)
         return in.fail(890, tr("the tool axis (G16) is not parallel to the cycle axis")), false;
     if (!c.has_z)
-        return in.fail(code == 31 ? 883 : 882, strf(tr("the hole bottom (%c) is not programmed"), kAxisNames[size_t(ax)])),
+        return in.fail(code == 31 ? 883 : 882,
+                       strf(tr("the hole bottom (%c) is not programmed"), kAxisNames[size_t(ax)])),
                false;
     const double s = in.prog_[size_t(ax)];
     if (!c.has_er) {
         c.er = s;  // the retract plane defaults to where the cycle starts
         c.has_er = true;
     }
-    if (std::fabs(c.er - c.z) < 1e-9) return in.fail(891, tr("the retract plane ER is the hole bottom")), false;
-    if (h(c.er) < h(c.z)) return in.fail(881, tr("the retract plane ER is below the hole bottom")), false;
+    if (std::fabs(c.er - c.z) < 1e-9)
+        return in.fail(891, tr("the retract plane ER is the hole bottom")), false;
+    if (h(c.er) < h(c.z))
+        return in.fail(881, tr("the retract plane ER is below the hole bottom")), false;
     return check_code();
 }
 
@@ -159,7 +179,8 @@ bool Interpreter::DrillRun::check_code() {
     if ((code == 84 || code == 31) && in.modal_.spindle_dir != 3 && in.modal_.spindle_dir != 4)
         return in.fail(831, strf(tr("G%d with the spindle stopped"), code)), false;
     if ((code == 83 || code == 87) && !c.has_p && !c.has_es)
-        return in.fail(2, strf(tr("G%d needs P (first peck) or ES (number of pecks)"), code)), false;
+        return in.fail(2, strf(tr("G%d needs P (first peck) or ES (number of pecks)"), code)),
+               false;
     if ((code == 83 || code == 87) && c.has_p && c.has_q && c.q > c.p)
         return in.fail(881, tr("the last peck Q is larger than the first P")), false;
     // A peck under the resolution, a negative one or a fraction of a peck
@@ -170,7 +191,8 @@ bool Interpreter::DrillRun::check_code() {
         return in.fail(881, tr("ES must be a whole number of pecks, 1 or more")), false;
     if (code == 31 && (!c.has_k || !c.has_p))
         return in.fail(883, tr("G31 needs the pitch (K) and the retract (P)")), false;
-    if (code == 31 && c.has_starts && (c.starts < 1 || c.starts > 9 || c.starts != std::floor(c.starts)))
+    if (code == 31 && c.has_starts &&
+        (c.starts < 1 || c.starts > 9 || c.starts != std::floor(c.starts)))
         return in.fail(884, tr("G31: the number of starts F must be 1 to 9")), false;
     return true;
 }
@@ -188,7 +210,9 @@ bool Interpreter::DrillRun::approach(const Plan& p) {
         q.to.axis.reset(size_t(ax));
         Axes target = prog;
         for (int a = 0; a < kAxes; ++a)
-            if (q.to.axis[size_t(a)]) target[size_t(a)] = q.to.inc[size_t(a)] ? prog[size_t(a)] + q.to.val[size_t(a)] : q.to.val[size_t(a)];
+            if (q.to.axis[size_t(a)])
+                target[size_t(a)] = q.to.inc[size_t(a)] ? prog[size_t(a)] + q.to.val[size_t(a)]
+                                                        : q.to.val[size_t(a)];
         bool ok;
         const int motion = in.modal_.motion;
         if (motion == 2 || motion == 3) {
@@ -204,9 +228,13 @@ bool Interpreter::DrillRun::approach(const Plan& p) {
     return true;
 }
 
-bool Interpreter::DrillRun::plain() { return move(1, c.z) && move(0, c.er); }
+bool Interpreter::DrillRun::plain() {
+    return move(1, c.z) && move(0, c.er);
+}
 
-bool Interpreter::DrillRun::dwell_bottom() { return move(1, c.z) && dwell(c.ef) && move(0, c.er); }
+bool Interpreter::DrillRun::dwell_bottom() {
+    return move(1, c.z) && dwell(c.ef) && move(0, c.er);
+}
 
 // Peck law (milling.md §6.5, spec README (b) 18).
 bool Interpreter::DrillRun::pecks(std::vector<double>& out) {
@@ -224,9 +252,12 @@ bool Interpreter::DrillRun::pecks(std::vector<double>& out) {
         if (rest < -1e-9 || (shared == 0 && std::fabs(rest) > 1e-9 && fixed == 0))
             return in.fail(881, tr("ES, P and Q do not fit the depth of the hole")), false;
         for (int k = 0; k < n; ++k) {
-            if (k == 0 && first > 0) out.push_back(first);
-            else if (k == n - 1 && last > 0 && n > 1) out.push_back(last);
-            else out.push_back(shared > 0 ? rest / shared : 0);
+            if (k == 0 && first > 0)
+                out.push_back(first);
+            else if (k == n - 1 && last > 0 && n > 1)
+                out.push_back(last);
+            else
+                out.push_back(shared > 0 ? rest / shared : 0);
         }
         if (shared == 0 && !out.empty()) out.back() += rest;  // exact total
     } else if (c.has_q && c.q < c.p) {
@@ -364,7 +395,8 @@ bool Interpreter::DrillRun::thread() {
 
 // A block while a cycle is active, or a G31 block (milling.md §6.1.4).
 bool Interpreter::cycle_block(const Plan& p) {
-    if (modal_.radcomp != 40) return fail(140, tr("machining cycle under radius compensation")), false;
+    if (modal_.radcomp != 40)
+        return fail(140, tr("machining cycle under radius compensation")), false;
     const int code = p.g[31] ? 31 : modal_.cycle;
     if (!cycle_words(p, code)) return false;
     const int ax = cycle_axis();
@@ -374,7 +406,8 @@ bool Interpreter::cycle_block(const Plan& p) {
     if (written || plane.any()) return cycle_run(p, code);
     // ER alone: go to the new retract plane, no machining (004:956, 000:6393).
     bool er_only = false;
-    for (int i = 0; i < p.cycle_words.n; ++i) er_only = er_only || p.cycle_words.word[i].a == addrE('R');
+    for (int i = 0; i < p.cycle_words.n; ++i)
+        er_only = er_only || p.cycle_words.word[i].a == addrE('R');
     if (er_only && !cycle_axis_move(0, cyc_.er)) return false;
     return true;
 }

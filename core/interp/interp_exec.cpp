@@ -6,10 +6,10 @@
 #include <numbers>
 #include <optional>
 
+#include "core/i18n.hpp"
 #include "core/interp/gate.hpp"
 #include "core/interp/plan.hpp"
 #include "core/numfmt.hpp"
-#include "core/i18n.hpp"
 
 namespace pupitre {
 
@@ -17,11 +17,14 @@ namespace pupitre {
 // variables, so they may not change under them.
 bool Interpreter::assign_l(const Operand& t, double v, int col) {
     if (!LVars::valid(t.index))
-        return fail(91, strf(tr("L%d does not exist (L0-L19, L100-L199, L900-L959)"), t.index), col), false;
+        return fail(91, strf(tr("L%d does not exist (L0-L19, L100-L199, L900-L959)"), t.index),
+                    col),
+               false;
     if (t.index >= 100 && t.index <= 199 && modal_.radcomp != 40)
         return fail(140, strf(tr("writing L%d under radius compensation"), t.index), col), false;
     if (t.index >= 100 && t.index <= 199 && pgp_.pending())
-        return fail(96, strf(tr("writing L%d after an incomplete profile block"), t.index), col), false;
+        return fail(96, strf(tr("writing L%d after an incomplete profile block"), t.index), col),
+               false;
     l_.v[size_t(t.index)] = v;
     l_.written.set(size_t(t.index));
     return true;
@@ -31,13 +34,15 @@ bool Interpreter::assign_l(const Operand& t, double v, int col) {
 bool Interpreter::assign_e(const Operand& t, double v, int col) {
     int n = t.index;
     if (t.kind == Operand::EIndirect) {
-        if (!LVars::valid(t.index)) return fail(91, strf(tr("L%d does not exist"), t.index), col), false;
+        if (!LVars::valid(t.index))
+            return fail(91, strf(tr("L%d does not exist"), t.index), col), false;
         double nn = l_.v[size_t(t.index)];
         if (nn < 0 || nn > 99999 || nn != std::floor(nn))
             return fail(91, strf(tr("L%d does not hold an E number"), t.index), col), false;
         n = int(nn);
     }
-    if (std::fabs(v) > 9.2e18) return fail(92, tr("value too large for an E parameter"), col), false;
+    if (std::fabs(v) > 9.2e18)
+        return fail(92, tr("value too large for an E parameter"), col), false;
     // A decimal stored into E is truncated toward zero (program-flow.md §9.3).
     std::string why;
     if (int rc = write_e(n, int64_t(std::trunc(v)), why)) return fail(rc, why, col), false;
@@ -51,7 +56,8 @@ bool Interpreter::assign_all(const Block& b) {
         double v;
         std::string why;
         if (int rc = eval_expr(b, a.expr, l_, *this, v, why)) return fail(rc, why, a.col), false;
-        bool ok = a.target.kind == Operand::LVar ? assign_l(a.target, v, a.col) : assign_e(a.target, v, a.col);
+        bool ok = a.target.kind == Operand::LVar ? assign_l(a.target, v, a.col)
+                                                 : assign_e(a.target, v, a.col);
         if (!ok) return false;
     }
     return true;
@@ -67,8 +73,8 @@ std::optional<StepResult> Interpreter::run_apart(const Block& b, const Plan& p) 
     }
     if (p.unsupported.g >= 0) {
         const GCode* g = find_g(p.unsupported.g);
-        return fail(err::kUnsupported, strf(tr("G%d (%s) is not yet supported by pupitre"), p.unsupported.g,
-                                            tr(std::string(g->text).c_str())));
+        return fail(err::kUnsupported, strf(tr("G%d (%s) is not yet supported by pupitre"),
+                                            p.unsupported.g, tr(std::string(g->text).c_str())));
     }
     // G76+/G76- edit the program memory and do nothing else.
     if (p.g76.sign) return edit_program(b, p) ? StepResult::running : StepResult::error;
@@ -91,7 +97,10 @@ std::optional<StepResult> Interpreter::run_apart(const Block& b, const Plan& p) 
 bool Interpreter::block_allowed(const Plan& p) {
     if (p.pgp.has_eb)
         for (int i = 0; i < p.tech.nm; ++i)
-            if (p.tech.m[i] <= 2) return fail(131, strf(tr("a fillet or chamfer (EB) in a block with M0%d"), p.tech.m[i])), false;
+            if (p.tech.m[i] <= 2)
+                return fail(131,
+                            strf(tr("a fillet or chamfer (EB) in a block with M0%d"), p.tech.m[i])),
+                       false;
     if (pgp_.pending()) {
         // The held element needs the next blocks (pgp.md §6 item 5).
         if (p.mode.plane >= 0 && p.mode.plane != modal_.plane)
@@ -128,8 +137,10 @@ bool Interpreter::do_g79(const Block& b, const Plan& p) {
     if (b.test.cmp != Cmp::none) {
         double lhs, rhs;
         std::string why;
-        if (int rc = eval_expr(b, b.test.lhs, l_, *this, lhs, why)) return fail(rc, why, b.test.col), false;
-        if (int rc = eval_expr(b, b.test.rhs, l_, *this, rhs, why)) return fail(rc, why, b.test.col), false;
+        if (int rc = eval_expr(b, b.test.lhs, l_, *this, lhs, why))
+            return fail(rc, why, b.test.col), false;
+        if (int rc = eval_expr(b, b.test.rhs, l_, *this, rhs, why))
+            return fail(rc, why, b.test.col), false;
         go = compare(b.test.cmp, lhs, rhs);
         if (l_.any_unset_read) report_unset_reads();
     }
@@ -163,14 +174,16 @@ StepResult Interpreter::execute(const Block& b) {
     if (!decoded) return StepResult::error;
     if (g64_pending_ || p.unsupported.g >= 0 || p.g76.sign || p.g[46] || p46_.defining)
         if (std::optional<StepResult> apart = run_apart(b, p)) return *apart;
-    if ((p.pgp.has_eb || p.g[78] || p.g[16] || pgp_.pending()) && !block_allowed(p)) return StepResult::error;
+    if ((p.pgp.has_eb || p.g[78] || p.g[16] || pgp_.pending()) && !block_allowed(p))
+        return StepResult::error;
     if (!apply_modal(p) || !do_m_avant(p) || !apply_spindle(p)) return StepResult::error;
     if (b.msg_channel >= 0) out_.message(loc_, b.msg_channel, b.msg);
     if (!do_motion(p) || !do_dwell(p)) return StepResult::error;
     StepResult r = StepResult::running;
     if (!do_m_apres(p, r)) return StepResult::error;
     if (ended_) return r;
-    if ((p.g[79] || p.g[48] || p.g[49] || p.g[76] || p.g[77]) && !do_flow(b, p)) return StepResult::error;
+    if ((p.g[79] || p.g[48] || p.g[49] || p.g[76] || p.g[77]) && !do_flow(b, p))
+        return StepResult::error;
     return r;
 }
 
@@ -181,7 +194,8 @@ bool Interpreter::modal_interpolation(const Plan& p) {
     if (p.mode.dist >= 0) modal_.incremental = p.mode.dist == 91;
     if (p.mode.plane >= 0 && p.mode.plane != modal_.plane) {
         if (modal_.radcomp != 40)
-            return fail(138, tr("plane change under radius compensation (program G40 first)")), false;
+            return fail(138, tr("plane change under radius compensation (program G40 first)")),
+                   false;
         modal_.plane = p.mode.plane;
     }
     if (p.mode.units >= 0) modal_.inch = p.mode.units == 70;
@@ -233,12 +247,16 @@ bool Interpreter::modal_feed(const Plan& p) {
     // Warning 1115 at every G94/G95 block without F (seed 000: "doit être suivie
     // obligatoirement de l'argument F"; CLARIFICATIONS 18).
     if ((p.mode.feed == 94 || p.mode.feed == 95) && !p.tech.has_f && m_.strict)
-        return fail(2, strf(tr("G%d without F (seed 000: F is its mandatory argument)"), p.mode.feed)), false;
+        return fail(2,
+                    strf(tr("G%d without F (seed 000: F is its mandatory argument)"), p.mode.feed)),
+               false;
     if ((p.mode.feed == 94 || p.mode.feed == 95) && !p.tech.has_f)
-        warn(err::wFeedModeNoF,
-             p.mode.feed != modal_.feed_mode
-                 ? strf(tr("G%d without F in its block: the feed unit changes and the next feed move needs F"), p.mode.feed)
-                 : strf(tr("G%d without F in its block: the feed stays F%s"), p.mode.feed, fixed3(modal_.feed).c_str()));
+        warn(err::wFeedModeNoF, p.mode.feed != modal_.feed_mode
+                                    ? strf(tr("G%d without F in its block: the feed unit changes "
+                                              "and the next feed move needs F"),
+                                           p.mode.feed)
+                                    : strf(tr("G%d without F in its block: the feed stays F%s"),
+                                           p.mode.feed, fixed3(modal_.feed).c_str()));
     if (p.mode.feed >= 0 && p.mode.feed != modal_.feed_mode) {
         modal_.feed_mode = p.mode.feed;
         if (!p.tech.has_f) modal_.feed_set = false;
@@ -266,7 +284,8 @@ bool Interpreter::modal_tool(const Plan& p) {
         // effect after G40 and a new G41/G42 (000:898-906).
         if (p.mode.radcomp == 29 && comp_.on)
             return fail(140, tr("G29 under G41/G42: program G40 first (000:3932)")), false;
-        if (p.mode.radcomp != 40 && p.mode.radcomp != 29 && !comp_engage(p.mode.radcomp)) return false;
+        if (p.mode.radcomp != 40 && p.mode.radcomp != 29 && !comp_engage(p.mode.radcomp))
+            return false;
         modal_.radcomp = p.mode.radcomp;
         nonmotion_in_comp_ = 0;
     }
@@ -292,8 +311,9 @@ bool Interpreter::modal_g59(const Plan& p) {
         return fail(2, tr("G59 needs at least one axis offset")), false;
     for (int a = 0; a < kAxes; ++a)
         if (p.g59.axis[size_t(a)])
-            frames_.g59[size_t(a)] = modal_.incremental ? frames_.g59[size_t(a)] + p.g59.val[size_t(a)]
-                                                        : p.g59.val[size_t(a)];
+            frames_.g59[size_t(a)] = modal_.incremental
+                                         ? frames_.g59[size_t(a)] + p.g59.val[size_t(a)]
+                                         : p.g59.val[size_t(a)];
     int a0, a1;
     ed_axes(a0, a1);
     auto ijk_of = [](int axis) { return axis == X ? 0 : axis == Y ? 1 : 2; };
@@ -318,7 +338,8 @@ bool Interpreter::modal_frame(const Plan& p) {
         recompute_program_pos();
     }
     if (p.g[51]) {
-        if (p.g51.on.none() && p.g51.off.none()) return fail(2, tr("G51 needs axes with a sign (G51 X- Y-)")), false;
+        if (p.g51.on.none() && p.g51.off.none())
+            return fail(2, tr("G51 needs axes with a sign (G51 X- Y-)")), false;
         frames_.mirror |= p.g51.on;
         frames_.mirror &= ~p.g51.off;
         recompute_program_pos();
@@ -331,17 +352,20 @@ bool Interpreter::modal_g92(const Plan& p) {
     if (p.g92.axis.any() && (p.g92.has_s || p.g92.has_r))
         return fail(3, tr("G92 presets axes or sets S or R, not both in one block")), false;
     if (p.g92.axis.none() && !p.g92.has_s && !p.g92.has_r)
-        return fail(2, tr("G92 needs axes (preset), S (spindle limit) or R (tangential feed)")), false;
+        return fail(2, tr("G92 needs axes (preset), S (spindle limit) or R (tangential feed)")),
+               false;
     // new PREF = PREF + (current point / OP) - programmed value (000:1173-1179).
     for (int a = 0; a < kAxes; ++a)
-        if (p.g92.axis[size_t(a)]) frames_.pref[size_t(a)] += prog_[size_t(a)] - p.g92.val[size_t(a)];
+        if (p.g92.axis[size_t(a)])
+            frames_.pref[size_t(a)] += prog_[size_t(a)] - p.g92.val[size_t(a)];
     if (p.g92.axis.any()) recompute_program_pos();
     if (p.g92.has_s) {
         if (!m_.lathe) return fail(2, tr("G92 S (spindle limit) is a lathe function")), false;
         modal_.smax = p.g92.s;
         if (modal_.smax > m_.spindle_max) {
-            warn(err::wSpeedClamped, strf(tr("G92 S%s above the spindle maximum %s: limited to it"),
-                                          fixed3(modal_.smax, 63).c_str(), fixed3(m_.spindle_max, 63).c_str()));
+            warn(err::wSpeedClamped,
+                 strf(tr("G92 S%s above the spindle maximum %s: limited to it"),
+                      fixed3(modal_.smax, 63).c_str(), fixed3(m_.spindle_max, 63).c_str()));
             modal_.smax = m_.spindle_max;
         }
     }
@@ -356,14 +380,15 @@ bool Interpreter::modal_g92(const Plan& p) {
 // this runs for every block, and a call costs more than the test.
 bool Interpreter::apply_modal(const Plan& p) {
     const bool feed = p.mode.feed >= 0 || p.tech.has_f;
-    const bool tool = p.tech.has_t || p.tech.has_d || p.mode.radcomp >= 0 || p.g16.axis >= 0 || p.g[16];
-    if (!modal_interpolation(p) ||        // G0-G3, G90/G91, G17-G19, G70/G71
-        !modal_cycle(p) ||                // G31, G80-G89
-        !modal_frame_switches(p) ||       // G52/G53, G73/G74
-        (feed && !modal_feed(p)) ||       // G93-G95, F
-        (tool && !modal_tool(p)) ||       // T, D, G40-G42, G29, G16
-        !modal_frame(p) ||                // G59, ED, G51
-        (p.g[92] && !modal_g92(p)))       // G92
+    const bool tool =
+        p.tech.has_t || p.tech.has_d || p.mode.radcomp >= 0 || p.g16.axis >= 0 || p.g[16];
+    if (!modal_interpolation(p) ||   // G0-G3, G90/G91, G17-G19, G70/G71
+        !modal_cycle(p) ||           // G31, G80-G89
+        !modal_frame_switches(p) ||  // G52/G53, G73/G74
+        (feed && !modal_feed(p)) ||  // G93-G95, F
+        (tool && !modal_tool(p)) ||  // T, D, G40-G42, G29, G16
+        !modal_frame(p) ||           // G59, ED, G51
+        (p.g[92] && !modal_g92(p)))  // G92
         return false;
     if (p.flow.g75_n >= -1) modal_.g75 = p.flow.g75_n == 0 ? -1 : p.flow.g75_n;
     if (p.tech.has_eg) modal_.eg = p.tech.eg;
@@ -377,11 +402,13 @@ void Interpreter::warn_spindle_words(const Plan& p) {
     s_raw_ = 0;
     if (!p.tech.has_s || modal_.spindle_mode != 97) return;
     if (raw != 0 && raw != p.tech.s)
-        warn(err::wFractionalRpm, strf(tr("S from a variable is %s rev/min, not a whole number: the spindle turns at %ld rev/min"),
+        warn(err::wFractionalRpm, strf(tr("S from a variable is %s rev/min, not a whole number: "
+                                          "the spindle turns at %ld rev/min"),
                                        fixed3(raw).c_str(), std::lround(p.tech.s)));
     else if (p.tech.s != std::floor(p.tech.s))
         warn(err::wFractionalRpm,
-             strf(tr("S%s rev/min is not a whole number: the spindle turns at %s rev/min; write whole rev/min (S%ld)"),
+             strf(tr("S%s rev/min is not a whole number: the spindle turns at %s rev/min; write "
+                     "whole rev/min (S%ld)"),
                   fixed3(p.tech.s).c_str(), fixed3(p.tech.s).c_str(), std::lround(p.tech.s)));
 }
 
@@ -394,7 +421,8 @@ void Interpreter::report_unset_reads() {
         if (l_.unset_read.test(i) && !l_unset_warned_.test(i)) {
             l_unset_warned_.set(i);
             warn(err::wLReadUnset,
-                 strf(tr("L%zu is read before anything set it: it reads 0; assign it first (L%zu=...) or give it with --set L%zu=..."),
+                 strf(tr("L%zu is read before anything set it: it reads 0; assign it first "
+                         "(L%zu=...) or give it with --set L%zu=..."),
                       i, i, i));
         }
     l_.unset_read.reset();
@@ -404,12 +432,13 @@ void Interpreter::report_unset_reads() {
 bool Interpreter::apply_spindle(const Plan& p) {
     if (p.mode.spindle == 96 || p.mode.spindle == 97) {
         bool s_given = p.mode.spindle == 96 ? p.spindle.g96_s : p.spindle.g97_s;
-        if (!s_given)
-            return fail(28, strf(tr("G%d must be followed by S"), p.mode.spindle)), false;
+        if (!s_given) return fail(28, strf(tr("G%d must be followed by S"), p.mode.spindle)), false;
     }
     if (p.mode.spindle == 96) {
         if (!p.spindle.has_x && !modal_.css_known)
-            return fail(28, tr("G96: the starting diameter is unknown (program X first, or G96 X.. S..)")), false;
+            return fail(28, tr("G96: the starting diameter is unknown (program X first, or G96 X.. "
+                               "S..)")),
+                   false;
         modal_.spindle_mode = 96;
         modal_.css_x0 = p.spindle.has_x ? p.spindle.x : prog_[X];
         modal_.css_pos0 = prog_[X];
@@ -420,35 +449,42 @@ bool Interpreter::apply_spindle(const Plan& p) {
     if (p.tech.has_s) modal_.s = p.tech.s;
     if (p.tech.has_s || s_raw_ != 0) warn_spindle_words(p);
     bool range_written = false;
-    for (int i = 0; i < p.tech.nm; ++i) range_written = range_written || (p.tech.m[i] >= 40 && p.tech.m[i] <= 45);
-    if (modal_.spindle_mode == 97 && p.tech.has_s && m_.auto_range && !range_written && modal_.range < 0 &&
-        !m_.ranges.empty() && modal_.s > 0) {
+    for (int i = 0; i < p.tech.nm; ++i)
+        range_written = range_written || (p.tech.m[i] >= 40 && p.tech.m[i] <= 45);
+    if (modal_.spindle_mode == 97 && p.tech.has_s && m_.auto_range && !range_written &&
+        modal_.range < 0 && !m_.ranges.empty() && modal_.s > 0) {
         // Automatic range: with none in force, the first range holding S
         // (turning.md §5.12); a range the program chose stays in force.
         int found = -1;
         for (size_t i = 0; i < m_.ranges.size() && found < 0; ++i)
             if (modal_.s >= m_.ranges[i].min && modal_.s <= m_.ranges[i].max) found = int(i);
-        if (found < 0) return fail(29, strf(tr("S%s is in no spindle range"), fixed3(modal_.s, 63).c_str())), false;
+        if (found < 0)
+            return fail(29, strf(tr("S%s is in no spindle range"), fixed3(modal_.s, 63).c_str())),
+                   false;
         modal_.range = found;
     }
     if (modal_.spindle_mode == 96 && !m_.ranges.empty() && modal_.range < 0 &&
         (p.mode.spindle == 96 || p.tech.has_s)) {
         // With automatic ranges the machine takes the range of the highest speeds.
-        if (!m_.auto_range) return fail(29, tr("constant surface speed needs a spindle range (M40-M45)")), false;
+        if (!m_.auto_range)
+            return fail(29, tr("constant surface speed needs a spindle range (M40-M45)")), false;
         modal_.range = int(m_.ranges.size()) - 1;
     }
     if (modal_.spindle_mode == 97 && p.tech.has_s && modal_.range >= 0) {
         const SpindleRange& r = m_.ranges[size_t(modal_.range)];
         if (modal_.s != 0 && (modal_.s < r.min || modal_.s > r.max))
-            return fail(29, strf(tr("S%s is outside range M%d (%s-%s rev/min)"), fixed3(modal_.s, 63).c_str(),
-                                 40 + modal_.range, fixed3(r.min, 63).c_str(), fixed3(r.max, 63).c_str())),
+            return fail(29, strf(tr("S%s is outside range M%d (%s-%s rev/min)"),
+                                 fixed3(modal_.s, 63).c_str(), 40 + modal_.range,
+                                 fixed3(r.min, 63).c_str(), fixed3(r.max, 63).c_str())),
                    false;
     }
     if (modal_.spindle_mode == 97 && p.tech.has_s && modal_.s > m_.spindle_max)
-        warn(err::wSpeedClamped, strf(tr("S%s above the spindle maximum %s: limited to it"), fixed3(modal_.s, 63).c_str(),
-                                      fixed3(m_.spindle_max, 63).c_str()));
+        warn(err::wSpeedClamped,
+             strf(tr("S%s above the spindle maximum %s: limited to it"),
+                  fixed3(modal_.s, 63).c_str(), fixed3(m_.spindle_max, 63).c_str()));
     if (p.mode.spindle == 96 && (modal_.spindle_dir != 3 && modal_.spindle_dir != 4))
-        warn(err::wSpindleStopped, tr("G96 with the spindle stopped: the speed applies when it starts"));
+        warn(err::wSpindleStopped,
+             tr("G96 with the spindle stopped: the speed applies when it starts"));
     // The speed can only have changed with a spindle word, an M function, or X under G96.
     if (p.tech.has_s || p.mode.spindle >= 0 || p.tech.nm > 0 || p.g[92] || p.g[52] || p.g[59] ||
         (modal_.spindle_mode == 96 && p.to.axis[X]))
@@ -469,21 +505,49 @@ bool Interpreter::do_m_avant(const Plan& p) {
             return fail(4, strf(tr("M%d needs a NUM 1040 or 1060"), m)), false;
         if (mc->when != MWhen::avant) continue;
         switch (m) {
-            case 3: case 4: modal_.spindle_dir = m; break;
-            case 19: modal_.spindle_dir = 19; break;
-            case 7: modal_.m7 = true; coolant = true; break;
-            case 8: modal_.m8 = true; coolant = true; break;
-            case 11: modal_.clamped = false; break;
-            case 49: modal_.overrides_off = true; break;
-            case 62: case 66: case 61: break;
-            case 63: case 64: case 65: case 67: case 68: case 69:
+            case 3:
+            case 4:
+                modal_.spindle_dir = m;
+                break;
+            case 19:
+                modal_.spindle_dir = 19;
+                break;
+            case 7:
+                modal_.m7 = true;
+                coolant = true;
+                break;
+            case 8:
+                modal_.m8 = true;
+                coolant = true;
+                break;
+            case 11:
+                modal_.clamped = false;
+                break;
+            case 49:
+                modal_.overrides_off = true;
+                break;
+            case 62:
+            case 66:
+            case 61:
+                break;
+            case 63:
+            case 64:
+            case 65:
+            case 67:
+            case 68:
+            case 69:
                 return fail(899, strf(tr("M%d: this machine has one spindle"), m)), false;
-            case 998: modal_.modif_inhibited = false; break;
-            case 999: modal_.modif_inhibited = true; break;
+            case 998:
+                modal_.modif_inhibited = false;
+                break;
+            case 999:
+                modal_.modif_inhibited = true;
+                break;
             default:
                 if (m >= 40 && m <= 45) {
                     if (size_t(m - 40) >= m_.ranges.size() && !m_.ranges.empty())
-                        return fail(29, strf(tr("range M%d does not exist on this machine"), m)), false;
+                        return fail(29, strf(tr("range M%d does not exist on this machine"), m)),
+                               false;
                     modal_.range = m - 40;
                 } else if (m >= 200 && m <= 899) {
                     modal_.coded_m = m;
@@ -539,9 +603,14 @@ bool Interpreter::do_m_apres(const Plan& p, StepResult& r) {
                     out_.coolant(loc_, false, false);
                 }
                 break;
-            case 10: modal_.clamped = true; break;
-            case 48: modal_.overrides_off = false; break;
-            default: break;
+            case 10:
+                modal_.clamped = true;
+                break;
+            case 48:
+                modal_.overrides_off = false;
+                break;
+            default:
+                break;
         }
     }
     return true;
@@ -600,8 +669,8 @@ void Interpreter::set_spindle_event() {
     e.css = modal_.spindle_mode == 96;
     e.vc = e.css ? modal_.s : 0;
     e.range = modal_.range >= 0 ? 40 + modal_.range : -1;
-    if (sp_emitted_ && last_sp_.rpm == e.rpm && last_sp_.dir == e.dir && last_sp_.range == e.range &&
-        last_sp_.css == e.css && last_sp_.vc == e.vc)
+    if (sp_emitted_ && last_sp_.rpm == e.rpm && last_sp_.dir == e.dir &&
+        last_sp_.range == e.range && last_sp_.css == e.css && last_sp_.vc == e.vc)
         return;
     sp_emitted_ = true;
     last_sp_ = e;

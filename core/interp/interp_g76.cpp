@@ -22,8 +22,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/interp/plan.hpp"
 #include "core/i18n.hpp"
+#include "core/interp/plan.hpp"
 
 namespace pupitre {
 
@@ -53,13 +53,15 @@ bool listed_word(char c) {
 bool Interpreter::transfer(const Plan& p) {
     const ProgramText* target = stack_.back().prog;
     if (p.g76.h >= 0 && !(target = mem_.find(p.g76.h)))
-        return fail(25, strf(tr("G76 H%d: program %%%d is not in memory"), p.g76.h, p.g76.h)), false;
+        return fail(25, strf(tr("G76 H%d: program %%%d is not in memory"), p.g76.h, p.g76.h)),
+               false;
     size_t from = target->begin, to = target->end;
     if (p.g76.nn > 0) {
         const Label* a = target->find_label(p.g76.n[0]);
         const Label* b = target->find_label(p.g76.nn > 1 ? p.g76.n[1] : p.g76.n[0]);
         if (!a || !b)
-            return fail(25, strf(tr("G76: block N%ld not found"), !a ? p.g76.n[0] : p.g76.n[1])), false;
+            return fail(25, strf(tr("G76: block N%ld not found"), !a ? p.g76.n[0] : p.g76.n[1])),
+                   false;
         if (b->offset < a->offset) std::swap(a, b);
         from = a->offset;
         to = std::min(target->end, target->text->find('\n', b->offset));
@@ -73,8 +75,12 @@ bool Interpreter::transfer(const Plan& p) {
 }
 
 namespace {
-bool digit(char c) { return c >= '0' && c <= '9'; }
-bool upper(char c) { return c >= 'A' && c <= 'Z'; }
+bool digit(char c) {
+    return c >= '0' && c <= '9';
+}
+bool upper(char c) {
+    return c >= 'A' && c <= 'Z';
+}
 }  // namespace
 
 // The L and E assignments that open one line [pos, eol), after its label.
@@ -111,10 +117,11 @@ bool Interpreter::transfer_line(const ProgramText* target, size_t pos, size_t eo
 }
 
 // Writes the value of Ln or En into its field of `width` characters.
-bool Interpreter::transfer_field(const ProgramText* target, bool is_l, long n, size_t field, size_t width,
-                                 bool word_follows) {
+bool Interpreter::transfer_field(const ProgramText* target, bool is_l, long n, size_t field,
+                                 size_t width, bool word_follows) {
     if (width < 10)
-        return fail(97, strf(tr("G76: fewer than 10 characters reserved after %c%ld="), is_l ? 'L' : 'E', n)),
+        return fail(97, strf(tr("G76: fewer than 10 characters reserved after %c%ld="),
+                             is_l ? 'L' : 'E', n)),
                false;
     std::string value;
     if (is_l) {
@@ -128,12 +135,13 @@ bool Interpreter::transfer_field(const ProgramText* target, bool is_l, long n, s
     }
     const size_t room = word_follows ? width - 1 : width;
     if (value.size() > room)
-        return fail(97, strf(tr("G76: the value %s does not fit the field after %c%ld"), value.c_str(),
-                             is_l ? 'L' : 'E', n)),
+        return fail(97, strf(tr("G76: the value %s does not fit the field after %c%ld"),
+                             value.c_str(), is_l ? 'L' : 'E', n)),
                false;
     value.resize(width, ' ');
     target->text->replace(field, width, value);
-    if (mem_.find(target->number) == target) mem_.mark_changed(target->number);  // not an IMD fragment
+    if (mem_.find(target->number) == target)
+        mem_.mark_changed(target->number);  // not an IMD fragment
     return true;
 }
 
@@ -147,7 +155,9 @@ bool Interpreter::edit_block_text(const Block& b, std::string& out) {
     if (ins.msg_channel >= 0)
         return fail(1, tr("G76+: a $ message cannot be inserted"), b.g76_block_col), false;
     if (ins.test.cmp != Cmp::none)
-        return fail(1, tr("G76+: a G79 condition cannot be inserted"), b.g76_block_col - 1 + ins.test.col), false;
+        return fail(1, tr("G76+: a G79 condition cannot be inserted"),
+                    b.g76_block_col - 1 + ins.test.col),
+               false;
     if (ins.empty())
         return fail(2, tr("G76+ needs the block to insert after N.. (G76+ N100 G1 X10)"),
                     b.g76_block_col),
@@ -183,16 +193,19 @@ bool Interpreter::inserted_words(const Block& b, const Block& ins,
         char letter = w.addr < 26 ? char('A' + w.addr) : 0;
         if (!letter || !listed_word(letter))
             return fail(1,
-                        strf(tr("G76+: %s cannot be inserted (N G X Y Z U V W A B C I J K P Q R L0-L19 only)"),
+                        strf(tr("G76+: %s cannot be inserted (N G X Y Z U V W A B C I J K P Q R "
+                                "L0-L19 only)"),
                              std::string(addr_name(w.addr)).c_str()),
                         col(w.col)),
                    false;
         if ((w.v.kind == Operand::LVar && w.v.index > 19) || w.v.kind == Operand::EParam ||
             w.v.kind == Operand::EIndirect)
-            return fail(1, tr("G76+: only L0-L19 can give a value in an inserted block"), col(w.col)),
+            return fail(1, tr("G76+: only L0-L19 can give a value in an inserted block"),
+                        col(w.col)),
                    false;
         if (letter == 'G' && (w.gsign || w.glevel))
-            return fail(1, tr("G76+: G76+/-, G79+/- and G77 -i cannot be inserted"), col(w.col)), false;
+            return fail(1, tr("G76+: G76+/-, G79+/- and G77 -i cannot be inserted"), col(w.col)),
+                   false;
         double v;
         int iv = 0;
         bool integer = letter == 'N' || letter == 'G';
@@ -217,10 +230,13 @@ bool Interpreter::inserted_assigns(const Block& b, const Block& ins,
     for (const Term& t : ins.terms)
         if ((t.v.kind == Operand::LVar && t.v.index > 19) || t.v.kind == Operand::EParam ||
             t.v.kind == Operand::EIndirect)
-            return fail(1, tr("G76+: only L0-L19 can give a value in an inserted block"), b.g76_block_col), false;
+            return fail(1, tr("G76+: only L0-L19 can give a value in an inserted block"),
+                        b.g76_block_col),
+                   false;
     for (const Assign& a : ins.assigns) {
         if (a.target.kind != Operand::LVar || a.target.index > 19)
-            return fail(1, tr("G76+: only L0-L19 can be assigned in an inserted block"), col(a.col)),
+            return fail(1, tr("G76+: only L0-L19 can be assigned in an inserted block"),
+                        col(a.col)),
                    false;
         double v;
         std::string why;
@@ -237,12 +253,15 @@ bool Interpreter::inserted_reads_back(const Block& b, const std::string& out) {
     Block back;
     Diag d;
     if (!parse_block(out, back, d))
-        return fail(d.code, strf(tr("G76+: the block to insert, %s: %s"), out.c_str(), d.detail.c_str()), b.g76_block_col),
+        return fail(d.code,
+                    strf(tr("G76+: the block to insert, %s: %s"), out.c_str(), d.detail.c_str()),
+                    b.g76_block_col),
                false;
     for (const Word& w : back.words) {
         double v;
         if (!word_value(w, v)) {
-            diags_.back().detail = strf(tr("G76+: the block to insert, %s: %s"), out.c_str(), diags_.back().detail.c_str());
+            diags_.back().detail = strf(tr("G76+: the block to insert, %s: %s"), out.c_str(),
+                                        diags_.back().detail.c_str());
             diags_.back().column = b.g76_block_col;
             return false;
         }
@@ -254,13 +273,16 @@ bool Interpreter::inserted_reads_back(const Block& b, const std::string& out) {
 // deletes one line of a program in memory.
 bool Interpreter::edit_program(const Block& b, const Plan& p) {
     const char sign = p.g76.sign;
-    if (m_.model == 1020) return fail(4, strf(tr("G76%c needs a NUM 1040 or 1060 (000:555)"), sign)), false;
+    if (m_.model == 1020)
+        return fail(4, strf(tr("G76%c needs a NUM 1040 or 1060 (000:555)"), sign)), false;
     if (!edit_block_alone(b, sign)) return false;
     // It moves nothing: under G41/G42 it counts among the blocks without motion.
     if (modal_.radcomp != 40 && ++nonmotion_in_comp_ > 2)
-        return fail(140, tr("more than 2 blocks in a row without motion in the plane under radius compensation")),
+        return fail(140, tr("more than 2 blocks in a row without motion in the plane under radius "
+                            "compensation")),
                false;
-    if (p.g76.nn > 1) return fail(3, strf(tr("G76%c points at one block N.."), sign), b.words.back().col), false;
+    if (p.g76.nn > 1)
+        return fail(3, strf(tr("G76%c points at one block N.."), sign), b.words.back().col), false;
     if (p.g76.nn == 0) return edit_whole_program(b, p);
     return edit_line(b, p);
 }
@@ -275,13 +297,19 @@ bool Interpreter::edit_block_alone(const Block& b, char sign) {
         bool label = i == 0 && w.addr == addr1('N') && b.n >= 0;
         bool arg = g76_at < i && (w.addr == addr1('H') || w.addr == addr1('N'));
         if (!label && i != g76_at && !arg)
-            return fail(3, strf(tr("G76%c takes only H.. and N.. [+k] (the block must hold nothing else)"), sign),
+            return fail(3,
+                        strf(tr("G76%c takes only H.. and N.. [+k] (the block must hold nothing "
+                                "else)"),
+                             sign),
                         w.col),
                    false;
-        if (w.addr == addr1('H') && ++hs > 1) return fail(3, strf(tr("G76%c: H written twice"), sign), w.col), false;
+        if (w.addr == addr1('H') && ++hs > 1)
+            return fail(3, strf(tr("G76%c: H written twice"), sign), w.col), false;
     }
     if (!b.assigns.empty())
-        return fail(3, strf(tr("G76%c takes only H.. and N.. [+k]: no assignment in its block"), sign), b.assigns[0].col),
+        return fail(3,
+                    strf(tr("G76%c takes only H.. and N.. [+k]: no assignment in its block"), sign),
+                    b.assigns[0].col),
                false;
     return true;
 }
@@ -291,27 +319,34 @@ bool Interpreter::edit_whole_program(const Block& b, const Plan& p) {
     const char sign = p.g76.sign;
     const size_t quota = size_t(m_.program_memory_kb * 1024);
     if (p.g76.h < 0)
-        return fail(2, strf(tr("G76%c needs the program number H (G76%c H300)"), sign, sign)), false;
+        return fail(2, strf(tr("G76%c needs the program number H (G76%c H300)"), sign, sign)),
+               false;
     if (b.words.back().addr != addr1('H'))
-        return fail(3, strf(tr("G76%c: the program number H must be the last word of the block"), sign),
-                    b.words.back().col),
+        return fail(
+                   3,
+                   strf(tr("G76%c: the program number H must be the last word of the block"), sign),
+                   b.words.back().col),
                false;
     if (sign == '+') {
         if (mem_.find(p.g76.h))
-            return fail(err::kProgramExists, strf(tr("G76+ H%d: program %%%d is already in memory"), p.g76.h, p.g76.h)),
+            return fail(err::kProgramExists,
+                        strf(tr("G76+ H%d: program %%%d is already in memory"), p.g76.h, p.g76.h)),
                    false;
         if (mem_.size() + 16 > std::max(quota, loaded_size_))
-            return fail(36, strf(tr("G76+: the part-program memory is full (%zu KB)"), quota / 1024)), false;
+            return fail(36,
+                        strf(tr("G76+: the part-program memory is full (%zu KB)"), quota / 1024)),
+                   false;
         mem_.create(p.g76.h);
         return true;
     }
     const ProgramText* t = mem_.find(p.g76.h);
-    if (!t)
-        return fail(25, strf(tr("G76- H%d: no program %%%d"), p.g76.h, p.g76.h)), false;
+    if (!t) return fail(25, strf(tr("G76- H%d: no program %%%d"), p.g76.h, p.g76.h)), false;
     bool running = t == main_ || std::any_of(stack_.begin(), stack_.end(),
                                              [&](const Frame& f) { return f.prog == t; });
     if (running)
-        return fail(err::kProgramInUse, strf(tr("G76- H%d: program %%%d is running"), p.g76.h, p.g76.h)), false;
+        return fail(err::kProgramInUse,
+                    strf(tr("G76- H%d: program %%%d is running"), p.g76.h, p.g76.h)),
+               false;
     mem_.remove(p.g76.h);
     return true;
 }
@@ -324,7 +359,10 @@ bool Interpreter::edit_line(const Block& b, const Plan& p) {
     if (p.g76.h >= 0 && !(t = mem_.find(p.g76.h)))
         return fail(25, strf(tr("G76%c H%d: no program %%%d"), sign, p.g76.h, p.g76.h)), false;
     if (mem_.find(t->number) != t)  // an IMD fragment is not a program of the memory
-        return fail(25, strf(tr("G76%c without H edits the program that runs: in IMD, give the program H"), sign)), false;
+        return fail(25, strf(tr("G76%c without H edits the program that runs: in IMD, give the "
+                                "program H"),
+                             sign)),
+               false;
     if (sign == '-') {
         std::string_view rest = b.g76_block;  // comments only
         for (size_t i = 0; i < rest.size(); ++i) {
@@ -332,7 +370,8 @@ bool Interpreter::edit_line(const Block& b, const Plan& p) {
                 size_t close = rest.find(')', i);
                 i = close == std::string_view::npos ? rest.size() : close;
             } else if (rest[i] != ' ' && rest[i] != '\t') {
-                return fail(3, tr("G76- takes nothing after N.. [+k]"), b.g76_block_col + int(i)), false;
+                return fail(3, tr("G76- takes nothing after N.. [+k]"), b.g76_block_col + int(i)),
+                       false;
             }
         }
     }
@@ -353,23 +392,29 @@ bool Interpreter::edit_line(const Block& b, const Plan& p) {
         start = t->begin;
         --count;
     } else {
-        return fail(25, strf(tr("G76%c: no block N%ld in program %%%d"), sign, n, t->number)), false;
+        return fail(25, strf(tr("G76%c: no block N%ld in program %%%d"), sign, n, t->number)),
+               false;
     }
     for (; count > 0 && start < t->end; --count) start = next_line(start);
     const bool before_first = count < 0;  // N0 virtual, no +k: insert at the start
     if (!before_first && start >= t->end)
-        return fail(25, strf(tr("G76%c: program %%%d has no line %d after N%ld"), sign, t->number, k, n)), false;
+        return fail(25, strf(tr("G76%c: program %%%d has no line %d after N%ld"), sign, t->number,
+                             k, n)),
+               false;
     Splice s;
     if (sign == '+') {
         std::string text;
         if (!edit_block_text(b, text)) return false;
         const size_t quota = size_t(m_.program_memory_kb * 1024);
         if (mem_.size() + text.size() > std::max(quota, loaded_size_))
-            return fail(36, strf(tr("G76+: the part-program memory is full (%zu KB)"), quota / 1024)), false;
+            return fail(36,
+                        strf(tr("G76+: the part-program memory is full (%zu KB)"), quota / 1024)),
+                   false;
         s = mem_.splice(t, before_first ? start : next_line(start), 0, text);
     } else {
         if (before_first)
-            return fail(25, tr("G76- N0 points before the first line: give +k (the k-th line)")), false;
+            return fail(25, tr("G76- N0 points before the first line: give +k (the k-th line)")),
+                   false;
         s = mem_.splice(t, start, next_line(start) - start, {});
     }
     text_spliced(t, s);

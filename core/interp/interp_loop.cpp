@@ -10,8 +10,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <cstring>
 
-#include "core/interp/interp.hpp"
 #include "core/i18n.hpp"
+#include "core/interp/interp.hpp"
 
 namespace pupitre {
 
@@ -59,18 +59,19 @@ std::pair<uint64_t, uint64_t> Interpreter::state_digest() const {
         h.add(uint64_t(i)), h.add(l_.v[i]);
     for (const auto& [n, v] : e_written_) h.add(uint64_t(n)), h.add(uint64_t(v));
     const Modal& m = modal_;
-    for (int v : {m.motion, m.plane, m.radcomp, m.feed_mode, m.spindle_mode, m.spindle_dir, m.range, m.cycle,
-                  m.tool_axis, m.d, m.t, m.tool_in_spindle})
+    for (int v : {m.motion, m.plane, m.radcomp, m.feed_mode, m.spindle_mode, m.spindle_dir, m.range,
+                  m.cycle, m.tool_axis, m.d, m.t, m.tool_in_spindle})
         h.add(v);
     for (double v : {m.feed, m.s, m.css_x0, m.css_pos0, m.smax, m.g92r, m.eg}) h.add(v);
-    for (bool v : {m.incremental, m.feed_set, m.css_known, m.inch, m.tool_axis_neg, m.m7, m.m8, m.overrides_off,
-                   m.clamped, m.modif_inhibited, m.radius_x})
+    for (bool v : {m.incremental, m.feed_set, m.css_known, m.inch, m.tool_axis_neg, m.m7, m.m8,
+                   m.overrides_off, m.clamped, m.modif_inhibited, m.radius_x})
         h.add(v);
     h.add(m.g75), h.add(m.coded_m);
     h.add(mach_);
     const Frames& f = frames_;
     h.add(f.pref), h.add(f.dec1), h.add(f.dec3), h.add(f.g59), h.add(f.gauge);
-    h.add(f.g53), h.add(uint64_t(f.mirror.to_ulong())), h.add(f.scale_on), h.add(f.scale), h.add(f.ed);
+    h.add(f.g53), h.add(uint64_t(f.mirror.to_ulong())), h.add(f.scale_on), h.add(f.scale),
+        h.add(f.ed);
     h.add(comp_.on), h.add(comp_.side), h.add(comp_.radius);
     h.add(uint64_t(mem_.generation()));
     return {h.a, h.b};
@@ -85,7 +86,8 @@ bool Interpreter::note_backward_jump(long label) {
     if (seen_states_.size() >= kWindow) seen_states_.clear();
     auto d = state_digest();
     if (seen_states_.insert(DigestKey{d.first, d.second}).second) return true;
-    fail(err::kBlockBudget, strf(tr("endless loop: G79 N%ld comes back to a state the program was already in (same block, "
+    fail(err::kBlockBudget, strf(tr("endless loop: G79 N%ld comes back to a state the program was "
+                                    "already in (same block, "
                                     "variables, modal state and position), so it can never end"),
                                  label));
     return false;

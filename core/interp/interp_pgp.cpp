@@ -6,14 +6,16 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <cmath>
 
+#include "core/i18n.hpp"
 #include "core/interp/gate.hpp"
 #include "core/interp/plan.hpp"
-#include "core/i18n.hpp"
 
 namespace pupitre {
 
 namespace {
-int ijk_of(int axis) { return axis == X ? 0 : axis == Y ? 1 : 2; }
+int ijk_of(int axis) {
+    return axis == X ? 0 : axis == Y ? 1 : 2;
+}
 }  // namespace
 
 void Interpreter::plane_axes(int& a0, int& a1) const {
@@ -71,14 +73,16 @@ bool Interpreter::pgp_emit(const std::vector<pgp::Elem>& elems) {
             Axes mach = frames_.to_machine(target);
             ok = check_travel(mach) && linear(g, mach, false, {});
         } else {
-            ok = emit_arc(g, target, a0, a1, e.geo.c.x(), e.geo.c.y(), e.geo.sweep, r, (e.geo.b - e.geo.c).norm(), -1);
+            ok = emit_arc(g, target, a0, a1, e.geo.c.x(), e.geo.c.y(), e.geo.sweep, r,
+                          (e.geo.b - e.geo.c).norm(), -1);
         }
         loc_ = saved_loc;
         modal_ = saved_modal;
         if (!ok) return false;
         prog_ = target;
         // Contexts of blocks whose elements are all out are no longer needed.
-        while (!pgp_ctx_.empty() && pgp_ctx_.begin()->first < e.tag) pgp_ctx_.erase(pgp_ctx_.begin());
+        while (!pgp_ctx_.empty() && pgp_ctx_.begin()->first < e.tag)
+            pgp_ctx_.erase(pgp_ctx_.begin());
     }
     if (!comp_.on) gate_->release();
     return true;
@@ -116,7 +120,8 @@ bool Interpreter::pgp_block(const Plan& p, const Axes& target) {
     s.eb_unsigned = p.pgp.eb_unsigned;
     s.tag = ++pgp_tag_;
     if (p.pgp.has_eb && p.pgp.eb_unsigned)
-        warn(err::wUnsignedEB, tr("EB without a sign is taken as a fillet (EB+): write EB+ or EB- (pupitre-iso(5), PGP)"));
+        warn(err::wUnsignedEB, tr("EB without a sign is taken as a fillet (EB+): write EB+ or EB- "
+                                  "(pupitre-iso(5), PGP)"));
     pgp_ctx_[s.tag] = CompCtx{loc_, modal_, modal_.motion, target, 0};
     std::vector<pgp::Elem> out;
     pgp::Error e;

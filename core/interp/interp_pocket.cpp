@@ -5,30 +5,33 @@
 #include <cmath>
 #include <numbers>
 
-#include "core/interp/plan.hpp"
 #include "core/geometry/geometry.hpp"
 #include "core/i18n.hpp"
+#include "core/interp/plan.hpp"
 
 namespace pupitre {
 
 namespace {
-using ::pupitre::geometry::kPi;
 using ::pupitre::geometry::ceil_um;
+using ::pupitre::geometry::kPi;
 
 // A closed tool-centre contour about the pocket centre (0, 0), as pieces.
 struct Piece {
     bool arc = false;
-    double x = 0, y = 0;     // end
-    double cx = 0, cy = 0;   // arc centre
-    double sweep = 0;        // radians
+    double x = 0, y = 0;    // end
+    double cx = 0, cy = 0;  // arc centre
+    double sweep = 0;       // radians
 };
 
 // Shape at one offset: rectangle (hx, hy, corner r), circle (r) or stadium
 // (half-length l along X, radius r). Starts on the small-side axis, +direction.
-std::vector<Piece> contour(int shape, double hx, double hy, double r, bool ccw, double& sx, double& sy) {
+std::vector<Piece> contour(int shape, double hx, double hy, double r, bool ccw, double& sx,
+                           double& sy) {
     std::vector<Piece> out;
     auto line = [&](double x, double y) { out.push_back({false, x, y, 0, 0, 0}); };
-    auto arc = [&](double x, double y, double cx, double cy, double sw) { out.push_back({true, x, y, cx, cy, sw}); };
+    auto arc = [&](double x, double y, double cx, double cy, double sw) {
+        out.push_back({true, x, y, cx, cy, sw});
+    };
     if (shape == 1) {  // circle
         sx = r, sy = 0;
         arc(r, 0, 0, 0, 2 * kPi);
@@ -45,7 +48,8 @@ std::vector<Piece> contour(int shape, double hx, double hy, double r, bool ccw, 
         bool along_x = hx <= hy;  // the lateral step follows the small side
         sx = along_x ? hx : 0, sy = along_x ? 0 : hy;
         // Counter-clockwise from the start point; corners as quarter circles.
-        std::vector<std::pair<double, double>> corners = {{hx, hy}, {-hx, hy}, {-hx, -hy}, {hx, -hy}};
+        std::vector<std::pair<double, double>> corners = {
+            {hx, hy}, {-hx, hy}, {-hx, -hy}, {hx, -hy}};
         int first = along_x ? 0 : 1;  // the corner after the start point
         for (int k = 0; k < 4; ++k) {
             auto [cxs, cys] = corners[size_t((first + k) % 4)];
@@ -53,10 +57,14 @@ std::vector<Piece> contour(int shape, double hx, double hy, double r, bool ccw, 
             // Entry and exit points of the corner going counter-clockwise.
             int idx = (first + k) % 4;
             double ex, ey, fx, fy;
-            if (idx == 0) ex = hx, ey = hy - r, fx = hx - r, fy = hy;
-            else if (idx == 1) ex = -hx + r, ey = hy, fx = -hx, fy = hy - r;
-            else if (idx == 2) ex = -hx, ey = -hy + r, fx = -hx + r, fy = -hy;
-            else ex = hx - r, ey = -hy, fx = hx, fy = -hy + r;
+            if (idx == 0)
+                ex = hx, ey = hy - r, fx = hx - r, fy = hy;
+            else if (idx == 1)
+                ex = -hx + r, ey = hy, fx = -hx, fy = hy - r;
+            else if (idx == 2)
+                ex = -hx, ey = -hy + r, fx = -hx + r, fy = -hy;
+            else
+                ex = hx - r, ey = -hy, fx = hx, fy = -hy + r;
             line(ex, ey);
             if (r > 1e-9) arc(fx, fy, cxs - sgx * r, cys - sgy * r, kPi / 2);
         }
@@ -94,12 +102,12 @@ struct Interpreter::Pocket45 {
 
     Interpreter& in;
     W ex, ey, eb, P, Q, I, J, er, eg;
-    double R = 0;        // tool radius
-    int shape = 0;       // 1 circle, 2 oblong, 3 rectangle
+    double R = 0;   // tool radius
+    int shape = 0;  // 1 circle, 2 oblong, 3 rectangle
     double hx = 0, hy = 0, rc = 0, half_small = 0;
     bool rough = false, floor = false, wall = false;
-    double ei = 0, ej = 0;        // finishing feeds
-    double cx = 0, cy = 0;        // the centre
+    double ei = 0, ej = 0;  // finishing feeds
+    double cx = 0, cy = 0;  // the centre
     double zb = 0, top = 0, z = 0;
     bool ccw = true;
     double d = 0;  // lateral distance from the centre to the final contour
@@ -118,7 +126,8 @@ struct Interpreter::Pocket45 {
 };
 
 bool Interpreter::pocket(const Plan& p) {
-    if (modal_.plane != 17) return fail(885, tr("G45 pockets are machined in the XY plane (G17)")), false;
+    if (modal_.plane != 17)
+        return fail(885, tr("G45 pockets are machined in the XY plane (G17)")), false;
     if (modal_.radcomp != 40) return fail(140, tr("G45 under radius compensation")), false;
     Pocket45 k{*this};
     if (!k.words(p) || !k.sizes() || !k.feeds() || !k.place(p)) return false;
@@ -148,16 +157,25 @@ bool Interpreter::Pocket45::words(const Plan& p) {
     for (int i = 0; i < p.cycle_words.n; ++i) {
         Addr a = p.cycle_words.word[i].a;
         double v = p.cycle_words.word[i].v;
-        W* w = a == addrE('X') ? &ex : a == addrE('Y') ? &ey : a == addrE('B') ? &eb : a == addr1('P') ? &P
-             : a == addr1('Q') ? &Q : a == addr1('I') ? &I : a == addr1('J') ? &J : a == addrE('R') ? &er
-             : a == addrE('G') ? &eg : nullptr;
+        W* w = a == addrE('X')   ? &ex
+               : a == addrE('Y') ? &ey
+               : a == addrE('B') ? &eb
+               : a == addr1('P') ? &P
+               : a == addr1('Q') ? &Q
+               : a == addr1('I') ? &I
+               : a == addr1('J') ? &J
+               : a == addrE('R') ? &er
+               : a == addrE('G') ? &eg
+                                 : nullptr;
         if (w) *w = {true, v};
         if (a == addrE('P')) in.pocket_ep_ = v;
         if (a == addrE('Q')) in.pocket_eq_ = v;
         if (a == addrE('I')) in.pocket_ei_ = v;
         if (a == addrE('J')) in.pocket_ej_ = v;
         if ((a == addr1('P') || a == addr1('Q') || a == addr1('I') || a == addr1('J')) && v < 0)
-            return in.fail(835, strf(tr("%s must be positive in G45"), std::string(addr_name(a)).c_str())), false;
+            return in.fail(835, strf(tr("%s must be positive in G45"),
+                                     std::string(addr_name(a)).c_str())),
+                   false;
     }
     return true;
 }
@@ -166,40 +184,52 @@ bool Interpreter::Pocket45::words(const Plan& p) {
 bool Interpreter::Pocket45::sizes() {
     const Corrector& c = in.corr_[size_t(in.modal_.d)];
     R = c.r + c.dr;
-    if (in.modal_.d == 0 || R <= 0) return in.fail(898, tr("G45 needs a tool corrector with a radius (D0 active)")), false;
+    if (in.modal_.d == 0 || R <= 0)
+        return in.fail(898, tr("G45 needs a tool corrector with a radius (D0 active)")), false;
     if (ey.has && !ex.has) return in.fail(889, tr("G45: EY without EX")), false;
     if (ex.has && ey.has) {
         shape = 3;
         if (eb.has && eb.v > 0 && eb.v < R)
-            return in.fail(886, tr("G45: the corner radius EB is smaller than the tool radius")), false;
+            return in.fail(886, tr("G45: the corner radius EB is smaller than the tool radius")),
+                   false;
         half_small = std::min(ex.v, ey.v) / 2;
         hx = ex.v / 2 - R, hy = ey.v / 2 - R, rc = eb.has ? std::max(eb.v - R, 0.0) : 0;
     } else if (ex.has && eb.has) {
         shape = 2;
-        if (ex.v < 2 * eb.v) return in.fail(897, tr("G45: the oblong is shorter than its width")), false;
+        if (ex.v < 2 * eb.v)
+            return in.fail(897, tr("G45: the oblong is shorter than its width")), false;
         half_small = eb.v;
         hx = ex.v / 2 - eb.v, hy = 0, rc = eb.v - R;
     } else if (eb.has) {
         shape = 1;
-        if (eb.v <= R) return in.fail(886, tr("G45: the pocket radius EB is not larger than the tool radius")), false;
+        if (eb.v <= R)
+            return in.fail(886, tr("G45: the pocket radius EB is not larger than the tool radius")),
+                   false;
         half_small = eb.v;
         hx = hy = 0, rc = eb.v - R;
     } else {
         return in.fail(889, tr("G45 needs EB, EX EY or EX EB")), false;
     }
-    if (half_small <= R) return in.fail(896, tr("G45: the pocket is not wider than the tool")), false;
+    if (half_small <= R)
+        return in.fail(896, tr("G45: the pocket is not wider than the tool")), false;
     return true;
 }
 
 // Which operations P Q I J ask for, and their feeds.
 bool Interpreter::Pocket45::feeds() {
-    if (Q.has && Q.v > 2 * R) return in.fail(887, tr("G45: the step-over Q is larger than the tool diameter")), false;
+    if (Q.has && Q.v > 2 * R)
+        return in.fail(887, tr("G45: the step-over Q is larger than the tool diameter")), false;
     rough = P.has && Q.has, floor = Q.has && I.has, wall = P.has && J.has;
-    if (!rough && !floor && !wall) return in.fail(889, tr("G45 needs P and Q, Q and I, or P and J")), false;
-    if (rough && in.pocket_ep_ <= 0) return in.fail(892, tr("G45: no axial feed EP programmed")), false;
-    if (rough && in.pocket_eq_ <= 0) return in.fail(893, tr("G45: no lateral feed EQ programmed")), false;
-    ei = in.pocket_ei_ > 0 ? in.pocket_ei_ : in.pocket_ep_, ej = in.pocket_ej_ > 0 ? in.pocket_ej_ : in.pocket_eq_;
-    if (ei <= 0 || ej <= 0) return in.fail(892, tr("G45: no finishing feed (EI, EJ or EP, EQ)")), false;
+    if (!rough && !floor && !wall)
+        return in.fail(889, tr("G45 needs P and Q, Q and I, or P and J")), false;
+    if (rough && in.pocket_ep_ <= 0)
+        return in.fail(892, tr("G45: no axial feed EP programmed")), false;
+    if (rough && in.pocket_eq_ <= 0)
+        return in.fail(893, tr("G45: no lateral feed EQ programmed")), false;
+    ei = in.pocket_ei_ > 0 ? in.pocket_ei_ : in.pocket_ep_,
+    ej = in.pocket_ej_ > 0 ? in.pocket_ej_ : in.pocket_eq_;
+    if (ei <= 0 || ej <= 0)
+        return in.fail(892, tr("G45: no finishing feed (EI, EJ or EP, EQ)")), false;
     return true;
 }
 
@@ -211,7 +241,8 @@ bool Interpreter::Pocket45::place(const Plan& p) {
     if (!p.to.axis[Z]) return in.fail(882, tr("G45: the pocket bottom Z is not programmed")), false;
     zb = p.to.inc[Z] ? prog[Z] + p.to.val[Z] : p.to.val[Z];
     top = er.has ? er.v : prog[Z];
-    if (er.has && std::fabs(er.v - zb) < 1e-9) return in.fail(891, tr("G45: ER is the pocket bottom")), false;
+    if (er.has && std::fabs(er.v - zb) < 1e-9)
+        return in.fail(891, tr("G45: ER is the pocket bottom")), false;
     ccw = !(eg.has && std::lround(eg.v) == 2);
     d = half_small - R;
     return true;
@@ -227,7 +258,8 @@ bool Interpreter::Pocket45::go(int g, double x, double y, double to_z, double fe
 // One contour `off` inside the final one, from its start point.
 bool Interpreter::Pocket45::run_contour(double off, double feed) {
     double sx, sy;
-    auto pcs = contour(shape, std::max(hx - off, 0.0), std::max(hy - off, 0.0), std::max(rc - off, 0.0), ccw, sx, sy);
+    auto pcs = contour(shape, std::max(hx - off, 0.0), std::max(hy - off, 0.0),
+                       std::max(rc - off, 0.0), ccw, sx, sy);
     if (shape == 1) {
         pcs = contour(1, 0, 0, d - off, ccw, sx, sy);
     } else if (shape == 2) {

@@ -10,9 +10,9 @@
 #include <cstdio>
 #include <string>
 
-#include "core/interp/plan.hpp"
 #include "core/geometry/geometry.hpp"
 #include "core/i18n.hpp"
+#include "core/interp/plan.hpp"
 
 namespace pupitre {
 
@@ -93,7 +93,9 @@ bool Interpreter::pocket46(const Plan& p) {
     if (!p.g[46]) return p46_contour(p);
     // A G46 block runs no modal function: a plane given there would be ignored.
     if (p.mode.plane >= 0 && p.mode.plane != modal_.plane)
-        return fail(279, strf(tr("G%d in a G46 block: select the plane in a block before G46 NU0"), p.mode.plane)), false;
+        return fail(279, strf(tr("G%d in a G46 block: select the plane in a block before G46 NU0"),
+                              p.mode.plane)),
+               false;
     const Words w = words_of(p.cycle_words);
     if (!w.has[addrN('U')])
         return fail(268, tr("G46 needs NU (NU0 header, NU1-NU6 contours, NU9, NU10/15/20 orders)")),
@@ -101,7 +103,8 @@ bool Interpreter::pocket46(const Plan& p) {
     const double nuv = w.v[addrN('U')];
     const int nu = int(nuv);
     const bool known = nuv == nu && (nu <= 6 || nu == 9 || nu == 10 || nu == 15 || nu == 20);
-    if (!known) return fail(262, strf(tr("G46 NU%s: NU is 0-6, 9, 10, 15 or 20"), num(nuv).c_str())), false;
+    if (!known)
+        return fail(262, strf(tr("G46 NU%s: NU is 0-6, 9, 10, 15 or 20"), num(nuv).c_str())), false;
     if (p.tech.nm || p.tech.has_s || p.tech.has_t || p.tech.has_d)
         return fail(268, tr("M, S, T or D in a G46 block")), false;
     if (nu == 0) {
@@ -114,7 +117,8 @@ bool Interpreter::pocket46(const Plan& p) {
     }
     if (nu >= 10) {
         if (p46_.defining)
-            return fail(270, tr("a machining order before the end of the definition (G46 NU9)")), false;
+            return fail(270, tr("a machining order before the end of the definition (G46 NU9)")),
+                   false;
         return p46_order(p, nu);
     }
     return p46_section(p, nu);
@@ -124,18 +128,20 @@ bool Interpreter::pocket46(const Plan& p) {
 // LY); NU9 closes the definition and checks it.
 bool Interpreter::p46_section(const Plan& p, int nu) {
     const Words w = words_of(p.cycle_words);
-    if (!p46_.defining)
-        return fail(270, strf(tr("G46 NU%d without a G46 NU0 header"), nu)), false;
+    if (!p46_.defining) return fail(270, strf(tr("G46 NU%d without a G46 NU0 header"), nu)), false;
     // Contour sections accept LX LY (NU1, NU2) and nothing else.
     for (int i = 0; i < p.cycle_words.n; ++i) {
         Addr a = p.cycle_words.word[i].a;
         bool lxy = a == addrL('X') || a == addrL('Y');
         if (a != addrN('U') && !(lxy && (nu == 1 || nu == 2)))
-            return fail(267, strf(tr("%s is not a word of G46 NU%d"), std::string(addr_name(a)).c_str(), nu)), false;
+            return fail(267, strf(tr("%s is not a word of G46 NU%d"),
+                                  std::string(addr_name(a)).c_str(), nu)),
+                   false;
     }
     if (p.to.axis.any() || p.to.ijk.any() || p.tech.has_f)
         return fail(267, strf(tr("G46 NU%d takes no coordinates"), nu)), false;
-    if (w.has[addrL('X')] != w.has[addrL('Y')]) return fail(277, tr("LX and LY go together")), false;
+    if (w.has[addrL('X')] != w.has[addrL('Y')])
+        return fail(277, tr("LX and LY go together")), false;
     if (!p46_close_section()) return false;
     if (nu == 9) {
         p46_.defining = false;
@@ -166,15 +172,19 @@ bool Interpreter::p46_header(const Plan& p, int) {
                                   addr1('Q'), addr1('J'), addr1('R'), addrL('X'),
                                   addrL('Y'), addrE('X'), addrE('Y')};
         if (std::find(std::begin(ok), std::end(ok), a) == std::end(ok))
-            return fail(267, strf(tr("%s is not a word of G46 NU0"), std::string(addr_name(a)).c_str())), false;
+            return fail(267,
+                        strf(tr("%s is not a word of G46 NU0"), std::string(addr_name(a)).c_str())),
+                   false;
         w.has[a] = true, w.v[a] = p.cycle_words.word[i].v;
     }
     if (p.to.axis.any() || p.to.ijk.any() || p.tech.has_f)
         return fail(267, tr("G46 NU0 takes no coordinates")), false;
     if (!w.has[addrN('P')] || !w.has[addrE('D')] || !w.has[addr1('Q')])
         return fail(268, tr("G46 NU0 needs NP, ED and Q")), false;
-    if (w.has[addrL('X')] != w.has[addrL('Y')]) return fail(277, tr("LX and LY go together")), false;
-    if (w.has[addrE('X')] != w.has[addrE('Y')]) return fail(277, tr("EX and EY go together")), false;
+    if (w.has[addrL('X')] != w.has[addrL('Y')])
+        return fail(277, tr("LX and LY go together")), false;
+    if (w.has[addrE('X')] != w.has[addrE('Y')])
+        return fail(277, tr("EX and EY go together")), false;
     const Frames& f = frames_;
     bool g59 = std::fabs(f.ed) > 1e-12;
     for (int a = 0; a < kAxes; ++a) g59 = g59 || std::fabs(f.g59[size_t(a)]) > 1e-12;
@@ -188,9 +198,8 @@ bool Interpreter::p46_header(const Plan& p, int) {
     d.rot = w.has[addr1('R')] ? int(w.v[addr1('R')]) : 3;
     if (d.np <= 0 || d.np != w.v[addrN('P')] || d.ed <= 0 || d.q <= 0 || d.j < 0 ||
         (d.rot != 3 && d.rot != 4) || w.v[addr1('R')] != std::floor(w.v[addr1('R')]))
-        return fail(
-                   282,
-                   tr("G46 NU0: NP a positive integer, ED and Q positive, J not negative, R03 or R04")),
+        return fail(282, tr("G46 NU0: NP a positive integer, ED and Q positive, J not negative, "
+                            "R03 or R04")),
                false;
     if (w.has[addrL('X')]) d.has_l = true, d.l = p46::V2(w.v[addrL('X')], w.v[addrL('Y')]);
     if (w.has[addrE('X')]) d.has_e = true, d.e = p46::V2(w.v[addrE('X')], w.v[addrE('Y')]);
@@ -221,9 +230,9 @@ bool Interpreter::p46_contour(const Plan& p) {
     if (p.to.axis[a1]) t.y() = p.to.inc[a1] ? p46_.pos.y() + p.to.val[a1] : p.to.val[a1];
     if (p46_.first) return p46_contour_start(p, ax, motion, t);
     if (motion == 0)
-        return fail(p46_.blocks == 1 ? 292 : 284, p46_.blocks == 1
-                                                      ? tr("two positionings at the start of a contour")
-                                                      : tr("G0 inside a contour")),
+        return fail(p46_.blocks == 1 ? 292 : 284,
+                    p46_.blocks == 1 ? tr("two positionings at the start of a contour")
+                                     : tr("G0 inside a contour")),
                false;
     return p46_contour_elem(p, ax, motion, t);
 }
@@ -234,17 +243,21 @@ bool Interpreter::p46_contour_words(const Plan& p, const P46Axes& ax, bool tech_
     const size_t a0 = size_t(ax.a0), a1 = size_t(ax.a1), an = size_t(ax.an);
     if (p46_.blocks < 0) return fail(269, tr("a contour block before G46 NU1-NU6")), false;
     for (size_t g = 0; g < p.g.size(); ++g)
-        if (p.g[g] && g > 3)
-            return fail(279, strf(tr("G%zu in a pocket contour block"), g)), false;
+        if (p.g[g] && g > 3) return fail(279, strf(tr("G%zu in a pocket contour block"), g)), false;
     if (tech_words)
-        return fail(268, strf(tr("only G0-G3, %s %s, %s %s, R and EB in a pocket contour block"), axis_name(ax.a0).c_str(),
-                              axis_name(ax.a1).c_str(), centre_name(ax.a0).c_str(), centre_name(ax.a1).c_str())),
+        return fail(268, strf(tr("only G0-G3, %s %s, %s %s, R and EB in a pocket contour block"),
+                              axis_name(ax.a0).c_str(), axis_name(ax.a1).c_str(),
+                              centre_name(ax.a0).c_str(), centre_name(ax.a1).c_str())),
                false;
     for (int a = 0; a < kAxes; ++a)
         if (p.to.axis[size_t(a)] && size_t(a) != a0 && size_t(a) != a1)
-            return fail(264, strf(tr("%s is outside the contouring plane"), axis_name(a).c_str())), false;
+            return fail(264, strf(tr("%s is outside the contouring plane"), axis_name(a).c_str())),
+                   false;
     // The centre word of the normal axis (K in G17) is a coordinate outside the plane.
-    if (p.to.ijk[an]) return fail(264, strf(tr("%s is outside the contouring plane"), centre_name(ax.an).c_str())), false;
+    if (p.to.ijk[an])
+        return fail(264,
+                    strf(tr("%s is outside the contouring plane"), centre_name(ax.an).c_str())),
+               false;
     if (!p.to.axis[a0] && !p.to.axis[a1] && !p.pgp.has_ea)
         return fail(264, tr("no coordinate in the contouring plane")), false;
     return true;
@@ -283,10 +296,11 @@ bool Interpreter::p46_contour_elem(const Plan& p, const P46Axes& ax, int motion,
     s.tag = loc_.line;
     if (p.pgp.link == 'X') return fail(110, tr("ES and ET together in one block")), false;
     if (p.pgp.has_eb && p.pgp.eb_unsigned)
-        warn(err::wUnsignedEB, tr("EB without a sign is taken as a fillet (EB+): write EB+ or EB- (pupitre-iso(5), PGP)"));
+        warn(err::wUnsignedEB, tr("EB without a sign is taken as a fillet (EB+): write EB+ or EB- "
+                                  "(pupitre-iso(5), PGP)"));
     if ((motion == 2 || motion == 3) && !s.has_i && !s.has_j && !s.has_r && !p.pgp.any)
-        return fail(269, strf(tr("a circle without its centre (%s %s) or radius (R)"), centre_name(ax.a0).c_str(),
-                              centre_name(ax.a1).c_str())),
+        return fail(269, strf(tr("a circle without its centre (%s %s) or radius (R)"),
+                              centre_name(ax.a0).c_str(), centre_name(ax.a1).c_str())),
                false;
     std::vector<pgp::Elem> out;
     pgp::Error e;
@@ -331,19 +345,22 @@ void Interpreter::warn_plunges(const p46::Def& d, const std::vector<p46::Run>& r
         if (!r.linked && !r.cleanup && (r.start - hole).norm() > 1e-6) away.push_back(r.start);
     if (away.empty()) return;
     if (away.size() == 1)
-        warn(err::wPlungeAway, strf(tr("the roughing plunges with the cutter at %s %s, away from the hole at %s %s "
-                                       "(NU10 drills only there; LX LY of NU0 chooses it)"),
-                                    num(away[0].x()).c_str(), num(away[0].y()).c_str(), num(hole.x()).c_str(),
-                                    num(hole.y()).c_str()));
+        warn(err::wPlungeAway,
+             strf(tr("the roughing plunges with the cutter at %s %s, away from the hole at %s %s "
+                     "(NU10 drills only there; LX LY of NU0 chooses it)"),
+                  num(away[0].x()).c_str(), num(away[0].y()).c_str(), num(hole.x()).c_str(),
+                  num(hole.y()).c_str()));
     else
-        // TRANSLATORS: %zu counts the other places where the cutter plunges (English keeps "more places").
-        warn(err::wPlungeAway, strf(trn("the roughing plunges with the cutter at %s %s and %zu more places, away "
-                                        "from the hole at %s %s (NU10 drills only there; LX LY of NU0 chooses it)",
-                                        "the roughing plunges with the cutter at %s %s and %zu more places, away "
-                                        "from the hole at %s %s (NU10 drills only there; LX LY of NU0 chooses it)",
-                                        away.size() - 1),
-                                    num(away[0].x()).c_str(), num(away[0].y()).c_str(), away.size() - 1,
-                                    num(hole.x()).c_str(), num(hole.y()).c_str()));
+        // TRANSLATORS: %zu counts the other places where the cutter plunges (English keeps "more
+        // places").
+        warn(err::wPlungeAway,
+             strf(trn("the roughing plunges with the cutter at %s %s and %zu more places, away "
+                      "from the hole at %s %s (NU10 drills only there; LX LY of NU0 chooses it)",
+                      "the roughing plunges with the cutter at %s %s and %zu more places, away "
+                      "from the hole at %s %s (NU10 drills only there; LX LY of NU0 chooses it)",
+                      away.size() - 1),
+                  num(away[0].x()).c_str(), num(away[0].y()).c_str(), away.size() - 1,
+                  num(hole.x()).c_str(), num(hole.y()).c_str()));
 }
 
 bool Interpreter::p46_emit(const P46Axes& ax, const std::vector<p46::Run>& runs, double z,
@@ -402,23 +419,27 @@ bool Interpreter::p46_order_allowed(const Plan& p, const p46::Def& d) {
     const size_t an = size_t(ax.an);
     const std::string bottom = axis_name(ax.an);
     if (modal_.tool_axis != ax.an || modal_.tool_axis_neg)
-        return fail(271, strf(tr("the tool axis (G16) is not perpendicular to the contouring plane (G16 %c+ in G%d)"),
+        return fail(271, strf(tr("the tool axis (G16) is not perpendicular to the contouring plane "
+                                 "(G16 %c+ in G%d)"),
                               "PQR"[ax.an], d.plane)),
                false;
     if (modal_.radcomp != 40) return fail(140, tr("G46 under radius compensation")), false;
     if (modal_.spindle_dir != d.rot)
         return fail(278, modal_.spindle_dir == 3 || modal_.spindle_dir == 4
-                             ? strf(tr("the spindle turns M0%d, the pocket asks for R0%d"), modal_.spindle_dir, d.rot)
+                             ? strf(tr("the spindle turns M0%d, the pocket asks for R0%d"),
+                                    modal_.spindle_dir, d.rot)
                              : strf(tr("the spindle turns not, the pocket asks for R0%d"), d.rot)),
                false;
     // A plane coordinate first: in G18 the G17 habit of a Z bottom is refused
     // as a plane coordinate, not taken as a missing bottom.
     for (int a = 0; a < kAxes; ++a)
         if (p.to.axis[size_t(a)] && size_t(a) != an)
-            return fail(267, strf(tr("a G46 order takes no plane coordinate (%s): its bottom is %s in G%d"),
+            return fail(267, strf(tr("a G46 order takes no plane coordinate (%s): its bottom is %s "
+                                     "in G%d"),
                                   axis_name(a).c_str(), bottom.c_str(), d.plane)),
                    false;
-    if (!p.to.axis[an]) return fail(268, strf(tr("a G46 order needs the bottom %s"), bottom.c_str())), false;
+    if (!p.to.axis[an])
+        return fail(268, strf(tr("a G46 order needs the bottom %s"), bottom.c_str())), false;
     return true;
 }
 
@@ -465,7 +486,9 @@ bool Interpreter::p46_cutter(const Plan& p, int nu, const p46::Def& d, double& R
     if (modal_.d == 0 || R <= 0)
         return fail(272, tr("the pocket needs a cutter with a radius (D0 or R0 active)")), false;
     if (nu == 15 && std::fabs(2 * R - d.ed) > 1e-3)
-        return fail(272, strf(tr("the cutter (diameter %s) is not the roughing cutter ED of the pocket"), num(2 * R).c_str())),
+        return fail(272,
+                    strf(tr("the cutter (diameter %s) is not the roughing cutter ED of the pocket"),
+                         num(2 * R).c_str())),
                false;
     static const Addr ok15[] = {addrN('U'), addrN('P'), addr1('P'), addrE('R'),
                                 addrE('H'), addrE('P'), addrE('Q')};
@@ -475,7 +498,10 @@ bool Interpreter::p46_cutter(const Plan& p, int nu, const p46::Def& d, double& R
         Addr a = p.cycle_words.word[i].a;
         bool ok = nu == 15 ? std::find(std::begin(ok15), std::end(ok15), a) != std::end(ok15)
                            : std::find(std::begin(ok20), std::end(ok20), a) != std::end(ok20);
-        if (!ok) return fail(267, strf(tr("%s is not a word of G46 NU%d"), std::string(addr_name(a)).c_str(), nu)), false;
+        if (!ok)
+            return fail(267, strf(tr("%s is not a word of G46 NU%d"),
+                                  std::string(addr_name(a)).c_str(), nu)),
+                   false;
     }
     if (p.tech.has_f || p.g.count() > 1)
         return fail(267, strf(tr("G46 NU%d takes no F and no other G"), nu)), false;
@@ -525,7 +551,9 @@ bool Interpreter::p46_cut(const p46::Def& d, int nu, const P46Cut& c) {
 // NU20 NP.. Z.. P.. [ER] [EH] EI EJ [J]   (Z: the normal axis, Y in G18, X in G19)
 bool Interpreter::p46_order(const Plan& p, int nu) {
     Words w;
-    for (int i = 0; i < p.cycle_words.n; ++i) w.has[p.cycle_words.word[i].a] = true, w.v[p.cycle_words.word[i].a] = p.cycle_words.word[i].v;
+    for (int i = 0; i < p.cycle_words.n; ++i)
+        w.has[p.cycle_words.word[i].a] = true,
+        w.v[p.cycle_words.word[i].a] = p.cycle_words.word[i].v;
     if (!w.has[addrN('P')]) return fail(268, tr("a G46 order needs NP")), false;
     auto it = p46_.defs.find(int(w.v[addrN('P')]));
     if (it == p46_.defs.end())
@@ -544,7 +572,10 @@ bool Interpreter::p46_order(const Plan& p, int nu) {
         return fail(268, strf(tr("G46 NU%d needs the axial step P"), nu)), false;
     const Addr fa = nu == 15 ? addrE('P') : addrE('I'), fl = nu == 15 ? addrE('Q') : addrE('J');
     if (!w.has[fa] || !w.has[fl])
-        return fail(268, strf(nu == 15 ? tr("G46 NU%d needs EP and EQ") : tr("G46 NU%d needs EI and EJ"), nu)), false;
+        return fail(268,
+                    strf(nu == 15 ? tr("G46 NU%d needs EP and EQ") : tr("G46 NU%d needs EI and EJ"),
+                         nu)),
+               false;
     c.P = w.v[addr1('P')], c.jf = w.has[addr1('J')] ? w.v[addr1('J')] : 0;
     c.f_ax = w.v[fa], c.f_lat = w.v[fl];
     if (c.P <= 0 || c.f_ax <= 0 || c.f_lat <= 0 || c.jf < 0)
@@ -552,7 +583,9 @@ bool Interpreter::p46_order(const Plan& p, int nu) {
     c.clear = w.has[addrE('R')] ? w.v[addrE('R')] : prog_[an];
     c.top = w.has[addrE('H')] ? w.v[addrE('H')] : c.clear;
     if (c.top - c.zb < 1e-9)
-        return fail(276, strf(tr("the pocket bottom %s is not below the attack plane"), bottom.c_str())), false;
+        return fail(276,
+                    strf(tr("the pocket bottom %s is not below the attack plane"), bottom.c_str())),
+               false;
     if (c.clear < c.top - 1e-9)
         return fail(282, tr("the clearance plane ER is below the attack plane EH")), false;
     return p46_cut(d, nu, c);

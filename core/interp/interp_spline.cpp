@@ -1,21 +1,24 @@
 // G48 (define a spline from point blocks), G06 (run it from the current point),
 // G49 (delete it): turning.md §4.10, milling.md §5.7.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "core/interp/plan.hpp"
 #include "core/i18n.hpp"
+#include "core/interp/plan.hpp"
 
 namespace pupitre {
 
 bool Interpreter::spline_define(const Plan& p) {
     if (modal_.radcomp != 40) return fail(140, tr("G48 must be programmed in G40")), false;
     if (p.spline.nc == 0) return fail(600, tr("G48: the curve number NC must not be 0")), false;
-    if (p.spline.nc < 0 || p.spline.nn < 2) return fail(601, tr("G48 needs NC and the first and last blocks N.. N..")), false;
+    if (p.spline.nc < 0 || p.spline.nn < 2)
+        return fail(601, tr("G48 needs NC and the first and last blocks N.. N..")), false;
     const ProgramText* prog = stack_.back().prog;
     if (p.spline.h >= 0 && !(prog = mem_.find(p.spline.h)))
         return fail(25, strf(tr("G48 H%d: program not in memory"), p.spline.h)), false;
     const Label* a = prog->find_label(p.spline.n[0]);
     const Label* b = prog->find_label(p.spline.n[1]);
-    if (!a || !b) return fail(25, strf(tr("G48: block N%ld not found"), !a ? p.spline.n[0] : p.spline.n[1])), false;
+    if (!a || !b)
+        return fail(25, strf(tr("G48: block N%ld not found"), !a ? p.spline.n[0] : p.spline.n[1])),
+               false;
     if (b->line < a->line) std::swap(a, b);
     // Decode each definition block like a move, without moving.
     std::string_view text = *prog->text;
@@ -27,10 +30,12 @@ bool Interpreter::spline_define(const Plan& p) {
         size_t eol = std::min(text.find('\n', pos), prog->end);
         Diag d;
         loc_ = Loc{prog->number, line, line_label(text.substr(pos, eol - pos))};
-        if (!parse_block(text.substr(pos, eol - pos), blk, d)) return fail(d.code, d.detail, d.column), false;
+        if (!parse_block(text.substr(pos, eol - pos), blk, d))
+            return fail(d.code, d.detail, d.column), false;
         Plan q;
         if (!decode(blk, q)) return false;
-        if (line == a->line || line == b->line || q.to.axis.any()) blocks.push_back({q.to.axis, q.to.val});
+        if (line == a->line || line == b->line || q.to.axis.any())
+            blocks.push_back({q.to.axis, q.to.val});
         pos = eol + 1;
     }
     loc_ = saved;
@@ -45,7 +50,8 @@ bool Interpreter::spline_define(const Plan& p) {
         std::vector<double> pt(c.axes.size());
         for (size_t k = 0; k < c.axes.size(); ++k) {
             int ax = c.axes[k];
-            pt[k] = blocks[i].first[size_t(ax)] ? blocks[i].second[size_t(ax)] : (i > 1 ? prev[k] : prog_[size_t(ax)]);
+            pt[k] = blocks[i].first[size_t(ax)] ? blocks[i].second[size_t(ax)]
+                                                : (i > 1 ? prev[k] : prog_[size_t(ax)]);
         }
         c.pts.push_back(pt);
         prev = pt;
@@ -61,8 +67,10 @@ bool Interpreter::spline_define(const Plan& p) {
 
 bool Interpreter::spline_run(const Plan& p) {
     auto it = splines_.find(p.spline.nc);
-    if (it == splines_.end()) return fail(605, strf(tr("G06: curve NC%d is not defined"), p.spline.nc)), false;
-    if (p.tech.has_f || p.tech.has_s || p.tech.has_t) return fail(3, tr("no F, S or T in a G06 block (000:2055)")), false;
+    if (it == splines_.end())
+        return fail(605, strf(tr("G06: curve NC%d is not defined"), p.spline.nc)), false;
+    if (p.tech.has_f || p.tech.has_s || p.tech.has_t)
+        return fail(3, tr("no F, S or T in a G06 block (000:2055)")), false;
     const spline::Curve& c = it->second;
     for (const auto& pt : spline::sample(c, 0.002)) {
         Axes target = prog_;

@@ -8,9 +8,9 @@
 #include <cstdio>
 #include <optional>
 
-#include "core/interp/plan.hpp"
 #include "core/cycles/turning.hpp"
 #include "core/i18n.hpp"
+#include "core/interp/plan.hpp"
 
 namespace pupitre {
 
@@ -44,9 +44,10 @@ int high_l_read(const Block& b) {
 void Interpreter::warn_allowance_inside(int g, double i, double k) {
     char ik[64];
     std::snprintf(ik, sizeof ik, "I%g K%g", i, k);
-    warn(err::wAllowanceInside, strf(tr("G%d allowance %s points into the finished part: the passes cut it into the part "
-                                        "as written (a bore takes a negative I)"),
-                                     g, ik));
+    warn(err::wAllowanceInside,
+         strf(tr("G%d allowance %s points into the finished part: the passes cut it into the part "
+                 "as written (a bore takes a negative I)"),
+              g, ik));
 }
 
 // What the reading of a finished profile carries from one block to the next.
@@ -68,19 +69,24 @@ struct Interpreter::ProfileRead {
 bool Interpreter::profile_l_words(const Block& blk) {
     for (const Assign& as : blk.assigns)
         if (as.target.kind == Operand::LVar && as.target.index >= 100)
-            return fail(96, strf(tr("writing L%d in a roughing-cycle profile"), as.target.index)), false;
+            return fail(96, strf(tr("writing L%d in a roughing-cycle profile"), as.target.index)),
+                   false;
     if (int high = high_l_read(blk); high >= 0) {
         // The handbook's words, quoted as written (not translated).
-        const char* seed = "ne peuvent pas \u00eatre employ\u00e9es dans la d\u00e9finition du profil fini";
+        const char* seed =
+            "ne peuvent pas \u00eatre employ\u00e9es dans la d\u00e9finition du profil fini";
         // TRANSLATORS: the second %s is a quotation of the French handbook; keep it as it is.
         if (m_.strict)
-            return fail(96, strf(tr("L%d read in a roughing-cycle profile (seed 000: L100-L199 and L900-L959 \"%s\")"),
+            return fail(96, strf(tr("L%d read in a roughing-cycle profile (seed 000: L100-L199 and "
+                                    "L900-L959 \"%s\")"),
                                  high, seed)),
                    false;
         // TRANSLATORS: the second %s is a quotation of the French handbook; keep it as it is.
-        warn(err::wProfileL, strf(tr("L%d read in a roughing-cycle profile (seed 000: L100-L199 and L900-L959 \"%s\"): "
-                                     "the NUM stops with error 96; copy it into L0-L19 before the cycle"),
-                                  high, seed));
+        warn(err::wProfileL,
+             strf(tr("L%d read in a roughing-cycle profile (seed 000: L100-L199 and L900-L959 "
+                     "\"%s\"): "
+                     "the NUM stops with error 96; copy it into L0-L19 before the cycle"),
+                  high, seed));
     }
     return true;
 }
@@ -98,7 +104,8 @@ bool Interpreter::profile_start(Plan& q, ProfileRead& r) {
         q.to.inc.reset(size_t(ax));
         q.to.val[size_t(ax)] = v;
     }
-    r.pos = comp::V2(q.to.inc[Z] ? r.pos.x() + q.to.val[Z] : q.to.val[Z], q.to.inc[X] ? r.pos.y() + q.to.val[X] : q.to.val[X]);
+    r.pos = comp::V2(q.to.inc[Z] ? r.pos.x() + q.to.val[Z] : q.to.val[Z],
+                     q.to.inc[X] ? r.pos.y() + q.to.val[X] : q.to.val[X]);
     r.start = r.pos;
     r.solver.start(r.pos);
     r.started = true;
@@ -145,15 +152,16 @@ bool Interpreter::profile_block(Plan& q, int line, ProfileRead& r) {
         if (!r.solver.idle(e)) return fail(e.code, e.detail), false;
         return true;
     }
-    if (!r.solver.push(profile_spec(q, r.solver.position(), line), r.elems, e)) return fail(e.code, e.detail), false;
+    if (!r.solver.push(profile_spec(q, r.solver.position(), line), r.elems, e))
+        return fail(e.code, e.detail), false;
     ++r.count;
     return true;
 }
 
 // The elements in the order the cycle calls them: written N<b> before N<a>,
 // the same elements from the last point to the first.
-void Interpreter::profile_as_called(const std::vector<pgp::Elem>& elems, bool reversed, turning::Profile& out,
-                                    comp::V2& first) {
+void Interpreter::profile_as_called(const std::vector<pgp::Elem>& elems, bool reversed,
+                                    turning::Profile& out, comp::V2& first) {
     out.elems.clear();
     for (const auto& el : elems) out.elems.push_back(el.geo);
     if (!reversed) return;
@@ -169,7 +177,9 @@ bool Interpreter::turning_profile(long na, long nb, turning::Profile& out, comp:
     const ProgramText* prog = stack_.back().prog;
     const Label* a = prog->find_label(na);
     const Label* b = prog->find_label(nb);
-    if (!a || !b) return fail(871, strf(tr("the profile block N%ld is not in the program"), !a ? na : nb)), false;
+    if (!a || !b)
+        return fail(871, strf(tr("the profile block N%ld is not in the program"), !a ? na : nb)),
+               false;
     bool reversed = b->line < a->line;
     profile_feed_ = 0;
     const Label* lo = reversed ? b : a;
@@ -234,7 +244,8 @@ bool Interpreter::coordinate_above(const ProgramText* prog, int line, int axis, 
 
 // Runs the moves of a cycle. Threading moves (g 1 of G33/G38) are at `lead` mm per
 // revolution when lead > 0; infeed moves at `infeed` mm/min or per rev when > 0.
-bool Interpreter::turning_emit(const std::vector<turning::Move>& moves, double lead, double infeed) {
+bool Interpreter::turning_emit(const std::vector<turning::Move>& moves, double lead,
+                               double infeed) {
     Modal saved = modal_;
     std::optional<OwnFeed> own;
     if (lead > 0) own.emplace(*this);  // threading runs at its lead
@@ -301,7 +312,8 @@ bool Interpreter::turning_g64(const Plan& p) {
     g64_.k = cyc(p, addr1('K'), 0);
     g64_.p = cyc(p, addr1('P'), 0, &g64_.has_p);
     g64_.r = cyc(p, addr1('R'), 0, &g64_.has_r);
-    if (!g64_.has_p && !g64_.has_r) return fail(873, tr("G64 needs P (passes along Z) or R (passes along X)")), false;
+    if (!g64_.has_p && !g64_.has_r)
+        return fail(873, tr("G64 needs P (passes along Z) or R (passes along X)")), false;
     if (g64_.has_p && g64_.has_r) return fail(889, tr("G64 takes P or R, not both")), false;
     if (g64_.p < 0 || g64_.r < 0) return fail(835, tr("G64: P and R are positive")), false;
     g64_na_ = p.spline.n[0];
@@ -328,7 +340,10 @@ turning::G65Args Interpreter::g65_args(const Plan& p) {
 // EX and EU are diameters when the machine shows X as a diameter.
 turning::G63Args Interpreter::g63_args(const Plan& p) const {
     const bool diam = m_.x_diameter && !modal_.radius_x;
-    auto xpos = [&](Addr a, bool& has) { double v = cyc(p, a, 0, &has); return diam ? v / 2 : v; };
+    auto xpos = [&](Addr a, bool& has) {
+        double v = cyc(p, a, 0, &has);
+        return diam ? v / 2 : v;
+    };
     turning::G63Args a;
     block_end(a, p);
     a.ex = xpos(addrE('X'), a.has_ex);
@@ -356,7 +371,8 @@ bool Interpreter::turning_emit_ef(const Plan& p, const std::vector<turning::Move
 // G65 and G63 cut along the finished profile N<a>..N<b>, read first: its errors
 // come before those of the arguments.
 bool Interpreter::turning_g65_g63(const Plan& p) {
-    if (p.spline.nn < 2) return fail(871, strf(tr("G%d needs the profile N.. N.."), p.g[65] ? 65 : 63)), false;
+    if (p.spline.nn < 2)
+        return fail(871, strf(tr("G%d needs the profile N.. N.."), p.g[65] ? 65 : 63)), false;
     const comp::V2 tool(prog_[Z], prog_[X]);
     turning::Profile prof;
     comp::V2 first;
@@ -390,7 +406,8 @@ bool Interpreter::turning_g66(const Plan& p) {
     if (a.d > 0 && a.d <= m_.correctors && modal_.d > 0) {
         const Corrector& c1 = corr_[size_t(modal_.d)];
         const Corrector& c2 = corr_[size_t(a.d)];
-        a.gauge_delta = comp::V2((c2.z + c2.dz) - (c1.z + c1.dz), (c2.x + c2.dx / 2) - (c1.x + c1.dx / 2));
+        a.gauge_delta =
+            comp::V2((c2.z + c2.dz) - (c1.z + c1.dz), (c2.x + c2.dx / 2) - (c1.x + c1.dx / 2));
     }
     block_end(a, p);
     a.ea = cyc(p, addrE('A'), 0);
@@ -401,10 +418,11 @@ bool Interpreter::turning_g66(const Plan& p) {
     // Warning 1117: the two correctors are the tool's two edges; their
     // difference is its width (seed 000, G66).
     if (a.d > 0 && a.d_first > 0 && a.gauge_delta.norm() < 1e-6)
-        warn(err::wNoToolWidth, strf(tr("G66: D%d and D%d have the same gauges, so the tool has no width: the "
-                                        "far side of the groove is cut one tool width off; measure D%d on the "
-                                        "other edge of the tool"),
-                                     a.d_first, a.d, a.d));
+        warn(err::wNoToolWidth,
+             strf(tr("G66: D%d and D%d have the same gauges, so the tool has no width: the "
+                     "far side of the groove is cut one tool width off; measure D%d on the "
+                     "other edge of the tool"),
+                  a.d_first, a.d, a.d));
     std::vector<turning::Move> moves;
     std::string why;
     const comp::V2 tool(prog_[Z], prog_[X]);
@@ -440,7 +458,8 @@ bool Interpreter::turning_g33(const Plan& p) {
     a.radius_comp = modal_.radcomp != 40;
     std::vector<turning::Move> moves;
     std::string why;
-    if (int rc = turning::g33(comp::V2(prog_[Z], prog_[X]), a, moves, why)) return fail(rc, why), false;
+    if (int rc = turning::g33(comp::V2(prog_[Z], prog_[X]), a, moves, why))
+        return fail(rc, why), false;
     return turning_emit(moves, a.k, 0);
 }
 
@@ -461,7 +480,8 @@ bool Interpreter::turning_g38(const Plan& p) {
     a.radius_comp = modal_.radcomp != 40;
     std::vector<turning::Move> moves;
     std::string why;
-    if (int rc = turning::g38(comp::V2(prog_[Z], prog_[X]), a, moves, why)) return fail(rc, why), false;
+    if (int rc = turning::g38(comp::V2(prog_[Z], prog_[X]), a, moves, why))
+        return fail(rc, why), false;
     g38_lead_ = k;
     return turning_emit(moves, k, 0);
 }
@@ -469,7 +489,8 @@ bool Interpreter::turning_g38(const Plan& p) {
 // A block that programs G63, G64, G65, G66, G33 or G38 (G64: the stock follows).
 // The first function present in this order is the block's cycle.
 bool Interpreter::turning_block(const Plan& p) {
-    if (modal_.radcomp != 40) return fail(140, tr("a turning cycle under radius compensation")), false;
+    if (modal_.radcomp != 40)
+        return fail(140, tr("a turning cycle under radius compensation")), false;
     static constexpr struct {
         int g;
         bool (Interpreter::*run)(const Plan&);
@@ -510,7 +531,8 @@ bool Interpreter::turning_g64_run() {
     if (!turning_profile(g64_na_, g64_nb_, prof, first)) return false;
     std::vector<turning::Move> moves;
     std::string why;
-    if (int rc = turning::g64(prof, g64_stock_, g64_tool_, g64_, moves, why)) return fail(rc, why), false;
+    if (int rc = turning::g64(prof, g64_stock_, g64_tool_, g64_, moves, why))
+        return fail(rc, why), false;
     if (opt_.on_g64) opt_.on_g64(prof, g64_stock_, g64_tool_, g64_, moves);
     if (g64_.allowance_inside) warn_allowance_inside(64, g64_.i, g64_.k);
     bool ok = turning_emit(moves, 0, 0);

@@ -5,9 +5,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <cmath>
 
+#include "core/i18n.hpp"
 #include "core/interp/decode.hpp"
 #include "core/numfmt.hpp"
-#include "core/i18n.hpp"
 
 namespace pupitre {
 
@@ -25,27 +25,57 @@ struct AddrFormat {
 [[gnu::always_inline]] inline AddrFormat format_of(Addr a) {
     if (a < 26) {
         switch (char('A' + a)) {
-            case 'X': case 'Y': case 'Z': case 'U': case 'V': case 'W':
-            case 'I': case 'J': case 'K': case 'R': case 'P': case 'Q':
+            case 'X':
+            case 'Y':
+            case 'Z':
+            case 'U':
+            case 'V':
+            case 'W':
+            case 'I':
+            case 'J':
+            case 'K':
+            case 'R':
+            case 'P':
+            case 'Q':
                 return {Fmt::length, 5, 3, true};
-            case 'A': case 'B': case 'C':
+            case 'A':
+            case 'B':
+            case 'C':
                 return {Fmt::angle, 5, 4, true};
-            case 'F': return {Fmt::feed, 5, 3, false};
-            case 'S': return {Fmt::speed, 5, 3, false};
-            case 'G': case 'M': return {Fmt::integer, 3, 0, false};
-            case 'T': case 'D': return {Fmt::integer, 3, 0, false};
-            case 'N': return {Fmt::label, 5, 0, false};
-            case 'H': return {Fmt::prog, 4, 0, false};
-            default: return {Fmt::other, 5, 4, true};
+            case 'F':
+                return {Fmt::feed, 5, 3, false};
+            case 'S':
+                return {Fmt::speed, 5, 3, false};
+            case 'G':
+            case 'M':
+                return {Fmt::integer, 3, 0, false};
+            case 'T':
+            case 'D':
+                return {Fmt::integer, 3, 0, false};
+            case 'N':
+                return {Fmt::label, 5, 0, false};
+            case 'H':
+                return {Fmt::prog, 4, 0, false};
+            default:
+                return {Fmt::other, 5, 4, true};
         }
     }
     if (a < 52) {
         switch (char('A' + a - 26)) {
-            case 'A': case 'B': case 'C': case 'D': return {Fmt::angle, 5, 4, true};
-            case 'F': return {Fmt::time, 5, 3, false};
-            case 'G': return {Fmt::integer, 3, 0, false};
-            case 'S': case 'K': return {Fmt::other, 5, 3, false};
-            default: return {Fmt::length, 5, 3, true};
+            case 'A':
+            case 'B':
+            case 'C':
+            case 'D':
+                return {Fmt::angle, 5, 4, true};
+            case 'F':
+                return {Fmt::time, 5, 3, false};
+            case 'G':
+                return {Fmt::integer, 3, 0, false};
+            case 'S':
+            case 'K':
+                return {Fmt::other, 5, 3, false};
+            default:
+                return {Fmt::length, 5, 3, true};
         }
     }
     if (a < 78) return {Fmt::integer, 4, 0, false};
@@ -55,15 +85,22 @@ struct AddrFormat {
 
 double e_scale(Fmt f) {
     switch (f) {
-        case Fmt::length: return 1e-3;   // µm
-        case Fmt::angle: return 1e-4;    // 0.0001°
-        case Fmt::feed: return 1e-2;     // 0.01 mm/min (000:7602-7604)
-        case Fmt::time: return 1e-2;
-        default: return 1.0;
+        case Fmt::length:
+            return 1e-3;  // µm
+        case Fmt::angle:
+            return 1e-4;  // 0.0001°
+        case Fmt::feed:
+            return 1e-2;  // 0.01 mm/min (000:7602-7604)
+        case Fmt::time:
+            return 1e-2;
+        default:
+            return 1.0;
     }
 }
 
-double round_to(double v, double step) { return std::round(v / step) * step; }
+double round_to(double v, double step) {
+    return std::round(v / step) * step;
+}
 
 }  // namespace
 
@@ -87,11 +124,16 @@ bool Interpreter::word_value(const Word& w, double& out, int* int_out) {
             break;
         case Operand::Number:
             if (v.int_digits > f.max_int || v.frac_digits > f.max_frac) {
-                fail(1, strf(tr("too many digits after %s"), std::string(addr_name(w.addr)).c_str()), w.col);
+                fail(1,
+                     strf(tr("too many digits after %s"), std::string(addr_name(w.addr)).c_str()),
+                     w.col);
                 return false;
             }
             if (v.has_sign && !f.is_signed) {
-                fail(1, strf(tr("sign after %s, which takes none"), std::string(addr_name(w.addr)).c_str()), w.col);
+                fail(1,
+                     strf(tr("sign after %s, which takes none"),
+                          std::string(addr_name(w.addr)).c_str()),
+                     w.col);
                 return false;
             }
             out = v.neg ? -v.num : v.num;
@@ -105,7 +147,8 @@ bool Interpreter::word_value(const Word& w, double& out, int* int_out) {
     if (int_out) {
         if (out != std::floor(out) || std::fabs(out) > 99999) {
             fail(v.kind == Operand::Number ? 1 : 92,
-                 strf(tr("%s needs a whole number"), std::string(addr_name(w.addr)).c_str()), w.col);
+                 strf(tr("%s needs a whole number"), std::string(addr_name(w.addr)).c_str()),
+                 w.col);
             return false;
         }
         *int_out = int(out);
@@ -126,21 +169,30 @@ bool Interpreter::variable_value(const Word& w, double& out) {
     }
     if (v.kind == Operand::LVar) {
         switch (f.fmt) {
-            case Fmt::length: raw = round_to(raw, 1e-3); break;
-            case Fmt::angle: raw = round_to(raw, 1e-4); break;
-            case Fmt::integer: case Fmt::speed: case Fmt::label: case Fmt::prog:
+            case Fmt::length:
+                raw = round_to(raw, 1e-3);
+                break;
+            case Fmt::angle:
+                raw = round_to(raw, 1e-4);
+                break;
+            case Fmt::integer:
+            case Fmt::speed:
+            case Fmt::label:
+            case Fmt::prog:
                 // S T D M from a variable: rounded to an integer (program-flow Q15).
                 if (f.fmt == Fmt::speed) s_raw_ = raw;  // warning 1113
                 raw = std::round(raw);
                 break;
-            default: break;
+            default:
+                break;
         }
     } else {
         raw *= e_scale(f.fmt);
     }
     if (!f.is_signed && raw < 0) {
-        fail(92, strf(tr("negative value %s for %s, which takes none"), fixed3(raw).c_str(),
-                      std::string(addr_name(w.addr)).c_str()),
+        fail(92,
+             strf(tr("negative value %s for %s, which takes none"), fixed3(raw).c_str(),
+                  std::string(addr_name(w.addr)).c_str()),
              w.col);
         return false;
     }
@@ -160,7 +212,11 @@ bool Interpreter::decode(const Block& b, Plan& p) {
 }
 
 Interpreter::Decoder::Decoder(Interpreter& interp, Plan& plan, const Block& b)
-    : in(interp), p(plan), m(in.m_), lathe(m.lathe), diam(lathe && m.x_diameter && !in.modal_.radius_x),
+    : in(interp),
+      p(plan),
+      m(in.m_),
+      lathe(m.lathe),
+      diam(lathe && m.x_diameter && !in.modal_.radius_x),
       inc(in.modal_.incremental) {
     // G70/G71 written in the block set the unit of all its lengths. Is a
     // drilling cycle active for this block (written here, or modal and not
@@ -177,7 +233,7 @@ Interpreter::Decoder::Decoder(Interpreter& interp, Plan& plan, const Block& b)
     unit = inch ? 25.4 : 1.0;
     const int modal_cycle = in.modal_.cycle;
     p.cycle_words.active = cycle_code == 31 || (cycle_code >= 81 && cycle_code <= 89) ||
-                    (cycle_code < 0 && modal_cycle >= 81 && modal_cycle <= 89);
+                           (cycle_code < 0 && modal_cycle >= 81 && modal_cycle <= 89);
 }
 
 bool Interpreter::Decoder::bad(int code, std::string detail, int column) {
@@ -244,17 +300,21 @@ bool Interpreter::Decoder::g_known(int g, const GCode* gc, const Word& w) {
     if (!gc || !(gc->machines & (lathe ? kLathe : kMill))) {
         const char* what;
         if (lathe)
-            what = gc ? tr("G%d is not a function of the NUM lathe (a machining-centre function: --machine mill?)")
+            what = gc ? tr("G%d is not a function of the NUM lathe (a machining-centre function: "
+                           "--machine mill?)")
                       : tr("G%d is not a function of the NUM lathe");
         else
-            what = gc ? tr("G%d is not a function of the NUM machining centre (a lathe function: --machine lathe?)")
+            what = gc ? tr("G%d is not a function of the NUM machining centre (a lathe function: "
+                           "--machine lathe?)")
                       : tr("G%d is not a function of the NUM machining centre");
         return bad(2, strf(what, g), w.col);
     }
     if ((gc->starred & (lathe ? kLathe : kMill)) && m.model == 1020)
         return bad(2, strf(tr("G%d needs a NUM 1040 or 1060"), g), w.col);
     if (gc->support == Support::option)
-        return bad(4, strf(tr("G%d (%s) is an option this machine does not have"), g, tr(std::string(gc->text).c_str())),
+        return bad(4,
+                   strf(tr("G%d (%s) is an option this machine does not have"), g,
+                        tr(std::string(gc->text).c_str())),
                    w.col);
     return true;
 }
@@ -262,17 +322,39 @@ bool Interpreter::Decoder::g_known(int g, const GCode* gc, const Word& w) {
 // The G that the block keeps for a modal group (the last one written).
 void Interpreter::Decoder::g_group(int g, Group group) {
     switch (group) {
-        case Group::motion: p.mode.motion = g; break;
-        case Group::dist: p.mode.dist = g; inc = (g == 91); break;
-        case Group::plane: p.mode.plane = g; break;
-        case Group::radcomp: p.mode.radcomp = g; break;
-        case Group::prefdec: p.mode.prefdec = g; break;
-        case Group::feed: p.mode.feed = g; break;
-        case Group::spindle: p.mode.spindle = g; break;
-        case Group::units: p.mode.units = g; break;
-        case Group::scale: p.mode.scale = g; break;
-        case Group::cycle: p.mode.cycle = g; break;
-        default: break;
+        case Group::motion:
+            p.mode.motion = g;
+            break;
+        case Group::dist:
+            p.mode.dist = g;
+            inc = (g == 91);
+            break;
+        case Group::plane:
+            p.mode.plane = g;
+            break;
+        case Group::radcomp:
+            p.mode.radcomp = g;
+            break;
+        case Group::prefdec:
+            p.mode.prefdec = g;
+            break;
+        case Group::feed:
+            p.mode.feed = g;
+            break;
+        case Group::spindle:
+            p.mode.spindle = g;
+            break;
+        case Group::units:
+            p.mode.units = g;
+            break;
+        case Group::scale:
+            p.mode.scale = g;
+            break;
+        case Group::cycle:
+            p.mode.cycle = g;
+            break;
+        default:
+            break;
     }
 }
 
@@ -283,7 +365,8 @@ bool Interpreter::Decoder::g_marks(int g, const Word& w) {
         g52_seen = true;
     }
     if (g == 77) p.g77.level = w.glevel;
-    if (g == 77 && w.glevel && m.model == 1020) return bad(4, tr("G77 -i needs a NUM 1040 or 1060"), w.col);
+    if (g == 77 && w.glevel && m.model == 1020)
+        return bad(4, tr("G77 -i needs a NUM 1040 or 1060"), w.col);
     if (g == 79 && w.gsign && m.model == 1020)
         return bad(4, strf(tr("G79%c needs a NUM 1040 or 1060 (000:560)"), w.gsign), w.col);
     if (g == 79 && w.gsign) p.flow.g79_sign = w.gsign;
@@ -301,7 +384,9 @@ bool Interpreter::Decoder::plain_word(const Word& w) {
         (p.mode.radcomp == 29 || (p.mode.radcomp < 0 && in.modal_.radcomp == 29)))
         return g29_normal(w);
     if (seen.test(w.addr) && w.addr != addr1('M') && w.addr != addr1('G'))
-        return bad(3, strf(tr("%s written twice in the block"), std::string(addr_name(w.addr)).c_str()), w.col);
+        return bad(
+            3, strf(tr("%s written twice in the block"), std::string(addr_name(w.addr)).c_str()),
+            w.col);
     seen.set(w.addr);
     return (this->*plain_readers()[w.addr])(w);
 }
@@ -323,7 +408,8 @@ const std::array<Interpreter::Decoder::Reader, kAddrCount>& Interpreter::Decoder
         t[addrE('G')] = &Decoder::eg_word;
         t[addrE('C')] = &Decoder::ec_word;
         t[addrE('M')] = &Decoder::em_word;
-        for (Addr a : {addr1('P'), addr1('Q'), addrE('R'), addrE('H'), addrE('F'), addrE('P'), addrE('K')})
+        for (Addr a :
+             {addr1('P'), addr1('Q'), addrE('R'), addrE('H'), addrE('F'), addrE('P'), addrE('K')})
             t[a] = &Decoder::cycle_or_sign;
         t[addrE('S')] = t[addrE('A')] = &Decoder::cycle_or_pgp;
         t[addrE('B')] = t[addrE('T')] = t[kAddrEsign] = &Decoder::pgp_word;
@@ -335,7 +421,8 @@ const std::array<Interpreter::Decoder::Reader, kAddrCount>& Interpreter::Decoder
 bool Interpreter::Decoder::axis_word(const Word& w) {
     const int axis = axis_of(letter(w));
     if (!m.has(axis))
-        return bad(1, strf(tr("axis %c is not on this machine (%s)"), letter(w), m.name.c_str()), w.col);
+        return bad(1, strf(tr("axis %c is not on this machine (%s)"), letter(w), m.name.c_str()),
+                   w.col);
     double v;
     if (!in.word_value(w, v)) return false;
     axis_seen = true;
@@ -399,7 +486,9 @@ bool Interpreter::Decoder::tool_word(const Word& w) {
     double v;
     if (!in.word_value(w, v, &iv)) return false;
     if (iv > m.tools)
-        return bad(1, strf(tr("tool T%d does not exist (the turret has %d stations)"), iv, int(m.tools)), w.col);
+        return bad(
+            1, strf(tr("tool T%d does not exist (the turret has %d stations)"), iv, int(m.tools)),
+            w.col);
     p.tech.has_t = true;
     p.tech.t = iv;
     return true;
@@ -423,8 +512,10 @@ bool Interpreter::Decoder::m_word(const Word& w) {
     if (!in.word_value(w, v, &iv)) return false;
     if (p.tech.nm >= 8) return bad(3, tr("too many M functions in one block"), w.col);
     // At most one modal and one non-modal coded M per block (004:1063).
-    if ((iv >= 200 && iv <= 899 && ++coded_modal > 1) || (iv >= 100 && iv <= 199 && ++coded_nonmodal > 1))
-        return bad(3, strf(tr("two coded M functions of the same kind in one block (M%d)"), iv), w.col);
+    if ((iv >= 200 && iv <= 899 && ++coded_modal > 1) ||
+        (iv >= 100 && iv <= 199 && ++coded_nonmodal > 1))
+        return bad(3, strf(tr("two coded M functions of the same kind in one block (M%d)"), iv),
+                   w.col);
     p.tech.m[p.tech.nm++] = iv;
     return true;
 }
@@ -495,14 +586,17 @@ bool Interpreter::Decoder::pgp_word(const Word& w) {
         if (w.addr == addrE('T')) p.pgp.link = p.pgp.link == 'S' ? 'X' : 'T';
         if (w.v.has_sign) p.pgp.disc = w.v.neg ? -1 : 1;
         if (w.v.kind == Operand::Number || w.v.kind == Operand::LVar)
-            return bad(w.addr == kAddrEsign ? 3 : 110, strf(tr("%s takes a sign only"), std::string(addr_name(w.addr)).c_str()),
+            return bad(w.addr == kAddrEsign ? 3 : 110,
+                       strf(tr("%s takes a sign only"), std::string(addr_name(w.addr)).c_str()),
                        w.col);
     }
     return true;
 }
 
 bool Interpreter::Decoder::no_meaning(const Word& w) {
-    return bad(3, strf(tr("%s has no meaning here (no function in the block takes it)"), std::string(addr_name(w.addr)).c_str()),
+    return bad(3,
+               strf(tr("%s has no meaning here (no function in the block takes it)"),
+                    std::string(addr_name(w.addr)).c_str()),
                w.col);
 }
 
@@ -511,7 +605,8 @@ bool Interpreter::Decoder::cyc_word(const Word& w) {
     double cv;
     if (!in.word_value(w, cv)) return false;
     if (p.cycle_words.n >= 16) return bad(3, tr("too many cycle words in one block"), w.col);
-    p.cycle_words.word[p.cycle_words.n++] = {w.addr, w.addr == addrE('R') || w.addr == addrE('H') ? cv * unit : cv};
+    p.cycle_words.word[p.cycle_words.n++] = {
+        w.addr, w.addr == addrE('R') || w.addr == addrE('H') ? cv * unit : cv};
     return true;
 }
 

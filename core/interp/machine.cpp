@@ -1,11 +1,12 @@
 // Machine profile parsing: "key = value" lines, '#' comments.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/interp/machine.hpp"
-#include "core/i18n.hpp"
-#include "core/keyvalue.hpp"
 
 #include <charconv>
 #include <cstdlib>
+
+#include "core/i18n.hpp"
+#include "core/keyvalue.hpp"
 
 namespace pupitre {
 
@@ -18,8 +19,8 @@ std::string_view machine_mill5();
 
 int axis_of(char letter) {
     // X Y Z U V W A B C -> 0..8, by table: this runs for every axis word.
-    static constexpr signed char kIndex[26] = {6, 7, 8, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1,
-                                               -1, -1, -1, -1, -1, -1, -1, 3, 4, 5, 0, 1, 2};
+    static constexpr signed char kIndex[26] = {6,  7,  8,  -1, -1, -1, -1, -1, -1, -1, -1, -1, -1,
+                                               -1, -1, -1, -1, -1, -1, -1, 3,  4,  5,  0,  1,  2};
     return (letter >= 'A' && letter <= 'Z') ? kIndex[letter - 'A'] : -1;
 }
 
@@ -36,9 +37,12 @@ bool two_numbers(std::string_view s, double& a, double& b, char sep) {
 
 bool yes_no(std::string_view s, bool& v) {
     s = trim(s);
-    if (s == "yes" || s == "true" || s == "1") v = true;
-    else if (s == "no" || s == "false" || s == "0") v = false;
-    else return false;
+    if (s == "yes" || s == "true" || s == "1")
+        v = true;
+    else if (s == "no" || s == "false" || s == "0")
+        v = false;
+    else
+        return false;
     return true;
 }
 
@@ -284,14 +288,18 @@ std::string parse_machine(std::string_view text, MachineProfile& m) {
     return check_whole(m);
 }
 
-
 bool builtin_machine(std::string_view name, MachineProfile& out) {
     std::string_view text;
-    if (name == "lathe") text = data::machine_lathe();
-    else if (name == "mill") text = data::machine_mill();
-    else if (name == "mill4") text = data::machine_mill4();
-    else if (name == "mill5") text = data::machine_mill5();
-    else return false;
+    if (name == "lathe")
+        text = data::machine_lathe();
+    else if (name == "mill")
+        text = data::machine_mill();
+    else if (name == "mill4")
+        text = data::machine_mill4();
+    else if (name == "mill5")
+        text = data::machine_mill5();
+    else
+        return false;
     return parse_machine(text, out).empty();
 }
 

@@ -13,7 +13,9 @@ namespace pupitre {
 enum Axis : int { X = 0, Y, Z, U, V, W, A, B, C, kAxes };
 using Axes = std::array<double, kAxes>;
 constexpr std::string_view kAxisNames = "XYZUVWABC";
-inline bool is_rotary(int a) { return a >= A; }
+inline bool is_rotary(int a) {
+    return a >= A;
+}
 int axis_of(char letter);  // -1 if not an axis letter
 
 struct AxisConfig {
@@ -30,17 +32,17 @@ struct MachineProfile {
     std::string name;
     std::string description;
     bool lathe = false;
-    int model = 1060;            // 1020, 1040 or 1060
-    bool x_diameter = true;      // lathe: X programmed as a diameter
-    bool rear_turret = true;     // lathe
+    int model = 1060;         // 1020, 1040 or 1060
+    bool x_diameter = true;   // lathe: X programmed as a diameter
+    bool rear_turret = true;  // lathe
     std::array<AxisConfig, kAxes> axes{};
-    Axes home{};                 // machine position of the reference at start (lathe X: radius)
-    Axes pref{}, dec1{};         // default origins
-    double max_feed = 5000;      // mm/min
-    double spindle_max = 4000;   // rev/min
+    Axes home{};                // machine position of the reference at start (lathe X: radius)
+    Axes pref{}, dec1{};        // default origins
+    double max_feed = 5000;     // mm/min
+    double spindle_max = 4000;  // rev/min
     std::vector<SpindleRange> ranges;  // M40, M41, …
     bool auto_range = false;
-    bool strict = false;         // the NUM's errors where pupitre is lenient on purpose (1114, 1115)
+    bool strict = false;  // the NUM's errors where pupitre is lenient on purpose (1114, 1115)
     int tools = 12;
     int correctors = 255;
     double tool_change_time = 2.0;

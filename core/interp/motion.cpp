@@ -6,10 +6,10 @@
 #include <cmath>
 #include <numbers>
 
-#include "core/interp/plan.hpp"
-#include "core/numfmt.hpp"
 #include "core/geometry/geometry.hpp"
 #include "core/i18n.hpp"
+#include "core/interp/plan.hpp"
+#include "core/numfmt.hpp"
 
 namespace pupitre {
 
@@ -18,9 +18,13 @@ using ::pupitre::geometry::kPi;
 constexpr double kArcTolerance = 0.020;  // mm: start and end radii (004:626, 000:13249)
 
 // The shared formatter, cut where the 64-byte buffer it replaces cut.
-std::string f3(double v) { return fixed3(v, 63); }
+std::string f3(double v) {
+    return fixed3(v, 63);
+}
 
-int ijk_index(int axis) { return axis == X ? 0 : axis == Y ? 1 : 2; }
+int ijk_index(int axis) {
+    return axis == X ? 0 : axis == Y ? 1 : 2;
+}
 
 double linear_length(const Axes& a, const Axes& b) {
     double s = 0;
@@ -45,11 +49,13 @@ bool Interpreter::check_travel(const Axes& mach) {
         if (v >= lo - 1e-6 && v <= hi + 1e-6) continue;
         const char axis = kAxisNames[size_t(a)];
         if (a == X && m_.lathe)
-            fail(150 + a, strf(tr("%c travel limit: the move goes to %c%s on the OM scale (radius), beyond %s"),
+            fail(150 + a, strf(tr("%c travel limit: the move goes to %c%s on the OM scale "
+                                  "(radius), beyond %s"),
                                axis, axis, f3(v).c_str(), f3(v < lo ? lo : hi).c_str()));
         else
-            fail(150 + a, strf(tr("%c travel limit: the move goes to %c%s on the OM scale, beyond %s"), axis, axis,
-                               f3(v).c_str(), f3(v < lo ? lo : hi).c_str()));
+            fail(150 + a,
+                 strf(tr("%c travel limit: the move goes to %c%s on the OM scale, beyond %s"), axis,
+                      axis, f3(v).c_str(), f3(v < lo ? lo : hi).c_str()));
         return false;
     }
     return true;
@@ -89,16 +95,18 @@ double Interpreter::feed_time(double len, double xa, double xb) {
 void Interpreter::check_tiny_feed() {
     if (!feed_programmed_ && !feed_before_f_warned_) {
         feed_before_f_warned_ = true;
-        warn(err::wFeedBeforeF,
-             strf(modal_.feed_mode == 95
-                      ? tr("feed move before any F: it runs at F%s mm/rev, the power-on feed; program F in this block or before it")
-                      : tr("feed move before any F: it runs at F%s mm/min, the power-on feed; program F in this block or before it"),
-                  f3(modal_.feed).c_str()));
+        warn(
+            err::wFeedBeforeF,
+            strf(modal_.feed_mode == 95 ? tr("feed move before any F: it runs at F%s mm/rev, the "
+                                             "power-on feed; program F in this block or before it")
+                                        : tr("feed move before any F: it runs at F%s mm/min, the "
+                                             "power-on feed; program F in this block or before it"),
+                 f3(modal_.feed).c_str()));
     }
     if (modal_.feed_mode == 94 && modal_.feed < 1.0 && !tiny_feed_warned_) {
         tiny_feed_warned_ = true;
-        warn(err::wTinyFeed, strf(tr("F%s in G94 is %s mm/min: a feed per revolution needs G95"), f3(modal_.feed).c_str(),
-                                  f3(modal_.feed).c_str()));
+        warn(err::wTinyFeed, strf(tr("F%s in G94 is %s mm/min: a feed per revolution needs G95"),
+                                  f3(modal_.feed).c_str(), f3(modal_.feed).c_str()));
     }
 }
 
@@ -117,8 +125,10 @@ void Interpreter::warn_idle_words(const Plan& p) {
     for (int k = 0; k < 3; ++k)
         if (p.to.ijk[size_t(k)]) w += std::string(" ") + char('I' + k);
     if (w.empty() || p.g[23]) return;
-    warn(err::wIdleWord, strf(trn("word%s has no effect in a G%d block: the move is a straight line (a circle needs G2 or G3)",
-                                  "words%s has no effect in a G%d block: the move is a straight line (a circle needs G2 or G3)",
+    warn(err::wIdleWord, strf(trn("word%s has no effect in a G%d block: the move is a straight "
+                                  "line (a circle needs G2 or G3)",
+                                  "words%s has no effect in a G%d block: the move is a straight "
+                                  "line (a circle needs G2 or G3)",
                                   w.size() / 2),
                               w.c_str(), modal_.motion));
 }
@@ -144,9 +154,11 @@ bool Interpreter::do_motion(const Plan& p) {
         return true;
     }
     const bool g52 = p.g[52];
-    if ((p.to.has_r || p.to.ijk.any()) && (modal_.motion == 0 || modal_.motion == 1)) warn_idle_words(p);
+    if ((p.to.has_r || p.to.ijk.any()) && (modal_.motion == 0 || modal_.motion == 1))
+        warn_idle_words(p);
     if (first_move_ && p.to.inc.any())
-        warn(err::wIncrementalFirst, tr("first move written in G91: relative to the position after homing"));
+        warn(err::wIncrementalFirst,
+             tr("first move written in G91: relative to the position after homing"));
     first_move_ = false;
     if (p.to.axis[X] && !g52) modal_.css_known = true;
     if (g52) return g52_move(p);
@@ -169,14 +181,17 @@ inline bool Interpreter::motion_allowed(const Plan& p) {
         if (p.to.axis[size_t(a0)] || p.to.axis[size_t(a1)]) {
             nonmotion_in_comp_ = 0;
         } else if (++nonmotion_in_comp_ > 2) {
-            return fail(140, tr("more than 2 blocks in a row without motion in the plane under radius compensation")),
+            return fail(140, tr("more than 2 blocks in a row without motion in the plane under "
+                                "radius compensation")),
                    false;
         }
     }
     if (p.g[52]) {
-        if (comp) return fail(27, tr("G52 move under radius compensation (program G40 first)")), false;
+        if (comp)
+            return fail(27, tr("G52 move under radius compensation (program G40 first)")), false;
         if (modal_.incremental) return fail(3, tr("G52 needs absolute programming (G90)")), false;
-        if (modal_.motion == 2 || modal_.motion == 3) return fail(3, tr("G52 moves are linear (G0 or G1)")), false;
+        if (modal_.motion == 2 || modal_.motion == 3)
+            return fail(3, tr("G52 moves are linear (G0 or G1)")), false;
     }
     return true;
 }
@@ -191,7 +206,8 @@ inline std::optional<bool> Interpreter::motion_family(const Plan& p) {
     if (comp_.on && modal_.radcomp == 40 && pgp_.pending() && !pgp_close()) return false;
     if (comp_.on && modal_.radcomp == 40 && p.to.axis.none()) return comp_exit(p, nullptr);
     if (p.g[6]) return spline_run(p);
-    if (p.g[33] || p.g[63] || p.g[64] || p.g[65] || p.g[66] || (modal_.motion == 38 && p.to.axis.any())) {
+    if (p.g[33] || p.g[63] || p.g[64] || p.g[65] || p.g[66] ||
+        (modal_.motion == 38 && p.to.axis.any())) {
         first_move_ = false;
         return turning_block(p);
     }
@@ -215,7 +231,8 @@ inline std::optional<bool> Interpreter::motion_family(const Plan& p) {
 inline bool Interpreter::pgp_motion(const Plan& p) {
     int a0, a1;
     plane_axes(a0, a1);
-    if (p.pgp.any || p.to.axis[size_t(a0)] || p.to.axis[size_t(a1)] || p.to.ijk.any() || p.to.has_r) {
+    if (p.pgp.any || p.to.axis[size_t(a0)] || p.to.axis[size_t(a1)] || p.to.ijk.any() ||
+        p.to.has_r) {
         const Axes target = target_of(p);
         if (p.to.axis.any()) apply_corrector_gauges(p.to.axis);
         first_move_ = false;
@@ -270,7 +287,8 @@ inline bool Interpreter::straight(const Plan& p, Axes target) {
     Axes mach = frames_.to_machine(target);
     if (frames_.ed == 0)
         for (int a = 0; a < kAxes; ++a)
-            if (!p.to.axis[size_t(a)] && !frames_.mirror[size_t(a)]) mach[size_t(a)] = mach_[size_t(a)];
+            if (!p.to.axis[size_t(a)] && !frames_.mirror[size_t(a)])
+                mach[size_t(a)] = mach_[size_t(a)];
     if (!check_travel(mach)) return false;
     prog_next_ = target;
     return linear(modal_.motion, mach, false, p.to.axis);
@@ -289,7 +307,9 @@ bool Interpreter::g29_move(const Plan& p) {
         return fail(146, tr("G29 blocks are linear moves (G0 or G1)")), false;
     Eigen::Vector3d n(p.g29.n[0], p.g29.n[1], p.g29.n[2]);
     if (std::fabs(n.squaredNorm() - 1) > 1e-3)
-        return fail(145, strf(tr("P Q R is not a unit vector: P2+Q2+R2 = %s (000:13290)"), f3(n.squaredNorm()).c_str())), false;
+        return fail(145, strf(tr("P Q R is not a unit vector: P2+Q2+R2 = %s (000:13290)"),
+                              f3(n.squaredNorm()).c_str())),
+               false;
     n.normalize();
     Eigen::Vector3d u = Eigen::Vector3d::Zero();
     u[modal_.tool_axis == X ? 0 : modal_.tool_axis == Y ? 1 : 2] = modal_.tool_axis_neg ? -1 : 1;
@@ -297,7 +317,8 @@ bool Interpreter::g29_move(const Plan& p) {
     double r = c.r + c.dr, tip_r = c.tip;
     if (tip_r > r) return fail(146, tr("the end radius @ is larger than the tool radius R")), false;
     Eigen::Vector3d pc;
-    for (int a = 0; a < 3; ++a) pc[a] = p.to.inc[size_t(a)] ? prog_[size_t(a)] + p.to.val[size_t(a)] : p.to.val[size_t(a)];
+    for (int a = 0; a < 3; ++a)
+        pc[a] = p.to.inc[size_t(a)] ? prog_[size_t(a)] + p.to.val[size_t(a)] : p.to.val[size_t(a)];
     Eigen::Vector3d w = n - n.dot(u) * u;
     w = w.norm() > 1e-12 ? Eigen::Vector3d(w.normalized()) : Eigen::Vector3d::Zero();
     Eigen::Vector3d tip = pc + tip_r * n + (r - tip_r) * w - tip_r * u;
@@ -305,7 +326,11 @@ bool Interpreter::g29_move(const Plan& p) {
     apply_corrector_gauges(p.to.axis);
     Axes target = prog_;
     for (int a = 0; a < kAxes; ++a)
-        if (p.to.axis[size_t(a)]) target[size_t(a)] = a < 3 ? tip[a] : (p.to.inc[size_t(a)] ? prog_[size_t(a)] + p.to.val[size_t(a)] : p.to.val[size_t(a)]);
+        if (p.to.axis[size_t(a)])
+            target[size_t(a)] = a < 3
+                                    ? tip[a]
+                                    : (p.to.inc[size_t(a)] ? prog_[size_t(a)] + p.to.val[size_t(a)]
+                                                           : p.to.val[size_t(a)]);
     Axes mach = frames_.to_machine(target);
     if (!check_travel(mach)) return false;
     prog_next_ = target;
@@ -329,21 +354,27 @@ bool Interpreter::linear(int g, const Axes& mach, bool g52, const std::bitset<kA
     if (e.g == 0) {
         t = 0;
         for (int a = 0; a < kAxes; ++a)
-            if (m_.has(a)) t = std::max(t, std::fabs(mach[size_t(a)] - mach_[size_t(a)]) / m_.axes[size_t(a)].rapid);
+            if (m_.has(a))
+                t = std::max(
+                    t, std::fabs(mach[size_t(a)] - mach_[size_t(a)]) / m_.axes[size_t(a)].rapid);
         t *= 60.0;
         e.feed = t > 0 ? e.length / t * 60.0 : 0;
         e.rpm = spindle_at(prog_[X]);
     } else {
         if (!modal_.feed_set)
-            return fail(2, strf(tr("no feed F programmed since G%d changed the unit"), modal_.feed_mode)), false;
+            return fail(2, strf(tr("no feed F programmed since G%d changed the unit"),
+                                modal_.feed_mode)),
+                   false;
         if (modal_.feed <= 0) return fail(1, tr("feed F0 in a feed move")), false;
         if (modal_.feed_mode == 94 && modal_.feed * (modal_.inch ? 25.4 : 1) > m_.max_feed)
-            warn(err::wFeedClamped, strf(tr("F%s above the machine maximum %s mm/min: limited to it"), f3(modal_.feed).c_str(),
-                                             f3(m_.max_feed).c_str()));
+            warn(err::wFeedClamped,
+                 strf(tr("F%s above the machine maximum %s mm/min: limited to it"),
+                      f3(modal_.feed).c_str(), f3(m_.max_feed).c_str()));
         check_tiny_feed();
         e.feed = feed_rate(e.rpm);
         t = feed_time(e.length, start_prog[X], end_prog[X]);
-        if (t < 0) return fail(831, tr("feed per revolution (G95) with the spindle stopped")), false;
+        if (t < 0)
+            return fail(831, tr("feed per revolution (G95) with the spindle stopped")), false;
         if (modal_.feed_mode == 93) e.feed = t > 0 ? e.length / t * 60.0 : 0;
     }
     return finish_move(e, mach, end_prog, t);
@@ -385,8 +416,10 @@ bool Interpreter::arc(const Plan& p, const Axes& target) {
               helix_turns(std::fabs(target[size_t(ax.an)] - prog_[size_t(ax.an)]),
                           std::fabs(p.to.ijk_val[ax.in]), std::fabs(sw) * 180 / kPi);
     if (comp_.on)
-        return comp_element(comp::Elem{.arc = true, .a = s, .b = e, .c = c, .sweep = sw}, modal_.motion, target, r0);
-    return emit_arc(modal_.motion, target, ax.a0, ax.a1, c.x(), c.y(), sw, r0, r1, ax.helix ? ax.an : -1);
+        return comp_element(comp::Elem{.arc = true, .a = s, .b = e, .c = c, .sweep = sw},
+                            modal_.motion, target, r0);
+    return emit_arc(modal_.motion, target, ax.a0, ax.a1, c.x(), c.y(), sw, r0, r1,
+                    ax.helix ? ax.an : -1);
 }
 
 // The words a G2/G3 block needs: both coordinates of the plane, and either
@@ -395,31 +428,38 @@ inline bool Interpreter::arc_words(const Plan& p, const ArcAxes& ax) {
     const int a0 = ax.a0, a1 = ax.a1, an = ax.an, i0 = ax.i0, i1 = ax.i1, in = ax.in;
     bool centre = p.to.ijk[size_t(i0)] && p.to.ijk[size_t(i1)];
     if (!p.to.axis[size_t(a0)] || !p.to.axis[size_t(a1)] || centre == p.to.has_r) {
-        return fail(101, strf(tr("G%d needs %c%c and either %c%c or R, even if unchanged"), modal_.motion,
-                              kAxisNames[size_t(a0)], kAxisNames[size_t(a1)], 'I' + i0, 'I' + i1)),
+        return fail(101, strf(tr("G%d needs %c%c and either %c%c or R, even if unchanged"),
+                              modal_.motion, kAxisNames[size_t(a0)], kAxisNames[size_t(a1)],
+                              'I' + i0, 'I' + i1)),
                false;
     }
     for (int a = 0; a < kAxes; ++a)
         if (p.to.axis[size_t(a)] && a != a0 && a != a1 && (m_.lathe || a != an))
-            return fail(106, strf(tr("axis %c in a circle: only the axis normal to the plane may move (helix)"),
+            return fail(106, strf(tr("axis %c in a circle: only the axis normal to the plane may "
+                                     "move (helix)"),
                                   kAxisNames[size_t(a)])),
                    false;
     if (p.to.ijk[size_t(in)] && !ax.helix)
-        return fail(107, strf(tr("helix pitch %c without the %c end point"), 'I' + in, kAxisNames[size_t(an)])), false;
+        return fail(107, strf(tr("helix pitch %c without the %c end point"), 'I' + in,
+                              kAxisNames[size_t(an)])),
+               false;
     return true;
 }
 
 // The centre and the radii at both ends, from R (the shorter arc) or from
 // the centre words.
 inline bool Interpreter::arc_centre(const Plan& p, const ArcAxes& ax, const comp::V2& s,
-                             const comp::V2& e, comp::V2& c, double& r0, double& r1) {
+                                    const comp::V2& e, comp::V2& c, double& r0, double& r1) {
     if (p.to.has_r) {
         double d = (e - s).norm();
         double r = p.to.r;
         if (r <= 0) return fail(107, tr("circle radius R must be positive")), false;
-        if (d < 1e-9) return fail(107, tr("circle with R: the end point equals the start point")), false;
+        if (d < 1e-9)
+            return fail(107, tr("circle with R: the end point equals the start point")), false;
         if (d > 2 * r + 0.001)
-            return fail(107, strf(tr("circle end point too far: chord %s > 2R %s"), f3(d).c_str(), f3(2 * r).c_str())), false;
+            return fail(107, strf(tr("circle end point too far: chord %s > 2R %s"), f3(d).c_str(),
+                                  f3(2 * r).c_str())),
+                   false;
         // The shorter arc (004:622): the centre on the left of the chord for G3.
         double h = std::sqrt(std::max(0.0, r * r - d * d / 4));
         Eigen::Vector2d left(-(e - s).y() / d, (e - s).x() / d);
@@ -434,7 +474,8 @@ inline bool Interpreter::arc_centre(const Plan& p, const ArcAxes& ax, const comp
     r1 = (e - c).norm();
     if (r0 < 1e-9) return fail(107, tr("circle centre on the start point")), false;
     if (std::fabs(r0 - r1) > kArcTolerance + 1e-9)
-        return fail(107, strf(tr("circle end point inconsistent: start radius %s, end radius %s (more than 0.020 apart)"),
+        return fail(107, strf(tr("circle end point inconsistent: start radius %s, end radius %s "
+                                 "(more than 0.020 apart)"),
                               f3(r0).c_str(), f3(r1).c_str())),
                false;
     return true;
@@ -442,7 +483,7 @@ inline bool Interpreter::arc_centre(const Plan& p, const ArcAxes& ax, const comp
 
 // The signed sweep from s to e about c: a full turn when they meet.
 inline double Interpreter::arc_sweep(const comp::V2& s, const comp::V2& e, const comp::V2& c,
-                              bool ccw) {
+                                     bool ccw) {
     double as = std::atan2(s.y() - c.y(), s.x() - c.x());
     double ae = std::atan2(e.y() - c.y(), e.x() - c.x());
     double sw = ae - as;
@@ -479,18 +520,22 @@ bool Interpreter::arc3(const Plan& p, const Axes& target) {
     int a0 = lathe ? Z : modal_.plane == 17 ? X : modal_.plane == 18 ? Z : Y;
     int a1 = lathe ? X : modal_.plane == 17 ? Y : modal_.plane == 18 ? X : Z;
     int i0 = ijk_index(a0), i1 = ijk_index(a1);
-    if (!p.to.axis[size_t(a0)] || !p.to.axis[size_t(a1)] || !p.to.ijk[size_t(i0)] || !p.to.ijk[size_t(i1)])
+    if (!p.to.axis[size_t(a0)] || !p.to.axis[size_t(a1)] || !p.to.ijk[size_t(i0)] ||
+        !p.to.ijk[size_t(i1)])
         return fail(101, tr("G23 needs the end point and the intermediate point")), false;
-    Eigen::Vector2d s(prog_[size_t(a0)], prog_[size_t(a1)]), e(target[size_t(a0)], target[size_t(a1)]);
+    Eigen::Vector2d s(prog_[size_t(a0)], prog_[size_t(a1)]),
+        e(target[size_t(a0)], target[size_t(a1)]);
     Eigen::Vector2d m(p.to.ijk_val[i0], p.to.ijk_val[i1]);
     if (p.to.ijk_inc[size_t(i0)]) m.x() += s.x();
     if (p.to.ijk_inc[size_t(i1)]) m.y() += s.y();
     Eigen::Vector2d u = m - s, v = e - s;
     double cross = u.x() * v.y() - u.y() * v.x();
-    if (std::fabs(cross) < 1e-9) return fail(101, tr("G23: the three points are on one line")), false;
+    if (std::fabs(cross) < 1e-9)
+        return fail(101, tr("G23: the three points are on one line")), false;
     // Circumcentre of s, m, e.
     double uu = u.squaredNorm(), vv = v.squaredNorm();
-    Eigen::Vector2d c = s + Eigen::Vector2d(v.y() * uu - u.y() * vv, u.x() * vv - v.x() * uu) / (2 * cross);
+    Eigen::Vector2d c =
+        s + Eigen::Vector2d(v.y() * uu - u.y() * vv, u.x() * vv - v.x() * uu) / (2 * cross);
     double r = (s - c).norm();
     // Through m from s to e: counter-clockwise when m is left of s->e.
     bool ccw = cross > 0;
@@ -503,16 +548,18 @@ bool Interpreter::arc3(const Plan& p, const Axes& target) {
         while (sw >= 0) sw -= 2 * kPi;
     }
     if (comp_.on)
-        return comp_element(comp::Elem{.arc = true, .a = s, .b = e, .c = c, .sweep = sw}, ccw ? 3 : 2, target, r);
+        return comp_element(comp::Elem{.arc = true, .a = s, .b = e, .c = c, .sweep = sw},
+                            ccw ? 3 : 2, target, r);
     return emit_arc(ccw ? 3 : 2, target, a0, a1, c.x(), c.y(), sw, r, r, -1);
 }
 
-bool Interpreter::emit_arc(int g, const Axes& target, int a0, int a1, double c0, double c1, double sw,
-                           double r0, double r1, int helix_axis) {
+bool Interpreter::emit_arc(int g, const Axes& target, int a0, int a1, double c0, double c1,
+                           double sw, double r0, double r1, int helix_axis) {
     Axes mach = frames_.to_machine(target);
     if (frames_.ed == 0)
         for (int a = 0; a < kAxes; ++a)
-            if (a != a0 && a != a1 && a != helix_axis && !frames_.mirror[size_t(a)]) mach[size_t(a)] = mach_[size_t(a)];
+            if (a != a0 && a != a1 && a != helix_axis && !frames_.mirror[size_t(a)])
+                mach[size_t(a)] = mach_[size_t(a)];
     if (!check_travel(mach)) return false;
     // The circle's extremes must be inside the travel too.
     {
@@ -522,8 +569,10 @@ bool Interpreter::emit_arc(int g, const Axes& target, int a0, int a1, double c0,
         Axes cm = frames_.to_machine(cp);
         double mx = mach_[size_t(a0)] - cm[size_t(a0)], my = mach_[size_t(a1)] - cm[size_t(a1)];
         double rm = std::hypot(mx, my) + std::fabs(r1 - r0);
-        bool inside = cm[size_t(a0)] - rm >= travel_lo_[size_t(a0)] && cm[size_t(a0)] + rm <= travel_hi_[size_t(a0)] &&
-                      cm[size_t(a1)] - rm >= travel_lo_[size_t(a1)] && cm[size_t(a1)] + rm <= travel_hi_[size_t(a1)];
+        bool inside = cm[size_t(a0)] - rm >= travel_lo_[size_t(a0)] &&
+                      cm[size_t(a0)] + rm <= travel_hi_[size_t(a0)] &&
+                      cm[size_t(a1)] - rm >= travel_lo_[size_t(a1)] &&
+                      cm[size_t(a1)] + rm <= travel_hi_[size_t(a1)];
         rm = std::hypot(mx, my);
         double am = inside ? 0 : std::atan2(my, mx);
         bool flip = frames_.mirror[size_t(a0)] != frames_.mirror[size_t(a1)];
@@ -539,8 +588,10 @@ bool Interpreter::emit_arc(int g, const Axes& target, int a0, int a1, double c0,
             static constexpr double kCos[] = {1, 0, -1, 0}, kSin[] = {0, 1, 0, -1};
             probe[size_t(a0)] = cm[size_t(a0)] + rm * kCos[q];
             probe[size_t(a1)] = cm[size_t(a1)] + rm * kSin[q];
-            if (probe[size_t(a0)] < travel_lo_[size_t(a0)] - 1e-6 || probe[size_t(a0)] > travel_hi_[size_t(a0)] + 1e-6 ||
-                probe[size_t(a1)] < travel_lo_[size_t(a1)] - 1e-6 || probe[size_t(a1)] > travel_hi_[size_t(a1)] + 1e-6)
+            if (probe[size_t(a0)] < travel_lo_[size_t(a0)] - 1e-6 ||
+                probe[size_t(a0)] > travel_hi_[size_t(a0)] + 1e-6 ||
+                probe[size_t(a1)] < travel_lo_[size_t(a1)] - 1e-6 ||
+                probe[size_t(a1)] > travel_hi_[size_t(a1)] + 1e-6)
                 if (!check_travel(probe)) return false;
         }
     }
@@ -557,12 +608,16 @@ bool Interpreter::emit_arc(int g, const Axes& target, int a0, int a1, double c0,
     e.x_diameter = m_.lathe && m_.x_diameter && !modal_.radius_x;
     double scale = frames_.scale_on ? frames_.scale : 1.0;
     double arclen = std::fabs(sw) * (r0 + r1) / 2 * scale;
-    double dh = helix_axis >= 0 ? std::fabs(mach[size_t(helix_axis)] - mach_[size_t(helix_axis)]) : 0;
+    double dh =
+        helix_axis >= 0 ? std::fabs(mach[size_t(helix_axis)] - mach_[size_t(helix_axis)]) : 0;
     e.length = std::hypot(arclen, dh);
     if (!modal_.feed_set)
-        return fail(2, strf(tr("no feed F programmed since G%d changed the unit"), modal_.feed_mode)), false;
+        return fail(2,
+                    strf(tr("no feed F programmed since G%d changed the unit"), modal_.feed_mode)),
+               false;
     if (modal_.feed <= 0) return fail(1, tr("feed F0 in a feed move")), false;
-    if (modal_.feed_mode == 93) return fail(4, tr("G02/G03 are not allowed in inverse-time feed (G93)")), false;
+    if (modal_.feed_mode == 93)
+        return fail(4, tr("G02/G03 are not allowed in inverse-time feed (G93)")), false;
     check_tiny_feed();
     e.feed = feed_rate(e.rpm);
     double t = 0;
@@ -577,17 +632,20 @@ bool Interpreter::emit_arc(int g, const Axes& target, int a0, int a1, double c0,
                 if (a1 == X) return c1 + r * std::sin(ang);
                 return prog_[X];
             };
-            double piece = feed_time(e.length / kPieces, x_at(double(i) / kPieces), x_at(double(i + 1) / kPieces));
-            if (piece < 0) return fail(831, tr("feed per revolution (G95) with the spindle stopped")), false;
+            double piece = feed_time(e.length / kPieces, x_at(double(i) / kPieces),
+                                     x_at(double(i + 1) / kPieces));
+            if (piece < 0)
+                return fail(831, tr("feed per revolution (G95) with the spindle stopped")), false;
             t += piece;
         }
     } else {
         t = feed_time(e.length, prog_[X], target[X]);
-        if (t < 0) return fail(831, tr("feed per revolution (G95) with the spindle stopped")), false;
+        if (t < 0)
+            return fail(831, tr("feed per revolution (G95) with the spindle stopped")), false;
     }
     if (modal_.feed_mode == 94 && modal_.feed * (modal_.inch ? 25.4 : 1) > m_.max_feed)
-        warn(err::wFeedClamped, strf(tr("F%s above the machine maximum %s mm/min: limited to it"), f3(modal_.feed).c_str(),
-                                             f3(m_.max_feed).c_str()));
+        warn(err::wFeedClamped, strf(tr("F%s above the machine maximum %s mm/min: limited to it"),
+                                     f3(modal_.feed).c_str(), f3(m_.max_feed).c_str()));
     return finish_move(e, mach, target, t);
 }
 

@@ -3,7 +3,6 @@
 // clipped to the frame, then the marks.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/output/cairo_plot.hpp"
-#include "core/geometry/geometry.hpp"
 
 #include <cairo-pdf.h>
 #include <cairo.h>
@@ -11,6 +10,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+
+#include "core/geometry/geometry.hpp"
 
 namespace pupitre {
 
@@ -60,7 +61,8 @@ void MovePen::draw(Layer l) {
         const PathMove& mv = p_[i];
         if (move_layer(mv) != l) continue;
         const double* s = p_.from(i);
-        bool flat = mv.arc == PathMove::kNoArc && s[sc_.h] == mv.p[sc_.h] && s[sc_.v] == mv.p[sc_.v];
+        bool flat =
+            mv.arc == PathMove::kNoArc && s[sc_.h] == mv.p[sc_.h] && s[sc_.v] == mv.p[sc_.v];
         if (flat) {
             if (down && last + 1 == i) last = i;  // a plunge across the plane: the pen stays down
             continue;
@@ -129,11 +131,13 @@ void stock_and_frames(cairo_t* cr, const Scene& sc) {
             if (ys < 0 && !sc.opt.mirror) continue;
             for (const auto& poly : p.part()) {
                 for (size_t k = 0; k < poly.size(); ++k)
-                    (k ? cairo_line_to : cairo_move_to)(cr, sc.px(poly[k][0]), sc.py(ys * poly[k][1]));
+                    (k ? cairo_line_to : cairo_move_to)(cr, sc.px(poly[k][0]),
+                                                        sc.py(ys * poly[k][1]));
                 cairo_close_path(cr);
             }
         }
-        cairo_set_source_rgba(cr, st.colour.r / 255.0, st.colour.g / 255.0, st.colour.b / 255.0, 0.45);
+        cairo_set_source_rgba(cr, st.colour.r / 255.0, st.colour.g / 255.0, st.colour.b / 255.0,
+                              0.45);
         cairo_fill_preserve(cr);
         set_layer_pen(cr, Layer::part);
         cairo_stroke(cr);
@@ -151,7 +155,8 @@ void stock_and_frames(cairo_t* cr, const Scene& sc) {
             for (double ys : {1.0, -1.0}) {
                 if (ys < 0 && !sc.opt.mirror) continue;
                 for (size_t k = 0; k < poly.size(); ++k)
-                    (k ? cairo_line_to : cairo_move_to)(cr, sc.px(poly[k][0]), sc.py(ys * poly[k][1]));
+                    (k ? cairo_line_to : cairo_move_to)(cr, sc.px(poly[k][0]),
+                                                        sc.py(ys * poly[k][1]));
             }
         cairo_stroke(cr);
     }
@@ -304,7 +309,7 @@ bool draw(cairo_surface_t* surface, const Scene& sc, double scale) {
 cairo_status_t to_file(void* closure, const unsigned char* data, unsigned int length) {
     auto* f = static_cast<std::FILE*>(closure);
     return std::fwrite(data, 1, length, f) == length ? CAIRO_STATUS_SUCCESS
-                                                      : CAIRO_STATUS_WRITE_ERROR;
+                                                     : CAIRO_STATUS_WRITE_ERROR;
 }
 
 }  // namespace

@@ -7,8 +7,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "core/numfmt.hpp"
 #include "core/i18n.hpp"
+#include "core/numfmt.hpp"
 
 namespace pupitre {
 
@@ -130,10 +130,12 @@ void find_layers(Scene& s) {
 std::vector<std::string> title_lines(const Scene& s) {
     const Toolpath& p = *s.path;
     const MachineProfile& m = p.machine();
-    std::string prog = p.program >= 0 ? "%" + std::to_string(p.program) : std::string(tr("(no program)"));
+    std::string prog =
+        p.program >= 0 ? "%" + std::to_string(p.program) : std::string(tr("(no program)"));
     if (!p.title.empty()) prog += "  " + p.title;
     // TRANSLATORS: the plot's title: the machine profile's name.
-    std::string mach = strf(tr("machine %s"), (s.opt.machine.empty() ? m.name : s.opt.machine).c_str());
+    std::string mach =
+        strf(tr("machine %s"), (s.opt.machine.empty() ? m.name : s.opt.machine).c_str());
     // A shipped profile's description is in the catalogue (scripts/lib/extract-pot).
     if (!m.description.empty()) mach += std::string(" (") + tr(m.description.c_str()) + ")";
     // TRANSLATORS: the plot's title: XY, ZX...
@@ -153,10 +155,11 @@ std::vector<std::pair<std::string, Rgb>> note_lines(const Scene& s) {
     if (s.fit.outside) fit += tr(", clipped at the frame");
     out.push_back({fit, kGrey});
     // TRANSLATORS: the English says "moves" whatever the number.
-    out.push_back({strf(tr("cycle time %s"), hms(s.opt.seconds >= 0 ? s.opt.seconds : p.seconds()).c_str()) + " \u00b7 " +
-                       strf(trn("%zu moves", "%zu moves", p.size()), p.size()) + " \u00b7 " +
-                       strf(tr("path %.3f mm"), p.length()),
-                   kInk});
+    out.push_back(
+        {strf(tr("cycle time %s"), hms(s.opt.seconds >= 0 ? s.opt.seconds : p.seconds()).c_str()) +
+             " \u00b7 " + strf(trn("%zu moves", "%zu moves", p.size()), p.size()) + " \u00b7 " +
+             strf(tr("path %.3f mm"), p.length()),
+         kInk});
     // TRANSLATORS: a note of the plot, followed by the extents of each axis (X -10/20  Z 0/50).
     std::string ext = tr("extents");
     const PathBox& b = p.bounds();
@@ -164,17 +167,23 @@ std::vector<std::pair<std::string, Rgb>> note_lines(const Scene& s) {
         if (!m.has(a)) continue;
         double f = a == X && m.lathe && p.x_diameter() ? 2 : 1;
         ext += std::string("  ") + kAxisNames[size_t(a)] + (f == 2 ? "\u00f8 " : " ") +
-               fixed3_zeroed(f * b.lo[a], 0.0005, 47) + "/" + fixed3_zeroed(f * b.hi[a], 0.0005, 47);
+               fixed3_zeroed(f * b.lo[a], 0.0005, 47) + "/" +
+               fixed3_zeroed(f * b.hi[a], 0.0005, 47);
     }
     // TRANSLATORS: the English says "moves" whatever the number.
     if (p.travel_moves())
-        ext += " \u00b7 " + strf(trn("%zu moves beyond travel", "%zu moves beyond travel", p.travel_moves()), p.travel_moves());
+        ext += " \u00b7 " +
+               strf(trn("%zu moves beyond travel", "%zu moves beyond travel", p.travel_moves()),
+                    p.travel_moves());
     out.push_back({ext, kInk});
     for (const PathError& e : p.errors()) {
         if (e.loc.n >= 0)
-            out.push_back({strf(tr("error %d line %d N%ld: %s"), e.code, e.loc.line, e.loc.n, e.detail.c_str()), kRed});
+            out.push_back({strf(tr("error %d line %d N%ld: %s"), e.code, e.loc.line, e.loc.n,
+                                e.detail.c_str()),
+                           kRed});
         else
-            out.push_back({strf(tr("error %d line %d: %s"), e.code, e.loc.line, e.detail.c_str()), kRed});
+            out.push_back(
+                {strf(tr("error %d line %d: %s"), e.code, e.loc.line, e.detail.c_str()), kRed});
     }
     return out;
 }
@@ -192,17 +201,22 @@ std::string fit_text(const std::string& s, double size, double room, bool bold =
 }
 
 // An arrow from (x0, y0) to (x1, y1) with its head, and the axis name beyond it.
-void arrow(Scene& s, double x0, double y0, double x1, double y1, const std::string& name,
-           double lx, double ly) {
+void arrow(Scene& s, double x0, double y0, double x1, double y1, const std::string& name, double lx,
+           double ly) {
     double dx = x1 - x0, dy = y1 - y0, n = std::hypot(dx, dy);
     dx /= n, dy /= n;
     const double len = 2.2, half = 0.8;
-    s.marks.push_back(line_mark(Mark::axes, x0, y0, x1 - dx * len * 0.8, y1 - dy * len * 0.8, kInk, 0.3));
+    s.marks.push_back(
+        line_mark(Mark::axes, x0, y0, x1 - dx * len * 0.8, y1 - dy * len * 0.8, kInk, 0.3));
     Mark head;
     head.kind = Mark::polygon;
     head.group = Mark::axes;
-    head.pts = {x1, y1, x1 - dx * len - dy * half, y1 - dy * len + dx * half,
-                x1 - dx * len + dy * half, y1 - dy * len - dx * half};
+    head.pts = {x1,
+                y1,
+                x1 - dx * len - dy * half,
+                y1 - dy * len + dx * half,
+                x1 - dx * len + dy * half,
+                y1 - dy * len - dx * half};
     head.has_stroke = false;
     head.has_fill = true;
     head.fill = kInk;
@@ -230,7 +244,8 @@ double axes_and_scale(Scene& s, double x, double y) {
     s.marks.push_back(end);
     // TRANSLATORS: %s is the scale of the plot, 1:2 or 5:1.
     s.marks.push_back(text_mark(Mark::scale, bx + bw + 3, by + bh,
-                                strf(tr("drawn at %s on paper (PDF, SVG)"), s.ratio.c_str()), kSmall, kGrey));
+                                strf(tr("drawn at %s on paper (PDF, SVG)"), s.ratio.c_str()),
+                                kSmall, kGrey));
     return 14;
 }
 
@@ -250,7 +265,8 @@ double legend(Scene& s, double x, double y, double room) {
             cx = x + text_ems(title, true) * kBody + 4;
             row += kBody * 1.7;
         }
-        Mark sample = line_mark(Mark::legend, cx, row - 0.8, cx + 8, row - 0.8, st.colour, st.width);
+        Mark sample =
+            line_mark(Mark::legend, cx, row - 0.8, cx + 8, row - 0.8, st.colour, st.width);
         sample.layer = int(l);
         s.marks.push_back(sample);
         s.marks.push_back(text_mark(Mark::legend, cx + 9.5, row, words, kBody, kInk));
@@ -279,8 +295,8 @@ void lay_out(Scene& s) {
     for (const auto& n : notes) widest = std::max(widest, text_ems(n.first) * kBody);
     double content = std::clamp(std::max(widest, s.fw), kMinContent, std::max(kMaxContent, s.fw));
     double x = kMargin, y = kMargin + kTitle;
-    s.marks.push_back(text_mark(Mark::title, x, y, fit_text(title[0], kTitle, content, true), kTitle,
-                                kInk, true));
+    s.marks.push_back(text_mark(Mark::title, x, y, fit_text(title[0], kTitle, content, true),
+                                kTitle, kInk, true));
     y += kSub * 1.8;
     s.marks.push_back(text_mark(Mark::title, x, y, fit_text(title[1], kSub, content), kSub, kGrey));
     s.fx = x + (content - s.fw) / 2;
@@ -291,11 +307,13 @@ void lay_out(Scene& s) {
     y += legend(s, x, y, content) + 2;
     for (const auto& [words, colour] : notes) {
         y += kBody * 1.6;
-        s.marks.push_back(text_mark(Mark::notes, x, y, fit_text(words, kBody, content), kBody, colour));
+        s.marks.push_back(
+            text_mark(Mark::notes, x, y, fit_text(words, kBody, content), kBody, colour));
     }
     y += kSmall * 1.8;
     // TRANSLATORS: %s is the program that drew the plot: pupitre 1.2.
-    s.marks.push_back(text_mark(Mark::notes, x, y, strf(tr("drawn by %s"), s.opt.generator.c_str()), kSmall, kGrey));
+    s.marks.push_back(text_mark(Mark::notes, x, y, strf(tr("drawn by %s"), s.opt.generator.c_str()),
+                                kSmall, kGrey));
     s.page_w = content + 2 * kMargin;
     s.page_h = y + kMargin;
 }
@@ -309,14 +327,17 @@ const LayerStyle& layer_style(Layer l) {
 Layer move_layer(const PathMove& mv) {
     if (mv.flags & pathflag::error) return Layer::gouge;
     if (mv.flags & pathflag::travel) return Layer::travel;
-    return mv.kind == PathKind::rapid ? Layer::rapid : mv.kind == PathKind::comp ? Layer::comp : Layer::feed;
+    return mv.kind == PathKind::rapid  ? Layer::rapid
+           : mv.kind == PathKind::comp ? Layer::comp
+                                       : Layer::feed;
 }
 
 void profile_point(const ProfileElem& e, double t, int h, double& x, double& y) {
     double p0 = e.from[0] + (e.to[0] - e.from[0]) * t, p1 = e.from[1] + (e.to[1] - e.from[1]) * t;
     if (e.arc && t > 0 && t < 1) {
         double r = std::hypot(e.from[0] - e.c[0], e.from[1] - e.c[1]);
-        double a = std::atan2(e.from[1] - e.c[1], e.from[0] - e.c[0]) + e.sweep * t * 3.14159265358979323846 / 180;
+        double a = std::atan2(e.from[1] - e.c[1], e.from[0] - e.c[0]) +
+                   e.sweep * t * 3.14159265358979323846 / 180;
         p0 = e.c[0] + r * std::cos(a);
         p1 = e.c[1] + r * std::sin(a);
     }
@@ -325,7 +346,8 @@ void profile_point(const ProfileElem& e, double t, int h, double& x, double& y) 
 }
 
 const char* mark_group_id(Mark::Group g) {
-    static constexpr const char* kIds[Mark::groups_] = {"title", "border", "axes", "scale-bar", "legend", "notes"};
+    static constexpr const char* kIds[Mark::groups_] = {"title",     "border", "axes",
+                                                        "scale-bar", "legend", "notes"};
     return kIds[g];
 }
 
@@ -334,9 +356,10 @@ double text_ems(const std::string& s, bool bold) {
     double w = 0;
     for (unsigned char c : s) {
         if ((c & 0xc0) == 0x80) continue;  // a UTF-8 continuation byte
-        if (c >= 0x80) w += 0.7;
-        else if (c == ' ' || c == '.' || c == ',' || c == ':' || c == ';' || c == '\'' || c == '|' ||
-                 c == 'i' || c == 'j' || c == 'l' || c == 'I' || c == '!')
+        if (c >= 0x80)
+            w += 0.7;
+        else if (c == ' ' || c == '.' || c == ',' || c == ':' || c == ';' || c == '\'' ||
+                 c == '|' || c == 'i' || c == 'j' || c == 'l' || c == 'I' || c == '!')
             w += 0.34;
         else if (c == '(' || c == ')' || c == '/' || c == '-' || c == 'f' || c == 't' || c == 'r')
             w += 0.42;

@@ -25,10 +25,10 @@ enum class Layer : uint8_t {
     profile,   // the programmed profile of G41/G42
     rapid,
     feed,
-    comp,      // the radius-compensated path
-    travel,    // moves ending beyond the machine's travel
-    gouge,     // the moves of a block that raised an error, and where it stopped
-    mirror,    // lathe: the cutting moves mirrored below the axis
+    comp,    // the radius-compensated path
+    travel,  // moves ending beyond the machine's travel
+    gouge,   // the moves of a block that raised an error, and where it stopped
+    mirror,  // lathe: the cutting moves mirrored below the axis
     count_
 };
 inline constexpr size_t kLayerCount = size_t(Layer::count_);
@@ -73,7 +73,8 @@ struct Mark {
     double size = 2.5;
     bool bold = false, right = false;
 };
-const char* mark_group_id(Mark::Group g);  // "title", "border", "axes", "scale-bar", "legend", "notes"
+const char* mark_group_id(
+    Mark::Group g);  // "title", "border", "axes", "scale-bar", "legend", "notes"
 
 struct Scene {
     const Toolpath* path = nullptr;
@@ -90,7 +91,8 @@ struct Scene {
     double bar_length = 1;  // the scale bar, mm of the part: 1, 2 or 5 times a power of ten
     double page_w = 210, page_h = 297;
     double fx = 0, fy = 0, fw = 1, fh = 1;  // the frame on the page
-    std::array<bool, kLayerCount> present{};  // the legend's layers: those that leave ink in the frame
+    std::array<bool, kLayerCount>
+        present{};  // the legend's layers: those that leave ink in the frame
     std::vector<Mark> marks;
     std::string title;  // the document's title: "%555 EXEMPLE EN TOURNAGE"
 

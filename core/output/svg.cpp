@@ -1,13 +1,14 @@
 // The SVG drawing of a toolpath (see svg.hpp).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/output/svg.hpp"
-#include "core/geometry/geometry.hpp"
-#include "core/i18n.hpp"
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+
+#include "core/geometry/geometry.hpp"
+#include "core/i18n.hpp"
 
 namespace pupitre {
 
@@ -186,7 +187,8 @@ std::string Writer::frame_layers() const {
     if (sc_.present[size_t(Layer::part)]) {
         const LayerStyle& st = layer_style(Layer::part);
         char fill[64];
-        std::snprintf(fill, sizeof fill, " fill=\"#%02x%02x%02x\" fill-opacity=\"0.45\" fill-rule=\"evenodd\"",
+        std::snprintf(fill, sizeof fill,
+                      " fill=\"#%02x%02x%02x\" fill-opacity=\"0.45\" fill-rule=\"evenodd\"",
                       st.colour.r, st.colour.g, st.colour.b);
         s += std::string("<g id=\"part\"") + fill + pen_attrs(st, sc_.k) + ">\n";
         for (double ys : {-1.0, 1.0}) {
@@ -335,8 +337,9 @@ std::string Writer::mark_text(const Mark& m) {
 // The marks around the drawing, in paper millimetres: one transform takes them
 // to the drawing's units, so their numbers stay the layout's.
 std::string Writer::marks() const {
-    std::string s = "<g id=\"marks\" font-family=\"DejaVu Sans, sans-serif\" xml:space=\"preserve\" "
-                    "transform=\"translate(";
+    std::string s =
+        "<g id=\"marks\" font-family=\"DejaVu Sans, sans-serif\" xml:space=\"preserve\" "
+        "transform=\"translate(";
     xy(s, sc_.wx0 - sc_.fx / sc_.k, -sc_.wy1 - sc_.fy / sc_.k);
     s += ") scale(";
     char buf[48];
@@ -368,15 +371,21 @@ std::string Writer::head() const {
     s += ' ';
     xy(s, paper(sc_.page_w), paper(sc_.page_h));
     s += "\">\n<title>" + xml_escape(sc_.title) + "</title>\n<desc>" +
-         xml_escape(strf(sc_.lathe ? tr("Toolpath in the program frame, plane %s; lengths in mm; the horizontal axis to "
-                                        "the right and the vertical one up (lathe: Z across, X as a radius up, y = -X/2 "
-                                        "of the diameters). Drawn at %s; the frame shows %s, and clips what reaches "
-                                        "beyond it.")
-                                   : tr("Toolpath in the program frame, plane %s; lengths in mm; the horizontal axis to "
-                                        "the right and the vertical one up. Drawn at %s; the frame shows %s, and clips "
-                                        "what reaches beyond it."),
-                         std::string(plane_name(sc_.opt.plane)).c_str(), sc_.ratio.c_str(),
-                         fit_words(p_, sc_.fit).c_str())) +
+         xml_escape(strf(
+             sc_.lathe
+                 ? tr("Toolpath in the program frame, plane %s; lengths in mm; the horizontal axis "
+                      "to "
+                      "the right and the vertical one up (lathe: Z across, X as a radius up, y = "
+                      "-X/2 "
+                      "of the diameters). Drawn at %s; the frame shows %s, and clips what reaches "
+                      "beyond it.")
+                 : tr("Toolpath in the program frame, plane %s; lengths in mm; the horizontal axis "
+                      "to "
+                      "the right and the vertical one up. Drawn at %s; the frame shows %s, and "
+                      "clips "
+                      "what reaches beyond it."),
+             std::string(plane_name(sc_.opt.plane)).c_str(), sc_.ratio.c_str(),
+             fit_words(p_, sc_.fit).c_str())) +
          "</desc>\n<defs>\n<clipPath id=\"window\"><rect x=\"";
     append_mm(s, sc_.wx0);
     s += "\" y=\"";
@@ -407,7 +416,8 @@ std::string Writer::document() {
         s += group_open(k) + layers_[size_t(k)].out;
         if (k == Layer::gouge)
             for (const PathError& e : p_.errors()) {
-                const double* at = e.moves == 0 ? p_.start() : p_[std::min(e.moves, p_.size()) - 1].p;
+                const double* at =
+                    e.moves == 0 ? p_.start() : p_[std::min(e.moves, p_.size()) - 1].p;
                 s += "<circle cx=\"";
                 append_mm(s, at[h_]);
                 s += "\" cy=\"";

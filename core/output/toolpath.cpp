@@ -5,9 +5,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/parse/block.hpp"
 #include "core/geometry/geometry.hpp"
 #include "core/i18n.hpp"
+#include "core/parse/block.hpp"
 
 namespace pupitre {
 
@@ -327,12 +327,14 @@ std::string fit_words(const Toolpath& p, const PathFit& f) {
         case PathFit::cuts:
             break;
     }
-    std::string s = p.program >= 0 ? strf(tr("the cutting moves of %%%d"), p.program) : std::string(tr("the cutting moves")),
+    std::string s = p.program >= 0 ? strf(tr("the cutting moves of %%%d"), p.program)
+                                   : std::string(tr("the cutting moves")),
                 more;
     if (f.mirror_out) more = tr("the mirror image left out, far from the axis");
     if (f.outside)
-        more += (more.empty() ? "" : "; ") +
-                strf(trn("%zu rapid reaches beyond", "%zu rapids reach beyond", f.outside), f.outside);
+        more +=
+            (more.empty() ? "" : "; ") +
+            strf(trn("%zu rapid reaches beyond", "%zu rapids reach beyond", f.outside), f.outside);
     return more.empty() ? s : s + " (" + more + ")";
 }
 

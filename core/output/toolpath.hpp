@@ -116,7 +116,9 @@ class Toolpath final : public MachineSink {
     void dwell(const Loc&, double s) override { seconds_ += s; }
     void tool(const Loc&, int, int, double s, bool) override { seconds_ += s; }
     void end(const Loc& l, int) override { end_ = l; }
-    void stock(const Loc& l, const std::vector<std::array<double, 2>>& zr) override { add_stock(l, zr); }
+    void stock(const Loc& l, const std::vector<std::array<double, 2>>& zr) override {
+        add_stock(l, zr);
+    }
     void profile(const Loc&, const ProfileElem& e) override { profile_.push_back(e); }
 
     // --- reading ---
@@ -214,7 +216,11 @@ bool scan_extremes(const ProgramText& p, bool x_diameter, Axes& lo, Axes& hi, ui
 // across, v up (world mm).
 struct PathFit {
     double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
-    enum What : uint8_t { start, moves, cuts } what = start;  // the start point alone, every move, the cuts
+    enum What : uint8_t {
+        start,
+        moves,
+        cuts
+    } what = start;           // the start point alone, every move, the cuts
     bool mirror_out = false;  // the mirror image was asked for but is not in the box
     size_t outside = 0;       // rapids that leave the box (counted by count_outside)
 };

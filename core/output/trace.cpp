@@ -20,10 +20,18 @@ void append_json_string(std::string& s, std::string_view v) {
     s += '"';
     for (char c : v) {
         switch (c) {
-            case '"': s += "\\\""; break;
-            case '\\': s += "\\\\"; break;
-            case '\n': s += "\\n"; break;
-            case '\t': s += "\\t"; break;
+            case '"':
+                s += "\\\"";
+                break;
+            case '\\':
+                s += "\\\\";
+                break;
+            case '\n':
+                s += "\\n";
+                break;
+            case '\t':
+                s += "\\t";
+                break;
             default:
                 if (static_cast<unsigned char>(c) < 0x20) {
                     char buf[8];
@@ -128,8 +136,10 @@ void TraceWriter::spindle(const SpindleEvent& e) {
     buf_ += ",\"dir\":\"";
     buf_ += e.dir == 3 ? "cw" : e.dir == 4 ? "ccw" : e.dir == 19 ? "index" : "stop";
     buf_ += "\",\"css\":";
-    if (e.css) append_fixed4(buf_, e.vc);
-    else buf_ += "null";
+    if (e.css)
+        append_fixed4(buf_, e.vc);
+    else
+        buf_ += "null";
     buf_ += ",\"range\":";
     buf_ += e.range >= 0 ? std::to_string(e.range) : std::string("null");
     buf_ += "}\n";
@@ -138,7 +148,8 @@ void TraceWriter::spindle(const SpindleEvent& e) {
 
 void TraceWriter::coolant(const Loc& l, bool m7, bool m8) {
     head("coolant", l);
-    buf_ += std::string(",\"m7\":") + (m7 ? "true" : "false") + ",\"m8\":" + (m8 ? "true" : "false") + "}\n";
+    buf_ += std::string(",\"m7\":") + (m7 ? "true" : "false") +
+            ",\"m8\":" + (m8 ? "true" : "false") + "}\n";
     std::fwrite(buf_.data(), 1, buf_.size(), out_);
 }
 
@@ -232,11 +243,12 @@ std::string summary_text(const Interpreter& in, const std::string& file) {
     std::string blocks = strf(trn("%ld blocks", "%ld blocks", in.blocks()), in.blocks());
     // TRANSLATORS: a count in the summary of a run; the English says "moves" whatever the number.
     std::string moves = strf(trn("%ld moves", "%ld moves", in.moves()), in.moves());
-    // TRANSLATORS: the first line of the summary of a run: program number, file, machine profile, then the counts
-    // of blocks and moves, the path length, the cycle time h:mm:ss and in seconds.
-    o += strf(tr("%%%d (%s) on %s: %s, %s, path %s mm, cycle time %s (%s s)\n"), in.main_program(), file.c_str(),
-              in.machine().name.c_str(), blocks.c_str(), moves.c_str(), fixed(in.path_length(), 3).c_str(),
-              clock_text(in.seconds()).c_str(), fixed(in.seconds(), 3).c_str());
+    // TRANSLATORS: the first line of the summary of a run: program number, file, machine profile,
+    // then the counts of blocks and moves, the path length, the cycle time h:mm:ss and in seconds.
+    o += strf(tr("%%%d (%s) on %s: %s, %s, path %s mm, cycle time %s (%s s)\n"), in.main_program(),
+              file.c_str(), in.machine().name.c_str(), blocks.c_str(), moves.c_str(),
+              fixed(in.path_length(), 3).c_str(), clock_text(in.seconds()).c_str(),
+              fixed(in.seconds(), 3).c_str());
     o += strf(tr("final OP: %s\n"), axes_text(in, in.program_pos()).c_str());
     o += strf(tr("final OM: %s\n"), axes_text(in, in.machine_pos()).c_str());
     if (!in.tools_used().empty()) {
@@ -247,8 +259,8 @@ std::string summary_text(const Interpreter& in, const std::string& file) {
     return o;
 }
 
-std::string summary_json(const Interpreter& in, const std::string& file, const std::vector<Diag>& more,
-                         std::string_view fields) {
+std::string summary_json(const Interpreter& in, const std::string& file,
+                         const std::vector<Diag>& more, std::string_view fields) {
     std::string o = "{\"file\":";
     append_json_string(o, file);
     o += ",\"program\":" + std::to_string(in.main_program());
@@ -268,9 +280,10 @@ std::string summary_json(const Interpreter& in, const std::string& file, const s
     if (!m.kinematics.empty()) {
         // The tool in the part frame by the kinematic model (milling.md §9).
         const Axes& p = in.program_pos();
-        Eigen::Isometry3d h = m.kinematics == "table"
-                                  ? kin::forward4({p[X], p[Y], p[Z], p[B]}, m.kin_lx, m.kin_lz)
-                                  : kin::forward5({p[X], p[Y], p[Z], p[B], p[C]}, m.kin_lx, m.kin_ly, m.kin_lz);
+        Eigen::Isometry3d h =
+            m.kinematics == "table"
+                ? kin::forward4({p[X], p[Y], p[Z], p[B]}, m.kin_lx, m.kin_lz)
+                : kin::forward5({p[X], p[Y], p[Z], p[B], p[C]}, m.kin_lx, m.kin_ly, m.kin_lz);
         Eigen::Vector3d t = h.translation(), k = h.linear().col(2);
         o += ",\"tool_in_part\":{\"X\":";
         append_fixed4(o, t.x());

@@ -10,7 +10,7 @@
 namespace pupitre {
 
 class TraceWriter final : public MachineSink {
-public:
+  public:
     TraceWriter(std::FILE* out, const MachineProfile& m) : out_(out), m_(m) {}
     void move(const MoveEvent&) override;
     void dwell(const Loc&, double) override;
@@ -22,7 +22,7 @@ public:
     void end(const Loc&, int m) override;
     double seconds = 0;  // running total, reported with "end"
 
-private:
+  private:
     void head(const char* ev, const Loc& l);
     void axes(const char* key, const Axes& v, bool x_diam);
     std::FILE* out_;
@@ -38,7 +38,7 @@ void append_json_string(std::string& s, std::string_view v);
 std::string summary_text(const Interpreter& in, const std::string& file);
 // `more` are errors found outside the interpreter (the workshop's crashes);
 // `fields` is JSON inserted before the closing brace (",\"workshop\":{…}").
-std::string summary_json(const Interpreter& in, const std::string& file, const std::vector<Diag>& more = {},
-                         std::string_view fields = {});
+std::string summary_json(const Interpreter& in, const std::string& file,
+                         const std::vector<Diag>& more = {}, std::string_view fields = {});
 
 }  // namespace pupitre

@@ -10,11 +10,12 @@
 //   message    -> '$' digit text-up-to-'('-or-end
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/parse/block.hpp"
-#include "core/i18n.hpp"
 
 #include <charconv>
 #include <cstring>
 #include <string>
+
+#include "core/i18n.hpp"
 
 namespace pupitre {
 
@@ -43,8 +44,12 @@ std::string_view addr_name(Addr a) {
 
 namespace {
 
-bool is_digit(char c) { return c >= '0' && c <= '9'; }
-bool is_upper(char c) { return c >= 'A' && c <= 'Z'; }
+bool is_digit(char c) {
+    return c >= '0' && c <= '9';
+}
+bool is_upper(char c) {
+    return c >= 'A' && c <= 'Z';
+}
 
 struct Parser {
     std::string_view s;
@@ -87,7 +92,7 @@ struct Parser {
         if (int_digits + frac_digits <= 15) {
             // Mantissa and power of ten are exact doubles, so the one division rounds
             // correctly: the value from_chars would give, faster.
-            static constexpr double kPow10[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7,
+            static constexpr double kPow10[] = {1e0, 1e1, 1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
                                                 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
             v.num = double(m) / kPow10[frac_digits];
         } else {
@@ -112,7 +117,8 @@ struct Parser {
         while (is_digit(peek())) {
             n = n * 10 + (s[pos] - '0');
             ++pos;
-            if (int(pos - start) > max_digits) return fail(91, start, tr("parameter number too long"));
+            if (int(pos - start) > max_digits)
+                return fail(91, start, tr("parameter number too long"));
         }
         if (pos == start) return fail(93, start, tr("parameter number expected"));
         out = int32_t(n);
@@ -128,7 +134,8 @@ struct Parser {
             base = 926;
             ++pos;
         }
-        if (!is_upper(peek()) || peek(1) != '\'') return fail(93, start, tr("bad symbol, expected 'A'..'Z' or 'EA'..'EZ'"));
+        if (!is_upper(peek()) || peek(1) != '\'')
+            return fail(93, start, tr("bad symbol, expected 'A'..'Z' or 'EA'..'EZ'"));
         l = base + (s[pos] - 'A');
         pos += 2;
         return true;
@@ -204,7 +211,8 @@ struct Parser {
             skip_spaces();
             char c = peek();
             if (c == '+' || c == '-' || c == 'S' || c == 'C' || c == 'A' || c == 'R' || c == 'T') {
-                if (t.nprefix >= sizeof t.prefix) return fail(93, pos, tr("too many functions in a term"));
+                if (t.nprefix >= sizeof t.prefix)
+                    return fail(93, pos, tr("too many functions in a term"));
                 t.prefix[t.nprefix++] = c;
                 ++pos;
                 continue;
@@ -221,7 +229,6 @@ struct Parser {
         }
         return true;
     }
-
 
     // expr -> term { binop term }; stops before a comparator or the next word.
     bool expr(Expr& e) {
@@ -262,13 +269,26 @@ struct Parser {
     bool cmp(Cmp& c) {
         skip_spaces();
         char a = peek(), n = peek(1);
-        if (a == '<' && n == '=') { c = Cmp::le; pos += 2; }
-        else if (a == '>' && n == '=') { c = Cmp::ge; pos += 2; }
-        else if (a == '<' && n == '>') { c = Cmp::ne; pos += 2; }
-        else if (a == '<') { c = Cmp::lt; ++pos; }
-        else if (a == '>') { c = Cmp::gt; ++pos; }
-        else if (a == '=') { c = Cmp::eq; ++pos; }
-        else return fail(93, pos, tr("comparison operator expected (= <> < <= > >=)"));
+        if (a == '<' && n == '=') {
+            c = Cmp::le;
+            pos += 2;
+        } else if (a == '>' && n == '=') {
+            c = Cmp::ge;
+            pos += 2;
+        } else if (a == '<' && n == '>') {
+            c = Cmp::ne;
+            pos += 2;
+        } else if (a == '<') {
+            c = Cmp::lt;
+            ++pos;
+        } else if (a == '>') {
+            c = Cmp::gt;
+            ++pos;
+        } else if (a == '=') {
+            c = Cmp::eq;
+            ++pos;
+        } else
+            return fail(93, pos, tr("comparison operator expected (= <> < <= > >=)"));
         return true;
     }
 
@@ -291,9 +311,9 @@ struct Parser {
     bool structured_keyword() {
         // Keywords are two or more letters; an ordinary word is a letter and a value.
         if (!is_upper(peek()) || !is_upper(peek(1))) return false;
-        static constexpr std::string_view kws[] = {"WHILE", "ENDW", "FOR", "ENDF", "ENDIF", "ENDI",
-                                                   "ELSE", "THEN", "PUSH", "PULL", "VAR", "DO",
-                                                   "REPEAT", "UNTIL"};
+        static constexpr std::string_view kws[] = {"WHILE", "ENDW", "FOR",    "ENDF", "ENDIF",
+                                                   "ENDI",  "ELSE", "THEN",   "PUSH", "PULL",
+                                                   "VAR",   "DO",   "REPEAT", "UNTIL"};
         std::string_view rest = s.substr(pos);
         for (auto kw : kws)
             if (keyword_at(rest, kw)) return true;
@@ -307,7 +327,8 @@ struct Parser {
         w.col = uint16_t(col + 1);
         if (c == 'E') {
             char n = peek(1);
-            if ((n == '+' || n == '-') && !(is_digit(peek(2)) || peek(2) == '.' || peek(2) == 'L')) {
+            if ((n == '+' || n == '-') &&
+                !(is_digit(peek(2)) || peek(2) == '.' || peek(2) == 'L')) {
                 w.addr = kAddrEsign;
                 w.v.kind = Operand::SignOnly;
                 w.v.has_sign = true;
@@ -317,10 +338,14 @@ struct Parser {
                 return true;
             }
             if (!is_upper(n) || n == 'O' || n == 'L')
-                return fail(1, col, strf(tr("address E must be followed by a letter (EA, EB%s) or a parameter number"), "\u2026"));
+                return fail(1, col,
+                            strf(tr("address E must be followed by a letter (EA, EB%s) or a "
+                                    "parameter number"),
+                                 "\u2026"));
             w.addr = addrE(n);
             pos += 2;
-        } else if (c == 'N' && (peek(1) == 'C' || peek(1) == 'U' || peek(1) == 'P' || peek(1) == 'R')) {
+        } else if (c == 'N' &&
+                   (peek(1) == 'C' || peek(1) == 'U' || peek(1) == 'P' || peek(1) == 'R')) {
             w.addr = addrN(peek(1));
             pos += 2;
         } else {
@@ -380,15 +405,18 @@ struct Parser {
                 continue;
             }
             if (c == '$') {
-                if (!is_digit(peek(1))) return fail(1, pos, tr("'$' must be followed by a channel digit 0-6"));
+                if (!is_digit(peek(1)))
+                    return fail(1, pos, tr("'$' must be followed by a channel digit 0-6"));
                 int ch = peek(1) - '0';
                 if (ch > 6) return fail(1, pos, tr("message channel must be $0 to $6"));
                 pos += 2;
                 size_t end = s.find('(', pos);
                 if (end == std::string_view::npos) end = s.size();
                 std::string_view text = s.substr(pos, end - pos);
-                while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
-                while (!text.empty() && (text.back() == ' ' || text.back() == '\t' || text.back() == '\r'))
+                while (!text.empty() && (text.front() == ' ' || text.front() == '\t'))
+                    text.remove_prefix(1);
+                while (!text.empty() &&
+                       (text.back() == ' ' || text.back() == '\t' || text.back() == '\r'))
                     text.remove_suffix(1);
                 b.msg_channel = ch;
                 b.msg = text;
@@ -397,7 +425,10 @@ struct Parser {
             }
             if (first_word || (b.words.size() == 1 && b.words[0].addr == addr1('N'))) {
                 if (structured_keyword())
-                    return fail(4, pos, strf(tr("structured programming (IF, WHILE, FOR%s) is an option this machine does not have"), "\u2026"));
+                    return fail(4, pos,
+                                strf(tr("structured programming (IF, WHILE, FOR%s) is an option "
+                                        "this machine does not have"),
+                                     "\u2026"));
             }
             first_word = false;
             if (c == 'L' && is_upper(peek(1)) && peek(1) != 'O') {
@@ -409,7 +440,8 @@ struct Parser {
                 b.words.push_back(w);
                 continue;
             }
-            if (c == 'L' || c == '\'' || (c == 'E' && (is_digit(peek(1)) || (peek(1) == 'L' && is_digit(peek(2)))))) {
+            if (c == 'L' || c == '\'' ||
+                (c == 'E' && (is_digit(peek(1)) || (peek(1) == 'L' && is_digit(peek(2)))))) {
                 size_t col = pos;
                 Operand target;
                 bool found;
@@ -424,7 +456,8 @@ struct Parser {
                 continue;
             }
             if (is_upper(c)) {
-                if (c == 'O') return fail(1, pos, tr("the letter O is not an ISO address (did you mean 0?)"));
+                if (c == 'O')
+                    return fail(1, pos, tr("the letter O is not an ISO address (did you mean 0?)"));
                 if (!word(c)) return false;
                 if (g76_edit_ && b.words.size() > g76_edit_ && b.words.back().addr == addr1('N')) {
                     if (!g76_tail()) return false;
@@ -434,7 +467,8 @@ struct Parser {
                     const Operand& v = b.words[0].v;
                     if (v.kind == Operand::Number) {
                         if (v.frac_digits || v.int_digits > 5)
-                            return fail(1, b.words[0].col - 1, tr("block number must have 1 to 5 digits"));
+                            return fail(1, b.words[0].col - 1,
+                                        tr("block number must have 1 to 5 digits"));
                         b.n = long(v.num);
                     } else if (v.kind == Operand::Blank) {
                         b.n = 0;
@@ -463,7 +497,8 @@ struct Parser {
             int k = 0, digits = 0;
             size_t at = p++;
             while (p < s.size() && is_digit(s[p])) {
-                if (++digits > 5) return fail(1, at, tr("the line offset +k has more than 5 digits"));
+                if (++digits > 5)
+                    return fail(1, at, tr("the line offset +k has more than 5 digits"));
                 k = k * 10 + (s[p++] - '0');
             }
             b.g76_k = k;
@@ -489,7 +524,8 @@ bool parse_block(std::string_view line, Block& out, Diag& d) {
     if (line.size() > kMaxBlockChars) {
         d.code = 1;
         d.column = int(kMaxBlockChars) + 1;
-        d.detail = strf(tr("block longer than %zu characters (%zu)"), size_t(kMaxBlockChars), line.size());
+        d.detail =
+            strf(tr("block longer than %zu characters (%zu)"), size_t(kMaxBlockChars), line.size());
         return false;
     }
     Parser p{line, 0, out, d};

@@ -16,11 +16,19 @@ namespace pupitre {
 // N + letter (NC, NU, NP, NR) is 52 + index; the PGP discriminant E+ / E- is 78;
 // L + letter (LX, LY of the G46 pocket) is 79 + index.
 using Addr = uint8_t;
-constexpr Addr addr1(char c) { return Addr(c - 'A'); }
-constexpr Addr addrE(char c) { return Addr(26 + (c - 'A')); }
-constexpr Addr addrN(char c) { return Addr(52 + (c - 'A')); }
+constexpr Addr addr1(char c) {
+    return Addr(c - 'A');
+}
+constexpr Addr addrE(char c) {
+    return Addr(26 + (c - 'A'));
+}
+constexpr Addr addrN(char c) {
+    return Addr(52 + (c - 'A'));
+}
 constexpr Addr kAddrEsign = 78;
-constexpr Addr addrL(char c) { return Addr(79 + (c - 'A')); }
+constexpr Addr addrL(char c) {
+    return Addr(79 + (c - 'A'));
+}
 constexpr int kAddrCount = 105;
 // "X", "EA", "NC", "E±".
 std::string_view addr_name(Addr a);
@@ -28,19 +36,19 @@ std::string_view addr_name(Addr a);
 struct Operand {
     enum Kind : uint8_t { Blank, SignOnly, Number, LVar, EParam, EIndirect };
     Kind kind = Blank;
-    bool neg = false;        // a '-' sign was written
-    bool has_sign = false;   // '+' or '-' was written
-    uint8_t int_digits = 0;  // digits before the point (Number)
-    uint8_t frac_digits = 0; // digits after the point (Number)
-    int32_t index = 0;       // L or E number; for EIndirect the L number
-    double num = 0;          // the literal's value, unsigned
+    bool neg = false;         // a '-' sign was written
+    bool has_sign = false;    // '+' or '-' was written
+    uint8_t int_digits = 0;   // digits before the point (Number)
+    uint8_t frac_digits = 0;  // digits after the point (Number)
+    int32_t index = 0;        // L or E number; for EIndirect the L number
+    double num = 0;           // the literal's value, unsigned
 };
 
 struct Word {
     Addr addr = 0;
-    uint16_t col = 0;   // 1-based column of the address letter
-    char gsign = 0;     // '+' or '-' glued to G76/G79 (G76+, G79-)
-    int16_t glevel = 0; // the i of "G77 -i"
+    uint16_t col = 0;    // 1-based column of the address letter
+    char gsign = 0;      // '+' or '-' glued to G76/G79 (G76+, G79-)
+    int16_t glevel = 0;  // the i of "G77 -i"
     Operand v;
 };
 
@@ -75,20 +83,20 @@ struct Test {
 
 struct Block {
     int line = 0;
-    long n = -1;          // label, -1 if none
-    bool skip = false;    // starts with '/'
-    int msg_channel = -1; // $0..$6, -1 if none
-    std::string_view msg; // text of the $ message (points into the program text)
-    Test test;            // G79 condition
+    long n = -1;           // label, -1 if none
+    bool skip = false;     // starts with '/'
+    int msg_channel = -1;  // $0..$6, -1 if none
+    std::string_view msg;  // text of the $ message (points into the program text)
+    Test test;             // G79 condition
     std::vector<Word> words;
     std::vector<Assign> assigns;
     std::vector<Term> terms;  // storage for every Expr of the block
     // G76+ / G76- [H..] N.. [+k] <ISO block> (program-flow.md §6.3-6.4): the
     // words after the pointed N are not this block's: the line offset k and the
     // raw text of the block to insert are kept apart.
-    int g76_k = -1;               // the +k after the pointed block, -1 if none
-    std::string_view g76_block;   // the text after N.. [+k], trimmed (points into the line)
-    uint16_t g76_block_col = 0;   // its 1-based column
+    int g76_k = -1;              // the +k after the pointed block, -1 if none
+    std::string_view g76_block;  // the text after N.. [+k], trimmed (points into the line)
+    uint16_t g76_block_col = 0;  // its 1-based column
 
     void clear() {
         line = 0;

@@ -9,7 +9,6 @@
 
 namespace pupitre {
 
-
 namespace {
 
 using S = Support;
@@ -22,9 +21,11 @@ constexpr GCode kG[] = {
     {2, G::motion, kBoth, 0, S::yes, "", N_("circular interpolation, clockwise")},
     {3, G::motion, kBoth, 0, S::yes, "", N_("circular interpolation, counter-clockwise")},
     {4, G::none, kBoth, 0, S::yes, "F", N_("dwell, seconds in F")},
-    {5, G::none, kLathe, kBoth, S::option, "X Z", N_("move along an inclined axis (grinder option)")},
+    {5, G::none, kLathe, kBoth, S::option, "X Z",
+     N_("move along an inclined axis (grinder option)")},
     {6, G::none, kBoth, kBoth, S::yes, "NC", N_("execute a spline curve")},
-    {7, G::none, kLathe, kBoth, S::option, "X Z", N_("initial positioning for an inclined axis (grinder option)")},
+    {7, G::none, kLathe, kBoth, S::option, "X Z",
+     N_("initial positioning for an inclined axis (grinder option)")},
     {9, G::none, kBoth, 0, S::yes, "", N_("exact stop at end of block")},
     {10, G::none, kBoth, 0, S::yes, "N EF", N_("interruptible block")},
     {12, G::none, kBoth, 0, S::ignored, "", N_("handwheel overspeed")},
@@ -39,13 +40,16 @@ constexpr GCode kG[] = {
     {23, G::none, kBoth, kBoth, S::yes, "X Y Z I J K", N_("circle through three points")},
     {29, G::radcomp, kMill, 0, S::yes, "P Q R", N_("tool correction in space (3-D)")},
     {31, G::none, kMill, 0, S::yes, "X Y Z I J K P EC EF ER F", N_("single-point threading cycle")},
-    {33, G::none, kLathe, 0, S::yes, "X Z K P Q R S EA EB ES F", N_("constant-pitch threading cycle")},
+    {33, G::none, kLathe, 0, S::yes, "X Z K P Q R S EA EB ES F",
+     N_("constant-pitch threading cycle")},
     {38, G::motion, kLathe, 0, S::yes, "X Z K", N_("chained threading")},
     {40, G::radcomp, kBoth, 0, S::yes, "", N_("cancel tool radius compensation")},
     {41, G::radcomp, kBoth, 0, S::yes, "", N_("tool radius compensation, tool left of profile")},
     {42, G::radcomp, kBoth, 0, S::yes, "", N_("tool radius compensation, tool right of profile")},
-    {45, G::none, kMill, 0, S::yes, "X Y Z I J K P Q R EB EG EP EQ EI EJ EX EY ER", N_("simple pocket cycle")},
-    {46, G::none, kMill, kBoth, S::yes, "NU NP NR ED Q J R LX LY X Y Z P ER EH EP EQ EI EJ EX EY", N_("pocket or facing with any contour")},
+    {45, G::none, kMill, 0, S::yes, "X Y Z I J K P Q R EB EG EP EQ EI EJ EX EY ER",
+     N_("simple pocket cycle")},
+    {46, G::none, kMill, kBoth, S::yes, "NU NP NR ED Q J R LX LY X Y Z P ER EH EP EQ EI EJ EX EY",
+     N_("pocket or facing with any contour")},
     {48, G::none, kBoth, kBoth, S::yes, "NC H N", N_("spline definition")},
     {49, G::none, kBoth, kBoth, S::yes, "NC", N_("spline deletion")},
     {51, G::none, kBoth, kBoth, S::yes, "X Y Z U V W A B C", N_("mirror: X- enables, X+ disables")},
@@ -53,7 +57,8 @@ constexpr GCode kG[] = {
     {53, G::prefdec, kBoth, 0, S::yes, "", N_("disable the PREF and DEC1 offsets")},
     {54, G::prefdec, kBoth, 0, S::yes, "", N_("enable the PREF and DEC1 offsets")},
     {59, G::none, kBoth, 0, S::yes, "X Y Z U V W A B C I J K ED", N_("programmed origin offset")},
-    {63, G::none, kLathe, kBoth, S::yes, "N X Z I K P Q R EA EB EC EF EQ ER EU EW EX EZ EP", N_("roughing cycle with grooves")},
+    {63, G::none, kLathe, kBoth, S::yes, "N X Z I K P Q R EA EB EC EF EQ ER EU EW EX EZ EP",
+     N_("roughing cycle with grooves")},
     {64, G::cycle, kLathe, 0, S::yes, "N X Z I K P R EP", N_("paraxial roughing cycle")},
     {65, G::none, kLathe, 0, S::yes, "N X Z I K P Q R EA EF EP", N_("groove roughing cycle")},
     {66, G::none, kLathe, 0, S::yes, "X Z P R D EA EF EP", N_("plunge roughing cycle")},
@@ -62,14 +67,17 @@ constexpr GCode kG[] = {
     {73, G::scale, kBoth, kBoth, S::yes, "", N_("scale factor off")},
     {74, G::scale, kBoth, kBoth, S::yes, "", N_("scale factor on (E69000)")},
     {75, G::none, kBoth, 0, S::yes, "N", N_("declare the emergency-retract block")},
-    {76, G::none, kBoth, 0, S::yes, "H N", N_("write the current L/E values into a program; G76+/- edit (1040/1060)")},
+    {76, G::none, kBoth, 0, S::yes, "H N",
+     N_("write the current L/E values into a program; G76+/- edit (1040/1060)")},
     {77, G::none, kBoth, 0, S::yes, "H N P S", N_("call a subprogram or block range, with return")},
-    {78, G::none, kBoth, kBoth, S::yes, "P", N_("axis-group synchronisation (one group here: a no-op)")},
+    {78, G::none, kBoth, kBoth, S::yes, "P",
+     N_("axis-group synchronisation (one group here: a no-op)")},
     {79, G::none, kBoth, 0, S::yes, "N", N_("jump, conditional or not")},
     {80, G::cycle, kBoth, 0, S::yes, "", N_("cancel machining cycle")},
     {81, G::cycle, kBoth, kBoth, S::yes, "X Y Z ER EH", N_("drilling / centring cycle")},
     {82, G::cycle, kBoth, kBoth, S::yes, "X Y Z ER EH EF", N_("counterboring cycle with dwell")},
-    {83, G::cycle, kBoth, 0, S::yes, "X Y Z P Q ER EH EF EP ES", N_("peck drilling with chip clearing")},
+    {83, G::cycle, kBoth, 0, S::yes, "X Y Z P Q ER EH EF EP ES",
+     N_("peck drilling with chip clearing")},
     {84, G::cycle, kBoth, kBoth, S::yes, "X Y Z K ER EH EF EK", N_("tapping cycle")},
     {85, G::cycle, kBoth, kBoth, S::yes, "X Y Z ER EH EF", N_("boring cycle")},
     {86, G::cycle, kMill, 0, S::yes, "X Y Z ER EH EC EP", N_("boring with indexed spindle stop")},
@@ -78,17 +86,20 @@ constexpr GCode kG[] = {
     {89, G::cycle, kBoth, kBoth, S::yes, "X Y Z ER EH EF", N_("boring with dwell")},
     {90, G::dist, kBoth, 0, S::yes, "", N_("absolute programming")},
     {91, G::dist, kBoth, 0, S::yes, "", N_("incremental programming")},
-    {92, G::none, kBoth, 0, S::yes, "X Y Z U V W A B C S R", N_("origin preset (axes), spindle limit (S), tangential feed (R)")},
+    {92, G::none, kBoth, 0, S::yes, "X Y Z U V W A B C S R",
+     N_("origin preset (axes), spindle limit (S), tangential feed (R)")},
     {93, G::feed, kMill, 0, S::yes, "F", N_("inverse-time feed")},
     {94, G::feed, kBoth, 0, S::yes, "F", N_("feed per minute")},
     {95, G::feed, kBoth, kMill, S::yes, "F", N_("feed per revolution")},
     {96, G::spindle, kLathe, 0, S::yes, "X S", N_("constant surface speed, m/min")},
     {97, G::spindle, kBoth, 0, S::yes, "S", N_("spindle speed in rev/min")},
-    {98, G::none, kLathe, 0, S::ignored, "X", N_("start X value for C-axis interpolation (stored only)")},
+    {98, G::none, kLathe, 0, S::ignored, "X",
+     N_("start X value for C-axis interpolation (stored only)")},
     {104, G::none, kMill, kBoth, S::option, "", N_("curve smoothing in space (an option)")},
     {110, G::none, kLathe, 0, S::ignored, "", N_("optimisation of handling moves")},
     {997, G::none, kBoth, kBoth, S::ignored, "", N_("execute the functions stored under G999")},
-    {998, G::none, kBoth, kBoth, S::ignored, "", N_("validate blocks and functions stored under G999")},
+    {998, G::none, kBoth, kBoth, S::ignored, "",
+     N_("validate blocks and functions stored under G999")},
     {999, G::none, kBoth, kBoth, S::ignored, "", N_("suspend execution, force concatenation")},
 };
 
@@ -130,10 +141,14 @@ struct OwnTable {
                 size_t sp = a.find(' ');
                 std::string_view w = a.substr(0, sp);
                 a = sp == std::string_view::npos ? std::string_view{} : a.substr(sp + 1);
-                if (w.size() == 1) own[i].set(addr1(w[0]));
-                else if (w[0] == 'E') own[i].set(addrE(w[1]));
-                else if (w[0] == 'N') own[i].set(addrN(w[1]));
-                else if (w[0] == 'L') own[i].set(addrL(w[1]));
+                if (w.size() == 1)
+                    own[i].set(addr1(w[0]));
+                else if (w[0] == 'E')
+                    own[i].set(addrE(w[1]));
+                else if (w[0] == 'N')
+                    own[i].set(addrN(w[1]));
+                else if (w[0] == 'L')
+                    own[i].set(addrL(w[1]));
             }
         }
     }
@@ -153,8 +168,12 @@ const MCode* find_m(int number) {
     return nullptr;
 }
 
-std::span<const GCode> all_g() { return kG; }
-std::span<const MCode> all_m() { return kM; }
+std::span<const GCode> all_g() {
+    return kG;
+}
+std::span<const MCode> all_m() {
+    return kM;
+}
 
 bool g_owns(const GCode& g, Addr a) {
     static const OwnTable t;

@@ -41,8 +41,8 @@ enum class Support : uint8_t {
 struct GCode {
     int16_t number;
     Group group;
-    uint8_t machines;    // MachineKinds
-    uint8_t starred;     // MachineKinds on which it is NUM 1040/1060 only (starred)
+    uint8_t machines;  // MachineKinds
+    uint8_t starred;   // MachineKinds on which it is NUM 1040/1060 only (starred)
     Support support;
     std::string_view args;  // addresses the function owns, space separated ("X Z S R")
     std::string_view text;  // English, a msgid: shown with tr(std::string(text).c_str())

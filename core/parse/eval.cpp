@@ -7,8 +7,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "core/numfmt.hpp"
 #include "core/i18n.hpp"
+#include "core/numfmt.hpp"
 
 namespace pupitre {
 
@@ -23,7 +23,8 @@ int eval_operand(const Operand& o, const LVars& l, EAccess& e, double& out, std:
                 return 91;
             }
             out = l.v[size_t(o.index)];
-            if (!l.written.test(size_t(o.index))) l.unset_read.set(size_t(o.index)), l.any_unset_read = true;
+            if (!l.written.test(size_t(o.index)))
+                l.unset_read.set(size_t(o.index)), l.any_unset_read = true;
             break;
         case Operand::EParam: {
             int64_t raw;
@@ -37,10 +38,11 @@ int eval_operand(const Operand& o, const LVars& l, EAccess& e, double& out, std:
                 return 91;
             }
             double n = l.v[size_t(o.index)];
-            if (!l.written.test(size_t(o.index))) l.unset_read.set(size_t(o.index)), l.any_unset_read = true;
+            if (!l.written.test(size_t(o.index)))
+                l.unset_read.set(size_t(o.index)), l.any_unset_read = true;
             if (n < 0 || n > 99999 || n != std::floor(n)) {
-                why = strf(tr("E parameter number %s taken from L%d is not an E number"), std::to_string(n).c_str(),
-                           o.index);
+                why = strf(tr("E parameter number %s taken from L%d is not an E number"),
+                           std::to_string(n).c_str(), o.index);
                 return 91;
             }
             int64_t raw;
@@ -63,12 +65,23 @@ constexpr double kDeg = std::numbers::pi / 180.0;
 int apply_prefix(const Term& t, double& v, std::string& why) {
     for (int i = int(t.nprefix) - 1; i >= 0; --i) {
         switch (t.prefix[i]) {
-            case '-': v = -v; break;
-            case '+': break;
-            case 'S': v = std::sin(v * kDeg); break;
-            case 'C': v = std::cos(v * kDeg); break;
-            case 'A': v = std::atan(v) / kDeg; break;
-            case 'T': v = std::trunc(v); break;
+            case '-':
+                v = -v;
+                break;
+            case '+':
+                break;
+            case 'S':
+                v = std::sin(v * kDeg);
+                break;
+            case 'C':
+                v = std::cos(v * kDeg);
+                break;
+            case 'A':
+                v = std::atan(v) / kDeg;
+                break;
+            case 'T':
+                v = std::trunc(v);
+                break;
             case 'R':
                 if (v < 0) {
                     why = strf(tr("square root of a negative number (%s)"), fixed3(v).c_str());
@@ -98,10 +111,18 @@ int eval_expr(const Block& b, Expr x, const LVars& l, EAccess& e, double& out, s
         if (int rc = eval_operand(t.v, l, e, v, why)) return rc;
         if (int rc = apply_prefix(t, v, why)) return rc;
         switch (t.op) {
-            case '=': acc = v; break;
-            case '+': acc += v; break;
-            case '-': acc -= v; break;
-            case '*': acc *= v; break;
+            case '=':
+                acc = v;
+                break;
+            case '+':
+                acc += v;
+                break;
+            case '-':
+                acc -= v;
+                break;
+            case '*':
+                acc *= v;
+                break;
             case '/':
                 if (v == 0) {
                     why = tr("division by zero");
@@ -109,8 +130,12 @@ int eval_expr(const Block& b, Expr x, const LVars& l, EAccess& e, double& out, s
                 }
                 acc /= v;
                 break;
-            case '&': acc = double(as_int32(acc) & as_int32(v)); break;
-            case '!': acc = double(as_int32(acc) | as_int32(v)); break;
+            case '&':
+                acc = double(as_int32(acc) & as_int32(v));
+                break;
+            case '!':
+                acc = double(as_int32(acc) | as_int32(v));
+                break;
         }
     }
     if (!std::isfinite(acc)) {
@@ -124,13 +149,20 @@ int eval_expr(const Block& b, Expr x, const LVars& l, EAccess& e, double& out, s
 bool compare(Cmp c, double a, double b) {
     double ra = std::round(a * 1e6), rb = std::round(b * 1e6);
     switch (c) {
-        case Cmp::eq: return ra == rb;
-        case Cmp::ne: return ra != rb;
-        case Cmp::lt: return ra < rb;
-        case Cmp::le: return ra <= rb;
-        case Cmp::gt: return ra > rb;
-        case Cmp::ge: return ra >= rb;
-        case Cmp::none: return true;
+        case Cmp::eq:
+            return ra == rb;
+        case Cmp::ne:
+            return ra != rb;
+        case Cmp::lt:
+            return ra < rb;
+        case Cmp::le:
+            return ra <= rb;
+        case Cmp::gt:
+            return ra > rb;
+        case Cmp::ge:
+            return ra >= rb;
+        case Cmp::none:
+            return true;
     }
     return false;
 }

@@ -23,7 +23,7 @@ struct LVars {
 };
 
 class EAccess {
-public:
+  public:
     virtual ~EAccess() = default;
     // Both return 0 or a NUM error number, with `why` filled.
     virtual int read_e(int n, int64_t& out, std::string& why) = 0;

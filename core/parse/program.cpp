@@ -1,13 +1,14 @@
 // Program memory: splitting files into % programs, label index.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/parse/program.hpp"
-#include "core/i18n.hpp"
 
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+
+#include "core/i18n.hpp"
 
 namespace pupitre {
 
@@ -106,9 +107,8 @@ bool header_line(std::string_view line, int& number, int& index, std::string& ti
     size_t open = line.find('(', i);
     if (open != std::string_view::npos) {
         size_t close = line.find(')', open);
-        std::string_view t = line.substr(open + 1, close == std::string_view::npos
-                                                       ? std::string_view::npos
-                                                       : close - open - 1);
+        std::string_view t = line.substr(
+            open + 1, close == std::string_view::npos ? std::string_view::npos : close - open - 1);
         while (!t.empty() && t.front() == ' ') t.remove_prefix(1);
         while (!t.empty() && (t.back() == ' ' || t.back() == '\r')) t.remove_suffix(1);
         title = std::string(t);
@@ -182,7 +182,13 @@ std::vector<std::unique_ptr<ProgramText>> split_programs(
 bool ProgramMemory::load_text(std::string name, std::string text, Diag& d) {
     // A NUL byte is never part of a program: refuse binary input up front.
     if (text.find('\0') != std::string::npos) {
-        d = Diag{Severity::error, err::kNotText, name, -1, 0, -1, 0,
+        d = Diag{Severity::error,
+                 err::kNotText,
+                 name,
+                 -1,
+                 0,
+                 -1,
+                 0,
                  tr("not a text file (NUL byte found)")};
         return false;
     }
@@ -191,15 +197,17 @@ bool ProgramMemory::load_text(std::string name, std::string text, Diag& d) {
     auto shared = std::make_shared<std::string>(std::move(text));
     std::vector<std::unique_ptr<ProgramText>> found = split_programs(name, shared);
     if (found.empty()) {
-        d = Diag{Severity::error, err::kNoProgram, name, -1, 0, -1, 0, tr("no program in the file")};
+        d = Diag{
+            Severity::error, err::kNoProgram, name, -1, 0, -1, 0, tr("no program in the file")};
         return false;
     }
     for (auto& p : found) {
         if (const ProgramText* old = find(p->number)) {
-            warnings_.push_back(Diag{Severity::warning, err::wDuplicateProgram, p->file, p->number,
-                                     p->first_line - 1, -1, 0,
-                                     strf(tr("program %%%d is already loaded from %s; this copy is ignored"),
-                                          p->number, old->file.c_str())});
+            warnings_.push_back(
+                Diag{Severity::warning, err::wDuplicateProgram, p->file, p->number,
+                     p->first_line - 1, -1, 0,
+                     strf(tr("program %%%d is already loaded from %s; this copy is ignored"),
+                          p->number, old->file.c_str())});
             continue;
         }
         progs_.push_back(std::move(p));
@@ -228,7 +236,8 @@ ProgramMemory ProgramMemory::clone() const {
     std::vector<std::pair<const std::string*, std::shared_ptr<std::string>>> copies;
     for (const auto& p : progs_) {
         auto q = std::make_unique<ProgramText>(*p);
-        auto it = std::find_if(copies.begin(), copies.end(), [&](const auto& c) { return c.first == p->text.get(); });
+        auto it = std::find_if(copies.begin(), copies.end(),
+                               [&](const auto& c) { return c.first == p->text.get(); });
         if (it == copies.end()) {
             copies.push_back({p->text.get(), std::make_shared<std::string>(*p->text)});
             it = copies.end() - 1;
@@ -335,7 +344,13 @@ bool ProgramMemory::replace(int number, std::string name, std::string text, Diag
     if (!fresh.load_text(name, std::move(text), d)) return false;
     auto& got = fresh.progs_;
     if (got.empty() || got.front()->number != number) {
-        d = Diag{Severity::error, err::kNoProgram, name, -1, 0, -1, 0,
+        d = Diag{Severity::error,
+                 err::kNoProgram,
+                 name,
+                 -1,
+                 0,
+                 -1,
+                 0,
                  strf(tr("the text does not start with %%%d"), number)};
         return false;
     }

@@ -21,20 +21,20 @@ struct Label {
 // One % program. Blocks are parsed when executed, so a million-block program costs
 // its text plus a few bytes a labelled line, and only if it jumps.
 struct ProgramText {
-    int number = 0;       // %number; 0 for a file with no % header
-    int index = -1;       // %number.index, -1 if none
-    std::string title;    // the header comment
-    std::string file;     // where it was loaded from
+    int number = 0;                     // %number; 0 for a file with no % header
+    int index = -1;                     // %number.index, -1 if none
+    std::string title;                  // the header comment
+    std::string file;                   // where it was loaded from
     std::shared_ptr<std::string> text;  // the whole file (G76 rewrites value fields in place)
-    size_t begin = 0;     // first byte of the first block line
-    size_t end = 0;       // one past the last byte of the program
-    int first_line = 1;   // line number at `begin`
+    size_t begin = 0;                   // first byte of the first block line
+    size_t end = 0;                     // one past the last byte of the program
+    int first_line = 1;                 // line number at `begin`
 
     std::string_view body() const { return std::string_view(*text).substr(begin, end - begin); }
     // First block (in text order) whose label is n; nullptr if none.
     const Label* find_label(long n) const;
 
-private:
+  private:
     friend class ProgramMemory;
     mutable std::vector<Label> labels_;  // sorted by (n, line)
     mutable bool indexed_ = false;
@@ -55,7 +55,7 @@ struct Splice {
 };
 
 class ProgramMemory {
-public:
+  public:
     // Loads every % program of a file. Returns false and fills `d` when the file
     // cannot be read or is not text.
     bool load_file(const std::string& path, Diag& d);
@@ -94,7 +94,7 @@ public:
     const std::vector<std::unique_ptr<ProgramText>>& programs() const { return progs_; }
     std::vector<Diag>& warnings() { return warnings_; }
 
-private:
+  private:
     std::vector<std::unique_ptr<ProgramText>> progs_;
     std::vector<std::unique_ptr<ProgramText>> removed_;  // G76-: kept for the pointers
     std::vector<int> changed_;

@@ -4,15 +4,17 @@
 
 #include <cmath>
 
-#include "core/numfmt.hpp"
 #include "core/i18n.hpp"
+#include "core/numfmt.hpp"
 
 namespace pupitre::setting {
 
 namespace {
 
 // Zero below half a micron, never "-0.000".
-std::string num(double v) { return fixed3_zeroed(v, 5e-7); }
+std::string num(double v) {
+    return fixed3_zeroed(v, 5e-7);
+}
 
 // " - NAME value", or nothing for a zero term: the message line is short.
 std::string term(const char* name, double v) {
@@ -23,7 +25,9 @@ std::string term(const char* name, double v) {
 // The lathe's X is shown as a diameter (OM, OP, the surface typed) but PREF,
 // DEC1, DEC3, G59 and the gauges are radii (000:1187-1211): the formula shows
 // the diameters as shown, halved, and names the result a radius.
-bool diameter_x(const Interpreter& in, int axis) { return axis == X && in.to_display(X, 1.0) != 1.0; }
+bool diameter_x(const Interpreter& in, int axis) {
+    return axis == X && in.to_display(X, 1.0) != 1.0;
+}
 
 std::string om_term(const Interpreter& in, int axis) {
     double om = in.machine_pos()[size_t(axis)];
@@ -31,7 +35,8 @@ std::string om_term(const Interpreter& in, int axis) {
 }
 
 std::string surface_term(const Interpreter& in, int axis, double typed) {
-    // TRANSLATORS: a term of the touch-off formula on the message line: the surface the operator typed.
+    // TRANSLATORS: a term of the touch-off formula on the message line: the surface the operator
+    // typed.
     const char* surface = tr("surface");
     return diameter_x(in, axis) ? std::string(" - ") + surface + " \u00f8" + num(typed) + "/2"
                                 : std::string(" - ") + surface + " " + num(typed);
@@ -45,7 +50,9 @@ std::string result_name(const Interpreter& in, const std::string& name, int axis
 std::string frame_problem(const Interpreter& in) {
     const Frames& f = in.frames();
     if (f.mirror.any() || f.scale_on || std::abs(f.ed) > 1e-12)
-        return tr("a mirror (G51), a scale factor (G74) or an angular offset (ED) is in force: RAZ first");
+        return tr(
+            "a mirror (G51), a scale factor (G74) or an angular offset (ED) is in force: RAZ "
+            "first");
     if (f.g53) return tr("G53 is in force (PREF and DEC1 suspended): RAZ first");
     return {};
 }
@@ -72,7 +79,8 @@ std::string touch_off(const Interpreter& in, int axis, double surface, Touch& t)
     t.name = std::string("PREF.") + kAxisNames[a];
     t.before = f.pref[a];
     t.after = touch_pref(in.machine_pos()[a], f.g59[a], f.dec1[a], f.dec3[a], gauge, s);
-    t.formula = result_name(in, t.name, axis) + " = " + om_term(in, axis) + term("DEC1", f.dec1[a]) +
+    t.formula = result_name(in, t.name, axis) + " = " + om_term(in, axis) +
+                term("DEC1", f.dec1[a]) +
                 // TRANSLATORS: a term of the touch-off formula on the message line: the tool gauge.
                 term("DEC3", f.dec3[a]) + term("G59", f.g59[a]) + term(tr("gauge"), gauge) +
                 surface_term(in, axis, surface) + " = " + num(t.after);
@@ -81,7 +89,8 @@ std::string touch_off(const Interpreter& in, int axis, double surface, Touch& t)
 
 std::string measure(const Interpreter& in, int d, int axis, double surface, Touch& t) {
     const MachineProfile& m = in.machine();
-    if (d < 1 || d > m.correctors) return strf(tr("corrector must be D1 to D%d"), int(m.correctors));
+    if (d < 1 || d > m.correctors)
+        return strf(tr("corrector must be D1 to D%d"), int(m.correctors));
     if (!m.has(axis)) return strf(tr("the machine has no %c axis"), kAxisNames[size_t(axis)]);
     if (!m.lathe && axis != in.modal().tool_axis)
         return strf(tr("on a machining centre a gauge is measured along the tool axis (%c)"),
@@ -102,9 +111,11 @@ std::string measure(const Interpreter& in, int d, int axis, double surface, Touc
     double total = measure_gauge(in.machine_pos()[a], f.g59[a], f.pref[a], f.dec1[a], f.dec3[a], s);
     if (!m.lathe && in.modal().tool_axis_neg) total = -total;
     t.after = total - dyn;
-    t.formula = result_name(in, t.name, axis) + " = " + om_term(in, axis) + term("PREF", f.pref[a]) +
-                term("DEC1", f.dec1[a]) + term("DEC3", f.dec3[a]) + term("G59", f.g59[a]) +
-                // TRANSLATORS: a term of the measure formula on the message line: the dynamic correction (DX, DZ, DL).
+    t.formula = result_name(in, t.name, axis) + " = " + om_term(in, axis) +
+                term("PREF", f.pref[a]) + term("DEC1", f.dec1[a]) + term("DEC3", f.dec3[a]) +
+                term("G59", f.g59[a]) +
+                // TRANSLATORS: a term of the measure formula on the message line: the dynamic
+                // correction (DX, DZ, DL).
                 surface_term(in, axis, surface) + term(tr("dynamic"), dyn) + " = " + num(t.after);
     return {};
 }

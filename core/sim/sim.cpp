@@ -3,11 +3,12 @@
 // feed hold, RAZ, single block, overrides, block search, IMD, JOG, POM).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/sim/sim.hpp"
-#include "core/geometry/geometry.hpp"
-#include "core/i18n.hpp"
 
 #include <algorithm>
 #include <cmath>
+
+#include "core/geometry/geometry.hpp"
+#include "core/i18n.hpp"
 
 namespace pupitre {
 
@@ -26,14 +27,21 @@ struct ModeInfo {
 // `english` and `how` are msgids: mode_english and mode_how return the English,
 // the pages show it with tr().
 constexpr ModeInfo kModes[] = {
-    {Mode::automatic, "auto", "AUTO", N_("continuous run"), N_("Cycle Start (F9) runs the selected program")},
+    {Mode::automatic, "auto", "AUTO", N_("continuous run"),
+     N_("Cycle Start (F9) runs the selected program")},
     {Mode::single, "seq", "SEQ", N_("single block"), N_("Cycle Start (F9) runs one block")},
-    {Mode::dry, "dry", "DRY RUN", N_("dry run: feeds at the machine maximum"), N_("Cycle Start (F9) runs it")},
-    {Mode::test, "test", "TEST", N_("program check, no motion"), N_("Cycle Start (F9) checks the program")},
-    {Mode::rns, "rns", "RNS", N_("block search and resume"), N_("type the N to find, then Cycle Start (F9)")},
-    {Mode::imd, "imd", "IMD", N_("manual data input"), N_("type a block, Enter, then Cycle Start (F9)")},
-    {Mode::jog, "jog", "JOG", N_("continuous jog"), N_("hold an arrow key to move an axis (keys on OP)")},
-    {Mode::inc, "inc", "INC", N_("incremental jog"), N_("an arrow key moves one step (keys on OP)")},
+    {Mode::dry, "dry", "DRY RUN", N_("dry run: feeds at the machine maximum"),
+     N_("Cycle Start (F9) runs it")},
+    {Mode::test, "test", "TEST", N_("program check, no motion"),
+     N_("Cycle Start (F9) checks the program")},
+    {Mode::rns, "rns", "RNS", N_("block search and resume"),
+     N_("type the N to find, then Cycle Start (F9)")},
+    {Mode::imd, "imd", "IMD", N_("manual data input"),
+     N_("type a block, Enter, then Cycle Start (F9)")},
+    {Mode::jog, "jog", "JOG", N_("continuous jog"),
+     N_("hold an arrow key to move an axis (keys on OP)")},
+    {Mode::inc, "inc", "INC", N_("incremental jog"),
+     N_("an arrow key moves one step (keys on OP)")},
     {Mode::pom, "pom", "POM", N_("homing"), N_("Cycle Start (F9) homes the axes")},
 };
 
@@ -81,18 +89,26 @@ bool parse_mode(std::string_view word, Mode& out) {
 
 std::string_view state_name(RunState s) {
     switch (s) {
-        case RunState::idle: return "READY";
-        case RunState::running: return "CYCLE";
-        case RunState::hold: return "HOLD";
-        case RunState::block: return "BLOCK";
-        case RunState::stopped: return "STOP";
-        case RunState::ended: return "END";
-        case RunState::alarm: return "ALARM";
+        case RunState::idle:
+            return "READY";
+        case RunState::running:
+            return "CYCLE";
+        case RunState::hold:
+            return "HOLD";
+        case RunState::block:
+            return "BLOCK";
+        case RunState::stopped:
+            return "STOP";
+        case RunState::ended:
+            return "END";
+        case RunState::alarm:
+            return "ALARM";
     }
     return "?";
 }
 
-Sim::Sim(const MachineProfile& m, ProgramMemory& mem) : m_(m), mem_(mem), null_(std::make_unique<NullSink>()) {
+Sim::Sim(const MachineProfile& m, ProgramMemory& mem)
+    : m_(m), mem_(mem), null_(std::make_unique<NullSink>()) {
     RunOptions o;
     o.require_homing = m.homing_required;
     MachineSink& sink = *this;  // a private base: converted here, where it is accessible
@@ -112,7 +128,8 @@ bool Sim::set_mode(Mode m, std::string& why) {
     }
     mode_ = m;
     if (state_ == RunState::ended) state_ = RunState::idle;
-    if (m == Mode::rns && search_n_ < 0) message_ = tr("RNS: type the N number of the block to search, then Cycle Start");
+    if (m == Mode::rns && search_n_ < 0)
+        message_ = tr("RNS: type the N number of the block to search, then Cycle Start");
     return true;
 }
 
@@ -174,7 +191,8 @@ bool Sim::cycle_start(std::string& why) {
         case RunState::alarm:
             why = strf(tr("alarm %d is active: RAZ first"), alarms_.back().diag.code);
             return false;
-        case RunState::running: return true;
+        case RunState::running:
+            return true;
         case RunState::hold:
         case RunState::block:
         case RunState::stopped:
@@ -216,7 +234,9 @@ bool Sim::cycle_start(std::string& why) {
             }
             in_->start_imd(imd_.get());
             break;
-        case Mode::pom: start_pom(); return true;
+        case Mode::pom:
+            start_pom();
+            return true;
         case Mode::jog:
         case Mode::inc:
             why = tr("JOG/INC: move an axis with the jog keys or :jog AXIS DIST");
@@ -249,7 +269,8 @@ void Sim::start_test() {
     test_.reset();
     test_mem_ = std::make_unique<ProgramMemory>(mem_.clone());
     lc_ = LineCache{};
-    test_ = std::make_unique<Interpreter>(m_, *test_mem_, path_ ? static_cast<MachineSink&>(*path_) : *null_, o);
+    test_ = std::make_unique<Interpreter>(m_, *test_mem_,
+                                          path_ ? static_cast<MachineSink&>(*path_) : *null_, o);
     for (int d = 0; d < 256; ++d) test_->corrector(d) = in_->corrector(d);
     test_->frames_mut() = in_->frames();
     test_->start(selected_);
@@ -323,7 +344,8 @@ bool Sim::jog(int axis, double delta, std::string& why) {
         return false;
     }
     if ((in_cycle() && !manual_) || state_ == RunState::alarm) {
-        why = state_ == RunState::alarm ? tr("an alarm is active: RAZ first") : tr("a program is interrupted: RAZ before jogging");
+        why = state_ == RunState::alarm ? tr("an alarm is active: RAZ first")
+                                        : tr("a program is interrupted: RAZ before jogging");
         return false;
     }
     if (!m_.has(axis)) {
@@ -379,10 +401,17 @@ void Sim::push(Ev e) {
     if (searching_) {
         // RNS: the moves are not made; the state they leave is rebuilt.
         switch (e.kind) {
-            case Ev::spindle: sp_ = e.sp; break;
-            case Ev::coolant: m7_ = e.a, m8_ = e.b; break;
-            case Ev::tool: tool_ = e.a, corr_ = e.b; break;
-            default: break;
+            case Ev::spindle:
+                sp_ = e.sp;
+                break;
+            case Ev::coolant:
+                m7_ = e.a, m8_ = e.b;
+                break;
+            case Ev::tool:
+                tool_ = e.a, corr_ = e.b;
+                break;
+            default:
+                break;
         }
         return;
     }
@@ -449,8 +478,10 @@ double Sim::duration(const Ev& e) const {
                 return e.m.length / m_.max_feed * 60.0;  // DRY RUN: feeds at the maximum
             return e.m.seconds;
         case Ev::dwell:
-        case Ev::tool: return e.seconds;
-        default: return 0;
+        case Ev::tool:
+            return e.seconds;
+        default:
+            return 0;
     }
 }
 
@@ -480,7 +511,8 @@ bool Sim::begin_next() {
             if (path_ && e.kind == Ev::move && !manual_ && e.loc.line > 0) {
                 const auto& ew = in_->e_written();  // E31000/E31001: the drawing's line types
                 auto r = ew.find(31000), f = ew.find(31001);
-                path_->set_line_types(r == ew.end() ? -1 : int(r->second), f == ew.end() ? -1 : int(f->second));
+                path_->set_line_types(r == ew.end() ? -1 : int(r->second),
+                                      f == ew.end() ? -1 : int(f->second));
                 path_->add(e.m);
             }
             break;
@@ -488,12 +520,16 @@ bool Sim::begin_next() {
             sp_ = e.sp;
             if (shop_) shop_->spindle(e.sp);
             break;
-        case Ev::coolant: m7_ = e.a, m8_ = e.b; break;
+        case Ev::coolant:
+            m7_ = e.a, m8_ = e.b;
+            break;
         case Ev::tool:
             tool_ = e.a, corr_ = e.b;
             if (shop_) shop_->tool(e.loc, e.a, e.b, 0, true);
             break;
-        case Ev::message: message_ = e.text; break;
+        case Ev::message:
+            message_ = e.text;
+            break;
         case Ev::stop:
             state_ = RunState::stopped;
             message_ = e.a == 88 ? std::string(tr("G88: operator check; Cycle Start goes on"))
@@ -502,9 +538,11 @@ bool Sim::begin_next() {
         case Ev::end:
             state_ = RunState::ended;
             if (e.a != 2 && mode_ == Mode::imd)
-                message_ = strf(trn("IMD done (%ld block): type the next block, or F8 for another mode",
-                                    "IMD done (%ld blocks): type the next block, or F8 for another mode", blocks_),
-                                blocks_);
+                message_ =
+                    strf(trn("IMD done (%ld block): type the next block, or F8 for another mode",
+                             "IMD done (%ld blocks): type the next block, or F8 for another mode",
+                             blocks_),
+                         blocks_);
             if (e.a == 2) {
                 // TRANSLATORS: the second %s counts the blocks run ("%ld blocks").
                 message_ = strf(tr("M02: end of program %%%d, %s, cycle time %s"), e.loc.prog,
@@ -512,11 +550,13 @@ bool Sim::begin_next() {
                                 fmt_seconds(run_seconds_).c_str());
                 // The warnings the run printed on the way must not vanish with it.
                 if (run_warning_count_ > 0)
-                    message_ += strf(trn("; %zu warning (F7 ALARM)", "; %zu warnings (F7 ALARM)", run_warning_count_),
+                    message_ += strf(trn("; %zu warning (F7 ALARM)", "; %zu warnings (F7 ALARM)",
+                                         run_warning_count_),
                                      run_warning_count_);
             }
             break;
-        case Ev::dwell: break;
+        case Ev::dwell:
+            break;
     }
     return true;
 }
@@ -563,7 +603,8 @@ void Sim::interpolate() {
     double f = dur_ > 0 ? std::clamp(t_ / dur_, 0.0, 1.0) : 1.0;
     Axes p = op();
     for (int a = 0; a < kAxes; ++a)
-        om_[size_t(a)] = p[size_t(a)] + op_off0_[size_t(a)] + (op_off1_[size_t(a)] - op_off0_[size_t(a)]) * f;
+        om_[size_t(a)] =
+            p[size_t(a)] + op_off0_[size_t(a)] + (op_off1_[size_t(a)] - op_off0_[size_t(a)]) * f;
 }
 
 double Sim::queued_time() const {
@@ -583,8 +624,10 @@ Axes Sim::to_go() const {
 double Sim::feed() const {
     if (!cur_ || cur_->kind != Ev::move || state_ != RunState::running) return 0;
     double f = cur_->m.feed;
-    if (mode_ == Mode::dry && cur_->feed_move && !manual_) f = m_.max_feed;
-    else if (in_->modal().feed_mode == 95 && cur_->m.rpm > 0) f = f / cur_->m.rpm * rpm();  // mm/rev follows the spindle
+    if (mode_ == Mode::dry && cur_->feed_move && !manual_)
+        f = m_.max_feed;
+    else if (in_->modal().feed_mode == 95 && cur_->m.rpm > 0)
+        f = f / cur_->m.rpm * rpm();  // mm/rev follows the spindle
     return f * rate(*cur_);
 }
 
@@ -611,8 +654,7 @@ void Sim::raise_from_interp() {
         if (x.is_error()) {
             alarms_.push_back(Alarm{x, clock_});
             if (path_) path_->add_error(x);
-        }
-        else {
+        } else {
             message_ = strf(tr("warning %d: %s"), x.code, x.detail.c_str());
             if (run_warnings_.size() < kMaxRunWarnings) run_warnings_.push_back(x);
             ++run_warning_count_;
@@ -629,8 +671,9 @@ void Sim::rns_found(int next_line) {
     rejoin.m.seconds = 0;
     for (int a = 0; a < kAxes; ++a)
         if (m_.has(a) && m_.axes[size_t(a)].rapid > 0)
-            rejoin.m.seconds = std::max(rejoin.m.seconds, std::abs(rejoin.m.to_mach[size_t(a)] - om_[size_t(a)]) /
-                                                              m_.axes[size_t(a)].rapid * 60.0);
+            rejoin.m.seconds =
+                std::max(rejoin.m.seconds, std::abs(rejoin.m.to_mach[size_t(a)] - om_[size_t(a)]) /
+                                               m_.axes[size_t(a)].rapid * 60.0);
     rejoin.m.to_prog = in_->program_pos();
     rejoin.feed_move = false;
     mode_ = Mode::automatic;
@@ -671,7 +714,8 @@ bool Sim::step_interp(long& budget) {
     raise_from_interp();
     switch (r) {
         case StepResult::running:
-        case StepResult::stopped: break;
+        case StepResult::stopped:
+            break;
         case StepResult::ended:
             interp_done_ = true;
             if (searching_) {
@@ -707,11 +751,12 @@ void Sim::test_advance(long budget) {
             int warnings = 0;
             for (const Diag& d : test_->diags()) warnings += !d.is_error();
             // TRANSLATORS: the %s count the blocks ("%ld blocks") and the warnings ("%d warnings").
-            message_ = strf(tr("TEST %%%d: no error, %s, %s, cycle time %s"), selected_,
-                            strf(trn("%ld blocks", "%ld blocks", test_->blocks()), test_->blocks()).c_str(),
-                            // TRANSLATORS: the English says "warnings" whatever the number.
-                            strf(trn("%d warnings", "%d warnings", warnings), warnings).c_str(),
-                            fmt_seconds(test_->seconds()).c_str());
+            message_ = strf(
+                tr("TEST %%%d: no error, %s, %s, cycle time %s"), selected_,
+                strf(trn("%ld blocks", "%ld blocks", test_->blocks()), test_->blocks()).c_str(),
+                // TRANSLATORS: the English says "warnings" whatever the number.
+                strf(trn("%d warnings", "%d warnings", warnings), warnings).c_str(),
+                fmt_seconds(test_->seconds()).c_str());
             state_ = RunState::ended;
         }
     }
@@ -757,7 +802,8 @@ std::string_view Sim::line_of(const ProgramText* p, int line) const {
     std::string_view all = *p->text;
     // Both memories' generations only grow; a new TEST copy resets the cache.
     const uint64_t generation = mem_.generation() + (test_mem_ ? test_mem_->generation() : 0);
-    if (lc_.p != p || lc_.generation != generation) lc_ = LineCache{p, p->first_line, p->begin, generation};
+    if (lc_.p != p || lc_.generation != generation)
+        lc_ = LineCache{p, p->first_line, p->begin, generation};
     while (lc_.line > line) {  // backwards from the cached line, not from the top
         size_t prev = lc_.offset >= 2 ? all.rfind('\n', lc_.offset - 2) : std::string_view::npos;
         lc_.offset = prev == std::string_view::npos || prev + 1 < p->begin ? p->begin : prev + 1;

@@ -19,20 +19,20 @@ namespace pupitre {
 // The NUM operating modes (the console's mode key). MODIF and EDIT belong to
 // the editor.
 enum class Mode { automatic, single, dry, test, rns, imd, jog, inc, pom };
-std::string_view mode_name(Mode m);     // "AUTO", "SEQ", "DRY RUN", …
-std::string_view mode_english(Mode m);  // "continuous", "single block", …
-std::string_view mode_how(Mode m);      // what the operator does in it
-Mode next_mode(Mode m, int dir);        // the mode key's order (F8: +1, S-F8: -1)
+std::string_view mode_name(Mode m);                 // "AUTO", "SEQ", "DRY RUN", …
+std::string_view mode_english(Mode m);              // "continuous", "single block", …
+std::string_view mode_how(Mode m);                  // what the operator does in it
+Mode next_mode(Mode m, int dir);                    // the mode key's order (F8: +1, S-F8: -1)
 bool parse_mode(std::string_view word, Mode& out);  // auto|seq|dry|test|rns|imd|jog|inc|pom
 
 enum class RunState {
-    idle,      // nothing in cycle
-    running,   // cycle start given: blocks are executed and animated
-    hold,      // feed hold: motion frozen mid-move, cycle start resumes
-    block,     // SEQ: a block is done, cycle start runs the next one
-    stopped,   // M00 / M01 / G88 wait: cycle start resumes
-    ended,     // M02, end of an IMD block, end of a POM or a jog
-    alarm,     // an error stopped the run: RAZ acknowledges it
+    idle,     // nothing in cycle
+    running,  // cycle start given: blocks are executed and animated
+    hold,     // feed hold: motion frozen mid-move, cycle start resumes
+    block,    // SEQ: a block is done, cycle start runs the next one
+    stopped,  // M00 / M01 / G88 wait: cycle start resumes
+    ended,    // M02, end of an IMD block, end of a POM or a jog
+    alarm,    // an error stopped the run: RAZ acknowledges it
 };
 std::string_view state_name(RunState s);
 
@@ -42,7 +42,7 @@ struct Alarm {
 };
 
 class Sim final : private MachineSink {
-public:
+  public:
     Sim(const MachineProfile& m, ProgramMemory& mem);
     ~Sim();
 
@@ -99,16 +99,18 @@ public:
 
     // --- what the pages show ---
     RunState state() const { return state_; }
-    bool in_cycle() const { return state_ == RunState::running || state_ == RunState::hold ||
-                                   state_ == RunState::block || state_ == RunState::stopped; }
+    bool in_cycle() const {
+        return state_ == RunState::running || state_ == RunState::hold ||
+               state_ == RunState::block || state_ == RunState::stopped;
+    }
     const Axes& om() const { return om_; }   // machine position now (internal units)
-    Axes op() const;                          // program position now (internal units)
-    Axes to_go() const;                       // remaining of the current move (program units)
-    const Loc& loc() const { return loc_; }   // the block being shown
+    Axes op() const;                         // program position now (internal units)
+    Axes to_go() const;                      // remaining of the current move (program units)
+    const Loc& loc() const { return loc_; }  // the block being shown
     bool moving() const { return cur_ != nullptr; }
     int motion() const { return cur_ ? cur_->m.g : -1; }
-    double feed() const;                      // mm/min now, overrides applied
-    double rpm() const;                       // spindle rev/min now, override applied
+    double feed() const;  // mm/min now, overrides applied
+    double rpm() const;   // spindle rev/min now, override applied
     int spindle_dir() const { return sp_.dir; }
     int spindle_range() const { return sp_.range; }
     bool m7() const { return m7_; }
@@ -129,7 +131,7 @@ public:
     size_t run_warning_count() const { return run_warning_count_; }
     static constexpr size_t kMaxRunWarnings = 100;
     bool alarm_active() const { return state_ == RunState::alarm; }
-    const std::string& message() const { return message_; }     // $0 text or cycle news
+    const std::string& message() const { return message_; }  // $0 text or cycle news
     // Counts the workshop's news (a contact that stopped a jog): the console
     // says them even when the state did not change between two frames.
     uint64_t workshop_news() const { return workshop_news_; }
@@ -143,7 +145,7 @@ public:
     std::string_view line_of(const ProgramText* p, int line) const;
     void invalidate_text_cache() { lc_ = LineCache{}; }  // a program's text changed
 
-private:
+  private:
     struct Ev {
         enum Kind { move, dwell, tool, spindle, coolant, stop, message, end, home } kind = move;
         MoveEvent m;
@@ -181,13 +183,13 @@ private:
     void start_test();
     void start_pom();
     void rns_found(int next_line);
-    bool begin_next();              // takes the next event; false if none
-    void finish_current();          // the current event is done
+    bool begin_next();      // takes the next event; false if none
+    void finish_current();  // the current event is done
     double duration(const Ev& e) const;
-    double rate(const Ev& e) const; // simulated progress per second (overrides)
-    void interpolate();             // om_ from the current move and t_
+    double rate(const Ev& e) const;  // simulated progress per second (overrides)
+    void interpolate();              // om_ from the current move and t_
     void raise_from_interp();
-    bool step_interp(long& budget); // false: nothing more to run now
+    bool step_interp(long& budget);  // false: nothing more to run now
     void test_advance(long budget);
     void queue_move_to(const Axes& mach, int g, Loc loc, double feed, bool home_axis, int axis);
     void through_workshop(Ev& e);  // a move about to be made meets the part
@@ -197,7 +199,7 @@ private:
     ProgramMemory& mem_;
     std::unique_ptr<Interpreter> in_;
     std::unique_ptr<ProgramMemory> test_mem_;  // TEST's copy of the programs (before test_)
-    std::unique_ptr<Interpreter> test_;  // TEST mode: a second interpreter, no motion
+    std::unique_ptr<Interpreter> test_;        // TEST mode: a second interpreter, no motion
     std::unique_ptr<MachineSink> null_;
     Toolpath* path_ = nullptr;
     std::unique_ptr<workshop::Workshop> shop_;
@@ -208,23 +210,23 @@ private:
     int selected_ = -1;
     long search_n_ = -1;
     bool searching_ = false;
-    bool interp_done_ = true;  // the interpreter has nothing more to run
+    bool interp_done_ = true;     // the interpreter has nothing more to run
     bool pending_alarm_ = false;  // raised once the failing block's moves are shown
-    bool manual_ = false;      // the queue holds POM or JOG moves, not a program
-    bool seq_stop_ = false;    // SEQ: stop once this block's events are shown
+    bool manual_ = false;         // the queue holds POM or JOG moves, not a program
+    bool seq_stop_ = false;       // SEQ: stop once this block's events are shown
     size_t diag_seen_ = 0;
     std::vector<Diag> run_warnings_;
     size_t run_warning_count_ = 0;
-    Axes planned_{};           // machine position at the end of the queue
+    Axes planned_{};  // machine position at the end of the queue
     std::unique_ptr<ProgramText> imd_;
     std::deque<Ev> q_;
     std::unique_ptr<Ev> cur_;
-    double t_ = 0;          // simulated seconds into the current event
-    double dur_ = 0;        // its duration at 100 %
-    Axes om_{};             // shown machine position
+    double t_ = 0;                // simulated seconds into the current event
+    double dur_ = 0;              // its duration at 100 %
+    Axes om_{};                   // shown machine position
     Axes op_off0_{}, op_off1_{};  // OM - OP at the start and end of the current move
-    Axes op_{};             // shown program position (after the last finished move)
-    Axes op_from_{};        // program position at the start of the current move
+    Axes op_{};                   // shown program position (after the last finished move)
+    Axes op_from_{};              // program position at the start of the current move
     Loc loc_;
     SpindleEvent sp_;
     bool m7_ = false, m8_ = false;

@@ -23,7 +23,8 @@ void Sim::through_workshop(Ev& e) {
     if (!o.crashed && !o.touched) return;
     e.m = workshop::Workshop::truncated(e.m, o.stop, o.fraction);
     dur_ = duration(e);
-    for (int a = 0; a < kAxes; ++a) op_off1_[size_t(a)] = e.m.to_mach[size_t(a)] - e.m.to_prog[size_t(a)];
+    for (int a = 0; a < kAxes; ++a)
+        op_off1_[size_t(a)] = e.m.to_mach[size_t(a)] - e.m.to_prog[size_t(a)];
     q_.clear();
     planned_ = o.stop;
     in_->place(o.stop);
@@ -39,7 +40,8 @@ void Sim::through_workshop(Ev& e) {
 
 Diag Sim::workshop_diag(const workshop::Crash& c) const {
     Diag d = workshop::crash_diag(c);
-    const ProgramText* p = c.loc.prog > 0 || (imd_ && c.loc.line > 0) ? text_of(c.loc.prog) : nullptr;
+    const ProgramText* p =
+        c.loc.prog > 0 || (imd_ && c.loc.line > 0) ? text_of(c.loc.prog) : nullptr;
     d.file = p ? p->file : "-";
     return d;
 }

@@ -4,8 +4,8 @@
 
 #include <algorithm>
 #include <charconv>
-#include <cstdlib>
 #include <cmath>
+#include <cstdlib>
 
 #include "core/geometry/geometry.hpp"
 
@@ -15,9 +15,12 @@ using ClipperLib::IntPoint;
 using geometry::kPi;
 
 IntPoint to_int(Pt p) {
-    return IntPoint(ClipperLib::cInt(std::llround(p[0] / kUnit)), ClipperLib::cInt(std::llround(p[1] / kUnit)));
+    return IntPoint(ClipperLib::cInt(std::llround(p[0] / kUnit)),
+                    ClipperLib::cInt(std::llround(p[1] / kUnit)));
 }
-Pt to_mm(const IntPoint& p) { return {double(p.X) * kUnit, double(p.Y) * kUnit}; }
+Pt to_mm(const IntPoint& p) {
+    return {double(p.X) * kUnit, double(p.Y) * kUnit};
+}
 
 namespace {
 
@@ -85,7 +88,6 @@ double area_mm2(const CPaths& p) {
     for (const CPath& q : p) a += ClipperLib::Area(q);
     return a * kUnit * kUnit;
 }
-
 
 // The default holder, relative to P (Z, R) (pupitre-setup(5)): a boring bar
 // along +Z below a tip that points outwards; otherwise a 16 mm shank rising
@@ -182,7 +184,8 @@ ToolShape tool_shape(const ToolTruth& t) {
         // is a quarter turn from it, away from the insert's body.
         Pt n{-d[1], d[0]};
         if (n[0] * body[0] + n[1] * body[1] > 0) n = {d[1], -d[0]};
-        pts.push_back(to_int({centre[0] + r * n[0] + t.edge * d[0], centre[1] + r * n[1] + t.edge * d[1]}));
+        pts.push_back(
+            to_int({centre[0] + r * n[0] + t.edge * d[0], centre[1] + r * n[1] + t.edge * d[1]}));
         pts.push_back(to_int({centre[0] + r * n[0], centre[1] + r * n[1]}));
     }
     ToolShape shape;
@@ -328,8 +331,10 @@ bool LatheWorld::from_text(std::string_view text) {
             q.emplace_back(ClipperLib::cInt(v[0]), ClipperLib::cInt(v[1]));
             while (p < end && *p == ' ') ++p;
         }
-        if (q.size() >= 3) out.push_back(std::move(q));
-        else if (!q.empty()) return false;
+        if (q.size() >= 3)
+            out.push_back(std::move(q));
+        else if (!q.empty())
+            return false;
     }
     part_ = std::move(out);
     ++generation_;
@@ -393,12 +398,20 @@ bool LatheWorld::groove(double z, double& left, double& right) const {
     for (auto it = std::upper_bound(zs.begin(), zs.end(), z); it != zs.begin();) {
         int w = wall(*--it, -1);
         if (w < 0) return false;  // the part ends: a step, not a groove
-        if (w > 0) { left = *it; found_left = true; break; }
+        if (w > 0) {
+            left = *it;
+            found_left = true;
+            break;
+        }
     }
     for (auto it = std::upper_bound(zs.begin(), zs.end(), z); it != zs.end(); ++it) {
         int w = wall(*it, +1);
         if (w < 0) return false;
-        if (w > 0) { right = *it; found_right = true; break; }
+        if (w > 0) {
+            right = *it;
+            found_right = true;
+            break;
+        }
     }
     return found_left && found_right;
 }

@@ -18,10 +18,10 @@ namespace pupitre::workshop {
 using CPath = ClipperLib::Path;
 using CPaths = ClipperLib::Paths;
 
-inline constexpr double kUnit = 1e-4;    // mm per Clipper unit
-inline constexpr double kChord = 5e-4;   // mm: the largest chord error of a polygonised arc
+inline constexpr double kUnit = 1e-4;   // mm per Clipper unit
+inline constexpr double kChord = 5e-4;  // mm: the largest chord error of a polygonised arc
 
-ClipperLib::IntPoint to_int(Pt p);       // (Z, R) mm -> units
+ClipperLib::IntPoint to_int(Pt p);  // (Z, R) mm -> units
 Pt to_mm(const ClipperLib::IntPoint& p);
 
 // A polygon of `r` around `c` (mm) within kChord of the circle.
@@ -45,9 +45,9 @@ ToolShape tool_shape(const ToolTruth& t);
 enum class Obstacle { none, material, chuck, tailstock };
 
 class LatheWorld {
-public:
+  public:
     explicit LatheWorld(const LatheSetup& s);
-    void new_part();                          // fresh stock from the setup
+    void new_part();  // fresh stock from the setup
     const CPaths& material() const { return part_; }
     const CPaths& chuck() const { return chuck_; }
     const CPaths& tailstock() const { return tail_; }
@@ -71,7 +71,7 @@ public:
     bool from_text(std::string_view text);
 
     // --- what the instruments read, from the material itself ---
-    bool right_face(double& z) const;                  // the part's right-hand face
+    bool right_face(double& z) const;  // the part's right-hand face
     // The outside and inside radius of the material at machine Z `z`; false
     // when there is no material there (inside: false too when it is solid).
     bool outer_radius(double z, double& r) const;
@@ -80,10 +80,12 @@ public:
     // on a bottom (the profile leaves the level on both sides).
     bool groove(double z, double& left, double& right) const;
 
-private:
+  private:
     struct Box {
         ClipperLib::cInt x0 = 0, y0 = 0, x1 = -1, y1 = -1;  // empty when x1 < x0
-        bool meets(const Box& o) const { return x0 <= o.x1 && o.x0 <= x1 && y0 <= o.y1 && o.y0 <= y1; }
+        bool meets(const Box& o) const {
+            return x0 <= o.x1 && o.x0 <= x1 && y0 <= o.y1 && o.y0 <= y1;
+        }
     };
     static Box box(const CPaths& p);
     const Box& box_of(Obstacle what) const;

@@ -29,7 +29,8 @@ std::string workshop_json(const Workshop& w, const std::vector<Asked>& asked) {
         const Crash& c = w.crashes()[i];
         if (i) o += ',';
         o += "{\"code\":" + std::to_string(c.code) + ",\"prog\":" + std::to_string(c.loc.prog) +
-             ",\"line\":" + std::to_string(c.loc.line) + ",\"n\":" + (c.loc.n < 0 ? "null" : std::to_string(c.loc.n)) +
+             ",\"line\":" + std::to_string(c.loc.line) +
+             ",\"n\":" + (c.loc.n < 0 ? "null" : std::to_string(c.loc.n)) +
              ",\"tool\":" + std::to_string(c.tool) + ",\"om\":{\"X\":";
         append_fixed4(o, w.machine().x_diameter ? 2 * c.om[X] : c.om[X]);  // as the trace
         o += ",\"Z\":";
@@ -75,12 +76,14 @@ std::string readings_text(const std::vector<Asked>& asked) {
         }
         int decimals = a.r.resolution < 0.005 ? 3 : 2;
         if (a.r.uncertainty > 0)
-            // TRANSLATORS: a presetter's reading: what was asked, the value and its uncertainty in mm, the instrument.
-            o += strf(tr("%s: %.*f mm \u00b1%.3f (%s)\n"), a.r.spec.c_str(), decimals, a.r.value, a.r.uncertainty,
-                      a.r.instrument.c_str());
+            // TRANSLATORS: a presetter's reading: what was asked, the value and its uncertainty in
+            // mm, the instrument.
+            o += strf(tr("%s: %.*f mm \u00b1%.3f (%s)\n"), a.r.spec.c_str(), decimals, a.r.value,
+                      a.r.uncertainty, a.r.instrument.c_str());
         else
             // TRANSLATORS: a reading: what was asked, the value in mm, the instrument.
-            o += strf(tr("%s: %.*f mm (%s)\n"), a.r.spec.c_str(), decimals, a.r.value, a.r.instrument.c_str());
+            o += strf(tr("%s: %.*f mm (%s)\n"), a.r.spec.c_str(), decimals, a.r.value,
+                      a.r.instrument.c_str());
     }
     return o;
 }
@@ -126,22 +129,26 @@ std::string part_svg(const LatheWorld& w, const std::string& title) {
         for (const CPath& q : *ps)
             for (const auto& v : q) {
                 Pt p = to_mm(v);
-                left = std::min(left, p[0] - face), right = std::max(right, p[0] - face), top = std::max(top, p[1]);
+                left = std::min(left, p[0] - face), right = std::max(right, p[0] - face),
+                top = std::max(top, p[1]);
             }
     if (left > right) left = -10, right = 0;
     left -= 5, right += 5, top += 5;
     std::string o = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-    o += "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" + fixed3(left) + ' ' + fixed3(-top) + ' ' +
-         fixed3(right - left) + ' ' + fixed3(top + 5) + "\" width=\"" + fixed3((right - left) * 8) + "\" height=\"" +
-         fixed3((top + 5) * 8) + "\">\n<title>";
-    for (char c : title) o += c == '<' ? std::string("&lt;") : c == '&' ? std::string("&amp;") : std::string(1, c);
+    o += "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" + fixed3(left) + ' ' +
+         fixed3(-top) + ' ' + fixed3(right - left) + ' ' + fixed3(top + 5) + "\" width=\"" +
+         fixed3((right - left) * 8) + "\" height=\"" + fixed3((top + 5) * 8) + "\">\n<title>";
+    for (char c : title)
+        o += c == '<' ? std::string("&lt;") : c == '&' ? std::string("&amp;") : std::string(1, c);
     o += "</title>\n";
     // The spindle axis, the part filled, the jaws and the chuck outlined.
     o += "<line x1=\"" + fixed3(left) + "\" y1=\"0\" x2=\"" + fixed3(right) +
          "\" y2=\"0\" stroke=\"#888\" stroke-width=\"0.2\" stroke-dasharray=\"4 1 1 1\"/>\n";
-    svg_path(o, w.material(), face, "fill=\"#9bb0c8\" stroke=\"#1d3557\" stroke-width=\"0.1\" fill-rule=\"nonzero\"");
+    svg_path(o, w.material(), face,
+             "fill=\"#9bb0c8\" stroke=\"#1d3557\" stroke-width=\"0.1\" fill-rule=\"nonzero\"");
     svg_path(o, w.chuck(), face, "fill=\"none\" stroke=\"#444\" stroke-width=\"0.3\"");
-    if (!w.tailstock().empty()) svg_path(o, w.tailstock(), face, "fill=\"none\" stroke=\"#444\" stroke-width=\"0.3\"");
+    if (!w.tailstock().empty())
+        svg_path(o, w.tailstock(), face, "fill=\"none\" stroke=\"#444\" stroke-width=\"0.3\"");
     o += "</svg>\n";
     return o;
 }

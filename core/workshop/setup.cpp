@@ -27,7 +27,9 @@ namespace {
 using kv::trim;
 
 // A number of a setup: finite, and below 100 km (no workshop is larger).
-bool number(std::string_view s, double& v) { return kv::number(s, v) && std::isfinite(v) && std::abs(v) < 1e5; }
+bool number(std::string_view s, double& v) {
+    return kv::number(s, v) && std::isfinite(v) && std::abs(v) < 1e5;
+}
 
 // Reads a number into `out` if it lies in [lo, hi]; else says why.
 std::string in_range(std::string_view val, double lo, double hi, double& out) {
@@ -67,9 +69,9 @@ struct ToolKey {
     double ToolTruth::*field;
 };
 constexpr ToolKey kToolKeys[] = {
-    {"x", -kBig, kBig, &ToolTruth::x},       {"z", -kBig, kBig, &ToolTruth::z},
-    {"radius", 0, 10, &ToolTruth::radius},   {"angle", 20, 175, &ToolTruth::angle},
-    {"edge", 0.5, 100, &ToolTruth::edge},    {"wear", 0, 1000, &ToolTruth::wear},
+    {"x", -kBig, kBig, &ToolTruth::x},     {"z", -kBig, kBig, &ToolTruth::z},
+    {"radius", 0, 10, &ToolTruth::radius}, {"angle", 20, 175, &ToolTruth::angle},
+    {"edge", 0.5, 100, &ToolTruth::edge},  {"wear", 0, 1000, &ToolTruth::wear},
 };
 
 // "z,x z,x ...": at least three points.
@@ -104,8 +106,8 @@ std::string tool_key(Setup& s, std::string_view key, std::string_view val) {
     key.remove_prefix(5);  // "tool."
     int n = 0;
     auto r = std::from_chars(key.data(), key.data() + key.size(), n);
-    if (r.ec != std::errc() || r.ptr == key.data() || n < 1 || n > 99 || r.ptr == key.data() + key.size() ||
-        *r.ptr != '.')
+    if (r.ec != std::errc() || r.ptr == key.data() || n < 1 || n > 99 ||
+        r.ptr == key.data() + key.size() || *r.ptr != '.')
         return tr("expected tool.N.FIELD with N from 1 to 99");
     std::string_view field = key.substr(size_t(r.ptr - key.data()) + 1);
     ToolTruth& t = tool_at(s, n);
@@ -119,16 +121,23 @@ std::string tool_key(Setup& s, std::string_view key, std::string_view val) {
         return {};
     }
     if (field == "spindle") {
-        if (val == "M3" || val == "M03") t.spindle = 3;
-        else if (val == "M4" || val == "M04") t.spindle = 4;
-        else if (val == "any") t.spindle = 0;
-        else return tr("expected M3, M4 or any");
+        if (val == "M3" || val == "M03")
+            t.spindle = 3;
+        else if (val == "M4" || val == "M04")
+            t.spindle = 4;
+        else if (val == "any")
+            t.spindle = 0;
+        else
+            return tr("expected M3, M4 or any");
         return {};
     }
     if (field == "probe") {
-        if (val == "yes") t.probe = true;
-        else if (val == "no") t.probe = false;
-        else return tr("expected yes or no");
+        if (val == "yes")
+            t.probe = true;
+        else if (val == "no")
+            t.probe = false;
+        else
+            return tr("expected yes or no");
         return {};
     }
     if (field == "holder") return points(val, t.holder);
@@ -165,10 +174,14 @@ std::string consistent(const Setup& s) {
     if (l.tailstock && l.tailstock_z <= l.chuck_z + l.stickout - 1e-9)
         return tr("tailstock.z must be to the right of the stock's face");
     for (const Pt& p : l.profile)
-        if (p[0] > 1e-9 || p[0] < -l.stock_length - 1e-9 || p[1] < 0 || p[1] > l.stock_diameter / 2 + 1e-9)
-            return tr("stock.profile must lie within the bar: Z from -stock.length to 0, R from 0 to the radius");
+        if (p[0] > 1e-9 || p[0] < -l.stock_length - 1e-9 || p[1] < 0 ||
+            p[1] > l.stock_diameter / 2 + 1e-9)
+            return tr(
+                "stock.profile must lie within the bar: Z from -stock.length to 0, R from 0 to the "
+                "radius");
     for (const ToolTruth& t : s.tools)
-        if (t.edge <= t.radius) return strf(tr("tool.%d: edge must be longer than radius"), t.position);
+        if (t.edge <= t.radius)
+            return strf(tr("tool.%d: edge must be longer than radius"), t.position);
     return {};
 }
 

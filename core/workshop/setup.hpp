@@ -17,18 +17,18 @@ using Pt = std::array<double, 2>;  // (Z, X) in mm, X a radius
 // corrector holds it: the true gauge, OM - P for each axis, P being the
 // theoretical tool point of the nose (turning.md §3.5). On a lathe X is a radius.
 struct ToolTruth {
-    int position = 0;        // turret position 1..n
-    double x = 0, z = 0;     // true gauge (mm)
-    double radius = 0;       // nose radius (mm)
-    int orientation = 3;     // C1..C8 as in the corrector (turning.md §3.5); C0: a point
-    double angle = 80;       // the insert's tip angle (degrees)
-    double edge = 10;        // length of its cutting edges from the nose (mm)
-    int spindle = 0;         // 3 or 4: the direction it cuts with; 0: either
-    double wear = 0;         // µm per metre of cut
+    int position = 0;     // turret position 1..n
+    double x = 0, z = 0;  // true gauge (mm)
+    double radius = 0;    // nose radius (mm)
+    int orientation = 3;  // C1..C8 as in the corrector (turning.md §3.5); C0: a point
+    double angle = 80;    // the insert's tip angle (degrees)
+    double edge = 10;     // length of its cutting edges from the nose (mm)
+    int spindle = 0;      // 3 or 4: the direction it cuts with; 0: either
+    double wear = 0;      // µm per metre of cut
     // The holder's outline, points relative to P (Z, X); empty: the default
     // shank for the orientation (pupitre-setup(5)).
     std::vector<Pt> holder;
-    bool probe = false;      // an electric touch probe: never cuts
+    bool probe = false;  // an electric touch probe: never cuts
 };
 
 struct LatheSetup {
@@ -36,12 +36,12 @@ struct LatheSetup {
     // X as a tool point would read it (so the true PREF X).
     double axis_x = 0;
     double chuck_z = 0;
-    double chuck_diameter = 200, chuck_length = 80;   // the body behind the jaws
-    double jaw_length = 25, jaw_height = 20;          // along Z, radially above the stock
-    double jaw_reach = 25;                            // how far the bar goes into the jaws
+    double chuck_diameter = 200, chuck_length = 80;  // the body behind the jaws
+    double jaw_length = 25, jaw_height = 20;         // along Z, radially above the stock
+    double jaw_reach = 25;                           // how far the bar goes into the jaws
     // Bar stock.
     double stock_diameter = 60, stock_length = 120, stickout = 95;  // stickout: from the jaws' face
-    double bore = 0;                                  // diameter, 0: solid
+    double bore = 0;                                                // diameter, 0: solid
     // A blank that is not a bar (a forging, a casting, a part turned
     // before): its half-section, Z from the stock's right-hand face (<= 0)
     // and R, replacing the bar's rectangle.

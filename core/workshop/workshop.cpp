@@ -17,14 +17,16 @@ namespace {
 // The tool-point path cut at `f` (0..1) of its length.
 std::vector<Pt> prefix(const std::vector<Pt>& p, double f, double* at_index = nullptr) {
     double total = 0;
-    for (size_t i = 1; i < p.size(); ++i) total += std::hypot(p[i][0] - p[i - 1][0], p[i][1] - p[i - 1][1]);
+    for (size_t i = 1; i < p.size(); ++i)
+        total += std::hypot(p[i][0] - p[i - 1][0], p[i][1] - p[i - 1][1]);
     std::vector<Pt> out{p.front()};
     double left = f * total;
     for (size_t i = 1; i < p.size(); ++i) {
         double l = std::hypot(p[i][0] - p[i - 1][0], p[i][1] - p[i - 1][1]);
         if (l >= left) {
             double t = l > 0 ? left / l : 0;
-            out.push_back({p[i - 1][0] + t * (p[i][0] - p[i - 1][0]), p[i - 1][1] + t * (p[i][1] - p[i - 1][1])});
+            out.push_back({p[i - 1][0] + t * (p[i][0] - p[i - 1][0]),
+                           p[i - 1][1] + t * (p[i][1] - p[i - 1][1])});
             if (at_index) *at_index = double(i - 1) + t;
             return out;
         }
@@ -47,7 +49,8 @@ CPath grown(const CPath& shape, double by) {
 
 double length_of(const std::vector<Pt>& p) {
     double total = 0;
-    for (size_t i = 1; i < p.size(); ++i) total += std::hypot(p[i][0] - p[i - 1][0], p[i][1] - p[i - 1][1]);
+    for (size_t i = 1; i < p.size(); ++i)
+        total += std::hypot(p[i][0] - p[i - 1][0], p[i][1] - p[i - 1][1]);
     return total;
 }
 
@@ -68,9 +71,13 @@ Workshop::Workshop(const MachineProfile& m, const Setup& s, MachineSink* next)
 }
 
 Workshop::Tool* Workshop::current() {
-    return tool_ > 0 && size_t(tool_) < tools_.size() && tools_[size_t(tool_)].truth ? &tools_[size_t(tool_)] : nullptr;
+    return tool_ > 0 && size_t(tool_) < tools_.size() && tools_[size_t(tool_)].truth
+               ? &tools_[size_t(tool_)]
+               : nullptr;
 }
-const Workshop::Tool* Workshop::current() const { return const_cast<Workshop*>(this)->current(); }
+const Workshop::Tool* Workshop::current() const {
+    return const_cast<Workshop*>(this)->current();
+}
 
 bool Workshop::probe_in_use() const {
     const Tool* t = current();
@@ -113,9 +120,11 @@ void Workshop::path_of(const MoveEvent& e, std::vector<Axes>& out) const {
     out.push_back(e.from_mach);
     if (e.g == 2 || e.g == 3) {
         const int a0 = e.plane_a0, a1 = e.plane_a1;
-        Pt c{e.c0 + e.to_mach[size_t(a0)] - e.to_prog[size_t(a0)], e.c1 + e.to_mach[size_t(a1)] - e.to_prog[size_t(a1)]};
+        Pt c{e.c0 + e.to_mach[size_t(a0)] - e.to_prog[size_t(a0)],
+             e.c1 + e.to_mach[size_t(a1)] - e.to_prog[size_t(a1)]};
         std::vector<Pt> pts;
-        arc_points({e.from_mach[size_t(a0)], e.from_mach[size_t(a1)]}, c, e.sweep * geometry::kDeg, pts);
+        arc_points({e.from_mach[size_t(a0)], e.from_mach[size_t(a1)]}, c, e.sweep * geometry::kDeg,
+                   pts);
         for (size_t i = 0; i + 1 < pts.size(); ++i) {
             double f = double(i + 1) / double(pts.size());
             Axes p = e.from_mach;
@@ -133,19 +142,22 @@ std::string Workshop::where(const Pt& p) const {
     // diameter and the distance from the stock's face as it was loaded.
     double face = setup_.lathe.chuck_z + setup_.lathe.stickout;
     // TRANSLATORS: where a crash happened: a diameter, then the distance from the stock's face.
-    return strf(tr("at \u00f8%s, %s mm from the stock's face"), fixed3_zeroed(2 * std::abs(p[1]), 5e-4).c_str(),
+    return strf(tr("at \u00f8%s, %s mm from the stock's face"),
+                fixed3_zeroed(2 * std::abs(p[1]), 5e-4).c_str(),
                 fixed3_zeroed(p[0] - face, 5e-4).c_str());
 }
 
-double Workshop::first_contact(const CPath& shape, const std::vector<Pt>& tips, Obstacle what, double depth,
-                               bool before, const CPaths* whole) const {
+double Workshop::first_contact(const CPath& shape, const std::vector<Pt>& tips, Obstacle what,
+                               double depth, bool before, const CPaths* whole) const {
     if (world_.depth_into(whole ? *whole : LatheWorld::sweep(shape, tips), what) <= depth) return 2;
     // Bisection along the move, to 0.1 µm.
     double lo = 0, hi = 1, total = length_of(tips);
     for (int i = 0; i < 60 && (hi - lo) * total > 1e-4; ++i) {
         double mid = (lo + hi) / 2;
-        if (world_.depth_into(LatheWorld::sweep(shape, prefix(tips, mid)), what) > depth) hi = mid;
-        else lo = mid;
+        if (world_.depth_into(LatheWorld::sweep(shape, prefix(tips, mid)), what) > depth)
+            hi = mid;
+        else
+            lo = mid;
     }
     return before ? lo : hi;
 }
@@ -155,22 +167,31 @@ std::string Workshop::crash_text(int code, bool holder, Obstacle what, const Too
                                  const std::string& place) const {
     const char* p = place.c_str();
     switch (code) {
-        case kCrashRapid: return strf(tr("crash: T%d rapid (G0) into the part %s"), tool_, p);
-        case kCrashStopped: return strf(tr("crash: T%d fed into the part with the spindle stopped %s"), tool_, p);
+        case kCrashRapid:
+            return strf(tr("crash: T%d rapid (G0) into the part %s"), tool_, p);
+        case kCrashStopped:
+            return strf(tr("crash: T%d fed into the part with the spindle stopped %s"), tool_, p);
         case kCrashDirection:
-            return strf(tr("crash: T%d cuts with M%d, the spindle turns M%d, %s"), tool_, tt.spindle, dir_, p);
-        case kCrashProbe: return strf(tr("crash: the probe T%d was driven into the part %s"), tool_, p);
-        case kCrashHolder: return strf(tr("crash: the holder of T%d hit the part %s"), tool_, p);
-        default: break;
+            return strf(tr("crash: T%d cuts with M%d, the spindle turns M%d, %s"), tool_,
+                        tt.spindle, dir_, p);
+        case kCrashProbe:
+            return strf(tr("crash: the probe T%d was driven into the part %s"), tool_, p);
+        case kCrashHolder:
+            return strf(tr("crash: the holder of T%d hit the part %s"), tool_, p);
+        default:
+            break;
     }
     if (what == Obstacle::chuck)
-        return strf(holder ? tr("crash: the holder of T%d hit the chuck %s") : tr("crash: T%d hit the chuck %s"),
+        return strf(holder ? tr("crash: the holder of T%d hit the chuck %s")
+                           : tr("crash: T%d hit the chuck %s"),
                     tool_, p);
-    return strf(holder ? tr("crash: the holder of T%d hit the tailstock %s") : tr("crash: T%d hit the tailstock %s"),
+    return strf(holder ? tr("crash: the holder of T%d hit the tailstock %s")
+                       : tr("crash: T%d hit the tailstock %s"),
                 tool_, p);
 }
 
-bool Workshop::check(const MoveEvent& e, const std::vector<Pt>& tips, const std::vector<Axes>& oms) {
+bool Workshop::check(const MoveEvent& e, const std::vector<Pt>& tips,
+                     const std::vector<Axes>& oms) {
     Tool* t = current();
     if (!t) return true;
     const ToolTruth& tt = *t->truth;
@@ -181,8 +202,8 @@ bool Workshop::check(const MoveEvent& e, const std::vector<Pt>& tips, const std:
     };
     bool feed = e.g != 0, stopped = dir_ != 3 && dir_ != 4;
     bool cutting = feed && !stopped && !tt.probe && (tt.spindle == 0 || tt.spindle == dir_);
-    int insert_code = tt.probe ? kCrashProbe
-                      : !feed  ? kCrashRapid
+    int insert_code = tt.probe  ? kCrashProbe
+                      : !feed   ? kCrashRapid
                       : stopped ? kCrashStopped
                                 : kCrashDirection;
     Hit hits[] = {{kCrashChuck, &t->shape.insert, Obstacle::chuck},
@@ -205,7 +226,8 @@ bool Workshop::check(const MoveEvent& e, const std::vector<Pt>& tips, const std:
     double f = worst ? first : 1;
     std::vector<Pt> done = worst ? prefix(tips, f) : tips;
     if (cutting) {
-        double removed = world_.cut(worst ? LatheWorld::sweep(t->shape.insert, done) : swept_insert);
+        double removed =
+            world_.cut(worst ? LatheWorld::sweep(t->shape.insert, done) : swept_insert);
         if (removed > 1e-9) t->cut += length_of(done);
     }
     if (!worst) return true;
@@ -217,8 +239,10 @@ bool Workshop::check(const MoveEvent& e, const std::vector<Pt>& tips, const std:
     c.loc = e.loc;
     c.tool = tool_;
     c.fraction = f;
-    for (size_t a = 0; a < c.om.size(); ++a) c.om[a] = oms[i][a] + (at - double(i)) * (oms[j][a] - oms[i][a]);
-    c.what = crash_text(c.code, worst->shape == &t->shape.holder, worst->what, tt, where(done.back()));
+    for (size_t a = 0; a < c.om.size(); ++a)
+        c.om[a] = oms[i][a] + (at - double(i)) * (oms[j][a] - oms[i][a]);
+    c.what =
+        crash_text(c.code, worst->shape == &t->shape.holder, worst->what, tt, where(done.back()));
     crashes_.push_back(std::move(c));
     return false;
 }
@@ -280,27 +304,33 @@ Outcome Workshop::jog(const MoveEvent& e, bool continuous) {
     }
     bool on_shim = false;
     for (int k = 0; k < 2; ++k) {
-        const CPaths near_here = LatheWorld::sweep(*near[k], here), at_here = LatheWorld::sweep(*shapes[k], here);
+        const CPaths near_here = LatheWorld::sweep(*near[k], here),
+                     at_here = LatheWorld::sweep(*shapes[k], here);
         const CPaths whole = LatheWorld::sweep(*shapes[k], tips);
         for (Obstacle w : things) {
             const bool shim = k == 0 && w == Obstacle::material && shim_ > 0;
             const CPath& shape = shim ? shim_insert : *shapes[k];
             // At a contact, an increment goes on as a feed; a held JOG key
             // slides along or away, and stops again before going deeper.
-            bool touching = world_.depth_into(shim ? LatheWorld::sweep(shim_near, here) : near_here, w) > kTouchDepth;
+            bool touching = world_.depth_into(shim ? LatheWorld::sweep(shim_near, here) : near_here,
+                                              w) > kTouchDepth;
             if (touching && !continuous && shim) {
                 o.touched = true;
                 o.fraction = 0;
                 o.stop = oms.front();
-                o.what = strf(tr("the shim is between T%d and the part: :shim off before cutting"), tool_);
+                o.what = strf(tr("the shim is between T%d and the part: :shim off before cutting"),
+                              tool_);
                 return o;
             }
             if (touching && !continuous) return apply(e);
-            double limit = touching ? std::max(kTouchDepth, world_.depth_into(shim ? LatheWorld::sweep(shape, here)
-                                                                                   : at_here, w))
-                                    : kTouchDepth;
+            double limit =
+                touching
+                    ? std::max(kTouchDepth, world_.depth_into(
+                                                shim ? LatheWorld::sweep(shape, here) : at_here, w))
+                    : kTouchDepth;
             const CPaths shim_whole = shim ? LatheWorld::sweep(shape, tips) : CPaths{};
-            if (double f = first_contact(shape, tips, w, limit, true, shim ? &shim_whole : &whole); f < first)
+            if (double f = first_contact(shape, tips, w, limit, true, shim ? &shim_whole : &whole);
+                f < first)
                 first = f, hit = w, holder = k == 1, on_shim = shim;
         }
     }
@@ -308,7 +338,8 @@ Outcome Workshop::jog(const MoveEvent& e, bool continuous) {
     double at = 0;
     std::vector<Pt> done = prefix(tips, first, &at);
     size_t i = std::min(size_t(at), oms.size() - 1), j = std::min(i + 1, oms.size() - 1);
-    for (size_t a = 0; a < o.stop.size(); ++a) o.stop[a] = oms[i][a] + (at - double(i)) * (oms[j][a] - oms[i][a]);
+    for (size_t a = 0; a < o.stop.size(); ++a)
+        o.stop[a] = oms[i][a] + (at - double(i)) * (oms[j][a] - oms[i][a]);
     o.touched = true;
     o.fraction = first;
     o.what = touch_text(hit, holder, on_shim, where(done.back()));
@@ -316,15 +347,18 @@ Outcome Workshop::jog(const MoveEvent& e, bool continuous) {
 }
 
 // What a jog touched, where.
-std::string Workshop::touch_text(Obstacle hit, bool holder, bool on_shim, const std::string& place) const {
+std::string Workshop::touch_text(Obstacle hit, bool holder, bool on_shim,
+                                 const std::string& place) const {
     if (on_shim)
-        return strf(tr("T%d touched the %s mm shim on the part %s"), tool_, fixed3(shim_).c_str(), place.c_str());
-    const char* what = hit == Obstacle::material ? (holder ? tr("the holder of T%d touched the part %s")
-                                                           : tr("T%d touched the part %s"))
-                       : hit == Obstacle::chuck  ? (holder ? tr("the holder of T%d touched the chuck %s")
-                                                           : tr("T%d touched the chuck %s"))
-                                                 : (holder ? tr("the holder of T%d touched the tailstock %s")
-                                                           : tr("T%d touched the tailstock %s"));
+        return strf(tr("T%d touched the %s mm shim on the part %s"), tool_, fixed3(shim_).c_str(),
+                    place.c_str());
+    const char* what =
+        hit == Obstacle::material
+            ? (holder ? tr("the holder of T%d touched the part %s") : tr("T%d touched the part %s"))
+        : hit == Obstacle::chuck ? (holder ? tr("the holder of T%d touched the chuck %s")
+                                           : tr("T%d touched the chuck %s"))
+                                 : (holder ? tr("the holder of T%d touched the tailstock %s")
+                                           : tr("T%d touched the tailstock %s"));
     return strf(what, tool_, place.c_str());
 }
 
@@ -360,8 +394,8 @@ void Workshop::spindle(const SpindleEvent& e) {
 namespace {
 
 struct Instrument {
-    const char* word;       // the request's first word
-    const char* name;       // N_()-marked: what reads it
+    const char* word;  // the request's first word
+    const char* name;  // N_()-marked: what reads it
     double resolution;
     bool needs_z;
 };
@@ -372,7 +406,9 @@ constexpr Instrument kInstruments[] = {
     {"length", N_("depth gauge"), 0.01, false},
 };
 
-double rounded(double v, double res) { return std::round(v / res) * res; }
+double rounded(double v, double res) {
+    return std::round(v / res) * res;
+}
 
 }  // namespace
 
@@ -388,16 +424,20 @@ std::string Workshop::presetter(std::string_view rest, Reading& r) const {
     char field = 0;
     if (rest.size() >= 4 && (rest[0] == 'T' || rest[0] == 't')) {
         size_t sp = rest.find(' ');
-        auto res = std::from_chars(rest.data() + 1, rest.data() + (sp == std::string_view::npos ? rest.size() : sp), t);
-        if (res.ec == std::errc() && sp != std::string_view::npos && sp + 2 == rest.size()) field = rest[sp + 1];
+        auto res = std::from_chars(
+            rest.data() + 1, rest.data() + (sp == std::string_view::npos ? rest.size() : sp), t);
+        if (res.ec == std::errc() && sp != std::string_view::npos && sp + 2 == rest.size())
+            field = rest[sp + 1];
     }
     const ToolTruth* tt = setup_.tool(t);
-    if (field != 'X' && field != 'Z' && field != 'R') return tr("tool needs a tool and a field: tool T1 X, tool T1 Z or tool T1 R");
+    if (field != 'X' && field != 'Z' && field != 'R')
+        return tr("tool needs a tool and a field: tool T1 X, tool T1 Z or tool T1 R");
     if (!tt) return strf(tr("there is no T%d on the turret"), t);
     double v = field == 'X' ? tt->x : field == 'Z' ? tt->z : tt->radius;
     // A fixed error per setup, tool and field, from a small hash.
     uint32_t h = 2166136261u;
-    for (char c : setup_.name + char('0' + t % 10) + char('0' + t / 10) + field) h = (h ^ uint8_t(c)) * 16777619u;
+    for (char c : setup_.name + char('0' + t % 10) + char('0' + t / 10) + field)
+        h = (h ^ uint8_t(c)) * 16777619u;
     double off = (double(h % 5) - 2) * kPresetter / 2;
     r.instrument = tr("presetter");
     r.resolution = 0.001;
@@ -413,7 +453,8 @@ std::string Workshop::measure(std::string_view spec, Reading& r) const {
     std::string_view s = spec;
     while (!s.empty() && s.front() == ' ') s.remove_prefix(1);
     size_t sp = s.find(' ');
-    std::string_view word = s.substr(0, sp), rest = sp == std::string_view::npos ? "" : s.substr(sp + 1);
+    std::string_view word = s.substr(0, sp),
+                     rest = sp == std::string_view::npos ? "" : s.substr(sp + 1);
     while (!rest.empty() && rest.front() == ' ') rest.remove_prefix(1);
     while (!rest.empty() && rest.back() == ' ') rest.remove_suffix(1);
     if (word == "tool") return presetter(rest, r);
@@ -426,11 +467,14 @@ std::string Workshop::measure(std::string_view spec, Reading& r) const {
     double dz = 0;
     if (in->needs_z) {
         if (rest.size() < 2 || (rest[0] != 'Z' && rest[0] != 'z'))
-            return strf(tr("%s needs a Z: how far from the part's right-hand face (Z-20)"), in->word);
+            return strf(tr("%s needs a Z: how far from the part's right-hand face (Z-20)"),
+                        in->word);
         auto res = std::from_chars(rest.data() + 1, rest.data() + rest.size(), dz);
         if (res.ec != std::errc() || res.ptr != rest.data() + rest.size() || !std::isfinite(dz))
-            return strf(tr("%s needs a Z: how far from the part's right-hand face (Z-20)"), in->word);
-        if (dz > 0) return tr("Z is measured from the part's right-hand face: a negative distance (Z-20)");
+            return strf(tr("%s needs a Z: how far from the part's right-hand face (Z-20)"),
+                        in->word);
+        if (dz > 0)
+            return tr("Z is measured from the part's right-hand face: a negative distance (Z-20)");
     } else if (!rest.empty()) {
         return strf(tr("%s takes no Z"), in->word);
     }

@@ -16,12 +16,12 @@
 namespace pupitre::workshop {
 
 // Workshop alarms, 1200-1299 (DESIGN §2.2; pupitre(1), DIAGNOSTICS).
-inline constexpr int kCrashRapid = 1200;         // a rapid into the material
-inline constexpr int kCrashStopped = 1201;       // a feed into the material, spindle stopped
-inline constexpr int kCrashChuck = 1202;         // the tool or holder hits the chuck or tailstock
-inline constexpr int kCrashHolder = 1203;        // the holder or shank hits the material
-inline constexpr int kCrashDirection = 1204;     // cutting with the spindle turning the wrong way
-inline constexpr int kCrashProbe = 1205;         // a touch probe driven into the material
+inline constexpr int kCrashRapid = 1200;      // a rapid into the material
+inline constexpr int kCrashStopped = 1201;    // a feed into the material, spindle stopped
+inline constexpr int kCrashChuck = 1202;      // the tool or holder hits the chuck or tailstock
+inline constexpr int kCrashHolder = 1203;     // the holder or shank hits the material
+inline constexpr int kCrashDirection = 1204;  // cutting with the spindle turning the wrong way
+inline constexpr int kCrashProbe = 1205;      // a touch probe driven into the material
 
 // What a move came to.
 struct Outcome {
@@ -45,9 +45,9 @@ struct Crash {
     int code = 0;
     Loc loc;
     int tool = 0;
-    Axes om{};        // where the motion stopped: the contact
+    Axes om{};            // where the motion stopped: the contact
     double fraction = 1;  // of the move's length done
-    std::string what; // the message: what hit what, where
+    std::string what;     // the message: what hit what, where
 };
 
 // One instrument's reading (pupitre-setup(5), MEASUREMENTS).
@@ -60,7 +60,7 @@ struct Reading {
 };
 
 class Workshop final : public MachineSink {
-public:
+  public:
     // `next` receives every event after the workshop (may be null).
     Workshop(const MachineProfile& m, const Setup& s, MachineSink* next);
 
@@ -99,19 +99,31 @@ public:
 
     // MachineSink
     void move(const MoveEvent& e) override;
-    void dwell(const Loc& l, double s) override { if (next_) next_->dwell(l, s); }
+    void dwell(const Loc& l, double s) override {
+        if (next_) next_->dwell(l, s);
+    }
     void tool(const Loc& l, int t, int d, double s, bool m6) override;
     void spindle(const SpindleEvent& e) override;
-    void coolant(const Loc& l, bool a, bool b) override { if (next_) next_->coolant(l, a, b); }
-    void stop(const Loc& l, int m) override { if (next_) next_->stop(l, m); }
-    void message(const Loc& l, int c, std::string_view t) override { if (next_) next_->message(l, c, t); }
-    void end(const Loc& l, int m) override { if (next_) next_->end(l, m); }
+    void coolant(const Loc& l, bool a, bool b) override {
+        if (next_) next_->coolant(l, a, b);
+    }
+    void stop(const Loc& l, int m) override {
+        if (next_) next_->stop(l, m);
+    }
+    void message(const Loc& l, int c, std::string_view t) override {
+        if (next_) next_->message(l, c, t);
+    }
+    void end(const Loc& l, int m) override {
+        if (next_) next_->end(l, m);
+    }
     void stock(const Loc& l, const std::vector<std::array<double, 2>>& zr) override {
         if (next_) next_->stock(l, zr);
     }
-    void profile(const Loc& l, const ProfileElem& p) override { if (next_) next_->profile(l, p); }
+    void profile(const Loc& l, const ProfileElem& p) override {
+        if (next_) next_->profile(l, p);
+    }
 
-private:
+  private:
     struct Tool {
         const ToolTruth* truth = nullptr;
         ToolShape shape;
@@ -127,14 +139,15 @@ private:
     bool check(const MoveEvent& e, const std::vector<Pt>& tips, const std::vector<Axes>& oms);
     std::string where(const Pt& p) const;
     std::string presetter(std::string_view rest, Reading& r) const;
-    std::string crash_text(int code, bool holder, Obstacle what, const ToolTruth& tt, const std::string& place) const;
+    std::string crash_text(int code, bool holder, Obstacle what, const ToolTruth& tt,
+                           const std::string& place) const;
     std::string touch_text(Obstacle hit, bool holder, bool on_shim, const std::string& place) const;
     // The first fraction of the path where `shape` comes deeper than `depth`
     // into `what` (`before`: the last one where it does not yet, within
     // 0.1 µm); 2 when it never does.
     // `whole`: the shape's sweep along the whole path, when already made.
-    double first_contact(const CPath& shape, const std::vector<Pt>& tips, Obstacle what, double depth,
-                         bool before = false, const CPaths* whole = nullptr) const;
+    double first_contact(const CPath& shape, const std::vector<Pt>& tips, Obstacle what,
+                         double depth, bool before = false, const CPaths* whole = nullptr) const;
 
     const MachineProfile& m_;
     Setup setup_;

@@ -8,8 +8,8 @@
 #include <string>
 
 #include "console/session.hpp"
-#include "store/store.hpp"
 #include "pages/canvas.hpp"
+#include "store/store.hpp"
 
 using namespace pupitre;
 

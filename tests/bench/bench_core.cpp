@@ -27,7 +27,8 @@ std::string program(int blocks) {
             double cx = x - r * std::cos(a0), cy = y - r * std::sin(a0);
             double ex = std::round((cx + r * std::cos(a1)) * 1000) / 1000;
             double ey = std::round((cy + r * std::sin(a1)) * 1000) / 1000;
-            std::snprintf(buf, sizeof buf, "G%d X%.3f Y%.3f I%.3f J%.3f\n", i % 2 ? 2 : 3, ex, ey, cx, cy);
+            std::snprintf(buf, sizeof buf, "G%d X%.3f Y%.3f I%.3f J%.3f\n", i % 2 ? 2 : 3, ex, ey,
+                          cx, cy);
             x = ex;
             y = ey;
         } else {
@@ -56,7 +57,8 @@ BENCHMARK(BM_ParseBlock);
 void run_each_iteration(benchmark::State& st, const char* machine, const std::string& text) {
     MachineProfile m;
     builtin_machine(machine, m);
-    struct Null final : MachineSink {} sink;
+    struct Null final : MachineSink {
+    } sink;
     for (auto _ : st) {
         ProgramMemory mem;
         Diag d;
@@ -69,7 +71,9 @@ void run_each_iteration(benchmark::State& st, const char* machine, const std::st
     st.SetItemsProcessed(st.iterations() * st.range(0));
 }
 
-void BM_RunProgram(benchmark::State& st) { run_each_iteration(st, "mill", program(int(st.range(0)))); }
+void BM_RunProgram(benchmark::State& st) {
+    run_each_iteration(st, "mill", program(int(st.range(0))));
+}
 BENCHMARK(BM_RunProgram)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
 
 // G64 on a rough stock of n points (a wavy bar, 0.5 mm deep in diameter) over a
@@ -77,21 +81,26 @@ BENCHMARK(BM_RunProgram)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond)
 // them through the waves. Each level meets only the elements near it, so the
 // time grows with the crossings, not with levels x stock points.
 std::string g64_program(int n) {
-    std::string s = "%1\nN10 G0 X200 Z10\nN20 S500 M3 M40\nN30 G95 F0.2\nN40 G64 N100 N149 P0.01\nX200 Z0\n";
+    std::string s =
+        "%1\nN10 G0 X200 Z10\nN20 S500 M3 M40\nN30 G95 F0.2\nN40 G64 N100 N149 P0.01\nX200 Z0\n";
     char buf[64];
     for (int i = 1; i < n; ++i) {
-        std::snprintf(buf, sizeof buf, "X%.3f Z%.3f\n", 200 - std::fabs(std::sin(i)) * 0.5, -100.0 * i / n);
+        std::snprintf(buf, sizeof buf, "X%.3f Z%.3f\n", 200 - std::fabs(std::sin(i)) * 0.5,
+                      -100.0 * i / n);
         s += buf;
     }
     s += "X200 Z-100\nN70 G80\nN80 M2\n";
     for (int i = 0; i < 50; ++i) {
-        std::snprintf(buf, sizeof buf, "N%d G1 X%d Z%d\n", 100 + i, 20 + 10 * (i % 2), -100 + 2 * i);
+        std::snprintf(buf, sizeof buf, "N%d G1 X%d Z%d\n", 100 + i, 20 + 10 * (i % 2),
+                      -100 + 2 * i);
         s += buf;
     }
     return s;
 }
 
-void BM_G64LongStock(benchmark::State& st) { run_each_iteration(st, "lathe", g64_program(int(st.range(0)))); }
+void BM_G64LongStock(benchmark::State& st) {
+    run_each_iteration(st, "lathe", g64_program(int(st.range(0))));
+}
 BENCHMARK(BM_G64LongStock)->Arg(500)->Arg(2000)->Arg(8000)->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -83,8 +83,12 @@ void run(benchmark::State& st, bool with_shop) {
     st.counters["moves"] = double(moves);
 }
 
-void BM_P555Run(benchmark::State& st) { run(st, false); }
-void BM_P555RunWorkshop(benchmark::State& st) { run(st, true); }
+void BM_P555Run(benchmark::State& st) {
+    run(st, false);
+}
+void BM_P555RunWorkshop(benchmark::State& st) {
+    run(st, true);
+}
 BENCHMARK(BM_P555Run)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_P555RunWorkshop)->Unit(benchmark::kMillisecond);
 
@@ -94,7 +98,9 @@ void BM_LongArc(benchmark::State& st) {
     builtin_machine("lathe", m);
     workshop::Setup s;
     workshop::builtin_setup("lathe", s);
-    const char* text = "%20\nN10 T1 D1 M6\nN20 S1000 M3 G95 F0.2\nN30 G0 X600 Z100\nN40 G2 X600 Z-500 R300\nN50 M2\n";
+    const char* text =
+        "%20\nN10 T1 D1 M6\nN20 S1000 M3 G95 F0.2\nN30 G0 X600 Z100\nN40 G2 X600 Z-500 R300\nN50 "
+        "M2\n";
     Null null;
     for (auto _ : st) {
         ProgramMemory mem;

@@ -8,8 +8,8 @@
 #include <string>
 
 #include "console/session.hpp"
-#include "store/store.hpp"
 #include "pages/canvas.hpp"
+#include "store/store.hpp"
 
 namespace pupitre::test {
 
@@ -27,7 +27,8 @@ struct Console {
         s = std::make_unique<console::Session>(machine, std::move(st), input);
         for (const auto& p : programs) {
             Diag d;
-            EXPECT_TRUE(s->memory().load_file(std::string(PUPITRE_SOURCE_DIR) + "/" + p, d)) << d.detail;
+            EXPECT_TRUE(s->memory().load_file(std::string(PUPITRE_SOURCE_DIR) + "/" + p, d))
+                << d.detail;
         }
         s->load_store();
     }

@@ -58,10 +58,12 @@ TEST(Editor, GotoAndFind) {
 }
 
 TEST(Editor, RenumberRewritesTheReferences) {
-    Editor e = open("%500\nN5 G0 X0\nN7 G1 X10\n/N8 G1 X20\nN9 G77 N7 N8 S2\nN11 G79 N5 (N5 AGAIN)\nN12 M2\n");
+    Editor e = open(
+        "%500\nN5 G0 X0\nN7 G1 X10\n/N8 G1 X20\nN9 G77 N7 N8 S2\nN11 G79 N5 (N5 AGAIN)\nN12 M2\n");
     EXPECT_EQ(e.renumber(10, 10), 6);
     EXPECT_EQ(e.text(),
-              "%500\nN10 G0 X0\nN20 G1 X10\n/N30 G1 X20\nN40 G77 N20 N30 S2\nN50 G79 N10 (N5 AGAIN)\nN60 M2\n");
+              "%500\nN10 G0 X0\nN20 G1 X10\n/N30 G1 X20\nN40 G77 N20 N30 S2\nN50 G79 N10 (N5 "
+              "AGAIN)\nN60 M2\n");
 }
 
 TEST(Editor, TheCheckStopsOnTheFirstBadBlock) {

@@ -15,7 +15,9 @@ using pupitre::test::Console;
 
 namespace {
 
-double x_display(const Console& c) { return c.s->sim().to_display(X, c.s->sim().op()[X]); }
+double x_display(const Console& c) {
+    return c.s->sim().to_display(X, c.s->sim().op()[X]);
+}
 
 }  // namespace
 
@@ -205,8 +207,8 @@ TEST(Session, RnsRebuildsTheStateAndRejoins) {
     c.run_until_settled();
     ASSERT_EQ(c.s->sim().state(), RunState::stopped) << c.message();
     EXPECT_NE(c.message().find("N90 found"), std::string::npos);
-    EXPECT_EQ(c.s->sim().tool(), 1);           // T01 M06 was read
-    EXPECT_EQ(c.s->sim().spindle_dir(), 4);     // and the spindle state rebuilt
+    EXPECT_EQ(c.s->sim().tool(), 1);         // T01 M06 was read
+    EXPECT_EQ(c.s->sim().spindle_dir(), 4);  // and the spindle state rebuilt
     c.named("F9");
     c.run_until_settled();
     EXPECT_EQ(c.s->sim().state(), RunState::ended);
@@ -313,7 +315,8 @@ TEST(Bindings, ErrorsNameTheLine) {
     console::Bindings b;
     EXPECT_EQ(b.parse("F1 page help\nF99 page op\n", "user"), "user:2: 'F99' is not a key name");
     EXPECT_EQ(b.parse("F1 fly\n", "user"), "user:1: 'fly' is not an action");
-    EXPECT_EQ(b.parse("F1 page op @planet=mars\n", "user"), "user:1: unknown context 'planet=mars'");
+    EXPECT_EQ(b.parse("F1 page op @planet=mars\n", "user"),
+              "user:1: unknown context 'planet=mars'");
 }
 
 TEST(Bindings, UserLinesWinAndContextsAreMoreSpecific) {
@@ -342,10 +345,7 @@ TEST(Bindings, HelpAndSoftKeysComeFromTheTable) {
 
 // ---- setting: PREF, CORR, touch-off, measurement, undo, protection ----
 
-namespace {
-
-
-}  // namespace
+namespace {}  // namespace
 
 TEST(Setting, TouchOffThePrefOfZAndXAndTheOpPageAgrees) {
     Console c;
@@ -711,7 +711,8 @@ TEST(G76, UnderMemoryProtectionTheChangesStayInMemory) {
     {
         auto opened = store::Store::open(path);
         ASSERT_FALSE(opened.error) << opened.error.message;
-        ASSERT_FALSE(opened.value->save(500, "%500\nN10 G76+ H501\nN20 M2\n", store::kNew, "test").error);
+        ASSERT_FALSE(
+            opened.value->save(500, "%500\nN10 G76+ H501\nN20 M2\n", store::kNew, "test").error);
         Console c("mill", {}, std::move(opened.value));
         c.type(":protect on");
         c.type(":mode pom");

@@ -4,11 +4,10 @@
 // corrector the machine applies.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <random>
-
-#include <unistd.h>
 
 #include "tests/console/fixture.hpp"
 
@@ -23,7 +22,9 @@ std::string num(double v) {
     return buf;
 }
 
-double shown(const Console& c, int axis) { return c.s->sim().to_display(axis, c.s->sim().op()[size_t(axis)]); }
+double shown(const Console& c, int axis) {
+    return c.s->sim().to_display(axis, c.s->sim().op()[size_t(axis)]);
+}
 
 // Runs what Cycle Start starts, to its end.
 void cycle(Console& c) {
@@ -41,7 +42,9 @@ struct Step {
     void (*run)(Console&, std::mt19937&, std::string& log);
 };
 
-int pick(std::mt19937& g, int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(g); }
+int pick(std::mt19937& g, int lo, int hi) {
+    return std::uniform_int_distribution<int>(lo, hi)(g);
+}
 double pick_mm(std::mt19937& g, double lo, double hi) {
     return std::round(std::uniform_real_distribution<double>(lo, hi)(g) * 1000) / 1000;
 }
@@ -56,7 +59,8 @@ void tool_change(Console& c, std::mt19937& g, std::string& log) {
 }
 
 void set_gauge(Console& c, std::mt19937& g, std::string& log) {
-    std::string s = ":set D" + std::to_string(pick(g, 1, 4)) + (pick(g, 0, 1) ? ".X=" : ".Z=") + num(pick_mm(g, -20, 60));
+    std::string s = ":set D" + std::to_string(pick(g, 1, 4)) + (pick(g, 0, 1) ? ".X=" : ".Z=") +
+                    num(pick_mm(g, -20, 60));
     log += " [" + s + "]";
     c.type(s);
 }
@@ -105,7 +109,8 @@ void touch(Console& c, std::mt19937& g, std::string& log) {
     c.type(":page pref");
     c.type(s);
     answer(c);
-    if (c.message().find("PREF.") == std::string::npos || c.message().find(" = OM ") == std::string::npos) {
+    if (c.message().find("PREF.") == std::string::npos ||
+        c.message().find(" = OM ") == std::string::npos) {
         return;  // refused (an alarm, travel): nothing to check
     }
     ++g_checked;
@@ -156,7 +161,8 @@ TEST(SettingProperty, M02AndRazLeaveD0WithTheToolKept) {
     EXPECT_EQ(c.s->sim().corrector(), 0);
     EXPECT_EQ(c.s->sim().tool(), 1);
     EXPECT_EQ(c.s->sim().interp().frames().gauge[X], 0);
-    EXPECT_NEAR(shown(c, X), 150.0 + 20.0, 1e-6);  // ends at X150 with a 10 mm radius gauge, now removed
+    EXPECT_NEAR(shown(c, X), 150.0 + 20.0,
+                1e-6);  // ends at X150 with a 10 mm radius gauge, now removed
     c.type(":page pref");
     c.type("X 150");
     EXPECT_NE(c.message().find("D0, no tool gauge (T1)"), std::string::npos) << c.message();

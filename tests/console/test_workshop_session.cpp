@@ -19,7 +19,9 @@ void crash_in(const char* mode, int starts) {
     Console c("lathe", {"tests/workshop/turn.iso"});
     c.type(":setup lathe");
     ASSERT_TRUE(c.s->sim().shop());
-    for (const char* set : {":set PREF.X=-20", ":set PREF.Z=25", ":set D1.X=52.347", ":set D1.Z=41.215"}) c.type(set);
+    for (const char* set :
+         {":set PREF.X=-20", ":set PREF.Z=25", ":set D1.X=52.347", ":set D1.Z=41.215"})
+        c.type(set);
     c.type(":mode pom");
     c.named("F9");
     c.run_until_settled();
@@ -47,14 +49,22 @@ void crash_in(const char* mode, int starts) {
     EXPECT_TRUE(c.s->sim().shop());
 }
 
-TEST(WorkshopSession, ARapidIntoThePartIsACrashInAuto) { crash_in("auto", 1); }
-TEST(WorkshopSession, ARapidIntoThePartIsACrashInSingleBlock) { crash_in("seq", 10); }
-TEST(WorkshopSession, ARapidIntoThePartIsACrashInDryRun) { crash_in("dry", 1); }
+TEST(WorkshopSession, ARapidIntoThePartIsACrashInAuto) {
+    crash_in("auto", 1);
+}
+TEST(WorkshopSession, ARapidIntoThePartIsACrashInSingleBlock) {
+    crash_in("seq", 10);
+}
+TEST(WorkshopSession, ARapidIntoThePartIsACrashInDryRun) {
+    crash_in("dry", 1);
+}
 
 TEST(WorkshopSession, TestModeMovesNothingAndCrashesNothing) {
     Console c("lathe", {"tests/workshop/turn.iso"});
     c.type(":setup lathe");
-    for (const char* set : {":set PREF.X=-20", ":set PREF.Z=25", ":set D1.X=52.347", ":set D1.Z=41.215"}) c.type(set);
+    for (const char* set :
+         {":set PREF.X=-20", ":set PREF.Z=25", ":set D1.X=52.347", ":set D1.Z=41.215"})
+        c.type(set);
     c.type(":load 10");
     c.type(":mode test");
     c.named("F9");

@@ -31,8 +31,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     LatheWorld world(s.lathe);
     world.new_part();
     Workshop w(lathe, s, nullptr);
-    static constexpr std::string_view kSpecs[] = {"dia Z-10", "dia Z0", "bore Z-5", "groove Z-5",
-                                                  "length", "dia Z-1e300", "bore Z-0.0001"};
+    static constexpr std::string_view kSpecs[] = {
+        "dia Z-10", "dia Z0", "bore Z-5", "groove Z-5", "length", "dia Z-1e300", "bore Z-0.0001"};
     for (std::string_view spec : kSpecs) {
         Reading r;
         (void)w.measure(spec, r);

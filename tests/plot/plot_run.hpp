@@ -47,7 +47,8 @@ struct PlotRun {
 
 // `text` written to a file of its own (CTest runs the tests of one binary in
 // parallel processes), then run as above; `prefix` names the test binary.
-inline PlotRun run_text(const std::string& prefix, const std::string& machine, const std::string& text,
+inline PlotRun run_text(const std::string& prefix, const std::string& machine,
+                        const std::string& text,
                         const std::vector<std::pair<std::string, double>>& sets = {}) {
     std::string path = ::testing::TempDir() + "/" + prefix + "_" +
                        ::testing::UnitTest::GetInstance()->current_test_info()->name() + "_" +

@@ -6,7 +6,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <gtest/gtest.h>
 
-
 #include "pages/page_graph.hpp"
 #include "tests/plot/plot_run.hpp"
 #include "tests/screen/snapshot.hpp"
@@ -56,7 +55,6 @@ struct Lathe555 : test::PlotRun {
 struct Mill200 : test::PlotRun {
     Mill200() : PlotRun("mill", {kPrograms + "/000_p200_boitier.iso"}, {{"D3.R", 8}}) {}
 };
-
 
 GraphView view_of(const test::PlotRun& r) {
     GraphView g;

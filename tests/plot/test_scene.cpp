@@ -75,8 +75,8 @@ TEST(Scene, FrameFitsTheCuttingMovesNotTheRapidsFromHome) {
     EXPECT_DOUBLE_EQ(s.fit.x0, 0);
     EXPECT_DOUBLE_EQ(s.fit.x1, 40);
     EXPECT_DOUBLE_EQ(s.fit.y1, 40);
-    EXPECT_LT(s.wx1, 60);  // X300 is far outside: clipped
-    EXPECT_LT(s.wx0, 0);   // a margin on each side
+    EXPECT_LT(s.wx1, 60);          // X300 is far outside: clipped
+    EXPECT_LT(s.wx0, 0);           // a margin on each side
     EXPECT_EQ(s.fit.outside, 3u);  // out to X300 Y200, back, and out again
     EXPECT_NE(notes(s).find("frame fitted to the cutting moves of %41 (3 rapids reach beyond), "
                             "clipped at the frame"),
@@ -176,7 +176,8 @@ TEST(Scene, SvgKeepsItsLayersAndAddsTheMarks) {
                            "legend", "notes", "border"})
         EXPECT_NE(svg.find(std::string("<g id=\"") + id + "\""), std::string::npos) << id;
     // Every move is kept with its exact coordinates; the frame clips what reaches beyond.
-    EXPECT_NE(svg.find("M0.0000 0.0000 L300.0000 -200.0000 L0.0000 0.0000"), std::string::npos) << svg;
+    EXPECT_NE(svg.find("M0.0000 0.0000 L300.0000 -200.0000 L0.0000 0.0000"), std::string::npos)
+        << svg;
     EXPECT_NE(svg.find("<clipPath id=\"window\">"), std::string::npos);
     EXPECT_NE(svg.find("clip-path=\"url(#window)\""), std::string::npos);
     EXPECT_NE(svg.find(">feed G1 G2 G3</text>"), std::string::npos);
@@ -221,11 +222,12 @@ TEST(Scene, TextEstimateIsNotNarrowerThanTheFont) {
         bool bold;
         double ems;
     };
-    for (const Case& c : {Case{"%555  EXEMPLE EN TOURNAGE", true, 17.417},
-                          Case{"cycle time 0:04:47 (287.800 s)", false, 15.407},
-                          Case{"ABCDEFGHIJKLMNOPQRSTUVWXYZ", false, 17.489},
-                          Case{"compensated path G41 G42", true, 15.620},
-                          Case{"extents  X\xc3\xb8 0.000/300.000  Z -17.000/200.000", false, 23.317}}) {
+    for (const Case& c :
+         {Case{"%555  EXEMPLE EN TOURNAGE", true, 17.417},
+          Case{"cycle time 0:04:47 (287.800 s)", false, 15.407},
+          Case{"ABCDEFGHIJKLMNOPQRSTUVWXYZ", false, 17.489},
+          Case{"compensated path G41 G42", true, 15.620},
+          Case{"extents  X\xc3\xb8 0.000/300.000  Z -17.000/200.000", false, 23.317}}) {
         EXPECT_GE(text_ems(c.text, c.bold), c.ems) << c.text;
         EXPECT_LE(text_ems(c.text, c.bold), 1.15 * c.ems) << c.text;
     }

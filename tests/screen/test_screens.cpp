@@ -5,7 +5,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <gtest/gtest.h>
 
-
 #include "tests/console/fixture.hpp"
 #include "tests/screen/snapshot.hpp"
 
@@ -26,7 +25,8 @@ void homed_lathe(Console& c) {
     c.type(":mode auto");
     c.type(":load 300");
 }
-const std::vector<std::string> kLatheFiles = {"data/demo/lathe_p300.iso", "tests/golden/programs/css_lathe.iso"};
+const std::vector<std::string> kLatheFiles = {"data/demo/lathe_p300.iso",
+                                              "tests/golden/programs/css_lathe.iso"};
 
 // The demo run in AUTO for `seconds` of simulated time, in frames of 1/30 s.
 void run_for(Console& c, double seconds) {
@@ -219,8 +219,9 @@ TEST(Screen, PrefCorrectorLineWraps) {
     setter_lathe(c);
     c.type(":page pref");
     const std::string screen = c.screen();
-    EXPECT_NE(screen.find("active corrector D1, tool T1; its gauge on X Z applies at the next move or"),
-              std::string::npos)
+    EXPECT_NE(
+        screen.find("active corrector D1, tool T1; its gauge on X Z applies at the next move or"),
+        std::string::npos)
         << screen;
     EXPECT_NE(screen.find("  touch-off"), std::string::npos) << screen;
 }

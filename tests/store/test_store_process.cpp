@@ -7,8 +7,8 @@
 #include <sys/wait.h>
 
 #include <chrono>
-#include <filesystem>
 #include <cstdio>
+#include <filesystem>
 #include <random>
 #include <thread>
 

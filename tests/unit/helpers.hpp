@@ -45,7 +45,7 @@ struct Prog {
     std::unique_ptr<Interpreter> in;
 
     explicit Prog(const std::string& text, const std::string& machine_name = "mill",
-                 std::vector<std::pair<std::string, double>> sets = {}, RunOptions o = {}) {
+                  std::vector<std::pair<std::string, double>> sets = {}, RunOptions o = {}) {
         // "lathe-manual": the shipped lathe without automatic spindle ranges.
         builtin_machine(machine_name == "lathe-manual" ? "lathe" : machine_name, machine);
         if (machine_name == "lathe-manual") machine.auto_range = false;

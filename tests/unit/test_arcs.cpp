@@ -28,12 +28,13 @@ TEST(Arcs, EndOnCircleAndG90G91Agree) {
         double cx = sx - r * std::cos(a0), cy = sy - r * std::sin(a0);
         double ex = cx + r * std::cos(a1), ey = cy + r * std::sin(a1);
         std::string g = (i % 2) ? "G2" : "G3";
-        std::string abs = "%1\nG0 X" + f3(sx) + " Y" + f3(sy) + " Z0\nG1 F500\n" + g + " X" + f3(ex) + " Y" +
-                          f3(ey) + " I" + f3(cx) + " J" + f3(cy) + "\nM2\n";
+        std::string abs = "%1\nG0 X" + f3(sx) + " Y" + f3(sy) + " Z0\nG1 F500\n" + g + " X" +
+                          f3(ex) + " Y" + f3(ey) + " I" + f3(cx) + " J" + f3(cy) + "\nM2\n";
         double sx3 = std::stod(f3(sx)), sy3 = std::stod(f3(sy));
         std::string inc = "%1\nG0 X" + f3(sx) + " Y" + f3(sy) + " Z0\nG1 F500\nG91 " + g + " X" +
                           f3(std::stod(f3(ex)) - sx3) + " Y" + f3(std::stod(f3(ey)) - sy3) + " I" +
-                          f3(std::stod(f3(cx)) - sx3) + " J" + f3(std::stod(f3(cy)) - sy3) + "\nM2\n";
+                          f3(std::stod(f3(cx)) - sx3) + " J" + f3(std::stod(f3(cy)) - sy3) +
+                          "\nM2\n";
         Prog ra(abs), ri(inc);
         ASSERT_EQ(ra.error(), 0) << abs;
         ASSERT_EQ(ri.error(), 0) << inc;
@@ -58,7 +59,8 @@ TEST(Arcs, RTakesTheShorterArc) {
         if (d < 1) continue;
         double r = d / 2 + std::fabs(u(rng)) / 5 + 0.01;
         std::string g = (i % 2) ? "G2" : "G3";
-        Prog ra("%1\nG0 X0 Y0 Z0\nG1 F500\n" + g + " X" + f3(ex) + " Y" + f3(ey) + " R" + f3(r) + "\nM2\n");
+        Prog ra("%1\nG0 X0 Y0 Z0\nG1 F500\n" + g + " X" + f3(ex) + " Y" + f3(ey) + " R" + f3(r) +
+                "\nM2\n");
         ASSERT_EQ(ra.error(), 0);
         const MoveEvent& m = ra.cap.moves.back();
         EXPECT_LE(std::fabs(m.sweep), 180.0 + 1e-6);
@@ -85,7 +87,9 @@ TEST(Arcs, ValidityRules) {
 
 TEST(Arcs, HelixPitchChoosesTurns) {
     // 000:4751-4774 with Y-25.364: 480° for a real pitch of 120.
-    Prog r("%1\nG0 X110 Y110 Z5\nG1 X94.661 Y-25.364\nG02 X-69.296 Y-69.296 Z-155 I0 J0 K120 F250\nM2\n");
+    Prog r(
+        "%1\nG0 X110 Y110 Z5\nG1 X94.661 Y-25.364\nG02 X-69.296 Y-69.296 Z-155 I0 J0 K120 "
+        "F250\nM2\n");
     ASSERT_EQ(r.error(), 0);
     EXPECT_NEAR(r.cap.moves.back().sweep, -480, 0.01);
 }
@@ -104,7 +108,7 @@ TEST(Arcs, LatheCentreIsAnAbsoluteDiameter) {
     Prog r("%1\nG0 X50 Z65\nG1 F100\nG03 X50 Z35 I30 K50\nM2\n", "lathe");
     ASSERT_EQ(r.error(), 0);
     const MoveEvent& m = r.cap.moves.back();
-    EXPECT_NEAR(m.c0, 50, 1e-9);   // Z
-    EXPECT_NEAR(m.c1, 15, 1e-9);   // X radius
+    EXPECT_NEAR(m.c0, 50, 1e-9);  // Z
+    EXPECT_NEAR(m.c1, 15, 1e-9);  // X radius
     EXPECT_NEAR(m.length, std::hypot(10, 15) * m.sweep * M_PI / 180, 1e-9);
 }

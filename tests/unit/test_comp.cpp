@@ -51,7 +51,8 @@ std::vector<std::pair<double, double>> samples(const MoveEvent& m, double fx, do
 
 // Runs a closed polygon (counter-clockwise points) with G41 or G42 and checks it.
 void check_polygon(const std::vector<std::pair<double, double>>& pts, int g, double r) {
-    std::string prog = "%1\nG0 X" + f3(pts[0].first - 30) + " Y" + f3(pts[0].second - 30) + " Z0\nG1 F500\n";
+    std::string prog =
+        "%1\nG0 X" + f3(pts[0].first - 30) + " Y" + f3(pts[0].second - 30) + " Z0\nG1 F500\n";
     prog += "D1 G" + std::to_string(g) + " X" + f3(pts[0].first) + " Y" + f3(pts[0].second) + "\n";
     std::vector<Seg> segs;
     // Once around and one element more, so every corner of the polygon is joined;
@@ -126,9 +127,11 @@ TEST(Comp, StarPolygonsConcave) {
 
 TEST(Comp, ArcsKeepTheirCentreAndChangeRadiusByR) {
     // A rounded rectangle, outside (G42 on a counter-clockwise path): the arcs grow by R.
-    Prog r("%1\nG0 X-20 Y-20 Z0\nG1 F300\nD1 G42 X10 Y0\nX90\nG3 X100 Y10 I90 J10\nG1 Y50\n"
-           "G3 X90 Y60 I90 J50\nG1 X10\nG3 X0 Y50 I10 J50\nG1 Y10\nG3 X10 Y0 I10 J10\nG1 G40 X-20 Y-20\nM2\n",
-           "mill", {{"D1.R", 4}});
+    Prog r(
+        "%1\nG0 X-20 Y-20 Z0\nG1 F300\nD1 G42 X10 Y0\nX90\nG3 X100 Y10 I90 J10\nG1 Y50\n"
+        "G3 X90 Y60 I90 J50\nG1 X10\nG3 X0 Y50 I10 J50\nG1 Y10\nG3 X10 Y0 I10 J10\nG1 G40 X-20 "
+        "Y-20\nM2\n",
+        "mill", {{"D1.R", 4}});
     ASSERT_EQ(r.error(), 0);
     int arcs = 0;
     for (size_t k = 1; k < r.cap.moves.size(); ++k) {
@@ -144,8 +147,8 @@ TEST(Comp, ArcsKeepTheirCentreAndChangeRadiusByR) {
 TEST(Comp, EntryOnTheNormalOfTheNextElementAndEventsInOrder) {
     // 000:3938: at the end of the entry block the centre is on the normal of the next
     // element; the M08 of the next block comes after the entry move.
-    Prog r("%1\nG0 X-10 Y-10 Z0\nG1 F200\nD1 G41 X0 Y0\nZ-2\nX50 M8\nY30\nG40 X70 Y40\nM2\n", "mill",
-           {{"D1.R", 5}});
+    Prog r("%1\nG0 X-10 Y-10 Z0\nG1 F200\nD1 G41 X0 Y0\nZ-2\nX50 M8\nY30\nG40 X70 Y40\nM2\n",
+           "mill", {{"D1.R", 5}});
     ASSERT_EQ(r.error(), 0);
     ASSERT_GE(r.cap.moves.size(), 5u);
     EXPECT_NEAR(r.cap.moves[1].to_prog[X], 0, 1e-9);
@@ -163,7 +166,7 @@ TEST(Comp, LatheNoseRadiusAndOrientation) {
     Prog r("%1\nG0 X60 Z10\nG1 F100\nD1 G42 X40 Z2\nZ-30\nX60\nG40 X80 Z-30\nM2\n", "lathe",
            {{"D1.R", 0.8}, {"D1.C", 3}});
     ASSERT_EQ(r.error(), 0);
-    const MoveEvent& m = r.cap.moves[2];  // along Z-30 at Ø40
+    const MoveEvent& m = r.cap.moves[2];              // along Z-30 at Ø40
     EXPECT_NEAR(m.to_prog[X], 20 + 0.8 - 0.8, 1e-9);  // radius: 20 + R - R
     EXPECT_NEAR(m.to_prog[Z], -30, 1e-9);
 }

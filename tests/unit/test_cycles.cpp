@@ -75,7 +75,9 @@ TEST(Cycles, RigidTappingFeedsFromPitchAndSpeed) {
 
 TEST(Cycles, ParametersStayModalAndERAloneMoves) {
     // %222 (000:6379-6403): Z and ER changed between holes; ER alone moves.
-    Prog r("%222\nS1000 M3\nG0 X0 Y0 Z50\nG81 X10 Y20 ER22 Z10 F100\nER32\nX30 Z-3\nX50 ER22 Z10\nG80 G0 Z150\nM2\n");
+    Prog r(
+        "%222\nS1000 M3\nG0 X0 Y0 Z50\nG81 X10 Y20 ER22 Z10 F100\nER32\nX30 Z-3\nX50 ER22 Z10\nG80 "
+        "G0 Z150\nM2\n");
     ASSERT_EQ(r.error(), 0);
     auto d = feed_depths(r);
     std::vector<double> want = {10, -3, 10};

@@ -28,17 +28,19 @@ TEST(Eval, Functions) {
 
 TEST(Eval, SeedFrameChange) {
     // 004 %170 (004:2006-2012): standard precedence would give 169.7299.
-    Prog r("%1\nL10=30 L11=70 L12=75 L13=34.225 L14=197.783 L15=-339.662\n"
-          "L16= L11+L14 * C L10\nL16=-L13-L15 * S L10 + L16 - L14\n"
-          "L17= L11+L14 * S L10\nL17= L13+L15 * C L10 + L17 - L15\nM2\n");
+    Prog r(
+        "%1\nL10=30 L11=70 L12=75 L13=34.225 L14=197.783 L15=-339.662\n"
+        "L16= L11+L14 * C L10\nL16=-L13-L15 * S L10 + L16 - L14\n"
+        "L17= L11+L14 * S L10\nL17= L13+L15 * C L10 + L17 - L15\nM2\n");
     EXPECT_NEAR(r.L(16), 186.8424, 5e-5);
     EXPECT_NEAR(r.L(17), 209.0373, 5e-5);
 }
 
 TEST(Eval, SeedIrregularOblong) {
     // %780 (000:8323): L100 = L8-L9/L1 is (L8-L9)/L1.
-    Prog r("%1\nL1=100 L8=30 L9=20\nL100=L8-L9/L1\nL101=L1*L1\nL102=L8-L9\nL103=L102*L102\n"
-          "L104=L101-L103\nL105=RL104\nL106=L105/L1\nM2\n");
+    Prog r(
+        "%1\nL1=100 L8=30 L9=20\nL100=L8-L9/L1\nL101=L1*L1\nL102=L8-L9\nL103=L102*L102\n"
+        "L104=L101-L103\nL105=RL104\nL106=L105/L1\nM2\n");
     EXPECT_NEAR(r.L(100), 0.1, 1e-12);
     EXPECT_NEAR(r.L(105), 99.4987, 5e-5);
     EXPECT_NEAR(r.L(106), 0.99499, 5e-6);
@@ -55,7 +57,9 @@ TEST(Eval, Errors) {
 
 TEST(Eval, EParametersAreIntegersInInternalUnits) {
     // 000:7651-7669 with the printed inputs: 3000/2000.
-    Prog r("%1\nE80002=3000 E80016=2000\nL1=E80002/E80016\nE80005=E80002/E80016\nE80006=L1*1000\nM2\n");
+    Prog r(
+        "%1\nE80002=3000 "
+        "E80016=2000\nL1=E80002/E80016\nE80005=E80002/E80016\nE80006=L1*1000\nM2\n");
     EXPECT_DOUBLE_EQ(r.L(1), 1.5);
     EXPECT_EQ(r.in->e_written().at(80005), 1);
     EXPECT_EQ(r.in->e_written().at(80006), 1500);

@@ -39,7 +39,7 @@ TEST(Frames, RoundTripProperty) {
 TEST(Frames, SeedG92Example) {
     // 000:1187-1211: PREF Z -300, DEC1 20, gauge 80, Z40 is -160 on OM; G92 Z60 -> PREF -320.
     test::Prog r("%1\nG0 D1 X0 Z40\nG92 Z60\nL1=E62000\nM2\n", "lathe",
-                {{"PREF.Z", -300}, {"DEC1.Z", 20}, {"D1.Z", 80}});
+                 {{"PREF.Z", -300}, {"DEC1.Z", 20}, {"D1.Z", 80}});
     ASSERT_EQ(r.error(), 0);
     ASSERT_EQ(r.cap.moves.size(), 1u);
     EXPECT_NEAR(r.cap.moves[0].to_mach[Z], -160, 1e-9);
@@ -49,7 +49,7 @@ TEST(Frames, SeedG92Example) {
 TEST(Frames, GaugeAppliedAtFirstMoveOfTheAxis) {
     // 000:843-865: the Z gauge of D02 at N40, the X gauge at N50.
     test::Prog r("%1\nN10 G00 G52 X150 Z200\nN20 T02 D02 M06\nN40 G00 Z100\nN50 X60\nM2\n", "lathe",
-                {{"D2.X", 20}, {"D2.Z", 50}});
+                 {{"D2.X", 20}, {"D2.Z", 50}});
     ASSERT_EQ(r.cap.moves.size(), 3u);
     EXPECT_NEAR(r.cap.moves[1].to_mach[Z], 150, 1e-9);  // 100 + 50
     EXPECT_NEAR(r.cap.moves[1].to_mach[X], 150, 1e-9);  // X untouched: radius 150

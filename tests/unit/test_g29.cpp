@@ -14,9 +14,9 @@ namespace {
 
 const char* kProgram =
     "%1\nN10 G0 X0 Y0 Z50\nN20 T1 D1 M6\n"
-    "N30 G1 G29 X10 Y0 Z0 P0 Q0 R1 F500\n"     // flat bottom: the tip on the point
-    "N40 X20 Y0 Z0 P.707 Q0 R.707\n"           // a 45-degree slope
-    "N50 X30 Y5 Z-1 P0 Q-1 R0\n"               // a wall facing -Y
+    "N30 G1 G29 X10 Y0 Z0 P0 Q0 R1 F500\n"  // flat bottom: the tip on the point
+    "N40 X20 Y0 Z0 P.707 Q0 R.707\n"        // a 45-degree slope
+    "N50 X30 Y5 Z-1 P0 Q-1 R0\n"            // a wall facing -Y
     "N60 G40 G0 Z50\nN70 M2\n";
 
 }  // namespace
@@ -24,7 +24,8 @@ const char* kProgram =
 TEST(G29, TipOfATorusCutterTouchingThePoint) {
     // R 5, end radius @ 2, tool along +Z.
     Prog p(kProgram, "mill", {{"D1.R", 5}, {"D1.A", 2}});
-    ASSERT_EQ(p.in->run_to_end(), StepResult::ended) << (p.in->diags().empty() ? "" : p.in->diags()[0].detail);
+    ASSERT_EQ(p.in->run_to_end(), StepResult::ended)
+        << (p.in->diags().empty() ? "" : p.in->diags()[0].detail);
     const auto& m = p.cap.moves;
     ASSERT_EQ(m.size(), 5u);
     EXPECT_NEAR(m[1].to_prog[X], 10, 1e-9);
@@ -48,7 +49,8 @@ TEST(G29, ABallCutterStaysAtItsRadiusFromThePoint) {
     for (int i = 0; i < 3; ++i) {
         const Axes& t = m[size_t(i + 1)].to_prog;
         double cx = t[X], cy = t[Y], cz = t[Z] + 4;  // the ball's centre above the tip
-        double d = std::sqrt(std::pow(cx - pts[i][0], 2) + std::pow(cy - pts[i][1], 2) + std::pow(cz - pts[i][2], 2));
+        double d = std::sqrt(std::pow(cx - pts[i][0], 2) + std::pow(cy - pts[i][1], 2) +
+                             std::pow(cz - pts[i][2], 2));
         EXPECT_NEAR(d, 4, 1e-3) << "block " << i;
     }
 }

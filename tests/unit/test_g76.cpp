@@ -215,7 +215,8 @@ TEST(G76Plus, AValueTheBlockCannotHoldIsRefusedAtTheG76Block) {
     Prog a("%1\nN5 L1=123456789\nN10 G76+ N10 G0 XL1\nN20 M2\n");
     EXPECT_EQ(a.error(), 1);
     EXPECT_EQ(first_error(a).n, 10);
-    const std::string huge = "N5 L1=-99999*99999*99999*99999*99999*99999*99999*99999*99999*99999*99999*99999\n";
+    const std::string huge =
+        "N5 L1=-99999*99999*99999*99999*99999*99999*99999*99999*99999*99999*99999*99999\n";
     Prog b("%1\n" + huge + "N10 G76+ N10 L3=L1 L4=L1\nN20 M2\n");  // 2 x 63 digits
     EXPECT_EQ(b.error(), 1);
     EXPECT_EQ(first_error(b).n, 10);
@@ -242,9 +243,10 @@ TEST(G76Plus, TheBlockTakesNoAssignmentAndOneH) {
 
 TEST(G76Plus, BlocksWithoutMotionUnderCompensationAreCounted) {
     // Three G76 blocks in a row under G41 are three blocks without motion (140).
-    Prog p("%1\nN10 G0 X0 Y0 Z0\nN20 G1 G41 X10 Y0 F100\nN30 G76+ H5\nN40 G76+ H6\nN50 G76+ H7\n"
-           "N60 X20\nN70 G40 X30\nN80 M2\n",
-           "mill", {{"D1.R", 2}});
+    Prog p(
+        "%1\nN10 G0 X0 Y0 Z0\nN20 G1 G41 X10 Y0 F100\nN30 G76+ H5\nN40 G76+ H6\nN50 G76+ H7\n"
+        "N60 X20\nN70 G40 X30\nN80 M2\n",
+        "mill", {{"D1.R", 2}});
     EXPECT_EQ(p.error(), 140);
     EXPECT_EQ(first_error(p).n, 50);
 }

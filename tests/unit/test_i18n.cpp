@@ -1,13 +1,13 @@
 // The choice of language and the catalogue (issue 20).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <string>
-#include <unistd.h>
 
 #include "core/diag.hpp"
 #include "core/i18n.hpp"
@@ -40,18 +40,19 @@ TEST(I18n, WantedFollowsGnuOrder) {
 }
 
 TEST(I18n, ChooseTakesTheFirstLanguageWithACatalogue) {
-    auto dir = std::filesystem::temp_directory_path() / ("pupitre-i18n-" + std::to_string(::getpid()));
+    auto dir =
+        std::filesystem::temp_directory_path() / ("pupitre-i18n-" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir / "fr/LC_MESSAGES");
     std::ofstream(dir / "fr/LC_MESSAGES/pupitre.mo") << "";
     std::string d = dir.string();
     EXPECT_EQ(i18n::choose("", "", d), "en");
     EXPECT_EQ(i18n::choose("", "fr_FR:fr", d), "fr");
-    EXPECT_EQ(i18n::choose("", "de_DE:de:fr", d), "fr");   // no German: the next one
-    EXPECT_EQ(i18n::choose("", "en_GB:en:fr", d), "en");   // English asked before French
-    EXPECT_EQ(i18n::choose("fr", "en_US:en", d), "fr");    // --lang wins
+    EXPECT_EQ(i18n::choose("", "de_DE:de:fr", d), "fr");  // no German: the next one
+    EXPECT_EQ(i18n::choose("", "en_GB:en:fr", d), "en");  // English asked before French
+    EXPECT_EQ(i18n::choose("fr", "en_US:en", d), "fr");   // --lang wins
     EXPECT_EQ(i18n::choose("fr_CA.UTF-8", "", d), "fr");
     EXPECT_EQ(i18n::choose("en", "fr", d), "en");
-    EXPECT_EQ(i18n::choose("de", "fr", d), "");            // unknown --lang: an error
+    EXPECT_EQ(i18n::choose("de", "fr", d), "");  // unknown --lang: an error
     EXPECT_EQ(i18n::available(d), "en, fr");
     std::filesystem::remove_all(dir);
 }
@@ -62,11 +63,13 @@ TEST(I18n, FrenchCatalogueAndDecimalPoint) {
     EXPECT_EQ(i18n::language(), "fr");
     EXPECT_STREQ(tr("The file is not text"), "Le fichier n'est pas du texte");
     // The NUM texts are the manual's French (data/errors.tsv).
-    EXPECT_EQ(num_error_text(2), "Fonction G non reconnue, ou argument obligatoire absent derrière la fonction G");
+    EXPECT_EQ(num_error_text(2),
+              "Fonction G non reconnue, ou argument obligatoire absent derrière la fonction G");
     EXPECT_EQ(strf("%.3f", 1.5), "1.500");  // LC_NUMERIC stays C
     // A text with no translation is the English one.
     EXPECT_STREQ(tr("no such text in any catalogue"), "no such text in any catalogue");
     i18n::init("en", dir);
     EXPECT_STREQ(tr("The file is not text"), "The file is not text");
-    EXPECT_EQ(num_error_text(2), "G code not recognised, or mandatory argument missing after the G code");
+    EXPECT_EQ(num_error_text(2),
+              "G code not recognised, or mandatory argument missing after the G code");
 }

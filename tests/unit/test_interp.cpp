@@ -18,10 +18,11 @@ TEST(Flow, G77RangeEitherOrderAndRepeat) {
 
 TEST(Flow, SeedLoop6500) {
     // 000:10276-10298: N120..N150 run 34 times, L3 ends at 360.
-    Prog r("%6500\nL1=8.17 L2=9.95 L3=20 L4=20\n"
-          "N120 G G54 G90 X56.02 Y-32.34 Z10\nN130 G1 Z-L1 F90\nN140 G1 X73.61 Y-42.5 Z-L2\n"
-          "N150 G Z10\nN160 EDL3\nN170 G77 N120 N150\nN180 L3=L3+L4\nN190 G79 L3<=340 N120\n"
-          "N200 G G52 X Y Z\nM2\n");
+    Prog r(
+        "%6500\nL1=8.17 L2=9.95 L3=20 L4=20\n"
+        "N120 G G54 G90 X56.02 Y-32.34 Z10\nN130 G1 Z-L1 F90\nN140 G1 X73.61 Y-42.5 Z-L2\n"
+        "N150 G Z10\nN160 EDL3\nN170 G77 N120 N150\nN180 L3=L3+L4\nN190 G79 L3<=340 N120\n"
+        "N200 G G52 X Y Z\nM2\n");
     EXPECT_EQ(r.error(), 0);
     EXPECT_DOUBLE_EQ(r.L(3), 360);
     EXPECT_EQ(r.cap.moves.size(), 34u * 4 + 1);
@@ -71,9 +72,11 @@ TEST(Flow, MovesCountInTheWorkBudget) {
     RunOptions o;
     o.max_blocks = 1000;
     // Drilling: three moves a block, more than two a block over the loop.
-    Prog r("%1\nG0 X0 Y0 Z50\nM3 M40 S800\nX10 Y20 Z22\nG81 Z10 ER32 F200\nL1=0\nN10 L1=L1+1\nX10\nX20\n"
-           "X30\nX40\nX50\nX60\nG79 N10\n",
-           "mill", {}, o);
+    Prog r(
+        "%1\nG0 X0 Y0 Z50\nM3 M40 S800\nX10 Y20 Z22\nG81 Z10 ER32 F200\nL1=0\nN10 "
+        "L1=L1+1\nX10\nX20\n"
+        "X30\nX40\nX50\nX60\nG79 N10\n",
+        "mill", {}, o);
     EXPECT_EQ(r.error(), err::kBlockBudget);
     EXPECT_LT(r.in->blocks(), 1000);  // the moves ran out first
     EXPECT_LE(r.in->moves(), 2 * 1000 + 8);
@@ -88,7 +91,8 @@ TEST(Flow, BlockSkip) {
 
 TEST(Spindle, ConstantSurfaceSpeedWithLimit) {
     // 000:1625-1684: G92 S1800, G96 S200: 509.3 rev/min at X125, 3183 limited to 1800 at X20.
-    Prog r("%1\nG92 S1800\nG0 X150 Z200\nG96 S200 M3 M41\nG95 F.1\nG0 X125\nG1 X20\nZ100\nM2\n", "lathe");
+    Prog r("%1\nG92 S1800\nG0 X150 Z200\nG96 S200 M3 M41\nG95 F.1\nG0 X125\nG1 X20\nZ100\nM2\n",
+           "lathe");
     ASSERT_EQ(r.error(), 0);
     ASSERT_GE(r.cap.moves.size(), 4u);
     EXPECT_NEAR(r.cap.moves[2].rpm, 1000 * 200 / (std::numbers::pi * 125), 1e-6);
@@ -97,7 +101,7 @@ TEST(Spindle, ConstantSurfaceSpeedWithLimit) {
 
 TEST(Spindle, Errors) {
     EXPECT_EQ(Prog("%1\nG97\nM2\n").error(), 28);
-    EXPECT_EQ(Prog("%1\nM3 M41\nG96 S100\nM2\n", "lathe").error(), 28);    // no diameter known
+    EXPECT_EQ(Prog("%1\nM3 M41\nG96 S100\nM2\n", "lathe").error(), 28);  // no diameter known
     EXPECT_EQ(Prog("%1\nG0 X50 Z10\nM3\nG96 S100\nM2\n", "lathe-manual").error(), 29);  // no range
     EXPECT_EQ(Prog("%1\nG0 X50 Z10\nM3\nG96 S100\nM2\n", "lathe").error(), 0);  // automatic ranges
     EXPECT_EQ(Prog("%1\nG0 X50 Z10\nM41 M3\nG97 S5000\nM2\n", "lathe").error(), 29);  // outside M41

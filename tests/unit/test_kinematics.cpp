@@ -26,8 +26,8 @@ TEST(Kinematics, Mill4TestVector) {
 TEST(Kinematics, Mill5TestVector) {
     Eigen::Isometry3d h = kin::forward5({10, 20, 30, 30, 45}, 100, -40, 250);
     Eigen::Matrix<double, 3, 4> want;
-    want << 0.612372, -0.707107, 0.353553, -96.464466, 0.612372, 0.707107, 0.353553, 15.251263, -0.5, 0,
-        0.866025, 63.493649;
+    want << 0.612372, -0.707107, 0.353553, -96.464466, 0.612372, 0.707107, 0.353553, 15.251263,
+        -0.5, 0, 0.866025, 63.493649;
     EXPECT_TRUE(h.matrix().topRows<3>().isApprox(want, 1e-6)) << h.matrix();
     auto p = kin::inverse5(h, 100, -40, 250);
     ASSERT_TRUE(p);
@@ -65,7 +65,8 @@ TEST(Kinematics, Program170ComputesItsOwnFrame) {
     ASSERT_TRUE(builtin_machine("mill4", m));
     ProgramMemory mem;
     Diag d;
-    const std::string path = std::string(PUPITRE_SOURCE_DIR) + "/tests/golden/programs/004_p170.iso";
+    const std::string path =
+        std::string(PUPITRE_SOURCE_DIR) + "/tests/golden/programs/004_p170.iso";
     ASSERT_TRUE(mem.load_file(path, d)) << d.detail;
     test::Capture cap;
     Interpreter in(m, mem, cap);

@@ -25,8 +25,9 @@ TEST(PgpRun, SeedExampleE1) {
 
 TEST(PgpRun, FilletThroughCompensation) {
     // E16 with a R2 tool on the left: every element stays at 2 from the profile.
-    Prog r(prog("X-10 Y10", "D1 G41 G1 X-10 Y10\nEA160 ES- EB+12\nG3 I-50 J20 X-60 Y20\nG1 G40 X-80 Y0\n"), "mill",
-           {{"D1.R", 2}});
+    Prog r(prog("X-10 Y10",
+                "D1 G41 G1 X-10 Y10\nEA160 ES- EB+12\nG3 I-50 J20 X-60 Y20\nG1 G40 X-80 Y0\n"),
+           "mill", {{"D1.R", 2}});
     ASSERT_EQ(r.error(), 0);
     int arcs = 0;
     for (const MoveEvent& m : r.cap.moves) arcs += (m.g == 2 || m.g == 3);

@@ -18,8 +18,8 @@
 
 using namespace pupitre;
 using comp::Elem;
-using test::in_polygon;
 using comp::V2;
+using test::in_polygon;
 
 namespace {
 constexpr double kPi = std::numbers::pi;
@@ -58,7 +58,8 @@ std::vector<V2> polygon(const std::vector<Elem>& es) {
         }
         double r = (e.a - e.c).norm(), a0 = std::atan2(e.a.y() - e.c.y(), e.a.x() - e.c.x());
         for (int i = 0; i < 64; ++i)
-            out.push_back(e.c + r * V2(std::cos(a0 + e.sweep * i / 64), std::sin(a0 + e.sweep * i / 64)));
+            out.push_back(e.c +
+                          r * V2(std::cos(a0 + e.sweep * i / 64), std::sin(a0 + e.sweep * i / 64)));
     }
     return out;
 }
@@ -71,13 +72,17 @@ std::vector<Elem> rect(V2 lo, V2 hi, double round, bool ccw) {
     } else {
         double r = round;
         es = {line(V2(lo.x() + r, lo.y()), V2(hi.x() - r, lo.y())),
-              arc(V2(hi.x() - r, lo.y()), V2(hi.x(), lo.y() + r), V2(hi.x() - r, lo.y() + r), kPi / 2),
+              arc(V2(hi.x() - r, lo.y()), V2(hi.x(), lo.y() + r), V2(hi.x() - r, lo.y() + r),
+                  kPi / 2),
               line(V2(hi.x(), lo.y() + r), V2(hi.x(), hi.y() - r)),
-              arc(V2(hi.x(), hi.y() - r), V2(hi.x() - r, hi.y()), V2(hi.x() - r, hi.y() - r), kPi / 2),
+              arc(V2(hi.x(), hi.y() - r), V2(hi.x() - r, hi.y()), V2(hi.x() - r, hi.y() - r),
+                  kPi / 2),
               line(V2(hi.x() - r, hi.y()), V2(lo.x() + r, hi.y())),
-              arc(V2(lo.x() + r, hi.y()), V2(lo.x(), hi.y() - r), V2(lo.x() + r, hi.y() - r), kPi / 2),
+              arc(V2(lo.x() + r, hi.y()), V2(lo.x(), hi.y() - r), V2(lo.x() + r, hi.y() - r),
+                  kPi / 2),
               line(V2(lo.x(), hi.y() - r), V2(lo.x(), lo.y() + r)),
-              arc(V2(lo.x(), lo.y() + r), V2(lo.x() + r, lo.y()), V2(lo.x() + r, lo.y() + r), kPi / 2)};
+              arc(V2(lo.x(), lo.y() + r), V2(lo.x() + r, lo.y()), V2(lo.x() + r, lo.y() + r),
+                  kPi / 2)};
     }
     if (!ccw) {
         std::reverse(es.begin(), es.end());
@@ -111,7 +116,10 @@ struct Pocket {
         if (!in_polygon(outer_poly, p)) return why = "outside the pocket", false;
         for (const auto& is : island_polys)
             if (in_polygon(is, p)) return why = "inside an island", false;
-        if (d < need - 1e-4) return why = "at " + std::to_string(d) + " from a wall, " + std::to_string(need) + " needed", false;
+        if (d < need - 1e-4)
+            return why = "at " + std::to_string(d) + " from a wall, " + std::to_string(need) +
+                         " needed",
+                   false;
         return true;
     }
 };
@@ -123,7 +131,8 @@ std::vector<V2> along(V2 from, const comp::Piece& pc) {
         double r = (from - pc.c).norm(), a0 = std::atan2(from.y() - pc.c.y(), from.x() - pc.c.x());
         int n = std::max(4, int(std::ceil(std::fabs(pc.sweep) * r / .05)));
         for (int k = 1; k <= n; ++k)
-            pts.push_back(pc.c + r * V2(std::cos(a0 + pc.sweep * k / n), std::sin(a0 + pc.sweep * k / n)));
+            pts.push_back(pc.c +
+                          r * V2(std::cos(a0 + pc.sweep * k / n), std::sin(a0 + pc.sweep * k / n)));
     } else {
         int n = std::max(1, int(std::ceil((pc.to - from).norm() / .05)));
         for (int k = 1; k <= n; ++k) pts.push_back(from + (pc.to - from) * (double(k) / n));
@@ -131,7 +140,8 @@ std::vector<V2> along(V2 from, const comp::Piece& pc) {
     return pts;
 }
 
-int check_runs(const Pocket& pk, const std::vector<p46::Run>& runs, double need, const std::string& what) {
+int check_runs(const Pocket& pk, const std::vector<p46::Run>& runs, double need,
+               const std::string& what) {
     int bad = 0;
     std::string why;
     V2 at(0, 0);
@@ -148,8 +158,8 @@ int check_runs(const Pocket& pk, const std::vector<p46::Run>& runs, double need,
         }
         for (V2 q : pts)
             if (!pk.ok(q, need, why) && ++bad <= 2)
-                ADD_FAILURE() << what << (r.cleanup ? " clean-up" : "") << (r.linked ? " linked" : "") << ": "
-                              << q.transpose() << " " << why;
+                ADD_FAILURE() << what << (r.cleanup ? " clean-up" : "")
+                              << (r.linked ? " linked" : "") << ": " << q.transpose() << " " << why;
         at = from;
         have = true;
     }
@@ -190,13 +200,17 @@ TEST(Pocket46, GeneratedPocketsNeverEnterTheWallsOrIslands) {
             int kind = int(u(rng) * 3);
             bool iccw = u(rng) < .5;
             if (kind == 0) {
-                std::vector<Elem> circ{arc(c + V2(s, 0), c - V2(s, 0), c, kPi), arc(c - V2(s, 0), c + V2(s, 0), c, kPi)};
-                if (!iccw) circ = {arc(c + V2(s, 0), c - V2(s, 0), c, -kPi), arc(c - V2(s, 0), c + V2(s, 0), c, -kPi)};
+                std::vector<Elem> circ{arc(c + V2(s, 0), c - V2(s, 0), c, kPi),
+                                       arc(c - V2(s, 0), c + V2(s, 0), c, kPi)};
+                if (!iccw)
+                    circ = {arc(c + V2(s, 0), c - V2(s, 0), c, -kPi),
+                            arc(c - V2(s, 0), c + V2(s, 0), c, -kPi)};
                 pk.islands.push_back(circ);
             } else if (kind == 1) {
                 pk.islands.push_back(rect(c - V2(s, s * .6), c + V2(s, s * .6), 0, iccw));
             } else {
-                pk.islands.push_back(poly({c + V2(-s, -s * .7), c + V2(s, -s * .7), c + V2(0, s * .9)}, iccw));
+                pk.islands.push_back(
+                    poly({c + V2(-s, -s * .7), c + V2(s, -s * .7), c + V2(0, s * .9)}, iccw));
             }
             ++k;
         }
@@ -206,7 +220,9 @@ TEST(Pocket46, GeneratedPocketsNeverEnterTheWallsOrIslands) {
         p46::Section o;
         // LX LY: the finishing starts in the middle of the first element, a
         // circle where it starts (finishing from a corner is error 288).
-        auto start_of = [](const std::vector<Elem>& es) { return es[0].arc ? es[0].a : V2((es[0].a + es[0].b) / 2); };
+        auto start_of = [](const std::vector<Elem>& es) {
+            return es[0].arc ? es[0].a : V2((es[0].a + es[0].b) / 2);
+        };
         o.nu = 1, o.elems = pk.outer, o.has_l = true, o.l = start_of(pk.outer);
         d.sections.push_back(o);
         for (const auto& is : pk.islands) {
@@ -214,9 +230,13 @@ TEST(Pocket46, GeneratedPocketsNeverEnterTheWallsOrIslands) {
             t.nu = 2, t.elems = is, t.has_l = true, t.l = start_of(is);
             d.sections.push_back(t);
         }
-        std::string name = "pocket " + std::to_string(n) + (shape == 2 ? " L" : shape == 1 ? " rounded" : " square") +
-                           (ccw ? " ccw" : " cw") + " islands " + std::to_string(pk.islands.size()) + " R" +
-                           std::to_string(R) + " J" + std::to_string(J);
+        std::string name = "pocket " + std::to_string(n) +
+                           (shape == 2   ? " L"
+                            : shape == 1 ? " rounded"
+                                         : " square") +
+                           (ccw ? " ccw" : " cw") + " islands " +
+                           std::to_string(pk.islands.size()) + " R" + std::to_string(R) + " J" +
+                           std::to_string(J);
         p46::Error err;
         if (!p46::check(d, err)) {
             ADD_FAILURE() << name << ": " << err.code << " " << err.why;
@@ -254,8 +274,10 @@ TEST(Pocket, GeneratedPocketsNeverEnterTheWalls) {
     int ran = 0, failing = 0;
     for (int n = 0; n < 45; ++n) {
         const int shape = n % 3;  // rectangle, circle, oblong
-        const double R = 3 + 5 * u(rng), Q = R * (.5 + 1.4 * u(rng)), P = 3 + 7 * u(rng), Z = -5 - 15 * u(rng);
-        const double I = .2 + .6 * u(rng), J = .2 + .6 * u(rng), cx = 40 * u(rng) - 20, cy = 40 * u(rng) - 20;
+        const double R = 3 + 5 * u(rng), Q = R * (.5 + 1.4 * u(rng)), P = 3 + 7 * u(rng),
+                     Z = -5 - 15 * u(rng);
+        const double I = .2 + .6 * u(rng), J = .2 + .6 * u(rng), cx = 40 * u(rng) - 20,
+                     cy = 40 * u(rng) - 20;
         double ex = 0, ey = 0, eb = 0;
         char buf[160];
         if (shape == 0) {
@@ -275,7 +297,8 @@ TEST(Pocket, GeneratedPocketsNeverEnterTheWalls) {
         char block[400];
         std::snprintf(block, sizeof block,
                       "%%1\nT3 D3 M6\nM3 M40 S1000\nG0 X%.3f Y%.3f Z10\n"
-                      "N100 G45 X%.3f Y%.3f Z%.3f ER3 %s P%.3f Q%.3f I%.3f J%.3f EP150 EQ350 EJ150\nZ100\nM2\n",
+                      "N100 G45 X%.3f Y%.3f Z%.3f ER3 %s P%.3f Q%.3f I%.3f J%.3f EP150 EQ350 "
+                      "EJ150\nZ100\nM2\n",
                       cx, cy, cx, cy, Z, buf, P, Q, I, J);
         test::Prog r(block, "mill", {{"D3.R", R}});
         std::string name = "G45 " + std::to_string(n) + " " + buf + " R" + std::to_string(R);
@@ -287,9 +310,11 @@ TEST(Pocket, GeneratedPocketsNeverEnterTheWalls) {
         auto sdf = [&](V2 p) {
             p -= V2(r3(cx), r3(cy));
             if (shape == 1) return p.norm() - eb;
-            if (shape == 2) return V2(std::max(std::fabs(p.x()) - (ex / 2 - eb), 0.0), p.y()).norm() - eb;
+            if (shape == 2)
+                return V2(std::max(std::fabs(p.x()) - (ex / 2 - eb), 0.0), p.y()).norm() - eb;
             V2 q(std::fabs(p.x()) - (ex / 2 - eb), std::fabs(p.y()) - (ey / 2 - eb));
-            return V2(std::max(q.x(), 0.0), std::max(q.y(), 0.0)).norm() + std::min(std::max(q.x(), q.y()), 0.0) - eb;
+            return V2(std::max(q.x(), 0.0), std::max(q.y(), 0.0)).norm() +
+                   std::min(std::max(q.x(), q.y()), 0.0) - eb;
         };
         int bad = 0;
         V2 at(r3(cx), r3(cy));
@@ -298,13 +323,15 @@ TEST(Pocket, GeneratedPocketsNeverEnterTheWalls) {
             if (m.loc.n == 100) {
                 comp::Piece pc;
                 pc.to = to;
-                if (m.g == 2 || m.g == 3) pc.arc = true, pc.c = V2(m.c0, m.c1), pc.sweep = m.sweep * kPi / 180;
+                if (m.g == 2 || m.g == 3)
+                    pc.arc = true, pc.c = V2(m.c0, m.c1), pc.sweep = m.sweep * kPi / 180;
                 for (V2 q : along(at, pc))
                     // 1 µm: the cycle's contours are whole µm (ceil_um).
                     if (sdf(q) > -R + 1e-3 && ++bad <= 2)
-                        ADD_FAILURE() << name << ": G" << m.g << " at " << q.transpose() << ", " << -sdf(q)
-                                      << " from the wall";
-                if (m.to_prog[Z] < r3(Z) - 1e-6 && ++bad <= 2) ADD_FAILURE() << name << ": below the floor";
+                        ADD_FAILURE() << name << ": G" << m.g << " at " << q.transpose() << ", "
+                                      << -sdf(q) << " from the wall";
+                if (m.to_prog[Z] < r3(Z) - 1e-6 && ++bad <= 2)
+                    ADD_FAILURE() << name << ": below the floor";
             }
             at = to;
         }

@@ -54,8 +54,8 @@ TEST(Setting, MeasuringAGaugeByATouchedDiameterAndFace) {
     Prog p("%1\nM2\n", "lathe", {{"PREF.X", -100}, {"PREF.Z", -400}, {"DEC1.Z", 20}});
     Interpreter& in = *p.in;
     Axes om = in.machine_pos();
-    om[X] = -100 + 25 + 60;   // touching Ø50 with a 60 mm X gauge
-    om[Z] = -400 + 20 + 35;   // touching the face Z0 with a 35 mm Z gauge
+    om[X] = -100 + 25 + 60;  // touching Ø50 with a 60 mm X gauge
+    om[Z] = -400 + 20 + 35;  // touching the face Z0 with a 35 mm Z gauge
     in.place(om);
     setting::Touch gx, gz;
     ASSERT_EQ(setting::measure(in, 3, X, 50, gx), "");

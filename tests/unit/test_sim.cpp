@@ -33,7 +33,8 @@ struct Machine {
         for (int i = 0; i < 100000 && sim->motion() != 1; ++i) sim->advance(0.001);
     }
     void settle(double max = 3600) {
-        for (double t = 0; t < max && sim->state() == RunState::running; t += 0.05) sim->advance(0.05);
+        for (double t = 0; t < max && sim->state() == RunState::running; t += 0.05)
+            sim->advance(0.05);
     }
 };
 
@@ -183,7 +184,9 @@ TEST(Sim, SearchThatFindsNothingSaysSo) {
 TEST(Sim, TestModeEditsACopyOfTheProgramsAndAutoThenRuns) {
     // TEST changes nothing: a G76+ it runs writes into a copy, so AUTO after it
     // creates %501 itself (not error 1005) and the memory then holds it once.
-    Machine k("%500\nN10 G76+ H501\nN20 G76+ H501 N0 N10 G0 X4\nN30 G77 H501\nN40 G76- N40 +1\nN50 G0 Y9\nN60 M2\n");
+    Machine k(
+        "%500\nN10 G76+ H501\nN20 G76+ H501 N0 N10 G0 X4\nN30 G77 H501\nN40 G76- N40 +1\nN50 G0 "
+        "Y9\nN60 M2\n");
     std::string why;
     ASSERT_TRUE(k.sim->set_mode(Mode::test, why)) << why;
     k.start();

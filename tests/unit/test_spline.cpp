@@ -36,8 +36,10 @@ TEST(Spline, ThroughThePointsAlongTheStartTangent) {
 }
 
 TEST(Spline, RunFromTheProgram) {
-    Prog r("%1\nG0 X-13 Y10 Z0\nG1 F500\nG79 N100\nN10 X-1 Y0\nX-13 Y10\nX-50 Y70\nX-78 Y75\nX-104 Y55\n"
-           "X-140 Y0\nN20 X0 Y-1\nN100 G48 NC1 N10 N20\nG06 NC1\nG49 NC1\nM2\n");
+    Prog r(
+        "%1\nG0 X-13 Y10 Z0\nG1 F500\nG79 N100\nN10 X-1 Y0\nX-13 Y10\nX-50 Y70\nX-78 Y75\nX-104 "
+        "Y55\n"
+        "X-140 Y0\nN20 X0 Y-1\nN100 G48 NC1 N10 N20\nG06 NC1\nG49 NC1\nM2\n");
     ASSERT_EQ(r.error(), 0);
     ASSERT_FALSE(r.cap.moves.empty());
     EXPECT_NEAR(r.cap.moves.back().to_prog[X], -140, 1e-9);
@@ -48,9 +50,15 @@ TEST(Spline, Errors) {
     const std::string pts = "G79 N100\nN10 X1 Y0\nX0 Y0\nX10 Y5\nX20 Y0\nN20\n";
     EXPECT_EQ(Prog("%1\n" + pts + "N100 G48 NC0 N10 N20\nM2\n").error(), 600);
     EXPECT_EQ(Prog("%1\n" + pts + "N100 G48 NC1\nM2\n").error(), 601);
-    EXPECT_EQ(Prog("%1\nG79 N100\nN10\nX0 Y0\nX10 Y5\nX20 Y0\nN20\nN100 G48 NC1 N10 N20\nM2\n").error(), 602);
-    EXPECT_EQ(Prog("%1\nG79 N100\nN10 X1 Y0\nX0 Y0\nX0 Y0\nX20 Y0\nN20\nN100 G48 NC1 N10 N20\nM2\n").error(), 603);
-    EXPECT_EQ(Prog("%1\nG79 N100\nN10 X1 Y0\nX0 Y0\nX10 Y5\nN20\nN100 G48 NC1 N10 N20\nM2\n").error(), 604);
+    EXPECT_EQ(
+        Prog("%1\nG79 N100\nN10\nX0 Y0\nX10 Y5\nX20 Y0\nN20\nN100 G48 NC1 N10 N20\nM2\n").error(),
+        602);
+    EXPECT_EQ(Prog("%1\nG79 N100\nN10 X1 Y0\nX0 Y0\nX0 Y0\nX20 Y0\nN20\nN100 G48 NC1 N10 N20\nM2\n")
+                  .error(),
+              603);
+    EXPECT_EQ(
+        Prog("%1\nG79 N100\nN10 X1 Y0\nX0 Y0\nX10 Y5\nN20\nN100 G48 NC1 N10 N20\nM2\n").error(),
+        604);
     EXPECT_EQ(Prog("%1\nG06 NC7\nM2\n").error(), 605);
     EXPECT_EQ(Prog("%1\n" + pts + "N100 G48 NC1 N10 N20\nG49 NC1\nG06 NC1\nM2\n").error(), 605);
 }

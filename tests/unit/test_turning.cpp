@@ -7,13 +7,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
 #include <random>
 #include <sstream>
-#include <Eigen/Geometry>
 
 #include "core/cycles/turning.hpp"
 #include "core/interp/interp.hpp"
@@ -363,28 +363,46 @@ TEST(G64, P555AlongZ) {
     V2 tool = P(200, 150);
     ASSERT_EQ(g64(p555(), kStock555, tool, a, mv, why), 0) << why;
     expect_passes(tool, mv, false, 1, -1,
-                  {{70.0000, 13.230769, 3.322498},  {68.0000, 16.461538, 6.814378},
-                   {66.0000, 19.692308, 8.551647},  {64.0000, 22.923077, 9.567497},
-                   {62.0000, 26.153846, 10.086860}, {60.0000, 29.384615, 10.200000},
-                   {58.0000, 32.615385, 10.200000}, {56.0000, 35.846154, 10.200000},
-                   {54.0000, 39.076923, 10.200000}, {52.0000, 42.307692, 10.200000},
-                   {50.0000, 45.538462, 10.200000}, {48.0000, 48.769231, 10.200000},
-                   {46.0000, 52.000000, 10.200000}, {44.0000, 55.230769, 10.200000},
-                   {42.0000, 58.461538, 10.200000}, {40.0000, 61.692308, 10.200000},
-                   {38.0000, 64.923077, 10.200000}, {36.0000, 68.153846, 10.200000},
-                   {34.0000, 71.384615, 10.200000}, {32.0000, 74.615385, 10.200000},
+                  {{70.0000, 13.230769, 3.322498},
+                   {68.0000, 16.461538, 6.814378},
+                   {66.0000, 19.692308, 8.551647},
+                   {64.0000, 22.923077, 9.567497},
+                   {62.0000, 26.153846, 10.086860},
+                   {60.0000, 29.384615, 10.200000},
+                   {58.0000, 32.615385, 10.200000},
+                   {56.0000, 35.846154, 10.200000},
+                   {54.0000, 39.076923, 10.200000},
+                   {52.0000, 42.307692, 10.200000},
+                   {50.0000, 45.538462, 10.200000},
+                   {48.0000, 48.769231, 10.200000},
+                   {46.0000, 52.000000, 10.200000},
+                   {44.0000, 55.230769, 10.200000},
+                   {42.0000, 58.461538, 10.200000},
+                   {40.0000, 61.692308, 10.200000},
+                   {38.0000, 64.923077, 10.200000},
+                   {36.0000, 68.153846, 10.200000},
+                   {34.0000, 71.384615, 10.200000},
+                   {32.0000, 74.615385, 10.200000},
                    // The Ø60 lands plus I.5: over the groove, to the face N120.
                    {30.5000, 77.038462, 10.200000},
-                   {30.0000, 77.846154, 61.057143}, {28.0000, 81.076923, 64.485714},
-                   {26.0000, 84.307692, 67.914286}, {24.0000, 87.538462, 71.342857},
+                   {30.0000, 77.846154, 61.057143},
+                   {28.0000, 81.076923, 64.485714},
+                   {26.0000, 84.307692, 67.914286},
+                   {24.0000, 87.538462, 71.342857},
                    // The Ø40 groove bottom plus I.5, to the cone N180.
-                   {22.0000, 90.769231, 74.771429}, {20.5000, 93.192308, 77.342857},
+                   {22.0000, 90.769231, 74.771429},
+                   {20.5000, 93.192308, 77.342857},
                    {20.0000, 94.000000, 78.200000},
-                   {18.0000, 94.000000, 81.628571}, {16.0000, 94.000000, 85.057143},
-                   {14.0000, 94.000000, 88.485714}, {12.0000, 94.000000, 90.200000},
-                   {10.0000, 94.000000, 90.200000}, {8.0000, 94.000000, 90.200000},
-                   {6.0000, 94.000000, 90.200000},  {4.0000, 94.000000, 90.200000},
-                   {2.0000, 94.000000, 90.200000},  {0.5000, 94.000000, 90.200000}});
+                   {18.0000, 94.000000, 81.628571},
+                   {16.0000, 94.000000, 85.057143},
+                   {14.0000, 94.000000, 88.485714},
+                   {12.0000, 94.000000, 90.200000},
+                   {10.0000, 94.000000, 90.200000},
+                   {8.0000, 94.000000, 90.200000},
+                   {6.0000, 94.000000, 90.200000},
+                   {4.0000, 94.000000, 90.200000},
+                   {2.0000, 94.000000, 90.200000},
+                   {0.5000, 94.000000, 90.200000}});
     // Approach along Z then down; each pass: rapid in, feed, retract 1 mm
     // radially, rapid back; then the pass along the profile plus allowance,
     // which ends at its start Z0 (r 70.5); at the end up to X200 then to Z150
@@ -416,23 +434,37 @@ TEST(G64, P555AlongX) {
                   {{91.0000, 21.857143, 0.000000},
                    {90.2000, 22.352381, 0.000000},  // the face N190 plus K.2, along it to the axis
                    {88.0000, 23.714286, 14.283333},
-                   {85.0000, 25.571429, 16.033333}, {82.0000, 27.428571, 17.783333},
-                   {79.0000, 29.285714, 19.533333}, {76.0000, 31.142857, 21.283333},
-                   {73.0000, 33.000000, 23.033333}, {70.0000, 34.857143, 24.783333},
-                   {67.0000, 36.714286, 26.533333}, {64.0000, 38.571429, 28.283333},
-                   {61.0000, 40.428571, 30.033333}, {58.0000, 42.285714, 30.500000},
-                   {55.0000, 44.142857, 30.500000}, {52.0000, 46.000000, 30.500000},
-                   {49.0000, 47.857143, 30.500000}, {46.0000, 49.714286, 30.500000},
-                   {43.0000, 51.571429, 30.500000}, {40.0000, 53.428571, 30.500000},
-                   {37.0000, 55.285714, 30.500000}, {34.0000, 57.142857, 30.500000},
-                   {31.0000, 59.000000, 30.500000}, {28.0000, 60.857143, 30.500000},
-                   {25.0000, 62.714286, 30.500000}, {22.0000, 64.571429, 30.500000},
-                   {19.0000, 66.428571, 30.500000}, {16.0000, 68.285714, 30.500000},
+                   {85.0000, 25.571429, 16.033333},
+                   {82.0000, 27.428571, 17.783333},
+                   {79.0000, 29.285714, 19.533333},
+                   {76.0000, 31.142857, 21.283333},
+                   {73.0000, 33.000000, 23.033333},
+                   {70.0000, 34.857143, 24.783333},
+                   {67.0000, 36.714286, 26.533333},
+                   {64.0000, 38.571429, 28.283333},
+                   {61.0000, 40.428571, 30.033333},
+                   {58.0000, 42.285714, 30.500000},
+                   {55.0000, 44.142857, 30.500000},
+                   {52.0000, 46.000000, 30.500000},
+                   {49.0000, 47.857143, 30.500000},
+                   {46.0000, 49.714286, 30.500000},
+                   {43.0000, 51.571429, 30.500000},
+                   {40.0000, 53.428571, 30.500000},
+                   {37.0000, 55.285714, 30.500000},
+                   {34.0000, 57.142857, 30.500000},
+                   {31.0000, 59.000000, 30.500000},
+                   {28.0000, 60.857143, 30.500000},
+                   {25.0000, 62.714286, 30.500000},
+                   {22.0000, 64.571429, 30.500000},
+                   {19.0000, 66.428571, 30.500000},
+                   {16.0000, 68.285714, 30.500000},
                    {13.0000, 70.142857, 30.500000},
                    {10.2000, 71.876190, 30.500000},  // the face N120 plus K.2, to the Ø60 land
                    {10.0000, 72.000000, 62.489974},
-                   {7.0000, 72.000000, 67.832121},  {4.0000, 72.000000, 69.749865},
-                   {1.0000, 72.000000, 70.467949},  {0.2000, 72.000000, 70.500000}});
+                   {7.0000, 72.000000, 67.832121},
+                   {4.0000, 72.000000, 69.749865},
+                   {1.0000, 72.000000, 70.467949},
+                   {0.2000, 72.000000, 70.500000}});
     EXPECT_TRUE(mv.back().to.isApprox(tool, 1e-12));
 }
 
@@ -440,8 +472,8 @@ namespace {
 // G64 on the profile f over `stock` as a program calls it: P passes along Z,
 // or R passes along X with the profile and the stock called from their other
 // end (000:2530-2545).
-int g64_called(const Profile& f, const std::vector<V2>& stock, V2 tool, G64Args& a, bool along_x, double step,
-               std::vector<Move>& mv, std::string& why) {
+int g64_called(const Profile& f, const std::vector<V2>& stock, V2 tool, G64Args& a, bool along_x,
+               double step, std::vector<Move>& mv, std::string& why) {
     (along_x ? a.has_r : a.has_p) = true;
     (along_x ? a.r : a.p) = step;
     std::vector<V2> st = along_x ? std::vector<V2>(stock.rbegin(), stock.rend()) : stock;
@@ -461,7 +493,8 @@ TEST(G64, P555EndsAlongTheAllowanceProfile) {
         std::vector<Move> mv;
         std::string why;
         V2 tool = P(200, 150);
-        ASSERT_EQ(g64_called(p555(), kStock555, tool, a, along_x, along_x ? 3 : 2, mv, why), 0) << why;
+        ASSERT_EQ(g64_called(p555(), kStock555, tool, a, along_x, along_x ? 3 : 2, mv, why), 0)
+            << why;
         std::vector<Seg> cut;
         for (const Seg& s : segs(tool, mv))
             if (s.g != 0) cut.push_back(s);
@@ -478,7 +511,9 @@ TEST(G64, P555EndsAlongTheAllowanceProfile) {
                 bool hit = false;
                 for (const Seg& s : cut) hit = hit || seg_point(q, s.a, s.b) < 1e-6;
                 (hit ? on : off)++;
-                if (!hit && off <= 3) ADD_FAILURE() << (along_x ? "X" : "Z") << ": not on the pass at Z" << q.x() << " r" << q.y();
+                if (!hit && off <= 3)
+                    ADD_FAILURE() << (along_x ? "X" : "Z") << ": not on the pass at Z" << q.x()
+                                  << " r" << q.y();
             }
         EXPECT_GT(on, 100);
         EXPECT_GT(groove, 10);
@@ -493,7 +528,8 @@ TEST(G64, P555Properties) {
         std::vector<Move> mv;
         std::string why;
         V2 tool = P(200, 150);
-        ASSERT_EQ(g64_called(p555(), kStock555, tool, a, along_x, along_x ? 3 : 2, mv, why), 0) << why;
+        ASSERT_EQ(g64_called(p555(), kStock555, tool, a, along_x, along_x ? 3 : 2, mv, why), 0)
+            << why;
         Oracle o(p555(), kStock555, V2(.2, .5));
         check_clear(o, tool, mv, 1, along_x ? "R3" : "P2");
         // The groove between the Ø60 lands is G65's work in both variants
@@ -746,7 +782,8 @@ TEST(G64, Cabestan) {
         // the translated profile is the part the passes must not enter.
         V2 t(c.a.k, c.a.i);
         EXPECT_EQ(c.a.allowance_inside, std::string(c.name) == "%5300 counterbore") << c.name;
-        Oracle o(c.a.allowance_inside ? shifted(c.f, t) : c.f, c.stock, c.a.allowance_inside ? V2(0, 0) : t);
+        Oracle o(c.a.allowance_inside ? shifted(c.f, t) : c.f, c.stock,
+                 c.a.allowance_inside ? V2(0, 0) : t);
         double step = c.a.has_p ? c.a.p : c.a.r;
         check_clear(o, c.tool, mv, std::min(1.0, step / 2), c.name);
         // Only the stock is material: the translated wall rises above it.
@@ -825,8 +862,8 @@ TEST(G64, RandomShaftsProperties) {
 // rapid, enters the part plus its allowance (translated as written when the
 // allowance points into the part); without a groove the material is covered.
 namespace {
-int check_out_of_part(const Oracle& o, const std::vector<V2>& part, V2 tool, const std::vector<Move>& mv,
-                      const std::string& what);
+int check_out_of_part(const Oracle& o, const std::vector<V2>& part, V2 tool,
+                      const std::vector<Move>& mv, const std::string& what);
 }  // namespace
 
 TEST(G64, RandomGroovesBoresAndSigns) {
@@ -842,7 +879,8 @@ TEST(G64, RandomGroovesBoresAndSigns) {
         for (int k = 0, steps = 2 + int(u(rng) * 3); k < steps; ++k) {
             double len = 8 + 10 * u(rng);
             if (groove && k == 0 && r > 8) {  // a groove in the first cylinder
-                double w = 2 + 2 * u(rng), depth = 1 + 2 * u(rng), at = z + 3 + (len - w - 6) * u(rng);
+                double w = 2 + 2 * u(rng), depth = 1 + 2 * u(rng),
+                       at = z + 3 + (len - w - 6) * u(rng);
                 pts.push_back(V2(at, r));
                 pts.push_back(V2(at, r - depth));
                 pts.push_back(V2(at + w, r - depth));
@@ -891,16 +929,19 @@ TEST(G64, RandomGroovesBoresAndSigns) {
             G64Args bare = a;
             bare.i = bare.k = 0;
             std::vector<Move> mz;
-            ASSERT_EQ(g64_called(f, stock, tool, bare, along_x, step, mz, why), 0) << name << " with no allowance: " << why;
+            ASSERT_EQ(g64_called(f, stock, tool, bare, along_x, step, mz, why), 0)
+                << name << " with no allowance: " << why;
             std::vector<V2> part = pts;
             part.push_back(V2(pts.back().x(), bore ? 60 : -1));
             part.push_back(V2(pts.front().x(), bore ? 60 : -1));
-            check_out_of_part(Oracle(f, stock, V2(0, 0)), part, tool, mz, name + " with no allowance");
+            check_out_of_part(Oracle(f, stock, V2(0, 0)), part, tool, mz,
+                              name + " with no allowance");
         }
         if (groove || variant == 3) continue;
         ++tried;
         double low = 1e300;
-        for (V2 q : pts) low = std::min(low, along_x ? q.x() + a.k : (bore ? -(q.y() + a.i) : q.y() + a.i));
+        for (V2 q : pts)
+            low = std::min(low, along_x ? q.x() + a.k : (bore ? -(q.y() + a.i) : q.y() + a.i));
         check_cover(o, tool, mv, along_x, bore && !along_x ? -1 : 1, step, low, name.c_str());
     }
     EXPECT_EQ(inside, 12);
@@ -928,9 +969,12 @@ TEST(G64, HandbookProgramsNeverEnterThePart) {
         {"000_cabestan_p5200.iso", "000_cabestan_p7300.iso"},
         {"000_cabestan_p4300.iso"},
         {"000_cabestan_p5300.iso"},
-        {"000_palier_p11.iso", "000_palier_p123.iso", "000_palier_p2000.iso", "000_palier_p2001.iso"},
-        {"000_palier_p12.iso", "000_palier_p123.iso", "000_palier_p2000.iso", "000_palier_p2001.iso"},
-        {"000_palier_p13.iso", "000_palier_p123.iso", "000_palier_p2000.iso", "000_palier_p2001.iso"},
+        {"000_palier_p11.iso", "000_palier_p123.iso", "000_palier_p2000.iso",
+         "000_palier_p2001.iso"},
+        {"000_palier_p12.iso", "000_palier_p123.iso", "000_palier_p2000.iso",
+         "000_palier_p2001.iso"},
+        {"000_palier_p13.iso", "000_palier_p123.iso", "000_palier_p2000.iso",
+         "000_palier_p2001.iso"},
     };
     int seen = 0;
     for (const auto& files : runs) {
@@ -949,11 +993,13 @@ TEST(G64, HandbookProgramsNeverEnterThePart) {
                        const std::vector<Move>& mv) {
             ++seen;
             V2 t(a.k, a.i);
-            Oracle oracle(a.allowance_inside ? shifted(fin, t) : fin, stock, a.allowance_inside ? V2(0, 0) : t);
+            Oracle oracle(a.allowance_inside ? shifted(fin, t) : fin, stock,
+                          a.allowance_inside ? V2(0, 0) : t);
             double step = a.has_p ? a.p : a.r;
             check_clear(oracle, tool, mv, std::min(1.0, step / 2), files.front().c_str());
         };
-        struct Quiet final : MachineSink {} sink;
+        struct Quiet final : MachineSink {
+        } sink;
         Interpreter interp(m, mem, sink, o);
         interp.start(mem.first());
         interp.run_to_end();
@@ -1207,10 +1253,12 @@ int check_out_of_part(const Oracle& o, const std::vector<V2>& part, V2 tool,
             V2 q = s.a + (s.b - s.a) * (double(i) / n);
             // Deeper than 0.1 µm, measured on the exact profile (the polygon's
             // chords cut arcs by less than that).
-            bool in_part = in_polygon(part, q) && polyline_dist(part, q, true) > 1e-6 && o.dist_f(q) > 1e-4;
+            bool in_part =
+                in_polygon(part, q) && polyline_dist(part, q, true) > 1e-6 && o.dist_f(q) > 1e-4;
             if ((in_part || o.in_A(q)) && ++bad <= 2)
-                ADD_FAILURE() << what << ": G" << s.g << (in_part ? " in the part" : " in the allowance")
-                              << " at Z" << q.x() << " r" << q.y() << " on " << s.a.transpose() << " -> "
+                ADD_FAILURE() << what << ": G" << s.g
+                              << (in_part ? " in the part" : " in the allowance") << " at Z"
+                              << q.x() << " r" << q.y() << " on " << s.a.transpose() << " -> "
                               << s.b.transpose();
         }
     }
@@ -1218,14 +1266,19 @@ int check_out_of_part(const Oracle& o, const std::vector<V2>& part, V2 tool,
     return bad;
 }
 
-const char* kGrooveShapes[] = {"square", "trapezoid", "round", "stepped", "ridge", "dovetail", "chamfered"};
+const char* kGrooveShapes[] = {"square", "trapezoid", "round",    "stepped",
+                               "ridge",  "dovetail",  "chamfered"};
 
 // A groove of shape k in a land at height H, from x1 to x2 (frame).
 void groove(FramePath& p, int k, double x1, double x2, double H, double h, double u1, double u2) {
     double w = x2 - x1, xm = x1 + w * (.35 + .3 * u1);
     switch (k) {
-        case 0: p.line(V2(x1, H - h)), p.line(V2(x2, H - h)); break;
-        case 1: p.line(V2(x1 + w / 3 * u1, H - h)), p.line(V2(x2 - w / 3 * u2, H - h)); break;
+        case 0:
+            p.line(V2(x1, H - h)), p.line(V2(x2, H - h));
+            break;
+        case 1:
+            p.line(V2(x1 + w / 3 * u1, H - h)), p.line(V2(x2 - w / 3 * u2, H - h));
+            break;
         case 2: {  // straight walls down to an arc bottom (a half circle at most)
             double h0 = std::max(0.0, h - w / 2) * u1, yc = H - h0;
             double r = w / 2, sag = std::min(r, h - h0 + 1e-9);
@@ -1236,14 +1289,21 @@ void groove(FramePath& p, int k, double x1, double x2, double H, double h, doubl
             break;
         }
         case 3:
-            if (u2 < .5) p.line(V2(x1, H - h)), p.line(V2(xm, H - h)), p.line(V2(xm, H - h / 2)), p.line(V2(x2, H - h / 2));
-            else p.line(V2(x1, H - h / 2)), p.line(V2(xm, H - h / 2)), p.line(V2(xm, H - h)), p.line(V2(x2, H - h));
+            if (u2 < .5)
+                p.line(V2(x1, H - h)), p.line(V2(xm, H - h)), p.line(V2(xm, H - h / 2)),
+                    p.line(V2(x2, H - h / 2));
+            else
+                p.line(V2(x1, H - h / 2)), p.line(V2(xm, H - h / 2)), p.line(V2(xm, H - h)),
+                    p.line(V2(x2, H - h));
             break;
         case 4:
-            p.line(V2(x1, H - h)), p.line(V2(xm - 1, H - h)), p.line(V2(xm - 1, H - h / 2 * (1 + u2))),
-                p.line(V2(xm + 1, H - h / 2 * (1 + u2))), p.line(V2(xm + 1, H - h)), p.line(V2(x2, H - h));
+            p.line(V2(x1, H - h)), p.line(V2(xm - 1, H - h)),
+                p.line(V2(xm - 1, H - h / 2 * (1 + u2))), p.line(V2(xm + 1, H - h / 2 * (1 + u2))),
+                p.line(V2(xm + 1, H - h)), p.line(V2(x2, H - h));
             break;
-        case 5: p.line(V2(x1 - h / 2 * u1, H - h)), p.line(V2(x2 + h / 2 * u2, H - h)); break;
+        case 5:
+            p.line(V2(x1 - h / 2 * u1, H - h)), p.line(V2(x2 + h / 2 * u2, H - h));
+            break;
         default:  // 45° chamfers at the groove's edges
             p.line(V2(x1 + .8, H - .8)), p.line(V2(x1 + .8, H - h)), p.line(V2(x2 - .8, H - h)),
                 p.line(V2(x2 - .8, H - .8));
@@ -1262,9 +1322,11 @@ void groove(FramePath& p, int k, double x1, double x2, double H, double h, doubl
 // EA line meets its far side: no pass runs from that point into the part.
 TEST(G65, UndercutWallsAndRoundBottom) {
     Profile f = poly_profile({P(60, 0), P(60, 10), P(52, 9), P(52, 21), P(60, 20), P(60, 30)});
-    std::vector<V2> part{P(60, 0), P(60, 10), P(52, 9), P(52, 21), P(60, 20), P(60, 30), P(-60, 30), P(-60, 0)};
+    std::vector<V2> part{P(60, 0),  P(60, 10), P(52, 9),   P(52, 21),
+                         P(60, 20), P(60, 30), P(-60, 30), P(-60, 0)};
     G65Args a;
-    a.has_z = true, a.z = 5, a.has_p = true, a.p = 1.5, a.i = .3, a.k = .2, a.has_ea = true, a.ea = -100;
+    a.has_z = true, a.z = 5, a.has_p = true, a.p = 1.5, a.i = .3, a.k = .2, a.has_ea = true,
+    a.ea = -100;
     std::vector<Move> mv;
     std::string why;
     V2 tool = P(64, 18);
@@ -1278,7 +1340,8 @@ TEST(G65, UndercutWallsAndRoundBottom) {
     // A half-round bottom R4 under a Ø62 land, the EA line from X70 Z18 at
     // -135° meeting the arc's left half at r ~28.2.
     Profile r;
-    r.elems = {L(P(62, 0), P(62, 10)), Arc(P(62, 10), P(62, 18), P(62, 14), true), L(P(62, 18), P(62, 30))};
+    r.elems = {L(P(62, 0), P(62, 10)), Arc(P(62, 10), P(62, 18), P(62, 14), true),
+               L(P(62, 18), P(62, 30))};
     std::vector<V2> rpart = densify(r);
     rpart.push_back(P(-60, 30)), rpart.push_back(P(-60, 0));
     a = G65Args{};
@@ -1297,7 +1360,8 @@ TEST(G65, UndercutWallsAndRoundBottom) {
 // inside the part at every level and ran nothing at all).
 TEST(G65, StartBeyondTheWall) {
     G65Args a;
-    a.has_z = true, a.z = 20, a.has_p = true, a.p = 2, a.i = .5, a.k = .2, a.has_ea = true, a.ea = -135;
+    a.has_z = true, a.z = 20, a.has_p = true, a.p = 2, a.i = .5, a.k = .2, a.has_ea = true,
+    a.ea = -135;
     std::vector<Move> mv;
     std::string why;
     V2 tool = P(62, 55);
@@ -1327,9 +1391,11 @@ TEST(G65, StartBeyondTheWall) {
 // the levels X58 and X54 were skipped and the bottom was cut in one pass 5 mm
 // deep).
 TEST(G65, StartBeyondASquareWall) {
-    Profile f = poly_profile({P(60, 0), P(60, -10), P(50, -10), P(50, -20), P(60, -20), P(60, -30)});
+    Profile f =
+        poly_profile({P(60, 0), P(60, -10), P(50, -10), P(50, -20), P(60, -20), P(60, -30)});
     G65Args a;
-    a.has_z = true, a.z = -20, a.has_p = true, a.p = 2, a.i = .5, a.k = .2, a.has_ea = true, a.ea = -135;
+    a.has_z = true, a.z = -20, a.has_p = true, a.p = 2, a.i = .5, a.k = .2, a.has_ea = true,
+    a.ea = -135;
     std::vector<Move> mv;
     std::string why;
     V2 tool = P(62, -5);
@@ -1389,8 +1455,9 @@ TEST(G65, GeneratedGroovesNeverEnterThePart) {
         a.ea = std::atan2(ea.y(), ea.x()) * 180 / kPi;
         V2 tool = map(S);
         std::string name = "groove " + std::to_string(n) + " " + kGrooveShapes[shape] +
-                           (map.frontal ? " R" : " P") + (map.bore ? " bore" : "") + (map.sx < 0 ? " mirrored" : "") +
-                           (wrong ? " wrong I" : "") + " EA" + std::to_string(a.ea);
+                           (map.frontal ? " R" : " P") + (map.bore ? " bore" : "") +
+                           (map.sx < 0 ? " mirrored" : "") + (wrong ? " wrong I" : "") + " EA" +
+                           std::to_string(a.ea);
         std::vector<Move> mv;
         std::string why;
         int rc = g65(f, tool, a, mv, why);
@@ -1402,7 +1469,8 @@ TEST(G65, GeneratedGroovesNeverEnterThePart) {
         EXPECT_EQ(a.allowance_inside, wrong) << name;
         std::vector<V2> part = p.part(-20);
         Oracle o(a.allowance_inside ? shifted(f, t) : f, {tool}, a.allowance_inside ? V2(0, 0) : t);
-        if (check_out_of_part(o, a.allowance_inside ? shifted_pts(part, t) : part, tool, mv, name)) ++failing;
+        if (check_out_of_part(o, a.allowance_inside ? shifted_pts(part, t) : part, tool, mv, name))
+            ++failing;
         for (const Seg& s : feeds(tool, mv)) {
             double lim = map.frontal ? a.x : a.z;
             auto along = [&](V2 q) { return map.frontal ? q.y() : q.x(); };
@@ -1421,19 +1489,19 @@ TEST(G65, GeneratedGroovesNeverEnterThePart) {
     EXPECT_EQ(idle, 0);
 }
 
-
 // A dovetail groove in a Ø60 land, entered with EB150 and ER.4: each pass in
 // it ends where its retract by the clearance stays clear of the overhang and
 // of ER's rounded corners, and the groove is entered only where the climb out
 // at that end is clear (issue 19 item 1; before, the retracts rose into the
 // overhang's allowance).
 TEST(G63, DovetailGrooveRetractsStayClear) {
-    Profile f = poly_profile({P(60, 0), P(60, 3), P(54, 2.5), P(54, 10), P(60, 9), P(60, 20), P(50, 20), P(50, 30)});
+    Profile f = poly_profile(
+        {P(60, 0), P(60, 3), P(54, 2.5), P(54, 10), P(60, 9), P(60, 20), P(50, 20), P(50, 30)});
     std::vector<V2> part = densify(f);
     part.push_back(P(-60, 30)), part.push_back(P(-60, 0));
     G63Args a;
-    a.has_x = a.has_z = true, a.x = 32, a.z = 31, a.has_p = true, a.p = 1.5, a.has_ez = true, a.ez = 0,
-    a.has_eu = true, a.eu = 25, a.has_eb = true, a.eb = 150, a.er = .4;
+    a.has_x = a.has_z = true, a.x = 32, a.z = 31, a.has_p = true, a.p = 1.5, a.has_ez = true,
+    a.ez = 0, a.has_eu = true, a.eu = 25, a.has_eb = true, a.eb = 150, a.er = .4;
     std::vector<Move> mv;
     std::string why;
     V2 tool = P(72, 35);
@@ -1454,7 +1522,8 @@ TEST(G63, GeneratedProfilesNeverEnterThePart) {
     std::mt19937 rng(20261127);
     std::uniform_real_distribution<double> u(0, 1);
     int failing = 0, entered = 0;
-    const char* shapes[] = {"plain", "square", "trapezoid", "round", "stepped", "ridge", "dovetail"};
+    const char* shapes[] = {"plain",   "square", "trapezoid", "round",
+                            "stepped", "ridge",  "dovetail"};
     for (int n = 0; n < 112; ++n) {
         const int shape = n % 7;
         const FrameMap map = frame_of(n);
@@ -1487,16 +1556,19 @@ TEST(G63, GeneratedProfilesNeverEnterThePart) {
         V2 dz = map(D);
         a.has_x = a.has_z = true, a.x = dz.y(), a.z = dz.x();
         if (map.frontal) {
-            a.has_r = a.has_ex = a.has_ew = true, a.r = step, a.ex = map(V2(0, 0)).y(), a.ew = map(V2(0, y_u)).x();
+            a.has_r = a.has_ex = a.has_ew = true, a.r = step, a.ex = map(V2(0, 0)).y(),
+            a.ew = map(V2(0, y_u)).x();
         } else {
-            a.has_p = a.has_ez = a.has_eu = true, a.p = step, a.ez = map(V2(0, 0)).x(), a.eu = map(V2(0, y_u)).y();
+            a.has_p = a.has_ez = a.has_eu = true, a.p = step, a.ez = map(V2(0, 0)).x(),
+            a.eu = map(V2(0, y_u)).y();
         }
         a.er = n % 5 == 0 ? 0 : .1 + .5 * u(rng);
         a.has_eb = true, a.eb = 60 + 90 * u(rng);
         Profile f = u(rng) < .5 ? p.f : reversed(p.f);
-        std::string name = "profile " + std::to_string(n) + " " + shapes[shape] + (map.frontal ? " R" : " P") +
-                           (map.bore ? " bore" : "") + (map.sx < 0 ? " mirrored" : "") + " ER" +
-                           std::to_string(a.er) + " EB" + std::to_string(a.eb);
+        std::string name = "profile " + std::to_string(n) + " " + shapes[shape] +
+                           (map.frontal ? " R" : " P") + (map.bore ? " bore" : "") +
+                           (map.sx < 0 ? " mirrored" : "") + " ER" + std::to_string(a.er) + " EB" +
+                           std::to_string(a.eb);
         std::vector<Move> mv;
         std::string why;
         ASSERT_EQ(g63(f, tool, a, mv, why), 0) << name << ": " << why;
@@ -1521,8 +1593,9 @@ TEST(G63, GeneratedProfilesNeverEnterThePart) {
 TEST(G65, HandbookProgramsNeverEnterThePart) {
     const std::string dir = std::string(PUPITRE_SHARED) + "/programs/";
     if (!std::filesystem::exists(dir + "INDEX.tsv")) GTEST_SKIP() << "no " << dir;
-    const std::vector<std::string> runs{"000_p555_cycles_x.iso", "000_p555_cycles_z.iso", "000_p555_jauges.iso",
-                                        "004_p555.iso", "000_p100_g63.iso", "000_p2_mandrin_cone.iso"};
+    const std::vector<std::string> runs{"000_p555_cycles_x.iso", "000_p555_cycles_z.iso",
+                                        "000_p555_jauges.iso",   "004_p555.iso",
+                                        "000_p100_g63.iso",      "000_p2_mandrin_cone.iso"};
     int seen65 = 0, seen63 = 0, seen66 = 0;
     // The profile closed 1000 mm away along `away`.
     auto part_of = [](const Profile& f, V2 away) {
@@ -1574,10 +1647,12 @@ TEST(G65, HandbookProgramsNeverEnterThePart) {
                     double bot = bottom + (along - (a.has_r ? B.x() : B.y())) * slope;
                     EXPECT_GE(along, lo - 1e-6) << file;
                     EXPECT_LE(along, hi + 1e-6) << file;
-                    EXPECT_GE((across - bot) * (from - bot), -1e-9) << file << ": beyond the bottom";
+                    EXPECT_GE((across - bot) * (from - bot), -1e-9)
+                        << file << ": beyond the bottom";
                 }
         };
-        struct Quiet final : MachineSink {} sink;
+        struct Quiet final : MachineSink {
+        } sink;
         Interpreter interp(m, mem, sink, o);
         interp.start(mem.first());
         interp.run_to_end();
@@ -1797,7 +1872,8 @@ TEST(G66, EpStopsOverTheFirstPlunge) {
     for (const Seg& s : segs(tool, mv)) EXPECT_GE(s.b.x(), -1e-9) << s.b.transpose();
     std::vector<Seg> f = feeds(tool, mv);
     ASSERT_EQ(f.size(), 5u + 4u);
-    EXPECT_TRUE(f[2].b.isApprox(V2(0, 21.75), 1e-9)) << f[2].b.transpose();  // after the plunge at Z1.75
+    EXPECT_TRUE(f[2].b.isApprox(V2(0, 21.75), 1e-9))
+        << f[2].b.transpose();                       // after the plunge at Z1.75
     EXPECT_NEAR((f[4].b - f[4].a).norm(), 4, 1e-9);  // from the third plunge on, EP whole
 }
 
@@ -1830,13 +1906,15 @@ TEST(G66, GeneratedGroovesStayInTheGroove) {
         a.has_x = a.has_z = true, a.x = Bzr.y(), a.z = Bzr.x();
         (frontal ? a.has_p : a.has_r) = true;
         (frontal ? a.p : a.r) = spacing;
-        V2 ea = to_zr(V2(std::cos(slope * kPi / 180), std::sin(slope * kPi / 180))) - to_zr(V2(0, 0));
+        V2 ea =
+            to_zr(V2(std::cos(slope * kPi / 180), std::sin(slope * kPi / 180))) - to_zr(V2(0, 0));
         a.ea = std::atan2(frontal ? ea.x() : ea.y(), frontal ? ea.y() : ea.x()) * 180 / kPi;
         a.ep = u(rng) < .3 ? 0 : 2 * spacing * u(rng);
         std::vector<Move> mv;
         std::string why;
-        std::string name = "G66 " + std::to_string(n) + (frontal ? " P" : " R") + (back ? " back" : "") +
-                           (bore ? " bore" : "") + " EA" + std::to_string(a.ea) + " EP" + std::to_string(a.ep);
+        std::string name = "G66 " + std::to_string(n) + (frontal ? " P" : " R") +
+                           (back ? " back" : "") + (bore ? " bore" : "") + " EA" +
+                           std::to_string(a.ea) + " EP" + std::to_string(a.ep);
         ASSERT_EQ(g66(Azr, a, mv, why), 0) << name << ": " << why;
         // The groove in the frame of the first corrector: x from 0 to width - w,
         // y from the approach (2) down to the bottom line through B - w.
@@ -1849,7 +1927,8 @@ TEST(G66, GeneratedGroovesStayInTheGroove) {
                 V2 q = frame(sg.a + (sg.b - sg.a) * (i / 20.0));
                 double bottom = -depth + (q.x() - (width - w)) * t;
                 bool below_top = q.y() < 0 - 1e-9;  // the land at y 0
-                if ((q.y() < bottom - 1e-6 || (below_top && (q.x() < -1e-6 || q.x() > width - w + 1e-6))) &&
+                if ((q.y() < bottom - 1e-6 ||
+                     (below_top && (q.x() < -1e-6 || q.x() > width - w + 1e-6))) &&
                     ++bad <= 2)
                     ADD_FAILURE() << name << ": G" << sg.g << " at x " << q.x() << " y " << q.y();
             }

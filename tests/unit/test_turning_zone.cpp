@@ -25,7 +25,8 @@ Elem arc_from(const V2& c, const V2& a, double sweep) {
     e.c = c;
     e.a = a;
     V2 u = a - c;
-    e.b = c + V2(std::cos(sweep) * u.x() - std::sin(sweep) * u.y(), std::sin(sweep) * u.x() + std::cos(sweep) * u.y());
+    e.b = c + V2(std::cos(sweep) * u.x() - std::sin(sweep) * u.y(),
+                 std::sin(sweep) * u.x() + std::cos(sweep) * u.y());
     e.sweep = sweep;
     return e;
 }
@@ -157,7 +158,8 @@ TEST(TurningZone, SelfIntersectionBySweptBoxesAgreesWithAllPairs) {
         }
         std::vector<double> bulge;
         for (int k = 0; k < n; ++k) {
-            bool chord = (pts[size_t(k)] - pts[size_t(k + 1) % pts.size()]).norm() > 0;  // an arc needs one
+            bool chord =
+                (pts[size_t(k)] - pts[size_t(k + 1) % pts.size()]).norm() > 0;  // an arc needs one
             bulge.push_back(chord && coin(rng) == 0 ? (k % 2 ? 0.7 : -0.7) : 0);
         }
         zone::Material m = loop(pts, bulge);
@@ -165,7 +167,8 @@ TEST(TurningZone, SelfIntersectionBySweptBoxesAgreesWithAllPairs) {
         crossing += want;
         std::string desc;
         for (const Elem& e : m.M)
-            desc += "(" + std::to_string(e.a.x()) + "," + std::to_string(e.a.y()) + (e.arc ? " arc" : "") + ") ";
+            desc += "(" + std::to_string(e.a.x()) + "," + std::to_string(e.a.y()) +
+                    (e.arc ? " arc" : "") + ") ";
         ASSERT_EQ(geom::self_intersects(m.M), want) << "case " << t << ": " << desc;
     }
     EXPECT_GT(crossing, 500);

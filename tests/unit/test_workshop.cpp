@@ -53,8 +53,8 @@ struct Shop {
 };
 
 // The operator's values that match the truth.
-std::vector<std::pair<std::string, double>> right(double pref_x = -20, double pref_z = 35, double d1x = 52.347,
-                                                  double d1z = 41.215) {
+std::vector<std::pair<std::string, double>> right(double pref_x = -20, double pref_z = 35,
+                                                  double d1x = 52.347, double d1z = 41.215) {
     return {{"PREF.X", pref_x}, {"PREF.Z", pref_z}, {"D1.X", d1x}, {"D1.Z", d1z}};
 }
 
@@ -87,16 +87,21 @@ TEST(Setup, ShippedLatheParses) {
 
 TEST(Setup, ErrorsNameTheLine) {
     workshop::Setup s;
-    EXPECT_EQ(parse_setup("kind = lathe\nstock.diameter = abc\n", s), "line 2: stock.diameter: expected a number");
+    EXPECT_EQ(parse_setup("kind = lathe\nstock.diameter = abc\n", s),
+              "line 2: stock.diameter: expected a number");
     EXPECT_EQ(parse_setup("kind = lathe\nfoo = 1\n", s), "line 2: foo: unknown key 'foo'");
-    EXPECT_EQ(parse_setup("kind = lathe\ntool.0.x = 1\n", s), "line 2: tool.0.x: expected tool.N.FIELD with N from 1 to 99");
+    EXPECT_EQ(parse_setup("kind = lathe\ntool.0.x = 1\n", s),
+              "line 2: tool.0.x: expected tool.N.FIELD with N from 1 to 99");
     EXPECT_EQ(parse_setup("kind = lathe\ntool.1.orientation = 2.5\n", s),
               "line 2: tool.1.orientation: must be a whole number from 0 to 8");
-    EXPECT_EQ(parse_setup("kind = lathe\nstock.bore = 70\n", s), "stock.bore must be smaller than stock.diameter");
+    EXPECT_EQ(parse_setup("kind = lathe\nstock.bore = 70\n", s),
+              "stock.bore must be smaller than stock.diameter");
     EXPECT_EQ(parse_setup("stock.diameter = 10\n", s), "kind = lathe is missing");
-    EXPECT_EQ(parse_setup("kind = mill\n", s), "line 1: kind: only the lathe has a workshop yet (kind = lathe)");
+    EXPECT_EQ(parse_setup("kind = mill\n", s),
+              "line 1: kind: only the lathe has a workshop yet (kind = lathe)");
     EXPECT_EQ(parse_setup("kind = lathe\njaw.height\n", s), "line 2: expected key = value");
-    EXPECT_EQ(parse_setup("kind = lathe\ntool.2.holder = 1,2 3\n", s), "line 2: tool.2.holder: expected points as Z,X Z,X Z,X");
+    EXPECT_EQ(parse_setup("kind = lathe\ntool.2.holder = 1,2 3\n", s),
+              "line 2: tool.2.holder: expected points as Z,X Z,X Z,X");
     EXPECT_EQ(s.name, "");  // nothing half-read
 }
 
@@ -160,7 +165,8 @@ N90 M2
     ASSERT_EQ(s.crash(), 0);
     // The nose is a polygon inscribed within kChord: on a 45° flank the
     // surface may stand kChord·√2 higher on the radius, plus the rounding.
-    EXPECT_NEAR(s.read("dia Z-2"), 52 + 1.6 * (2 - std::sqrt(2.0)), 2 * std::sqrt(2.0) * kChord + 0.0005);
+    EXPECT_NEAR(s.read("dia Z-2"), 52 + 1.6 * (2 - std::sqrt(2.0)),
+                2 * std::sqrt(2.0) * kChord + 0.0005);
     EXPECT_DOUBLE_EQ(s.read("dia Z-20"), 56.000);
 }
 
@@ -297,10 +303,12 @@ TEST(Instruments, BoreGrooveAndErrors) {
     EXPECT_EQ(w.measure("dia Z-12", r), "");
     EXPECT_DOUBLE_EQ(r.value, 54.000);
     EXPECT_EQ(w.measure("groove Z-5", r), "no groove there: Z must be on a groove's bottom");
-    EXPECT_EQ(w.measure("dia Z5", r), "Z is measured from the part's right-hand face: a negative distance (Z-20)");
+    EXPECT_EQ(w.measure("dia Z5", r),
+              "Z is measured from the part's right-hand face: a negative distance (Z-20)");
     EXPECT_EQ(w.measure("dia", r), "dia needs a Z: how far from the part's right-hand face (Z-20)");
     EXPECT_EQ(w.measure("dia Z-200", r), "no material there");
-    EXPECT_EQ(w.measure("weight", r), "expected dia Z-n, bore Z-n, groove Z-n, length or tool Tn X|Z|R");
+    EXPECT_EQ(w.measure("weight", r),
+              "expected dia Z-n, bore Z-n, groove Z-n, length or tool Tn X|Z|R");
     EXPECT_EQ(w.measure("length Z-3", r), "length takes no Z");
 }
 
@@ -337,7 +345,8 @@ TEST(Contacts, AJogStopsAtTheDiameterAndAShimStopsItAShimEarly) {
     // P (the nose's bottom for C3) stops before entering, within the
     // contact's resolution (0.1 µm of thickness, about 0.2 µm deep).
     EXPECT_NEAR(w.tip(o.stop)[1], 30, 3e-4);
-    EXPECT_NE(o.what.find("T1 touched the part at \u00f860.000, -20.000 mm"), std::string::npos) << o.what;
+    EXPECT_NE(o.what.find("T1 touched the part at \u00f860.000, -20.000 mm"), std::string::npos)
+        << o.what;
     // The paper test: a 0.05 shim on the part.
     w.set_shim(0.05);
     o = w.jog(jog_down(40, 20), true);
@@ -402,7 +411,8 @@ TEST(Instruments, PresetterReadsTheTruthWithinItsUncertainty) {
     w.measure("tool T1 X", again);
     EXPECT_EQ(r.value, again.value);
     EXPECT_EQ(w.measure("tool T9 X", r), "there is no T9 on the turret");
-    EXPECT_EQ(w.measure("tool T1 Q", r), "tool needs a tool and a field: tool T1 X, tool T1 Z or tool T1 R");
+    EXPECT_EQ(w.measure("tool T1 Q", r),
+              "tool needs a tool and a field: tool T1 X, tool T1 Z or tool T1 R");
 }
 
 TEST(Instruments, PartTextRoundTrips) {
