@@ -480,6 +480,14 @@ int g64_called(const Profile& f, const std::vector<V2>& stock, V2 tool, G64Args&
     return g64(along_x ? reversed(f) : f, st, tool, a, mv, why);
 }
 
+// %555's G64 I.5 K.2 from `tool`: P2 along Z, or R3 along X.
+void g64_p555(bool along_x, V2 tool, std::vector<Move>& mv) {
+    G64Args a;
+    a.i = .5, a.k = .2;
+    std::string why;
+    ASSERT_EQ(g64_called(p555(), kStock555, tool, a, along_x, along_x ? 3 : 2, mv, why), 0) << why;
+}
+
 }  // namespace
 
 // [DECISION] of issue 19: G64 ends with a pass along the profile plus
@@ -488,13 +496,9 @@ int g64_called(const Profile& f, const std::vector<V2>& stock, V2 tool, G64Args&
 // the groove Z20-Z50 left to G65: its flanks and bottom below the Ø60 lands.
 TEST(G64, P555EndsAlongTheAllowanceProfile) {
     for (bool along_x : {false, true}) {
-        G64Args a;
-        a.i = .5, a.k = .2;
+        const V2 tool = P(200, 150);
         std::vector<Move> mv;
-        std::string why;
-        V2 tool = P(200, 150);
-        ASSERT_EQ(g64_called(p555(), kStock555, tool, a, along_x, along_x ? 3 : 2, mv, why), 0)
-            << why;
+        ASSERT_NO_FATAL_FAILURE(g64_p555(along_x, tool, mv));
         std::vector<Seg> cut;
         for (const Seg& s : segs(tool, mv))
             if (s.g != 0) cut.push_back(s);
@@ -523,13 +527,9 @@ TEST(G64, P555EndsAlongTheAllowanceProfile) {
 
 TEST(G64, P555Properties) {
     for (bool along_x : {false, true}) {
-        G64Args a;
-        a.i = .5, a.k = .2;
+        const V2 tool = P(200, 150);
         std::vector<Move> mv;
-        std::string why;
-        V2 tool = P(200, 150);
-        ASSERT_EQ(g64_called(p555(), kStock555, tool, a, along_x, along_x ? 3 : 2, mv, why), 0)
-            << why;
+        ASSERT_NO_FATAL_FAILURE(g64_p555(along_x, tool, mv));
         Oracle o(p555(), kStock555, V2(.2, .5));
         check_clear(o, tool, mv, 1, along_x ? "R3" : "P2");
         // The groove between the Ø60 lands is G65's work in both variants
