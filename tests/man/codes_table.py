@@ -5,6 +5,8 @@
 # core/parse/codes.cpp (number, machines, 40/60, what pupitre does, the text;
 # in French the text's translation in po/fr.po). A failure prints the lines
 # that differ; `codes_table.py ROOT --write` rewrites both tables from kG.
+# The M table keeps its notes, but each M runs before or after the motion as
+# kM says.
 #   codes_table.py ROOT [--write]
 # SPDX-License-Identifier: GPL-3.0-or-later
 import re
@@ -87,16 +89,46 @@ def table(path, words, translate):
     return bad
 
 
+def m_when(path, before, after):
+    """The M table of the man page: each M runs before or after the motion as
+    the codes table says (kM's MWhen)."""
+    src = open(f"{root}/core/parse/codes.cpp", encoding="utf-8").read()
+    tab = src[src.index("constexpr MCode kM[] = {"):]
+    tab = tab[:tab.index("\n};")]
+    km = [(int(a), int(b), w) for a, b, w in re.findall(r"\{(\d+), (\d+), MWhen::(\w+),", tab)]
+    page = open(path, encoding="utf-8").read()
+    sec = page[page.index(".SH " + ("FONCTIONS M" if "/fr/" in path else "M FUNCTIONS")):]
+    block = sec[sec.index(".EX\n") + 4:sec.index(".EE\n")]
+    bad = rows = 0
+    for line in block.split("\n"):
+        m = re.match(r"((?:M\d+(?:\\-M\d+)? ?)+)\s+(\S+)\s", line)
+        if not m:
+            continue
+        rows += 1
+        when = {before: "avant", after: "apres"}.get(m.group(2))
+        for n in re.findall(r"M(\d+)", m.group(1)):
+            entry = [w for a, b, w in km if a <= int(n) <= b]
+            if not entry or entry[0] != when:
+                bad += 1
+                print(f"{path}: M{n} is '{m.group(2)}' in the man page, {entry or 'absent'} in kM")
+    if rows < 10:
+        print(f"{path}: the M table was not found")
+        bad += 1
+    return bad
+
+
 en = {"yes": "runs", "option": "error 4", "ignored": "no effect", "later": "error 1010"}
 fr = {"yes": "exécutée", "option": "erreur 4", "ignored": "sans effet", "later": "erreur 1010"}
 cat = po_catalogue(f"{root}/po/fr.po")
 missing = [t for _, _, _, _, t in g_table() if t.isascii() and not cat.get(t)]
 bad = table(f"{root}/man/pupitre-iso.5", en, lambda t: t)
 bad += table(f"{root}/man/fr/pupitre-iso.5", fr, lambda t: cat.get(t) or t)
+bad += m_when(f"{root}/man/pupitre-iso.5", "before", "after")
+bad += m_when(f"{root}/man/fr/pupitre-iso.5", "avant", "après")
 for t in missing:
     print(f"po/fr.po: no translation of the codes table's {t!r}")
 if bad or missing:
     print(f"FAIL: {bad} lines differ from the codes table (codes_table.py ROOT --write rewrites them)")
     sys.exit(1)
 if not write:
-    print(f"ok: {len(g_table())} G functions in both man pages")
+    print(f"ok: {len(g_table())} G functions and the M table's before/after in both man pages")
