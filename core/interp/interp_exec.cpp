@@ -162,7 +162,8 @@ bool Interpreter::do_flow(const Block& b, const Plan& p) {
     return true;
 }
 
-// The steps of turning.md §1.7.5 in their order. Each step returns false once
+// The steps of turning.md §1.7.5 in the order of block_steps() (codes.cpp;
+// test BlockSteps.ExecuteFollowsTheCodesTable). Each step returns false once
 // it has reported the error that stops the block. The steps an ordinary move
 // does not need are called only when the block holds their words: this runs
 // for every block, and a call costs more than the test.

@@ -168,6 +168,21 @@ const MCode* find_m(int number) {
     return nullptr;
 }
 
+std::span<const BlockStep> block_steps() {
+    static constexpr BlockStep kSteps[] = {
+        {ExecStep::assign, "its L and E assignments, from left to right"},
+        {ExecStep::modal, "the G functions and the modal values"},
+        {ExecStep::m_before, "the M functions executed before the motion"},
+        {ExecStep::spindle, "the spindle speed S, with G96 or G97"},
+        {ExecStep::message, "the $ message"},
+        {ExecStep::motion, "the motion"},
+        {ExecStep::dwell, "the G04 dwell"},
+        {ExecStep::m_after, "the M functions executed after the motion"},
+        {ExecStep::flow, "the G79 jump, then the G77 call"},
+    };
+    return kSteps;
+}
+
 std::span<const GCode> all_g() {
     return kG;
 }

@@ -58,6 +58,27 @@ struct MCode {
     std::string_view text;  // English, a msgid: shown with tr(std::string(text).c_str())
 };
 
+// The parts of a block in the order they take effect (turning.md §1.7.5,
+// milling.md §2.4): Interpreter::execute (interp_exec.cpp) runs its steps in
+// this order, a test checks it on the trace, and pupitre-iso(5) lists them
+// from this table (tests/man/codes_table.py).
+enum class ExecStep : uint8_t {
+    assign,
+    modal,
+    m_before,
+    spindle,
+    message,
+    motion,
+    dwell,
+    m_after,
+    flow
+};
+struct BlockStep {
+    ExecStep step;
+    std::string_view text;  // as pupitre-iso(5) words it
+};
+std::span<const BlockStep> block_steps();
+
 const GCode* find_g(int number);
 const MCode* find_m(int number);
 std::span<const GCode> all_g();

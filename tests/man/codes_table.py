@@ -6,7 +6,7 @@
 # in French the text's translation in po/fr.po). A failure prints the lines
 # that differ; `codes_table.py ROOT --write` rewrites both tables from kG.
 # The M table keeps its notes, but each M runs before or after the motion as
-# kM says.
+# kM says; the numbered order within a block is block_steps()'s.
 #   codes_table.py ROOT [--write]
 # SPDX-License-Identifier: GPL-3.0-or-later
 import re
@@ -117,6 +117,30 @@ def m_when(path, before, after):
     return bad
 
 
+def block_order(path):
+    """The numbered list of the parts of a block in pupitre-iso(5): one item per
+    step of block_steps() (codes.cpp), in its order, each starting with its text."""
+    src = open(f"{root}/core/parse/codes.cpp", encoding="utf-8").read()
+    tab = src[src.index("kSteps[] = {"):]
+    steps = re.findall(r'\{ExecStep::\w+, "((?:[^"\\]|\\.)*)"\}', tab[:tab.index("};")])
+    page = open(path, encoding="utf-8").read()
+    sec = page[page.index(".IP 1. 4\n"):]
+    sec = sec[:sec.index("\n.PP\n")]
+    items = []
+    for part in re.split(r"^\.IP \d+\.(?: \d+)?\n", sec, flags=re.M)[1:]:
+        words = re.sub(r"^\.[BI] ", "", part, flags=re.M).replace("\\-", "-").split()
+        items.append(" ".join(words))
+    bad = 0
+    if len(items) != len(steps):
+        print(f"{path}: {len(items)} parts of a block listed, {len(steps)} in block_steps()")
+        bad += 1
+    for i, (item, step) in enumerate(zip(items, steps)):
+        if not item.startswith(step):
+            print(f"{path}: part {i + 1} of a block\n  codes table: {step}\n  man page:    {item}")
+            bad += 1
+    return bad
+
+
 en = {"yes": "runs", "option": "error 4", "ignored": "no effect", "later": "error 1010"}
 fr = {"yes": "exécutée", "option": "erreur 4", "ignored": "sans effet", "later": "erreur 1010"}
 cat = po_catalogue(f"{root}/po/fr.po")
@@ -124,6 +148,7 @@ missing = [t for _, _, _, _, t in g_table() if t.isascii() and not cat.get(t)]
 bad = table(f"{root}/man/pupitre-iso.5", en, lambda t: t)
 bad += table(f"{root}/man/fr/pupitre-iso.5", fr, lambda t: cat.get(t) or t)
 bad += m_when(f"{root}/man/pupitre-iso.5", "before", "after")
+bad += block_order(f"{root}/man/pupitre-iso.5")
 bad += m_when(f"{root}/man/fr/pupitre-iso.5", "avant", "après")
 for t in missing:
     print(f"po/fr.po: no translation of the codes table's {t!r}")
@@ -131,4 +156,4 @@ if bad or missing:
     print(f"FAIL: {bad} lines differ from the codes table (codes_table.py ROOT --write rewrites them)")
     sys.exit(1)
 if not write:
-    print(f"ok: {len(g_table())} G functions and the M table's before/after in both man pages")
+    print(f"ok: {len(g_table())} G functions, the M table's before/after and the order within a block")

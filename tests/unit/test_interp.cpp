@@ -211,3 +211,46 @@ TEST(Interp, ExtremesEmDoNotMove) {
     EXPECT_DOUBLE_EQ(p.in->program_pos()[pupitre::X], 5);
     EXPECT_DOUBLE_EQ(p.in->program_pos()[pupitre::Z], 5);
 }
+
+// The parts of a block take effect in the order of the codes table's
+// block_steps() (turning.md §1.7.5): a block with an assignment, M03 (before
+// the motion), S, a $ message, a move, G04 and M05 (after the motion) reports
+// its events in that order.
+TEST(BlockSteps, ExecuteFollowsTheCodesTable) {
+    struct Order : MachineSink {
+        std::vector<ExecStep> seen;
+        void move(const MoveEvent&) override { seen.push_back(ExecStep::motion); }
+        void dwell(const Loc&, double) override { seen.push_back(ExecStep::dwell); }
+        void message(const Loc&, int, std::string_view) override {
+            seen.push_back(ExecStep::message);
+        }
+        void spindle(const SpindleEvent& e) override {
+            seen.push_back(e.dir == 5 ? ExecStep::m_after : ExecStep::spindle);
+        }
+    } order;
+    std::vector<ExecStep> table;
+    for (const BlockStep& s : block_steps()) table.push_back(s.step);
+    ASSERT_EQ(table.size(), 9u);
+    EXPECT_EQ(table.front(), ExecStep::assign);
+    EXPECT_EQ(table.back(), ExecStep::flow);
+    MachineProfile m;
+    ASSERT_TRUE(builtin_machine("lathe", m));
+    ProgramMemory mem;
+    Diag d;
+    ASSERT_TRUE(mem.load_text(
+        "t.iso", "%1\nN10 G0 X50 Z50 F100\nN20 L1=2 G1 X40 Z40 G4 F1 M3 S500 M5 $1 HI\nM2\n", d));
+    Interpreter in(m, mem, order);
+    in.start(mem.first());
+    in.run_to_end();
+    ASSERT_FALSE(in.has_errors()) << format_diag(in.diags().front());
+    order.seen.erase(order.seen.begin());  // N10's move
+    const std::vector<ExecStep> want{ExecStep::spindle, ExecStep::message, ExecStep::motion,
+                                     ExecStep::dwell, ExecStep::m_after};
+    ASSERT_GE(order.seen.size(), want.size());
+    order.seen.resize(want.size());  // the M2 block's stop
+    EXPECT_EQ(order.seen, want);
+    auto rank = [&](ExecStep s) {
+        return std::find(table.begin(), table.end(), s) - table.begin();
+    };
+    for (size_t i = 1; i < want.size(); ++i) EXPECT_LT(rank(want[i - 1]), rank(want[i]));
+}
