@@ -13,7 +13,9 @@
 #include <string_view>
 #include <vector>
 
-#include "core/interp/interp.hpp"
+#include "core/diag.hpp"
+#include "core/interp/sink.hpp"
+#include "core/parse/program.hpp"
 
 namespace pupitre {
 

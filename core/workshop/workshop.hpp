@@ -9,7 +9,7 @@
 #include <string_view>
 #include <vector>
 
-#include "core/interp/interp.hpp"
+#include "core/interp/sink.hpp"
 #include "core/workshop/lathe_part.hpp"
 #include "core/workshop/setup.hpp"
 

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <memory>
 
+#include "core/interp/interp.hpp"
 #include "core/workshop/report.hpp"
 #include "core/workshop/workshop.hpp"
 

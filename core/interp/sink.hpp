@@ -1,0 +1,75 @@
+// The machine boundary: where the interpreter reports what the machine does
+// (moves, dwells, tools, the spindle, stops, messages), and the events it
+// reports them with. A sink (the trace, the toolpath, the simulated machine,
+// the workshop) compiles against this header alone, not the interpreter.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+#include <array>
+#include <string_view>
+#include <vector>
+
+#include "core/interp/machine.hpp"
+
+namespace pupitre {
+
+struct Loc {
+    int prog = 0;  // %number
+    int line = 0;
+    long n = -1;  // N of the block, -1 if none
+};
+
+struct MoveEvent {
+    Loc loc;
+    int g = 1;  // 0, 1, 2, 3
+    bool g52 = false;
+    Axes from_mach{}, to_mach{};     // machine positions of the reference (internal units)
+    Axes to_prog{};                  // program point reached (internal units)
+    int plane_a0 = X, plane_a1 = Y;  // arc plane axes (first, second)
+    double c0 = 0, c1 = 0;           // arc centre, program coordinates (internal units)
+    double sweep = 0;                // degrees, negative for G2
+    double length = 0;               // mm (degrees for a rotary-only move)
+    double feed = 0;                 // mm/min actually used, at the start
+    double rpm = 0;                  // spindle speed at the start
+    double seconds = 0;              // duration
+    bool x_diameter = false;         // lathe X shown as a diameter
+    bool comp = false;               // a piece of the radius-compensated tool path
+};
+
+struct SpindleEvent {
+    Loc loc;
+    double rpm = 0;
+    int dir = 5;  // 3 cw, 4 ccw, 5 stopped, 19 indexed
+    bool css = false;
+    double vc = 0;   // m/min under G96
+    int range = -1;  // 40..45, -1 for none
+};
+
+// A programmed element in the plane of radius compensation (axes a0, a1):
+// program frame, internal units (lathe X a radius); sweep in degrees, + for G3.
+struct ProfileElem {
+    int a0 = X, a1 = Y;
+    double from[2] = {0, 0}, to[2] = {0, 0}, c[2] = {0, 0};
+    double sweep = 0;
+    bool arc = false;
+};
+
+class MachineSink {
+  public:
+    virtual ~MachineSink() = default;
+    virtual void move(const MoveEvent&) {}
+    virtual void dwell(const Loc&, double /*seconds*/) {}
+    virtual void tool(const Loc&, int /*t*/, int /*d*/, double /*seconds*/, bool /*m6*/) {}
+    virtual void spindle(const SpindleEvent&) {}
+    virtual void coolant(const Loc&, bool /*m7*/, bool /*m8*/) {}
+    virtual void stop(const Loc&, int /*m: 0, 1, 12*/) {}
+    virtual void message(const Loc&, int /*channel*/, std::string_view) {}
+    virtual void end(const Loc&, int /*m: 2, or 0 at the end of a fragment*/) {}
+    // The rough stock of a G64 cycle, (Z, X as a radius) program points, for the
+    // graphic test's stock outline.
+    virtual void stock(const Loc&, const std::vector<std::array<double, 2>>& /*zr*/) {}
+    // An element of the programmed profile while G41/G42 is on, before it is
+    // offset: the moves then follow the tool centre, and a drawing shows both.
+    virtual void profile(const Loc&, const ProfileElem&) {}
+};
+
+}  // namespace pupitre
