@@ -294,8 +294,12 @@ double length(const Elem& e) {
 }
 
 V2 midpoint(const Elem& e) {
-    if (!e.arc) return (e.a + e.b) / 2;
-    return e.c + rotate(e.a - e.c, e.sweep / 2);
+    return point_at(e, 0.5);
+}
+
+V2 point_at(const Elem& e, double t) {
+    if (!e.arc) return e.a + t * (e.b - e.a);
+    return e.c + rotate(e.a - e.c, t * e.sweep);
 }
 
 int winding(const std::vector<Elem>& loop, const V2& q) {

@@ -49,6 +49,7 @@ double min_y_in(const Elem& e, double x0, double x1);
 double max_y_in(const Elem& e, double x0, double x1);
 double length(const Elem& e);
 V2 midpoint(const Elem& e);
+V2 point_at(const Elem& e, double t);  // the point at t in [0, 1] along e
 
 // Closed loops of elements (each b is the next a).
 int winding(const std::vector<Elem>& loop, const V2& q);

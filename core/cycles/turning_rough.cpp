@@ -2,7 +2,6 @@
 // between the stock and the finished profile translated by the allowances; and
 // G63 roughing with grooves (§6.5), the same passes entering grooves.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -239,11 +238,7 @@ int pass_direction(const Material& m, const std::vector<double>& ys, const Profi
     return d;
 }
 
-// The point of e at t in [0, 1] along it, and the piece of e from t0 to t1.
-V2 point_at(const Elem& e, double t) {
-    if (!e.arc) return e.a + t * (e.b - e.a);
-    return e.c + Eigen::Rotation2Dd(t * e.sweep) * (e.a - e.c);
-}
+// The piece of e from t0 to t1 (t in [0, 1] along it).
 Elem piece(const Elem& e, double t0, double t1) {
     Elem p = e;
     p.a = point_at(e, t0), p.b = point_at(e, t1);
@@ -331,11 +326,9 @@ void contour_pass(Emit& em, const Material& m, int d, double c, double y_safe) {
     // Above the material at x, by the clearance: the way down runs in rapid
     // to there (in the air above the stock), then at feed.
     auto above = [&](const V2& p) {
-        double y = -kInf;
-        std::vector<V2> pts;
-        for (const Elem& e : m.M) intersect(e, line(V2(p.x(), p.y()), V2(p.x(), y_top + 1)), pts);
-        for (const V2& q : pts) y = std::max(y, q.y());
-        return std::max(y, p.y()) + c;
+        double y = p.y();
+        for (const Elem& e : m.M) y = std::max(y, max_y_in(e, p.x(), p.x()));
+        return y + c;
     };
     for (const std::vector<Elem>& s : reached_stretches(m, fp, d, y_top)) {
         const V2 a = s.front().a;

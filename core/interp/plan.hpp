@@ -18,11 +18,14 @@ struct Interpreter::Plan {
         int motion = -1, dist = -1, plane = -1, radcomp = -1, prefdec = -1, feed = -1;
         int spindle = -1, units = -1, scale = -1, cycle = -1;
     };
-    // Axis words in their default meaning, the centre / intermediate point /
-    // pitch words I J K (index 0 1 2) and the arc radius.
-    struct Target {
+    // Axis words: which, and their values.
+    struct AxisValues {
         std::bitset<kAxes> axis;
         Axes val{};
+    };
+    // Axis words in their default meaning, the centre / intermediate point /
+    // pitch words I J K (index 0 1 2) and the arc radius.
+    struct Target : AxisValues {
         std::bitset<kAxes> inc;  // the value is incremental
         std::bitset<3> ijk;
         double ijk_val[3] = {0, 0, 0};
@@ -58,16 +61,12 @@ struct Interpreter::Plan {
         double n[3] = {0, 0, 0};
     };
     // G92: axis presets, S speed limit, R.
-    struct G92Args {
-        std::bitset<kAxes> axis;
-        Axes val{};
+    struct G92Args : AxisValues {
         bool has_s = false, has_r = false;
         double s = 0, r = 0;
     };
     // G59: origin offset on axes, I J K, ED.
-    struct G59Args {
-        std::bitset<kAxes> axis;
-        Axes val{};
+    struct G59Args : AxisValues {
         std::bitset<3> ijk;
         double ijk_val[3] = {0, 0, 0};
         bool has_ed = false;

@@ -522,6 +522,13 @@ TEST(G64, P555EndsAlongTheAllowanceProfile) {
         EXPECT_GT(on, 100);
         EXPECT_GT(groove, 10);
         EXPECT_EQ(off, 0);
+        // Where the profile plus allowance ends, the pass goes on along the
+        // level to where the material ends: the K.2 strip at %555's Z0 along
+        // Z (r 70.5), the I.5 one at the axis along X (Z90.2).
+        const V2 end = along_x ? V2(90.2, 0) : V2(0, 70.5);
+        bool reached = false;
+        for (const Seg& s : cut) reached = reached || (s.b - end).norm() < 1e-9;
+        EXPECT_TRUE(reached) << (along_x ? "X" : "Z");
     }
 }
 
