@@ -325,10 +325,14 @@ void contour_pass(Emit& em, const Material& m, int d, double c, double y_safe) {
     }
     // Above the material at x, by the clearance: the way down runs in rapid
     // to there (in the air above the stock), then at feed.
+    // (Only the crossings up to y_top count: max_y_in would also take the
+    // material's far side beyond the start level, as in a bore.)
     auto above = [&](const V2& p) {
-        double y = p.y();
-        for (const Elem& e : m.M) y = std::max(y, max_y_in(e, p.x(), p.x()));
-        return y + c;
+        double y = -kInf;
+        std::vector<V2> pts;
+        for (const Elem& e : m.M) intersect(e, line(V2(p.x(), p.y()), V2(p.x(), y_top + 1)), pts);
+        for (const V2& q : pts) y = std::max(y, q.y());
+        return std::max(y, p.y()) + c;
     };
     for (const std::vector<Elem>& s : reached_stretches(m, fp, d, y_top)) {
         const V2 a = s.front().a;
