@@ -37,6 +37,22 @@ inline constexpr int wNoToolWidth = 1117;      // G66 correctors that give no to
 inline constexpr int wPlungeAway = 1118;  // G46 roughing plunges with the cutter away from the hole
 }  // namespace err
 
+// What a pure layer (parse, geometry, cycles) answers when it refuses its
+// input: the error number and what is wrong, with where it is as far as that
+// layer knows it. It has no program, line or N: the interpreter adds them when
+// it turns an Error into a Diag (Interpreter::fail), at the boundary. A
+// function that has nothing else to answer returns one, empty on success:
+//     if (Error e = spline::build(curve)) return fail(e);
+struct Error {
+    int code = 0;        // NUM error number or one of ours (err::); 0: no error
+    std::string detail;  // the specific message
+    int column = 0;      // 1-based column in the block's line, 0 when unknown
+    int item = -1;       // the piece of the layer's input it is about (a PGP
+                         // block's tag, a G46 section), -1 for none
+
+    explicit operator bool() const { return code != 0; }
+};
+
 enum class Severity { error, warning };
 
 struct Diag {

@@ -157,7 +157,7 @@ double Interpreter::to_display(int axis, double internal) const {
     return internal;
 }
 
-StepResult Interpreter::fail(int code, std::string detail, int column) {
+bool Interpreter::fail(int code, std::string detail, int column) {
     Diag d;
     d.code = code;
     d.file = stack_.empty() ? (main_ ? main_->file : std::string()) : stack_.back().prog->file;
@@ -168,7 +168,11 @@ StepResult Interpreter::fail(int code, std::string detail, int column) {
     d.detail = std::move(detail);
     diags_.push_back(std::move(d));
     ended_ = true;
-    return StepResult::error;
+    return false;
+}
+
+bool Interpreter::fail(const Error& e) {
+    return fail(e.code, e.detail, e.column);
 }
 
 void Interpreter::warn(int code, std::string detail) {
@@ -564,7 +568,8 @@ StepResult Interpreter::step() {
         Diag& d = parse_diag_;
         if (!parse_block(line, block_, d)) {
             loc_.n = line_label(line);
-            return fail(d.code, d.detail, d.column);
+            fail(d.code, d.detail, d.column);
+            return StepResult::error;
         }
         loc_.n = block_.n;
         if (block_.skip && opt_.block_skip) {
@@ -577,14 +582,17 @@ StepResult Interpreter::step() {
         }
         break;
     }
-    if (++blocks_ > opt_.max_blocks)
-        return fail(
-            err::kBlockBudget,
-            strf(tr("more than %ld blocks executed: endless loop? (G79/G77)"), opt_.max_blocks));
+    if (++blocks_ > opt_.max_blocks) {
+        fail(err::kBlockBudget,
+             strf(tr("more than %ld blocks executed: endless loop? (G79/G77)"), opt_.max_blocks));
+        return StepResult::error;
+    }
     // The work done, not only the blocks: one cycle block makes many moves.
-    if (moves_ > 2 * opt_.max_blocks)
-        return fail(err::kBlockBudget, strf(tr("more than %ld moves made: endless loop? (G79/G77)"),
-                                            2 * opt_.max_blocks));
+    if (moves_ > 2 * opt_.max_blocks) {
+        fail(err::kBlockBudget,
+             strf(tr("more than %ld moves made: endless loop? (G79/G77)"), 2 * opt_.max_blocks));
+        return StepResult::error;
+    }
     size_t depth = stack_.size();
     StepResult r = execute(block_);
     if (r == StepResult::error || ended_) return r;

@@ -253,7 +253,12 @@ class Interpreter final : private EAccess {
     inline bool modal_frame(const Plan& p);
     bool modal_g92(const Plan& p);
     void ed_axes(int& a0, int& a1) const;
-    StepResult fail(int code, std::string detail, int column = 0);
+    // Records error `code` at the current block (its program, line, N and the
+    // column of the word, or `column` when given) and ends the run. Returns
+    // false, so that a step answers with it: `return fail(2, tr("..."));`.
+    bool fail(int code, std::string detail, int column = 0);
+    // The same for what a pure layer answered (diag.hpp: Error).
+    bool fail(const Error& e);
     void warn(int code, std::string detail);
     bool call(const Plan& p);
     bool jump(long label);

@@ -104,8 +104,7 @@ bool Interpreter::comp_element(const comp::Elem& e, int g, const Axes& target, d
     if (comp_.waiting_entry) {
         if (e.arc)
             return fail(140,
-                        tr("the first block in radius compensation must be a line (G00 or G01)")),
-                   false;
+                        tr("the first block in radius compensation must be a line (G00 or G01)"));
         Axes tp = frames_.to_program(mach_);
         comp_.tc = comp::V2(tp[size_t(comp_.a0)], tp[size_t(comp_.a1)]) - comp_.shift;
         comp_.waiting_entry = false;
@@ -131,8 +130,7 @@ bool Interpreter::comp_element(const comp::Elem& e, int g, const Axes& target, d
                                    next_from)) {
         return fail(rc, strf(tr("the tool radius %s does not fit the profile here (an offset "
                                 "element vanishes or reverses)"),
-                             std::to_string(comp_.radius).substr(0, 7).c_str())),
-               false;
+                             std::to_string(comp_.radius).substr(0, 7).c_str()));
     }
     if (!comp_emit(pieces, comp_.ctx)) return false;
     gate_->release();
@@ -181,7 +179,7 @@ bool Interpreter::comp_other_axes(const Axes& target, const std::bitset<kAxes>& 
 // line) goes from there to the programmed point.
 bool Interpreter::comp_exit(const Plan&, const Axes* target) {
     if (target && (modal_.motion == 2 || modal_.motion == 3))
-        return fail(140, tr("the block that ends radius compensation (G40) must be a line")), false;
+        return fail(140, tr("the block that ends radius compensation (G40) must be a line"));
     if (comp_.has_pending) {
         std::vector<comp::Piece> pieces;
         gate_->holding = false;
@@ -191,8 +189,7 @@ bool Interpreter::comp_exit(const Plan&, const Axes* target) {
             pieces.push_back(p);
         } else if (int rc =
                        comp::finish(comp_.pending, comp_.tc, comp_.radius, comp_.side, pieces)) {
-            return fail(rc, tr("the tool radius does not fit the last element of the profile")),
-                   false;
+            return fail(rc, tr("the tool radius does not fit the last element of the profile"));
         }
         if (!comp_emit(pieces, comp_.ctx)) return false;
         gate_->release();

@@ -77,9 +77,8 @@ bool Interpreter::cycle_words(const Plan& p, int code) {
         else if (a == addr1('F'))
             c.starts = v, c.has_starts = true;
         if ((a == addr1('P') || a == addr1('Q') || a == addrE('S') || a == addr1('K')) && v < 0)
-            return fail(835, strf(tr("%s must be positive in a cycle"),
-                                  std::string(addr_name(a)).c_str())),
-                   false;
+            return fail(
+                835, strf(tr("%s must be positive in a cycle"), std::string(addr_name(a)).c_str()));
     }
     // The bottom is the cycle-axis word, absolute also in G91 (milling.md §6.1.3).
     if (p.to.axis[size_t(ax)]) {
@@ -155,45 +154,42 @@ Interpreter::DrillRun::Step Interpreter::DrillRun::machining(int code) {
 // The bottom and the retract plane, for every code.
 bool Interpreter::DrillRun::check() {
     if (!in.m_.lathe && in.modal_.tool_axis != ax)
-        return in.fail(890, tr("the tool axis (G16) is not parallel to the cycle axis")), false;
+        return in.fail(890, tr("the tool axis (G16) is not parallel to the cycle axis"));
     if (!c.has_z)
         return in.fail(code == 31 ? 883 : 882,
-                       strf(tr("the hole bottom (%c) is not programmed"), kAxisNames[size_t(ax)])),
-               false;
+                       strf(tr("the hole bottom (%c) is not programmed"), kAxisNames[size_t(ax)]));
     const double s = in.prog_[size_t(ax)];
     if (!c.has_er) {
         c.er = s;  // the retract plane defaults to where the cycle starts
         c.has_er = true;
     }
     if (std::fabs(c.er - c.z) < 1e-9)
-        return in.fail(891, tr("the retract plane ER is the hole bottom")), false;
-    if (h(c.er) < h(c.z))
-        return in.fail(881, tr("the retract plane ER is below the hole bottom")), false;
+        return in.fail(891, tr("the retract plane ER is the hole bottom"));
+    if (h(c.er) < h(c.z)) return in.fail(881, tr("the retract plane ER is below the hole bottom"));
     return check_code();
 }
 
 // The words and the spindle each code needs.
 bool Interpreter::DrillRun::check_code() {
     if ((code == 81 || code == 86 || code == 88 || (code == 84 && c.has_k)) && c.has_ef)
-        return in.fail(888, strf(tr("no dwell (EF) in G%d"), code)), false;
+        return in.fail(888, strf(tr("no dwell (EF) in G%d"), code));
     if ((code == 84 || code == 31) && in.modal_.spindle_dir != 3 && in.modal_.spindle_dir != 4)
-        return in.fail(831, strf(tr("G%d with the spindle stopped"), code)), false;
+        return in.fail(831, strf(tr("G%d with the spindle stopped"), code));
     if ((code == 83 || code == 87) && !c.has_p && !c.has_es)
-        return in.fail(2, strf(tr("G%d needs P (first peck) or ES (number of pecks)"), code)),
-               false;
+        return in.fail(2, strf(tr("G%d needs P (first peck) or ES (number of pecks)"), code));
     if ((code == 83 || code == 87) && c.has_p && c.has_q && c.q > c.p)
-        return in.fail(881, tr("the last peck Q is larger than the first P")), false;
+        return in.fail(881, tr("the last peck Q is larger than the first P"));
     // A peck under the resolution, a negative one or a fraction of a peck
     // would loop or divide by zero (found by fuzzing): incompatible values.
     if ((code == 83 || code == 87) && ((c.has_p && c.p < 0.001) || (c.has_q && c.q < 0)))
-        return in.fail(881, tr("the pecks P and Q must be positive, P at least 0.001 mm")), false;
+        return in.fail(881, tr("the pecks P and Q must be positive, P at least 0.001 mm"));
     if ((code == 83 || code == 87) && c.has_es && (c.es < 1 || c.es != std::floor(c.es)))
-        return in.fail(881, tr("ES must be a whole number of pecks, 1 or more")), false;
+        return in.fail(881, tr("ES must be a whole number of pecks, 1 or more"));
     if (code == 31 && (!c.has_k || !c.has_p))
-        return in.fail(883, tr("G31 needs the pitch (K) and the retract (P)")), false;
+        return in.fail(883, tr("G31 needs the pitch (K) and the retract (P)"));
     if (code == 31 && c.has_starts &&
         (c.starts < 1 || c.starts > 9 || c.starts != std::floor(c.starts)))
-        return in.fail(884, tr("G31: the number of starts F must be 1 to 9")), false;
+        return in.fail(884, tr("G31: the number of starts F must be 1 to 9"));
     return true;
 }
 
@@ -242,7 +238,7 @@ bool Interpreter::DrillRun::pecks(std::vector<double>& out) {
     constexpr double kMaxPecks = 100000;
     const double wanted = c.has_es && c.es >= 1 ? c.es : depth / std::max(c.p, 1e-300);
     if (!(wanted <= kMaxPecks))
-        return in.fail(881, strf(tr("more than %d pecks for this hole"), int(kMaxPecks))), false;
+        return in.fail(881, strf(tr("more than %d pecks for this hole"), int(kMaxPecks)));
     if (c.has_es && c.es >= 1) {
         int n = int(std::lround(c.es));
         double first = c.has_p ? c.p : -1, last = c.has_q ? c.q : -1;
@@ -250,7 +246,7 @@ bool Interpreter::DrillRun::pecks(std::vector<double>& out) {
         double rest = depth - std::max(0.0, first) - (n > 1 ? std::max(0.0, last) : 0.0);
         int shared = n - fixed;
         if (rest < -1e-9 || (shared == 0 && std::fabs(rest) > 1e-9 && fixed == 0))
-            return in.fail(881, tr("ES, P and Q do not fit the depth of the hole")), false;
+            return in.fail(881, tr("ES, P and Q do not fit the depth of the hole"));
         for (int k = 0; k < n; ++k) {
             if (k == 0 && first > 0)
                 out.push_back(first);
@@ -395,8 +391,7 @@ bool Interpreter::DrillRun::thread() {
 
 // A block while a cycle is active, or a G31 block (milling.md §6.1.4).
 bool Interpreter::cycle_block(const Plan& p) {
-    if (modal_.radcomp != 40)
-        return fail(140, tr("machining cycle under radius compensation")), false;
+    if (modal_.radcomp != 40) return fail(140, tr("machining cycle under radius compensation"));
     const int code = p.g[31] ? 31 : modal_.cycle;
     if (!cycle_words(p, code)) return false;
     const int ax = cycle_axis();

@@ -18,13 +18,11 @@ namespace pupitre {
 bool Interpreter::assign_l(const Operand& t, double v, int col) {
     if (!LVars::valid(t.index))
         return fail(91, strf(tr("L%d does not exist (L0-L19, L100-L199, L900-L959)"), t.index),
-                    col),
-               false;
+                    col);
     if (t.index >= 100 && t.index <= 199 && modal_.radcomp != 40)
-        return fail(140, strf(tr("writing L%d under radius compensation"), t.index), col), false;
+        return fail(140, strf(tr("writing L%d under radius compensation"), t.index), col);
     if (t.index >= 100 && t.index <= 199 && pgp_.pending())
-        return fail(96, strf(tr("writing L%d after an incomplete profile block"), t.index), col),
-               false;
+        return fail(96, strf(tr("writing L%d after an incomplete profile block"), t.index), col);
     l_.v[size_t(t.index)] = v;
     l_.written.set(size_t(t.index));
     return true;
@@ -34,18 +32,16 @@ bool Interpreter::assign_l(const Operand& t, double v, int col) {
 bool Interpreter::assign_e(const Operand& t, double v, int col) {
     int n = t.index;
     if (t.kind == Operand::EIndirect) {
-        if (!LVars::valid(t.index))
-            return fail(91, strf(tr("L%d does not exist"), t.index), col), false;
+        if (!LVars::valid(t.index)) return fail(91, strf(tr("L%d does not exist"), t.index), col);
         double nn = l_.v[size_t(t.index)];
         if (nn < 0 || nn > 99999 || nn != std::floor(nn))
-            return fail(91, strf(tr("L%d does not hold an E number"), t.index), col), false;
+            return fail(91, strf(tr("L%d does not hold an E number"), t.index), col);
         n = int(nn);
     }
-    if (std::fabs(v) > 9.2e18)
-        return fail(92, tr("value too large for an E parameter"), col), false;
+    if (std::fabs(v) > 9.2e18) return fail(92, tr("value too large for an E parameter"), col);
     // A decimal stored into E is truncated toward zero (program-flow.md §9.3).
     std::string why;
-    if (int rc = write_e(n, int64_t(std::trunc(v)), why)) return fail(rc, why, col), false;
+    if (int rc = write_e(n, int64_t(std::trunc(v)), why)) return fail(rc, why, col);
     return true;
 }
 
@@ -55,7 +51,7 @@ bool Interpreter::assign_all(const Block& b) {
         col_ = a.col;
         double v;
         std::string why;
-        if (int rc = eval_expr(b, a.expr, l_, *this, v, why)) return fail(rc, why, a.col), false;
+        if (int rc = eval_expr(b, a.expr, l_, *this, v, why)) return fail(rc, why, a.col);
         bool ok = a.target.kind == Operand::LVar ? assign_l(a.target, v, a.col)
                                                  : assign_e(a.target, v, a.col);
         if (!ok) return false;
@@ -73,8 +69,9 @@ std::optional<StepResult> Interpreter::run_apart(const Block& b, const Plan& p) 
     }
     if (p.unsupported.g >= 0) {
         const GCode* g = find_g(p.unsupported.g);
-        return fail(err::kUnsupported, strf(tr("G%d (%s) is not yet supported by pupitre"),
-                                            p.unsupported.g, tr(std::string(g->text).c_str())));
+        fail(err::kUnsupported, strf(tr("G%d (%s) is not yet supported by pupitre"),
+                                     p.unsupported.g, tr(std::string(g->text).c_str())));
+        return StepResult::error;
     }
     // G76+/G76- edit the program memory and do nothing else.
     if (p.g76.sign) return edit_program(b, p) ? StepResult::running : StepResult::error;
@@ -99,23 +96,22 @@ bool Interpreter::block_allowed(const Plan& p) {
         for (int i = 0; i < p.tech.nm; ++i)
             if (p.tech.m[i] <= 2)
                 return fail(131,
-                            strf(tr("a fillet or chamfer (EB) in a block with M0%d"), p.tech.m[i])),
-                       false;
+                            strf(tr("a fillet or chamfer (EB) in a block with M0%d"), p.tech.m[i]));
     if (pgp_.pending()) {
         // The held element needs the next blocks (pgp.md §6 item 5).
         if (p.mode.plane >= 0 && p.mode.plane != modal_.plane)
-            return fail(137, tr("plane change while a profile element is incomplete")), false;
+            return fail(137, tr("plane change while a profile element is incomplete"));
         for (int i = 0; i < p.tech.nm; ++i)
             if (p.tech.m[i] == 2 && !pgp_close()) return false;  // the solver says why (101, 131)
     }
     if (p.g[78]) {
         for (int i = 0; i < p.tech.nm; ++i)
             if (p.tech.m[i] == 0 || p.tech.m[i] == 1)
-                return fail(78, strf(tr("G78 with a program stop M0%d"), p.tech.m[i])), false;
+                return fail(78, strf(tr("G78 with a program stop M0%d"), p.tech.m[i]));
     }
     // Radius compensation restrictions (turning.md §3.7, milling.md §4.4.2).
     bool comp = modal_.radcomp != 40;
-    if (comp && p.g[16]) return fail(140, tr("G16 under radius compensation")), false;
+    if (comp && p.g[16]) return fail(140, tr("G16 under radius compensation"));
     return true;
 }
 
@@ -124,7 +120,7 @@ bool Interpreter::do_dwell(const Plan& p) {
         clock_ += p.dwell;
         out_.dwell(loc_, p.dwell);
     } else if (p.g[4]) {
-        return fail(2, tr("G4 needs the dwell time in F (G4 F1.5)")), false;
+        return fail(2, tr("G4 needs the dwell time in F (G4 F1.5)"));
     }
     return true;
 }
@@ -132,15 +128,15 @@ bool Interpreter::do_dwell(const Plan& p) {
 // G79's condition is read once the rest of the block is done: it sees the
 // block's own assignments.
 bool Interpreter::do_g79(const Block& b, const Plan& p) {
-    if (p.flow.g79_n < 0) return fail(2, tr("G79 needs the label to jump to (G79 N100)")), false;
+    if (p.flow.g79_n < 0) return fail(2, tr("G79 needs the label to jump to (G79 N100)"));
     bool go = true;
     if (b.test.cmp != Cmp::none) {
         double lhs, rhs;
         std::string why;
         if (int rc = eval_expr(b, b.test.lhs, l_, *this, lhs, why))
-            return fail(rc, why, b.test.col), false;
+            return fail(rc, why, b.test.col);
         if (int rc = eval_expr(b, b.test.rhs, l_, *this, rhs, why))
-            return fail(rc, why, b.test.col), false;
+            return fail(rc, why, b.test.col);
         go = compare(b.test.cmp, lhs, rhs);
         if (l_.any_unset_read) report_unset_reads();
     }
@@ -153,9 +149,9 @@ bool Interpreter::do_flow(const Block& b, const Plan& p) {
     if (p.g[79] && !p.flow.g79_sign && !do_g79(b, p)) return false;
     if (p.g[48] && !spline_define(p)) return false;
     if (p.g[49]) {
-        if (modal_.radcomp != 40) return fail(140, tr("G49 must be programmed in G40")), false;
+        if (modal_.radcomp != 40) return fail(140, tr("G49 must be programmed in G40"));
         if (p.spline.nc <= 0 || !splines_.erase(p.spline.nc))
-            return fail(605, strf(tr("G49: curve NC%d is not defined"), p.spline.nc)), false;
+            return fail(605, strf(tr("G49: curve NC%d is not defined"), p.spline.nc));
     }
     if (p.g[76] && !transfer(p)) return false;
     if (p.g[77] && !call(p)) return false;
@@ -195,8 +191,7 @@ bool Interpreter::modal_interpolation(const Plan& p) {
     if (p.mode.dist >= 0) modal_.incremental = p.mode.dist == 91;
     if (p.mode.plane >= 0 && p.mode.plane != modal_.plane) {
         if (modal_.radcomp != 40)
-            return fail(138, tr("plane change under radius compensation (program G40 first)")),
-                   false;
+            return fail(138, tr("plane change under radius compensation (program G40 first)"));
         modal_.plane = p.mode.plane;
     }
     if (p.mode.units >= 0) modal_.inch = p.mode.units == 70;
@@ -221,7 +216,7 @@ bool Interpreter::modal_cycle(const Plan& p) {
         modal_.cycle = p.mode.cycle;
     }
     if (p.g[16] && modal_.cycle >= 81 && modal_.cycle <= 89)
-        return fail(890, tr("G16 while a drilling cycle is active")), false;
+        return fail(890, tr("G16 while a drilling cycle is active"));
     return true;
 }
 
@@ -232,7 +227,7 @@ bool Interpreter::modal_frame_switches(const Plan& p) {
         recompute_program_pos();
     }
     if (p.mode.scale >= 0 && (p.mode.scale == 74) != frames_.scale_on) {
-        if (modal_.radcomp != 40) return fail(143, tr("G73/G74 under radius compensation")), false;
+        if (modal_.radcomp != 40) return fail(143, tr("G73/G74 under radius compensation"));
         frames_.scale_on = p.mode.scale == 74;
         recompute_program_pos();
     }
@@ -249,8 +244,7 @@ bool Interpreter::modal_feed(const Plan& p) {
     // obligatoirement de l'argument F"; CLARIFICATIONS 18).
     if ((p.mode.feed == 94 || p.mode.feed == 95) && !p.tech.has_f && m_.strict)
         return fail(2,
-                    strf(tr("G%d without F (seed 000: F is its mandatory argument)"), p.mode.feed)),
-               false;
+                    strf(tr("G%d without F (seed 000: F is its mandatory argument)"), p.mode.feed));
     if ((p.mode.feed == 94 || p.mode.feed == 95) && !p.tech.has_f)
         warn(err::wFeedModeNoF, p.mode.feed != modal_.feed_mode
                                     ? strf(tr("G%d without F in its block: the feed unit changes "
@@ -284,7 +278,7 @@ bool Interpreter::modal_tool(const Plan& p) {
         // The radius is taken when G41/G42 is programmed; a change of D or R takes
         // effect after G40 and a new G41/G42 (000:898-906).
         if (p.mode.radcomp == 29 && comp_.on)
-            return fail(140, tr("G29 under G41/G42: program G40 first (000:3932)")), false;
+            return fail(140, tr("G29 under G41/G42: program G40 first (000:3932)"));
         if (p.mode.radcomp != 40 && p.mode.radcomp != 29 && !comp_engage(p.mode.radcomp))
             return false;
         modal_.radcomp = p.mode.radcomp;
@@ -295,7 +289,7 @@ bool Interpreter::modal_tool(const Plan& p) {
         modal_.tool_axis_neg = p.g16.neg;
         gauge_pending_.set();
     } else if (p.g[16]) {
-        return fail(2, tr("G16 needs P, Q or R with a sign (G16 R+)")), false;
+        return fail(2, tr("G16 needs P, Q or R with a sign (G16 R+)"));
     }
     return true;
 }
@@ -309,7 +303,7 @@ void Interpreter::ed_axes(int& a0, int& a1) const {
 // G59 offsets, modal per axis (turning.md §2.8); G91 G59 adds.
 bool Interpreter::modal_g59(const Plan& p) {
     if (p.g59.axis.none() && !p.g59.has_ed && p.g59.ijk.none())
-        return fail(2, tr("G59 needs at least one axis offset")), false;
+        return fail(2, tr("G59 needs at least one axis offset"));
     for (int a = 0; a < kAxes; ++a)
         if (p.g59.axis[size_t(a)])
             frames_.g59[size_t(a)] = modal_.incremental
@@ -340,7 +334,7 @@ bool Interpreter::modal_frame(const Plan& p) {
     }
     if (p.g[51]) {
         if (p.g51.on.none() && p.g51.off.none())
-            return fail(2, tr("G51 needs axes with a sign (G51 X- Y-)")), false;
+            return fail(2, tr("G51 needs axes with a sign (G51 X- Y-)"));
         frames_.mirror |= p.g51.on;
         frames_.mirror &= ~p.g51.off;
         recompute_program_pos();
@@ -351,17 +345,16 @@ bool Interpreter::modal_frame(const Plan& p) {
 // G92: a preset of the axes, or the spindle limit S, or the tangential feed R.
 bool Interpreter::modal_g92(const Plan& p) {
     if (p.g92.axis.any() && (p.g92.has_s || p.g92.has_r))
-        return fail(3, tr("G92 presets axes or sets S or R, not both in one block")), false;
+        return fail(3, tr("G92 presets axes or sets S or R, not both in one block"));
     if (p.g92.axis.none() && !p.g92.has_s && !p.g92.has_r)
-        return fail(2, tr("G92 needs axes (preset), S (spindle limit) or R (tangential feed)")),
-               false;
+        return fail(2, tr("G92 needs axes (preset), S (spindle limit) or R (tangential feed)"));
     // new PREF = PREF + (current point / OP) - programmed value (000:1173-1179).
     for (int a = 0; a < kAxes; ++a)
         if (p.g92.axis[size_t(a)])
             frames_.pref[size_t(a)] += prog_[size_t(a)] - p.g92.val[size_t(a)];
     if (p.g92.axis.any()) recompute_program_pos();
     if (p.g92.has_s) {
-        if (!m_.lathe) return fail(2, tr("G92 S (spindle limit) is a lathe function")), false;
+        if (!m_.lathe) return fail(2, tr("G92 S (spindle limit) is a lathe function"));
         modal_.smax = p.g92.s;
         if (modal_.smax > m_.spindle_max) {
             warn(err::wSpeedClamped,
@@ -433,13 +426,12 @@ void Interpreter::report_unset_reads() {
 bool Interpreter::apply_spindle(const Plan& p) {
     if (p.mode.spindle == 96 || p.mode.spindle == 97) {
         bool s_given = p.mode.spindle == 96 ? p.spindle.g96_s : p.spindle.g97_s;
-        if (!s_given) return fail(28, strf(tr("G%d must be followed by S"), p.mode.spindle)), false;
+        if (!s_given) return fail(28, strf(tr("G%d must be followed by S"), p.mode.spindle));
     }
     if (p.mode.spindle == 96) {
         if (!p.spindle.has_x && !modal_.css_known)
             return fail(28, tr("G96: the starting diameter is unknown (program X first, or G96 X.. "
-                               "S..)")),
-                   false;
+                               "S..)"));
         modal_.spindle_mode = 96;
         modal_.css_x0 = p.spindle.has_x ? p.spindle.x : prog_[X];
         modal_.css_pos0 = prog_[X];
@@ -460,15 +452,14 @@ bool Interpreter::apply_spindle(const Plan& p) {
         for (size_t i = 0; i < m_.ranges.size() && found < 0; ++i)
             if (modal_.s >= m_.ranges[i].min && modal_.s <= m_.ranges[i].max) found = int(i);
         if (found < 0)
-            return fail(29, strf(tr("S%s is in no spindle range"), fixed3(modal_.s, 63).c_str())),
-                   false;
+            return fail(29, strf(tr("S%s is in no spindle range"), fixed3(modal_.s, 63).c_str()));
         modal_.range = found;
     }
     if (modal_.spindle_mode == 96 && !m_.ranges.empty() && modal_.range < 0 &&
         (p.mode.spindle == 96 || p.tech.has_s)) {
         // With automatic ranges the machine takes the range of the highest speeds.
         if (!m_.auto_range)
-            return fail(29, tr("constant surface speed needs a spindle range (M40-M45)")), false;
+            return fail(29, tr("constant surface speed needs a spindle range (M40-M45)"));
         modal_.range = int(m_.ranges.size()) - 1;
     }
     if (modal_.spindle_mode == 97 && p.tech.has_s && modal_.range >= 0) {
@@ -476,8 +467,7 @@ bool Interpreter::apply_spindle(const Plan& p) {
         if (modal_.s != 0 && (modal_.s < r.min || modal_.s > r.max))
             return fail(29, strf(tr("S%s is outside range M%d (%s-%s rev/min)"),
                                  fixed3(modal_.s, 63).c_str(), 40 + modal_.range,
-                                 fixed3(r.min, 63).c_str(), fixed3(r.max, 63).c_str())),
-                   false;
+                                 fixed3(r.min, 63).c_str(), fixed3(r.max, 63).c_str()));
     }
     if (modal_.spindle_mode == 97 && p.tech.has_s && modal_.s > m_.spindle_max)
         warn(err::wSpeedClamped,
@@ -503,7 +493,7 @@ bool Interpreter::do_m_avant(const Plan& p) {
             continue;
         }
         if (!mc->all_models && m_.model == 1020)
-            return fail(4, strf(tr("M%d needs a NUM 1040 or 1060"), m)), false;
+            return fail(4, strf(tr("M%d needs a NUM 1040 or 1060"), m));
         if (mc->when != MWhen::avant) continue;
         switch (m) {
             case 3:
@@ -537,7 +527,7 @@ bool Interpreter::do_m_avant(const Plan& p) {
             case 67:
             case 68:
             case 69:
-                return fail(899, strf(tr("M%d: this machine has one spindle"), m)), false;
+                return fail(899, strf(tr("M%d: this machine has one spindle"), m));
             case 998:
                 modal_.modif_inhibited = false;
                 break;
@@ -547,8 +537,7 @@ bool Interpreter::do_m_avant(const Plan& p) {
             default:
                 if (m >= 40 && m <= 45) {
                     if (size_t(m - 40) >= m_.ranges.size() && !m_.ranges.empty())
-                        return fail(29, strf(tr("range M%d does not exist on this machine"), m)),
-                               false;
+                        return fail(29, strf(tr("range M%d does not exist on this machine"), m));
                     modal_.range = m - 40;
                 } else if (m >= 200 && m <= 899) {
                     modal_.coded_m = m;
@@ -568,7 +557,7 @@ bool Interpreter::do_m_apres(const Plan& p, StepResult& r) {
         switch (m) {
             case 0:
             case 1:
-                if (comp) return fail(140, strf(tr("M0%d under radius compensation"), m)), false;
+                if (comp) return fail(140, strf(tr("M0%d under radius compensation"), m));
                 if (m == 1 && !opt_.optional_stop) break;
                 // M00 and M01 stop the spindle (000:1429).
                 modal_.spindle_dir = 5;
@@ -581,7 +570,7 @@ bool Interpreter::do_m_apres(const Plan& p, StepResult& r) {
                 r = StepResult::stopped;
                 break;
             case 2:
-                if (comp) return fail(140, tr("M02 under radius compensation")), false;
+                if (comp) return fail(140, tr("M02 under radius compensation"));
                 reset_modal_m02();
                 out_.end(loc_, 2);
                 ended_ = true;
@@ -592,7 +581,7 @@ bool Interpreter::do_m_apres(const Plan& p, StepResult& r) {
                 set_spindle_event();
                 break;
             case 6:
-                if (comp) return fail(140, tr("tool change M06 under radius compensation")), false;
+                if (comp) return fail(140, tr("tool change M06 under radius compensation"));
                 modal_.tool_in_spindle = modal_.t;
                 note_tool(modal_.t);
                 clock_ += m_.tool_change_time;

@@ -53,15 +53,13 @@ bool listed_word(char c) {
 bool Interpreter::transfer(const Plan& p) {
     const ProgramText* target = stack_.back().prog;
     if (p.g76.h >= 0 && !(target = mem_.find(p.g76.h)))
-        return fail(25, strf(tr("G76 H%d: program %%%d is not in memory"), p.g76.h, p.g76.h)),
-               false;
+        return fail(25, strf(tr("G76 H%d: program %%%d is not in memory"), p.g76.h, p.g76.h));
     size_t from = target->begin, to = target->end;
     if (p.g76.nn > 0) {
         const Label* a = target->find_label(p.g76.n[0]);
         const Label* b = target->find_label(p.g76.nn > 1 ? p.g76.n[1] : p.g76.n[0]);
         if (!a || !b)
-            return fail(25, strf(tr("G76: block N%ld not found"), !a ? p.g76.n[0] : p.g76.n[1])),
-                   false;
+            return fail(25, strf(tr("G76: block N%ld not found"), !a ? p.g76.n[0] : p.g76.n[1]));
         if (b->offset < a->offset) std::swap(a, b);
         from = a->offset;
         to = std::min(target->end, target->text->find('\n', b->offset));
@@ -107,7 +105,7 @@ bool Interpreter::transfer_line(const ProgramText* target, size_t pos, size_t eo
         while (i < eol && digit(text[i])) n = n * 10 + (text[i++] - '0');
         spaces();
         if (i >= eol || text[i] != '=')
-            return fail(97, strf(tr("G76: no '=' after %c%ld"), is_l ? 'L' : 'E', n)), false;
+            return fail(97, strf(tr("G76: no '=' after %c%ld"), is_l ? 'L' : 'E', n));
         const size_t field = ++i;
         while (i < eol && !upper(text[i]) && text[i] != '(' && text[i] != '\r') ++i;
         // Keep the separating space before the next word.
@@ -121,23 +119,21 @@ bool Interpreter::transfer_field(const ProgramText* target, bool is_l, long n, s
                                  size_t width, bool word_follows) {
     if (width < 10)
         return fail(97, strf(tr("G76: fewer than 10 characters reserved after %c%ld="),
-                             is_l ? 'L' : 'E', n)),
-               false;
+                             is_l ? 'L' : 'E', n));
     std::string value;
     if (is_l) {
-        if (!LVars::valid(int(n))) return fail(91, strf(tr("G76: L%ld does not exist"), n)), false;
+        if (!LVars::valid(int(n))) return fail(91, strf(tr("G76: L%ld does not exist"), n));
         value = number_text(l_.v[size_t(n)], 6);
     } else {
         int64_t raw;
         std::string why;
-        if (int rc = read_e(int(n), raw, why)) return fail(rc, "G76: " + why), false;
+        if (int rc = read_e(int(n), raw, why)) return fail(rc, "G76: " + why);
         value = std::to_string(raw);
     }
     const size_t room = word_follows ? width - 1 : width;
     if (value.size() > room)
         return fail(97, strf(tr("G76: the value %s does not fit the field after %c%ld"),
-                             value.c_str(), is_l ? 'L' : 'E', n)),
-               false;
+                             value.c_str(), is_l ? 'L' : 'E', n));
     value.resize(width, ' ');
     target->text->replace(field, width, value);
     if (mem_.find(target->number) == target)
@@ -151,17 +147,15 @@ bool Interpreter::edit_block_text(const Block& b, std::string& out) {
     Block ins;
     Diag d;
     if (!parse_block(raw, ins, d))
-        return fail(d.code, "G76+: " + d.detail, b.g76_block_col - 1 + d.column), false;
+        return fail(d.code, "G76+: " + d.detail, b.g76_block_col - 1 + d.column);
     if (ins.msg_channel >= 0)
-        return fail(1, tr("G76+: a $ message cannot be inserted"), b.g76_block_col), false;
+        return fail(1, tr("G76+: a $ message cannot be inserted"), b.g76_block_col);
     if (ins.test.cmp != Cmp::none)
         return fail(1, tr("G76+: a G79 condition cannot be inserted"),
-                    b.g76_block_col - 1 + ins.test.col),
-               false;
+                    b.g76_block_col - 1 + ins.test.col);
     if (ins.empty())
         return fail(2, tr("G76+ needs the block to insert after N.. (G76+ N100 G1 X10)"),
-                    b.g76_block_col),
-               false;
+                    b.g76_block_col);
     // Words and assignments in the order they were written.
     std::vector<std::pair<uint16_t, std::string>> parts;
     if (!inserted_words(b, ins, parts) || !inserted_assigns(b, ins, parts)) return false;
@@ -196,16 +190,13 @@ bool Interpreter::inserted_words(const Block& b, const Block& ins,
                         strf(tr("G76+: %s cannot be inserted (N G X Y Z U V W A B C I J K P Q R "
                                 "L0-L19 only)"),
                              std::string(addr_name(w.addr)).c_str()),
-                        col(w.col)),
-                   false;
+                        col(w.col));
         if ((w.v.kind == Operand::LVar && w.v.index > 19) || w.v.kind == Operand::EParam ||
             w.v.kind == Operand::EIndirect)
             return fail(1, tr("G76+: only L0-L19 can give a value in an inserted block"),
-                        col(w.col)),
-                   false;
+                        col(w.col));
         if (letter == 'G' && (w.gsign || w.glevel))
-            return fail(1, tr("G76+: G76+/-, G79+/- and G77 -i cannot be inserted"), col(w.col)),
-                   false;
+            return fail(1, tr("G76+: G76+/-, G79+/- and G77 -i cannot be inserted"), col(w.col));
         double v;
         int iv = 0;
         bool integer = letter == 'N' || letter == 'G';
@@ -231,17 +222,15 @@ bool Interpreter::inserted_assigns(const Block& b, const Block& ins,
         if ((t.v.kind == Operand::LVar && t.v.index > 19) || t.v.kind == Operand::EParam ||
             t.v.kind == Operand::EIndirect)
             return fail(1, tr("G76+: only L0-L19 can give a value in an inserted block"),
-                        b.g76_block_col),
-                   false;
+                        b.g76_block_col);
     for (const Assign& a : ins.assigns) {
         if (a.target.kind != Operand::LVar || a.target.index > 19)
             return fail(1, tr("G76+: only L0-L19 can be assigned in an inserted block"),
-                        col(a.col)),
-                   false;
+                        col(a.col));
         double v;
         std::string why;
         if (int rc = eval_expr(ins, a.expr, l_, *this, v, why))
-            return fail(rc, "G76+: " + why, col(a.col)), false;
+            return fail(rc, "G76+: " + why, col(a.col));
         parts.emplace_back(a.col, "L" + std::to_string(a.target.index) + "=" + number_text(v, 6));
     }
     return true;
@@ -255,8 +244,7 @@ bool Interpreter::inserted_reads_back(const Block& b, const std::string& out) {
     if (!parse_block(out, back, d))
         return fail(d.code,
                     strf(tr("G76+: the block to insert, %s: %s"), out.c_str(), d.detail.c_str()),
-                    b.g76_block_col),
-               false;
+                    b.g76_block_col);
     for (const Word& w : back.words) {
         double v;
         if (!word_value(w, v)) {
@@ -274,15 +262,14 @@ bool Interpreter::inserted_reads_back(const Block& b, const std::string& out) {
 bool Interpreter::edit_program(const Block& b, const Plan& p) {
     const char sign = p.g76.sign;
     if (m_.model == 1020)
-        return fail(4, strf(tr("G76%c needs a NUM 1040 or 1060 (000:555)"), sign)), false;
+        return fail(4, strf(tr("G76%c needs a NUM 1040 or 1060 (000:555)"), sign));
     if (!edit_block_alone(b, sign)) return false;
     // It moves nothing: under G41/G42 it counts among the blocks without motion.
     if (modal_.radcomp != 40 && ++nonmotion_in_comp_ > 2)
         return fail(140, tr("more than 2 blocks in a row without motion in the plane under radius "
-                            "compensation")),
-               false;
+                            "compensation"));
     if (p.g76.nn > 1)
-        return fail(3, strf(tr("G76%c points at one block N.."), sign), b.words.back().col), false;
+        return fail(3, strf(tr("G76%c points at one block N.."), sign), b.words.back().col);
     if (p.g76.nn == 0) return edit_whole_program(b, p);
     return edit_line(b, p);
 }
@@ -301,16 +288,14 @@ bool Interpreter::edit_block_alone(const Block& b, char sign) {
                         strf(tr("G76%c takes only H.. and N.. [+k] (the block must hold nothing "
                                 "else)"),
                              sign),
-                        w.col),
-                   false;
+                        w.col);
         if (w.addr == addr1('H') && ++hs > 1)
-            return fail(3, strf(tr("G76%c: H written twice"), sign), w.col), false;
+            return fail(3, strf(tr("G76%c: H written twice"), sign), w.col);
     }
     if (!b.assigns.empty())
         return fail(3,
                     strf(tr("G76%c takes only H.. and N.. [+k]: no assignment in its block"), sign),
-                    b.assigns[0].col),
-               false;
+                    b.assigns[0].col);
     return true;
 }
 
@@ -319,34 +304,28 @@ bool Interpreter::edit_whole_program(const Block& b, const Plan& p) {
     const char sign = p.g76.sign;
     const size_t quota = size_t(m_.program_memory_kb * 1024);
     if (p.g76.h < 0)
-        return fail(2, strf(tr("G76%c needs the program number H (G76%c H300)"), sign, sign)),
-               false;
+        return fail(2, strf(tr("G76%c needs the program number H (G76%c H300)"), sign, sign));
     if (b.words.back().addr != addr1('H'))
         return fail(
-                   3,
-                   strf(tr("G76%c: the program number H must be the last word of the block"), sign),
-                   b.words.back().col),
-               false;
+            3, strf(tr("G76%c: the program number H must be the last word of the block"), sign),
+            b.words.back().col);
     if (sign == '+') {
         if (mem_.find(p.g76.h))
             return fail(err::kProgramExists,
-                        strf(tr("G76+ H%d: program %%%d is already in memory"), p.g76.h, p.g76.h)),
-                   false;
+                        strf(tr("G76+ H%d: program %%%d is already in memory"), p.g76.h, p.g76.h));
         if (mem_.size() + 16 > std::max(quota, loaded_size_))
             return fail(36,
-                        strf(tr("G76+: the part-program memory is full (%zu KB)"), quota / 1024)),
-                   false;
+                        strf(tr("G76+: the part-program memory is full (%zu KB)"), quota / 1024));
         mem_.create(p.g76.h);
         return true;
     }
     const ProgramText* t = mem_.find(p.g76.h);
-    if (!t) return fail(25, strf(tr("G76- H%d: no program %%%d"), p.g76.h, p.g76.h)), false;
+    if (!t) return fail(25, strf(tr("G76- H%d: no program %%%d"), p.g76.h, p.g76.h));
     bool running = t == main_ || std::any_of(stack_.begin(), stack_.end(),
                                              [&](const Frame& f) { return f.prog == t; });
     if (running)
         return fail(err::kProgramInUse,
-                    strf(tr("G76- H%d: program %%%d is running"), p.g76.h, p.g76.h)),
-               false;
+                    strf(tr("G76- H%d: program %%%d is running"), p.g76.h, p.g76.h));
     mem_.remove(p.g76.h);
     return true;
 }
@@ -357,12 +336,11 @@ bool Interpreter::edit_line(const Block& b, const Plan& p) {
     const char sign = p.g76.sign;
     const ProgramText* t = stack_.back().prog;
     if (p.g76.h >= 0 && !(t = mem_.find(p.g76.h)))
-        return fail(25, strf(tr("G76%c H%d: no program %%%d"), sign, p.g76.h, p.g76.h)), false;
+        return fail(25, strf(tr("G76%c H%d: no program %%%d"), sign, p.g76.h, p.g76.h));
     if (mem_.find(t->number) != t)  // an IMD fragment is not a program of the memory
         return fail(25, strf(tr("G76%c without H edits the program that runs: in IMD, give the "
                                 "program H"),
-                             sign)),
-               false;
+                             sign));
     if (sign == '-') {
         std::string_view rest = b.g76_block;  // comments only
         for (size_t i = 0; i < rest.size(); ++i) {
@@ -370,8 +348,7 @@ bool Interpreter::edit_line(const Block& b, const Plan& p) {
                 size_t close = rest.find(')', i);
                 i = close == std::string_view::npos ? rest.size() : close;
             } else if (rest[i] != ' ' && rest[i] != '\t') {
-                return fail(3, tr("G76- takes nothing after N.. [+k]"), b.g76_block_col + int(i)),
-                       false;
+                return fail(3, tr("G76- takes nothing after N.. [+k]"), b.g76_block_col + int(i));
             }
         }
     }
@@ -392,15 +369,13 @@ bool Interpreter::edit_line(const Block& b, const Plan& p) {
         start = t->begin;
         --count;
     } else {
-        return fail(25, strf(tr("G76%c: no block N%ld in program %%%d"), sign, n, t->number)),
-               false;
+        return fail(25, strf(tr("G76%c: no block N%ld in program %%%d"), sign, n, t->number));
     }
     for (; count > 0 && start < t->end; --count) start = next_line(start);
     const bool before_first = count < 0;  // N0 virtual, no +k: insert at the start
     if (!before_first && start >= t->end)
-        return fail(25, strf(tr("G76%c: program %%%d has no line %d after N%ld"), sign, t->number,
-                             k, n)),
-               false;
+        return fail(
+            25, strf(tr("G76%c: program %%%d has no line %d after N%ld"), sign, t->number, k, n));
     Splice s;
     if (sign == '+') {
         std::string text;
@@ -408,13 +383,11 @@ bool Interpreter::edit_line(const Block& b, const Plan& p) {
         const size_t quota = size_t(m_.program_memory_kb * 1024);
         if (mem_.size() + text.size() > std::max(quota, loaded_size_))
             return fail(36,
-                        strf(tr("G76+: the part-program memory is full (%zu KB)"), quota / 1024)),
-                   false;
+                        strf(tr("G76+: the part-program memory is full (%zu KB)"), quota / 1024));
         s = mem_.splice(t, before_first ? start : next_line(start), 0, text);
     } else {
         if (before_first)
-            return fail(25, tr("G76- N0 points before the first line: give +k (the k-th line)")),
-                   false;
+            return fail(25, tr("G76- N0 points before the first line: give +k (the k-th line)"));
         s = mem_.splice(t, start, next_line(start) - start, {});
     }
     text_spliced(t, s);

@@ -38,7 +38,7 @@ bool Interpreter::pgp_wanted(const Plan& p) const {
 bool Interpreter::pgp_fail(const pgp::Error& e) {
     auto it = pgp_ctx_.find(e.tag);
     if (it != pgp_ctx_.end()) loc_ = it->second.loc;
-    return fail(e.code ? e.code : 113, e.detail), false;
+    return fail(e.code ? e.code : 113, e.detail);
 }
 
 // Runs resolved elements with the context of the block each comes from.
@@ -96,8 +96,8 @@ bool Interpreter::pgp_block(const Plan& p, const Axes& target) {
     const bool pending = pgp_.pending();
     // PGP is programmed in absolute; relative words after an incomplete block: 72.
     if (pending && (p.to.inc[size_t(a0)] || p.to.inc[size_t(a1)] || p.to.ijk_inc.any()))
-        return fail(72, tr("relative programming (G91) after an incomplete profile block")), false;
-    if (p.pgp.link == 'X') return fail(110, tr("ES and ET together in one block")), false;
+        return fail(72, tr("relative programming (G91) after an incomplete profile block"));
+    if (p.pgp.link == 'X') return fail(110, tr("ES and ET together in one block"));
     if (!pending) pgp_.start(pgp::V2(prog_[size_t(a0)], prog_[size_t(a1)]));
     pgp::Spec s;
     s.g = (modal_.motion == 2 || modal_.motion == 3) ? modal_.motion : 1;

@@ -126,9 +126,8 @@ struct Interpreter::Pocket45 {
 };
 
 bool Interpreter::pocket(const Plan& p) {
-    if (modal_.plane != 17)
-        return fail(885, tr("G45 pockets are machined in the XY plane (G17)")), false;
-    if (modal_.radcomp != 40) return fail(140, tr("G45 under radius compensation")), false;
+    if (modal_.plane != 17) return fail(885, tr("G45 pockets are machined in the XY plane (G17)"));
+    if (modal_.radcomp != 40) return fail(140, tr("G45 under radius compensation"));
     Pocket45 k{*this};
     if (!k.words(p) || !k.sizes() || !k.feeds() || !k.place(p)) return false;
 
@@ -173,9 +172,8 @@ bool Interpreter::Pocket45::words(const Plan& p) {
         if (a == addrE('I')) in.pocket_ei_ = v;
         if (a == addrE('J')) in.pocket_ej_ = v;
         if ((a == addr1('P') || a == addr1('Q') || a == addr1('I') || a == addr1('J')) && v < 0)
-            return in.fail(835, strf(tr("%s must be positive in G45"),
-                                     std::string(addr_name(a)).c_str())),
-                   false;
+            return in.fail(
+                835, strf(tr("%s must be positive in G45"), std::string(addr_name(a)).c_str()));
     }
     return true;
 }
@@ -185,51 +183,44 @@ bool Interpreter::Pocket45::sizes() {
     const Corrector& c = in.corr_[size_t(in.modal_.d)];
     R = c.r + c.dr;
     if (in.modal_.d == 0 || R <= 0)
-        return in.fail(898, tr("G45 needs a tool corrector with a radius (D0 active)")), false;
-    if (ey.has && !ex.has) return in.fail(889, tr("G45: EY without EX")), false;
+        return in.fail(898, tr("G45 needs a tool corrector with a radius (D0 active)"));
+    if (ey.has && !ex.has) return in.fail(889, tr("G45: EY without EX"));
     if (ex.has && ey.has) {
         shape = 3;
         if (eb.has && eb.v > 0 && eb.v < R)
-            return in.fail(886, tr("G45: the corner radius EB is smaller than the tool radius")),
-                   false;
+            return in.fail(886, tr("G45: the corner radius EB is smaller than the tool radius"));
         half_small = std::min(ex.v, ey.v) / 2;
         hx = ex.v / 2 - R, hy = ey.v / 2 - R, rc = eb.has ? std::max(eb.v - R, 0.0) : 0;
     } else if (ex.has && eb.has) {
         shape = 2;
-        if (ex.v < 2 * eb.v)
-            return in.fail(897, tr("G45: the oblong is shorter than its width")), false;
+        if (ex.v < 2 * eb.v) return in.fail(897, tr("G45: the oblong is shorter than its width"));
         half_small = eb.v;
         hx = ex.v / 2 - eb.v, hy = 0, rc = eb.v - R;
     } else if (eb.has) {
         shape = 1;
         if (eb.v <= R)
-            return in.fail(886, tr("G45: the pocket radius EB is not larger than the tool radius")),
-                   false;
+            return in.fail(886, tr("G45: the pocket radius EB is not larger than the tool radius"));
         half_small = eb.v;
         hx = hy = 0, rc = eb.v - R;
     } else {
-        return in.fail(889, tr("G45 needs EB, EX EY or EX EB")), false;
+        return in.fail(889, tr("G45 needs EB, EX EY or EX EB"));
     }
-    if (half_small <= R)
-        return in.fail(896, tr("G45: the pocket is not wider than the tool")), false;
+    if (half_small <= R) return in.fail(896, tr("G45: the pocket is not wider than the tool"));
     return true;
 }
 
 // Which operations P Q I J ask for, and their feeds.
 bool Interpreter::Pocket45::feeds() {
     if (Q.has && Q.v > 2 * R)
-        return in.fail(887, tr("G45: the step-over Q is larger than the tool diameter")), false;
+        return in.fail(887, tr("G45: the step-over Q is larger than the tool diameter"));
     rough = P.has && Q.has, floor = Q.has && I.has, wall = P.has && J.has;
     if (!rough && !floor && !wall)
-        return in.fail(889, tr("G45 needs P and Q, Q and I, or P and J")), false;
-    if (rough && in.pocket_ep_ <= 0)
-        return in.fail(892, tr("G45: no axial feed EP programmed")), false;
-    if (rough && in.pocket_eq_ <= 0)
-        return in.fail(893, tr("G45: no lateral feed EQ programmed")), false;
+        return in.fail(889, tr("G45 needs P and Q, Q and I, or P and J"));
+    if (rough && in.pocket_ep_ <= 0) return in.fail(892, tr("G45: no axial feed EP programmed"));
+    if (rough && in.pocket_eq_ <= 0) return in.fail(893, tr("G45: no lateral feed EQ programmed"));
     ei = in.pocket_ei_ > 0 ? in.pocket_ei_ : in.pocket_ep_,
     ej = in.pocket_ej_ > 0 ? in.pocket_ej_ : in.pocket_eq_;
-    if (ei <= 0 || ej <= 0)
-        return in.fail(892, tr("G45: no finishing feed (EI, EJ or EP, EQ)")), false;
+    if (ei <= 0 || ej <= 0) return in.fail(892, tr("G45: no finishing feed (EI, EJ or EP, EQ)"));
     return true;
 }
 
@@ -238,11 +229,11 @@ bool Interpreter::Pocket45::place(const Plan& p) {
     const Axes& prog = in.prog_;
     cx = p.to.axis[X] ? (p.to.inc[X] ? prog[X] + p.to.val[X] : p.to.val[X]) : prog[X];
     cy = p.to.axis[Y] ? (p.to.inc[Y] ? prog[Y] + p.to.val[Y] : p.to.val[Y]) : prog[Y];
-    if (!p.to.axis[Z]) return in.fail(882, tr("G45: the pocket bottom Z is not programmed")), false;
+    if (!p.to.axis[Z]) return in.fail(882, tr("G45: the pocket bottom Z is not programmed"));
     zb = p.to.inc[Z] ? prog[Z] + p.to.val[Z] : p.to.val[Z];
     top = er.has ? er.v : prog[Z];
     if (er.has && std::fabs(er.v - zb) < 1e-9)
-        return in.fail(891, tr("G45: ER is the pocket bottom")), false;
+        return in.fail(891, tr("G45: ER is the pocket bottom"));
     ccw = !(eg.has && std::lround(eg.v) == 2);
     d = half_small - R;
     return true;

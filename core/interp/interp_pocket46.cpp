@@ -94,31 +94,28 @@ bool Interpreter::pocket46(const Plan& p) {
     // A G46 block runs no modal function: a plane given there would be ignored.
     if (p.mode.plane >= 0 && p.mode.plane != modal_.plane)
         return fail(279, strf(tr("G%d in a G46 block: select the plane in a block before G46 NU0"),
-                              p.mode.plane)),
-               false;
+                              p.mode.plane));
     const Words w = words_of(p.cycle_words);
     if (!w.has[addrN('U')])
-        return fail(268, tr("G46 needs NU (NU0 header, NU1-NU6 contours, NU9, NU10/15/20 orders)")),
-               false;
+        return fail(268, tr("G46 needs NU (NU0 header, NU1-NU6 contours, NU9, NU10/15/20 orders)"));
     const double nuv = w.v[addrN('U')];
     const int nu = int(nuv);
     const bool known = nuv == nu && (nu <= 6 || nu == 9 || nu == 10 || nu == 15 || nu == 20);
     if (!known)
-        return fail(262, strf(tr("G46 NU%s: NU is 0-6, 9, 10, 15 or 20"), num(nuv).c_str())), false;
+        return fail(262, strf(tr("G46 NU%s: NU is 0-6, 9, 10, 15 or 20"), num(nuv).c_str()));
     if (p.tech.nm || p.tech.has_s || p.tech.has_t || p.tech.has_d)
-        return fail(268, tr("M, S, T or D in a G46 block")), false;
+        return fail(268, tr("M, S, T or D in a G46 block"));
     if (nu == 0) {
         // The same NU0 again: the run restarted inside its definition (a
         // block that did not parse stopped it).
         const bool again = p46_.at.prog == loc_.prog && p46_.at.line == loc_.line;
         if (p46_.defining && !again)
-            return fail(274, tr("G46 NU0 inside a definition (NU9 missing)")), false;
+            return fail(274, tr("G46 NU0 inside a definition (NU9 missing)"));
         return p46_header(p, nu);
     }
     if (nu >= 10) {
         if (p46_.defining)
-            return fail(270, tr("a machining order before the end of the definition (G46 NU9)")),
-                   false;
+            return fail(270, tr("a machining order before the end of the definition (G46 NU9)"));
         return p46_order(p, nu);
     }
     return p46_section(p, nu);
@@ -128,20 +125,18 @@ bool Interpreter::pocket46(const Plan& p) {
 // LY); NU9 closes the definition and checks it.
 bool Interpreter::p46_section(const Plan& p, int nu) {
     const Words w = words_of(p.cycle_words);
-    if (!p46_.defining) return fail(270, strf(tr("G46 NU%d without a G46 NU0 header"), nu)), false;
+    if (!p46_.defining) return fail(270, strf(tr("G46 NU%d without a G46 NU0 header"), nu));
     // Contour sections accept LX LY (NU1, NU2) and nothing else.
     for (int i = 0; i < p.cycle_words.n; ++i) {
         Addr a = p.cycle_words.word[i].a;
         bool lxy = a == addrL('X') || a == addrL('Y');
         if (a != addrN('U') && !(lxy && (nu == 1 || nu == 2)))
             return fail(267, strf(tr("%s is not a word of G46 NU%d"),
-                                  std::string(addr_name(a)).c_str(), nu)),
-                   false;
+                                  std::string(addr_name(a)).c_str(), nu));
     }
     if (p.to.axis.any() || p.to.ijk.any() || p.tech.has_f)
-        return fail(267, strf(tr("G46 NU%d takes no coordinates"), nu)), false;
-    if (w.has[addrL('X')] != w.has[addrL('Y')])
-        return fail(277, tr("LX and LY go together")), false;
+        return fail(267, strf(tr("G46 NU%d takes no coordinates"), nu));
+    if (w.has[addrL('X')] != w.has[addrL('Y')]) return fail(277, tr("LX and LY go together"));
     if (!p46_close_section()) return false;
     if (nu == 9) {
         p46_.defining = false;
@@ -156,8 +151,7 @@ bool Interpreter::p46_section(const Plan& p, int nu) {
     s.n = loc_.n;
     if (w.has[addrL('X')]) s.has_l = true, s.l = p46::V2(w.v[addrL('X')], w.v[addrL('Y')]);
     p46_.def.sections.push_back(s);
-    if (p46_.def.sections.size() > 255)
-        return fail(285, tr("too many contours in one definition")), false;
+    if (p46_.def.sections.size() > 255) return fail(285, tr("too many contours in one definition"));
     p46_.first = true;
     p46_.blocks = 0;
     return true;
@@ -173,22 +167,19 @@ bool Interpreter::p46_header(const Plan& p, int) {
                                   addrL('Y'), addrE('X'), addrE('Y')};
         if (std::find(std::begin(ok), std::end(ok), a) == std::end(ok))
             return fail(267,
-                        strf(tr("%s is not a word of G46 NU0"), std::string(addr_name(a)).c_str())),
-                   false;
+                        strf(tr("%s is not a word of G46 NU0"), std::string(addr_name(a)).c_str()));
         w.has[a] = true, w.v[a] = p.cycle_words.word[i].v;
     }
     if (p.to.axis.any() || p.to.ijk.any() || p.tech.has_f)
-        return fail(267, tr("G46 NU0 takes no coordinates")), false;
+        return fail(267, tr("G46 NU0 takes no coordinates"));
     if (!w.has[addrN('P')] || !w.has[addrE('D')] || !w.has[addr1('Q')])
-        return fail(268, tr("G46 NU0 needs NP, ED and Q")), false;
-    if (w.has[addrL('X')] != w.has[addrL('Y')])
-        return fail(277, tr("LX and LY go together")), false;
-    if (w.has[addrE('X')] != w.has[addrE('Y')])
-        return fail(277, tr("EX and EY go together")), false;
+        return fail(268, tr("G46 NU0 needs NP, ED and Q"));
+    if (w.has[addrL('X')] != w.has[addrL('Y')]) return fail(277, tr("LX and LY go together"));
+    if (w.has[addrE('X')] != w.has[addrE('Y')]) return fail(277, tr("EX and EY go together"));
     const Frames& f = frames_;
     bool g59 = std::fabs(f.ed) > 1e-12;
     for (int a = 0; a < kAxes; ++a) g59 = g59 || std::fabs(f.g59[size_t(a)]) > 1e-12;
-    if (g59) return fail(275, tr("G46 NU0 with a G59 offset active")), false;
+    if (g59) return fail(275, tr("G46 NU0 with a G59 offset active"));
     p46::Def d;
     d.np = int(w.v[addrN('P')]);
     d.ed = w.v[addrE('D')];
@@ -199,8 +190,7 @@ bool Interpreter::p46_header(const Plan& p, int) {
     if (d.np <= 0 || d.np != w.v[addrN('P')] || d.ed <= 0 || d.q <= 0 || d.j < 0 ||
         (d.rot != 3 && d.rot != 4) || w.v[addr1('R')] != std::floor(w.v[addr1('R')]))
         return fail(282, tr("G46 NU0: NP a positive integer, ED and Q positive, J not negative, "
-                            "R03 or R04")),
-               false;
+                            "R03 or R04"));
     if (w.has[addrL('X')]) d.has_l = true, d.l = p46::V2(w.v[addrL('X')], w.v[addrL('Y')]);
     if (w.has[addrE('X')]) d.has_e = true, d.e = p46::V2(w.v[addrE('X')], w.v[addrE('Y')]);
     d.plane = modal_.plane;
@@ -232,8 +222,7 @@ bool Interpreter::p46_contour(const Plan& p) {
     if (motion == 0)
         return fail(p46_.blocks == 1 ? 292 : 284,
                     p46_.blocks == 1 ? tr("two positionings at the start of a contour")
-                                     : tr("G0 inside a contour")),
-               false;
+                                     : tr("G0 inside a contour"));
     return p46_contour_elem(p, ax, motion, t);
 }
 
@@ -241,35 +230,31 @@ bool Interpreter::p46_contour(const Plan& p) {
 // centres, R, EA, EB and the PGP links.
 bool Interpreter::p46_contour_words(const Plan& p, const P46Axes& ax, bool tech_words) {
     const size_t a0 = size_t(ax.a0), a1 = size_t(ax.a1), an = size_t(ax.an);
-    if (p46_.blocks < 0) return fail(269, tr("a contour block before G46 NU1-NU6")), false;
+    if (p46_.blocks < 0) return fail(269, tr("a contour block before G46 NU1-NU6"));
     for (size_t g = 0; g < p.g.size(); ++g)
-        if (p.g[g] && g > 3) return fail(279, strf(tr("G%zu in a pocket contour block"), g)), false;
+        if (p.g[g] && g > 3) return fail(279, strf(tr("G%zu in a pocket contour block"), g));
     if (tech_words)
         return fail(268, strf(tr("only G0-G3, %s %s, %s %s, R and EB in a pocket contour block"),
                               axis_name(ax.a0).c_str(), axis_name(ax.a1).c_str(),
-                              centre_name(ax.a0).c_str(), centre_name(ax.a1).c_str())),
-               false;
+                              centre_name(ax.a0).c_str(), centre_name(ax.a1).c_str()));
     for (int a = 0; a < kAxes; ++a)
         if (p.to.axis[size_t(a)] && size_t(a) != a0 && size_t(a) != a1)
-            return fail(264, strf(tr("%s is outside the contouring plane"), axis_name(a).c_str())),
-                   false;
+            return fail(264, strf(tr("%s is outside the contouring plane"), axis_name(a).c_str()));
     // The centre word of the normal axis (K in G17) is a coordinate outside the plane.
     if (p.to.ijk[an])
         return fail(264,
-                    strf(tr("%s is outside the contouring plane"), centre_name(ax.an).c_str())),
-               false;
+                    strf(tr("%s is outside the contouring plane"), centre_name(ax.an).c_str()));
     if (!p.to.axis[a0] && !p.to.axis[a1] && !p.pgp.has_ea)
-        return fail(264, tr("no coordinate in the contouring plane")), false;
+        return fail(264, tr("no coordinate in the contouring plane"));
     return true;
 }
 
 // The first contour block: a G0 or G1 to the start point, both coordinates given.
 bool Interpreter::p46_contour_start(const Plan& p, const P46Axes& ax, int motion, p46::V2 t) {
     if (motion != 0 && motion != 1)
-        return fail(265, tr("a contour starts with a G0 or G1 positioning")), false;
+        return fail(265, tr("a contour starts with a G0 or G1 positioning"));
     if (!p.to.axis[size_t(ax.a0)] || !p.to.axis[size_t(ax.a1)] || p.pgp.has_eb || p.pgp.any)
-        return fail(280, tr("the first contour block gives both coordinates of the start point")),
-               false;
+        return fail(280, tr("the first contour block gives both coordinates of the start point"));
     p46_.pos = t;
     p46_.solver = pgp::Solver();
     p46_.solver.start(t);
@@ -294,17 +279,16 @@ bool Interpreter::p46_contour_elem(const Plan& p, const P46Axes& ax, int motion,
     s.link = p.pgp.link, s.disc = p.pgp.disc;
     s.has_eb = p.pgp.has_eb, s.eb = p.pgp.eb, s.eb_unsigned = p.pgp.eb_unsigned;
     s.tag = loc_.line;
-    if (p.pgp.link == 'X') return fail(110, tr("ES and ET together in one block")), false;
+    if (p.pgp.link == 'X') return fail(110, tr("ES and ET together in one block"));
     if (p.pgp.has_eb && p.pgp.eb_unsigned)
         warn(err::wUnsignedEB, tr("EB without a sign is taken as a fillet (EB+): write EB+ or EB- "
                                   "(pupitre-iso(5), PGP)"));
     if ((motion == 2 || motion == 3) && !s.has_i && !s.has_j && !s.has_r && !p.pgp.any)
         return fail(269, strf(tr("a circle without its centre (%s %s) or radius (R)"),
-                              centre_name(ax.a0).c_str(), centre_name(ax.a1).c_str())),
-               false;
+                              centre_name(ax.a0).c_str(), centre_name(ax.a1).c_str()));
     std::vector<pgp::Elem> out;
     pgp::Error e;
-    if (!p46_.solver.push(s, out, e)) return fail(e.code, e.detail), false;
+    if (!p46_.solver.push(s, out, e)) return fail(e.code, e.detail);
     for (const pgp::Elem& el : out) p46_.def.sections.back().elems.push_back(el.geo);
     p46_.pos = p46_.solver.pending() ? t : p46_.solver.position();
     return true;
@@ -314,10 +298,10 @@ bool Interpreter::p46_close_section() {
     if (p46_.blocks < 0 || p46_.def.sections.empty()) return true;
     std::vector<pgp::Elem> out;
     pgp::Error e;
-    if (!p46_.first && !p46_.solver.finish(out, e)) return fail(e.code, e.detail), false;
+    if (!p46_.first && !p46_.solver.finish(out, e)) return fail(e.code, e.detail);
     for (const pgp::Elem& el : out) p46_.def.sections.back().elems.push_back(el.geo);
     if (p46_.def.sections.back().elems.empty())
-        return fail(284, tr("a contour section with no element")), false;
+        return fail(284, tr("a contour section with no element"));
     return true;
 }
 
@@ -326,10 +310,9 @@ bool Interpreter::p46_fail(const p46::Error& e, const p46::Def& d) {
         const p46::Section& s = d.sections[size_t(e.section)];
         // TRANSLATORS: %s is the reason of a pocket error; the contour it is about follows.
         return fail(e.code, s.n >= 0 ? strf(tr("%s (contour N%ld)"), e.why.c_str(), s.n)
-                                     : strf(tr("%s (contour at line %d)"), e.why.c_str(), s.line)),
-               false;
+                                     : strf(tr("%s (contour at line %d)"), e.why.c_str(), s.line));
     }
-    return fail(e.code, e.why), false;
+    return fail(e.code, e.why);
 }
 
 // Runs at one depth: a plunge at each run not linked to the previous one.
@@ -414,32 +397,29 @@ struct Interpreter::P46Cut {
 // before it plans anything: the pocket was defined for this plane and tool.
 bool Interpreter::p46_order_allowed(const Plan& p, const p46::Def& d) {
     if (modal_.plane != d.plane)
-        return fail(273, tr("the plane changed since the pocket was defined")), false;
+        return fail(273, tr("the plane changed since the pocket was defined"));
     const P46Axes ax = p46_axes(d.plane);
     const size_t an = size_t(ax.an);
     const std::string bottom = axis_name(ax.an);
     if (modal_.tool_axis != ax.an || modal_.tool_axis_neg)
         return fail(271, strf(tr("the tool axis (G16) is not perpendicular to the contouring plane "
                                  "(G16 %c+ in G%d)"),
-                              "PQR"[ax.an], d.plane)),
-               false;
-    if (modal_.radcomp != 40) return fail(140, tr("G46 under radius compensation")), false;
+                              "PQR"[ax.an], d.plane));
+    if (modal_.radcomp != 40) return fail(140, tr("G46 under radius compensation"));
     if (modal_.spindle_dir != d.rot)
         return fail(278, modal_.spindle_dir == 3 || modal_.spindle_dir == 4
                              ? strf(tr("the spindle turns M0%d, the pocket asks for R0%d"),
                                     modal_.spindle_dir, d.rot)
-                             : strf(tr("the spindle turns not, the pocket asks for R0%d"), d.rot)),
-               false;
+                             : strf(tr("the spindle turns not, the pocket asks for R0%d"), d.rot));
     // A plane coordinate first: in G18 the G17 habit of a Z bottom is refused
     // as a plane coordinate, not taken as a missing bottom.
     for (int a = 0; a < kAxes; ++a)
         if (p.to.axis[size_t(a)] && size_t(a) != an)
             return fail(267, strf(tr("a G46 order takes no plane coordinate (%s): its bottom is %s "
                                      "in G%d"),
-                                  axis_name(a).c_str(), bottom.c_str(), d.plane)),
-                   false;
+                                  axis_name(a).c_str(), bottom.c_str(), d.plane));
     if (!p.to.axis[an])
-        return fail(268, strf(tr("a G46 order needs the bottom %s"), bottom.c_str())), false;
+        return fail(268, strf(tr("a G46 order needs the bottom %s"), bottom.c_str()));
     return true;
 }
 
@@ -449,7 +429,7 @@ bool Interpreter::p46_drill(const Plan& p, const p46::Def& d) {
     const P46Axes ax = p46_axes(d.plane);
     const size_t a0 = size_t(ax.a0), a1 = size_t(ax.a1), an = size_t(ax.an);
     int code = p.g[81] ? 81 : p.g[83] ? 83 : p.g[87] ? 87 : 0;
-    if (!code) return fail(268, tr("G46 NU10 needs G81, G83 or G87")), false;
+    if (!code) return fail(268, tr("G46 NU10 needs G81, G83 or G87"));
     std::vector<p46::Run> runs;
     std::vector<double> ys;
     p46::Error e;
@@ -484,12 +464,11 @@ bool Interpreter::p46_cutter(const Plan& p, int nu, const p46::Def& d, double& R
     const Corrector& c = corr_[size_t(modal_.d)];
     R = c.r + c.dr;
     if (modal_.d == 0 || R <= 0)
-        return fail(272, tr("the pocket needs a cutter with a radius (D0 or R0 active)")), false;
+        return fail(272, tr("the pocket needs a cutter with a radius (D0 or R0 active)"));
     if (nu == 15 && std::fabs(2 * R - d.ed) > 1e-3)
         return fail(272,
                     strf(tr("the cutter (diameter %s) is not the roughing cutter ED of the pocket"),
-                         num(2 * R).c_str())),
-               false;
+                         num(2 * R).c_str()));
     static const Addr ok15[] = {addrN('U'), addrN('P'), addr1('P'), addrE('R'),
                                 addrE('H'), addrE('P'), addrE('Q')};
     static const Addr ok20[] = {addrN('U'), addrN('P'), addr1('P'), addrE('R'),
@@ -500,11 +479,10 @@ bool Interpreter::p46_cutter(const Plan& p, int nu, const p46::Def& d, double& R
                            : std::find(std::begin(ok20), std::end(ok20), a) != std::end(ok20);
         if (!ok)
             return fail(267, strf(tr("%s is not a word of G46 NU%d"),
-                                  std::string(addr_name(a)).c_str(), nu)),
-                   false;
+                                  std::string(addr_name(a)).c_str(), nu));
     }
     if (p.tech.has_f || p.g.count() > 1)
-        return fail(267, strf(tr("G46 NU%d takes no F and no other G"), nu)), false;
+        return fail(267, strf(tr("G46 NU%d takes no F and no other G"), nu));
     return true;
 }
 
@@ -554,10 +532,10 @@ bool Interpreter::p46_order(const Plan& p, int nu) {
     for (int i = 0; i < p.cycle_words.n; ++i)
         w.has[p.cycle_words.word[i].a] = true,
         w.v[p.cycle_words.word[i].a] = p.cycle_words.word[i].v;
-    if (!w.has[addrN('P')]) return fail(268, tr("a G46 order needs NP")), false;
+    if (!w.has[addrN('P')]) return fail(268, tr("a G46 order needs NP"));
     auto it = p46_.defs.find(int(w.v[addrN('P')]));
     if (it == p46_.defs.end())
-        return fail(270, strf(tr("pocket NP%d is not defined"), int(w.v[addrN('P')]))), false;
+        return fail(270, strf(tr("pocket NP%d is not defined"), int(w.v[addrN('P')])));
     const p46::Def& d = it->second;
     if (!p46_order_allowed(p, d)) return false;
     const size_t an = size_t(p46_axes(d.plane).an);
@@ -568,26 +546,23 @@ bool Interpreter::p46_order(const Plan& p, int nu) {
     first_move_ = false;
     if (nu == 10) return p46_drill(p, d);
     if (!p46_cutter(p, nu, d, c.R)) return false;
-    if (!w.has[addr1('P')])
-        return fail(268, strf(tr("G46 NU%d needs the axial step P"), nu)), false;
+    if (!w.has[addr1('P')]) return fail(268, strf(tr("G46 NU%d needs the axial step P"), nu));
     const Addr fa = nu == 15 ? addrE('P') : addrE('I'), fl = nu == 15 ? addrE('Q') : addrE('J');
     if (!w.has[fa] || !w.has[fl])
-        return fail(268,
-                    strf(nu == 15 ? tr("G46 NU%d needs EP and EQ") : tr("G46 NU%d needs EI and EJ"),
-                         nu)),
-               false;
+        return fail(
+            268,
+            strf(nu == 15 ? tr("G46 NU%d needs EP and EQ") : tr("G46 NU%d needs EI and EJ"), nu));
     c.P = w.v[addr1('P')], c.jf = w.has[addr1('J')] ? w.v[addr1('J')] : 0;
     c.f_ax = w.v[fa], c.f_lat = w.v[fl];
     if (c.P <= 0 || c.f_ax <= 0 || c.f_lat <= 0 || c.jf < 0)
-        return fail(282, tr("P, the feeds and J of a G46 order are positive")), false;
+        return fail(282, tr("P, the feeds and J of a G46 order are positive"));
     c.clear = w.has[addrE('R')] ? w.v[addrE('R')] : prog_[an];
     c.top = w.has[addrE('H')] ? w.v[addrE('H')] : c.clear;
     if (c.top - c.zb < 1e-9)
         return fail(276,
-                    strf(tr("the pocket bottom %s is not below the attack plane"), bottom.c_str())),
-               false;
+                    strf(tr("the pocket bottom %s is not below the attack plane"), bottom.c_str()));
     if (c.clear < c.top - 1e-9)
-        return fail(282, tr("the clearance plane ER is below the attack plane EH")), false;
+        return fail(282, tr("the clearance plane ER is below the attack plane EH"));
     return p46_cut(d, nu, c);
 }
 

@@ -7,18 +7,17 @@
 namespace pupitre {
 
 bool Interpreter::spline_define(const Plan& p) {
-    if (modal_.radcomp != 40) return fail(140, tr("G48 must be programmed in G40")), false;
-    if (p.spline.nc == 0) return fail(600, tr("G48: the curve number NC must not be 0")), false;
+    if (modal_.radcomp != 40) return fail(140, tr("G48 must be programmed in G40"));
+    if (p.spline.nc == 0) return fail(600, tr("G48: the curve number NC must not be 0"));
     if (p.spline.nc < 0 || p.spline.nn < 2)
-        return fail(601, tr("G48 needs NC and the first and last blocks N.. N..")), false;
+        return fail(601, tr("G48 needs NC and the first and last blocks N.. N.."));
     const ProgramText* prog = stack_.back().prog;
     if (p.spline.h >= 0 && !(prog = mem_.find(p.spline.h)))
-        return fail(25, strf(tr("G48 H%d: program not in memory"), p.spline.h)), false;
+        return fail(25, strf(tr("G48 H%d: program not in memory"), p.spline.h));
     const Label* a = prog->find_label(p.spline.n[0]);
     const Label* b = prog->find_label(p.spline.n[1]);
     if (!a || !b)
-        return fail(25, strf(tr("G48: block N%ld not found"), !a ? p.spline.n[0] : p.spline.n[1])),
-               false;
+        return fail(25, strf(tr("G48: block N%ld not found"), !a ? p.spline.n[0] : p.spline.n[1]));
     if (b->line < a->line) std::swap(a, b);
     // Decode each definition block like a move, without moving.
     std::string_view text = *prog->text;
@@ -31,7 +30,7 @@ bool Interpreter::spline_define(const Plan& p) {
         Diag d;
         loc_ = Loc{prog->number, line, line_label(text.substr(pos, eol - pos))};
         if (!parse_block(text.substr(pos, eol - pos), blk, d))
-            return fail(d.code, d.detail, d.column), false;
+            return fail(d.code, d.detail, d.column);
         Plan q;
         if (!decode(blk, q)) return false;
         if (line == a->line || line == b->line || q.to.axis.any())
@@ -43,7 +42,7 @@ bool Interpreter::spline_define(const Plan& p) {
     const auto& first = blocks.front();
     for (int ax = 0; ax < kAxes; ++ax)
         if (first.first[size_t(ax)]) c.axes.push_back(ax);
-    if (c.axes.empty()) return fail(602, tr("G48: the first block names no axis")), false;
+    if (c.axes.empty()) return fail(602, tr("G48: the first block names no axis"));
     for (int ax : c.axes) c.t0.push_back(first.second[size_t(ax)]);
     std::vector<double> prev(c.axes.size(), 0);
     for (size_t i = 1; i + 1 < blocks.size(); ++i) {
@@ -60,7 +59,7 @@ bool Interpreter::spline_define(const Plan& p) {
     if (blocks.size() > 1 && last.first.any())
         for (int ax : c.axes) c.t1.push_back(last.second[size_t(ax)]);
     std::string why;
-    if (int rc = spline::build(c, why)) return fail(rc, "G48: " + why), false;
+    if (int rc = spline::build(c, why)) return fail(rc, "G48: " + why);
     splines_[p.spline.nc] = std::move(c);
     return true;
 }
@@ -68,9 +67,9 @@ bool Interpreter::spline_define(const Plan& p) {
 bool Interpreter::spline_run(const Plan& p) {
     auto it = splines_.find(p.spline.nc);
     if (it == splines_.end())
-        return fail(605, strf(tr("G06: curve NC%d is not defined"), p.spline.nc)), false;
+        return fail(605, strf(tr("G06: curve NC%d is not defined"), p.spline.nc));
     if (p.tech.has_f || p.tech.has_s || p.tech.has_t)
-        return fail(3, tr("no F, S or T in a G06 block (000:2055)")), false;
+        return fail(3, tr("no F, S or T in a G06 block (000:2055)"));
     const spline::Curve& c = it->second;
     for (const auto& pt : spline::sample(c, 0.002)) {
         Axes target = prog_;

@@ -69,8 +69,7 @@ struct Interpreter::ProfileRead {
 bool Interpreter::profile_l_words(const Block& blk) {
     for (const Assign& as : blk.assigns)
         if (as.target.kind == Operand::LVar && as.target.index >= 100)
-            return fail(96, strf(tr("writing L%d in a roughing-cycle profile"), as.target.index)),
-                   false;
+            return fail(96, strf(tr("writing L%d in a roughing-cycle profile"), as.target.index));
     if (int high = high_l_read(blk); high >= 0) {
         // The handbook's words, quoted as written (not translated).
         const char* seed =
@@ -79,8 +78,7 @@ bool Interpreter::profile_l_words(const Block& blk) {
         if (m_.strict)
             return fail(96, strf(tr("L%d read in a roughing-cycle profile (seed 000: L100-L199 and "
                                     "L900-L959 \"%s\")"),
-                                 high, seed)),
-                   false;
+                                 high, seed));
         // TRANSLATORS: the second %s is a quotation of the French handbook; keep it as it is.
         warn(err::wProfileL,
              strf(tr("L%d read in a roughing-cycle profile (seed 000: L100-L199 and L900-L959 "
@@ -99,7 +97,7 @@ bool Interpreter::profile_start(Plan& q, ProfileRead& r) {
         if (q.to.axis[size_t(ax)]) continue;
         double v;
         if (!coordinate_above(r.prog, r.first_line, ax, v))
-            return fail(871, tr("the first block of the profile needs X and Z")), false;
+            return fail(871, tr("the first block of the profile needs X and Z"));
         q.to.axis.set(size_t(ax));
         q.to.inc.reset(size_t(ax));
         q.to.val[size_t(ax)] = v;
@@ -149,11 +147,11 @@ bool Interpreter::profile_block(Plan& q, int line, ProfileRead& r) {
     pgp::Error e;
     bool motion = q.to.axis[X] || q.to.axis[Z] || q.pgp.any || q.to.ijk.any() || q.to.has_r;
     if (!motion) {
-        if (!r.solver.idle(e)) return fail(e.code, e.detail), false;
+        if (!r.solver.idle(e)) return fail(e.code, e.detail);
         return true;
     }
     if (!r.solver.push(profile_spec(q, r.solver.position(), line), r.elems, e))
-        return fail(e.code, e.detail), false;
+        return fail(e.code, e.detail);
     ++r.count;
     return true;
 }
@@ -178,8 +176,7 @@ bool Interpreter::turning_profile(long na, long nb, turning::Profile& out, comp:
     const Label* a = prog->find_label(na);
     const Label* b = prog->find_label(nb);
     if (!a || !b)
-        return fail(871, strf(tr("the profile block N%ld is not in the program"), !a ? na : nb)),
-               false;
+        return fail(871, strf(tr("the profile block N%ld is not in the program"), !a ? na : nb));
     bool reversed = b->line < a->line;
     profile_feed_ = 0;
     const Label* lo = reversed ? b : a;
@@ -199,19 +196,19 @@ bool Interpreter::turning_profile(long na, long nb, turning::Profile& out, comp:
         pos_off = eol + 1;
         Diag d;
         loc_ = Loc{prog->number, line, line_label(l)};
-        if (!parse_block(l, blk, d)) return fail(d.code, d.detail, d.column), false;
+        if (!parse_block(l, blk, d)) return fail(d.code, d.detail, d.column);
         if (blk.empty()) continue;
         if (!profile_l_words(blk)) return false;
         Plan q;
         if (!decode(blk, q) || !profile_block(q, line, r)) return false;
     }
     pgp::Error e;
-    if (!r.solver.finish(r.elems, e)) return fail(e.code, e.detail), false;
+    if (!r.solver.finish(r.elems, e)) return fail(e.code, e.detail);
     loc_ = saved;
     modal_ = saved_modal;
     if (!r.started || r.elems.empty())
-        return fail(871, strf(tr("the profile N%ld..N%ld has no element"), na, nb)), false;
-    if (r.count > 50) return fail(871, tr("a profile has at most 50 blocks")), false;
+        return fail(871, strf(tr("the profile N%ld..N%ld has no element"), na, nb));
+    if (r.count > 50) return fail(871, tr("a profile has at most 50 blocks"));
     first = r.start;
     profile_as_called(r.elems, reversed, out, first);
     return true;
@@ -306,16 +303,16 @@ void block_end(Args& a, const P& p) {
 // G64 only records its arguments: its rough stock is in the blocks that follow,
 // up to the G80 that runs it (turning_g64_run).
 bool Interpreter::turning_g64(const Plan& p) {
-    if (p.spline.nn < 2) return fail(871, tr("G64 needs the profile blocks N.. N..")), false;
+    if (p.spline.nn < 2) return fail(871, tr("G64 needs the profile blocks N.. N.."));
     g64_ = turning::G64Args{};
     g64_.i = cyc(p, addr1('I'), 0);
     g64_.k = cyc(p, addr1('K'), 0);
     g64_.p = cyc(p, addr1('P'), 0, &g64_.has_p);
     g64_.r = cyc(p, addr1('R'), 0, &g64_.has_r);
     if (!g64_.has_p && !g64_.has_r)
-        return fail(873, tr("G64 needs P (passes along Z) or R (passes along X)")), false;
-    if (g64_.has_p && g64_.has_r) return fail(889, tr("G64 takes P or R, not both")), false;
-    if (g64_.p < 0 || g64_.r < 0) return fail(835, tr("G64: P and R are positive")), false;
+        return fail(873, tr("G64 needs P (passes along Z) or R (passes along X)"));
+    if (g64_.has_p && g64_.has_r) return fail(889, tr("G64 takes P or R, not both"));
+    if (g64_.p < 0 || g64_.r < 0) return fail(835, tr("G64: P and R are positive"));
     g64_na_ = p.spline.n[0];
     g64_nb_ = p.spline.n[1];
     g64_tool_ = comp::V2(prog_[Z], prog_[X]);
@@ -372,7 +369,7 @@ bool Interpreter::turning_emit_ef(const Plan& p, const std::vector<turning::Move
 // come before those of the arguments.
 bool Interpreter::turning_g65_g63(const Plan& p) {
     if (p.spline.nn < 2)
-        return fail(871, strf(tr("G%d needs the profile N.. N.."), p.g[65] ? 65 : 63)), false;
+        return fail(871, strf(tr("G%d needs the profile N.. N.."), p.g[65] ? 65 : 63));
     const comp::V2 tool(prog_[Z], prog_[X]);
     turning::Profile prof;
     comp::V2 first;
@@ -382,7 +379,7 @@ bool Interpreter::turning_g65_g63(const Plan& p) {
     int rc = 0;
     if (p.g[65]) {
         turning::G65Args a = g65_args(p);
-        if (!a.has_ea) return fail(2, tr("G65 needs the infeed angle EA")), false;
+        if (!a.has_ea) return fail(2, tr("G65 needs the infeed angle EA"));
         rc = turning::g65(prof, tool, a, moves, why);
         if (rc == 0 && opt_.on_g65) opt_.on_g65(prof, tool, a, moves);
         if (rc == 0 && a.allowance_inside) warn_allowance_inside(65, a.i, a.k);
@@ -391,7 +388,7 @@ bool Interpreter::turning_g65_g63(const Plan& p) {
         rc = turning::g63(prof, tool, a, moves, why);
         if (rc == 0 && opt_.on_g63) opt_.on_g63(prof, tool, a, moves);
     }
-    if (rc) return fail(rc, why), false;
+    if (rc) return fail(rc, why);
     if (!turning_emit_ef(p, moves)) return false;
     modal_.motion = 0;  // the state is G00 after the cycle (000:2462)
     return true;
@@ -426,7 +423,7 @@ bool Interpreter::turning_g66(const Plan& p) {
     std::vector<turning::Move> moves;
     std::string why;
     const comp::V2 tool(prog_[Z], prog_[X]);
-    if (int rc = turning::g66(tool, a, moves, why)) return fail(rc, why), false;
+    if (int rc = turning::g66(tool, a, moves, why)) return fail(rc, why);
     if (opt_.on_g66) opt_.on_g66(tool, a, moves);
     if (!turning_emit_ef(p, moves)) return false;
     // The second corrector is active afterwards; the tool has not moved
@@ -458,8 +455,7 @@ bool Interpreter::turning_g33(const Plan& p) {
     a.radius_comp = modal_.radcomp != 40;
     std::vector<turning::Move> moves;
     std::string why;
-    if (int rc = turning::g33(comp::V2(prog_[Z], prog_[X]), a, moves, why))
-        return fail(rc, why), false;
+    if (int rc = turning::g33(comp::V2(prog_[Z], prog_[X]), a, moves, why)) return fail(rc, why);
     return turning_emit(moves, a.k, 0);
 }
 
@@ -480,8 +476,7 @@ bool Interpreter::turning_g38(const Plan& p) {
     a.radius_comp = modal_.radcomp != 40;
     std::vector<turning::Move> moves;
     std::string why;
-    if (int rc = turning::g38(comp::V2(prog_[Z], prog_[X]), a, moves, why))
-        return fail(rc, why), false;
+    if (int rc = turning::g38(comp::V2(prog_[Z], prog_[X]), a, moves, why)) return fail(rc, why);
     g38_lead_ = k;
     return turning_emit(moves, k, 0);
 }
@@ -489,8 +484,7 @@ bool Interpreter::turning_g38(const Plan& p) {
 // A block that programs G63, G64, G65, G66, G33 or G38 (G64: the stock follows).
 // The first function present in this order is the block's cycle.
 bool Interpreter::turning_block(const Plan& p) {
-    if (modal_.radcomp != 40)
-        return fail(140, tr("a turning cycle under radius compensation")), false;
+    if (modal_.radcomp != 40) return fail(140, tr("a turning cycle under radius compensation"));
     static constexpr struct {
         int g;
         bool (Interpreter::*run)(const Plan&);
@@ -507,11 +501,11 @@ bool Interpreter::turning_block(const Plan& p) {
 // While a G64 waits for its G80: the blocks are the rough stock, not moves.
 bool Interpreter::turning_stock(const Plan& p) {
     if (p.g[2] || p.g[3] || p.pgp.any || p.mode.motion == 2 || p.mode.motion == 3)
-        return fail(889, tr("the rough stock of G64 is made of points, no circle or PGP")), false;
+        return fail(889, tr("the rough stock of G64 is made of points, no circle or PGP"));
     comp::V2 last = g64_stock_.empty() ? comp::V2(NAN, NAN) : g64_stock_.back();
     if (!p.to.axis[X] && !p.to.axis[Z]) return true;  // a comment or a label: no point
     if (g64_stock_.empty() && (!p.to.axis[X] || !p.to.axis[Z]))
-        return fail(872, tr("the first point of the rough stock needs X and Z")), false;
+        return fail(872, tr("the first point of the rough stock needs X and Z"));
     comp::V2 pt(p.to.axis[Z] ? p.to.val[Z] : last.x(), p.to.axis[X] ? p.to.val[X] : last.y());
     g64_stock_.push_back(pt);
     return true;
@@ -520,7 +514,7 @@ bool Interpreter::turning_stock(const Plan& p) {
 // The G80 that ends a G64: the roughing runs before the rest of the block.
 bool Interpreter::turning_g64_run() {
     g64_pending_ = false;
-    if (g64_stock_.empty()) return fail(872, tr("G64 without a rough stock before G80")), false;
+    if (g64_stock_.empty()) return fail(872, tr("G64 without a rough stock before G80"));
     std::vector<std::array<double, 2>> zr;
     for (const auto& q : g64_stock_) zr.push_back({q.x(), q.y()});
     out_.stock(g64_loc_, zr);
@@ -531,8 +525,7 @@ bool Interpreter::turning_g64_run() {
     if (!turning_profile(g64_na_, g64_nb_, prof, first)) return false;
     std::vector<turning::Move> moves;
     std::string why;
-    if (int rc = turning::g64(prof, g64_stock_, g64_tool_, g64_, moves, why))
-        return fail(rc, why), false;
+    if (int rc = turning::g64(prof, g64_stock_, g64_tool_, g64_, moves, why)) return fail(rc, why);
     if (opt_.on_g64) opt_.on_g64(prof, g64_stock_, g64_tool_, g64_, moves);
     if (g64_.allowance_inside) warn_allowance_inside(64, g64_.i, g64_.k);
     bool ok = turning_emit(moves, 0, 0);

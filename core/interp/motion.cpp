@@ -150,7 +150,7 @@ bool Interpreter::do_motion(const Plan& p) {
     if (p.to.axis.none()) {
         bool arcwords = p.to.ijk.any() || p.to.has_r;
         if (p.g[23] || ((p.mode.motion == 2 || p.mode.motion == 3) && arcwords))
-            return fail(101, tr("circle without its end point")), false;
+            return fail(101, tr("circle without its end point"));
         return true;
     }
     const bool g52 = p.g[52];
@@ -182,16 +182,14 @@ inline bool Interpreter::motion_allowed(const Plan& p) {
             nonmotion_in_comp_ = 0;
         } else if (++nonmotion_in_comp_ > 2) {
             return fail(140, tr("more than 2 blocks in a row without motion in the plane under "
-                                "radius compensation")),
-                   false;
+                                "radius compensation"));
         }
     }
     if (p.g[52]) {
-        if (comp)
-            return fail(27, tr("G52 move under radius compensation (program G40 first)")), false;
-        if (modal_.incremental) return fail(3, tr("G52 needs absolute programming (G90)")), false;
+        if (comp) return fail(27, tr("G52 move under radius compensation (program G40 first)"));
+        if (modal_.incremental) return fail(3, tr("G52 needs absolute programming (G90)"));
         if (modal_.motion == 2 || modal_.motion == 3)
-            return fail(3, tr("G52 moves are linear (G0 or G1)")), false;
+            return fail(3, tr("G52 moves are linear (G0 or G1)"));
     }
     return true;
 }
@@ -217,7 +215,7 @@ inline std::optional<bool> Interpreter::motion_family(const Plan& p) {
         return pocket(p);
     }
     if (p.g[31] || (modal_.cycle >= 81 && modal_.cycle <= 89)) {
-        if (g52) return fail(3, tr("G52 in a drilling cycle block")), false;
+        if (g52) return fail(3, tr("G52 in a drilling cycle block"));
         if (p.to.axis.any()) apply_corrector_gauges(p.to.axis);
         first_move_ = false;
         return cycle_block(p);
@@ -239,7 +237,7 @@ inline bool Interpreter::pgp_motion(const Plan& p) {
         return pgp_block(p, target);
     }
     pgp::Error e;
-    if (!pgp_.idle(e)) return fail(e.code, e.detail), false;  // at the block that overflows
+    if (!pgp_.idle(e)) return fail(e.code, e.detail);  // at the block that overflows
     if (p.to.axis.any()) return comp_other_axes(target_of(p), p.to.axis);
     return true;
 }
@@ -302,20 +300,19 @@ inline bool Interpreter::straight(const Plan& p, Axes target) {
 bool Interpreter::g29_move(const Plan& p) {
     if (p.to.axis.none() && p.g29.has.none()) return true;
     if (!(p.to.axis[X] && p.to.axis[Y] && p.to.axis[Z]) || p.g29.has.count() != 3)
-        return fail(146, tr("a G29 block needs all of X Y Z and P Q R (000:13291)")), false;
+        return fail(146, tr("a G29 block needs all of X Y Z and P Q R (000:13291)"));
     if (modal_.motion != 0 && modal_.motion != 1)
-        return fail(146, tr("G29 blocks are linear moves (G0 or G1)")), false;
+        return fail(146, tr("G29 blocks are linear moves (G0 or G1)"));
     Eigen::Vector3d n(p.g29.n[0], p.g29.n[1], p.g29.n[2]);
     if (std::fabs(n.squaredNorm() - 1) > 1e-3)
         return fail(145, strf(tr("P Q R is not a unit vector: P2+Q2+R2 = %s (000:13290)"),
-                              f3(n.squaredNorm()).c_str())),
-               false;
+                              f3(n.squaredNorm()).c_str()));
     n.normalize();
     Eigen::Vector3d u = Eigen::Vector3d::Zero();
     u[modal_.tool_axis == X ? 0 : modal_.tool_axis == Y ? 1 : 2] = modal_.tool_axis_neg ? -1 : 1;
     const Corrector& c = corr_[size_t(std::max(modal_.d, 0))];
     double r = c.r + c.dr, tip_r = c.tip;
-    if (tip_r > r) return fail(146, tr("the end radius @ is larger than the tool radius R")), false;
+    if (tip_r > r) return fail(146, tr("the end radius @ is larger than the tool radius R"));
     Eigen::Vector3d pc;
     for (int a = 0; a < 3; ++a)
         pc[a] = p.to.inc[size_t(a)] ? prog_[size_t(a)] + p.to.val[size_t(a)] : p.to.val[size_t(a)];
@@ -362,10 +359,9 @@ bool Interpreter::linear(int g, const Axes& mach, bool g52, const std::bitset<kA
         e.rpm = spindle_at(prog_[X]);
     } else {
         if (!modal_.feed_set)
-            return fail(2, strf(tr("no feed F programmed since G%d changed the unit"),
-                                modal_.feed_mode)),
-                   false;
-        if (modal_.feed <= 0) return fail(1, tr("feed F0 in a feed move")), false;
+            return fail(
+                2, strf(tr("no feed F programmed since G%d changed the unit"), modal_.feed_mode));
+        if (modal_.feed <= 0) return fail(1, tr("feed F0 in a feed move"));
         if (modal_.feed_mode == 94 && modal_.feed * (modal_.inch ? 25.4 : 1) > m_.max_feed)
             warn(err::wFeedClamped,
                  strf(tr("F%s above the machine maximum %s mm/min: limited to it"),
@@ -373,8 +369,7 @@ bool Interpreter::linear(int g, const Axes& mach, bool g52, const std::bitset<kA
         check_tiny_feed();
         e.feed = feed_rate(e.rpm);
         t = feed_time(e.length, start_prog[X], end_prog[X]);
-        if (t < 0)
-            return fail(831, tr("feed per revolution (G95) with the spindle stopped")), false;
+        if (t < 0) return fail(831, tr("feed per revolution (G95) with the spindle stopped"));
         if (modal_.feed_mode == 93) e.feed = t > 0 ? e.length / t * 60.0 : 0;
     }
     return finish_move(e, mach, end_prog, t);
@@ -408,7 +403,7 @@ bool Interpreter::arc(const Plan& p, const Axes& target) {
     const Eigen::Vector2d e(target[size_t(ax.a0)], target[size_t(ax.a1)]);
     const bool ccw = modal_.motion == 3;
     Eigen::Vector2d c;
-    double r0, r1;
+    double r0 = 0, r1 = 0;
     if (!arc_centre(p, ax, s, e, c, r0, r1)) return false;
     double sw = arc_sweep(s, e, c, ccw);
     if (ax.helix && p.to.ijk[size_t(ax.in)])
@@ -428,21 +423,18 @@ inline bool Interpreter::arc_words(const Plan& p, const ArcAxes& ax) {
     const int a0 = ax.a0, a1 = ax.a1, an = ax.an, i0 = ax.i0, i1 = ax.i1, in = ax.in;
     bool centre = p.to.ijk[size_t(i0)] && p.to.ijk[size_t(i1)];
     if (!p.to.axis[size_t(a0)] || !p.to.axis[size_t(a1)] || centre == p.to.has_r) {
-        return fail(101, strf(tr("G%d needs %c%c and either %c%c or R, even if unchanged"),
-                              modal_.motion, kAxisNames[size_t(a0)], kAxisNames[size_t(a1)],
-                              'I' + i0, 'I' + i1)),
-               false;
+        return fail(
+            101, strf(tr("G%d needs %c%c and either %c%c or R, even if unchanged"), modal_.motion,
+                      kAxisNames[size_t(a0)], kAxisNames[size_t(a1)], 'I' + i0, 'I' + i1));
     }
     for (int a = 0; a < kAxes; ++a)
         if (p.to.axis[size_t(a)] && a != a0 && a != a1 && (m_.lathe || a != an))
             return fail(106, strf(tr("axis %c in a circle: only the axis normal to the plane may "
                                      "move (helix)"),
-                                  kAxisNames[size_t(a)])),
-                   false;
+                                  kAxisNames[size_t(a)]));
     if (p.to.ijk[size_t(in)] && !ax.helix)
         return fail(107, strf(tr("helix pitch %c without the %c end point"), 'I' + in,
-                              kAxisNames[size_t(an)])),
-               false;
+                              kAxisNames[size_t(an)]));
     return true;
 }
 
@@ -453,13 +445,11 @@ inline bool Interpreter::arc_centre(const Plan& p, const ArcAxes& ax, const comp
     if (p.to.has_r) {
         double d = (e - s).norm();
         double r = p.to.r;
-        if (r <= 0) return fail(107, tr("circle radius R must be positive")), false;
-        if (d < 1e-9)
-            return fail(107, tr("circle with R: the end point equals the start point")), false;
+        if (r <= 0) return fail(107, tr("circle radius R must be positive"));
+        if (d < 1e-9) return fail(107, tr("circle with R: the end point equals the start point"));
         if (d > 2 * r + 0.001)
             return fail(107, strf(tr("circle end point too far: chord %s > 2R %s"), f3(d).c_str(),
-                                  f3(2 * r).c_str())),
-                   false;
+                                  f3(2 * r).c_str()));
         // The shorter arc (004:622): the centre on the left of the chord for G3.
         double h = std::sqrt(std::max(0.0, r * r - d * d / 4));
         Eigen::Vector2d left(-(e - s).y() / d, (e - s).x() / d);
@@ -472,12 +462,11 @@ inline bool Interpreter::arc_centre(const Plan& p, const ArcAxes& ax, const comp
     if (p.to.ijk_inc[size_t(ax.i1)]) c.y() += s.y();
     r0 = (s - c).norm();
     r1 = (e - c).norm();
-    if (r0 < 1e-9) return fail(107, tr("circle centre on the start point")), false;
+    if (r0 < 1e-9) return fail(107, tr("circle centre on the start point"));
     if (std::fabs(r0 - r1) > kArcTolerance + 1e-9)
         return fail(107, strf(tr("circle end point inconsistent: start radius %s, end radius %s "
                                  "(more than 0.020 apart)"),
-                              f3(r0).c_str(), f3(r1).c_str())),
-               false;
+                              f3(r0).c_str(), f3(r1).c_str()));
     return true;
 }
 
@@ -522,7 +511,7 @@ bool Interpreter::arc3(const Plan& p, const Axes& target) {
     int i0 = ijk_index(a0), i1 = ijk_index(a1);
     if (!p.to.axis[size_t(a0)] || !p.to.axis[size_t(a1)] || !p.to.ijk[size_t(i0)] ||
         !p.to.ijk[size_t(i1)])
-        return fail(101, tr("G23 needs the end point and the intermediate point")), false;
+        return fail(101, tr("G23 needs the end point and the intermediate point"));
     Eigen::Vector2d s(prog_[size_t(a0)], prog_[size_t(a1)]),
         e(target[size_t(a0)], target[size_t(a1)]);
     Eigen::Vector2d m(p.to.ijk_val[i0], p.to.ijk_val[i1]);
@@ -530,8 +519,7 @@ bool Interpreter::arc3(const Plan& p, const Axes& target) {
     if (p.to.ijk_inc[size_t(i1)]) m.y() += s.y();
     Eigen::Vector2d u = m - s, v = e - s;
     double cross = u.x() * v.y() - u.y() * v.x();
-    if (std::fabs(cross) < 1e-9)
-        return fail(101, tr("G23: the three points are on one line")), false;
+    if (std::fabs(cross) < 1e-9) return fail(101, tr("G23: the three points are on one line"));
     // Circumcentre of s, m, e.
     double uu = u.squaredNorm(), vv = v.squaredNorm();
     Eigen::Vector2d c =
@@ -613,11 +601,10 @@ bool Interpreter::emit_arc(int g, const Axes& target, int a0, int a1, double c0,
     e.length = std::hypot(arclen, dh);
     if (!modal_.feed_set)
         return fail(2,
-                    strf(tr("no feed F programmed since G%d changed the unit"), modal_.feed_mode)),
-               false;
-    if (modal_.feed <= 0) return fail(1, tr("feed F0 in a feed move")), false;
+                    strf(tr("no feed F programmed since G%d changed the unit"), modal_.feed_mode));
+    if (modal_.feed <= 0) return fail(1, tr("feed F0 in a feed move"));
     if (modal_.feed_mode == 93)
-        return fail(4, tr("G02/G03 are not allowed in inverse-time feed (G93)")), false;
+        return fail(4, tr("G02/G03 are not allowed in inverse-time feed (G93)"));
     check_tiny_feed();
     e.feed = feed_rate(e.rpm);
     double t = 0;
@@ -635,13 +622,12 @@ bool Interpreter::emit_arc(int g, const Axes& target, int a0, int a1, double c0,
             double piece = feed_time(e.length / kPieces, x_at(double(i) / kPieces),
                                      x_at(double(i + 1) / kPieces));
             if (piece < 0)
-                return fail(831, tr("feed per revolution (G95) with the spindle stopped")), false;
+                return fail(831, tr("feed per revolution (G95) with the spindle stopped"));
             t += piece;
         }
     } else {
         t = feed_time(e.length, prog_[X], target[X]);
-        if (t < 0)
-            return fail(831, tr("feed per revolution (G95) with the spindle stopped")), false;
+        if (t < 0) return fail(831, tr("feed per revolution (G95) with the spindle stopped"));
     }
     if (modal_.feed_mode == 94 && modal_.feed * (modal_.inch ? 25.4 : 1) > m_.max_feed)
         warn(err::wFeedClamped, strf(tr("F%s above the machine maximum %s mm/min: limited to it"),
