@@ -382,9 +382,9 @@ bool offset_chain(const std::vector<Elem>& el, bool closed, double r, int side, 
 }
 
 namespace {
-bool refuse(Error& err, int code, std::string why, int sec = -1) {
-    err = {code, std::move(why), sec};
-    return false;
+// Error `code`, about section `sec` (-1: the whole definition).
+Error refuse(int code, std::string why, int sec = -1) {
+    return Error{.code = code, .detail = std::move(why), .item = sec};
 }
 
 // How many outer profiles and islands the sections declare, and whether the
@@ -395,24 +395,24 @@ struct Roles {
 };
 
 // Each section has elements; an NU1..NU4 contour closes and encloses an area.
-bool check_sections(const Def& d, Roles& n, Error& err) {
+Error check_sections(const Def& d, Roles& n) {
     for (size_t i = 0; i < d.sections.size(); ++i) {
         const Section& s = d.sections[i];
-        if (s.elems.empty()) return refuse(err, 284, tr("a contour with no element"), int(i));
+        if (s.elems.empty()) return refuse(284, tr("a contour with no element"), int(i));
         if (s.nu == 1 || s.nu == 3) ++n.outer;
         if (s.nu == 2 || s.nu == 4) ++n.islands;
         if (s.nu == 5) n.has5 = true;
         if (s.nu == 6) n.has6 = true;
         if (s.nu <= 4 && (s.elems.back().b - s.elems.front().a).norm() > 1e-3)
-            return refuse(err, 281, tr("the contour does not end where it starts"), int(i));
+            return refuse(281, tr("the contour does not end where it starts"), int(i));
         if (s.nu <= 4 && std::fabs(area(s.elems)) < 1e-6)
-            return refuse(err, 284, tr("a contour that encloses no area"), int(i));
+            return refuse(284, tr("a contour that encloses no area"), int(i));
     }
-    return true;
+    return {};
 }
 
 // The NU5/NU6 sections follow one another and close.
-bool check_chain56(const Def& d, Error& err) {
+Error check_chain56(const Def& d) {
     const Section* prev = nullptr;
     const Section* first = nullptr;
     for (size_t i = 0; i < d.sections.size(); ++i) {
@@ -420,17 +420,17 @@ bool check_chain56(const Def& d, Error& err) {
         if (s.nu != 5 && s.nu != 6) continue;
         if (!first) first = &s;
         if (prev && (prev->elems.back().b - s.elems.front().a).norm() > 1e-3)
-            return refuse(err, 281,
-                          tr("a limit or wall does not start where the previous one ends"), int(i));
+            return refuse(281, tr("a limit or wall does not start where the previous one ends"),
+                          int(i));
         prev = &s;
     }
     if ((prev->elems.back().b - first->elems.front().a).norm() > 1e-3)
-        return refuse(err, 281, tr("the limits and walls do not close"), -1);
-    return true;
+        return refuse(281, tr("the limits and walls do not close"), -1);
+    return {};
 }
 
 // Islands lie inside the outer profile, apart from each other.
-bool check_islands(const Def& d, bool has56, Error& err) {
+Error check_islands(const Def& d, bool has56) {
     Region outer_only;
     for (const Section& s : d.sections)
         if (s.nu == 1 || s.nu == 3) outer_only.loops.push_back(loop_of(s.elems));
@@ -440,35 +440,32 @@ bool check_islands(const Def& d, bool has56, Error& err) {
         if (s.nu != 2 && s.nu != 4) continue;
         for (const Elem& e : s.elems)
             if (!inside(outer_only, e.a) && !(s.nu == 4 && d.facing()))
-                return refuse(err, 284, tr("an island is not inside the outer profile"), int(i));
+                return refuse(284, tr("an island is not inside the outer profile"), int(i));
     }
-    return true;
+    return {};
 }
 }  // namespace
 
-bool check(const Def& d, Error& err) {
+Error check(const Def& d) {
     Roles n;
-    if (!check_sections(d, n, err)) return false;
+    if (Error e = check_sections(d, n)) return e;
     bool has56 = n.has5 || n.has6;
     if (has56) {
         if (!n.has5 || !n.has6)
-            return refuse(err, 283, tr("facing limits (NU5) and walls (NU6) go together"));
+            return refuse(283, tr("facing limits (NU5) and walls (NU6) go together"));
         ++n.outer;
-        if (!check_chain56(d, err)) return false;
+        if (Error e = check_chain56(d)) return e;
     }
     if (n.outer != 1)
-        return refuse(err, 283,
-                      n.outer == 0 ? tr("no outer profile (NU1, NU3 or NU5/NU6)")
-                                   : tr("more than one outer profile"));
-    if (n.islands > 127) return refuse(err, 285, tr("more than 127 islands and recesses"));
-    if (d.facing() && d.has_e)
-        return refuse(err, 293, tr("a roughing end point (EX EY) in a facing"));
-    if (d.q > d.ed)
-        return refuse(err, 286, tr("the step-over Q is larger than the cutter diameter ED"));
+        return refuse(283, n.outer == 0 ? tr("no outer profile (NU1, NU3 or NU5/NU6)")
+                                        : tr("more than one outer profile"));
+    if (n.islands > 127) return refuse(285, tr("more than 127 islands and recesses"));
+    if (d.facing() && d.has_e) return refuse(293, tr("a roughing end point (EX EY) in a facing"));
+    if (d.q > d.ed) return refuse(286, tr("the step-over Q is larger than the cutter diameter ED"));
     Region r = region(d, 0);
     if (r.xhi - r.xlo > 40 * d.q || r.yhi - r.ylo > 40 * d.q)
-        return refuse(err, 287, tr("the pocket is larger than 40 times the step-over Q"));
-    return check_islands(d, has56, err);
+        return refuse(287, tr("the pocket is larger than 40 times the step-over Q"));
+    return check_islands(d, has56);
 }
 
 namespace {
@@ -607,30 +604,29 @@ void cleanups(const Def& d, const Region& reg, double c, V2 cur, std::vector<Run
 }
 }  // namespace
 
-bool roughing(const Def& d, double R, std::vector<Run>& runs, std::vector<double>& line_y,
-              Error& err) {
+Error roughing(const Def& d, double R, std::vector<Run>& runs, std::vector<double>& line_y) {
     runs.clear();
     line_y.clear();
     const double c = R + d.j;
     Region reg = region(d, c);
     double y0 = 0, y1 = 0;
     if (!cutting_range(reg, d.q, y0, y1))
-        return refuse(err, 289, tr("the cutter does not fit in the pocket"));
+        return refuse(289, tr("the cutter does not fit in the pocket"));
     pass_lines(y0, y1, d.q, line_y);
     std::vector<Seg> segs;
     for (double y : line_y)
         for (auto [x0, x1] : spans(reg, y)) segs.push_back({V2(x0, y), V2(x1, y)});
-    if (segs.empty()) return refuse(err, 289, tr("the cutter does not fit in the pocket"));
+    if (segs.empty()) return refuse(289, tr("the cutter does not fit in the pocket"));
     V2 cur = segs[0].a;
     if (d.has_l) {
         if (!inside(reg, d.l, 1e-6))
-            return refuse(err, 282,
+            return refuse(282,
                           tr("the roughing start point LX LY is not where the cutter can plunge"));
         cur = d.l;
     }
     cur = zigzag(d, reg, segs, cur, runs);
     cleanups(d, reg, c, cur, runs);
-    return true;
+    return {};
 }
 
 namespace {
@@ -675,66 +671,58 @@ std::vector<Elem> rotated_to(const std::vector<Elem>& el, size_t best, const V2&
 }
 
 // Start at LX LY, which must lie on the contour (error 291).
-bool start_at_l(const Section& s, int si, std::vector<Elem>& el, Error& err) {
+Error start_at_l(const Section& s, int si, std::vector<Elem>& el) {
     size_t best = 0;
     double bd = 1e300;
     for (size_t i = 0; i < el.size(); ++i) {
         double dd = distance(el[i], s.l);
         if (dd < bd) bd = dd, best = i;
     }
-    if (bd > 1e-3) {
-        err = {291, tr("the finishing start point LX LY is not on the contour"), si};
-        return false;
-    }
+    if (bd > 1e-3)
+        return refuse(291, tr("the finishing start point LX LY is not on the contour"), si);
     el = rotated_to(el, best, s.l);
-    return true;
+    return {};
 }
 
 // One NU1/NU2 contour: from its start (LX LY or its first point), engaged
 // along the normal from the zone the roughing cleared, round and back out.
-bool contour_run(const Finish& f, const Section& s, int si, std::vector<Run>& runs, Error& err) {
+Error contour_run(const Finish& f, const Section& s, int si, std::vector<Run>& runs) {
     std::vector<Elem> el = oriented(s.elems, s.nu == 1, f.side);
-    if (s.has_l && !start_at_l(s, si, el, err)) return false;
+    if (s.has_l)
+        if (Error e = start_at_l(s, si, el)) return e;
     // A re-entrant corner at the start point cannot be engaged.
     V2 t_in = comp::end_tangent(el.back()), t_out = comp::start_tangent(el.front());
-    if (double(f.side) * cross(t_in, t_out) > 1e-9 && t_in.dot(t_out) < 1 - 1e-9) {
-        err = {288, tr("the finishing starts in a re-entrant corner"), si};
-        return false;
-    }
+    if (double(f.side) * cross(t_in, t_out) > 1e-9 && t_in.dot(t_out) < 1 - 1e-9)
+        return refuse(288, tr("the finishing starts in a re-entrant corner"), si);
     Run run;
     V2 start;
     std::vector<Piece> pcs;
     if (!offset_chain(el, true, f.r, f.side, start, pcs) ||
         !path_clear(f.walls, start, pcs, 1e-6)) {
-        err = {289, tr("the finishing cutter is too large for the contour"), si};
-        return false;
+        return refuse(289, tr("the finishing cutter is too large for the contour"), si);
     }
     V2 nrm = comp::normal(t_out, f.side);
     run.start = el.front().a + f.reach * nrm;
-    if (!inside(f.rough, run.start, 1e-6)) {
-        err = {288, tr("the finishing engages in a zone the roughing did not clear"), si};
-        return false;
-    }
+    if (!inside(f.rough, run.start, 1e-6))
+        return refuse(288, tr("the finishing engages in a zone the roughing did not clear"), si);
     if ((run.start - start).norm() > 1e-9) run.pieces.push_back({false, start, {0, 0}, 0, false});
     run.pieces.insert(run.pieces.end(), pcs.begin(), pcs.end());
     if ((run.start - start).norm() > 1e-9)
         run.pieces.push_back({false, run.start, {0, 0}, 0, false});
     runs.push_back(run);
-    return true;
+    return {};
 }
 
 // One NU6 wall, travelled as the facing's outline goes (keep) or the other way:
 // in from beyond the open end and out past the other, along the tangents.
-bool wall_run(const Finish& f, const Section& s, bool keep, int si, std::vector<Run>& runs,
-              Error& err) {
+Error wall_run(const Finish& f, const Section& s, bool keep, int si, std::vector<Run>& runs) {
     std::vector<Elem> w = wall_as(s, keep);
     Run run;
     V2 start;
     std::vector<Piece> pcs;
     if (!offset_chain(w, false, f.r, f.side, start, pcs) ||
         !path_clear(f.walls, start, pcs, 1e-6)) {
-        err = {289, tr("the finishing cutter is too large for the wall"), si};
-        return false;
+        return refuse(289, tr("the finishing cutter is too large for the wall"), si);
     }
     V2 t0 = comp::start_tangent(w.front()), t1 = comp::end_tangent(w.back());
     V2 end = pcs.empty() ? start : pcs.back().to;
@@ -743,11 +731,11 @@ bool wall_run(const Finish& f, const Section& s, bool keep, int si, std::vector<
     run.pieces.insert(run.pieces.end(), pcs.begin(), pcs.end());
     run.pieces.push_back({false, V2(end + (f.R + 1) * t1), {0, 0}, 0, false});
     runs.push_back(run);
-    return true;
+    return {};
 }
 }  // namespace
 
-bool finishing(const Def& d, double R, double J, std::vector<Run>& runs, Error& err) {
+Error finishing(const Def& d, double R, double J, std::vector<Run>& runs) {
     runs.clear();
     Finish f;
     f.R = R;
@@ -759,7 +747,7 @@ bool finishing(const Def& d, double R, double J, std::vector<Run>& runs, Error& 
     for (size_t si = 0; si < d.sections.size(); ++si) {
         const Section& s = d.sections[si];
         if (s.nu != 1 && s.nu != 2) continue;
-        if (!contour_run(f, s, int(si), runs, err)) return false;
+        if (Error e = contour_run(f, s, int(si), runs)) return e;
     }
     std::vector<Elem> ch = chain56(d);
     if (!ch.empty()) {
@@ -767,10 +755,10 @@ bool finishing(const Def& d, double R, double J, std::vector<Run>& runs, Error& 
         for (size_t si = 0; si < d.sections.size(); ++si) {
             const Section& s = d.sections[si];
             if (s.nu != 6) continue;
-            if (!wall_run(f, s, keep, int(si), runs, err)) return false;
+            if (Error e = wall_run(f, s, keep, int(si), runs)) return e;
         }
     }
-    return true;
+    return {};
 }
 
 }  // namespace pupitre::p46

@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/diag.hpp"
 #include "core/geometry/comp.hpp"
 
 namespace pupitre::p46 {
@@ -77,22 +78,18 @@ struct Run {
     bool cleanup = false;  // a clean-up contour of the roughing (after the passes)
 };
 
-struct Error {
-    int code = 0;
-    std::string why;
-    int section = -1;  // the section it is about, -1 for the whole definition
-};
+// The errors below name the section they are about as their `item` (-1: the
+// whole definition).
 
-// Checks at NU9 (281, 283, 284, 285, 286, 287, 293). Returns false with `err`.
-bool check(const Def& d, Error& err);
+// Checks at NU9 (281, 283, 284, 285, 286, 287, 293).
+Error check(const Def& d);
 // Roughing at tool radius R leaving the allowance J of the definition:
 // zig-zag passes at Q' <= Q, then the clean-up contours. `line_y` receives the
 // ordinates of the passes.
-bool roughing(const Def& d, double R, std::vector<Run>& runs, std::vector<double>& line_y,
-              Error& err);
+Error roughing(const Def& d, double R, std::vector<Run>& runs, std::vector<double>& line_y);
 // Finishing at tool radius R leaving J: each NU1/NU2 contour (at LX LY or its
 // first point) and each NU6 wall, with engagement and release moves.
-bool finishing(const Def& d, double R, double J, std::vector<Run>& runs, Error& err);
+Error finishing(const Def& d, double R, double J, std::vector<Run>& runs);
 
 // The closed or open offset of a chain of elements on `side` (comp::join).
 bool offset_chain(const std::vector<Elem>& el, bool closed, double r, int side, V2& start,

@@ -58,12 +58,12 @@ std::vector<V2> dirs(const Elt& e) {
     return {e.d};
 }
 
-St stop(Fail& f, int code, std::string detail) {
+St stop(Error& f, int code, std::string detail) {
     failed(f, code, std::move(detail));
     return St::Fail;
 }
 
-St undetermined(const Elt& b, Fail& f) {
+St undetermined(const Elt& b, Error& f) {
     if (middle(b)) return St::Need;
     return stop(f, 113, tr("the second element does not determine the junction"));
 }
@@ -95,7 +95,7 @@ void add(std::vector<Cand>& out, const Sup& s1, const Sup& s2, const V2& j) {
 
 // Junction of a first element whose support is known (a line through S at its
 // angle, a circle through S) with the next element.
-St from_fixed(const V2& S, const Sup& A, const Elt& b, bool tan, std::vector<Cand>& out, Fail& f) {
+St from_fixed(const V2& S, const Sup& A, const Elt& b, bool tan, std::vector<Cand>& out, Error& f) {
     if (b.form == Form::Fixed) {
         if (!tan) {
             if (!A.arc && !b.sup.arc) {
@@ -149,7 +149,7 @@ St from_fixed(const V2& S, const Sup& A, const Elt& b, bool tan, std::vector<Can
 }
 
 // Junction of a first element (start S) with the next one.
-St solve2(const V2& S, const Elt& a, const Elt& b, char link, std::vector<Cand>& out, Fail& f) {
+St solve2(const V2& S, const Elt& a, const Elt& b, char link, std::vector<Cand>& out, Error& f) {
     bool tan = link != 'S';
     if (a.form == Form::Fixed) return from_fixed(S, a.sup, b, tan, out, f);
     if (b.form != Form::Fixed) return undetermined(b, f);
@@ -175,7 +175,7 @@ St solve2(const V2& S, const Elt& a, const Elt& b, char link, std::vector<Cand>&
 // Three blocks, the middle element found from the third one: its radius about
 // its centre, or its position at its angle, tangent to the third.
 St solve3_by_third(const V2& S, const Elt& a, const Elt& b, const Sup& C3, char link0,
-                   std::vector<Cand>& out, Fail& f) {
+                   std::vector<Cand>& out, Error& f) {
     std::vector<std::pair<Sup, V2>> mids;
     if (b.form == Form::Centre) {
         for (double r : radii(C3, b.c)) mids.push_back({circle(b.c, r, b.s), contact(C3, b.c, r)});
@@ -195,7 +195,7 @@ St solve3_by_third(const V2& S, const Elt& a, const Elt& b, const Sup& C3, char 
         m.has_end = true;
         m.end = t23;
         std::vector<Cand> part;
-        Fail f2;
+        Error f2;
         St st = solve2(S, a, m, link0, part, f2);
         if (st == St::Fail && f2.code == 112)
             return stop(f, 122, tr("the first two blocks are parallel lines"));
@@ -214,7 +214,7 @@ St solve3_by_third(const V2& S, const Elt& a, const Elt& b, const Sup& C3, char 
 // Three blocks: the middle element is found from the third one (its radius, its
 // position) or together with both neighbours (a circle of given radius tangent
 // to both, a common tangent line).
-St solve3(const V2& S, const Elt* e, const char link[2], std::vector<Cand>& out, Fail& f) {
+St solve3(const V2& S, const Elt* e, const char link[2], std::vector<Cand>& out, Error& f) {
     const Elt &a = e[0], &b = e[1], &c = e[2];
     if (c.form != Form::Fixed)
         return stop(f, 123,
@@ -323,7 +323,7 @@ struct Entity {
 
     // ES±: the order along the line (first met = -, pgp.md §5.2 and §5.4), or the
     // side of the line of centres for two circles (§5.3).
-    bool by_secant(const std::vector<Cand>& cs, Cand& pick, Fail& f) const {
+    bool by_secant(const std::vector<Cand>& cs, Cand& pick, Error& f) const {
         if (disc[0] == 0)
             return failed(f, 114, tr("two intersections: choose one with ES+ or ES-"));
         auto key = [&](const Cand& c) {
@@ -339,7 +339,7 @@ struct Entity {
     }
 
     // One candidate among the feasible ones; false on an ambiguity (114, 124).
-    bool choose(const std::vector<Cand>& cs, Cand& pick, Fail& f, int& block) const {
+    bool choose(const std::vector<Cand>& cs, Cand& pick, Error& f, int& block) const {
         std::vector<int> branches;
         for (const Cand& c : cs)
             if (std::find(branches.begin(), branches.end(), c.branch) == branches.end())
@@ -398,7 +398,7 @@ enum class Step { Complete, Wait, Solved, Error };
 // block is an element by itself; Wait: one more block is needed; Solved: `pick`
 // is the chosen solution of en.n blocks; Error: `f` for block number `block`.
 Step entity(const V2& S, const Spec* const* specs, int count, const Sup* over, Entity& en,
-            Cand& pick, Fail& f, int& block) {
+            Cand& pick, Error& f, int& block) {
     block = 0;
     if (!first_elt(*specs[0], S, over, en.e[0], f)) return Step::Error;
     if (en.e[0].form == Form::Complete) return Step::Complete;
@@ -449,48 +449,45 @@ V2 Solver::position() const {
     return pos_;
 }
 
-bool Solver::fail(Error& err, int code, int tag, std::string detail) {
-    err.code = code;
-    err.tag = tag;
-    err.detail = std::move(detail);
+Error Solver::fail(int code, int tag, std::string detail) {
     wait_.clear();
     held_ = false;
     idle_ = 0;
-    return false;
+    return Error{.code = code, .detail = std::move(detail), .item = tag};
 }
 
-bool Solver::push(const Spec& s, std::vector<Elem>& out, Error& err) {
+Error Solver::push(const Spec& s, std::vector<Elem>& out) {
     idle_ = 0;
-    if (s.stop && s.has_eb) return fail(err, 131, s.tag, tr("EB on a block with M0, M1 or M2"));
+    if (s.stop && s.has_eb) return fail(131, s.tag, tr("EB on a block with M0, M1 or M2"));
     // The block's own words, checked where it stands in its entity (110, 111, 121).
-    Fail f;
+    Error f;
     Elt e;
     int pos = int(wait_.size());
     if (!(pos == 0 ? first_elt(s, pos_, nullptr, e, f) : next_elt(s, std::min(pos, 2), e, f)))
-        return fail(err, f.code, s.tag, f.detail);
+        return fail(f.code, s.tag, f.detail);
     wait_.push_back(Item{s});
-    return resolve(out, err);
+    return resolve(out);
 }
 
-bool Solver::idle(Error& err) {
-    if (!pending()) return true;
+Error Solver::idle() {
+    if (!pending()) return {};
     if (++idle_ > 2)
-        return fail(err, 136, wait_.empty() ? held_elem_.tag : wait_[0].spec.tag,
+        return fail(136, wait_.empty() ? held_elem_.tag : wait_[0].spec.tag,
                     tr("more than 2 blocks without motion between elements to be joined"));
-    return true;
+    return {};
 }
 
-bool Solver::finish(std::vector<Elem>& out, Error& err) {
+Error Solver::finish(std::vector<Elem>& out) {
     idle_ = 0;
     if (!wait_.empty())
-        return fail(err, 131, wait_[0].spec.tag,
+        return fail(131, wait_[0].spec.tag,
                     tr("the profile ends before the end point of this element is known"));
     if (held_) out.push_back(held_elem_);
     held_ = false;
-    return true;
+    return {};
 }
 
-bool Solver::resolve(std::vector<Elem>& out, Error& err) {
+Error Solver::resolve(std::vector<Elem>& out) {
     while (!wait_.empty()) {
         const Spec* specs[3] = {nullptr, nullptr, nullptr};
         int count = int(std::min<size_t>(wait_.size(), 3));
@@ -499,18 +496,18 @@ bool Solver::resolve(std::vector<Elem>& out, Error& err) {
         Sup over = it.arc ? circle(it.p, it.r, it.s) : line(it.p, it.d);
         Entity en;
         Cand pick;
-        Fail f;
+        Error f;
         int block = 0;
         switch (entity(pos_, specs, count, it.fixed ? &over : nullptr, en, pick, f, block)) {
             case Step::Error:
-                return fail(err, f.code, wait_[size_t(block)].spec.tag, f.detail);
+                return fail(f.code, wait_[size_t(block)].spec.tag, f.detail);
             case Step::Wait:
-                return true;
+                return {};
             case Step::Complete: {
                 Spec sp = it.spec;
                 wait_.erase(wait_.begin());
                 pos_ = en.e[0].geo.b;
-                if (!deliver(Elem{en.e[0].geo, sp.tag, false}, sp, out, err)) return false;
+                if (Error e = deliver(Elem{en.e[0].geo, sp.tag, false}, sp, out)) return e;
                 continue;
             }
             case Step::Solved:
@@ -535,36 +532,35 @@ bool Solver::resolve(std::vector<Elem>& out, Error& err) {
         for (int k = 0; k < last; ++k) {
             Elem el{piece(pick.sup[k], k == 0 ? from : pick.j[k - 1], pick.j[k]),
                     done[size_t(k)].tag, false};
-            if (!deliver(el, done[size_t(k)], out, err)) return false;
+            if (Error e = deliver(el, done[size_t(k)], out)) return e;
         }
     }
-    return true;
+    return {};
 }
 
-bool Solver::deliver(Elem e, const Spec& s, std::vector<Elem>& out, Error& err) {
+Error Solver::deliver(Elem e, const Spec& s, std::vector<Elem>& out) {
     double len = length(e.geo);
     if (held_) {
-        if (len < kEq) return fail(err, 130, s.tag, tr("zero move in a block joined by EB"));
+        if (len < kEq) return fail(130, s.tag, tr("zero move in a block joined by EB"));
         Elem ins;
         ins.tag = held_elem_.tag;
         ins.inserted = true;
-        std::string detail;
-        if (int code = corner(held_elem_.geo, held_eb_, e.geo, ins.geo, detail))
-            return fail(err, code, held_elem_.tag, detail);
+        if (Error c = corner(held_elem_.geo, held_eb_, e.geo, ins.geo))
+            return fail(c.code, held_elem_.tag, c.detail);
         held_ = false;
         if ((held_elem_.geo.b - held_elem_.geo.a).norm() > 0 || held_elem_.geo.arc)
             out.push_back(held_elem_);
         out.push_back(ins);
     }
     if (s.has_eb && s.eb != 0) {
-        if (len < kEq) return fail(err, 130, s.tag, tr("zero move in a block joined by EB"));
+        if (len < kEq) return fail(130, s.tag, tr("zero move in a block joined by EB"));
         held_ = true;
         held_elem_ = e;
         held_eb_ = s.eb;
-        return true;
+        return {};
     }
     if ((e.geo.b - e.geo.a).norm() > 0 || e.geo.arc) out.push_back(e);
-    return true;
+    return {};
 }
 
 }  // namespace pupitre::pgp

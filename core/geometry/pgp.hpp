@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/diag.hpp"
 #include "core/geometry/comp.hpp"
 
 namespace pupitre::pgp {
@@ -43,26 +44,20 @@ struct Elem {
     bool inserted = false;  // a fillet or chamfer made by EB
 };
 
-struct Error {
-    int code = 0;  // NUM error number (101-137), 0 if none
-    int tag = 0;   // block it belongs to
-    std::string detail;
-};
-
 class Solver {
   public:
     // The known start point of the next element (the current position).
     void start(const V2& p);
     // Adds a block's element. Resolved elements are appended to `out` (possibly
-    // several, possibly none while the entity is incomplete). Returns false with
-    // `err` filled on a PGP error.
-    bool push(const Spec& s, std::vector<Elem>& out, Error& err);
+    // several, possibly none while the entity is incomplete). Answers a PGP
+    // error (101-137) with the tag of the block it belongs to as its `item`.
+    Error push(const Spec& s, std::vector<Elem>& out);
     // A block without motion in the plane between two elements (at most 2 while
     // an element is incomplete: error 136).
-    bool idle(Error& err);
+    Error idle();
     // The profile ends here (a non-PGP block, G40, end of program): anything still
     // incomplete is error 131; a pending fillet/chamfer element is flushed.
-    bool finish(std::vector<Elem>& out, Error& err);
+    Error finish(std::vector<Elem>& out);
     // True while an element waits for a following block.
     bool pending() const;
     // The end point of the last resolved element.
@@ -82,9 +77,9 @@ class Solver {
         int s = 0;
     };
 
-    bool resolve(std::vector<Elem>& out, Error& err);
-    bool deliver(Elem e, const Spec& s, std::vector<Elem>& out, Error& err);
-    bool fail(Error& err, int code, int tag, std::string detail);
+    Error resolve(std::vector<Elem>& out);
+    Error deliver(Elem e, const Spec& s, std::vector<Elem>& out);
+    Error fail(int code, int tag, std::string detail);
 
     std::vector<Item> wait_;  // blocks of the entity being solved
     V2 pos_{0, 0};

@@ -178,9 +178,8 @@ double length(const comp::Elem& g) {
 // ---------------------------------------------------------------------------
 // What a block fixes of its element.
 
-bool failed(Fail& f, int code, std::string detail) {
-    f.code = code;
-    f.detail = std::move(detail);
+bool failed(Error& f, int code, std::string detail) {
+    f = Error{code, std::move(detail)};
     return false;
 }
 
@@ -191,7 +190,7 @@ int syntax_code(int pos) {
 }
 
 // Words that do not belong together, wherever the block stands in its entity.
-bool syntax(const Spec& s, int pos, Fail& f) {
+bool syntax(const Spec& s, int pos, Error& f) {
     if (s.link != 0 && s.link != 'S' && s.link != 'T')
         return failed(f, syntax_code(pos), tr("ES and ET in the same block"));
     if (s.g == 1 && (s.has_i || s.has_j || s.has_r))
@@ -206,7 +205,7 @@ bool syntax(const Spec& s, int pos, Fail& f) {
 
 // A complete arc from S to E by its radius: the centre on the left of the chord
 // with E+, on the right with E-, the smaller arc without (pgp.md §5.1).
-bool arc_by_radius(const Spec& s, int sense, const V2& S, const V2& E, Elt& e, Fail& f) {
+bool arc_by_radius(const Spec& s, int sense, const V2& S, const V2& E, Elt& e, Error& f) {
     V2 ch = E - S;
     double d = ch.norm();
     if (d < 1e-9) return failed(f, 107, tr("circle with R: the end point equals the start point"));
@@ -227,7 +226,7 @@ bool arc_by_radius(const Spec& s, int sense, const V2& S, const V2& E, Elt& e, F
 namespace {
 
 // A line as the first block of an entity.
-bool first_line(const Spec& s, const V2& S, const Sup* over, Elt& e, Fail& f) {
+bool first_line(const Spec& s, const V2& S, const Sup* over, Elt& e, Error& f) {
     bool end2 = s.has_x && s.has_y, end1 = s.has_x != s.has_y;
     int axis = s.has_x ? 0 : 1;
     double val = s.has_x ? s.x : s.y;
@@ -259,7 +258,7 @@ bool first_line(const Spec& s, const V2& S, const Sup* over, Elt& e, Fail& f) {
 }
 
 // A circle by its centre I J as the first block of an entity.
-bool first_centre(const Spec& s, const V2& S, const V2& E, Elt& e, Fail& f) {
+bool first_centre(const Spec& s, const V2& S, const V2& E, Elt& e, Error& f) {
     bool end2 = s.has_x && s.has_y, end1 = s.has_x != s.has_y;
     V2 c(s.i, s.j);
     double r0 = (S - c).norm();
@@ -290,7 +289,7 @@ bool first_centre(const Spec& s, const V2& S, const V2& E, Elt& e, Fail& f) {
 
 // The first block of an entity: its start S is known. `over` is the support
 // found while solving the previous entity.
-bool first_elt(const Spec& s, const V2& S, const Sup* over, Elt& e, Fail& f) {
+bool first_elt(const Spec& s, const V2& S, const Sup* over, Elt& e, Error& f) {
     if (!syntax(s, 0, f)) return false;
     e = Elt{};
     e.s = s.g == 3 ? 1 : s.g == 2 ? -1 : 0;
@@ -317,7 +316,7 @@ bool first_elt(const Spec& s, const V2& S, const Sup* over, Elt& e, Fail& f) {
 namespace {
 
 // A line after an incomplete element.
-bool next_line(const Spec& s, int pos, Elt& e, Fail& f) {
+bool next_line(const Spec& s, int pos, Elt& e, Error& f) {
     bool end2 = s.has_x && s.has_y, end1 = s.has_x != s.has_y;
     V2 E(s.x, s.y);
     if (end1) {
@@ -354,7 +353,7 @@ bool next_line(const Spec& s, int pos, Elt& e, Fail& f) {
 }
 
 // A circle by its centre I J after an incomplete element.
-bool next_centre(const Spec& s, Elt& e, Fail& f) {
+bool next_centre(const Spec& s, Elt& e, Error& f) {
     bool end2 = s.has_x && s.has_y;
     V2 E(s.x, s.y);
     V2 c(s.i, s.j);
@@ -381,7 +380,7 @@ bool next_centre(const Spec& s, Elt& e, Fail& f) {
 
 // A block after an incomplete element (pos 1 or 2 in the entity): its start is
 // not known yet.
-bool next_elt(const Spec& s, int pos, Elt& e, Fail& f) {
+bool next_elt(const Spec& s, int pos, Elt& e, Error& f) {
     if (!syntax(s, pos, f)) return false;
     e = Elt{};
     e.s = s.g == 3 ? 1 : s.g == 2 ? -1 : 0;
@@ -406,24 +405,21 @@ bool next_elt(const Spec& s, int pos, Elt& e, Fail& f) {
 
 // Replaces the corner between h and e by a fillet (eb > 0) or a chamfer
 // (eb < 0) `ins`, trimming both. Returns 0 or the error number.
-int corner(comp::Elem& h, double eb, comp::Elem& e, comp::Elem& ins, std::string& detail) {
+Error corner(comp::Elem& h, double eb, comp::Elem& e, comp::Elem& ins) {
     V2 P = h.b, t1 = comp::end_tangent(h), t2 = comp::start_tangent(e);
     double cr = cross(t1, t2);
     if (eb < 0 && (h.arc || e.arc)) {
-        detail = tr("a chamfer joins two lines only");
-        return 135;
+        return {135, tr("a chamfer joins two lines only")};
     }
     if (std::fabs(cr) < 1e-9) {
-        detail = t1.dot(t2) > 0 ? tr("EB between two tangent elements")
-                                : tr("EB where the path turns back");
-        return 113;
+        return {113, t1.dot(t2) > 0 ? tr("EB between two tangent elements")
+                                    : tr("EB where the path turns back")};
     }
     if (eb < 0) {
         double c = -eb, l1 = length(h), l2 = length(e);
         if (c > l1 + kEq || c > l2 + kEq) {
-            detail = strf(tr("chamfer %s longer than the lines (%s, %s)"), fixed3(c).c_str(),
-                          fixed3(l1).c_str(), fixed3(l2).c_str());
-            return 113;
+            return {113, strf(tr("chamfer %s longer than the lines (%s, %s)"), fixed3(c).c_str(),
+                              fixed3(l1).c_str(), fixed3(l2).c_str())};
         }
         V2 a = c > l1 - kEq ? h.a : V2(P - c * t1), b = c > l2 - kEq ? e.b : V2(P + c * t2);
         h.b = a;
@@ -431,7 +427,7 @@ int corner(comp::Elem& h, double eb, comp::Elem& e, comp::Elem& ins, std::string
         ins = comp::Elem{};
         ins.a = a;
         ins.b = b;
-        return 0;
+        return {};
     }
     double r = eb;
     int sf = cr > 0 ? 1 : -1;  // G3 when the path turns left
@@ -458,14 +454,13 @@ int corner(comp::Elem& h, double eb, comp::Elem& e, comp::Elem& ins, std::string
                 }
             }
     if (best > 1e299) {
-        detail =
-            strf(tr("fillet radius %s too large for the elements it joins"), fixed3(r).c_str());
-        return 113;
+        return {113, strf(tr("fillet radius %s too large for the elements it joins"),
+                          fixed3(r).c_str())};
     }
     h = h.arc ? piece(s1, h.a, a0) : comp::Elem{false, h.a, a0};
     e = e.arc ? piece(s2, b0, e.b) : comp::Elem{false, b0, e.b};
     ins = piece(circle(q0, r, sf), a0, b0);
-    return 0;
+    return {};
 }
 
 }  // namespace pupitre::pgp::detail

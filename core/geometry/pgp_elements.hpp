@@ -80,21 +80,16 @@ struct Elt {
     double end_val = 0;
 };
 
-struct Fail {
-    int code = 0;
-    std::string detail;
-};
-
-bool failed(Fail& f, int code, std::string detail);
+bool failed(Error& f, int code, std::string detail);
 // The first block of an entity: its start S is known. `over` is the support
 // found while solving the previous entity.
-bool first_elt(const Spec& s, const V2& S, const Sup* over, Elt& e, Fail& f);
+bool first_elt(const Spec& s, const V2& S, const Sup* over, Elt& e, Error& f);
 // A block after an incomplete element (pos 1 or 2 in the entity): its start is
 // not known yet.
-bool next_elt(const Spec& s, int pos, Elt& e, Fail& f);
+bool next_elt(const Spec& s, int pos, Elt& e, Error& f);
 
 // Replaces the corner between h and e by a fillet (eb > 0) or a chamfer
-// (eb < 0) `ins`, trimming both. Returns 0 or the error number.
-int corner(comp::Elem& h, double eb, comp::Elem& e, comp::Elem& ins, std::string& detail);
+// (eb < 0) `ins`, trimming both.
+Error corner(comp::Elem& h, double eb, comp::Elem& e, comp::Elem& ins);
 
 }  // namespace pupitre::pgp::detail

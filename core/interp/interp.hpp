@@ -418,7 +418,7 @@ class Interpreter final : private EAccess {
     bool p46_drill(const Plan& p, const p46::Def& d);
     bool p46_cutter(const Plan& p, int nu, const p46::Def& d, double& R);
     bool p46_cut(const p46::Def& d, int nu, const P46Cut& c);
-    bool p46_fail(const p46::Error& e, const p46::Def& d);
+    bool p46_fail(const Error& e, const p46::Def& d);
     // The axes of a G46 plane: first, second and normal (interp_pocket46.cpp).
     struct P46Axes {
         int a0, a1, an;
@@ -438,7 +438,7 @@ class Interpreter final : private EAccess {
     bool pgp_wanted(const Plan& p) const;
     bool pgp_block(const Plan& p, const Axes& target);
     bool pgp_emit(const std::vector<pgp::Elem>& elems);
-    bool pgp_fail(const pgp::Error& e);
+    bool pgp_fail(const Error& e);
     bool pgp_close();
     // Turning cycles (interp_turning.cpp): G64 waits for its stock until G80.
     turning::G64Args g64_;

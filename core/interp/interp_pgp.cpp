@@ -35,8 +35,8 @@ bool Interpreter::pgp_wanted(const Plan& p) const {
     return words && !complete && (p.mode.motion == 2 || p.mode.motion == 3 || p.mode.motion < 0);
 }
 
-bool Interpreter::pgp_fail(const pgp::Error& e) {
-    auto it = pgp_ctx_.find(e.tag);
+bool Interpreter::pgp_fail(const Error& e) {
+    auto it = pgp_ctx_.find(e.item);
     if (it != pgp_ctx_.end()) loc_ = it->second.loc;
     return fail(e.code ? e.code : 113, e.detail);
 }
@@ -124,8 +124,7 @@ bool Interpreter::pgp_block(const Plan& p, const Axes& target) {
                                   "(pupitre-iso(5), PGP)"));
     pgp_ctx_[s.tag] = CompCtx{loc_, modal_, modal_.motion, target, 0};
     std::vector<pgp::Elem> out;
-    pgp::Error e;
-    if (!pgp_.push(s, out, e)) return pgp_fail(e);
+    if (Error e = pgp_.push(s, out)) return pgp_fail(e);
     if (!pgp_emit(out)) return false;
     if (pgp_.pending()) {
         gate_->holding = true;
@@ -142,8 +141,7 @@ bool Interpreter::pgp_block(const Plan& p, const Axes& target) {
 bool Interpreter::pgp_close() {
     if (!pgp_.pending()) return true;
     std::vector<pgp::Elem> out;
-    pgp::Error e;
-    if (!pgp_.finish(out, e)) return pgp_fail(e);
+    if (Error e = pgp_.finish(out)) return pgp_fail(e);
     return pgp_emit(out);
 }
 

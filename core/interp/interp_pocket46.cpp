@@ -140,8 +140,7 @@ bool Interpreter::p46_section(const Plan& p, int nu) {
     if (!p46_close_section()) return false;
     if (nu == 9) {
         p46_.defining = false;
-        p46::Error e;
-        if (!p46::check(p46_.def, e)) return p46_fail(e, p46_.def);
+        if (Error e = p46::check(p46_.def)) return p46_fail(e, p46_.def);
         p46_.defs[p46_.def.np] = p46_.def;
         return true;
     }
@@ -287,8 +286,7 @@ bool Interpreter::p46_contour_elem(const Plan& p, const P46Axes& ax, int motion,
         return fail(269, strf(tr("a circle without its centre (%s %s) or radius (R)"),
                               centre_name(ax.a0).c_str(), centre_name(ax.a1).c_str()));
     std::vector<pgp::Elem> out;
-    pgp::Error e;
-    if (!p46_.solver.push(s, out, e)) return fail(e.code, e.detail);
+    if (Error e = p46_.solver.push(s, out)) return fail(e);
     for (const pgp::Elem& el : out) p46_.def.sections.back().elems.push_back(el.geo);
     p46_.pos = p46_.solver.pending() ? t : p46_.solver.position();
     return true;
@@ -297,22 +295,22 @@ bool Interpreter::p46_contour_elem(const Plan& p, const P46Axes& ax, int motion,
 bool Interpreter::p46_close_section() {
     if (p46_.blocks < 0 || p46_.def.sections.empty()) return true;
     std::vector<pgp::Elem> out;
-    pgp::Error e;
-    if (!p46_.first && !p46_.solver.finish(out, e)) return fail(e.code, e.detail);
+    if (Error e = p46_.first ? Error{} : p46_.solver.finish(out)) return fail(e);
     for (const pgp::Elem& el : out) p46_.def.sections.back().elems.push_back(el.geo);
     if (p46_.def.sections.back().elems.empty())
         return fail(284, tr("a contour section with no element"));
     return true;
 }
 
-bool Interpreter::p46_fail(const p46::Error& e, const p46::Def& d) {
-    if (e.section >= 0 && size_t(e.section) < d.sections.size()) {
-        const p46::Section& s = d.sections[size_t(e.section)];
+bool Interpreter::p46_fail(const Error& e, const p46::Def& d) {
+    if (e.item >= 0 && size_t(e.item) < d.sections.size()) {
+        const p46::Section& s = d.sections[size_t(e.item)];
         // TRANSLATORS: %s is the reason of a pocket error; the contour it is about follows.
-        return fail(e.code, s.n >= 0 ? strf(tr("%s (contour N%ld)"), e.why.c_str(), s.n)
-                                     : strf(tr("%s (contour at line %d)"), e.why.c_str(), s.line));
+        return fail(e.code, s.n >= 0
+                                ? strf(tr("%s (contour N%ld)"), e.detail.c_str(), s.n)
+                                : strf(tr("%s (contour at line %d)"), e.detail.c_str(), s.line));
     }
-    return fail(e.code, e.why);
+    return fail(e.code, e.detail);
 }
 
 // Runs at one depth: a plunge at each run not linked to the previous one.
@@ -432,8 +430,7 @@ bool Interpreter::p46_drill(const Plan& p, const p46::Def& d) {
     if (!code) return fail(268, tr("G46 NU10 needs G81, G83 or G87"));
     std::vector<p46::Run> runs;
     std::vector<double> ys;
-    p46::Error e;
-    if (!p46::roughing(d, d.ed / 2, runs, ys, e)) return p46_fail(e, d);
+    if (Error e = p46::roughing(d, d.ed / 2, runs, ys)) return p46_fail(e, d);
     Modal saved = modal_;
     CycleParams saved_cyc = cyc_;
     cyc_ = CycleParams{};
@@ -491,16 +488,15 @@ bool Interpreter::p46_cutter(const Plan& p, int nu, const p46::Def& d, double& R
 bool Interpreter::p46_cut(const p46::Def& d, int nu, const P46Cut& c) {
     const P46Axes ax = p46_axes(d.plane);
     std::vector<p46::Run> runs;
-    p46::Error e;
     if (nu == 15) {
         std::vector<double> ys;
-        if (!p46::roughing(d, c.R, runs, ys, e)) return p46_fail(e, d);
+        if (Error e = p46::roughing(d, c.R, runs, ys)) return p46_fail(e, d);
         warn_plunges(d, runs);
     } else {
         bool any = false;
         for (const auto& s : d.sections) any = any || s.nu == 1 || s.nu == 2 || s.nu == 6;
         if (!any) return true;  // NU20 is ignored for facing outlines and recesses (000:6369)
-        if (!p46::finishing(d, c.R, c.jf, runs, e)) return p46_fail(e, d);
+        if (Error e = p46::finishing(d, c.R, c.jf, runs)) return p46_fail(e, d);
     }
     Modal saved = modal_;
     modal_.feed_mode = 94;

@@ -144,14 +144,13 @@ bool Interpreter::profile_block(Plan& q, int line, ProfileRead& r) {
     if (q.mode.dist >= 0) modal_.incremental = q.mode.dist == 91;
     if (q.tech.has_f && profile_feed_ <= 0) profile_feed_ = q.tech.f;
     if (!r.started) return profile_start(q, r);
-    pgp::Error e;
     bool motion = q.to.axis[X] || q.to.axis[Z] || q.pgp.any || q.to.ijk.any() || q.to.has_r;
     if (!motion) {
-        if (!r.solver.idle(e)) return fail(e.code, e.detail);
+        if (Error e = r.solver.idle()) return fail(e);
         return true;
     }
-    if (!r.solver.push(profile_spec(q, r.solver.position(), line), r.elems, e))
-        return fail(e.code, e.detail);
+    if (Error e = r.solver.push(profile_spec(q, r.solver.position(), line), r.elems))
+        return fail(e);
     ++r.count;
     return true;
 }
@@ -202,8 +201,7 @@ bool Interpreter::turning_profile(long na, long nb, turning::Profile& out, comp:
         Plan q;
         if (!decode(blk, q) || !profile_block(q, line, r)) return false;
     }
-    pgp::Error e;
-    if (!r.solver.finish(r.elems, e)) return fail(e.code, e.detail);
+    if (Error e = r.solver.finish(r.elems)) return fail(e);
     loc_ = saved;
     modal_ = saved_modal;
     if (!r.started || r.elems.empty())

@@ -236,8 +236,7 @@ inline bool Interpreter::pgp_motion(const Plan& p) {
         first_move_ = false;
         return pgp_block(p, target);
     }
-    pgp::Error e;
-    if (!pgp_.idle(e)) return fail(e.code, e.detail);  // at the block that overflows
+    if (Error e = pgp_.idle()) return fail(e);  // at the block that overflows
     if (p.to.axis.any()) return comp_other_axes(target_of(p), p.to.axis);
     return true;
 }

@@ -91,7 +91,7 @@ struct Parser {
 
 struct Result {
     bool ok = true;
-    pgp::Error err;
+    Error err;
     std::vector<Elem> els;
 };
 
@@ -108,12 +108,12 @@ Result run(V2 start, const std::vector<std::string>& blocks, bool lathe = false)
     for (const std::string& b : blocks) {
         ++tag;
         if (b == "idle") {
-            if (!s.idle(r.err)) return r.ok = false, r;
+            if ((r.err = s.idle())) return r.ok = false, r;
             continue;
         }
-        if (!s.push(p.parse(b, tag), r.els, r.err)) return r.ok = false, r;
+        if ((r.err = s.push(p.parse(b, tag), r.els))) return r.ok = false, r;
     }
-    if (!s.finish(r.els, r.err)) return r.ok = false, r;
+    if ((r.err = s.finish(r.els))) return r.ok = false, r;
     V2 at = start;
     for (const Elem& e : r.els) {
         EXPECT_EQ(e.geo.a.x(), at.x());
@@ -131,7 +131,7 @@ Result run(V2 start, const std::vector<std::string>& blocks, bool lathe = false)
 
 Result ok(V2 start, const std::vector<std::string>& blocks, bool lathe = false) {
     Result r = run(start, blocks, lathe);
-    EXPECT_TRUE(r.ok) << "error " << r.err.code << " on block " << r.err.tag << ": "
+    EXPECT_TRUE(r.ok) << "error " << r.err.code << " on block " << r.err.item << ": "
                       << r.err.detail;
     return r;
 }
@@ -139,7 +139,7 @@ Result ok(V2 start, const std::vector<std::string>& blocks, bool lathe = false) 
 int error(V2 start, const std::vector<std::string>& blocks, int* tag = nullptr) {
     Result r = run(start, blocks);
     EXPECT_FALSE(r.ok) << "expected an error";
-    if (tag) *tag = r.err.tag;
+    if (tag) *tag = r.err.item;
     EXPECT_FALSE(r.err.detail.empty());
     return r.err.code;
 }
@@ -662,30 +662,29 @@ TEST(Pgp, EbOnCompleteBlocks) {
 TEST(Pgp, PendingPositionIdle) {
     pgp::Solver s;
     std::vector<Elem> out;
-    pgp::Error err;
     Parser p;
     s.start({5, 5});
     EXPECT_FALSE(s.pending());
-    EXPECT_TRUE(s.idle(err));  // nothing pending: no count
-    EXPECT_TRUE(s.idle(err));
-    EXPECT_TRUE(s.idle(err));
-    ASSERT_TRUE(s.push(p.parse("G1 EA0 ES", 1), out, err));
+    EXPECT_FALSE(s.idle());  // nothing pending: no count
+    EXPECT_FALSE(s.idle());
+    EXPECT_FALSE(s.idle());
+    ASSERT_FALSE(s.push(p.parse("G1 EA0 ES", 1), out));
     EXPECT_TRUE(s.pending());
     EXPECT_TRUE(out.empty());
     EXPECT_EQ(s.position(), V2(5, 5));
-    EXPECT_TRUE(s.idle(err));
-    EXPECT_TRUE(s.idle(err));
-    ASSERT_TRUE(s.push(p.parse("EA90 X20 Y30", 2), out, err));
+    EXPECT_FALSE(s.idle());
+    EXPECT_FALSE(s.idle());
+    ASSERT_FALSE(s.push(p.parse("EA90 X20 Y30", 2), out));
     EXPECT_FALSE(s.pending());
     ASSERT_EQ(out.size(), 2u);
     EXPECT_EQ(out[0].tag, 1);
     EXPECT_EQ(out[1].tag, 2);
     EXPECT_EQ(s.position(), V2(20, 30));
-    ASSERT_TRUE(s.push(p.parse("X30 EB+1", 3), out, err));
+    ASSERT_FALSE(s.push(p.parse("X30 EB+1", 3), out));
     EXPECT_TRUE(s.pending());  // the fillet waits for the next element
     EXPECT_EQ(out.size(), 2u);
     EXPECT_EQ(s.position(), V2(30, 30));
-    ASSERT_TRUE(s.finish(out, err));
+    ASSERT_FALSE(s.finish(out));
     EXPECT_EQ(out.size(), 3u);
     EXPECT_FALSE(s.pending());
 }

@@ -299,11 +299,12 @@ TEST(Pocket46, PlanRespectsStepOverOnAnyRegion) {
     t.nu = 2;
     t.elems = {L(20, 10, 40, 10), L(40, 10, 30, 30), L(30, 30, 20, 10)};
     d.sections = {o, t};
-    p46::Error err;
-    ASSERT_TRUE(p46::check(d, err)) << err.why;
+    Error err = p46::check(d);
+    ASSERT_FALSE(err) << err.detail;
     std::vector<p46::Run> runs;
     std::vector<double> ys;
-    ASSERT_TRUE(p46::roughing(d, 5, runs, ys, err)) << err.why;
+    err = p46::roughing(d, 5, runs, ys);
+    ASSERT_FALSE(err) << err.detail;
     for (size_t i = 1; i < ys.size(); ++i) EXPECT_LE(ys[i] - ys[i - 1], 6 + 1e-9);
     EXPECT_NEAR(ys.front(), 5.3, 1e-6);
     EXPECT_NEAR(ys.back(), 60 - 5.3, 1e-6);

@@ -237,15 +237,14 @@ TEST(Pocket46, GeneratedPocketsNeverEnterTheWallsOrIslands) {
                            (ccw ? " ccw" : " cw") + " islands " +
                            std::to_string(pk.islands.size()) + " R" + std::to_string(R) + " J" +
                            std::to_string(J);
-        p46::Error err;
-        if (!p46::check(d, err)) {
-            ADD_FAILURE() << name << ": " << err.code << " " << err.why;
+        if (Error err = p46::check(d)) {
+            ADD_FAILURE() << name << ": " << err.code << " " << err.detail;
             continue;
         }
         std::vector<p46::Run> runs;
         std::vector<double> ys;
-        if (!p46::roughing(d, R, runs, ys, err)) {
-            ADD_FAILURE() << name << ": roughing " << err.code << " " << err.why;
+        if (Error err = p46::roughing(d, R, runs, ys)) {
+            ADD_FAILURE() << name << ": roughing " << err.code << " " << err.detail;
             continue;
         }
         ++planned;
@@ -253,7 +252,7 @@ TEST(Pocket46, GeneratedPocketsNeverEnterTheWallsOrIslands) {
         std::vector<p46::Run> fin;
         // The finishing may refuse to engage where the roughing left material
         // (288): a refusal, not a gouge.
-        if (p46::finishing(d, R, 0, fin, err))
+        if (!p46::finishing(d, R, 0, fin))
             bad += check_runs(pk, fin, R, name + " finishing"), ++finished;
         failing += bad > 0;
     }
