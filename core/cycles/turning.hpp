@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/diag.hpp"
 #include "core/geometry/comp.hpp"
 
 namespace pupitre::turning {
@@ -33,7 +34,7 @@ struct Profile {
     std::vector<comp::Elem> elems;
 };
 
-// Each cycle returns 0 or a NUM error number with `why` filled. `out` receives
+// Each cycle answers an Error (diag.hpp), empty on success. `out` receives
 // the moves in order from the tool position `tool` (the last programmed point
 // before the cycle, in the active corrector's terms); the cycles never see a
 // diameter: X words reach them as radii. Errors the caller raises itself: 140
@@ -52,8 +53,8 @@ struct G64Args {
     // passes cut it as written, into the part (§11 item 6, warning 1116).
     mutable bool allowance_inside = false;
 };
-int g64(const Profile& finished, const std::vector<V2>& stock, V2 tool, const G64Args& a,
-        std::vector<Move>& out, std::string& why);
+Error g64(const Profile& finished, const std::vector<V2>& stock, V2 tool, const G64Args& a,
+          std::vector<Move>& out);
 
 // G65 N<a> N<b> X.. | Z.. [I..] [K..] EA.. P.. | R.. [Q..] [EF..] [F..] (§6.4).
 struct G65Args {
@@ -70,8 +71,7 @@ struct G65Args {
     // written (warning 1116).
     mutable bool allowance_inside = false;
 };
-int g65(const Profile& finished, V2 tool, const G65Args& a, std::vector<Move>& out,
-        std::string& why);
+Error g65(const Profile& finished, V2 tool, const G65Args& a, std::vector<Move>& out);
 
 // G63 N<a> N<b> X.. Z.. EX.. | EZ.. P.. | R.. [EA.. | EU.. EW..] [EB..] [EC..] [ER..]
 // [Q..] [EQ..] [EF..] (§6.5, 1040/1060).
@@ -91,8 +91,7 @@ struct G63Args {
     double eq = 0;           // minimum chip
     double clearance = 1.0;
 };
-int g63(const Profile& finished, V2 tool, const G63Args& a, std::vector<Move>& out,
-        std::string& why);
+Error g63(const Profile& finished, V2 tool, const G63Args& a, std::vector<Move>& out);
 
 // G66 D.. X.. Z.. [EA..] P.. | R.. [EP..] [EF..] [F..] (§6.6). The moves are in the
 // terms of the first corrector (the one active at the call); after the cycle the
@@ -111,7 +110,7 @@ struct G66Args {
     double ep = 0;        // 45° move at the end of each plunge, mm
     double ef = 0;        // dwell at the bottom of each plunge, s
 };
-int g66(V2 tool, const G66Args& a, std::vector<Move>& out, std::string& why);
+Error g66(V2 tool, const G66Args& a, std::vector<Move>& out);
 
 // G33 X.. Z.. K.. [EA..] [EB..] P.. [Q..] [R..] [F..] [S.. | ES..] (§6.12). The S of
 // the block is a number of passes here, not a spindle speed.
@@ -135,7 +134,7 @@ struct G33Args {
     bool plane_ok = true;         // G18/G20 active; error 836 when false
     bool radius_comp = false;     // G41/G42 active; error 27
 };
-int g33(V2 tool, const G33Args& a, std::vector<Move>& out, std::string& why);
+Error g33(V2 tool, const G33Args& a, std::vector<Move>& out);
 
 // G38 X.. Z.. [K..] (§6.13): one synchronised move per block, chained. `prev_k` is
 // the lead of the previous G38 block (0 when this block starts a chain); the lead
@@ -148,7 +147,7 @@ struct G38Args {
     bool spindle_turning = true;
     bool radius_comp = false;
 };
-int g38(V2 tool, const G38Args& a, std::vector<Move>& out, std::string& why);
+Error g38(V2 tool, const G38Args& a, std::vector<Move>& out);
 
 // The threading axis of a synchronised move from `from` to `to` (G38: the one with
 // the larger displacement): 0 for Z, 1 for X. The feed is the lead times the

@@ -88,26 +88,16 @@ double lowest(const Material& m, double x0, double x1) {
 }
 
 // G65 argument checks (§6.4 errors).
-int g65_check(const Profile& fin, const G65Args& a, std::string& why) {
-    if ((a.has_p && a.has_r) || (a.has_x && a.has_z)) {
-        why = tr("G65 takes P or R, and X or Z, not both");
-        return 889;
-    }
+Error g65_check(const Profile& fin, const G65Args& a) {
+    if ((a.has_p && a.has_r) || (a.has_x && a.has_z))
+        return {889, tr("G65 takes P or R, and X or Z, not both")};
     bool axial = a.has_z && a.has_p, frontal = a.has_x && a.has_r;
-    if (!axial && !frontal) {
-        why = tr("G65 needs Z with P (axial groove) or X with R (frontal groove)");
-        return 862;
-    }
-    if (!a.has_ea) {
-        why = tr("G65 needs the infeed angle EA");
-        return 2;
-    }
+    if (!axial && !frontal)
+        return {862, tr("G65 needs Z with P (axial groove) or X with R (frontal groove)")};
+    if (!a.has_ea) return {2, tr("G65 needs the infeed angle EA")};
     double step = axial ? a.p : a.r;
-    if (!(step > 0)) {
-        why = tr("the depth of cut must be positive");
-        return 862;
-    }
-    return zone::check_profile(fin, why);
+    if (!(step > 0)) return {862, tr("the depth of cut must be positive")};
+    return zone::check_profile(fin);
 }
 
 // What the steps of G65 share: the frame, the infeed line from S, the limit of
@@ -135,44 +125,34 @@ struct G65Walk {
 
 // The frame of the passes: the infeed EA goes down the level axis, and the
 // passes run from S towards the limit Z (X) on the side EA leads to.
-int g65_frame(const G65Args& a, V2 tool, G65Plan& p, std::string& why) {
+Error g65_frame(const G65Args& a, V2 tool, G65Plan& p) {
     bool axial = a.has_z && a.has_p, frontal = a.has_x && a.has_r;
     p.step = axial ? a.p : a.r;
     p.fr.swap = frontal;
     p.u = p.fr.to(V2(std::cos(a.ea * kDeg), std::sin(a.ea * kDeg)));
-    if (std::fabs(p.u.y()) < 1e-9) {
-        why = tr("EA runs parallel to the passes");
-        return 863;
-    }
+    if (std::fabs(p.u.y()) < 1e-9) return {863, tr("EA runs parallel to the passes")};
     p.fr.s = p.u.y() < 0 ? 1 : -1;  // the infeed goes down the level axis
     p.u = p.fr.to(V2(std::cos(a.ea * kDeg), std::sin(a.ea * kDeg)));
     p.s = p.fr.to(tool);
     p.xa = axial ? a.z : a.x;
     p.d = p.xa > p.s.x() + kUm ? 1 : p.xa < p.s.x() - kUm ? -1 : 0;
-    if (p.d == 0 || p.u.x() * p.d < -1e-9) {
-        why = tr("the limit of the passes is not on the side EA leads to");
-        return 863;
-    }
-    return 0;
+    if (p.d == 0 || p.u.x() * p.d < -1e-9)
+        return {863, tr("the limit of the passes is not on the side EA leads to")};
+    return {};
 }
 
 // S outside the part; C, the first contact of the EA line (§6.4 step 1); the
 // levels go down to C or to the profile's lowest point before the limit.
-int g65_contact(const G65Args& a, G65Plan& p, std::string& why) {
+Error g65_contact(const G65Args& a, G65Plan& p) {
     const Material& m = p.m;
-    if (m.in_A(p.s)) {
-        why = tr("the start point lies inside the finished profile");
-        return 875;
-    }
+    if (m.in_A(p.s)) return {875, tr("the start point lies inside the finished profile")};
     double span = (p.s - m.F.front().a).norm();
     for (const Elem& e : m.F) span = std::max(span, (p.s - e.b).norm());
-    if (!first_contact(m, p.s, p.u, 2 * span + 100, p.c)) {
-        why = tr("the EA line does not meet the finished profile");
-        return 875;
-    }
+    if (!first_contact(m, p.s, p.u, 2 * span + 100, p.c))
+        return {875, tr("the EA line does not meet the finished profile")};
     p.y_low = std::min(p.c.y(), lowest(m, std::min(p.xa, p.c.x()), std::max(p.xa, p.c.x())));
     p.cl = std::min(a.q > 0 ? a.q : std::max(0.0, a.clearance), p.step / 2);
-    return 0;
+    return {};
 }
 
 // Start of the pass at level y: on the EA line down to C, below it where the
@@ -250,38 +230,25 @@ void g65_out(G65Walk& w, const G65Plan& p) {
 }
 
 // G66 argument checks (§6.6 errors).
-int g66_check(const G66Args& a, std::string& why) {
-    if (a.has_p && a.has_r) {
-        why = tr("G66 takes P or R, not both");
-        return 889;
-    }
-    if (!(a.has_p || a.has_r) || !a.has_x || !a.has_z) {
-        why = tr("G66 needs X, Z and P or R");
-        return 862;
-    }
+Error g66_check(const G66Args& a) {
+    if (a.has_p && a.has_r) return {889, tr("G66 takes P or R, not both")};
+    if (!(a.has_p || a.has_r) || !a.has_x || !a.has_z)
+        return {862, tr("G66 needs X, Z and P or R")};
     double step = a.has_p ? a.p : a.r;
-    if (!(step > 0)) {
-        why = tr("the distance between plunges must be positive");
-        return 862;
-    }
-    if (a.d_first == 0 || a.d == 0) {
-        why = a.d == 0 ? tr("G66 needs the second corrector D")
-                       : tr("no corrector active before G66");
-        return 898;
-    }
-    if (a.milling_tool) {
-        why = tr("G66 with a milling tool");
-        return 864;
-    }
-    return 0;
+    if (!(step > 0)) return {862, tr("the distance between plunges must be positive")};
+    if (a.d_first == 0 || a.d == 0)
+        return {898, a.d == 0 ? tr("G66 needs the second corrector D")
+                              : tr("no corrector active before G66")};
+    if (a.milling_tool) return {864, tr("G66 with a milling tool")};
+    return {};
 }
 }  // namespace
 
-int g65(const Profile& fin, V2 tool, const G65Args& a, std::vector<Move>& out, std::string& why) {
+Error g65(const Profile& fin, V2 tool, const G65Args& a, std::vector<Move>& out) {
     out.clear();
-    if (int e = g65_check(fin, a, why)) return e;
+    if (Error e = g65_check(fin, a)) return e;
     G65Plan p;
-    if (int e = g65_frame(a, tool, p, why)) return e;
+    if (Error e = g65_frame(a, tool, p)) return e;
     p.m.F = p.fr.to(fin.elems);
     p.m.translate(p.fr.to(V2(a.k, a.i)));
     // The allowance as written (turning.md §11 item 6): pointing down the level
@@ -294,19 +261,19 @@ int g65(const Profile& fin, V2 tool, const G65Args& a, std::vector<Move>& out, s
         for (const Elem& e : fin.elems) moved.elems.push_back(translated(e, V2(a.k, a.i)));
         G65Args written = a;
         written.i = written.k = 0;
-        return g65(moved, tool, written, out, why);
+        return g65(moved, tool, written, out);
     }
-    if (int e = g65_contact(a, p, why)) return e;
+    if (Error e = g65_contact(a, p)) return e;
     p.loop = zone::part_loop(p.m.F);
     G65Walk w{Emit{p.fr, out, p.s}, p.s, {p.s}};
     g65_passes(w, p);
     g65_out(w, p);
-    return 0;
+    return {};
 }
 
-int g66(V2 tool, const G66Args& a, std::vector<Move>& out, std::string& why) {
+Error g66(V2 tool, const G66Args& a, std::vector<Move>& out) {
     out.clear();
-    if (int e = g66_check(a, why)) return e;
+    if (Error e = g66_check(a)) return e;
     double step = a.has_p ? a.p : a.r;
     // Frame: plunges along y, spread along x (R: radial groove, plunges along X
     // spread along Z; P: frontal groove, plunges along Z spread along X).
@@ -316,10 +283,7 @@ int g66(V2 tool, const G66Args& a, std::vector<Move>& out, std::string& why) {
     V2 B = fr.to(V2(a.z, a.x));
     V2 Bt = B + fr.to(a.gauge_delta);  // B in the first corrector's terms
     double width = Bt.x() - A.x();
-    if (width * (B.x() - A.x()) < 0) {
-        why = tr("the groove is narrower than the tool");
-        return 863;
-    }
+    if (width * (B.x() - A.x()) < 0) return {863, tr("the groove is narrower than the tool")};
     double slope = std::tan(a.ea * kDeg);
     auto bottom = [&](double x) { return Bt.y() + (x - Bt.x()) * slope; };
     int n = int(std::ceil(std::fabs(width) / step - 1e-9));
@@ -327,10 +291,8 @@ int g66(V2 tool, const G66Args& a, std::vector<Move>& out, std::string& why) {
     for (int i = 0; i <= n; ++i) {
         double x = n ? A.x() + width * i / n : A.x();
         double depth = bottom(x) - A.y();
-        if (std::fabs(depth) <= kUm || (depth < 0 ? -1 : 1) != dir) {
-            why = tr("the groove bottom does not lie beyond the approach point");
-            return 863;
-        }
+        if (std::fabs(depth) <= kUm || (depth < 0 ? -1 : 1) != dir)
+            return {863, tr("the groove bottom does not lie beyond the approach point")};
     }
     Emit em{fr, out, A};
     int side = width < 0 ? -1 : 1;  // progression along x
@@ -349,7 +311,7 @@ int g66(V2 tool, const G66Args& a, std::vector<Move>& out, std::string& why) {
         em.go(0, V2(em.cur.x(), A.y()));
     }
     em.go(0, V2(Bt.x(), A.y()));
-    return 0;
+    return {};
 }
 
 }  // namespace pupitre::turning

@@ -65,16 +65,11 @@ void build_region(const std::vector<V2>& b, const Profile& f, Material& m) {
     }
 }
 
-int check_region(const Material& m, std::string& why) {
-    if (m.M.size() < 2 || std::fabs(area(m.M)) < 1e-9) {
-        why = tr("the stock and the finished profile enclose no material");
-        return 874;
-    }
-    if (self_intersects(m.M)) {
-        why = tr("the stock crosses the finished profile");
-        return 874;
-    }
-    return 0;
+Error check_region(const Material& m) {
+    if (m.M.size() < 2 || std::fabs(area(m.M)) < 1e-9)
+        return {874, tr("the stock and the finished profile enclose no material")};
+    if (self_intersects(m.M)) return {874, tr("the stock crosses the finished profile")};
+    return {};
 }
 
 Material to_frame(const Material& m, const Frame& fr) {
@@ -129,32 +124,21 @@ std::vector<double> levels(double y_top, double y_min, double step) {
 }
 // The arguments, the finished profile and the stock, in the order the NUM
 // checks them (§6.3 step 1): the first fault's error number, or 0.
-int check_g64(const Profile& fin, const std::vector<V2>& stock, const std::vector<Elem>& bs,
-              const G64Args& a, std::string& why) {
-    if (!a.has_p && !a.has_r) {
-        why = tr("G64 needs P (passes along Z) or R (passes along X)");
-        return 873;
-    }
-    if (a.has_p && a.has_r) {
-        why = tr("G64 takes P or R, not both");
-        return 889;
-    }
+Error check_g64(const Profile& fin, const std::vector<V2>& stock, const std::vector<Elem>& bs,
+                const G64Args& a) {
+    if (!a.has_p && !a.has_r)
+        return {873, tr("G64 needs P (passes along Z) or R (passes along X)")};
+    if (a.has_p && a.has_r) return {889, tr("G64 takes P or R, not both")};
     double step = a.has_p ? a.p : a.r;
-    if (!(step > 0)) {
-        why = tr("the depth of cut must be positive");
-        return 873;
-    }
-    if (int e = zone::check_profile(fin, why)) return e;
-    if (stock.empty()) {
-        why = tr("no stock point between G64 and G80");
-        return 872;
-    }
-    if (int e = zone::check_axis(
-            fin.elems, N_("the finished profile crosses the spindle axis (X below 0)"), why))
+    if (!(step > 0)) return {873, tr("the depth of cut must be positive")};
+    if (Error e = zone::check_profile(fin)) return e;
+    if (stock.empty()) return {872, tr("no stock point between G64 and G80")};
+    if (Error e = zone::check_axis(fin.elems,
+                                   N_("the finished profile crosses the spindle axis (X below 0)")))
         return e;
-    if (int e = zone::check_axis(bs, N_("the stock crosses the spindle axis (X below 0)"), why))
+    if (Error e = zone::check_axis(bs, N_("the stock crosses the spindle axis (X below 0)")))
         return e;
-    return 0;
+    return {};
 }
 
 // The coordinate along which the levels step, and the one the passes run along.
@@ -210,18 +194,16 @@ void add_land_levels(const Material& m, double y_top, std::vector<double>& ys) {
     }
 }
 
-int pass_levels(const Material& m, const std::vector<V2>& stock, const Frame& fr, double step,
-                std::vector<double>& ys, std::string& why) {
+Error pass_levels(const Material& m, const std::vector<V2>& stock, const Frame& fr, double step,
+                  std::vector<double>& ys) {
     double y_top = -kInf, y_min = kInf;
     for (const V2& p : stock) y_top = std::max(y_top, fr.to(p).y());
     for (const Elem& e : m.F) y_min = std::min(y_min, min_y(translated(e, m.t)));
-    if ((y_top - y_min) / step > 1e6) {
-        why = tr("the depth of cut is too small for the stock");
-        return 873;
-    }
+    if ((y_top - y_min) / step > 1e6)
+        return {873, tr("the depth of cut is too small for the stock")};
     ys = levels(y_top, y_min, step);
     add_land_levels(m, y_top, ys);
-    return 0;
+    return {};
 }
 
 // Cutting direction: from the stock into the material, towards the profile
@@ -382,11 +364,11 @@ void rough_passes(Emit& em, const Material& m, const std::vector<double>& ys, in
 }
 }  // namespace
 
-int g64(const Profile& fin, const std::vector<V2>& stock, V2 tool, const G64Args& a,
-        std::vector<Move>& out, std::string& why) {
+Error g64(const Profile& fin, const std::vector<V2>& stock, V2 tool, const G64Args& a,
+          std::vector<Move>& out) {
     out.clear();
     std::vector<Elem> bs = polyline(stock);
-    if (int e = check_g64(fin, stock, bs, a, why)) return e;
+    if (Error e = check_g64(fin, stock, bs, a)) return e;
     double step = a.has_p ? a.p : a.r;
 
     bool rev = stock_reversed(stock, fin);
@@ -395,13 +377,13 @@ int g64(const Profile& fin, const std::vector<V2>& stock, V2 tool, const G64Args
     Material real;
     real.F = fin.elems;
     build_region(b, fin, real);
-    if (int e = check_region(real, why)) return e;
+    if (Error e = check_region(real)) return e;
 
     Frame fr = pass_frame(fin, real, stock, tool, a.has_r);
     Material m = to_frame(real, fr);
     m.translate(fr.to(V2(a.k, a.i)));
     std::vector<double> ys;
-    if (int e = pass_levels(m, stock, fr, step, ys, why)) return e;
+    if (Error e = pass_levels(m, stock, fr, step, ys)) return e;
     int d = pass_direction(m, ys, fin, bs, rev, fr);
     // The allowance is a signed translation (turning.md §11 item 6): the NUM
     // cannot know which side is material. Where it points into the part (a
@@ -414,49 +396,32 @@ int g64(const Profile& fin, const std::vector<V2>& stock, V2 tool, const G64Args
         for (const Elem& e : fin.elems) moved.elems.push_back(translated(e, V2(a.k, a.i)));
         G64Args written = a;
         written.i = written.k = 0;
-        return g64(moved, stock, tool, written, out, why);
+        return g64(moved, stock, tool, written, out);
     }
     double c = std::min(std::max(0.0, a.clearance), step / 2);
 
     Emit em{fr, out, fr.to(tool)};
     rough_passes(em, m, ys, d, c);
-    return 0;
+    return {};
 }
 
 namespace {
 // G63 argument checks (§6.5 errors, the convention of spec/README.md item 37).
-int g63_check(const Profile& fin, const G63Args& a, std::string& why) {
-    if (!a.has_p && !a.has_r) {
-        why = tr("G63 needs P (passes along Z) or R (passes along X)");
-        return 873;
-    }
-    if ((a.has_p && a.has_r) || (a.has_ex && a.has_ez)) {
-        why = tr("G63 takes P or R, and EZ or EX, not both");
-        return 889;
-    }
-    if ((a.has_p && !a.has_ez) || (a.has_r && !a.has_ex)) {
-        why = tr("G63 needs EZ with P or EX with R");
-        return 862;
-    }
-    if (!a.has_x || !a.has_z) {
-        why = tr("G63 needs its start point X Z");
-        return 2;
-    }
-    if (!((a.has_p ? a.p : a.r) > 0)) {
-        why = tr("the depth of cut must be positive");
-        return 873;
-    }
-    if (a.er < 0 || a.eq < 0) {
-        why = tr("ER and EQ must not be negative");
-        return 889;
-    }
-    if ((a.has_eb && !(a.eb > 0 && a.eb < 180)) || (a.has_ec && !(a.ec >= 0 && a.ec < 180))) {
-        why = tr("EB must lie in ]0, 180[ and EC in [0, 180[ degrees");
-        return 876;
-    }
-    if (int e = zone::check_profile(fin, why)) return e;
+Error g63_check(const Profile& fin, const G63Args& a) {
+    if (!a.has_p && !a.has_r)
+        return {873, tr("G63 needs P (passes along Z) or R (passes along X)")};
+    if ((a.has_p && a.has_r) || (a.has_ex && a.has_ez))
+        return {889, tr("G63 takes P or R, and EZ or EX, not both")};
+    if ((a.has_p && !a.has_ez) || (a.has_r && !a.has_ex))
+        return {862, tr("G63 needs EZ with P or EX with R")};
+    if (!a.has_x || !a.has_z) return {2, tr("G63 needs its start point X Z")};
+    if (!((a.has_p ? a.p : a.r) > 0)) return {873, tr("the depth of cut must be positive")};
+    if (a.er < 0 || a.eq < 0) return {889, tr("ER and EQ must not be negative")};
+    if ((a.has_eb && !(a.eb > 0 && a.eb < 180)) || (a.has_ec && !(a.ec >= 0 && a.ec < 180)))
+        return {876, tr("EB must lie in ]0, 180[ and EC in [0, 180[ degrees")};
+    if (Error e = zone::check_profile(fin)) return e;
     return zone::check_axis(fin.elems,
-                            N_("the finished profile crosses the spindle axis (X below 0)"), why);
+                            N_("the finished profile crosses the spindle axis (X below 0)"));
 }
 
 // Angle of the profile where a pass enters a groove, from the pass direction
@@ -513,7 +478,7 @@ using Runs = std::vector<std::pair<double, double>>;
 
 // The frame of the passes, mirrored so that D lies above EU (EW), else above
 // the profile; the passes run from D towards EZ (EX).
-int g63_frame(const Profile& fin, const G63Args& a, G63Plan& p, std::string& why) {
+Error g63_frame(const Profile& fin, const G63Args& a, G63Plan& p) {
     p.fr.swap = a.has_r;
     p.dr = V2(a.z, a.x);
     auto lev = [&](const V2& q) { return p.fr.swap ? q.x() : q.y(); };
@@ -524,16 +489,13 @@ int g63_frame(const Profile& fin, const G63Args& a, G63Plan& p, std::string& why
     p.D = p.fr.to(p.dr);
     p.xz = a.has_ez ? a.ez : a.ex;
     p.d = sgn(p.xz - p.D.x());
-    if (p.d == 0) {
-        why = tr("the end of the passes is at the start point");
-        return 862;
-    }
-    return 0;
+    if (p.d == 0) return {862, tr("the end of the passes is at the start point")};
+    return {};
 }
 
 // Start line of the passes: EA, else towards the point EU EW, else square
 // to the passes through D; the levels go down to EU (EW), else the profile.
-int g63_start_line(const Profile& fin, const G63Args& a, G63Plan& p, std::string& why) {
+Error g63_start_line(const Profile& fin, const G63Args& a, G63Plan& p) {
     const Frame& fr = p.fr;
     if (a.has_ea) {
         p.u = fr.to(V2(std::cos(a.ea * kDeg), std::sin(a.ea * kDeg)));
@@ -542,10 +504,7 @@ int g63_start_line(const Profile& fin, const G63Args& a, G63Plan& p, std::string
         if (pu.norm() > kUm && std::fabs(pu.y()) > kUm) p.u = pu.normalized();
     }
     if (p.u.y() > 0) p.u = -p.u;
-    if (std::fabs(p.u.y()) < 1e-9) {
-        why = tr("the start line EA runs along the passes");
-        return 875;
-    }
+    if (std::fabs(p.u.y()) < 1e-9) return {875, tr("the start line EA runs along the passes")};
     std::vector<Elem> ff = fr.to(fin.elems);
     double y_min = kInf;
     for (const Elem& e : ff) y_min = std::min(y_min, min_y(e));
@@ -553,17 +512,14 @@ int g63_start_line(const Profile& fin, const G63Args& a, G63Plan& p, std::string
     if (a.has_ea) {
         bool met = false;
         for (const Elem& e : ff) met = met || ray_hit(e, p.D, p.u) < kInf;
-        if (!met) {
-            why = tr("the EA line does not meet the finished profile");
-            return 875;
-        }
+        if (!met) return {875, tr("the EA line does not meet the finished profile")};
     }
-    return 0;
+    return {};
 }
 
 // Stock: the start line, the start level, the end of the passes (§6.5 step 2);
 // the material it closes with the profile, offset by ER (step 3).
-int g63_material(const Profile& fin, const G63Args& a, G63Plan& p, std::string& why) {
+Error g63_material(const Profile& fin, const G63Args& a, G63Plan& p) {
     std::vector<V2> b{p.fr.back(p.on_start_line(std::min(p.y_u, p.D.y()))), p.dr,
                       p.fr.back(V2(p.xz, p.D.y()))};
     bool rev = stock_reversed(b, fin);
@@ -571,10 +527,10 @@ int g63_material(const Profile& fin, const G63Args& a, G63Plan& p, std::string& 
     Material real;
     real.F = fin.elems;
     build_region(b, fin, real);
-    if (int e = check_region(real, why)) return e;
+    if (Error e = check_region(real)) return e;
     p.m = to_frame(real, p.fr);
     p.m.offset(a.er);
-    return 0;
+    return {};
 }
 
 // The levels every P (R) from D down to EU (EW) or the profile (§6.5 step 4),
@@ -679,14 +635,14 @@ void g63_pass(Emit& em, const G63Plan& p, double y, bool& first) {
 }
 }  // namespace
 
-int g63(const Profile& fin, V2 tool, const G63Args& a, std::vector<Move>& out, std::string& why) {
+Error g63(const Profile& fin, V2 tool, const G63Args& a, std::vector<Move>& out) {
     out.clear();
-    if (int e = g63_check(fin, a, why)) return e;
+    if (Error e = g63_check(fin, a)) return e;
     double step = a.has_p ? a.p : a.r;
     G63Plan p;
-    if (int e = g63_frame(fin, a, p, why)) return e;
-    if (int e = g63_start_line(fin, a, p, why)) return e;
-    if (int e = g63_material(fin, a, p, why)) return e;
+    if (Error e = g63_frame(fin, a, p)) return e;
+    if (Error e = g63_start_line(fin, a, p)) return e;
+    if (Error e = g63_material(fin, a, p)) return e;
     p.c = std::min(a.q > 0 ? a.q : std::max(0.0, a.clearance), step / 2);
     p.eb = a.has_eb ? a.eb : 90;
 
@@ -696,7 +652,7 @@ int g63(const Profile& fin, V2 tool, const G63Args& a, std::vector<Move>& out, s
     for (double y : g63_levels(a, p, step)) g63_pass(em, p, y, first);
     em.go(0, V2(em.cur.x(), p.D.y()));
     em.go(0, p.D);
-    return 0;
+    return {};
 }
 
 }  // namespace pupitre::turning

@@ -22,53 +22,24 @@ bool whole(double v) {
 }
 
 // Syntax and argument checks, in the order a block is read (§6.12 preconditions).
-int g33_check(const G33Args& a, std::string& why) {
-    if (!a.has_x || !a.has_z || !a.has_p || !a.has_k) {
-        why = tr("G33 needs the end point X Z, the depth P and the lead K");
-        return 832;
-    }
-    if (a.has_s && a.has_es) {
-        why = tr("G33 takes S or ES, not both");
-        return 889;
-    }
-    if (a.k < 0 || a.p < 0 || (a.has_q && a.q < 0) || a.r < 0 || a.k == 0 || a.p == 0) {
-        why = tr("P and K must be positive, Q and R not negative");
-        return 835;
-    }
-    if (!(a.eb > -90 && a.eb < 90)) {
-        why = tr("EB must lie between -90 and 90 degrees");
-        return 834;
-    }
-    if (a.has_f && a.f > 9) {
-        why = tr("more than 9 thread starts");
-        return 884;
-    }
+Error g33_check(const G33Args& a) {
+    if (!a.has_x || !a.has_z || !a.has_p || !a.has_k)
+        return {832, tr("G33 needs the end point X Z, the depth P and the lead K")};
+    if (a.has_s && a.has_es) return {889, tr("G33 takes S or ES, not both")};
+    if (a.k < 0 || a.p < 0 || (a.has_q && a.q < 0) || a.r < 0 || a.k == 0 || a.p == 0)
+        return {835, tr("P and K must be positive, Q and R not negative")};
+    if (!(a.eb > -90 && a.eb < 90)) return {834, tr("EB must lie between -90 and 90 degrees")};
+    if (a.has_f && a.f > 9) return {884, tr("more than 9 thread starts")};
     double n = a.has_es ? a.es : a.s;
-    if ((a.has_f && (a.f < 1 || !whole(a.f))) || n < 1 || !whole(n)) {
-        why = tr("the number of starts (F) and of passes (S, ES) must be whole and at least 1");
-        return 837;
-    }
-    if (a.has_q && a.q > a.p) {
-        why = tr("the last pass Q is deeper than the thread P");
-        return 881;
-    }
-    if (std::fabs(a.ea) > 90) {
-        why = tr("EA must lie between -90 and 90 degrees");
-        return 881;
-    }
-    if (a.radius_comp) {
-        why = tr("threading in radius compensation (G41/G42)");
-        return 27;
-    }
-    if (!a.plane_ok) {
-        why = tr("threading needs the G18 or G20 plane");
-        return 836;
-    }
-    if (!a.spindle_turning) {
-        why = tr("threading with the spindle stopped");
-        return 831;
-    }
-    return 0;
+    if ((a.has_f && (a.f < 1 || !whole(a.f))) || n < 1 || !whole(n))
+        return {837,
+                tr("the number of starts (F) and of passes (S, ES) must be whole and at least 1")};
+    if (a.has_q && a.q > a.p) return {881, tr("the last pass Q is deeper than the thread P")};
+    if (std::fabs(a.ea) > 90) return {881, tr("EA must lie between -90 and 90 degrees")};
+    if (a.radius_comp) return {27, tr("threading in radius compensation (G41/G42)")};
+    if (!a.plane_ok) return {836, tr("threading needs the G18 or G20 plane")};
+    if (!a.spindle_turning) return {831, tr("threading with the spindle stopped")};
+    return {};
 }
 
 // Cumulative depths of the passes (§6.12 step 2).
@@ -85,9 +56,9 @@ std::vector<double> depths(const G33Args& a) {
 }
 }  // namespace
 
-int g33(V2 tool, const G33Args& a, std::vector<Move>& out, std::string& why) {
+Error g33(V2 tool, const G33Args& a, std::vector<Move>& out) {
     out.clear();
-    if (int e = g33_check(a, why)) return e;
+    if (Error e = g33_check(a)) return e;
     // Frame: x along the threading axis (Z, or X for a face thread at EA = ±90).
     Frame fr;
     bool face = std::fabs(std::fabs(a.ea) - 90) < 1e-9;
@@ -96,20 +67,11 @@ int g33(V2 tool, const G33Args& a, std::vector<Move>& out, std::string& why) {
     V2 s = fr.to(tool), e = fr.to(V2(a.z, a.x));
     auto crest = [&](double x) { return e.y() + (x - e.x()) * slope; };
     double len = e.x() - s.x();
-    if (std::fabs(len) <= kUm) {
-        why = tr("the thread has no length along its axis");
-        return 881;
-    }
+    if (std::fabs(len) <= kUm) return {881, tr("the thread has no length along its axis")};
     int sigma = len > 0 ? 1 : -1;
     double h = s.y() - crest(s.x());  // clearance above the crest line at the start
-    if (std::fabs(h) <= kUm) {
-        why = tr("the start point lies on the thread");
-        return 833;
-    }
-    if (a.r >= std::fabs(len) - kUm) {
-        why = tr("the exit slope R is as long as the thread");
-        return 881;
-    }
+    if (std::fabs(h) <= kUm) return {833, tr("the start point lies on the thread")};
+    if (a.r >= std::fabs(len) - kUm) return {881, tr("the exit slope R is as long as the thread")};
     int ext = h > 0 ? 1 : -1;  // external thread: the depth goes down the level axis
     // The tool retracts to the line parallel to the crest through the start
     // point: (r_S, z_E) of the spec for a cylindrical thread, and clear of a cone.
@@ -130,34 +92,22 @@ int g33(V2 tool, const G33Args& a, std::vector<Move>& out, std::string& why) {
         }
     }
     em.go(0, s);
-    return 0;
+    return {};
 }
 
-int g38(V2 tool, const G38Args& a, std::vector<Move>& out, std::string& why) {
+Error g38(V2 tool, const G38Args& a, std::vector<Move>& out) {
     out.clear();
-    if (a.radius_comp) {
-        why = tr("threading in radius compensation (G41/G42)");
-        return 27;
-    }
-    if (a.has_k && !(a.k > 0)) {
-        why = tr("the lead K must be positive");
-        return 835;
-    }
-    if (!a.has_k && !(a.prev_k > 0)) {
-        why = tr("G38 needs the lead K");
-        return 883;
-    }
-    if (!a.spindle_turning) {
-        why = tr("threading with the spindle stopped");
-        return 831;
-    }
+    if (a.radius_comp) return {27, tr("threading in radius compensation (G41/G42)")};
+    if (a.has_k && !(a.k > 0)) return {835, tr("the lead K must be positive")};
+    if (!a.has_k && !(a.prev_k > 0)) return {883, tr("G38 needs the lead K")};
+    if (!a.spindle_turning) return {831, tr("threading with the spindle stopped")};
     if ((a.to - tool).norm() > kTol) {
         Move m;
         m.g = 33;
         m.to = a.to;
         out.push_back(m);
     }
-    return 0;
+    return {};
 }
 
 int thread_axis(V2 from, V2 to) {

@@ -517,26 +517,18 @@ std::pair<double, double> clear_below(const Material& m, double Y, double h, dou
     return runs.empty() ? std::pair<double, double>{x0, x0} : runs.front();
 }
 
-int check_profile(const Profile& f, std::string& why) {
-    if (f.elems.empty()) {
-        why = tr("the finished profile has no element");
-        return 871;
-    }
+Error check_profile(const Profile& f) {
+    if (f.elems.empty()) return {871, tr("the finished profile has no element")};
     for (size_t i = 0; i + 1 < f.elems.size(); ++i)
-        if ((f.elems[i].b - f.elems[i + 1].a).norm() > kUm) {
-            why = tr("the finished profile is not continuous");
-            return 871;
-        }
-    return 0;
+        if ((f.elems[i].b - f.elems[i + 1].a).norm() > kUm)
+            return {871, tr("the finished profile is not continuous")};
+    return {};
 }
 
-int check_axis(const std::vector<Elem>& es, const char* message, std::string& why) {
+Error check_axis(const std::vector<Elem>& es, const char* message) {
     for (const Elem& e : es)
-        if (min_y(e) < -kUm) {
-            why = tr(message);
-            return 874;
-        }
-    return 0;
+        if (min_y(e) < -kUm) return {874, tr(message)};
+    return {};
 }
 
 V2 centroid(const std::vector<Elem>& es) {

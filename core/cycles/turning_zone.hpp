@@ -102,11 +102,11 @@ std::pair<double, double> clear_below(const Material& m, double Y, double h, dou
 std::vector<std::pair<double, double>> clear_runs(const Material& m, double Y, double h, double x0,
                                                   double x1, int d);
 
-// 0, or 871 with `why` when the profile is empty or not continuous.
-int check_profile(const Profile& f, std::string& why);
-// 0, or 874 when a point of the elements lies beyond the spindle axis (r < 0);
-// `why` is then tr(message), a text marked with N_().
-int check_axis(const std::vector<Elem>& es, const char* message, std::string& why);
+// Error 871 when the profile is empty or not continuous.
+Error check_profile(const Profile& f);
+// Error 874 when a point of the elements lies beyond the spindle axis (r < 0),
+// with tr(message), a text marked with N_(), as its detail.
+Error check_axis(const std::vector<Elem>& es, const char* message);
 
 // Length-weighted centroid of elements (the point itself for a lone point).
 V2 centroid(const std::vector<Elem>& es);

@@ -373,20 +373,19 @@ bool Interpreter::turning_g65_g63(const Plan& p) {
     comp::V2 first;
     if (!turning_profile(p.spline.n[0], p.spline.n[1], prof, first)) return false;
     std::vector<turning::Move> moves;
-    std::string why;
-    int rc = 0;
+    Error e;
     if (p.g[65]) {
         turning::G65Args a = g65_args(p);
         if (!a.has_ea) return fail(2, tr("G65 needs the infeed angle EA"));
-        rc = turning::g65(prof, tool, a, moves, why);
-        if (rc == 0 && opt_.on_g65) opt_.on_g65(prof, tool, a, moves);
-        if (rc == 0 && a.allowance_inside) warn_allowance_inside(65, a.i, a.k);
+        e = turning::g65(prof, tool, a, moves);
+        if (!e && opt_.on_g65) opt_.on_g65(prof, tool, a, moves);
+        if (!e && a.allowance_inside) warn_allowance_inside(65, a.i, a.k);
     } else {
         turning::G63Args a = g63_args(p);
-        rc = turning::g63(prof, tool, a, moves, why);
-        if (rc == 0 && opt_.on_g63) opt_.on_g63(prof, tool, a, moves);
+        e = turning::g63(prof, tool, a, moves);
+        if (!e && opt_.on_g63) opt_.on_g63(prof, tool, a, moves);
     }
-    if (rc) return fail(rc, why);
+    if (e) return fail(e);
     if (!turning_emit_ef(p, moves)) return false;
     modal_.motion = 0;  // the state is G00 after the cycle (000:2462)
     return true;
@@ -419,9 +418,8 @@ bool Interpreter::turning_g66(const Plan& p) {
                      "other edge of the tool"),
                   a.d_first, a.d, a.d));
     std::vector<turning::Move> moves;
-    std::string why;
     const comp::V2 tool(prog_[Z], prog_[X]);
-    if (int rc = turning::g66(tool, a, moves, why)) return fail(rc, why);
+    if (Error e = turning::g66(tool, a, moves)) return fail(e);
     if (opt_.on_g66) opt_.on_g66(tool, a, moves);
     if (!turning_emit_ef(p, moves)) return false;
     // The second corrector is active afterwards; the tool has not moved
@@ -452,8 +450,7 @@ bool Interpreter::turning_g33(const Plan& p) {
     a.plane_ok = true;
     a.radius_comp = modal_.radcomp != 40;
     std::vector<turning::Move> moves;
-    std::string why;
-    if (int rc = turning::g33(comp::V2(prog_[Z], prog_[X]), a, moves, why)) return fail(rc, why);
+    if (Error e = turning::g33(comp::V2(prog_[Z], prog_[X]), a, moves)) return fail(e);
     return turning_emit(moves, a.k, 0);
 }
 
@@ -473,8 +470,7 @@ bool Interpreter::turning_g38(const Plan& p) {
     a.spindle_turning = modal_.spindle_dir == 3 || modal_.spindle_dir == 4;
     a.radius_comp = modal_.radcomp != 40;
     std::vector<turning::Move> moves;
-    std::string why;
-    if (int rc = turning::g38(comp::V2(prog_[Z], prog_[X]), a, moves, why)) return fail(rc, why);
+    if (Error e = turning::g38(comp::V2(prog_[Z], prog_[X]), a, moves)) return fail(e);
     g38_lead_ = k;
     return turning_emit(moves, k, 0);
 }
@@ -522,8 +518,7 @@ bool Interpreter::turning_g64_run() {
     comp::V2 first;
     if (!turning_profile(g64_na_, g64_nb_, prof, first)) return false;
     std::vector<turning::Move> moves;
-    std::string why;
-    if (int rc = turning::g64(prof, g64_stock_, g64_tool_, g64_, moves, why)) return fail(rc, why);
+    if (Error e = turning::g64(prof, g64_stock_, g64_tool_, g64_, moves)) return fail(e);
     if (opt_.on_g64) opt_.on_g64(prof, g64_stock_, g64_tool_, g64_, moves);
     if (g64_.allowance_inside) warn_allowance_inside(64, g64_.i, g64_.k);
     bool ok = turning_emit(moves, 0, 0);
