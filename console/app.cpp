@@ -118,11 +118,9 @@ int event_loop(console::Session& s, console::Terminal& term, bool ascii) {
     }
 }
 
-}  // namespace
-
-int console(const ConsoleArgs& a) {
-    // The locale was set by main() (i18n::init): characters from the
-    // environment, LC_NUMERIC "C".
+// The store: --db, else the default one (its directories made). False with
+// the exit code in `rc` when it cannot be opened.
+bool open_console_store(const ConsoleArgs& a, std::unique_ptr<store::Store>& st, int& rc) {
     store::Options o;
     std::string path = a.db;
     if (path.empty()) {
@@ -132,18 +130,21 @@ int console(const ConsoleArgs& a) {
             std::fputs(tr("pupitre: no place for the default store: set HOME or XDG_DATA_HOME, or "
                           "give --db\n"),
                        stderr);
-            return kCantCreate;
+            rc = kCantCreate;
+            return false;
         }
     }
     auto opened = store::Store::open(path, o);
     if (opened.error) {
         std::fprintf(stderr, tr("pupitre: %s\n"), opened.error.message.c_str());
-        return store::exit_code(opened.error.fault);
+        rc = store::exit_code(opened.error.fault);
+        return false;
     }
-    std::unique_ptr<store::Store> st = std::move(opened.value);
-    MachineProfile m;
-    if (!console_machine(a, *st, m)) return kUsage;
-    console::Theme theme;
+    st = std::move(opened.value);
+    return true;
+}
+
+bool console_theme(const ConsoleArgs& a, console::Theme& theme) {
     // NO_COLOR (no-color.org): set and not empty, the console is mono unless
     // --theme asks for colours.
     const char* no_color = std::getenv("NO_COLOR");
@@ -151,17 +152,15 @@ int console(const ConsoleArgs& a) {
     if (!console::parse_theme(theme_name, theme)) {
         std::fprintf(stderr, tr("pupitre: unknown theme '%s' (colour, mono, phosphor)\n"),
                      theme_name.c_str());
-        return kUsage;
+        return false;
     }
-    if (!isatty(STDIN_FILENO) || !isatty(STDOUT_FILENO)) {
-        std::fputs(
-            tr("pupitre: the console needs a terminal; for scripts use pupitre run, check, list "
-               "(pupitre --help)\n"),
-            stderr);
-        return kNoInput;
-    }
-    console::ReadlineInput input;
-    console::Session s(m, std::move(st), input);
+    return true;
+}
+
+// The first screen: the store's programs and state, the user's bindings, the
+// program this machine had selected; the message line says what went wrong,
+// else how to begin.
+void first_screen(console::Session& s, const MachineProfile& m) {
     std::string news = s.load_store();
     std::string user = config_bindings_path();
     if (std::ifstream f(user); f) {
@@ -180,6 +179,29 @@ int console(const ConsoleArgs& a) {
         news = strf(tr("pupitre %s, %s: F1 help, F6 programs, F8 mode, F9 Cycle Start"),
                     PUPITRE_VERSION, m.name.c_str());
     s.say(news, false);
+}
+
+}  // namespace
+
+int console(const ConsoleArgs& a) {
+    // The locale was set by main() (i18n::init): characters from the
+    // environment, LC_NUMERIC "C".
+    std::unique_ptr<store::Store> st;
+    if (int rc = kOk; !open_console_store(a, st, rc)) return rc;
+    MachineProfile m;
+    if (!console_machine(a, *st, m)) return kUsage;
+    console::Theme theme;
+    if (!console_theme(a, theme)) return kUsage;
+    if (!isatty(STDIN_FILENO) || !isatty(STDOUT_FILENO)) {
+        std::fputs(
+            tr("pupitre: the console needs a terminal; for scripts use pupitre run, check, list "
+               "(pupitre --help)\n"),
+            stderr);
+        return kNoInput;
+    }
+    console::ReadlineInput input;
+    console::Session s(m, std::move(st), input);
+    first_screen(s, m);
     console::Terminal term;
     if (std::string err = term.open(theme); !err.empty()) {
         std::fprintf(stderr, tr("pupitre: %s\n"), err.c_str());

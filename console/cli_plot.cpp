@@ -120,34 +120,54 @@ int write_out(const Output& o, const Scene& scene, const PlotArgs& a) {
     return kOk;
 }
 
-}  // namespace
-
-int plot(const PlotArgs& a) {
-    PathPlane plane = PathPlane::xy;
+// --plane and the outputs; false after printing the problem.
+bool plot_usage(const PlotArgs& a, PathPlane& plane) {
     if (!a.plane.empty() && !parse_plane(a.plane, plane)) {
         std::fprintf(stderr, tr("pupitre: --plane %s: expected xy, xz, yz or zx\n"),
                      a.plane.c_str());
-        return kUsage;
+        return false;
     }
     if ((a.svg.empty() && a.png.empty() && a.pdf.empty()) || a.files.empty()) {
         std::fputs(tr("pupitre: plot needs --svg, --png or --pdf OUT and a program file\n"),
                    stderr);
-        return kUsage;
+        return false;
     }
+    return true;
+}
+
+// The program plot runs: the first one of the first file; null after
+// printing the problem.
+const ProgramText* main_program(const ProgramMemory& mem, const std::string& file) {
+    for (const auto& p : mem.programs())
+        if (p->file == file) return p.get();
+    std::fprintf(stderr, tr("pupitre: %s: no program to run\n"), file.c_str());
+    return nullptr;
+}
+
+// The drawing starts where the program starts, named after it, with the
+// program's EM+ and EM- extremes when it gives them.
+void start_drawing(Toolpath& path, const Interpreter& in, const ProgramText& main,
+                   const MachineProfile& m) {
+    path.start_at(in.program_pos());
+    path.program = main.number;
+    path.title = main.title;
+    Axes lo{}, hi{};
+    uint16_t mlo = 0, mhi = 0;
+    if (scan_extremes(main, m.lathe && m.x_diameter, lo, hi, mlo, mhi))
+        path.set_extremes(lo, hi, mlo, mhi);
+}
+
+}  // namespace
+
+int plot(const PlotArgs& a) {
+    PathPlane plane = PathPlane::xy;
+    if (!plot_usage(a, plane)) return kUsage;
     MachineProfile m;
     if (!load_machine(batch_machine(a.machine), m)) return kUsage;
     ProgramMemory mem;
     if (int rc = load_all(a.files, mem)) return rc;
-    const ProgramText* main = nullptr;
-    for (const auto& p : mem.programs())
-        if (p->file == a.files.front()) {
-            main = p.get();
-            break;
-        }
-    if (!main) {
-        std::fprintf(stderr, tr("pupitre: %s: no program to run\n"), a.files.front().c_str());
-        return kDataErr;
-    }
+    const ProgramText* main = main_program(mem, a.files.front());
+    if (!main) return kDataErr;
     workshop::Setup setup;
     if (!a.setup.empty() && !load_setup(a.setup, m, setup)) return kUsage;
     Toolpath path(m);
@@ -158,13 +178,7 @@ int plot(const PlotArgs& a) {
     o.max_blocks = a.max_blocks;
     Interpreter in(m, mem, shop ? static_cast<MachineSink&>(*shop) : path, o);
     if (int rc = apply_sets(a.sets, in)) return rc;
-    path.start_at(in.program_pos());
-    path.program = main->number;
-    path.title = main->title;
-    Axes lo{}, hi{};
-    uint16_t mlo = 0, mhi = 0;
-    if (scan_extremes(*main, m.lathe && m.x_diameter, lo, hi, mlo, mhi))
-        path.set_extremes(lo, hi, mlo, mhi);
+    start_drawing(path, in, *main, m);
     int plane_seen = 0;
     in.start(main);
     run_collecting(in, path, plane_seen, shop.get());

@@ -164,6 +164,84 @@ int write_part(const std::string& path, const workshop::LatheWorld& w, const std
     return kOk;
 }
 
+// The program run and check run: the first one of the file; null if the file
+// has none.
+const ProgramText* first_program(const ProgramMemory& mem, const std::string& file) {
+    for (const auto& p : mem.programs())
+        if (p->file == file) return p.get();
+    return nullptr;
+}
+
+// The summary on stdout: JSON, else the text one unless the trace took its
+// place; the workshop's crashes and readings with it.
+void print_summary(const RunArgs& a, const Interpreter& in, const workshop::Workshop* shop,
+                   const std::vector<Diag>& crashes, const std::vector<workshop::Asked>& asked) {
+    if (a.json) {
+        std::string s = summary_json(in, a.files.front(), crashes,
+                                     shop ? workshop::workshop_json(*shop, asked) : "");
+        std::fputs(s.c_str(), stdout);
+    } else if (!a.trace) {
+        std::string s = summary_text(in, a.files.front()) + workshop::readings_text(asked);
+        std::fputs(s.c_str(), stdout);
+    }
+}
+
+// check's dry run of the first file's first program: its diagnostics
+// printed, their lines in `reported`. An exit code.
+int dry_run_first(const RunArgs& a, const MachineProfile& m, ProgramMemory& mem, RunStore& store,
+                  std::set<std::pair<std::string, int>>& reported, bool& errors) {
+    const ProgramText* main = first_program(mem, a.files.front());
+    if (!main) return kOk;
+    NullSink quiet;
+    RunOptions o;
+    o.block_skip = a.block_skip;
+    o.max_blocks = a.max_blocks;
+    Interpreter in(m, mem, quiet, o);
+    if (!a.db.empty())
+        if (int rc = store.seed(in)) return rc;
+    if (int rc = apply_sets(a.sets, in)) return rc;
+    in.start(main);
+    in.run_to_end();
+    for (const Diag& d : in.diags()) {
+        print_diag(d);
+        reported.insert({d.file, d.line});
+        errors = errors || d.is_error();
+    }
+    return kOk;
+}
+
+// check parses every line of the files given: a block that does not parse
+// and had no diagnostic from the dry run gets a warning.
+void warn_unreached(const RunArgs& a, const ProgramMemory& mem,
+                    const std::set<std::pair<std::string, int>>& reported) {
+    // Stored programs are program memory, not what is being checked.
+    std::set<std::string> files(a.files.begin(), a.files.end());
+    Block b;
+    for (const auto& p : mem.programs()) {
+        if (!files.count(p->file)) continue;
+        std::string_view body = p->body();
+        int line = p->first_line;
+        size_t pos = 0;
+        while (pos < body.size()) {
+            size_t eol = body.find('\n', pos);
+            if (eol == std::string_view::npos) eol = body.size();
+            Diag d;
+            if (!parse_block(body.substr(pos, eol - pos), b, d) &&
+                !reported.count({p->file, line})) {
+                d.severity = Severity::warning;
+                d.file = p->file;
+                d.program = p->number;
+                d.line = line;
+                d.n = line_label(body.substr(pos, eol - pos));
+                d.detail = strf(tr("%s (in a block the dry run did not reach)"), d.detail.c_str());
+                print_diag(d);
+            }
+            pos = eol + 1;
+            ++line;
+        }
+    }
+}
+
 }  // namespace
 
 void default_machine_note(const std::string& asked, bool errors) {
@@ -210,13 +288,7 @@ int run(const RunArgs& a) {
     if (!a.db.empty())
         if (int rc = store.seed(in)) return rc;
     if (int rc = apply_sets(a.sets, in)) return rc;
-    const ProgramText* main = nullptr;
-    for (const auto& p : mem.programs())
-        if (p->file == a.files.front()) {
-            main = p.get();
-            break;
-        }
-    in.start(main);
+    in.start(first_program(mem, a.files.front()));
     run_in(in, shop.get());
     std::fflush(stdout);
     for (const Diag& d : in.diags()) print_diag(d);
@@ -225,14 +297,7 @@ int run(const RunArgs& a) {
     if (shop) workshop_results(*shop, mem, a.measures, crashes, asked);
     const bool errors = in.has_errors() || !crashes.empty();
     default_machine_note(a.machine, errors);
-    if (a.json) {
-        std::string s = summary_json(in, a.files.front(), crashes,
-                                     shop ? workshop::workshop_json(*shop, asked) : "");
-        std::fputs(s.c_str(), stdout);
-    } else if (!a.trace) {
-        std::string s = summary_text(in, a.files.front()) + workshop::readings_text(asked);
-        std::fputs(s.c_str(), stdout);
-    }
+    print_summary(a, in, shop.get(), crashes, asked);
     std::fflush(stdout);
     if (shop && !a.part_out.empty())
         if (int rc = write_part(a.part_out, shop->world(), a.files.front())) return rc;
@@ -256,58 +321,10 @@ int check(const RunArgs& a) {
     std::set<std::pair<std::string, int>> reported;
     // 1. A dry run of the first file's first program, as `run` does; the other
     // files are program memory (subprograms need no M02 of their own).
-    for (const auto& f : {a.files.front()}) {
-        const ProgramText* main = nullptr;
-        for (const auto& p : mem.programs())
-            if (p->file == f) {
-                main = p.get();
-                break;
-            }
-        if (!main) continue;
-        NullSink quiet;
-        RunOptions o;
-        o.block_skip = a.block_skip;
-        o.max_blocks = a.max_blocks;
-        Interpreter in(m, mem, quiet, o);
-        if (!a.db.empty())
-            if (int rc = store.seed(in)) return rc;
-        if (int rc = apply_sets(a.sets, in)) return rc;
-        in.start(main);
-        in.run_to_end();
-        for (const Diag& d : in.diags()) {
-            print_diag(d);
-            reported.insert({d.file, d.line});
-            errors = errors || d.is_error();
-        }
-    }
+    if (int rc = dry_run_first(a, m, mem, store, reported, errors)) return rc;
     // 2. Every other block must parse too. A block the dry run did not reach gets a
     // warning: the controller would only meet it on another path.
-    // Stored programs are program memory, not what is being checked.
-    std::set<std::string> files(a.files.begin(), a.files.end());
-    Block b;
-    for (const auto& p : mem.programs()) {
-        if (!files.count(p->file)) continue;
-        std::string_view body = p->body();
-        int line = p->first_line;
-        size_t pos = 0;
-        while (pos < body.size()) {
-            size_t eol = body.find('\n', pos);
-            if (eol == std::string_view::npos) eol = body.size();
-            Diag d;
-            if (!parse_block(body.substr(pos, eol - pos), b, d) &&
-                !reported.count({p->file, line})) {
-                d.severity = Severity::warning;
-                d.file = p->file;
-                d.program = p->number;
-                d.line = line;
-                d.n = line_label(body.substr(pos, eol - pos));
-                d.detail = strf(tr("%s (in a block the dry run did not reach)"), d.detail.c_str());
-                print_diag(d);
-            }
-            pos = eol + 1;
-            ++line;
-        }
-    }
+    warn_unreached(a, mem, reported);
     default_machine_note(a.machine, errors);
     return errors ? kProgramErrors : kOk;
 }

@@ -19,6 +19,47 @@ std::string num(double v, int decimals = 3) {
     return buf;
 }
 
+// A gauge of the active corrector not yet applied on its axis.
+bool pending(const Sim& s, bool active, const std::string& field, double val) {
+    const Interpreter& in = s.interp();
+    const MachineProfile& m = s.machine();
+    return active && s.in_cycle() &&
+           ((m.lathe && ((field == "X" || field == "DX")   ? in.gauge_pending(X)
+                         : (field == "Z" || field == "DZ") ? in.gauge_pending(Z)
+                                                           : false)) ||
+            (!m.lathe && (field == "L" || field == "DL") &&
+             in.gauge_pending(in.modal().tool_axis)) ||
+            (field == "R" && in.comp_active() && std::abs(in.comp_radius() - val) > 1e-9));
+}
+
+// The foot of the page: the last measurement, how to set a corrector, what a
+// star means, the memory protection.
+void corr_foot(const View& v, Canvas& c, const Rect& r) {
+    const MachineProfile& m = v.sim->machine();
+    int by = r.y + r.h - 4;
+    // The last measurement with its arithmetic (X gauges are radii, the
+    // diameters shown and typed are halved).
+    if (!v.last_setting.empty())
+        c.text(2, by - 1, strf(tr("Last: %s"), v.last_setting.c_str()), Style::value, r.w - 3);
+    c.text(2, by,
+           m.lathe
+               ? strf(tr("Presetter: X=63.345 or Z=38.237 sets D%d; Up/Down or D5 choose another."),
+                      v.corr_cursor)
+               : strf(tr("Presetter: L=120.5 or R=5 sets D%d; Up/Down or D5 choose another."),
+                      v.corr_cursor),
+           Style::dim, r.w - 2);
+    c.text(2, by + 1,
+           m.lathe ? tr("Touch a known surface: X 59.978 (a diameter) or Z 0, or :measure D2 Z 0.")
+                   : tr("Touch a known surface: Z 10 (a block on Z0), or :measure D2 Z 0."),
+           Style::dim, r.w - 2);
+    c.text(2, by + 2,
+           tr("* changed in a run: gauge at the next move of its axis, radius at G41/G42"),
+           Style::dim, r.w - 2);
+    std::string state =
+        v.protect ? tr("memory protection ON (:protect off)") : tr("memory protection off");
+    c.text(2, by + 3, state, v.protect ? Style::warn : Style::dim);
+}
+
 }  // namespace
 
 void page_corr(const View& v, Canvas& c, const Rect& r) {
@@ -46,18 +87,10 @@ void page_corr(const View& v, Canvas& c, const Rect& r) {
         for (size_t k = 0; k < fields.size(); ++k) {
             double val = 0;
             in.get(dn + "." + fields[k], val);
-            // A gauge of the active corrector not yet applied on its axis.
-            bool pending =
-                d == active && s.in_cycle() &&
-                ((m.lathe && ((fields[k] == "X" || fields[k] == "DX")   ? in.gauge_pending(X)
-                              : (fields[k] == "Z" || fields[k] == "DZ") ? in.gauge_pending(Z)
-                                                                        : false)) ||
-                 (!m.lathe && (fields[k] == "L" || fields[k] == "DL") &&
-                  in.gauge_pending(in.modal().tool_axis)) ||
-                 (fields[k] == "R" && in.comp_active() && std::abs(in.comp_radius() - val) > 1e-9));
+            bool star = pending(s, d == active, fields[k], val);
             std::string t = fields[k] == "C" ? std::to_string(int(val)) : num(val);
-            c.text_right(6 + int(k) * 10, y + i, 10, t + (pending ? "*" : " "),
-                         pending    ? Style::warn
+            c.text_right(6 + int(k) * 10, y + i, 10, t + (star ? "*" : " "),
+                         star       ? Style::warn
                          : val != 0 ? Style::value
                                     : Style::dim);
         }
@@ -65,28 +98,7 @@ void page_corr(const View& v, Canvas& c, const Rect& r) {
             c.text(8 + int(fields.size()) * 10, y + i, strf(tr("active T%d"), s.tool()), Style::ok);
         if (cur) c.style(Rect{r.x, y + i, r.w, 1}, Style::select);
     }
-    int by = r.y + r.h - 4;
-    // The last measurement with its arithmetic (X gauges are radii, the
-    // diameters shown and typed are halved).
-    if (!v.last_setting.empty())
-        c.text(2, by - 1, strf(tr("Last: %s"), v.last_setting.c_str()), Style::value, r.w - 3);
-    c.text(2, by,
-           m.lathe
-               ? strf(tr("Presetter: X=63.345 or Z=38.237 sets D%d; Up/Down or D5 choose another."),
-                      v.corr_cursor)
-               : strf(tr("Presetter: L=120.5 or R=5 sets D%d; Up/Down or D5 choose another."),
-                      v.corr_cursor),
-           Style::dim, r.w - 2);
-    c.text(2, by + 1,
-           m.lathe ? tr("Touch a known surface: X 59.978 (a diameter) or Z 0, or :measure D2 Z 0.")
-                   : tr("Touch a known surface: Z 10 (a block on Z0), or :measure D2 Z 0."),
-           Style::dim, r.w - 2);
-    c.text(2, by + 2,
-           tr("* changed in a run: gauge at the next move of its axis, radius at G41/G42"),
-           Style::dim, r.w - 2);
-    std::string state =
-        v.protect ? tr("memory protection ON (:protect off)") : tr("memory protection off");
-    c.text(2, by + 3, state, v.protect ? Style::warn : Style::dim);
+    corr_foot(v, c, r);
 }
 
 }  // namespace pupitre::pages

@@ -205,6 +205,12 @@ bool Sim::cycle_start(std::string& why) {
             op_ = in_->frames().to_program(om_);
             break;
     }
+    return start_from_rest(why);
+}
+
+// Cycle Start at rest: the mode says what runs. POM runs no program: the
+// last run's counters stay.
+bool Sim::start_from_rest(std::string& why) {
     message_.clear();
     switch (mode_) {
         case Mode::automatic:
@@ -501,20 +507,7 @@ bool Sim::begin_next() {
     switch (e.kind) {
         case Ev::move:
         case Ev::home:
-            op_from_ = op_;
-            for (int a = 0; a < kAxes; ++a) {
-                op_off0_[size_t(a)] = e.m.from_mach[size_t(a)] - op_from_[size_t(a)];
-                op_off1_[size_t(a)] = e.m.to_mach[size_t(a)] - e.m.to_prog[size_t(a)];
-            }
-            through_workshop(e);
-            if (e.m.rpm > 0 && e.kind == Ev::move && !manual_) sp_.rpm = e.m.rpm;
-            if (path_ && e.kind == Ev::move && !manual_ && e.loc.line > 0) {
-                const auto& ew = in_->e_written();  // E31000/E31001: the drawing's line types
-                auto r = ew.find(31000), f = ew.find(31001);
-                path_->set_line_types(r == ew.end() ? -1 : int(r->second),
-                                      f == ew.end() ? -1 : int(f->second));
-                path_->add(e.m);
-            }
+            begin_move(e);
             break;
         case Ev::spindle:
             sp_ = e.sp;
@@ -536,29 +529,52 @@ bool Sim::begin_next() {
                                  : strf(tr("M%02d: program stop; Cycle Start goes on"), e.a);
             break;
         case Ev::end:
-            state_ = RunState::ended;
-            if (e.a != 2 && mode_ == Mode::imd)
-                message_ =
-                    strf(trn("IMD done (%ld block): type the next block, or F8 for another mode",
-                             "IMD done (%ld blocks): type the next block, or F8 for another mode",
-                             blocks_),
-                         blocks_);
-            if (e.a == 2) {
-                // TRANSLATORS: the second %s counts the blocks run ("%ld blocks").
-                message_ = strf(tr("M02: end of program %%%d, %s, cycle time %s"), e.loc.prog,
-                                strf(trn("%ld blocks", "%ld blocks", blocks_), blocks_).c_str(),
-                                fmt_seconds(run_seconds_).c_str());
-                // The warnings the run printed on the way must not vanish with it.
-                if (run_warning_count_ > 0)
-                    message_ += strf(trn("; %zu warning (F7 ALARM)", "; %zu warnings (F7 ALARM)",
-                                         run_warning_count_),
-                                     run_warning_count_);
-            }
+            begin_end(e);
             break;
         case Ev::dwell:
             break;
     }
     return true;
+}
+
+// A move or a homing starts: the offsets op() interpolates between, the
+// workshop, and a program's move on the drawing.
+void Sim::begin_move(Ev& e) {
+    op_from_ = op_;
+    for (int a = 0; a < kAxes; ++a) {
+        op_off0_[size_t(a)] = e.m.from_mach[size_t(a)] - op_from_[size_t(a)];
+        op_off1_[size_t(a)] = e.m.to_mach[size_t(a)] - e.m.to_prog[size_t(a)];
+    }
+    through_workshop(e);
+    if (e.m.rpm > 0 && e.kind == Ev::move && !manual_) sp_.rpm = e.m.rpm;
+    if (path_ && e.kind == Ev::move && !manual_ && e.loc.line > 0) {
+        const auto& ew = in_->e_written();  // E31000/E31001: the drawing's line types
+        auto r = ew.find(31000), f = ew.find(31001);
+        path_->set_line_types(r == ew.end() ? -1 : int(r->second),
+                              f == ew.end() ? -1 : int(f->second));
+        path_->add(e.m);
+    }
+}
+
+// The end of a program (M02) or of an IMD block: the message line sums it up.
+void Sim::begin_end(const Ev& e) {
+    state_ = RunState::ended;
+    if (e.a != 2 && mode_ == Mode::imd)
+        message_ =
+            strf(trn("IMD done (%ld block): type the next block, or F8 for another mode",
+                     "IMD done (%ld blocks): type the next block, or F8 for another mode", blocks_),
+                 blocks_);
+    if (e.a == 2) {
+        // TRANSLATORS: the second %s counts the blocks run ("%ld blocks").
+        message_ = strf(tr("M02: end of program %%%d, %s, cycle time %s"), e.loc.prog,
+                        strf(trn("%ld blocks", "%ld blocks", blocks_), blocks_).c_str(),
+                        fmt_seconds(run_seconds_).c_str());
+        // The warnings the run printed on the way must not vanish with it.
+        if (run_warning_count_ > 0)
+            message_ += strf(
+                trn("; %zu warning (F7 ALARM)", "; %zu warnings (F7 ALARM)", run_warning_count_),
+                run_warning_count_);
+    }
 }
 
 void Sim::finish_current() {

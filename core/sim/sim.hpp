@@ -180,11 +180,15 @@ class Sim final : private MachineSink {
     void push(Ev e);
     void new_path(const Axes& start);
     bool need_program(std::string& why) const;
+    bool start_from_rest(std::string& why);  // cycle_start in idle or ended
     void start_test();
     void start_pom();
     void rns_found(int next_line);
     bool begin_next();      // takes the next event; false if none
     void finish_current();  // the current event is done
+    // Parts of begin_next: a move or a homing; M02 or an IMD block's end.
+    void begin_move(Ev& e);
+    void begin_end(const Ev& e);
     double duration(const Ev& e) const;
     double rate(const Ev& e) const;  // simulated progress per second (overrides)
     void interpolate();              // om_ from the current move and t_

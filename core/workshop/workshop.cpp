@@ -54,6 +54,27 @@ double length_of(const std::vector<Pt>& p) {
     return total;
 }
 
+// The machine position at `at`, an index into the path's positions with its
+// fraction (as prefix gives it).
+Axes om_at(const std::vector<Axes>& oms, double at) {
+    size_t i = std::min(size_t(at), oms.size() - 1), j = std::min(i + 1, oms.size() - 1);
+    Axes om{};
+    for (size_t a = 0; a < om.size(); ++a)
+        om[a] = oms[i][a] + (at - double(i)) * (oms[j][a] - oms[i][a]);
+    return om;
+}
+
+// An increment from a contact with the shim goes nowhere: the insert cannot
+// cut through the shim (the paper test).
+Outcome on_the_shim(const Axes& om, int tool) {
+    Outcome o;
+    o.touched = true;
+    o.fraction = 0;
+    o.stop = om;
+    o.what = strf(tr("the shim is between T%d and the part: :shim off before cutting"), tool);
+    return o;
+}
+
 }  // namespace
 
 Workshop::Workshop(const MachineProfile& m, const Setup& s, MachineSink* next)
@@ -314,14 +335,7 @@ Outcome Workshop::jog(const MoveEvent& e, bool continuous) {
             // slides along or away, and stops again before going deeper.
             bool touching = world_.depth_into(shim ? LatheWorld::sweep(shim_near, here) : near_here,
                                               w) > kTouchDepth;
-            if (touching && !continuous && shim) {
-                o.touched = true;
-                o.fraction = 0;
-                o.stop = oms.front();
-                o.what = strf(tr("the shim is between T%d and the part: :shim off before cutting"),
-                              tool_);
-                return o;
-            }
+            if (touching && !continuous && shim) return on_the_shim(oms.front(), tool_);
             if (touching && !continuous) return apply(e);
             double limit =
                 touching
@@ -337,9 +351,7 @@ Outcome Workshop::jog(const MoveEvent& e, bool continuous) {
     if (hit == Obstacle::none) return apply(e);
     double at = 0;
     std::vector<Pt> done = prefix(tips, first, &at);
-    size_t i = std::min(size_t(at), oms.size() - 1), j = std::min(i + 1, oms.size() - 1);
-    for (size_t a = 0; a < o.stop.size(); ++a)
-        o.stop[a] = oms[i][a] + (at - double(i)) * (oms[j][a] - oms[i][a]);
+    o.stop = om_at(oms, at);
     o.touched = true;
     o.fraction = first;
     o.what = touch_text(hit, holder, on_shim, where(done.back()));
