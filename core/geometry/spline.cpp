@@ -59,34 +59,25 @@ std::vector<double> second_derivatives(const std::vector<double>& s, const std::
 }
 }  // namespace
 
-int build(Curve& c, std::string& why) {
-    if (c.pts.size() < 3) {
-        why = strf(tr("a spline needs at least 3 points (%zu given)"), c.pts.size());
-        return 604;
-    }
-    if (c.pts.size() > 255) {
-        why = tr("a spline has at most 255 points");
-        return 604;
-    }
+Error build(Curve& c) {
+    if (c.pts.size() < 3)
+        return {604, strf(tr("a spline needs at least 3 points (%zu given)"), c.pts.size())};
+    if (c.pts.size() > 255) return {604, tr("a spline has at most 255 points")};
     c.s.assign(c.pts.size(), 0);
     for (size_t i = 1; i < c.pts.size(); ++i) {
         std::vector<double> d(c.axes.size());
         for (size_t k = 0; k < d.size(); ++k) d[k] = c.pts[i][k] - c.pts[i - 1][k];
         double l = norm(d);
-        if (l < 1e-6) {
-            why = strf(tr("two consecutive spline points are the same (point %zu)"), size_t(i + 1));
-            return 603;
-        }
+        if (l < 1e-6)
+            return {603, strf(tr("two consecutive spline points are the same (point %zu)"),
+                              size_t(i + 1))};
         c.s[i] = c.s[i - 1] + l;
     }
     std::vector<double> u0, u1;
     for (auto [t, u] : {std::pair{&c.t0, &u0}, std::pair{&c.t1, &u1}}) {
         if (t->empty()) continue;
         double l = norm(*t);
-        if (l < 1e-12) {
-            why = tr("a spline end tangent is a zero vector");
-            return 603;
-        }
+        if (l < 1e-12) return {603, tr("a spline end tangent is a zero vector")};
         for (double x : *t) u->push_back(x / l);  // unit speed along the chord-length parameter
     }
     c.m.assign(c.axes.size(), {});
@@ -95,7 +86,7 @@ int build(Curve& c, std::string& why) {
         for (size_t i = 0; i < y.size(); ++i) y[i] = c.pts[i][k];
         c.m[k] = second_derivatives(c.s, y, u0.empty() ? NAN : u0[k], u1.empty() ? NAN : u1[k]);
     }
-    return 0;
+    return {};
 }
 
 std::vector<double> at(const Curve& c, double u) {

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "core/diag.hpp"
+
 namespace pupitre::spline {
 
 struct Curve {
@@ -18,8 +20,8 @@ struct Curve {
     std::vector<double> s;  // chord-length parameter of each point
 };
 
-// Checks and prepares the curve. Returns 0 or a NUM error number (603, 604).
-int build(Curve& c, std::string& why);
+// Checks and prepares the curve: errors 603, 604.
+Error build(Curve& c);
 // The point at parameter u (0 .. total chord length).
 std::vector<double> at(const Curve& c, double u);
 // Points along the curve (the first point excluded, the last included), close

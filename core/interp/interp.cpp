@@ -100,11 +100,8 @@ bool Interpreter::start_imd(const ProgramText* p) {
     return true;
 }
 
-int Interpreter::jog(int axis, double delta, std::string& why) {
-    if (!m_.has(axis)) {
-        why = strf(tr("the machine has no %c axis"), kAxisNames[size_t(axis)]);
-        return 1;
-    }
+Error Interpreter::jog(int axis, double delta) {
+    if (!m_.has(axis)) return {1, strf(tr("the machine has no %c axis"), kAxisNames[size_t(axis)])};
     Axes to = mach_;
     to[size_t(axis)] += delta;
     size_t before = diags_.size();
@@ -114,15 +111,14 @@ int Interpreter::jog(int axis, double delta, std::string& why) {
     bool ok = check_travel(to);
     homed_ = homed;
     if (!ok) {
-        why = diags_.back().detail;
-        int code = diags_.back().code;
+        Error e{diags_.back().code, diags_.back().detail};
         diags_.resize(before);  // a refused jog is a message, not an alarm
         ended_ = ended;
-        return code;
+        return e;
     }
     mach_ = to;
     recompute_program_pos();
-    return 0;
+    return {};
 }
 
 void Interpreter::home(int axis) {
@@ -261,11 +257,9 @@ std::string Interpreter::set(std::string_view name, double value, bool immediate
         if (!parse_double(name.substr(1), n) || n != std::floor(n))
             return tr("bad E parameter number");
         if (value != std::floor(value)) return tr("E parameters hold integers (internal units)");
-        std::string why;
-        int rc = write_e(int(n), int64_t(value), why);
+        Error e = write_e(int(n), int64_t(value));
         e_written_.erase(int(n));  // a setting, not a write by the program
-        if (rc) return why;
-        return {};
+        return e.detail;
     }
     if (name.size() >= 4 && name[0] == 'D') {
         size_t dot = name.find('.');
@@ -611,37 +605,35 @@ StepResult Interpreter::run_to_end() {
 
 // ---- E parameters (program-flow.md §9, eparams.tsv) ----
 
-int Interpreter::e_rights(int n, bool write, std::string& why) const {
-    auto ro = [&]() {
-        if (!write) return 0;
-        why = strf(tr("E%d is read-only"), n);
-        return 95;
+Error Interpreter::e_rights(int n, bool write) const {
+    auto ro = [&]() -> Error {
+        if (!write) return {};
+        return {95, strf(tr("E%d is read-only"), n)};
     };
     int type = n / 10000;
     int x = (n / 1000) % 10;  // axis index for E6x/E7x
     int k = n % 1000;
-    if (n >= 10000 && n <= 10031) return 0;
+    if (n >= 10000 && n <= 10031) return {};
     if (n >= 20000 && n <= 20031) return ro();
-    if (n >= 30000 && n <= 30127) return 0;
+    if (n >= 30000 && n <= 30127) return {};
     if (n >= 40000 && n <= 40127) return ro();
     if (n == 11000 || n == 11001 || n == 11003 || n == 11004 || n == 11005 || n == 11007 ||
         n == 11015)
-        return 0;
+        return {};
     if (n >= 21000 && n <= 21255) return ro();
-    if (n == 31000 || n == 31001 || n == 32000) return 0;
+    if (n == 31000 || n == 31001 || n == 32000) return {};
     if (n == 41000) return ro();
     if (n >= 50000 && n <= 50000) return ro();
     if (n == 51000 || n == 52000) return ro();
-    if (type == 5 && k >= 1 && k <= 255 && n < 58000) return 0;
-    if (type == 6 && x <= 8 && k <= 5) return 0;
-    if (n == 69000) return 0;
-    if (type == 7 && x <= 8 && k <= 6) return (k == 5 || k == 6) ? 0 : ro();
-    if (n >= 79000 && n <= 79004) return n == 79003 ? 0 : ro();
-    if (n >= 80000 && n <= 80049) return 0;
-    if (n == 81000 || n == 82000) return 0;
+    if (type == 5 && k >= 1 && k <= 255 && n < 58000) return {};
+    if (type == 6 && x <= 8 && k <= 5) return {};
+    if (n == 69000) return {};
+    if (type == 7 && x <= 8 && k <= 6) return (k == 5 || k == 6) ? Error{} : ro();
+    if (n >= 79000 && n <= 79004) return n == 79003 ? Error{} : ro();
+    if (n >= 80000 && n <= 80049) return {};
+    if (n == 81000 || n == 82000) return {};
     if (n >= 90000 && n <= 93007 && (n % 1000) <= 7) return ro();
-    why = strf(tr("E%d does not exist"), n);
-    return 91;
+    return {91, strf(tr("E%d does not exist"), n)};
 }
 
 namespace {
@@ -655,26 +647,32 @@ double mm_of(int64_t v) {
 
 // An E access stops the block preparation: not under compensation (140) nor
 // after an incomplete profile block (96) (program-flow.md §9.4).
-int Interpreter::e_access(std::string& why) const {
-    if (modal_.radcomp != 40) {
-        why = tr("E parameter access under radius compensation (G41/G42)");
-        return 140;
-    }
-    if (pgp_.pending()) {
-        why = tr("E parameter access after an incomplete profile block");
-        return 96;
-    }
-    return 0;
+Error Interpreter::e_access() const {
+    if (modal_.radcomp != 40)
+        return {140, tr("E parameter access under radius compensation (G41/G42)")};
+    if (pgp_.pending()) return {96, tr("E parameter access after an incomplete profile block")};
+    return {};
 }
 
-int Interpreter::read_e(int n, int64_t& out, std::string& why) {
-    if (int rc = e_access(why)) return rc;
-    if (int rc = e_rights(n, false, why)) return rc;
+Error Interpreter::read_e(int n, int64_t& out) {
+    if (Error err = e_access()) return err;
+    if (Error err = e_rights(n, false)) return err;
+    out = e_value(n);
+    return {};
+}
+
+// What E<n> reads (program-flow.md §9, eparams.tsv): the machine's state for
+// the parameters that show it, else what was written or set.
+int64_t Interpreter::e_value(int n) const {
+    auto raw = [&](int k, int64_t none) {
+        auto it = e_raw_.find(k);
+        return it == e_raw_.end() ? none : it->second;
+    };
+    int64_t out = 0;
     int x = (n / 1000) % 10, k = n % 1000, type = n / 10000;
     auto unit = [&](int axis, double v) {
         return is_rotary(axis) ? int64_t(std::llround(v * 1e4)) : um(v);
     };
-    out = 0;
     if (n == 11005)
         out = (m_.lathe && m_.x_diameter && !modal_.radius_x) ? 1 : 0;
     else if (n == 11000)
@@ -706,12 +704,10 @@ int Interpreter::read_e(int n, int64_t& out, std::string& why) {
                              nullptr,       &frames_.dec3, &frames_.g59};
         if (src[k])
             out = unit(x, (*src[k])[size_t(x)]);
-        else if (e_raw_.count(n))
-            out = e_raw_[n];
         else
-            out = unit(x, k == 2 ? m_.axes[size_t(x)].min : m_.axes[size_t(x)].max);
+            out = raw(n, unit(x, k == 2 ? m_.axes[size_t(x)].min : m_.axes[size_t(x)].max));
     } else if (n == 69000) {
-        out = e_raw_.count(n) ? e_raw_[n] : 1000;
+        out = raw(n, 1000);
     } else if (n == 73000 || n == 74000) {
         out = 0;
     } else if (type == 7 && x <= 8 && k <= 6) {
@@ -722,31 +718,28 @@ int Interpreter::read_e(int n, int64_t& out, std::string& why) {
         else if (k == 3)
             out = unit(x, m_.axes[size_t(x)].max);
         else
-            out = e_raw_.count(n) ? e_raw_[n] : 0;
+            out = raw(n, 0);
     } else if (n == 79001) {
         out = int64_t(std::llround(rpm_));
     } else if (n == 79002) {
         out = 100;
     } else {
-        auto it = e_raw_.find(n);
-        out = it == e_raw_.end() ? 0 : it->second;
+        out = raw(n, 0);
     }
-    return 0;
+    return out;
 }
 
-int Interpreter::write_e(int n, int64_t value, std::string& why) {
-    if (int rc = e_access(why)) return rc;
-    if (int rc = e_rights(n, true, why)) return rc;
-    if (value > INT32_MAX || value < INT32_MIN) {
-        why = strf(tr("value %lld does not fit an E parameter"), (long long)value);
-        return 92;
-    }
+Error Interpreter::write_e(int n, int64_t value) {
+    if (Error err = e_access()) return err;
+    if (Error err = e_rights(n, true)) return err;
+    if (value > INT32_MAX || value < INT32_MIN)
+        return {92, strf(tr("value %lld does not fit an E parameter"), (long long)value)};
     int x = (n / 1000) % 10, k = n % 1000, type = n / 10000;
     auto from = [&](int axis) { return is_rotary(axis) ? double(value) / 1e4 : mm_of(value); };
     e_written_[n] = value;
     if (n == 11005) {
         if (m_.lathe && m_.x_diameter) modal_.radius_x = value == 0;
-        return 0;
+        return {};
     }
     if (type == 5 && k >= 1 && k <= 255 && n < 56000) {
         Corrector& c = corr_[size_t(k)];
@@ -765,27 +758,25 @@ int Interpreter::write_e(int n, int64_t value, std::string& why) {
                 *f[fam] = mm_of(value);
         }
         if (k == modal_.d) gauge_pending_.set();
-        return 0;
+        return {};
     }
     if (type == 6 && x <= 8 && k <= 5 && k != 2 && k != 3) {
         Axes* dst[] = {&frames_.pref, &frames_.dec1, nullptr, nullptr, &frames_.dec3, &frames_.g59};
         (*dst[k])[size_t(x)] = from(x);
         recompute_program_pos();
-        return 0;
+        return {};
     }
     if (n == 69000) {
-        if (value < 1 || value > 9999000) {
-            why = tr("scale factor E69000 must be 1 to 9999000 (0.001 to 9999)");
-            return 92;
-        }
+        if (value < 1 || value > 9999000)
+            return {92, tr("scale factor E69000 must be 1 to 9999000 (0.001 to 9999)")};
         e_raw_[n] = value;
         frames_.scale = double(value) / 1000.0;
         recompute_program_pos();
-        return 0;
+        return {};
     }
     e_raw_[n] = value;
     if (type == 6 && (k == 2 || k == 3)) update_travel();
-    return 0;
+    return {};
 }
 
 }  // namespace pupitre

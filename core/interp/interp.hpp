@@ -144,7 +144,7 @@ class Interpreter final : private EAccess {
     void raz();
     // JOG/INC: moves an axis of the machine by `delta` (internal units) outside
     // any program; returns the NUM error (150-158 travel), 0 when done.
-    int jog(int axis, double delta, std::string& why);
+    Error jog(int axis, double delta);
     // POM: the axis reaches its home position and is marked homed.
     void home(int axis);
     bool homed(int axis) const { return homed_[size_t(axis)]; }
@@ -284,10 +284,11 @@ class Interpreter final : private EAccess {
     void recompute_program_pos();
     void apply_corrector_gauges(const std::bitset<kAxes>& programmed);
     double gauge_for(int d, int axis) const;
-    int read_e(int n, int64_t& out, std::string& why) override;
-    int write_e(int n, int64_t value, std::string& why) override;
-    int e_rights(int n, bool write, std::string& why) const;
-    int e_access(std::string& why) const;
+    Error read_e(int n, int64_t& out) override;
+    Error write_e(int n, int64_t value) override;
+    Error e_rights(int n, bool write) const;
+    Error e_access() const;
+    int64_t e_value(int n) const;
     void note_tool(int t);
 
     // interp_words.cpp

@@ -40,8 +40,7 @@ bool Interpreter::assign_e(const Operand& t, double v, int col) {
     }
     if (std::fabs(v) > 9.2e18) return fail(92, tr("value too large for an E parameter"), col);
     // A decimal stored into E is truncated toward zero (program-flow.md §9.3).
-    std::string why;
-    if (int rc = write_e(n, int64_t(std::trunc(v)), why)) return fail(rc, why, col);
+    if (Error e = write_e(n, int64_t(std::trunc(v)))) return fail(e.code, e.detail, col);
     return true;
 }
 
@@ -50,8 +49,7 @@ bool Interpreter::assign_all(const Block& b) {
     for (const Assign& a : b.assigns) {
         col_ = a.col;
         double v;
-        std::string why;
-        if (int rc = eval_expr(b, a.expr, l_, *this, v, why)) return fail(rc, why, a.col);
+        if (Error e = eval_expr(b, a.expr, l_, *this, v)) return fail(e.code, e.detail, a.col);
         bool ok = a.target.kind == Operand::LVar ? assign_l(a.target, v, a.col)
                                                  : assign_e(a.target, v, a.col);
         if (!ok) return false;
@@ -132,11 +130,10 @@ bool Interpreter::do_g79(const Block& b, const Plan& p) {
     bool go = true;
     if (b.test.cmp != Cmp::none) {
         double lhs, rhs;
-        std::string why;
-        if (int rc = eval_expr(b, b.test.lhs, l_, *this, lhs, why))
-            return fail(rc, why, b.test.col);
-        if (int rc = eval_expr(b, b.test.rhs, l_, *this, rhs, why))
-            return fail(rc, why, b.test.col);
+        if (Error e = eval_expr(b, b.test.lhs, l_, *this, lhs))
+            return fail(e.code, e.detail, b.test.col);
+        if (Error e = eval_expr(b, b.test.rhs, l_, *this, rhs))
+            return fail(e.code, e.detail, b.test.col);
         go = compare(b.test.cmp, lhs, rhs);
         if (l_.any_unset_read) report_unset_reads();
     }

@@ -126,8 +126,7 @@ bool Interpreter::transfer_field(const ProgramText* target, bool is_l, long n, s
         value = number_text(l_.v[size_t(n)], 6);
     } else {
         int64_t raw;
-        std::string why;
-        if (int rc = read_e(int(n), raw, why)) return fail(rc, "G76: " + why);
+        if (Error e = read_e(int(n), raw)) return fail(e.code, "G76: " + e.detail);
         value = std::to_string(raw);
     }
     const size_t room = word_follows ? width - 1 : width;
@@ -228,9 +227,8 @@ bool Interpreter::inserted_assigns(const Block& b, const Block& ins,
             return fail(1, tr("G76+: only L0-L19 can be assigned in an inserted block"),
                         col(a.col));
         double v;
-        std::string why;
-        if (int rc = eval_expr(ins, a.expr, l_, *this, v, why))
-            return fail(rc, "G76+: " + why, col(a.col));
+        if (Error e = eval_expr(ins, a.expr, l_, *this, v))
+            return fail(e.code, "G76+: " + e.detail, col(a.col));
         parts.emplace_back(a.col, "L" + std::to_string(a.target.index) + "=" + number_text(v, 6));
     }
     return true;

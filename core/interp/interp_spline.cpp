@@ -58,8 +58,7 @@ bool Interpreter::spline_define(const Plan& p) {
     const auto& last = blocks.back();
     if (blocks.size() > 1 && last.first.any())
         for (int ax : c.axes) c.t1.push_back(last.second[size_t(ax)]);
-    std::string why;
-    if (int rc = spline::build(c, why)) return fail(rc, "G48: " + why);
+    if (Error e = spline::build(c)) return fail(e.code, "G48: " + e.detail);
     splines_[p.spline.nc] = std::move(c);
     return true;
 }

@@ -162,9 +162,8 @@ bool Interpreter::variable_value(const Word& w, double& out) {
     AddrFormat f = format_of(w.addr);
     const Operand& v = w.v;
     double raw;
-    std::string why;
-    if (int rc = eval_operand(v, l_, *this, raw, why)) {
-        fail(rc, why, w.col);
+    if (Error e = eval_operand(v, l_, *this, raw)) {
+        fail(e.code, e.detail, w.col);
         return false;
     }
     if (v.kind == Operand::LVar) {

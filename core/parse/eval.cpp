@@ -12,41 +12,34 @@
 
 namespace pupitre {
 
-int eval_operand(const Operand& o, const LVars& l, EAccess& e, double& out, std::string& why) {
+Error eval_operand(const Operand& o, const LVars& l, EAccess& e, double& out) {
     switch (o.kind) {
         case Operand::Number:
             out = o.num;
             break;
         case Operand::LVar:
-            if (!LVars::valid(o.index)) {
-                why = strf(tr("L%d does not exist (L0-L19, L100-L199, L900-L959)"), o.index);
-                return 91;
-            }
+            if (!LVars::valid(o.index))
+                return {91, strf(tr("L%d does not exist (L0-L19, L100-L199, L900-L959)"), o.index)};
             out = l.v[size_t(o.index)];
             if (!l.written.test(size_t(o.index)))
                 l.unset_read.set(size_t(o.index)), l.any_unset_read = true;
             break;
         case Operand::EParam: {
             int64_t raw;
-            if (int rc = e.read_e(o.index, raw, why)) return rc;
+            if (Error err = e.read_e(o.index, raw)) return err;
             out = double(raw);
             break;
         }
         case Operand::EIndirect: {
-            if (!LVars::valid(o.index)) {
-                why = strf(tr("L%d does not exist"), o.index);
-                return 91;
-            }
+            if (!LVars::valid(o.index)) return {91, strf(tr("L%d does not exist"), o.index)};
             double n = l.v[size_t(o.index)];
             if (!l.written.test(size_t(o.index)))
                 l.unset_read.set(size_t(o.index)), l.any_unset_read = true;
-            if (n < 0 || n > 99999 || n != std::floor(n)) {
-                why = strf(tr("E parameter number %s taken from L%d is not an E number"),
-                           std::to_string(n).c_str(), o.index);
-                return 91;
-            }
+            if (n < 0 || n > 99999 || n != std::floor(n))
+                return {91, strf(tr("E parameter number %s taken from L%d is not an E number"),
+                                 std::to_string(n).c_str(), o.index)};
             int64_t raw;
-            if (int rc = e.read_e(int(n), raw, why)) return rc;
+            if (Error err = e.read_e(int(n), raw)) return err;
             out = double(raw);
             break;
         }
@@ -56,13 +49,13 @@ int eval_operand(const Operand& o, const LVars& l, EAccess& e, double& out, std:
             break;
     }
     if (o.neg) out = -out;
-    return 0;
+    return {};
 }
 
 namespace {
 constexpr double kDeg = std::numbers::pi / 180.0;
 
-int apply_prefix(const Term& t, double& v, std::string& why) {
+Error apply_prefix(const Term& t, double& v) {
     for (int i = int(t.nprefix) - 1; i >= 0; --i) {
         switch (t.prefix[i]) {
             case '-':
@@ -83,17 +76,16 @@ int apply_prefix(const Term& t, double& v, std::string& why) {
                 v = std::trunc(v);
                 break;
             case 'R':
-                if (v < 0) {
-                    why = strf(tr("square root of a negative number (%s)"), fixed3(v).c_str());
-                    return 94;
-                }
+                if (v < 0)
+                    return {94,
+                            strf(tr("square root of a negative number (%s)"), fixed3(v).c_str())};
                 v = std::sqrt(v);
                 break;
         }
         // Keep values near exact where trigonometry leaves noise (sin 30 = 0.5).
         if (std::fabs(v) < 1e-15) v = 0;
     }
-    return 0;
+    return {};
 }
 
 int32_t as_int32(double v) {
@@ -103,13 +95,13 @@ int32_t as_int32(double v) {
 }
 }  // namespace
 
-int eval_expr(const Block& b, Expr x, const LVars& l, EAccess& e, double& out, std::string& why) {
+Error eval_expr(const Block& b, Expr x, const LVars& l, EAccess& e, double& out) {
     double acc = 0;
     for (uint16_t i = 0; i < x.count; ++i) {
         const Term& t = b.terms[size_t(x.first + i)];
         double v;
-        if (int rc = eval_operand(t.v, l, e, v, why)) return rc;
-        if (int rc = apply_prefix(t, v, why)) return rc;
+        if (Error err = eval_operand(t.v, l, e, v)) return err;
+        if (Error err = apply_prefix(t, v)) return err;
         switch (t.op) {
             case '=':
                 acc = v;
@@ -124,10 +116,7 @@ int eval_expr(const Block& b, Expr x, const LVars& l, EAccess& e, double& out, s
                 acc *= v;
                 break;
             case '/':
-                if (v == 0) {
-                    why = tr("division by zero");
-                    return 94;
-                }
+                if (v == 0) return {94, tr("division by zero")};
                 acc /= v;
                 break;
             case '&':
@@ -138,12 +127,9 @@ int eval_expr(const Block& b, Expr x, const LVars& l, EAccess& e, double& out, s
                 break;
         }
     }
-    if (!std::isfinite(acc)) {
-        why = tr("result is not a finite number");
-        return 94;
-    }
+    if (!std::isfinite(acc)) return {94, tr("result is not a finite number")};
     out = acc;
-    return 0;
+    return {};
 }
 
 bool compare(Cmp c, double a, double b) {

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <string>
 
+#include "core/diag.hpp"
 #include "core/parse/block.hpp"
 
 namespace pupitre {
@@ -25,16 +26,16 @@ struct LVars {
 class EAccess {
   public:
     virtual ~EAccess() = default;
-    // Both return 0 or a NUM error number, with `why` filled.
-    virtual int read_e(int n, int64_t& out, std::string& why) = 0;
-    virtual int write_e(int n, int64_t value, std::string& why) = 0;
+    // Both answer a NUM error (diag.hpp), empty on success.
+    virtual Error read_e(int n, int64_t& out) = 0;
+    virtual Error write_e(int n, int64_t value) = 0;
 };
 
 // Value of an operand in an expression: E parameters as raw integers (no unit
-// scaling, program-flow.md §9.3). Returns 0 or an error number.
-int eval_operand(const Operand& o, const LVars& l, EAccess& e, double& out, std::string& why);
-// Evaluates terms [first, first+count) of `b`. Returns 0 or an error number.
-int eval_expr(const Block& b, Expr x, const LVars& l, EAccess& e, double& out, std::string& why);
+// scaling, program-flow.md §9.3).
+Error eval_operand(const Operand& o, const LVars& l, EAccess& e, double& out);
+// Evaluates terms [first, first+count) of `b`.
+Error eval_expr(const Block& b, Expr x, const LVars& l, EAccess& e, double& out);
 // Comparison after rounding both sides to 1e-6 (program-flow.md §3, Q6).
 bool compare(Cmp c, double a, double b);
 

@@ -359,9 +359,8 @@ bool Sim::jog(int axis, double delta, std::string& why) {
         return false;
     }
     double internal = delta / in_->to_display(axis, 1.0);
-    int code = in_->jog(axis, internal, why);
-    if (code) {
-        why = strf(tr("error %d: %s"), code, why.c_str());
+    if (Error e = in_->jog(axis, internal)) {
+        why = strf(tr("error %d: %s"), e.code, e.detail.c_str());
         return false;
     }
     double feed = jog_feed > 0 ? jog_feed : m_.jog_feed;

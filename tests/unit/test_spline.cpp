@@ -17,8 +17,8 @@ TEST(Spline, ThroughThePointsAlongTheStartTangent) {
     c.t0 = {-1, 0};
     c.pts = {{-13, 10}, {-50, 70}, {-78, 75}, {-104, 55}, {-140, 0}};
     c.t1 = {0, -1};
-    std::string why;
-    ASSERT_EQ(spline::build(c, why), 0) << why;
+    Error err = spline::build(c);
+    ASSERT_FALSE(err) << err.detail;
     for (size_t i = 0; i < c.pts.size(); ++i) {
         auto p = spline::at(c, c.s[i]);
         EXPECT_NEAR(p[0], c.pts[i][0], 1e-9);
