@@ -225,10 +225,10 @@ void warn_unreached(const RunArgs& a, const ProgramMemory& mem,
         while (pos < body.size()) {
             size_t eol = body.find('\n', pos);
             if (eol == std::string_view::npos) eol = body.size();
-            Diag d;
-            if (!parse_block(body.substr(pos, eol - pos), b, d) &&
+            Error e;
+            if (!parse_block(body.substr(pos, eol - pos), b, e) &&
                 !reported.count({p->file, line})) {
-                d.severity = Severity::warning;
+                Diag d = diag_of(e, Severity::warning);
                 d.file = p->file;
                 d.program = p->number;
                 d.line = line;

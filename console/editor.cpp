@@ -235,9 +235,9 @@ bool Editor::check(Diag& d) {
     for (size_t i = 0; i < lines_.size(); ++i) {
         const std::string& l = lines_[i];
         if (!l.empty() && l[0] == '%') continue;
-        Diag e;
+        Error e;
         if (!parse_block(l, b, e)) {
-            d = e;
+            d = diag_of(e);
             d.line = int(i) + 1;
             d.n = line_label(l);
             error_line = int(i);

@@ -13,6 +13,15 @@ namespace data {
 std::string_view errors_tsv();
 }
 
+Diag diag_of(const Error& e, Severity s) {
+    Diag d;
+    d.severity = s;
+    d.code = e.code;
+    d.column = e.column;
+    d.detail = e.detail;
+    return d;
+}
+
 std::string format_diag(const Diag& d) {
     std::string s = d.file.empty() ? std::string("-") : d.file;
     s += ':';

@@ -68,6 +68,10 @@ struct Diag {
     bool is_error() const { return severity == Severity::error; }
 };
 
+// The Diag of what a layer answered; the caller fills in where it is (file,
+// program, line, N).
+Diag diag_of(const Error& e, Severity s = Severity::error);
+
 // "FILE:LINE: N<n>: error <code>: <message>" (DESIGN §2.2).
 std::string format_diag(const Diag& d);
 

@@ -559,10 +559,9 @@ StepResult Interpreter::step() {
         loc_ = Loc{stack_.back().prog->number, lineno, -1};
         cur_text_ = line;
         cur_line_ = lineno;
-        Diag& d = parse_diag_;
-        if (!parse_block(line, block_, d)) {
+        if (!parse_block(line, block_, parse_error_)) {
             loc_.n = line_label(line);
-            fail(d.code, d.detail, d.column);
+            fail(parse_error_);
             return StepResult::error;
         }
         loc_.n = block_.n;

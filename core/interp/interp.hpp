@@ -523,7 +523,7 @@ class Interpreter final : private EAccess {
     bool sp_emitted_ = false;
     bool x_known_ = false;  // an X was programmed (G96 start diameter)
     Block block_;           // reused parse buffer
-    Diag parse_diag_;       // filled only when a block does not parse
+    Error parse_error_;     // filled only when a block does not parse
     std::string_view cur_text_;
     int cur_line_ = 0;
     size_t loaded_size_ = 0;  // program memory at the start of the run (G76+ quota)  // line of the

@@ -55,12 +55,12 @@ struct Parser {
     std::string_view s;
     size_t pos = 0;
     Block& b;
-    Diag& d;
+    Error& err;
 
     bool fail(int code, size_t at, std::string msg) {
-        d.code = code;
-        d.column = int(at) + 1;
-        d.detail = std::move(msg);
+        err.code = code;
+        err.column = int(at) + 1;
+        err.detail = std::move(msg);
         return false;
     }
     char peek(size_t k = 0) const { return pos + k < s.size() ? s[pos + k] : '\0'; }
@@ -518,17 +518,17 @@ struct Parser {
 
 }  // namespace
 
-bool parse_block(std::string_view line, Block& out, Diag& d) {
+bool parse_block(std::string_view line, Block& out, Error& e) {
     out.clear();
     if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
     if (line.size() > kMaxBlockChars) {
-        d.code = 1;
-        d.column = int(kMaxBlockChars) + 1;
-        d.detail =
+        e.code = 1;
+        e.column = int(kMaxBlockChars) + 1;
+        e.detail =
             strf(tr("block longer than %zu characters (%zu)"), size_t(kMaxBlockChars), line.size());
         return false;
     }
-    Parser p{line, 0, out, d};
+    Parser p{line, 0, out, e};
     return p.run();
 }
 

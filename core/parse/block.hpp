@@ -118,8 +118,10 @@ struct Block {
 constexpr size_t kMaxBlockChars = 117;  // turning.md §1.3 [DECISION]
 
 // Parses one line of program text (without its '\n'). On a syntax error returns
-// false and fills d.code, d.column and d.detail. `out` is cleared first, and its
-// vectors keep their capacity, so parsing a program allocates almost nothing.
-bool parse_block(std::string_view line, Block& out, Diag& d);
+// false and fills `e` (code, column, detail). `out` is cleared first, and its
+// vectors keep their capacity, so parsing a program allocates almost nothing;
+// the Error is an argument, not the result, for the same reason: this is the
+// hot path, and the caller keeps one.
+bool parse_block(std::string_view line, Block& out, Error& e);
 
 }  // namespace pupitre

@@ -9,13 +9,13 @@ using namespace pupitre;
 namespace {
 Block parse_ok(std::string_view s) {
     Block b;
-    Diag d;
+    Error d;
     EXPECT_TRUE(parse_block(s, b, d)) << s << ": " << d.detail;
     return b;
 }
 int parse_err(std::string_view s) {
     Block b;
-    Diag d;
+    Error d;
     EXPECT_FALSE(parse_block(s, b, d)) << s;
     return d.code;
 }

@@ -31,7 +31,7 @@ const Diag& first_error(const Prog& p) {
 
 TEST(G76Block, PointedBlockOffsetAndTextAreKeptApart) {
     Block b;
-    Diag d;
+    Error d;
     ASSERT_TRUE(parse_block("N100 G76+ H120 N100 +2 G1 X3 (here)", b, d)) << d.detail;
     EXPECT_EQ(b.n, 100);
     EXPECT_EQ(b.g76_k, 2);
