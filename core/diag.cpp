@@ -26,6 +26,10 @@ std::string format_diag(const Diag& d) {
     std::string s = d.file.empty() ? std::string("-") : d.file;
     s += ':';
     s += std::to_string(d.line);
+    if (d.column > 0 && d.line > 0) {
+        s += ':';
+        s += std::to_string(d.column);
+    }
     s += ": ";
     if (d.n >= 0) {
         s += 'N';

@@ -72,7 +72,8 @@ struct Diag {
 // program, line, N).
 Diag diag_of(const Error& e, Severity s = Severity::error);
 
-// "FILE:LINE: N<n>: error <code>: <message>" (DESIGN §2.2).
+// "FILE:LINE[:COL]: N<n>: error <code>: <message>" (DESIGN §2.2): the column
+// of the word at fault when there is one, as GNU tools write it.
 std::string format_diag(const Diag& d);
 
 // The NUM text of an error number from data/errors.tsv (English), or "" if the

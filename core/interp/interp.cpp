@@ -557,6 +557,7 @@ StepResult Interpreter::step() {
             return ended_ ? (has_errors() ? StepResult::error : StepResult::ended)
                           : StepResult::ended;
         loc_ = Loc{stack_.back().prog->number, lineno, -1};
+        col_ = 0;
         cur_text_ = line;
         cur_line_ = lineno;
         if (!parse_block(line, block_, parse_error_)) {

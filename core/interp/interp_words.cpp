@@ -207,6 +207,7 @@ bool Interpreter::decode(const Block& b, Plan& p) {
     size_t first = (b.n >= 0 && !b.words.empty() && b.words[0].addr == addr1('N')) ? 1 : 0;
     for (size_t i = first; i < b.words.size(); ++i)
         if (!d.word(b.words[i])) return false;
+    col_ = 0;  // what is wrong from here on is the block's, not one word's
     return d.finish();
 }
 

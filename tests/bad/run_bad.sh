@@ -5,8 +5,9 @@
 # Usage: run_bad.sh PUPITRE_BINARY FILE.iso
 #
 # Header: the comment-only lines before the first '%' line.
-#   (EXPECT <code> [N<n>])      required, on line 1: the error number, and the N
-#                               of the block that raises it when it has one
+#   (EXPECT <code> [N<n>] [COL<c>])  required, on line 1: the error number, the N
+#                               of the block that raises it when it has one, and
+#                               the column of the word at fault when it names one
 #   (MACHINE <name>)            lathe, mill, mill4, mill5, or a .machine file of
 #                               this directory; default mill
 #   (ARGS <words>)              more options for `pupitre check` (split on blanks)
@@ -16,8 +17,8 @@
 #
 # Passes iff `pupitre check` exits 1 (65 for 1002 and 1003, errors found while
 # loading the file) and stderr has a diagnostic line of the file or one of its
-# companions, `FILE:LINE: [N<n>: ]error <code>: ...`, with `N<n>:` on that same
-# line when the header gives one (DESIGN.md §2.2).
+# companions, `FILE:LINE[:COL]: [N<n>: ]error <code>: ...`, with `N<n>:` and the
+# column on that same line when the header gives them (DESIGN.md §2.2).
 set -u
 
 if [[ $# -ne 2 ]]; then
@@ -48,13 +49,15 @@ while IFS= read -r line; do
         case $key in
             COMPANION) echo "$base: companion file, not a test"; exit 0 ;;
             EXPECT) ;;
-            *) echo "$base: line 1 must be (EXPECT <code> [N<n>]) or (COMPANION)" >&2; exit 2 ;;
+            *) echo "$base: line 1 must be (EXPECT <code> [N<n>] [COL<c>]) or (COMPANION)" >&2; exit 2 ;;
         esac
     fi
     case $key in
         EXPECT)
-            read -r expect_code expect_n extra <<<"$rest"
-            if [[ ! $expect_code =~ ^[0-9]+$ || ( -n $expect_n && ! $expect_n =~ ^N[0-9]+$ ) || -n $extra ]]; then
+            read -r expect_code expect_n expect_col extra <<<"$rest"
+            if [[ $expect_n == COL* ]]; then expect_col=$expect_n expect_n=''; fi
+            if [[ ! $expect_code =~ ^[0-9]+$ || ( -n $expect_n && ! $expect_n =~ ^N[0-9]+$ ) ||
+                  ( -n $expect_col && ! $expect_col =~ ^COL[0-9]+$ ) || -n $extra ]]; then
                 echo "$base: bad header: $line" >&2
                 exit 2
             fi
@@ -67,7 +70,7 @@ while IFS= read -r line; do
 done < <(tr '\0' ' ' <"$file")
 
 if [[ -z $expect_code ]]; then
-    echo "$base: line 1 must be (EXPECT <code> [N<n>])" >&2
+    echo "$base: line 1 must be (EXPECT <code> [N<n>] [COL<c>])" >&2
     exit 2
 fi
 # A profile shipped with the tests (mill1020.machine) is found in this directory.
@@ -91,21 +94,22 @@ while IFS= read -r d; do
     for f in "$base" "${with[@]+"${with[@]}"}"; do
         [[ $d == "$f:"* ]] || continue
         rest=${d#"$f:"}
-        [[ $rest =~ ^[0-9]+:\ (N([0-9]+):\ )?error\ ([0-9]+): ]] || continue
-        [[ ${BASH_REMATCH[3]} == "$expect_code" ]] || continue
-        if [[ -n $expect_n && "N${BASH_REMATCH[2]}" != "$expect_n" ]]; then continue; fi
+        [[ $rest =~ ^[0-9]+(:([0-9]+))?:\ (N([0-9]+):\ )?error\ ([0-9]+): ]] || continue
+        [[ ${BASH_REMATCH[5]} == "$expect_code" ]] || continue
+        if [[ -n $expect_n && "N${BASH_REMATCH[4]}" != "$expect_n" ]]; then continue; fi
+        if [[ -n $expect_col && "COL${BASH_REMATCH[2]}" != "$expect_col" ]]; then continue; fi
         found=1
     done
 done <<<"$err"
 
 if [[ $status -eq $expect_status && $found -eq 1 ]]; then
-    echo "$base: ok (error $expect_code${expect_n:+ at $expect_n})"
+    echo "$base: ok (error $expect_code${expect_n:+ at $expect_n}${expect_col:+ $expect_col})"
     exit 0
 fi
 {
     echo "FAIL $base"
     echo "  command:  (cd $dir && ${cmd[*]})"
-    echo "  expected: exit $expect_status, a line '$base:LINE: ${expect_n:+$expect_n: }error $expect_code: ...'"
+    echo "  expected: exit $expect_status, a line '$base:LINE${expect_col:+:${expect_col#COL}}: ${expect_n:+$expect_n: }error $expect_code: ...'"
     echo "  actual:   exit $status, stderr:"
     if [[ -n $err ]]; then sed 's/^/    /' <<<"$err"; else echo "    (empty)"; fi
 } >&2
