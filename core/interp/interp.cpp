@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <span>
 
 #include "core/i18n.hpp"
 #include "core/interp/gate.hpp"
@@ -228,18 +229,50 @@ bool parse_double(std::string_view s, double& v) {
 }
 }  // namespace
 
-std::string Interpreter::set(std::string_view name, double value, bool immediate) {
-    auto axis_suffix = [&](std::string_view prefix, int& axis) {
+namespace {
+// The fields of a corrector a setting names after "D<n>." (turning.md §3,
+// milling.md §3); a lathe's C, the nose orientation, is a whole number.
+struct CorrField {
+    std::string_view name;
+    double Corrector::*v;
+};
+constexpr CorrField kLatheFields[] = {{"X", &Corrector::x},
+                                      {"Z", &Corrector::z},
+                                      {"R", &Corrector::r},
+                                      {"DX", &Corrector::dx},
+                                      {"DZ", &Corrector::dz}};
+constexpr CorrField kMillFields[] = {{"L", &Corrector::l},   {"R", &Corrector::r},
+                                     {"DL", &Corrector::dl}, {"DR", &Corrector::dr},
+                                     {"A", &Corrector::tip}, {"TIP", &Corrector::tip}};
+
+double Corrector::*corr_field(bool lathe, std::string_view f) {
+    for (const CorrField& c :
+         lathe ? std::span<const CorrField>(kLatheFields) : std::span<const CorrField>(kMillFields))
+        if (c.name == f) return c.v;
+    return nullptr;
+}
+
+// PREF.X, DEC1.Z, DEC3.Y: which origin (0, 1, 2) and the axis letter's index,
+// or -1 when the name is not one of them.
+int origin_named(std::string_view name, int& axis) {
+    static constexpr std::string_view kOrigins[] = {"PREF", "DEC1", "DEC3"};
+    for (int k = 0; k < 3; ++k) {
+        std::string_view prefix = kOrigins[k];
         if (name.size() != prefix.size() + 2 || name.substr(0, prefix.size()) != prefix ||
             name[prefix.size()] != '.')
-            return false;
+            continue;
         axis = axis_of(name.back());
-        return axis >= 0;
-    };
+        return axis >= 0 ? k : -1;
+    }
+    return -1;
+}
+}  // namespace
+
+std::string Interpreter::set(std::string_view name, double value, bool immediate) {
     int axis;
-    if (axis_suffix("PREF", axis) || axis_suffix("DEC1", axis) || axis_suffix("DEC3", axis)) {
+    if (int k = origin_named(name, axis); k >= 0) {
         if (!m_.has(axis)) return strf(tr("axis %c is not on %s"), name.back(), m_.name.c_str());
-        Axes& which = name[0] == 'P' ? frames_.pref : name[3] == '1' ? frames_.dec1 : frames_.dec3;
+        Axes& which = k == 0 ? frames_.pref : k == 1 ? frames_.dec1 : frames_.dec3;
         which[size_t(axis)] = value;
         if (immediate) recompute_program_pos();
         return {};
@@ -261,55 +294,36 @@ std::string Interpreter::set(std::string_view name, double value, bool immediate
         e_written_.erase(int(n));  // a setting, not a write by the program
         return e.detail;
     }
-    if (name.size() >= 4 && name[0] == 'D') {
-        size_t dot = name.find('.');
-        double d;
-        if (dot == std::string_view::npos || !parse_double(name.substr(1, dot - 1), d) || d < 1 ||
-            d > m_.correctors || d != std::floor(d))
-            return strf(tr("corrector must be D1 to D%d"), int(m_.correctors));
-        Corrector& c = corr_[size_t(d)];
-        std::string_view f = name.substr(dot + 1);
-        if (m_.lathe) {
-            if (f == "X")
-                c.x = value;
-            else if (f == "Z")
-                c.z = value;
-            else if (f == "R")
-                c.r = value;
-            else if (f == "C")
-                c.c = int(value);
-            else if (f == "DX")
-                c.dx = value;
-            else if (f == "DZ")
-                c.dz = value;
-            else
-                return tr("lathe correctors have X Z R C DX DZ");
-        } else {
-            if (f == "L")
-                c.l = value;
-            else if (f == "R")
-                c.r = value;
-            else if (f == "DL")
-                c.dl = value;
-            else if (f == "DR")
-                c.dr = value;
-            else if (f == "A" || f == "TIP")
-                c.tip = value;
-            else
-                return tr("mill correctors have L R DL DR and the end radius A");
-        }
-        // The active corrector's new gauge applies at the next move of each of
-        // its axes (turning.md §3.4); a new radius at the next G41/G42.
-        if (int(d) == modal_.d) {
-            if (m_.lathe)
-                gauge_pending_.set(X), gauge_pending_.set(Z);
-            else
-                gauge_pending_.set(size_t(modal_.tool_axis));
-        }
-        return {};
-    }
+    if (name.size() >= 4 && name[0] == 'D') return set_corrector(name, value);
     // TRANSLATORS: %s is an ellipsis (U+2026); msgids stay ASCII.
     return strf(tr("unknown setting (PREF.X, DEC1.Z, DEC3.Y, D1.R, L5, E80000%s)"), "\u2026");
+}
+
+// D<n>.<field> = value.
+std::string Interpreter::set_corrector(std::string_view name, double value) {
+    size_t dot = name.find('.');
+    double d;
+    if (dot == std::string_view::npos || !parse_double(name.substr(1, dot - 1), d) || d < 1 ||
+        d > m_.correctors || d != std::floor(d))
+        return strf(tr("corrector must be D1 to D%d"), int(m_.correctors));
+    Corrector& c = corr_[size_t(d)];
+    std::string_view f = name.substr(dot + 1);
+    if (m_.lathe && f == "C")
+        c.c = int(value);
+    else if (double Corrector::*v = corr_field(m_.lathe, f))
+        c.*v = value;
+    else
+        return m_.lathe ? tr("lathe correctors have X Z R C DX DZ")
+                        : tr("mill correctors have L R DL DR and the end radius A");
+    // The active corrector's new gauge applies at the next move of each of
+    // its axes (turning.md §3.4); a new radius at the next G41/G42.
+    if (int(d) == modal_.d) {
+        if (m_.lathe)
+            gauge_pending_.set(X), gauge_pending_.set(Z);
+        else
+            gauge_pending_.set(size_t(modal_.tool_axis));
+    }
+    return {};
 }
 
 bool Interpreter::get(std::string_view name, double& out) const {
@@ -330,33 +344,12 @@ bool Interpreter::get(std::string_view name, double& out) const {
             return false;
         const Corrector& c = corr_[size_t(d)];
         std::string_view f = name.substr(dot + 1);
-        if (m_.lathe) {
-            if (f == "X")
-                out = c.x;
-            else if (f == "Z")
-                out = c.z;
-            else if (f == "R")
-                out = c.r;
-            else if (f == "C")
-                out = c.c;
-            else if (f == "DX")
-                out = c.dx;
-            else if (f == "DZ")
-                out = c.dz;
-            else
-                return false;
-        } else {
-            if (f == "L")
-                out = c.l;
-            else if (f == "R")
-                out = c.r;
-            else if (f == "DL")
-                out = c.dl;
-            else if (f == "DR")
-                out = c.dr;
-            else
-                return false;
-        }
+        if (m_.lathe && f == "C")
+            out = c.c;
+        else if (double Corrector::*v = corr_field(m_.lathe, f))
+            out = c.*v;
+        else
+            return false;
         return true;
     }
     return false;
@@ -364,10 +357,7 @@ bool Interpreter::get(std::string_view name, double& out) const {
 
 bool Interpreter::start(int program) {
     const ProgramText* p = mem_.find(program);
-    if (!p) {
-        fail(25, strf(tr("program %%%d is not in memory"), program));
-        return false;
-    }
+    if (!p) return fail(25, strf(tr("program %%%d is not in memory"), program));
     return start(p);
 }
 
@@ -470,11 +460,9 @@ bool Interpreter::call(const Plan& p) {
     if (p.g77.level > 0) {
         // G77 -i: the return block of level i (spec README (b) 24).
         int depth = int(stack_.size()) - 1;
-        if (p.g77.level > depth) {
-            fail(26, strf(tr("G77 -%d: there is no call level %d (depth %d)"), p.g77.level,
-                          p.g77.level, depth));
-            return false;
-        }
+        if (p.g77.level > depth)
+            return fail(26, strf(tr("G77 -%d: there is no call level %d (depth %d)"), p.g77.level,
+                                 p.g77.level, depth));
         const Frame& caller = stack_[size_t(p.g77.level - 1)];
         Frame f;
         f.prog = caller.prog;
@@ -486,15 +474,10 @@ bool Interpreter::call(const Plan& p) {
     }
     if (p.g77.h >= 0) {
         target = mem_.find(p.g77.h);
-        if (!target) {
-            fail(25, strf(tr("G77 H%d: program %%%d is not in memory"), p.g77.h, p.g77.h));
-            return false;
-        }
+        if (!target)
+            return fail(25, strf(tr("G77 H%d: program %%%d is not in memory"), p.g77.h, p.g77.h));
     }
-    if (stack_.size() > 8) {
-        fail(26, tr("more than 8 nested G77 calls"));
-        return false;
-    }
+    if (stack_.size() > 8) return fail(26, tr("more than 8 nested G77 calls"));
     Frame f;
     f.prog = target;
     f.call = true;
@@ -506,10 +489,7 @@ bool Interpreter::call(const Plan& p) {
     f.saved_m7 = modal_.m7;
     f.saved_m8 = modal_.m8;
     if (p.g77.nn == 0) {
-        if (p.g77.h < 0) {
-            fail(25, tr("G77 needs H (a program) or N labels"));
-            return false;
-        }
+        if (p.g77.h < 0) return fail(25, tr("G77 needs H (a program) or N labels"));
         f.whole = true;
         f.pos = f.range_pos = target->begin;
         f.line = f.range_line = target->first_line;
@@ -534,10 +514,7 @@ bool Interpreter::call(const Plan& p) {
 bool Interpreter::jump(long label) {
     Frame& f = stack_.back();
     const Label* l = f.prog->find_label(label);
-    if (!l) {
-        fail(25, strf(tr("G79: block N%ld not found in %%%d"), label, f.prog->number));
-        return false;
-    }
+    if (!l) return fail(25, strf(tr("G79: block N%ld not found in %%%d"), label, f.prog->number));
     if (l->offset < f.pos) {
         f.pos = l->offset;  // the state as the jump leaves it
         f.line = l->line;
@@ -664,69 +641,67 @@ Error Interpreter::read_e(int n, int64_t& out) {
 // What E<n> reads (program-flow.md §9, eparams.tsv): the machine's state for
 // the parameters that show it, else what was written or set.
 int64_t Interpreter::e_value(int n) const {
-    auto raw = [&](int k, int64_t none) {
-        auto it = e_raw_.find(k);
-        return it == e_raw_.end() ? none : it->second;
-    };
-    int64_t out = 0;
-    int x = (n / 1000) % 10, k = n % 1000, type = n / 10000;
-    auto unit = [&](int axis, double v) {
-        return is_rotary(axis) ? int64_t(std::llround(v * 1e4)) : um(v);
-    };
-    if (n == 11005)
-        out = (m_.lathe && m_.x_diameter && !modal_.radius_x) ? 1 : 0;
-    else if (n == 11000)
-        out = frames_.ed != 0;
-    else if (n == 11003)
-        out = frames_.mirror.any();
-    else if (n == 11004)
-        out = frames_.scale_on;
-    else if (n >= 21000 && n <= 21255)
-        out = 1;
-    else if (n == 50000)
-        out = modal_.d;
-    else if (n == 51000)
-        out = corr_[size_t(modal_.d)].c;
-    else if (n == 52000)
-        out = um(corr_[size_t(modal_.d)].r);
-    else if (type == 5 && k >= 1 && k <= 255 && n < 56000) {
+    const int x = (n / 1000) % 10, k = n % 1000, type = n / 10000;
+    switch (n) {
+        case 11005:
+            return (m_.lathe && m_.x_diameter && !modal_.radius_x) ? 1 : 0;
+        case 11000:
+            return frames_.ed != 0;
+        case 11003:
+            return frames_.mirror.any();
+        case 11004:
+            return frames_.scale_on;
+        case 50000:
+            return modal_.d;
+        case 51000:
+            return corr_[size_t(modal_.d)].c;
+        case 52000:
+            return um(corr_[size_t(modal_.d)].r);
+        case 69000:
+            return e_raw(n, 1000);
+        case 73000:
+        case 74000:
+            return 0;
+        case 79001:
+            return int64_t(std::llround(rpm_));
+        case 79002:
+            return 100;
+        default:
+            break;
+    }
+    if (n >= 21000 && n <= 21255) return 1;
+    if (type == 5 && k >= 1 && k <= 255 && n < 56000) {
         const Corrector& c = corr_[size_t(k)];
-        int fam = (n / 1000) % 10;
-        if (m_.lathe) {
-            double v[] = {c.x, c.z, c.r, c.dx, c.dz};
-            out = fam == 5 ? c.c : um(v[fam]);
-        } else {
-            double v[] = {c.l, c.tip, c.r, c.dl, c.dr};
-            out = fam == 5 ? c.c : um(v[fam]);
-        }
-    } else if (type == 6 && x <= 8 && k <= 5) {
+        if (x == 5) return c.c;
+        const double lathe[] = {c.x, c.z, c.r, c.dx, c.dz};
+        const double mill[] = {c.l, c.tip, c.r, c.dl, c.dr};
+        return um(m_.lathe ? lathe[x] : mill[x]);
+    }
+    if ((type == 6 && x <= 8 && k <= 5) || (type == 7 && x <= 8 && k <= 6)) return e_axis(n);
+    return e_raw(n, 0);
+}
+
+// E6xxxx and E7xxxx: an axis's origins, travel limits and position.
+int64_t Interpreter::e_axis(int n) const {
+    const int x = (n / 1000) % 10, k = n % 1000, type = n / 10000;
+    auto unit = [&](double v) { return is_rotary(x) ? int64_t(std::llround(v * 1e4)) : um(v); };
+    const AxisConfig& lim = m_.axes[size_t(x)];
+    if (type == 6) {
         const Axes* src[] = {&frames_.pref, &frames_.dec1, nullptr,
                              nullptr,       &frames_.dec3, &frames_.g59};
-        if (src[k])
-            out = unit(x, (*src[k])[size_t(x)]);
-        else
-            out = raw(n, unit(x, k == 2 ? m_.axes[size_t(x)].min : m_.axes[size_t(x)].max));
-    } else if (n == 69000) {
-        out = raw(n, 1000);
-    } else if (n == 73000 || n == 74000) {
-        out = 0;
-    } else if (type == 7 && x <= 8 && k <= 6) {
-        if (k == 0 || k == 1)
-            out = unit(x, prog_[size_t(x)]);
-        else if (k == 2)
-            out = unit(x, m_.axes[size_t(x)].min);
-        else if (k == 3)
-            out = unit(x, m_.axes[size_t(x)].max);
-        else
-            out = raw(n, 0);
-    } else if (n == 79001) {
-        out = int64_t(std::llround(rpm_));
-    } else if (n == 79002) {
-        out = 100;
-    } else {
-        out = raw(n, 0);
+        if (src[k]) return unit((*src[k])[size_t(x)]);
+        return e_raw(n, unit(k == 2 ? lim.min : lim.max));
     }
-    return out;
+    if (k == 0 || k == 1) return unit(prog_[size_t(x)]);
+    if (k == 2) return unit(lim.min);
+    if (k == 3) return unit(lim.max);
+    return e_raw(n, 0);
+}
+
+// What was written to E<n> or set, or `none`.
+int64_t Interpreter::e_raw(int n, int64_t none) const {
+    auto it = e_raw_.find(n);
+    return it == e_raw_.end() ? none : it->second;
 }
 
 Error Interpreter::write_e(int n, int64_t value) {

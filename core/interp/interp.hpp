@@ -289,6 +289,9 @@ class Interpreter final : private EAccess {
     Error e_rights(int n, bool write) const;
     Error e_access() const;
     int64_t e_value(int n) const;
+    int64_t e_axis(int n) const;
+    int64_t e_raw(int n, int64_t none) const;
+    std::string set_corrector(std::string_view name, double value);
     void note_tool(int t);
 
     // interp_words.cpp
@@ -298,6 +301,7 @@ class Interpreter final : private EAccess {
     bool apply_modal(const Plan& p);
     bool apply_spindle(const Plan& p);
     bool do_m_avant(const Plan& p);
+    bool m_avant(int m, bool& coolant);
     bool do_m_apres(const Plan& p, StepResult& r);
 
     // motion.cpp

@@ -492,56 +492,63 @@ bool Interpreter::do_m_avant(const Plan& p) {
         if (!mc->all_models && m_.model == 1020)
             return fail(4, strf(tr("M%d needs a NUM 1040 or 1060"), m));
         if (mc->when != MWhen::avant) continue;
-        switch (m) {
-            case 3:
-            case 4:
-                modal_.spindle_dir = m;
-                break;
-            case 19:
-                modal_.spindle_dir = 19;
-                break;
-            case 7:
-                modal_.m7 = true;
-                coolant = true;
-                break;
-            case 8:
-                modal_.m8 = true;
-                coolant = true;
-                break;
-            case 11:
-                modal_.clamped = false;
-                break;
-            case 49:
-                modal_.overrides_off = true;
-                break;
-            case 62:
-            case 66:
-            case 61:
-                break;
-            case 63:
-            case 64:
-            case 65:
-            case 67:
-            case 68:
-            case 69:
-                return fail(899, strf(tr("M%d: this machine has one spindle"), m));
-            case 998:
-                modal_.modif_inhibited = false;
-                break;
-            case 999:
-                modal_.modif_inhibited = true;
-                break;
-            default:
-                if (m >= 40 && m <= 45) {
-                    if (size_t(m - 40) >= m_.ranges.size() && !m_.ranges.empty())
-                        return fail(29, strf(tr("range M%d does not exist on this machine"), m));
-                    modal_.range = m - 40;
-                } else if (m >= 200 && m <= 899) {
-                    modal_.coded_m = m;
-                }
-        }
+        if (!m_avant(m, coolant)) return false;
     }
     if (coolant) out_.coolant(loc_, modal_.m7, modal_.m8);
+    return true;
+}
+
+// One M function that acts before the moves of its block ("avant" in the
+// codes table and pupitre-iso(5)); `coolant` is set when it turns one on.
+bool Interpreter::m_avant(int m, bool& coolant) {
+    switch (m) {
+        case 3:
+        case 4:
+            modal_.spindle_dir = m;
+            break;
+        case 19:
+            modal_.spindle_dir = 19;
+            break;
+        case 7:
+            modal_.m7 = true;
+            coolant = true;
+            break;
+        case 8:
+            modal_.m8 = true;
+            coolant = true;
+            break;
+        case 11:
+            modal_.clamped = false;
+            break;
+        case 49:
+            modal_.overrides_off = true;
+            break;
+        case 62:
+        case 66:
+        case 61:
+            break;
+        case 63:
+        case 64:
+        case 65:
+        case 67:
+        case 68:
+        case 69:
+            return fail(899, strf(tr("M%d: this machine has one spindle"), m));
+        case 998:
+            modal_.modif_inhibited = false;
+            break;
+        case 999:
+            modal_.modif_inhibited = true;
+            break;
+        default:
+            if (m >= 40 && m <= 45) {
+                if (size_t(m - 40) >= m_.ranges.size() && !m_.ranges.empty())
+                    return fail(29, strf(tr("range M%d does not exist on this machine"), m));
+                modal_.range = m - 40;
+            } else if (m >= 200 && m <= 899) {
+                modal_.coded_m = m;
+            }
+    }
     return true;
 }
 

@@ -330,6 +330,22 @@ bool Interpreter::edit_whole_program(const Block& b, const Plan& p) {
 
 // A line: the program H (or this one), the pointed line N.. and k lines on;
 // G76+ inserts after it, G76- deletes it.
+namespace {
+// The index of the first character of `s` outside a comment and not a blank,
+// or npos when there is none.
+size_t outside_comments(std::string_view s) {
+    for (size_t i = 0; i < s.size(); ++i) {
+        if (s[i] == '(') {
+            size_t close = s.find(')', i);
+            i = close == std::string_view::npos ? s.size() : close;
+        } else if (s[i] != ' ' && s[i] != '\t') {
+            return i;
+        }
+    }
+    return std::string_view::npos;
+}
+}  // namespace
+
 bool Interpreter::edit_line(const Block& b, const Plan& p) {
     const char sign = p.g76.sign;
     const ProgramText* t = stack_.back().prog;
@@ -339,17 +355,8 @@ bool Interpreter::edit_line(const Block& b, const Plan& p) {
         return fail(25, strf(tr("G76%c without H edits the program that runs: in IMD, give the "
                                 "program H"),
                              sign));
-    if (sign == '-') {
-        std::string_view rest = b.g76_block;  // comments only
-        for (size_t i = 0; i < rest.size(); ++i) {
-            if (rest[i] == '(') {
-                size_t close = rest.find(')', i);
-                i = close == std::string_view::npos ? rest.size() : close;
-            } else if (rest[i] != ' ' && rest[i] != '\t') {
-                return fail(3, tr("G76- takes nothing after N.. [+k]"), b.g76_block_col + int(i));
-            }
-        }
-    }
+    if (size_t i = outside_comments(b.g76_block); sign == '-' && i != std::string_view::npos)
+        return fail(3, tr("G76- takes nothing after N.. [+k]"), b.g76_block_col + int(i));
     const long n = p.g76.n[0];
     const int k = std::max(b.g76_k, 0);
     std::string_view all = *t->text;

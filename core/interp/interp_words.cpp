@@ -123,19 +123,15 @@ bool Interpreter::word_value(const Word& w, double& out, int* int_out) {
             out = 0;
             break;
         case Operand::Number:
-            if (v.int_digits > f.max_int || v.frac_digits > f.max_frac) {
-                fail(1,
-                     strf(tr("too many digits after %s"), std::string(addr_name(w.addr)).c_str()),
-                     w.col);
-                return false;
-            }
-            if (v.has_sign && !f.is_signed) {
-                fail(1,
-                     strf(tr("sign after %s, which takes none"),
-                          std::string(addr_name(w.addr)).c_str()),
-                     w.col);
-                return false;
-            }
+            if (v.int_digits > f.max_int || v.frac_digits > f.max_frac)
+                return fail(
+                    1, strf(tr("too many digits after %s"), std::string(addr_name(w.addr)).c_str()),
+                    w.col);
+            if (v.has_sign && !f.is_signed)
+                return fail(1,
+                            strf(tr("sign after %s, which takes none"),
+                                 std::string(addr_name(w.addr)).c_str()),
+                            w.col);
             out = v.neg ? -v.num : v.num;
             break;
         case Operand::LVar:
@@ -145,12 +141,10 @@ bool Interpreter::word_value(const Word& w, double& out, int* int_out) {
             break;
     }
     if (int_out) {
-        if (out != std::floor(out) || std::fabs(out) > 99999) {
-            fail(v.kind == Operand::Number ? 1 : 92,
-                 strf(tr("%s needs a whole number"), std::string(addr_name(w.addr)).c_str()),
-                 w.col);
-            return false;
-        }
+        if (out != std::floor(out) || std::fabs(out) > 99999)
+            return fail(v.kind == Operand::Number ? 1 : 92,
+                        strf(tr("%s needs a whole number"), std::string(addr_name(w.addr)).c_str()),
+                        w.col);
         *int_out = int(out);
     }
     return true;
@@ -162,10 +156,7 @@ bool Interpreter::variable_value(const Word& w, double& out) {
     AddrFormat f = format_of(w.addr);
     const Operand& v = w.v;
     double raw;
-    if (Error e = eval_operand(v, l_, *this, raw)) {
-        fail(e.code, e.detail, w.col);
-        return false;
-    }
+    if (Error e = eval_operand(v, l_, *this, raw)) return fail(e.code, e.detail, w.col);
     if (v.kind == Operand::LVar) {
         switch (f.fmt) {
             case Fmt::length:
@@ -188,13 +179,11 @@ bool Interpreter::variable_value(const Word& w, double& out) {
     } else {
         raw *= e_scale(f.fmt);
     }
-    if (!f.is_signed && raw < 0) {
-        fail(92,
-             strf(tr("negative value %s for %s, which takes none"), fixed3(raw).c_str(),
-                  std::string(addr_name(w.addr)).c_str()),
-             w.col);
-        return false;
-    }
+    if (!f.is_signed && raw < 0)
+        return fail(92,
+                    strf(tr("negative value %s for %s, which takes none"), fixed3(raw).c_str(),
+                         std::string(addr_name(w.addr)).c_str()),
+                    w.col);
     out = raw;
     return true;
 }
@@ -237,8 +226,7 @@ Interpreter::Decoder::Decoder(Interpreter& interp, Plan& plan, const Block& b)
 }
 
 bool Interpreter::Decoder::bad(int code, std::string detail, int column) {
-    in.fail(code, std::move(detail), column);
-    return false;
+    return in.fail(code, std::move(detail), column);
 }
 
 bool Interpreter::Decoder::axis_addr(Addr a, int& axis) {
