@@ -171,7 +171,8 @@ void first_screen(console::Session& s, const MachineProfile& m) {
     }
     if (auto r = s.store()->setting("console.program." + m.name); !r.error && r.value) {
         int n = std::atoi(r.value->c_str());
-        if (s.memory().find(n)) s.sim().select(n, news);
+        if (s.memory().find(n))
+            if (std::string why = s.sim().select(n); !why.empty()) news = why;
     }
     if (news.empty())
         // TRANSLATORS: the console's first message line (80 columns): the

@@ -62,8 +62,7 @@ Effect page(Session& s, std::string_view arg) {
 // F8 (S-F8 back): the next mode, and what to do in it.
 Effect mode_step(Session& s, int dir) {
     Mode m = next_mode(s.sim().mode(), dir);
-    std::string why;
-    if (!s.sim().set_mode(m, why))
+    if (std::string why = s.sim().set_mode(m); !why.empty())
         s.say(why, true);
     else
         s.say(s.mode_news(m));
@@ -163,8 +162,8 @@ Effect jog(Session& s, std::string_view arg) {
     double dist = sim.mode() == Mode::inc ? sim.increment : feed / 60.0 * 0.05;
     if (sim.mode() == Mode::jog && sim.queued_time() > 0.1) return Effect::none;
     // Lathe X is shown as a diameter: a step of the display is what the operator means.
-    std::string why;
-    if (!sim.jog(axis, sign * dist, why)) s.say(strf(tr("JOG: %s"), why.c_str()), true);
+    if (std::string why = sim.jog(axis, sign * dist); !why.empty())
+        s.say(strf(tr("JOG: %s"), why.c_str()), true);
     return Effect::redraw;
 }
 

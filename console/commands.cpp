@@ -110,8 +110,7 @@ Effect mode(Session& s, const CommandCall& c) {
         if (name == "edit") return s.command("edit");
         return usage(s, ":mode auto|seq|dry|test|rns|imd|jog|inc|pom");
     }
-    std::string why;
-    if (!s.sim().set_mode(m, why))
+    if (std::string why = s.sim().set_mode(m); !why.empty())
         s.say(why, true);
     else
         s.say(s.mode_news(m));
@@ -147,15 +146,14 @@ Effect jog(Session& s, const CommandCall& c) {
     double d;
     int axis;
     if (!axis_value(c, 1, axis, d)) return usage(s, tr(":jog AXIS DIST, e.g. :jog X -10"));
-    std::string why;
-    if (!s.sim().jog(axis, d, why)) s.say(strf(tr("JOG: %s"), why.c_str()), true);
+    if (std::string why = s.sim().jog(axis, d); !why.empty())
+        s.say(strf(tr("JOG: %s"), why.c_str()), true);
     return Effect::redraw;
 }
 
 Effect search(Session& s, const CommandCall& c) {
     long n;
-    std::string why;
-    if (!integer(drop_prefix(c.arg(1), "Nn"), n) || !s.sim().search(n, why))
+    if (!integer(drop_prefix(c.arg(1), "Nn"), n) || !s.sim().search(n).empty())
         return usage(s, tr(":search N (in RNS mode)"));
     s.say(s.sim().message());
     return Effect::redraw;
@@ -554,8 +552,7 @@ Effect Session::command(std::string_view text) {
 // Cycle Start, after MODIF's changed blocks are taken in.
 Effect Session::cycle_command() {
     if (!modif_apply()) return Effect::redraw;
-    std::string why;
-    if (!sim().cycle_start(why)) {
+    if (std::string why = sim().cycle_start(); !why.empty()) {
         say(why, true);
         return Effect::redraw;
     }

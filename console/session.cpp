@@ -121,8 +121,7 @@ void Session::show_page(pages::PageId p) {
 }
 
 bool Session::select_program(int number) {
-    std::string why;
-    if (!sim_->select(number, why)) {
+    if (std::string why = sim_->select(number); !why.empty()) {
         say(why, true);
         return false;
     }
@@ -380,8 +379,7 @@ Effect Session::route_text(const std::string& text) {
             say(tr("M999 is in force: IMD and MODIF are forbidden until M998"), true);
             return Effect::redraw;
         }
-        std::string why;
-        if (!sim_->imd(t, why)) {
+        if (std::string why = sim_->imd(t); !why.empty()) {
             say(why, true);
             return Effect::redraw;
         }
@@ -395,7 +393,7 @@ Effect Session::route_text(const std::string& text) {
         std::string_view w = t;
         if (!w.empty() && (w.front() == 'N' || w.front() == 'n')) w.remove_prefix(1);
         std::string why;
-        if (!to_long(w, n) || !sim_->search(n, why))
+        if (!to_long(w, n) || !(why = sim_->search(n)).empty())
             say(why.empty() ? std::string(tr("RNS: type a block number, e.g. N120")) : why, true);
         else
             say(sim_->message());

@@ -121,27 +121,19 @@ Sim::~Sim() = default;
 
 // ---- controls ----
 
-bool Sim::set_mode(Mode m, std::string& why) {
-    if (in_cycle()) {
-        why = tr("a program is in cycle: let it end or press RAZ before changing mode");
-        return false;
-    }
+std::string Sim::set_mode(Mode m) {
+    if (in_cycle())
+        return tr("a program is in cycle: let it end or press RAZ before changing mode");
     mode_ = m;
     if (state_ == RunState::ended) state_ = RunState::idle;
     if (m == Mode::rns && search_n_ < 0)
         message_ = tr("RNS: type the N number of the block to search, then Cycle Start");
-    return true;
+    return {};
 }
 
-bool Sim::select(int program, std::string& why) {
-    if (in_cycle()) {
-        why = tr("a program is in cycle: RAZ first");
-        return false;
-    }
-    if (!mem_.find(program)) {
-        why = strf(tr("program %%%d is not in memory"), program);
-        return false;
-    }
+std::string Sim::select(int program) {
+    if (in_cycle()) return tr("a program is in cycle: RAZ first");
+    if (!mem_.find(program)) return strf(tr("program %%%d is not in memory"), program);
     if (selected_ != program) {
         // A new program: the status line and the OP page forget the old one's
         // block, count and cycle time.
@@ -151,53 +143,40 @@ bool Sim::select(int program, std::string& why) {
         if (state_ == RunState::ended) state_ = RunState::idle;
     }
     selected_ = program;
-    return true;
+    return {};
 }
 
-bool Sim::imd(std::string_view blocks, std::string& why) {
-    if (mode_ != Mode::imd) {
-        why = tr("blocks are typed in IMD mode");
-        return false;
-    }
-    if (in_cycle()) {
-        why = tr("the previous IMD block is still running");
-        return false;
-    }
+std::string Sim::imd(std::string_view blocks) {
+    if (mode_ != Mode::imd) return tr("blocks are typed in IMD mode");
+    if (in_cycle()) return tr("the previous IMD block is still running");
     imd_ = std::make_unique<ProgramText>();
     imd_->file = "IMD";
     imd_->text = std::make_shared<std::string>(std::string(blocks) + "\n");
     imd_->end = imd_->text->size();
     invalidate_text_cache();  // the cache may know the old block's address
     if (state_ == RunState::ended) state_ = RunState::idle;
-    return true;
+    return {};
 }
 
-bool Sim::search(long n, std::string& why) {
-    if (in_cycle()) {
-        why = tr("a program is in cycle: RAZ first");
-        return false;
-    }
-    if (n < 0) {
-        why = tr("RNS needs a block number N");
-        return false;
-    }
+std::string Sim::search(long n) {
+    if (in_cycle()) return tr("a program is in cycle: RAZ first");
+    if (n < 0) return tr("RNS needs a block number N");
     search_n_ = n;
     message_ = strf(tr("RNS N%ld: Cycle Start searches the block"), n);
-    return true;
+    return {};
 }
 
-bool Sim::cycle_start(std::string& why) {
+std::string Sim::cycle_start() {
     switch (state_) {
         case RunState::alarm:
-            why = strf(tr("alarm %d is active: RAZ first"), alarms_.back().diag.code);
-            return false;
+            return strf(tr("alarm %d is active: RAZ first"), alarms_.back().diag.code);
         case RunState::running:
-            return true;
+            return {};
         case RunState::hold:
         case RunState::block:
         case RunState::stopped:
             state_ = RunState::running;
-            return true;
+            return {};
         case RunState::idle:
         case RunState::ended:
             // At rest a setting may have moved the program frame (a touch-off,
@@ -205,48 +184,41 @@ bool Sim::cycle_start(std::string& why) {
             op_ = in_->frames().to_program(om_);
             break;
     }
-    return start_from_rest(why);
+    return start_from_rest();
 }
 
 // Cycle Start at rest: the mode says what runs. POM runs no program: the
 // last run's counters stay.
-bool Sim::start_from_rest(std::string& why) {
+std::string Sim::start_from_rest() {
     message_.clear();
     switch (mode_) {
         case Mode::automatic:
         case Mode::single:
         case Mode::dry:
-            if (!need_program(why)) return false;
+            if (std::string why = need_program(); !why.empty()) return why;
             in_->start(selected_);
             new_path(op());
             break;
         case Mode::test:
-            if (!need_program(why)) return false;
+            if (std::string why = need_program(); !why.empty()) return why;
             start_test();
             break;
         case Mode::rns:
-            if (!need_program(why)) return false;
-            if (search_n_ < 0) {
-                why = tr("RNS: type the N number of the block to search first");
-                return false;
-            }
+            if (std::string why = need_program(); !why.empty()) return why;
+            if (search_n_ < 0) return tr("RNS: type the N number of the block to search first");
             in_->start(selected_);
             searching_ = true;
             break;
         case Mode::imd:
-            if (!imd_) {
-                why = tr("IMD: type a block first");
-                return false;
-            }
+            if (!imd_) return tr("IMD: type a block first");
             in_->start_imd(imd_.get());
             break;
         case Mode::pom:
             start_pom();
-            return true;
+            return {};
         case Mode::jog:
         case Mode::inc:
-            why = tr("JOG/INC: move an axis with the jog keys or :jog AXIS DIST");
-            return false;
+            return tr("JOG/INC: move an axis with the jog keys or :jog AXIS DIST");
     }
     interp_done_ = false;
     pending_alarm_ = false;
@@ -257,13 +229,12 @@ bool Sim::start_from_rest(std::string& why) {
     run_warnings_.clear();
     run_warning_count_ = 0;
     state_ = RunState::running;
-    return true;
+    return {};
 }
 
-bool Sim::need_program(std::string& why) const {
-    if (selected_ >= 0 && mem_.find(selected_)) return true;
-    why = tr("no program selected: choose one on the DIR page or with :load N");
-    return false;
+std::string Sim::need_program() const {
+    if (selected_ >= 0 && mem_.find(selected_)) return {};
+    return tr("no program selected: choose one on the DIR page or with :load N");
 }
 
 // TEST changes nothing: its own correctors, frames, variables and program
@@ -344,32 +315,22 @@ void Sim::raz() {
     state_ = RunState::idle;
 }
 
-bool Sim::jog(int axis, double delta, std::string& why) {
-    if (state_ == RunState::running && !manual_) {
-        why = tr("a program is in cycle");
-        return false;
-    }
-    if ((in_cycle() && !manual_) || state_ == RunState::alarm) {
-        why = state_ == RunState::alarm ? tr("an alarm is active: RAZ first")
-                                        : tr("a program is interrupted: RAZ before jogging");
-        return false;
-    }
-    if (!m_.has(axis)) {
-        why = strf(tr("the machine has no %c axis"), kAxisNames[size_t(axis)]);
-        return false;
-    }
+std::string Sim::jog(int axis, double delta) {
+    if (state_ == RunState::running && !manual_) return tr("a program is in cycle");
+    if ((in_cycle() && !manual_) || state_ == RunState::alarm)
+        return state_ == RunState::alarm ? tr("an alarm is active: RAZ first")
+                                         : tr("a program is interrupted: RAZ before jogging");
+    if (!m_.has(axis)) return strf(tr("the machine has no %c axis"), kAxisNames[size_t(axis)]);
     double internal = delta / in_->to_display(axis, 1.0);
-    if (Error e = in_->jog(axis, internal)) {
-        why = strf(tr("error %d: %s"), e.code, e.detail.c_str());
-        return false;
-    }
+    if (Error e = in_->jog(axis, internal))
+        return strf(tr("error %d: %s"), e.code, e.detail.c_str());
     double feed = jog_feed > 0 ? jog_feed : m_.jog_feed;
     queue_move_to(in_->machine_pos(), 1, Loc{}, feed, false, axis);
     message_.clear();  // the last run's news is not the jog's
     manual_ = true;
     interp_done_ = true;
     if (state_ != RunState::running) state_ = RunState::running;
-    return true;
+    return {};
 }
 
 // A move the interpreter did not make (POM, JOG): from the last queued point.

@@ -61,16 +61,18 @@ class Sim final : private MachineSink {
     const workshop::Workshop* shop() const { return shop_.get(); }
 
     // --- controls ---
+    // Each control answers what the operator is refused, as the message to
+    // show, or an empty string when it is done (ARCHITECTURE.md, Invariants).
     Mode mode() const { return mode_; }
     // Changing mode is refused while a program is in cycle (as on the panel).
-    bool set_mode(Mode m, std::string& why);
-    bool select(int program, std::string& why);  // the program AUTO/SEQ/DRY/TEST/RNS run
+    std::string set_mode(Mode m);
+    std::string select(int program);  // the program AUTO/SEQ/DRY/TEST/RNS run
     int selected() const { return selected_; }
-    bool cycle_start(std::string& why);
+    std::string cycle_start();
     void feed_hold();
     void raz();
     // IMD: the block(s) Cycle Start will execute.
-    bool imd(std::string_view blocks, std::string& why);
+    std::string imd(std::string_view blocks);
     // Forgets the IMD block waiting for Cycle Start; false if there was none.
     bool drop_imd() {
         if (!imd_ || in_cycle()) return false;
@@ -79,11 +81,11 @@ class Sim final : private MachineSink {
         return true;
     }
     // RNS: the block searched for; Cycle Start rebuilds the state up to it.
-    bool search(long n, std::string& why);
+    std::string search(long n);
     long search_target() const { return search_n_; }
     // JOG / INC / :jog: moves one axis by `delta` (mm or degrees; lathe X as
     // the OP page shows it). `continuous` marks a held JOG key.
-    bool jog(int axis, double delta, std::string& why);
+    std::string jog(int axis, double delta);
     double jog_feed = 0;   // mm/min; 0: the profile's
     double increment = 1;  // INC step, mm
 
@@ -179,8 +181,8 @@ class Sim final : private MachineSink {
     }
     void push(Ev e);
     void new_path(const Axes& start);
-    bool need_program(std::string& why) const;
-    bool start_from_rest(std::string& why);  // cycle_start in idle or ended
+    std::string need_program() const;
+    std::string start_from_rest();  // cycle_start in idle or ended
     void start_test();
     void start_pom();
     void rns_found(int next_line);

@@ -40,11 +40,10 @@ struct Bench {
         Diag d;
         s->memory().load_text("big.iso", big_program(1'000'000), d);
         s->load_store();
-        std::string why;
-        s->sim().select(1, why);
-        s->sim().set_mode(mode, why);
+        s->sim().select(1);
+        s->sim().set_mode(mode);
         s->speed = console::Speed::max;
-        s->sim().cycle_start(why);
+        s->sim().cycle_start();
     }
 };
 
