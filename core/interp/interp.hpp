@@ -529,9 +529,8 @@ class Interpreter final : private EAccess {
     Block block_;           // reused parse buffer
     Error parse_error_;     // filled only when a block does not parse
     std::string_view cur_text_;
-    int cur_line_ = 0;
-    size_t loaded_size_ = 0;  // program memory at the start of the run (G76+ quota)  // line of the
-                              // block being executed (G76+/G76- move it)
+    int cur_line_ = 0;        // line of the block being executed (G76+/G76- move it)
+    size_t loaded_size_ = 0;  // program memory at the start of the run (G76+ quota)
 };
 
 }  // namespace pupitre

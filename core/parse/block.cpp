@@ -19,27 +19,33 @@
 
 namespace pupitre {
 
-std::string_view addr_name(Addr a) {
-    static char names[kAddrCount][3];
-    static bool init = false;
-    if (!init) {
+namespace {
+// The text of each address (block.hpp: A-Z, EA-EZ, NA-NZ, E+, LA-LZ), built
+// at compile time: a table filled at the first call behind a flag would be a
+// data race between two interpreters on two threads (STYLE.md).
+struct AddrNames {
+    char text[kAddrCount][3] = {};
+    constexpr AddrNames() {
         for (int i = 0; i < 26; ++i) {
-            names[i][0] = char('A' + i);
-            names[26 + i][0] = 'E';
-            names[26 + i][1] = char('A' + i);
-            names[52 + i][0] = 'N';
-            names[52 + i][1] = char('A' + i);
+            set(addr1(char('A' + i)), 'A' + i, 0);
+            set(addrE(char('A' + i)), 'E', 'A' + i);
+            set(addrN(char('A' + i)), 'N', 'A' + i);
+            set(addrL(char('A' + i)), 'L', 'A' + i);
         }
-        names[kAddrEsign][0] = 'E';
-        names[kAddrEsign][1] = '+';
-        for (int i = 0; i < 26; ++i) {
-            names[79 + i][0] = 'L';
-            names[79 + i][1] = char('A' + i);
-        }
-        init = true;
+        set(kAddrEsign, 'E', '+');
     }
+    constexpr void set(Addr a, int c0, int c1) {
+        text[a][0] = char(c0);
+        text[a][1] = char(c1);
+    }
+};
+constexpr AddrNames kAddrNames;
+}  // namespace
+
+std::string_view addr_name(Addr a) {
     if (a >= kAddrCount) return "?";
-    return names[a][1] ? std::string_view(names[a], 2) : std::string_view(names[a], 1);
+    const char* t = kAddrNames.text[a];
+    return std::string_view(t, t[1] ? 2 : 1);
 }
 
 namespace {

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <thread>
 
 #include "helpers.hpp"
 
@@ -253,4 +254,29 @@ TEST(BlockSteps, ExecuteFollowsTheCodesTable) {
         return std::find(table.begin(), table.end(), s) - table.begin();
     };
     for (size_t i = 1; i < want.size(); ++i) EXPECT_LT(rank(want[i - 1]), rank(want[i]));
+}
+
+// STYLE.md promises that two interpreters on two threads are safe: nothing in
+// the core is shared behind a flag (addr_name's table is built at compile
+// time). Both runs, at once, give what one run alone gives.
+TEST(Threads, TwoInterpretersOnTwoThreadsRunAsOneAlone) {
+    std::string text = "%1\nG0 X0 Y0 Z10\n";
+    for (int i = 0; i < 2000; ++i)
+        text += "G1 X" + std::to_string(i % 50) + " Y" + std::to_string(i % 7) + " F500\n";
+    text += "G1 X1.23456\nM2\n";  // error 1: too many digits after X
+    auto run = [&] {
+        test::Prog p(text);
+        std::string out = std::to_string(p.cap.moves.size());
+        for (const Diag& d : p.in->diags()) out += " " + format_diag(d);
+        return out;
+    };
+    const std::string alone = run();
+    ASSERT_NE(alone.find("too many digits after X"), std::string::npos) << alone;
+    std::string a, b;
+    std::thread t1([&] { a = run(); });
+    std::thread t2([&] { b = run(); });
+    t1.join();
+    t2.join();
+    EXPECT_EQ(a, alone);
+    EXPECT_EQ(b, alone);
 }
