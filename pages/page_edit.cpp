@@ -32,21 +32,22 @@ void page_edit(const View& v, Canvas& c, const Rect& r) {
     int first = std::clamp(v.edit_cursor - rows / 3, 0, std::max(0, n - rows));
     int ma = v.edit_mark < 0 ? -1 : std::min(v.edit_mark, v.edit_cursor);
     int mb = v.edit_mark < 0 ? -1 : std::max(v.edit_mark, v.edit_cursor);
+    const int w = number_width(std::min(n, first + rows), 5);
     for (int i = 0; i < rows && first + i < n; ++i) {
         int k = first + i;
         int y = r.y + 1 + i;
         bool locked = k < v.edit_locked;
         Style st = k == v.edit_error ? Style::alarm : locked ? Style::dim : Style::normal;
-        c.text_right(r.x, y, 5, std::to_string(k + 1), Style::dim);
-        c.put(r.x + 5, y,
+        c.text_right(r.x, y, w, std::to_string(k + 1), Style::dim);
+        c.put(r.x + w, y,
               locked                            ? U'#'
               : (k >= ma && k <= mb && ma >= 0) ? U'|'
                                                 : U' ',
               Style::dim);
-        c.text(r.x + 7, y, lines[size_t(k)], st, r.w - 8);
+        c.text(r.x + w + 2, y, lines[size_t(k)], st, r.w - w - 3);
         if (k == v.edit_cursor) {
             c.style(Rect{r.x, y, r.w, 1}, k == v.edit_error ? Style::alarm : Style::select);
-            c.put(r.x + 6, y, U'>', k == v.edit_error ? Style::alarm : Style::select);
+            c.put(r.x + w + 1, y, U'>', k == v.edit_error ? Style::alarm : Style::select);
         }
     }
     std::string help =

@@ -28,17 +28,18 @@ void page_program(const View& v, Canvas& c, const Rect& r) {
     int first = current ? current - rows / 3 : p->first_line;
     first += v.scroll;
     if (first < p->first_line) first = p->first_line;
+    const int w = number_width(first + rows - 1, 6);
     for (int i = 0; i < rows; ++i) {
         int line = first + i;
         std::string_view text = s.line_of(p, line);
         if (text.data() == nullptr) break;  // past the end of the program
         int y = r.y + 1 + i;
         bool cur = line == current;
-        c.text_right(r.x, y, 6, std::to_string(line), cur ? Style::select : Style::dim);
-        c.text(r.x + 7, y, text, cur ? Style::select : Style::normal, r.w - 8);
+        c.text_right(r.x, y, w, std::to_string(line), cur ? Style::select : Style::dim);
+        c.text(r.x + w + 1, y, text, cur ? Style::select : Style::normal, r.w - w - 2);
         if (cur) {
             c.style(Rect{r.x, y, r.w, 1}, Style::select);
-            c.put(r.x + 6, y, U'>', Style::select);
+            c.put(r.x + w, y, U'>', Style::select);
         }
     }
 }

@@ -35,6 +35,14 @@ struct Line {
     }
 };
 void draw_lines(const std::vector<Line>& lines, int scroll, Canvas& c, const Rect& r);
+// The columns a line number takes in a page's left margin: `least`, or the
+// digits of `last`, the largest number shown (a CAM program has millions of
+// lines).
+inline int number_width(int last, int least) {
+    int digits = 1;
+    for (long v = last; v >= 10; v /= 10) ++digits;
+    return digits > least ? digits : least;
+}
 // Splits UTF-8 `text` into lines of at most `width` columns at spaces (none
 // for an empty text).
 std::vector<std::string> wrap_text(const std::string& text, int width);

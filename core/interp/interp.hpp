@@ -143,7 +143,7 @@ class Interpreter final : private EAccess {
     // after M02, alarms acknowledged; positions, origins and correctors stay.
     void raz();
     // JOG/INC: moves an axis of the machine by `delta` (internal units) outside
-    // any program; returns the NUM error (150-158 travel), 0 when done.
+    // any program; answers the NUM error (150-158 travel), empty when done.
     Error jog(int axis, double delta);
     // POM: the axis reaches its home position and is marked homed.
     void home(int axis);

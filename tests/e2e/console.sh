@@ -339,6 +339,23 @@ g76)
     "$bin" export 761 | grep -q '^N10 G0 X42.5 Y5 Z10$' || fail "the store does not hold %761"
     "$bin" history 761 | grep -q 'G76 in %760' || fail "the revision does not name G76"
     ;;
+long)
+    # A program of a million lines (CAM output): TEST runs it while the pages
+    # answer, and PROG numbers its lines in full (they were cut to 6 digits).
+    awk 'BEGIN { print "%1"; for (i = 2; i <= 1000011; i++) printf "G1 X%d F1000 (L%d)\n", i % 97, i; print "M2" }' \
+        > "$work/long.iso"
+    "$bin" import "$work/long.iso" >/dev/null || fail "import of the long program"
+    start
+    pom
+    cmd ":load 1"
+    cmd ":mode test"
+    keys F9
+    wait_for '^ TEST +%1 line [0-9]+ +CYCLE' 10
+    keys F3
+    wait_for 'PROG  %1'
+    wait_for 'TEST %1: no error' 60
+    wait_for '^1000008 +G1 X[0-9]+ F1000 \(L1000008\)'
+    ;;
 graph)
     # The toolpath drawn in braille: after TEST, zoomed, then live in AUTO
     # with the tool marker moving.
