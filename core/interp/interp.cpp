@@ -498,8 +498,7 @@ bool Interpreter::call(const Plan& p) {
         const Label* b = target->find_label(p.g77.nn > 1 ? p.g77.n[1] : p.g77.n[0]);
         if (!a || !b) {
             long missing = !a ? p.g77.n[0] : p.g77.n[1];
-            fail(25, strf(tr("G77: block N%ld not found in %%%d"), missing, target->number));
-            return false;
+            return fail(25, strf(tr("G77: block N%ld not found in %%%d"), missing, target->number));
         }
         // G77 N50 N30 runs the same range as G77 N30 N50, in file order (004:896).
         if (b->line < a->line) std::swap(a, b);

@@ -86,11 +86,11 @@ bool Interpreter::note_backward_jump(long label) {
     if (seen_states_.size() >= kWindow) seen_states_.clear();
     auto d = state_digest();
     if (seen_states_.insert(DigestKey{d.first, d.second}).second) return true;
-    fail(err::kBlockBudget, strf(tr("endless loop: G79 N%ld comes back to a state the program was "
-                                    "already in (same block, "
-                                    "variables, modal state and position), so it can never end"),
-                                 label));
-    return false;
+    return fail(err::kBlockBudget,
+                strf(tr("endless loop: G79 N%ld comes back to a state the program was "
+                        "already in (same block, "
+                        "variables, modal state and position), so it can never end"),
+                     label));
 }
 
 }  // namespace pupitre

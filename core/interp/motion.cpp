@@ -43,20 +43,18 @@ bool Interpreter::check_travel(const Axes& mach) {
         double v = mach[size_t(a)], lo = travel_lo_[size_t(a)], hi = travel_hi_[size_t(a)];
         if (!homed_[size_t(a)] && std::abs(v - mach_[size_t(a)]) > 1e-9) {
             // 000:13307: a programmed move of an axis whose POM is not done.
-            fail(159, strf(tr("axis %c is not homed: do the POM first"), kAxisNames[size_t(a)]));
-            return false;
+            return fail(159,
+                        strf(tr("axis %c is not homed: do the POM first"), kAxisNames[size_t(a)]));
         }
         if (v >= lo - 1e-6 && v <= hi + 1e-6) continue;
         const char axis = kAxisNames[size_t(a)];
         if (a == X && m_.lathe)
-            fail(150 + a, strf(tr("%c travel limit: the move goes to %c%s on the OM scale "
-                                  "(radius), beyond %s"),
-                               axis, axis, f3(v).c_str(), f3(v < lo ? lo : hi).c_str()));
-        else
-            fail(150 + a,
-                 strf(tr("%c travel limit: the move goes to %c%s on the OM scale, beyond %s"), axis,
-                      axis, f3(v).c_str(), f3(v < lo ? lo : hi).c_str()));
-        return false;
+            return fail(150 + a, strf(tr("%c travel limit: the move goes to %c%s on the OM scale "
+                                         "(radius), beyond %s"),
+                                      axis, axis, f3(v).c_str(), f3(v < lo ? lo : hi).c_str()));
+        return fail(150 + a,
+                    strf(tr("%c travel limit: the move goes to %c%s on the OM scale, beyond %s"),
+                         axis, axis, f3(v).c_str(), f3(v < lo ? lo : hi).c_str()));
     }
     return true;
 }
