@@ -230,8 +230,8 @@ bool parse_double(std::string_view s, double& v) {
 }  // namespace
 
 namespace {
-// The fields of a corrector a setting names after "D<n>." (turning.md §3,
-// milling.md §3); a lathe's C, the nose orientation, is a whole number.
+// The fields of a corrector a setting names after "D<n>." (turning.md §3.3,
+// milling.md §4.3.1); a lathe's C, the nose orientation, is a whole number.
 struct CorrField {
     std::string_view name;
     double Corrector::*v;
