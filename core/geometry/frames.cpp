@@ -17,9 +17,14 @@ Eigen::Rotation2Dd rotation(double deg) {
 Axes Frames::to_machine(const Axes& prog) const {
     Axes p = prog;
     if (ed == 0 && !scale_on && mirror.none()) {
-        // Translations only: the common case, kept short for long programs.
-        for (size_t a = 0; a < size_t(kAxes); ++a)
-            p[a] += g59[a] + dec3[a] + gauge[a] + (g53 ? 0.0 : dec1[a] + pref[a]);
+        // Translations only: the common case, kept short for long programs
+        // (the test of G53 out of the loop, which the compiler can then
+        // vectorise; the sums are the same, in the same order).
+        if (g53)
+            for (size_t a = 0; a < size_t(kAxes); ++a) p[a] += g59[a] + dec3[a] + gauge[a] + 0.0;
+        else
+            for (size_t a = 0; a < size_t(kAxes); ++a)
+                p[a] += g59[a] + dec3[a] + gauge[a] + (dec1[a] + pref[a]);
         return p;
     }
     for (int a = 0; a < kAxes; ++a)
