@@ -41,18 +41,14 @@ std::string Editor::text() const {
     return out;
 }
 
-bool Editor::editable(int line, std::string& why) const {
-    if (line < locked) {
-        why = tr(
+std::string Editor::refusal(int first) const {
+    if (first < locked)
+        return tr(
             "this block is already prepared: MODIF changes the blocks after the one in progress");
-        return false;
-    }
-    if (line == 0 && !lines_.empty() && !lines_[0].empty() && lines_[0][0] == '%') {
+    if (first == 0 && !lines_.empty() && !lines_[0].empty() && lines_[0][0] == '%')
         // xgettext:no-c-format
-        why = tr("the % line names the program: keep it");
-        return false;
-    }
-    return true;
+        return tr("the % line names the program: keep it");
+    return {};
 }
 
 void Editor::range(int& a, int& b) const {
@@ -76,8 +72,7 @@ std::string Editor::insert_after(std::string block) {
 }
 
 std::string Editor::replace(std::string block) {
-    std::string why;
-    if (!editable(cursor, why)) return why;
+    if (std::string why = refusal(cursor); !why.empty()) return why;
     lines_[size_t(cursor)] = std::move(block);
     dirty = true;
     ++changes;
@@ -95,9 +90,7 @@ std::string Editor::copy() {
 std::string Editor::erase() {
     int a, b;
     range(a, b);
-    std::string why;
-    for (int i = a; i <= b; ++i)
-        if (!editable(i, why)) return why;
+    if (std::string why = refusal(a); !why.empty()) return why;
     lines_.erase(lines_.begin() + a, lines_.begin() + b + 1);
     if (lines_.empty()) lines_.push_back("");
     cursor = std::min(a, int(lines_.size()) - 1);
@@ -110,9 +103,7 @@ std::string Editor::erase() {
 std::string Editor::cut() {
     int a, b;
     range(a, b);
-    std::string why;
-    for (int i = a; i <= b; ++i)
-        if (!editable(i, why)) return why;
+    if (std::string why = refusal(a); !why.empty()) return why;
     copy();
     mark = -1;
     cursor = a;

@@ -52,7 +52,10 @@ class Editor {
     bool check(Diag& d);
 
   private:
-    bool editable(int line, std::string& why) const;
+    // Why a range of lines starting at `first` may not be changed, or "" when
+    // it may: MODIF's prepared blocks and the % line both come first, so the
+    // range's first line decides.
+    std::string refusal(int first) const;
     void range(int& a, int& b) const;
     bool open_ = false;
     std::vector<std::string> lines_;

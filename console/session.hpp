@@ -78,7 +78,7 @@ class Session {
     bool apply_setting(const std::string& name, double value, const std::string& source);
     Effect touch(int axis, double surface);  // asks first with no corrector (D0)
     Effect touch_now(int axis, double surface);
-    bool implausible_gauge(const std::string& name, double value, std::string& why) const;
+    std::string implausible_gauge(const std::string& name, double value) const;
     void confirm(std::string question, std::function<void()> then);
     void echo_comma(std::string_view typed, double v);
     Effect measure(int d, int axis, double surface);

@@ -144,20 +144,20 @@ static std::string at_rest(const Sim& s) {
     return {};
 }
 
-// A gauge longer than the axis travel cannot be a tool's: it asks first.
-bool Session::implausible_gauge(const std::string& name, double value, std::string& why) const {
+// A gauge longer than the axis travel cannot be a tool's: the question to ask
+// first, or "".
+std::string Session::implausible_gauge(const std::string& name, double value) const {
     std::string field = corrector_field(name);
     int axis = field == "X" || field == "DX"   ? X
                : field == "Z" || field == "DZ" ? Z
                : field == "L" || field == "DL" ? sim_->interp().modal().tool_axis
                                                : -1;
-    if (axis < 0 || !m_.has(axis)) return false;
+    if (axis < 0 || !m_.has(axis)) return {};
     const AxisConfig& ax = m_.axes[size_t(axis)];
     double travel = ax.max - ax.min;
-    if (!(travel > 0 && travel < 1e8) || std::abs(value) <= travel) return false;
-    why = strf(tr("%s = %s is longer than the %c travel (%s). Keep it?"), name.c_str(),
-               mm(value).c_str(), kAxisNames[size_t(axis)], mm(travel).c_str());
-    return true;
+    if (!(travel > 0 && travel < 1e8) || std::abs(value) <= travel) return {};
+    return strf(tr("%s = %s is longer than the %c travel (%s). Keep it?"), name.c_str(),
+                mm(value).c_str(), kAxisNames[size_t(axis)], mm(travel).c_str());
 }
 
 // Asks "y/n" on the input line; `then` runs on "y".
@@ -315,9 +315,8 @@ Effect Session::setting_text(std::string_view text) {
         if (corr && name.find('.') == std::string::npos)
             name = "D" + std::to_string(corr_cursor) + "." + name;
         std::string source = corr ? "page CORR" : "page PREF";
-        std::string why;
-        if (implausible_gauge(name, v, why)) {
-            confirm(why, [this, name, v, source] { apply_setting(name, v, source); });
+        if (std::string question = implausible_gauge(name, v); !question.empty()) {
+            confirm(question, [this, name, v, source] { apply_setting(name, v, source); });
             return Effect::redraw;
         }
         if (apply_setting(name, v, source) && comma) echo_comma(text, v);

@@ -2,6 +2,7 @@
 // canvas (STYLE.md: pages are pure renderers). One file per page.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
+#include <algorithm>
 #include <string>
 #include <utility>
 #include <vector>
@@ -39,9 +40,7 @@ void draw_lines(const std::vector<Line>& lines, int scroll, Canvas& c, const Rec
 // digits of `last`, the largest number shown (a CAM program has millions of
 // lines).
 inline int number_width(int last, int least) {
-    int digits = 1;
-    for (long v = last; v >= 10; v /= 10) ++digits;
-    return digits > least ? digits : least;
+    return std::max(least, int(std::to_string(last).size()));
 }
 // Splits UTF-8 `text` into lines of at most `width` columns at spaces (none
 // for an empty text).

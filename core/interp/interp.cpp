@@ -327,13 +327,9 @@ std::string Interpreter::set_corrector(std::string_view name, double value) {
 }
 
 bool Interpreter::get(std::string_view name, double& out) const {
-    int axis = name.size() >= 6 && name[name.size() - 2] == '.' ? axis_of(name.back()) : -1;
-    if (axis >= 0 && (name.substr(0, 5) == "PREF." || name.substr(0, 5) == "DEC1." ||
-                      name.substr(0, 5) == "DEC3.")) {
-        const Axes& which = name[0] == 'P'   ? frames_.pref
-                            : name[3] == '1' ? frames_.dec1
-                                             : frames_.dec3;
-        out = which[size_t(axis)];
+    int axis;
+    if (int k = origin_named(name, axis); k >= 0) {
+        out = (k == 0 ? frames_.pref : k == 1 ? frames_.dec1 : frames_.dec3)[size_t(axis)];
         return true;
     }
     if (name.size() >= 4 && name[0] == 'D') {
