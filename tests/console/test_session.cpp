@@ -475,6 +475,23 @@ TEST(Edit, ANewProgramTypedSavedAndRun) {
     EXPECT_NEAR(c.s->sim().op()[X], 10, 1e-9);
 }
 
+// Six-digit line numbers are written whole in the EDIT margin (five columns
+// cut 100004 to 10000).
+TEST(Edit, LineNumbersPast99999AreWrittenWhole) {
+    Console c("mill", {});
+    std::string text = "%780\n";
+    for (int i = 2; i <= 100010; ++i) text += "G1 X1 (L" + std::to_string(i) + ")\n";
+    text += "M2\n";
+    Diag d;
+    ASSERT_TRUE(c.s->memory().load_text("long.iso", text, d)) << d.detail;
+    c.type(":edit 780");
+    ASSERT_EQ(c.s->page, pages::PageId::edit);
+    c.s->editor.cursor = 100005;  // line 100006
+    std::string screen = c.screen();
+    EXPECT_NE(screen.find("100004  G1 X1 (L100004)"), std::string::npos) << screen;
+    EXPECT_NE(screen.find("100006 >G1 X1 (L100006)"), std::string::npos) << screen;
+}
+
 TEST(Edit, SavingABadBlockPutsTheCursorOnItWithItsNumber) {
     Console c("mill", {});
     c.type(":edit 778");

@@ -280,3 +280,43 @@ TEST(Threads, TwoInterpretersOnTwoThreadsRunAsOneAlone) {
     EXPECT_EQ(a, alone);
     EXPECT_EQ(b, alone);
 }
+
+// A diagnostic names the column of the word at fault, and none for an error
+// about the whole block (DESIGN §2.2: FILE:LINE[:COL]).
+TEST(Diagnostics, ColumnOfTheWordOnlyWhenAWordIsAtFault) {
+    test::Prog word("%1\nG0 X10 Y1.23456\nM2\n");
+    ASSERT_EQ(word.error(), 1);
+    EXPECT_EQ(word.in->diags().front().column, 8);  // Y1.23456: too many digits
+    EXPECT_EQ(format_diag(word.in->diags().front()).substr(0, 11), "test.iso:2:");
+    test::Prog block("%1\nG0 X10 Y5000 F100\nM2\n");
+    ASSERT_EQ(block.error(), 151);  // Y travel: the block, not its last word
+    EXPECT_EQ(block.in->diags().front().column, 0);
+    EXPECT_EQ(format_diag(block.in->diags().front()).substr(0, 12), "test.iso:2: ");
+}
+
+// set() and get() read one table of corrector fields: what one writes, the
+// other reads, a mill's end radius A (or TIP) included.
+TEST(Settings, GetReadsEveryCorrectorFieldSetWrites) {
+    test::Prog mill("%1\nM2\n");
+    for (const char* f : {"L", "R", "DL", "DR", "A", "TIP"}) {
+        std::string name = std::string("D4.") + f;
+        ASSERT_EQ(mill.in->set(name, 12.5), "") << name;
+        double v = 0;
+        ASSERT_TRUE(mill.in->get(name, v)) << name;
+        EXPECT_EQ(v, 12.5) << name;
+    }
+    EXPECT_NE(mill.in->set("D4.X", 1), "");  // a lathe's field
+    test::Prog lathe("%1\nM2\n", "lathe");
+    for (const char* f : {"X", "Z", "R", "C", "DX", "DZ"}) {
+        std::string name = std::string("D4.") + f;
+        ASSERT_EQ(lathe.in->set(name, 3), "") << name;
+        double v = 0;
+        ASSERT_TRUE(lathe.in->get(name, v)) << name;
+        EXPECT_EQ(v, 3) << name;
+    }
+    double v = 0;
+    ASSERT_EQ(lathe.in->set("PREF.Z", -250), "");
+    ASSERT_TRUE(lathe.in->get("PREF.Z", v));
+    EXPECT_EQ(v, -250);
+    EXPECT_FALSE(lathe.in->get("PREF.ZZ", v));
+}
