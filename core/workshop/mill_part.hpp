@@ -1,0 +1,115 @@
+// The machining centre's physical world (issue 15): a block of stock on the
+// table, held in a vice or on a plate, with locating pins and a tool setter;
+// the cutters' true shapes. The material is kept two ways:
+//  - the strokes: every straight piece the cutter's tip swept while cutting,
+//    exactly; the instruments cast rays against them (exact to 0.1 µm);
+//  - a height field (z-map) of `cell` mm over the stock's top, the top of the
+//    material at each cell's centre, for the screen, the export and the
+//    contacts (a contact on a face the tools have cut is found to half a
+//    cell; the stock's own faces, the floor of a cut, the fixtures are exact).
+// Everything is in machine coordinates, mm; a cutter is a solid of
+// revolution about a vertical axis, its tip (lowest point) at `tip`.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+#include <array>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace pupitre::workshop {
+
+using P3 = std::array<double, 3>;  // machine X, Y, Z (mm)
+
+// A milling cutter as it really is, below the gauge line.
+struct Cutter {
+    double radius = 5;   // mm
+    double corner = 0;   // corner radius: 0 a flat end mill, == radius a ball end
+    double flute = 20;   // cutting length from the tip; above it, the shank
+    double holder = 20;  // the holder's radius; it begins `reach` above the tip
+    double reach = 40;   // mm from the tip to the holder's face
+    // The bottom surface's height above the tip at a distance d from the
+    // axis (0 <= d <= radius): 0 on the flat, rising along the corner.
+    double bottom(double d) const;
+    // The radius of the cutter's cross-section `u` mm above the tip (u >= 0).
+    double slice(double u) const;
+};
+
+struct Box3 {
+    P3 lo{}, hi{};
+};
+
+// A vertical cylinder (a locating pin, the tool setter's plunger).
+struct Cylinder {
+    double x = 0, y = 0, radius = 3, z0 = 0, z1 = 10;
+};
+
+// Which part of the cutter meets something.
+enum class Part { flute, shank, holder };
+
+class MillWorld {
+  public:
+    // The stock as loaded, and the height field's cell (mm, > 0).
+    explicit MillWorld(const Box3& stock, double cell = 0.1);
+    void new_part();  // fresh stock
+    const Box3& stock() const { return stock_; }
+
+    // The height field: nx() x ny() cells from the stock's lo corner; the
+    // machine Z of the material's top at cell (i, j)'s centre, or
+    // stock().lo[2] where it is cut through.
+    int nx() const { return nx_; }
+    int ny() const { return ny_; }
+    double cell() const { return cell_; }
+    float height(int i, int j) const { return h_[size_t(j) * size_t(nx_) + size_t(i)]; }
+
+    // Removes what the cutter sweeps with its tip moving straight from `a`
+    // to `b` (the flute and everything above it: the material is a height
+    // field, cut from above). Returns the volume removed (mm³, from the
+    // height field), 0 when the move cut nothing.
+    double cut(const Cutter& c, const P3& a, const P3& b);
+
+    // How deep `part` of the cutter, tip at `tip`, is into the material (mm:
+    // the largest height of material above that part's surface), 0 when it
+    // only touches or is clear.
+    double depth_into(const Cutter& c, const P3& tip, Part part) const;
+    // The first fraction of the straight move a->b (0..1) where `part` comes
+    // deeper than `depth` into the material, within 0.1 µm of travel; 2 when
+    // it never does. `before`: the last fraction where it does not yet.
+    double first_contact(const Cutter& c, const P3& a, const P3& b, Part part, double depth,
+                         bool before = false) const;
+
+    // What an instrument reads: the material along the line through `at`
+    // parallel to `axis` (0 X, 1 Y, 2 Z), as sorted, disjoint intervals of
+    // that coordinate, exact from the strokes.
+    std::vector<std::array<double, 2>> along(int axis, const P3& at) const;
+
+    // Counts the changes of the material (a cut, fresh stock).
+    uint64_t generation() const { return generation_; }
+    // The strokes as text for the store, one per line ("ax ay az bx by bz
+    // radius corner", µm integers would lose nothing: %.4f); and back: the
+    // height field is rebuilt from them (false, and nothing changed, when
+    // the text is not one).
+    std::string to_text() const;
+    bool from_text(std::string_view text);
+
+  private:
+    struct Stroke {
+        P3 a, b;
+        double radius, corner;
+    };
+    // ... the implementation's own members
+    Box3 stock_;
+    double cell_;
+    int nx_ = 0, ny_ = 0;
+    std::vector<float> h_;
+    std::vector<Stroke> strokes_;
+    uint64_t generation_ = 0;
+};
+
+// The same contact tests against a fixture (exact): how deep `part` of the
+// cutter with its tip at `tip` is into a box or a vertical cylinder, and the
+// first fraction of a straight move where it is deeper than `depth`.
+double depth_into(const Cutter& c, const P3& tip, Part part, const Box3& b);
+double depth_into(const Cutter& c, const P3& tip, Part part, const Cylinder& k);
+
+}  // namespace pupitre::workshop
