@@ -96,14 +96,36 @@ class MillWorld {
     struct Stroke {
         P3 a, b;
         double radius, corner;
+        int bi = 0, bj = 0;  // its first bucket of the index (each is listed once per line)
     };
-    // ... the implementation's own members
+    static constexpr int kTile = 16;  // cells a side of the tiles that keep the highest top
+    static bool make_stroke(const P3& a, const P3& b, double radius, double corner, Stroke& s);
+    bool meets_stock(const Stroke& s) const;
+    void record(const Stroke& s);
+    double apply(const Stroke& s);
+    void retile(int i0, int i1, int j0, int j1);
+    // The lowest the stroke removes at (x, y) (+inf when it does not reach
+    // it), within `tol` mm; and the interval it removes along a line.
+    static double lowest(const Stroke& s, double x, double y, double tol);
+    static bool removal(const Stroke& s, int axis, const P3& at, double& lo, double& hi);
+    // The deepest column (as depth_into), or any value above `above` as
+    // soon as one is found.
+    double penetration(const Cutter& c, const P3& tip, Part part, double above) const;
+    std::vector<std::array<double, 2>> spans(const Cutter& c, const P3& a, const P3& b, Part part,
+                                             double depth) const;
     Box3 stock_;
     double cell_;
     int nx_ = 0, ny_ = 0;
     std::vector<float> h_;
     std::vector<Stroke> strokes_;
     uint64_t generation_ = 0;
+    std::vector<double> xs_, ys_;   // the cells' centres (clamped into the stock)
+    std::vector<uint8_t> touched_;  // a stroke reached the cell's centre
+    int tx_ = 0, ty_ = 0;           // tiles
+    std::vector<float> tile_max_;   // the highest top in each tile
+    double bucket_ = 5;             // mm a side of the strokes' index buckets
+    int bx_ = 0, by_ = 0;
+    std::vector<std::vector<uint32_t>> buckets_;
 };
 
 // The same contact tests against a fixture (exact): how deep `part` of the
