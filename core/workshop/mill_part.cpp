@@ -168,6 +168,8 @@ void MillWorld::new_part() {
     h_.assign(n, float(stock_.hi[2]));
     touched_.assign(n, 0);
     tile_max_.assign(size_t(tx_) * size_t(ty_), float(stock_.hi[2]));
+    tile_stale_.assign(size_t(tx_) * size_t(ty_), 0);
+    stale_ = false;
     strokes_.clear();
     buckets_.assign(size_t(bx_) * size_t(by_), {});
     ++generation_;
@@ -304,21 +306,31 @@ double MillWorld::apply(const Stroke& s) {
         }
         removed += row * (j == ny_ - 1 ? last_h : cell_);
     }
-    if (removed > 0) retile(i0, i1, j0, j1);
+    if (removed > 0) {
+        for (int tj = j0 / kTile; tj <= j1 / kTile; ++tj)
+            for (int ti = i0 / kTile; ti <= i1 / kTile; ++ti)
+                tile_stale_[size_t(tj) * size_t(tx_) + size_t(ti)] = 1;
+        stale_ = true;
+    }
     return removed;
 }
 
-void MillWorld::retile(int i0, int i1, int j0, int j1) {
-    for (int tj = j0 / kTile; tj <= j1 / kTile; ++tj)
-        for (int ti = i0 / kTile; ti <= i1 / kTile; ++ti) {
+void MillWorld::refresh() const {
+    if (!stale_) return;
+    for (int tj = 0; tj < ty_; ++tj)
+        for (int ti = 0; ti < tx_; ++ti) {
+            const size_t t = size_t(tj) * size_t(tx_) + size_t(ti);
+            if (!tile_stale_[t]) continue;
             float m = -std::numeric_limits<float>::infinity();
             for (int j = tj * kTile; j < std::min(ny_, (tj + 1) * kTile); ++j) {
                 const float* h = &h_[size_t(j) * size_t(nx_)];
                 for (int i = ti * kTile; i < std::min(nx_, (ti + 1) * kTile); ++i)
                     m = std::max(m, h[i]);
             }
-            tile_max_[size_t(tj) * size_t(tx_) + size_t(ti)] = m;
+            tile_max_[t] = m;
+            tile_stale_[t] = 0;
         }
+    stale_ = false;
 }
 
 bool MillWorld::removal(const Stroke& s, int axis, const P3& at, double& lo, double& hi) {

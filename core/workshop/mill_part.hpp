@@ -83,7 +83,8 @@ class MillWorld {
     // that coordinate, exact from the strokes.
     std::vector<std::array<double, 2>> along(int axis, const P3& at) const;
 
-    // Counts the changes of the material (a cut, fresh stock).
+    // Counts the changes of the material (a cut, fresh stock): every stroke
+    // kept counts, even one that takes only a sliver between cell centres.
     uint64_t generation() const { return generation_; }
     // The strokes as text for the store, one per line ("ax ay az bx by bz
     // radius corner", µm integers would lose nothing: %.4f); and back: the
@@ -103,7 +104,9 @@ class MillWorld {
     bool meets_stock(const Stroke& s) const;
     void record(const Stroke& s);
     double apply(const Stroke& s);
-    void retile(int i0, int i1, int j0, int j1);
+    // Brings the tiles' highest tops up to date (kept lazily: a pocket's
+    // thousands of strokes would each rescan the tiles they cross).
+    void refresh() const;
     // The lowest the stroke removes at (x, y) (+inf when it does not reach
     // it), within `tol` mm; and the interval it removes along a line.
     static double lowest(const Stroke& s, double x, double y, double tol);
@@ -119,18 +122,22 @@ class MillWorld {
     std::vector<float> h_;
     std::vector<Stroke> strokes_;
     uint64_t generation_ = 0;
-    std::vector<double> xs_, ys_;   // the cells' centres (clamped into the stock)
-    std::vector<uint8_t> touched_;  // a stroke reached the cell's centre
-    int tx_ = 0, ty_ = 0;           // tiles
-    std::vector<float> tile_max_;   // the highest top in each tile
-    double bucket_ = 5;             // mm a side of the strokes' index buckets
+    std::vector<double> xs_, ys_;              // the cells' centres (clamped into the stock)
+    std::vector<uint8_t> touched_;             // a stroke reached the cell's centre
+    int tx_ = 0, ty_ = 0;                      // tiles
+    mutable std::vector<float> tile_max_;      // the highest top in each tile
+    mutable std::vector<uint8_t> tile_stale_;  // cut since it was last refreshed
+    mutable bool stale_ = false;
+    double bucket_ = 5;  // mm a side of the strokes' index buckets
     int bx_ = 0, by_ = 0;
     std::vector<std::vector<uint32_t>> buckets_;
 };
 
-// The same contact tests against a fixture (exact): how deep `part` of the
-// cutter with its tip at `tip` is into a box or a vertical cylinder, and the
-// first fraction of a straight move where it is deeper than `depth`.
+// The same contact test against a fixture (exact): how deep `part` of the
+// cutter with its tip at `tip` is into a box or a vertical cylinder (with
+// the axis over it, the horizontal overlap is the section's radius plus the
+// distance to the nearest side). Exact and piecewise smooth along a move, so
+// the caller finds a first contact by bisecting on it.
 double depth_into(const Cutter& c, const P3& tip, Part part, const Box3& b);
 double depth_into(const Cutter& c, const P3& tip, Part part, const Cylinder& k);
 

@@ -111,6 +111,7 @@ std::vector<std::array<double, 2>> MillWorld::along(int axis, const P3& at) cons
 }
 
 double MillWorld::depth_into(const Cutter& c, const P3& tip, Part part) const {
+    refresh();
     return penetration(c, tip, part, kInf);
 }
 
@@ -209,6 +210,7 @@ double MillWorld::first_contact(const Cutter& c, const P3& a, const P3& b, Part 
         const P3 p{a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])};
         return penetration(c, p, part, depth) > depth;
     };
+    refresh();
     if (deeper(0)) return 0;
     if (!(len > 0)) return 2;
     // March where the part can meet material, in steps no longer than a
