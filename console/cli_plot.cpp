@@ -52,6 +52,14 @@ std::vector<std::vector<std::array<double, 2>>> part_in_program_frame(const work
     const double dz = op[Z] - (om[Z] - gauge[Z]);
     const double dx = op[X] - (om[X] - gauge[X]) + w.setup().lathe.axis_x;
     std::vector<std::vector<std::array<double, 2>>> out;
+    if (const workshop::MillWorld* block = w.mill()) {
+        // Seen from above where the program frame puts it, as the lathe's part.
+        const workshop::P3 tip = w.tip3(om);
+        out = workshop::block_from_above(*block);
+        for (auto& poly : out)
+            for (auto& p : poly) p[0] += op[X] - tip[0], p[1] += op[Y] - tip[1];
+        return out;
+    }
     for (const workshop::CPath& q : w.world().material()) {
         out.emplace_back();
         for (const auto& v : q) {

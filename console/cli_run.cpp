@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "console/cli.hpp"
+#include "console/workshop_io.hpp"
 #include "core/i18n.hpp"
 #include "core/interp/interp.hpp"
 #include "core/output/trace.hpp"
@@ -87,25 +88,9 @@ class NullSink final : public MachineSink {};
 
 // --setup: a shipped setup's name or a setup file; prints the problem.
 bool load_setup(const std::string& name, const MachineProfile& m, workshop::Setup& s) {
-    if (!m.lathe) {
-        std::fprintf(stderr,
-                     tr("pupitre: --setup: the workshop has a lathe only yet (--machine lathe)\n"));
-        return false;
-    }
-    if (workshop::builtin_setup(name, s)) return true;
-    std::ifstream in(name);
-    if (!in) {
-        std::fprintf(stderr, tr("pupitre: unknown setup '%s' (lathe, or a .setup file)\n"),
-                     name.c_str());
-        return false;
-    }
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    if (std::string err = workshop::parse_setup(ss.str(), s); !err.empty()) {
-        std::fprintf(stderr, tr("pupitre: %s: %s\n"), name.c_str(), err.c_str());
-        return false;
-    }
-    return true;
+    std::string why = read_setup(name, m, s);
+    if (!why.empty()) std::fprintf(stderr, tr("pupitre: %s\n"), why.c_str());
+    return why.empty();
 }
 
 namespace {
@@ -145,23 +130,6 @@ void workshop_results(const workshop::Workshop& shop, const ProgramMemory& mem,
         asked.emplace_back();
         asked.back().error = shop.measure(spec, asked.back().r);
     }
-}
-
-int write_part(const std::string& path, const workshop::LatheWorld& w, const std::string& title) {
-    bool svg = path.size() > 4 && path.compare(path.size() - 4, 4, ".svg") == 0;
-    std::string text = svg ? workshop::part_svg(w, title) : workshop::part_zr(w);
-    FILE* f = path == "-" ? stdout : std::fopen(path.c_str(), "w");
-    if (!f) {
-        std::fprintf(stderr, tr("pupitre: cannot write %s\n"), path.c_str());
-        return kCantCreate;
-    }
-    bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
-    ok = (f == stdout ? std::fflush(f) : std::fclose(f)) == 0 && ok;
-    if (!ok) {
-        std::fprintf(stderr, tr("pupitre: cannot write %s\n"), path.c_str());
-        return kIoErr;
-    }
-    return kOk;
 }
 
 // The program run and check run: the first one of the file; null if the file
@@ -300,7 +268,10 @@ int run(const RunArgs& a) {
     print_summary(a, in, shop.get(), crashes, asked);
     std::fflush(stdout);
     if (shop && !a.part_out.empty())
-        if (int rc = write_part(a.part_out, shop->world(), a.files.front())) return rc;
+        if (std::string why; int rc = write_part(a.part_out, *shop, a.files.front(), why)) {
+            std::fprintf(stderr, tr("pupitre: %s\n"), why.c_str());
+            return rc;
+        }
     // What the program wrote into correctors and origins stays, as on the NUM.
     if (!a.db.empty())
         if (int rc = store.persist(in, a.files.front(), machine)) return rc;

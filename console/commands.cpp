@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "console/session.hpp"
+#include "console/workshop_io.hpp"
 #include "core/i18n.hpp"
 #include "core/workshop/report.hpp"
 
@@ -215,11 +216,16 @@ Effect touch(Session& s, const CommandCall& c) {
 
 // ---- the workshop (pupitre-setup(5)) ----
 
+std::string no_workshop(const Session& s) {
+    return s.machine().lathe ? tr("no workshop: :setup lathe puts a part in the chuck")
+                             : tr("no workshop: :setup mill puts a block in the vice");
+}
+
 // An instrument's reading of the part: ":measure dia Z-20".
 Effect read_instrument(Session& s, const CommandCall& c) {
     const workshop::Workshop* w = s.sim().shop();
     if (!w) {
-        s.say(tr("no workshop: :setup lathe puts a part in the chuck"), true);
+        s.say(no_workshop(s), true);
         return Effect::redraw;
     }
     workshop::Reading r;
@@ -240,7 +246,8 @@ Effect read_instrument(Session& s, const CommandCall& c) {
 }
 
 bool instrument_word(std::string_view w) {
-    return w == "dia" || w == "bore" || w == "groove" || w == "length" || w == "tool";
+    return w == "dia" || w == "bore" || w == "groove" || w == "length" || w == "tool" ||
+           w == "width" || w == "depth" || w == "height";  // the last three: a mill's
 }
 
 Effect setup(Session& s, const CommandCall& c) {
@@ -249,7 +256,9 @@ Effect setup(Session& s, const CommandCall& c) {
     if (what.empty()) {
         s.say(now ? strf(tr("workshop: setup %s, %s"), now->setup().name.c_str(),
                          now->setup().description.c_str())
-                  : std::string(tr("no workshop: the machine moves a point (:setup lathe)")));
+                  : std::string(s.machine().lathe
+                                    ? tr("no workshop: the machine moves a point (:setup lathe)")
+                                    : tr("no workshop: the machine moves a point (:setup mill)")));
         return Effect::redraw;
     }
     if (s.sim().in_cycle()) {
@@ -262,28 +271,15 @@ Effect setup(Session& s, const CommandCall& c) {
         s.save_workshop();
         return Effect::redraw;
     }
-    if (!s.machine().lathe) {
-        s.say(tr("the workshop has a lathe only yet"), true);
+    workshop::Setup st;
+    if (std::string why = read_setup(std::string(what), s.machine(), st); !why.empty()) {
+        s.say(why, true);
         return Effect::redraw;
     }
-    workshop::Setup st;
-    std::string name(what);
-    if (!workshop::builtin_setup(name, st)) {
-        std::ifstream in(name);
-        if (!in) {
-            s.say(strf(tr("unknown setup '%s' (lathe, or a .setup file)"), name.c_str()), true);
-            return Effect::redraw;
-        }
-        std::ostringstream text;
-        text << in.rdbuf();
-        if (std::string why = workshop::parse_setup(text.str(), st); !why.empty()) {
-            s.say(strf(tr("%s: %s"), name.c_str(), why.c_str()), true);
-            return Effect::redraw;
-        }
-    }
     s.sim().set_workshop(std::make_unique<workshop::Workshop>(s.machine(), st, nullptr));
-    s.say(strf(tr("workshop: setup %s, %s; fresh stock in the chuck"), st.name.c_str(),
-               st.description.c_str()));
+    s.say(strf(st.kind == "mill" ? tr("workshop: setup %s, %s; a fresh block in the vice")
+                                 : tr("workshop: setup %s, %s; fresh stock in the chuck"),
+               st.name.c_str(), st.description.c_str()));
     s.save_workshop();
     return Effect::redraw;
 }
@@ -292,7 +288,7 @@ Effect setup(Session& s, const CommandCall& c) {
 Effect shim(Session& s, const CommandCall& c) {
     workshop::Workshop* w = s.sim().shop();
     if (!w) {
-        s.say(tr("no workshop: :setup lathe puts a part in the chuck"), true);
+        s.say(no_workshop(s), true);
         return Effect::redraw;
     }
     double mm = 0;
@@ -310,17 +306,11 @@ Effect shim(Session& s, const CommandCall& c) {
     return Effect::redraw;
 }
 
-// ":part export FILE": the part as SVG (.svg) or as its (Z, R) outline.
+// ":part export FILE": the part as write_part writes it (workshop_io.hpp).
 Effect export_part(Session& s, const workshop::Workshop& w, std::string_view file) {
-    std::string path(file);
-    bool svg = path.size() > 4 && path.compare(path.size() - 4, 4, ".svg") == 0;
-    std::string text =
-        svg ? workshop::part_svg(w.world(), w.setup().name) : workshop::part_zr(w.world());
-    std::FILE* f = std::fopen(path.c_str(), "w");
-    bool ok = f && std::fwrite(text.data(), 1, text.size(), f) == text.size();
-    if (f) ok = std::fclose(f) == 0 && ok;
-    if (!ok)
-        s.say(strf(tr("cannot write %s"), path.c_str()), true);
+    std::string path(file), why;
+    if (write_part(path, w, w.setup().name, why) != 0)
+        s.say(why, true);
     else
         s.say(strf(tr("the part written to %s"), path.c_str()));
     return Effect::redraw;
@@ -331,7 +321,7 @@ Effect part(Session& s, const CommandCall& c) {
     bool exporting = c.arg(1) == "export" && !c.arg(2).empty() && c.arg(3).empty();
     if (c.arg(1) != "new" && !exporting) return usage(s, ":part new | :part export FILE");
     if (!w) {
-        s.say(tr("no workshop: :setup lathe puts a part in the chuck"), true);
+        s.say(no_workshop(s), true);
         return Effect::redraw;
     }
     if (exporting) return export_part(s, *w, c.arg(2));
@@ -339,8 +329,8 @@ Effect part(Session& s, const CommandCall& c) {
         s.say(tr("a program is in cycle"), true);
         return Effect::redraw;
     }
-    w->world().new_part();
-    s.say(tr("fresh stock in the chuck"));
+    w->new_part();
+    s.say(w->is_mill() ? tr("a fresh block in the vice") : tr("fresh stock in the chuck"));
     s.save_workshop();
     return Effect::redraw;
 }

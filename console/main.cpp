@@ -189,15 +189,17 @@ CLI::App* add_run(CLI::App& app, cli::RunArgs& ra) {
                   tr("M01 stops (the optional-stop switch is on)"));
     run->add_option(
            "--setup", ra.setup,
-           tr("run in the workshop: the true chuck, stock and tools (lathe, or a .setup file)"))
+           tr("run in the workshop: the true chuck or vice, stock and tools (lathe, mill, or a "
+              ".setup file)"))
         ->type_name("SETUP");
     run->add_option("--measure", ra.measures,
                     tr("after the run, read an instrument: 'dia Z-20', 'bore Z-5', 'groove Z-30', "
-                       "'length', 'tool T1 X'"))
+                       "'length', 'tool T1 X'; a mill's: 'depth X10 Y40', 'width Y X10 Y40 Z-1'"))
         ->type_name("WHAT");
     run->add_option(
            "--part-out", ra.part_out,
-           tr("write the cut part: its half-section as (Z, R) points, or SVG if FILE ends in .svg"))
+           tr("write the cut part: its half-section as (Z, R) points, or SVG if FILE ends in .svg; "
+              "a mill's as a 16-bit PNG height field (FILE.png) and its JSON"))
         ->type_name("FILE");
     return run;
 }
@@ -224,8 +226,9 @@ CLI::App* add_plot(CLI::App& app, cli::PlotArgs& pa) {
         ->type_name("OUT");
     plot->add_option("--pdf", pa.pdf, tr("the picture as a one-page PDF, for printing"))
         ->type_name("OUT");
-    plot->add_option("--setup", pa.setup,
-                     tr("draw the part the workshop cut under the path (lathe, or a .setup file)"))
+    plot->add_option(
+            "--setup", pa.setup,
+            tr("draw the part the workshop cut under the path (lathe, mill, or a .setup file)"))
         ->type_name("SETUP");
     plot->add_option("files", pa.files,
                      tr("program files; the first program of the first file is run"))
@@ -246,8 +249,8 @@ void add_store(CLI::App& app, CommandLine& c, std::vector<Command>& commands) {
     CLI::App* imp =
         // xgettext:no-c-format
         app.add_subcommand("import", tr("store the % programs of files (one transaction for all)"));
-    // xgettext:no-c-format
     imp->add_option("files", sa.files,
+                    // xgettext:no-c-format
                     tr("program files; each % program is stored under its number"))
         ->required();
     // xgettext:no-c-format

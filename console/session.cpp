@@ -66,14 +66,19 @@ std::string Session::load_store() {
 std::string Session::load_workshop() {
     auto r = store_->workshop(m_.name);
     if (r.error) return r.error.message;
-    if (!r.value || !m_.lathe) return {};
+    if (!r.value) return {};
     workshop::Setup st;
-    if (std::string why = workshop::parse_setup(r.value->setup, st); !why.empty())
-        return strf(tr("the stored workshop is not a setup (%s): :setup lathe loads one"),
+    std::string why = workshop::parse_setup(r.value->setup, st);
+    if (why.empty() && (st.kind == "lathe") != m_.lathe)
+        why = st.kind == "lathe" ? tr("a lathe's, on a machining centre")
+                                 : tr("a machining centre's, on a lathe");
+    if (!why.empty())
+        return strf(m_.lathe ? tr("the stored workshop is not a setup (%s): :setup lathe loads one")
+                             : tr("the stored workshop is not a setup (%s): :setup mill loads one"),
                     why.c_str());
     auto w = std::make_unique<workshop::Workshop>(m_, st, nullptr);
-    const bool read = w->world().from_text(r.value->part);  // else fresh stock, as built
-    workshop_saved_ = read ? w->world().generation() : 0;
+    const bool read = w->load_part(r.value->part);  // else fresh stock, as built
+    workshop_saved_ = read ? w->generation() : 0;
     sim_->set_workshop(std::move(w));
     return read ? std::string()
                 : std::string(tr(
@@ -82,9 +87,9 @@ std::string Session::load_workshop() {
 
 void Session::save_workshop() {
     const workshop::Workshop* w = sim_->shop();
-    if (w) workshop_saved_ = w->world().generation();
+    if (w) workshop_saved_ = w->generation();
     if (!store_) return;
-    store::Error e = w ? store_->put_workshop(m_.name, w->setup().source, w->world().to_text())
+    store::Error e = w ? store_->put_workshop(m_.name, w->setup().source, w->part_text())
                        : store_->put_workshop(m_.name, "", "");
     if (e) say(strf(tr("the workshop was not stored: %s"), e.message.c_str()), true);
 }
@@ -493,7 +498,7 @@ void Session::check_run_end() {
 }
 
 void Session::persist_run() {
-    if (const workshop::Workshop* w = sim_->shop(); w && w->world().generation() != workshop_saved_)
+    if (const workshop::Workshop* w = sim_->shop(); w && w->generation() != workshop_saved_)
         save_workshop();
     // The programs G76, G76+ and G76- changed: a revision each, or a deletion.
     std::vector<int> edited = mem_.take_changed();
@@ -628,6 +633,13 @@ pages::View Session::view() const {
     if (sim_->shop() && page == pages::PageId::graph) {  // only the GRAPH page draws the part
         view_part();
         v.graph.part = &part_now_, v.graph.chuck = &chuck_now_;
+        if (const workshop::Workshop* w = sim_->shop(); w->is_mill()) {
+            // The block where the program frame puts it, as for the lathe's part.
+            const workshop::P3 tip = w->tip3(sim_->om());
+            v.graph.block = w->mill();
+            v.graph.block_dx = tool_now_[X] - tip[0];
+            v.graph.block_dy = tool_now_[Y] - tip[1];
+        }
     }
     return v;
 }
@@ -639,7 +651,7 @@ void Session::view_part() const {
     part_now_.clear();
     chuck_now_.clear();
     const workshop::Workshop* w = sim_->shop();
-    if (!w) return;
+    if (!w || w->is_mill()) return;
     const Axes om = sim_->om();
     const workshop::Pt tip = w->tip(om);
     const double dz = tool_now_[Z] - tip[0], dx = tool_now_[X] - tip[1];

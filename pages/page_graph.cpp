@@ -360,6 +360,15 @@ void graph_extent(const GraphView& g, double& x0, double& y0, double& x1, double
     PathFit f = fit_box(*g.path, g.plane, mirrored(g), false);
     x0 = f.x0, y0 = f.y0, x1 = f.x1, y1 = f.y1;
     // The workshop's part, whole, with the path.
+    if (shows_block(g)) {
+        const workshop::Box3& b = g.block->stock();
+        const bool none = g.path->empty();
+        x0 = std::min(none ? 1e300 : x0, b.lo[0] + g.block_dx);
+        y0 = std::min(none ? 1e300 : y0, b.lo[1] + g.block_dy);
+        x1 = std::max(none ? -1e300 : x1, b.hi[0] + g.block_dx);
+        y1 = std::max(none ? -1e300 : y1, b.hi[1] + g.block_dy);
+        return;
+    }
     if (!g.part || g.part->empty() || g.plane != PathPlane::zx || !g.path->machine().lathe) return;
     bool none = g.path->empty();
     for (const auto& poly : *g.part)
@@ -394,7 +403,7 @@ ViewXf graph_window(const GraphView& g, const Rect& page) {
 }
 
 void page_graph(const GraphView& g, const MachineProfile& m, Canvas& c, const Rect& r) {
-    bool part = g.part && !g.part->empty() && m.lathe;
+    bool part = (g.part && !g.part->empty() && m.lathe) || shows_block(g);
     if (!g.path || (g.path->empty() && g.path->errors().empty() && !part)) {
         c.rule(r.y, title_of(g));
         c.text(r.x + 2, r.y + 2,
@@ -420,6 +429,10 @@ void page_graph(const GraphView& g, const MachineProfile& m, Canvas& c, const Re
     // The frame's own marks go on a copy, under the moves (weaker inks).
     DotRaster frame = moves;
     draw_frame_marks(g, xf, m.lathe, frame);
+    if (shows_block(g)) {
+        block_outline(g, xf, frame);
+        shade_block(g, xf, c, a);  // under the dots: to_canvas leaves empty cells
+    }
     Glyphs gl = c.ascii() ? Glyphs::ascii : g.glyphs;
     frame.to_canvas(c, a, gl, kStyles);
     int h, v;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/output/toolpath.hpp"
+#include "core/workshop/mill_part.hpp"
 #include "pages/canvas.hpp"
 #include "pages/raster.hpp"
 
@@ -54,6 +55,11 @@ struct GraphView {
     const std::vector<std::vector<std::array<double, 2>>>* part = nullptr;
     // Its chuck's jaws and body (and tailstock), outlined, in the same frame.
     const std::vector<std::vector<std::array<double, 2>>>* chuck = nullptr;
+    // The workshop's block (machining centre): its height field, shaded in
+    // the XY plane where the program frame puts it (program = machine +
+    // (block_dx, block_dy)); null: no workshop.
+    const workshop::MillWorld* block = nullptr;
+    double block_dx = 0, block_dy = 0;
 };
 
 void page_graph(const GraphView& g, const MachineProfile& m, Canvas& c, const Rect& r);
@@ -81,6 +87,13 @@ GraphView graph_fit(const GraphView& g);
 GraphView graph_next_plane(const GraphView& g, const MachineProfile& m);
 // Moves the cursor by cells (drows > 0 goes down); the window follows it.
 GraphView graph_move_cursor(const GraphView& g, const Rect& page, int dcols, int drows);
+
+// The block (GraphView::block) in the XY plane: its outline into the
+// frame's raster, and each cell of the area shaded by the height of the
+// material under its centre (page_graph_block.cpp).
+bool shows_block(const GraphView& g);
+void block_outline(const GraphView& g, const ViewXf& xf, DotRaster& r);
+void shade_block(const GraphView& g, const ViewXf& xf, Canvas& c, const Rect& a);
 
 // Draws moves [from, to) of a path into a raster (the page's inner loop,
 // public for the benchmarks).

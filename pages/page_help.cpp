@@ -22,6 +22,8 @@ const char* const kGettingStarted[] = {
     N_("6. A real part: :setup lathe puts a bar in the chuck; a jog stops when the tool touches "
        "it, "
        ":measure dia Z-20 reads the part (pupitre-setup(5))."),
+    N_("   On the machining centre :setup mill puts a block in the vice; :measure depth X10 Y40 "
+       "reads it from its corner."),
     N_("The prompt says where typed text goes (IMD>, PREF>, D5>, EDIT>); Escape empties it. "
        "Commands start with ':' (Tab completes). RAZ is F12 (or Alt-r), off the F1-F10 row."),
 };

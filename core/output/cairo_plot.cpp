@@ -128,7 +128,7 @@ void stock_and_frames(cairo_t* cr, const Scene& sc) {
         cairo_save(cr);
         cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);
         for (double ys : {1.0, -1.0}) {
-            if (ys < 0 && !sc.opt.mirror) continue;
+            if (ys < 0 && !(sc.lathe && sc.opt.mirror)) continue;  // a mill's block: once
             for (const auto& poly : p.part()) {
                 for (size_t k = 0; k < poly.size(); ++k)
                     (k ? cairo_line_to : cairo_move_to)(cr, sc.px(poly[k][0]),

@@ -118,7 +118,8 @@ void find_layers(Scene& s) {
     // The axis and the mirror are drawn on the lathe, in the legend when in the frame.
     s.present[size_t(Layer::axis)] = s.lathe && s.wy0 <= 0 && s.wy1 >= 0;
     s.present[size_t(Layer::stock)] = s.lathe && !p.stock().empty();
-    s.present[size_t(Layer::part)] = s.lathe && !p.part().empty();
+    // The workshop's part: the lathe's half-section, the mill's block from above.
+    s.present[size_t(Layer::part)] = (s.lathe || (s.h == X && s.v == Y)) && !p.part().empty();
     uint16_t both = p.extremes_mask_lo() & p.extremes_mask_hi();
     s.present[size_t(Layer::extremes)] = (both >> s.h & 1) && (both >> s.v & 1);
     for (const ProfileElem& e : p.profile_elems())

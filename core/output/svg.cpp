@@ -192,7 +192,7 @@ std::string Writer::frame_layers() const {
                       st.colour.r, st.colour.g, st.colour.b);
         s += std::string("<g id=\"part\"") + fill + pen_attrs(st, sc_.k) + ">\n";
         for (double ys : {-1.0, 1.0}) {
-            if (ys > 0 && !sc_.opt.mirror) continue;
+            if (ys > 0 && !(sc_.lathe && sc_.opt.mirror)) continue;  // a mill's block: once
             s += "<path d=\"";
             for (const auto& poly : p_.part()) {
                 for (size_t k = 0; k < poly.size(); ++k) {

@@ -284,6 +284,13 @@ PathFit fit_box(const Toolpath& p, PathPlane plane, bool mirror, bool with_profi
     if (with_profile)
         for (const ProfileElem& e : p.profile_elems()) add_profile_box(e, h, v, b);
     f.x0 = b.lo[h], f.x1 = b.hi[h], f.y0 = b.lo[v], f.y1 = b.hi[v];
+    // A machining centre's block (the workshop's), seen from above, whole.
+    if (!p.machine().lathe && h == X && v == Y)
+        for (const auto& poly : p.part())
+            for (const auto& q : poly) {
+                f.x0 = std::min(f.x0, q[0]), f.x1 = std::max(f.x1, q[0]);
+                f.y0 = std::min(f.y0, q[1]), f.y1 = std::max(f.y1, q[1]);
+            }
     // The mirror image (lathe) is of the cutting moves only.
     const PathBox& c = p.cut_bounds();
     if (mirror && !c.empty()) {

@@ -47,7 +47,8 @@ enum class Obstacle { none, material, chuck, tailstock };
 class LatheWorld {
   public:
     explicit LatheWorld(const LatheSetup& s);
-    void new_part();  // fresh stock from the setup
+    LatheWorld() = default;  // nothing: no part, no chuck (a machining centre's workshop)
+    void new_part();         // fresh stock from the setup
     const CPaths& material() const { return part_; }
     const CPaths& chuck() const { return chuck_; }
     const CPaths& tailstock() const { return tail_; }

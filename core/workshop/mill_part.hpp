@@ -107,6 +107,7 @@ class MillWorld {
     // Brings the tiles' highest tops up to date (kept lazily: a pocket's
     // thousands of strokes would each rescan the tiles they cross).
     void refresh() const;
+    bool cut_beside(int i, int j) const;  // a neighbour of cell (i, j) is cut
     // The lowest the stroke removes at (x, y) (+inf when it does not reach
     // it), within `tol` mm; and the interval it removes along a line.
     static double lowest(const Stroke& s, double x, double y, double tol);

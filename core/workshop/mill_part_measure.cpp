@@ -110,6 +110,13 @@ std::vector<std::array<double, 2>> MillWorld::along(int axis, const P3& at) cons
     return out;
 }
 
+bool MillWorld::cut_beside(int i, int j) const {
+    for (int b = std::max(0, j - 1); b <= std::min(ny_ - 1, j + 1); ++b)
+        for (int a = std::max(0, i - 1); a <= std::min(nx_ - 1, i + 1); ++a)
+            if (touched_[size_t(b) * size_t(nx_) + size_t(a)]) return true;
+    return false;
+}
+
 double MillWorld::depth_into(const Cutter& c, const P3& tip, Part part) const {
     refresh();
     return penetration(c, tip, part, kInf);
@@ -144,9 +151,12 @@ double MillWorld::penetration(const Cutter& c, const P3& tip, Part part, double 
                 for (int i = i0; i <= i1; ++i) {
                     const double h = h_[row + size_t(i)];
                     if (h <= floor_z) continue;
-                    // A cut cell is its centre; the stock's own, its square.
+                    // A cut cell is its centre. An uncut one is its square
+                    // (so the stock's faces and top as loaded are exact),
+                    // unless a neighbour is cut: a cut may have taken part
+                    // of its square, so it is its centre too.
                     const double d =
-                        touched_[row + size_t(i)]
+                        touched_[row + size_t(i)] || cut_beside(i, j)
                             ? std::sqrt(sq(xs_[size_t(i)] - tip[0]) + sq(yc - tip[1]))
                             : to_rect(tip[0], tip[1], x_edge(i), x_edge(i + 1), y0, y1);
                     const double p = column(c, sh, tip, h, d);

@@ -33,6 +33,10 @@ std::string workshop_json(const Workshop& w, const std::vector<Asked>& asked) {
              ",\"n\":" + (c.loc.n < 0 ? "null" : std::to_string(c.loc.n)) +
              ",\"tool\":" + std::to_string(c.tool) + ",\"om\":{\"X\":";
         append_fixed4(o, w.machine().x_diameter ? 2 * c.om[X] : c.om[X]);  // as the trace
+        if (w.is_mill()) {
+            o += ",\"Y\":";
+            append_fixed4(o, c.om[Y]);
+        }
         o += ",\"Z\":";
         append_fixed4(o, c.om[Z]);
         o += "},\"message\":";
@@ -150,6 +154,77 @@ std::string part_svg(const LatheWorld& w, const std::string& title) {
     if (!w.tailstock().empty())
         svg_path(o, w.tailstock(), face, "fill=\"none\" stroke=\"#444\" stroke-width=\"0.3\"");
     o += "</svg>\n";
+    return o;
+}
+
+std::vector<std::vector<Pt>> block_from_above(const MillWorld& w) {
+    const Box3& b = w.stock();
+    std::vector<std::vector<Pt>> out{
+        {{b.lo[0], b.lo[1]}, {b.hi[0], b.lo[1]}, {b.hi[0], b.hi[1]}, {b.lo[0], b.hi[1]}}};
+    // Each row's runs of cut cells, merged by Clipper into outlines.
+    ClipperLib::Clipper merge;
+    const double c = w.cell(), top = b.hi[2] - 1e-3;
+    for (int j = 0; j < w.ny(); ++j)
+        for (int i = 0; i < w.nx();) {
+            if (w.height(i, j) >= top) {
+                ++i;
+                continue;
+            }
+            int k = i;
+            while (k < w.nx() && w.height(k, j) < top) ++k;
+            const double x0 = b.lo[0] + i * c, x1 = std::min(b.hi[0], b.lo[0] + k * c);
+            const double y0 = b.lo[1] + j * c, y1 = std::min(b.hi[1], y0 + c);
+            merge.AddPath({to_int({x0, y0}), to_int({x1, y0}), to_int({x1, y1}), to_int({x0, y1})},
+                          ClipperLib::ptSubject, true);
+            i = k;
+        }
+    CPaths cut;
+    merge.Execute(ClipperLib::ctUnion, cut, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+    for (const CPath& q : cut) {
+        out.emplace_back();
+        for (const auto& v : q) out.back().push_back(to_mm(v));
+    }
+    return out;
+}
+
+std::vector<uint16_t> height_image(const MillWorld& w, double& mm_per_unit) {
+    const Box3& b = w.stock();
+    const double z0 = b.lo[2], span = b.hi[2] - b.lo[2];
+    mm_per_unit = span / 65535;
+    std::vector<uint16_t> v(size_t(w.nx()) * size_t(w.ny()));
+    for (int j = 0; j < w.ny(); ++j)
+        for (int i = 0; i < w.nx(); ++i) {
+            const double u = std::round((double(w.height(i, j)) - z0) / mm_per_unit);
+            v[size_t(w.ny() - 1 - j) * size_t(w.nx()) + size_t(i)] =
+                uint16_t(std::clamp(u, 0.0, 65535.0));
+        }
+    return v;
+}
+
+std::string height_json(const MillWorld& w, const std::string& png, double mm_per_unit,
+                        const std::string& title) {
+    const Box3& b = w.stock();
+    std::string o = "{\"format\":\"pupitre height field\",\"title\":";
+    append_json_string(o, title);
+    o += ",\"image\":";
+    append_json_string(o, png);
+    o += ",\"columns\":" + std::to_string(w.nx()) + ",\"rows\":" + std::to_string(w.ny()) +
+         ",\"cell\":";
+    append_fixed4(o, w.cell());
+    o += ",\"origin\":{\"X\":";
+    append_fixed4(o, b.lo[0]);
+    o += ",\"Y\":";
+    append_fixed4(o, b.lo[1]);
+    o += ",\"Z\":";
+    append_fixed4(o, b.lo[2]);
+    o += "},\"stock\":{\"X\":";
+    append_fixed4(o, b.hi[0] - b.lo[0]);
+    o += ",\"Y\":";
+    append_fixed4(o, b.hi[1] - b.lo[1]);
+    o += ",\"Z\":";
+    append_fixed4(o, b.hi[2] - b.lo[2]);
+    o += "},\"z_per_unit\":" + strf("%.9g", mm_per_unit) +
+         ",\"first_row\":\"+Y\",\"first_column\":\"-X\"}\n";
     return o;
 }
 

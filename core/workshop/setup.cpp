@@ -12,6 +12,7 @@
 namespace pupitre {
 namespace data {
 std::string_view setup_lathe();
+std::string_view setup_mill();
 }  // namespace data
 
 namespace workshop {
@@ -63,15 +64,59 @@ constexpr Key kLatheKeys[] = {
     {"tailstock.quill", 1, 500, &LatheSetup::quill_diameter},
 };
 
+struct MillKey {
+    const char* name;
+    double lo, hi;
+    double MillSetup::*field;
+};
+constexpr MillKey kMillKeys[] = {
+    {"table.z", -kBig, kBig, &MillSetup::table_z},
+    {"stock.x", -kBig, kBig, &MillSetup::stock_x},
+    {"stock.y", -kBig, kBig, &MillSetup::stock_y},
+    {"stock.z", -kBig, kBig, &MillSetup::stock_z},
+    {"stock.length", 0.5, 2000, &MillSetup::length},
+    {"stock.width", 0.5, 2000, &MillSetup::width},
+    {"stock.height", 0.5, 1000, &MillSetup::height},
+    {"vice.jaw.height", 0.5, 500, &MillSetup::jaw_height},
+    {"vice.jaw.width", 1, 1000, &MillSetup::jaw_width},
+    {"vice.jaw.thickness", 1, 200, &MillSetup::jaw_thickness},
+    {"plate.margin", 0, 500, &MillSetup::plate_margin},
+    {"setter.x", -kBig, kBig, &MillSetup::setter_x},
+    {"setter.y", -kBig, kBig, &MillSetup::setter_y},
+    {"setter.diameter", 2, 100, &MillSetup::setter_diameter},
+    {"zmap.cell", 0.02, 2, &MillSetup::cell},
+};
+
+struct PinKey {
+    const char* name;
+    double lo, hi;
+    double Pin::*field;
+};
+constexpr PinKey kPinKeys[] = {
+    {"x", -kBig, kBig, &Pin::x},
+    {"y", -kBig, kBig, &Pin::y},
+    {"diameter", 1, 100, &Pin::diameter},
+    {"height", 0.5, 500, &Pin::height},
+};
+
 struct ToolKey {
     const char* name;
     double lo, hi;
     double ToolTruth::*field;
 };
 constexpr ToolKey kToolKeys[] = {
-    {"x", -kBig, kBig, &ToolTruth::x},     {"z", -kBig, kBig, &ToolTruth::z},
-    {"radius", 0, 10, &ToolTruth::radius}, {"angle", 20, 175, &ToolTruth::angle},
-    {"edge", 0.5, 100, &ToolTruth::edge},  {"wear", 0, 1000, &ToolTruth::wear},
+    {"x", -kBig, kBig, &ToolTruth::x},
+    {"z", -kBig, kBig, &ToolTruth::z},
+    {"radius", 0, 50, &ToolTruth::radius},
+    {"angle", 20, 175, &ToolTruth::angle},
+    {"edge", 0.5, 100, &ToolTruth::edge},
+    {"wear", 0, 1000, &ToolTruth::wear},
+    // A milling cutter's (kind = mill).
+    {"length", 0, 1000, &ToolTruth::length},
+    {"corner", 0, 50, &ToolTruth::corner},
+    {"flute", 0, 500, &ToolTruth::flute},
+    {"reach", 0, 1000, &ToolTruth::reach},
+    {"holder.diameter", 1, 300, &ToolTruth::holder_diameter},
 };
 
 // "z,x z,x ...": at least three points.
@@ -98,6 +143,7 @@ ToolTruth& tool_at(Setup& s, int position) {
         if (t.position == position) return t;
     s.tools.push_back(ToolTruth{});
     s.tools.back().position = position;
+    if (s.kind == "mill") s.tools.back().spindle = 3;  // a right-hand cutter
     return s.tools.back();
 }
 
@@ -112,7 +158,11 @@ std::string tool_key(Setup& s, std::string_view key, std::string_view val) {
     std::string_view field = key.substr(size_t(r.ptr - key.data()) + 1);
     ToolTruth& t = tool_at(s, n);
     for (const ToolKey& k : kToolKeys)
-        if (field == k.name) return in_range(val, k.lo, k.hi, t.*k.field);
+        if (field == k.name) {
+            // A lathe's nose radius is at most 10 mm; a milling cutter's 50.
+            const double hi = field == "radius" && s.kind == "lathe" ? 10 : k.hi;
+            return in_range(val, k.lo, hi, t.*k.field);
+        }
     if (field == "orientation") {
         double c = 0;
         if (std::string e = in_range(val, 0, 8, c); !e.empty()) return e;
@@ -144,15 +194,63 @@ std::string tool_key(Setup& s, std::string_view key, std::string_view val) {
     return strf(tr("unknown tool field '%.*s'"), int(field.size()), field.data());
 }
 
+// pin.N.FIELD = value
+std::string pin_key(Setup& s, std::string_view key, std::string_view val) {
+    key.remove_prefix(4);  // "pin."
+    int n = 0;
+    auto r = std::from_chars(key.data(), key.data() + key.size(), n);
+    if (r.ec != std::errc() || r.ptr == key.data() || n < 1 || n > 9 ||
+        r.ptr == key.data() + key.size() || *r.ptr != '.')
+        return tr("expected pin.N.FIELD with N from 1 to 9");
+    std::string_view field = key.substr(size_t(r.ptr - key.data()) + 1);
+    std::vector<Pin>& pins = s.mill.pins;
+    if (pins.size() < size_t(n)) pins.resize(size_t(n));
+    for (const PinKey& k : kPinKeys)
+        if (field == k.name) return in_range(val, k.lo, k.hi, pins[size_t(n) - 1].*k.field);
+    return strf(tr("unknown pin field '%.*s'"), int(field.size()), field.data());
+}
+
+// The machining centre's keys; "" when `key` is none of them (`known`
+// false).
+std::string mill_key(Setup& s, std::string_view key, std::string_view val, bool& known) {
+    known = true;
+    MillSetup& m = s.mill;
+    if (key == "holding") {
+        if (val != "vice" && val != "plate" && val != "none")
+            return tr("expected vice, plate or none");
+        m.holding = std::string(val);
+        return {};
+    }
+    if (key == "setter.z") {
+        m.setter = true;
+        return in_range(val, -kBig, kBig, m.setter_z);
+    }
+    if (key.substr(0, 4) == "pin.") return pin_key(s, key, val);
+    for (const MillKey& k : kMillKeys)
+        if (key == k.name) return in_range(val, k.lo, k.hi, m.*k.field);
+    known = false;
+    return {};
+}
+
 std::string one_key(Setup& s, std::string_view key, std::string_view val) {
     if (key == "name") return s.name = std::string(val), std::string{};
     if (key == "description") return s.description = std::string(val), std::string{};
     if (key == "kind") {
-        if (val != "lathe") return tr("only the lathe has a workshop yet (kind = lathe)");
+        if (val != "lathe" && val != "mill") return tr("expected lathe or mill");
+        if (!s.kind.empty() && s.kind != val) return tr("kind is given twice, differently");
         s.kind = std::string(val);
         return {};
     }
+    // The kind decides what the other keys mean (stock.length is the bar's
+    // on a lathe, the block's along X on a mill).
+    if (s.kind.empty()) return tr("kind = lathe or kind = mill must come first");
     if (key.substr(0, 5) == "tool.") return tool_key(s, key, val);
+    if (s.kind == "mill") {
+        bool known = false;
+        std::string why = mill_key(s, key, val, known);
+        if (known) return why;
+        return strf(tr("unknown key '%.*s' for a mill"), int(key.size()), key.data());
+    }
     if (key == "stock.profile") return points(val, s.lathe.profile);
     if (key == "tailstock.z") {
         s.lathe.tailstock = true;
@@ -163,10 +261,33 @@ std::string one_key(Setup& s, std::string_view key, std::string_view val) {
     return strf(tr("unknown key '%.*s'"), int(key.size()), key.data());
 }
 
+// The machining centre's: the stock on the table, the pins beside it, each
+// cutter whole.
+std::string consistent_mill(const Setup& s) {
+    const MillSetup& m = s.mill;
+    if (m.stock_z < m.table_z - 1e-9) return tr("stock.z must not be below table.z");
+    if (m.setter && m.setter_z < m.table_z - 1e-9) return tr("setter.z must not be below table.z");
+    for (size_t i = 0; i < m.pins.size(); ++i) {
+        const Pin& p = m.pins[i];
+        // The pin's circle must not enter the stock's rectangle.
+        double dx = std::max({m.stock_x - p.x, 0.0, p.x - (m.stock_x + m.length)});
+        double dy = std::max({m.stock_y - p.y, 0.0, p.y - (m.stock_y + m.width)});
+        if (std::hypot(dx, dy) < p.diameter / 2 - 1e-6)
+            return strf(tr("pin.%d stands inside the stock"), int(i) + 1);
+    }
+    for (const ToolTruth& t : s.tools) {
+        if (t.length <= 0) return strf(tr("tool.%d: length is missing"), t.position);
+        if (t.corner > t.radius)
+            return strf(tr("tool.%d: corner must not exceed radius"), t.position);
+    }
+    return {};
+}
+
 // What no single line can say: the stock fits, the tools make sense.
 std::string consistent(const Setup& s) {
     const LatheSetup& l = s.lathe;
-    if (s.kind.empty()) return tr("kind = lathe is missing");
+    if (s.kind.empty()) return tr("kind = lathe or kind = mill is missing");
+    if (s.kind == "mill") return consistent_mill(s);
     if (l.bore >= l.stock_diameter) return tr("stock.bore must be smaller than stock.diameter");
     if (l.stickout >= l.stock_length) return tr("stock.stickout must be shorter than stock.length");
     if (l.stock_diameter / 2 + l.jaw_height > l.chuck_diameter / 2 + 100)
@@ -211,8 +332,9 @@ std::string parse_setup(std::string_view text, Setup& s) {
 }
 
 bool builtin_setup(std::string_view name, Setup& s) {
-    if (name != "lathe") return false;
-    return parse_setup(data::setup_lathe(), s).empty();
+    if (name == "lathe") return parse_setup(data::setup_lathe(), s).empty();
+    if (name == "mill") return parse_setup(data::setup_mill(), s).empty();
+    return false;
 }
 
 }  // namespace workshop

@@ -29,6 +29,33 @@ struct ToolTruth {
     // shank for the orientation (pupitre-setup(5)).
     std::vector<Pt> holder;
     bool probe = false;  // an electric touch probe: never cuts
+    // A milling cutter (kind = mill): x and z above are not used; the true
+    // length from the gauge line to the tip, and its shape (mill_part.hpp).
+    double length = 0;
+    double corner = 0;            // corner radius: 0 flat, = radius a ball end
+    double flute = 0;             // cutting length from the tip; 0: 4 radii, at least 10
+    double reach = 0;             // from the tip to the holder's face; 0: flute + 10
+    double holder_diameter = 40;  // the tool holder's (mm)
+};
+
+// The machining centre: a block of stock on the table, in a vice or on a
+// plate, locating pins, a tool setter. The stock's corner is its lowest
+// -X -Y corner.
+struct Pin {
+    double x = 0, y = 0, diameter = 10, height = 20;  // height above the stock's bottom
+};
+struct MillSetup {
+    double table_z = -350;  // the table's top
+    double stock_x = 0, stock_y = 0, stock_z = -330;
+    double length = 120, width = 80, height = 40;  // along X, Y, Z
+    std::string holding = "vice";                  // vice, plate or none
+    double jaw_height = 30;                        // above the stock's bottom
+    double jaw_width = 150, jaw_thickness = 25;    // along X, along Y
+    double plate_margin = 20;                      // beyond the stock in X and Y
+    std::vector<Pin> pins;
+    bool setter = false;
+    double setter_x = 0, setter_y = 0, setter_z = 0, setter_diameter = 20;
+    double cell = 0.1;  // the height field's (mm)
 };
 
 struct LatheSetup {
@@ -54,8 +81,9 @@ struct LatheSetup {
 struct Setup {
     std::string source;  // the text it was read from (the store keeps it)
     std::string name, description;
-    std::string kind;  // "lathe" (the machining centre's setup: a later issue)
+    std::string kind;  // "lathe" or "mill"
     LatheSetup lathe;
+    MillSetup mill;
     std::vector<ToolTruth> tools;  // by position, in file order
     const ToolTruth* tool(int position) const;
 };
@@ -63,7 +91,8 @@ struct Setup {
 // Parses a setup; returns "" or "line N: what is wrong". On error `s` is
 // left default.
 std::string parse_setup(std::string_view text, Setup& s);
-// A setup shipped in data/setups (lathe); false if there is none by that name.
+// A setup shipped in data/setups (lathe, mill); false if there is none by
+// that name.
 bool builtin_setup(std::string_view name, Setup& s);
 
 }  // namespace pupitre::workshop

@@ -64,9 +64,11 @@ Axes om_at(const std::vector<Axes>& oms, double at) {
     return om;
 }
 
+}  // namespace
+
 // An increment from a contact with the shim goes nowhere: the insert cannot
 // cut through the shim (the paper test).
-Outcome on_the_shim(const Axes& om, int tool) {
+Outcome Workshop::on_the_shim(const Axes& om, int tool) {
     Outcome o;
     o.touched = true;
     o.fraction = 0;
@@ -75,16 +77,16 @@ Outcome on_the_shim(const Axes& om, int tool) {
     return o;
 }
 
-}  // namespace
-
 Workshop::Workshop(const MachineProfile& m, const Setup& s, MachineSink* next)
-    : m_(m), setup_(s), world_(s.lathe), next_(next) {
+    : m_(m), setup_(s), world_(s.kind == "mill" ? LatheWorld() : LatheWorld(s.lathe)), next_(next) {
+    if (setup_.kind == "mill") mill_fixtures();
     int top = 0;
     for (const ToolTruth& t : setup_.tools) top = std::max(top, t.position);
     tools_.resize(size_t(top) + 1);
     for (const ToolTruth& t : setup_.tools) {
         Tool& slot = tools_[size_t(t.position)];
         slot.truth = setup_.tool(t.position);
+        if (mill_) continue;  // a cutter's shape is made as it is used (cutter())
         slot.shape = tool_shape(t);
         slot.near.insert = grown(slot.shape.insert, kNear);
         slot.near.holder = grown(slot.shape.holder, kNear);
@@ -108,6 +110,10 @@ bool Workshop::probe_in_use() const {
 bool Workshop::probe_contact(const Axes& om) const {
     const Tool* t = current();
     if (!t || !t->truth->probe) return false;
+    if (mill_) {
+        Met what = Met::none;
+        return mill_depth(cutter(kNear), grown_tip(om, kNear), what) > kTouchDepth;
+    }
     const CPaths ball = LatheWorld::sweep(t->near.insert, {tip(om)});
     for (Obstacle w : {Obstacle::material, Obstacle::chuck, Obstacle::tailstock})
         if (world_.depth_into(ball, w) > kTouchDepth) return true;
@@ -269,6 +275,7 @@ bool Workshop::check(const MoveEvent& e, const std::vector<Pt>& tips,
 }
 
 Outcome Workshop::apply(const MoveEvent& e) {
+    if (mill_) return mill_apply(e);
     Outcome o;
     if (crashed()) return o;
     std::vector<Axes> oms;
@@ -302,6 +309,7 @@ Outcome Workshop::apply(const MoveEvent& e) {
 }
 
 Outcome Workshop::jog(const MoveEvent& e, bool continuous) {
+    if (mill_) return mill_jog(e, continuous);
     Outcome o;
     const Tool* t = current();
     if (!t || crashed()) return o;
@@ -391,6 +399,25 @@ void Workshop::move(const MoveEvent& e) {
     if (next_) next_->move(o.crashed ? truncated(e, o.stop, o.fraction) : e);
 }
 
+uint64_t Workshop::generation() const {
+    return mill_ ? mill_->generation() : world_.generation();
+}
+
+std::string Workshop::part_text() const {
+    return mill_ ? mill_->to_text() : world_.to_text();
+}
+
+bool Workshop::load_part(std::string_view text) {
+    return mill_ ? mill_->from_text(text) : world_.from_text(text);
+}
+
+void Workshop::new_part() {
+    if (mill_)
+        mill_->new_part();
+    else
+        world_.new_part();
+}
+
 void Workshop::tool(const Loc& l, int t, int d, double s, bool m6) {
     tool_ = t;  // the lathe's turret indexes on T
     if (next_) next_->tool(l, t, d, s, m6);
@@ -442,10 +469,14 @@ std::string Workshop::presetter(std::string_view rest, Reading& r) const {
             field = rest[sp + 1];
     }
     const ToolTruth* tt = setup_.tool(t);
-    if (field != 'X' && field != 'Z' && field != 'R')
+    if (mill_ && field != 'L' && field != 'R')
+        return tr("tool needs a tool and a field: tool T1 L or tool T1 R");
+    if (!mill_ && field != 'X' && field != 'Z' && field != 'R')
         return tr("tool needs a tool and a field: tool T1 X, tool T1 Z or tool T1 R");
-    if (!tt) return strf(tr("there is no T%d on the turret"), t);
-    double v = field == 'X' ? tt->x : field == 'Z' ? tt->z : tt->radius;
+    if (!tt)
+        return strf(
+            mill_ ? tr("there is no T%d in the magazine") : tr("there is no T%d on the turret"), t);
+    double v = field == 'X' ? tt->x : field == 'Z' ? tt->z : field == 'L' ? tt->length : tt->radius;
     // A fixed error per setup, tool and field, from a small hash.
     uint32_t h = 2166136261u;
     for (char c : setup_.name + char('0' + t % 10) + char('0' + t / 10) + field)
@@ -470,6 +501,7 @@ std::string Workshop::measure(std::string_view spec, Reading& r) const {
     while (!rest.empty() && rest.front() == ' ') rest.remove_prefix(1);
     while (!rest.empty() && rest.back() == ' ') rest.remove_suffix(1);
     if (word == "tool") return presetter(rest, r);
+    if (mill_) return mill_measure(word, rest, r);
     const Instrument* in = nullptr;
     for (const Instrument& i : kInstruments)
         if (word == i.word) in = &i;

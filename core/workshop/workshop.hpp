@@ -11,6 +11,7 @@
 
 #include "core/interp/sink.hpp"
 #include "core/workshop/lathe_part.hpp"
+#include "core/workshop/mill_part.hpp"
 #include "core/workshop/setup.hpp"
 
 namespace pupitre::workshop {
@@ -18,7 +19,7 @@ namespace pupitre::workshop {
 // Workshop alarms, 1200-1299 (DESIGN §2.2; pupitre(1), DIAGNOSTICS).
 inline constexpr int kCrashRapid = 1200;      // a rapid into the material
 inline constexpr int kCrashStopped = 1201;    // a feed into the material, spindle stopped
-inline constexpr int kCrashChuck = 1202;      // the tool or holder hits the chuck or tailstock
+inline constexpr int kCrashChuck = 1202;      // the tool or holder hits the work-holding
 inline constexpr int kCrashHolder = 1203;     // the holder or shank hits the material
 inline constexpr int kCrashDirection = 1204;  // cutting with the spindle turning the wrong way
 inline constexpr int kCrashProbe = 1205;      // a touch probe driven into the material
@@ -66,8 +67,20 @@ class Workshop final : public MachineSink {
 
     const Setup& setup() const { return setup_; }
     const MachineProfile& machine() const { return m_; }
+    // The lathe's half-section; on a machining centre (is_mill()) the
+    // material is mill() and world() holds nothing.
     LatheWorld& world() { return world_; }
     const LatheWorld& world() const { return world_; }
+    bool is_mill() const { return mill_ != nullptr; }
+    MillWorld* mill() { return mill_.get(); }
+    const MillWorld* mill() const { return mill_.get(); }
+    // The part, whichever the machine: its changes, the text the store
+    // keeps (and back: false, fresh stock kept, when it does not read),
+    // fresh stock.
+    uint64_t generation() const;
+    std::string part_text() const;
+    bool load_part(std::string_view text);
+    void new_part();
     bool crashed() const { return !crashes_.empty(); }
     const std::vector<Crash>& crashes() const { return crashes_; }
     void clear_crash() { crashes_.clear(); }  // RAZ: the alarm is acknowledged
@@ -83,6 +96,9 @@ class Workshop final : public MachineSink {
     bool probe_contact(const Axes& om) const;
     // The true tool point of the tool in use for a machine position (Z, R).
     Pt tip(const Axes& om) const;
+    // A machining centre's: the true tip of the cutter in the spindle (X, Y,
+    // Z); the gauge line itself when none.
+    P3 tip3(const Axes& om) const;
     // Reads an instrument; "" or what is wrong with the request.
     std::string measure(std::string_view spec, Reading& r) const;
 
@@ -94,6 +110,8 @@ class Workshop final : public MachineSink {
     // increment goes on as a feed (a cut with the spindle turning, else a
     // crash); a `continuous` jog (a held key) stops again before going deeper.
     Outcome jog(const MoveEvent& e, bool continuous);
+    // An increment from a contact with the shim goes nowhere.
+    static Outcome on_the_shim(const Axes& om, int tool);
     // The move cut short where it stopped: `stop`, `fraction` of its length.
     static MoveEvent truncated(const MoveEvent& e, const Axes& stop, double fraction);
 
@@ -124,6 +142,33 @@ class Workshop final : public MachineSink {
     }
 
   private:
+    // --- the machining centre (mill_shop.cpp) ---
+    enum class Met { none, material, vice, plate, pin, table, setter, shim };
+    struct Contact {
+        double f = 2;  // fraction of the move, 2: none
+        Met what = Met::none;
+        Part part = Part::flute;
+    };
+    void mill_fixtures();
+    P3 grown_tip(const Axes& om, double g) const;
+    Cutter cutter(double grow = 0) const;  // the one in the spindle, worn, grown by `grow`
+    Contact mill_first(const Cutter& c, const P3& a, const P3& b, double depth, bool with_material,
+                       bool before) const;
+    double mill_depth(const Cutter& c, const P3& tip, Met& what) const;
+    Outcome mill_apply(const MoveEvent& e);
+    Outcome mill_jog(const MoveEvent& e, bool continuous);
+    bool mill_stroke(const MoveEvent& e, const P3& a, const P3& b, const Axes& oma,
+                     const Axes& omb);
+    std::string mill_where(const P3& p) const;
+    std::string mill_measure(std::string_view word, std::string_view rest, Reading& r) const;
+    std::string mill_crash_text(int code, const Contact& c, const std::string& place) const;
+    std::string mill_touch_text(const Contact& c, const std::string& place) const;
+    std::vector<Box3> boxes_;  // the vice's jaws and body, the plate, the table
+    std::vector<Met> box_kind_;
+    std::vector<Cylinder> pins_;  // the pins and the setter's plunger
+    std::vector<Met> pin_kind_;
+    std::unique_ptr<MillWorld> mill_;
+
     struct Tool {
         const ToolTruth* truth = nullptr;
         ToolShape shape;

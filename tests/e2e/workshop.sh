@@ -173,6 +173,88 @@ probe)
     cmd ":jog X -0.5"
     wait_for 'ALARM 1205' 10
     ;;
+mill)
+    # The machining centre as a setter sets it up: T2's length on the tool
+    # setter, PREF Z on the block's top, PREF X and Y on its -X and -Y faces
+    # (an Ø8 cutter: the axis 4 off the face), then the slot of slot.iso cut
+    # and measured from the block's corner, the part shaded on GRAPH, and a
+    # restart that shows the same part. The truth (data/setups/mill.setup):
+    # the setter's top at Z -300, T2 L 117.645, the block's corner at X 48.35
+    # Y -131.72, its top at Z -290; the program origin at the top's centre.
+    "$bin" import "$(dirname "$0")/../workshop/slot.iso" >/dev/null || fail "import"
+    start --machine mill
+    pom
+    cmd ":setup mill"
+    wait_for 'workshop: setup mill, machine vice'
+    cmd ":speed max"
+    cmd ":mode imd"
+    cmd "T2 D2 M6"
+    keys F9
+    wait_for 'IMD done' 10
+    # The length: over the setter, down until the cutter touches it.
+    cmd ":mode jog"
+    cmd ":jog X -250"
+    cmd ":jog Y -150"
+    wait_for '^ +Y +-150.000' 10
+    cmd ":jog Z -600"
+    wait_for 'T2 touched the tool setter' 20
+    [ "$(op_value Z)" = "-182.355" ] || fail "the setter should stop the gauge line at Z -182.355 (-300 + 117.645): $(op_value Z)"
+    cmd ":measure D2 Z -300"
+    wait_for 'D2.L = OM -182.355 - surface -300.000 = 117.645' 5
+    # PREF Z on the top face, at the block's centre.
+    cmd ":jog Z 100"
+    cmd ":jog X 358.35"
+    cmd ":jog Y 58.28"
+    wait_for '^ +Y +-91.720' 10
+    cmd ":jog Z -200"
+    wait_for 'T2 touched the part at X60.000 Y40.000 Z0.000' 20
+    cmd ":touch Z 0"
+    wait_for 'PREF.Z = OM -172.355 - gauge 117.645 - surface 0.000 = -290.000' 5
+    # PREF X on the -X face, 5 below the top.
+    cmd ":jog Z 10"
+    cmd ":jog X -70"
+    wait_for '^ +X +38.350' 10
+    cmd ":jog Z -15"
+    wait_for '^ +Z +-5.000' 10
+    cmd ":jog X 20"
+    wait_for 'T2 touched the part at X-4.000 Y40.000 Z-5.000' 20
+    cmd ":touch X -64"
+    wait_for 'PREF.X = OM 44.350 - surface -64.000 = 108.350' 5
+    # PREF Y on the -Y face: away from the -X face, round the corner.
+    cmd ":jog X -10"
+    wait_for '^ +X +-74.000' 10
+    cmd ":jog Y -50"
+    wait_for '^ +Y +-141.720' 10
+    cmd ":jog X 74"
+    wait_for '^ +X +0.000' 10
+    cmd ":jog Y 20"
+    wait_for 'T2 touched the part at X60.000 Y-4.000 Z-5.000' 20
+    cmd ":touch Y -44"
+    wait_for 'PREF.Y = OM -135.720 - surface -44.000 = -91.720' 5
+    cmd ":jog Y -10"
+    cmd ":jog Z 60"
+    wait_for '^ +Z +55.000' 10
+    # The slot and the pocket, in AUTO with the spindle turning (slot.iso).
+    cmd ":mode auto"
+    cmd ":load 30"
+    keys F9
+    wait_for 'M02: end of program %30' 60
+    cmd ":measure depth X10 Y40"
+    wait_for 'depth gauge: depth X10 Y40 = 3.00 mm' 10
+    cmd ":measure width Y X10 Y40 Z-1"
+    wait_for 'caliper: width Y X10 Y40 Z-1 = 8.00 mm' 10
+    # GRAPH: the block shaded, the slot through it.
+    cmd ":page graph"
+    wait_for '▓' 10
+    screen | grep -q '░' || fail "GRAPH should shade the slot and the pocket (░): $(screen)"
+    # A restart shows the same part.
+    cmd ":quit!"
+    wait_for '^EXIT=0' 10
+    T kill-session -t e2e 2>/dev/null
+    start --machine mill
+    cmd ":measure depth X10 Y40"
+    wait_for 'depth gauge: depth X10 Y40 = 3.00 mm' 10
+    ;;
 *)
     echo "unknown case $case"
     exit 2

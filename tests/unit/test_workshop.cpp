@@ -97,9 +97,16 @@ TEST(Setup, ErrorsNameTheLine) {
               "line 2: tool.1.orientation: must be a whole number from 0 to 8");
     EXPECT_EQ(parse_setup("kind = lathe\nstock.bore = 70\n", s),
               "stock.bore must be smaller than stock.diameter");
-    EXPECT_EQ(parse_setup("stock.diameter = 10\n", s), "kind = lathe is missing");
-    EXPECT_EQ(parse_setup("kind = mill\n", s),
-              "line 1: kind: only the lathe has a workshop yet (kind = lathe)");
+    // The kind says what the keys mean, so it comes first (name and
+    // description may precede it).
+    EXPECT_EQ(parse_setup("stock.diameter = 10\n", s),
+              "line 1: stock.diameter: kind = lathe or kind = mill must come first");
+    EXPECT_EQ(parse_setup("name = x\n", s), "kind = lathe or kind = mill is missing");
+    EXPECT_EQ(parse_setup("kind = drill\n", s), "line 1: kind: expected lathe or mill");
+    EXPECT_EQ(parse_setup("kind = lathe\nkind = mill\n", s),
+              "line 2: kind: kind is given twice, differently");
+    EXPECT_EQ(parse_setup("kind = lathe\ntool.1.radius = 12\n", s),
+              "line 2: tool.1.radius: must be from 0 to 10");
     EXPECT_EQ(parse_setup("kind = lathe\njaw.height\n", s), "line 2: expected key = value");
     EXPECT_EQ(parse_setup("kind = lathe\ntool.2.holder = 1,2 3\n", s),
               "line 2: tool.2.holder: expected points as Z,X Z,X Z,X");

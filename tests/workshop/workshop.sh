@@ -52,7 +52,8 @@ usage() {  # usage CASE EXPECTED-TEXT ARGS...
 }
 usage "--measure without --setup" "--measure and --part-out need a --setup" --measure "dia Z-10" turn.iso
 usage "--part-out without --setup" "--measure and --part-out need a --setup" --part-out "$work/p.svg" turn.iso
-usage "--setup on the mill" "the workshop has a lathe only yet" --machine mill --setup lathe turn.iso
+usage "a lathe setup on the mill" "setup 'lathe' is a lathe's, the machine is a machining centre" --machine mill --setup lathe turn.iso
+usage "a mill setup on the lathe" "setup 'mill' is a machining centre's, the machine is a lathe" --setup mill turn.iso
 usage "an unknown setup" "unknown setup 'nosuch'" --setup nosuch turn.iso
 printf '# a setup with a bad line\nkind = lathe\nstock.diameter = 60\nchuck.z = banana\n' >"$work/bad.setup"
 usage "a bad value" "$work/bad.setup: line 4: chuck.z: expected a number" --setup "$work/bad.setup" turn.iso

@@ -1,0 +1,100 @@
+// The workshop's files (see workshop_io.hpp).
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "console/workshop_io.hpp"
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "core/i18n.hpp"
+#include "core/output/height_png.hpp"
+#include "core/workshop/report.hpp"
+
+namespace pupitre {
+
+namespace {
+
+bool ends_with(const std::string& s, const char* tail) {
+    const std::string t(tail);
+    return s.size() > t.size() && s.compare(s.size() - t.size(), t.size(), t) == 0;
+}
+
+// Writes `text` to `path` ("-": stdout).
+int write_text(const std::string& path, const std::string& text, std::string& why) {
+    std::FILE* f = path == "-" ? stdout : std::fopen(path.c_str(), "w");
+    if (!f) {
+        why = strf(tr("cannot write %s"), path.c_str());
+        return 73;
+    }
+    bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
+    ok = (f == stdout ? std::fflush(f) : std::fclose(f)) == 0 && ok;
+    if (!ok) why = strf(tr("cannot write %s"), path.c_str());
+    return ok ? 0 : 74;
+}
+
+int write_mill(const std::string& path, const workshop::MillWorld& m, const std::string& title,
+               std::string& why) {
+    if (!ends_with(path, ".png")) {
+        why = tr("a machining centre's part is a 16-bit PNG height field: give a FILE.png");
+        return 64;
+    }
+    double scale = 0;
+    const std::vector<uint16_t> v = workshop::height_image(m, scale);
+    std::FILE* f = std::fopen(path.c_str(), "wb");
+    if (!f) {
+        why = strf(tr("cannot write %s"), path.c_str());
+        return 73;
+    }
+    bool ok = write_gray16_png(v, m.nx(), m.ny(), f);
+    ok = std::fclose(f) == 0 && ok;
+    if (!ok) {
+        why = strf(tr("cannot write %s"), path.c_str());
+        return 74;
+    }
+    const std::string json = path.substr(0, path.size() - 4) + ".json";
+    const size_t slash = path.rfind('/');
+    const std::string png = slash == std::string::npos ? path : path.substr(slash + 1);
+    return write_text(json, workshop::height_json(m, png, scale, title), why);
+}
+
+}  // namespace
+
+std::string read_setup(const std::string& name, const MachineProfile& m, workshop::Setup& s) {
+    if (!workshop::builtin_setup(name, s)) {
+        std::ifstream in(name);
+        if (!in)
+            return strf(tr("unknown setup '%s' (lathe, mill, or a .setup file)"), name.c_str());
+        std::ostringstream text;
+        text << in.rdbuf();
+        if (std::string why = workshop::parse_setup(text.str(), s); !why.empty())
+            return strf(tr("%s: %s"), name.c_str(), why.c_str());
+    }
+    if ((s.kind == "lathe") != m.lathe) {
+        std::string why =
+            m.lathe ? strf(tr("setup '%s' is a machining centre's, the machine is a lathe"),
+                           name.c_str())
+                    : strf(tr("setup '%s' is a lathe's, the machine is a machining centre"),
+                           name.c_str());
+        s = workshop::Setup{};
+        return why;
+    }
+    if (!m.lathe && (m.has(A) || m.has(B) || m.has(C))) {
+        // The workshop's block is cut from above by a vertical cutter: a
+        // rotary table or head would turn what it does not model.
+        s = workshop::Setup{};
+        return strf(tr("machine '%s' has rotary axes: the workshop has a 3-axis machining centre "
+                       "only (--machine mill)"),
+                    m.name.c_str());
+    }
+    return {};
+}
+
+int write_part(const std::string& path, const workshop::Workshop& w, const std::string& title,
+               std::string& why) {
+    if (const workshop::MillWorld* m = w.mill()) return write_mill(path, *m, title, why);
+    const bool svg = ends_with(path, ".svg");
+    return write_text(
+        path, svg ? workshop::part_svg(w.world(), title) : workshop::part_zr(w.world()), why);
+}
+
+}  // namespace pupitre

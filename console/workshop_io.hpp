@@ -1,0 +1,25 @@
+// The workshop's files: a setup read for `--setup` and `:setup`, the part
+// written for `run --part-out` and `:part export` (pupitre-setup(5)).
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+#include <string>
+
+#include "core/workshop/workshop.hpp"
+
+namespace pupitre {
+
+// A shipped setup by name (lathe, mill) or a setup file, for the machine
+// `m` (a lathe's setup on a lathe, a mill's on a machining centre). ""
+// when read, else the message (the file and line named).
+std::string read_setup(const std::string& name, const MachineProfile& m, workshop::Setup& s);
+
+// Lathe: an SVG drawing (FILE.svg) or the (Z, R) outline as text ("-": the
+// standard output). Machining centre: the height field as a 16-bit PNG
+// (FILE.png, required) and the JSON that says how to read it beside it
+// (FILE.json). Returns 0, or an exit status (64 a name the kind cannot
+// take, 73 a file that cannot be created, 74 a write error) with the
+// message in `why`.
+int write_part(const std::string& path, const workshop::Workshop& w, const std::string& title,
+               std::string& why);
+
+}  // namespace pupitre

@@ -1,0 +1,458 @@
+// The workshop on a machining centre (issue 15): the moves of the spindle's
+// gauge line become the true cutter's, which cuts the block, stops a jog at
+// a contact and crashes into the vice, the plate, a pin, the table or the
+// tool setter (see workshop.hpp, mill_part.hpp, pupitre-setup(5)).
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+
+#include "core/i18n.hpp"
+#include "core/numfmt.hpp"
+#include "core/workshop/workshop.hpp"
+
+namespace pupitre::workshop {
+
+namespace {
+
+constexpr double kFar = 1e5;  // mm: beyond any workshop
+
+P3 lerp(const P3& a, const P3& b, double f) {
+    return {a[0] + f * (b[0] - a[0]), a[1] + f * (b[1] - a[1]), a[2] + f * (b[2] - a[2])};
+}
+
+// A cutter grown by `g` (cutter(g)) has its tip `g` lower.
+P3 below(const P3& p, double g) {
+    return {p[0], p[1], p[2] - g};
+}
+
+double dist(const P3& a, const P3& b) {
+    return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
+}
+
+// The heights a part of the cutter spans above its tip, and its radius.
+void extent(const Cutter& c, Part p, double& lo, double& hi, double& r) {
+    lo = p == Part::flute ? 0 : p == Part::shank ? c.flute : c.reach;
+    hi = p == Part::flute ? c.flute : p == Part::shank ? c.reach : kFar;
+    r = p == Part::holder ? c.holder : c.radius;
+}
+
+// Whether `part` swept from a to b can come near the box at all.
+bool may_meet(const Cutter& c, Part part, const P3& a, const P3& b, const Box3& box) {
+    double lo = 0, hi = 0, r = 0;
+    extent(c, part, lo, hi, r);
+    r += 1e-3;
+    return std::min(a[0], b[0]) - r <= box.hi[0] && std::max(a[0], b[0]) + r >= box.lo[0] &&
+           std::min(a[1], b[1]) - r <= box.hi[1] && std::max(a[1], b[1]) + r >= box.lo[1] &&
+           std::min(a[2], b[2]) + lo <= box.hi[2] && std::max(a[2], b[2]) + hi >= box.lo[2];
+}
+
+Box3 bounds(const Cylinder& k) {
+    return {{k.x - k.radius, k.y - k.radius, k.z0}, {k.x + k.radius, k.y + k.radius, k.z1}};
+}
+
+// The first fraction of a->b where `depth_at` exceeds `depth`: marched in
+// steps of 0.25 mm (nothing a workshop holds is thinner), then bisected to
+// 0.1 µm of travel; 2 when never.
+template <class F>
+double marched(const P3& a, const P3& b, double depth, bool before, F depth_at) {
+    const double len = dist(a, b);
+    if (depth_at(a) > depth) return 0;
+    const int steps = std::max(1, int(std::ceil(len / 0.25)));
+    double prev = 0;
+    for (int k = 1; k <= steps; ++k) {
+        const double f = double(k) / steps;
+        if (depth_at(lerp(a, b, f)) <= depth) {
+            prev = f;
+            continue;
+        }
+        double lo = prev, hi = f;
+        for (int i = 0; i < 60 && (hi - lo) * len > 1e-4; ++i) {
+            const double mid = (lo + hi) / 2;
+            (depth_at(lerp(a, b, mid)) > depth ? hi : lo) = mid;
+        }
+        return before ? lo : hi;
+    }
+    return 2;
+}
+
+constexpr Part kParts[] = {Part::flute, Part::shank, Part::holder};
+
+}  // namespace
+
+// A point of the tool seen from the workshop: the tip of the cutter grown by
+// `g` for a contact or a shim.
+P3 Workshop::grown_tip(const Axes& om, double g) const {
+    return below(tip3(om), g);
+}
+
+// The fixtures of the setup, built once by the constructor.
+void Workshop::mill_fixtures() {
+    const MillSetup& m = setup_.mill;
+    const double cx = m.stock_x + m.length / 2, jw = m.jaw_width / 2, th = m.jaw_thickness;
+    const double y0 = m.stock_y, y1 = m.stock_y + m.width;
+    boxes_.push_back({{-kFar, -kFar, m.table_z - 100}, {kFar, kFar, m.table_z}});
+    box_kind_.push_back(Met::table);
+    if (m.holding == "vice") {
+        const double top = m.stock_z + m.jaw_height;
+        boxes_.push_back({{cx - jw, y1, m.table_z}, {cx + jw, y1 + th, top}});  // fixed, at +Y
+        boxes_.push_back({{cx - jw, y0 - th, m.table_z}, {cx + jw, y0, top}});  // moving
+        box_kind_.insert(box_kind_.end(), 2, Met::vice);
+        if (m.stock_z > m.table_z + 1e-9) {  // the body and parallels under the block
+            boxes_.push_back({{cx - jw, y0, m.table_z}, {cx + jw, y1, m.stock_z}});
+            box_kind_.push_back(Met::vice);
+        }
+    } else if (m.holding == "plate" && m.stock_z > m.table_z + 1e-9) {
+        const double g = m.plate_margin;
+        boxes_.push_back(
+            {{m.stock_x - g, y0 - g, m.table_z}, {m.stock_x + m.length + g, y1 + g, m.stock_z}});
+        box_kind_.push_back(Met::plate);
+    }
+    for (const Pin& p : m.pins) {
+        pins_.push_back({p.x, p.y, p.diameter / 2, m.table_z, m.stock_z + p.height});
+        pin_kind_.push_back(Met::pin);
+    }
+    if (m.setter) {
+        pins_.push_back({m.setter_x, m.setter_y, m.setter_diameter / 2, m.table_z, m.setter_z});
+        pin_kind_.push_back(Met::setter);
+    }
+    mill_ = std::make_unique<MillWorld>(
+        Box3{{m.stock_x, m.stock_y, m.stock_z},
+             {m.stock_x + m.length, m.stock_y + m.width, m.stock_z + m.height}},
+        m.cell);
+}
+
+Cutter Workshop::cutter(double grow) const {
+    Cutter c;
+    const Tool* t = current();
+    if (!t) return c;
+    const ToolTruth& tt = *t->truth;
+    // Wear takes the cutter's side and end back alike (pupitre-setup(5)).
+    const double w = tt.wear > 0 ? tt.wear * 1e-3 * (t->cut / 1000) : 0;
+    c.radius = std::max(0.0, tt.radius - w) + grow;
+    c.corner = std::min(c.radius, tt.corner + grow);
+    c.flute = tt.flute > 0 ? tt.flute : std::max(10.0, 4 * tt.radius);
+    c.reach = std::max(c.flute, tt.reach > 0 ? tt.reach : c.flute + 10);
+    c.holder = std::max(c.radius, tt.holder_diameter / 2 + grow);
+    return c;
+}
+
+P3 Workshop::tip3(const Axes& om) const {
+    const Tool* t = current();
+    if (!t) return {om[X], om[Y], om[Z]};
+    const ToolTruth& tt = *t->truth;
+    const double w = tt.wear > 0 ? tt.wear * 1e-3 * (t->cut / 1000) : 0;
+    return {om[X], om[Y], om[Z] - (tt.length - w)};
+}
+
+// How deep the cutter is into anything at `tip`, and what.
+double Workshop::mill_depth(const Cutter& c, const P3& tip, Met& what) const {
+    double deepest = 0;
+    what = Met::none;
+    auto keep = [&](double d, Met h) {
+        if (d > deepest) deepest = d, what = h;
+    };
+    for (Part p : kParts) {
+        keep(mill_->depth_into(c, tip, p), Met::material);
+        for (size_t i = 0; i < boxes_.size(); ++i)
+            keep(depth_into(c, tip, p, boxes_[i]), box_kind_[i]);
+        for (size_t i = 0; i < pins_.size(); ++i)
+            keep(depth_into(c, tip, p, pins_[i]), pin_kind_[i]);
+    }
+    return deepest;
+}
+
+// The first contact along a->b deeper than `depth`: with the material
+// (`with_material`: the flute too; else only the shank and the holder, the
+// flute cutting) and every fixture.
+Workshop::Contact Workshop::mill_first(const Cutter& c, const P3& a, const P3& b, double depth,
+                                       bool with_material, bool before) const {
+    Contact k;
+    auto keep = [&](double f, Met h, Part p) {
+        if (f < k.f) k = Contact{f, h, p};
+    };
+    for (Part p : kParts) {
+        if (with_material || p != Part::flute)
+            keep(mill_->first_contact(c, a, b, p, depth, before), Met::material, p);
+        for (size_t i = 0; i < boxes_.size(); ++i)
+            if (may_meet(c, p, a, b, boxes_[i]))
+                keep(marched(a, b, depth, before,
+                             [&](const P3& q) { return depth_into(c, q, p, boxes_[i]); }),
+                     box_kind_[i], p);
+        for (size_t i = 0; i < pins_.size(); ++i)
+            if (may_meet(c, p, a, b, bounds(pins_[i])))
+                keep(marched(a, b, depth, before,
+                             [&](const P3& q) { return depth_into(c, q, p, pins_[i]); }),
+                     pin_kind_[i], p);
+    }
+    return k;
+}
+
+// Where something happened, in the part's own terms (from the block's
+// corner as loaded, which does not depend on PREF).
+std::string Workshop::mill_where(const P3& p) const {
+    const MillSetup& m = setup_.mill;
+    // TRANSLATORS: where a crash or a contact happened on a milling machine's block.
+    return strf(tr("at X%s Y%s Z%s from the block's corner"),
+                fixed3_zeroed(p[0] - m.stock_x, 5e-4).c_str(),
+                fixed3_zeroed(p[1] - m.stock_y, 5e-4).c_str(),
+                fixed3_zeroed(p[2] - (m.stock_z + m.height), 5e-4).c_str());
+}
+
+namespace {
+
+// A thing the cutter met, for the messages (N_-marked: translated where shown).
+const char* hit_name(int h) {
+    static const char* const names[] = {"",
+                                        N_("the part"),
+                                        N_("the vice"),
+                                        N_("the plate"),
+                                        N_("a locating pin"),
+                                        N_("the table"),
+                                        N_("the tool setter"),
+                                        N_("the shim")};
+    return names[h];
+}
+
+}  // namespace
+
+std::string Workshop::mill_crash_text(int code, const Contact& c, const std::string& place) const {
+    const char* p = place.c_str();
+    switch (code) {
+        case kCrashRapid:
+            return strf(tr("crash: T%d rapid (G0) into the part %s"), tool_, p);
+        case kCrashStopped:
+            return strf(tr("crash: T%d fed into the part with the spindle stopped %s"), tool_, p);
+        case kCrashDirection:
+            return strf(tr("crash: T%d cuts with M%d, the spindle turns M%d, %s"), tool_,
+                        current()->truth->spindle, dir_, p);
+        case kCrashProbe:
+            return strf(tr("crash: the probe T%d was driven into the part %s"), tool_, p);
+        default:
+            break;
+    }
+    const char* what = tr(hit_name(int(c.what)));
+    if (c.part == Part::holder)
+        return strf(tr("crash: the holder of T%d hit %s %s"), tool_, what, p);
+    if (c.part == Part::shank) return strf(tr("crash: the shank of T%d hit %s %s"), tool_, what, p);
+    return strf(tr("crash: T%d hit %s %s"), tool_, what, p);
+}
+
+std::string Workshop::mill_touch_text(const Contact& c, const std::string& place) const {
+    if (c.what == Met::shim)
+        return strf(tr("T%d touched the %s mm shim on the part %s"), tool_, fixed3(shim_).c_str(),
+                    place.c_str());
+    const char* what = tr(hit_name(int(c.what)));
+    if (c.part == Part::holder)
+        return strf(tr("the holder of T%d touched %s %s"), tool_, what, place.c_str());
+    if (c.part == Part::shank)
+        return strf(tr("the shank of T%d touched %s %s"), tool_, what, place.c_str());
+    return strf(tr("T%d touched %s %s"), tool_, what, place.c_str());
+}
+
+// One straight piece of a move, tip from a to b (the machine from oma to
+// omb): cut while cutting, checked against everything; false on a crash,
+// recorded with the fraction of this piece done.
+bool Workshop::mill_stroke(const MoveEvent& e, const P3& a, const P3& b, const Axes& oma,
+                           const Axes& omb) {
+    Tool* t = current();
+    if (!t) return true;
+    const ToolTruth& tt = *t->truth;
+    const bool feed = e.g != 0, stopped = dir_ != 3 && dir_ != 4;
+    const bool cutting = feed && !stopped && !tt.probe && (tt.spindle == 0 || tt.spindle == dir_);
+    const int flute_code = tt.probe  ? kCrashProbe
+                           : !feed   ? kCrashRapid
+                           : stopped ? kCrashStopped
+                                     : kCrashDirection;
+    // Cutting, the piece goes in steps of at most 1 mm (half the flute for
+    // a short one). The shank and the holder are checked against the
+    // material before each step is cut: plunging, they follow the flute down
+    // the hole the steps before made; on a side pass deeper than the flute
+    // they meet what is ahead (the material is a height field: a cut takes
+    // all above the flute's bottom, so after it nothing would be left).
+    const double len = dist(a, b);
+    const Cutter c0 = cutter();
+    const double step = std::min(1.0, c0.flute / 2);
+    const int steps = cutting ? std::max(1, int(std::ceil(len / step))) : 1;
+    for (int k = 0; k < steps; ++k) {
+        const double f0 = double(k) / steps, f1 = double(k + 1) / steps;
+        const P3 p = lerp(a, b, f0), q = lerp(a, b, f1);
+        const Cutter c = cutter();
+        const Contact hit = mill_first(c, p, q, kCrashDepth, !cutting, false);
+        const P3 end = hit.f > 1 ? q : lerp(p, q, hit.f);
+        if (cutting && mill_->cut(c, p, end) > 0) t->cut += dist(p, end);
+        if (hit.f > 1) continue;
+        const double f = f0 + hit.f * (f1 - f0);
+        Crash cr;
+        cr.code = hit.what == Met::material ? (hit.part == Part::flute ? flute_code : kCrashHolder)
+                                            : kCrashChuck;
+        cr.loc = e.loc;
+        cr.tool = tool_;
+        cr.fraction = f;
+        for (size_t i = 0; i < cr.om.size(); ++i) cr.om[i] = oma[i] + f * (omb[i] - oma[i]);
+        cr.what = mill_crash_text(cr.code, hit, mill_where(lerp(a, b, f)));
+        crashes_.push_back(std::move(cr));
+        return false;
+    }
+    return true;
+}
+
+Outcome Workshop::mill_apply(const MoveEvent& e) {
+    Outcome o;
+    if (crashed()) return o;
+    std::vector<Axes> oms;
+    path_of(e, oms);
+    std::vector<double> at(oms.size(), 0);  // the path's length at each point
+    for (size_t i = 1; i < oms.size(); ++i)
+        at[i] = at[i - 1] + dist(tip3(oms[i - 1]), tip3(oms[i]));
+    for (size_t i = 0; i + 1 < oms.size(); ++i) {
+        if (mill_stroke(e, tip3(oms[i]), tip3(oms[i + 1]), oms[i], oms[i + 1])) continue;
+        Crash& c = crashes_.back();
+        const double total = at.back();
+        c.fraction = total > 0 ? (at[i] + c.fraction * (at[i + 1] - at[i])) / total : 1;
+        o.crashed = true;
+        o.stop = c.om;
+        o.fraction = c.fraction;
+        o.what = c.what;
+        return o;
+    }
+    return o;
+}
+
+// JOG and INC (see jog()): the first contact of the cutter, its shank or
+// holder with the block, a fixture or the shim stops the move.
+Outcome Workshop::mill_jog(const MoveEvent& e, bool continuous) {
+    Outcome o;
+    if (!current() || crashed()) return o;
+    const P3 a = tip3(e.from_mach), b = tip3(e.to_mach);
+    Met what = Met::none;
+    const bool touching = mill_depth(cutter(kNear), below(a, kNear), what) > kTouchDepth;
+    // A shim on the part (the paper test): the cutter meets the part a
+    // shim's thickness early, and cannot cut through it.
+    const bool on_shim =
+        shim_ > 0 && mill_->depth_into(cutter(shim_ + kNear), below(a, shim_ + kNear),
+                                       Part::flute) > kTouchDepth;
+    if (on_shim && !continuous) return on_the_shim(e.from_mach, tool_);
+    if (touching && !continuous) return mill_apply(e);
+    // A held key slides along or away, and stops again before going deeper.
+    const double limit =
+        touching ? std::max(kTouchDepth, mill_depth(cutter(), a, what)) : kTouchDepth;
+    Contact k = mill_first(cutter(), a, b, limit, true, true);
+    if (shim_ > 0) {
+        const Cutter over = cutter(shim_);
+        const P3 oa = below(a, shim_), ob = below(b, shim_);
+        const double deep = on_shim ? mill_->depth_into(over, oa, Part::flute) : 0;
+        const double f =
+            mill_->first_contact(over, oa, ob, Part::flute, std::max(kTouchDepth, deep), true);
+        if (f < k.f) k = Contact{f, Met::shim, Part::flute};
+    }
+    if (k.f > 1) return mill_apply(e);
+    o.touched = true;
+    o.fraction = k.f;
+    for (size_t i = 0; i < o.stop.size(); ++i)
+        o.stop[i] = e.from_mach[i] + k.f * (e.to_mach[i] - e.from_mach[i]);
+    o.what = mill_touch_text(k, mill_where(lerp(a, b, k.f)));
+    return o;
+}
+
+// --- instruments on the machining centre ---
+
+namespace {
+
+// "X60 Y30 Z-5" and a bare axis letter: what a request gives.
+struct Request {
+    int axis = -1;                        // X or Y given alone: the direction
+    bool has[3] = {false, false, false};  // X, Y, Z given with a value
+    double v[3] = {0, 0, 0};
+};
+
+bool read_request(std::string_view rest, Request& q) {
+    while (!rest.empty()) {
+        const size_t sp = rest.find(' ');
+        std::string_view w = rest.substr(0, sp);
+        rest = sp == std::string_view::npos ? "" : rest.substr(sp + 1);
+        if (w.empty()) continue;
+        const char c = char(w[0] & ~0x20);
+        const int a = c == 'X' ? 0 : c == 'Y' ? 1 : c == 'Z' ? 2 : -1;
+        if (a < 0) return false;
+        if (w.size() == 1) {
+            if (q.axis >= 0 || a == 2) return false;
+            q.axis = a;
+            continue;
+        }
+        double v = 0;
+        auto r = std::from_chars(w.data() + 1, w.data() + w.size(), v);
+        if (r.ec != std::errc() || r.ptr != w.data() + w.size() || !std::isfinite(v) || q.has[a])
+            return false;
+        q.has[a] = true;
+        q.v[a] = v;
+    }
+    return true;
+}
+
+struct MillInstrument {
+    const char* word;
+    const char* name;  // N_()-marked
+    double resolution;
+    bool axis;        // takes a direction, X or Y
+    bool needs[3];    // which of X, Y, Z it needs besides
+    const char* how;  // N_()-marked: the form, for the message
+};
+constexpr MillInstrument kMillInstruments[] = {
+    {"length", N_("caliper"), 0.01, true, {true, true, true}, N_("length X Y30 Z-5")},
+    {"width", N_("caliper"), 0.01, true, {true, true, true}, N_("width X X60 Y30 Z-5")},
+    {"depth", N_("depth gauge"), 0.01, false, {true, true, false}, N_("depth X60 Y30")},
+    {"height", N_("micrometer"), 0.001, false, {true, true, false}, N_("height X60 Y30")},
+};
+
+}  // namespace
+
+// Reads the block with an instrument (pupitre-setup(5), MEASUREMENTS): the
+// place from the block's corner as loaded, Z from its top face as loaded.
+std::string Workshop::mill_measure(std::string_view word, std::string_view rest, Reading& r) const {
+    const MillInstrument* in = nullptr;
+    for (const MillInstrument& i : kMillInstruments)
+        if (word == i.word) in = &i;
+    if (!in)
+        return tr(
+            "expected length X|Y, width X|Y, depth, height (with X Y Z from the block's "
+            "corner) or tool Tn L|R");
+    Request q;
+    bool ok = read_request(rest, q) && (q.axis >= 0) == in->axis;
+    for (int a = 0; a < 3 && ok; ++a) {
+        // length takes every coordinate but its direction's.
+        const bool want = in->word == std::string_view("length") ? a != q.axis : in->needs[a];
+        ok = want == q.has[a];
+    }
+    if (!ok) return strf(tr("expected %s (from the block's corner)"), tr(in->how));
+    if (q.v[2] > 0) return tr("Z is measured from the block's top face: 0 or negative (Z-5)");
+    const Box3& b = mill_->stock();
+    const P3 at{b.lo[0] + q.v[0], b.lo[1] + q.v[1], b.hi[2] + q.v[2]};
+    const int axis = in->axis ? q.axis : 2;
+    const auto span = mill_->along(axis, at);
+    r.instrument = tr(in->name);
+    r.resolution = in->resolution;
+    double v = 0;
+    if (in->word == std::string_view("length")) {
+        if (span.empty()) return tr("no material there");
+        v = span.back()[1] - span.front()[0];
+    } else if (in->word == std::string_view("width")) {
+        double lo = -kFar, hi = kFar;
+        for (const auto& s : span) {
+            if (s[0] < at[axis] && s[1] > at[axis])
+                return tr("that point is in the material: width measures the gap around it");
+            if (s[1] <= at[axis]) lo = std::max(lo, s[1]);
+            if (s[0] >= at[axis]) hi = std::min(hi, s[0]);
+        }
+        if (lo == -kFar || hi == kFar) return tr("no walls there: the gap opens out of the part");
+        v = hi - lo;
+    } else {
+        if (span.empty()) return tr("no material there");
+        v = in->word == std::string_view("depth") ? b.hi[2] - span.back()[1]
+                                                  : span.back()[1] - span.front()[0];
+    }
+    r.value = std::round(v / in->resolution) * in->resolution;
+    return {};
+}
+
+}  // namespace pupitre::workshop

@@ -1,0 +1,66 @@
+#!/usr/bin/env bash
+# The machining centre's workshop in batch (pupitre-setup(5)): slot.iso cut
+# in the shipped mill setup and measured from the block's corner, with the
+# numbers worked out by hand; a wrong PREF Z or tool length read by the
+# depth gauge; a rapid into the block; the part exported as a 16-bit PNG
+# height field with its JSON.
+#   mill.sh PUPITRE_BINARY
+# SPDX-License-Identifier: GPL-3.0-or-later
+set -uo pipefail
+bin=$1
+here=$(cd "$(dirname "$0")" && pwd)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fail() { echo "FAIL: $*"; exit 1; }
+export LANGUAGE=en
+cd "$here" || fail "cd $here"
+# The true values of data/setups/mill.setup: the origin at the centre of
+# the block's top face (X60 Y40 from its corner), T2's true length.
+pref=(--set PREF.X=108.35 --set PREF.Y=-91.72)
+d2=(--set D2.L=117.645 --set D2.R=4)
+run() { "$bin" run --machine mill --setup mill "$@" slot.iso 2>"$work/err"; }
+
+# (a) Right values: the slot along X at Y0 is 8 wide and 3 deep; the pocket
+# (the Ø8 cutter round X20..40 Y20..26) is 28 x 14 and 5 deep; the block is
+# 37 thick under the slot and 120 long beside it.
+out=$(run "${pref[@]}" --set PREF.Z=-290 "${d2[@]}" --measure "width Y X10 Y40 Z-1" \
+    --measure "depth X10 Y40" --measure "height X10 Y40" --measure "width X X90 Y63 Z-2" \
+    --measure "width Y X90 Y63 Z-2" --measure "depth X90 Y63" --measure "length X Y10 Z-1")
+rc=$?
+[ $rc -eq 0 ] || fail "(a) exit $rc: $(cat "$work/err")"
+expect() { grep -qxF -- "$1" <<<"$out" || fail "$2: expected '$1' in: $out"; }
+expect 'width Y X10 Y40 Z-1: 8.00 mm (caliper)' "(a) the slot's width"
+expect 'depth X10 Y40: 3.00 mm (depth gauge)' "(a) the slot's depth"
+expect 'height X10 Y40: 37.000 mm (micrometer)' "(a) the block under the slot"
+expect 'width X X90 Y63 Z-2: 28.00 mm (caliper)' "(a) the pocket's length"
+expect 'width Y X90 Y63 Z-2: 14.00 mm (caliper)' "(a) the pocket's width"
+expect 'depth X90 Y63: 5.00 mm (depth gauge)' "(a) the pocket's depth"
+expect 'length X Y10 Z-1: 120.00 mm (caliper)' "(a) the block's length"
+
+# (b) PREF Z 0.1 mm high: every depth 0.1 shallower; T2's length entered
+# 0.1 mm short: 0.1 deeper.
+out=$(run "${pref[@]}" --set PREF.Z=-289.9 "${d2[@]}" --measure "depth X10 Y40")
+expect 'depth X10 Y40: 2.90 mm (depth gauge)' "(b) PREF Z 0.1 high"
+out=$(run "${pref[@]}" --set PREF.Z=-290 --set D2.L=117.545 --set D2.R=4 --measure "depth X10 Y40")
+expect 'depth X10 Y40: 3.10 mm (depth gauge)' "(b) L 0.1 short"
+
+# (c) PREF Z 10 mm low: the rapid over the block at Z5 goes into it (1200).
+run "${pref[@]}" --set PREF.Z=-300 "${d2[@]}" >"$work/out"
+rc=$?
+[ $rc -eq 1 ] || fail "(c) a crash should exit 1, not $rc"
+grep -Eq '^slot\.iso:[0-9]+: N70: error 1200: crash: T2 rapid \(G0\) into the part at X' "$work/err" ||
+    fail "(c) expected the rapid of N70 to crash: $(cat "$work/err")"
+
+# (d) The part as a 16-bit greyscale PNG and its JSON.
+run "${pref[@]}" --set PREF.Z=-290 "${d2[@]}" --part-out "$work/part.png" >/dev/null ||
+    fail "(d) --part-out part.png: $(cat "$work/err")"
+file "$work/part.png" 2>/dev/null | grep -q '16-bit grayscale' ||
+    head -c 32 "$work/part.png" | od -An -tx1 | tr -d ' \n' | grep -q '^89504e470d0a1a0a0000000d49484452000004b0000003201000' ||
+    fail "(d) part.png should be a 1200 x 800 16-bit greyscale PNG"
+grep -q '"columns":1200,"rows":800,"cell":0.1000' "$work/part.json" ||
+    fail "(d) part.json should give the image's size and cell: $(cat "$work/part.json")"
+run "${pref[@]}" --set PREF.Z=-290 "${d2[@]}" --part-out "$work/part.svg" >/dev/null
+[ $? -eq 64 ] || fail "(d) a mill part as .svg should be a usage error"
+grep -qF "a machining centre's part is a 16-bit PNG height field" "$work/err" ||
+    fail "(d) the usage error should say why: $(cat "$work/err")"
+echo ok
