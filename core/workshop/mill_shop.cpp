@@ -171,8 +171,14 @@ Workshop::Contact Workshop::mill_first(const Cutter& c, const P3& a, const P3& b
     auto keep = [&](double f, Met h, Part p) {
         if (f < k.f) k = Contact{f, h, p};
     };
+    // A part whose lowest point stays above the block's top as loaded never
+    // meets the material (most moves: the shank and holder while cutting,
+    // the flute on a rapid over the part).
+    const double low = std::min(a[2], b[2]), top = mill_->stock().hi[2] + depth;
     for (Part p : kParts) {
-        if (with_material || p != Part::flute)
+        double lo = 0, hi = 0, r = 0;
+        extent(c, p, lo, hi, r);
+        if ((with_material || p != Part::flute) && low + lo < top)
             keep(mill_->first_contact(c, a, b, p, depth, before), Met::material, p);
         for (size_t i = 0; i < boxes_.size(); ++i)
             if (may_meet(c, p, a, b, boxes_[i]))
@@ -264,8 +270,8 @@ bool Workshop::mill_stroke(const MoveEvent& e, const P3& a, const P3& b, const A
                            : !feed   ? kCrashRapid
                            : stopped ? kCrashStopped
                                      : kCrashDirection;
-    // Cutting, the piece goes in steps of at most 1 mm (half the flute for
-    // a short one). The shank and the holder are checked against the
+    // Cutting deeper than the flute, the piece goes in steps of at most 1 mm
+    // (half the flute for a short one). The shank and the holder are checked against the
     // material before each step is cut: plunging, they follow the flute down
     // the hole the steps before made; on a side pass deeper than the flute
     // they meet what is ahead (the material is a height field: a cut takes
@@ -273,7 +279,8 @@ bool Workshop::mill_stroke(const MoveEvent& e, const P3& a, const P3& b, const A
     const double len = dist(a, b);
     const Cutter c0 = cutter();
     const double step = std::min(1.0, c0.flute / 2);
-    const int steps = cutting ? std::max(1, int(std::ceil(len / step))) : 1;
+    const bool deep = std::min(a[2], b[2]) + c0.flute < mill_->stock().hi[2] + kCrashDepth;
+    const int steps = cutting && deep ? std::max(1, int(std::ceil(len / step))) : 1;
     for (int k = 0; k < steps; ++k) {
         const double f0 = double(k) / steps, f1 = double(k + 1) / steps;
         const P3 p = lerp(a, b, f0), q = lerp(a, b, f1);

@@ -1,7 +1,9 @@
 // The workshop's budgets (issue 15): material removal on the run of the
 // handbook's %555 (shared/programs/000_p555_cycles_x.iso, its G64 part on
 // its blank, tests/workshop/p555.setup), the contact search of one jog step,
-// and a GRAPH frame with the part filled at 160x48.
+// and a GRAPH frame with the part filled at 160x48; on the machining centre,
+// the handbook's %100 pocket (shared/programs/000_p100_poche_ilot.iso) cut
+// in a 300 x 200 block at 0.1 mm, a jog's contact, the shaded GRAPH frame.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <benchmark/benchmark.h>
 
@@ -175,6 +177,138 @@ void BM_GraphFramePart(benchmark::State& st) {
     st.counters["outline_points"] = double(part.empty() ? 0 : part.front().size());
 }
 BENCHMARK(BM_GraphFramePart)->Unit(benchmark::kMillisecond);
+
+// --- the machining centre ---
+
+// The shipped mill setup with a 300 x 200 x 40 block (a 3000 x 2000 height
+// field at 0.1 mm), centred where the shipped block is.
+workshop::Setup big_block() {
+    workshop::Setup s;
+    workshop::builtin_setup("mill", s);
+    workshop::parse_setup(s.source +
+                              "\nstock.length = 300\nstock.width = 200\nstock.x = -41.65\n"
+                              "stock.y = -191.72\nvice.jaw.width = 320\n",
+                          s);
+    return s;
+}
+
+// %100 (POCHE AVEC ILOT) as the handbook prints it (the OCR fixed).
+const char* kP100 = R"(%100
+N10 G46 NU0 NP1 ED8 Q5 J.5 NR+ LX25 LY0
+N100 G46 NU1
+N110 G1 X35 Y
+N120 Y-15 EB5
+N130 X25
+N140 Y-20 EB5
+N150 X-15
+N160 G2 X-15 Y20 I-15 J
+N170 G1 X25 EB5
+N180 Y15
+N190 X35 EB5
+N200 Y
+N300 G46 NU2 LX15 LY
+N310 G1 X15 Y5
+N320 Y-5
+N330 X-15
+N340 G2 X-15 Y5 I-15 J
+N350 G1 X15
+N400 G46 NU9
+N510 T1 D1 M6
+N520 M3 M40 S1200
+N530 G46 NU10 NP1 G83 Z-9.5 P4 Q1 ER2 F300
+N600 T2 D2 M6
+N610 M3 M41 S1800
+N620 G46 NU15 NP1 Z-10 P3 ER1 EP250 EQ350
+N700 T3 D3 M6
+N710 M3 M41 S2000
+N720 G46 NU20 NP1 Z-10 P10 EH0 EI200 EJ300
+N800 G Z150
+N810 M2
+)";
+
+void mill_right(Interpreter& in) {
+    for (auto [k, v] : {std::pair{"PREF.X", 108.35}, {"PREF.Y", -91.72}, {"PREF.Z", -290.0},
+                        {"D1.L", 142.318}, {"D1.R", 5.0}, {"D2.L", 117.645}, {"D2.R", 4.0},
+                        {"D3.L", 121.082}, {"D3.R", 4.0}})
+        in.set(k, v);
+}
+
+void mill_run(benchmark::State& st, bool with_shop) {
+    MachineProfile m;
+    builtin_machine("mill", m);
+    const workshop::Setup s = big_block();
+    Null null;
+    long moves = 0;
+    for (auto _ : st) {
+        ProgramMemory mem;
+        Diag d;
+        mem.load_text("p100.iso", kP100, d);
+        workshop::Workshop shop(m, s, &null);
+        Interpreter in(m, mem, with_shop ? static_cast<MachineSink&>(shop) : null);
+        mill_right(in);
+        in.start(mem.first());
+        in.run_to_end();
+        moves = in.moves();
+        if (with_shop && shop.crashed()) st.SkipWithError(shop.crashes().front().what.c_str());
+        benchmark::DoNotOptimize(shop.generation());
+    }
+    st.counters["moves"] = double(moves);
+}
+
+void BM_P100Run(benchmark::State& st) {
+    mill_run(st, false);
+}
+void BM_P100RunWorkshop(benchmark::State& st) {
+    mill_run(st, true);
+}
+BENCHMARK(BM_P100Run)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_P100RunWorkshop)->Unit(benchmark::kMillisecond);
+
+// A JOG of 50 mm along X towards the big block's -X face, T2 5 below its
+// top: the contact search of the whole move.
+void BM_MillJogContact(benchmark::State& st) {
+    MachineProfile m;
+    builtin_machine("mill", m);
+    workshop::Workshop shop(m, big_block(), nullptr);
+    shop.tool(Loc{}, 2, 2, 0, true);
+    MoveEvent e;
+    e.g = 1;
+    e.from_mach[X] = -41.65 - 30;
+    e.to_mach[X] = e.from_mach[X] + 50;
+    e.from_mach[Y] = e.to_mach[Y] = -91.72;
+    e.from_mach[Z] = e.to_mach[Z] = -295 + 117.645;
+    for (auto _ : st) {
+        workshop::Outcome o = shop.jog(e, true);
+        benchmark::DoNotOptimize(o.stop);
+    }
+}
+BENCHMARK(BM_MillJogContact)->Unit(benchmark::kMicrosecond);
+
+// A GRAPH frame at 160x48 with the big block shaded under %100's path.
+void BM_GraphFrameBlock(benchmark::State& st) {
+    MachineProfile m;
+    builtin_machine("mill", m);
+    Toolpath path(m);
+    ProgramMemory mem;
+    Diag d;
+    mem.load_text("p100.iso", kP100, d);
+    workshop::Workshop shop(m, big_block(), &path);
+    Interpreter in(m, mem, shop);
+    mill_right(in);
+    in.start(mem.first());
+    in.run_to_end();
+    pages::GraphView g;
+    g.path = &path;
+    g.plane = PathPlane::xy;
+    g.block = shop.mill();
+    g.block_dx = -108.35, g.block_dy = 91.72;  // machine to program: - PREF
+    pages::Canvas c(160, 48);
+    for (auto _ : st) {
+        pages::page_graph(g, m, c, pages::Rect{0, 1, 160, 44});
+        benchmark::DoNotOptimize(c.at(0, 0));
+    }
+}
+BENCHMARK(BM_GraphFrameBlock)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 
