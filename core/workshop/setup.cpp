@@ -41,7 +41,8 @@ std::string in_range(std::string_view val, double lo, double hi, double& out) {
     return {};
 }
 
-constexpr double kBig = 5000;  // mm: no workshop is larger
+constexpr double kBig = 5000;       // mm: no workshop is larger
+constexpr double kMaxCells = 25e6;  // a mill's height field
 
 // The setup's keys, by table: name, its smallest and largest value, the field.
 struct Key {
@@ -267,6 +268,11 @@ std::string consistent_mill(const Setup& s) {
     const MillSetup& m = s.mill;
     if (m.stock_z < m.table_z - 1e-9) return tr("stock.z must not be below table.z");
     if (m.setter && m.setter_z < m.table_z - 1e-9) return tr("setter.z must not be below table.z");
+    // The height field's memory: 25,000,000 cells take about 150 MB.
+    const double cells = std::ceil(m.length / m.cell) * std::ceil(m.width / m.cell);
+    if (cells > kMaxCells)
+        return strf(tr("the height field would have %.0f cells, at most %.0f: a larger zmap.cell"),
+                    cells, kMaxCells);
     for (size_t i = 0; i < m.pins.size(); ++i) {
         const Pin& p = m.pins[i];
         // The pin's circle must not enter the stock's rectangle.

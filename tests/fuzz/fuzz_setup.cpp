@@ -1,6 +1,7 @@
 // libFuzzer target: setup text -> parse_setup, then the lathe's world built
 // from it (stock, chuck, tailstock), every tool's true shape, a Workshop and
-// the instruments' readings. Any crash, sanitizer report, hang or runaway
+// the instruments' readings; a machining centre's: its Workshop, a jog, a
+// plunge and a pass of each tool, the instruments. Any crash, sanitizer report, hang or runaway
 // allocation is a bug: a bad setup must end in "line N: ..." (pupitre-setup(5)).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <cstddef>
@@ -16,6 +17,57 @@
 using namespace pupitre;
 using namespace pupitre::workshop;
 
+namespace {
+
+MoveEvent move(const Axes& from, double dx, double dy, double dz, int g) {
+    MoveEvent e;
+    e.g = g;
+    e.from_mach = from;
+    e.to_mach = from;
+    e.to_mach[X] += dx, e.to_mach[Y] += dy, e.to_mach[Z] += dz;
+    e.to_prog = e.to_mach;
+    return e;
+}
+
+int mill(const Setup& s) {
+    static MachineProfile mill_m;
+    static bool init = builtin_machine("mill", mill_m);
+    (void)init;
+    const MillSetup& m = s.mill;
+    // A height field of more than a million cells is legal (pupitre-setup(5)
+    // caps it at 25,000,000) but too slow for a fuzzing run.
+    if (m.length / m.cell * m.width / m.cell > 1e6) return 0;
+    Workshop w(mill_m, s, nullptr);
+    SpindleEvent on;
+    on.dir = 3;
+    on.rpm = 1000;
+    w.spindle(on);
+    for (const ToolTruth& t : s.tools) {
+        w.tool(Loc{}, t.position, t.position, 0, true);
+        // Over the block's centre, 5 above its top, the tip's height: down.
+        Axes at{};
+        at[X] = m.stock_x + m.length / 2, at[Y] = m.stock_y + m.width / 2;
+        at[Z] = m.stock_z + m.height + 5 + t.length;
+        Outcome o = w.jog(move(at, 0, 0, -20, 1), true);
+        at = o.touched ? o.stop : at;
+        (void)w.jog(move(at, 0, 0, -1, 1), false);
+        (void)w.apply(move(at, m.length / 3, m.width / 5, -2, 1));
+        w.clear_crash();
+    }
+    static constexpr std::string_view kSpecs[] = {"depth X1 Y1",          "height X10 Y10",
+                                                  "width X X10 Y10 Z-1",  "length Y X5 Z-0.5",
+                                                  "width Y X1e300 Y0 Z0", "tool T1 L"};
+    for (std::string_view spec : kSpecs) {
+        Reading r;
+        (void)w.measure(spec, r);
+    }
+    const std::string text = w.part_text();
+    (void)w.load_part(text);
+    return 0;
+}
+
+}  // namespace
+
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     if (size > 16 * 1024) return 0;
     static MachineProfile lathe;
@@ -24,6 +76,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     std::string_view text(reinterpret_cast<const char*>(data), size);
     Setup s;
     if (!parse_setup(text, s).empty()) return 0;
+    if (s.kind == "mill") return mill(s);
     for (const ToolTruth& t : s.tools) {
         ToolShape shape = tool_shape(t);
         (void)shape;

@@ -108,6 +108,12 @@ TEST(MillSetup, ErrorsNameTheLine) {
               "pin.1 stands inside the stock");
     EXPECT_EQ(parse_setup("kind = mill\ntable.z = 0\nstock.z = -1\n", s),
               "stock.z must not be below table.z");
+    // 2000 x 2000 at 0.1 mm: 400,000,000 cells; at 0.4 mm 25,000,000 pass.
+    EXPECT_EQ(parse_setup("kind = mill\nstock.length = 2000\nstock.width = 2000\n", s),
+              "the height field would have 400000000 cells, at most 25000000: a larger zmap.cell");
+    EXPECT_EQ(
+        parse_setup("kind = mill\nstock.length = 2000\nstock.width = 2000\nzmap.cell = 0.4\n", s),
+        "");
 }
 
 TEST(MillWorkshop, RightValuesCutTheDrawing) {

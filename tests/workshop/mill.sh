@@ -51,6 +51,14 @@ rc=$?
 grep -Eq '^slot\.iso:[0-9]+: N70: error 1200: crash: T2 rapid \(G0\) into the part at X' "$work/err" ||
     fail "(c) expected the rapid of N70 to crash: $(cat "$work/err")"
 
+# (e) The golden report (tests/workshop/slot.json): the same readings, the
+# presetter's, and one that cannot be taken.
+run "${pref[@]}" --set PREF.Z=-290 "${d2[@]}" --json --measure "width Y X10 Y40 Z-1" \
+    --measure "depth X10 Y40" --measure "height X10 Y40" --measure "width X X90 Y63 Z-2" \
+    --measure "width Y X90 Y63 Z-2" --measure "depth X90 Y63" --measure "tool T2 L" \
+    --measure "width X X10 Y40 Z-1" >"$work/slot.json" || fail "(e) exit $?: $(cat "$work/err")"
+diff -u slot.json "$work/slot.json" || fail "(e) the JSON report differs from tests/workshop/slot.json"
+
 # (d) The part as a 16-bit greyscale PNG and its JSON.
 run "${pref[@]}" --set PREF.Z=-290 "${d2[@]}" --part-out "$work/part.png" >/dev/null ||
     fail "(d) --part-out part.png: $(cat "$work/err")"
