@@ -254,6 +254,17 @@ mill)
     start --machine mill
     cmd ":measure depth X10 Y40"
     wait_for 'depth gauge: depth X10 Y40 = 3.00 mm' 10
+    # A rapid into the block in IMD is a crash: the alarm, the machine
+    # stopped at the contact (the slot is 3 deep, the rapid goes to 10).
+    pom
+    cmd ":mode imd"
+    cmd "T2 D2 M6"
+    keys F9
+    wait_for 'IMD done' 10
+    cmd "G0 X0 Y0 Z-10"
+    keys F9
+    wait_for 'ALARM 1200' 20
+    wait_for 'crash: T2 rapid \(G0\) into the part' 5
     ;;
 *)
     echo "unknown case $case"
