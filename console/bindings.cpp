@@ -380,8 +380,8 @@ const Action* find_action(std::string_view name) {
 // The soft-key labels of the pages (F1-F7 and the like), for the catalogue.
 // TRANSLATORS: a page's soft-key label: at most 6 columns (5 on F10).
 [[maybe_unused]] const char* const kPageLabels[] = {
-    N_("HELP"), N_("OP/OM"), N_("PROG/GR"), N_("INFO"),  N_("SET"),  N_("DIR"),    N_("ALARM"),
-    N_("PREF"), N_("CORR"),  N_("PARAM"),   N_("GRAPH"), N_("EDIT"), N_("HISTORY")};
+    N_("HELP"), N_("OP/OM"), N_("PROG/GR"), N_("INFO"),  N_("SET"),  N_("DIR"),     N_("ALARM"),
+    N_("PREF"), N_("CORR"),  N_("PARAM"),   N_("GRAPH"), N_("EDIT"), N_("HISTORY"), N_("SHOP")};
 
 std::string help_text(const Action& a, std::string_view arg) {
     std::string h = pages::tr_text(a.help);

@@ -97,7 +97,8 @@ Effect usage(Session& s, std::string_view u) {
 Effect page(Session& s, const CommandCall& c) {
     pages::PageId p;
     if (!pages::parse_page(c.arg(1), p))
-        return usage(s, ":page om|op|prog|graph|info|param|pref|corr|dir|alarm|help|edit|history");
+        return usage(
+            s, ":page om|op|prog|graph|info|param|pref|corr|dir|alarm|help|edit|history|shop");
     s.show_page(p);
     return Effect::redraw;
 }
@@ -216,33 +217,9 @@ Effect touch(Session& s, const CommandCall& c) {
 
 // ---- the workshop (pupitre-setup(5)) ----
 
-std::string no_workshop(const Session& s) {
-    return s.machine().lathe ? tr("no workshop: :setup lathe puts a part in the chuck")
-                             : tr("no workshop: :setup mill puts a block in the vice");
-}
-
 // An instrument's reading of the part: ":measure dia Z-20".
 Effect read_instrument(Session& s, const CommandCall& c) {
-    const workshop::Workshop* w = s.sim().shop();
-    if (!w) {
-        s.say(no_workshop(s), true);
-        return Effect::redraw;
-    }
-    workshop::Reading r;
-    std::string spec(c.rest());
-    while (!spec.empty() && spec.front() == ' ') spec.erase(0, 1);
-    if (std::string why = w->measure(spec, r); !why.empty()) {
-        s.say(strf(tr("%s: %s"), spec.c_str(), why.c_str()), true);
-        return Effect::redraw;
-    }
-    int decimals = r.resolution < 0.005 ? 3 : 2;
-    // TRANSLATORS: the instrument, what it measured, the reading in mm.
-    std::string said =
-        strf(tr("%s: %s = %.*f mm"), r.instrument.c_str(), spec.c_str(), decimals, r.value);
-    // TRANSLATORS: after a presetter's reading: its uncertainty in mm.
-    if (r.uncertainty > 0) said += strf(tr(" (\u00b1%.3f)"), r.uncertainty);
-    s.say(said);
-    return Effect::redraw;
+    return s.read_part(c.rest());
 }
 
 bool instrument_word(std::string_view w) {
@@ -288,7 +265,7 @@ Effect setup(Session& s, const CommandCall& c) {
 Effect shim(Session& s, const CommandCall& c) {
     workshop::Workshop* w = s.sim().shop();
     if (!w) {
-        s.say(no_workshop(s), true);
+        s.say(s.no_workshop(), true);
         return Effect::redraw;
     }
     double mm = 0;
@@ -321,7 +298,7 @@ Effect part(Session& s, const CommandCall& c) {
     bool exporting = c.arg(1) == "export" && !c.arg(2).empty() && c.arg(3).empty();
     if (c.arg(1) != "new" && !exporting) return usage(s, ":part new | :part export FILE");
     if (!w) {
-        s.say(no_workshop(s), true);
+        s.say(s.no_workshop(), true);
         return Effect::redraw;
     }
     if (exporting) return export_part(s, *w, c.arg(2));
@@ -427,7 +404,7 @@ bool forced(const CommandCall& c) {
 // syntax as typed (English, as in pupitre(1)), the help is translated there. Each row starts a
 // line with {" (tests/console/man_sync.py reads the names from there).
 constexpr Command kCommands[] = {
-    {"page", ":page om|op|prog|graph|info|param|pref|corr|dir|alarm|help|edit|history",
+    {"page", ":page om|op|prog|graph|info|param|pref|corr|dir|alarm|help|edit|history|shop",
      N_("show a page"), page},
     {"mode", ":mode auto|seq|dry|test|rns|imd|jog|inc|pom|edit|modif",
      N_("select a mode (refused while a program is in cycle)"), mode},

@@ -85,6 +85,36 @@ std::string Session::load_workshop() {
                       "the stored part could not be read: the workshop starts with fresh stock"));
 }
 
+std::string Session::no_workshop() const {
+    return m_.lathe ? tr("no workshop: :setup lathe puts a part in the chuck")
+                    : tr("no workshop: :setup mill puts a block in the vice");
+}
+
+Effect Session::read_part(std::string_view spec) {
+    const workshop::Workshop* w = sim_->shop();
+    if (!w) {
+        say(no_workshop(), true);
+        return Effect::redraw;
+    }
+    while (!spec.empty() && spec.front() == ' ') spec.remove_prefix(1);
+    const std::string asked(spec);
+    workshop::Reading r;
+    if (std::string why = w->measure(asked, r); !why.empty()) {
+        say(strf(tr("%s: %s"), asked.c_str(), why.c_str()), true);
+        return Effect::redraw;
+    }
+    int decimals = r.resolution < 0.005 ? 3 : 2;
+    // TRANSLATORS: the instrument, what it measured, the reading in mm.
+    std::string said =
+        strf(tr("%s: %s = %.*f mm"), r.instrument.c_str(), asked.c_str(), decimals, r.value);
+    // TRANSLATORS: after a presetter's reading: its uncertainty in mm.
+    if (r.uncertainty > 0) said += strf(tr(" (\u00b1%.3f)"), r.uncertainty);
+    say(said);
+    readings_.insert(readings_.begin(), said);
+    if (readings_.size() > 100) readings_.pop_back();
+    return Effect::redraw;
+}
+
 void Session::save_workshop() {
     const workshop::Workshop* w = sim_->shop();
     if (w) workshop_saved_ = w->generation();
@@ -253,6 +283,8 @@ Session::Target Session::target() const {
             return Target::corr;
         case pages::PageId::param:
             return Target::param;
+        case pages::PageId::shop:
+            return Target::shop;
         default:
             break;
     }
@@ -282,6 +314,9 @@ std::string Session::prompt() const {
             return "D" + std::to_string(corr_cursor) + "> ";
         case Target::param:
             return "L/E= ";
+        // TRANSLATORS: the WORKSHOP page's prompt: what is typed is an instrument's request.
+        case Target::shop:
+            return tr("MEASURE> ");
         case Target::imd:
             return "IMD> ";
         case Target::rns:
@@ -376,6 +411,8 @@ Effect Session::route_text(const std::string& text) {
             return edit_text(text);
         case Target::param:
             return set_value(t);
+        case Target::shop:
+            return read_part(t);
         default:
             break;
     }
@@ -623,6 +660,7 @@ pages::View Session::view() const {
     v.protect = protect;
     v.undo_depth = undo_.size();
     v.last_setting = last_setting_;
+    v.readings = &readings_;
     view_editor(v);
     v.graph = graph;
     v.graph.path = &path_;

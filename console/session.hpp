@@ -82,6 +82,10 @@ class Session {
     void confirm(std::string question, std::function<void()> then);
     void echo_comma(std::string_view typed, double v);
     Effect measure(int d, int axis, double surface);
+    // Reads an instrument on the workshop's part ("dia Z-20"): the reading
+    // on the message line and at the head of the WORKSHOP page's list.
+    Effect read_part(std::string_view spec);
+    std::string no_workshop() const;  // what to type for one
     Effect undo();
     Effect protect_command(std::string_view args);
     bool unprotected(std::string_view what);  // says why when protected
@@ -125,7 +129,7 @@ class Session {
 
     // Where text typed on the input line goes (DESIGN §2.5): the page when it
     // takes text (editor, PREF, CORR, PARAM), else the mode. The prompt names it.
-    enum class Target { edit, pref, corr, param, imd, rns, inc, other };
+    enum class Target { edit, pref, corr, param, shop, imd, rns, inc, other };
     Target target() const;
     // The message line on entering a mode, and the hint the OP page keeps:
     // what Cycle Start does, the jog keys from the bindings, the INC step.
@@ -177,7 +181,8 @@ class Session {
     std::string message_;
     bool message_error_ = false;
     long refusals_ = 0;
-    std::string last_setting_;  // the PREF and CORR pages show its arithmetic
+    std::string last_setting_;           // the PREF and CORR pages show its arithmetic
+    std::vector<std::string> readings_;  // the WORKSHOP page's, newest first
     uint64_t journaled_changes_ = 0;
     int64_t data_version_ = -1;  // PRAGMA data_version last seen
     double poll_wait_ = 0, lease_wait_ = 0;

@@ -24,6 +24,7 @@ void page_pref(const View& v, Canvas& c, const Rect& r);     // origins, touch-o
 void page_corr(const View& v, Canvas& c, const Rect& r);     // tool correctors, measurement
 void page_edit(const View& v, Canvas& c, const Rect& r);     // EDIT and MODIF
 void page_history(const View& v, Canvas& c, const Rect& r);  // a program's revisions
+void page_shop(const View& v, Canvas& c, const Rect& r);     // the workshop, its instruments
 
 // A line of a long page: styled parts, optionally the whole row restyled.
 struct Line {

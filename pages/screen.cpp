@@ -45,9 +45,9 @@ const char* state_text(RunState st) {
     return "?";
 }
 
-constexpr std::string_view kPageWords[] = {"om",   "op",    "prog",   "info", "param",
-                                           "dir",  "alarm", "help",   "pref", "corr",
-                                           "edit", "graph", "history"};
+constexpr std::string_view kPageWords[] = {"om",   "op",    "prog",    "info", "param",
+                                           "dir",  "alarm", "help",    "pref", "corr",
+                                           "edit", "graph", "history", "shop"};
 
 void status_line(const View& v, Canvas& c) {
     const Sim& s = *v.sim;
@@ -210,6 +210,8 @@ void render_page(const View& v, Canvas& c, const Rect& r) {
             return page_graph(v.graph, v.sim->machine(), c, r);
         case PageId::history:
             return page_history(v, c, r);
+        case PageId::shop:
+            return page_shop(v, c, r);
     }
 }
 

@@ -12,7 +12,22 @@
 
 namespace pupitre::pages {
 
-enum class PageId { om, op, prog, info, param, dir, alarm, help, pref, corr, edit, graph, history };
+enum class PageId {
+    om,
+    op,
+    prog,
+    info,
+    param,
+    dir,
+    alarm,
+    help,
+    pref,
+    corr,
+    edit,
+    graph,
+    history,
+    shop
+};
 std::string_view page_word(PageId p);  // om, op, prog, …
 bool parse_page(std::string_view word, PageId& out);
 
@@ -86,6 +101,8 @@ struct View {
     bool edit_dirty = false, edit_modif = false, edit_modify = false;
     // GRAPH.
     GraphView graph;
+    // WORKSHOP: the readings taken, newest first, as the message line said them.
+    const std::vector<std::string>* readings = nullptr;
 };
 
 // The whole screen: status line, page, message line, input line, soft keys.

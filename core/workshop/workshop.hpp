@@ -89,6 +89,7 @@ class Workshop final : public MachineSink {
     // A shim (or a cigarette paper) of this thickness on the part: a jog
     // stops when the tool pinches it (the paper test); 0: none.
     void set_shim(double mm) { shim_ = mm; }
+    double shim() const { return shim_; }
 
     // An electric touch probe in use, and its lamp: lit when the ball touches
     // the part, the chuck or the tailstock at machine position `om`.

@@ -239,10 +239,17 @@ mill)
     cmd ":load 30"
     keys F9
     wait_for 'M02: end of program %30' 60
-    cmd ":measure depth X10 Y40"
+    # The WORKSHOP page (Alt-w): what is typed there is an instrument's request.
+    keys M-w
+    wait_for '^─ WORKSHOP  setup mill' 5
+    wait_for '^MEASURE>' 5
+    cmd "depth X10 Y40"
     wait_for 'depth gauge: depth X10 Y40 = 3.00 mm' 10
     cmd ":measure width Y X10 Y40 Z-1"
     wait_for 'caliper: width Y X10 Y40 Z-1 = 8.00 mm' 10
+    # Both readings listed on the page, newest first.
+    screen | grep -A2 'Readings (newest first)' | tail -2 | head -1 | grep -q 'caliper: width Y' ||
+        fail "the WORKSHOP page should list the caliper's reading first: $(screen)"
     # GRAPH: the block shaded, the slot through it.
     cmd ":page graph"
     wait_for '▓' 10

@@ -156,6 +156,32 @@ TEST(Screen, ParamDirHelp) {
     snapshot("help_2", c.screen());
 }
 
+// The WORKSHOP page: none yet; then the shipped lathe's, a reading taken by
+// typing the request on the page, a refused one, the shim; the mill's.
+TEST(Screen, WorkshopPage) {
+    Console c("lathe", kLatheFiles);
+    homed_lathe(c);
+    c.type(":page shop");
+    snapshot("shop_none", c.screen());
+    c.type(":setup lathe");
+    c.named("F2");  // the WORKSHOP page takes what is typed: the block on OP
+    c.type(":mode imd");
+    c.type("T1 D1 M6");
+    c.named("F9");
+    c.run_until_settled();
+    c.type(":shim 0.05");
+    c.type(":page shop");
+    c.type("dia Z-20");
+    c.type("tool T1 X");
+    c.type("groove Z-5");
+    snapshot("shop_lathe", c.screen());
+    Console m("mill", {});
+    m.type(":setup mill");
+    m.type(":page shop");
+    m.type("depth X10 Y40");
+    snapshot("shop_mill", m.screen());
+}
+
 TEST(Screen, LargerTerminalsGetMoreRoom) {
     Console c("lathe", kLatheFiles);
     homed_lathe(c);
