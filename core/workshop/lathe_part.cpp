@@ -274,6 +274,15 @@ const LatheWorld::Box& LatheWorld::box_of(Obstacle what) const {
     return part_box_;
 }
 
+bool LatheWorld::near(Obstacle what, double z0, double r0, double z1, double r1) const {
+    const CPaths& o = what == Obstacle::material ? part_ : what == Obstacle::chuck ? chuck_ : tail_;
+    if (o.empty()) return false;
+    Box b;
+    b.x0 = to_int({z0, r0}).X, b.y0 = to_int({z0, r0}).Y;
+    b.x1 = to_int({z1, r1}).X, b.y1 = to_int({z1, r1}).Y;
+    return b.meets(box_of(what));
+}
+
 double LatheWorld::depth_into(const CPaths& swept, Obstacle what) const {
     const CPaths& o = what == Obstacle::material ? part_ : what == Obstacle::chuck ? chuck_ : tail_;
     if (o.empty() || swept.empty()) return 0;

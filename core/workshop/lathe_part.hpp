@@ -61,6 +61,10 @@ class LatheWorld {
     // How deep `swept` goes into an obstacle (mm): twice the area over the
     // perimeter of the largest overlap, 0 when it only touches.
     double depth_into(const CPaths& swept, Obstacle what) const;
+    // Whether `what` comes into the box Z [z0, z1], R [r0, r1] (mm, R a
+    // distance from the axis): when not, a shape swept there meets nothing
+    // of it, and the sweep need not be made.
+    bool near(Obstacle what, double z0, double r0, double z1, double r1) const;
     // Removes `swept` from the material; returns the area removed (mm²).
     double cut(const CPaths& swept);
     // Counts the changes of the material (a cut, fresh stock).

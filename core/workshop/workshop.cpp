@@ -164,6 +164,26 @@ void Workshop::path_of(const MoveEvent& e, std::vector<Axes>& out) const {
     out.push_back(e.to_mach);
 }
 
+bool Workshop::near(const CPath& shape, const std::vector<Pt>& tips) const {
+    double z0 = 1e300, z1 = -1e300, r0 = 1e300, r1 = 0;
+    bool crosses = false;
+    for (const Pt& p : tips) {
+        z0 = std::min(z0, p[0]), z1 = std::max(z1, p[0]);
+        r0 = std::min(r0, std::abs(p[1])), r1 = std::max(r1, std::abs(p[1]));
+        crosses = crosses || p[1] * tips.front()[1] < 0;
+    }
+    // The shape's extent about its point, and the mirror image (sweep()).
+    double sz0 = 0, sz1 = 0, sr = 0;
+    for (const auto& v : shape) {
+        const Pt q = to_mm(v);
+        sz0 = std::min(sz0, q[0]), sz1 = std::max(sz1, q[0]), sr = std::max(sr, std::abs(q[1]));
+    }
+    const double lo = crosses ? 0 : std::max(0.0, r0 - sr), hi = r1 + sr;
+    for (Obstacle w : {Obstacle::material, Obstacle::chuck, Obstacle::tailstock})
+        if (world_.near(w, z0 + sz0 - kNear, lo - kNear, z1 + sz1 + kNear, hi + kNear)) return true;
+    return false;
+}
+
 std::string Workshop::where(const Pt& p) const {
     // The contact in the part's terms, which do not depend on PREF: the
     // diameter and the distance from the stock's face as it was loaded.
@@ -239,13 +259,17 @@ bool Workshop::check(const MoveEvent& e, const std::vector<Pt>& tips,
                   {kCrashChuck, &t->shape.holder, Obstacle::tailstock},
                   {kCrashHolder, &t->shape.holder, Obstacle::material},
                   {insert_code, &t->shape.insert, Obstacle::material}};
-    // Each shape's sweep along the whole move, once.
+    // Each shape's sweep along the whole move, once; the holder's only when
+    // its box comes near something (it seldom does: the sweeps are most of
+    // a run's time).
     const CPaths swept_insert = LatheWorld::sweep(t->shape.insert, tips);
-    const CPaths swept_holder = LatheWorld::sweep(t->shape.holder, tips);
+    const bool holder_near = near(t->shape.holder, tips);
+    const CPaths swept_holder = holder_near ? LatheWorld::sweep(t->shape.holder, tips) : CPaths{};
     double first = 2;
     const Hit* worst = nullptr;
     for (const Hit& h : hits) {
         if (h.code == insert_code && h.what == Obstacle::material && cutting) continue;
+        if (h.shape == &t->shape.holder && !holder_near) continue;
         const CPaths* whole = h.shape == &t->shape.insert ? &swept_insert : &swept_holder;
         double f = first_contact(*h.shape, tips, h.what, kCrashDepth, false, whole);
         if (f < first) first = f, worst = &h;

@@ -184,6 +184,9 @@ class Workshop final : public MachineSink {
     // `stop` being the index fraction where the motion ends.
     bool check(const MoveEvent& e, const std::vector<Pt>& tips, const std::vector<Axes>& oms);
     std::string where(const Pt& p) const;
+    // Whether `shape` swept along `tips` can come near the part, the chuck
+    // or the tailstock (a box test, no Boolean).
+    bool near(const CPath& shape, const std::vector<Pt>& tips) const;
     std::string presetter(std::string_view rest, Reading& r) const;
     std::string crash_text(int code, bool holder, Obstacle what, const ToolTruth& tt,
                            const std::string& place) const;
