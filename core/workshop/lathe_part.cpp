@@ -234,13 +234,19 @@ CPaths LatheWorld::sweep(const CPath& shape, const std::vector<Pt>& path) {
     CPaths out;
     CPath p;
     for (const Pt& q : path) p.push_back(to_int(q));
-    if (p.size() <= 2 && convex(shape)) {
+    if (convex(shape)) {
         // A convex shape along a straight move sweeps the hull of its two
-        // places: exact, and much cheaper than the sum.
-        CPath both;
-        for (const IntPoint& d : p)
-            for (const IntPoint& q : shape) both.emplace_back(q.X + d.X, q.Y + d.Y);
-        out.push_back(hull(std::move(both)));
+        // places: exact, and much cheaper than the sum. Along a polyline (an
+        // arc's chords) it sweeps the union of those hulls, a Boolean of a
+        // few dozen small polygons where the sum makes one quadrilateral per
+        // edge of the shape and of the path.
+        for (size_t i = 0; i + 1 < std::max<size_t>(p.size(), 2); ++i) {
+            CPath both;
+            for (const IntPoint& d : {p[i], p[std::min(i + 1, p.size() - 1)]})
+                for (const IntPoint& q : shape) both.emplace_back(q.X + d.X, q.Y + d.Y);
+            out.push_back(hull(std::move(both)));
+        }
+        if (out.size() > 1) out = clip(out, {}, ClipperLib::ctUnion);
         return mirrored(std::move(out));
     }
     if (p.size() > 1) ClipperLib::MinkowskiSum(shape, p, out, false);
