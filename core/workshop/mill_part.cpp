@@ -10,6 +10,8 @@
 #include <limits>
 #include <utility>
 
+#include "core/workshop/narrow.hpp"
+
 namespace pupitre::workshop {
 
 namespace {
@@ -58,15 +60,6 @@ double crossing(F f, double in, double out, double tol) {
         (f(mid) >= 0 ? in : out) = mid;
     }
     return in;
-}
-
-// Narrows [t0, t1] to the t where lo <= p + t dp <= hi; false when empty.
-bool narrow(double p, double dp, double lo, double hi, double& t0, double& t1) {
-    if (dp == 0) return p >= lo && p <= hi && t0 <= t1;
-    double a = (lo - p) / dp, b = (hi - p) / dp;
-    if (a > b) std::swap(a, b);
-    t0 = std::max(t0, a), t1 = std::min(t1, b);
-    return t0 <= t1;
 }
 
 // The interval of s where the line p = p0 (in the plane (s, p)) is within

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "core/workshop/mill_part.hpp"
+#include "core/workshop/narrow.hpp"
 
 namespace pupitre::workshop {
 
@@ -57,15 +58,6 @@ double sq(double v) {
 double to_rect(double x, double y, double x0, double x1, double y0, double y1) {
     const double dx = std::max({x0 - x, 0.0, x - x1}), dy = std::max({y0 - y, 0.0, y - y1});
     return std::sqrt(dx * dx + dy * dy);
-}
-
-// Narrows [t0, t1] to the t where lo <= p + t dp <= hi; false when empty.
-bool narrow(double p, double dp, double lo, double hi, double& t0, double& t1) {
-    if (dp == 0) return p >= lo && p <= hi && t0 <= t1;
-    double a = (lo - p) / dp, b = (hi - p) / dp;
-    if (a > b) std::swap(a, b);
-    t0 = std::max(t0, a), t1 = std::min(t1, b);
-    return t0 <= t1;
 }
 
 }  // namespace

@@ -224,19 +224,7 @@ const char* hit_name(int h) {
 
 std::string Workshop::mill_crash_text(int code, const Contact& c, const std::string& place) const {
     const char* p = place.c_str();
-    switch (code) {
-        case kCrashRapid:
-            return strf(tr("crash: T%d rapid (G0) into the part %s"), tool_, p);
-        case kCrashStopped:
-            return strf(tr("crash: T%d fed into the part with the spindle stopped %s"), tool_, p);
-        case kCrashDirection:
-            return strf(tr("crash: T%d cuts with M%d, the spindle turns M%d, %s"), tool_,
-                        current()->truth->spindle, dir_, p);
-        case kCrashProbe:
-            return strf(tr("crash: the probe T%d was driven into the part %s"), tool_, p);
-        default:
-            break;
-    }
+    if (std::string s = part_crash_text(code, current()->truth->spindle, p); !s.empty()) return s;
     const char* what = tr(hit_name(int(c.what)));
     if (c.part == Part::holder)
         return strf(tr("crash: the holder of T%d hit %s %s"), tool_, what, p);

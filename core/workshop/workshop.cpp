@@ -209,25 +209,30 @@ double Workshop::first_contact(const CPath& shape, const std::vector<Pt>& tips, 
     return before ? lo : hi;
 }
 
-// What hit what, where: the crash's message.
-std::string Workshop::crash_text(int code, bool holder, Obstacle what, const ToolTruth& tt,
-                                 const std::string& place) const {
-    const char* p = place.c_str();
+// The crashes of the tool's cutting part into the part, on both machines;
+// "" for the others.
+std::string Workshop::part_crash_text(int code, int spindle, const char* p) const {
     switch (code) {
         case kCrashRapid:
             return strf(tr("crash: T%d rapid (G0) into the part %s"), tool_, p);
         case kCrashStopped:
             return strf(tr("crash: T%d fed into the part with the spindle stopped %s"), tool_, p);
         case kCrashDirection:
-            return strf(tr("crash: T%d cuts with M%d, the spindle turns M%d, %s"), tool_,
-                        tt.spindle, dir_, p);
+            return strf(tr("crash: T%d cuts with M%d, the spindle turns M%d, %s"), tool_, spindle,
+                        dir_, p);
         case kCrashProbe:
             return strf(tr("crash: the probe T%d was driven into the part %s"), tool_, p);
-        case kCrashHolder:
-            return strf(tr("crash: the holder of T%d hit the part %s"), tool_, p);
         default:
-            break;
+            return {};
     }
+}
+
+// What hit what, where: the crash's message.
+std::string Workshop::crash_text(int code, bool holder, Obstacle what, const ToolTruth& tt,
+                                 const std::string& place) const {
+    const char* p = place.c_str();
+    if (std::string s = part_crash_text(code, tt.spindle, p); !s.empty()) return s;
+    if (code == kCrashHolder) return strf(tr("crash: the holder of T%d hit the part %s"), tool_, p);
     if (what == Obstacle::chuck)
         return strf(holder ? tr("crash: the holder of T%d hit the chuck %s")
                            : tr("crash: T%d hit the chuck %s"),

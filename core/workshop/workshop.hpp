@@ -188,6 +188,7 @@ class Workshop final : public MachineSink {
     // or the tailstock (a box test, no Boolean).
     bool near(const CPath& shape, const std::vector<Pt>& tips) const;
     std::string presetter(std::string_view rest, Reading& r) const;
+    std::string part_crash_text(int code, int spindle, const char* place) const;
     std::string crash_text(int code, bool holder, Obstacle what, const ToolTruth& tt,
                            const std::string& place) const;
     std::string touch_text(Obstacle hit, bool holder, bool on_shim, const std::string& place) const;
