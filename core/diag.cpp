@@ -115,6 +115,14 @@ std::string_view pupitre_diag_text(int code) {
         {err::wNoToolWidth, N_("Warning: G66 correctors that give no tool width")},
         {err::wPlungeAway,
          N_("Warning: a G46 roughing plunges with the cutter away from the drilled hole")},
+        // The workshop's crashes (core/workshop/workshop.hpp, kCrash*).
+        {1200, N_("Crash: a rapid (G0) into the part")},
+        {1201, N_("Crash: a feed into the part with the spindle stopped")},
+        {1202, N_("Crash: the tool or its holder hit the work-holding (chuck, tailstock, vice, "
+                  "plate, pin, table, tool setter)")},
+        {1203, N_("Crash: the holder or a cutter's shank hit the part")},
+        {1204, N_("Crash: cutting with the spindle turning the wrong way for the tool")},
+        {1205, N_("Crash: a touch probe driven into something")},
     };
     for (const auto& [n, text] : kTexts)
         if (n == code) return tr(text);

@@ -12,6 +12,7 @@ namespace pupitre::pages {
 namespace {
 
 std::string where(const Diag& d) {
+    if (d.file == "JOG" || d.file == "INC") return d.file;  // a manual move's crash
     std::string s =
         d.file == "IMD" || d.program < 0 ? std::string("IMD") : "%" + std::to_string(d.program);
     if (d.line > 0) s += " " + strf(tr("line %d"), d.line);

@@ -42,7 +42,8 @@ Diag Sim::workshop_diag(const workshop::Crash& c) const {
     Diag d = workshop::crash_diag(c);
     const ProgramText* p =
         c.loc.prog > 0 || (imd_ && c.loc.line > 0) ? text_of(c.loc.prog) : nullptr;
-    d.file = p ? p->file : "-";
+    // A crash in JOG or INC comes from no block: it is the mode's.
+    d.file = p ? p->file : manual_ ? std::string(mode_name(mode_)) : "-";
     return d;
 }
 

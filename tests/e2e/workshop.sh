@@ -172,6 +172,12 @@ probe)
     cmd ":mode inc"
     cmd ":jog X -0.5"
     wait_for 'ALARM 1205' 10
+    # A crash of a manual move comes from no block: the mode is its place,
+    # and the ALARM page explains the number.
+    wait_for 'ALARM 1205 \(INC\): crash: the probe T5 was driven into the part' 5
+    keys F7
+    wait_for '^ ALARM 1205 +INC$' 5
+    wait_for 'Crash: a touch probe driven into something' 5
     ;;
 mill)
     # The machining centre as a setter sets it up: T2's length on the tool
