@@ -234,6 +234,10 @@ int run(const RunArgs& a) {
         return kUsage;
     }
     if (!a.setup.empty() && !load_setup(a.setup, m, setup)) return kUsage;
+    if (std::string why = part_name_problem(a.part_out, setup); !why.empty()) {
+        std::fprintf(stderr, tr("pupitre: %s\n"), why.c_str());  // before the run, not after it
+        return kUsage;
+    }
     ProgramMemory mem;
     if (int rc = load_all(a.files, mem)) return rc;
     RunStore store;

@@ -14,6 +14,9 @@ namespace pupitre {
 
 namespace {
 
+const char* const kNotPng =
+    N_("a machining centre's part is a 16-bit PNG height field: give a FILE.png");
+
 bool ends_with(const std::string& s, const char* tail) {
     const std::string t(tail);
     return s.size() > t.size() && s.compare(s.size() - t.size(), t.size(), t) == 0;
@@ -35,7 +38,7 @@ int write_text(const std::string& path, const std::string& text, std::string& wh
 int write_mill(const std::string& path, const workshop::MillWorld& m, const std::string& title,
                std::string& why) {
     if (!ends_with(path, ".png")) {
-        why = tr("a machining centre's part is a 16-bit PNG height field: give a FILE.png");
+        why = tr(kNotPng);
         return 64;
     }
     double scale = 0;
@@ -87,6 +90,11 @@ std::string read_setup(const std::string& name, const MachineProfile& m, worksho
                     m.name.c_str());
     }
     return {};
+}
+
+std::string part_name_problem(const std::string& path, const workshop::Setup& s) {
+    if (path.empty() || s.kind != "mill" || ends_with(path, ".png")) return {};
+    return tr(kNotPng);
 }
 
 int write_part(const std::string& path, const workshop::Workshop& w, const std::string& title,

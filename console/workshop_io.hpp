@@ -21,5 +21,8 @@ std::string read_setup(const std::string& name, const MachineProfile& m, worksho
 // message in `why`.
 int write_part(const std::string& path, const workshop::Workshop& w, const std::string& title,
                std::string& why);
+// What is wrong with `path` for the part of setup `s` ("" when nothing is or
+// when there is no path): a machining centre's part needs a FILE.png.
+std::string part_name_problem(const std::string& path, const workshop::Setup& s);
 
 }  // namespace pupitre

@@ -67,8 +67,9 @@ file "$work/part.png" 2>/dev/null | grep -q '16-bit grayscale' ||
     fail "(d) part.png should be a 1200 x 800 16-bit greyscale PNG"
 grep -q '"columns":1200,"rows":800,"cell":0.1000' "$work/part.json" ||
     fail "(d) part.json should give the image's size and cell: $(cat "$work/part.json")"
-run "${pref[@]}" --set PREF.Z=-290 "${d2[@]}" --part-out "$work/part.svg" >/dev/null
+run "${pref[@]}" --set PREF.Z=-290 "${d2[@]}" --part-out "$work/part.svg" >"$work/out"
 [ $? -eq 64 ] || fail "(d) a mill part as .svg should be a usage error"
 grep -qF "a machining centre's part is a 16-bit PNG height field" "$work/err" ||
     fail "(d) the usage error should say why: $(cat "$work/err")"
+[ -s "$work/out" ] && fail "(d) the usage error should come before the run: $(cat "$work/out")"
 echo ok
