@@ -70,8 +70,8 @@ void machine_lines(const workshop::Workshop& w, const View& v, int width, std::v
             lit ? Style::alarm : Style::value);
     }
     row(tr("Shim"), w.shim() > 0 ? strf(tr("%s mm on the part"), fmt_len(w.shim()).c_str())
-                                 : std::string(tr("none")));
-    row(tr("Crashes"), w.crashes().empty() ? std::string(tr("none"))
+                                 : std::string(tr("no shim on the part")));
+    row(tr("Crashes"), w.crashes().empty() ? std::string(tr("no crash"))
                                            : strf(tr("%zu, the last: %s"), w.crashes().size(),
                                                   w.crashes().back().what.c_str()));
     std::string tools;
