@@ -283,6 +283,34 @@ Effect shim(Session& s, const CommandCall& c) {
     return Effect::redraw;
 }
 
+// A gauge block held against the jaws' face (seed 004's exam: "une cale
+// étalon de 100 mm sur la face du porte-pièce"): a jog stops on its end, so
+// the touch-off gives the jaws' face plus its length.
+Effect gauge(Session& s, const CommandCall& c) {
+    workshop::Workshop* w = s.sim().shop();
+    if (!w) {
+        s.say(s.no_workshop(), true);
+        return Effect::redraw;
+    }
+    if (w->is_mill()) {
+        s.say(tr("on the machining centre a gauge block on the part is :shim MM"), true);
+        return Effect::redraw;
+    }
+    double mm = 0;
+    if (c.arg(1) == "off" && c.arg(2).empty()) {
+        w->set_gauge_block(0);
+        s.say(tr("no gauge block against the jaws"));
+        return Effect::redraw;
+    }
+    if (!number(c.arg(1), mm) || mm < 1 || mm > 500 || !c.arg(2).empty())
+        return usage(s, tr(":gauge MM (1 to 500) or :gauge off"));
+    w->set_gauge_block(mm);
+    s.say(strf(tr("a %s mm gauge block against the jaws' face, 2 mm above the bar: a jog stops "
+                  "on its end"),
+               pages::fmt_len(mm).c_str()));
+    return Effect::redraw;
+}
+
 // ":part export FILE": the part as write_part writes it (workshop_io.hpp).
 Effect export_part(Session& s, const workshop::Workshop& w, std::string_view file) {
     std::string path(file), why;
@@ -454,6 +482,8 @@ constexpr Command kCommands[] = {
      nullptr},
     {"shim", ":shim MM|off",
      N_("the paper test: a shim of MM on the part stops a jog when the tool pinches it"), shim},
+    {"gauge", ":gauge MM|off",
+     N_("a gauge block of MM against the lathe's jaws: a jog stops on its end"), gauge},
     {"undo", ":undo", N_("undo the last change of an origin or a corrector"),
      [](Session& s, const CommandCall&) { return s.undo(); }},
     {"protect", ":protect on|off [PIN]",

@@ -711,6 +711,7 @@ void Session::view_part() const {
     place(w->world().material(), part_now_);
     place(w->world().chuck(), chuck_now_);
     place(w->world().tailstock(), chuck_now_);
+    place(w->world().gauge(), chuck_now_);
 }
 
 std::vector<std::string> Session::complete(std::string_view word) const {

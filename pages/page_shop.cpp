@@ -71,6 +71,9 @@ void machine_lines(const workshop::Workshop& w, const View& v, int width, std::v
     }
     row(tr("Shim"), w.shim() > 0 ? strf(tr("%s mm on the part"), fmt_len(w.shim()).c_str())
                                  : std::string(tr("no shim on the part")));
+    if (!mill && w.gauge_block() > 0)
+        row(tr("Gauge"),
+            strf(tr("%s mm block against the jaws' face"), fmt_len(w.gauge_block()).c_str()));
     row(tr("Crashes"), w.crashes().empty() ? std::string(tr("no crash"))
                                            : strf(tr("%zu, the last: %s"), w.crashes().size(),
                                                   w.crashes().back().what.c_str()));

@@ -273,15 +273,33 @@ LatheWorld::Box LatheWorld::box(const CPaths& p) {
     return b;
 }
 
+void LatheWorld::set_gauge_block(double length) {
+    gauge_length_ = length > 0 ? length : 0;
+    gauge_.clear();
+    if (gauge_length_ > 0) {
+        const double r0 = s_.stock_diameter / 2 + 2;
+        gauge_.push_back(rect(s_.chuck_z, r0, s_.chuck_z + gauge_length_, r0 + 9));
+    }
+    gauge_box_ = box(gauge_);
+}
+
+const CPaths& LatheWorld::obstacle(Obstacle what) const {
+    return what == Obstacle::material    ? part_
+           : what == Obstacle::chuck     ? chuck_
+           : what == Obstacle::tailstock ? tail_
+                                         : gauge_;
+}
+
 const LatheWorld::Box& LatheWorld::box_of(Obstacle what) const {
     if (what == Obstacle::chuck) return chuck_box_;
     if (what == Obstacle::tailstock) return tail_box_;
+    if (what == Obstacle::gauge) return gauge_box_;
     if (part_box_gen_ != generation_) part_box_ = box(part_), part_box_gen_ = generation_;
     return part_box_;
 }
 
 bool LatheWorld::near(Obstacle what, double z0, double r0, double z1, double r1) const {
-    const CPaths& o = what == Obstacle::material ? part_ : what == Obstacle::chuck ? chuck_ : tail_;
+    const CPaths& o = obstacle(what);
     if (o.empty()) return false;
     Box b;
     b.x0 = to_int({z0, r0}).X, b.y0 = to_int({z0, r0}).Y;
@@ -290,7 +308,7 @@ bool LatheWorld::near(Obstacle what, double z0, double r0, double z1, double r1)
 }
 
 double LatheWorld::depth_into(const CPaths& swept, Obstacle what) const {
-    const CPaths& o = what == Obstacle::material ? part_ : what == Obstacle::chuck ? chuck_ : tail_;
+    const CPaths& o = obstacle(what);
     if (o.empty() || swept.empty()) return 0;
     if (!box(swept).meets(box_of(what))) return 0;  // far apart: no Boolean needed
     double deepest = 0;

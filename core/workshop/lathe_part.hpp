@@ -42,7 +42,7 @@ struct ToolShape {
 ToolShape tool_shape(const ToolTruth& t);
 
 // What a move ran into.
-enum class Obstacle { none, material, chuck, tailstock };
+enum class Obstacle { none, material, chuck, tailstock, gauge };
 
 class LatheWorld {
   public:
@@ -52,6 +52,12 @@ class LatheWorld {
     const CPaths& material() const { return part_; }
     const CPaths& chuck() const { return chuck_; }
     const CPaths& tailstock() const { return tail_; }
+    // A gauge block the operator holds against the jaws' face (seed 004's
+    // exam: "a 100 mm gauge block on the work-holder face"): `length` mm
+    // along Z from chuck.z, on a jaw, 2 to 11 mm above the bar; 0: none.
+    void set_gauge_block(double length);
+    double gauge_block() const { return gauge_length_; }
+    const CPaths& gauge() const { return gauge_; }
     const LatheSetup& setup() const { return s_; }
 
     // The area a shape sweeps along a tool point's path (mm; at least one
@@ -93,10 +99,13 @@ class LatheWorld {
         }
     };
     static Box box(const CPaths& p);
+    const CPaths& obstacle(Obstacle what) const;
     const Box& box_of(Obstacle what) const;
     mutable Box part_box_;
     mutable uint64_t part_box_gen_ = ~uint64_t(0);
-    Box chuck_box_, tail_box_;
+    Box chuck_box_, tail_box_, gauge_box_;
+    CPaths gauge_;
+    double gauge_length_ = 0;
     LatheSetup s_;
     CPaths part_, chuck_, tail_;
     uint64_t generation_ = 0;

@@ -66,6 +66,14 @@ Axes om_at(const std::vector<Axes>& oms, double at) {
 
 }  // namespace
 
+// Nor from a contact with the gauge block: it is steel, held by hand.
+Outcome Workshop::on_the_gauge(const Axes& om, int tool) {
+    Outcome o = on_the_shim(om, tool);
+    o.what =
+        strf(tr("the gauge block is between T%d and the chuck: :gauge off before going on"), tool);
+    return o;
+}
+
 // An increment from a contact with the shim goes nowhere: the insert cannot
 // cut through the shim (the paper test).
 Outcome Workshop::on_the_shim(const Axes& om, int tool) {
@@ -115,7 +123,7 @@ bool Workshop::probe_contact(const Axes& om) const {
         return mill_depth(cutter(kNear), grown_tip(om, kNear), what) > kTouchDepth;
     }
     const CPaths ball = LatheWorld::sweep(t->near.insert, {tip(om)});
-    for (Obstacle w : {Obstacle::material, Obstacle::chuck, Obstacle::tailstock})
+    for (Obstacle w : {Obstacle::material, Obstacle::chuck, Obstacle::tailstock, Obstacle::gauge})
         if (world_.depth_into(ball, w) > kTouchDepth) return true;
     return false;
 }
@@ -179,7 +187,7 @@ bool Workshop::near(const CPath& shape, const std::vector<Pt>& tips) const {
         sz0 = std::min(sz0, q[0]), sz1 = std::max(sz1, q[0]), sr = std::max(sr, std::abs(q[1]));
     }
     const double lo = crosses ? 0 : std::max(0.0, r0 - sr), hi = r1 + sr;
-    for (Obstacle w : {Obstacle::material, Obstacle::chuck, Obstacle::tailstock})
+    for (Obstacle w : {Obstacle::material, Obstacle::chuck, Obstacle::tailstock, Obstacle::gauge})
         if (world_.near(w, z0 + sz0 - kNear, lo - kNear, z1 + sz1 + kNear, hi + kNear)) return true;
     return false;
 }
@@ -233,6 +241,10 @@ std::string Workshop::crash_text(int code, bool holder, Obstacle what, const Too
     const char* p = place.c_str();
     if (std::string s = part_crash_text(code, tt.spindle, p); !s.empty()) return s;
     if (code == kCrashHolder) return strf(tr("crash: the holder of T%d hit the part %s"), tool_, p);
+    if (what == Obstacle::gauge)
+        return strf(holder ? tr("crash: the holder of T%d hit the gauge block on the jaws' face %s")
+                           : tr("crash: T%d hit the gauge block on the jaws' face %s"),
+                    tool_, p);
     if (what == Obstacle::chuck)
         return strf(holder ? tr("crash: the holder of T%d hit the chuck %s")
                            : tr("crash: T%d hit the chuck %s"),
@@ -262,6 +274,8 @@ bool Workshop::check(const MoveEvent& e, const std::vector<Pt>& tips,
                   {kCrashChuck, &t->shape.holder, Obstacle::chuck},
                   {kCrashChuck, &t->shape.insert, Obstacle::tailstock},
                   {kCrashChuck, &t->shape.holder, Obstacle::tailstock},
+                  {kCrashChuck, &t->shape.insert, Obstacle::gauge},
+                  {kCrashChuck, &t->shape.holder, Obstacle::gauge},
                   {kCrashHolder, &t->shape.holder, Obstacle::material},
                   {insert_code, &t->shape.insert, Obstacle::material}};
     // Each shape's sweep along the whole move, once; the holder's only when
@@ -349,7 +363,8 @@ Outcome Workshop::jog(const MoveEvent& e, bool continuous) {
     const std::vector<Pt> here{tips.front()};
     const CPath* shapes[] = {&t->shape.insert, &t->shape.holder};
     const CPath* near[] = {&t->near.insert, &t->near.holder};
-    const Obstacle things[] = {Obstacle::material, Obstacle::chuck, Obstacle::tailstock};
+    const Obstacle things[] = {Obstacle::material, Obstacle::chuck, Obstacle::tailstock,
+                               Obstacle::gauge};
     double first = 2;
     Obstacle hit = Obstacle::none;
     bool holder = false;
@@ -373,6 +388,8 @@ Outcome Workshop::jog(const MoveEvent& e, bool continuous) {
             bool touching = world_.depth_into(shim ? LatheWorld::sweep(shim_near, here) : near_here,
                                               w) > kTouchDepth;
             if (touching && !continuous && shim) return on_the_shim(oms.front(), tool_);
+            if (touching && !continuous && w == Obstacle::gauge)
+                return on_the_gauge(oms.front(), tool_);
             if (touching && !continuous) return apply(e);
             double limit =
                 touching
@@ -401,6 +418,11 @@ std::string Workshop::touch_text(Obstacle hit, bool holder, bool on_shim,
     if (on_shim)
         return strf(tr("T%d touched the %s mm shim on the part %s"), tool_, fixed3(shim_).c_str(),
                     place.c_str());
+    if (hit == Obstacle::gauge)
+        return strf(holder
+                        ? tr("the holder of T%d touched the %s mm gauge block on the jaws' face %s")
+                        : tr("T%d touched the %s mm gauge block on the jaws' face %s"),
+                    tool_, fixed3(world_.gauge_block()).c_str(), place.c_str());
     const char* what =
         hit == Obstacle::material
             ? (holder ? tr("the holder of T%d touched the part %s") : tr("T%d touched the part %s"))

@@ -90,6 +90,10 @@ class Workshop final : public MachineSink {
     // stops when the tool pinches it (the paper test); 0: none.
     void set_shim(double mm) { shim_ = mm; }
     double shim() const { return shim_; }
+    // A gauge block against the lathe's jaws (LatheWorld::set_gauge_block);
+    // 0: none. A jog stops on its end; no move goes through it.
+    void set_gauge_block(double mm) { world_.set_gauge_block(mm); }
+    double gauge_block() const { return world_.gauge_block(); }
 
     // An electric touch probe in use, and its lamp: lit when the ball touches
     // the part, the chuck or the tailstock at machine position `om`.
@@ -113,6 +117,7 @@ class Workshop final : public MachineSink {
     Outcome jog(const MoveEvent& e, bool continuous);
     // An increment from a contact with the shim goes nowhere.
     static Outcome on_the_shim(const Axes& om, int tool);
+    static Outcome on_the_gauge(const Axes& om, int tool);
     // The move cut short where it stopped: `stop`, `fraction` of its length.
     static MoveEvent truncated(const MoveEvent& e, const Axes& stop, double fraction);
 

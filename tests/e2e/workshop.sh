@@ -179,6 +179,38 @@ probe)
     wait_for '^ ALARM 1205 +INC$' 5
     wait_for 'Crash: a touch probe driven into something' 5
     ;;
+gauge)
+    # Seed 004's exam: a 100 mm gauge block against the jaws' face (chuck.z
+    # -60): T1 jogged along -Z over it stops on its end, P at Z 40, so OM Z
+    # 40 + 41.215; an INC step is refused until :gauge off; the WORKSHOP page
+    # lists it.
+    start
+    pom
+    cmd ":setup lathe"
+    cmd ":speed max"
+    cmd ":mode imd"
+    cmd "T1 D1 M6"
+    keys F9
+    wait_for 'IMD done' 10
+    cmd ":gauge 100"
+    wait_for 'a 100.000 mm gauge block against the jaws' 5
+    cmd ":mode jog"
+    # Over the block from above its end: P at R 35 (ø70), OM X 35 + 52.347
+    # - 20 as a diameter.
+    cmd ":jog X -$(awk -v x="$(op_value X)" 'BEGIN { printf "%.3f", x - 134.694 }')"
+    wait_for '^ +Xø +134.694' 10
+    cmd ":jog Z -200"
+    wait_for "T1 touched the 100.000 mm gauge block on the jaws' face" 20
+    [ "$(screen | awk '$1 == "Z" { print $3; exit }')" = "81.215" ] ||
+        fail "the block's end should stop OM Z at 81.215 (40 + 41.215): $(screen)"
+    cmd ":mode inc"
+    cmd ":jog Z -0.1"
+    wait_for 'the gauge block is between T1 and the chuck: :gauge off' 5
+    keys M-w
+    wait_for "^ Gauge +100.000 mm block against the jaws' face" 5
+    cmd ":gauge off"
+    wait_for 'no gauge block against the jaws' 5
+    ;;
 mill)
     # The machining centre as a setter sets it up: T2's length on the tool
     # setter, PREF Z on the block's top, PREF X and Y on its -X and -Y faces

@@ -385,6 +385,59 @@ TEST(Contacts, AJogStopsAtTheDiameterAndAShimStopsItAShimEarly) {
     EXPECT_DOUBLE_EQ(rd.value, 59.8);
 }
 
+// Seed 004's exam: a 100 mm gauge block against the jaws' face (chuck.z
+// -60, so its end is at Z 40), 2 to 11 mm above the Ø60 bar (R 32 to 41).
+TEST(Contacts, AGaugeBlockOnTheJawsStopsTheJogAtItsEnd) {
+    T1OnTheLathe t1;
+    Workshop& w = *t1.shop;
+    w.set_gauge_block(100);
+    // T1 (C3: P is the nose's lowest Z) at R 35, from Z 120 towards the chuck.
+    MoveEvent e;
+    e.g = 1;
+    e.from_mach[X] = e.to_mach[X] = 35 + 52.347 - 20;
+    e.from_mach[Z] = 120 + 41.215;
+    e.to_mach[Z] = 20 + 41.215;
+    e.to_prog = e.to_mach;
+    Outcome o = w.jog(e, true);
+    ASSERT_TRUE(o.touched);
+    EXPECT_NEAR(w.tip(o.stop)[0], 40, 3e-4);
+    EXPECT_NE(o.what.find("T1 touched the 100.000 mm gauge block on the jaws' face"),
+              std::string::npos)
+        << o.what;
+    // An increment from there does not go through it.
+    MoveEvent inc = e;
+    inc.from_mach = o.stop;
+    inc.to_mach[Z] = o.stop[Z] - 0.1;
+    Outcome step = w.jog(inc, false);
+    EXPECT_TRUE(step.touched);
+    EXPECT_EQ(step.fraction, 0);
+    EXPECT_NE(step.what.find(":gauge off"), std::string::npos) << step.what;
+    // Taken away, the same jog goes on to Z 20, over the bar: nothing there.
+    w.set_gauge_block(0);
+    o = w.jog(e, true);
+    EXPECT_FALSE(o.touched);
+}
+
+TEST(Workshop, AProgramMoveIntoTheGaugeBlockIsACrash) {
+    MachineProfile m;
+    builtin_machine("lathe", m);
+    workshop::Setup st;
+    builtin_setup("lathe", st);
+    Workshop w(m, st, nullptr);
+    w.tool(Loc{}, 1, 1, 0, true);
+    w.set_gauge_block(100);
+    MoveEvent e;
+    e.g = 0;
+    e.from_mach[X] = e.to_mach[X] = 35 + 52.347 - 20;
+    e.from_mach[Z] = 120 + 41.215;
+    e.to_mach[Z] = 20 + 41.215;
+    e.to_prog = e.to_mach;
+    Outcome o = w.apply(e);
+    ASSERT_TRUE(o.crashed);
+    EXPECT_EQ(w.crashes().front().code, kCrashChuck);
+    EXPECT_NE(o.what.find("T1 hit the gauge block on the jaws' face"), std::string::npos) << o.what;
+}
+
 TEST(Contacts, FromAContactAnIncrementWithTheSpindleStoppedIsACrash) {
     T1OnTheLathe t1;
     Workshop& w = *t1.shop;
