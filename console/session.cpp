@@ -518,16 +518,9 @@ void Session::check_run_end() {
     if (sim_->alarms().size() > alarms_seen_) {
         alarms_seen_ = sim_->alarms().size();
         const Diag& d = sim_->alarms().back().diag;
-        std::string where = d.program > 0 ? "%" + std::to_string(d.program) : std::string("IMD");
-        if (d.n >= 0) where += " N" + std::to_string(d.n);
-        if (d.file == "JOG" || d.file == "INC")  // a crash of a manual move: no block
-            // TRANSLATORS: the message line: ALARM 1205 (JOG): the detail.
-            say(strf(tr("ALARM %d (%s): %s"), d.code, d.file.c_str(), d.detail.c_str()), true);
-        else
-            // TRANSLATORS: the message line: ALARM 107 (%300 N20 line 12): the detail.
-            say(strf(tr("ALARM %d (%s line %d): %s"), d.code, where.c_str(), d.line,
-                     d.detail.c_str()),
-                true);
+        // TRANSLATORS: the message line: ALARM 107 (%300 line 12 N20): the detail.
+        say(strf(tr("ALARM %d (%s): %s"), d.code, pages::alarm_place(d).c_str(), d.detail.c_str()),
+            true);
     } else if ((st != last_state_ || sim_->workshop_news() != news_seen_) &&
                !sim_->message().empty()) {
         say(sim_->message());

@@ -11,15 +11,6 @@ namespace pupitre::pages {
 
 namespace {
 
-std::string where(const Diag& d) {
-    if (d.file == "JOG" || d.file == "INC") return d.file;  // a manual move's crash
-    std::string s =
-        d.file == "IMD" || d.program < 0 ? std::string("IMD") : "%" + std::to_string(d.program);
-    if (d.line > 0) s += " " + strf(tr("line %d"), d.line);
-    if (d.n >= 0) s += " N" + std::to_string(d.n);
-    return s;
-}
-
 std::string explain(int code) {
     std::string_view t = code >= 1000 ? pupitre_diag_text(code) : num_error_text(code);
     if (!t.empty()) return std::string(t) + (code >= 1000 ? tr(" (pupitre(1), DIAGNOSTICS)") : "");
@@ -27,6 +18,17 @@ std::string explain(int code) {
 }
 
 }  // namespace
+
+// Where an alarm was raised: "%300 line 12 N20", "IMD line 3", or the
+// manual mode (JOG, INC) of a crash that comes from no block.
+std::string alarm_place(const Diag& d) {
+    if (d.file == "JOG" || d.file == "INC") return d.file;  // a manual move's crash
+    std::string s =
+        d.file == "IMD" || d.program < 0 ? std::string("IMD") : "%" + std::to_string(d.program);
+    if (d.line > 0) s += " " + strf(tr("line %d"), d.line);
+    if (d.n >= 0) s += " N" + std::to_string(d.n);
+    return s;
+}
 
 void page_alarm(const View& v, Canvas& c, const Rect& r) {
     const Sim& s = *v.sim;
@@ -38,7 +40,7 @@ void page_alarm(const View& v, Canvas& c, const Rect& r) {
         const Diag& d = all.back().diag;
         lines.push_back(Line{}
                             .add(" " + strf(tr("ALARM %d"), d.code), Style::alarm)
-                            .add("   " + where(d), Style::value));
+                            .add("   " + alarm_place(d), Style::value));
         for (const std::string& l : wrap_text(explain(d.code), std::max(20, r.w - 4)))
             lines.push_back(Line{}.add("   " + l, Style::normal));
         for (const std::string& l : wrap_text(d.detail, std::max(20, r.w - 4)))
@@ -57,7 +59,7 @@ void page_alarm(const View& v, Canvas& c, const Rect& r) {
         for (const Diag& w : s.run_warnings()) {
             lines.push_back(Line{}
                                 .add("   " + lpad(std::to_string(w.code), 4), Style::value)
-                                .add("  " + pad(where(w), 22), Style::value)
+                                .add("  " + pad(alarm_place(w), 22), Style::value)
                                 .add(explain(w.code)));
             for (const std::string& l : wrap_text(w.detail, std::max(20, r.w - 10)))
                 lines.push_back(Line{}.add("         " + l, Style::dim));
@@ -78,7 +80,7 @@ void page_alarm(const View& v, Canvas& c, const Rect& r) {
         lines.push_back(Line{}
                             .add(" " + std::string(t) + "  ", Style::dim)
                             .add(lpad(std::to_string(a.diag.code), 4), Style::alarm)
-                            .add("  " + pad(where(a.diag), 22), Style::value)
+                            .add("  " + pad(alarm_place(a.diag), 22), Style::value)
                             .add(explain(a.diag.code)));
         lines.push_back(Line{}.add(std::string(19, ' ') + a.diag.detail, Style::dim));
     }

@@ -19,6 +19,7 @@ void page_info(const View& v, Canvas& c, const Rect& r);
 void page_param(const View& v, Canvas& c, const Rect& r);
 void page_dir(const View& v, Canvas& c, const Rect& r);
 void page_alarm(const View& v, Canvas& c, const Rect& r);
+std::string alarm_place(const Diag& d);  // "%300 line 12 N20", "IMD line 3", "JOG"
 void page_help(const View& v, Canvas& c, const Rect& r);
 void page_pref(const View& v, Canvas& c, const Rect& r);     // origins, touch-off
 void page_corr(const View& v, Canvas& c, const Rect& r);     // tool correctors, measurement

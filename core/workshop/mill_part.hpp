@@ -47,6 +47,15 @@ struct Cylinder {
 // Which part of the cutter meets something.
 enum class Part { flute, shank, holder };
 
+// Where a part of the cutter is: from `base` to `top` mm above the tip
+// (the holder's top is +inf), `radius` wide; the flute's bottom is the
+// cutter's profile (Cutter::bottom), the others' are flat.
+struct PartSpan {
+    double radius, base, top;
+    bool flute;
+};
+PartSpan span_of(const Cutter& c, Part part);
+
 class MillWorld {
   public:
     // The stock as loaded, and the height field's cell (mm, > 0).

@@ -19,28 +19,12 @@ constexpr double kTravelTol = 1e-5;
 
 // One part of the cutter: its radius, its lowest surface above the tip (the
 // flute adds bottom(d)) and its top above the tip.
-struct Shape {
-    double radius, base, top;
-    bool flute;
-};
-
-Shape shape_of(const Cutter& c, Part part) {
-    switch (part) {
-        case Part::flute:
-            return {c.radius, 0, c.flute, true};
-        case Part::shank:
-            return {c.radius, c.flute, c.reach, false};
-        case Part::holder:
-            return {c.holder, c.reach, kInf, false};
-    }
-    return {c.radius, 0, c.flute, true};
-}
-
 // How deep the part is into a column of material from below up to `h`
 // whose nearest point is `d` from the axis (`inside`: the axis is in the
 // column's footprint, `edge` from its nearest side, which adds to the
 // horizontal overlap).
-double column(const Cutter& c, const Shape& s, const P3& tip, double h, double d, double edge = 0) {
+double column(const Cutter& c, const PartSpan& s, const P3& tip, double h, double d,
+              double edge = 0) {
     if (d >= s.radius) return 0;
     const double base = tip[2] + s.base + (s.flute ? c.bottom(std::min(d, c.radius)) : 0);
     const double v = h - base;
@@ -109,13 +93,25 @@ bool MillWorld::cut_beside(int i, int j) const {
     return false;
 }
 
+PartSpan span_of(const Cutter& c, Part part) {
+    switch (part) {
+        case Part::flute:
+            break;
+        case Part::shank:
+            return {c.radius, c.flute, c.reach, false};
+        case Part::holder:
+            return {c.holder, c.reach, kInf, false};
+    }
+    return {c.radius, 0, c.flute, true};
+}
+
 double MillWorld::depth_into(const Cutter& c, const P3& tip, Part part) const {
     refresh();
     return penetration(c, tip, part, kInf);
 }
 
 double MillWorld::penetration(const Cutter& c, const P3& tip, Part part, double above) const {
-    const Shape sh = shape_of(c, part);
+    const PartSpan sh = span_of(c, part);
     const double lox = stock_.lo[0], loy = stock_.lo[1], floor_z = stock_.lo[2];
     if (!(sh.radius > 0) || tip[2] + sh.top <= floor_z) return 0;
     auto cells = [&](double v, double lo, int n) {
@@ -167,7 +163,7 @@ double MillWorld::penetration(const Cutter& c, const P3& tip, Part part, double 
 // lowest surface: outside them the part is no deeper than `depth`.
 std::vector<std::array<double, 2>> MillWorld::spans(const Cutter& c, const P3& a, const P3& b,
                                                     Part part, double depth) const {
-    const Shape sh = shape_of(c, part);
+    const PartSpan sh = span_of(c, part);
     const double lox = stock_.lo[0], loy = stock_.lo[1], floor_z = stock_.lo[2];
     const double r = sh.radius + 1e-9;
     std::vector<std::array<double, 2>> out;
@@ -238,7 +234,7 @@ double MillWorld::first_contact(const Cutter& c, const P3& a, const P3& b, Part 
 }
 
 double depth_into(const Cutter& c, const P3& tip, Part part, const Box3& b) {
-    const Shape sh = shape_of(c, part);
+    const PartSpan sh = span_of(c, part);
     if (tip[2] + sh.top <= b.lo[2]) return 0;
     const double x = tip[0], y = tip[1];
     const double d = to_rect(x, y, b.lo[0], b.hi[0], b.lo[1], b.hi[1]);
@@ -248,7 +244,7 @@ double depth_into(const Cutter& c, const P3& tip, Part part, const Box3& b) {
 }
 
 double depth_into(const Cutter& c, const P3& tip, Part part, const Cylinder& k) {
-    const Shape sh = shape_of(c, part);
+    const PartSpan sh = span_of(c, part);
     if (tip[2] + sh.top <= k.z0) return 0;
     const double axes = std::sqrt(sq(tip[0] - k.x) + sq(tip[1] - k.y));
     const double d = std::max(0.0, axes - k.radius);

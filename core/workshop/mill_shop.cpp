@@ -30,25 +30,13 @@ double dist(const P3& a, const P3& b) {
     return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
 }
 
-// The heights a part of the cutter spans above its tip, and its radius.
-void extent(const Cutter& c, Part p, double& lo, double& hi, double& r) {
-    lo = p == Part::flute ? 0 : p == Part::shank ? c.flute : c.reach;
-    hi = p == Part::flute ? c.flute : p == Part::shank ? c.reach : kFar;
-    r = p == Part::holder ? c.holder : c.radius;
-}
-
 // Whether `part` swept from a to b can come near the box at all.
 bool may_meet(const Cutter& c, Part part, const P3& a, const P3& b, const Box3& box) {
-    double lo = 0, hi = 0, r = 0;
-    extent(c, part, lo, hi, r);
-    r += 1e-3;
+    const PartSpan s = span_of(c, part);
+    const double r = s.radius + 1e-3;
     return std::min(a[0], b[0]) - r <= box.hi[0] && std::max(a[0], b[0]) + r >= box.lo[0] &&
            std::min(a[1], b[1]) - r <= box.hi[1] && std::max(a[1], b[1]) + r >= box.lo[1] &&
-           std::min(a[2], b[2]) + lo <= box.hi[2] && std::max(a[2], b[2]) + hi >= box.lo[2];
-}
-
-Box3 bounds(const Cylinder& k) {
-    return {{k.x - k.radius, k.y - k.radius, k.z0}, {k.x + k.radius, k.y + k.radius, k.z1}};
+           std::min(a[2], b[2]) + s.base <= box.hi[2] && std::max(a[2], b[2]) + s.top >= box.lo[2];
 }
 
 // The first fraction of a->b where `depth_at` exceeds `depth`: marched in
@@ -91,31 +79,29 @@ void Workshop::mill_fixtures() {
     const MillSetup& m = setup_.mill;
     const double cx = m.stock_x + m.length / 2, jw = m.jaw_width / 2, th = m.jaw_thickness;
     const double y0 = m.stock_y, y1 = m.stock_y + m.width;
-    boxes_.push_back({{-kFar, -kFar, m.table_z - 100}, {kFar, kFar, m.table_z}});
-    box_kind_.push_back(Met::table);
+    auto box = [&](Met what, const Box3& b) { fixtures_.push_back({what, b, std::nullopt}); };
+    auto pin = [&](Met what, const Cylinder& k) {
+        fixtures_.push_back(
+            {what,
+             {{k.x - k.radius, k.y - k.radius, k.z0}, {k.x + k.radius, k.y + k.radius, k.z1}},
+             k});
+    };
+    box(Met::table, {{-kFar, -kFar, m.table_z - 100}, {kFar, kFar, m.table_z}});
     if (m.holding == "vice") {
         const double top = m.stock_z + m.jaw_height;
-        boxes_.push_back({{cx - jw, y1, m.table_z}, {cx + jw, y1 + th, top}});  // fixed, at +Y
-        boxes_.push_back({{cx - jw, y0 - th, m.table_z}, {cx + jw, y0, top}});  // moving
-        box_kind_.insert(box_kind_.end(), 2, Met::vice);
-        if (m.stock_z > m.table_z + 1e-9) {  // the body and parallels under the block
-            boxes_.push_back({{cx - jw, y0, m.table_z}, {cx + jw, y1, m.stock_z}});
-            box_kind_.push_back(Met::vice);
-        }
+        box(Met::vice, {{cx - jw, y1, m.table_z}, {cx + jw, y1 + th, top}});  // fixed, at +Y
+        box(Met::vice, {{cx - jw, y0 - th, m.table_z}, {cx + jw, y0, top}});  // moving
+        if (m.stock_z > m.table_z + 1e-9)  // the body and parallels under the block
+            box(Met::vice, {{cx - jw, y0, m.table_z}, {cx + jw, y1, m.stock_z}});
     } else if (m.holding == "plate" && m.stock_z > m.table_z + 1e-9) {
         const double g = m.plate_margin;
-        boxes_.push_back(
+        box(Met::plate,
             {{m.stock_x - g, y0 - g, m.table_z}, {m.stock_x + m.length + g, y1 + g, m.stock_z}});
-        box_kind_.push_back(Met::plate);
     }
-    for (const Pin& p : m.pins) {
-        pins_.push_back({p.x, p.y, p.diameter / 2, m.table_z, m.stock_z + p.height});
-        pin_kind_.push_back(Met::pin);
-    }
-    if (m.setter) {
-        pins_.push_back({m.setter_x, m.setter_y, m.setter_diameter / 2, m.table_z, m.setter_z});
-        pin_kind_.push_back(Met::setter);
-    }
+    for (const Pin& p : m.pins)
+        pin(Met::pin, {p.x, p.y, p.diameter / 2, m.table_z, m.stock_z + p.height});
+    if (m.setter)
+        pin(Met::setter, {m.setter_x, m.setter_y, m.setter_diameter / 2, m.table_z, m.setter_z});
     mill_ = std::make_unique<MillWorld>(
         Box3{{m.stock_x, m.stock_y, m.stock_z},
              {m.stock_x + m.length, m.stock_y + m.width, m.stock_z + m.height}},
@@ -154,10 +140,7 @@ double Workshop::mill_depth(const Cutter& c, const P3& tip, Met& what) const {
     };
     for (Part p : kParts) {
         keep(mill_->depth_into(c, tip, p), Met::material);
-        for (size_t i = 0; i < boxes_.size(); ++i)
-            keep(depth_into(c, tip, p, boxes_[i]), box_kind_[i]);
-        for (size_t i = 0; i < pins_.size(); ++i)
-            keep(depth_into(c, tip, p, pins_[i]), pin_kind_[i]);
+        for (const Fixture& f : fixtures_) keep(f.depth(c, tip, p), f.what);
     }
     return deepest;
 }
@@ -176,20 +159,12 @@ Workshop::Contact Workshop::mill_first(const Cutter& c, const P3& a, const P3& b
     // the flute on a rapid over the part).
     const double low = std::min(a[2], b[2]), top = mill_->stock().hi[2] + depth;
     for (Part p : kParts) {
-        double lo = 0, hi = 0, r = 0;
-        extent(c, p, lo, hi, r);
-        if ((with_material || p != Part::flute) && low + lo < top)
+        if ((with_material || p != Part::flute) && low + span_of(c, p).base < top)
             keep(mill_->first_contact(c, a, b, p, depth, before), Met::material, p);
-        for (size_t i = 0; i < boxes_.size(); ++i)
-            if (may_meet(c, p, a, b, boxes_[i]))
-                keep(marched(a, b, depth, before,
-                             [&](const P3& q) { return depth_into(c, q, p, boxes_[i]); }),
-                     box_kind_[i], p);
-        for (size_t i = 0; i < pins_.size(); ++i)
-            if (may_meet(c, p, a, b, bounds(pins_[i])))
-                keep(marched(a, b, depth, before,
-                             [&](const P3& q) { return depth_into(c, q, p, pins_[i]); }),
-                     pin_kind_[i], p);
+        for (const Fixture& f : fixtures_)
+            if (may_meet(c, p, a, b, f.box))
+                keep(marched(a, b, depth, before, [&](const P3& q) { return f.depth(c, q, p); }),
+                     f.what, p);
     }
     return k;
 }

@@ -44,13 +44,15 @@ std::string in_range(std::string_view val, double lo, double hi, double& out) {
 constexpr double kBig = 5000;       // mm: no workshop is larger
 constexpr double kMaxCells = 25e6;  // a mill's height field
 
-// The setup's keys, by table: name, its smallest and largest value, the field.
-struct Key {
+// The setup's keys, by table: name, its smallest and largest value, the
+// field of T it sets.
+template <class T>
+struct KeyOf {
     const char* name;
     double lo, hi;
-    double LatheSetup::*field;
+    double T::*field;
 };
-constexpr Key kLatheKeys[] = {
+constexpr KeyOf<LatheSetup> kLatheKeys[] = {
     {"axis.x", -kBig, kBig, &LatheSetup::axis_x},
     {"chuck.z", -kBig, kBig, &LatheSetup::chuck_z},
     {"chuck.diameter", 10, 2000, &LatheSetup::chuck_diameter},
@@ -65,12 +67,7 @@ constexpr Key kLatheKeys[] = {
     {"tailstock.quill", 1, 500, &LatheSetup::quill_diameter},
 };
 
-struct MillKey {
-    const char* name;
-    double lo, hi;
-    double MillSetup::*field;
-};
-constexpr MillKey kMillKeys[] = {
+constexpr KeyOf<MillSetup> kMillKeys[] = {
     {"table.z", -kBig, kBig, &MillSetup::table_z},
     {"stock.x", -kBig, kBig, &MillSetup::stock_x},
     {"stock.y", -kBig, kBig, &MillSetup::stock_y},
@@ -88,24 +85,14 @@ constexpr MillKey kMillKeys[] = {
     {"zmap.cell", 0.02, 2, &MillSetup::cell},
 };
 
-struct PinKey {
-    const char* name;
-    double lo, hi;
-    double Pin::*field;
-};
-constexpr PinKey kPinKeys[] = {
+constexpr KeyOf<Pin> kPinKeys[] = {
     {"x", -kBig, kBig, &Pin::x},
     {"y", -kBig, kBig, &Pin::y},
     {"diameter", 1, 100, &Pin::diameter},
     {"height", 0.5, 500, &Pin::height},
 };
 
-struct ToolKey {
-    const char* name;
-    double lo, hi;
-    double ToolTruth::*field;
-};
-constexpr ToolKey kToolKeys[] = {
+constexpr KeyOf<ToolTruth> kToolKeys[] = {
     {"x", -kBig, kBig, &ToolTruth::x},
     {"z", -kBig, kBig, &ToolTruth::z},
     {"radius", 0, 50, &ToolTruth::radius},
@@ -148,17 +135,24 @@ ToolTruth& tool_at(Setup& s, int position) {
     return s.tools.back();
 }
 
+// "N.FIELD" with N from 1 to `max`: N and FIELD; false when it is not one.
+bool numbered(std::string_view key, int max, int& n, std::string_view& field) {
+    auto r = std::from_chars(key.data(), key.data() + key.size(), n);
+    if (r.ec != std::errc() || r.ptr == key.data() || n < 1 || n > max ||
+        r.ptr == key.data() + key.size() || *r.ptr != '.')
+        return false;
+    field = key.substr(size_t(r.ptr - key.data()) + 1);
+    return true;
+}
+
 // tool.N.FIELD = value
 std::string tool_key(Setup& s, std::string_view key, std::string_view val) {
-    key.remove_prefix(5);  // "tool."
     int n = 0;
-    auto r = std::from_chars(key.data(), key.data() + key.size(), n);
-    if (r.ec != std::errc() || r.ptr == key.data() || n < 1 || n > 99 ||
-        r.ptr == key.data() + key.size() || *r.ptr != '.')
+    std::string_view field;
+    if (!numbered(key.substr(5), 99, n, field))  // after "tool."
         return tr("expected tool.N.FIELD with N from 1 to 99");
-    std::string_view field = key.substr(size_t(r.ptr - key.data()) + 1);
     ToolTruth& t = tool_at(s, n);
-    for (const ToolKey& k : kToolKeys)
+    for (const auto& k : kToolKeys)
         if (field == k.name) {
             // A lathe's nose radius is at most 10 mm; a milling cutter's 50.
             const double hi = field == "radius" && s.kind == "lathe" ? 10 : k.hi;
@@ -197,16 +191,13 @@ std::string tool_key(Setup& s, std::string_view key, std::string_view val) {
 
 // pin.N.FIELD = value
 std::string pin_key(Setup& s, std::string_view key, std::string_view val) {
-    key.remove_prefix(4);  // "pin."
     int n = 0;
-    auto r = std::from_chars(key.data(), key.data() + key.size(), n);
-    if (r.ec != std::errc() || r.ptr == key.data() || n < 1 || n > 9 ||
-        r.ptr == key.data() + key.size() || *r.ptr != '.')
+    std::string_view field;
+    if (!numbered(key.substr(4), 9, n, field))  // after "pin."
         return tr("expected pin.N.FIELD with N from 1 to 9");
-    std::string_view field = key.substr(size_t(r.ptr - key.data()) + 1);
     std::vector<Pin>& pins = s.mill.pins;
     if (pins.size() < size_t(n)) pins.resize(size_t(n));
-    for (const PinKey& k : kPinKeys)
+    for (const auto& k : kPinKeys)
         if (field == k.name) return in_range(val, k.lo, k.hi, pins[size_t(n) - 1].*k.field);
     return strf(tr("unknown pin field '%.*s'"), int(field.size()), field.data());
 }
@@ -227,7 +218,7 @@ std::string mill_key(Setup& s, std::string_view key, std::string_view val, bool&
         return in_range(val, -kBig, kBig, m.setter_z);
     }
     if (key.substr(0, 4) == "pin.") return pin_key(s, key, val);
-    for (const MillKey& k : kMillKeys)
+    for (const auto& k : kMillKeys)
         if (key == k.name) return in_range(val, k.lo, k.hi, m.*k.field);
     known = false;
     return {};
@@ -257,7 +248,7 @@ std::string one_key(Setup& s, std::string_view key, std::string_view val) {
         s.lathe.tailstock = true;
         return in_range(val, -kBig, kBig, s.lathe.tailstock_z);
     }
-    for (const Key& k : kLatheKeys)
+    for (const auto& k : kLatheKeys)
         if (key == k.name) return in_range(val, k.lo, k.hi, s.lathe.*k.field);
     return strf(tr("unknown key '%.*s'"), int(key.size()), key.data());
 }

@@ -5,6 +5,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -72,7 +73,6 @@ class Workshop final : public MachineSink {
     LatheWorld& world() { return world_; }
     const LatheWorld& world() const { return world_; }
     bool is_mill() const { return mill_ != nullptr; }
-    MillWorld* mill() { return mill_.get(); }
     const MillWorld* mill() const { return mill_.get(); }
     // The part, whichever the machine: its changes, the text the store
     // keeps (and back: false, fresh stock kept, when it does not read),
@@ -169,10 +169,17 @@ class Workshop final : public MachineSink {
     std::string mill_measure(std::string_view word, std::string_view rest, Reading& r) const;
     std::string mill_crash_text(int code, const Contact& c, const std::string& place) const;
     std::string mill_touch_text(const Contact& c, const std::string& place) const;
-    std::vector<Box3> boxes_;  // the vice's jaws and body, the plate, the table
-    std::vector<Met> box_kind_;
-    std::vector<Cylinder> pins_;  // the pins and the setter's plunger
-    std::vector<Met> pin_kind_;
+    // The vice's jaws and body, the plate, the table (boxes); the pins and
+    // the setter's plunger (cylinders, `box` their bounds).
+    struct Fixture {
+        Met what;
+        Box3 box;
+        std::optional<Cylinder> pin;
+        double depth(const Cutter& c, const P3& tip, Part p) const {
+            return pin ? depth_into(c, tip, p, *pin) : depth_into(c, tip, p, box);
+        }
+    };
+    std::vector<Fixture> fixtures_;
     std::unique_ptr<MillWorld> mill_;
 
     struct Tool {
