@@ -14,50 +14,23 @@
 #include "core/interp/interp.hpp"
 #include "core/workshop/report.hpp"
 #include "core/workshop/workshop.hpp"
+#include "workshop_run.hpp"
 
 namespace pupitre::workshop {
 namespace {
 
-using Sets = std::vector<std::pair<std::string, double>>;
+using test::Sets;
 
 Sets right(double pref_z = -290, double l2 = 117.645) {
     return {{"PREF.X", 108.35}, {"PREF.Y", -91.72}, {"PREF.Z", pref_z}, {"D2.L", l2}, {"D2.R", 4}};
 }
 
 // A program run in the shipped mill setup, changed by `extra` lines.
-struct Mill {
-    MachineProfile machine;
-    ProgramMemory mem;
-    workshop::Setup setup;
-    std::unique_ptr<Workshop> shop;
-    std::unique_ptr<Interpreter> in;
-
-    Mill(const std::string& program, const Sets& sets, const std::string& extra = "") {
-        builtin_machine("mill", machine);
-        EXPECT_TRUE(builtin_setup("mill", setup));
-        if (!extra.empty()) {
-            EXPECT_EQ(parse_setup(setup.source + "\n" + extra, setup), "");
-        }
-        shop = std::make_unique<Workshop>(machine, setup, nullptr);
-        Diag d;
-        mem.load_text("test.iso", program, d);
-        in = std::make_unique<Interpreter>(machine, mem, *shop, RunOptions{});
-        for (auto& [k, v] : sets) in->set(k, v);
-        in->start(mem.first());
-        for (StepResult r = StepResult::running;
-             !shop->crashed() && (r == StepResult::running || r == StepResult::stopped);)
-            r = in->step();
+struct Mill : test::ShopRun {
+    Mill(const std::string& program, const Sets& sets, const std::string& extra = "")
+        : ShopRun("mill", program, sets, extra) {
+        EXPECT_EQ(setup_error, "");
     }
-    double read(const std::string& spec) {
-        Reading r;
-        EXPECT_EQ(shop->measure(spec, r), "") << spec;
-        return r.value;
-    }
-    std::string refused(const std::string& spec) {
-        Reading r;
-        return shop->measure(spec, r);
-    }
-    int crash() const { return shop->crashed() ? shop->crashes().front().code : 0; }
 };
 
 // A slot 8 wide, 3 deep along X through the block at Y0 (Y40 from the
@@ -288,6 +261,38 @@ TEST(MillContacts, AJogStopsOnTheTopFaceAndASideFaceExactly) {
     ASSERT_TRUE(o.touched);
     EXPECT_NEAR(o.stop[Z], -290 + 117.645 + 0.05, 2e-4);
     EXPECT_NE(o.what.find("0.050 mm shim"), std::string::npos) << o.what;
+}
+
+// On a fixture plate 20 beyond the block, with a Ø10 locating pin at X40
+// (the block's -X face is at 48.35), its top 20 above the block's bottom
+// (Z -310).
+const char* kPlate =
+    "holding = plate\nplate.margin = 20\npin.1.x = 40\npin.1.y = -91.72\npin.1.diameter = 10\n";
+
+TEST(MillContacts, ThePinAndThePlateStopAJogAndCrashAMove) {
+    Jogged j(2, kPlate);
+    // T2 (Ø8) along +X, its tip at Z -315: the pin's side at X35, the axis 4
+    // before it.
+    Outcome o = j.jog(at(0, -91.72, -315 + 117.645), X, 40);
+    ASSERT_TRUE(o.touched);
+    EXPECT_NEAR(o.stop[X], 31, 2e-4);
+    EXPECT_NE(o.what.find("T2 touched a locating pin"), std::string::npos) << o.what;
+    // Down beside the block, within the plate's margin: its top is the
+    // block's bottom, Z -330.
+    o = j.jog(at(30, -140, -300 + 117.645), Z, -50);
+    ASSERT_TRUE(o.touched);
+    EXPECT_NEAR(o.stop[Z] - 117.645, -330, 2e-4);
+    EXPECT_NE(o.what.find("T2 touched the plate"), std::string::npos) << o.what;
+    // The same descent as a rapid: a crash into the work-holding.
+    MoveEvent e;
+    e.g = 0;
+    e.from_mach = at(30, -140, -300 + 117.645);
+    e.to_mach = at(30, -140, -350 + 117.645);
+    e.to_prog = e.to_mach;
+    o = j.shop->apply(e);
+    ASSERT_TRUE(o.crashed);
+    EXPECT_EQ(j.shop->crashes().front().code, kCrashChuck);
+    EXPECT_NE(o.what.find("crash: T2 hit the plate"), std::string::npos) << o.what;
 }
 
 TEST(MillContacts, TheToolSetterGivesTheLength) {

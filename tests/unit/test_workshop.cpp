@@ -11,6 +11,7 @@
 #include "core/interp/interp.hpp"
 #include "core/workshop/report.hpp"
 #include "core/workshop/workshop.hpp"
+#include "workshop_run.hpp"
 
 namespace pupitre {
 namespace data {
@@ -22,35 +23,9 @@ namespace {
 
 // A program run in the workshop of the shipped lathe setup, changed by
 // `extra` setup lines, with the operator's values `sets`.
-struct Shop {
-    MachineProfile machine;
-    ProgramMemory mem;
-    workshop::Setup setup;
-    std::unique_ptr<Workshop> shop;
-    std::unique_ptr<Interpreter> in;
-    std::string setup_error;
-
-    Shop(const std::string& program, std::vector<std::pair<std::string, double>> sets,
-         const std::string& extra = "") {
-        builtin_machine("lathe", machine);
-        setup_error = parse_setup(std::string(data::setup_lathe()) + "\n" + extra, setup);
-        shop = std::make_unique<Workshop>(machine, setup, nullptr);
-        Diag d;
-        mem.load_text("test.iso", program, d);
-        in = std::make_unique<Interpreter>(machine, mem, *shop, RunOptions{});
-        for (auto& [k, v] : sets) in->set(k, v);
-        in->start(mem.first());
-        for (StepResult r = StepResult::running;
-             !shop->crashed() && (r == StepResult::running || r == StepResult::stopped);)
-            r = in->step();
-    }
-    double read(const std::string& spec) {
-        Reading r;
-        std::string e = shop->measure(spec, r);
-        EXPECT_EQ(e, "") << spec;
-        return r.value;
-    }
-    int crash() const { return shop->crashed() ? shop->crashes().front().code : 0; }
+struct Shop : test::ShopRun {
+    Shop(const std::string& program, const test::Sets& sets, const std::string& extra = "")
+        : ShopRun("lathe", program, sets, extra) {}
 };
 
 // The operator's values that match the truth.
@@ -385,6 +360,17 @@ TEST(Contacts, AJogStopsAtTheDiameterAndAShimStopsItAShimEarly) {
     EXPECT_DOUBLE_EQ(rd.value, 59.8);
 }
 
+// T1's P at R 35, over a gauge block on the jaws, from Z 120 to Z 20 (G`g`).
+MoveEvent over_the_gauge_block(int g) {
+    MoveEvent e;
+    e.g = g;
+    e.from_mach[X] = e.to_mach[X] = 35 + 52.347 - 20;
+    e.from_mach[Z] = 120 + 41.215;
+    e.to_mach[Z] = 20 + 41.215;
+    e.to_prog = e.to_mach;
+    return e;
+}
+
 // Seed 004's exam: a 100 mm gauge block against the jaws' face (chuck.z
 // -60, so its end is at Z 40), 2 to 11 mm above the Ø60 bar (R 32 to 41).
 TEST(Contacts, AGaugeBlockOnTheJawsStopsTheJogAtItsEnd) {
@@ -392,12 +378,7 @@ TEST(Contacts, AGaugeBlockOnTheJawsStopsTheJogAtItsEnd) {
     Workshop& w = *t1.shop;
     w.set_gauge_block(100);
     // T1 (C3: P is the nose's lowest Z) at R 35, from Z 120 towards the chuck.
-    MoveEvent e;
-    e.g = 1;
-    e.from_mach[X] = e.to_mach[X] = 35 + 52.347 - 20;
-    e.from_mach[Z] = 120 + 41.215;
-    e.to_mach[Z] = 20 + 41.215;
-    e.to_prog = e.to_mach;
+    const MoveEvent e = over_the_gauge_block(1);
     Outcome o = w.jog(e, true);
     ASSERT_TRUE(o.touched);
     EXPECT_NEAR(w.tip(o.stop)[0], 40, 3e-4);
@@ -426,13 +407,7 @@ TEST(Workshop, AProgramMoveIntoTheGaugeBlockIsACrash) {
     Workshop w(m, st, nullptr);
     w.tool(Loc{}, 1, 1, 0, true);
     w.set_gauge_block(100);
-    MoveEvent e;
-    e.g = 0;
-    e.from_mach[X] = e.to_mach[X] = 35 + 52.347 - 20;
-    e.from_mach[Z] = 120 + 41.215;
-    e.to_mach[Z] = 20 + 41.215;
-    e.to_prog = e.to_mach;
-    Outcome o = w.apply(e);
+    Outcome o = w.apply(over_the_gauge_block(0));
     ASSERT_TRUE(o.crashed);
     EXPECT_EQ(w.crashes().front().code, kCrashChuck);
     EXPECT_NE(o.what.find("T1 hit the gauge block on the jaws' face"), std::string::npos) << o.what;

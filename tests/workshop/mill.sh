@@ -50,6 +50,28 @@ rc=$?
 [ $rc -eq 1 ] || fail "(c) a crash should exit 1, not $rc"
 grep -Eq '^slot\.iso:[0-9]+: N70: error 1200: crash: T2 rapid \(G0\) into the part at X' "$work/err" ||
     fail "(c) expected the rapid of N70 to crash: $(cat "$work/err")"
+# The JSON crash gives the machine position where it stopped, Y included.
+run "${pref[@]}" --set PREF.Z=-300 "${d2[@]}" --json >"$work/crash.json"
+grep -q '"om":{"X":172.0266,"Y":-89.1906,"Z":-177.3550}' "$work/crash.json" ||
+    fail "(c) the JSON crash should give OM X Y Z: $(cat "$work/crash.json")"
+
+# A setup for the other kind of machine, or for rotary axes, is refused.
+"$bin" run --machine mill4 --setup mill slot.iso >/dev/null 2>"$work/err"
+[ $? -eq 64 ] || fail "(c) a setup on mill4 should be a usage error"
+grep -qF "machine 'mill4' has rotary axes" "$work/err" || fail "(c) mill4: $(cat "$work/err")"
+
+# plot --setup draws the block from above once (no lathe's mirror image),
+# the slot and the pocket as holes, and frames the whole block (Y -40..40).
+"$bin" plot --machine mill --setup mill "${pref[@]}" --set PREF.Z=-290 "${d2[@]}" --svg "$work/plot.svg" \
+    slot.iso 2>"$work/err" || fail "(f) plot --setup: $(cat "$work/err")"
+part=$(sed -n '/<g id="part"/,/<\/g>/p' "$work/plot.svg")
+[ "$(grep -c '<path' <<<"$part")" -eq 1 ] || fail "(f) the block should be drawn once: $part"
+grep -q 'd="M-60.0000 40.0000 L60.0000 40.0000 L60.0000 -40.0000 L-60.0000 -40.0000 Z M' <<<"$part" ||
+    fail "(f) the block's outline, then its holes: $(head -c 300 <<<"$part")"
+read -r y h < <(sed -n 's/.*<clipPath id="window"><rect x="[^"]*" y="\([^"]*\)" width="[^"]*" height="\([^"]*\)".*/\1 \2/p' \
+    "$work/plot.svg")
+awk -v y="$y" -v h="$h" 'BEGIN { exit !(y <= -40 && y + h >= 40) }' ||
+    fail "(f) the frame should hold the block's Y -40..40, not y $y height $h"
 
 # (e) The golden report (tests/workshop/slot.json): the same readings, the
 # presetter's, and one that cannot be taken.
