@@ -222,11 +222,6 @@ Effect read_instrument(Session& s, const CommandCall& c) {
     return s.read_part(c.rest());
 }
 
-bool instrument_word(std::string_view w) {
-    return w == "dia" || w == "bore" || w == "groove" || w == "length" || w == "tool" ||
-           w == "width" || w == "depth" || w == "height";  // the last three: a mill's
-}
-
 Effect setup(Session& s, const CommandCall& c) {
     std::string_view what = c.arg(1);
     workshop::Workshop* now = s.sim().shop();
@@ -341,7 +336,7 @@ Effect part(Session& s, const CommandCall& c) {
 }
 
 Effect measure(Session& s, const CommandCall& c) {
-    if (instrument_word(c.arg(1))) return read_instrument(s, c);
+    if (workshop::is_instrument(c.arg(1))) return read_instrument(s, c);
     double v;
     long d = 0;
     int axis;

@@ -377,6 +377,12 @@ constexpr MillInstrument kMillInstruments[] = {
 
 }  // namespace
 
+bool is_mill_instrument(std::string_view word) {
+    for (const MillInstrument& i : kMillInstruments)
+        if (word == i.word) return true;
+    return false;
+}
+
 // Reads the block with an instrument (pupitre-setup(5), MEASUREMENTS): the
 // place from the block's corner as loaded, Z from its top face as loaded.
 std::string Workshop::mill_measure(std::string_view word, std::string_view rest, Reading& r) const {

@@ -496,6 +496,16 @@ constexpr Instrument kInstruments[] = {
     {"length", N_("depth gauge"), 0.01, false},
 };
 
+}  // namespace
+
+bool is_instrument(std::string_view word) {
+    for (const Instrument& i : kInstruments)
+        if (word == i.word) return true;
+    return word == "tool" || is_mill_instrument(word);
+}
+
+namespace {
+
 double rounded(double v, double res) {
     return std::round(v / res) * res;
 }

@@ -61,6 +61,11 @@ struct Reading {
     double uncertainty = 0;  // mm, ± (the presetter's); 0: within the resolution
 };
 
+// Whether `word` begins an instrument's request on either machine ("dia",
+// "depth", "tool", …): what :measure reads on the part rather than a gauge.
+bool is_instrument(std::string_view word);
+bool is_mill_instrument(std::string_view word);  // mill_shop.cpp
+
 class Workshop final : public MachineSink {
   public:
     // `next` receives every event after the workshop (may be null).
