@@ -15,6 +15,7 @@
 #include <sstream>
 
 #include "console/cli.hpp"
+#include "console/exercise.hpp"
 #include "console/keys.hpp"
 #include "console/line_readline.hpp"
 #include "console/session.hpp"
@@ -182,6 +183,30 @@ void first_screen(console::Session& s, const MachineProfile& m) {
     s.say(news, false);
 }
 
+// pupitre exercise NAME: the exercise, the class key (made on first use),
+// the exercise's machine. False (the message printed) when one is missing.
+bool exercise_setup(const ConsoleArgs& a, store::Store& st, training::Exercise& e, std::string& key,
+                    MachineProfile& m, int& rc) {
+    rc = kNoInput;
+    std::string why = console::find_exercise(&st, a.exercise, e);
+    if (why.empty()) why = console::class_key(true, key);
+    if (why.empty() && !a.machine.empty() && a.machine != e.machine)
+        why = strf(tr("exercise %s is on the %s, not on %s"), e.name.c_str(), e.machine.c_str(),
+                   a.machine.c_str());
+    if (why.empty() && !builtin_machine(e.machine, m))
+        why = strf(tr("no machine %s"), e.machine.c_str());
+    if (!why.empty()) std::fprintf(stderr, tr("pupitre: %s\n"), why.c_str());
+    return why.empty();
+}
+
+// The first screen of an attempt: its program selected, its task shown.
+void exercise_screen(console::Session& s, const training::Exercise& e) {
+    if (e.program_number > 0 && s.memory().find(e.program_number)) s.sim().select(e.program_number);
+    s.show_page(pages::PageId::exercise);
+    s.say(strf(tr("exercise %s: the task is on this page (Alt-x); :submit hands it in"),
+               e.name.c_str()));
+}
+
 }  // namespace
 
 int console(const ConsoleArgs& a) {
@@ -190,7 +215,10 @@ int console(const ConsoleArgs& a) {
     std::unique_ptr<store::Store> st;
     if (int rc = kOk; !open_console_store(a, st, rc)) return rc;
     MachineProfile m;
-    if (!console_machine(a, *st, m)) return kUsage;
+    training::Exercise ex;
+    std::string key;
+    if (int rc = kOk; !a.exercise.empty() && !exercise_setup(a, *st, ex, key, m, rc)) return rc;
+    if (a.exercise.empty() && !console_machine(a, *st, m)) return kUsage;
     console::Theme theme;
     if (!console_theme(a, theme)) return kUsage;
     if (!isatty(STDIN_FILENO) || !isatty(STDOUT_FILENO)) {
@@ -202,7 +230,14 @@ int console(const ConsoleArgs& a) {
     }
     console::ReadlineInput input;
     console::Session s(m, std::move(st), input);
+    if (!a.exercise.empty()) {
+        if (std::string why = s.start_exercise(ex, a.student, key); !why.empty()) {
+            std::fprintf(stderr, tr("pupitre: %s\n"), why.c_str());
+            return kDataErr;
+        }
+    }
     first_screen(s, m);
+    if (!a.exercise.empty()) exercise_screen(s, ex);
     console::Terminal term;
     if (std::string err = term.open(theme); !err.empty()) {
         std::fprintf(stderr, tr("pupitre: %s\n"), err.c_str());

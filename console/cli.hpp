@@ -12,7 +12,8 @@ struct Diag;
 class Interpreter;
 namespace store {
 class Store;
-}
+struct Error;
+}  // namespace store
 namespace workshop {
 struct Setup;
 }
@@ -69,6 +70,8 @@ struct ConsoleArgs {
     std::string machine;  // "" = the last one used, else lathe
     std::string theme;    // empty: colour, or mono when NO_COLOR is set (no-color.org)
     bool ascii = false;   // no UTF-8 line drawing even on a UTF-8 terminal
+    // An exercise's attempt (pupitre exercise NAME): its name and the student.
+    std::string exercise, student;
 };
 int console(const ConsoleArgs& a);
 int check(const RunArgs& a);
@@ -82,6 +85,26 @@ struct StoreArgs {
     int revision = 0;                // restore
     std::string output;              // export -o
 };
+
+// Prints a store's error; its exit code.
+int report(const store::Error& e);
+// The store named by --db, or the default one (its directory made if needed).
+int open_store(const std::string& db, std::unique_ptr<store::Store>& out);
+
+// Training (cli_exercise.cpp, pupitre-exercise(5)): `pupitre exercise
+// list|check FILE...|add FILE|truth NAME|save NAME`, or NAME to open the
+// console on it; `pupitre class report [EXERCISE]`.
+struct ExerciseArgs {
+    std::string db;
+    std::vector<std::string> words;
+    std::string student;  // --student
+    std::string machine;  // save: the machine whose setup
+    std::string output;   // save -o, report --html
+    bool csv = false;
+    ConsoleArgs console;
+};
+int exercise(const ExerciseArgs& a);
+int class_report(const ExerciseArgs& a);
 
 int store_import(const StoreArgs& a);
 int store_export(const StoreArgs& a);

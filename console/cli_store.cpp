@@ -18,8 +18,6 @@ namespace pupitre::cli {
 using store::Fault;
 using store::Store;
 
-namespace {
-
 int report(const store::Error& e) {
     // TRANSLATORS: any message, after the program's name.
     std::fprintf(stderr, tr("pupitre: %s\n"), e.message.c_str());
@@ -39,6 +37,8 @@ int open_store(const std::string& db, std::unique_ptr<Store>& out) {
     out = std::move(r.value);
     return kOk;
 }
+
+namespace {
 
 std::string when(int64_t ms) {
     std::time_t t = std::time_t(ms / 1000);

@@ -225,6 +225,7 @@ Effect read_instrument(Session& s, const CommandCall& c) {
 Effect setup(Session& s, const CommandCall& c) {
     std::string_view what = c.arg(1);
     workshop::Workshop* now = s.sim().shop();
+    if (s.hidden(":setup")) return Effect::redraw;
     if (what.empty()) {
         s.say(now ? strf(tr("workshop: setup %s, %s"), now->setup().name.c_str(),
                          now->setup().description.c_str())
@@ -272,6 +273,7 @@ Effect shim(Session& s, const CommandCall& c) {
     if (!number(c.arg(1), mm) || mm < 0.005 || mm > 50 || !c.arg(2).empty())
         return usage(s, tr(":shim MM (0.005 to 50) or :shim off"));
     w->set_shim(mm);
+    s.note_shim(mm);
     s.say(strf(tr("a %s mm shim on the part: a jog stops when the tool pinches it; subtract it "
                   "when you touch off"),
                pages::fmt_len(mm).c_str()));
@@ -300,6 +302,7 @@ Effect gauge(Session& s, const CommandCall& c) {
     if (!number(c.arg(1), mm) || mm < 1 || mm > 500 || !c.arg(2).empty())
         return usage(s, tr(":gauge MM (1 to 500) or :gauge off"));
     w->set_gauge_block(mm);
+    s.note_shim(mm);
     s.say(strf(tr("a %s mm gauge block against the jaws' face, 2 mm above the bar: a jog stops "
                   "on its end"),
                pages::fmt_len(mm).c_str()));
@@ -324,7 +327,7 @@ Effect part(Session& s, const CommandCall& c) {
         s.say(s.no_workshop(), true);
         return Effect::redraw;
     }
-    if (exporting) return export_part(s, *w, c.arg(2));
+    if (exporting) return s.hidden(":part export") ? Effect::redraw : export_part(s, *w, c.arg(2));
     if (s.sim().in_cycle()) {
         s.say(tr("a program is in cycle"), true);
         return Effect::redraw;
@@ -479,6 +482,12 @@ constexpr Command kCommands[] = {
      N_("the paper test: a shim of MM on the part stops a jog when the tool pinches it"), shim},
     {"gauge", ":gauge MM|off",
      N_("a gauge block of MM against the lathe's jaws: a jog stops on its end"), gauge},
+    {"exercise", ":exercise",
+     N_("the EXERCISE page: the task of the exercise in progress, its report once submitted"),
+     [](Session& s, const CommandCall& c) { return s.exercise_command(c.rest()); }},
+    {"submit", ":submit",
+     N_("hand in the exercise: the values entered and the part are graded, the truth shown"),
+     [](Session& s, const CommandCall&) { return s.submit_exercise(); }},
     {"undo", ":undo", N_("undo the last change of an origin or a corrector"),
      [](Session& s, const CommandCall&) { return s.undo(); }},
     {"protect", ":protect on|off [PIN]",

@@ -131,6 +131,7 @@ struct CommandLine {
     cli::RunArgs ra;
     cli::PlotArgs pa;
     cli::StoreArgs sa;
+    cli::ExerciseArgs ea;
     std::vector<std::string> numbers;  // as typed, checked after parsing
     std::string number;
 };
@@ -293,6 +294,36 @@ bool read_numbers(CommandLine& c) {
     return true;
 }
 
+// exercise and class: training (pupitre-exercise(5)).
+void add_training(CLI::App& app, CommandLine& c, std::vector<Command>& commands) {
+    cli::ExerciseArgs& ea = c.ea;
+    CLI::App* ex = app.add_subcommand(
+        "exercise", tr("an exercise: NAME opens the console on it; list, check FILE, add FILE, "
+                       "truth NAME, save NAME"));
+    ex->add_option("words", ea.words,
+                   tr("NAME, or list, check FILE..., add FILE, truth NAME, save NAME"));
+    ex->add_option("--student", ea.student, tr("who attempts it (default: the login name)"))
+        ->type_name("NAME");
+    ex->add_option("--machine", ea.machine, tr("save: the machine whose workshop (default lathe)"));
+    ex->add_option("-o,--output", ea.output, tr("save: write to FILE"))->type_name("FILE");
+    CLI::App* cl = app.add_subcommand("class", tr("the teacher's view: class report [EXERCISE]"));
+    cl->add_option("words", ea.words, tr("report [EXERCISE]"))->required();
+    cl->add_flag("--csv", ea.csv, tr("the report as CSV"));
+    cl->add_option("--html", ea.output, tr("the report as one printable HTML file"))
+        ->type_name("FILE");
+    commands.push_back({ex, [](const CommandLine& k) {
+                            cli::ExerciseArgs e = k.ea;
+                            e.db = k.db;
+                            e.console = k.ca;
+                            return cli::exercise(e);
+                        }});
+    commands.push_back({cl, [](const CommandLine& k) {
+                            cli::ExerciseArgs e = k.ea;
+                            e.db = k.db;
+                            return cli::class_report(e);
+                        }});
+}
+
 // The subcommand given, else the console; an exception is an internal error.
 int dispatch(CommandLine& c, const std::vector<Command>& commands) {
     try {
@@ -332,6 +363,7 @@ int main(int argc, char** argv) {
     commands.push_back({check, [](const CommandLine& k) { return cli::check(k.ra); }});
     commands.push_back({add_plot(app, c.pa), [](const CommandLine& k) { return cli::plot(k.pa); }});
     add_store(app, c, commands);
+    add_training(app, c, commands);
 
     // TRANSLATORS: the heading of the list of commands in --help.
     for (CLI::App* sub : app.get_subcommands({})) sub->group(tr("Subcommands"));

@@ -6,6 +6,7 @@
 #include <charconv>
 
 #include "console/commands.hpp"
+#include "console/exercise.hpp"
 #include "core/i18n.hpp"
 #include "core/parse/codes.hpp"
 #include "pages/pages.hpp"
@@ -30,7 +31,11 @@ bool to_long(std::string_view s, long& out) {
 }  // namespace
 
 Session::Session(const MachineProfile& m, std::unique_ptr<store::Store> store, LineInput& input)
-    : m_(m), store_(std::move(store)), input_(input), sim_(std::make_unique<Sim>(m_, mem_)) {
+    : m_(m),
+      store_key_(m.name),
+      store_(std::move(store)),
+      input_(input),
+      sim_(std::make_unique<Sim>(m_, mem_)) {
     bindings.parse(default_bindings(), "bindings");
     sim_->set_path(&path_);
     graph.plane = m_.lathe ? PathPlane::zx : PathPlane::xy;
@@ -48,9 +53,10 @@ std::string Session::load_store() {
     }
     std::string problem;
     if (auto r = store::load_programs(*store_, mem_); r.error) problem = r.error.message;
-    if (auto r = store::seed_machine(*store_, sim_->interp()); r.error) problem = r.error.message;
+    if (auto r = store::seed_machine(*store_, sim_->interp(), store_key_); r.error)
+        problem = r.error.message;
     sim_->interp().origins_changed();
-    if (auto r = store_->imd_history(m_.name, 200); !r.error)
+    if (auto r = store_->imd_history(store_key_, 200); !r.error)
         for (auto it = r.value.rbegin(); it != r.value.rend(); ++it) input_.add_history(it->block);
     for (const auto& [name, v] : store::persistent_writes(sim_->interp())) persisted_[name] = v;
     if (auto r = store_->setting("protect.on"); !r.error && r.value) protect = *r.value == "1";
@@ -64,7 +70,8 @@ std::string Session::load_store() {
 // The workshop this machine had when the console last stopped: the same
 // setup and the part as the tools left it (pupitre-setup(5)).
 std::string Session::load_workshop() {
-    auto r = store_->workshop(m_.name);
+    if (exercise_) return exercise_workshop();
+    auto r = store_->workshop(store_key_);
     if (r.error) return r.error.message;
     if (!r.value) return {};
     workshop::Setup st;
@@ -105,6 +112,9 @@ Effect Session::read_part(std::string_view spec) {
     }
     int decimals = r.resolution < 0.005 ? 3 : 2;
     // TRANSLATORS: the instrument, what it measured, the reading in mm.
+    const std::string word = asked.substr(0, asked.find(' '));
+    if (!instrument_allowed(word)) return Effect::redraw;
+    note_reading(word, r.value);
     std::string said =
         strf(tr("%s: %s = %.*f mm"), r.instrument.c_str(), asked.c_str(), decimals, r.value);
     // TRANSLATORS: after a presetter's reading: its uncertainty in mm.
@@ -119,8 +129,12 @@ void Session::save_workshop() {
     const workshop::Workshop* w = sim_->shop();
     if (w) workshop_saved_ = w->generation();
     if (!store_) return;
-    store::Error e = w ? store_->put_workshop(m_.name, w->setup().source, w->part_text())
-                       : store_->put_workshop(m_.name, "", "");
+    // An exercise's: its name, never the setup; the part scrambled.
+    store::Error e = !w ? store_->put_workshop(store_key_, "", "")
+                     : exercise_
+                         ? store_->put_workshop(store_key_, "exercise " + exercise_->ex.name,
+                                                scramble(w->part_text(), exercise_->seed))
+                         : store_->put_workshop(store_key_, w->setup().source, w->part_text());
     if (e) say(strf(tr("the workshop was not stored: %s"), e.message.c_str()), true);
 }
 
@@ -425,7 +439,7 @@ Effect Session::route_text(const std::string& text) {
             say(why, true);
             return Effect::redraw;
         }
-        if (store_) store_->add_imd(m_.name, t);
+        if (store_) store_->add_imd(store_key_, t);
         say(strf(tr("IMD: Cycle Start (F9) executes: %s"), text.c_str()));
         return Effect::redraw;
     }
@@ -505,6 +519,7 @@ void Session::tick(double dt) {
             break;
     }
     check_run_end();
+    watch_crashes();
     follow_store(dt);
 }
 
@@ -563,7 +578,7 @@ void Session::persist_run() {
     }
     if (fresh.empty()) return;
     std::string source = "program %" + std::to_string(sim_->selected()) + " (console)";
-    if (auto r = store_->set_values(m_.name, fresh, source); r.error)
+    if (auto r = store_->set_values(store_key_, fresh, source); r.error)
         say(strf(tr("the program's corrector and origin writes were not stored: %s"),
                  r.error.message.c_str()),
             true);
@@ -659,6 +674,7 @@ pages::View Session::view() const {
     v.undo_depth = undo_.size();
     v.last_setting = last_setting_;
     v.readings = &readings_;
+    exercise_view(v);
     view_editor(v);
     v.graph = graph;
     v.graph.path = &path_;
@@ -666,6 +682,8 @@ pages::View Session::view() const {
     tool_now_ = sim_->op();
     v.graph.tool = &tool_now_;
     v.graph.cache = &graph_cache_;
+    // An exercise: the part drawn, but no coordinates read off it (the truth).
+    v.graph.no_readout = exercise_ && !exercise_->grade;
     if (sim_->shop() && page == pages::PageId::graph) {  // only the GRAPH page draws the part
         view_part();
         v.graph.part = &part_now_, v.graph.chuck = &chuck_now_;

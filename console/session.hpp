@@ -21,7 +21,13 @@ namespace pupitre::store {
 class Store;
 }
 
+namespace pupitre::training {
+struct Exercise;
+}
+
 namespace pupitre::console {
+
+struct ExerciseRun;
 
 // How fast the animation shows the simulated clock.
 enum class Speed { real, x10, max };
@@ -82,6 +88,19 @@ class Session {
     void confirm(std::string question, std::function<void()> then);
     void echo_comma(std::string_view typed, double v);
     Effect measure(int d, int axis, double surface);
+    // Training (console/session_exercise.cpp): an attempt at an exercise on
+    // its hidden setup. start_exercise() comes before load_store(): the
+    // attempt's correctors and origins live under its own name in the store.
+    // "" or what went wrong.
+    std::string start_exercise(const training::Exercise& e, const std::string& student,
+                               const std::string& key);
+    Effect submit_exercise();                        // :submit
+    Effect exercise_command(std::string_view args);  // :exercise
+    const ExerciseRun* exercise() const { return exercise_.get(); }
+    // True (and says why) when `what` would show the truth of the exercise
+    // in progress.
+    bool hidden(const char* what);
+    void note_shim(double mm);  // a shim or a gauge block placed
     // Reads an instrument on the workshop's part ("dia Z-20"): the reading
     // on the message line and at the head of the WORKSHOP page's list.
     Effect read_part(std::string_view spec);
@@ -168,6 +187,13 @@ class Session {
     uint64_t news_seen_ = 0;       // the Sim's workshop news already said
     uint64_t workshop_saved_ = 0;  // the part's generation the store holds
     std::string load_workshop();
+    std::string store_key_;  // where the store keeps this console's machine state
+    std::unique_ptr<ExerciseRun> exercise_;
+    std::string exercise_workshop();
+    void note_reading(const std::string& word, double value);
+    bool instrument_allowed(const std::string& word);
+    void watch_crashes();
+    void exercise_view(pages::View& v) const;
     mutable std::vector<std::vector<std::array<double, 2>>>
         part_now_;  // GRAPH: the workshop's part
     mutable std::vector<std::vector<std::array<double, 2>>>

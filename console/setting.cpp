@@ -11,8 +11,8 @@
 #include <random>
 
 #include "console/session.hpp"
-#include "console/sha256.hpp"
 #include "core/i18n.hpp"
+#include "core/sha256.hpp"
 #include "store/store.hpp"
 
 namespace pupitre::console {
@@ -117,7 +117,7 @@ bool Session::apply_setting(const std::string& name, double value, const std::st
                                         : tr("(applies as the manual says: gauge at the next move "
                                              "of its axis, radius at the next G41/G42)"));
     if (store_) {
-        auto r = store_->set_values(m_.name, {{name, internal(name, value)}}, source);
+        auto r = store_->set_values(store_key_, {{name, internal(name, value)}}, source);
         if (r.error) {
             say(strf(tr("%s; NOT stored: %s"), news.c_str(), r.error.message.c_str()), true);
             return true;

@@ -73,7 +73,7 @@ void Session::sync_from_store() {
     }
     store_pending_ = false;
     std::string news;
-    if (auto r = store_->values(m_.name); !r.error) {
+    if (auto r = store_->values(store_key_); !r.error) {
         Interpreter& in = sim_->interp();
         // A value differs from the machine's: the other console changed it
         // (this one's own writes are already in the machine).

@@ -260,6 +260,8 @@ void info_lines(const GraphView& g, const ViewXf& xf, Canvas& c, const Rect& r) 
                       axis_label(h, false, c.ascii()) + " " + fmt_mm(shown(p, h, px)) + "  " +
                       axis_label(v, lathe && v == X && p.x_diameter(), c.ascii()) + " " +
                       fmt_mm(shown(p, v, py));
+    // TRANSLATORS: GRAPH page during an exercise, instead of the cursor's coordinates.
+    if (g.no_readout) cur = "   " + std::string(tr("no coordinates during an exercise"));
     x += c.text(x, y1, cur, Style::normal, room());
     if (p.has_extremes()) {
         std::string em = "   EM";

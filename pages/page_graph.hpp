@@ -44,6 +44,7 @@ struct GraphView {
     double cx = 0, cy = 0;
     double scale = 0.5;  // mm per dot
     bool has_cursor = false;
+    bool no_readout = false;      // an exercise: no coordinates read off the drawing
     double cur_x = 0, cur_y = 0;  // the cursor, world
     const Axes* tool = nullptr;   // the tool now, program frame, internal units; null: none shown
     size_t upto = SIZE_MAX;       // moves drawn: [0, upto)

@@ -21,11 +21,12 @@ void page_dir(const View& v, Canvas& c, const Rect& r);
 void page_alarm(const View& v, Canvas& c, const Rect& r);
 std::string alarm_place(const Diag& d);  // "%300 line 12 N20", "IMD line 3", "JOG"
 void page_help(const View& v, Canvas& c, const Rect& r);
-void page_pref(const View& v, Canvas& c, const Rect& r);     // origins, touch-off
-void page_corr(const View& v, Canvas& c, const Rect& r);     // tool correctors, measurement
-void page_edit(const View& v, Canvas& c, const Rect& r);     // EDIT and MODIF
-void page_history(const View& v, Canvas& c, const Rect& r);  // a program's revisions
-void page_shop(const View& v, Canvas& c, const Rect& r);     // the workshop, its instruments
+void page_pref(const View& v, Canvas& c, const Rect& r);      // origins, touch-off
+void page_corr(const View& v, Canvas& c, const Rect& r);      // tool correctors, measurement
+void page_edit(const View& v, Canvas& c, const Rect& r);      // EDIT and MODIF
+void page_history(const View& v, Canvas& c, const Rect& r);   // a program's revisions
+void page_shop(const View& v, Canvas& c, const Rect& r);      // the workshop, its instruments
+void page_exercise(const View& v, Canvas& c, const Rect& r);  // the task, the report
 
 // A line of a long page: styled parts, optionally the whole row restyled.
 struct Line {

@@ -47,7 +47,7 @@ const char* state_text(RunState st) {
 
 constexpr std::string_view kPageWords[] = {"om",   "op",    "prog",    "info", "param",
                                            "dir",  "alarm", "help",    "pref", "corr",
-                                           "edit", "graph", "history", "shop"};
+                                           "edit", "graph", "history", "shop", "exercise"};
 
 void status_line(const View& v, Canvas& c) {
     const Sim& s = *v.sim;
@@ -212,6 +212,8 @@ void render_page(const View& v, Canvas& c, const Rect& r) {
             return page_history(v, c, r);
         case PageId::shop:
             return page_shop(v, c, r);
+        case PageId::exercise:
+            return page_exercise(v, c, r);
     }
 }
 

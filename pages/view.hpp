@@ -26,7 +26,8 @@ enum class PageId {
     edit,
     graph,
     history,
-    shop
+    shop,
+    exercise
 };
 std::string_view page_word(PageId p);  // om, op, prog, …
 bool parse_page(std::string_view word, PageId& out);
@@ -60,6 +61,9 @@ struct HistoryRow {
     int64_t lines = 0;
     bool conflict = false;
 };
+
+// How a line of the EXERCISE page shows.
+enum class ExLine { title, heading, text, note, ok, wrong };
 
 struct View {
     const Sim* sim = nullptr;
@@ -103,6 +107,8 @@ struct View {
     GraphView graph;
     // WORKSHOP: the readings taken, newest first, as the message line said them.
     const std::vector<std::string>* readings = nullptr;
+    // EXERCISE: the task before :submit, the report after; empty: none.
+    std::vector<std::pair<ExLine, std::string>> exercise;
 };
 
 // The whole screen: status line, page, message line, input line, soft keys.

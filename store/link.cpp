@@ -54,10 +54,11 @@ Result<int> load_programs(Store& s, ProgramMemory& mem) {
     return r;
 }
 
-Result<std::map<std::string, int64_t>> seed_machine(Store& s, Interpreter& in) {
+Result<std::map<std::string, int64_t>> seed_machine(Store& s, Interpreter& in,
+                                                    std::string_view key) {
     Result<std::map<std::string, int64_t>> r;
     const MachineProfile& m = in.machine();
-    auto stored = s.values(m.name);
+    auto stored = s.values(key.empty() ? std::string_view(m.name) : key);
     if (stored.error) {
         r.error = stored.error;
         return r;

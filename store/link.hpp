@@ -24,7 +24,10 @@ Result<int> load_programs(Store& s, ProgramMemory& mem);
 // Seeds the interpreter with the stored correctors and origins of its machine.
 // Values for an axis or a field the machine does not have are skipped.
 // Returns the values applied, by name.
-Result<std::map<std::string, int64_t>> seed_machine(Store& s, Interpreter& in);
+// `key`: where the store keeps them ("": the machine's name; an exercise's
+// attempt has its own).
+Result<std::map<std::string, int64_t>> seed_machine(Store& s, Interpreter& in,
+                                                    std::string_view key = "");
 
 // The run's writes that persist, as store names and internal values, in E order.
 std::vector<std::pair<std::string, int64_t>> persistent_writes(const Interpreter& in);

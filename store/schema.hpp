@@ -102,6 +102,37 @@ CREATE TABLE workshops (
     who        TEXT NOT NULL
 ) STRICT;
 )sql",
+    // 3: training (issue 16): the class's own exercises, and every attempt
+    // with its grade. The truth is not kept: it is drawn again from the seed
+    // (pupitre-exercise(5), WHAT IS HIDDEN).
+    R"sql(
+CREATE TABLE exercises (
+    name     TEXT PRIMARY KEY,
+    text     TEXT NOT NULL,                  -- the exercise file (pupitre-exercise(5))
+    added_ms INTEGER NOT NULL,
+    who      TEXT NOT NULL
+) STRICT;
+
+CREATE TABLE attempts (
+    id           INTEGER PRIMARY KEY,
+    exercise     TEXT NOT NULL,
+    exercise_sha TEXT NOT NULL,              -- SHA-256 of the exercise's text
+    student      TEXT NOT NULL,
+    machine      TEXT NOT NULL,              -- where the attempt's correctors and origins live
+    started_ms   INTEGER NOT NULL,
+    submitted_ms INTEGER,                    -- NULL while in progress
+    seed         TEXT NOT NULL DEFAULT '',   -- hex; written when submitted
+    score        INTEGER,
+    seconds      REAL,
+    crashes      INTEGER NOT NULL DEFAULT 0,
+    scrapped     INTEGER NOT NULL DEFAULT 0 CHECK (scrapped IN (0, 1)),
+    mistakes     TEXT NOT NULL DEFAULT '',   -- the mistakes' words, space-separated
+    found        TEXT NOT NULL DEFAULT '',   -- NAME=VALUE lines, as entered
+    report       TEXT NOT NULL DEFAULT '',   -- the report's lines
+    signature    TEXT NOT NULL DEFAULT ''    -- HMAC-SHA-256 with the class key
+) STRICT;
+CREATE INDEX attempts_by_exercise ON attempts (exercise, student, id);
+)sql",
 };
 
 inline constexpr int kCount = int(sizeof kMigrations / sizeof kMigrations[0]);

@@ -29,6 +29,10 @@ class Use {
         return *this;
     }
     Use& bind(int i, int v) { return bind(i, int64_t(v)); }
+    Use& bind(int i, double v) {
+        sqlite3_bind_double(s_, i, v);
+        return *this;
+    }
     Use& bind(int i, std::string_view t) {
         sqlite3_bind_text(s_, i, t.data(), int(t.size()), SQLITE_TRANSIENT);
         return *this;
@@ -50,6 +54,7 @@ class Use {
     bool is_null(int c) const { return sqlite3_column_type(s_, c) == SQLITE_NULL; }
     int64_t i64(int c) const { return sqlite3_column_int64(s_, c); }
     int i32(int c) const { return sqlite3_column_int(s_, c); }
+    double f64(int c) const { return sqlite3_column_double(s_, c); }
     std::string str(int c) const {
         const void* p = sqlite3_column_blob(s_, c);  // text or blob: the bytes as stored
         int n = sqlite3_column_bytes(s_, c);

@@ -19,7 +19,7 @@ struct sqlite3_stmt;
 namespace pupitre::store {
 
 inline constexpr uint32_t kApplicationId = 0x4E554D31;  // "NUM1" in PRAGMA application_id
-inline constexpr int kSchemaVersion = 2;                // PRAGMA user_version we write
+inline constexpr int kSchemaVersion = 3;                // PRAGMA user_version we write
 
 // What went wrong, as the exit code the command line gives (sysexits).
 enum class Fault {
@@ -149,6 +149,19 @@ struct ImdEntry {
     std::string block;
 };
 
+// An exercise's attempt (pupitre-exercise(5)). `submitted_ms` 0: in progress.
+struct Attempt {
+    int64_t id = 0;
+    std::string exercise, exercise_sha, student, machine;
+    int64_t started_ms = 0, submitted_ms = 0;
+    std::string seed;
+    int score = 0;
+    double seconds = 0;
+    int crashes = 0;
+    bool scrapped = false;
+    std::string mistakes, found, report, signature;
+};
+
 // One connection to a store file. Not shared between threads: a thread or a
 // process opens its own; SQLite serialises the writers (WAL, BEGIN IMMEDIATE).
 class Store {
@@ -215,6 +228,22 @@ class Store {
     Error set_setting(std::string_view key, std::string_view value);
     Error add_imd(std::string_view machine, std::string_view block);
     Result<std::vector<ImdEntry>> imd_history(std::string_view machine, int limit = 100);
+
+    // Training (store/training.cpp): the class's exercises, the attempts.
+    Error put_exercise(std::string_view name, std::string_view text);
+    Result<std::optional<std::string>> exercise(std::string_view name);
+    Result<std::vector<std::string>> exercises();
+    // The attempt of `student` at `exercise` still in progress, if any.
+    Result<std::optional<Attempt>> open_attempt(std::string_view exercise,
+                                                std::string_view student);
+    // Starts an attempt (its id filled in, its machine named after it).
+    Error start_attempt(Attempt& a);
+    Error add_crash(int64_t id);
+    // Writes the grade of an attempt in progress; not_found when it was
+    // submitted already.
+    Error submit_attempt(const Attempt& a);
+    // Every attempt (of one exercise when `exercise` is given), oldest first.
+    Result<std::vector<Attempt>> attempts(std::string_view exercise = "");
 
     // PRAGMA data_version: it changes when another connection (another console)
     // commits, not on this one's own writes. Polled to follow other consoles.

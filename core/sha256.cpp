@@ -1,13 +1,14 @@
 // SHA-256 (FIPS 180-4), straight from the standard's description.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "console/sha256.hpp"
+#include "core/sha256.hpp"
 
 #include <array>
 #include <cstdint>
 #include <cstdio>
+#include <string>
 #include <vector>
 
-namespace pupitre::console {
+namespace pupitre {
 
 namespace {
 
@@ -67,4 +68,26 @@ std::string sha256_hex(std::string_view data) {
     return out;
 }
 
-}  // namespace pupitre::console
+namespace {
+std::string unhex(const std::string& hex) {
+    std::string out;
+    for (size_t i = 0; i + 1 < hex.size(); i += 2)
+        out += char(std::stoi(hex.substr(i, 2), nullptr, 16));
+    return out;
+}
+}  // namespace
+
+// RFC 2104 with a 64-byte block: H((K ^ opad) || H((K ^ ipad) || m)).
+std::string hmac_sha256_hex(std::string_view key, std::string_view data) {
+    std::string k = key.size() > 64 ? unhex(sha256_hex(key)) : std::string(key);
+    k.resize(64, '\0');
+    std::string inner(64, '\0'), outer(64, '\0');
+    for (size_t i = 0; i < 64; ++i) {
+        inner[i] = char(k[i] ^ 0x36);
+        outer[i] = char(k[i] ^ 0x5c);
+    }
+    inner.append(data);
+    return sha256_hex(outer + unhex(sha256_hex(inner)));
+}
+
+}  // namespace pupitre

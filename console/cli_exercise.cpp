@@ -1,0 +1,234 @@
+// pupitre exercise and pupitre class report (issue 16, pupitre-exercise(5)):
+// the exercises checked, added, listed and drawn again for the teacher; the
+// class's attempts as a table, CSV or a printable HTML report.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <algorithm>
+#include <cstdio>
+#include <ctime>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "console/class_report.hpp"
+#include "console/cli.hpp"
+#include "console/exercise.hpp"
+#include "core/i18n.hpp"
+#include "store/store.hpp"
+
+namespace pupitre::cli {
+
+namespace {
+
+bool read_text(const std::string& path, std::string& text) {
+    std::ifstream f(path, std::ios::binary);
+    if (!f) return false;
+    std::stringstream ss;
+    ss << f.rdbuf();
+    text = ss.str();
+    return true;
+}
+
+// check FILE...: each file parsed and checked as a whole.
+int exercise_check(const std::vector<std::string>& files) {
+    if (files.empty()) {
+        std::fputs(tr("pupitre: exercise check needs a FILE\n"), stderr);
+        return kUsage;
+    }
+    int rc = kOk;
+    for (const std::string& f : files) {
+        std::string text;
+        if (!read_text(f, text)) {
+            std::fprintf(stderr, tr("pupitre: cannot read %s\n"), f.c_str());
+            rc = kNoInput;
+            continue;
+        }
+        training::Exercise e;
+        std::string why = training::parse_exercise(text, e);
+        if (why.empty()) why = training::check_exercise(e);
+        if (!why.empty()) {
+            std::istringstream lines(why);
+            for (std::string l; std::getline(lines, l);)
+                std::printf("%s: %s\n", f.c_str(), l.c_str());
+            if (rc == kOk) rc = kDataErr;
+            continue;
+        }
+        std::printf(tr("%s: exercise %s on the %s: %zu values to find, %zu dimensions, %s\n"),
+                    f.c_str(), e.name.c_str(), e.machine.c_str(), e.find.size(),
+                    e.dimensions.size(),
+                    e.drawn() ? tr("a truth drawn for each student") : tr("one truth for all"));
+    }
+    return rc;
+}
+
+int exercise_list(const ExerciseArgs& a) {
+    std::unique_ptr<store::Store> st;
+    if (int rc = open_store(a.db, st)) return rc;
+    auto listed = [](const std::string& where, const std::string& name,
+                     const training::Exercise& e) {
+        std::printf("%-18s %-6s %-8s %s\n", name.c_str(), e.machine.c_str(), where.c_str(),
+                    e.title.c_str());
+    };
+    for (const std::string& n : training::builtin_exercises()) {
+        training::Exercise e;
+        if (training::builtin_exercise(n, e)) listed(tr("shipped"), n, e);
+    }
+    auto r = st->exercises();
+    if (r.error) return report(r.error);
+    for (const std::string& n : r.value) {
+        training::Exercise e;
+        if (console::find_exercise(st.get(), n, e).empty()) listed(tr("class"), n, e);
+    }
+    return kOk;
+}
+
+// add FILE: the class's own exercise, kept in the store.
+int exercise_add(const ExerciseArgs& a) {
+    std::string text;
+    if (a.words.size() != 2 || !read_text(a.words[1], text)) {
+        std::fputs(tr("pupitre: exercise add needs a readable FILE\n"), stderr);
+        return kUsage;
+    }
+    training::Exercise e;
+    std::string why = training::parse_exercise(text, e);
+    if (why.empty()) why = training::check_exercise(e);
+    if (!why.empty()) {
+        std::fprintf(stderr, "%s: %s", a.words[1].c_str(), why.c_str());
+        if (why.back() != '\n') std::fputc('\n', stderr);
+        return kDataErr;
+    }
+    std::unique_ptr<store::Store> st;
+    if (int rc = open_store(a.db, st)) return rc;
+    if (store::Error err = st->put_exercise(e.name, text)) return report(err);
+    std::printf(tr("exercise %s stored: pupitre exercise %s starts it\n"), e.name.c_str(),
+                e.name.c_str());
+    return kOk;
+}
+
+// truth NAME --student S: what the student had to find, for the teacher
+// (the class key is needed: without it the draw is not the student's).
+int exercise_truth(const ExerciseArgs& a) {
+    if (a.words.size() != 2) {
+        std::fputs(tr("pupitre: exercise truth needs a NAME and --student\n"), stderr);
+        return kUsage;
+    }
+    std::unique_ptr<store::Store> st;
+    if (int rc = open_store(a.db, st)) return rc;
+    training::Exercise e;
+    if (std::string why = console::find_exercise(st.get(), a.words[1], e); !why.empty()) {
+        std::fprintf(stderr, tr("pupitre: %s\n"), why.c_str());
+        return kNoInput;
+    }
+    std::string key;
+    if (std::string why = console::class_key(false, key); !why.empty()) {
+        std::fprintf(stderr, tr("pupitre: %s\n"), why.c_str());
+        return kNoInput;
+    }
+    const std::string student = console::student_name(a.student);
+    const uint64_t seed = training::seed_of(e, student, key);
+    workshop::Setup truth;
+    if (std::string why = training::draw_setup(e, seed, truth); !why.empty()) {
+        std::fprintf(stderr, tr("pupitre: %s\n"), why.c_str());
+        return kDataErr;
+    }
+    std::printf(tr("# exercise %s, student %s, seed %016llx\n"), e.name.c_str(), student.c_str(),
+                (unsigned long long)seed);
+    for (const training::Target& t : e.find) {
+        double v = 0;
+        std::string how;
+        training::expected(e, truth, t.name, v, &how);
+        std::printf("%-8s %10.3f   # %s\n", t.name.c_str(), v, how.c_str());
+    }
+    std::printf(tr("# the setup drawn (pupitre-setup(5)):\n%s"), truth.source.c_str());
+    return kOk;
+}
+
+// save NAME: an exercise from the machine's current setup, every value fixed.
+int exercise_save(const ExerciseArgs& a) {
+    if (a.words.size() != 2) {
+        std::fputs(tr("pupitre: exercise save needs a NAME\n"), stderr);
+        return kUsage;
+    }
+    std::unique_ptr<store::Store> st;
+    if (int rc = open_store(a.db, st)) return rc;
+    const std::string machine = a.machine.empty() ? kDefaultMachine : a.machine;
+    auto r = st->workshop(machine);
+    if (r.error) return report(r.error);
+    workshop::Setup s;
+    if (!r.value || !workshop::parse_setup(r.value->setup, s).empty()) {
+        std::fprintf(stderr, tr("pupitre: machine %s has no workshop: :setup puts one on it\n"),
+                     machine.c_str());
+        return kNoInput;
+    }
+    const std::string text = training::exercise_from_setup(s, a.words[1]);
+    if (a.output.empty() || a.output == "-") {
+        std::fputs(text.c_str(), stdout);
+        return kOk;
+    }
+    std::ofstream f(a.output, std::ios::binary);
+    if (!(f << text) || !f.flush()) {
+        std::fprintf(stderr, tr("pupitre: cannot write %s\n"), a.output.c_str());
+        return kCantCreate;
+    }
+    return kOk;
+}
+
+// NAME: the console on the exercise's hidden setup.
+int exercise_start(const ExerciseArgs& a) {
+    ConsoleArgs c = a.console;
+    c.db = a.db;
+    c.exercise = a.words[0];
+    c.student = console::student_name(a.student);
+    return console(c);
+}
+
+}  // namespace
+
+int exercise(const ExerciseArgs& a) {
+    const std::string what = a.words.empty() ? "list" : a.words[0];
+    if (what == "list") return exercise_list(a);
+    if (what == "check")
+        return exercise_check(std::vector<std::string>(a.words.begin() + 1, a.words.end()));
+    if (what == "add") return exercise_add(a);
+    if (what == "truth") return exercise_truth(a);
+    if (what == "save") return exercise_save(a);
+    if (a.words.size() != 1) {
+        std::fputs(tr("pupitre: exercise NAME takes nothing after the name\n"), stderr);
+        return kUsage;
+    }
+    return exercise_start(a);
+}
+
+// class report [EXERCISE]: the table, --csv, or --html FILE.
+int class_report(const ExerciseArgs& a) {
+    if (a.words.empty() || a.words[0] != "report" || a.words.size() > 2) {
+        std::fputs(tr("pupitre: class report [EXERCISE] [--csv | --html FILE]\n"), stderr);
+        return kUsage;
+    }
+    const std::string exercise = a.words.size() == 2 ? a.words[1] : "";
+    std::unique_ptr<store::Store> st;
+    if (int rc = open_store(a.db, st)) return rc;
+    auto r = st->attempts(exercise);
+    if (r.error) return report(r.error);
+    std::string key;
+    if (!console::class_key(false, key).empty()) key.clear();
+    const console::ReportFormat f = a.csv               ? console::ReportFormat::csv
+                                    : !a.output.empty() ? console::ReportFormat::html
+                                                        : console::ReportFormat::table;
+    const std::string title =
+        exercise.empty() ? std::string(tr("pupitre: the class's attempts"))
+                         : strf(tr("pupitre: the class's attempts at %s"), exercise.c_str());
+    const std::string text = console::class_report_text(r.value, f, key, title);
+    if (f != console::ReportFormat::html || a.output == "-") {
+        std::fputs(text.c_str(), stdout);
+        return kOk;
+    }
+    std::ofstream out(a.output, std::ios::binary);
+    if (!(out << text) || !out.flush()) {
+        std::fprintf(stderr, tr("pupitre: cannot write %s\n"), a.output.c_str());
+        return kCantCreate;
+    }
+    std::printf(tr("the report written to %s\n"), a.output.c_str());
+    return kOk;
+}
+
+}  // namespace pupitre::cli

@@ -1,0 +1,162 @@
+// Training in the console (see exercise.hpp): the class's key, the attempt
+// on a hidden setup, :submit and the report.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "console/exercise.hpp"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "console/session.hpp"
+#include "core/i18n.hpp"
+#include "core/sha256.hpp"
+#include "core/workshop/workshop.hpp"
+#include "store/store.hpp"
+
+namespace pupitre::console {
+
+namespace {
+
+std::string read_file(const std::string& path, bool& ok) {
+    std::ifstream f(path, std::ios::binary);
+    ok = bool(f);
+    std::stringstream ss;
+    if (ok) ss << f.rdbuf();
+    return ss.str();
+}
+
+std::string random_hex(std::string& why) {
+    unsigned char b[32];
+    int fd = open("/dev/urandom", O_RDONLY | O_CLOEXEC);
+    if (fd < 0 || read(fd, b, sizeof b) != ssize_t(sizeof b)) {
+        why = strf(tr("cannot read /dev/urandom: %s"), std::strerror(errno));
+        if (fd >= 0) close(fd);
+        return {};
+    }
+    close(fd);
+    std::string out;
+    char h[3];
+    for (unsigned char c : b) {
+        std::snprintf(h, sizeof h, "%02x", c);
+        out += h;
+    }
+    return out;
+}
+
+// A keystream from SHA-256 of the seed and a counter, XORed in, as hex.
+std::string keystream_xor(const std::string& in, uint64_t seed) {
+    std::string out = in, block;
+    for (size_t i = 0; i < out.size(); ++i) {
+        if (i % 32 == 0) {
+            std::string h = sha256_hex(std::to_string(seed) + ":" + std::to_string(i / 32));
+            block.clear();
+            for (size_t k = 0; k < 64; k += 2)
+                block += char(std::stoi(h.substr(k, 2), nullptr, 16));
+        }
+        out[i] = char(out[i] ^ block[i % 32]);
+    }
+    return out;
+}
+
+}  // namespace
+
+std::string class_key_path() {
+    if (const char* k = std::getenv("PUPITRE_CLASS_KEY"); k && *k) return k;
+    if (const char* x = std::getenv("XDG_CONFIG_HOME"); x && *x == '/')
+        return std::string(x) + "/pupitre/class.key";
+    if (const char* h = std::getenv("HOME"); h && *h)
+        return std::string(h) + "/.config/pupitre/class.key";
+    return {};
+}
+
+std::string class_key(bool create, std::string& key) {
+    const std::string path = class_key_path();
+    if (path.empty()) return tr("no place for the class key: set PUPITRE_CLASS_KEY or HOME");
+    bool ok = false;
+    std::string text = read_file(path, ok);
+    if (ok) {
+        while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
+        if (text.size() < 16) return strf(tr("the class key %s is too short"), path.c_str());
+        key = text;
+        return {};
+    }
+    if (!create)
+        return strf(tr("no class key at %s: the teacher's key is needed (PUPITRE_CLASS_KEY)"),
+                    path.c_str());
+    std::string why;
+    std::string fresh = random_hex(why);
+    if (fresh.empty()) return why;
+    std::error_code ec;
+    std::filesystem::create_directories(std::filesystem::path(path).parent_path(), ec);
+    int fd = open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+    if (fd < 0)
+        return strf(tr("cannot create the class key %s: %s"), path.c_str(), std::strerror(errno));
+    fresh += '\n';
+    bool written = write(fd, fresh.data(), fresh.size()) == ssize_t(fresh.size());
+    close(fd);
+    if (!written) return strf(tr("cannot write the class key %s"), path.c_str());
+    fresh.pop_back();
+    key = fresh;
+    return {};
+}
+
+std::string find_exercise(store::Store* st, const std::string& name, training::Exercise& e) {
+    std::string text;
+    const bool file = name.find('/') != std::string::npos ||
+                      (name.size() > 9 && name.substr(name.size() - 9) == ".exercise");
+    if (file) {
+        bool ok = false;
+        text = read_file(name, ok);
+        if (!ok) return strf(tr("cannot read %s"), name.c_str());
+    } else if (auto r = st ? st->exercise(name) : store::Result<std::optional<std::string>>{};
+               r.value) {
+        text = *r.value;
+    } else if (training::builtin_exercise(name, e)) {
+        return {};
+    } else {
+        return strf(tr("no exercise named %s (pupitre exercise list)"), name.c_str());
+    }
+    if (std::string why = training::parse_exercise(text, e); !why.empty())
+        return strf(tr("%s: %s"), name.c_str(), why.c_str());
+    return {};
+}
+
+std::string student_name(const std::string& asked) {
+    return asked.empty() ? store::os_user() : asked;
+}
+
+std::string scramble(const std::string& text, uint64_t seed) {
+    std::string x = keystream_xor(text, seed), out = "scrambled:";
+    char h[3];
+    for (unsigned char c : x) {
+        std::snprintf(h, sizeof h, "%02x", c);
+        out += h;
+    }
+    return out;
+}
+
+std::string unscramble(const std::string& text, uint64_t seed) {
+    if (text.rfind("scrambled:", 0) != 0) return {};
+    std::string raw;
+    for (size_t i = 10; i + 1 < text.size(); i += 2)
+        raw += char(std::stoi(text.substr(i, 2), nullptr, 16));
+    return keystream_xor(raw, seed);
+}
+
+std::string sign_attempt(const store::Attempt& a, const std::string& key) {
+    std::string fields = strf("%lld|%s|%s|%s|%lld|%lld|%s|%d|%.3f|%d|%d|", (long long)a.id,
+                              a.exercise.c_str(), a.exercise_sha.c_str(), a.student.c_str(),
+                              (long long)a.started_ms, (long long)a.submitted_ms, a.seed.c_str(),
+                              a.score, a.seconds, a.crashes, a.scrapped ? 1 : 0);
+    fields += a.mistakes + "|" + a.found + "|" + a.report;
+    return hmac_sha256_hex(key, fields);
+}
+
+}  // namespace pupitre::console

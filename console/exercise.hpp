@@ -1,0 +1,52 @@
+// The console's side of training (issue 16, pupitre-exercise(5)): the class's
+// key, finding an exercise, and the attempt a Session runs on a hidden
+// setup. The truth is drawn here and handed to the workshop; no page,
+// command, trace or log shows it before :submit.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/training/grade.hpp"
+#include "store/store.hpp"
+
+namespace pupitre::console {
+
+// The class's key file: $PUPITRE_CLASS_KEY, else
+// $XDG_CONFIG_HOME/pupitre/class.key, else ~/.config/pupitre/class.key.
+std::string class_key_path();
+// Reads the key into `key`; when the file does not exist and `create`,
+// makes one (mode 0600, 32 random bytes in hex). "" or what went wrong.
+std::string class_key(bool create, std::string& key);
+
+// An exercise by name (the store's, then the shipped ones) or a file
+// (a name with a '/' or ending in .exercise). "" or what is wrong.
+std::string find_exercise(store::Store* st, const std::string& name, training::Exercise& e);
+
+// The student: `asked`, else the OS user.
+std::string student_name(const std::string& asked);
+
+// An attempt in progress, or graded.
+struct ExerciseRun {
+    training::Exercise ex;
+    std::string student, key;
+    uint64_t seed = 0;
+    workshop::Setup truth;
+    store::Attempt attempt;
+    training::Context ctx;  // the shims placed, the diameters read
+    size_t crashes_seen = 0;
+    std::optional<training::Grade> grade;
+    std::vector<std::string> report;  // after :submit
+};
+
+// The workshop's part as the store keeps it during an exercise: scrambled
+// with the seed, so that the part's outline in machine coordinates (which
+// gives the stock's place away) is not there for sqlite3 to show.
+std::string scramble(const std::string& text, uint64_t seed);
+std::string unscramble(const std::string& text, uint64_t seed);
+
+// The signature of a graded attempt: HMAC-SHA-256 of its fields with the key.
+std::string sign_attempt(const store::Attempt& a, const std::string& key);
+
+}  // namespace pupitre::console

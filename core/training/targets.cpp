@@ -1,0 +1,191 @@
+// What a student must find, from the truth: PREF and DEC1 from where the
+// part really is, the correctors from what each tool really measures, each
+// with its arithmetic for the report (seed 004:552-580: the setting is the
+// identification of the constants of the machine's equation).
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <charconv>
+
+#include "core/i18n.hpp"
+#include "core/training/exercise.hpp"
+
+namespace pupitre::training {
+
+namespace {
+
+struct Name {
+    enum Kind { pref, dec1, corr } kind = pref;
+    char axis = 0;      // PREF and DEC1
+    int d = 0;          // Dn
+    std::string field;  // X, Z, R, DX, DZ, L, DL, DR
+};
+
+bool split(std::string_view s, Name& n) {
+    size_t dot = s.find('.');
+    if (dot == std::string_view::npos) return false;
+    std::string_view head = s.substr(0, dot), tail = s.substr(dot + 1);
+    if (head == "PREF" || head == "DEC1") {
+        n.kind = head == "PREF" ? Name::pref : Name::dec1;
+        if (tail.size() != 1) return false;
+        n.axis = tail[0];
+        return true;
+    }
+    if (head.size() < 2 || head[0] != 'D') return false;
+    auto r = std::from_chars(head.data() + 1, head.data() + head.size(), n.d);
+    if (r.ec != std::errc() || r.ptr != head.data() + head.size() || n.d < 1 || n.d > 99)
+        return false;
+    n.kind = Name::corr;
+    n.field = std::string(tail);
+    return true;
+}
+
+std::string mm(double v) {
+    return strf("%.3f", std::abs(v) < 5e-7 ? 0.0 : v);
+}
+
+// The lathe's origins: the spindle axis for X; for Z the part's face (origin
+// = face) or the jaws' face with DEC1 Z the stick-out (origin = jaws, as
+// seed 004's exam sets it: PREF on the work-holder, DEC1 to the part).
+bool lathe_origin(const Exercise& e, const workshop::LatheSetup& l, const Name& n, double& v,
+                  std::string* how) {
+    const bool jaws = e.origin == "jaws";
+    std::string text;
+    if (n.axis == 'X') {
+        v = n.kind == Name::pref ? l.axis_x : 0;
+        text = n.kind == Name::pref
+                   ? strf(tr("PREF X = the spindle axis, as a tool point reads it = %s"),
+                          mm(v).c_str())
+                   : std::string(tr("DEC1 X = 0: the program's origin is on the axis"));
+    } else if (n.axis == 'Z' && n.kind == Name::pref) {
+        v = jaws ? l.chuck_z : l.chuck_z + l.stickout;
+        text = jaws ? strf(tr("PREF Z = the jaws' face = %s"), mm(v).c_str())
+                    : strf(tr("PREF Z = the jaws' face + the stick-out = %s + %s = %s"),
+                           mm(l.chuck_z).c_str(), mm(l.stickout).c_str(), mm(v).c_str());
+    } else if (n.axis == 'Z') {
+        v = jaws ? l.stickout : 0;
+        text = jaws ? strf(tr("DEC1 Z = the part's face - the jaws' face = the stick-out = %s"),
+                           mm(v).c_str())
+                    : std::string(tr("DEC1 Z = 0: PREF is on the part's face"));
+    } else {
+        return false;
+    }
+    if (how) *how = text;
+    return true;
+}
+
+bool mill_origin(const Exercise& e, const workshop::MillSetup& m, const Name& n, double& v,
+                 std::string* how) {
+    const bool centre = e.origin == "centre";
+    std::string text;
+    if (n.kind == Name::dec1) {
+        if (n.axis != 'X' && n.axis != 'Y' && n.axis != 'Z') return false;
+        v = 0;
+        text = strf(tr("DEC1 %c = 0: PREF is the program's origin"), n.axis);
+    } else if (n.axis == 'X' || n.axis == 'Y') {
+        const double face = n.axis == 'X' ? m.stock_x : m.stock_y;
+        const double half = (n.axis == 'X' ? m.length : m.width) / 2;
+        v = centre ? face + half : face;
+        text = centre
+                   ? strf(tr("PREF %c = the block's -%c face + half its size = %s + %s = %s"),
+                          n.axis, n.axis, mm(face).c_str(), mm(half).c_str(), mm(v).c_str())
+                   : strf(tr("PREF %c = the block's -%c face = %s"), n.axis, n.axis, mm(v).c_str());
+    } else if (n.axis == 'Z') {
+        v = m.stock_z + m.height;
+        text = strf(tr("PREF Z = the block's top face = its bottom + its height = %s + %s = %s"),
+                    mm(m.stock_z).c_str(), mm(m.height).c_str(), mm(v).c_str());
+    } else {
+        return false;
+    }
+    if (how) *how = text;
+    return true;
+}
+
+// A corrector's true value: the tool's gauge, radius or length; a wear
+// field (DX…) what brings the given gauge to the truth.
+bool corrector(const Exercise& e, const workshop::Setup& s, const Name& n, double& v,
+               std::string* how) {
+    const workshop::ToolTruth* t = s.tool(n.d);
+    if (!t) return false;
+    const bool lathe = s.kind == "lathe";
+    const std::string& f = n.field;
+    std::string text;
+    if (f == "DX" || f == "DZ" || f == "DL" || f == "DR") {
+        const std::string base = "D" + std::to_string(n.d) + "." + f.substr(1);
+        double truth = 0, given = 0;
+        expected(e, s, base, truth);
+        if (!start_value(e, s, base, given)) given = truth;
+        v = truth - given;
+        text = strf(tr("D%d %s = T%d's true %s - D%d %s as given = %s - %s = %s"), n.d, f.c_str(),
+                    n.d, f.c_str() + 1, n.d, f.c_str() + 1, mm(truth).c_str(), mm(given).c_str(),
+                    mm(v).c_str());
+        // A lathe's DX is a diameter (the NUM's CORR page; interp: X + DX / 2).
+        if (lathe && f == "DX") {
+            v *= 2;
+            text = strf(tr("D%d DX = 2 \u00d7 (T%d's true X - D%d X as given), a diameter = 2 "
+                           "\u00d7 (%s - %s) = %s"),
+                        n.d, n.d, n.d, mm(truth).c_str(), mm(given).c_str(), mm(v).c_str());
+        }
+    } else if (lathe && (f == "X" || f == "Z")) {
+        v = f == "X" ? t->x : t->z;
+        text = f == "X"
+                   ? strf(tr("D%d X = T%d's true gauge X (a radius) = %s"), n.d, n.d, mm(v).c_str())
+                   : strf(tr("D%d Z = T%d's true gauge Z = %s"), n.d, n.d, mm(v).c_str());
+    } else if (f == "R") {
+        v = t->radius;
+        text = strf(lathe ? tr("D%d R = T%d's nose radius = %s") : tr("D%d R = T%d's radius = %s"),
+                    n.d, n.d, mm(v).c_str());
+    } else if (!lathe && f == "L") {
+        v = t->length;
+        text =
+            strf(tr("D%d L = T%d's true length from the gauge line = %s"), n.d, n.d, mm(v).c_str());
+    } else {
+        return false;
+    }
+    if (how) *how = text;
+    return true;
+}
+
+}  // namespace
+
+bool target_name(std::string_view name, bool lathe) {
+    Name n;
+    if (!split(name, n)) return false;
+    if (n.kind != Name::corr)
+        return lathe ? n.axis == 'X' || n.axis == 'Z'
+                     : n.axis == 'X' || n.axis == 'Y' || n.axis == 'Z';
+    static constexpr std::string_view kLathe[] = {"X", "Z", "R", "DX", "DZ"};
+    static constexpr std::string_view kMill[] = {"L", "R", "DL", "DR"};
+    if (lathe) {
+        for (std::string_view f : kLathe)
+            if (n.field == f) return true;
+    } else {
+        for (std::string_view f : kMill)
+            if (n.field == f) return true;
+    }
+    return false;
+}
+
+bool expected(const Exercise& e, const workshop::Setup& s, const std::string& name, double& v,
+              std::string* how) {
+    Name n;
+    if (!split(name, n) || !target_name(name, s.kind == "lathe")) return false;
+    if (n.kind == Name::corr) return corrector(e, s, n, v, how);
+    return s.kind == "lathe" ? lathe_origin(e, s.lathe, n, v, how)
+                             : mill_origin(e, s.mill, n, v, how);
+}
+
+bool start_value(const Exercise& e, const workshop::Setup& truth, const std::string& name,
+                 double& v) {
+    for (const Start& st : e.start) {
+        if (st.name != name) continue;
+        v = st.value;
+        if (st.from_truth) {
+            double t = 0;
+            if (!expected(e, truth, name, t)) return false;
+            v += t;
+        }
+        return true;
+    }
+    return false;
+}
+
+}  // namespace pupitre::training

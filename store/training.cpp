@@ -1,0 +1,153 @@
+// Training in the store (issue 16): the class's exercises and every attempt
+// with its grade. One statement per call: SQLite makes each atomic.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/i18n.hpp"
+#include "store/sql.hpp"
+#include "store/store.hpp"
+
+namespace pupitre::store {
+
+namespace {
+
+constexpr const char* kAttemptColumns =
+    "id, exercise, exercise_sha, student, machine, started_ms, submitted_ms, seed, score, "
+    "seconds, crashes, scrapped, mistakes, found, report, signature";
+
+Attempt read_attempt(const sql::Use& u) {
+    Attempt a;
+    a.id = u.i64(0);
+    a.exercise = u.str(1);
+    a.exercise_sha = u.str(2);
+    a.student = u.str(3);
+    a.machine = u.str(4);
+    a.started_ms = u.i64(5);
+    a.submitted_ms = u.is_null(6) ? 0 : u.i64(6);
+    a.seed = u.str(7);
+    a.score = u.is_null(8) ? 0 : u.i32(8);
+    a.seconds = u.is_null(9) ? 0 : u.f64(9);
+    a.crashes = u.i32(10);
+    a.scrapped = u.i32(11) != 0;
+    a.mistakes = u.str(12);
+    a.found = u.str(13);
+    a.report = u.str(14);
+    a.signature = u.str(15);
+    return a;
+}
+
+}  // namespace
+
+Error Store::put_exercise(std::string_view name, std::string_view text) {
+    Error e;
+    sql::Use u(
+        prepare("INSERT INTO exercises (name, text, added_ms, who) VALUES (?1, ?2, ?3, ?4) "
+                "ON CONFLICT (name) DO UPDATE SET text = ?2, added_ms = ?3, who = ?4",
+                e));
+    if (e) return e;
+    if (int rc = u.bind(1, name).bind(2, text).bind(3, now_ms()).bind(4, user_).step();
+        rc != SQLITE_DONE)
+        return fail(rc, tr("cannot store the exercise"));
+    return {};
+}
+
+Result<std::optional<std::string>> Store::exercise(std::string_view name) {
+    Result<std::optional<std::string>> r;
+    Error e;
+    sql::Use u(prepare("SELECT text FROM exercises WHERE name = ?1", e));
+    if ((r.error = e)) return r;
+    int rc = u.bind(1, name).step();
+    if (rc == SQLITE_ROW)
+        r.value = u.str(0);
+    else if (rc != SQLITE_DONE)
+        r.error = fail(rc, tr("cannot read the exercises"));
+    return r;
+}
+
+Result<std::vector<std::string>> Store::exercises() {
+    Result<std::vector<std::string>> r;
+    Error e;
+    sql::Use u(prepare("SELECT name FROM exercises ORDER BY name", e));
+    if ((r.error = e)) return r;
+    int rc;
+    while ((rc = u.step()) == SQLITE_ROW) r.value.push_back(u.str(0));
+    if (rc != SQLITE_DONE) r.error = fail(rc, tr("cannot read the exercises"));
+    return r;
+}
+
+Result<std::optional<Attempt>> Store::open_attempt(std::string_view exercise,
+                                                   std::string_view student) {
+    Result<std::optional<Attempt>> r;
+    Error e;
+    static const std::string sql = std::string("SELECT ") + kAttemptColumns +
+                                   " FROM attempts WHERE exercise = ?1 AND student = ?2 AND "
+                                   "submitted_ms IS NULL ORDER BY id DESC LIMIT 1";
+    sql::Use u(prepare(sql.c_str(), e));
+    if ((r.error = e)) return r;
+    int rc = u.bind(1, exercise).bind(2, student).step();
+    if (rc == SQLITE_ROW)
+        r.value = read_attempt(u);
+    else if (rc != SQLITE_DONE)
+        r.error = fail(rc, tr("cannot read the attempts"));
+    return r;
+}
+
+Error Store::start_attempt(Attempt& a) {
+    Error e;
+    sql::Use u(
+        prepare("INSERT INTO attempts (exercise, exercise_sha, student, machine, started_ms) "
+                "VALUES (?1, ?2, ?3, ?4, ?5)",
+                e));
+    if (e) return e;
+    a.started_ms = now_ms();
+    if (int rc = u.bind(1, a.exercise)
+                     .bind(2, a.exercise_sha)
+                     .bind(3, a.student)
+                     .bind(4, a.machine)
+                     .bind(5, a.started_ms)
+                     .step();
+        rc != SQLITE_DONE)
+        return fail(rc, tr("cannot store the attempt"));
+    a.id = sqlite3_last_insert_rowid(db_);
+    return {};
+}
+
+Error Store::add_crash(int64_t id) {
+    Error e;
+    sql::Use u(prepare("UPDATE attempts SET crashes = crashes + 1 WHERE id = ?1", e));
+    if (e) return e;
+    if (int rc = u.bind(1, id).step(); rc != SQLITE_DONE)
+        return fail(rc, tr("cannot store the attempt"));
+    return {};
+}
+
+Error Store::submit_attempt(const Attempt& a) {
+    Error e;
+    sql::Use u(prepare(
+        "UPDATE attempts SET submitted_ms = ?2, seed = ?3, score = ?4, seconds = ?5, "
+        "crashes = ?6, scrapped = ?7, mistakes = ?8, found = ?9, report = ?10, signature = ?11 "
+        "WHERE id = ?1 AND submitted_ms IS NULL",
+        e));
+    if (e) return e;
+    u.bind(1, a.id).bind(2, a.submitted_ms).bind(3, a.seed).bind(4, a.score).bind(5, a.seconds);
+    u.bind(6, a.crashes).bind(7, a.scrapped ? 1 : 0).bind(8, a.mistakes).bind(9, a.found);
+    u.bind(10, a.report).bind(11, a.signature);
+    if (int rc = u.step(); rc != SQLITE_DONE) return fail(rc, tr("cannot store the attempt"));
+    if (sqlite3_changes(db_) == 0)
+        return {Fault::not_found, tr("the attempt was submitted already")};
+    return {};
+}
+
+Result<std::vector<Attempt>> Store::attempts(std::string_view exercise) {
+    Result<std::vector<Attempt>> r;
+    Error e;
+    static const std::string sql = std::string("SELECT ") + kAttemptColumns +
+                                   " FROM attempts WHERE ?1 = '' OR exercise = ?1 ORDER BY id";
+    sql::Use u(prepare(sql.c_str(), e));
+    if ((r.error = e)) return r;
+    u.bind(1, exercise);
+    int rc;
+    while ((rc = u.step()) == SQLITE_ROW) r.value.push_back(read_attempt(u));
+    if (rc != SQLITE_DONE) r.error = fail(rc, tr("cannot read the attempts"));
+    return r;
+}
+
+}  // namespace pupitre::store
