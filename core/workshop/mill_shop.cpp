@@ -149,7 +149,7 @@ double Workshop::mill_depth(const Cutter& c, const P3& tip, Met& what) const {
 // (`with_material`: the flute too; else only the shank and the holder, the
 // flute cutting) and every fixture.
 Workshop::Contact Workshop::mill_first(const Cutter& c, const P3& a, const P3& b, double depth,
-                                       bool with_material, bool before) const {
+                                       bool with_material, bool before, double flute_depth) const {
     Contact k;
     auto keep = [&](double f, Met h, Part p) {
         if (f < k.f) k = Contact{f, h, p};
@@ -159,11 +159,12 @@ Workshop::Contact Workshop::mill_first(const Cutter& c, const P3& a, const P3& b
     // the flute on a rapid over the part).
     const double low = std::min(a[2], b[2]), top = mill_->stock().hi[2] + depth;
     for (Part p : kParts) {
-        if ((with_material || p != Part::flute) && low + span_of(c, p).base < top)
-            keep(mill_->first_contact(c, a, b, p, depth, before), Met::material, p);
+        const double d = p == Part::flute && flute_depth >= 0 ? flute_depth : depth;
+        if ((with_material || p != Part::flute) && low + span_of(c, p).base < top + (d - depth))
+            keep(mill_->first_contact(c, a, b, p, d, before), Met::material, p);
         for (const Fixture& f : fixtures_)
             if (may_meet(c, p, a, b, f.box))
-                keep(marched(a, b, depth, before, [&](const P3& q) { return f.depth(c, q, p); }),
+                keep(marched(a, b, d, before, [&](const P3& q) { return f.depth(c, q, p); }),
                      f.what, p);
     }
     return k;
@@ -199,6 +200,8 @@ const char* hit_name(int h) {
 
 std::string Workshop::mill_crash_text(int code, const Contact& c, const std::string& place) const {
     const char* p = place.c_str();
+    if (code == kCrashProbe && finder())
+        return strf(tr("crash: the edge finder T%d was bent against the part %s"), tool_, p);
     if (std::string s = part_crash_text(code, current()->truth->spindle, p); !s.empty()) return s;
     const char* what = tr(hit_name(int(c.what)));
     if (c.part == Part::holder)
@@ -228,11 +231,15 @@ bool Workshop::mill_stroke(const MoveEvent& e, const P3& a, const P3& b, const A
     if (!t) return true;
     const ToolTruth& tt = *t->truth;
     const bool feed = e.g != 0, stopped = dir_ != 3 && dir_ != 4;
-    const bool cutting = feed && !stopped && !tt.probe && (tt.spindle == 0 || tt.spindle == dir_);
-    const int flute_code = tt.probe  ? kCrashProbe
-                           : !feed   ? kCrashRapid
-                           : stopped ? kCrashStopped
-                                     : kCrashDirection;
+    // An edge finder never cuts: fed into the part it is bent (1205, as a
+    // probe); a rapid is any tool's 1200.
+    const bool cutting =
+        feed && !stopped && !tt.probe && !tt.finder && (tt.spindle == 0 || tt.spindle == dir_);
+    const int flute_code = tt.probe    ? kCrashProbe
+                           : !feed     ? kCrashRapid
+                           : tt.finder ? kCrashProbe
+                           : stopped   ? kCrashStopped
+                                       : kCrashDirection;
     // Cutting deeper than the flute, the piece goes in steps of at most 1 mm
     // (half the flute for a short one). The shank and the holder are checked against the
     // material before each step is cut: plunging, they follow the flute down
@@ -252,19 +259,23 @@ bool Workshop::mill_stroke(const MoveEvent& e, const P3& a, const P3& b, const A
         const P3 end = hit.f > 1 ? q : lerp(p, q, hit.f);
         if (cutting && mill_->cut(c, p, end) > 0) t->cut += dist(p, end);
         if (hit.f > 1) continue;
-        const double f = f0 + hit.f * (f1 - f0);
-        Crash cr;
-        cr.code = hit.what == Met::material ? (hit.part == Part::flute ? flute_code : kCrashHolder)
-                                            : kCrashChuck;
-        cr.loc = e.loc;
-        cr.tool = tool_;
-        cr.fraction = f;
-        for (size_t i = 0; i < cr.om.size(); ++i) cr.om[i] = oma[i] + f * (omb[i] - oma[i]);
-        cr.what = mill_crash_text(cr.code, hit, mill_where(lerp(a, b, f)));
-        crashes_.push_back(std::move(cr));
+        mill_crash(e, flute_code, hit, a, b, oma, omb, f0 + hit.f * (f1 - f0));
         return false;
     }
     return true;
+}
+
+void Workshop::mill_crash(const MoveEvent& e, int flute_code, const Contact& hit, const P3& a,
+                          const P3& b, const Axes& oma, const Axes& omb, double f) {
+    Crash cr;
+    cr.code = hit.what == Met::material ? (hit.part == Part::flute ? flute_code : kCrashHolder)
+                                        : kCrashChuck;
+    cr.loc = e.loc;
+    cr.tool = tool_;
+    cr.fraction = f;
+    for (size_t i = 0; i < cr.om.size(); ++i) cr.om[i] = oma[i] + f * (omb[i] - oma[i]);
+    cr.what = mill_crash_text(cr.code, hit, mill_where(lerp(a, b, f)));
+    crashes_.push_back(std::move(cr));
 }
 
 Outcome Workshop::mill_apply(const MoveEvent& e) {
@@ -303,7 +314,7 @@ Outcome Workshop::mill_jog(const MoveEvent& e, bool continuous) {
         shim_ > 0 && mill_->depth_into(cutter(shim_ + kNear), below(a, shim_ + kNear),
                                        Part::flute) > kTouchDepth;
     if (on_shim && !continuous) return on_the_shim(e.from_mach, tool_);
-    if (touching && !continuous) return mill_apply(e);
+    if (touching && !continuous) return finder() ? finder_push(e) : mill_apply(e);
     // A held key slides along or away, and stops again before going deeper.
     const double limit =
         touching ? std::max(kTouchDepth, mill_depth(cutter(), a, what)) : kTouchDepth;
@@ -316,13 +327,77 @@ Outcome Workshop::mill_jog(const MoveEvent& e, bool continuous) {
             mill_->first_contact(over, oa, ob, Part::flute, std::max(kTouchDepth, deep), true);
         if (f < k.f) k = Contact{f, Met::shim, Part::flute};
     }
-    if (k.f > 1) return mill_apply(e);
+    // A finder pushed aside (finder_push) moves off the face without crashing.
+    if (k.f > 1) return finder() ? o : mill_apply(e);
     o.touched = true;
     o.fraction = k.f;
     for (size_t i = 0; i < o.stop.size(); ++i)
         o.stop[i] = e.from_mach[i] + k.f * (e.to_mach[i] - e.from_mach[i]);
-    o.what = mill_touch_text(k, mill_where(lerp(a, b, k.f)));
+    const std::string place = mill_where(lerp(a, b, k.f));
+    o.what =
+        finder() && k.what != Met::shim ? finder_text(k, a, b, place) : mill_touch_text(k, place);
     return o;
+}
+
+bool Workshop::finder() const {
+    const Tool* t = current();
+    return t && t->truth->finder;
+}
+
+// From the kick an increment pushes the finder's lower part aside on its
+// spring, the spindle's axis going on towards the face: up to kFinderTravel,
+// then it is bent (1205; the shank and the holder are rigid, 1203 and 1202).
+Outcome Workshop::finder_push(const MoveEvent& e) {
+    Outcome o;
+    const P3 a = tip3(e.from_mach), b = tip3(e.to_mach);
+    const Cutter c = cutter();
+    const Contact hit = mill_first(c, a, b, kCrashDepth, true, false, kFinderTravel);
+    if (hit.f <= 1) {
+        mill_crash(e, kCrashProbe, hit, a, b, e.from_mach, e.to_mach, hit.f);
+        o.crashed = true;
+        o.stop = crashes_.back().om;
+        o.fraction = hit.f;
+        o.what = crashes_.back().what;
+        return o;
+    }
+    Met what = Met::none;
+    const double aside = mill_depth(c, b, what);
+    if (aside <= kTouchDepth) return o;  // off the face: it runs true again
+    o.touched = true;
+    o.stop = e.to_mach;
+    o.what = strf(tr("the edge finder T%d is pushed %s mm aside; past %s mm it bends"), tool_,
+                  fixed3(aside).c_str(), fixed3(kFinderTravel).c_str());
+    return o;
+}
+
+// The kick: the finder's lower part, running true, leaves the axis as its
+// side meets a face square to a horizontal jog along X or Y, the spindle's
+// axis one radius from the face. Anything else is a plain contact.
+std::string Workshop::finder_text(const Contact& k, const P3& a, const P3& b,
+                                  const std::string& place) const {
+    const char* p = place.c_str();
+    const double dx = b[0] - a[0], dy = b[1] - a[1];
+    const bool side = k.part == Part::flute && a[2] == b[2] && (dx == 0) != (dy == 0);
+    if (!side) return mill_touch_text(k, place);
+    // Still, it wobbles off the axis as it was left: its side touches, no
+    // kick tells where.
+    if (dir_ != 3 && dir_ != 4)
+        return strf(tr("%s, but the spindle is not turning: an edge finder centres and kicks only "
+                       "turning (about 800 rev/min)"),
+                    mill_touch_text(k, place).c_str());
+    if (k.what != Met::material)
+        return strf(tr("the edge finder T%d kicks on %s %s"), tool_, tr(hit_name(int(k.what))), p);
+    const int axis = dx != 0 ? 0 : 1;
+    const bool plus = dx + dy > 0;
+    static const char* const faces[2][2] = {{"+X", "-X"}, {"+Y", "-Y"}};
+    const char* face = faces[axis][plus];
+    // The contact's side of the finder, against the block's own face as
+    // loaded or a wall the tools have cut.
+    const double at = a[axis] + k.f * (b[axis] - a[axis]) + (plus ? 1 : -1) * cutter().radius;
+    const Box3& st = mill_->stock();
+    if (std::abs(at - (plus ? st.lo[axis] : st.hi[axis])) < kNear)
+        return strf(tr("the edge finder T%d kicks on the block's %s face %s"), tool_, face, p);
+    return strf(tr("the edge finder T%d kicks on a wall facing %s %s"), tool_, face, p);
 }
 
 // --- instruments on the machining centre ---

@@ -135,6 +135,12 @@ ToolTruth& tool_at(Setup& s, int position) {
     return s.tools.back();
 }
 
+std::string yes_no(std::string_view val, bool& out) {
+    if (val != "yes" && val != "no") return tr("expected yes or no");
+    out = val == "yes";
+    return {};
+}
+
 // "N.FIELD" with N from 1 to `max`: N and FIELD; false when it is not one.
 bool numbered(std::string_view key, int max, int& n, std::string_view& field) {
     auto r = std::from_chars(key.data(), key.data() + key.size(), n);
@@ -176,14 +182,11 @@ std::string tool_key(Setup& s, std::string_view key, std::string_view val) {
             return tr("expected M3, M4 or any");
         return {};
     }
-    if (field == "probe") {
-        if (val == "yes")
-            t.probe = true;
-        else if (val == "no")
-            t.probe = false;
-        else
-            return tr("expected yes or no");
-        return {};
+    if (field == "probe") return yes_no(val, t.probe);
+    if (field == "finder") {
+        // It finds a block's edges by the spindle's turning, beside X and Y.
+        if (s.kind != "mill") return tr("an edge finder is a machining centre's (kind = mill)");
+        return yes_no(val, t.finder);
     }
     if (field == "holder") return points(val, t.holder);
     return strf(tr("unknown tool field '%.*s'"), int(field.size()), field.data());
@@ -276,6 +279,8 @@ std::string consistent_mill(const Setup& s) {
         if (t.length <= 0) return strf(tr("tool.%d: length is missing"), t.position);
         if (t.corner > t.radius)
             return strf(tr("tool.%d: corner must not exceed radius"), t.position);
+        if (t.probe && t.finder)
+            return strf(tr("tool.%d: a probe or an edge finder, not both"), t.position);
     }
     return {};
 }

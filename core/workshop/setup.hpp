@@ -29,6 +29,9 @@ struct ToolTruth {
     // shank for the orientation (pupitre-setup(5)).
     std::vector<Pt> holder;
     bool probe = false;  // an electric touch probe: never cuts
+    // A mechanical edge finder (a machining centre's): never cuts; its body
+    // is `radius` wide, its lower part `flute` long.
+    bool finder = false;
     // A milling cutter (kind = mill): x and z above are not used; the true
     // length from the gauge line to the tip, and its shape (mill_part.hpp).
     double length = 0;

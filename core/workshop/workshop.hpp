@@ -43,6 +43,10 @@ inline constexpr double kNear = 1e-3;
 // pass along a cut face) is not (mm, about twice the chord error).
 inline constexpr double kCrashDepth = 2e-3;
 
+// An edge finder's lower part, kicked off the axis at the contact, slides on
+// its spring this far aside (mm); driven further it is bent: crash 1205.
+inline constexpr double kFinderTravel = 1.0;
+
 struct Crash {
     int code = 0;
     Loc loc;
@@ -163,13 +167,23 @@ class Workshop final : public MachineSink {
     void mill_fixtures();
     P3 grown_tip(const Axes& om, double g) const;
     Cutter cutter(double grow = 0) const;  // the one in the spindle, worn, grown by `grow`
+    // `flute_depth`: the flute's own limit, when not `depth` (>= 0).
     Contact mill_first(const Cutter& c, const P3& a, const P3& b, double depth, bool with_material,
-                       bool before) const;
+                       bool before, double flute_depth = -1) const;
     double mill_depth(const Cutter& c, const P3& tip, Met& what) const;
     Outcome mill_apply(const MoveEvent& e);
     Outcome mill_jog(const MoveEvent& e, bool continuous);
     bool mill_stroke(const MoveEvent& e, const P3& a, const P3& b, const Axes& oma,
                      const Axes& omb);
+    // Records a crash of `hit` at `f` of the piece a->b (oma->omb).
+    void mill_crash(const MoveEvent& e, int flute_code, const Contact& hit, const P3& a,
+                    const P3& b, const Axes& oma, const Axes& omb, double f);
+    // The edge finder in the spindle: its kick (a jog's contact) and an
+    // increment from it.
+    bool finder() const;
+    Outcome finder_push(const MoveEvent& e);
+    std::string finder_text(const Contact& k, const P3& a, const P3& b,
+                            const std::string& place) const;
     std::string mill_where(const P3& p) const;
     std::string mill_measure(std::string_view word, std::string_view rest, Reading& r) const;
     std::string mill_crash_text(int code, const Contact& c, const std::string& place) const;

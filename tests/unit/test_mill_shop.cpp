@@ -318,6 +318,165 @@ TEST(MillContacts, TheProbesLampAndACrashIntoTheBlock) {
     EXPECT_EQ(j.shop->crashes().front().code, kCrashProbe);
 }
 
+// A Ø10 mechanical edge finder as T6, L 95.012, its lower part 12 long.
+const char* kFinder =
+    "tool.6.length = 95.012\ntool.6.radius = 5\ntool.6.flute = 12\ntool.6.reach = 50\n"
+    "tool.6.holder.diameter = 32\ntool.6.finder = yes\n";
+constexpr double kL6 = 95.012;
+
+// The finder in the spindle, turning M3 at 800 rev/min (`turning`).
+struct Finder : Jogged {
+    explicit Finder(bool turning = true) : Jogged(6, kFinder) {
+        SpindleEvent sp;
+        sp.rpm = 800;
+        sp.dir = turning ? 3 : 5;
+        shop->spindle(sp);
+    }
+};
+
+TEST(MillFinder, TheSetupSaysWhatItIs) {
+    workshop::Setup s;
+    ASSERT_TRUE(builtin_setup("mill", s));
+    ASSERT_EQ(parse_setup(s.source + "\n" + kFinder, s), "");
+    EXPECT_TRUE(s.tool(6)->finder);
+    EXPECT_FALSE(s.tool(6)->probe);
+    EXPECT_FALSE(s.tool(2)->finder);
+    EXPECT_EQ(parse_setup("kind = mill\ntool.1.length = 90\ntool.1.finder = maybe\n", s),
+              "line 3: tool.1.finder: expected yes or no");
+    EXPECT_EQ(parse_setup("kind = mill\ntool.1.length = 90\ntool.1.probe = yes\n"
+                          "tool.1.finder = yes\n",
+                          s),
+              "tool.1: a probe or an edge finder, not both");
+    EXPECT_EQ(parse_setup("kind = lathe\ntool.1.finder = yes\n", s),
+              "line 2: tool.1.finder: an edge finder is a machining centre's (kind = mill)");
+}
+
+TEST(MillFinder, ItKicksOneRadiusFromTheFaceInX) {
+    Finder j;
+    // Beside the -X face (X 48.35), its tip 5 below the top, towards +X:
+    // the axis stops 5 (the radius) before the face.
+    Outcome o = j.jog(at(20, -91.72, -295 + kL6), X, 40);
+    ASSERT_TRUE(o.touched);
+    EXPECT_NEAR(o.stop[X], 48.35 - 5, 1e-3);
+    EXPECT_NE(o.what.find("the edge finder T6 kicks on the block's -X face at X-5.000 Y40.000 "
+                          "Z-5.000 from the block's corner"),
+              std::string::npos)
+        << o.what;
+    // And from beyond the +X face (X 168.35) towards -X, by increments.
+    o = j.jog(at(190, -91.72, -295 + kL6), X, -20, false);
+    ASSERT_TRUE(o.touched);
+    EXPECT_NEAR(o.stop[X], 168.35 + 5, 1e-3);
+    EXPECT_NE(o.what.find("kicks on the block's +X face"), std::string::npos) << o.what;
+    EXPECT_FALSE(j.shop->crashed());
+}
+
+TEST(MillFinder, ItKicksOneRadiusFromTheFaceInY) {
+    Finder j;
+    // Towards +Y onto the -Y face (Y -131.72), over the vice's moving jaw
+    // (its top 10 below the block's).
+    Outcome o = j.jog(at(108.35, -160, -295 + kL6), Y, 40);
+    ASSERT_TRUE(o.touched);
+    EXPECT_NEAR(o.stop[Y], -131.72 - 5, 1e-3);
+    EXPECT_NE(o.what.find("kicks on the block's -Y face"), std::string::npos) << o.what;
+    // The +Y face (Y -51.72) from behind, over the fixed jaw.
+    o = j.jog(at(108.35, -30, -295 + kL6), Y, -40);
+    ASSERT_TRUE(o.touched);
+    EXPECT_NEAR(o.stop[Y], -51.72 + 5, 1e-3);
+    EXPECT_NE(o.what.find("kicks on the block's +Y face"), std::string::npos) << o.what;
+}
+
+TEST(MillFinder, ItKicksOnAPinAndOnAWallTheToolsCut) {
+    Jogged j(6, std::string(kPlate) + kFinder);
+    SpindleEvent sp;
+    sp.dir = 4;  // either way
+    j.shop->spindle(sp);
+    // Along +X, its tip at Z -315: the Ø10 pin's side at X35.
+    Outcome o = j.jog(at(0, -91.72, -315 + kL6), X, 40);
+    ASSERT_TRUE(o.touched);
+    EXPECT_NEAR(o.stop[X], 30, 1e-3);
+    EXPECT_NE(o.what.find("the edge finder T6 kicks on a locating pin"), std::string::npos)
+        << o.what;
+    // Inside the pocket kSlot cuts (X76..104 from the corner), 2 below the
+    // top, towards +X: a cut wall, found to half a cell (and the finder's
+    // round side between the cells' centres).
+    Mill m(kSlot, right(), kFinder);
+    m.shop->tool(Loc{}, 6, 6, 0, true);
+    m.shop->spindle(sp);
+    MoveEvent e;
+    e.g = 1;
+    e.from_mach = at(48.35 + 90, -131.72 + 63, -292 + kL6);
+    e.to_mach = e.from_mach;
+    e.to_mach[X] += 20;
+    e.to_prog = e.to_mach;
+    o = m.shop->jog(e, true);
+    ASSERT_TRUE(o.touched);
+    EXPECT_NEAR(o.stop[X], 48.35 + 104 - 5, 0.051);
+    EXPECT_NE(o.what.find("the edge finder T6 kicks on a wall facing -X"), std::string::npos)
+        << o.what;
+}
+
+TEST(MillFinder, WithTheSpindleStoppedItTouchesButDoesNotKick) {
+    Finder j(false);
+    Outcome o = j.jog(at(20, -91.72, -295 + kL6), X, 40);
+    ASSERT_TRUE(o.touched);
+    EXPECT_NEAR(o.stop[X], 48.35 - 5, 1e-3);
+    EXPECT_EQ(o.what.find("T6 kicks"), std::string::npos) << o.what;
+    EXPECT_NE(o.what.find("T6 touched the part at X-5.000"), std::string::npos) << o.what;
+    EXPECT_NE(o.what.find("the spindle is not turning"), std::string::npos) << o.what;
+}
+
+TEST(MillFinder, PushedPastTheKickItGivesThenBends) {
+    Finder j;
+    const uint64_t fresh = j.shop->generation();
+    Outcome o = j.jog(at(20, -91.72, -295 + kL6), X, 40);
+    ASSERT_TRUE(o.touched);
+    // An increment of 0.5 from the kick pushes its lower part aside.
+    o = j.jog(o.stop, X, 0.5, false);
+    ASSERT_TRUE(o.touched);
+    EXPECT_FALSE(o.crashed);
+    EXPECT_NEAR(o.stop[X], 48.35 - 4.5, 1e-3);
+    EXPECT_NE(o.what.find("the edge finder T6 is pushed 0.500 mm aside"), std::string::npos)
+        << o.what;
+    // Back off: it runs true again, nothing said.
+    Outcome back = j.jog(o.stop, X, -2, false);
+    EXPECT_FALSE(back.touched || back.crashed) << back.what;
+    // 0.6 more from 0.5 aside: bent 1 mm past the kick.
+    o = j.jog(o.stop, X, 0.6, false);
+    ASSERT_TRUE(o.crashed);
+    EXPECT_EQ(j.shop->crashes().front().code, kCrashProbe);
+    EXPECT_NEAR(o.stop[X], 48.35 - 5 + kFinderTravel, 1e-3);
+    EXPECT_NE(o.what.find("crash: the edge finder T6 was bent against the part"), std::string::npos)
+        << o.what;
+    // It never cut.
+    EXPECT_EQ(j.shop->generation(), fresh);
+}
+
+// The finder in a program: over the block at Z-5 from X-70 (X-10 from the
+// corner), then `move`.
+std::string finder_program(const std::string& move) {
+    return "%37\nN10 T6 D6 M6\nN20 S800 M3\nN30 G0 X-70 Y0 Z5\nN40 Z-5\nN50 " + move +
+           "\nN60 G0 Z50\nN70 M2\n";
+}
+
+TEST(MillFinder, AFeedIntoTheBlockBendsItARapidCrashesAsAnyTool) {
+    Sets s = right();
+    s.push_back({"D6.L", kL6});
+    s.push_back({"D6.R", 5});
+    Mill fed(finder_program("G1 X0 F200"), s, kFinder);
+    ASSERT_EQ(fed.crash(), kCrashProbe);
+    const Crash& c = fed.shop->crashes().front();
+    EXPECT_EQ(c.loc.n, 50);
+    EXPECT_NEAR(c.om[X], 48.35 - 5, kCrashDepth + 1e-3);
+    EXPECT_NE(c.what.find("edge finder T6 was bent"), std::string::npos) << c.what;
+    EXPECT_EQ(fed.shop->generation(), Mill("%38\nN10 M2\n", {}).shop->generation());
+    EXPECT_NEAR(fed.read("length X Y40 Z-5"), 120, 1e-9);
+    Mill rapid(finder_program("G0 X0"), s, kFinder);
+    EXPECT_EQ(rapid.crash(), kCrashRapid);
+    // Over the block it goes anywhere.
+    Mill over(finder_program("G0 Z5\nG1 X70 F200"), s, kFinder);
+    EXPECT_EQ(over.crash(), 0);
+}
+
 TEST(MillInstruments, PresetterAndBadRequests) {
     Mill m("%35\nN10 M2\n", {});
     Reading r;
