@@ -98,10 +98,13 @@ std::string table(const std::vector<Row>& rows, const std::map<std::string, int>
                            tr("CRASHES"), tr("SCRAPPED"), tr("MISTAKES"));
     for (const Row& r : rows) {
         std::string n = std::to_string(r.attempts) + (r.in_progress ? "+" : "");
-        out += strf("%-16s %-14s %8s %6s %6s %8s %7d %8d  %s%s\n", r.exercise.c_str(),
-                    r.student.c_str(), n.c_str(), score(r.best).c_str(), score(r.last).c_str(),
-                    minutes(r.best_seconds).c_str(), r.crashes, r.scrapped,
-                    common_mistakes(r.mistakes).c_str(), r.tampered ? tr("  TAMPERED") : "");
+        std::string line = strf("%-16s %-14s %8s %6s %6s %8s %7d %8d  %s%s", r.exercise.c_str(),
+                                r.student.c_str(), n.c_str(), score(r.best).c_str(),
+                                score(r.last).c_str(), minutes(r.best_seconds).c_str(), r.crashes,
+                                r.scrapped, common_mistakes(r.mistakes).c_str(),
+                                r.tampered ? tr("  TAMPERED") : "");
+        while (!line.empty() && line.back() == ' ') line.pop_back();
+        out += line + "\n";
     }
     out += "\n" + std::string(tr("Mistakes most made:")) + "\n";
     if (mistakes.empty()) out += "  " + std::string(tr("none")) + "\n";

@@ -43,6 +43,7 @@ std::string looks(const workshop::ToolTruth& t, bool mill) {
     if (mill) {
         std::snprintf(size, sizeof size, "\u00d8%g", std::round(t.radius * 20) / 10);
         const char* kind = t.probe                       ? tr("probe")
+                           : t.finder                    ? tr("edge finder")
                            : t.corner >= t.radius - 1e-9 ? tr("ball end")
                            : t.corner > 0                ? tr("bull nose")
                                                          : tr("end mill");

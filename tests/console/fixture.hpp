@@ -4,6 +4,7 @@
 #pragma once
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -22,7 +23,8 @@ struct Console {
     Console(const Console&) = delete;  // the session holds a reference to `input`
     explicit Console(const std::string& machine_name = "lathe",
                      std::vector<std::string> programs = {"data/demo/lathe_p300.iso"},
-                     std::unique_ptr<store::Store> st = nullptr) {
+                     std::unique_ptr<store::Store> st = nullptr,
+                     const std::function<void(console::Session&)>& before_load = {}) {
         builtin_machine(machine_name, machine);
         s = std::make_unique<console::Session>(machine, std::move(st), input);
         for (const auto& p : programs) {
@@ -30,6 +32,7 @@ struct Console {
             EXPECT_TRUE(s->memory().load_file(std::string(PUPITRE_SOURCE_DIR) + "/" + p, d))
                 << d.detail;
         }
+        if (before_load) before_load(*s);  // an exercise's attempt: before the store's values
         s->load_store();
     }
     // Types a line and Enter, as on the input line.

@@ -1,0 +1,208 @@
+// Training in the console (issue 16): an attempt on a hidden setup, the
+// truth on no screen and not in the store's text before :submit, the grade
+// stored and signed, the teacher's report as golden files.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "console/class_report.hpp"
+#include "console/exercise.hpp"
+#include "core/i18n.hpp"
+#include "core/training/exercise.hpp"
+#include "tests/console/fixture.hpp"
+
+namespace pupitre::test {
+namespace {
+
+constexpr const char* kKey = "0123456789abcdef-test-class-key";
+
+struct Attempt {
+    std::string db;
+    std::unique_ptr<Console> c;
+    training::Exercise e;
+    // A console on a store file, the attempt of `student` at `name` started.
+    Attempt(const char* name, const char* student, const std::string& path) : db(path) {
+        EXPECT_TRUE(training::builtin_exercise(name, e));
+        auto st = store::Store::open(db);
+        EXPECT_TRUE(st.ok()) << st.error.message;
+        c = std::make_unique<Console>(
+            e.machine, std::vector<std::string>{}, std::move(st.value),
+            [&](console::Session& s) { EXPECT_EQ(s.start_exercise(e, student, kKey), ""); });
+    }
+};
+
+std::string temp_db() {
+    char tmpl[] = "/tmp/pupitre-training-XXXXXX";
+    EXPECT_NE(mkdtemp(tmpl), nullptr);
+    return std::string(tmpl) + "/store.db";
+}
+
+std::string every_page(Console& c) {
+    std::string all;
+    for (const char* p : {"op", "om", "pref", "corr", "shop", "graph", "info", "param", "exercise",
+                          "alarm", "prog", "dir"}) {
+        c.type(std::string(":page ") + p);
+        all += c.screen(120, 40) + c.message() + "\n";
+    }
+    return all;
+}
+
+std::string bytes_of(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+TEST(TrainingSession, TheExamDoneRightGetsFullMarksStoredAndSigned) {
+    const std::string db = temp_db();
+    {
+        Attempt a("exam-2005", "alice", db);
+        a.c->type(":exercise");
+        EXPECT_NE(a.c->screen(100, 30).find("June 2005 exam"), std::string::npos);
+        for (const char* set : {":set PREF.X=-135.477", ":set PREF.Z=-669.936",
+                                ":set DEC1.Z=257.267", ":set D1.X=63.345", ":set D1.Z=38.237"})
+            a.c->type(set);
+        a.c->type(":submit");
+        EXPECT_EQ(a.c->message(), "submitted: 100%; the report is on the EXERCISE page");
+        const std::string report = a.c->screen(100, 30);
+        EXPECT_NE(report.find("Score 100%"), std::string::npos) << report;
+        EXPECT_NE(report.find("PREF Z = the jaws' face = -669.936"), std::string::npos) << report;
+        a.c->type(":submit");
+        EXPECT_EQ(a.c->message(), "submitted already: the report is on the EXERCISE page");
+    }
+    auto st = store::Store::open(db);
+    ASSERT_TRUE(st.ok());
+    auto all = st.value->attempts("exam-2005");
+    ASSERT_EQ(all.value.size(), 1u);
+    const store::Attempt& r = all.value[0];
+    EXPECT_EQ(r.student, "alice");
+    EXPECT_EQ(r.score, 100);
+    EXPECT_EQ(r.mistakes, "");
+    EXPECT_NE(r.found.find("PREF.X=-135.4770"), std::string::npos) << r.found;
+    EXPECT_EQ(r.signature, console::sign_attempt(r, kKey));
+    // An edited grade no longer matches its signature.
+    store::Attempt edited = r;
+    edited.score = 90;
+    EXPECT_NE(edited.signature, console::sign_attempt(edited, kKey));
+}
+
+TEST(TrainingSession, XTakenAsADiameterFailsWithTheMistakeNamed) {
+    Attempt a("exam-2005", "bob", temp_db());
+    for (const char* set : {":set PREF.X=-165.466", ":set PREF.Z=-669.936", ":set DEC1.Z=257.267",
+                            ":set D1.X=63.345", ":set D1.Z=38.237"})
+        a.c->type(set);
+    a.c->type(":submit");
+    const std::string report = a.c->screen(120, 30);
+    EXPECT_NE(report.find("Score 83%"), std::string::npos) << report;
+    EXPECT_NE(report.find("X taken as a diameter instead of a radius"), std::string::npos)
+        << report;
+}
+
+TEST(TrainingSession, TheTruthIsOnNoScreenAndNotInTheStoreBeforeSubmit) {
+    const std::string db = temp_db();
+    Attempt a("exam-2005-drawn", "carol", db);
+    workshop::Setup truth;
+    ASSERT_EQ(training::draw_setup(a.e, training::seed_of(a.e, "carol", kKey), truth), "");
+    std::vector<std::string> secrets;
+    for (const training::Target& t : a.e.find)
+        if (double v = 0; training::expected(a.e, truth, t.name, v) && std::abs(v) > 0.5)
+            secrets.push_back(strf("%.3f", v));
+    ASSERT_EQ(secrets.size(), 5u);  // PREF X Z, DEC1 Z, D1 X Z (DEC1 X is 0)
+    a.c->type(":part new");         // the part saved: the store holds the attempt's workshop
+    const std::string screens = every_page(*a.c);
+    a.c->type(":setup");
+    EXPECT_EQ(a.c->message(), ":setup: not during an exercise (the setup is what you must find)");
+    a.c->type(":part export /tmp/part.svg");
+    EXPECT_EQ(a.c->message(),
+              ":part export: not during an exercise (the setup is what you must find)");
+    const std::string stored = bytes_of(db) + bytes_of(db + "-wal");
+    for (const std::string& s : secrets) {
+        EXPECT_EQ(screens.find(s), std::string::npos) << s << " on a screen";
+        EXPECT_EQ(stored.find(s), std::string::npos) << s << " in the store";
+    }
+    EXPECT_NE(screens.find("no coordinates during an exercise"), std::string::npos);
+    // After :submit the report shows them.
+    a.c->type(":submit");
+    const std::string report = a.c->screen(120, 40);
+    for (const std::string& s : secrets)
+        EXPECT_NE(report.find(s), std::string::npos) << s << " not in the report\n" << report;
+}
+
+TEST(TrainingSession, ARestartContinuesTheAttemptWithItsValues) {
+    const std::string db = temp_db();
+    {
+        Attempt a("lathe-first", "dave", db);
+        a.c->type(":set PREF.Z=12.5");
+    }
+    Attempt b("lathe-first", "dave", db);
+    double v = 0;
+    b.c->s->sim().interp().get("PREF.Z", v);
+    EXPECT_DOUBLE_EQ(v, 12.5);
+    // The exercise's start values: D1 holds the true gauges.
+    b.c->s->sim().interp().get("D1.X", v);
+    EXPECT_GT(v, 40);
+    // Not the machine's own state: a plain console on the same store has none of it.
+    auto st = store::Store::open(db);
+    ASSERT_TRUE(st.ok());
+    auto plain = st.value->values("lathe");
+    EXPECT_EQ(plain.value.count("PREF.Z"), 0u);
+}
+
+// The teacher's report from attempts made up here, each signed with the key
+// (one edited afterwards); the three formats are golden files.
+std::vector<store::Attempt> class_attempts() {
+    auto make = [](int id, const char* ex, const char* who, int score, double s, int crashes,
+                   bool scrapped, const char* mistakes, bool done = true) {
+        store::Attempt a;
+        a.id = id, a.exercise = ex, a.student = who, a.machine = "lathe#x";
+        a.exercise_sha = "sha", a.started_ms = 1000 * id, a.submitted_ms = done ? 2000 * id : 0;
+        a.score = score, a.seconds = s, a.crashes = crashes, a.scrapped = scrapped;
+        a.mistakes = mistakes, a.found = "PREF.X=1\n", a.report = "r\n";
+        a.signature = console::sign_attempt(a, kKey);
+        return a;
+    };
+    std::vector<store::Attempt> v = {
+        make(1, "exam-2005", "alice", 100, 600, 0, false, ""),
+        make(2, "exam-2005", "bob", 50, 900, 0, false, "diameter dec1 sign"),
+        make(3, "exam-2005", "bob", 83, 700, 0, false, "diameter"),
+        make(4, "lathe-first", "alice", 50, 1800, 1, true, "shim"),
+        make(5, "lathe-first", "carol", 0, 0, 0, false, "", false),
+        make(6, "exam-2005", "<eve>", 100, 300, 0, false, ""),
+    };
+    v[5].score = 100;  // signed at 100, then "edited": the signature no longer matches
+    v[5].report = "edited\n";
+    return v;
+}
+
+void golden(const std::string& name, const std::string& text) {
+    const std::string path = std::string(PUPITRE_SOURCE_DIR) + "/tests/console/expected/" + name;
+    if (const char* b = std::getenv("PUPITRE_BLESS"); b && *b == '1') {
+        std::ofstream(path, std::ios::binary) << text;
+        return;
+    }
+    EXPECT_EQ(bytes_of(path), text) << "golden " << path << " differs (PUPITRE_BLESS=1 rewrites)";
+}
+
+TEST(ClassReport, TableCsvAndHtmlAreGolden) {
+    const auto all = class_attempts();
+    golden("class_report.txt",
+           console::class_report_text(all, console::ReportFormat::table, kKey, "class"));
+    golden("class_report.csv",
+           console::class_report_text(all, console::ReportFormat::csv, kKey, "class"));
+    golden("class_report.html", console::class_report_text(all, console::ReportFormat::html, kKey,
+                                                           "pupitre: the class's attempts"));
+    const std::string nokey = console::class_report_text(all, console::ReportFormat::table, "", "");
+    EXPECT_NE(nokey.find("Signatures not checked: no class key."), std::string::npos);
+    EXPECT_EQ(nokey.find("TAMPERED"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace pupitre::test

@@ -1,0 +1,115 @@
+#!/usr/bin/env bash
+# Training in the real console (issue 16), driven by keys in tmux as a
+# student would: seed 004's June 2005 exam done right (full marks) and with X
+# taken as a diameter (the mistake named), the truth of a drawn exercise on
+# no screen and in no file before :submit, the teacher's report after.
+#   training.sh PUPITRE_BINARY CASE
+# SPDX-License-Identifier: GPL-3.0-or-later
+set -uo pipefail
+bin=$(realpath "$1") case=$2
+. "$(dirname "$0")/lib.sh"
+W=110 H=40
+export PUPITRE_CLASS_KEY=$work/class.key
+db=$work/store.db
+
+# The exam's six values typed on the PREF and CORR pages, PREF X as given.
+exam() {
+    local pref_x=$1
+    start --db "$db" exercise exam-2005 --student "$2"
+    wait_for 'exam-2005: June 2005 exam'
+    wait_for 'Measure 2: after a test cut'
+    keys M-p
+    wait_for 'PREF'
+    for v in "PREF.X=$pref_x" "PREF.Z=-669.936" "DEC1.Z=257.267"; do
+        keys -l "$v"
+        keys Enter
+        sleep 0.2
+    done
+    keys M-c
+    for v in "X=63.345" "Z=38.237"; do
+        keys -l "$v"
+        keys Enter
+        sleep 0.2
+    done
+    cmd ":submit"
+}
+
+case $case in
+right)
+    exam -135.477 alice
+    wait_for 'submitted: 100%'
+    wait_for 'Score 100%'
+    wait_for 'PREF X = the spindle axis, as a tool point reads it = -135.477'
+    wait_for 'DEC1 Z = the part.s face - the jaws. face = the stick-out = 257.267'
+    # The right values on the ok colour (a green ground), on the EXERCISE page.
+    sgr_line 'PREF.Z +-669.936' | grep -q $'\e\\[[0-9;]*42m' || fail "ok is not on green: $(sgr_line 'PREF.Z +-669.936' | cat -v)"
+    cmd ":quit"
+    stty_after
+    next_server
+    "$bin" --db "$db" class report exam-2005 > "$work/report" || fail "class report"
+    grep -Eq '^exam-2005 +alice +1 +100 +100' "$work/report" || fail "report: $(cat "$work/report")"
+    # A second start is a new attempt: the task again, not the report.
+    start --db "$db" exercise exam-2005 --student alice
+    wait_for 'Enter the six values'
+    ;;
+diameter)
+    # PREF X = -22.143 - 63.345 - (59.978 + 20): the diameter where its half belongs.
+    exam -165.466 bob
+    wait_for 'submitted: 83%'
+    wait_for 'X taken as a diameter instead of a radius'
+    wait_for 'off by -29.989 mm, half the Ø59.978'
+    sgr_line 'PREF.X +-165.466' | grep -q $'\e\\[[0-9;]*41m' || fail "WRONG is not on red: $(sgr_line 'PREF.X +-165.466' | cat -v)"
+    cmd ":quit"
+    stty_after
+    next_server
+    "$bin" --db "$db" class report > "$work/report" || fail "class report"
+    grep -q 'X taken as a diameter instead of a radius' "$work/report" || fail "report: $(cat "$work/report")"
+    "$bin" --db "$db" class report --html "$work/class.html" > /dev/null || fail "html"
+    grep -q '<td>bob</td>' "$work/class.html" || fail "html report"
+    ;;
+hidden)
+    # The drawn exam at the machine: presetter, gauge block, touch; every
+    # page looked at, in colour; the truth (what the teacher's command
+    # prints) nowhere on them nor in the store's files before :submit.
+    start --db "$db" exercise exam-2005-drawn --student carol
+    wait_for 'exam-2005-drawn'
+    "$bin" --db "$db" exercise truth exam-2005-drawn --student carol > "$work/truth" || fail "truth"
+    mapfile -t secrets < <(awk '/^(PREF|DEC1|D1)\./ && ($2 > 0.5 || $2 < -0.5) { print $2 }' "$work/truth")
+    [ ${#secrets[@]} -eq 5 ] || fail "expected 5 values to hide: $(cat "$work/truth")"
+    pom
+    cmd ":speed max"
+    cmd ":mode imd"
+    cmd "T1 D1 M6"
+    keys F9
+    wait_for 'IMD done' 10
+    cmd ":measure tool T1 X"
+    wait_for 'presetter: tool T1 X'
+    cmd ":measure length"
+    wait_for 'length: not allowed in this exercise \(allowed: dia, tool\)'
+    cmd ":gauge 100"
+    cmd ":mode jog"
+    cmd ":jog Z -100"
+    cmd ":setup"
+    wait_for ':setup: not during an exercise'
+    : > "$work/screens"
+    for p in op om pref corr shop graph info param exercise alarm prog dir help; do
+        cmd ":page $p"
+        sleep 0.2
+        screen_e >> "$work/screens"
+    done
+    grep -q 'no coordinates during an exercise' "$work/screens" || fail "GRAPH reads coordinates"
+    for s in "${secrets[@]}"; do
+        grep -qF -- "$s" "$work/screens" && fail "the truth $s is on a screen"
+        cat "$db"* | grep -aqF -- "$s" && fail "the truth $s is in the store's files"
+    done
+    cmd ":submit"
+    wait_for 'submitted: '
+    for s in "${secrets[@]}"; do wait_for "${s//./\\.}"; done
+    ;;
+*)
+    echo "unknown case $case"
+    exit 2
+    ;;
+esac
+cmd ":quit!"
+exit 0
