@@ -255,7 +255,7 @@ std::vector<std::string> report_lines(const Exercise& e, const Grade& g) {
     for (const ItemGrade& i : g.items) {
         out.push_back(strf("%-9s %10s  %11s  %10.0f  %7.0f  %s", i.name.c_str(),
                            mm(i.found).c_str(), mm(i.truth).c_str(),
-                           std::round((i.found - i.truth) * 1000), i.tolerance * 1000,
+                           std::round((i.found - i.truth) * 1000) + 0.0, i.tolerance * 1000,
                            i.ok ? tr("ok") : tr("WRONG")));
         out.push_back("    " + i.how);
         if (i.mistake != Mistake::none)

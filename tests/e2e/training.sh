@@ -106,6 +106,55 @@ hidden)
     wait_for 'submitted: '
     for s in "${secrets[@]}"; do wait_for "${s//./\\.}"; done
     ;;
+first)
+    # lathe-first at the machine, as a student does it: tool 1 is measured,
+    # the bar's place is not. A fixed class key, so erin's truth is the same
+    # on every run: the face at Z 23.794, the axis at X -28.415 (radius).
+    echo 0123456789abcdef0123456789abcdef > "$PUPITRE_CLASS_KEY"
+    start --db "$db" exercise lathe-first --student erin
+    wait_for 'PREF Z on the face'
+    pom
+    cmd ":speed max"
+    cmd ":mode imd"
+    cmd "T1 D1 M6"
+    keys F9
+    wait_for 'IMD done' 10
+    cmd "S800 M4"
+    keys F9
+    wait_for 'IMD done' 10
+    # Over the bar, down onto it, a 0.5 mm skim out past the face, measured.
+    cmd ":mode jog"
+    cmd ":jog Z -150"
+    cmd ":jog X -200"
+    wait_for 'T1 touched the part at ø60.000' 20
+    cmd ":mode inc"
+    cmd ":jog X -1"
+    cmd ":jog Z 40"
+    cmd ":measure dia Z-5"
+    wait_for 'micrometer: dia Z-5 = 59.000 mm'
+    cmd ":touch X 59"
+    wait_for 'surface ø59.000/2 = -28.415' 5
+    # Below the bar's top, onto the face.
+    cmd ":mode jog"
+    cmd ":jog X 4"
+    cmd ":jog Z 20"
+    cmd ":jog X -14"
+    cmd ":jog Z -50"
+    wait_for 'T1 touched the part at ø49.000, 0.000 mm from the stock' 10
+    cmd ":touch Z 0"
+    wait_for 'surface 0.000 = 23.794' 5
+    cmd ":jog Z 10"
+    cmd ":jog X 40"
+    # The part, measured, handed in.
+    cmd ":mode auto"
+    keys F9
+    wait_for 'M02: end of program %10' 60
+    cmd ":measure dia Z-10"
+    wait_for 'micrometer: dia Z-10 = 40.000 mm'
+    cmd ":submit"
+    wait_for 'submitted: 100%'
+    wait_for 'dia Z-25 +50.000 +50.000 +49.980 .. 50.020 +ok'
+    ;;
 *)
     echo "unknown case $case"
     exit 2
