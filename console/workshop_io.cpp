@@ -8,6 +8,7 @@
 
 #include "core/i18n.hpp"
 #include "core/output/height_png.hpp"
+#include "core/training/exercise.hpp"
 #include "core/workshop/report.hpp"
 
 namespace pupitre {
@@ -65,10 +66,21 @@ int write_mill(const std::string& path, const workshop::MillWorld& m, const std:
 std::string read_setup(const std::string& name, const MachineProfile& m, workshop::Setup& s) {
     if (!workshop::builtin_setup(name, s)) {
         std::ifstream in(name);
+        training::Exercise e;
+        if (!in && training::builtin_exercise(name, e))
+            return strf(tr("'%s' is an exercise: its setup is hidden (pupitre exercise %s starts "
+                           "it)"),
+                        name.c_str(), name.c_str());
         if (!in)
             return strf(tr("unknown setup '%s' (lathe, mill, or a .setup file)"), name.c_str());
         std::ostringstream text;
         text << in.rdbuf();
+        // An exercise's file is not a setup: its truth is for the student
+        // to find (CLARIFICATIONS 16: run --setup refuses it).
+        if (training::parse_exercise(text.str(), e).empty())
+            return strf(tr("%s is an exercise: its setup is hidden (pupitre exercise %s starts "
+                           "it)"),
+                        name.c_str(), name.c_str());
         if (std::string why = workshop::parse_setup(text.str(), s); !why.empty())
             return strf(tr("%s: %s"), name.c_str(), why.c_str());
     }

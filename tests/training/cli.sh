@@ -1,0 +1,72 @@
+#!/usr/bin/env bash
+# Training in batch (pupitre-exercise(5)): the shipped exercises listed and
+# checked, a broken one refused with its line, a class's own added, a
+# student's truth drawn again the same for the teacher (and another
+# student's different), an exercise saved from a machine's setup, an
+# exercise refused as a --setup, the class report of an empty class.
+#   cli.sh PUPITRE_BINARY
+# SPDX-License-Identifier: GPL-3.0-or-later
+set -uo pipefail
+bin=$1
+root=$(cd "$(dirname "$0")/../.." && pwd)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fail() { echo "FAIL: $*"; exit 1; }
+export LANGUAGE=en HOME=$work XDG_CONFIG_HOME=$work/config XDG_DATA_HOME=$work/data
+export PUPITRE_CLASS_KEY=$work/class.key
+db=(--db "$work/store.db")
+
+# Listed and checked: the six shipped ones, each rehearsed.
+"$bin" "${db[@]}" exercise list > "$work/list" || fail "list"
+[ "$(grep -c shipped "$work/list")" = 6 ] || fail "list: $(cat "$work/list")"
+"$bin" exercise check "$root"/data/exercises/*.exercise > "$work/check" || fail "check: $(cat "$work/check")"
+grep -q 'wear.exercise: exercise wear on the lathe: 1 values to find, 2 dimensions' "$work/check" ||
+    fail "check: $(cat "$work/check")"
+
+# A drawing no one can meet: done right, the part is Ø40, not Ø39.
+sed 's/dia Z-10 : 40 0.01/dia Z-10 : 39 0.01/' "$root/data/exercises/wear.exercise" > "$work/bad.exercise"
+"$bin" exercise check "$work/bad.exercise" > "$work/out"
+[ $? = 65 ] || fail "a broken exercise should exit 65"
+grep -q "done right at the ranges' low ends, the exercise fails: line 12: dimension dia Z-10: the part reads 40.000, outside 39.000" "$work/out" ||
+    fail "bad: $(cat "$work/out")"
+"$bin" "${db[@]}" exercise add "$work/bad.exercise" 2> "$work/err"
+[ $? = 65 ] || fail "add should refuse a broken exercise"
+
+# The class's own: stored, listed, started by name.
+sed 's/^name = wear$/name = wear-ours/' "$root/data/exercises/wear.exercise" > "$work/ours.exercise"
+"$bin" "${db[@]}" exercise add "$work/ours.exercise" | grep -q 'exercise wear-ours stored' || fail "add"
+"$bin" "${db[@]}" exercise list | grep -Eq '^wear-ours +lathe +class' || fail "list after add"
+
+# The teacher draws a student's truth again: the key is made on the first
+# attempt; without it there is nothing to draw.
+"$bin" "${db[@]}" exercise truth exam-2005-drawn --student ann 2> "$work/err"
+[ $? = 66 ] || fail "truth without a key should exit 66"
+grep -q 'no class key' "$work/err" || fail "$(cat "$work/err")"
+echo 0123456789abcdef0123456789abcdef > "$PUPITRE_CLASS_KEY"
+"$bin" "${db[@]}" exercise truth exam-2005-drawn --student ann > "$work/t1" || fail "truth"
+"$bin" "${db[@]}" exercise truth exam-2005-drawn --student ann > "$work/t2" || fail "truth"
+"$bin" "${db[@]}" exercise truth exam-2005-drawn --student ben > "$work/t3" || fail "truth"
+cmp -s "$work/t1" "$work/t2" || fail "a student's truth does not reproduce"
+cmp -s "$work/t1" "$work/t3" && fail "two students drew the same truth"
+grep -Eq '^PREF\.Z +-[0-9]+\.[0-9]{3} +# PREF Z = the jaws. face = ' "$work/t1" || fail "$(cat "$work/t1")"
+
+# An exercise is not a setup: its truth is the student's to find.
+"$bin" run --setup exam-2005 "$root/tests/workshop/turn.iso" 2> "$work/err"
+[ $? = 64 ] || fail "run --setup with an exercise should exit 64"
+grep -q "'exam-2005' is an exercise: its setup is hidden" "$work/err" || fail "$(cat "$work/err")"
+"$bin" run --setup "$root/data/exercises/wear.exercise" "$root/tests/workshop/turn.iso" 2> "$work/err"
+[ $? = 64 ] || fail "run --setup with an exercise file should exit 64"
+
+# Saved from a machine's setup: none yet, then the lathe's.
+"$bin" "${db[@]}" exercise save mine 2> "$work/err"
+[ $? = 66 ] || fail "save without a workshop should exit 66"
+
+# An empty class.
+"$bin" "${db[@]}" class report > "$work/report" || fail "class report"
+grep -q 'Mistakes most made:' "$work/report" || fail "$(cat "$work/report")"
+"$bin" "${db[@]}" class report --csv | head -1 | grep -q '^exercise,student,attempts' || fail "csv"
+"$bin" "${db[@]}" class report --html "$work/r.html" > /dev/null || fail "html"
+grep -q '</html>' "$work/r.html" || fail "html file"
+"$bin" "${db[@]}" class rapport 2> /dev/null
+[ $? = 64 ] || fail "class rapport should be a usage error"
+echo "training cli: ok"
