@@ -9,6 +9,7 @@
 
 #include "console/exercise.hpp"
 #include "core/i18n.hpp"
+#include "pages/pages.hpp"
 
 namespace pupitre::console {
 
@@ -93,21 +94,22 @@ std::string html_escape(const std::string& s) {
 
 std::string table(const std::vector<Row>& rows, const std::map<std::string, int>& mistakes,
                   const std::string& key) {
-    std::string out = strf("%-16s %-14s %8s %6s %6s %8s %7s %8s  %s\n", tr("EXERCISE"),
-                           tr("STUDENT"), tr("ATTEMPTS"), tr("BEST"), tr("LAST"), tr("MIN"),
-                           tr("CRASHES"), tr("SCRAPPED"), tr("MISTAKES"));
+    std::string out = pages::pad(tr("EXERCISE"), 16) + " " + pages::pad(tr("STUDENT"), 14) +
+                      strf(" %8s %6s %6s %8s %7s %8s  %s\n", tr("ATTEMPTS"), tr("BEST"), tr("LAST"),
+                           tr("MIN"), tr("CRASHES"), tr("SCRAPPED"), tr("MISTAKES"));
     for (const Row& r : rows) {
         std::string n = std::to_string(r.attempts) + (r.in_progress ? "+" : "");
-        std::string line = strf("%-16s %-14s %8s %6s %6s %8s %7d %8d  %s%s", r.exercise.c_str(),
-                                r.student.c_str(), n.c_str(), score(r.best).c_str(),
-                                score(r.last).c_str(), minutes(r.best_seconds).c_str(), r.crashes,
-                                r.scrapped, common_mistakes(r.mistakes).c_str(),
-                                r.tampered ? tr("  TAMPERED") : "");
+        // Names padded by columns: a student's name may hold "é".
+        std::string line =
+            pages::pad(r.exercise, 16) + " " + pages::pad(r.student, 14) +
+            strf(" %8s %6s %6s %8s %7d %8d  %s%s", n.c_str(), score(r.best).c_str(),
+                 score(r.last).c_str(), minutes(r.best_seconds).c_str(), r.crashes, r.scrapped,
+                 common_mistakes(r.mistakes).c_str(), r.tampered ? tr("  TAMPERED") : "");
         while (!line.empty() && line.back() == ' ') line.pop_back();
         out += line + "\n";
     }
     out += "\n" + std::string(tr("Mistakes most made:")) + "\n";
-    if (mistakes.empty()) out += "  " + std::string(tr("none")) + "\n";
+    if (mistakes.empty()) out += "  " + std::string(tr("no mistake")) + "\n";
     std::vector<std::pair<int, std::string>> v;
     for (const auto& [w, n] : mistakes) v.emplace_back(-n, w);
     std::sort(v.begin(), v.end());

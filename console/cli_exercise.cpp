@@ -52,7 +52,9 @@ int exercise_check(const std::vector<std::string>& files) {
             if (rc == kOk) rc = kDataErr;
             continue;
         }
-        std::printf(tr("%s: exercise %s on the %s: %zu values to find, %zu dimensions, %s\n"),
+        // TRANSLATORS: the file, the exercise's name, its machine (lathe or
+        // mill, as the file says), counts, then one truth for all or one each.
+        std::printf(tr("%s: exercise %s (machine %s): values to find %zu, dimensions %zu, %s\n"),
                     f.c_str(), e.name.c_str(), e.machine.c_str(), e.find.size(),
                     e.dimensions.size(),
                     e.drawn() ? tr("a truth drawn for each student") : tr("one truth for all"));

@@ -98,7 +98,9 @@ Effect page(Session& s, const CommandCall& c) {
     pages::PageId p;
     if (!pages::parse_page(c.arg(1), p))
         return usage(
-            s, ":page om|op|prog|graph|info|param|pref|corr|dir|alarm|help|edit|history|shop");
+            s,
+            ":page "
+            "om|op|prog|graph|info|param|pref|corr|dir|alarm|help|edit|history|shop|exercise");
     s.show_page(p);
     return Effect::redraw;
 }
@@ -430,7 +432,8 @@ bool forced(const CommandCall& c) {
 // syntax as typed (English, as in pupitre(1)), the help is translated there. Each row starts a
 // line with {" (tests/console/man_sync.py reads the names from there).
 constexpr Command kCommands[] = {
-    {"page", ":page om|op|prog|graph|info|param|pref|corr|dir|alarm|help|edit|history|shop",
+    {"page",
+     ":page om|op|prog|graph|info|param|pref|corr|dir|alarm|help|edit|history|shop|exercise",
      N_("show a page"), page},
     {"mode", ":mode auto|seq|dry|test|rns|imd|jog|inc|pom|edit|modif",
      N_("select a mode (refused while a program is in cycle)"), mode},

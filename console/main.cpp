@@ -304,7 +304,9 @@ void add_training(CLI::App& app, CommandLine& c, std::vector<Command>& commands)
                    tr("NAME, or list, check FILE..., add FILE, truth NAME, save NAME"));
     ex->add_option("--student", ea.student, tr("who attempts it (default: the login name)"))
         ->type_name("NAME");
-    ex->add_option("--machine", ea.machine, tr("save: the machine whose workshop (default lathe)"));
+    ex->add_option(
+        "--machine", ea.machine,
+        tr("save: the machine whose workshop the exercise is made from (default lathe)"));
     ex->add_option("-o,--output", ea.output, tr("save: write to FILE"))->type_name("FILE");
     CLI::App* cl = app.add_subcommand("class", tr("the teacher's view: class report [EXERCISE]"));
     cl->add_option("words", ea.words, tr("report [EXERCISE]"))->required();

@@ -83,6 +83,7 @@ std::string Session::start_exercise(const training::Exercise& e, const std::stri
 // store keeps it (scrambled).
 std::string Session::exercise_workshop() {
     auto w = std::make_unique<workshop::Workshop>(m_, exercise_->truth, nullptr);
+    w->hide_places(true);
     auto r = store_->workshop(store_key_);
     bool fresh = true;
     if (!r.error && r.value) fresh = !w->load_part(unscramble(r.value->part, exercise_->seed));
@@ -159,6 +160,7 @@ Effect Session::submit_exercise() {
     a.submitted_ms = wall_ms();
     const double seconds = double(a.submitted_ms - a.started_ms) / 1000;
     x.grade = training::grade(x.ex, x.truth, found, ctx, sim_->shop(), a.crashes, seconds);
+    if (workshop::Workshop* w = sim_->shop()) w->hide_places(false);  // the truth is out
     x.report = training::report_lines(x.ex, *x.grade);
     a.seed = strf("%016llx", (unsigned long long)x.seed);
     a.score = x.grade->score;

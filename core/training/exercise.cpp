@@ -141,7 +141,7 @@ std::string plain_key(Exercise& e, std::string_view key, std::string_view val, i
         if (val.empty() || val.size() > 40 ||
             val.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789-_") !=
                 std::string_view::npos)
-            return tr("expected a name of small letters, digits and '-'");
+            return tr("expected a name of small letters, digits, '-' and '_'");
         e.name = std::string(val);
     } else if (key == "title") {
         e.title = std::string(val);

@@ -173,6 +173,7 @@ Workshop::Contact Workshop::mill_first(const Cutter& c, const P3& a, const P3& b
 // Where something happened, in the part's own terms (from the block's
 // corner as loaded, which does not depend on PREF).
 std::string Workshop::mill_where(const P3& p) const {
+    if (hide_places_) return {};
     const MillSetup& m = setup_.mill;
     // TRANSLATORS: where a crash or a contact happened on a milling machine's block.
     return strf(tr("at X%s Y%s Z%s from the block's corner"),
@@ -274,7 +275,7 @@ void Workshop::mill_crash(const MoveEvent& e, int flute_code, const Contact& hit
     cr.tool = tool_;
     cr.fraction = f;
     for (size_t i = 0; i < cr.om.size(); ++i) cr.om[i] = oma[i] + f * (omb[i] - oma[i]);
-    cr.what = mill_crash_text(cr.code, hit, mill_where(lerp(a, b, f)));
+    cr.what = told(mill_crash_text(cr.code, hit, mill_where(lerp(a, b, f))));
     crashes_.push_back(std::move(cr));
 }
 
@@ -334,8 +335,8 @@ Outcome Workshop::mill_jog(const MoveEvent& e, bool continuous) {
     for (size_t i = 0; i < o.stop.size(); ++i)
         o.stop[i] = e.from_mach[i] + k.f * (e.to_mach[i] - e.from_mach[i]);
     const std::string place = mill_where(lerp(a, b, k.f));
-    o.what =
-        finder() && k.what != Met::shim ? finder_text(k, a, b, place) : mill_touch_text(k, place);
+    o.what = told(finder() && k.what != Met::shim ? finder_text(k, a, b, place)
+                                                  : mill_touch_text(k, place));
     return o;
 }
 

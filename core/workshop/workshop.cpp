@@ -192,7 +192,15 @@ bool Workshop::near(const CPath& shape, const std::vector<Pt>& tips) const {
     return false;
 }
 
+std::string Workshop::told(std::string what) const {
+    if (!hide_places_) return what;
+    for (size_t at; (at = what.find(" ,")) != std::string::npos;) what.erase(at, 1);
+    while (!what.empty() && (what.back() == ' ' || what.back() == ',')) what.pop_back();
+    return what;
+}
+
 std::string Workshop::where(const Pt& p) const {
+    if (hide_places_) return {};
     // The contact in the part's terms, which do not depend on PREF: the
     // diameter and the distance from the stock's face as it was loaded.
     double face = setup_.lathe.chuck_z + setup_.lathe.stickout;
@@ -311,8 +319,8 @@ bool Workshop::check(const MoveEvent& e, const std::vector<Pt>& tips,
     c.fraction = f;
     for (size_t a = 0; a < c.om.size(); ++a)
         c.om[a] = oms[i][a] + (at - double(i)) * (oms[j][a] - oms[i][a]);
-    c.what =
-        crash_text(c.code, worst->shape == &t->shape.holder, worst->what, tt, where(done.back()));
+    c.what = told(
+        crash_text(c.code, worst->shape == &t->shape.holder, worst->what, tt, where(done.back())));
     crashes_.push_back(std::move(c));
     return false;
 }
@@ -408,7 +416,7 @@ Outcome Workshop::jog(const MoveEvent& e, bool continuous) {
     o.stop = om_at(oms, at);
     o.touched = true;
     o.fraction = first;
-    o.what = touch_text(hit, holder, on_shim, where(done.back()));
+    o.what = told(touch_text(hit, holder, on_shim, where(done.back())));
     return o;
 }
 

@@ -102,6 +102,9 @@ class Workshop final : public MachineSink {
     // A gauge block against the lathe's jaws (LatheWorld::set_gauge_block);
     // 0: none. A jog stops on its end; no move goes through it.
     void set_gauge_block(double mm) { world_.set_gauge_block(mm); }
+    // An exercise (pupitre-exercise(5)): contacts and crashes say what was
+    // touched, not where on the part (that would read the truth off it).
+    void hide_places(bool hide) { hide_places_ = hide; }
     double gauge_block() const { return world_.gauge_block(); }
 
     // An electric touch probe in use, and its lamp: lit when the ball touches
@@ -215,6 +218,7 @@ class Workshop final : public MachineSink {
     // `stop` being the index fraction where the motion ends.
     bool check(const MoveEvent& e, const std::vector<Pt>& tips, const std::vector<Axes>& oms);
     std::string where(const Pt& p) const;
+    std::string told(std::string what) const;  // without the place when hidden
     // Whether `shape` swept along `tips` can come near the part, the chuck
     // or the tailstock (a box test, no Boolean).
     bool near(const CPath& shape, const std::vector<Pt>& tips) const;
@@ -237,6 +241,7 @@ class Workshop final : public MachineSink {
     std::vector<Tool> tools_;  // by turret position (0: none)
     int tool_ = 0;
     double shim_ = 0;
+    bool hide_places_ = false;
     int dir_ = 5;
     std::vector<Crash> crashes_;
 };

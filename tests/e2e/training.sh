@@ -126,7 +126,9 @@ first)
     cmd ":mode jog"
     cmd ":jog Z -150"
     cmd ":jog X -200"
-    wait_for 'T1 touched the part at ø60.000' 20
+    # It says what it touched, not where on the part: that would give the
+    # diameter (so PREF X) away.
+    wait_for 'T1 touched the part$' 20
     cmd ":mode inc"
     cmd ":jog X -1"
     cmd ":jog Z 40"
@@ -140,7 +142,7 @@ first)
     cmd ":jog Z 20"
     cmd ":jog X -14"
     cmd ":jog Z -50"
-    wait_for 'T1 touched the part at ø49.000, 0.000 mm from the stock' 10
+    wait_for 'T1 touched the part$' 10
     cmd ":touch Z 0"
     wait_for 'surface 0.000 = 23.794' 5
     cmd ":jog Z 10"

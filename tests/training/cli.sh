@@ -20,7 +20,7 @@ db=(--db "$work/store.db")
 "$bin" "${db[@]}" exercise list > "$work/list" || fail "list"
 [ "$(grep -c shipped "$work/list")" = 6 ] || fail "list: $(cat "$work/list")"
 "$bin" exercise check "$root"/data/exercises/*.exercise > "$work/check" || fail "check: $(cat "$work/check")"
-grep -q 'wear.exercise: exercise wear on the lathe: 1 values to find, 2 dimensions' "$work/check" ||
+grep -q 'wear.exercise: exercise wear (machine lathe): values to find 1, dimensions 2' "$work/check" ||
     fail "check: $(cat "$work/check")"
 
 # A drawing no one can meet: done right, the part is Ø40, not Ø39.

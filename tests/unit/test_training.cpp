@@ -51,7 +51,7 @@ TEST(Exercise, BadLinesAreNamed) {
     EXPECT_EQ(parse_exercise("name = x\nfind = PREF.X\nstart.D1.X = truth * 2\n", e),
               "line 3: start.D1.X: expected truth + N or truth - N");
     EXPECT_EQ(parse_exercise("name = Big Name\n", e),
-              "line 1: name: expected a name of small letters, digits and '-'");
+              "line 1: name: expected a name of small letters, digits, '-' and '_'");
     EXPECT_EQ(parse_exercise("name = x\n", e), "nothing to grade: give find or dimension lines");
     EXPECT_EQ(parse_exercise("name = x\nmachine = mill\nfind = PREF.Z\nfind = D1.X\n", e),
               "line 4: find: 'D1.X' is not a value to find on this machine");
