@@ -39,6 +39,14 @@ double rotary_length(const Axes& a, const Axes& b) {
 }  // namespace
 
 bool Interpreter::check_travel(const Axes& mach) {
+    // Every move asks: the common answer first, without a branch per axis.
+    // These are the comparisons of the loop below, which finds the axis at fault.
+    if (homed_.all()) {
+        bool inside = true;
+        for (size_t a = 0; a < size_t(kAxes); ++a)
+            inside &= (mach[a] >= travel_lo_[a] - 1e-6) & (mach[a] <= travel_hi_[a] + 1e-6);
+        if (inside) return true;
+    }
     for (int a = 0; a < kAxes; ++a) {
         double v = mach[size_t(a)], lo = travel_lo_[size_t(a)], hi = travel_hi_[size_t(a)];
         if (!homed_[size_t(a)] && std::abs(v - mach_[size_t(a)]) > 1e-9) {
