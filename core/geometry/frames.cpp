@@ -53,6 +53,18 @@ Axes Frames::to_machine(const Axes& prog) const {
 
 Axes Frames::to_program(const Axes& mach) const {
     Axes p = mach;
+    if (ed == 0 && !scale_on && mirror.none()) {
+        // Translations only, as in to_machine (each compensated piece asks):
+        // the differences of the loop below, in the same order.
+        using Array = Eigen::Array<double, kAxes, 1>;
+        auto in = [](const Axes& a) { return Eigen::Map<const Array>(a.data()); };
+        Eigen::Map<Array> out(p.data());
+        if (g53)
+            out = ((in(mach)-in(g59)) - in(dec3)) - in(gauge);
+        else
+            out = (((in(mach)-in(g59)) - in(dec3)) - in(gauge)) - (in(dec1) + in(pref));
+        return p;
+    }
     double k = scale_on ? scale : 1.0;
     for (int a = 0; a < kAxes; ++a) {
         double lin = (a <= W) ? k : 1.0;
