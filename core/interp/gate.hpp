@@ -66,6 +66,11 @@ class GateSink final : public MachineSink {
         auto q = std::move(queue);
         queue.clear();
         for (auto& f : q) f();
+        // The storage goes back to the queue unless a running entry added to
+        // it: under compensation every block holds and releases, and the queue
+        // was allocated anew each time.
+        q.clear();
+        if (queue.empty()) queue.swap(q);
     }
 
   private:
