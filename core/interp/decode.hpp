@@ -38,6 +38,9 @@ struct Interpreter::Decoder {
     int coded_modal = 0, coded_nonmodal = 0;
 
     bool bad(int code, std::string detail, int column = 0);
+    // The value of a word (Interpreter::word_value), inlined into the readers
+    // for a number written within its address's format (tests/perf).
+    [[gnu::always_inline]] inline bool value(const Word& w, double& out, int* int_out = nullptr);
     static char letter(const Word& w) { return w.addr < 26 ? char('A' + w.addr) : 0; }
     static bool axis_addr(Addr a, int& axis);
 

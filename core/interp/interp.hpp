@@ -482,6 +482,9 @@ class Interpreter final : private EAccess {
     bool comp_other_axes(const Axes& target, const std::bitset<kAxes>& axes);
     bool comp_exit(const Plan& p, const Axes* target);
     bool comp_emit(const std::vector<comp::Piece>& pieces, const CompCtx& ctx);
+    // The pieces of the element being joined, kept so that a compensated block
+    // allocates nothing (comp_element, comp_exit).
+    std::vector<comp::Piece> comp_pieces_;
     RunOptions opt_;
 
     Modal modal_;

@@ -116,7 +116,8 @@ bool Interpreter::comp_element(const comp::Elem& e, int g, const Axes& target, d
         gate_->holding = true;
         return true;
     }
-    std::vector<comp::Piece> pieces;
+    std::vector<comp::Piece>& pieces = comp_pieces_;
+    pieces.clear();
     comp::V2 next_from;
     gate_->holding = false;
     if (comp_.pending_is_entry) {
@@ -181,7 +182,8 @@ bool Interpreter::comp_exit(const Plan&, const Axes* target) {
     if (target && (modal_.motion == 2 || modal_.motion == 3))
         return fail(140, tr("the block that ends radius compensation (G40) must be a line"));
     if (comp_.has_pending) {
-        std::vector<comp::Piece> pieces;
+        std::vector<comp::Piece>& pieces = comp_pieces_;
+        pieces.clear();
         gate_->holding = false;
         if (comp_.pending_is_entry) {
             comp::Piece p;

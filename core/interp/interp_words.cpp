@@ -3,6 +3,7 @@
 // address (turning.md §1.4, §1.7; milling.md §1). The words a G function owns
 // are read in interp_args.cpp.
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include <array>
 #include <cmath>
 
 #include "core/i18n.hpp"
@@ -21,8 +22,8 @@ struct AddrFormat {
     bool is_signed;
 };
 
-// Inlined: word_value runs for every word, its fast path needs only this.
-[[gnu::always_inline]] inline AddrFormat format_of(Addr a) {
+// The format of each address (block.hpp: A-Z, EA-EZ, NA-NZ, E+, LA-LZ).
+constexpr AddrFormat format_rule(Addr a) {
     if (a < 26) {
         switch (char('A' + a)) {
             case 'X':
@@ -81,6 +82,16 @@ struct AddrFormat {
     if (a < 78) return {Fmt::integer, 4, 0, false};
     if (a >= 79) return {Fmt::length, 5, 3, true};  // LX LY: the G46 start point
     return {Fmt::other, 0, 0, true};
+}
+
+// By table: word_value and Decoder::value look it up for every word.
+constexpr std::array<AddrFormat, kAddrCount> kFormats = [] {
+    std::array<AddrFormat, kAddrCount> t{};
+    for (int a = 0; a < kAddrCount; ++a) t[size_t(a)] = format_rule(Addr(a));
+    return t;
+}();
+AddrFormat format_of(Addr a) {
+    return a < kAddrCount ? kFormats[a] : format_rule(a);
 }
 
 double e_scale(Fmt f) {
@@ -200,6 +211,22 @@ bool Interpreter::decode(const Block& b, Plan& p) {
     return d.finish();
 }
 
+// A number written within its address's format, most words, is read here;
+// anything else (a variable, a blank, too many digits, a sign where none
+// goes) by word_value, which says what is wrong.
+bool Interpreter::Decoder::value(const Word& w, double& out, int* int_out) {
+    const AddrFormat f = format_of(w.addr);
+    const Operand& v = w.v;
+    if (v.kind == Operand::Number && v.int_digits <= f.max_int && v.frac_digits <= f.max_frac &&
+        (!v.has_sign || f.is_signed) && (!int_out || v.frac_digits == 0)) {
+        in.col_ = w.col;
+        out = v.neg ? -v.num : v.num;
+        if (int_out) *int_out = int(out);
+        return true;
+    }
+    return in.word_value(w, out, int_out);
+}
+
 Interpreter::Decoder::Decoder(Interpreter& interp, Plan& plan, const Block& b)
     : in(interp),
       p(plan),
@@ -271,7 +298,7 @@ bool Interpreter::Decoder::finish() {
 bool Interpreter::Decoder::g_word(const Word& w) {
     int g;
     double gv;
-    if (!in.word_value(w, gv, &g)) return false;
+    if (!value(w, gv, &g)) return false;
     const GCode* gc = find_g(g);
     if (!g_known(g, gc, w)) return false;
     if (gc->support == Support::later && p.unsupported.g < 0) p.unsupported.g = g;
@@ -412,7 +439,7 @@ bool Interpreter::Decoder::axis_word(const Word& w) {
         return bad(1, strf(tr("axis %c is not on this machine (%s)"), letter(w), m.name.c_str()),
                    w.col);
     double v;
-    if (!in.word_value(w, v)) return false;
+    if (!value(w, v)) return false;
     axis_seen = true;
     p.to.axis.set(size_t(axis));
     if (inc && !g52_seen) p.to.inc.set(size_t(axis));
@@ -432,7 +459,7 @@ bool Interpreter::Decoder::ijk_word(const Word& w) {
     if (p.g[23] && !owned)
         return bad(3, tr("the arguments of G23 must not be separated by another address"), w.col);
     double v;
-    if (!in.word_value(w, v)) return false;
+    if (!value(w, v)) return false;
     int k = letter(w) - 'I';
     p.to.ijk.set(size_t(k));
     if (inc) p.to.ijk_inc.set(size_t(k));
@@ -447,7 +474,7 @@ bool Interpreter::Decoder::r_word(const Word& w) {
         return true;
     }
     double v;
-    if (!in.word_value(w, v)) return false;
+    if (!value(w, v)) return false;
     p.to.has_r = true;
     p.to.r = v * unit;
     return true;
@@ -455,7 +482,7 @@ bool Interpreter::Decoder::r_word(const Word& w) {
 
 bool Interpreter::Decoder::feed_word(const Word& w) {
     double v;
-    if (!in.word_value(w, v)) return false;
+    if (!value(w, v)) return false;
     p.tech.has_f = true;
     p.tech.f = v;
     return true;
@@ -463,7 +490,7 @@ bool Interpreter::Decoder::feed_word(const Word& w) {
 
 bool Interpreter::Decoder::speed_word(const Word& w) {
     double v;
-    if (!in.word_value(w, v)) return false;
+    if (!value(w, v)) return false;
     p.tech.has_s = true;
     p.tech.s = v;
     return true;
@@ -472,7 +499,7 @@ bool Interpreter::Decoder::speed_word(const Word& w) {
 bool Interpreter::Decoder::tool_word(const Word& w) {
     int iv;
     double v;
-    if (!in.word_value(w, v, &iv)) return false;
+    if (!value(w, v, &iv)) return false;
     if (iv > m.tools)
         return bad(
             1, strf(tr("tool T%d does not exist (the turret has %d stations)"), iv, int(m.tools)),
@@ -485,7 +512,7 @@ bool Interpreter::Decoder::tool_word(const Word& w) {
 bool Interpreter::Decoder::corrector_word(const Word& w) {
     int iv;
     double v;
-    if (!in.word_value(w, v, &iv)) return false;
+    if (!value(w, v, &iv)) return false;
     if (iv > m.correctors)
         return bad(w.v.kind == Operand::Number ? 8 : 92,
                    strf(tr("corrector D%d above D%d"), iv, int(m.correctors)), w.col);
@@ -497,7 +524,7 @@ bool Interpreter::Decoder::corrector_word(const Word& w) {
 bool Interpreter::Decoder::m_word(const Word& w) {
     int iv;
     double v;
-    if (!in.word_value(w, v, &iv)) return false;
+    if (!value(w, v, &iv)) return false;
     if (p.tech.nm >= 8) return bad(3, tr("too many M functions in one block"), w.col);
     // At most one modal and one non-modal coded M per block (004:1063).
     if ((iv >= 200 && iv <= 899 && ++coded_modal > 1) ||
@@ -510,7 +537,7 @@ bool Interpreter::Decoder::m_word(const Word& w) {
 
 bool Interpreter::Decoder::ed_word(const Word& w) {
     double v;
-    if (!in.word_value(w, v)) return false;
+    if (!value(w, v)) return false;
     p.tech.has_ed = true;
     p.tech.ed = v;
     return true;
@@ -518,7 +545,7 @@ bool Interpreter::Decoder::ed_word(const Word& w) {
 
 bool Interpreter::Decoder::eg_word(const Word& w) {
     double v;
-    if (!in.word_value(w, v)) return false;
+    if (!value(w, v)) return false;
     // xgettext:no-c-format
     if (v < 1 || v > 100) return bad(1, tr("EG (acceleration) must be 1 to 100 %"), w.col);
     p.tech.has_eg = true;
@@ -528,7 +555,7 @@ bool Interpreter::Decoder::eg_word(const Word& w) {
 
 bool Interpreter::Decoder::ec_word(const Word& w) {
     double v;
-    if (!in.word_value(w, v)) return false;
+    if (!value(w, v)) return false;
     p.tech.has_ec = true;
     p.tech.ec = v;
     return true;
@@ -561,11 +588,11 @@ bool Interpreter::Decoder::pgp_word(const Word& w) {
     p.pgp.any = true;
     double v;
     if (w.addr == addrE('A')) {
-        if (!in.word_value(w, v)) return false;
+        if (!value(w, v)) return false;
         p.pgp.has_ea = true;
         p.pgp.ea = v;
     } else if (w.addr == addrE('B')) {
-        if (!in.word_value(w, v)) return false;
+        if (!value(w, v)) return false;
         p.pgp.has_eb = true;
         p.pgp.eb = v * unit;
         p.pgp.eb_unsigned = !w.v.has_sign;
@@ -591,7 +618,7 @@ bool Interpreter::Decoder::no_meaning(const Word& w) {
 // A word of a cycle, kept for the cycle to read (lengths ER EH in mm).
 bool Interpreter::Decoder::cyc_word(const Word& w) {
     double cv;
-    if (!in.word_value(w, cv)) return false;
+    if (!value(w, cv)) return false;
     if (p.cycle_words.n >= 16) return bad(3, tr("too many cycle words in one block"), w.col);
     p.cycle_words.word[p.cycle_words.n++] = {
         w.addr, w.addr == addrE('R') || w.addr == addrE('H') ? cv * unit : cv};
@@ -601,7 +628,7 @@ bool Interpreter::Decoder::cyc_word(const Word& w) {
 // G29: the surface normal P Q R (milling.md §4.6).
 bool Interpreter::Decoder::g29_normal(const Word& w) {
     double v;
-    if (!in.word_value(w, v)) return false;
+    if (!value(w, v)) return false;
     p.g29.has.set(size_t(letter(w) - 'P'));
     p.g29.n[letter(w) - 'P'] = v;
     return true;

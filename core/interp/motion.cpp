@@ -39,6 +39,14 @@ double rotary_length(const Axes& a, const Axes& b) {
 }  // namespace
 
 bool Interpreter::check_travel(const Axes& mach) {
+    // Every move asks: the common answer first, without a branch per axis.
+    // These are the comparisons of the loop below, which finds the axis at fault.
+    if (homed_.all()) {
+        bool inside = true;
+        for (size_t a = 0; a < size_t(kAxes); ++a)
+            inside &= (mach[a] >= travel_lo_[a] - 1e-6) & (mach[a] <= travel_hi_[a] + 1e-6);
+        if (inside) return true;
+    }
     for (int a = 0; a < kAxes; ++a) {
         double v = mach[size_t(a)], lo = travel_lo_[size_t(a)], hi = travel_hi_[size_t(a)];
         if (!homed_[size_t(a)] && std::abs(v - mach_[size_t(a)]) > 1e-9) {
@@ -553,12 +561,13 @@ bool Interpreter::emit_arc(int g, const Axes& target, int a0, int a1, double c0,
         cp[size_t(a1)] = c1;
         Axes cm = frames_.to_machine(cp);
         double mx = mach_[size_t(a0)] - cm[size_t(a0)], my = mach_[size_t(a1)] - cm[size_t(a1)];
-        double rm = std::hypot(mx, my) + std::fabs(r1 - r0);
+        const double dist = std::hypot(mx, my);
+        double rm = dist + std::fabs(r1 - r0);
         bool inside = cm[size_t(a0)] - rm >= travel_lo_[size_t(a0)] &&
                       cm[size_t(a0)] + rm <= travel_hi_[size_t(a0)] &&
                       cm[size_t(a1)] - rm >= travel_lo_[size_t(a1)] &&
                       cm[size_t(a1)] + rm <= travel_hi_[size_t(a1)];
-        rm = std::hypot(mx, my);
+        rm = dist;
         double am = inside ? 0 : std::atan2(my, mx);
         bool flip = frames_.mirror[size_t(a0)] != frames_.mirror[size_t(a1)];
         double swm = flip ? -sw : sw;

@@ -56,6 +56,95 @@ bool is_digit(char c) {
 bool is_upper(char c) {
     return c >= 'A' && c <= 'Z';
 }
+bool is_blank(char c) {
+    return c == ' ' || c == '\t' || c == '\r';
+}
+
+// The digits of a number at `i`: digits [ '.' digits ] | '.' digits, as a
+// mantissa (which wraps past 19 digits, where from_chars takes over) and
+// the counts on each side of the point; `end` is one past the last.
+struct Digits {
+    uint64_t m = 0;
+    size_t int_digits = 0, frac_digits = 0, end = 0;
+};
+inline Digits scan_digits(const char* p, size_t i, size_t n) {
+    Digits d;
+    const size_t start = i;
+    uint64_t m = 0;
+    while (i < n && is_digit(p[i])) m = m * 10 + uint64_t(p[i++] - '0');
+    d.int_digits = i - start;
+    if (i < n && p[i] == '.') {
+        const size_t f = ++i;
+        while (i < n && is_digit(p[i])) m = m * 10 + uint64_t(p[i++] - '0');
+        d.frac_digits = i - f;
+    }
+    d.m = m;
+    d.end = i;
+    return d;
+}
+
+// Up to 15 digits, mantissa and power of ten are exact doubles, so the one
+// division rounds correctly: the value from_chars would give, faster.
+constexpr size_t kExactDigits = 15;
+inline double exact_value(const Digits& d) {
+    static constexpr double kPow10[] = {1e0, 1e1, 1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                        1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
+    return double(d.m) / kPow10[d.frac_digits];
+}
+
+// The fast lane (issue 14). Most blocks are a label and words of a letter and
+// a number written against it: "N60 G2 X12.963 Y-127.942 I6.264 J-137.481".
+// This reads such a block in one pass and makes the Block the Parser would;
+// at anything else (a blank or variable value, a space inside a word, E, L
+// and O words, NC-like addresses, G76 G77 G79, a $ message, a number of more
+// than 15 digits, an error) it gives up, and the Parser reads the line from
+// its start.
+bool parse_plain(std::string_view line, Block& b) {
+    const char* p = line.data();
+    const size_t n = line.size();
+    size_t i = 0;
+    while (i < n && is_blank(p[i])) ++i;
+    if (i < n && p[i] == '/') {
+        b.skip = true;
+        ++i;
+    }
+    for (;;) {
+        while (i < n && is_blank(p[i])) ++i;
+        if (i == n) return true;
+        const char c = p[i];
+        if (c == '(') {
+            const size_t close = line.find(')', i);
+            if (close == std::string_view::npos) return false;
+            i = close + 1;
+            continue;
+        }
+        if (!is_upper(c) || c == 'E' || c == 'L' || c == 'O') return false;
+        Word& w = b.words.emplace_back();
+        w.addr = addr1(c);
+        w.col = uint16_t(i + 1);
+        size_t k = i + 1;
+        if (k < n && (p[k] == '+' || p[k] == '-')) {
+            w.v.has_sign = true;
+            w.v.neg = p[k] == '-';
+            ++k;
+        }
+        const Digits d = scan_digits(p, k, n);
+        const size_t digits = d.int_digits + d.frac_digits;
+        if (digits == 0 || digits > kExactDigits) return false;
+        w.v.kind = Operand::Number;
+        w.v.int_digits = uint8_t(d.int_digits);
+        w.v.frac_digits = uint8_t(d.frac_digits);
+        w.v.num = exact_value(d);
+        i = d.end;
+        if (c == 'G') {
+            const int g = w.v.num < 1e6 ? int(w.v.num) : -1;
+            if (g == 76 || g == 77 || g == 79) return false;
+        } else if (c == 'N' && b.words.size() == 1) {
+            if (d.frac_digits || d.int_digits > 5) return false;
+            b.n = long(w.v.num);
+        }
+    }
+}
 
 struct Parser {
     std::string_view s;
@@ -80,27 +169,14 @@ struct Parser {
 
     // digits [ '.' digits ] | '.' digits
     bool number(Operand& v) {
-        const size_t start = pos, n = s.size();
-        const char* p = s.data();
-        uint64_t m = 0;  // wraps past 19 digits, where the from_chars path takes over
-        size_t i = pos;
-        while (i < n && is_digit(p[i])) m = m * 10 + (p[i++] - '0');
-        size_t int_digits = i - start, frac_digits = 0;
-        if (i < n && p[i] == '.') {
-            size_t f = ++i;
-            while (i < n && is_digit(p[i])) m = m * 10 + (p[i++] - '0');
-            frac_digits = i - f;
-        }
-        pos = i;
-        v.int_digits = uint8_t(std::min<size_t>(int_digits, 255));
-        v.frac_digits = uint8_t(std::min<size_t>(frac_digits, 255));
-        if (int_digits == 0 && frac_digits == 0) return fail(1, start, tr("number expected"));
-        if (int_digits + frac_digits <= 15) {
-            // Mantissa and power of ten are exact doubles, so the one division rounds
-            // correctly: the value from_chars would give, faster.
-            static constexpr double kPow10[] = {1e0, 1e1, 1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
-                                                1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
-            v.num = double(m) / kPow10[frac_digits];
+        const size_t start = pos;
+        const Digits d = scan_digits(s.data(), start, s.size());
+        pos = d.end;
+        v.int_digits = uint8_t(std::min<size_t>(d.int_digits, 255));
+        v.frac_digits = uint8_t(std::min<size_t>(d.frac_digits, 255));
+        if (d.int_digits == 0 && d.frac_digits == 0) return fail(1, start, tr("number expected"));
+        if (d.int_digits + d.frac_digits <= kExactDigits) {
+            v.num = exact_value(d);
         } else {
             std::string_view span = s.substr(start, pos - start);
             char buf[64];
@@ -534,6 +610,8 @@ bool parse_block(std::string_view line, Block& out, Error& e) {
             strf(tr("block longer than %zu characters (%zu)"), size_t(kMaxBlockChars), line.size());
         return false;
     }
+    if (parse_plain(line, out)) return true;
+    out.clear();
     Parser p{line, 0, out, e};
     return p.run();
 }
