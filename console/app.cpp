@@ -11,6 +11,8 @@
 #include <clocale>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
+#include <vector>
 #include <fstream>
 #include <sstream>
 
@@ -199,6 +201,23 @@ bool exercise_setup(const ConsoleArgs& a, store::Store& st, training::Exercise& 
     return why.empty();
 }
 
+// :exercise NAME: this console ends and pupitre starts again on the
+// exercise, on the same store, theme and student.
+int restart_on(const ConsoleArgs& a, console::Session& s, const std::string& name) {
+    std::vector<std::string> args = {"pupitre", "--db", s.store()->path()};
+    if (!a.theme.empty()) args.insert(args.end(), {"--theme", a.theme});
+    if (a.ascii) args.push_back("--ascii");
+    args.insert(args.end(), {"exercise", name});
+    if (!a.student.empty()) args.insert(args.end(), {"--student", a.student});
+    std::vector<char*> argv;
+    for (std::string& x : args) argv.push_back(x.data());
+    argv.push_back(nullptr);
+    execv("/proc/self/exe", argv.data());
+    std::fprintf(stderr, tr("pupitre: cannot start again on exercise %s: %s\n"), name.c_str(),
+                 std::strerror(errno));
+    return kSoftware;
+}
+
 // The first screen of an attempt: its program selected, its task shown.
 void exercise_screen(console::Session& s, const training::Exercise& e) {
     if (e.program_number > 0 && s.memory().find(e.program_number)) s.sim().select(e.program_number);
@@ -248,6 +267,7 @@ int console(const ConsoleArgs& a) {
     if (s.sim().selected() >= 0)
         s.store()->set_setting("console.program." + m.name, std::to_string(s.sim().selected()));
     term.close();
+    if (!s.restart_exercise.empty()) return restart_on(a, s, s.restart_exercise);
     return rc;
 }
 

@@ -100,6 +100,7 @@ struct ExerciseArgs {
     std::string student;  // --student
     std::string machine;  // save: the machine whose setup
     std::string output;   // save -o, report --html
+    std::string pdf;      // report --pdf
     bool csv = false;
     ConsoleArgs console;
 };

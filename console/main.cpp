@@ -313,6 +313,8 @@ void add_training(CLI::App& app, CommandLine& c, std::vector<Command>& commands)
     cl->add_flag("--csv", ea.csv, tr("the report as CSV"));
     cl->add_option("--html", ea.output, tr("the report as one printable HTML file"))
         ->type_name("FILE");
+    cl->add_option("--pdf", ea.pdf, tr("the report's table as a PDF (A4 landscape)"))
+        ->type_name("FILE");
     commands.push_back({ex, [](const CommandLine& k) {
                             cli::ExerciseArgs e = k.ea;
                             e.db = k.db;

@@ -96,6 +96,9 @@ class Session {
                                const std::string& key);
     Effect submit_exercise();                        // :submit
     Effect exercise_command(std::string_view args);  // :exercise
+    // :exercise NAME: the console ends and starts again on that exercise
+    // (app.cpp), as `pupitre exercise NAME` would.
+    std::string restart_exercise;
     const ExerciseRun* exercise() const { return exercise_.get(); }
     // True (and says why) when `what` would show the truth of the exercise
     // in progress.
@@ -194,6 +197,7 @@ class Session {
     bool instrument_allowed(const std::string& word);
     void watch_crashes();
     void exercise_view(pages::View& v) const;
+    Effect start_command(std::string_view name);
     mutable std::vector<std::vector<std::array<double, 2>>>
         part_now_;  // GRAPH: the workshop's part
     mutable std::vector<std::vector<std::array<double, 2>>>

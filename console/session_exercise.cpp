@@ -181,14 +181,38 @@ Effect Session::submit_exercise() {
     return Effect::redraw;
 }
 
-Effect Session::exercise_command(std::string_view args) {
-    if (!args.empty() && args != "show") {
-        say(exercise_ ? tr("an exercise is in progress: :submit ends it")
-                      : tr("to start an exercise, quit and type pupitre exercise NAME "
-                           "(pupitre exercise list shows them)"),
-            true);
+// :exercise NAME: checked here (it exists, it is for this kind of machine,
+// nothing unsaved), then the console starts again on it.
+Effect Session::start_command(std::string_view name) {
+    if (exercise_ && !exercise_->grade) {
+        say(tr("an exercise is in progress: :submit ends it"), true);
         return Effect::redraw;
     }
+    if (sim_->in_cycle()) {
+        say(tr("a program is in cycle"), true);
+        return Effect::redraw;
+    }
+    if (editor.is_open() && editor.dirty && !modif) {
+        say(strf(tr("%%%d has unsaved changes: :save or :close! first"), editor.number), true);
+        return Effect::redraw;
+    }
+    training::Exercise e;
+    if (std::string why = find_exercise(store_.get(), std::string(name), e); !why.empty()) {
+        say(why, true);
+        return Effect::redraw;
+    }
+    if (!store_) {
+        say(tr("an exercise needs the store"), true);
+        return Effect::redraw;
+    }
+    release_lease();
+    restart_exercise = std::string(name);
+    quit = true;
+    return Effect::quit;
+}
+
+Effect Session::exercise_command(std::string_view args) {
+    if (!args.empty() && args != "show") return start_command(args);
     if (!exercise_) {
         say(tr("no exercise in progress: pupitre exercise NAME starts one"), true);
         return Effect::redraw;

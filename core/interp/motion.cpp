@@ -42,9 +42,10 @@ bool Interpreter::check_travel(const Axes& mach) {
     // Every move asks: the common answer first, without a branch per axis.
     // These are the comparisons of the loop below, which finds the axis at fault.
     if (homed_.all()) {
-        bool inside = true;
+        // Bitwise on ints, not && on bools: no branch per axis.
+        int inside = 1;
         for (size_t a = 0; a < size_t(kAxes); ++a)
-            inside &= (mach[a] >= travel_lo_[a] - 1e-6) & (mach[a] <= travel_hi_[a] + 1e-6);
+            inside &= int(mach[a] >= travel_lo_[a] - 1e-6) & int(mach[a] <= travel_hi_[a] + 1e-6);
         if (inside) return true;
     }
     for (int a = 0; a < kAxes; ++a) {

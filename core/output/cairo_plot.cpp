@@ -338,4 +338,51 @@ bool write_pdf(const Scene& sc, std::FILE* out) {
     return ok && std::fflush(out) == 0;
 }
 
+namespace {
+
+// One page of the text: the title and "page/pages" above, the lines below.
+void text_page(cairo_t* cr, const std::string& title, const std::vector<std::string>& lines,
+               size_t from, size_t to, int page, int pages) {
+    const double w = 842, margin = 36, size = 8.5, lead = size * 1.4;
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
+    cairo_set_font_size(cr, 11);
+    cairo_move_to(cr, margin, margin + 11);
+    cairo_show_text(cr, title.c_str());
+    const std::string n = std::to_string(page) + "/" + std::to_string(pages);
+    cairo_text_extents_t ext;
+    cairo_text_extents(cr, n.c_str(), &ext);
+    cairo_move_to(cr, w - margin - ext.x_advance, margin + 11);
+    cairo_show_text(cr, n.c_str());
+    cairo_select_font_face(cr, "monospace", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+    cairo_set_font_size(cr, size);
+    double y = margin + 11 + 2 * lead;
+    for (size_t i = from; i < to; ++i, y += lead) {
+        cairo_move_to(cr, margin, y);
+        cairo_show_text(cr, lines[i].c_str());
+    }
+    cairo_show_page(cr);
+}
+
+}  // namespace
+
+bool write_text_pdf(const std::string& title, const std::vector<std::string>& lines,
+                    std::FILE* out) {
+    const double w = 842, h = 595;  // A4 landscape, points
+    cairo_surface_t* s = cairo_pdf_surface_create_for_stream(to_file, out, w, h);
+    cairo_pdf_surface_set_metadata(s, CAIRO_PDF_METADATA_TITLE, title.c_str());
+    cairo_t* cr = cairo_create(s);
+    const size_t per_page = 36;
+    const int pages = std::max(1, int((lines.size() + per_page - 1) / per_page));
+    for (int p = 0; p < pages; ++p)
+        text_page(cr, title, lines, size_t(p) * per_page,
+                  std::min(lines.size(), size_t(p + 1) * per_page), p + 1, pages);
+    bool ok = cairo_status(cr) == CAIRO_STATUS_SUCCESS;
+    cairo_destroy(cr);
+    cairo_surface_finish(s);
+    ok = ok && cairo_surface_status(s) == CAIRO_STATUS_SUCCESS;
+    cairo_surface_destroy(s);
+    return ok && std::fflush(out) == 0;
+}
+
 }  // namespace pupitre

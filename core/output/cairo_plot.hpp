@@ -5,6 +5,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 #include <cstdio>
+#include <string>
+#include <vector>
 
 #include "core/output/scene.hpp"
 
@@ -16,5 +18,10 @@ bool write_png(const Scene& scene, int width, std::FILE* out);
 // The scene as a one-page PDF, the page the scene's (paper mm), the drawing at
 // its scale on paper (Scene::ratio) when printed at 100 %. False on failure.
 bool write_pdf(const Scene& scene, std::FILE* out);
+// Lines of monospaced text as a PDF on A4 landscape pages, `title` and the
+// page's number at the head of each (the teacher's report, pupitre class
+// report --pdf). False on failure.
+bool write_text_pdf(const std::string& title, const std::vector<std::string>& lines,
+                    std::FILE* out);
 
 }  // namespace pupitre

@@ -106,6 +106,18 @@ hidden)
     wait_for 'submitted: '
     for s in "${secrets[@]}"; do wait_for "${s//./\\.}"; done
     ;;
+restart)
+    # :exercise NAME from a plain console: refused for an unknown name, then
+    # the console starts again on the exercise, same store.
+    start --db "$db"
+    cmd ":exercise nosuch"
+    wait_for 'no exercise named nosuch'
+    cmd ":exercise exam-2005"
+    wait_for 'Enter the six values' 10
+    wait_for 'exercise exam-2005: the task is on this page'
+    cmd ":exercise wear"
+    wait_for 'an exercise is in progress: :submit ends it'
+    ;;
 first)
     # lathe-first at the machine, as a student does it: tool 1 is measured,
     # the bar's place is not. A fixed class key, so erin's truth is the same

@@ -67,6 +67,10 @@ grep -q 'Mistakes most made:' "$work/report" || fail "$(cat "$work/report")"
 "$bin" "${db[@]}" class report --csv | head -1 | grep -q '^exercise,student,attempts' || fail "csv"
 "$bin" "${db[@]}" class report --html "$work/r.html" > /dev/null || fail "html"
 grep -q '</html>' "$work/r.html" || fail "html file"
+"$bin" "${db[@]}" class report --pdf "$work/r.pdf" > /dev/null || fail "pdf"
+head -c 5 "$work/r.pdf" | grep -q '%PDF-' || fail "pdf file"
+"$bin" "${db[@]}" class report --pdf /nonexistent/dir/r.pdf 2> /dev/null
+[ $? = 73 ] || fail "a PDF that cannot be written should exit 73"
 "$bin" "${db[@]}" class rapport 2> /dev/null
 [ $? = 64 ] || fail "class rapport should be a usage error"
 echo "training cli: ok"
