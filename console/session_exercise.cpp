@@ -54,7 +54,9 @@ std::string Session::start_exercise(const training::Exercise& e, const std::stri
     x->truth.description = e.title;
     auto open = store_->open_attempt(e.name, student);
     if (open.error) return open.error.message;
-    if (open.value) {
+    // An attempt begun on another text of the exercise (the teacher changed
+    // it since) is left as it was: its truth was drawn from that text.
+    if (open.value && open.value->exercise_sha == sha256_hex(e.source)) {
         x->attempt = *open.value;
     } else {
         x->attempt.exercise = e.name;
