@@ -12,9 +12,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <vector>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include "console/cli.hpp"
 #include "console/exercise.hpp"

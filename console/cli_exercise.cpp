@@ -12,8 +12,8 @@
 #include "console/class_report.hpp"
 #include "console/cli.hpp"
 #include "console/exercise.hpp"
-#include "core/output/cairo_plot.hpp"
 #include "core/i18n.hpp"
+#include "core/output/cairo_plot.hpp"
 #include "store/store.hpp"
 
 namespace pupitre::cli {

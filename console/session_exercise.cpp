@@ -214,6 +214,8 @@ Effect Session::start_command(std::string_view name) {
 }
 
 Effect Session::exercise_command(std::string_view args) {
+    while (!args.empty() && args.front() == ' ') args.remove_prefix(1);
+    while (!args.empty() && args.back() == ' ') args.remove_suffix(1);
     if (!args.empty() && args != "show") return start_command(args);
     if (!exercise_) {
         say(tr("no exercise in progress: pupitre exercise NAME starts one"), true);
