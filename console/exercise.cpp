@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string_view>
 
 #include "console/session.hpp"
 #include "core/i18n.hpp"
@@ -32,6 +33,16 @@ std::string read_file(const std::string& path, bool& ok) {
     return ss.str();
 }
 
+std::string to_hex(std::string_view bytes) {
+    std::string out;
+    char h[3];
+    for (unsigned char c : bytes) {
+        std::snprintf(h, sizeof h, "%02x", c);
+        out += h;
+    }
+    return out;
+}
+
 std::string random_hex(std::string& why) {
     unsigned char b[32];
     int fd = open("/dev/urandom", O_RDONLY | O_CLOEXEC);
@@ -41,13 +52,7 @@ std::string random_hex(std::string& why) {
         return {};
     }
     close(fd);
-    std::string out;
-    char h[3];
-    for (unsigned char c : b) {
-        std::snprintf(h, sizeof h, "%02x", c);
-        out += h;
-    }
-    return out;
+    return to_hex(std::string_view(reinterpret_cast<const char*>(b), sizeof b));
 }
 
 // A keystream from SHA-256 of the seed and a counter, XORed in, as hex.
@@ -133,13 +138,7 @@ std::string student_name(const std::string& asked) {
 }
 
 std::string scramble(const std::string& text, uint64_t seed) {
-    std::string x = keystream_xor(text, seed), out = "scrambled:";
-    char h[3];
-    for (unsigned char c : x) {
-        std::snprintf(h, sizeof h, "%02x", c);
-        out += h;
-    }
-    return out;
+    return "scrambled:" + to_hex(keystream_xor(text, seed));
 }
 
 std::string unscramble(const std::string& text, uint64_t seed) {

@@ -12,6 +12,16 @@ W=110 H=40
 export PUPITRE_CLASS_KEY=$work/class.key
 db=$work/store.db
 
+# Homed, at full speed, T1 D1 in the turret (IMD).
+homed_with_t1() {
+    pom
+    cmd ":speed max"
+    cmd ":mode imd"
+    cmd "T1 D1 M6"
+    keys F9
+    wait_for 'IMD done' 10
+}
+
 # The exam's six values typed on the PREF and CORR pages, PREF X as given.
 exam() {
     local pref_x=$1
@@ -76,12 +86,7 @@ hidden)
     "$bin" --db "$db" exercise truth exam-2005-drawn --student carol > "$work/truth" || fail "truth"
     mapfile -t secrets < <(awk '/^(PREF|DEC1|D1)\./ && ($2 > 0.5 || $2 < -0.5) { print $2 }' "$work/truth")
     [ ${#secrets[@]} -eq 5 ] || fail "expected 5 values to hide: $(cat "$work/truth")"
-    pom
-    cmd ":speed max"
-    cmd ":mode imd"
-    cmd "T1 D1 M6"
-    keys F9
-    wait_for 'IMD done' 10
+    homed_with_t1
     cmd ":measure tool T1 X"
     wait_for 'presetter: tool T1 X'
     cmd ":measure length"
@@ -125,12 +130,7 @@ first)
     echo 0123456789abcdef0123456789abcdef > "$PUPITRE_CLASS_KEY"
     start --db "$db" exercise lathe-first --student erin
     wait_for 'PREF Z on the face'
-    pom
-    cmd ":speed max"
-    cmd ":mode imd"
-    cmd "T1 D1 M6"
-    keys F9
-    wait_for 'IMD done' 10
+    homed_with_t1
     cmd "S800 M4"
     keys F9
     wait_for 'IMD done' 10
