@@ -69,7 +69,7 @@ int exercise_list(const ExerciseArgs& a) {
     auto listed = [](const std::string& where, const std::string& name,
                      const training::Exercise& e) {
         std::printf("%-18s %-6s %-8s %s\n", name.c_str(), e.machine.c_str(), where.c_str(),
-                    e.title.c_str());
+                    e.title_here().c_str());
     };
     for (const std::string& n : training::builtin_exercises()) {
         training::Exercise e;

@@ -51,7 +51,7 @@ std::string Session::start_exercise(const training::Exercise& e, const std::stri
     if (std::string why = training::draw_setup(e, x->seed, x->truth); !why.empty())
         return strf(tr("exercise %s: its setup: %s"), e.name.c_str(), why.c_str());
     x->truth.name = e.name;
-    x->truth.description = e.title;
+    x->truth.description = e.title_here();
     auto open = store_->open_attempt(e.name, student);
     if (open.error) return open.error.message;
     // An attempt begun on another text of the exercise (the teacher changed
@@ -246,14 +246,15 @@ void Session::exercise_view(pages::View& v) const {
         }
         return;
     }
-    v.exercise.emplace_back(K::title, strf(tr("%s: %s"), x.ex.name.c_str(), x.ex.title.c_str()));
+    v.exercise.emplace_back(K::title,
+                            strf(tr("%s: %s"), x.ex.name.c_str(), x.ex.title_here().c_str()));
     const double minutes = double(wall_ms() - x.attempt.started_ms) / 60000;
     std::string clock =
         strf(tr("Student %s, %.0f min since the start"), x.student.c_str(), std::floor(minutes));
     if (x.ex.minutes > 0) clock += strf(tr(" (of %g)"), x.ex.minutes);
     if (x.attempt.crashes > 0) clock += strf(tr(", crashes %d"), x.attempt.crashes);
     v.exercise.emplace_back(K::note, clock);
-    for (const std::string& t : x.ex.task) {
+    for (const std::string& t : x.ex.task_here()) {
         v.exercise.emplace_back(K::text, "");
         v.exercise.emplace_back(K::text, t);
     }

@@ -173,7 +173,20 @@ std::string plain_key(Exercise& e, std::string_view key, std::string_view val, i
     return {};
 }
 
+// "title.fr", "task.fr": a two-letter language after the dot.
+bool translated(Exercise& e, std::string_view key, std::string_view val) {
+    const size_t dot = key.find('.');
+    if (dot == std::string_view::npos || key.size() != dot + 3) return false;
+    const std::string_view head = key.substr(0, dot), lang = key.substr(dot + 1);
+    if ((head != "title" && head != "task") || lang[0] < 'a' || lang[0] > 'z' || lang[1] < 'a' ||
+        lang[1] > 'z')
+        return false;
+    (head == "title" ? e.titles : e.tasks).emplace_back(lang, val);
+    return true;
+}
+
 std::string one_key(Exercise& e, std::string_view key, std::string_view val, int line) {
+    if (translated(e, key, val)) return {};
     if (key.substr(0, 6) == "truth.") {
         Draw d;
         d.key = std::string(key.substr(6));
@@ -254,6 +267,19 @@ std::string setup_text(const Exercise& e, int which, uint64_t seed) {
 }
 
 }  // namespace
+
+std::string Exercise::title_here() const {
+    for (const auto& [lang, text] : titles)
+        if (lang == i18n::language()) return text;
+    return title;
+}
+
+std::vector<std::string> Exercise::task_here() const {
+    std::vector<std::string> out;
+    for (const auto& [lang, text] : tasks)
+        if (lang == i18n::language()) out.push_back(text);
+    return out.empty() ? task : out;
+}
 
 bool Exercise::drawn() const {
     return std::any_of(truth.begin(), truth.end(), [](const Draw& d) { return d.range; });

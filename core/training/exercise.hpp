@@ -57,6 +57,8 @@ struct Exercise {
     std::string setup = "lathe";    // the built-in setup it starts from
     std::string origin;             // lathe: face or jaws; mill: corner or centre
     std::vector<std::string> task;  // paragraphs
+    // The title and task in other languages ("title.fr", "task.fr"), by code.
+    std::vector<std::pair<std::string, std::string>> titles, tasks;
     std::vector<Draw> truth;
     std::vector<Target> find;
     std::vector<Start> start;
@@ -68,6 +70,10 @@ struct Exercise {
     int program_number = 0;                // the program below, as %N
     std::string program;                   // its text, "" when none
     bool drawn() const;                    // some value comes from a range
+    // The title and the task in the language of the texts (i18n), else as
+    // written without a language.
+    std::string title_here() const;
+    std::vector<std::string> task_here() const;
     bool lathe() const { return machine == "lathe"; }
 };
 

@@ -242,7 +242,7 @@ std::string duration(double seconds) {
 
 std::vector<std::string> report_lines(const Exercise& e, const Grade& g) {
     std::vector<std::string> out;
-    out.push_back(strf(tr("%s: %s"), e.name.c_str(), e.title.c_str()));
+    out.push_back(strf(tr("%s: %s"), e.name.c_str(), e.title_here().c_str()));
     std::string head = strf(tr("Score %d%%  time %s"), g.score, duration(g.seconds).c_str());
     if (e.minutes > 0) head += strf(tr(" (of %g min%s)"), e.minutes, g.late ? tr(", late") : "");
     head += strf(tr("  crashes %d"), g.crashes);

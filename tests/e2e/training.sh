@@ -111,6 +111,16 @@ hidden)
     wait_for 'submitted: '
     for s in "${secrets[@]}"; do wait_for "${s//./\\.}"; done
     ;;
+french)
+    # A French class: the page, the task and the report in French.
+    start --lang fr --db "$db" exercise wear --student chloé
+    wait_for '─ EXERCICE'
+    wait_for 'La machine est réglée'
+    wait_for 'Élève chloé'
+    cmd ":submit"
+    wait_for 'rendu : 0 %|rendu'
+    wait_for 'FAUX'
+    ;;
 restart)
     # :exercise NAME from a plain console: refused for an unknown name, then
     # the console starts again on the exercise, same store.

@@ -251,6 +251,23 @@ TEST(Exercise, SavedFromASetupItReadsBack) {
     EXPECT_NEAR(expect(e, t, "PREF.X"), -20, 1e-9);
 }
 
+TEST(Exercise, TheTaskInTheLanguageOfTheTexts) {
+    Exercise e;
+    ASSERT_EQ(parse_exercise("name = x\nfind = PREF.Z\ntitle = Face\ntitle.fr = La face\n"
+                             "task = Touch it.\ntask.fr = La tangenter.\ntask.fr = Puis :submit.\n",
+                             e),
+              "");
+    EXPECT_EQ(e.title_here(), "Face");  // the tests run in English
+    EXPECT_EQ(e.task_here(), std::vector<std::string>{"Touch it."});
+    ASSERT_EQ(e.tasks.size(), 2u);
+    EXPECT_EQ(e.tasks[1].first, "fr");
+    EXPECT_EQ(e.tasks[1].second, "Puis :submit.");
+    EXPECT_EQ(parse_exercise("name = x\nfind = PREF.Z\ntask.french = non\n", e),
+              "line 3: task.french: unknown key 'task.french'");
+    for (const std::string& n : builtin_exercises())  // each shipped one has its French
+        EXPECT_FALSE(builtin(n.c_str()).tasks.empty()) << n;
+}
+
 TEST(Sha256, HmacMatchesRfc4231) {
     // RFC 4231, test case 2.
     EXPECT_EQ(hmac_sha256_hex("Jefe", "what do ya want for nothing?"),
