@@ -111,6 +111,66 @@ hidden)
     wait_for 'submitted: '
     for s in "${secrets[@]}"; do wait_for "${s//./\\.}"; done
     ;;
+mill)
+    # mill-pocket at the machine: the edge finder kicks on the block's -X and
+    # -Y faces (PREF = OM + its radius), the probe's lamp on the top (PREF Z
+    # = OM - its length), the pocket cut and measured. The truth (what the
+    # teacher's command prints) is what the touch-offs must give. A fixed
+    # key: the same truth on every run (the moves suit any draw of the ranges).
+    echo 0123456789abcdef0123456789abcdef > "$PUPITRE_CLASS_KEY"
+    start --db "$db" exercise mill-pocket --student finn
+    wait_for 'edge finder'
+    "$bin" --db "$db" exercise truth mill-pocket --student finn > "$work/truth" || fail "truth"
+    truth() { awk -v n="$1" '$1 == n { print $2 }' "$work/truth"; }
+    pom
+    cmd ":speed max"
+    cmd ":mode imd"
+    cmd "T6 D6 M6"
+    keys F9
+    wait_for 'IMD done' 10
+    cmd "M3 S800"
+    keys F9
+    wait_for 'IMD done' 10
+    cmd ":mode jog"
+    cmd ":jog Y -100"
+    cmd ":jog Z -400"
+    cmd ":jog X 80"
+    wait_for "the edge finder T6 kicks on the block's -X face" 10
+    cmd ":touch X -5"
+    wait_for "surface -5.000 = $(truth PREF.X)" 5
+    cmd ":jog X -30"
+    cmd ":jog Y -100"
+    cmd ":jog X 90"
+    cmd ":jog Y 120"
+    wait_for "the edge finder T6 kicks on the block's -Y face" 10
+    cmd ":touch Y -5"
+    wait_for "surface -5.000 = $(truth PREF.Y)" 5
+    cmd ":jog Y -20"
+    cmd ":jog Z 300"
+    cmd ":mode imd"
+    cmd "T4 D4 M6"
+    keys F9
+    wait_for 'IMD done' 10
+    cmd "M5"
+    keys F9
+    wait_for 'IMD done' 10
+    cmd ":mode jog"
+    cmd ":jog X -30"
+    cmd ":jog Y 60"
+    cmd ":jog Z -400"
+    wait_for 'T4 touched the part$' 10
+    cmd ":touch Z 0"
+    wait_for "surface 0.000 = $(truth PREF.Z)" 5
+    cmd ":jog Z 50"
+    cmd ":mode auto"
+    keys F9
+    wait_for 'M02: end of program %40' 60
+    cmd ":measure width X X60 Y40 Z-2.5"
+    wait_for 'caliper: width X X60 Y40 Z-2.5 = 40.00 mm'
+    cmd ":submit"
+    wait_for 'submitted: 100%'
+    wait_for 'depth X60 Y40 +5.000 +5.000 +4.950 .. 5.050 +ok'
+    ;;
 french)
     # A French class: the page, the task and the report in French.
     start --lang fr --db "$db" exercise wear --student chloé
