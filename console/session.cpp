@@ -110,11 +110,13 @@ Effect Session::read_part(std::string_view spec) {
         say(strf(tr("%s: %s"), asked.c_str(), why.c_str()), true);
         return Effect::redraw;
     }
-    int decimals = r.resolution < 0.005 ? 3 : 2;
-    // TRANSLATORS: the instrument, what it measured, the reading in mm.
+    // An exercise allows some instruments only; what is read may explain a
+    // mistake (a diameter taken for a radius).
     const std::string word = asked.substr(0, asked.find(' '));
     if (!instrument_allowed(word)) return Effect::redraw;
     note_reading(word, r.value);
+    int decimals = r.resolution < 0.005 ? 3 : 2;
+    // TRANSLATORS: the instrument, what it measured, the reading in mm.
     std::string said =
         strf(tr("%s: %s = %.*f mm"), r.instrument.c_str(), asked.c_str(), decimals, r.value);
     // TRANSLATORS: after a presetter's reading: its uncertainty in mm.

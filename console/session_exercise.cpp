@@ -88,7 +88,9 @@ std::string Session::exercise_workshop() {
     w->hide_places(true);
     auto r = store_->workshop(store_key_);
     bool fresh = true;
-    if (!r.error && r.value) fresh = !w->load_part(unscramble(r.value->part, exercise_->seed));
+    const std::string part =
+        !r.error && r.value ? unscramble(r.value->part, exercise_->seed) : std::string();
+    if (!part.empty()) fresh = !w->load_part(part);  // else fresh stock, as built
     workshop_saved_ = fresh ? 0 : w->generation();
     sim_->set_workshop(std::move(w));
     if (fresh) save_workshop();
