@@ -3,6 +3,8 @@
 // the instruments' readings; a machining centre's: its Workshop, a jog, a
 // plunge and a pass of each tool, the instruments. Any crash, sanitizer report, hang or runaway
 // allocation is a bug: a bad setup must end in "line N: ..." (pupitre-setup(5)).
+// A text that reads as an exercise (pupitre-exercise(5)) is drawn, its
+// targets worked out, graded with nothing entered and reported.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <cstddef>
 #include <cstdint>
@@ -10,6 +12,8 @@
 #include <string_view>
 
 #include "core/interp/interp.hpp"
+#include "core/training/exercise.hpp"
+#include "core/training/grade.hpp"
 #include "core/workshop/lathe_part.hpp"
 #include "core/workshop/setup.hpp"
 #include "core/workshop/workshop.hpp"
@@ -66,6 +70,33 @@ int mill(const Setup& s) {
     return 0;
 }
 
+// An exercise: its truth drawn with two seeds, what must be found, a grade
+// of nothing entered (no part: every dimension unread) and its report. Not
+// rehearsed: that runs the exercise's program, the interpreter's own target.
+int exercise(std::string_view text) {
+    training::Exercise e;
+    if (!training::parse_exercise(text, e).empty()) return 0;
+    for (uint64_t seed : {uint64_t(1), uint64_t(0xfeedfacecafebeef)}) {
+        Setup truth;
+        if (!training::draw_setup(e, seed, truth).empty()) return 0;
+        if (truth.kind == "mill" &&
+            truth.mill.length / truth.mill.cell * truth.mill.width / truth.mill.cell > 1e6)
+            return 0;
+        training::Values found;
+        for (const training::Target& t : e.find) {
+            double v = 0;
+            std::string how;
+            if (training::expected(e, truth, t.name, v, &how)) found[t.name] = -v;
+        }
+        training::Context ctx;
+        ctx.diameters = e.diameters;
+        ctx.shims = e.shims;
+        const training::Grade g = training::grade(e, truth, found, ctx, nullptr, 1, 60);
+        (void)training::report_lines(e, g);
+    }
+    return 0;
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
@@ -74,6 +105,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     static bool init = builtin_machine("lathe", lathe);
     (void)init;
     std::string_view text(reinterpret_cast<const char*>(data), size);
+    if (text.find("find") != std::string_view::npos ||
+        text.find("dimension") != std::string_view::npos)
+        return exercise(text);
     Setup s;
     if (!parse_setup(text, s).empty()) return 0;
     if (s.kind == "mill") return mill(s);
