@@ -1,0 +1,162 @@
+// The Cazeneuve HB CNC dialect (seed 003, chapter VI; pupitre-cazeneuve(5)):
+// one test per rule, with the seed line it comes from.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <gtest/gtest.h>
+
+#include "core/interp/caz.hpp"
+#include "core/parse/codes.hpp"
+#include "helpers.hpp"
+
+namespace pupitre {
+namespace {
+
+using test::Prog;
+
+Prog caz(const std::string& text) {
+    return Prog(text, "cazeneuve");
+}
+
+TEST(Cazeneuve, ProfileNamesItsDialect) {
+    MachineProfile m;
+    ASSERT_TRUE(builtin_machine("cazeneuve", m));
+    EXPECT_EQ(m.dialect, Dialect::cazeneuve);
+    EXPECT_FALSE(m.x_diameter);      // X a radius (003:857-871)
+    ASSERT_EQ(m.ranges.size(), 2u);  // HB CNC 3: 50-325, 400-2100 (003:905-906)
+    EXPECT_EQ(m.ranges[1].max, 2100);
+    MachineProfile lathe;
+    ASSERT_TRUE(builtin_machine("lathe", lathe));
+    EXPECT_EQ(lathe.dialect, Dialect::num);  // the default
+    MachineProfile bad;
+    EXPECT_FALSE(
+        parse_machine("name = x\nkind = lathe\naxes = X Z\ndialect = fanuc\n", bad).empty());
+}
+
+// The same number means something else per dialect (DESIGN §6).
+TEST(Cazeneuve, CodesTableHasItsOwnRows) {
+    const GCode* num92 = find_g(92);
+    const GCode* caz92 = find_g(92, Dialect::cazeneuve);
+    ASSERT_TRUE(num92 && caz92);
+    EXPECT_NE(num92->text, caz92->text);  // origin preset / facing cycle (003:1469)
+    EXPECT_EQ(find_g(7)->support, Support::option);
+    EXPECT_EQ(find_g(7, Dialect::cazeneuve)->support, Support::yes);  // G7XZ (003:1083)
+    EXPECT_TRUE(find_m(50, Dialect::cazeneuve));                      // 003:968
+    EXPECT_FALSE(find_g(25, Dialect::cazeneuve));
+}
+
+// Lengths in micrometres, X a radius (003:857-885): X15000 Z-30000 is r15 z-30.
+TEST(Cazeneuve, MicrometresAndRadius) {
+    Prog p = caz("N10 G X15000 Z-30000\nN20 M2\n");
+    ASSERT_EQ(p.error(), 0);
+    ASSERT_EQ(p.cap.moves.size(), 1u);
+    EXPECT_NEAR(p.cap.moves[0].to_prog[X], 15.0, 1e-9);
+    EXPECT_NEAR(p.cap.moves[0].to_prog[Z], -30.0, 1e-9);
+    EXPECT_FALSE(p.cap.moves[0].x_diameter);
+}
+
+// G alone is G00 (003:993).
+TEST(Cazeneuve, GAloneIsRapid) {
+    Prog p = caz("N10 G1 X1000 F100\nN20 G X2000\nN30 M2\n");
+    ASSERT_EQ(p.cap.moves.size(), 2u);
+    EXPECT_EQ(p.cap.moves[1].g, 0);
+}
+
+// An axis word without a value leaves the axis where it is (003:997).
+TEST(Cazeneuve, BlankAxisStays) {
+    Prog p = caz("N10 G X18000 Z3000\nN20 M3 S500\nN30 G1 G95 X Z-8000 F200\nN40 M2\n");
+    ASSERT_EQ(p.error(), 0);
+    ASSERT_EQ(p.cap.moves.size(), 2u);
+    EXPECT_NEAR(p.cap.moves[1].to_prog[X], 18.0, 1e-9);
+    EXPECT_NEAR(p.cap.moves[1].to_prog[Z], -8.0, 1e-9);
+}
+
+// N has at most five digits (003:812).
+TEST(Cazeneuve, NFiveDigits) {
+    EXPECT_EQ(caz("N99999 M2\n").error(), 0);
+    EXPECT_NE(caz("N100000 M2\n").error(), 0);
+}
+
+// G95: F in micrometres per revolution, F250 = 0.25 mm/rev (003:891, 894);
+// G94: mm/min (003:890).
+TEST(Cazeneuve, FeedUnits) {
+    Prog p = caz("N10 M3 S1000\nN20 G1 G95 X1000 F250\nN30 G94 X2000 F100\nN40 M2\n");
+    ASSERT_EQ(p.error(), 0);
+    ASSERT_EQ(p.cap.moves.size(), 2u);
+    EXPECT_NEAR(p.cap.moves[0].feed, 250.0, 1e-6);  // 0.25 mm/rev at 1000 rev/min
+    EXPECT_NEAR(p.cap.moves[1].feed, 100.0, 1e-6);
+}
+
+// G4: F in tenths of a second ("G4 F4,1 - avec Fmax 60000", 003:1018).
+TEST(Cazeneuve, DwellTenths) {
+    Prog p = caz("N10 G4 F50\nN20 M2\n");
+    ASSERT_EQ(p.error(), 0);
+    EXPECT_NEAR(p.in->seconds(), 5.0, 1e-9);
+}
+
+// T101: turret position 1, corrector 01 (003:1036-1039); 1-4 and 11-14 (003:1028-1030).
+TEST(Cazeneuve, TurretAndCorrector) {
+    Prog p = caz("N10 T101\nN20 T1104\nN30 M2\n");
+    ASSERT_EQ(p.error(), 0);
+    ASSERT_EQ(p.cap.tools.size(), 2u);
+    EXPECT_EQ(p.cap.tools[0], std::make_pair(1, 1));
+    EXPECT_EQ(p.cap.tools[1], std::make_pair(11, 4));
+    EXPECT_EQ(caz("N10 T501\nN20 M2\n").error(), caz::kTool);
+}
+
+// G7XZ: a rapid back to the indexing point (003:1083).
+TEST(Cazeneuve, G7XZReturnsToIndexingPoint) {
+    Prog p = caz("N10 G X10000 Z5000\nN20 G7XZ\nN30 M2\n");
+    ASSERT_EQ(p.error(), 0);
+    ASSERT_EQ(p.cap.moves.size(), 2u);
+    EXPECT_EQ(p.cap.moves[1].g, 0);
+    EXPECT_NEAR(p.cap.moves[1].to_mach[X], p.machine.home[X], 1e-9);
+    EXPECT_NEAR(p.cap.moves[1].to_mach[Z], p.machine.home[Z], 1e-9);
+}
+
+// S in rev/min with the two ranges (003:903-906); M3 M4 M5 (003:910-914).
+TEST(Cazeneuve, SpindleRanges) {
+    Prog p = caz("N10 M3 S1500\nN20 M4 S135\nN30 M5\nN40 M2\n");
+    ASSERT_EQ(p.error(), 0);
+    EXPECT_EQ(caz("N10 M3 S9000\nN20 M2\n").error(), caz::kSpeed);
+    EXPECT_EQ(caz("N10 M3 S350\nN20 M2\n").error(), caz::kSpeed);  // between the ranges
+}
+
+// G2/G3 with I K the centre from the origin (003:855, 874): ex1's R20 arc.
+TEST(Cazeneuve, ArcCentreAbsolute) {
+    Prog p = caz("N10 G1 X15000 Z-30000 F100\nN20 G2 X30000 Z-63229 I30000 K-43229\nN30 M2\n");
+    ASSERT_EQ(p.error(), 0);
+    ASSERT_EQ(p.cap.moves.size(), 2u);
+    EXPECT_NEAR(p.cap.moves[1].sweep, -131.4, 0.1);
+}
+
+// G33: the pitch in micrometres (003:1161), the spindle turning.
+TEST(Cazeneuve, G33Pitch) {
+    Prog p = caz("N10 M3 S1000\nN20 G X9000 Z5000\nN30 G33 Z-30000 F1000\nN40 G X11000\nN50 M2\n");
+    ASSERT_EQ(p.error(), 0);
+    ASSERT_EQ(p.cap.moves.size(), 3u);
+    EXPECT_NEAR(p.cap.moves[1].feed, 1000.0, 1e-6);  // 1 mm/rev at 1000 rev/min
+    EXPECT_EQ(caz("N10 G33 Z-30000 F1000\nN20 M2\n").error(), caz::kSpindleStopped);
+}
+
+// M0, M1, M2, M30 (003:958-972); the end of the text without them.
+TEST(Cazeneuve, Ends) {
+    EXPECT_EQ(caz("N10 M30\n").error(), 0);
+    EXPECT_EQ(caz("N10 M2\n").error(), 0);
+    EXPECT_EQ(caz("N10 G X1000\n").error(), caz::kNoEnd);
+    EXPECT_EQ(caz("N10 M0\nN20 M2\n").cap.stops.size(), 1u);
+}
+
+// Error categories (003:798): syntax, function, capacity.
+TEST(Cazeneuve, ErrorCategories) {
+    EXPECT_EQ(caz("N10 G X1.5\nN20 M2\n").error(), caz::kNumber);
+    EXPECT_EQ(caz("N10 G X1000 R5\nN20 M2\n").error(), caz::kSyntax);
+    EXPECT_EQ(caz("N10 G X1000 F1 F2\nN20 M2\n").error(), caz::kTwice);
+    EXPECT_EQ(caz("N10 G25 S100\nN20 M2\n").error(), caz::kUnknownG);
+    EXPECT_EQ(caz("N10 G34 X1 Z1\nN20 M2\n").error(), caz::kLater);
+    EXPECT_EQ(caz("N10 G X999000\nN20 M2\n").error(), caz::kTravelX);
+    EXPECT_EQ(caz::category_of(caz::kSyntax), "syntax");
+    EXPECT_EQ(caz::category_of(caz::kArc), "function");
+    EXPECT_EQ(caz::category_of(caz::kSpeed), "capacity");
+}
+
+}  // namespace
+}  // namespace pupitre
