@@ -45,11 +45,27 @@ inline constexpr double kMaxPitch = 60;         // mm (003:1163)
 inline constexpr double kMaxThreadFeed = 3800;  // mm/min (003:1162)
 }  // namespace caz
 
-// What the dialect keeps beside the NUM modal state.
+// What the dialect keeps beside the NUM modal state, and its fixed cycles
+// (interp_caz_cycles.cpp), which reach the interpreter's moves from here.
 struct Interpreter::CazState {
     double pitch = 0;  // G33: the last pitch, mm
     int turret = 0;    // the position T last indexed, 0 none
     bool m30 = false;  // the block being run has M30
+    // The words of a fixed cycle as written, in their own units (µm, µm/rev).
+    struct Args {
+        bool has_i = false, has_k = false, has_d = false, has_f = false, has_s = false;
+        double i = 0, k = 0, d = 0, f = 0, s = 0;
+    } args;
+
+    // Whether G`g` is a fixed cycle this dialect runs (its words are its own).
+    static bool is_cycle(int g);
+    // Runs the fixed cycle of the block; false once an error is reported.
+    static bool cycle(Interpreter& in, const Plan& p);
+    static bool g34(Interpreter& in, const Plan& p);
+    static bool g92(Interpreter& in, const Plan& p);
+    // One elementary move of a cycle: G0, G1 at the feed in force, or G33 at
+    // the pitch in force, to program X Z (mm, X a radius).
+    static bool move(Interpreter& in, int g, double x, double z);
 };
 
 }  // namespace pupitre

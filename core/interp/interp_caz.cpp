@@ -33,6 +33,7 @@ struct Interpreter::CazDecoder {
     Plan& p;
     std::bitset<kAddrCount> seen;
     bool has_f = false, has_g7 = false;
+    bool cycle = false;  // a fixed cycle's block: F, S, I, K and D are its words
     double f = 0;
     int f_col = 0;
 
@@ -128,6 +129,7 @@ bool Interpreter::CazDecoder::g_word(const Word& w) {
             break;
     }
     if (g == 7) has_g7 = true;
+    if (CazState::is_cycle(g)) cycle = true;
     return true;
 }
 
@@ -164,6 +166,9 @@ bool Interpreter::CazDecoder::centre_word(const Word& w) {
     const size_t i = w.addr == addr1('I') ? 0 : 2;
     p.to.ijk.set(i);
     p.to.ijk_val[i] = v * caz::kUm;
+    CazState::Args& a = in.caz_->args;
+    (i == 0 ? a.has_i : a.has_k) = true;
+    (i == 0 ? a.i : a.k) = v;
     return true;
 }
 
@@ -171,13 +176,19 @@ bool Interpreter::CazDecoder::centre_word(const Word& w) {
 bool Interpreter::CazDecoder::f_word(const Word& w) {
     has_f = true;
     f_col = w.col;
-    return number(w, *address_of(w.addr), f);
+    if (!number(w, *address_of(w.addr), f)) return false;
+    in.caz_->args.has_f = true;
+    in.caz_->args.f = f;
+    return true;
 }
 
 // S: rev/min under G97, m/min under G96; four digits (003:898).
 bool Interpreter::CazDecoder::s_word(const Word& w) {
     double v = 0;
     if (!number(w, *address_of(w.addr), v)) return false;
+    in.caz_->args.has_s = true;
+    in.caz_->args.s = v;
+    if (cycle) return true;  // G34's S is the pitch (003:1330)
     p.tech.has_s = true;
     p.tech.s = v;
     return true;
@@ -216,10 +227,13 @@ bool Interpreter::CazDecoder::m_word(const Word& w) {
     return true;
 }
 
-// D belongs to the cycles (003:1316, 1405), which pupitre does not run yet.
+// D: the total depth of a fixed cycle (003:1332, 1414).
 bool Interpreter::CazDecoder::later_word(const Word& w) {
     double v = 0;
-    return number(w, *address_of(w.addr), v);
+    if (!number(w, *address_of(w.addr), v)) return false;
+    in.caz_->args.has_d = true;
+    in.caz_->args.d = v;
+    return true;
 }
 
 // F by what the block is: G4's tenths of a second (003:1018-1019), G33's pitch
@@ -231,7 +245,7 @@ bool Interpreter::CazDecoder::finish() {
         p.spindle.g96_s = p.g[96];
         p.spindle.g97_s = p.g[97];
     }
-    if (!has_f) return true;
+    if (!has_f || cycle) return true;
     in.col_ = f_col;
     const int motion = p.mode.motion >= 0 ? p.mode.motion : in.modal_.motion;
     if (p.g[4]) {
@@ -270,6 +284,7 @@ StepResult Interpreter::execute_caz(const Block& b) {
     }
     Plan p;
     caz_->m30 = false;
+    caz_->args = CazState::Args{};
     CazDecoder d(*this, p);
     const size_t first = (b.n >= 0 && !b.words.empty() && b.words[0].addr == addr1('N')) ? 1 : 0;
     for (size_t i = first; i < b.words.size(); ++i)
@@ -286,9 +301,12 @@ StepResult Interpreter::execute_caz(const Block& b) {
     // T is this controller's own (caz_tool): the shared step sees no T or D.
     Plan shared = p;
     shared.tech.has_t = shared.tech.has_d = false;
+    shared.g.reset(92);  // the NUM's origin preset: here a facing cycle
     if (!apply_modal(shared) || !caz_tool(p) || !do_m_avant(p) || !apply_spindle(p))
         return StepResult::error;
-    if (p.g[7] ? !caz_g7(p) : !caz_motion(p)) return StepResult::error;
+    const bool cycle = CazState::is_cycle(p.g[34] ? 34 : p.g[92] ? 92 : -1);
+    if (cycle ? !CazState::cycle(*this, p) : p.g[7] ? !caz_g7(p) : !caz_motion(p))
+        return StepResult::error;
     if (p.g[4] && p.dwell < 0) {
         fail(caz::kFunction, tr("G4 needs the time in F, tenths of a second (003:1018)"));
         return StepResult::error;

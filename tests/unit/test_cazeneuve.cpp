@@ -151,11 +151,47 @@ TEST(Cazeneuve, ErrorCategories) {
     EXPECT_EQ(caz("N10 G X1000 R5\nN20 M2\n").error(), caz::kSyntax);
     EXPECT_EQ(caz("N10 G X1000 F1 F2\nN20 M2\n").error(), caz::kTwice);
     EXPECT_EQ(caz("N10 G25 S100\nN20 M2\n").error(), caz::kUnknownG);
-    EXPECT_EQ(caz("N10 G34 X1 Z1\nN20 M2\n").error(), caz::kLater);
+    EXPECT_EQ(caz("N10 G71 X1 Z1\nN20 M2\n").error(), caz::kLater);
+    EXPECT_EQ(caz("N10 G34 X1 Z1\nN20 M2\n").error(), caz::kFunction);
     EXPECT_EQ(caz("N10 G X999000\nN20 M2\n").error(), caz::kTravelX);
     EXPECT_EQ(caz::category_of(caz::kSyntax), "syntax");
     EXPECT_EQ(caz::category_of(caz::kArc), "function");
     EXPECT_EQ(caz::category_of(caz::kSpeed), "capacity");
+}
+
+// G34 X Z I K D F: passes I deeper each, from X + D to X, each plunge,
+// thread, retract, return (003:1324-1342); ex12's first call.
+TEST(Cazeneuve, G34ThreadingCycle) {
+    Prog p =
+        caz("N10 M3 S500\nN20 G X20000 Z2000\nN30 G34 X17400 Z-30000 I200 K D600 F1000\n"
+            "N40 M2\n");
+    ASSERT_EQ(p.error(), 0);
+    ASSERT_EQ(p.cap.moves.size(), 1u + 3 * 4);
+    const double radii[] = {17.8, 17.6, 17.4};
+    for (int k = 0; k < 3; ++k) {
+        const MoveEvent& thread = p.cap.moves[size_t(2 + 4 * k)];
+        EXPECT_NEAR(thread.to_prog[X], radii[k], 1e-9);
+        EXPECT_NEAR(thread.to_prog[Z], -30.0, 1e-9);
+        EXPECT_NEAR(thread.feed, 500.0, 1e-6);  // a 1 mm pitch at 500 rev/min
+    }
+    EXPECT_NEAR(p.cap.moves.back().to_prog[X], 20.0, 1e-9);  // back at the start
+    EXPECT_NEAR(p.cap.moves.back().to_prog[Z], 2.0, 1e-9);
+}
+
+// G92 X Z I K is a facing cycle here (003:1467-1477), not an origin preset:
+// ex16's 25 mm in passes of 4, at K100 = 0.1 mm/rev.
+TEST(Cazeneuve, G92FacingCycle) {
+    Prog p = caz("N10 M4 S800\nN20 G95 X52000 Z0\nN30 G92 X10000 Z-25000 I4000 K100\nN40 M2\n");
+    ASSERT_EQ(p.error(), 0);
+    ASSERT_EQ(p.cap.moves.size(), 1u + 7 * 4);
+    for (int k = 0; k < 7; ++k) {
+        const MoveEvent& face = p.cap.moves[size_t(2 + 4 * k)];
+        EXPECT_EQ(face.g, 1);
+        EXPECT_NEAR(face.to_prog[X], 10.0, 1e-9);
+        EXPECT_NEAR(face.to_prog[Z], k == 6 ? -25.0 : -4.0 * (k + 1), 1e-9);
+        EXPECT_NEAR(face.feed, 80.0, 1e-6);
+    }
+    EXPECT_NEAR(p.in->program_pos()[X], 52.0, 1e-9);  // no preset: the position is the tool's
 }
 
 }  // namespace
