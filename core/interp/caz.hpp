@@ -59,9 +59,12 @@ struct Interpreter::CazState {
 
     // Whether G`g` is a fixed cycle this dialect runs (its words are its own).
     static bool is_cycle(int g);
+    // The fixed cycle the block calls, -1 for none.
+    static int cycle_of(const Plan& p);
     // Runs the fixed cycle of the block; false once an error is reported.
     static bool cycle(Interpreter& in, const Plan& p);
     static bool g34(Interpreter& in, const Plan& p);
+    static bool turning(Interpreter& in, const Plan& p);
     static bool g92(Interpreter& in, const Plan& p);
     // One elementary move of a cycle: G0, G1 at the feed in force, or G33 at
     // the pitch in force, to program X Z (mm, X a radius).

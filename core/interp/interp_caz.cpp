@@ -296,7 +296,7 @@ StepResult Interpreter::execute_caz(const Block& b) {
                                tr(std::string(g->text).c_str())));
         return StepResult::error;
     }
-    // The variator changes range by itself (003:719-724): each S finds its own.
+    // The variator changes range by itself (003:720-722): each S finds its own.
     if (p.tech.has_s && modal_.spindle_mode == 97 && p.mode.spindle != 96) modal_.range = -1;
     // T is this controller's own (caz_tool): the shared step sees no T or D.
     Plan shared = p;
@@ -304,7 +304,7 @@ StepResult Interpreter::execute_caz(const Block& b) {
     shared.g.reset(92);  // the NUM's origin preset: here a facing cycle
     if (!apply_modal(shared) || !caz_tool(p) || !do_m_avant(p) || !apply_spindle(p))
         return StepResult::error;
-    const bool cycle = CazState::is_cycle(p.g[34] ? 34 : p.g[92] ? 92 : -1);
+    const bool cycle = CazState::cycle_of(p) >= 0;
     if (cycle ? !CazState::cycle(*this, p) : p.g[7] ? !caz_g7(p) : !caz_motion(p))
         return StepResult::error;
     if (p.g[4] && p.dwell < 0) {

@@ -12,17 +12,32 @@
 namespace pupitre {
 
 bool Interpreter::CazState::is_cycle(int g) {
-    return g == 34 || g == 92;
+    return g == 34 || g == 71 || g == 81 || g == 82 || g == 92;
 }
 
+int Interpreter::CazState::cycle_of(const Plan& p) {
+    for (int g : {34, 71, 81, 82, 92})
+        if (p.g[size_t(g)]) return g;
+    return -1;
+}
+
+// The fixed cycles (003:1306-1308): G71 and G81 are the turning cycle, as
+// chapter VI's §16 writes it (003:1405) and as its list and the CNP's name it
+// (003:1307, 1798); G92 and G82 the facing cycle likewise (003:1471, 1308,
+// 1799).
 bool Interpreter::CazState::cycle(Interpreter& in, const Plan& p) {
-    struct Entry {
+    struct CycleEntry {
         int g;
         bool (*run)(Interpreter&, const Plan&);
     };
-    static constexpr Entry kCycles[] = {{34, &CazState::g34}, {92, &CazState::g92}};
-    for (const Entry& e : kCycles)
-        if (p.g[size_t(e.g)]) {
+    static constexpr CycleEntry kCycles[] = {{34, &CazState::g34},
+                                             {71, &CazState::turning},
+                                             {81, &CazState::turning},
+                                             {82, &CazState::g92},
+                                             {92, &CazState::g92}};
+    const int g = cycle_of(p);
+    for (const CycleEntry& e : kCycles)
+        if (e.g == g) {
             in.first_move_ = false;
             return e.run(in, p);
         }
@@ -73,6 +88,44 @@ bool Interpreter::CazState::g34(Interpreter& in, const Plan& p) {
              move(in, 0, x0, z0);
     }
     in.caz_->pitch = saved_pitch;
+    return ok;
+}
+
+// G71 (or G81) X Z I K D F, the turning cycle (003:1399-1418): from the
+// starting point (003:1401) each pass goes to its X at rapid, turns to Z at F
+// µm per revolution (K the radius gained at Z for a taper, 003:1411-1414),
+// retracts in X to the start and returns in Z, from X + D down by I to the
+// final X, as G34's passes go.
+bool Interpreter::CazState::turning(Interpreter& in, const Plan& p) {
+    const Args& a = in.caz_->args;
+    if (!p.to.axis[X] || !p.to.axis[Z] || !a.has_i || !a.has_d || !a.has_f)
+        return in.fail(caz::kFunction, tr("the turning cycle needs X, Z, I, D and F "
+                                          "(003:1405-1417)"));
+    if (a.i <= 0 || a.d <= 0 || a.f <= 0)
+        return in.fail(caz::kFunction,
+                       tr("the turning cycle: I, D and F must be positive (003:1410-1417)"));
+    const double x0 = in.prog_[X], z0 = in.prog_[Z];
+    const double xf = p.to.val[X], zf = p.to.val[Z];
+    const double pass = a.i * caz::kUm, depth = a.d * caz::kUm, taper = a.k * caz::kUm;
+    const double dir = xf <= x0 ? -1.0 : 1.0;
+    const double crest = xf - dir * depth;
+    const int passes = int(std::ceil(depth / pass - 1e-9));
+    const Modal saved = in.modal_;
+    in.modal_.feed_mode = 95;
+    in.modal_.feed = a.f * caz::kUm;
+    in.modal_.feed_set = true;
+    bool ok = true;
+    {
+        OwnFeed own(in);
+        for (int k = 1; k <= passes && ok; ++k) {
+            const double x = k == passes ? xf : crest + dir * pass * k;
+            ok = move(in, 0, x, z0) && move(in, 1, x + taper, zf) && move(in, 0, x0, zf) &&
+                 move(in, 0, x0, z0);
+        }
+    }
+    in.modal_.feed_mode = saved.feed_mode;
+    in.modal_.feed = saved.feed;
+    in.modal_.feed_set = saved.feed_set;
     return ok;
 }
 

@@ -151,7 +151,7 @@ TEST(Cazeneuve, ErrorCategories) {
     EXPECT_EQ(caz("N10 G X1000 R5\nN20 M2\n").error(), caz::kSyntax);
     EXPECT_EQ(caz("N10 G X1000 F1 F2\nN20 M2\n").error(), caz::kTwice);
     EXPECT_EQ(caz("N10 G25 S100\nN20 M2\n").error(), caz::kUnknownG);
-    EXPECT_EQ(caz("N10 G71 X1 Z1\nN20 M2\n").error(), caz::kLater);
+    EXPECT_EQ(caz("N10 G31 X1 Z1\nN20 M2\n").error(), caz::kLater);
     EXPECT_EQ(caz("N10 G34 X1 Z1\nN20 M2\n").error(), caz::kFunction);
     EXPECT_EQ(caz("N10 G X999000\nN20 M2\n").error(), caz::kTravelX);
     EXPECT_EQ(caz::category_of(caz::kSyntax), "syntax");
@@ -192,6 +192,34 @@ TEST(Cazeneuve, G92FacingCycle) {
         EXPECT_NEAR(face.feed, 80.0, 1e-6);
     }
     EXPECT_NEAR(p.in->program_pos()[X], 52.0, 1e-9);  // no preset: the position is the tool's
+}
+
+// G71 X Z I K D F, the turning cycle (003:1399-1418), also written G81
+// (003:1307, 1798): passes I deep from X + D to X, each at F µm/rev.
+TEST(Cazeneuve, G71TurningCycle) {
+    for (const char* g : {"G71", "G81"}) {
+        Prog p = caz(std::string("N10 M3 S1000\nN20 G X20000 Z2000\nN30 ") + g +
+                     " X15000 Z-40000 I2000 K D5000 F200\nN40 M2\n");
+        ASSERT_EQ(p.error(), 0) << g;
+        ASSERT_EQ(p.cap.moves.size(), 1u + 3 * 4) << g;
+        const double radii[] = {18.0, 16.0, 15.0};
+        for (int k = 0; k < 3; ++k) {
+            const MoveEvent& cut = p.cap.moves[size_t(2 + 4 * k)];
+            EXPECT_EQ(cut.g, 1);
+            EXPECT_NEAR(cut.to_prog[X], radii[k], 1e-9);
+            EXPECT_NEAR(cut.to_prog[Z], -40.0, 1e-9);
+            EXPECT_NEAR(cut.feed, 200.0, 1e-6);  // 0.2 mm/rev at 1000 rev/min
+        }
+    }
+    EXPECT_EQ(caz("N10 M3 S1000\nN20 G71 X15000 Z-40000 I2000\nN30 M2\n").error(), caz::kFunction);
+}
+
+// G82 is the facing cycle as G92 (003:1308, 1799).
+TEST(Cazeneuve, G82FacingAsG92) {
+    Prog p = caz("N10 M4 S800\nN20 G X52000 Z0\nN30 G82 X10000 Z-8000 I4000 K100\nN40 M2\n");
+    ASSERT_EQ(p.error(), 0);
+    ASSERT_EQ(p.cap.moves.size(), 1u + 2 * 4);
+    EXPECT_NEAR(p.cap.moves[6].to_prog[Z], -8.0, 1e-9);
 }
 
 }  // namespace
