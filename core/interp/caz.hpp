@@ -66,6 +66,11 @@ struct Interpreter::CazState {
     static bool g34(Interpreter& in, const Plan& p);
     static bool turning(Interpreter& in, const Plan& p);
     static bool g92(Interpreter& in, const Plan& p);
+    // Whether the block ends the nose-radius compensation before it runs: G33,
+    // the fixed cycles, M0, M1, M2, M30, T and G7XZ (003:1795-1803).
+    static bool ends_comp(const Interpreter& in, const Plan& p);
+    // Ends it: the compensated profile stops at its last point, G40.
+    static bool end_comp(Interpreter& in);
     // One elementary move of a cycle: G0, G1 at the feed in force, or G33 at
     // the pitch in force, to program X Z (mm, X a radius).
     static bool move(Interpreter& in, int g, double x, double z);

@@ -117,7 +117,10 @@ bool Interpreter::CazDecoder::g_word(const Word& w) {
             p.mode.dist = g;
             break;
         case Group::radcomp:
-            p.mode.radcomp = g;
+            // The thesis draws the front turret's side with X towards the
+            // operator (003:1791, 1915-1919); pupitre's frame has X up: left
+            // and right swap.
+            p.mode.radcomp = g == 41 ? 42 : g == 42 ? 41 : g;
             break;
         case Group::feed:
             p.mode.feed = g;
@@ -296,6 +299,8 @@ StepResult Interpreter::execute_caz(const Block& b) {
                                tr(std::string(g->text).c_str())));
         return StepResult::error;
     }
+    if (modal_.radcomp != 40 && CazState::ends_comp(*this, p) && !CazState::end_comp(*this))
+        return StepResult::error;
     // The variator changes range by itself (003:720-722): each S finds its own.
     if (p.tech.has_s && modal_.spindle_mode == 97 && p.mode.spindle != 96) modal_.range = -1;
     // T is this controller's own (caz_tool): the shared step sees no T or D.
@@ -341,11 +346,20 @@ bool Interpreter::caz_tool(const Plan& p) {
 // pitch; the spindle must turn, and the thread speed stays under 3.8 m/min.
 bool Interpreter::caz_motion(const Plan& p) {
     if (modal_.motion != 33 || p.to.axis.none()) {
-        if ((modal_.motion == 2 || modal_.motion == 3) && p.to.axis.any()) {
-            // An arc names both ends: a blank axis is where the tool is.
+        if ((modal_.motion == 2 || modal_.motion == 3) && (p.to.axis.any() || p.to.ijk.any())) {
+            // An arc names its centre by I and K (003:874): this controller has
+            // no profile geometry to complete it. Its end is X Z, a blank axis
+            // where the tool is.
+            if (!p.to.ijk[0] || !p.to.ijk[2])
+                return fail(caz::kArc,
+                            strf(tr("G%d needs I and K, the centre (003:874)"), modal_.motion));
             Plan q = p;
-            q.to.axis.set(X);
-            q.to.axis.set(Z);
+            for (int a : {int(X), int(Z)})
+                if (!q.to.axis[size_t(a)]) {
+                    q.to.axis.set(size_t(a));
+                    q.to.val[size_t(a)] = prog_[size_t(a)];
+                    q.to.inc.reset(size_t(a));
+                }
             return do_motion(q);
         }
         return do_motion(p);
@@ -381,7 +395,6 @@ bool Interpreter::caz_motion(const Plan& p) {
 bool Interpreter::caz_g7(const Plan& p) {
     std::bitset<kAxes> axes = p.g59.axis;
     if (axes.none()) axes.set(X).set(Z);
-    modal_.radcomp = 40;
     Axes mach = mach_;
     for (int a : {int(X), int(Z)})
         if (axes[size_t(a)]) mach[size_t(a)] = m_.home[size_t(a)];

@@ -44,6 +44,20 @@ bool Interpreter::CazState::cycle(Interpreter& in, const Plan& p) {
     return true;
 }
 
+bool Interpreter::CazState::ends_comp(const Interpreter& in, const Plan& p) {
+    if (p.tech.has_t || p.g[7] || p.g[33] || cycle_of(p) >= 0 || in.modal_.motion == 33)
+        return true;
+    for (int i = 0; i < p.tech.nm; ++i)
+        if (p.tech.m[i] <= 2) return true;
+    return in.caz_->m30;
+}
+
+bool Interpreter::CazState::end_comp(Interpreter& in) {
+    if (in.comp_.on && !in.comp_exit(Plan{}, nullptr)) return false;
+    in.modal_.radcomp = 40;
+    return true;
+}
+
 bool Interpreter::CazState::move(Interpreter& in, int g, double x, double z) {
     Plan q;
     q.to.axis.set(X).set(Z);

@@ -3,6 +3,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "core/interp/caz.hpp"
 #include "core/parse/codes.hpp"
 #include "helpers.hpp"
@@ -126,6 +128,14 @@ TEST(Cazeneuve, ArcCentreAbsolute) {
     ASSERT_EQ(p.error(), 0);
     ASSERT_EQ(p.cap.moves.size(), 2u);
     EXPECT_NEAR(p.cap.moves[1].sweep, -131.4, 0.1);
+    // A blank axis is where the tool is (003:997), in an arc too; I and K are
+    // both needed, there is no profile geometry to complete a circle.
+    Prog half = caz("N10 G1 X10000 Z0 F100\nN20 G2 X Z-10000 I10000 K-5000\nN30 M2\n");
+    ASSERT_EQ(half.error(), 0);
+    EXPECT_NEAR(half.cap.moves.back().to_prog[X], 10.0, 1e-9);
+    EXPECT_NEAR(half.cap.moves.back().to_prog[Z], -10.0, 1e-9);
+    EXPECT_EQ(caz("N10 G1 X10000 Z0 F100\nN20 G2 X20000 Z-10000 I20000\nN30 M2\n").error(),
+              caz::kArc);
 }
 
 // G33: the pitch in micrometres (003:1161), the spindle turning.
@@ -220,6 +230,34 @@ TEST(Cazeneuve, G82FacingAsG92) {
     ASSERT_EQ(p.error(), 0);
     ASSERT_EQ(p.cap.moves.size(), 1u + 2 * 4);
     EXPECT_NEAR(p.cap.moves[6].to_prog[Z], -8.0, 1e-9);
+}
+
+// The CNP: G41 is the tool left of the profile as the thesis draws the front
+// turret (003:1791, 1915-1919): turning an outside diameter towards the chuck,
+// the nose centre runs r outside it. G7XZ ends it (003:1803).
+TEST(Cazeneuve, NoseRadiusCompensationFrontTurret) {
+    const std::string text =
+        "N10 T101\nN20 M3 S800\nN30 G X10000 Z6000\nN40 G95 G41 Z0 F150\n"
+        "N50 G1 Z-50000\nN60 G1 X20000\nN70 G7XZ\nN80 M2\n";
+    Prog plain = caz(text);
+    ASSERT_EQ(plain.error(), 0);
+    EXPECT_FALSE(plain.in->comp_active());
+    Prog p(text, "cazeneuve", {{"D1.R", 3}});
+    ASSERT_EQ(p.error(), 0);
+    bool outside = false;
+    for (const MoveEvent& m : p.cap.moves)
+        if (m.loc.n == 50) outside = std::abs(m.to_prog[X] - 13.0) < 1e-6;
+    EXPECT_TRUE(outside);
+    EXPECT_FALSE(p.in->comp_active());  // G7XZ ended it
+}
+
+// M2 ends the CNP (003:1801): no error 140 as on the NUM.
+TEST(Cazeneuve, M2EndsCompensation) {
+    Prog p(
+        "N10 T101\nN20 M3 S800\nN30 G X10000 Z6000\nN40 G95 G41 Z0 F150\n"
+        "N50 G1 Z-50000\nN60 M2\n",
+        "cazeneuve", {{"D1.R", 3}});
+    EXPECT_EQ(p.error(), 0);
 }
 
 }  // namespace
