@@ -3,6 +3,7 @@
 // the units of its words, and its numbered errors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
+#include <string>
 #include <string_view>
 
 #include "core/interp/interp.hpp"
@@ -35,6 +36,9 @@ inline constexpr int kOther = 2099;           // any other refusal of the shared
 // The dialect's number for what the shared (NUM) machinery reports; pupitre's
 // own numbers (1000 and up) stay as they are.
 int error_of(int num_code);
+// The message of a shared step's refusal in this dialect's words, where the
+// NUM's would mislead (its M02 and %number); else `detail` as it is.
+std::string detail_of(int num_code, std::string detail);
 // The category of a dialect error: "syntax", "function", "capacity" or "run".
 std::string_view category_of(int code);
 

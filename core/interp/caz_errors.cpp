@@ -4,6 +4,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <utility>
 
+#include "core/i18n.hpp"
 #include "core/interp/caz.hpp"
 
 namespace pupitre::caz {
@@ -23,6 +24,12 @@ int error_of(int num_code) {
     for (const auto& [num, ours] : kFromNum)
         if (num == num_code) return ours;
     return kOther;
+}
+
+std::string detail_of(int num_code, std::string detail) {
+    if (num_code == 20)  // these programs have no % line: the NUM's text says %0
+        return tr("the text ends without M2 or M30 (003:962, 972)");
+    return detail;
 }
 
 std::string_view category_of(int code) {

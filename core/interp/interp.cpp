@@ -158,7 +158,11 @@ double Interpreter::to_display(int axis, double internal) const {
 
 bool Interpreter::fail(int code, std::string detail, int column) {
     Diag d;
-    d.code = caz_ ? caz::error_of(code) : code;
+    d.code = code;
+    if (caz_) {
+        d.code = caz::error_of(code);
+        detail = caz::detail_of(code, std::move(detail));
+    }
     d.file = stack_.empty() ? (main_ ? main_->file : std::string()) : stack_.back().prog->file;
     d.program = loc_.prog;
     d.line = loc_.line;
