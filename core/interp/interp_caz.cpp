@@ -391,7 +391,7 @@ bool Interpreter::caz_motion(const Plan& p) {
 }
 
 // G7XZ: a rapid to the turret's indexing point on the axes named (003:1083,
-// 1804); it ends the nose-radius compensation (003:1796-1804).
+// 1803); it ends the nose-radius compensation (003:1795-1803).
 bool Interpreter::caz_g7(const Plan& p) {
     std::bitset<kAxes> axes = p.g59.axis;
     if (axes.none()) axes.set(X).set(Z);

@@ -38,7 +38,7 @@ TEST(Cazeneuve, CodesTableHasItsOwnRows) {
     const GCode* num92 = find_g(92);
     const GCode* caz92 = find_g(92, Dialect::cazeneuve);
     ASSERT_TRUE(num92 && caz92);
-    EXPECT_NE(num92->text, caz92->text);  // origin preset / facing cycle (003:1469)
+    EXPECT_NE(num92->text, caz92->text);  // origin preset / facing cycle (003:1471)
     EXPECT_EQ(find_g(7)->support, Support::option);
     EXPECT_EQ(find_g(7, Dialect::cazeneuve)->support, Support::yes);  // G7XZ (003:1083)
     EXPECT_TRUE(find_m(50, Dialect::cazeneuve));                      // 003:968
