@@ -7,6 +7,7 @@
 #include <span>
 
 #include "core/i18n.hpp"
+#include "core/interp/caz.hpp"
 #include "core/interp/gate.hpp"
 #include "core/interp/plan.hpp"
 
@@ -44,6 +45,7 @@ void Interpreter::power_on() {
     else
         homed_.set();
     update_travel();
+    if (m_.dialect == Dialect::cazeneuve) caz_power_on();
 }
 
 // RAZ (turning.md §8.3): the run is abandoned, the modal state is the one of
@@ -157,6 +159,10 @@ double Interpreter::to_display(int axis, double internal) const {
 bool Interpreter::fail(int code, std::string detail, int column) {
     Diag d;
     d.code = code;
+    if (caz_) {
+        d.code = caz::error_of(code);
+        detail = caz::detail_of(code, std::move(detail));
+    }
     d.file = stack_.empty() ? (main_ ? main_->file : std::string()) : stack_.back().prog->file;
     d.program = loc_.prog;
     d.line = loc_.line;

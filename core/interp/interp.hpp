@@ -230,6 +230,18 @@ class Interpreter final : private EAccess {
         OwnFeed& operator=(const OwnFeed&) = delete;
     };
 
+    // interp_caz*.cpp: the Cazeneuve HB CNC dialect (DESIGN §6,
+    // pupitre-cazeneuve(5)); its decoder reads a block into the same Plan.
+    struct CazDecoder;
+    struct CazState;
+    std::unique_ptr<CazState> caz_;
+    void caz_power_on();
+    StepResult execute_caz(const Block& b);
+    bool caz_motion(const Plan& p);
+    bool caz_g7(const Plan& p);
+    bool caz_tool(const Plan& p);
+    bool caz_m(const Plan& p, StepResult& r);
+
     // interp.cpp
     bool fetch(std::string_view& line, int& lineno);
     StepResult execute(const Block& b);

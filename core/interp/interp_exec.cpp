@@ -161,6 +161,7 @@ bool Interpreter::do_flow(const Block& b, const Plan& p) {
 // does not need are called only when the block holds their words: this runs
 // for every block, and a call costs more than the test.
 StepResult Interpreter::execute(const Block& b) {
+    if (caz_) return execute_caz(b);
     if (!assign_all(b)) return StepResult::error;
     Plan p;
     bool decoded = decode(b, p);

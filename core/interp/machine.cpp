@@ -15,6 +15,7 @@ std::string_view machine_lathe();
 std::string_view machine_mill();
 std::string_view machine_mill4();
 std::string_view machine_mill5();
+std::string_view machine_cazeneuve();
 }  // namespace data
 
 int axis_of(char letter) {
@@ -96,6 +97,15 @@ std::string read_description(const Line& l, MachineProfile& m) {
 }
 std::string read_kind(const Line& l, MachineProfile& m) {
     return one_of(l.val, "lathe", "mill", m.lathe, tr("kind must be lathe or mill"));
+}
+std::string read_dialect(const Line& l, MachineProfile& m) {
+    if (l.val == "num")
+        m.dialect = Dialect::num;
+    else if (l.val == "cazeneuve")
+        m.dialect = Dialect::cazeneuve;
+    else
+        return tr("dialect must be num or cazeneuve");
+    return {};
 }
 std::string read_model(const Line& l, MachineProfile& m) {
     double d;
@@ -213,6 +223,7 @@ constexpr KeyReader kKeys[] = {
     {"name", read_name},
     {"description", read_description},
     {"kind", read_kind},
+    {"dialect", read_dialect},
     {"model", read_model},
     {"axes", read_axes},
     {"x_programming", read_x_programming},
@@ -253,6 +264,8 @@ std::string check_whole(MachineProfile& m) {
     if (!any) return tr("the profile declares no axes");
     if (m.lathe && (!m.has(X) || !m.has(Z))) return tr("a lathe needs the X and Z axes");
     if (!m.lathe) m.x_diameter = false;
+    if (m.dialect == Dialect::cazeneuve && (!m.lathe || m.x_diameter))
+        return tr("the cazeneuve dialect is a lathe's, with X programmed as a radius");
     if (m.kinematics == "table" && !m.has(B)) return tr("table kinematics need the B axis");
     if (m.kinematics == "table-head" && (!m.has(B) || !m.has(C)))
         return tr("table-head kinematics need B and C");
@@ -298,6 +311,8 @@ bool builtin_machine(std::string_view name, MachineProfile& out) {
         text = data::machine_mill4();
     else if (name == "mill5")
         text = data::machine_mill5();
+    else if (name == "cazeneuve")
+        text = data::machine_cazeneuve();
     else
         return false;
     return parse_machine(text, out).empty();

@@ -7,6 +7,8 @@
 #include <string_view>
 #include <vector>
 
+#include "core/parse/dialect.hpp"
+
 namespace pupitre {
 
 // Axis index, as in the E parameters (E6x000…) and travel errors 150-158.
@@ -31,6 +33,7 @@ struct SpindleRange {
 struct MachineProfile {
     std::string name;
     std::string description;
+    Dialect dialect = Dialect::num;  // the controller's language (DESIGN §6)
     bool lathe = false;
     int model = 1060;         // 1020, 1040 or 1060
     bool x_diameter = true;   // lathe: X programmed as a diameter
@@ -61,7 +64,8 @@ struct MachineProfile {
 
 // Parses a profile. Returns an empty string on success, else the error.
 std::string parse_machine(std::string_view text, MachineProfile& out);
-// The profiles shipped in data/machines (embedded): lathe, mill, mill4, mill5.
+// The profiles shipped in data/machines (embedded): lathe, mill, mill4, mill5,
+// cazeneuve.
 bool builtin_machine(std::string_view name, MachineProfile& out);
 
 }  // namespace pupitre

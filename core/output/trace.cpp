@@ -249,6 +249,9 @@ std::string summary_text(const Interpreter& in, const std::string& file) {
               file.c_str(), in.machine().name.c_str(), blocks.c_str(), moves.c_str(),
               fixed(in.path_length(), 3).c_str(), clock_text(in.seconds()).c_str(),
               fixed(in.seconds(), 3).c_str());
+    if (in.machine().dialect == Dialect::cazeneuve)
+        // The programs are in micrometres; OP and OM are shown as the machine's pages show them.
+        o += tr("units: mm, X a radius (the program's X15000 is X15.000; pupitre-cazeneuve(5))\n");
     o += strf(tr("final OP: %s\n"), axes_text(in, in.program_pos()).c_str());
     o += strf(tr("final OM: %s\n"), axes_text(in, in.machine_pos()).c_str());
     if (!in.tools_used().empty()) {

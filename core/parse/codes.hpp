@@ -10,6 +10,7 @@
 #include <string_view>
 
 #include "core/parse/block.hpp"
+#include "core/parse/dialect.hpp"
 
 namespace pupitre {
 
@@ -79,10 +80,12 @@ struct BlockStep {
 };
 std::span<const BlockStep> block_steps();
 
-const GCode* find_g(int number);
-const MCode* find_m(int number);
-std::span<const GCode> all_g();
-std::span<const MCode> all_m();
+// Each dialect has its own rows: the same number can mean something else
+// (G92 presets an origin on the NUM, faces on the Cazeneuve lathe).
+const GCode* find_g(int number, Dialect d = Dialect::num);
+const MCode* find_m(int number, Dialect d = Dialect::num);
+std::span<const GCode> all_g(Dialect d = Dialect::num);
+std::span<const MCode> all_m(Dialect d = Dialect::num);
 
 // Whether address `a` is one of the words G function `g` owns.
 bool g_owns(const GCode& g, Addr a);
