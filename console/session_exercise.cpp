@@ -10,6 +10,7 @@
 #include "core/i18n.hpp"
 #include "core/sha256.hpp"
 #include "core/workshop/workshop.hpp"
+#include "store/link.hpp"
 #include "store/store.hpp"
 
 namespace pupitre::console {
@@ -28,7 +29,7 @@ std::vector<std::pair<std::string, int64_t>> start_values(const ExerciseRun& x) 
     for (const training::Start& st : x.ex.start) {
         double v = 0;
         if (training::start_value(x.ex, x.truth, st.name, v))
-            out.emplace_back(st.name, int64_t(std::llround(v * 1e3)));
+            out.emplace_back(st.name, store::internal_value(st.name, v));
     }
     return out;
 }

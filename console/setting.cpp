@@ -13,6 +13,7 @@
 #include "console/session.hpp"
 #include "core/i18n.hpp"
 #include "core/sha256.hpp"
+#include "store/link.hpp"
 #include "store/store.hpp"
 
 namespace pupitre::console {
@@ -25,16 +26,6 @@ std::string mm(double v) {
 
 bool is_origin(std::string_view n) {
     return n.rfind("PREF.", 0) == 0 || n.rfind("DEC1.", 0) == 0 || n.rfind("DEC3.", 0) == 0;
-}
-
-// The store keeps µm (lathe X radii, DX a diameter), 0.0001° for rotary
-// origins, the code for C (store/link.hpp).
-int64_t internal(std::string_view name, double v) {
-    bool code = name.size() > 2 && name.substr(name.size() - 2) == ".C" && name[0] == 'D';
-    if (code) return int64_t(v);
-    char axis = name.back();
-    bool rotary = is_origin(name) && (axis == 'A' || axis == 'B' || axis == 'C');
-    return int64_t(std::llround(v * (rotary ? 1e4 : 1e3)));
 }
 
 // A number typed on a setting page. A French decimal comma (Z 1,5) is read
@@ -117,7 +108,8 @@ bool Session::apply_setting(const std::string& name, double value, const std::st
                                         : tr("(applies as the manual says: gauge at the next move "
                                              "of its axis, radius at the next G41/G42)"));
     if (store_) {
-        auto r = store_->set_values(store_key_, {{name, internal(name, value)}}, source);
+        auto r =
+            store_->set_values(store_key_, {{name, store::internal_value(name, value)}}, source);
         if (r.error) {
             say(strf(tr("%s; NOT stored: %s"), news.c_str(), r.error.message.c_str()), true);
             return true;

@@ -3,6 +3,7 @@
 #include "store/link.hpp"
 
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 
 #include "store/text.hpp"
@@ -126,6 +127,12 @@ Result<std::vector<Change>> persist_run(Store& s, const Interpreter& in, std::st
     auto writes = persistent_writes(in);
     if (writes.empty()) return {};
     return s.set_values(in.machine().name, writes, source, profile_text);
+}
+
+int64_t internal_value(std::string_view name, double v) {
+    if (!is_origin(name) && name.size() > 2 && name.substr(name.size() - 2) == ".C")
+        return int64_t(v);
+    return int64_t(std::llround(v * (rotary_name(name) ? 1e4 : 1e3)));
 }
 
 std::string format_value(std::string_view name, int64_t v) {

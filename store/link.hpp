@@ -37,6 +37,10 @@ std::vector<std::pair<std::string, int64_t>> persistent_writes(const Interpreter
 Result<std::vector<Change>> persist_run(Store& s, const Interpreter& in, std::string_view source,
                                         std::string_view profile_text = "");
 
+// The store's internal value of a setting given as --set names it: µm (lathe X
+// radii, DX a diameter), 0.0001° for a rotary origin, the code for C.
+int64_t internal_value(std::string_view name, double v);
+
 // A value for people: "15.157" (mm), "180.1203" (degrees), "3" (C code).
 std::string format_value(std::string_view name, int64_t internal);
 

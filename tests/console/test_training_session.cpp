@@ -156,6 +156,27 @@ TEST(TrainingSession, ARestartContinuesTheAttemptWithItsValues) {
     EXPECT_EQ(plain.value.count("PREF.Z"), 0u);
 }
 
+TEST(TrainingSession, AnAttemptOnAnEarlierTextIsNotContinued) {
+    // Its truth was drawn from that text: the changed exercise starts afresh.
+    const std::string db = temp_db();
+    {
+        Attempt a("lathe-first", "fay", db);
+        a.c->type(":set PREF.Z=12.5");
+    }
+    Attempt b("lathe-first", "fay", db);
+    b.e.source += "# changed by the teacher\n";
+    auto st = store::Store::open(db);
+    ASSERT_TRUE(st.ok());
+    Console c(b.e.machine, {}, std::move(st.value),
+              [&](console::Session& s) { EXPECT_EQ(s.start_exercise(b.e, "fay", kKey), ""); });
+    double v = 0;
+    c.s->sim().interp().get("PREF.Z", v);
+    EXPECT_DOUBLE_EQ(v, 0);  // the new attempt's start value, not 12.5
+    auto open = store::Store::open(db);
+    ASSERT_TRUE(open.ok());
+    EXPECT_EQ(open.value->attempts("lathe-first").value.size(), 2u);
+}
+
 // The teacher's report from attempts made up here, each signed with the key
 // (one edited afterwards); the three formats are golden files.
 std::vector<store::Attempt> class_attempts() {

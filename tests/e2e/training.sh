@@ -12,14 +12,18 @@ W=110 H=40
 export PUPITRE_CLASS_KEY=$work/class.key
 db=$work/store.db
 
-# Homed, at full speed, T1 D1 in the turret (IMD).
+# A block run in IMD.
+imd() {
+    cmd ":mode imd"
+    cmd "$1"
+    keys F9
+    wait_for 'IMD done' 10
+}
+# Homed, at full speed, T1 D1 in the turret.
 homed_with_t1() {
     pom
     cmd ":speed max"
-    cmd ":mode imd"
-    cmd "T1 D1 M6"
-    keys F9
-    wait_for 'IMD done' 10
+    imd "T1 D1 M6"
 }
 
 # The exam's six values typed on the PREF and CORR pages, PREF X as given.
@@ -124,13 +128,8 @@ mill)
     truth() { awk -v n="$1" '$1 == n { print $2 }' "$work/truth"; }
     pom
     cmd ":speed max"
-    cmd ":mode imd"
-    cmd "T6 D6 M6"
-    keys F9
-    wait_for 'IMD done' 10
-    cmd "M3 S800"
-    keys F9
-    wait_for 'IMD done' 10
+    imd "T6 D6 M6"
+    imd "M3 S800"
     cmd ":mode jog"
     cmd ":jog Y -100"
     cmd ":jog Z -400"
@@ -147,13 +146,8 @@ mill)
     wait_for "surface -5.000 = $(truth PREF.Y)" 5
     cmd ":jog Y -20"
     cmd ":jog Z 300"
-    cmd ":mode imd"
-    cmd "T4 D4 M6"
-    keys F9
-    wait_for 'IMD done' 10
-    cmd "M5"
-    keys F9
-    wait_for 'IMD done' 10
+    imd "T4 D4 M6"
+    imd "M5"
     cmd ":mode jog"
     cmd ":jog X -30"
     cmd ":jog Y 60"
@@ -204,9 +198,7 @@ first)
     "$bin" --db "$db" exercise truth lathe-first --student erin > "$work/truth" || fail "truth"
     truth() { awk -v n="$1" '$1 == n { print $2 }' "$work/truth"; }
     homed_with_t1
-    cmd "S800 M4"
-    keys F9
-    wait_for 'IMD done' 10
+    imd "S800 M4"
     # Over the bar, down onto it, a 0.5 mm skim out past the face, measured.
     cmd ":mode jog"
     cmd ":jog Z -190"
