@@ -12,11 +12,11 @@
 namespace pupitre {
 
 bool Interpreter::CazState::is_cycle(int g) {
-    return g == 34 || g == 71 || g == 81 || g == 82 || g == 92;
+    return g == 31 || g == 34 || g == 71 || g == 81 || g == 82 || g == 92;
 }
 
 int Interpreter::CazState::cycle_of(const Plan& p) {
-    for (int g : {34, 71, 81, 82, 92})
+    for (int g : {31, 34, 71, 81, 82, 92})
         if (p.g[size_t(g)]) return g;
     return -1;
 }
@@ -24,17 +24,17 @@ int Interpreter::CazState::cycle_of(const Plan& p) {
 // The fixed cycles (003:1306-1308): G71 and G81 are the turning cycle, as
 // chapter VI's §16 writes it (003:1405) and as its list and the CNP's name it
 // (003:1307, 1798); G92 and G82 the facing cycle likewise (003:1471, 1308,
-// 1799).
+// 1799). G31 is the threading cycle G71 "generates" (003:1418), the one
+// G33 revokes beside G34 (003:1160), and ex13's taper threading cycle
+// (003:1393): the thesis gives it no words of its own, so it runs as G34.
 bool Interpreter::CazState::cycle(Interpreter& in, const Plan& p) {
     struct CycleEntry {
         int g;
         bool (*run)(Interpreter&, const Plan&);
     };
-    static constexpr CycleEntry kCycles[] = {{34, &CazState::g34},
-                                             {71, &CazState::turning},
-                                             {81, &CazState::turning},
-                                             {82, &CazState::g92},
-                                             {92, &CazState::g92}};
+    static constexpr CycleEntry kCycles[] = {{31, &CazState::g34},     {34, &CazState::g34},
+                                             {71, &CazState::turning}, {81, &CazState::turning},
+                                             {82, &CazState::g92},     {92, &CazState::g92}};
     const int g = cycle_of(p);
     for (const CycleEntry& e : kCycles)
         if (e.g == g) {
@@ -77,11 +77,14 @@ bool Interpreter::CazState::move(Interpreter& in, int g, double x, double z) {
 // deeper each time (003:1332-1342), from X + D (the crest) to the final X.
 bool Interpreter::CazState::g34(Interpreter& in, const Plan& p) {
     const Args& a = in.caz_->args;
+    const int g = cycle_of(p);  // G34, or G31 which runs as it
     if (!p.to.axis[X] || !p.to.axis[Z] || !a.has_i || !a.has_d || !(a.has_f || a.has_s))
-        return in.fail(caz::kFunction, tr("G34 needs X, Z, I, D and the pitch in F or S "
-                                          "(003:1316-1330)"));
+        return in.fail(caz::kFunction, strf(tr("G%d needs X, Z, I, D and the pitch in F or S "
+                                               "(003:1316-1330)"),
+                                            g));
     if (a.i <= 0 || a.d <= 0)
-        return in.fail(caz::kFunction, tr("G34: I and D must be positive (003:1324, 1328)"));
+        return in.fail(caz::kFunction,
+                       strf(tr("G%d: I and D must be positive (003:1324, 1328)"), g));
     const double x0 = in.prog_[X], z0 = in.prog_[Z];
     const double xf = p.to.val[X], zf = p.to.val[Z];
     const double pass = a.i * caz::kUm, depth = a.d * caz::kUm, taper = a.k * caz::kUm;

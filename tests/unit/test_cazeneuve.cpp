@@ -161,7 +161,7 @@ TEST(Cazeneuve, ErrorCategories) {
     EXPECT_EQ(caz("N10 G X1000 R5\nN20 M2\n").error(), caz::kSyntax);
     EXPECT_EQ(caz("N10 G X1000 F1 F2\nN20 M2\n").error(), caz::kTwice);
     EXPECT_EQ(caz("N10 G25 S100\nN20 M2\n").error(), caz::kUnknownG);
-    EXPECT_EQ(caz("N10 G31 X1 Z1\nN20 M2\n").error(), caz::kLater);
+    EXPECT_EQ(caz("N10 G31 X1 Z1\nN20 M2\n").error(), caz::kFunction);
     EXPECT_EQ(caz("N10 G34 X1 Z1\nN20 M2\n").error(), caz::kFunction);
     EXPECT_EQ(caz("N10 G X999000\nN20 M2\n").error(), caz::kTravelX);
     EXPECT_EQ(caz::category_of(caz::kSyntax), "syntax");
@@ -186,6 +186,25 @@ TEST(Cazeneuve, G34ThreadingCycle) {
     }
     EXPECT_NEAR(p.cap.moves.back().to_prog[X], 20.0, 1e-9);  // back at the start
     EXPECT_NEAR(p.cap.moves.back().to_prog[Z], 2.0, 1e-9);
+}
+
+// G31, the threading cycle G71 generates and ex13's taper threading cycle
+// (003:1160, 1393, 1418), runs as G34: here a taper, K the radius gained at Z.
+TEST(Cazeneuve, G31RunsAsG34) {
+    Prog p =
+        caz("N10 M3 S500\nN20 G X20000 Z2000\nN30 G31 X17400 Z-30000 I300 K1000 D600 F1500\n"
+            "N40 M2\n");
+    ASSERT_EQ(p.error(), 0);
+    ASSERT_EQ(p.cap.moves.size(), 1u + 2 * 4);
+    const double radii[] = {17.7, 17.4};
+    for (int k = 0; k < 2; ++k) {
+        const MoveEvent& plunge = p.cap.moves[size_t(1 + 4 * k)];
+        const MoveEvent& thread = p.cap.moves[size_t(2 + 4 * k)];
+        EXPECT_NEAR(plunge.to_prog[X], radii[k], 1e-9);
+        EXPECT_NEAR(thread.to_prog[X], radii[k] + 1.0, 1e-9);  // the taper
+        EXPECT_NEAR(thread.to_prog[Z], -30.0, 1e-9);
+        EXPECT_NEAR(thread.feed, 750.0, 1e-6);  // a 1.5 mm pitch at 500 rev/min
+    }
 }
 
 // G92 X Z I K is a facing cycle here (003:1467-1477), not an origin preset:
