@@ -45,7 +45,9 @@ int to_int(std::string_view a) {
 Effect page(Session& s, std::string_view arg) {
     if (arg == "set") {  // the setting pages in turn: PARAM, PREF, CORR
         using P = pages::PageId;
-        s.show_page(s.page == P::param ? P::pref : s.page == P::pref ? P::corr : P::param);
+        // The Cazeneuve's controller has no variables (003 chapter VI): no PARAM.
+        const P after_corr = pages::is_caz(s.sim().machine()) ? P::pref : P::param;
+        s.show_page(s.page == P::param ? P::pref : s.page == P::pref ? P::corr : after_corr);
         return Effect::redraw;
     }
     if (arg == "pos") {

@@ -60,6 +60,7 @@ std::string Session::load_store() {
         for (auto it = r.value.rbegin(); it != r.value.rend(); ++it) input_.add_history(it->block);
     for (const auto& [name, v] : store::persistent_writes(sim_->interp())) persisted_[name] = v;
     if (auto r = store_->setting("protect.on"); !r.error && r.value) protect = *r.value == "1";
+    load_witness();
     if (std::string w = load_workshop(); !w.empty() && problem.empty()) problem = w;
     refresh_dir();
     remember_store();
@@ -426,6 +427,10 @@ Effect Session::route_text(const std::string& text) {
         case Target::edit:
             return edit_text(text);
         case Target::param:
+            if (pages::is_caz(m_)) {
+                say(tr("this controller has no L variables and no E parameters"), true);
+                return Effect::redraw;
+            }
             return set_value(t);
         case Target::shop:
             return read_part(t);
@@ -675,6 +680,7 @@ pages::View Session::view() const {
     v.protect = protect;
     v.undo_depth = undo_.size();
     v.last_setting = last_setting_;
+    v.witness = witness_text();
     v.readings = &readings_;
     exercise_view(v);
     view_editor(v);

@@ -88,6 +88,11 @@ class Session {
     void confirm(std::string question, std::function<void()> then);
     void echo_comma(std::string_view typed, double v);
     Effect measure(int d, int axis, double surface);
+    // The Cazeneuve's tool setting from a witness cut (console/witness.cpp):
+    // :witness DIA [FACE] once, then :tangent X|Z with each tool.
+    Effect witness_command(std::string_view args);
+    Effect tangent_command(std::string_view args);
+    std::string witness_text() const;  // "" when none
     // Training (console/session_exercise.cpp): an attempt at an exercise on
     // its hidden setup. start_exercise() comes before load_store(): the
     // attempt's correctors and origins live under its own name in the store.
@@ -190,6 +195,12 @@ class Session {
     uint64_t news_seen_ = 0;       // the Sim's workshop news already said
     uint64_t workshop_saved_ = 0;  // the part's generation the store holds
     std::string load_workshop();
+    struct Witness {
+        bool set = false;
+        double dia = 0, face = 0;  // mm: the diameter read, the face's program Z
+    } witness_;
+    void load_witness();
+    void save_witness();
     std::string store_key_;  // where the store keeps this console's machine state
     std::unique_ptr<ExerciseRun> exercise_;
     std::string exercise_workshop();

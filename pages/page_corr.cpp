@@ -32,6 +32,18 @@ bool pending(const Sim& s, bool active, const std::string& field, double val) {
             (field == "R" && in.comp_active() && std::abs(in.comp_radius() - val) > 1e-9));
 }
 
+// How a corrector is measured on a known surface: the Cazeneuve's (and any
+// lathe's with one) from the witness cut (003:802-806).
+std::string touch_hint(const View& v) {
+    const MachineProfile& m = v.sim->machine();
+    if (!v.witness.empty())
+        return v.witness + "; " + tr("the tool touching it: :tangent X or :tangent Z");
+    if (is_caz(m))
+        return tr("Witness cut (003:804): :witness DIA [FACE], then :tangent X|Z with each tool.");
+    return m.lathe ? tr("Touch a known surface: X 59.978 (a diameter) or Z 0, or :measure D2 Z 0.")
+                   : tr("Touch a known surface: Z 10 (a block on Z0), or :measure D2 Z 0.");
+}
+
 // The foot of the page: the last measurement, how to set a corrector, what a
 // star means, the memory protection.
 void corr_foot(const View& v, Canvas& c, const Rect& r) {
@@ -48,10 +60,7 @@ void corr_foot(const View& v, Canvas& c, const Rect& r) {
                : strf(tr("Presetter: L=120.5 or R=5 sets D%d; Up/Down or D5 choose another."),
                       v.corr_cursor),
            Style::dim, r.w - 2);
-    c.text(2, by + 1,
-           m.lathe ? tr("Touch a known surface: X 59.978 (a diameter) or Z 0, or :measure D2 Z 0.")
-                   : tr("Touch a known surface: Z 10 (a block on Z0), or :measure D2 Z 0."),
-           Style::dim, r.w - 2);
+    c.text(2, by + 1, touch_hint(v), v.witness.empty() ? Style::dim : Style::value, r.w - 2);
     c.text(2, by + 2,
            tr("* changed in a run: gauge at the next move of its axis, radius at G41/G42"),
            Style::dim, r.w - 2);
@@ -66,8 +75,10 @@ void page_corr(const View& v, Canvas& c, const Rect& r) {
     const Sim& s = *v.sim;
     const Interpreter& in = s.interp();
     const MachineProfile& m = s.machine();
-    c.rule(r.y, m.lathe ? tr("CORR  tool correctors (X Z R as radii, DX a diameter)")
-                        : tr("CORR  tool correctors"));
+    c.rule(r.y, is_caz(m) ? tr("CORR  correctors 01-99, the last two digits of T (X Z R radii, DX "
+                               "a diameter)")
+                : m.lathe ? tr("CORR  tool correctors (X Z R as radii, DX a diameter)")
+                          : tr("CORR  tool correctors"));
     std::vector<std::string> fields = m.lathe
                                           ? std::vector<std::string>{"X", "Z", "R", "C", "DX", "DZ"}
                                           : std::vector<std::string>{"L", "R", "DL", "DR"};
@@ -95,7 +106,10 @@ void page_corr(const View& v, Canvas& c, const Rect& r) {
                                     : Style::dim);
         }
         if (d == active)
-            c.text(8 + int(fields.size()) * 10, y + i, strf(tr("active T%d"), s.tool()), Style::ok);
+            c.text(8 + int(fields.size()) * 10, y + i,
+                   is_caz(m) ? strf(tr("active %s"), tool_word(m, s.tool(), d).c_str())
+                             : strf(tr("active T%d"), s.tool()),
+                   Style::ok);
         if (cur) c.style(Rect{r.x, y + i, r.w, 1}, Style::select);
     }
     corr_foot(v, c, r);

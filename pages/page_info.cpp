@@ -124,9 +124,13 @@ void page_info(const View& v, Canvas& c, const Rect& r) {
     // TRANSLATORS: the INFO page's title: INFO is the page's name.
     c.rule(r.y, tr("INFO  functions in force"));
     std::vector<Line> lines;
-    modal_lines(s, lines);
-    lines.push_back(Line{});
-    offset_lines(s, lines);
+    if (is_caz(s.machine())) {
+        caz_info_lines(s, lines);
+    } else {
+        modal_lines(s, lines);
+        lines.push_back(Line{});
+        offset_lines(s, lines);
+    }
     draw_lines(lines, v.scroll, c, Rect{r.x, r.y + 1, r.w, r.h - 1});
 }
 

@@ -38,6 +38,14 @@ void page_param(const View& v, Canvas& c, const Rect& r) {
     // TRANSLATORS: the PARAM page's title: PARAM is the page's name.
     c.rule(r.y, tr("PARAM  L variables and E parameters"));
     std::vector<Line> lines;
+    if (is_caz(v.sim->machine())) {
+        lines.push_back(Line{}.add(
+            std::string(" ") + tr("This controller has no L variables and no E parameters "
+                                  "(pupitre-cazeneuve(5)): nothing to set here."),
+            Style::dim));
+        draw_lines(lines, 0, c, Rect{r.x, r.y + 1, r.w, r.h - 1});
+        return;
+    }
     lines.push_back(Line{}.add(
         std::string(" ") + tr("Type L5=2 or E80000=18000 to set a value; PgUp/PgDn scroll."),
         Style::dim));

@@ -129,7 +129,7 @@ struct Rows {
 // The tool, its corrector and the coolant; the touch probe's lamp when the
 // workshop's electric probe is in the spindle.
 void tool_rows(const Sim& s, Rows& rows) {
-    std::string tool = "T" + std::to_string(s.tool()) + "  D" + std::to_string(s.corrector());
+    std::string tool = tool_word(s.machine(), s.tool(), s.corrector());
     if (s.m7() || s.m8())
         tool += std::string("  ") + (s.m7() ? "M07 " : "") + (s.m8() ? "M08" : "");
     rows.add(tr("Tool"), tool);

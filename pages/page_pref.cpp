@@ -5,6 +5,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <algorithm>
 #include <cmath>
+#include <span>
 
 #include "pages/pages.hpp"
 
@@ -22,8 +23,12 @@ int origins_table(const View& v, Canvas& c, const Rect& r) {
     const int w = 10;
     // TRANSLATORS: a column header of the PREF page (the tool gauge): at most 9 columns.
     const char* heads[] = {"PREF", "DEC1", "DEC3", "G59", tr("gauge"), "OM", "OP"};
-    for (int i = 0; i < 7; ++i)
-        c.text_right(4 + i * w, y, w, heads[i], i < 3 ? Style::title : Style::dim);
+    // The Cazeneuve's controller has one origin and no DEC1, DEC3 or G59
+    // (pupitre-cazeneuve(5)): its columns are PREF, the gauge, OM and OP.
+    static constexpr int kNum[] = {0, 1, 2, 3, 4, 5, 6}, kCaz[] = {0, 4, 5, 6};
+    std::span<const int> cols = is_caz(m) ? std::span<const int>(kCaz) : kNum;
+    for (size_t k = 0; k < cols.size(); ++k)
+        c.text_right(4 + int(k) * w, y, w, heads[cols[k]], cols[k] < 3 ? Style::title : Style::dim);
     ++y;
     Axes om = s.om(), op = s.op();
     for (int a = 0; a < kAxes && y < r.y + r.h - 6; ++a) {
@@ -37,7 +42,8 @@ int origins_table(const View& v, Canvas& c, const Rect& r) {
                                f.gauge[size_t(a)],
                                s.to_display(a, om[size_t(a)]),
                                s.to_display(a, op[size_t(a)])};
-        for (int i = 0; i < 7; ++i) {
+        for (size_t k = 0; k < cols.size(); ++k) {
+            const int i = cols[k];
             bool pending = false;
             if (i < 3) {
                 std::string n = std::string(i == 0 ? "PREF." : i == 1 ? "DEC1." : "DEC3.") + name;
@@ -46,7 +52,7 @@ int origins_table(const View& v, Canvas& c, const Rect& r) {
             // OM and OP show the lathe's X as the OP page does: a diameter.
             bool dia = i >= 5 && a == X && m.lathe && s.to_display(X, 1.0) != 1.0;
             std::string t = (dia ? "\u00f8" : "") + fmt_axis(a, vals[i]) + (pending ? "*" : "");
-            c.text_right(4 + i * w, y, w, t,
+            c.text_right(4 + int(k) * w, y, w, t,
                          pending ? Style::warn
                          : i < 3 ? Style::value
                                  : Style::normal);
@@ -65,7 +71,10 @@ void setting_notes(const View& v, Canvas& c, const Rect& r, int y) {
     const Frames& f = in.frames();
     // The corrector the machine applies (D0 after M02 and RAZ, T kept); a
     // gauge not yet applied is named: a touch-off applies it first.
-    std::string d = strf(tr("active corrector D%d, tool T%d"), s.corrector(), s.tool());
+    std::string d =
+        is_caz(m) ? strf(tr("active tool %s: turret position %d, corrector %02d"),
+                         tool_word(m, s.tool(), s.corrector()).c_str(), s.tool(), s.corrector())
+                  : strf(tr("active corrector D%d, tool T%d"), s.corrector(), s.tool());
     std::string waiting;
     for (int a = 0; a < kAxes; ++a)
         if (m.has(a) && in.gauge_pending(a) &&
@@ -96,10 +105,40 @@ void setting_notes(const View& v, Canvas& c, const Rect& r, int y) {
                r.w - 2);
 }
 
+// The memory protection's state, on the page's last row.
+void protection_row(const View& v, Canvas& c, int y) {
+    std::string state =
+        v.protect ? tr("memory protection ON (:protect off)") : tr("memory protection off");
+    if (v.undo_depth) state += "   " + strf(tr("%zu change(s) to undo"), v.undo_depth);
+    c.text(2, y, state, v.protect ? Style::warn : Style::dim);
+}
+
+// The Cazeneuve's setting (003:802-808): one origin, and each tool's
+// corrector from a witness cut it touches; X is a radius.
+void caz_setting_help(const View& v, Canvas& c, const Rect& r, int by) {
+    c.text(2, by,
+           v.witness.empty()
+               ? tr("Tool setting (003:804): turn a diameter and a face by hand, measure the "
+                    "diameter, :witness DIA [FACE];")
+               : v.witness + ";",
+           v.witness.empty() ? Style::dim : Style::value, r.w - 2);
+    c.text(2, by + 1,
+           tr("then each tool touches it: :tangent X, :tangent Z. Touch-off: Z 0, X 29.5 "
+              "(a radius)."),
+           Style::dim, r.w - 2);
+    c.text(2, by + 2, tr("Direct entry: PREF.Z=-300  D1.X=32.5    Undo: C-z, :undo"), Style::dim,
+           r.w - 2);
+    protection_row(v, c, by + 3);
+}
+
 // The touch-off help and the memory protection, on the page's last rows.
 void touch_off_help(const View& v, Canvas& c, const Rect& r) {
     const MachineProfile& m = v.sim->machine();
     int by = r.y + r.h - 5;
+    if (is_caz(m)) {
+        caz_setting_help(v, c, r, by);
+        return;
+    }
     c.text(2, by, tr("Touch-off: jog the tool onto the part, then type the coordinate of the"),
            Style::dim, r.w - 2);
     c.text(2, by + 1,
@@ -108,10 +147,7 @@ void touch_off_help(const View& v, Canvas& c, const Rect& r) {
            Style::dim, r.w - 2);
     c.text(2, by + 2, tr("Direct entry: PREF.Z=-300  DEC1.X=2  DEC3.Z=0.5    Undo: C-z, :undo"),
            Style::dim, r.w - 2);
-    std::string state =
-        v.protect ? tr("memory protection ON (:protect off)") : tr("memory protection off");
-    if (v.undo_depth) state += "   " + strf(tr("%zu change(s) to undo"), v.undo_depth);
-    c.text(2, by + 3, state, v.protect ? Style::warn : Style::dim);
+    protection_row(v, c, by + 3);
 }
 
 }  // namespace

@@ -94,6 +94,7 @@ struct View {
     bool protect = false;
     size_t undo_depth = 0;
     std::string last_setting;  // the last touch-off or measurement, its arithmetic
+    std::string witness;       // the witness cut the lathe's tools are set from, or ""
     // HISTORY (:history).
     int history_number = -1;          // the program shown
     int history_current = 0;          // its current revision

@@ -1,0 +1,127 @@
+// The Cazeneuve lathe's tool setting from a witness cut (seed 003:802-808):
+// "à partir d'un usinage témoin quelconque réalisé en manuel en venant
+// tangenter avec chacun des outils", the computer works out each tool's
+// setting. The setter turns a diameter and a face by hand, reads the
+// diameter with the micrometer and gives both once (:witness); then each
+// tool in turn touches the witness (tangenter) and :tangent X or Z sets its
+// corrector so that its point reads the witness. Any lathe may use it: on a
+// NUM it is :measure with the surface remembered.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <charconv>
+#include <cmath>
+
+#include "console/session.hpp"
+#include "core/i18n.hpp"
+#include "store/store.hpp"
+
+namespace pupitre::console {
+
+namespace {
+
+bool read_mm(std::string_view s, double& v) {
+    if (!s.empty() && s.front() == '+') s.remove_prefix(1);
+    std::string t(s);
+    for (char& ch : t)
+        if (ch == ',') ch = '.';  // a French decimal comma, as on the setting pages
+    auto [p, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
+    return ec == std::errc() && p == t.data() + t.size() && std::isfinite(v);
+}
+
+std::vector<std::string_view> words_of(std::string_view s) {
+    std::vector<std::string_view> out;
+    size_t i = 0;
+    while (i < s.size()) {
+        while (i < s.size() && s[i] == ' ') ++i;
+        size_t j = i;
+        while (j < s.size() && s[j] != ' ') ++j;
+        if (j > i) out.push_back(s.substr(i, j - i));
+        i = j;
+    }
+    return out;
+}
+
+}  // namespace
+
+std::string Session::witness_text() const {
+    if (!witness_.set) return {};
+    return strf(tr("witness cut: \u00f8%s, face at Z %s"), pages::fmt_len(witness_.dia).c_str(),
+                pages::fmt_len(witness_.face).c_str());
+}
+
+void Session::load_witness() {
+    witness_ = Witness{};
+    if (!store_) return;
+    auto r = store_->setting("witness." + store_key_);
+    if (r.error || !r.value || r.value->empty()) return;
+    auto w = words_of(*r.value);
+    if (w.size() == 2 && read_mm(w[0], witness_.dia) && read_mm(w[1], witness_.face))
+        witness_.set = witness_.dia > 0;
+}
+
+void Session::save_witness() {
+    if (!store_) return;
+    store_->set_setting("witness." + store_key_,
+                        witness_.set ? strf("%.4f %.4f", witness_.dia, witness_.face) : "");
+}
+
+// :witness DIA [FACE]: the witness's diameter, read with the micrometer, and
+// the program Z of its face (0: the program's origin is on the face).
+Effect Session::witness_command(std::string_view args) {
+    auto w = words_of(args);
+    if (!m_.lathe) {
+        say(tr(":witness: a lathe's tool setting (the witness is a turned diameter and face)"),
+            true);
+        return Effect::redraw;
+    }
+    if (w.empty()) {
+        say(witness_.set ? witness_text()
+                         : std::string(tr("no witness cut: :witness DIA [FACE], e.g. "
+                                          ":witness 58.02 0")));
+        return Effect::redraw;
+    }
+    if (w.size() == 1 && w[0] == "off") {
+        witness_ = Witness{};
+        save_witness();
+        say(tr("witness cut forgotten"));
+        return Effect::redraw;
+    }
+    double dia = 0, face = 0;
+    if (w.size() > 2 || !read_mm(w[0], dia) || dia <= 0 ||
+        (w.size() == 2 && !read_mm(w[1], face))) {
+        say(strf(tr("usage: %s"), ":witness DIA [FACE] | :witness off"), true);
+        return Effect::redraw;
+    }
+    witness_ = Witness{true, dia, face};
+    save_witness();
+    say(witness_text() + "; " + tr("now with each tool: touch it, then :tangent X or :tangent Z"));
+    return Effect::redraw;
+}
+
+// :tangent X|Z: the active tool touches the witness's diameter (X) or face
+// (Z); its corrector is set so that the tool's point reads the witness.
+Effect Session::tangent_command(std::string_view args) {
+    auto w = words_of(args);
+    const int axis = w.size() == 1 && w[0].size() == 1 ? axis_of(char(std::toupper(w[0][0]))) : -1;
+    if (axis != X && axis != Z) {
+        say(strf(tr("usage: %s"), ":tangent X|Z"), true);
+        return Effect::redraw;
+    }
+    if (!witness_.set) {
+        say(tr(":tangent: no witness cut yet: turn a diameter and a face, measure the "
+               "diameter, then :witness DIA [FACE]"),
+            true);
+        return Effect::redraw;
+    }
+    if (sim_->corrector() == 0) {
+        say(strf(tr(":tangent: T%d has no corrector (D0): select the tool with its corrector "
+                    "first"),
+                 sim_->tool()),
+            true);
+        return Effect::redraw;
+    }
+    // The surface as the program writes it: X a radius or a diameter.
+    const double surface = axis == Z ? witness_.face : sim_->to_display(X, witness_.dia / 2);
+    return measure(sim_->corrector(), axis, surface);
+}
+
+}  // namespace pupitre::console

@@ -1,0 +1,82 @@
+// The witness cut (seed 003:802-808): :witness and :tangent set the active
+// tool's corrector from a turned diameter and face, on a NUM lathe and on the
+// Cazeneuve, whose pages and store keep it.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "tests/console/fixture.hpp"
+
+using namespace pupitre;
+using pupitre::test::Console;
+
+// On a NUM lathe the witness's diameter is typed as the micrometer reads it,
+// and :tangent X measures the active corrector from it as a diameter.
+TEST(Witness, TangentSetsTheActiveCorrectorFromTheWitness) {
+    Console c;
+    setter_lathe(c);  // T1 D1 at OM X 150 (radius) Z 200, PREF 0
+    c.type(":tangent X");
+    EXPECT_NE(c.message().find("no witness cut yet"), std::string::npos) << c.message();
+    c.type(":witness 100 5");
+    EXPECT_NE(c.message().find("face at Z 5.000"), std::string::npos) << c.message();
+    c.type(":tangent X");
+    double x = 0, z = 0;
+    ASSERT_TRUE(c.s->sim().interp().get("D1.X", x));
+    EXPECT_NEAR(x, 100, 1e-9);  // OM 150 less the witness's radius 50
+    c.type(":tangent Z");
+    ASSERT_TRUE(c.s->sim().interp().get("D1.Z", z));
+    EXPECT_NEAR(z, 195, 1e-9);  // OM 200 less the face's Z 5
+    c.type(":undo");
+    c.s->sim().interp().get("D1.Z", z);
+    EXPECT_NEAR(z, 38.237, 1e-9);
+    c.type(":tangent Q");
+    EXPECT_NE(c.message().find(":tangent X|Z"), std::string::npos);
+    c.type(":witness -3");
+    EXPECT_NE(c.message().find("usage"), std::string::npos);
+    c.type(":witness off");
+    c.type(":witness");
+    EXPECT_NE(c.message().find("no witness cut"), std::string::npos);
+}
+
+// On the Cazeneuve, X is a radius and the corrector is T's last two digits;
+// the witness stays in the store with the machine's correctors.
+TEST(Witness, CazeneuveTangentKeptInTheStore) {
+    std::string path = ::testing::TempDir() + "/witness_test.db";
+    std::remove(path.c_str());
+    {
+        auto opened = store::Store::open(path);
+        ASSERT_FALSE(opened.error) << opened.error.message;
+        Console c("cazeneuve", {}, std::move(opened.value));
+        c.type(":mode pom");
+        c.named("F9");
+        c.run_until_settled();
+        c.type(":mode imd");
+        c.type("T204");
+        c.named("F9");
+        c.run_until_settled();
+        ASSERT_EQ(c.s->sim().corrector(), 4);
+        c.type(":witness 58");
+        c.type(":tangent X");  // OM X 200 (radius), the witness's radius 29
+        double x = 0;
+        ASSERT_TRUE(c.s->sim().interp().get("D4.X", x));
+        EXPECT_NEAR(x, 171, 1e-9);
+        c.type(":page corr");
+        EXPECT_NE(c.s->view().witness.find("58.000"), std::string::npos);
+        // No PARAM page on this controller: F5 goes PREF, CORR, PREF.
+        c.named("F5");
+        EXPECT_EQ(c.s->page, pages::PageId::pref);
+        c.named("F5");
+        EXPECT_EQ(c.s->page, pages::PageId::corr);
+    }
+    auto again = store::Store::open(path);
+    ASSERT_FALSE(again.error);
+    Console c("cazeneuve", {}, std::move(again.value));
+    c.type(":witness");
+    EXPECT_NE(c.message().find("witness cut: \u00f858.000, face at Z 0.000"), std::string::npos)
+        << c.message();
+    double x = 0;
+    c.s->sim().interp().get("D4.X", x);
+    EXPECT_NEAR(x, 171, 1e-9);
+    std::remove(path.c_str());
+}
