@@ -79,9 +79,12 @@ void page_corr(const View& v, Canvas& c, const Rect& r) {
                                "a diameter)")
                 : m.lathe ? tr("CORR  tool correctors (X Z R as radii, DX a diameter)")
                           : tr("CORR  tool correctors"));
-    std::vector<std::string> fields = m.lathe
-                                          ? std::vector<std::string>{"X", "Z", "R", "C", "DX", "DZ"}
-                                          : std::vector<std::string>{"L", "R", "DL", "DR"};
+    // The Cazeneuve's correctors have no orientation: its gauges pilot the
+    // nose centre (003:1912).
+    std::vector<std::string> fields =
+        is_caz(m) ? std::vector<std::string>{"X", "Z", "R", "DX", "DZ"}
+        : m.lathe ? std::vector<std::string>{"X", "Z", "R", "C", "DX", "DZ"}
+                  : std::vector<std::string>{"L", "R", "DL", "DR"};
     int y = r.y + 1;
     c.text(2, y, "D", Style::dim);
     for (size_t i = 0; i < fields.size(); ++i)

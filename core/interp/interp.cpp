@@ -314,6 +314,11 @@ std::string Interpreter::set_corrector(std::string_view name, double value) {
         return strf(tr("corrector must be D1 to D%d"), int(m_.correctors));
     Corrector& c = corr_[size_t(d)];
     std::string_view f = name.substr(dot + 1);
+    // The Cazeneuve's gauges pilot the nose centre under the CNP (003:1912,
+    // "régler les jauges de façon à piloter l'axe du rayon de l'outil"): its
+    // correctors have no orientation, which is C0, the centre.
+    if (m_.lathe && f == "C" && caz_ && value != 0)
+        return tr("this controller's gauges pilot the nose centre (003:1912): no orientation C");
     if (m_.lathe && f == "C")
         c.c = int(value);
     else if (double Corrector::*v = corr_field(m_.lathe, f))
@@ -545,6 +550,10 @@ StepResult Interpreter::step() {
         }
         loc_.n = block_.n;
         if (block_.skip && opt_.block_skip) {
+            // The Cazeneuve ends its CNP on a block skip mark (003:1804),
+            // even when the switch skips the block.
+            if (caz_ && modal_.radcomp != 40 && !CazState::end_comp(*this))
+                return StepResult::error;
             after_block(lineno);
             continue;
         }

@@ -299,7 +299,9 @@ StepResult Interpreter::execute_caz(const Block& b) {
                                tr(std::string(g->text).c_str())));
         return StepResult::error;
     }
-    if (modal_.radcomp != 40 && CazState::ends_comp(*this, p) && !CazState::end_comp(*this))
+    // A block skip mark ends the CNP too (003:1804), run or skipped (interp.cpp).
+    if (modal_.radcomp != 40 && (b.skip || CazState::ends_comp(*this, p)) &&
+        !CazState::end_comp(*this))
         return StepResult::error;
     // The variator changes range by itself (003:720-722): each S finds its own.
     if (p.tech.has_s && modal_.spindle_mode == 97 && p.mode.spindle != 96) modal_.range = -1;

@@ -279,5 +279,35 @@ TEST(Cazeneuve, M2EndsCompensation) {
     EXPECT_EQ(p.error(), 0);
 }
 
+// The gauges pilot the nose centre under the CNP (003:1912): no orientation C.
+TEST(Cazeneuve, CorrectorsHaveNoOrientation) {
+    Prog p("N10 M2\n", "cazeneuve");
+    EXPECT_NE(p.in->set("D1.C", 3), "");
+    EXPECT_EQ(p.in->set("D1.C", 0), "");
+    EXPECT_EQ(p.in->set("D1.R", 0.8), "");
+}
+
+// A block skip mark ends the CNP (003:1804: "I saut de bloc", the OCR's "/"),
+// whether the switch skips the block or runs it: N60 then runs on the
+// programmed X, not one nose radius outside it.
+TEST(Cazeneuve, BlockSkipEndsCompensation) {
+    const std::string text =
+        "N10 T101\nN20 M3 S800\nN30 G X10000 Z6000\nN40 G95 G41 Z0 F150\n"
+        "N50 G1 Z-20000\n/N55 G1 Z-30000\nN60 G1 Z-50000\nN70 G7XZ\nN80 M2\n";
+    for (bool skip : {false, true}) {
+        RunOptions o;
+        o.block_skip = skip;
+        Prog p(text, "cazeneuve", {{"D1.R", 3}}, o);
+        ASSERT_EQ(p.error(), 0) << skip;
+        double x50 = 0, x60 = 0;
+        for (const MoveEvent& m : p.cap.moves) {
+            if (m.loc.n == 50) x50 = m.to_prog[X];
+            if (m.loc.n == 60) x60 = m.to_prog[X];
+        }
+        EXPECT_NEAR(x50, 13.0, 1e-6) << skip;  // under the CNP
+        EXPECT_NEAR(x60, 10.0, 1e-6) << skip;  // ended by the mark
+    }
+}
+
 }  // namespace
 }  // namespace pupitre
