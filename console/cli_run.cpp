@@ -26,10 +26,10 @@ bool load_machine(const std::string& name, MachineProfile& m) {
     if (builtin_machine(name, m)) return true;
     std::ifstream in(name);
     if (!in) {
-        std::fprintf(
-            stderr,
-            tr("pupitre: unknown machine '%s' (lathe, mill, mill4, mill5, or a .machine file)\n"),
-            name.c_str());
+        std::fprintf(stderr,
+                     tr("pupitre: unknown machine '%s' (lathe, mill, mill4, mill5, cazeneuve, or a "
+                        ".machine file)\n"),
+                     name.c_str());
         return false;
     }
     std::ostringstream ss;

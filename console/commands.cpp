@@ -231,9 +231,8 @@ Effect setup(Session& s, const CommandCall& c) {
     if (what.empty()) {
         s.say(now ? strf(tr("workshop: setup %s, %s"), now->setup().name.c_str(),
                          now->setup().description.c_str())
-                  : std::string(s.machine().lathe
-                                    ? tr("no workshop: the machine moves a point (:setup lathe)")
-                                    : tr("no workshop: the machine moves a point (:setup mill)")));
+                  : strf(tr("no workshop: the machine moves a point (:setup %s)"),
+                         s.machine_setup()));
         return Effect::redraw;
     }
     if (s.sim().in_cycle()) {
@@ -482,7 +481,7 @@ constexpr Command kCommands[] = {
     {"tangent", ":tangent X|Z",
      N_("the active tool touches the witness: its corrector is set from it (Cazeneuve)"),
      [](Session& s, const CommandCall& c) { return s.tangent_command(c.rest()); }},
-    {"setup", ":setup [lathe|FILE|off]",
+    {"setup", ":setup [lathe|mill|cazeneuve|FILE|off]",
      N_("the workshop: a true part, chuck and tools the moves cut and touch"), setup},
     {"part", ":part new", N_("the workshop: fresh stock in the chuck"), part},
     {"", ":part export FILE", N_("the part as cut: SVG if FILE ends in .svg, else its Z R outline"),

@@ -149,10 +149,10 @@ void add_program_options(CLI::App& app, CommandLine& c) {
         ->type_name("FILE");
 
     cli::ConsoleArgs& ca = c.ca;
-    app.add_option(
-        "--machine", ca.machine,
-        tr("the console's machine: lathe, mill, mill4, mill5, a stored profile or a .machine file "
-           "(default: the last one used, else lathe)"));
+    app.add_option("--machine", ca.machine,
+                   tr("the console's machine: lathe, mill, mill4, mill5, cazeneuve, a stored "
+                      "profile or a .machine file "
+                      "(default: the last one used, else lathe)"));
     app.add_option("--theme", ca.theme,
                    tr("the console's colours: colour, mono or phosphor (default colour; mono when "
                       "NO_COLOR is set)"));
@@ -162,9 +162,9 @@ void add_program_options(CLI::App& app, CommandLine& c) {
 
 // The options run and check share.
 void add_run_options(CLI::App* sub, cli::RunArgs& ra) {
-    sub->add_option(
-        "--machine", ra.machine,
-        tr("machine profile: lathe, mill, mill4, mill5, or a .machine file (default lathe)"));
+    sub->add_option("--machine", ra.machine,
+                    tr("machine profile: lathe, mill, mill4, mill5, cazeneuve, or a .machine file "
+                       "(default lathe)"));
     sub->add_option(
            "--set", ra.sets,
            tr("seed the machine before the run: PREF.X=-120.5, D1.R=4, L5=2, E80000=18000"))
@@ -188,10 +188,10 @@ CLI::App* add_run(CLI::App& app, cli::RunArgs& ra) {
     run->add_flag("--json", ra.json, tr("the summary as JSON"));
     run->add_flag("--optional-stop", ra.optional_stop,
                   tr("M01 stops (the optional-stop switch is on)"));
-    run->add_option(
-           "--setup", ra.setup,
-           tr("run in the workshop: the true chuck or vice, stock and tools (lathe, mill, or a "
-              ".setup file)"))
+    run->add_option("--setup", ra.setup,
+                    tr("run in the workshop: the true chuck or vice, stock and tools (lathe, mill, "
+                       "cazeneuve, or a "
+                       ".setup file)"))
         ->type_name("SETUP");
     run->add_option("--measure", ra.measures,
                     tr("after the run, read an instrument: 'dia Z-20', 'bore Z-5', 'groove Z-30', "
@@ -208,9 +208,9 @@ CLI::App* add_run(CLI::App& app, cli::RunArgs& ra) {
 CLI::App* add_plot(CLI::App& app, cli::PlotArgs& pa) {
     CLI::App* plot =
         app.add_subcommand("plot", tr("draw the toolpath of a dry run as SVG, PNG or PDF"));
-    plot->add_option(
-        "--machine", pa.machine,
-        tr("machine profile: lathe, mill, mill4, mill5, or a .machine file (default lathe)"));
+    plot->add_option("--machine", pa.machine,
+                     tr("machine profile: lathe, mill, mill4, mill5, cazeneuve, or a .machine file "
+                        "(default lathe)"));
     plot->add_option("--plane", pa.plane,
                      tr("xy, xz, yz or zx (default: the program's; zx on the lathe)"));
     plot->add_option("--set", pa.sets,
@@ -227,9 +227,9 @@ CLI::App* add_plot(CLI::App& app, cli::PlotArgs& pa) {
         ->type_name("OUT");
     plot->add_option("--pdf", pa.pdf, tr("the picture as a one-page PDF, for printing"))
         ->type_name("OUT");
-    plot->add_option(
-            "--setup", pa.setup,
-            tr("draw the part the workshop cut under the path (lathe, mill, or a .setup file)"))
+    plot->add_option("--setup", pa.setup,
+                     tr("draw the part the workshop cut under the path (lathe, mill, cazeneuve, or "
+                        "a .setup file)"))
         ->type_name("SETUP");
     plot->add_option("files", pa.files,
                      tr("program files; the first program of the first file is run"))

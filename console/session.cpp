@@ -81,9 +81,8 @@ std::string Session::load_workshop() {
         why = st.kind == "lathe" ? tr("a lathe's, on a machining centre")
                                  : tr("a machining centre's, on a lathe");
     if (!why.empty())
-        return strf(m_.lathe ? tr("the stored workshop is not a setup (%s): :setup lathe loads one")
-                             : tr("the stored workshop is not a setup (%s): :setup mill loads one"),
-                    why.c_str());
+        return strf(tr("the stored workshop is not a setup (%s): :setup %s loads one"), why.c_str(),
+                    machine_setup());
     auto w = std::make_unique<workshop::Workshop>(m_, st, nullptr);
     const bool read = w->load_part(r.value->part);  // else fresh stock, as built
     workshop_saved_ = read ? w->generation() : 0;
@@ -93,8 +92,13 @@ std::string Session::load_workshop() {
                       "the stored part could not be read: the workshop starts with fresh stock"));
 }
 
+// The built-in setup of this machine's kind: its own for the Cazeneuve.
+const char* Session::machine_setup() const {
+    return m_.dialect == Dialect::cazeneuve ? "cazeneuve" : m_.lathe ? "lathe" : "mill";
+}
+
 std::string Session::no_workshop() const {
-    return m_.lathe ? tr("no workshop: :setup lathe puts a part in the chuck")
+    return m_.lathe ? strf(tr("no workshop: :setup %s puts a part in the chuck"), machine_setup())
                     : tr("no workshop: :setup mill puts a block in the vice");
 }
 

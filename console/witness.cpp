@@ -119,8 +119,12 @@ Effect Session::tangent_command(std::string_view args) {
             true);
         return Effect::redraw;
     }
-    // The surface as the program writes it: X a radius or a diameter.
-    const double surface = axis == Z ? witness_.face : sim_->to_display(X, witness_.dia / 2);
+    // The surface as the program writes it: X a radius or a diameter. The
+    // Cazeneuve's rear turret, positions 11-14 (003:1028-1030), touches the
+    // witness behind the axis, at X < 0 (003:1563).
+    const bool rear = m_.dialect == Dialect::cazeneuve && sim_->tool() >= 11;
+    const double surface =
+        axis == Z ? witness_.face : sim_->to_display(X, (rear ? -1 : 1) * witness_.dia / 2);
     return measure(sim_->corrector(), axis, surface);
 }
 

@@ -72,7 +72,8 @@ std::string read_setup(const std::string& name, const MachineProfile& m, worksho
                            "it)"),
                         name.c_str(), name.c_str());
         if (!in)
-            return strf(tr("unknown setup '%s' (lathe, mill, or a .setup file)"), name.c_str());
+            return strf(tr("unknown setup '%s' (lathe, mill, cazeneuve, or a .setup file)"),
+                        name.c_str());
         std::ostringstream text;
         text << in.rdbuf();
         // An exercise's file is not a setup: its truth is for the student

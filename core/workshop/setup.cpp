@@ -13,6 +13,7 @@ namespace pupitre {
 namespace data {
 std::string_view setup_lathe();
 std::string_view setup_mill();
+std::string_view setup_cazeneuve();
 }  // namespace data
 
 namespace workshop {
@@ -336,6 +337,7 @@ std::string parse_setup(std::string_view text, Setup& s) {
 bool builtin_setup(std::string_view name, Setup& s) {
     if (name == "lathe") return parse_setup(data::setup_lathe(), s).empty();
     if (name == "mill") return parse_setup(data::setup_mill(), s).empty();
+    if (name == "cazeneuve") return parse_setup(data::setup_cazeneuve(), s).empty();
     return false;
 }
 

@@ -61,6 +61,14 @@ TEST(Witness, CazeneuveTangentKeptInTheStore) {
         double x = 0;
         ASSERT_TRUE(c.s->sim().interp().get("D4.X", x));
         EXPECT_NEAR(x, 171, 1e-9);
+        // The rear turret (positions 11-14) touches it behind the axis, X < 0.
+        c.type("T1111");
+        c.named("F9");
+        c.run_until_settled();
+        c.type(":tangent X");
+        double x11 = 0;
+        ASSERT_TRUE(c.s->sim().interp().get("D11.X", x11));
+        EXPECT_NEAR(x11, 229, 1e-9);  // OM X 200 less the surface at -29
         c.type(":page corr");
         EXPECT_NE(c.s->view().witness.find("58.000"), std::string::npos);
         // No PARAM page on this controller: F5 goes PREF, CORR, PREF.

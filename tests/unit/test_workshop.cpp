@@ -61,6 +61,24 @@ TEST(Setup, ShippedLatheParses) {
     EXPECT_EQ(s.tool(9), nullptr);
 }
 
+// The Cazeneuve's: both turrets (003:1028-1030), the rear one beyond the
+// axis on the same cross-slide, each rear nose touching above its centre.
+TEST(Setup, ShippedCazeneuveHasBothTurrets) {
+    workshop::Setup s;
+    ASSERT_TRUE(builtin_setup("cazeneuve", s));
+    EXPECT_EQ(s.kind, "lathe");
+    EXPECT_DOUBLE_EQ(s.lathe.axis_x, 0);
+    EXPECT_DOUBLE_EQ(s.lathe.chuck_z + s.lathe.stickout, 35);
+    for (int t : {1, 2, 3, 4, 11, 12, 13, 14}) {
+        ASSERT_NE(s.tool(t), nullptr) << t;
+        if (t > 10) {
+            EXPECT_GT(s.tool(t)->x, 300) << t;
+            EXPECT_EQ(s.tool(t)->orientation, 2) << t;
+        }
+    }
+    EXPECT_EQ(s.tool(5), nullptr);
+}
+
 TEST(Setup, ErrorsNameTheLine) {
     workshop::Setup s;
     EXPECT_EQ(parse_setup("kind = lathe\nstock.diameter = abc\n", s),
