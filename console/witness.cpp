@@ -93,7 +93,7 @@ Effect Session::witness_command(std::string_view args) {
     }
     witness_ = Witness{true, dia, face};
     save_witness();
-    say(witness_text() + "; " + tr("now with each tool: touch it, then :tangent X or :tangent Z"));
+    say(witness_text() + "; " + tr("then :tangent X|Z with each tool"));
     return Effect::redraw;
 }
 

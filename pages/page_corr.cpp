@@ -36,8 +36,7 @@ bool pending(const Sim& s, bool active, const std::string& field, double val) {
 // lathe's with one) from the witness cut (003:802-806).
 std::string touch_hint(const View& v) {
     const MachineProfile& m = v.sim->machine();
-    if (!v.witness.empty())
-        return v.witness + "; " + tr("the tool touching it: :tangent X or :tangent Z");
+    if (!v.witness.empty()) return v.witness + "; " + tr("touching it: :tangent X|Z");
     if (is_caz(m))
         return tr("Witness cut (003:804): :witness DIA [FACE], then :tangent X|Z with each tool.");
     return m.lathe ? tr("Touch a known surface: X 59.978 (a diameter) or Z 0, or :measure D2 Z 0.")

@@ -39,10 +39,11 @@ void page_param(const View& v, Canvas& c, const Rect& r) {
     c.rule(r.y, tr("PARAM  L variables and E parameters"));
     std::vector<Line> lines;
     if (is_caz(v.sim->machine())) {
-        lines.push_back(Line{}.add(
-            std::string(" ") + tr("This controller has no L variables and no E parameters "
-                                  "(pupitre-cazeneuve(5)): nothing to set here."),
-            Style::dim));
+        for (const auto& part :
+             wrap_text(tr("This controller has no L variables and no E parameters "
+                          "(pupitre-cazeneuve(5)): nothing to set here."),
+                       r.w - 2))
+            lines.push_back(Line{}.add(" " + part, Style::dim));
         draw_lines(lines, 0, c, Rect{r.x, r.y + 1, r.w, r.h - 1});
         return;
     }

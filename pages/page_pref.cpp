@@ -118,16 +118,13 @@ void protection_row(const View& v, Canvas& c, int y) {
 void caz_setting_help(const View& v, Canvas& c, const Rect& r, int by) {
     c.text(2, by,
            v.witness.empty()
-               ? tr("Tool setting (003:804): turn a diameter and a face by hand, measure the "
-                    "diameter, :witness DIA [FACE];")
+               ? tr("Witness cut (003:804): turn a diameter and a face, measure the diameter,")
                : v.witness + ";",
            v.witness.empty() ? Style::dim : Style::value, r.w - 2);
-    c.text(2, by + 1,
-           tr("then each tool touches it: :tangent X, :tangent Z. Touch-off: Z 0, X 29.5 "
-              "(a radius)."),
+    c.text(2, by + 1, tr(":witness DIA [FACE], then with each tool touching it: :tangent X|Z."),
            Style::dim, r.w - 2);
-    c.text(2, by + 2, tr("Direct entry: PREF.Z=-300  D1.X=32.5    Undo: C-z, :undo"), Style::dim,
-           r.w - 2);
+    c.text(2, by + 2, tr("Touch-off: Z 0, X 29.5 (a radius). Direct entry: PREF.Z=-300  D1.X=32.5"),
+           Style::dim, r.w - 2);
     protection_row(v, c, by + 3);
 }
 

@@ -275,3 +275,31 @@ TEST(Screen, EditorAndModif) {
     m.named("Enter");
     snapshot("modif", m.screen());
 }
+
+// The Cazeneuve's pages (pupitre-cazeneuve(5)): T as it writes it, its own
+// functions on INFO, one origin on PREF, correctors without C, a witness cut.
+TEST(Screen, CazeneuvePages) {
+    Console c("cazeneuve", {});
+    c.type(":mode pom");
+    c.named("F9");
+    c.run_until_settled();
+    c.type(":set D4.X=52.347");
+    c.type(":set D4.R=0.4");
+    c.type(":mode imd");
+    c.type("T204");
+    c.named("F9");
+    c.run_until_settled();
+    c.type("G95 F200 M3 S800");
+    c.named("F9");
+    c.run_until_settled();
+    c.type(":witness 58.02");
+    snapshot("caz_op", c.screen());
+    c.type(":page info");
+    snapshot("caz_info", c.screen());
+    c.type(":page pref");
+    snapshot("caz_pref", c.screen());
+    c.type(":page corr");
+    snapshot("caz_corr", c.screen());
+    c.type(":page param");
+    snapshot("caz_param", c.screen());
+}
