@@ -279,6 +279,29 @@ void Interpreter::caz_power_on() {
 // A block of this dialect: decoded into a Plan, then the NUM steps where the
 // meaning is the same (turning.md §1.7.5 order), with this controller's own
 // functions in their place.
+// G25 S: the spindle's limit under constant surface speed, in rev/min. The
+// thesis asks for a limit "programmed in the G96 block" and prints its word
+// "G434" (003:1124-1126); the one program that limits the speed writes
+// "N50 G25 S1500" in a block of its own just before its G96 (003:1571), and
+// 1500 rev/min is the S max its example 7 gives (003:1135-1147): G25 S is
+// that limit, as the NUM's G92 S. It takes the block's S, so not with G96.
+bool Interpreter::caz_speed_limit(Plan& p) {
+    if (!p.tech.has_s)
+        return fail(caz::kFunction, tr("G25 needs S, the spindle limit in rev/min (003:1571)"));
+    if (p.mode.spindle == 96 || p.mode.spindle == 97)
+        return fail(caz::kFunction,
+                    tr("G25 S in a block of its own, before G96 (003:1571): S is its limit"));
+    modal_.smax = p.tech.s;
+    if (modal_.smax > m_.spindle_max) {
+        warn(err::wSpeedClamped,
+             strf(tr("G25 S%s above the spindle maximum %s: limited to it"),
+                  fixed3(modal_.smax, 63).c_str(), fixed3(m_.spindle_max, 63).c_str()));
+        modal_.smax = m_.spindle_max;
+    }
+    p.tech.has_s = false;  // a limit, not a speed
+    return true;
+}
+
 StepResult Interpreter::execute_caz(const Block& b) {
     if (!b.assigns.empty() || b.msg_channel >= 0 || b.test.cmp != Cmp::none) {
         col_ = b.assigns.empty() ? 0 : b.assigns[0].col;
@@ -293,6 +316,7 @@ StepResult Interpreter::execute_caz(const Block& b) {
     for (size_t i = first; i < b.words.size(); ++i)
         if (!d.word(b.words[i])) return StepResult::error;
     if (!d.finish()) return StepResult::error;
+    if (p.g[25] && !caz_speed_limit(p)) return StepResult::error;
     if (p.unsupported.g >= 0) {
         const GCode* g = find_g(p.unsupported.g, Dialect::cazeneuve);
         fail(caz::kLater, strf(tr("G%d (%s) is not yet run by pupitre"), p.unsupported.g,

@@ -42,7 +42,8 @@ TEST(Cazeneuve, CodesTableHasItsOwnRows) {
     EXPECT_EQ(find_g(7)->support, Support::option);
     EXPECT_EQ(find_g(7, Dialect::cazeneuve)->support, Support::yes);  // G7XZ (003:1083)
     EXPECT_TRUE(find_m(50, Dialect::cazeneuve));                      // 003:968
-    EXPECT_FALSE(find_g(25, Dialect::cazeneuve));
+    EXPECT_TRUE(find_g(25, Dialect::cazeneuve));                      // the G96 limit (003:1571)
+    EXPECT_FALSE(find_g(50, Dialect::cazeneuve));
 }
 
 // Lengths in micrometres, X a radius (003:857-885): X15000 Z-30000 is r15 z-30.
@@ -160,7 +161,7 @@ TEST(Cazeneuve, ErrorCategories) {
     EXPECT_EQ(caz("N10 G X1.5\nN20 M2\n").error(), caz::kNumber);
     EXPECT_EQ(caz("N10 G X1000 R5\nN20 M2\n").error(), caz::kSyntax);
     EXPECT_EQ(caz("N10 G X1000 F1 F2\nN20 M2\n").error(), caz::kTwice);
-    EXPECT_EQ(caz("N10 G25 S100\nN20 M2\n").error(), caz::kUnknownG);
+    EXPECT_EQ(caz("N10 G50 S100\nN20 M2\n").error(), caz::kUnknownG);
     EXPECT_EQ(caz("N10 G31 X1 Z1\nN20 M2\n").error(), caz::kFunction);
     EXPECT_EQ(caz("N10 G34 X1 Z1\nN20 M2\n").error(), caz::kFunction);
     EXPECT_EQ(caz("N10 G X999000\nN20 M2\n").error(), caz::kTravelX);
@@ -285,6 +286,31 @@ TEST(Cazeneuve, CorrectorsHaveNoOrientation) {
     EXPECT_NE(p.in->set("D1.C", 3), "");
     EXPECT_EQ(p.in->set("D1.C", 0), "");
     EXPECT_EQ(p.in->set("D1.R", 0.8), "");
+}
+
+// G25 S limits the spindle under G96 (003:1124-1126; gorge_etroite's
+// "N50 G25 S1500" before its G96, 003:1571; example 7's S max 1500).
+// The speed of the last spindle event before the end's stop.
+double running_rpm(const Prog& p) {
+    double rpm = -1;
+    for (const SpindleEvent& e : p.cap.spindles)
+        if (e.dir == 3 || e.dir == 4) rpm = e.rpm;
+    return rpm;
+}
+
+TEST(Cazeneuve, G25LimitsTheConstantSurfaceSpeed) {
+    const std::string head = "N10 M4 S450\nN20 G X5000 Z1000\n";
+    Prog free = caz(head + "N30 G96 S120 X5000\nN40 G1 G95 X1000 F200\nN50 M2\n");
+    Prog limited = caz(head + "N25 G25 S1500\nN30 G96 S120 X5000\nN40 G1 G95 X1000 F200\nN50 M2\n");
+    ASSERT_EQ(free.error(), 0);
+    ASSERT_EQ(limited.error(), 0);
+    EXPECT_NEAR(running_rpm(free), 2100, 1e-9);  // the machine's maximum
+    EXPECT_NEAR(running_rpm(limited), 1500, 1e-9);
+    // S is the limit, not a speed: the spindle keeps its 450 rev/min.
+    Prog only = caz(head + "N25 G25 S1500\nN30 M2\n");
+    EXPECT_NEAR(running_rpm(only), 450, 1e-9);
+    EXPECT_EQ(caz("N10 G25\nN20 M2\n").error(), caz::kFunction);
+    EXPECT_EQ(caz("N10 G96 G25 S1500 X5000\nN20 M2\n").error(), caz::kFunction);
 }
 
 // A block skip mark ends the CNP (003:1804: "I saut de bloc", the OCR's "/"),
