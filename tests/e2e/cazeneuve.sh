@@ -11,7 +11,16 @@ bin=$(realpath "$1") case=$2
 W=100 H=30
 
 message() { screen | tail -3 | head -1; }
-expect_message() { message | grep -Eq -- "$1" || fail "message: expected /$1/"; }
+# expect_message REGEX: polls the message line (a loaded machine may take a
+# moment to answer) for 5 s.
+expect_message() {
+    local i
+    for ((i = 0; i < 100; i++)); do
+        message | grep -Eq -- "$1" && return 0
+        sleep 0.05
+    done
+    fail "message: expected /$1/"
+}
 
 case $case in
 witness)
