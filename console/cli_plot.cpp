@@ -42,15 +42,14 @@ void run_collecting(Interpreter& in, Toolpath& path, int& plane_seen,
     }
 }
 
-// The part where the program frame puts it: a point of the part is where a
-// tool with a right gauge would read it, PREF and DEC1 as entered.
+// The part where the program frame puts it: a point of the part is where the
+// tool the program last used with a corrector reads it (Workshop::part_frame).
 std::vector<std::vector<std::array<double, 2>>> part_in_program_frame(const workshop::Workshop& w,
                                                                       const Interpreter& in) {
     const Axes& om = in.machine_pos();
     const Axes& op = in.program_pos();
-    const Axes& gauge = in.frames().gauge;
-    const double dz = op[Z] - (om[Z] - gauge[Z]);
-    const double dx = op[X] - (om[X] - gauge[X]) + w.setup().lathe.axis_x;
+    const workshop::Workshop::Frame f = w.part_frame(om, op, in.modal().d);
+    const double dz = f.dz, dx = f.dx;
     std::vector<std::vector<std::array<double, 2>>> out;
     if (const workshop::MillWorld* block = w.mill()) {
         // Seen from above where the program frame puts it, as the lathe's part.

@@ -718,9 +718,8 @@ void Session::view_part() const {
     chuck_now_.clear();
     const workshop::Workshop* w = sim_->shop();
     if (!w || w->is_mill()) return;
-    const Axes om = sim_->om();
-    const workshop::Pt tip = w->tip(om);
-    const double dz = tool_now_[Z] - tip[0], dx = tool_now_[X] - tip[1];
+    const workshop::Workshop::Frame f = w->part_frame(sim_->om(), tool_now_, sim_->corrector());
+    const double dz = f.dz, dx = f.dx;
     auto place = [&](const workshop::CPaths& from,
                      std::vector<std::vector<std::array<double, 2>>>& to) {
         for (const workshop::CPath& q : from) {

@@ -325,10 +325,21 @@ bool Workshop::check(const MoveEvent& e, const std::vector<Pt>& tips,
     return false;
 }
 
+Workshop::Frame Workshop::part_frame(const Axes& om, const Axes& op, int corrector) const {
+    if (corrector == 0 && frame_.known) return frame_;
+    const Pt t = tip(om);
+    return Frame{corrector != 0, op[Z] - t[0], op[X] - t[1]};
+}
+
+void Workshop::note_frame(const MoveEvent& e) {
+    if (corr_ != 0) frame_ = part_frame(e.to_mach, e.to_prog, corr_);
+}
+
 Outcome Workshop::apply(const MoveEvent& e) {
     if (mill_) return mill_apply(e);
     Outcome o;
     if (crashed()) return o;
+    note_frame(e);
     std::vector<Axes> oms;
     path_of(e, oms);
     std::vector<Pt> tips;
@@ -364,6 +375,7 @@ Outcome Workshop::jog(const MoveEvent& e, bool continuous) {
     Outcome o;
     const Tool* t = current();
     if (!t || crashed()) return o;
+    note_frame(e);
     std::vector<Axes> oms;
     path_of(e, oms);
     std::vector<Pt> tips;
@@ -479,6 +491,7 @@ void Workshop::new_part() {
 
 void Workshop::tool(const Loc& l, int t, int d, double s, bool m6) {
     tool_ = t;  // the lathe's turret indexes on T
+    corr_ = d;
     if (next_) next_->tool(l, t, d, s, m6);
 }
 

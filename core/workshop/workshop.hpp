@@ -113,6 +113,19 @@ class Workshop final : public MachineSink {
     bool probe_contact(const Axes& om) const;
     // The true tool point of the tool in use for a machine position (Z, R).
     Pt tip(const Axes& om) const;
+    // Where the program frame puts the lathe's part: the shift (Z, R) from
+    // the part's coordinates to the program's, so that a point of the part
+    // is drawn where the tool in use reads it. Under D0 (after M02 or RAZ)
+    // the turret reference has no gauge and would put the part a gauge away:
+    // the shift read at the last move made with a corrector stands. The
+    // NUM's PREF and the Cazeneuve's correctors (which carry its origin)
+    // come out the same.
+    struct Frame {
+        bool known = false;  // read at a move with a corrector
+        double dz = 0, dx = 0;
+    };
+    // `corrector`: the one in use now (the interpreter's D).
+    Frame part_frame(const Axes& om, const Axes& op, int corrector) const;
     // A machining centre's: the true tip of the cutter in the spindle (X, Y,
     // Z); the gauge line itself when none.
     P3 tip3(const Axes& om) const;
@@ -240,6 +253,9 @@ class Workshop final : public MachineSink {
     MachineSink* next_;
     std::vector<Tool> tools_;  // by turret position (0: none)
     int tool_ = 0;
+    int corr_ = 0;  // the corrector in use (0: D0)
+    Frame frame_;   // part_frame() read at the last move with a corrector
+    void note_frame(const MoveEvent& e);
     double shim_ = 0;
     bool hide_places_ = false;
     int dir_ = 5;

@@ -98,5 +98,34 @@ TEST(WorkshopSession, AStoredPartThatCannotBeReadComesBackAsFreshStock) {
     for (const char* ext : {"", "-wal", "-shm"}) std::remove((path + ext).c_str());
 }
 
+// GRAPH draws the part where the tool in use reads it. After M02 the
+// corrector is D0 and the turret reference, without a gauge, would put the
+// part a whole gauge away (found driving the console: the part jumped when
+// the program ended); the frame read at the last move with a corrector stands.
+TEST(WorkshopSession, GraphKeepsThePartUnderThePathAfterM02) {
+    Console c("lathe", {"tests/workshop/turn.iso"});
+    c.type(":setup lathe");
+    for (const char* set :
+         {":set PREF.X=-20", ":set PREF.Z=35", ":set D1.X=52.347", ":set D1.Z=41.215"})
+        c.type(set);
+    c.type(":mode pom");
+    c.named("F9");
+    c.run_until_settled();
+    c.type(":load 10");
+    c.type(":mode auto");
+    c.type(":speed max");
+    c.named("F9");
+    c.run_until_settled();
+    ASSERT_EQ(c.s->sim().corrector(), 0);  // M02: D0
+    c.type(":page graph");
+    const pages::View v = c.s->view();
+    ASSERT_NE(v.graph.part, nullptr);
+    double zmax = -1e9, xmax = -1e9;
+    for (const auto& poly : *v.graph.part)
+        for (const auto& p : poly) zmax = std::max(zmax, p[0]), xmax = std::max(xmax, p[1]);
+    EXPECT_NEAR(zmax, 0, 1e-3);   // the bar's face at program Z 0 (PREF Z 35)
+    EXPECT_NEAR(xmax, 30, 1e-3);  // the Ø60 bar: a radius of 30 on the axis
+}
+
 }  // namespace
 }  // namespace pupitre::test
