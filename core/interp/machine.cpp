@@ -107,10 +107,21 @@ std::string read_dialect(const Line& l, MachineProfile& m) {
         return tr("dialect must be num or cazeneuve");
     return {};
 }
+// The NUM's 1020, 1040 or 1060; the Cazeneuve's HB CNC 3 or HB CNC 2, whose
+// spindle ranges differ (seed 003:900-906): hbcnc3 and hbcnc2 set them and
+// the maximum, which a later spindle.* line may still change.
 std::string read_model(const Line& l, MachineProfile& m) {
+    if (l.val == "hbcnc3" || l.val == "hbcnc2") {
+        const bool two = l.val == "hbcnc2";
+        m.model = two ? kHbCnc2 : kHbCnc3;
+        m.ranges = two ? std::vector<SpindleRange>{{50, 375}, {400, 3000}}
+                       : std::vector<SpindleRange>{{50, 325}, {400, 2100}};
+        m.spindle_max = two ? 3000 : 2100;
+        return {};
+    }
     double d;
     if (!number(l.val, d) || (d != 1020 && d != 1040 && d != 1060))
-        return tr("model must be 1020, 1040 or 1060");
+        return tr("model must be 1020, 1040 or 1060 (hbcnc3 or hbcnc2 for the Cazeneuve)");
     m.model = int(d);
     return {};
 }
@@ -266,6 +277,8 @@ std::string check_whole(MachineProfile& m) {
     if (!m.lathe) m.x_diameter = false;
     if (m.dialect == Dialect::cazeneuve && (!m.lathe || m.x_diameter))
         return tr("the cazeneuve dialect is a lathe's, with X programmed as a radius");
+    if ((m.model == kHbCnc2 || m.model == kHbCnc3) && m.dialect != Dialect::cazeneuve)
+        return tr("models hbcnc3 and hbcnc2 are the cazeneuve dialect's");
     if (m.kinematics == "table" && !m.has(B)) return tr("table kinematics need the B axis");
     if (m.kinematics == "table-head" && (!m.has(B) || !m.has(C)))
         return tr("table-head kinematics need B and C");

@@ -30,12 +30,15 @@ struct SpindleRange {
     double min = 0, max = 0;
 };
 
+// The Cazeneuve lathes of seed 003, as MachineProfile::model (003:900-906).
+inline constexpr int kHbCnc3 = 3, kHbCnc2 = 2;
+
 struct MachineProfile {
     std::string name;
     std::string description;
     Dialect dialect = Dialect::num;  // the controller's language (DESIGN §6)
     bool lathe = false;
-    int model = 1060;         // 1020, 1040 or 1060
+    int model = 1060;         // 1020, 1040 or 1060; kHbCnc3 or kHbCnc2 (the Cazeneuve)
     bool x_diameter = true;   // lathe: X programmed as a diameter
     bool rear_turret = true;  // lathe
     std::array<AxisConfig, kAxes> axes{};

@@ -33,6 +33,44 @@ TEST(Cazeneuve, ProfileNamesItsDialect) {
         parse_machine("name = x\nkind = lathe\naxes = X Z\ndialect = fanuc\n", bad).empty());
 }
 
+// The HB CNC 2 as a profile option (003:900-906): its spindle ranges.
+TEST(Cazeneuve, HbCnc2ModelHasItsOwnRanges) {
+    const std::string base =
+        "name = hb\nkind = lathe\ndialect = cazeneuve\naxes = X Z\nx_programming = radius\n"
+        "travel.X = -60 300\ntravel.Z = -1630 200\nspindle.auto_range = yes\n";
+    MachineProfile three, two;
+    ASSERT_EQ(parse_machine(base + "model = hbcnc3\n", three), "");
+    ASSERT_EQ(parse_machine(base + "model = hbcnc2\n", two), "");
+    EXPECT_EQ(three.model, kHbCnc3);
+    EXPECT_EQ(two.model, kHbCnc2);
+    ASSERT_EQ(two.ranges.size(), 2u);
+    EXPECT_EQ(two.ranges[0].max, 375);
+    EXPECT_EQ(two.ranges[1].max, 3000);
+    EXPECT_EQ(two.spindle_max, 3000);
+    EXPECT_EQ(three.spindle_max, 2100);
+    // Only this dialect has them.
+    MachineProfile num;
+    EXPECT_NE(parse_machine("name = x\nkind = lathe\naxes = X Z\nmodel = hbcnc2\n", num), "");
+    // S2500 fits the HB CNC 2's high range, not the HB CNC 3's (2053).
+    const std::string text = "N10 M3 S2500\nN20 M2\n";
+    ProgramMemory mem;
+    Diag d;
+    mem.load_text("t.iso", text, d);
+    test::Capture cap2, cap3;
+    Interpreter in2(two, mem, cap2, RunOptions{}), in3(three, mem, cap3, RunOptions{});
+    in2.start(mem.first());
+    in2.run_to_end();
+    in3.start(mem.first());
+    in3.run_to_end();
+    auto first_error = [](const Interpreter& in) {
+        for (const Diag& e : in.diags())
+            if (e.is_error()) return e.code;
+        return 0;
+    };
+    EXPECT_EQ(first_error(in2), 0);
+    EXPECT_EQ(first_error(in3), caz::kSpeed);
+}
+
 // The same number means something else per dialect (DESIGN §6).
 TEST(Cazeneuve, CodesTableHasItsOwnRows) {
     const GCode* num92 = find_g(92);
