@@ -144,6 +144,8 @@ void Interpreter::update_travel() {
             travel_lo_[size_t(a)] = std::max(travel_lo_[size_t(a)], double(it->second) * unit);
         if (auto it = e_raw_.find(base + 3); it != e_raw_.end())
             travel_hi_[size_t(a)] = std::min(travel_hi_[size_t(a)], double(it->second) * unit);
+        travel_lo_tol_[size_t(a)] = travel_lo_[size_t(a)] - 1e-6;
+        travel_hi_tol_[size_t(a)] = travel_hi_[size_t(a)] + 1e-6;
     }
 }
 

@@ -527,6 +527,9 @@ class Interpreter final : private EAccess {
     LVars l_;
     std::map<int, int64_t> e_raw_;    // E parameters with no machine meaning (E80000…)
     Axes travel_lo_{}, travel_hi_{};  // static travel narrowed by E6x002 / E6x003
+    // The same with check_travel's 1e-6 of tolerance, worked out once
+    // (update_travel) rather than at every move.
+    Axes travel_lo_tol_{}, travel_hi_tol_{};
     void update_travel();
     std::map<int, int64_t> e_written_;  // every E written by the program
     Axes mach_{};                       // machine position of the reference

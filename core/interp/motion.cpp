@@ -40,12 +40,13 @@ double rotary_length(const Axes& a, const Axes& b) {
 
 bool Interpreter::check_travel(const Axes& mach) {
     // Every move asks: the common answer first, without a branch per axis.
-    // These are the comparisons of the loop below, which finds the axis at fault.
+    // These are the comparisons of the loop below, which finds the axis at fault,
+    // with the bounds' tolerance added once (update_travel).
     if (homed_.all()) {
         // Bitwise on ints, not && on bools: no branch per axis.
         int inside = 1;
         for (size_t a = 0; a < size_t(kAxes); ++a)
-            inside &= int(mach[a] >= travel_lo_[a] - 1e-6) & int(mach[a] <= travel_hi_[a] + 1e-6);
+            inside &= int(mach[a] >= travel_lo_tol_[a]) & int(mach[a] <= travel_hi_tol_[a]);
         if (inside) return true;
     }
     for (int a = 0; a < kAxes; ++a) {
