@@ -216,7 +216,8 @@ double Interpreter::gauge_for(int d, int axis) const {
 // The gauge of a new corrector is applied on an axis at the first block that
 // programs that axis (turning.md §3.4, 000:843-865; milling.md §4.3.3).
 void Interpreter::apply_corrector_gauges(const std::bitset<kAxes>& programmed) {
-    if (gauge_pending_.none()) return;
+    // Under a new D the axes no block programs stay pending: every move asks.
+    if ((gauge_pending_ & programmed).none()) return;
     for (int a = 0; a < kAxes; ++a) {
         if (programmed[size_t(a)] && gauge_pending_[size_t(a)]) {
             frames_.gauge[size_t(a)] = gauge_for(modal_.d, a);

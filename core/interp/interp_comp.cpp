@@ -170,7 +170,7 @@ bool Interpreter::comp_other_axes(const Axes& target, const std::bitset<kAxes>& 
     for (int a = 0; a < kAxes; ++a)
         if (axes[size_t(a)] && a != comp_.a0 && a != comp_.a1) prog_[size_t(a)] = target[size_t(a)];
     if (!gate_->holding) return move();
-    gate_->queue.emplace_back([this, move]() {
+    gate_->later([this, move]() {
         if (!ended_) move();
     });
     return true;
