@@ -87,10 +87,9 @@ void piece(const Elem& o, const V2& from, const V2& to, std::vector<Piece>& path
     p.to = to;
     if (o.arc) {
         double s = sgn(o.sweep);
-        double skip_start = turn(o.a - o.c, from - o.c, s);
-        if ((from - o.a).norm() < kEps) skip_start = 0;
-        double cut_end = turn(to - o.c, o.b - o.c, s);
-        if ((to - o.b).norm() < kEps) cut_end = 0;
+        // turn() (two atan2) only where its angle is used.
+        double skip_start = (from - o.a).norm() < kEps ? 0 : turn(o.a - o.c, from - o.c, s);
+        double cut_end = (to - o.b).norm() < kEps ? 0 : turn(to - o.c, o.b - o.c, s);
         p.arc = true;
         p.c = o.c;
         p.sweep = s * std::max(0.0, std::fabs(o.sweep) - skip_start - cut_end);

@@ -5,6 +5,8 @@
 #pragma once
 #include <functional>
 #include <string>
+#include <type_traits>
+#include <variant>
 #include <vector>
 
 #include "core/interp/interp.hpp"
@@ -15,57 +17,103 @@ class GateSink final : public MachineSink {
   public:
     explicit GateSink(MachineSink& real) : real_(real) {}
     bool holding = false;
-    std::vector<std::function<void()>> queue;
+
+    // A held event is kept as its values, not as a closure: under
+    // compensation every block holds one (its profile element) and a
+    // std::function of it was an allocation each time (issue 14). `Later`
+    // is work of the interpreter's own that must wait its turn
+    // (Interpreter::comp_other_axes).
+    struct Dwell {
+        Loc l;
+        double s;
+    };
+    struct Tool {
+        Loc l;
+        int t, d;
+        double s;
+        bool m6;
+    };
+    struct Coolant {
+        Loc l;
+        bool m7, m8;
+    };
+    struct Stop {
+        Loc l;
+        int m;
+    };
+    struct Message {
+        Loc l;
+        int ch;
+        std::string text;
+    };
+    struct End {
+        Loc l;
+        int m;
+    };
+    struct Stock {
+        Loc l;
+        std::vector<std::array<double, 2>> s;
+    };
+    struct Profile {
+        Loc l;
+        ProfileElem e;
+    };
+    using Later = std::function<void()>;
+    using Held = std::variant<MoveEvent, Dwell, Tool, SpindleEvent, Coolant, Stop, Message, End,
+                              Stock, Profile, Later>;
+    std::vector<Held> queue;
 
     // Not holding, an event goes straight on: the copy a held entry needs
     // (a MoveEvent is some 300 bytes) is made only when it is held.
     void move(const MoveEvent& e) override {
         if (!holding) return real_.move(e);
-        hold([this, e] { real_.move(e); });
+        queue.emplace_back(e);
     }
     void dwell(const Loc& l, double s) override {
         if (!holding) return real_.dwell(l, s);
-        hold([this, l, s] { real_.dwell(l, s); });
+        queue.emplace_back(Dwell{l, s});
     }
     void tool(const Loc& l, int t, int d, double s, bool m6) override {
         if (!holding) return real_.tool(l, t, d, s, m6);
-        hold([=, this] { real_.tool(l, t, d, s, m6); });
+        queue.emplace_back(Tool{l, t, d, s, m6});
     }
     void spindle(const SpindleEvent& e) override {
         if (!holding) return real_.spindle(e);
-        hold([this, e] { real_.spindle(e); });
+        queue.emplace_back(e);
     }
     void coolant(const Loc& l, bool m7, bool m8) override {
         if (!holding) return real_.coolant(l, m7, m8);
-        hold([=, this] { real_.coolant(l, m7, m8); });
+        queue.emplace_back(Coolant{l, m7, m8});
     }
     void stop(const Loc& l, int m) override {
         if (!holding) return real_.stop(l, m);
-        hold([=, this] { real_.stop(l, m); });
+        queue.emplace_back(Stop{l, m});
     }
     void message(const Loc& l, int ch, std::string_view t) override {
         if (!holding) return real_.message(l, ch, t);
-        hold([this, l, ch, text = std::string(t)] { real_.message(l, ch, text); });
+        queue.emplace_back(Message{l, ch, std::string(t)});
     }
     void end(const Loc& l, int m) override {
         if (!holding) return real_.end(l, m);
-        hold([=, this] { real_.end(l, m); });
+        queue.emplace_back(End{l, m});
     }
     void stock(const Loc& l, const std::vector<std::array<double, 2>>& s) override {
         if (!holding) return real_.stock(l, s);
-        hold([this, l, s] { real_.stock(l, s); });
+        queue.emplace_back(Stock{l, s});
     }
     void profile(const Loc& l, const ProfileElem& e) override {
         if (!holding) return real_.profile(l, e);
-        hold([=, this] { real_.profile(l, e); });
+        queue.emplace_back(Profile{l, e});
     }
+    // Work that must come after the events held so far.
+    void later(Later f) { queue.emplace_back(std::move(f)); }
 
     // Runs the held entries in order, with holding off.
     void release() {
         holding = false;
         auto q = std::move(queue);
         queue.clear();
-        for (auto& f : q) f();
+        for (Held& h : q) std::visit([this](auto& e) { deliver(e); }, h);
         // The storage goes back to the queue unless a running entry added to
         // it: under compensation every block holds and releases, and the queue
         // was allocated anew each time.
@@ -74,10 +122,17 @@ class GateSink final : public MachineSink {
     }
 
   private:
-    template <class F>
-    void hold(F&& f) {
-        queue.emplace_back(std::forward<F>(f));
-    }
+    void deliver(MoveEvent& e) { real_.move(e); }
+    void deliver(Dwell& e) { real_.dwell(e.l, e.s); }
+    void deliver(Tool& e) { real_.tool(e.l, e.t, e.d, e.s, e.m6); }
+    void deliver(SpindleEvent& e) { real_.spindle(e); }
+    void deliver(Coolant& e) { real_.coolant(e.l, e.m7, e.m8); }
+    void deliver(Stop& e) { real_.stop(e.l, e.m); }
+    void deliver(Message& e) { real_.message(e.l, e.ch, e.text); }
+    void deliver(End& e) { real_.end(e.l, e.m); }
+    void deliver(Stock& e) { real_.stock(e.l, e.s); }
+    void deliver(Profile& e) { real_.profile(e.l, e.e); }
+    void deliver(Later& f) { f(); }
     MachineSink& real_;
 };
 

@@ -144,6 +144,8 @@ void Interpreter::update_travel() {
             travel_lo_[size_t(a)] = std::max(travel_lo_[size_t(a)], double(it->second) * unit);
         if (auto it = e_raw_.find(base + 3); it != e_raw_.end())
             travel_hi_[size_t(a)] = std::min(travel_hi_[size_t(a)], double(it->second) * unit);
+        travel_lo_tol_[size_t(a)] = travel_lo_[size_t(a)] - 1e-6;
+        travel_hi_tol_[size_t(a)] = travel_hi_[size_t(a)] + 1e-6;
     }
 }
 
@@ -214,7 +216,8 @@ double Interpreter::gauge_for(int d, int axis) const {
 // The gauge of a new corrector is applied on an axis at the first block that
 // programs that axis (turning.md §3.4, 000:843-865; milling.md §4.3.3).
 void Interpreter::apply_corrector_gauges(const std::bitset<kAxes>& programmed) {
-    if (gauge_pending_.none()) return;
+    // Under a new D the axes no block programs stay pending: every move asks.
+    if ((gauge_pending_ & programmed).none()) return;
     for (int a = 0; a < kAxes; ++a) {
         if (programmed[size_t(a)] && gauge_pending_[size_t(a)]) {
             frames_.gauge[size_t(a)] = gauge_for(modal_.d, a);

@@ -77,7 +77,11 @@ struct RunOptions {
     bool block_skip = false;       // operator switch: '/' blocks are skipped
     bool optional_stop = false;    // operator switch: M01 stops
     long max_blocks = 20'000'000;  // endless-loop guard (error 1001)
-    bool require_homing = false;   // the console's machines: moves before POM give 159
+    // Plain G0-G3 blocks take their own lane (interp_fast.cpp); false sends
+    // every block through the general decoding: the differential tests
+    // compare the two (tests/unit/test_fast_lane.cpp, tests/fuzz).
+    bool fast_lane = true;
+    bool require_homing = false;  // the console's machines: moves before POM give 159
     // Tests: sees each G64 as run, its finished profile, stock, tool position,
     // arguments and moves (issue 19: every program's roughing checked against
     // its part, segment by segment).
@@ -182,6 +186,9 @@ class Interpreter final : private EAccess {
     const std::vector<int>& tools_used() const { return tools_used_; }
     long blocks() const { return blocks_; }
     long moves() const { return moves_; }
+    // Blocks the plain lane took (interp_fast.cpp): the differential tests
+    // check that they exercise it.
+    long plain_blocks() const { return plain_blocks_; }
     double path_length() const { return path_; }
     double seconds() const { return clock_; }
     int main_program() const { return main_ ? main_->number : -1; }
@@ -209,8 +216,11 @@ class Interpreter final : private EAccess {
         bool saved_m7 = false, saved_m8 = false;
     };
 
-    // Plan of a block: the words resolved into values (interp_words.cpp).
+    // Plan of a block: the words resolved into values (interp_words.cpp);
+    // the words of a move, which a plain block reads alone (plan.hpp).
     struct Plan;
+    struct AxisValues;
+    struct Target;
     // The decoding of one block into its Plan (decode.hpp).
     struct Decoder;
     // One run of a drilling cycle (interp_cycles.cpp), one G45 pocket
@@ -246,6 +256,13 @@ class Interpreter final : private EAccess {
     // interp.cpp
     bool fetch(std::string_view& line, int& lineno);
     StepResult execute(const Block& b);
+    // interp_fast.cpp: the lane of plain G0-G3 blocks (issue 14), which reads
+    // their words straight into a Target; nothing when the block is not one
+    // (it then has done nothing, and execute() reads it whole).
+    struct PlainBlock;
+    std::optional<StepResult> execute_plain(const Block& b);
+    bool plain_state() const;
+    bool plain_words(const Block& b, PlainBlock& w) const;
     // interp_exec.cpp: the steps of execute() and the modal groups of apply_modal().
     // The inline ones run for every block, where a call would cost more than
     // their tests; they are defined and called in interp_exec.cpp only.
@@ -320,29 +337,33 @@ class Interpreter final : private EAccess {
     // motion.cpp
     bool do_motion(const Plan& p);
     // Inlined into do_motion, which every block runs (tests/perf).
-    [[gnu::always_inline]] inline Axes target_of(const Plan& p) const;
+    [[gnu::always_inline]] inline Axes target_of(const Target& to) const;
     [[gnu::always_inline]] inline bool motion_allowed(const Plan& p);
     [[gnu::always_inline]] inline std::optional<bool> motion_family(const Plan& p);
     inline bool pgp_motion(const Plan& p);
     inline bool g52_move(const Plan& p);
-    inline bool comp_line(const Plan& p, const Axes& target);
-    [[gnu::always_inline]] inline bool straight(const Plan& p, Axes target);
+    inline bool comp_line(const Target& to, const Axes& target);
+    [[gnu::always_inline]] inline bool straight(const Target& to, Axes target);
+    // The move of a block whose family is known (do_motion, the plain lane).
+    bool move_to(const Target& to, bool g23);
+    // Error 140: more than 2 blocks without motion in the plane under G41/G42.
+    bool count_plane_motion(const std::bitset<kAxes>& axis);
     bool linear(int g, const Axes& target_prog, bool g52, const std::bitset<kAxes>& axes);
     bool g29_move(const Plan& p);
-    bool arc(const Plan& p, const Axes& target_prog);
+    bool arc(const Target& to, const Axes& target_prog);
     // The axes of a circle's plane and their centre words (motion.cpp).
     struct ArcAxes {
         int a0, a1, an, i0, i1, in;
         bool helix;  // the normal axis moves too
     };
-    [[gnu::always_inline]] inline bool arc_words(const Plan& p, const ArcAxes& ax);
-    [[gnu::always_inline]] inline bool arc_centre(const Plan& p, const ArcAxes& ax,
+    [[gnu::always_inline]] inline bool arc_words(const Target& to, const ArcAxes& ax);
+    [[gnu::always_inline]] inline bool arc_centre(const Target& to, const ArcAxes& ax,
                                                   const comp::V2& s, const comp::V2& e, comp::V2& c,
                                                   double& r0, double& r1);
     static inline double arc_sweep(const comp::V2& s, const comp::V2& e, const comp::V2& c,
                                    bool ccw);
     static int helix_turns(double dz, double k, double th0);
-    bool arc3(const Plan& p, const Axes& target_prog);
+    bool arc3(const Target& to, const Axes& target_prog);
     bool emit_arc(int g, const Axes& target, int a0, int a1, double c0, double c1, double sweep_rad,
                   double r0, double r1, int helix_axis);
     bool check_travel(const Axes& mach);
@@ -493,7 +514,7 @@ class Interpreter final : private EAccess {
     bool comp_engage(int g);
     bool comp_element(const comp::Elem& e, int g, const Axes& target, double rp);
     bool comp_other_axes(const Axes& target, const std::bitset<kAxes>& axes);
-    bool comp_exit(const Plan& p, const Axes* target);
+    bool comp_exit(const Axes* target);
     bool comp_emit(const std::vector<comp::Piece>& pieces, const CompCtx& ctx);
     // The pieces of the element being joined, kept so that a compensated block
     // allocates nothing (comp_element, comp_exit).
@@ -507,6 +528,9 @@ class Interpreter final : private EAccess {
     LVars l_;
     std::map<int, int64_t> e_raw_;    // E parameters with no machine meaning (E80000…)
     Axes travel_lo_{}, travel_hi_{};  // static travel narrowed by E6x002 / E6x003
+    // The same with check_travel's 1e-6 of tolerance, worked out once
+    // (update_travel) rather than at every move.
+    Axes travel_lo_tol_{}, travel_hi_tol_{};
     void update_travel();
     std::map<int, int64_t> e_written_;  // every E written by the program
     Axes mach_{};                       // machine position of the reference
@@ -519,7 +543,7 @@ class Interpreter final : private EAccess {
     int col_ = 0;
     std::vector<Diag> diags_;
     std::vector<int> tools_used_;
-    long blocks_ = 0, moves_ = 0;
+    long blocks_ = 0, moves_ = 0, plain_blocks_ = 0;
     // The endless-loop guard (core/interp/interp_loop.cpp): digests of the state at
     // backward G79 jumps.
     struct DigestKey {

@@ -53,7 +53,7 @@ bool Interpreter::CazState::ends_comp(const Interpreter& in, const Plan& p) {
 }
 
 bool Interpreter::CazState::end_comp(Interpreter& in) {
-    if (in.comp_.on && !in.comp_exit(Plan{}, nullptr)) return false;
+    if (in.comp_.on && !in.comp_exit(nullptr)) return false;
     in.modal_.radcomp = 40;
     return true;
 }

@@ -23,7 +23,7 @@ bool Interpreter::comp_engage(int g) {
     if (comp_.on) {
         // G41 <-> G42 without G40 (000:1020): the last element ends on its normal,
         // then a new entry starts from there.
-        if (!comp_exit(Plan{}, nullptr)) return false;
+        if (!comp_exit(nullptr)) return false;
     }
     if (r <= 1e-9) return true;  // R0: the programmed path is the tool path
     comp_ = Comp{};
@@ -170,7 +170,7 @@ bool Interpreter::comp_other_axes(const Axes& target, const std::bitset<kAxes>& 
     for (int a = 0; a < kAxes; ++a)
         if (axes[size_t(a)] && a != comp_.a0 && a != comp_.a1) prog_[size_t(a)] = target[size_t(a)];
     if (!gate_->holding) return move();
-    gate_->queue.emplace_back([this, move]() {
+    gate_->later([this, move]() {
         if (!ended_) move();
     });
     return true;
@@ -178,7 +178,7 @@ bool Interpreter::comp_other_axes(const Axes& target, const std::bitset<kAxes>& 
 
 // G40: the held element ends on the normal at its end point; the G40 move (a
 // line) goes from there to the programmed point.
-bool Interpreter::comp_exit(const Plan&, const Axes* target) {
+bool Interpreter::comp_exit(const Axes* target) {
     if (target && (modal_.motion == 2 || modal_.motion == 3))
         return fail(140, tr("the block that ends radius compensation (G40) must be a line"));
     if (comp_.has_pending) {

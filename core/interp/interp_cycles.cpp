@@ -202,13 +202,13 @@ bool Interpreter::DrillRun::approach(const Plan& p) {
     std::bitset<kAxes> plane = p.to.axis;
     plane.reset(size_t(ax));
     if (plane.any()) {
-        Plan q = p;
-        q.to.axis.reset(size_t(ax));
+        Target q = p.to;
+        q.axis.reset(size_t(ax));
         Axes target = prog;
         for (int a = 0; a < kAxes; ++a)
-            if (q.to.axis[size_t(a)])
-                target[size_t(a)] = q.to.inc[size_t(a)] ? prog[size_t(a)] + q.to.val[size_t(a)]
-                                                        : q.to.val[size_t(a)];
+            if (q.axis[size_t(a)])
+                target[size_t(a)] =
+                    q.inc[size_t(a)] ? prog[size_t(a)] + q.val[size_t(a)] : q.val[size_t(a)];
         bool ok;
         const int motion = in.modal_.motion;
         if (motion == 2 || motion == 3) {

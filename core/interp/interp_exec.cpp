@@ -162,6 +162,8 @@ bool Interpreter::do_flow(const Block& b, const Plan& p) {
 // for every block, and a call costs more than the test.
 StepResult Interpreter::execute(const Block& b) {
     if (caz_) return execute_caz(b);
+    if (opt_.fast_lane)
+        if (std::optional<StepResult> plain = execute_plain(b)) return *plain;
     if (!assign_all(b)) return StepResult::error;
     Plan p;
     bool decoded = decode(b, p);

@@ -40,12 +40,13 @@ double rotary_length(const Axes& a, const Axes& b) {
 
 bool Interpreter::check_travel(const Axes& mach) {
     // Every move asks: the common answer first, without a branch per axis.
-    // These are the comparisons of the loop below, which finds the axis at fault.
+    // These are the comparisons of the loop below, which finds the axis at fault,
+    // with the bounds' tolerance added once (update_travel).
     if (homed_.all()) {
         // Bitwise on ints, not && on bools: no branch per axis.
         int inside = 1;
         for (size_t a = 0; a < size_t(kAxes); ++a)
-            inside &= int(mach[a] >= travel_lo_[a] - 1e-6) & int(mach[a] <= travel_hi_[a] + 1e-6);
+            inside &= int(mach[a] >= travel_lo_tol_[a]) & int(mach[a] <= travel_hi_tol_[a]);
         if (inside) return true;
     }
     for (int a = 0; a < kAxes; ++a) {
@@ -142,10 +143,10 @@ void Interpreter::warn_idle_words(const Plan& p) {
 
 // The target of a block in program coordinates: its axis words over the
 // current position.
-inline Axes Interpreter::target_of(const Plan& p) const {
+inline Axes Interpreter::target_of(const Target& to) const {
     Axes target = prog_;
     for (size_t a = 0; a < size_t(kAxes); ++a)
-        if (p.to.axis[a]) target[a] = p.to.inc[a] ? prog_[a] + p.to.val[a] : p.to.val[a];
+        if (to.axis[a]) target[a] = to.inc[a] ? prog_[a] + to.val[a] : to.val[a];
     return target;
 }
 
@@ -169,29 +170,40 @@ bool Interpreter::do_motion(const Plan& p) {
     first_move_ = false;
     if (p.to.axis[X] && !g52) modal_.css_known = true;
     if (g52) return g52_move(p);
-    apply_corrector_gauges(p.to.axis);
-    Axes target = target_of(p);
-    if (comp_.on && modal_.radcomp == 40) return comp_exit(p, &target);
-    if (p.g[23]) return arc3(p, target);
-    if (modal_.motion == 2 || modal_.motion == 3) return arc(p, target);
-    if (comp_.on) return comp_line(p, target);
-    return straight(p, target);
+    return move_to(p.to, p.g[23]);
+}
+
+// The move itself: the target over the current position, then the line, the
+// circle or the compensated element.
+bool Interpreter::move_to(const Target& to, bool g23) {
+    apply_corrector_gauges(to.axis);
+    Axes target = target_of(to);
+    if (comp_.on && modal_.radcomp == 40) return comp_exit(&target);
+    if (g23) return arc3(to, target);
+    if (modal_.motion == 2 || modal_.motion == 3) return arc(to, target);
+    if (comp_.on) return comp_line(to, target);
+    return straight(to, target);
+}
+
+// Under compensation (the callers ask), a third block in a row without
+// motion in the plane is refused.
+bool Interpreter::count_plane_motion(const std::bitset<kAxes>& axis) {
+    int a0 = m_.lathe ? Z : modal_.plane == 17 ? X : modal_.plane == 18 ? Z : Y;
+    int a1 = m_.lathe ? X : modal_.plane == 17 ? Y : modal_.plane == 18 ? X : Z;
+    if (axis[size_t(a0)] || axis[size_t(a1)]) {
+        nonmotion_in_comp_ = 0;
+    } else if (++nonmotion_in_comp_ > 2) {
+        return fail(140, tr("more than 2 blocks in a row without motion in the plane under "
+                            "radius compensation"));
+    }
+    return true;
 }
 
 // What a block may not do before it moves: a third block without motion in
 // the plane under compensation, a G52 move that cannot be made.
 inline bool Interpreter::motion_allowed(const Plan& p) {
     const bool comp = modal_.radcomp != 40;
-    int a0 = m_.lathe ? Z : modal_.plane == 17 ? X : modal_.plane == 18 ? Z : Y;
-    int a1 = m_.lathe ? X : modal_.plane == 17 ? Y : modal_.plane == 18 ? X : Z;
-    if (comp) {
-        if (p.to.axis[size_t(a0)] || p.to.axis[size_t(a1)]) {
-            nonmotion_in_comp_ = 0;
-        } else if (++nonmotion_in_comp_ > 2) {
-            return fail(140, tr("more than 2 blocks in a row without motion in the plane under "
-                                "radius compensation"));
-        }
-    }
+    if (comp && !count_plane_motion(p.to.axis)) return false;
     if (p.g[52]) {
         if (comp) return fail(27, tr("G52 move under radius compensation (program G40 first)"));
         if (modal_.incremental) return fail(3, tr("G52 needs absolute programming (G90)"));
@@ -209,7 +221,7 @@ inline std::optional<bool> Interpreter::motion_family(const Plan& p) {
     if (modal_.radcomp == 29 && !g52) return g29_move(p);
     // The end of a compensated profile: held PGP elements are resolved first.
     if (comp_.on && modal_.radcomp == 40 && pgp_.pending() && !pgp_close()) return false;
-    if (comp_.on && modal_.radcomp == 40 && p.to.axis.none()) return comp_exit(p, nullptr);
+    if (comp_.on && modal_.radcomp == 40 && p.to.axis.none()) return comp_exit(nullptr);
     if (p.g[6]) return spline_run(p);
     if (p.g[33] || p.g[63] || p.g[64] || p.g[65] || p.g[66] ||
         (modal_.motion == 38 && p.to.axis.any())) {
@@ -238,20 +250,20 @@ inline bool Interpreter::pgp_motion(const Plan& p) {
     plane_axes(a0, a1);
     if (p.pgp.any || p.to.axis[size_t(a0)] || p.to.axis[size_t(a1)] || p.to.ijk.any() ||
         p.to.has_r) {
-        const Axes target = target_of(p);
+        const Axes target = target_of(p.to);
         if (p.to.axis.any()) apply_corrector_gauges(p.to.axis);
         first_move_ = false;
         return pgp_block(p, target);
     }
     if (Error e = pgp_.idle()) return fail(e);  // at the block that overflows
-    if (p.to.axis.any()) return comp_other_axes(target_of(p), p.to.axis);
+    if (p.to.axis.any()) return comp_other_axes(target_of(p.to), p.to.axis);
     return true;
 }
 
 // G52: a move in machine coordinates.  With G40 in the same block (the book's
 // own form, %222 N170) the compensated profile ends at its last point first.
 inline bool Interpreter::g52_move(const Plan& p) {
-    if (comp_.on && !comp_exit(p, nullptr)) return false;
+    if (comp_.on && !comp_exit(nullptr)) return false;
     Axes mach = mach_;
     for (size_t a = 0; a < size_t(kAxes); ++a)
         if (p.to.axis[a]) mach[a] = p.to.val[a];
@@ -264,38 +276,38 @@ inline bool Interpreter::g52_move(const Plan& p) {
 
 // A straight move under radius compensation: an element of the profile, or
 // a move of the other axes only.
-inline bool Interpreter::comp_line(const Plan& p, const Axes& target) {
+inline bool Interpreter::comp_line(const Target& to, const Axes& target) {
     comp::V2 s(prog_[size_t(comp_.a0)], prog_[size_t(comp_.a1)]);
     comp::V2 e(target[size_t(comp_.a0)], target[size_t(comp_.a1)]);
     if ((e - s).norm() > 1e-9 ||
-        (comp_.waiting_entry && (p.to.axis[size_t(comp_.a0)] || p.to.axis[size_t(comp_.a1)]))) {
+        (comp_.waiting_entry && (to.axis[size_t(comp_.a0)] || to.axis[size_t(comp_.a1)]))) {
         comp::Elem line;
         line.a = s;
         line.b = e;
         return comp_element(line, modal_.motion, target, 0);
     }
-    return comp_other_axes(target, p.to.axis);
+    return comp_other_axes(target, to.axis);
 }
 
 // A straight G0/G1 move without compensation; R- stops one tool radius short
 // of the point, R+ beyond it (milling.md §4.5).
-inline bool Interpreter::straight(const Plan& p, Axes target) {
-    if (p.to.r_sign != 0 && modal_.d > 0) {
+inline bool Interpreter::straight(const Target& to, Axes target) {
+    if (to.r_sign != 0 && modal_.d > 0) {
         const Corrector& c = corr_[size_t(modal_.d)];
         double r = c.r + (m_.lathe ? 0 : c.dr);
         double len = linear_length(prog_, target);
         if (len > 1e-9)
             for (int a = X; a <= W; ++a)
-                target[size_t(a)] += p.to.r_sign * r * (target[size_t(a)] - prog_[size_t(a)]) / len;
+                target[size_t(a)] += to.r_sign * r * (target[size_t(a)] - prog_[size_t(a)]) / len;
     }
     Axes mach = frames_.to_machine(target);
     if (frames_.ed == 0)
         for (int a = 0; a < kAxes; ++a)
-            if (!p.to.axis[size_t(a)] && !frames_.mirror[size_t(a)])
+            if (!to.axis[size_t(a)] && !frames_.mirror[size_t(a)])
                 mach[size_t(a)] = mach_[size_t(a)];
     if (!check_travel(mach)) return false;
     prog_next_ = target;
-    return linear(modal_.motion, mach, false, p.to.axis);
+    return linear(modal_.motion, mach, false, to.axis);
 }
 
 // G29, tool correction in space (milling.md §4.6): each block gives a contact
@@ -396,26 +408,26 @@ bool Interpreter::finish_move(MoveEvent& e, const Axes& mach, const Axes& prog, 
     return true;
 }
 
-bool Interpreter::arc(const Plan& p, const Axes& target) {
+bool Interpreter::arc(const Target& to, const Axes& target) {
     const bool lathe = m_.lathe;
     ArcAxes ax;
     ax.a0 = lathe ? Z : modal_.plane == 17 ? X : modal_.plane == 18 ? Z : Y;
     ax.a1 = lathe ? X : modal_.plane == 17 ? Y : modal_.plane == 18 ? X : Z;
     ax.an = lathe ? Y : modal_.plane == 17 ? Z : modal_.plane == 18 ? Y : X;
     ax.i0 = ijk_index(ax.a0), ax.i1 = ijk_index(ax.a1), ax.in = ijk_index(ax.an);
-    ax.helix = !lathe && p.to.axis[size_t(ax.an)];
-    if (!arc_words(p, ax)) return false;
+    ax.helix = !lathe && to.axis[size_t(ax.an)];
+    if (!arc_words(to, ax)) return false;
     const Eigen::Vector2d s(prog_[size_t(ax.a0)], prog_[size_t(ax.a1)]);
     const Eigen::Vector2d e(target[size_t(ax.a0)], target[size_t(ax.a1)]);
     const bool ccw = modal_.motion == 3;
     Eigen::Vector2d c;
     double r0 = 0, r1 = 0;
-    if (!arc_centre(p, ax, s, e, c, r0, r1)) return false;
+    if (!arc_centre(to, ax, s, e, c, r0, r1)) return false;
     double sw = arc_sweep(s, e, c, ccw);
-    if (ax.helix && p.to.ijk[size_t(ax.in)])
+    if (ax.helix && to.ijk[size_t(ax.in)])
         sw += (ccw ? 1 : -1) * 2 * kPi *
               helix_turns(std::fabs(target[size_t(ax.an)] - prog_[size_t(ax.an)]),
-                          std::fabs(p.to.ijk_val[ax.in]), std::fabs(sw) * 180 / kPi);
+                          std::fabs(to.ijk_val[ax.in]), std::fabs(sw) * 180 / kPi);
     if (comp_.on)
         return comp_element(comp::Elem{.arc = true, .a = s, .b = e, .c = c, .sweep = sw},
                             modal_.motion, target, r0);
@@ -425,20 +437,20 @@ bool Interpreter::arc(const Plan& p, const Axes& target) {
 
 // The words a G2/G3 block needs: both coordinates of the plane, and either
 // the centre or R; only the normal axis may move (a helix).
-inline bool Interpreter::arc_words(const Plan& p, const ArcAxes& ax) {
+inline bool Interpreter::arc_words(const Target& to, const ArcAxes& ax) {
     const int a0 = ax.a0, a1 = ax.a1, an = ax.an, i0 = ax.i0, i1 = ax.i1, in = ax.in;
-    bool centre = p.to.ijk[size_t(i0)] && p.to.ijk[size_t(i1)];
-    if (!p.to.axis[size_t(a0)] || !p.to.axis[size_t(a1)] || centre == p.to.has_r) {
+    bool centre = to.ijk[size_t(i0)] && to.ijk[size_t(i1)];
+    if (!to.axis[size_t(a0)] || !to.axis[size_t(a1)] || centre == to.has_r) {
         return fail(
             101, strf(tr("G%d needs %c%c and either %c%c or R, even if unchanged"), modal_.motion,
                       kAxisNames[size_t(a0)], kAxisNames[size_t(a1)], 'I' + i0, 'I' + i1));
     }
     for (int a = 0; a < kAxes; ++a)
-        if (p.to.axis[size_t(a)] && a != a0 && a != a1 && (m_.lathe || a != an))
+        if (to.axis[size_t(a)] && a != a0 && a != a1 && (m_.lathe || a != an))
             return fail(106, strf(tr("axis %c in a circle: only the axis normal to the plane may "
                                      "move (helix)"),
                                   kAxisNames[size_t(a)]));
-    if (p.to.ijk[size_t(in)] && !ax.helix)
+    if (to.ijk[size_t(in)] && !ax.helix)
         return fail(107, strf(tr("helix pitch %c without the %c end point"), 'I' + in,
                               kAxisNames[size_t(an)]));
     return true;
@@ -446,11 +458,11 @@ inline bool Interpreter::arc_words(const Plan& p, const ArcAxes& ax) {
 
 // The centre and the radii at both ends, from R (the shorter arc) or from
 // the centre words.
-inline bool Interpreter::arc_centre(const Plan& p, const ArcAxes& ax, const comp::V2& s,
+inline bool Interpreter::arc_centre(const Target& to, const ArcAxes& ax, const comp::V2& s,
                                     const comp::V2& e, comp::V2& c, double& r0, double& r1) {
-    if (p.to.has_r) {
+    if (to.has_r) {
         double d = (e - s).norm();
-        double r = p.to.r;
+        double r = to.r;
         if (r <= 0) return fail(107, tr("circle radius R must be positive"));
         if (d < 1e-9) return fail(107, tr("circle with R: the end point equals the start point"));
         if (d > 2 * r + 0.001)
@@ -463,9 +475,9 @@ inline bool Interpreter::arc_centre(const Plan& p, const ArcAxes& ax, const comp
         r0 = r1 = r;
         return true;
     }
-    c = Eigen::Vector2d(p.to.ijk_val[ax.i0], p.to.ijk_val[ax.i1]);
-    if (p.to.ijk_inc[size_t(ax.i0)]) c.x() += s.x();
-    if (p.to.ijk_inc[size_t(ax.i1)]) c.y() += s.y();
+    c = Eigen::Vector2d(to.ijk_val[ax.i0], to.ijk_val[ax.i1]);
+    if (to.ijk_inc[size_t(ax.i0)]) c.x() += s.x();
+    if (to.ijk_inc[size_t(ax.i1)]) c.y() += s.y();
     r0 = (s - c).norm();
     r1 = (e - c).norm();
     if (r0 < 1e-9) return fail(107, tr("circle centre on the start point"));
@@ -510,19 +522,18 @@ int Interpreter::helix_turns(double dz, double k, double th0) {
     return best;
 }
 
-bool Interpreter::arc3(const Plan& p, const Axes& target) {
+bool Interpreter::arc3(const Target& to, const Axes& target) {
     const bool lathe = m_.lathe;
     int a0 = lathe ? Z : modal_.plane == 17 ? X : modal_.plane == 18 ? Z : Y;
     int a1 = lathe ? X : modal_.plane == 17 ? Y : modal_.plane == 18 ? X : Z;
     int i0 = ijk_index(a0), i1 = ijk_index(a1);
-    if (!p.to.axis[size_t(a0)] || !p.to.axis[size_t(a1)] || !p.to.ijk[size_t(i0)] ||
-        !p.to.ijk[size_t(i1)])
+    if (!to.axis[size_t(a0)] || !to.axis[size_t(a1)] || !to.ijk[size_t(i0)] || !to.ijk[size_t(i1)])
         return fail(101, tr("G23 needs the end point and the intermediate point"));
     Eigen::Vector2d s(prog_[size_t(a0)], prog_[size_t(a1)]),
         e(target[size_t(a0)], target[size_t(a1)]);
-    Eigen::Vector2d m(p.to.ijk_val[i0], p.to.ijk_val[i1]);
-    if (p.to.ijk_inc[size_t(i0)]) m.x() += s.x();
-    if (p.to.ijk_inc[size_t(i1)]) m.y() += s.y();
+    Eigen::Vector2d m(to.ijk_val[i0], to.ijk_val[i1]);
+    if (to.ijk_inc[size_t(i0)]) m.x() += s.x();
+    if (to.ijk_inc[size_t(i1)]) m.y() += s.y();
     Eigen::Vector2d u = m - s, v = e - s;
     double cross = u.x() * v.y() - u.y() * v.x();
     if (std::fabs(cross) < 1e-9) return fail(101, tr("G23: the three points are on one line"));

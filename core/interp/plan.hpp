@@ -12,28 +12,30 @@
 
 namespace pupitre {
 
+// Axis words: which, and their values.
+struct Interpreter::AxisValues {
+    std::bitset<kAxes> axis;
+    Axes val{};
+};
+// Axis words in their default meaning, the centre / intermediate point /
+// pitch words I J K (index 0 1 2) and the arc radius: all a move reads of its
+// block, so that the plain blocks' lane (interp_fast.cpp) needs no Plan.
+struct Interpreter::Target : AxisValues {
+    std::bitset<kAxes> inc;  // the value is incremental
+    std::bitset<3> ijk;
+    double ijk_val[3] = {0, 0, 0};
+    std::bitset<3> ijk_inc;
+    bool has_r = false;
+    double r = 0;
+    int r_sign = 0;   // R+ / R- in G0/G1: +1 / -1
+    bool em = false;  // EM+/EM-: the axis words are graphic extremes
+};
+
 struct Interpreter::Plan {
     // The modal groups the block sets; -1: not coded (the last G of a group wins).
     struct Modes {
         int motion = -1, dist = -1, plane = -1, radcomp = -1, prefdec = -1, feed = -1;
         int spindle = -1, units = -1, scale = -1, cycle = -1;
-    };
-    // Axis words: which, and their values.
-    struct AxisValues {
-        std::bitset<kAxes> axis;
-        Axes val{};
-    };
-    // Axis words in their default meaning, the centre / intermediate point /
-    // pitch words I J K (index 0 1 2) and the arc radius.
-    struct Target : AxisValues {
-        std::bitset<kAxes> inc;  // the value is incremental
-        std::bitset<3> ijk;
-        double ijk_val[3] = {0, 0, 0};
-        std::bitset<3> ijk_inc;
-        bool has_r = false;
-        double r = 0;
-        int r_sign = 0;   // R+ / R- in G0/G1: +1 / -1
-        bool em = false;  // EM+/EM-: the axis words are graphic extremes
     };
     // Technology words: feed, speed, tool, corrector, M functions, ED EG EC.
     struct Tech {

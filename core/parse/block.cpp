@@ -67,15 +67,19 @@ struct Digits {
     uint64_t m = 0;
     size_t int_digits = 0, frac_digits = 0, end = 0;
 };
+// A digit's value, or more than 9: one comparison a character (issue 14).
+inline unsigned digit_at(const char* p, size_t i) {
+    return unsigned(uint8_t(p[i])) - unsigned('0');
+}
 inline Digits scan_digits(const char* p, size_t i, size_t n) {
     Digits d;
     const size_t start = i;
     uint64_t m = 0;
-    while (i < n && is_digit(p[i])) m = m * 10 + uint64_t(p[i++] - '0');
+    for (unsigned v; i < n && (v = digit_at(p, i)) <= 9; ++i) m = m * 10 + v;
     d.int_digits = i - start;
     if (i < n && p[i] == '.') {
         const size_t f = ++i;
-        while (i < n && is_digit(p[i])) m = m * 10 + uint64_t(p[i++] - '0');
+        for (unsigned v; i < n && (v = digit_at(p, i)) <= 9; ++i) m = m * 10 + v;
         d.frac_digits = i - f;
     }
     d.m = m;
