@@ -163,6 +163,12 @@ std::string read_dec1(const Line& l, MachineProfile& m) {
 std::string read_feed_max(const Line& l, MachineProfile& m) {
     return number_unless(l.val, not_positive, m.max_feed, tr("feed.max must be positive"));
 }
+// A feed per revolution may have a maximum of its own: the Cazeneuve's G95
+// goes to 9.2 m/min where G94 stops at 5.1 (seed 003:890-891).
+std::string read_feed_max_rev(const Line& l, MachineProfile& m) {
+    return number_unless(l.val, not_positive, m.max_feed_rev,
+                         tr("feed.max_per_rev must be positive"));
+}
 std::string read_spindle_max(const Line& l, MachineProfile& m) {
     return number_unless(l.val, not_positive, m.spindle_max, tr("spindle.max must be positive"));
 }
@@ -240,6 +246,7 @@ constexpr KeyReader kKeys[] = {
     {"x_programming", read_x_programming},
     {"turret", read_turret},
     {"feed.max", read_feed_max},
+    {"feed.max_per_rev", read_feed_max_rev},
     {"spindle.max", read_spindle_max},
     {"spindle.ranges", read_spindle_ranges},
     {"spindle.auto_range", read_auto_range},

@@ -42,10 +42,12 @@ struct MachineProfile {
     bool x_diameter = true;   // lathe: X programmed as a diameter
     bool rear_turret = true;  // lathe
     std::array<AxisConfig, kAxes> axes{};
-    Axes home{};                // machine position of the reference at start (lathe X: radius)
-    Axes pref{}, dec1{};        // default origins
-    double max_feed = 5000;     // mm/min
-    double spindle_max = 4000;  // rev/min
+    Axes home{};              // machine position of the reference at start (lathe X: radius)
+    Axes pref{}, dec1{};      // default origins
+    double max_feed = 5000;   // mm/min
+    double max_feed_rev = 0;  // G95's own maximum (mm/min), 0: max_feed (the Cazeneuve's)
+    double rev_feed_cap() const { return max_feed_rev > 0 ? max_feed_rev : max_feed; }
+    double spindle_max = 4000;         // rev/min
     std::vector<SpindleRange> ranges;  // M40, M41, …
     bool auto_range = false;
     bool strict = false;  // the NUM's errors where pupitre is lenient on purpose (1114, 1115)

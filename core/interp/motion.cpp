@@ -83,7 +83,7 @@ double Interpreter::feed_time(double len, double xa, double xb) {
     if (modal_.spindle_mode != 96) {
         double n = spindle_at(xa);
         if (n <= 0) return -1;
-        return len / std::min(per_rev * n, m_.max_feed) * 60.0;
+        return len / std::min(per_rev * n, m_.rev_feed_cap()) * 60.0;
     }
     constexpr int kSteps = 16;
     double t = 0;
@@ -91,7 +91,7 @@ double Interpreter::feed_time(double len, double xa, double xb) {
         double x = xa + (xb - xa) * (i + 0.5) / kSteps;
         double n = spindle_at(x);
         if (n <= 0) return -1;
-        t += (len / kSteps) / std::min(per_rev * n, m_.max_feed) * 60.0;
+        t += (len / kSteps) / std::min(per_rev * n, m_.rev_feed_cap()) * 60.0;
     }
     return t;
 }
@@ -121,7 +121,7 @@ void Interpreter::check_tiny_feed() {
 double Interpreter::feed_rate(double& rpm_out) {
     double unit = modal_.inch ? 25.4 : 1.0;
     rpm_out = spindle_at(prog_[X]);
-    if (modal_.feed_mode == 95) return std::min(modal_.feed * unit * rpm_out, m_.max_feed);
+    if (modal_.feed_mode == 95) return std::min(modal_.feed * unit * rpm_out, m_.rev_feed_cap());
     return std::min(modal_.feed * unit, m_.max_feed);
 }
 

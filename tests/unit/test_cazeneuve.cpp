@@ -351,6 +351,18 @@ TEST(Cazeneuve, G25LimitsTheConstantSurfaceSpeed) {
     EXPECT_EQ(caz("N10 G96 G25 S1500 X5000\nN20 M2\n").error(), caz::kFunction);
 }
 
+// G95 has a maximum of its own, 9.2 m/min, where G94 stops at 5.1 (003:890-891).
+TEST(Cazeneuve, FeedPerRevolutionHasItsOwnMaximum) {
+    const std::string head = "N10 M3 S1500\nN20 G X20000 Z1000\n";
+    Prog rev = caz(head + "N30 G95 G1 Z-10000 F5000\nN40 G1 Z-20000 F9000\nN50 M2\n");
+    ASSERT_EQ(rev.error(), 0);
+    ASSERT_GE(rev.cap.moves.size(), 3u);
+    EXPECT_NEAR(rev.cap.moves[1].feed, 7500, 1e-6);  // 5 mm/rev at 1500: above G94's 5100
+    EXPECT_NEAR(rev.cap.moves[2].feed, 9200, 1e-6);  // 13.5 m/min: limited to 9.2
+    Prog min = caz(head + "N30 G94 G1 Z-10000 F7500\nN40 M2\n");
+    EXPECT_NEAR(min.cap.moves[1].feed, 5100, 1e-6);  // G94's own
+}
+
 // A block skip mark ends the CNP (003:1804: "I saut de bloc", the OCR's "/"),
 // whether the switch skips the block or runs it: N60 then runs on the
 // programmed X, not one nose radius outside it.
