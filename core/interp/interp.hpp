@@ -250,7 +250,8 @@ class Interpreter final : private EAccess {
     bool caz_motion(const Plan& p);
     bool caz_g7(const Plan& p);
     bool caz_tool(const Plan& p);
-    bool caz_speed_limit(Plan& p);  // G25 S (interp_caz.cpp)
+    bool caz_speed_limit(Plan& p);        // G25 S (interp_caz.cpp)
+    void limit_spindle(int g, double s);  // G92 S or G25 S: modal_.smax
     bool caz_m(const Plan& p, StepResult& r);
 
     // interp.cpp

@@ -291,13 +291,7 @@ bool Interpreter::caz_speed_limit(Plan& p) {
     if (p.mode.spindle == 96 || p.mode.spindle == 97)
         return fail(caz::kFunction,
                     tr("G25 S in a block of its own, before G96 (003:1571): S is its limit"));
-    modal_.smax = p.tech.s;
-    if (modal_.smax > m_.spindle_max) {
-        warn(err::wSpeedClamped,
-             strf(tr("G25 S%s above the spindle maximum %s: limited to it"),
-                  fixed3(modal_.smax, 63).c_str(), fixed3(m_.spindle_max, 63).c_str()));
-        modal_.smax = m_.spindle_max;
-    }
+    limit_spindle(25, p.tech.s);
     p.tech.has_s = false;  // a limit, not a speed
     return true;
 }

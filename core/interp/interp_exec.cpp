@@ -355,16 +355,22 @@ bool Interpreter::modal_g92(const Plan& p) {
     if (p.g92.axis.any()) recompute_program_pos();
     if (p.g92.has_s) {
         if (!m_.lathe) return fail(2, tr("G92 S (spindle limit) is a lathe function"));
-        modal_.smax = p.g92.s;
-        if (modal_.smax > m_.spindle_max) {
-            warn(err::wSpeedClamped,
-                 strf(tr("G92 S%s above the spindle maximum %s: limited to it"),
-                      fixed3(modal_.smax, 63).c_str(), fixed3(m_.spindle_max, 63).c_str()));
-            modal_.smax = m_.spindle_max;
-        }
+        limit_spindle(92, p.g92.s);
     }
     if (p.g92.has_r) modal_.g92r = p.g92.r;
     return true;
+}
+
+// The spindle's limit under G96: the NUM's G92 S, the Cazeneuve's G25 S
+// (interp_caz.cpp); above the machine's maximum it is limited to it.
+void Interpreter::limit_spindle(int g, double s) {
+    modal_.smax = s;
+    if (modal_.smax <= m_.spindle_max) return;
+    // TRANSLATORS: G%d is G92 (NUM) or G25 (Cazeneuve).
+    warn(err::wSpeedClamped,
+         strf(tr("G%d S%s above the spindle maximum %s: limited to it"), g,
+              fixed3(modal_.smax, 63).c_str(), fixed3(m_.spindle_max, 63).c_str()));
+    modal_.smax = m_.spindle_max;
 }
 
 // The modal groups in the order they take effect: a later group reads what an
