@@ -604,7 +604,9 @@ struct Parser {
 
 }  // namespace
 
-bool parse_block(std::string_view line, Block& out, Error& e) {
+// `lane`: the lane of plain blocks first (parse_plain), else the general
+// parser alone.
+static bool parse_line(std::string_view line, Block& out, Error& e, bool lane) {
     out.clear();
     if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
     if (line.size() > kMaxBlockChars) {
@@ -614,10 +616,18 @@ bool parse_block(std::string_view line, Block& out, Error& e) {
             strf(tr("block longer than %zu characters (%zu)"), size_t(kMaxBlockChars), line.size());
         return false;
     }
-    if (parse_plain(line, out)) return true;
+    if (lane && parse_plain(line, out)) return true;
     out.clear();
     Parser p{line, 0, out, e};
     return p.run();
+}
+
+bool parse_block(std::string_view line, Block& out, Error& e) {
+    return parse_line(line, out, e, true);
+}
+
+bool parse_block_general(std::string_view line, Block& out, Error& e) {
+    return parse_line(line, out, e, false);
 }
 
 }  // namespace pupitre

@@ -1,0 +1,74 @@
+// The parser's lane of plain blocks (parse_plain in core/parse/block.cpp,
+// issue 14) against the general parser: every line of the repository's
+// programs and hundreds of thousands of random lines near the lane's edges
+// must give the same Block, field by field, or the same error.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+
+#include "tests/unit/block_log.hpp"
+
+using namespace pupitre;
+namespace fs = std::filesystem;
+
+namespace {
+
+::testing::AssertionResult same(const std::string& line) {
+    const std::string lane = test::parse_answer(line, true),
+                      general = test::parse_answer(line, false);
+    if (lane == general) return ::testing::AssertionSuccess();
+    return ::testing::AssertionFailure() << "line \"" << line << "\"\nlane:\n"
+                                         << lane << "general:\n"
+                                         << general;
+}
+
+}  // namespace
+
+TEST(ParseLane, RepositoryLinesParseTheSameBothWays) {
+    const fs::path root = PUPITRE_SOURCE_DIR;
+    long lines = 0;
+    for (const char* dir :
+         {"tests/golden/programs", "tests/bad", "tests/warn", "tests/e2e/programs",
+          "tests/workshop", "data/demo", "data/exercises"}) {
+        if (!fs::exists(root / dir)) continue;
+        for (const auto& e : fs::recursive_directory_iterator(root / dir)) {
+            if (!e.is_regular_file()) continue;
+            std::ifstream in(e.path());
+            for (std::string line; std::getline(in, line); ++lines)
+                ASSERT_TRUE(same(line)) << e.path();
+        }
+    }
+    EXPECT_GT(lines, 5000);
+}
+
+// Lines made of what plain blocks are made of, and of what makes the lane
+// give up: signs, points, spaces, blanks, variables, E and L words, long
+// numbers, '/', '$', parentheses, G76/G77/G79, stray characters.
+TEST(ParseLane, RandomLinesParseTheSameBothWays) {
+    std::mt19937 rng(20261126);
+    const std::string letters = "NGXYZIJKRFSTDMABCUVWELHPQO";
+    const char* pieces[] = {"",    "-",      "+",     ".",      " ",
+                            "  ",  "0",      "00",    "123",    "4.5",
+                            "-6.", ".75",    "99999", "123456", "1234567890123456",
+                            "L1",  "E80000", "L",     "=",      "*"};
+    const char* tails[] = {"",        "(COMMENT)", " $1 TEXT", "\r", " ",  "/",
+                           "G79 N10", "G77 N1 N2", "G76+ N10", ";",  "\t", "#"};
+    std::uniform_int_distribution<int> nwords(0, 7), coin(0, 9);
+    for (int k = 0; k < 200000; ++k) {
+        std::string line;
+        if (coin(rng) == 0) line += '/';
+        if (coin(rng) < 6) line += "N" + std::to_string(rng() % 100000) + " ";
+        for (int w = nwords(rng); w > 0; --w) {
+            line += letters[rng() % letters.size()];
+            const int parts = coin(rng) < 8 ? 1 : 2;
+            for (int p = 0; p < parts; ++p) line += pieces[rng() % std::size(pieces)];
+            if (coin(rng) < 7) line += ' ';
+        }
+        if (coin(rng) == 0) line += tails[rng() % std::size(tails)];
+        ASSERT_TRUE(same(line));
+    }
+}
