@@ -7,6 +7,7 @@
 // corrector so that its point reads the witness. Any lathe may use it: on a
 // NUM it is :measure with the surface remembered.
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include <cctype>
 #include <charconv>
 #include <cmath>
 
@@ -101,7 +102,9 @@ Effect Session::witness_command(std::string_view args) {
 // (Z); its corrector is set so that the tool's point reads the witness.
 Effect Session::tangent_command(std::string_view args) {
     auto w = words_of(args);
-    const int axis = w.size() == 1 && w[0].size() == 1 ? axis_of(char(std::toupper(w[0][0]))) : -1;
+    const int axis = w.size() == 1 && w[0].size() == 1
+                         ? axis_of(char(std::toupper(static_cast<unsigned char>(w[0][0]))))
+                         : -1;
     if (axis != X && axis != Z) {
         say(strf(tr("usage: %s"), ":tangent X|Z"), true);
         return Effect::redraw;
