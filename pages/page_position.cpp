@@ -17,7 +17,11 @@ std::string spindle_text(const Sim& s) {
                       : s.spindle_dir() == 19 ? "M19"
                                               : "M05";
     std::string out = strf(tr("%.0f rev/min  %s"), s.rpm(), dir);
-    if (s.spindle_range() >= 40) out += "  M" + std::to_string(s.spindle_range());
+    // The Cazeneuve's variator has two named ranges (003:720, 900-906).
+    if (s.spindle_range() >= 40 && is_caz(s.machine()))
+        out += std::string("  ") + (s.spindle_range() == 40 ? tr("harnais") : tr("volée"));
+    else if (s.spindle_range() >= 40)
+        out += "  M" + std::to_string(s.spindle_range());
     const Modal& m = s.interp().modal();
     if (m.spindle_mode == 96) {
         std::snprintf(buf, sizeof buf, "  G96 %.0f m/min", m.s);
