@@ -109,28 +109,9 @@ bool Interpreter::CazDecoder::g_word(const Word& w) {
     if (!gc) return bad(caz::kUnknownG, strf(tr("G%d is not a function of this controller"), g));
     if (gc->support == Support::later && p.unsupported.g < 0) p.unsupported.g = g;
     p.g.set(size_t(g));
-    switch (gc->group) {
-        case Group::motion:
-            p.mode.motion = g;
-            break;
-        case Group::dist:
-            p.mode.dist = g;
-            break;
-        case Group::radcomp:
-            // The thesis draws the front turret's side with X towards the
-            // operator (003:1791, 1915-1919); pupitre's frame has X up: left
-            // and right swap.
-            p.mode.radcomp = g == 41 ? 42 : g == 42 ? 41 : g;
-            break;
-        case Group::feed:
-            p.mode.feed = g;
-            break;
-        case Group::spindle:
-            p.mode.spindle = g;
-            break;
-        default:
-            break;
-    }
+    // The thesis draws the front turret's side with X towards the operator
+    // (003:1791, 1915-1919); pupitre's frame has X up: left and right swap.
+    p.mode.set(gc->group, g == 41 ? 42 : g == 42 ? 41 : g);
     if (g == 7) has_g7 = true;
     if (CazState::is_cycle(g)) cycle = true;
     return true;

@@ -336,41 +336,8 @@ bool Interpreter::Decoder::g_known(int g, const GCode* gc, const Word& w) {
 
 // The G that the block keeps for a modal group (the last one written).
 void Interpreter::Decoder::g_group(int g, Group group) {
-    switch (group) {
-        case Group::motion:
-            p.mode.motion = g;
-            break;
-        case Group::dist:
-            p.mode.dist = g;
-            inc = (g == 91);
-            break;
-        case Group::plane:
-            p.mode.plane = g;
-            break;
-        case Group::radcomp:
-            p.mode.radcomp = g;
-            break;
-        case Group::prefdec:
-            p.mode.prefdec = g;
-            break;
-        case Group::feed:
-            p.mode.feed = g;
-            break;
-        case Group::spindle:
-            p.mode.spindle = g;
-            break;
-        case Group::units:
-            p.mode.units = g;
-            break;
-        case Group::scale:
-            p.mode.scale = g;
-            break;
-        case Group::cycle:
-            p.mode.cycle = g;
-            break;
-        default:
-            break;
-    }
+    p.mode.set(group, g);
+    if (group == Group::dist) inc = (g == 91);
 }
 
 // What G52, G77 -i, G79± and G76± say by where or how they are written.
