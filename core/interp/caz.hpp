@@ -78,6 +78,7 @@ struct Interpreter::CazState {
     // One elementary move of a cycle: G0, G1 at the feed in force, or G33 at
     // the pitch in force, to program X Z (mm, X a radius).
     static bool move(Interpreter& in, int g, double x, double z);
+    struct CycleFeed;  // a cycle's own feed per revolution, for its passes
 };
 
 }  // namespace pupitre

@@ -58,6 +58,26 @@ bool Interpreter::CazState::end_comp(Interpreter& in) {
     return true;
 }
 
+// The turning and facing cycles' feed per revolution (F or K in µm/rev),
+// theirs for their passes only: the program's feed mode and F come back after.
+struct Interpreter::CazState::CycleFeed {
+    Interpreter& in;
+    const Modal saved;
+    OwnFeed own;
+    CycleFeed(Interpreter& i, double per_rev) : in(i), saved(i.modal_), own(i) {
+        in.modal_.feed_mode = 95;
+        in.modal_.feed = per_rev;
+        in.modal_.feed_set = true;
+    }
+    ~CycleFeed() {
+        in.modal_.feed_mode = saved.feed_mode;
+        in.modal_.feed = saved.feed;
+        in.modal_.feed_set = saved.feed_set;
+    }
+    CycleFeed(const CycleFeed&) = delete;
+    CycleFeed& operator=(const CycleFeed&) = delete;
+};
+
 bool Interpreter::CazState::move(Interpreter& in, int g, double x, double z) {
     Plan q;
     q.to.axis.set(X).set(Z);
@@ -127,22 +147,13 @@ bool Interpreter::CazState::turning(Interpreter& in, const Plan& p) {
     const double dir = xf <= x0 ? -1.0 : 1.0;
     const double crest = xf - dir * depth;
     const int passes = int(std::ceil(depth / pass - 1e-9));
-    const Modal saved = in.modal_;
-    in.modal_.feed_mode = 95;
-    in.modal_.feed = a.f * caz::kUm;
-    in.modal_.feed_set = true;
+    const CycleFeed feed(in, a.f * caz::kUm);
     bool ok = true;
-    {
-        OwnFeed own(in);
-        for (int k = 1; k <= passes && ok; ++k) {
-            const double x = k == passes ? xf : crest + dir * pass * k;
-            ok = move(in, 0, x, z0) && move(in, 1, x + taper, zf) && move(in, 0, x0, zf) &&
-                 move(in, 0, x0, z0);
-        }
+    for (int k = 1; k <= passes && ok; ++k) {
+        const double x = k == passes ? xf : crest + dir * pass * k;
+        ok = move(in, 0, x, z0) && move(in, 1, x + taper, zf) && move(in, 0, x0, zf) &&
+             move(in, 0, x0, z0);
     }
-    in.modal_.feed_mode = saved.feed_mode;
-    in.modal_.feed = saved.feed;
-    in.modal_.feed_set = saved.feed_set;
     return ok;
 }
 
@@ -161,22 +172,12 @@ bool Interpreter::CazState::g92(Interpreter& in, const Plan& p) {
     const double pass = a.i * caz::kUm;
     const double dir = zf <= z0 ? -1.0 : 1.0;
     const int passes = int(std::ceil(std::fabs(zf - z0) / pass - 1e-9));
-    const Modal saved = in.modal_;
-    in.modal_.feed_mode = 95;
-    in.modal_.feed = a.k * caz::kUm;
-    in.modal_.feed_set = true;
+    const CycleFeed feed(in, a.k * caz::kUm);
     bool ok = true;
-    {
-        OwnFeed own(in);
-        for (int k = 1; k <= passes && ok; ++k) {
-            const double z = k == passes ? zf : z0 + dir * pass * k;
-            ok = move(in, 0, x0, z) && move(in, 1, xf, z) && move(in, 0, xf, z0) &&
-                 move(in, 0, x0, z0);
-        }
+    for (int k = 1; k <= passes && ok; ++k) {
+        const double z = k == passes ? zf : z0 + dir * pass * k;
+        ok = move(in, 0, x0, z) && move(in, 1, xf, z) && move(in, 0, xf, z0) && move(in, 0, x0, z0);
     }
-    in.modal_.feed_mode = saved.feed_mode;
-    in.modal_.feed = saved.feed;
-    in.modal_.feed_set = saved.feed_set;
     return ok;
 }
 
