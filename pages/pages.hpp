@@ -41,10 +41,9 @@ struct Line {
 void draw_lines(const std::vector<Line>& lines, int scroll, Canvas& c, const Rect& r);
 
 // A machine of the Cazeneuve dialect (page_caz.cpp): its T word ("T204"; the
-// NUM's "T2  D4") and its INFO page lines.
+// NUM's "T2  D4").
 bool is_caz(const MachineProfile& m);
 std::string tool_word(const MachineProfile& m, int tool, int corrector);
-void caz_info_lines(const Sim& s, std::vector<Line>& lines);
 // The columns a line number takes in a page's left margin: `least`, or the
 // digits of `last`, the largest number shown (a CAM program has millions of
 // lines).
