@@ -339,6 +339,22 @@ Effect part(Session& s, const CommandCall& c) {
     return Effect::redraw;
 }
 
+// :witness, :witness off, :witness DIA [FACE] (console/witness.cpp).
+Effect witness(Session& s, const CommandCall& c) {
+    double dia = std::nan(""), face = 0;
+    if (c.words.size() == 2 && c.arg(1) == "off") return s.witness(0, 0);
+    if (c.words.size() > 3 || (c.words.size() > 1 && (!number(c.arg(1), dia) || dia <= 0)) ||
+        (c.words.size() == 3 && !number(c.arg(2), face)))
+        return usage(s, ":witness DIA [FACE] | :witness off");
+    return s.witness(dia, face);
+}
+
+Effect tangent(Session& s, const CommandCall& c) {
+    const int axis = axis_word(c.arg(1));
+    if (c.words.size() != 2 || (axis != X && axis != Z)) return usage(s, ":tangent X|Z");
+    return s.tangent(axis);
+}
+
 Effect measure(Session& s, const CommandCall& c) {
     if (workshop::is_instrument(c.arg(1))) return read_instrument(s, c);
     double v;
@@ -477,10 +493,9 @@ constexpr Command kCommands[] = {
      nullptr},
     {"witness", ":witness DIA [FACE]|off",
      N_("the witness cut: its diameter read with the micrometer, its face's Z (default 0)"),
-     [](Session& s, const CommandCall& c) { return s.witness_command(c.rest()); }},
+     witness},
     {"tangent", ":tangent X|Z",
-     N_("the active tool touches the witness: its corrector is set from it (Cazeneuve)"),
-     [](Session& s, const CommandCall& c) { return s.tangent_command(c.rest()); }},
+     N_("the active tool touches the witness: its corrector is set from it (Cazeneuve)"), tangent},
     {"setup", ":setup [lathe|mill|cazeneuve|FILE|off]",
      N_("the workshop: a true part, chuck and tools the moves cut and touch"), setup},
     {"part", ":part new", N_("the workshop: fresh stock in the chuck"), part},

@@ -90,9 +90,9 @@ class Session {
     Effect measure(int d, int axis, double surface);
     // The Cazeneuve's tool setting from a witness cut (console/witness.cpp):
     // :witness DIA [FACE] once, then :tangent X|Z with each tool.
-    Effect witness_command(std::string_view args);
-    Effect tangent_command(std::string_view args);
-    std::string witness_text() const;  // "" when none
+    Effect witness(double dia, double face);  // dia <= 0: forget it; NaN: say it
+    Effect tangent(int axis);                 // X or Z
+    std::string witness_text() const;         // "" when none
     // Training (console/session_exercise.cpp): an attempt at an exercise on
     // its hidden setup. start_exercise() comes before load_store(): the
     // attempt's correctors and origins live under its own name in the store.

@@ -7,41 +7,14 @@
 // corrector so that its point reads the witness. Any lathe may use it: on a
 // NUM it is :measure with the surface remembered.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include <cctype>
-#include <charconv>
 #include <cmath>
+#include <cstdio>
 
 #include "console/session.hpp"
 #include "core/i18n.hpp"
 #include "store/store.hpp"
 
 namespace pupitre::console {
-
-namespace {
-
-bool read_mm(std::string_view s, double& v) {
-    if (!s.empty() && s.front() == '+') s.remove_prefix(1);
-    std::string t(s);
-    for (char& ch : t)
-        if (ch == ',') ch = '.';  // a French decimal comma, as on the setting pages
-    auto [p, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
-    return ec == std::errc() && p == t.data() + t.size() && std::isfinite(v);
-}
-
-std::vector<std::string_view> words_of(std::string_view s) {
-    std::vector<std::string_view> out;
-    size_t i = 0;
-    while (i < s.size()) {
-        while (i < s.size() && s[i] == ' ') ++i;
-        size_t j = i;
-        while (j < s.size() && s[j] != ' ') ++j;
-        if (j > i) out.push_back(s.substr(i, j - i));
-        i = j;
-    }
-    return out;
-}
-
-}  // namespace
 
 std::string Session::witness_text() const {
     if (!witness_.set) return {};
@@ -54,9 +27,8 @@ void Session::load_witness() {
     if (!store_) return;
     auto r = store_->setting("witness." + store_key_);
     if (r.error || !r.value || r.value->empty()) return;
-    auto w = words_of(*r.value);
-    if (w.size() == 2 && read_mm(w[0], witness_.dia) && read_mm(w[1], witness_.face))
-        witness_.set = witness_.dia > 0;
+    witness_.set = std::sscanf(r.value->c_str(), "%lf %lf", &witness_.dia, &witness_.face) == 2 &&
+                   witness_.dia > 0;
 }
 
 void Session::save_witness() {
@@ -65,50 +37,32 @@ void Session::save_witness() {
                         witness_.set ? strf("%.4f %.4f", witness_.dia, witness_.face) : "");
 }
 
-// :witness DIA [FACE]: the witness's diameter, read with the micrometer, and
-// the program Z of its face (0: the program's origin is on the face).
-Effect Session::witness_command(std::string_view args) {
-    auto w = words_of(args);
+// :witness DIA [FACE] (commands.cpp reads the words): the witness's
+// diameter, read with the micrometer, and the program Z of its face (0: the
+// program's origin is on the face). dia <= 0: forget it; NaN: say it.
+Effect Session::witness(double dia, double face) {
     if (!m_.lathe) {
         say(tr(":witness: a lathe's tool setting (the witness is a turned diameter and face)"),
             true);
-        return Effect::redraw;
-    }
-    if (w.empty()) {
+    } else if (std::isnan(dia)) {
         say(witness_.set ? witness_text()
                          : std::string(tr("no witness cut: :witness DIA [FACE], e.g. "
                                           ":witness 58.02 0")));
-        return Effect::redraw;
-    }
-    if (w.size() == 1 && w[0] == "off") {
+    } else if (dia <= 0) {
         witness_ = Witness{};
         save_witness();
         say(tr("witness cut forgotten"));
-        return Effect::redraw;
+    } else {
+        witness_ = Witness{true, dia, face};
+        save_witness();
+        say(witness_text() + "; " + tr("then :tangent X|Z with each tool"));
     }
-    double dia = 0, face = 0;
-    if (w.size() > 2 || !read_mm(w[0], dia) || dia <= 0 ||
-        (w.size() == 2 && !read_mm(w[1], face))) {
-        say(strf(tr("usage: %s"), ":witness DIA [FACE] | :witness off"), true);
-        return Effect::redraw;
-    }
-    witness_ = Witness{true, dia, face};
-    save_witness();
-    say(witness_text() + "; " + tr("then :tangent X|Z with each tool"));
     return Effect::redraw;
 }
 
 // :tangent X|Z: the active tool touches the witness's diameter (X) or face
 // (Z); its corrector is set so that the tool's point reads the witness.
-Effect Session::tangent_command(std::string_view args) {
-    auto w = words_of(args);
-    const int axis = w.size() == 1 && w[0].size() == 1
-                         ? axis_of(char(std::toupper(static_cast<unsigned char>(w[0][0]))))
-                         : -1;
-    if (axis != X && axis != Z) {
-        say(strf(tr("usage: %s"), ":tangent X|Z"), true);
-        return Effect::redraw;
-    }
+Effect Session::tangent(int axis) {
     if (!witness_.set) {
         say(tr(":tangent: no witness cut yet: turn a diameter and a face, measure the "
                "diameter, then :witness DIA [FACE]"),

@@ -88,3 +88,13 @@ TEST(Witness, CazeneuveTangentKeptInTheStore) {
     EXPECT_NEAR(x, 171, 1e-9);
     std::remove(path.c_str());
 }
+
+// The Cazeneuve's controller has no L or E variables: what is typed on the
+// PARAM page (reached by :page param) is refused, not set.
+TEST(Witness, CazeneuveHasNoVariablesToSet) {
+    Console c("cazeneuve", {});
+    c.type(":page param");
+    c.type("L5=2");
+    EXPECT_NE(c.message().find("no L variables"), std::string::npos) << c.message();
+    EXPECT_EQ(c.s->sim().interp().lvars().v[5], 0);
+}
