@@ -16,7 +16,7 @@ Eigen::Rotation2Dd rotation(double deg) {
 
 Axes Frames::to_machine(const Axes& prog) const {
     Axes p = prog;
-    if (ed == 0 && !scale_on && mirror.none()) {
+    if (translation_only()) {
         // Translations only: the common case, kept short for long programs.
         // Whole arrays, which Eigen adds two axes at a time (g++ -O2 leaves a
         // loop of 9 scalar); the sums are those of the loop below, in the

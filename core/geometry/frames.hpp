@@ -23,6 +23,13 @@ struct Frames {
 
     // Program point -> machine position of the reference.
     Axes to_machine(const Axes& prog) const;
+    // Only translations apply: to_machine adds shift(a) to each axis a, with
+    // these sums in this order (the whole arrays' sums of to_machine).
+    bool translation_only() const { return ed == 0 && !scale_on && mirror.none(); }
+    double shift(int a) const {
+        const size_t i = size_t(a);
+        return ((g59[i] + dec3[i]) + gauge[i]) + (g53 ? 0.0 : dec1[i] + pref[i]);
+    }
     // Machine position -> program point (inverse of to_machine).
     Axes to_program(const Axes& mach) const;
 };

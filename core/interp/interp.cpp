@@ -147,6 +147,10 @@ void Interpreter::update_travel() {
         travel_lo_tol_[size_t(a)] = travel_lo_[size_t(a)] - 1e-6;
         travel_hi_tol_[size_t(a)] = travel_hi_[size_t(a)] + 1e-6;
     }
+    n_bounded_ = 0;
+    for (int a = 0; a < kAxes; ++a)
+        if (travel_lo_[size_t(a)] > -1e300 || travel_hi_[size_t(a)] < 1e300)
+            bounded_[size_t(n_bounded_++)] = uint8_t(a);
 }
 
 bool Interpreter::has_errors() const {

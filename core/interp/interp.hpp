@@ -367,7 +367,12 @@ class Interpreter final : private EAccess {
     bool arc3(const Target& to, const Axes& target_prog);
     bool emit_arc(int g, const Axes& target, int a0, int a1, double c0, double c1, double sweep_rad,
                   double r0, double r1, int helix_axis);
-    bool check_travel(const Axes& mach);
+    // Every move asks: the common answer inline, travel_fault() for the rest.
+    bool check_travel(const Axes& mach) {
+        return (homed_.all() && inside_travel(mach)) || travel_fault(mach);
+    }
+    bool inside_travel(const Axes& mach) const;
+    bool travel_fault(const Axes& mach);
     bool finish_move(MoveEvent& e, const Axes& mach, const Axes& prog, double seconds);
     double feed_rate(double& rpm_out);  // mm/min for the move start
     void check_tiny_feed();
@@ -532,6 +537,9 @@ class Interpreter final : private EAccess {
     // The same with check_travel's 1e-6 of tolerance, worked out once
     // (update_travel) rather than at every move.
     Axes travel_lo_tol_{}, travel_hi_tol_{};
+    // The axes with a bound (the others have none: an absent axis's is ±1e300).
+    std::array<uint8_t, kAxes> bounded_{};
+    int n_bounded_ = 0;
     void update_travel();
     std::map<int, int64_t> e_written_;  // every E written by the program
     Axes mach_{};                       // machine position of the reference

@@ -38,17 +38,19 @@ double rotary_length(const Axes& a, const Axes& b) {
 }
 }  // namespace
 
-bool Interpreter::check_travel(const Axes& mach) {
-    // Every move asks: the common answer first, without a branch per axis.
-    // These are the comparisons of the loop below, which finds the axis at fault,
-    // with the bounds' tolerance added once (update_travel).
-    if (homed_.all()) {
-        // Bitwise on ints, not && on bools: no branch per axis.
-        int inside = 1;
-        for (size_t a = 0; a < size_t(kAxes); ++a)
-            inside &= int(mach[a] >= travel_lo_tol_[a]) & int(mach[a] <= travel_hi_tol_[a]);
-        if (inside) return true;
+// The comparisons of travel_fault()'s loop, which finds the axis at fault,
+// with the bounds' tolerance added once (update_travel), on the axes that have
+// bounds: bitwise on ints, not && on bools, so no branch per axis.
+bool Interpreter::inside_travel(const Axes& mach) const {
+    int inside = 1;
+    for (int i = 0; i < n_bounded_; ++i) {
+        const size_t a = bounded_[size_t(i)];
+        inside &= int(mach[a] >= travel_lo_tol_[a]) & int(mach[a] <= travel_hi_tol_[a]);
     }
+    return inside;
+}
+
+bool Interpreter::travel_fault(const Axes& mach) {
     for (int a = 0; a < kAxes; ++a) {
         double v = mach[size_t(a)], lo = travel_lo_[size_t(a)], hi = travel_hi_[size_t(a)];
         if (!homed_[size_t(a)] && std::abs(v - mach_[size_t(a)]) > 1e-9) {
@@ -568,10 +570,15 @@ bool Interpreter::emit_arc(int g, const Axes& target, int a0, int a1, double c0,
     if (!check_travel(mach)) return false;
     // The circle's extremes must be inside the travel too.
     {
-        Axes cp = prog_;
-        cp[size_t(a0)] = c0;
-        cp[size_t(a1)] = c1;
-        Axes cm = frames_.to_machine(cp);
+        Axes cm = prog_;
+        cm[size_t(a0)] = c0;
+        cm[size_t(a1)] = c1;
+        if (frames_.translation_only()) {  // the two axes used, as to_machine would
+            cm[size_t(a0)] += frames_.shift(a0);
+            cm[size_t(a1)] += frames_.shift(a1);
+        } else {
+            cm = frames_.to_machine(cm);
+        }
         double mx = mach_[size_t(a0)] - cm[size_t(a0)], my = mach_[size_t(a1)] - cm[size_t(a1)];
         const double dist = std::hypot(mx, my);
         double rm = dist + std::fabs(r1 - r0);
