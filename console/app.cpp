@@ -191,7 +191,7 @@ bool exercise_setup(const ConsoleArgs& a, store::Store& st, training::Exercise& 
                     MachineProfile& m, int& rc) {
     rc = kNoInput;
     std::string why = console::find_exercise(&st, a.exercise, e);
-    if (why.empty()) why = console::class_key(true, key);
+    if (why.empty()) why = console::store_class_key(st, true, key);
     if (why.empty() && !a.machine.empty() && a.machine != e.machine)
         why = strf(tr("exercise %s is on the %s, not on %s"), e.name.c_str(), e.machine.c_str(),
                    a.machine.c_str());
@@ -222,8 +222,11 @@ int restart_on(const ConsoleArgs& a, console::Session& s, const std::string& nam
 void exercise_screen(console::Session& s, const training::Exercise& e) {
     if (e.program_number > 0 && s.memory().find(e.program_number)) s.sim().select(e.program_number);
     s.show_page(pages::PageId::exercise);
-    s.say(strf(tr("exercise %s: the task is on this page (Alt-x); :submit hands it in"),
-               e.name.c_str()));
+    const std::string& note = s.exercise() ? s.exercise()->program_note : std::string();
+    s.say(note.empty()
+              ? strf(tr("exercise %s: the task is on this page (Alt-x); :submit hands it in"),
+                     e.name.c_str())
+              : note);
 }
 
 }  // namespace

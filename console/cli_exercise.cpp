@@ -122,7 +122,7 @@ int exercise_truth(const ExerciseArgs& a) {
         return kNoInput;
     }
     std::string key;
-    if (std::string why = console::class_key(false, key); !why.empty()) {
+    if (std::string why = console::store_class_key(*st, false, key); !why.empty()) {
         std::fprintf(stderr, tr("pupitre: %s\n"), why.c_str());
         return kNoInput;
     }

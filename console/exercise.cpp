@@ -112,6 +112,28 @@ std::string class_key(bool create, std::string& key) {
     return {};
 }
 
+namespace {
+constexpr std::string_view kKeyIdSetting = "class.key_id";
+std::string key_id(const std::string& key) {
+    return sha256_hex("pupitre class key id\n" + key).substr(0, 16);
+}
+}  // namespace
+
+std::string store_class_key(store::Store& st, bool create, std::string& key) {
+    auto id = st.setting(kKeyIdSetting);
+    if (id.error) return id.error.message;
+    if (std::string why = class_key(create && !id.value, key); !why.empty()) return why;
+    if (!id.value) {
+        if (store::Error e = st.set_setting(kKeyIdSetting, key_id(key))) return e.message;
+        return {};
+    }
+    if (*id.value != key_id(key))
+        return strf(tr("the class key %s is not the key of this store's class: set "
+                       "PUPITRE_CLASS_KEY to the teacher's key file"),
+                    class_key_path().c_str());
+    return {};
+}
+
 std::string find_exercise(store::Store* st, const std::string& name, training::Exercise& e) {
     std::string text;
     const bool file = name.find('/') != std::string::npos ||

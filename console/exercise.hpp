@@ -19,6 +19,12 @@ std::string class_key_path();
 // Reads the key into `key`; when the file does not exist and `create`,
 // makes one (mode 0600, 32 random bytes in hex). "" or what went wrong.
 std::string class_key(bool create, std::string& key);
+// The class key for work on the store `st`. The store keeps the key's
+// fingerprint from its first attempt on: a key that is not the store's (one
+// made on a student's own account, on a shared store) is refused at once,
+// rather than graded TAMPERED with a truth the teacher cannot draw again.
+// `create`: make a key when neither the store nor the user has one.
+std::string store_class_key(store::Store& st, bool create, std::string& key);
 
 // An exercise by name (the store's, then the shipped ones) or a file
 // (a name with a '/' or ending in .exercise). "" or what is wrong.
@@ -36,6 +42,7 @@ struct ExerciseRun {
     store::Attempt attempt;
     training::Context ctx;  // the shims placed, the diameters read
     size_t crashes_seen = 0;
+    std::string program_note;  // the store's program the exercise's replaced, said at start
     std::optional<training::Grade> grade;
     std::vector<std::string> report;  // after :submit
 };

@@ -75,8 +75,14 @@ std::string Session::start_exercise(const training::Exercise& e, const std::stri
     x->crashes_seen = 0;
     store_key_ = x->attempt.machine;
     if (!e.program.empty()) {
+        // The exercise's program becomes the current text of its number; a
+        // different text there stays in the program's history, and is named.
         auto r = store_->save(e.program_number, e.program, store::kHead, "exercise " + e.name);
         if (r.error) return r.error.message;
+        if (r.value.status == store::SaveStatus::saved && r.value.revision > 1)
+            x->program_note = strf(tr("%%%d is now the exercise's; the text it replaced is "
+                                      "revision %d (:history %d)"),
+                                   e.program_number, r.value.revision - 1, e.program_number);
     }
     exercise_ = std::move(x);
     return {};

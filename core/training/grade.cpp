@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 #include "core/i18n.hpp"
 #include "core/workshop/workshop.hpp"
@@ -35,15 +36,14 @@ struct Probe {
 
 using Finder = std::string (*)(const Probe&);
 
+// A corrector's X (or DX) twice its truth: a diameter entered where the CORR
+// page wants a radius; an origin off by half or a quarter of a diameter read.
 std::string diameter(const Probe& p) {
     const double t = p.it.truth, f = p.it.found;
     if (p.field != "X" && p.field != "DX") return {};
     if (p.corrector()) {
         if (std::abs(t) > p.tol && near(f, 2 * t, p.tol))
             return strf(tr("%s is twice the truth %s: a diameter where a radius was expected"),
-                        mm(f).c_str(), mm(t).c_str());
-        if (std::abs(t) > p.tol && near(f, t / 2, p.tol))
-            return strf(tr("%s is half the truth %s: a radius where a diameter was expected"),
                         mm(f).c_str(), mm(t).c_str());
         return {};
     }
@@ -54,6 +54,17 @@ std::string diameter(const Probe& p) {
                                "the reverse"),
                             mm(f - t).c_str(), std::abs(k) == 0.5 ? tr("half") : tr("a quarter of"),
                             mm(d).c_str());
+    return {};
+}
+
+// The reverse: a corrector's X or DX half its truth (a lathe's DX is a
+// diameter, a wear correction halved as if it were a radius).
+std::string radius(const Probe& p) {
+    const double t = p.it.truth, f = p.it.found;
+    if ((p.field != "X" && p.field != "DX") || !p.corrector()) return {};
+    if (std::abs(t) > p.tol && near(f, t / 2, p.tol))
+        return strf(tr("%s is half the truth %s: a radius where a diameter was expected"),
+                    mm(f).c_str(), mm(t).c_str());
     return {};
 }
 
@@ -79,7 +90,38 @@ double gauge_along(const workshop::ToolTruth& t, const std::string& axis, bool l
     return axis == "Z" ? t.length : 0;
 }
 
+// A tool's true gauge in a corrector's field (X Z on a lathe, L on a mill).
+bool field_gauge(const workshop::ToolTruth& t, const std::string& field, bool lathe, double& v) {
+    if (lathe && (field == "X" || field == "Z"))
+        v = field == "X" ? t.x : t.z;
+    else if (!lathe && field == "L")
+        v = t.length;
+    else
+        return false;
+    return true;
+}
+
+// A corrector that holds another tool's gauge: the touch-off was made with
+// that tool in the turret (or spindle) while this corrector was active.
+std::string other_tool(const Probe& p) {
+    const bool lathe = p.s.kind == "lathe";
+    const int d = std::atoi(p.head.c_str() + 1);
+    for (const workshop::ToolTruth& b : p.s.tools) {
+        double g = 0;
+        if (b.position == d || !field_gauge(b, p.field, lathe, g)) continue;
+        if (std::abs(g - p.it.truth) > p.tol && near(p.it.found, g, p.tol))
+            return strf(tr("%s is T%d's gauge, not T%d's: touched off with T%d in the turret and "
+                           "D%d active"),
+                        mm(p.it.found).c_str(), b.position, d, b.position, d);
+    }
+    return {};
+}
+
+// An origin off by a tool's gauge (touched off under D0), or by the
+// difference of two tools' gauges (the wrong corrector active); a corrector
+// holding another tool's gauge.
 std::string corrector(const Probe& p) {
+    if (p.corrector()) return p.field.front() == 'D' ? std::string() : other_tool(p);
     if (p.head != "PREF") return {};
     const bool lathe = p.s.kind == "lathe";
     const double err = p.it.found - p.it.truth;
@@ -143,6 +185,7 @@ struct Row {
 constexpr Row kMistakes[] = {
     {Mistake::dec1, "dec1", N_("DEC1 forgotten"), dec1},
     {Mistake::diameter, "diameter", N_("X taken as a diameter instead of a radius"), diameter},
+    {Mistake::radius, "radius", N_("X taken as a radius instead of a diameter"), radius},
     {Mistake::sign, "sign", N_("a gauge with the wrong sign"), sign},
     {Mistake::wear_sign, "wear-sign", N_("a wear correction with the wrong sign"), wear_sign},
     {Mistake::corrector, "corrector", N_("a touch-off with the wrong corrector active"), corrector},

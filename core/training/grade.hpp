@@ -23,7 +23,7 @@ struct Context {
 };
 
 // The mistakes pupitre names (their words in the report and the store).
-enum class Mistake { none, diameter, sign, wear_sign, corrector, dec1, shim, unset };
+enum class Mistake { none, diameter, radius, sign, wear_sign, corrector, dec1, shim, unset };
 const char* mistake_id(Mistake m);     // "diameter", "sign", …
 std::string mistake_title(Mistake m);  // "X taken as a diameter instead of a radius"
 

@@ -152,8 +152,21 @@ bool numbered(std::string_view key, int max, int& n, std::string_view& field) {
     return true;
 }
 
+// tool.N = none: no tool at position N (an exercise removes the tools of
+// the built-in setup it does not use).
+std::string no_tool(Setup& s, std::string_view key, std::string_view val) {
+    int n = 0;
+    auto r = std::from_chars(key.data(), key.data() + key.size(), n);
+    if (r.ec != std::errc() || r.ptr != key.data() + key.size() || n < 1 || n > 99)
+        return tr("expected tool.N.FIELD with N from 1 to 99");
+    if (val != "none") return tr("expected tool.N = none, or tool.N.FIELD = value");
+    std::erase_if(s.tools, [n](const ToolTruth& t) { return t.position == n; });
+    return {};
+}
+
 // tool.N.FIELD = value
 std::string tool_key(Setup& s, std::string_view key, std::string_view val) {
+    if (key.find('.', 5) == std::string_view::npos) return no_tool(s, key.substr(5), val);
     int n = 0;
     std::string_view field;
     if (!numbered(key.substr(5), 99, n, field))  // after "tool."

@@ -3,14 +3,18 @@
 // stored and signed, the teacher's report as golden files.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <gtest/gtest.h>
+#include <sqlite3.h>
 #include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "console/class_report.hpp"
 #include "console/exercise.hpp"
@@ -94,6 +98,45 @@ TEST(TrainingSession, TheExamDoneRightGetsFullMarksStoredAndSigned) {
     EXPECT_NE(edited.signature, console::sign_attempt(edited, kKey));
 }
 
+// What sqlite3(1) shows of the store: every value of every table as text,
+// cut into words (a value stored as an integer, as the store keeps
+// correctors and origins, is a word of its own).
+std::set<std::string> store_words(const std::string& db) {
+    std::set<std::string> words;
+    sqlite3* h = nullptr;
+    EXPECT_EQ(sqlite3_open_v2(db.c_str(), &h, SQLITE_OPEN_READONLY, nullptr), SQLITE_OK);
+    std::vector<std::string> tables;
+    sqlite3_exec(
+        h, "SELECT name FROM sqlite_master WHERE type = 'table'",
+        [](void* t, int, char** v, char**) {
+            static_cast<std::vector<std::string>*>(t)->push_back(v[0]);
+            return 0;
+        },
+        &tables, nullptr);
+    for (const std::string& t : tables) {
+        sqlite3_stmt* st = nullptr;
+        if (sqlite3_prepare_v2(h, ("SELECT * FROM \"" + t + "\"").c_str(), -1, &st, nullptr))
+            continue;
+        while (sqlite3_step(st) == SQLITE_ROW)
+            for (int i = 0; i < sqlite3_column_count(st); ++i) {
+                const char* v = reinterpret_cast<const char*>(sqlite3_column_text(st, i));
+                std::string w;
+                for (const char* c = v ? v : "";; ++c) {
+                    if (*c && !std::strchr(" \t\n,;:=()[]{}\"'", *c)) {
+                        w += *c;
+                        continue;
+                    }
+                    if (!w.empty()) words.insert(w);
+                    w.clear();
+                    if (!*c) break;
+                }
+            }
+        sqlite3_finalize(st);
+    }
+    sqlite3_close(h);
+    return words;
+}
+
 TEST(TrainingSession, XTakenAsADiameterFailsWithTheMistakeNamed) {
     Attempt a("exam-2005", "bob", temp_db());
     for (const char* set : {":set PREF.X=-165.466", ":set PREF.Z=-669.936", ":set DEC1.Z=257.267",
@@ -115,8 +158,11 @@ TEST(TrainingSession, TheTruthIsOnNoScreenAndNotInTheStoreBeforeSubmit) {
     for (const training::Target& t : a.e.find)
         if (double v = 0; training::expected(a.e, truth, t.name, v) && std::abs(v) > 0.5)
             secrets.push_back(strf("%.3f", v));
-    ASSERT_EQ(secrets.size(), 5u);  // PREF X Z, DEC1 Z, D1 X Z (DEC1 X is 0)
-    a.c->type(":part new");         // the part saved: the store holds the attempt's workshop
+    ASSERT_EQ(secrets.size(), 5u);      // PREF X Z, DEC1 Z, D1 X Z (DEC1 X is 0)
+    std::vector<std::string> internal;  // as the store keeps values: integer µm
+    for (const std::string& s : secrets)
+        internal.push_back(std::to_string(std::llround(std::stod(s) * 1000)));
+    a.c->type(":part new");  // the part saved: the store holds the attempt's workshop
     const std::string screens = every_page(*a.c);
     a.c->type(":setup");
     EXPECT_EQ(a.c->message(), ":setup: not during an exercise (the setup is what you must find)");
@@ -124,16 +170,46 @@ TEST(TrainingSession, TheTruthIsOnNoScreenAndNotInTheStoreBeforeSubmit) {
     EXPECT_EQ(a.c->message(),
               ":part export: not during an exercise (the setup is what you must find)");
     const std::string stored = bytes_of(db) + bytes_of(db + "-wal");
-    for (const std::string& s : secrets) {
+    const std::set<std::string> words = store_words(db);
+    for (size_t i = 0; i < secrets.size(); ++i) {
+        const std::string& s = secrets[i];
         EXPECT_EQ(screens.find(s), std::string::npos) << s << " on a screen";
         EXPECT_EQ(stored.find(s), std::string::npos) << s << " in the store";
+        EXPECT_EQ(words.count(s), 0u) << s << " in the store's tables";
+        EXPECT_EQ(words.count(internal[i]), 0u) << internal[i] << " in the store's tables";
     }
+    // The check sees what the store holds: an origin entered shows there.
+    a.c->type(":set PREF.X=" + secrets[0]);
+    EXPECT_EQ(store_words(db).count(internal[0]), 1u) << internal[0];
     EXPECT_NE(screens.find("no coordinates during an exercise"), std::string::npos);
     // After :submit the report shows them.
     a.c->type(":submit");
     const std::string report = a.c->screen(120, 40);
     for (const std::string& s : secrets)
         EXPECT_NE(report.find(s), std::string::npos) << s << " not in the report\n" << report;
+}
+
+// The exercise's program takes its number in the store; a text of the
+// class's there stays in the history, and the attempt names its revision.
+TEST(TrainingSession, TheProgramTheExerciseReplacesIsKeptAndNamed) {
+    const std::string db = temp_db();
+    {
+        auto st = store::Store::open(db);
+        ASSERT_TRUE(st.ok());
+        ASSERT_FALSE(
+            st.value->save(20, "%20 (MY OWN PROGRAM)\nG0 X10\n", store::kNew, "import").error);
+    }
+    {
+        Attempt a("wear", "gina", db);
+        EXPECT_EQ(a.c->s->exercise()->program_note,
+                  "%20 is now the exercise's; the text it replaced is revision 1 (:history 20)");
+    }
+    Attempt again("wear", "gina", db);  // the same text: nothing replaced, nothing said
+    EXPECT_EQ(again.c->s->exercise()->program_note, "");
+    auto st = store::Store::open(db);
+    auto old = st.value->read(20, 1);
+    ASSERT_FALSE(old.error);
+    EXPECT_EQ(old.value.text, "%20 (MY OWN PROGRAM)\nG0 X10\n");
 }
 
 TEST(TrainingSession, ARestartContinuesTheAttemptWithItsValues) {

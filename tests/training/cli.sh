@@ -51,6 +51,22 @@ cmp -s "$work/t1" "$work/t2" || fail "a student's truth does not reproduce"
 cmp -s "$work/t1" "$work/t3" && fail "two students drew the same truth"
 grep -Eq '^PREF\.Z +-[0-9]+\.[0-9]{3} +# PREF Z = the jaws. face = ' "$work/t1" || fail "$(cat "$work/t1")"
 
+# The store keeps its class key's fingerprint (the first truth drawn made
+# it): another key is refused, for the teacher's command and for a student's
+# attempt, and a student with no key file gets none made (a shared store).
+grep -q '0123456789abcdef' "$work/store.db" && fail "the class key is in the store"
+echo fedcba9876543210fedcba9876543210 > "$work/other.key"
+PUPITRE_CLASS_KEY=$work/other.key "$bin" "${db[@]}" exercise truth exam-2005-drawn --student ann 2> "$work/err"
+[ $? = 66 ] || fail "truth with another key should exit 66"
+grep -q "the class key $work/other.key is not the key of this store's class" "$work/err" || fail "$(cat "$work/err")"
+PUPITRE_CLASS_KEY=$work/other.key "$bin" "${db[@]}" exercise wear --student gina < /dev/null > /dev/null 2> "$work/err"
+[ $? = 66 ] || fail "an attempt with another key should exit 66"
+grep -q "is not the key of this store's class" "$work/err" || fail "$(cat "$work/err")"
+PUPITRE_CLASS_KEY=$work/none.key "$bin" "${db[@]}" exercise wear --student gina < /dev/null > /dev/null 2> "$work/err"
+[ $? = 66 ] || fail "an attempt without the class's key should exit 66"
+grep -q "no class key at $work/none.key" "$work/err" || fail "$(cat "$work/err")"
+[ -e "$work/none.key" ] && fail "a key was made for a store that has one"
+
 # An exercise is not a setup: its truth is the student's to find.
 "$bin" run --setup exam-2005 "$root/tests/workshop/turn.iso" 2> "$work/err"
 [ $? = 64 ] || fail "run --setup with an exercise should exit 64"

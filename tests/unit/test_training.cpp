@@ -211,11 +211,33 @@ TEST(Grade, AWearCorrectionWithTheWrongSign) {
     workshop::Setup s = truth_of(e, 3);
     Grade g = grade(e, s, {{"D1.DX", 0.030}}, {}, nullptr, 0, 60);
     EXPECT_EQ(g.items[0].mistake, Mistake::wear_sign);
-    g = grade(e, s, {{"D1.DX", -0.015}}, {}, nullptr, 0, 60);  // a radius, not a diameter
-    EXPECT_EQ(g.items[0].mistake, Mistake::diameter);
+    // Half of it: the diameter's correction halved as if DX were a radius
+    // (named as that, not as the reverse).
+    g = grade(e, s, {{"D1.DX", -0.015}}, {}, nullptr, 0, 60);
+    EXPECT_EQ(g.items[0].mistake, Mistake::radius);
+    EXPECT_EQ(mistake_title(Mistake::radius), "X taken as a radius instead of a diameter");
+    EXPECT_NE(g.items[0].why.find("a radius where a diameter was expected"), std::string::npos)
+        << g.items[0].why;
     // No part: its dimensions cannot be read, and count as wrong.
     EXPECT_FALSE(g.dims[0].read);
     EXPECT_TRUE(g.scrapped);
+}
+
+TEST(Grade, ACorrectorHoldingAnotherToolsGaugeIsTheWrongCorrector) {
+    // lathe-tools: D2 touched off with T1 in the turret holds T1's gauges.
+    Exercise e = builtin("lathe-tools");
+    workshop::Setup s = truth_of(e, 3);
+    const workshop::ToolTruth* t1 = s.tool(1);
+    ASSERT_NE(t1, nullptr);
+    Grade g = grade(e, s, {{"D2.X", t1->x}, {"D2.Z", t1->z}}, {}, nullptr, 0, 60);
+    for (const char* name : {"D2.X", "D2.Z"}) {
+        const ItemGrade& i = item(g, name);
+        EXPECT_FALSE(i.ok) << name;
+        EXPECT_EQ(i.mistake, Mistake::corrector) << name << ": " << i.why;
+        EXPECT_NE(i.why.find("T1's gauge, not T2's"), std::string::npos) << i.why;
+    }
+    // Its own gauge is right, whatever the others hold.
+    EXPECT_TRUE(item(grade(e, s, {{"D1.X", t1->x}}, {}, nullptr, 0, 60), "D1.X").ok);
 }
 
 TEST(Grade, TheCutPartAgainstTheDrawingAndACrash) {

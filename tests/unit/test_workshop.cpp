@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "core/interp/interp.hpp"
+#include "core/training/exercise.hpp"
 #include "core/workshop/report.hpp"
 #include "core/workshop/workshop.hpp"
 #include "workshop_run.hpp"
@@ -77,6 +78,28 @@ TEST(Setup, ShippedCazeneuveHasBothTurrets) {
         }
     }
     EXPECT_EQ(s.tool(5), nullptr);
+}
+
+// tool.N = none takes a tool out (an exercise's truth, after the built-in
+// setup: seed 004's exam has one tool).
+TEST(Setup, AToolTakenOut) {
+    workshop::Setup base, s;
+    ASSERT_TRUE(builtin_setup("lathe", base));
+    ASSERT_EQ(parse_setup(base.source + "tool.2 = none\ntool.4 = none\n", s), "");
+    EXPECT_NE(s.tool(1), nullptr);
+    EXPECT_EQ(s.tool(2), nullptr);
+    EXPECT_NE(s.tool(3), nullptr);
+    EXPECT_EQ(s.tool(4), nullptr);
+    EXPECT_EQ(parse_setup("kind = lathe\ntool.2 = gone\n", s),
+              "line 2: tool.2: expected tool.N = none, or tool.N.FIELD = value");
+    EXPECT_EQ(parse_setup("kind = lathe\ntool.0 = none\n", s),
+              "line 2: tool.0: expected tool.N.FIELD with N from 1 to 99");
+    training::Exercise e;
+    workshop::Setup exam;
+    ASSERT_TRUE(training::builtin_exercise("exam-2005", e));
+    ASSERT_EQ(training::draw_setup(e, 1, exam), "");
+    ASSERT_EQ(exam.tools.size(), 1u);
+    EXPECT_EQ(exam.tools[0].position, 1);
 }
 
 TEST(Setup, ErrorsNameTheLine) {
