@@ -90,26 +90,16 @@ double gauge_along(const workshop::ToolTruth& t, const std::string& axis, bool l
     return axis == "Z" ? t.length : 0;
 }
 
-// A tool's true gauge in a corrector's field (X Z on a lathe, L on a mill).
-bool field_gauge(const workshop::ToolTruth& t, const std::string& field, bool lathe, double& v) {
-    if (lathe && (field == "X" || field == "Z"))
-        v = field == "X" ? t.x : t.z;
-    else if (!lathe && field == "L")
-        v = t.length;
-    else
-        return false;
-    return true;
-}
-
 // A corrector that holds another tool's gauge: the touch-off was made with
 // that tool in the turret (or spindle) while this corrector was active.
 std::string other_tool(const Probe& p) {
     const bool lathe = p.s.kind == "lathe";
+    // The gauges: X and Z on a lathe, L (along Z) on a mill.
+    if (lathe ? p.field != "X" && p.field != "Z" : p.field != "L") return {};
     const int d = std::atoi(p.head.c_str() + 1);
     for (const workshop::ToolTruth& b : p.s.tools) {
-        double g = 0;
-        if (b.position == d || !field_gauge(b, p.field, lathe, g)) continue;
-        if (std::abs(g - p.it.truth) > p.tol && near(p.it.found, g, p.tol))
+        const double g = gauge_along(b, lathe ? p.field : "Z", lathe);
+        if (b.position != d && std::abs(g - p.it.truth) > p.tol && near(p.it.found, g, p.tol))
             return strf(tr("%s is T%d's gauge, not T%d's: touched off with T%d in the turret and "
                            "D%d active"),
                         mm(p.it.found).c_str(), b.position, d, b.position, d);
