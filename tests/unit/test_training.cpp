@@ -5,6 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
 
 #include "core/sha256.hpp"
 #include "core/training/exercise.hpp"
@@ -294,6 +297,44 @@ TEST(Sha256, HmacMatchesRfc4231) {
     // RFC 4231, test case 2.
     EXPECT_EQ(hmac_sha256_hex("Jefe", "what do ya want for nothing?"),
               "5bdcc146bf60754e6a042426089575c75a003f089d2739839dec58b964ec3843");
+}
+
+// The student's report, as the EXERCISE page and the store show it after
+// :submit: golden files (PUPITRE_BLESS=1 rewrites them).
+void golden_report(const char* name, const std::vector<std::string>& lines) {
+    std::string text;
+    for (const std::string& l : lines) text += l + "\n";
+    const std::string path = std::string(PUPITRE_SOURCE_DIR) + "/tests/unit/expected/" + name;
+    if (const char* b = std::getenv("PUPITRE_BLESS"); b && *b == '1') {
+        std::ofstream(path, std::ios::binary) << text;
+        return;
+    }
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    EXPECT_EQ(ss.str(), text) << "golden " << path << " differs (PUPITRE_BLESS=1 rewrites)";
+}
+
+TEST(Grade, TheStudentsReportIsGolden) {
+    // The book exam with three mistakes, 20 min 34 s into its hour.
+    Values v = exam_right();
+    v["PREF.X"] = -165.466;  // the diameter where its half belongs
+    v["D1.X"] = -63.345;     // a gauge with the wrong sign
+    v["DEC1.Z"] = 0;         // DEC1 forgotten
+    Exercise e = builtin("exam-2005");
+    Context ctx;
+    ctx.diameters = e.diameters;
+    ctx.shims = e.shims;
+    golden_report("report_exam.txt",
+                  report_lines(e, grade(e, truth_of(e), v, ctx, nullptr, 0, 1234)));
+    // The wear exercise on an uncut bar after a crash, late: the part is read and scrapped.
+    Exercise w = builtin("wear");
+    workshop::Setup s = truth_of(w, 3);
+    MachineProfile m;
+    ASSERT_TRUE(builtin_machine("lathe", m));
+    workshop::Workshop fresh(m, s, nullptr);
+    golden_report("report_wear.txt",
+                  report_lines(w, grade(w, s, {{"D1.DX", -0.015}}, {}, &fresh, 1, 2400)));
 }
 
 }  // namespace
