@@ -23,7 +23,7 @@ namespace pupitre::cli {
 
 // sysexits(3)
 inline constexpr int kOk = 0, kProgramErrors = 1, kUsage = 64, kDataErr = 65, kNoInput = 66,
-                     kSoftware = 70, kCantCreate = 73, kIoErr = 74;
+                     kSoftware = 70, kCantCreate = 73, kIoErr = 74, kNoPerm = 77;
 
 // One default machine for every batch command and the console's first start
 // (CLARIFICATIONS 12.10): the lathe. A batch command never depends on what

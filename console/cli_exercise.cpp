@@ -2,6 +2,8 @@
 // the exercises checked, added, listed and drawn again for the teacher; the
 // class's attempts as a table, CSV or a printable HTML report.
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include <unistd.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <ctime>
@@ -127,6 +129,10 @@ int exercise_truth(const ExerciseArgs& a) {
         return kNoInput;
     }
     const std::string student = console::student_name(a.student);
+    if (std::string why = console::truth_allowed(*st, e, student, getuid()); !why.empty()) {
+        std::fprintf(stderr, tr("pupitre: %s\n"), why.c_str());
+        return kNoPerm;
+    }
     const uint64_t seed = training::seed_of(e, student, key);
     workshop::Setup truth;
     if (std::string why = training::draw_setup(e, seed, truth); !why.empty()) {

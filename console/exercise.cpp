@@ -134,6 +134,19 @@ std::string store_class_key(store::Store& st, bool create, std::string& key) {
     return {};
 }
 
+std::string truth_allowed(store::Store& st, const training::Exercise& e, const std::string& student,
+                          unsigned caller) {
+    auto open = st.open_attempt(e.name, student);
+    if (open.error) return open.error.message;
+    if (!open.value) return {};
+    struct stat sb;
+    const std::string path = class_key_path();
+    if (stat(path.c_str(), &sb) == 0 && sb.st_uid == caller) return {};
+    return strf(tr("%s's attempt at %s is in progress: its truth is shown to the owner of the "
+                   "class key %s, or once it is submitted"),
+                student.c_str(), e.name.c_str(), path.c_str());
+}
+
 std::string find_exercise(store::Store* st, const std::string& name, training::Exercise& e) {
     std::string text;
     const bool file = name.find('/') != std::string::npos ||

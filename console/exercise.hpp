@@ -25,6 +25,12 @@ std::string class_key(bool create, std::string& key);
 // rather than graded TAMPERED with a truth the teacher cannot draw again.
 // `create`: make a key when neither the store nor the user has one.
 std::string store_class_key(store::Store& st, bool create, std::string& key);
+// exercise truth of `student`'s attempt at `e`: while it is in progress,
+// for the owner of the class key's file only (`caller`, a uid); a user who
+// can only read the key (a setgid pupitre on a shared server) sees it once
+// the attempt is submitted. "" or why not.
+std::string truth_allowed(store::Store& st, const training::Exercise& e, const std::string& student,
+                          unsigned caller);
 
 // An exercise by name (the store's, then the shipped ones) or a file
 // (a name with a '/' or ending in .exercise). "" or what is wrong.

@@ -212,6 +212,26 @@ TEST(TrainingSession, TheProgramTheExerciseReplacesIsKeptAndNamed) {
     EXPECT_EQ(old.value.text, "%20 (MY OWN PROGRAM)\nG0 X10\n");
 }
 
+// exercise truth of an attempt in progress: the class key's owner only;
+// anyone once it is submitted.
+TEST(TrainingSession, TheTruthOfAnAttemptInProgress) {
+    const std::string db = temp_db();
+    const std::string key = db + ".key";
+    std::ofstream(key) << kKey << "\n";
+    ASSERT_EQ(setenv("PUPITRE_CLASS_KEY", key.c_str(), 1), 0);
+    Attempt a("wear", "gina", db);
+    store::Store& st = *a.c->s->store();
+    EXPECT_EQ(console::truth_allowed(st, a.e, "gina", getuid()), "");
+    EXPECT_EQ(console::truth_allowed(st, a.e, "gina", getuid() + 1),
+              "gina's attempt at wear is in progress: its truth is shown to the owner of the "
+              "class key " +
+                  key + ", or once it is submitted");
+    EXPECT_EQ(console::truth_allowed(st, a.e, "hugo", getuid() + 1), "");  // no attempt
+    a.c->type(":submit");
+    EXPECT_EQ(console::truth_allowed(st, a.e, "gina", getuid() + 1), "");
+    unsetenv("PUPITRE_CLASS_KEY");
+}
+
 TEST(TrainingSession, ARestartContinuesTheAttemptWithItsValues) {
     const std::string db = temp_db();
     {

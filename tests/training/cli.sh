@@ -67,6 +67,12 @@ PUPITRE_CLASS_KEY=$work/none.key "$bin" "${db[@]}" exercise wear --student gina 
 grep -q "no class key at $work/none.key" "$work/err" || fail "$(cat "$work/err")"
 [ -e "$work/none.key" ] && fail "a key was made for a store that has one"
 
+# An attempt in progress: its truth is the key file's owner's only (the
+# refusal of anyone else is TrainingSession.TheTruthOfAnAttemptInProgress).
+sqlite3 "$work/store.db" "INSERT INTO attempts (exercise, exercise_sha, student, machine, started_ms)
+    VALUES ('wear', 'x', 'gina', 'lathe#wear#gina#1', 1)" 2> "$work/err" || fail "$(cat "$work/err")"
+"$bin" "${db[@]}" exercise truth wear --student gina > /dev/null || fail "truth, as the key's owner"
+
 # An exercise is not a setup: its truth is the student's to find.
 "$bin" run --setup exam-2005 "$root/tests/workshop/turn.iso" 2> "$work/err"
 [ $? = 64 ] || fail "run --setup with an exercise should exit 64"
