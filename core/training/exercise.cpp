@@ -147,6 +147,8 @@ std::string plain_key(Exercise& e, std::string_view key, std::string_view val, i
         e.title = std::string(val);
     } else if (key == "task") {
         e.task.emplace_back(val);
+    } else if (key == "method") {
+        e.method.emplace_back(val);
     } else if (key == "machine") {
         if (val != "lathe" && val != "mill") return tr("expected lathe or mill");
         e.machine = e.setup = std::string(val);
@@ -178,10 +180,10 @@ bool translated(Exercise& e, std::string_view key, std::string_view val) {
     const size_t dot = key.find('.');
     if (dot == std::string_view::npos || key.size() != dot + 3) return false;
     const std::string_view head = key.substr(0, dot), lang = key.substr(dot + 1);
-    if ((head != "title" && head != "task") || lang[0] < 'a' || lang[0] > 'z' || lang[1] < 'a' ||
-        lang[1] > 'z')
+    if ((head != "title" && head != "task" && head != "method") || lang[0] < 'a' || lang[0] > 'z' ||
+        lang[1] < 'a' || lang[1] > 'z')
         return false;
-    (head == "title" ? e.titles : e.tasks).emplace_back(lang, val);
+    (head == "title" ? e.titles : head == "task" ? e.tasks : e.methods).emplace_back(lang, val);
     return true;
 }
 
@@ -274,11 +276,23 @@ std::string Exercise::title_here() const {
     return title;
 }
 
-std::vector<std::string> Exercise::task_here() const {
+namespace {
+// The lines of one language, else those written without one.
+std::vector<std::string> here(const std::vector<std::pair<std::string, std::string>>& translated,
+                              const std::vector<std::string>& plain) {
     std::vector<std::string> out;
-    for (const auto& [lang, text] : tasks)
+    for (const auto& [lang, text] : translated)
         if (lang == i18n::language()) out.push_back(text);
-    return out.empty() ? task : out;
+    return out.empty() ? plain : out;
+}
+}  // namespace
+
+std::vector<std::string> Exercise::task_here() const {
+    return here(tasks, task);
+}
+
+std::vector<std::string> Exercise::method_here() const {
+    return here(methods, method);
 }
 
 bool Exercise::drawn() const {

@@ -53,12 +53,14 @@ struct Dimension {
 struct Exercise {
     std::string source;  // the file's text
     std::string name, title;
-    std::string machine = "lathe";  // the profile: lathe or mill
-    std::string setup = "lathe";    // the built-in setup it starts from
-    std::string origin;             // lathe: face or jaws; mill: corner or centre
-    std::vector<std::string> task;  // paragraphs
-    // The title and task in other languages ("title.fr", "task.fr"), by code.
-    std::vector<std::pair<std::string, std::string>> titles, tasks;
+    std::string machine = "lathe";    // the profile: lathe or mill
+    std::string setup = "lathe";      // the built-in setup it starts from
+    std::string origin;               // lathe: face or jaws; mill: corner or centre
+    std::vector<std::string> task;    // paragraphs
+    std::vector<std::string> method;  // how the values are worked out, shown after :submit
+    // The title, task and method in other languages ("title.fr", "task.fr",
+    // "method.fr"), by code.
+    std::vector<std::pair<std::string, std::string>> titles, tasks, methods;
     std::vector<Draw> truth;
     std::vector<Target> find;
     std::vector<Start> start;
@@ -74,6 +76,7 @@ struct Exercise {
     // written without a language.
     std::string title_here() const;
     std::vector<std::string> task_here() const;
+    std::vector<std::string> method_here() const;
     bool lathe() const { return machine == "lathe"; }
 };
 

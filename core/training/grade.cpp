@@ -295,6 +295,11 @@ std::vector<std::string> report_lines(const Exercise& e, const Grade& g) {
             out.push_back("    \u2192 " +
                           strf(tr("%s: %s"), mistake_title(i.mistake).c_str(), i.why.c_str()));
     }
+    if (const std::vector<std::string> how = e.method_here(); !how.empty()) {
+        out.emplace_back();
+        out.push_back(tr("HOW THE VALUES ARE WORKED OUT"));
+        for (const std::string& l : how) out.push_back("    " + l);
+    }
     if (!g.dims.empty()) {
         out.emplace_back();
         out.push_back(tr("DIMENSION            NOMINAL    MEASURED   LIMITS"));
