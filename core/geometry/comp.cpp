@@ -5,6 +5,7 @@
 #include "core/geometry/comp.hpp"
 
 #include <cmath>
+#include <cstring>
 #include <numbers>
 
 #include "core/geometry/geometry.hpp"
@@ -35,10 +36,35 @@ double sgn(double v) {
     return v < 0 ? -1.0 : 1.0;
 }
 
+// The angles about an offset arc's centre that one join asks more than once
+// (within() and piece() of an element share its start and `from`), each
+// worked out once (issue 14: atan2 was a tenth of a compensated run). Keyed
+// by the vector's bits: the same vector gives the same angle, and +0 and -0
+// (whose atan2 differ) are two keys.
+class Angles {
+  public:
+    double of(const V2& v) {
+        for (int i = 0; i < n_; ++i)
+            if (std::memcmp(&key_[i], v.data(), sizeof key_[i]) == 0) return val_[i];
+        const double a = std::atan2(v.y(), v.x());
+        if (n_ < kSize) {
+            std::memcpy(&key_[n_], v.data(), sizeof key_[n_]);
+            val_[n_++] = a;
+        }
+        return a;
+    }
+
+  private:
+    static constexpr int kSize = 8;
+    double key_[kSize][2];
+    double val_[kSize];
+    int n_ = 0;
+};
+
 // Angle travelled from u to v about the origin, turning in direction s (+1 ccw,
 // -1 cw), in [0, 2π).
-double turn(const V2& u, const V2& v, double s) {
-    double d = s * (std::atan2(v.y(), v.x()) - std::atan2(u.y(), u.x()));
+double turn(const V2& u, const V2& v, double s, Angles& angles) {
+    double d = s * (angles.of(v) - angles.of(u));
     d = std::fmod(d, 2 * kPi);
     if (d < 0) d += 2 * kPi;
     if (d > 2 * kPi - 1e-12) d = 0;
@@ -82,14 +108,14 @@ int intersect(const Elem& e, const Elem& f, V2 out[2]) {
 }
 
 // Appends the part of offset element `o` from `from` to `to`.
-void piece(const Elem& o, const V2& from, const V2& to, std::vector<Piece>& path) {
+void piece(const Elem& o, const V2& from, const V2& to, std::vector<Piece>& path, Angles& angles) {
     Piece p;
     p.to = to;
     if (o.arc) {
         double s = sgn(o.sweep);
         // turn() (two atan2) only where its angle is used.
-        double skip_start = (from - o.a).norm() < kEps ? 0 : turn(o.a - o.c, from - o.c, s);
-        double cut_end = (to - o.b).norm() < kEps ? 0 : turn(to - o.c, o.b - o.c, s);
+        double skip_start = (from - o.a).norm() < kEps ? 0 : turn(o.a - o.c, from - o.c, s, angles);
+        double cut_end = (to - o.b).norm() < kEps ? 0 : turn(to - o.c, o.b - o.c, s, angles);
         p.arc = true;
         p.c = o.c;
         p.sweep = s * std::max(0.0, std::fabs(o.sweep) - skip_start - cut_end);
@@ -101,7 +127,7 @@ void piece(const Elem& o, const V2& from, const V2& to, std::vector<Piece>& path
 }
 
 // Is x on offset element o, after `from` and no further than its end?
-bool within(const Elem& o, const V2& from, const V2& x) {
+bool within(const Elem& o, const V2& from, const V2& x, Angles& angles) {
     if (!o.arc) {
         V2 d = o.b - o.a;
         double len = d.norm();
@@ -112,8 +138,8 @@ bool within(const Elem& o, const V2& from, const V2& x) {
     }
     double s = sgn(o.sweep);
     double total = std::fabs(o.sweep);
-    double af = (from - o.a).norm() < kEps ? 0 : turn(o.a - o.c, from - o.c, s);
-    double ax = (x - o.a).norm() < kEps ? 0 : turn(o.a - o.c, x - o.c, s);
+    double af = (from - o.a).norm() < kEps ? 0 : turn(o.a - o.c, from - o.c, s, angles);
+    double ax = (x - o.a).norm() < kEps ? 0 : turn(o.a - o.c, x - o.c, s, angles);
     double tol = 1e-6 / std::max(o.r(), 1e-9);
     return ax >= af - tol && ax <= total + tol;
 }
@@ -152,21 +178,22 @@ bool offset(const Elem& e, double radius, int side, Elem& out) {
 
 int join(const Elem& p, const V2& from, const Elem& next, double radius, int side,
          std::vector<Piece>& path, V2& next_from) {
+    Angles angles;
     Elem po, no;
     if (!offset(p, radius, side, po) || !offset(next, radius, side, no)) return 149;
     V2 corner = p.b;
     V2 t1 = end_tangent(p), t2 = start_tangent(next);
     double cr = cross(t1, t2), dt = t1.dot(t2);
     if ((po.b - no.a).norm() < 1e-9) {  // tangent: the offsets meet
-        if (!within(po, from, po.b)) return 149;
-        piece(po, from, po.b, path);
+        if (!within(po, from, po.b, angles)) return 149;
+        piece(po, from, po.b, path, angles);
         next_from = no.a;
         return 0;
     }
     bool outside = double(side) * cr < -1e-12 || (std::fabs(cr) <= 1e-12 && dt < 0);
     if (outside) {
-        if (!within(po, from, po.b)) return 149;
-        piece(po, from, po.b, path);
+        if (!within(po, from, po.b, angles)) return 149;
+        piece(po, from, po.b, path, angles);
         Piece arc;
         arc.arc = true;
         arc.connecting = true;
@@ -186,17 +213,18 @@ int join(const Elem& p, const V2& from, const Elem& next, double radius, int sid
     if (n == 0) return 149;
     V2 x = pts[0];
     if (n == 2 && (pts[1] - corner).norm() < (pts[0] - corner).norm()) x = pts[1];
-    if (!within(po, from, x) || !within(no, no.a, x)) return 149;
-    piece(po, from, x, path);
+    if (!within(po, from, x, angles) || !within(no, no.a, x, angles)) return 149;
+    piece(po, from, x, path, angles);
     next_from = x;
     return 0;
 }
 
 int finish(const Elem& p, const V2& from, double radius, int side, std::vector<Piece>& path) {
+    Angles angles;
     Elem po;
     if (!offset(p, radius, side, po)) return 149;
-    if (!within(po, from, po.b)) return 149;
-    piece(po, from, po.b, path);
+    if (!within(po, from, po.b, angles)) return 149;
+    piece(po, from, po.b, path, angles);
     return 0;
 }
 
