@@ -193,7 +193,14 @@ Effect Session::touch_now(int axis, double surface) {
             t.name, t.after,
             "touch-off " + std::string(1, kAxisNames[size_t(axis)]) + " " + mm(surface))) {
         last_setting_ = t.formula + " " + strf(tr("(was %s)"), mm(t.before).c_str());
-        say(last_setting_);
+        // On CORR a student who means the tool's gauge types :touch (found
+        // touching a tool off by keys): say what changed and what was meant.
+        // The hint first: the message line is cut at the screen's width.
+        say(page == pages::PageId::corr
+                ? strf(tr(":touch set PREF, not D%d (here type %c %s; :undo): %s"),
+                       sim_->corrector(), kAxisNames[size_t(axis)], mm(surface).c_str(),
+                       last_setting_.c_str())
+                : last_setting_);
     }
     return Effect::redraw;
 }

@@ -39,6 +39,23 @@ TEST(Witness, TangentSetsTheActiveCorrectorFromTheWitness) {
     EXPECT_NE(c.message().find("no witness cut"), std::string::npos);
 }
 
+// :touch on the CORR page sets PREF, as everywhere; the message says so
+// first, with what the page takes for the corrector (found by keys: a
+// student touching a tool off typed :touch there and broke PREF).
+TEST(Witness, TouchOnTheCorrPageSaysItSetPref) {
+    Console c;
+    setter_lathe(c);
+    c.type(":page corr");
+    c.type(":touch X 60");
+    EXPECT_EQ(c.message().rfind(":touch set PREF, not D1 (here type X 60.000; :undo): PREF.X", 0),
+              0u)
+        << c.message();
+    c.type(":undo");
+    c.type(":page pref");
+    c.type(":touch X 60");
+    EXPECT_EQ(c.message().rfind("PREF.X (radius) = ", 0), 0u) << c.message();
+}
+
 // On the Cazeneuve, X is a radius and the corrector is T's last two digits;
 // the witness stays in the store with the machine's correctors.
 TEST(Witness, CazeneuveTangentKeptInTheStore) {
