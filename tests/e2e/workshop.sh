@@ -112,6 +112,29 @@ touchoff)
     cmd ":measure dia Z-10"
     wait_for 'micrometer: dia Z-10 = 60.000 mm'
     ;;
+corrtouch)
+    # The threading tool T4 (C8, a V insert) touched off by keys on the CORR
+    # page. :touch there sets PREF, as everywhere, and says so first; the
+    # page's own "X 60" measures D4. Its face touch with the point low meets
+    # the holder first, and the message says so.
+    ready lathe "T4 D4 M6"
+    cmd ":jog X -200"
+    wait_for 'T4 touched the part at ø60.000' 20
+    cmd ":page corr"
+    cmd ":touch X 60"
+    wait_for ':touch set PREF, not D4 \(here type X 60.000; :undo\): PREF.X' 5
+    cmd ":undo"
+    wait_for 'undone: PREF.X = 0.000' 5
+    cmd "D4"
+    cmd "X 60"
+    wait_for 'D4.X \(radius\) = OM ø[0-9.]+/2 - surface ø60.000/2 = 30.774' 5
+    cmd ":jog X 20"
+    cmd ":jog Z 60"
+    cmd ":jog X -40"
+    cmd ":jog Z -100"
+    wait_for 'the holder of T4 touched the part' 20
+    cmd ":quit"
+    ;;
 crash)
     # The spindle stopped, an increment into the bar: a crash, not a cut.
     ready
