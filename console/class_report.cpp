@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "console/exercise.hpp"
@@ -41,8 +42,12 @@ std::vector<Row> rows_of(const std::vector<store::Attempt>& all, const std::stri
         r.crashes += a.crashes;
         r.scrapped += a.scrapped;
         if (!key.empty() && sign_attempt(a, key) != a.signature) r.tampered = true;
+        // Counted once an attempt: DEC1 forgotten on X and on Z is one
+        // student's one mistake, not two.
         std::istringstream words(a.mistakes);
-        for (std::string w; words >> w;) ++r.mistakes[w], ++mistakes[w];
+        std::set<std::string> once;
+        for (std::string w; words >> w;) once.insert(w);
+        for (const std::string& w : once) ++r.mistakes[w], ++mistakes[w];
     }
     std::vector<Row> out;
     for (auto& [k, r] : by) out.push_back(r);

@@ -288,7 +288,8 @@ std::vector<store::Attempt> class_attempts() {
     };
     std::vector<store::Attempt> v = {
         make(1, "exam-2005", "alice", 100, 600, 0, false, ""),
-        make(2, "exam-2005", "bob", 50, 900, 0, false, "diameter dec1 sign"),
+        // DEC1 forgotten on X and Z: one mistake of this attempt's, counted once.
+        make(2, "exam-2005", "bob", 50, 900, 0, false, "diameter dec1 dec1 sign"),
         make(3, "exam-2005", "bob", 83, 700, 0, false, "diameter"),
         make(4, "lathe-first", "alice", 50, 1800, 1, true, "shim"),
         make(5, "lathe-first", "carol", 0, 0, 0, false, "", false),
