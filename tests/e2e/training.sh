@@ -110,6 +110,9 @@ hidden)
     for s in "${secrets[@]}"; do
         grep -qF -- "$s" "$work/screens" && fail "the truth $s is on a screen"
         cat "$db"* | grep -aqF -- "$s" && fail "the truth $s is in the store's files"
+        # Nor in any file the console writes for the user (history, logs).
+        grep -raqF -- "$s" "$HOME" "$XDG_DATA_HOME" "$XDG_CONFIG_HOME" 2> /dev/null &&
+            fail "the truth $s is in a file of the user's: $(grep -rlaF -- "$s" "$HOME" "$XDG_DATA_HOME" "$XDG_CONFIG_HOME")"
     done
     cmd ":submit"
     wait_for 'submitted: '
