@@ -10,18 +10,6 @@ bin=$(realpath "$1") case=$2
 . "$(dirname "$0")/lib.sh"
 W=100 H=30
 
-message() { screen | tail -3 | head -1; }
-# expect_message REGEX: polls the message line (a loaded machine may take a
-# moment to answer) for 5 s.
-expect_message() {
-    local i
-    for ((i = 0; i < 100; i++)); do
-        message | grep -Eq -- "$1" && return 0
-        sleep 0.05
-    done
-    fail "message: expected /$1/"
-}
-
 case $case in
 witness)
     # The Cazeneuve's own setup (data/setups/cazeneuve.setup): the spindle

@@ -35,6 +35,17 @@ wait_for() {
     done
     fail "waited ${limit}s for /$re/"
 }
+# The message line (above the input line), and expect_message REGEX, which
+# polls it (a loaded machine may take a moment to answer) for 5 s.
+message() { screen | tail -3 | head -1; }
+expect_message() {
+    local i
+    for ((i = 0; i < 100; i++)); do
+        message | grep -Eq -- "$1" && return 0
+        sleep 0.05
+    done
+    fail "message: expected /$1/"
+}
 keys() { T send-keys -t e2e "$@"; }
 # stty_after: waits until the pane wrote the terminal modes after the console
 # ended (the line runs `echo EXIT=...` first, then `stty -a`).

@@ -10,8 +10,6 @@ bin=$(realpath "$1") case=$2
 . "$(dirname "$0")/lib.sh"
 W=100 H=30
 
-# The message line (above the input line).
-message() { screen | tail -3 | head -1; }
 # Homed, the setup SETUP (default lathe) in the chuck, max speed, tool T in
 # the turret (default T1 D1), then JOG over the bar.
 ready() {
