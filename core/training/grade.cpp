@@ -111,7 +111,7 @@ std::string other_tool(const Probe& p) {
 // difference of two tools' gauges (the wrong corrector active); a corrector
 // holding another tool's gauge.
 std::string corrector(const Probe& p) {
-    if (p.corrector()) return p.field.front() == 'D' ? std::string() : other_tool(p);
+    if (p.corrector()) return other_tool(p);  // X Z or L only: not a DX
     if (p.head != "PREF") return {};
     const bool lathe = p.s.kind == "lathe";
     const double err = p.it.found - p.it.truth;
