@@ -132,49 +132,55 @@ bool blank_or_comment(std::string_view line) {
 
 // The programs of a file, one from each header line to the next. Text before
 // the first header forms program 0 when it holds blocks (004_rectangle.iso is
-// such a fragment).
+// such a fragment). A header is a line whose first non-blank character is
+// '%': the file is searched for '%' (rare) rather than read line by line, and
+// the lines between headers are counted in one pass (issue 14: a 28 MB
+// program was split at one memchr a line).
 std::vector<std::unique_ptr<ProgramText>> split_programs(
     const std::string& name, const std::shared_ptr<std::string>& shared) {
     std::string_view all = *shared;
     std::vector<std::unique_ptr<ProgramText>> found;
-    bool anonymous_has_blocks = false;
-    size_t pos = 0;
-    int line = 1;
     auto anon = std::make_unique<ProgramText>();
     anon->file = name;
     anon->text = shared;
     anon->begin = 0;
     anon->first_line = 1;
     ProgramText* cur = anon.get();
-    while (pos < all.size()) {
-        size_t eol = all.find('\n', pos);
+    size_t counted = 0;  // the lines before `counted` are in `line`
+    int line = 1;
+    for (size_t pct = all.find('%'); pct != std::string_view::npos; pct = all.find('%', pct + 1)) {
+        const size_t nl = pct == 0 ? std::string_view::npos : all.rfind('\n', pct - 1);
+        const size_t pos = nl == std::string_view::npos ? 0 : nl + 1;
+        size_t eol = all.find('\n', pct);
         if (eol == std::string_view::npos) eol = all.size();
-        std::string_view l = all.substr(pos, eol - pos);
         int number, index;
         std::string title;
-        if (header_line(l, number, index, title)) {
-            cur->end = pos;
-            if (cur == anon.get()) {
-                if (anonymous_has_blocks) found.push_back(std::move(anon));
-            }
-            auto p = std::make_unique<ProgramText>();
-            p->number = number;
-            p->index = index;
-            p->title = std::move(title);
-            p->file = name;
-            p->text = shared;
-            p->begin = std::min(eol + 1, all.size());
-            p->first_line = line + 1;
-            cur = p.get();
-            found.push_back(std::move(p));
-        } else if (cur == anon.get() && !anonymous_has_blocks && !blank_or_comment(l)) {
-            anonymous_has_blocks = true;
-        }
-        pos = eol + 1;
-        ++line;
+        if (!header_line(all.substr(pos, eol - pos), number, index, title)) continue;
+        line += int(std::count(all.begin() + long(counted), all.begin() + long(pos), '\n'));
+        counted = pos;
+        cur->end = pos;
+        auto p = std::make_unique<ProgramText>();
+        p->number = number;
+        p->index = index;
+        p->title = std::move(title);
+        p->file = name;
+        p->text = shared;
+        p->begin = std::min(eol + 1, all.size());
+        p->first_line = line + 1;
+        cur = p.get();
+        found.push_back(std::move(p));
+        pct = eol == all.size() ? eol - 1 : eol;
     }
     cur->end = all.size();
-    if (cur == anon.get() && anonymous_has_blocks) found.push_back(std::move(anon));
+    // Program 0: the text before the first header, when a line of it is a block.
+    bool anonymous_has_blocks = false;
+    for (size_t pos = 0; pos < anon->end && !anonymous_has_blocks;) {
+        size_t eol = all.find('\n', pos);
+        if (eol == std::string_view::npos || eol > anon->end) eol = anon->end;
+        anonymous_has_blocks = !blank_or_comment(all.substr(pos, eol - pos));
+        pos = eol + 1;
+    }
+    if (anonymous_has_blocks) found.insert(found.begin(), std::move(anon));
     return found;
 }
 }  // namespace
