@@ -493,9 +493,10 @@ inline bool Interpreter::arc_centre(const Target& to, const ArcAxes& ax, const c
 // The signed sweep from s to e about c: a full turn when they meet.
 inline double Interpreter::arc_sweep(const comp::V2& s, const comp::V2& e, const comp::V2& c,
                                      bool ccw) {
-    double as = std::atan2(s.y() - c.y(), s.x() - c.x());
-    double ae = std::atan2(e.y() - c.y(), e.x() - c.x());
-    double sw = ae - as;
+    // One atan2 of the angle between the radii, not two (issue 14: the
+    // arcs' atan2 were a tenth of a run).
+    const comp::V2 u = s - c, v = e - c;
+    double sw = std::atan2(u.x() * v.y() - u.y() * v.x(), u.x() * v.x() + u.y() * v.y());
     bool full = (e - s).norm() < 1e-7;
     if (ccw) {
         while (sw <= 1e-12) sw += 2 * kPi;
@@ -580,7 +581,7 @@ bool Interpreter::emit_arc(int g, const Axes& target, int a0, int a1, double c0,
             cm = frames_.to_machine(cm);
         }
         double mx = mach_[size_t(a0)] - cm[size_t(a0)], my = mach_[size_t(a1)] - cm[size_t(a1)];
-        const double dist = std::hypot(mx, my);
+        const double dist = std::sqrt(mx * mx + my * my);  // a margin: hypot's care is not needed
         double rm = dist + std::fabs(r1 - r0);
         bool inside = cm[size_t(a0)] - rm >= travel_lo_[size_t(a0)] &&
                       cm[size_t(a0)] + rm <= travel_hi_[size_t(a0)] &&
@@ -623,7 +624,7 @@ bool Interpreter::emit_arc(int g, const Axes& target, int a0, int a1, double c0,
     double arclen = std::fabs(sw) * (r0 + r1) / 2 * scale;
     double dh =
         helix_axis >= 0 ? std::fabs(mach[size_t(helix_axis)] - mach_[size_t(helix_axis)]) : 0;
-    e.length = std::hypot(arclen, dh);
+    e.length = dh == 0 ? arclen : std::hypot(arclen, dh);
     if (!modal_.feed_set)
         return fail(2,
                     strf(tr("no feed F programmed since G%d changed the unit"), modal_.feed_mode));
