@@ -391,17 +391,24 @@ bool Interpreter::start(const ProgramText* p) {
     return true;
 }
 
-bool Interpreter::fetch(std::string_view& line, int& lineno) {
+// The next line, read into block_ by the lane of plain blocks when it can
+// (`parsed`): the lane finds the line's end as it reads it.
+bool Interpreter::fetch(std::string_view& line, int& lineno, bool& parsed) {
     while (!stack_.empty()) {
         Frame& f = stack_.back();
         if (f.pos >= f.prog->end) {
             if (!end_of_frame()) return false;
             continue;
         }
-        std::string_view all = *f.prog->text;
-        size_t eol = all.find('\n', f.pos);
-        if (eol == std::string_view::npos || eol > f.prog->end) eol = f.prog->end;
-        line = all.substr(f.pos, eol - f.pos);
+        const std::string& all = *f.prog->text;
+        size_t len = 0;
+        parsed = parse_plain_line(all.data() + f.pos, block_, len) && f.pos + len < f.prog->end;
+        size_t eol = f.pos + len;
+        if (!parsed) {
+            eol = all.find('\n', f.pos);
+            if (eol == std::string_view::npos || eol > f.prog->end) eol = f.prog->end;
+        }
+        line = std::string_view(all).substr(f.pos, eol - f.pos);
         lineno = f.line;
         f.pos = eol + 1;
         ++f.line;
@@ -542,15 +549,16 @@ StepResult Interpreter::step() {
     if (ended_) return has_errors() ? StepResult::error : StepResult::ended;
     std::string_view line;
     int lineno;
+    bool parsed;
     for (;;) {
-        if (!fetch(line, lineno))
+        if (!fetch(line, lineno, parsed))
             return ended_ ? (has_errors() ? StepResult::error : StepResult::ended)
                           : StepResult::ended;
         loc_ = Loc{stack_.back().prog->number, lineno, -1};
         col_ = 0;
         cur_text_ = line;
         cur_line_ = lineno;
-        if (!parse_block(line, block_, parse_error_)) {
+        if (!parsed && !parse_block_general(line, block_, parse_error_)) {
             loc_.n = line_label(line);
             fail(parse_error_);
             return StepResult::error;

@@ -255,7 +255,7 @@ class Interpreter final : private EAccess {
     bool caz_m(const Plan& p, StepResult& r);
 
     // interp.cpp
-    bool fetch(std::string_view& line, int& lineno);
+    bool fetch(std::string_view& line, int& lineno, bool& parsed);
     StepResult execute(const Block& b);
     // interp_fast.cpp: the lane of plain G0-G3 blocks (issue 14), which reads
     // their words straight into a Target; nothing when the block is not one

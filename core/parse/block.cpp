@@ -103,22 +103,36 @@ inline double exact_value(const Digits& d) {
 // and O words, NC-like addresses, G76 G77 G79, a $ message, a number of more
 // than 15 digits, an error) it gives up, and the Parser reads the line from
 // its start.
-bool parse_plain(std::string_view line, Block& b) {
-    const char* p = line.data();
-    const size_t n = line.size();
+//
+// kToNewline: the line is read from `p` up to its '\n' (`n` is unused), and
+// its length left in `len`: the caller need not find the line's end first
+// (issue 14: that was one memchr a block). A '\0' (std::string's terminator,
+// past the text's end) is a character the lane does not take.
+template <bool kToNewline>
+bool plain_lane(const char* p, size_t n, Block& b, size_t& len) {
+    auto at_end = [&](size_t i) {
+        if constexpr (kToNewline)
+            return p[i] == '\n';
+        else
+            return i == n;
+    };
     size_t i = 0;
-    while (i < n && is_blank(p[i])) ++i;
-    if (i < n && p[i] == '/') {
+    while (!at_end(i) && is_blank(p[i])) ++i;
+    if (!at_end(i) && p[i] == '/') {
         b.skip = true;
         ++i;
     }
     for (;;) {
-        while (i < n && is_blank(p[i])) ++i;
-        if (i == n) return true;
+        while (!at_end(i) && is_blank(p[i])) ++i;
+        if (at_end(i)) {
+            len = i;
+            return true;
+        }
         const char c = p[i];
         if (c == '(') {
-            const size_t close = line.find(')', i);
-            if (close == std::string_view::npos) return false;
+            size_t close = i + 1;
+            while (!at_end(close) && p[close] != ')' && p[close] != '\0') ++close;
+            if (at_end(close) || p[close] != ')') return false;
             i = close + 1;
             continue;
         }
@@ -127,12 +141,12 @@ bool parse_plain(std::string_view line, Block& b) {
         w.addr = addr1(c);
         w.col = uint16_t(i + 1);
         size_t k = i + 1;
-        if (k < n && (p[k] == '+' || p[k] == '-')) {
+        if (!at_end(k) && (p[k] == '+' || p[k] == '-')) {
             w.v.has_sign = true;
             w.v.neg = p[k] == '-';
             ++k;
         }
-        const Digits d = scan_digits(p, k, n);
+        const Digits d = scan_digits(p, k, kToNewline ? SIZE_MAX : n);
         const size_t digits = d.int_digits + d.frac_digits;
         if (digits == 0 || digits > kExactDigits) return false;
         w.v.kind = Operand::Number;
@@ -148,6 +162,11 @@ bool parse_plain(std::string_view line, Block& b) {
             b.n = long(w.v.num);
         }
     }
+}
+
+bool parse_plain(std::string_view line, Block& b) {
+    size_t len;
+    return plain_lane<false>(line.data(), line.size(), b, len);
 }
 
 struct Parser {
@@ -628,6 +647,11 @@ bool parse_block(std::string_view line, Block& out, Error& e) {
 
 bool parse_block_general(std::string_view line, Block& out, Error& e) {
     return parse_line(line, out, e, false);
+}
+
+bool parse_plain_line(const char* text, Block& out, size_t& len) {
+    out.clear();
+    return plain_lane<true>(text, 0, out, len) && len <= kMaxBlockChars;
 }
 
 }  // namespace pupitre

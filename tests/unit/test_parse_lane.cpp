@@ -26,6 +26,23 @@ namespace {
                                          << general;
 }
 
+// The lane as the interpreter calls it on a program's text (parse_plain_line:
+// the line and its '\n', then the next line): when it reads the line, the
+// same Block as parse_block, and the line's length.
+::testing::AssertionResult same_in_text(const std::string& line) {
+    const std::string text = line + "\nN99 X1\n";
+    Block b;
+    size_t len = 0;
+    if (!parse_plain_line(text.c_str(), b, len)) return ::testing::AssertionSuccess();
+    const std::string lane = test::block_text(b), general = test::parse_answer(line, true);
+    if (len != line.size())
+        return ::testing::AssertionFailure() << "line \"" << line << "\": length " << len;
+    if (lane == general) return ::testing::AssertionSuccess();
+    return ::testing::AssertionFailure() << "line \"" << line << "\"\nin text:\n"
+                                         << lane << "parse_block:\n"
+                                         << general;
+}
+
 }  // namespace
 
 TEST(ParseLane, RepositoryLinesParseTheSameBothWays) {
@@ -39,7 +56,7 @@ TEST(ParseLane, RepositoryLinesParseTheSameBothWays) {
             if (!e.is_regular_file()) continue;
             std::ifstream in(e.path());
             for (std::string line; std::getline(in, line); ++lines)
-                ASSERT_TRUE(same(line)) << e.path();
+                ASSERT_TRUE(same(line) && same_in_text(line)) << e.path();
         }
     }
     EXPECT_GT(lines, 5000);
@@ -69,6 +86,20 @@ TEST(ParseLane, RandomLinesParseTheSameBothWays) {
             if (coin(rng) < 7) line += ' ';
         }
         if (coin(rng) == 0) line += tails[rng() % std::size(tails)];
-        ASSERT_TRUE(same(line));
+        ASSERT_TRUE(same(line) && same_in_text(line));
     }
+}
+
+// The lane reading a program's text stops at the line's '\n': a comment left
+// open is not closed by the next line, and the text's end ('\0') is no block.
+TEST(ParseLane, InTextTheLineEndsAtItsNewline) {
+    Block b;
+    size_t len = 0;
+    EXPECT_FALSE(parse_plain_line("N10 X1 (OPEN\nN20 (X)\n", b, len));
+    EXPECT_FALSE(parse_plain_line("N10 X1", b, len));
+    ASSERT_TRUE(parse_plain_line("N10 X1 (C) \r\nN20 Y2\n", b, len));
+    EXPECT_EQ(len, 12u);
+    EXPECT_EQ(b.words.size(), 2u);
+    const std::string longest = "N1" + std::string(kMaxBlockChars, ' ') + "\n";
+    EXPECT_FALSE(parse_plain_line(longest.c_str(), b, len));
 }
