@@ -390,9 +390,10 @@ class Interpreter final : private EAccess {
 
     const MachineProfile& m_;
     ProgramMemory& mem_;
-    MachineSink& sink_;               // the real sink
-    std::unique_ptr<GateSink> gate_;  // holds events while a compensated move waits
-    MachineSink& out_;                // where events go: the gate
+    MachineSink& sink_;                  // the real sink
+    std::unique_ptr<PlainBlock> plain_;  // the lane's words (interp_fast.cpp)
+    std::unique_ptr<GateSink> gate_;     // holds events while a compensated move waits
+    MachineSink& out_;                   // where events go: the gate
 
     // Tool radius compensation with a non-zero radius (interp_comp.cpp).
     struct CompCtx {

@@ -12,13 +12,6 @@
 
 namespace pupitre {
 
-struct Interpreter::PlainBlock {
-    Target to;
-    int g = -1;  // the G written, -1: none
-    bool has_f = false;
-    double f = 0;
-};
-
 // No family of functions may claim the block, and nothing is left over from
 // the last one: the conditions under which execute() would only change the
 // motion and the feed, and do_motion() would reach move_to().
@@ -91,7 +84,8 @@ bool Interpreter::plain_words(const Block& b, PlainBlock& w) const {
 // profile geometry's).
 std::optional<StepResult> Interpreter::execute_plain(const Block& b) {
     if (!b.assigns.empty() || b.msg_channel >= 0 || !plain_state()) return std::nullopt;
-    PlainBlock w;
+    PlainBlock& w = *plain_;
+    w.clear();
     if (!plain_words(b, w)) return std::nullopt;
     const Target& to = w.to;
     const int motion = w.g >= 0 ? w.g : modal_.motion;

@@ -32,6 +32,25 @@ struct Interpreter::Target : AxisValues {
     bool em = false;  // EM+/EM-: the axis words are graphic extremes
 };
 
+// The words of a plain block (interp_fast.cpp), kept from one block to the
+// next: clearing its flags is a few stores where a fresh one was 168 bytes
+// zeroed a block (issue 14). A value is read only where its flag is set.
+struct Interpreter::PlainBlock {
+    Target to;
+    int g = -1;  // the G written, -1: none
+    bool has_f = false;
+    double f = 0;
+    void clear() {
+        to.axis.reset();
+        to.inc.reset();
+        to.ijk.reset();
+        to.ijk_inc.reset();
+        to.has_r = false;
+        g = -1;
+        has_f = false;
+    }
+};
+
 struct Interpreter::Plan {
     // The modal groups the block sets; -1: not coded (the last G of a group wins).
     struct Modes {
