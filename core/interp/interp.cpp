@@ -18,6 +18,7 @@ Interpreter::Interpreter(const MachineProfile& m, ProgramMemory& mem, MachineSin
     : m_(m),
       mem_(mem),
       sink_(sink),
+      plain_(std::make_unique<PlainBlock>()),
       gate_(std::make_unique<GateSink>(sink)),
       out_(*gate_),
       opt_(o) {
@@ -400,7 +401,9 @@ bool Interpreter::fetch(std::string_view& line, int& lineno, bool& parsed) {
             if (!end_of_frame()) return false;
             continue;
         }
-        const std::string& all = *f.prog->text;
+        // The text ends with '\n' (load_text, Text::map) and a string's
+        // with a '\0' past it: the lane never reads past the text's end.
+        const Text& all = *f.prog->text;
         size_t len = 0;
         parsed = parse_plain_line(all.data() + f.pos, block_, len) && f.pos + len < f.prog->end;
         size_t eol = f.pos + len;
@@ -408,7 +411,7 @@ bool Interpreter::fetch(std::string_view& line, int& lineno, bool& parsed) {
             eol = all.find('\n', f.pos);
             if (eol == std::string_view::npos || eol > f.prog->end) eol = f.prog->end;
         }
-        line = std::string_view(all).substr(f.pos, eol - f.pos);
+        line = all.view().substr(f.pos, eol - f.pos);
         lineno = f.line;
         f.pos = eol + 1;
         ++f.line;

@@ -83,7 +83,7 @@ bool upper(char c) {
 
 // The L and E assignments that open one line [pos, eol), after its label.
 bool Interpreter::transfer_line(const ProgramText* target, size_t pos, size_t eol) {
-    const std::string& text = *target->text;
+    const std::string_view text = *target->text;
     size_t i = pos;
     auto spaces = [&]() {
         while (i < eol && (text[i] == ' ' || text[i] == '\t')) ++i;
@@ -134,7 +134,7 @@ bool Interpreter::transfer_field(const ProgramText* target, bool is_l, long n, s
         return fail(97, strf(tr("G76: the value %s does not fit the field after %c%ld"),
                              value.c_str(), is_l ? 'L' : 'E', n));
     value.resize(width, ' ');
-    target->text->replace(field, width, value);
+    target->text->str().replace(field, width, value);
     if (mem_.find(target->number) == target)
         mem_.mark_changed(target->number);  // not an IMD fragment
     return true;

@@ -2,6 +2,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/parse/program.hpp"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -55,31 +59,34 @@ const Label* ProgramText::find_label(long n) const {
 }
 
 bool ProgramMemory::load_file(const std::string& path, Diag& d) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        d = Diag{Severity::error, err::kCannotRead, path, -1, 0, -1, 0, tr("cannot open the file")};
+    auto cannot = [&](const char* why) {
+        d = Diag{Severity::error, err::kCannotRead, path, -1, 0, -1, 0, tr(why)};
         return false;
-    }
-    // A regular file is read in one piece (a program is kept whole in memory
-    // anyway); a pipe or a terminal is read to its end.
-    std::error_code ec;
+    };
+    // A large regular file is mapped (text.hpp); a smaller one is read in one
+    // piece (a program is kept whole in memory anyway); a pipe or a terminal
+    // is read to its end.
+    const int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return cannot(N_("cannot open the file"));
+    struct stat st {};
+    const bool regular = fstat(fd, &st) == 0 && S_ISREG(st.st_mode);
+    std::shared_ptr<Text> mapped;
+    if (regular && size_t(st.st_size) >= kMapFrom) mapped = Text::map(fd, size_t(st.st_size));
+    close(fd);
+    if (mapped) return load_shared(path, std::move(mapped), d);
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return cannot(N_("cannot open the file"));
     std::string text;
-    if (std::filesystem::is_regular_file(path, ec)) {
-        auto size = std::filesystem::file_size(path, ec);
-        if (!ec) {
-            text.resize(size_t(size));
-            in.read(text.data(), std::streamsize(size));
-            text.resize(size_t(in.gcount()));
-        }
+    if (regular) {
+        text.resize(size_t(st.st_size));
+        in.read(text.data(), std::streamsize(text.size()));
+        text.resize(size_t(in.gcount()));
     } else {
         std::ostringstream ss;
         ss << in.rdbuf();
         text = std::move(ss).str();
     }
-    if (in.bad()) {
-        d = Diag{Severity::error, err::kCannotRead, path, -1, 0, -1, 0, tr("read error")};
-        return false;
-    }
+    if (in.bad()) return cannot(N_("read error"));
     return load_text(path, std::move(text), d);
 }
 
@@ -136,8 +143,8 @@ bool blank_or_comment(std::string_view line) {
 // '%': the file is searched for '%' (rare) rather than read line by line, and
 // the lines between headers are counted in one pass (issue 14: a 28 MB
 // program was split at one memchr a line).
-std::vector<std::unique_ptr<ProgramText>> split_programs(
-    const std::string& name, const std::shared_ptr<std::string>& shared) {
+std::vector<std::unique_ptr<ProgramText>> split_programs(const std::string& name,
+                                                         const std::shared_ptr<Text>& shared) {
     std::string_view all = *shared;
     std::vector<std::unique_ptr<ProgramText>> found;
     auto anon = std::make_unique<ProgramText>();
@@ -186,8 +193,14 @@ std::vector<std::unique_ptr<ProgramText>> split_programs(
 }  // namespace
 
 bool ProgramMemory::load_text(std::string name, std::string text, Diag& d) {
+    // Every line ends with '\n', so G76+ can insert after the last one.
+    if (!text.empty() && text.back() != '\n') text.push_back('\n');
+    return load_shared(name, std::make_shared<Text>(std::move(text)), d);
+}
+
+bool ProgramMemory::load_shared(const std::string& name, std::shared_ptr<Text> shared, Diag& d) {
     // A NUL byte is never part of a program: refuse binary input up front.
-    if (text.find('\0') != std::string::npos) {
+    if (shared->find('\0') != std::string_view::npos) {
         d = Diag{Severity::error,
                  err::kNotText,
                  name,
@@ -198,9 +211,6 @@ bool ProgramMemory::load_text(std::string name, std::string text, Diag& d) {
                  tr("not a text file (NUL byte found)")};
         return false;
     }
-    // Every line ends with '\n', so G76+ can insert after the last one.
-    if (!text.empty() && text.back() != '\n') text.push_back('\n');
-    auto shared = std::make_shared<std::string>(std::move(text));
     std::vector<std::unique_ptr<ProgramText>> found = split_programs(name, shared);
     if (found.empty()) {
         d = Diag{
@@ -239,13 +249,13 @@ std::string program_text(const ProgramText& p) {
 
 ProgramMemory ProgramMemory::clone() const {
     ProgramMemory out;
-    std::vector<std::pair<const std::string*, std::shared_ptr<std::string>>> copies;
+    std::vector<std::pair<const Text*, std::shared_ptr<Text>>> copies;
     for (const auto& p : progs_) {
         auto q = std::make_unique<ProgramText>(*p);
         auto it = std::find_if(copies.begin(), copies.end(),
                                [&](const auto& c) { return c.first == p->text.get(); });
         if (it == copies.end()) {
-            copies.push_back({p->text.get(), std::make_shared<std::string>(*p->text)});
+            copies.push_back({p->text.get(), std::make_shared<Text>(*p->text)});
             it = copies.end() - 1;
         }
         q->text = it->second;
@@ -259,7 +269,7 @@ const ProgramText* ProgramMemory::create(int number) {
     auto p = std::make_unique<ProgramText>();
     p->number = number;
     p->file = "%" + std::to_string(number);
-    p->text = std::make_shared<std::string>("%" + std::to_string(number) + "\n");
+    p->text = std::make_shared<Text>("%" + std::to_string(number) + "\n");
     p->begin = p->end = p->text->size();
     p->first_line = 2;
     progs_.push_back(std::move(p));
@@ -279,7 +289,7 @@ bool ProgramMemory::remove(int number) {
 }
 
 Splice ProgramMemory::splice(const ProgramText* p, size_t at, size_t del, std::string_view ins) {
-    std::string& text = *p->text;
+    std::string& text = p->text->str();
     auto lines_in = [](std::string_view t) { return int(std::count(t.begin(), t.end(), '\n')); };
     const int line_at =
         p->first_line + lines_in(std::string_view(text).substr(p->begin, at - p->begin));

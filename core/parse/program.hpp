@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/diag.hpp"
+#include "core/parse/text.hpp"
 
 namespace pupitre {
 
@@ -21,14 +22,14 @@ struct Label {
 // One % program. Blocks are parsed when executed, so a million-block program costs
 // its text plus a few bytes a labelled line, and only if it jumps.
 struct ProgramText {
-    int number = 0;                     // %number; 0 for a file with no % header
-    int index = -1;                     // %number.index, -1 if none
-    std::string title;                  // the header comment
-    std::string file;                   // where it was loaded from
-    std::shared_ptr<std::string> text;  // the whole file (G76 rewrites value fields in place)
-    size_t begin = 0;                   // first byte of the first block line
-    size_t end = 0;                     // one past the last byte of the program
-    int first_line = 1;                 // line number at `begin`
+    int number = 0;              // %number; 0 for a file with no % header
+    int index = -1;              // %number.index, -1 if none
+    std::string title;           // the header comment
+    std::string file;            // where it was loaded from
+    std::shared_ptr<Text> text;  // the whole file (G76 rewrites value fields in place)
+    size_t begin = 0;            // first byte of the first block line
+    size_t end = 0;              // one past the last byte of the program
+    int first_line = 1;          // line number at `begin`
 
     std::string_view body() const { return std::string_view(*text).substr(begin, end - begin); }
     // First block (in text order) whose label is n; nullptr if none.
@@ -61,6 +62,8 @@ class ProgramMemory {
     bool load_file(const std::string& path, Diag& d);
     // Loads programs from text already in memory (tests, the store).
     bool load_text(std::string name, std::string text, Diag& d);
+    // A file of this size or more is mapped, not read (text.hpp).
+    static constexpr size_t kMapFrom = size_t(1) << 20;
 
     // Replaces the text of program `number` in place (the editor's save, MODIF):
     // pointers to it stay valid, its labels are indexed again. Adds it when it
@@ -95,6 +98,7 @@ class ProgramMemory {
     std::vector<Diag>& warnings() { return warnings_; }
 
   private:
+    bool load_shared(const std::string& name, std::shared_ptr<Text> text, Diag& d);
     std::vector<std::unique_ptr<ProgramText>> progs_;
     std::vector<std::unique_ptr<ProgramText>> removed_;  // G76-: kept for the pointers
     std::vector<int> changed_;

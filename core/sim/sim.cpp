@@ -151,7 +151,7 @@ std::string Sim::imd(std::string_view blocks) {
     if (in_cycle()) return tr("the previous IMD block is still running");
     imd_ = std::make_unique<ProgramText>();
     imd_->file = "IMD";
-    imd_->text = std::make_shared<std::string>(std::string(blocks) + "\n");
+    imd_->text = std::make_shared<Text>(std::string(blocks) + "\n");
     imd_->end = imd_->text->size();
     invalidate_text_cache();  // the cache may know the old block's address
     if (state_ == RunState::ended) state_ = RunState::idle;

@@ -26,7 +26,7 @@ TEST(Setting, TheCourseNotesExam) {
     ASSERT_EQ(in.set("DEC1.Z", 0), "");
     ProgramText imd;  // T1 D1 M6 typed in IMD: D1 stays active (M02 would cancel it)
     imd.file = "IMD";
-    imd.text = std::make_shared<std::string>("T1 D1 M6\n");
+    imd.text = std::make_shared<Text>("T1 D1 M6\n");
     imd.end = imd.text->size();
     in.start_imd(&imd);
     in.run_to_end();
