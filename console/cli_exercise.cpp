@@ -16,6 +16,7 @@
 #include "console/exercise.hpp"
 #include "core/i18n.hpp"
 #include "core/output/cairo_plot.hpp"
+#include "core/output/plot_module.hpp"
 #include "store/store.hpp"
 
 namespace pupitre::cli {
@@ -224,7 +225,10 @@ int report_pdf(const std::string& path, const std::string& title,
     }
     const bool ok = write_text_pdf(title, lines, out);
     if (std::fclose(out) != 0 || !ok) {
-        std::fprintf(stderr, tr("pupitre: cannot write %s\n"), path.c_str());
+        if (const std::string why = plot_module_error(); !why.empty())
+            std::fprintf(stderr, tr("pupitre: cannot write %s: %s\n"), path.c_str(), why.c_str());
+        else
+            std::fprintf(stderr, tr("pupitre: cannot write %s\n"), path.c_str());
         return kCantCreate;
     }
     std::printf(tr("the report written to %s\n"), path.c_str());

@@ -14,6 +14,7 @@
 #include "core/i18n.hpp"
 #include "core/interp/interp.hpp"
 #include "core/output/cairo_plot.hpp"
+#include "core/output/plot_module.hpp"
 #include "core/output/scene.hpp"
 #include "core/output/svg.hpp"
 #include "core/output/toolpath.hpp"
@@ -116,8 +117,12 @@ int write_out(const Output& o, const Scene& scene, const PlotArgs& a) {
     bool ok = o.write(scene, a, f);
     int err = errno;
     if (f != stdout && std::fclose(f) != 0) ok = false;
+    if (!ok && f != stdout) std::remove(name.c_str());  // no half-written picture
     if (!ok) {
-        if (err)
+        if (const std::string why = plot_module_error(); !why.empty() && o.file != &PlotArgs::svg)
+            std::fprintf(stderr, tr("pupitre: %s: cannot write the %s: %s\n"), name.c_str(), o.what,
+                         why.c_str());
+        else if (err)
             std::fprintf(stderr, tr("pupitre: %s: cannot write the %s: %s\n"), name.c_str(), o.what,
                          std::strerror(err));
         else

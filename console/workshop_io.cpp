@@ -8,6 +8,7 @@
 
 #include "core/i18n.hpp"
 #include "core/output/height_png.hpp"
+#include "core/output/plot_module.hpp"
 #include "core/training/exercise.hpp"
 #include "core/workshop/report.hpp"
 
@@ -52,7 +53,9 @@ int write_mill(const std::string& path, const workshop::MillWorld& m, const std:
     bool ok = write_gray16_png(v, m.nx(), m.ny(), f);
     ok = std::fclose(f) == 0 && ok;
     if (!ok) {
-        why = strf(tr("cannot write %s"), path.c_str());
+        const std::string module = plot_module_error();
+        why = module.empty() ? strf(tr("cannot write %s"), path.c_str())
+                             : strf(tr("cannot write %s: %s"), path.c_str(), module.c_str());
         return 74;
     }
     const std::string json = path.substr(0, path.size() - 4) + ".json";

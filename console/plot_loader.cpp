@@ -1,0 +1,107 @@
+// write_png, write_pdf, write_text_pdf and write_gray16_png for the
+// executable: forwarded to the plot module (core/output/plot_module.hpp),
+// opened at the first call. The module is the file PUPITRE_PLOT_MODULE names,
+// or else it is looked for next to the executable
+// (the build tree), in ../lib/pupitre from it (an installation), then in the
+// build tree it was built in. When none loads, each writer fails and
+// plot_module_error() says why, for the caller's message.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <dlfcn.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "core/i18n.hpp"
+#include "core/output/cairo_plot.hpp"
+#include "core/output/height_png.hpp"
+#include "core/output/plot_module.hpp"
+
+#ifndef PUPITRE_PLOT_BUILD_DIR
+#define PUPITRE_PLOT_BUILD_DIR ""
+#endif
+
+namespace pupitre {
+namespace {
+
+namespace fs = std::filesystem;
+
+const PlotModule* open_file(const fs::path& file, std::string& why) {
+    void* h = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (!h) {
+        why = dlerror();
+        return nullptr;
+    }
+    using Entry = const PlotModule* (*)();
+    auto entry = reinterpret_cast<Entry>(dlsym(h, PUPITRE_PLOT_ENTRY));
+    if (!entry) {
+        why = dlerror();
+        dlclose(h);
+        return nullptr;
+    }
+    return entry();  // kept open: the writers live in it
+}
+
+const PlotModule* open_module(std::string& why) {
+    std::error_code ec;
+    // PUPITRE_PLOT_MODULE: that file and no other (a package's own place).
+    if (const char* file = std::getenv("PUPITRE_PLOT_MODULE"); file && *file) {
+        if (!fs::exists(file, ec)) {
+            why = strf(tr("%s not found (PUPITRE_PLOT_MODULE)"), file);
+            return nullptr;
+        }
+        return open_file(file, why);
+    }
+    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+    std::vector<fs::path> dirs;
+    if (!ec) {
+        dirs.push_back(exe.parent_path());
+        dirs.push_back(exe.parent_path().parent_path() / "lib" / "pupitre");
+    }
+    if (*PUPITRE_PLOT_BUILD_DIR) dirs.push_back(PUPITRE_PLOT_BUILD_DIR);
+    for (const fs::path& d : dirs) {
+        const fs::path file = d / PUPITRE_PLOT_FILE;
+        if (fs::exists(file, ec)) return open_file(file, why);
+    }
+    why = strf(tr("%s not found next to the executable or in ../lib/pupitre"), PUPITRE_PLOT_FILE);
+    return nullptr;
+}
+
+std::string why_not;  // why the module did not load
+
+// The module, opened once (the batch commands and the console's thread).
+const PlotModule* module() {
+    static const PlotModule* const m = open_module(why_not);
+    return m;
+}
+
+}  // namespace
+
+std::string plot_module_error() {
+    return module() ? std::string() : why_not;
+}
+
+bool write_png(const Scene& scene, int width, std::FILE* out) {
+    const PlotModule* m = module();
+    return m && m->png(scene, width, out);
+}
+
+bool write_pdf(const Scene& scene, std::FILE* out) {
+    const PlotModule* m = module();
+    return m && m->pdf(scene, out);
+}
+
+bool write_text_pdf(const std::string& title, const std::vector<std::string>& lines,
+                    std::FILE* out) {
+    const PlotModule* m = module();
+    return m && m->text_pdf(title, lines, out);
+}
+
+bool write_gray16_png(const std::vector<uint16_t>& values, int width, int height, std::FILE* out) {
+    const PlotModule* m = module();
+    return m && m->gray16_png(values, width, height, out);
+}
+
+}  // namespace pupitre

@@ -1,0 +1,14 @@
+// The plot module's entry (plot_module.hpp): its table of the Cairo and
+// libpng writers. Everything else in the module is hidden.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/output/plot_module.hpp"
+
+#include "core/output/cairo_plot.hpp"
+#include "core/output/height_png.hpp"
+
+extern "C" __attribute__((visibility("default"))) const pupitre::PlotModule*
+pupitre_plot_module_v1() {
+    static const pupitre::PlotModule kModule{&pupitre::write_png, &pupitre::write_pdf,
+                                             &pupitre::write_text_pdf, &pupitre::write_gray16_png};
+    return &kModule;
+}

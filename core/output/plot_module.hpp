@@ -1,0 +1,35 @@
+// The plot module's interface (libpupitre-cairo.so): Cairo and libpng, with
+// the twenty libraries they bring, are loaded only by the commands that draw
+// a PNG or a PDF. Linked into the executable, they were half of the start of
+// every command, `pupitre run` of a short program included (issue 14: 2 ms
+// of a 44 ms run). console/plot_loader.cpp opens the module and forwards
+// write_png, write_pdf, write_text_pdf and write_gray16_png to it.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "core/output/scene.hpp"
+
+namespace pupitre {
+
+// The version in the entry's name changes with this table.
+struct PlotModule {
+    bool (*png)(const Scene& scene, int width, std::FILE* out);
+    bool (*pdf)(const Scene& scene, std::FILE* out);
+    bool (*text_pdf)(const std::string& title, const std::vector<std::string>& lines,
+                     std::FILE* out);
+    bool (*gray16_png)(const std::vector<uint16_t>& values, int width, int height, std::FILE* out);
+};
+
+// In the executable (console/plot_loader.cpp): why the module cannot be
+// loaded, empty when it is; the writers then fail.
+std::string plot_module_error();
+
+}  // namespace pupitre
+
+// The module's one exported symbol.
+#define PUPITRE_PLOT_ENTRY "pupitre_plot_module_v1"
+#define PUPITRE_PLOT_FILE "libpupitre-cairo.so"
