@@ -405,7 +405,8 @@ bool Interpreter::fetch(std::string_view& line, int& lineno, bool& parsed) {
         // with a '\0' past it: the lane never reads past the text's end.
         const Text& all = *f.prog->text;
         size_t len = 0;
-        parsed = parse_plain_line(all.data() + f.pos, block_, len) && f.pos + len < f.prog->end;
+        parsed = parse_plain_line(all.data() + f.pos, all.size() - f.pos, block_, len) &&
+                 f.pos + len < f.prog->end;
         size_t eol = f.pos + len;
         if (!parsed) {
             eol = all.find('\n', f.pos);

@@ -71,15 +71,23 @@ struct Digits {
 inline unsigned digit_at(const char* p, size_t i) {
     return unsigned(uint8_t(p[i])) - unsigned('0');
 }
+// The digits at `i` (before `n`) appended to `m`; returns one past the last.
+// (Eight at a time, with 64-bit arithmetic, measured 6% more instructions a
+// block on g17_mix, whose numbers have 3 or 4 digits a side: issue 14.)
+inline size_t digit_run(const char* p, size_t i, size_t n, uint64_t& m) {
+    for (unsigned v; i < n && (v = digit_at(p, i)) <= 9; ++i) m = m * 10 + v;
+    return i;
+}
+
 inline Digits scan_digits(const char* p, size_t i, size_t n) {
     Digits d;
     const size_t start = i;
     uint64_t m = 0;
-    for (unsigned v; i < n && (v = digit_at(p, i)) <= 9; ++i) m = m * 10 + v;
+    i = digit_run(p, i, n, m);
     d.int_digits = i - start;
     if (i < n && p[i] == '.') {
         const size_t f = ++i;
-        for (unsigned v; i < n && (v = digit_at(p, i)) <= 9; ++i) m = m * 10 + v;
+        i = digit_run(p, i, n, m);
         d.frac_digits = i - f;
     }
     d.m = m;
@@ -104,8 +112,9 @@ inline double exact_value(const Digits& d) {
 // than 15 digits, an error) it gives up, and the Parser reads the line from
 // its start.
 //
-// kToNewline: the line is read from `p` up to its '\n' (`n` is unused), and
-// its length left in `len`: the caller need not find the line's end first
+// kToNewline: the line is read from `p` up to its '\n' (`n`, the bytes that
+// follow `p`, bounds the reads of digits), and its
+// length left in `len`: the caller need not find the line's end first
 // (issue 14: that was one memchr a block). A '\0' (std::string's terminator,
 // past the text's end) is a character the lane does not take.
 template <bool kToNewline>
@@ -146,7 +155,7 @@ bool plain_lane(const char* p, size_t n, Block& b, size_t& len) {
             w.v.neg = p[k] == '-';
             ++k;
         }
-        const Digits d = scan_digits(p, k, kToNewline ? SIZE_MAX : n);
+        const Digits d = scan_digits(p, k, n);
         const size_t digits = d.int_digits + d.frac_digits;
         if (digits == 0 || digits > kExactDigits) return false;
         w.v.kind = Operand::Number;
@@ -649,9 +658,9 @@ bool parse_block_general(std::string_view line, Block& out, Error& e) {
     return parse_line(line, out, e, false);
 }
 
-bool parse_plain_line(const char* text, Block& out, size_t& len) {
+bool parse_plain_line(const char* text, size_t avail, Block& out, size_t& len) {
     out.clear();
-    return plain_lane<true>(text, 0, out, len) && len <= kMaxBlockChars;
+    return plain_lane<true>(text, avail, out, len) && len <= kMaxBlockChars;
 }
 
 }  // namespace pupitre

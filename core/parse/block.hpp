@@ -128,9 +128,10 @@ bool parse_block(std::string_view line, Block& out, Error& e);
 // (tests/unit/test_parse_lane.cpp) compares the lane with.
 bool parse_block_general(std::string_view line, Block& out, Error& e);
 // The lane of plain blocks alone, on the text of a line that ends with '\n'
-// (a program's text): true when the lane reads the line, whose length before
-// its '\n' it leaves in `len`; false when the line needs parse_block_general
-// (`out` then holds nothing of use). The same Block as parse_block.
-bool parse_plain_line(const char* text, Block& out, size_t& len);
+// (a program's text, `avail` bytes from `text` to its end): true when the
+// lane reads the line, whose length before its '\n' it leaves in `len`;
+// false when the line needs parse_block_general (`out` then holds nothing of
+// use). The same Block as parse_block.
+bool parse_plain_line(const char* text, size_t avail, Block& out, size_t& len);
 
 }  // namespace pupitre

@@ -5,6 +5,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -33,7 +34,7 @@ namespace {
     const std::string text = line + "\nN99 X1\n";
     Block b;
     size_t len = 0;
-    if (!parse_plain_line(text.c_str(), b, len)) return ::testing::AssertionSuccess();
+    if (!parse_plain_line(text.c_str(), text.size(), b, len)) return ::testing::AssertionSuccess();
     const std::string lane = test::block_text(b), general = test::parse_answer(line, true);
     if (len != line.size())
         return ::testing::AssertionFailure() << "line \"" << line << "\": length " << len;
@@ -95,11 +96,47 @@ TEST(ParseLane, RandomLinesParseTheSameBothWays) {
 TEST(ParseLane, InTextTheLineEndsAtItsNewline) {
     Block b;
     size_t len = 0;
-    EXPECT_FALSE(parse_plain_line("N10 X1 (OPEN\nN20 (X)\n", b, len));
-    EXPECT_FALSE(parse_plain_line("N10 X1", b, len));
-    ASSERT_TRUE(parse_plain_line("N10 X1 (C) \r\nN20 Y2\n", b, len));
+    EXPECT_FALSE(parse_plain_line("N10 X1 (OPEN\nN20 (X)\n", 21, b, len));
+    EXPECT_FALSE(parse_plain_line("N10 X1", 6, b, len));
+    ASSERT_TRUE(parse_plain_line("N10 X1 (C) \r\nN20 Y2\n", 20, b, len));
     EXPECT_EQ(len, 12u);
     EXPECT_EQ(b.words.size(), 2u);
     const std::string longest = "N1" + std::string(kMaxBlockChars, ' ') + "\n";
-    EXPECT_FALSE(parse_plain_line(longest.c_str(), b, len));
+    EXPECT_FALSE(parse_plain_line(longest.c_str(), longest.size(), b, len));
+}
+
+// Every length of integer and fraction part up to the exact 15 digits, at
+// every alignment, followed by a letter, a space, the line's end or a byte
+// from 0xFA up, must give the value strtod gives (the lane and the general
+// parser share the digit scanner, so the differential tests cannot see it).
+TEST(ParseLane, NumbersOfEveryLengthAndAlignmentReadExactly) {
+    std::mt19937_64 rng(14);
+    const std::string after[] = {"", " Y1", "Y", "\xfa", "\xff", "(C)", "\xc3\xa9"};
+    for (int pad = 0; pad < 8; ++pad)
+        for (int whole = 0; whole <= 15; ++whole)
+            for (int frac = -1; frac <= 15 - whole; ++frac) {
+                if (whole == 0 && frac <= 0) continue;
+                std::string num;
+                for (int k = 0; k < whole; ++k) num += char('0' + rng() % 10);
+                if (frac >= 0) num += '.';
+                for (int k = 0; k < frac; ++k) num += char('0' + rng() % 10);
+                const double want = std::strtod(num.c_str(), nullptr);
+                for (const std::string& tail : after) {
+                    const std::string line = std::string(size_t(pad), ' ') + "X" + num + tail;
+                    Block b;
+                    Error e;
+                    parse_block(
+                        line, b,
+                        e);  // a stray byte after it may be an error: the value is read first
+                    ASSERT_FALSE(b.words.empty()) << line;
+                    EXPECT_EQ(b.words[0].v.num, want) << line;
+                    EXPECT_EQ(b.words[0].v.int_digits, whole) << line;
+                    EXPECT_EQ(b.words[0].v.frac_digits, std::max(frac, 0)) << line;
+                    const std::string text = line + "\n";
+                    size_t len = 0;
+                    if (parse_plain_line(text.c_str(), text.size(), b, len)) {
+                        EXPECT_EQ(b.words[0].v.num, want) << line;
+                    }
+                }
+            }
 }
