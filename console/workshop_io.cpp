@@ -53,6 +53,7 @@ int write_mill(const std::string& path, const workshop::MillWorld& m, const std:
     bool ok = write_gray16_png(v, m.nx(), m.ny(), f);
     ok = std::fclose(f) == 0 && ok;
     if (!ok) {
+        std::remove(path.c_str());  // no half-written picture
         const std::string module = plot_module_error();
         why = module.empty() ? strf(tr("cannot write %s"), path.c_str())
                              : strf(tr("cannot write %s: %s"), path.c_str(), module.c_str());

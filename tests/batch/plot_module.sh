@@ -34,4 +34,15 @@ echo 'not a library' >"$work/bad.so"
 PUPITRE_PLOT_MODULE=$work/bad.so "$bin" plot --pdf "$work/r.pdf" "$prog" 2>"$work/err"
 [ $? -ne 0 ] || fail "plot --pdf with a broken module should fail"
 grep -q "cannot write the PDF: .*bad.so" "$work/err" || fail "dlopen's reason: $(cat "$work/err")"
+# The machining centre's part as a PNG (--part-out; :part export in the
+# console): without the module, the reason, and no file.
+printf '%%1\nN10 G0 X0 Y0 Z50\nN20 M2\n' >"$work/m.iso"
+PUPITRE_PLOT_MODULE=$work/missing.so "$bin" run --machine mill --setup mill --part-out "$work/part.png" \
+    "$work/m.iso" >/dev/null 2>"$work/err"
+[ $? -ne 0 ] || fail "--part-out PNG without the module should fail"
+grep -q "cannot write .*part.png: .*missing.so not found" "$work/err" || fail "--part-out: $(cat "$work/err")"
+[ -e "$work/part.png" ] && fail "no part PNG should be left behind"
+"$bin" run --machine mill --setup mill --part-out "$work/part.png" "$work/m.iso" >/dev/null 2>"$work/err" ||
+    fail "--part-out with the module: $(cat "$work/err")"
+[ -s "$work/part.png" ] || fail "--part-out with the module wrote no PNG"
 echo ok
