@@ -7,6 +7,7 @@
 #include <charconv>
 #include <cmath>
 
+#include "core/geometry/geometry.hpp"
 #include "core/i18n.hpp"
 #include "core/numfmt.hpp"
 #include "core/workshop/workshop.hpp"
@@ -123,12 +124,71 @@ Cutter Workshop::cutter(double grow) const {
     return c;
 }
 
+// In the table's frame: a C table turned by C carries the part round its
+// axis, so the tool is where the machine point is, turned by C about that
+// axis in the part's frame at C0 (the tool frame in the part's, forward5 of
+// core/geometry/kinematics.cpp: Rot_Z(C) about the table's axis).
 P3 Workshop::tip3(const Axes& om) const {
     const Tool* t = current();
-    if (!t) return {om[X], om[Y], om[Z]};
-    const ToolTruth& tt = *t->truth;
-    const double w = tt.wear > 0 ? tt.wear * 1e-3 * (t->cut / 1000) : 0;
-    return {om[X], om[Y], om[Z] - (tt.length - w)};
+    double length = 0;
+    if (t) {
+        const ToolTruth& tt = *t->truth;
+        length = tt.length - (tt.wear > 0 ? tt.wear * 1e-3 * (t->cut / 1000) : 0);
+    }
+    double x = om[X], y = om[Y];
+    if (m_.has(C) && om[C] != 0) {
+        const double a = om[C] * geometry::kDeg, cx = setup_.mill.c_x, cy = setup_.mill.c_y;
+        const double dx = x - cx, dy = y - cy;
+        x = cx + dx * std::cos(a) - dy * std::sin(a);
+        y = cy + dx * std::sin(a) + dy * std::cos(a);
+    }
+    return {x, y, om[Z] - length};
+}
+
+// The workshop's cutter stays vertical to the table: a move that ends with B
+// away from 0 is stopped at its start (a move back to B0 is let through).
+bool Workshop::tilted(const MoveEvent& e, Outcome& o) {
+    if (!m_.has(B) || std::fabs(e.to_mach[B]) < 1e-9) return false;
+    Crash cr;
+    cr.code = kNotModelled;
+    cr.loc = e.loc;
+    cr.tool = tool_;
+    cr.om = e.from_mach;
+    cr.fraction = 0;
+    cr.what = strf(tr("B%s: the workshop models the tool vertical to the table (B0) only; the "
+                      "move is not made (without the workshop: :setup off)"),
+                   fixed3(e.to_mach[B]).c_str());
+    crashes_.push_back(cr);
+    o.crashed = true;
+    o.stop = e.from_mach;
+    o.fraction = 0;
+    o.what = cr.what;
+    return true;
+}
+
+// A jog of C: the part turns under the tool along an arc about the table's
+// axis, made as the jogs of its chords, up to the first that stops.
+Outcome Workshop::mill_jog_c(const MoveEvent& e, bool continuous) {
+    std::vector<Axes> oms;
+    path_of(e, oms);
+    const double span = e.to_mach[C] - e.from_mach[C];
+    in_turn_ = true;
+    struct Done {
+        bool& flag;
+        ~Done() { flag = false; }
+    } done{in_turn_};
+    for (size_t i = 0; i + 1 < oms.size(); ++i) {
+        MoveEvent piece = e;
+        piece.g = 1;
+        piece.from_mach = oms[i];
+        piece.to_mach = oms[i + 1];
+        Outcome o = mill_jog(piece, continuous);
+        if (!o.crashed && !o.touched) continue;
+        o.fraction = span != 0 ? (o.stop[C] - e.from_mach[C]) / span : 1;
+        if (o.crashed) crashes_.back().fraction = o.fraction;
+        return o;
+    }
+    return {};
 }
 
 // How deep the cutter is into anything at `tip`, and what.
@@ -281,7 +341,7 @@ void Workshop::mill_crash(const MoveEvent& e, int flute_code, const Contact& hit
 
 Outcome Workshop::mill_apply(const MoveEvent& e) {
     Outcome o;
-    if (crashed()) return o;
+    if (crashed() || tilted(e, o)) return o;
     std::vector<Axes> oms;
     path_of(e, oms);
     std::vector<double> at(oms.size(), 0);  // the path's length at each point
@@ -305,7 +365,8 @@ Outcome Workshop::mill_apply(const MoveEvent& e) {
 // holder with the block, a fixture or the shim stops the move.
 Outcome Workshop::mill_jog(const MoveEvent& e, bool continuous) {
     Outcome o;
-    if (!current() || crashed()) return o;
+    if (!current() || crashed() || tilted(e, o)) return o;
+    if (m_.has(C) && e.to_mach[C] != e.from_mach[C] && !in_turn_) return mill_jog_c(e, continuous);
     const P3 a = tip3(e.from_mach), b = tip3(e.to_mach);
     Met what = Met::none;
     const bool touching = mill_depth(cutter(kNear), below(a, kNear), what) > kTouchDepth;

@@ -13,6 +13,7 @@ namespace pupitre {
 namespace data {
 std::string_view setup_lathe();
 std::string_view setup_mill();
+std::string_view setup_mill5();
 std::string_view setup_cazeneuve();
 }  // namespace data
 
@@ -84,6 +85,8 @@ constexpr KeyOf<MillSetup> kMillKeys[] = {
     {"setter.y", -kBig, kBig, &MillSetup::setter_y},
     {"setter.diameter", 2, 100, &MillSetup::setter_diameter},
     {"zmap.cell", 0.02, 2, &MillSetup::cell},
+    {"table.c.x", -kBig, kBig, &MillSetup::c_x},
+    {"table.c.y", -kBig, kBig, &MillSetup::c_y},
 };
 
 constexpr KeyOf<Pin> kPinKeys[] = {
@@ -350,6 +353,7 @@ std::string parse_setup(std::string_view text, Setup& s) {
 bool builtin_setup(std::string_view name, Setup& s) {
     if (name == "lathe") return parse_setup(data::setup_lathe(), s).empty();
     if (name == "mill") return parse_setup(data::setup_mill(), s).empty();
+    if (name == "mill5") return parse_setup(data::setup_mill5(), s).empty();
     if (name == "cazeneuve") return parse_setup(data::setup_cazeneuve(), s).empty();
     return false;
 }

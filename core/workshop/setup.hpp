@@ -59,6 +59,9 @@ struct MillSetup {
     bool setter = false;
     double setter_x = 0, setter_y = 0, setter_z = 0, setter_diameter = 20;
     double cell = 0.1;  // the height field's (mm)
+    // A C rotary table (mill5): its axis's machine X and Y. The setup is
+    // described at C0; the table carries the stock and the fixtures round.
+    double c_x = 0, c_y = 0;
 };
 
 struct LatheSetup {

@@ -170,6 +170,28 @@ void Workshop::path_of(const MoveEvent& e, std::vector<Axes>& out) const {
         }
     }
     out.push_back(e.to_mach);
+    turn_pieces(out);
+}
+
+// A C table turning along the path: pieces short enough that the part's
+// arc under the tool is within 0.5 µm of their chords, at the largest
+// distance of the machine point from the table's axis.
+void Workshop::turn_pieces(std::vector<Axes>& out) const {
+    if (!mill_ || !m_.has(C) || out.front()[C] == out.back()[C]) return;
+    const double cx = setup_.mill.c_x, cy = setup_.mill.c_y;
+    double r = 0;
+    for (const Axes& p : out) r = std::max(r, std::hypot(p[X] - cx, p[Y] - cy));
+    const double step = r > 1e-3 ? 2 * std::acos(1 - 5e-4 / r) / geometry::kDeg : 360;
+    std::vector<Axes> fine{out.front()};
+    for (size_t i = 0; i + 1 < out.size(); ++i) {
+        const int n = std::max(1, int(std::ceil(std::fabs(out[i + 1][C] - out[i][C]) / step)));
+        for (int k = 1; k <= n; ++k) {
+            Axes p = out[i];
+            for (size_t a = 0; a < p.size(); ++a) p[a] += (out[i + 1][a] - out[i][a]) * k / n;
+            fine.push_back(k == n ? out[i + 1] : p);
+        }
+    }
+    out.swap(fine);
 }
 
 bool Workshop::near(const CPath& shape, const std::vector<Pt>& tips) const {

@@ -24,6 +24,7 @@ inline constexpr int kCrashChuck = 1202;      // the tool or holder hits the wor
 inline constexpr int kCrashHolder = 1203;     // the holder or shank hits the material
 inline constexpr int kCrashDirection = 1204;  // cutting with the spindle turning the wrong way
 inline constexpr int kCrashProbe = 1205;      // a touch probe driven into the material
+inline constexpr int kNotModelled = 1206;     // B away from 0: a tilted tool is not modelled
 
 // What a move came to.
 struct Outcome {
@@ -189,6 +190,11 @@ class Workshop final : public MachineSink {
     double mill_depth(const Cutter& c, const P3& tip, Met& what) const;
     Outcome mill_apply(const MoveEvent& e);
     Outcome mill_jog(const MoveEvent& e, bool continuous);
+    // A C table (mill5) turns the part under the tool: a jog of C is made
+    // piece by piece, each a jog. B away from 0 tilts the tool: the move is
+    // stopped at its start (alarm 1206).
+    Outcome mill_jog_c(const MoveEvent& e, bool continuous);
+    bool tilted(const MoveEvent& e, Outcome& o);
     bool mill_stroke(const MoveEvent& e, const P3& a, const P3& b, const Axes& oma,
                      const Axes& omb);
     // Records a crash of `hit` at `f` of the piece a->b (oma->omb).
@@ -225,8 +231,10 @@ class Workshop final : public MachineSink {
     };
     Tool* current();
     const Tool* current() const;
-    // The machine positions along a move, arcs within the chord error.
+    // The machine positions along a move, arcs and the turn of a C table
+    // within the chord error.
     void path_of(const MoveEvent& e, std::vector<Axes>& out) const;
+    void turn_pieces(std::vector<Axes>& out) const;
     // Checks a path of the tool; on a crash records it and returns false,
     // `stop` being the index fraction where the motion ends.
     bool check(const MoveEvent& e, const std::vector<Pt>& tips, const std::vector<Axes>& oms);
@@ -258,6 +266,7 @@ class Workshop final : public MachineSink {
     void note_frame(const MoveEvent& e);
     double shim_ = 0;
     bool hide_places_ = false;
+    bool in_turn_ = false;  // mill_jog_c is making its pieces
     int dir_ = 5;
     std::vector<Crash> crashes_;
 };
