@@ -190,8 +190,7 @@ CLI::App* add_run(CLI::App& app, cli::RunArgs& ra) {
                   tr("M01 stops (the optional-stop switch is on)"));
     run->add_option("--setup", ra.setup,
                     tr("run in the workshop: the true chuck or vice, stock and tools (lathe, mill, "
-                       "cazeneuve, or a "
-                       ".setup file)"))
+                       "mill5, cazeneuve, or a .setup file)"))
         ->type_name("SETUP");
     run->add_option("--measure", ra.measures,
                     tr("after the run, read an instrument: 'dia Z-20', 'bore Z-5', 'groove Z-30', "
@@ -228,8 +227,8 @@ CLI::App* add_plot(CLI::App& app, cli::PlotArgs& pa) {
     plot->add_option("--pdf", pa.pdf, tr("the picture as a one-page PDF, for printing"))
         ->type_name("OUT");
     plot->add_option("--setup", pa.setup,
-                     tr("draw the part the workshop cut under the path (lathe, mill, cazeneuve, or "
-                        "a .setup file)"))
+                     tr("draw the part the workshop cut under the path (lathe, mill, mill5, "
+                        "cazeneuve, or a .setup file)"))
         ->type_name("SETUP");
     plot->add_option("files", pa.files,
                      tr("program files; the first program of the first file is run"))

@@ -94,12 +94,13 @@ std::string Session::load_workshop() {
 
 // The built-in setup of this machine's kind: its own for the Cazeneuve.
 const char* Session::machine_setup() const {
-    return m_.dialect == Dialect::cazeneuve ? "cazeneuve" : m_.lathe ? "lathe" : "mill";
+    if (m_.dialect == Dialect::cazeneuve) return "cazeneuve";
+    return m_.lathe ? "lathe" : m_.has(C) ? "mill5" : "mill";
 }
 
 std::string Session::no_workshop() const {
     return m_.lathe ? strf(tr("no workshop: :setup %s puts a part in the chuck"), machine_setup())
-                    : tr("no workshop: :setup mill puts a block in the vice");
+                    : strf(tr("no workshop: :setup %s puts a block on the table"), machine_setup());
 }
 
 Effect Session::read_part(std::string_view spec) {

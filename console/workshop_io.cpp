@@ -76,7 +76,7 @@ std::string read_setup(const std::string& name, const MachineProfile& m, worksho
                            "it)"),
                         name.c_str(), name.c_str());
         if (!in)
-            return strf(tr("unknown setup '%s' (lathe, mill, cazeneuve, or a .setup file)"),
+            return strf(tr("unknown setup '%s' (lathe, mill, mill5, cazeneuve, or a .setup file)"),
                         name.c_str());
         std::ostringstream text;
         text << in.rdbuf();
@@ -98,12 +98,13 @@ std::string read_setup(const std::string& name, const MachineProfile& m, worksho
         s = workshop::Setup{};
         return why;
     }
-    if (!m.lathe && (m.has(A) || m.has(B) || m.has(C))) {
-        // The workshop's block is cut from above by a vertical cutter: a
-        // rotary table or head would turn what it does not model.
+    if (!m.lathe && m.has(A)) {
+        // The workshop's block is cut from above by a vertical cutter, which a
+        // C table turns (mill5) and B must leave vertical (alarm 1206): an
+        // A axis would tilt what it does not model.
         s = workshop::Setup{};
-        return strf(tr("machine '%s' has rotary axes: the workshop has a 3-axis machining centre "
-                       "only (--machine mill)"),
+        return strf(tr("machine '%s' has an A axis: the workshop models a C table, and B at 0, "
+                       "only"),
                     m.name.c_str());
     }
     return {};

@@ -332,6 +332,36 @@ mill)
     wait_for 'ALARM 1200' 20
     wait_for 'crash: T2 rapid \(G0\) into the part' 5
     ;;
+mill5)
+    # The five-axis centre's C table (data/setups/mill5.setup: the C axis at
+    # X0 Y0 through a 100 x 100 block, its top at Z -280; T1 Ø10, L 110.25):
+    # T1 down beside the -X face, 1 mm off; C jogged: the block swings into
+    # the cutter and the jog stops at C 10.84 (56 cos C = 55). Then B, which
+    # would tilt the tool, is refused with alarm 1206 and B stays at 0.
+    start --machine mill5
+    pom
+    cmd ":setup mill5"
+    wait_for 'workshop: setup mill5' 5
+    cmd ":speed max"
+    cmd ":mode imd"
+    cmd "T1 D1 M6"
+    keys F9
+    wait_for 'IMD done' 10
+    cmd ":mode jog"
+    cmd ":jog X -56"
+    cmd ":jog Y 0"
+    cmd ":jog Z -374.75"
+    wait_for '^ +Z +-174.750' 10
+    cmd ":jog C 90"
+    wait_for 'T1 touched the part at X-5.000 Y39.4' 20
+    [ "$(op_value C)" = "10.8420" ] || fail "the C jog should stop at C 10.8420: $(op_value C)"
+    cmd ":jog Z 100"
+    wait_for '^ +Z +-74.750' 10
+    cmd ":jog B 10"
+    wait_for 'ALARM 1206' 10
+    wait_for 'B10.000: the workshop models the tool vertical' 5
+    [ "$(op_value B)" = "0.0000" ] || fail "B should not have moved: $(op_value B)"
+    ;;
 *)
     echo "unknown case $case"
     exit 2

@@ -55,10 +55,27 @@ run "${pref[@]}" --set PREF.Z=-300 "${d2[@]}" --json >"$work/crash.json"
 grep -q '"om":{"X":172.0266,"Y":-89.1906,"Z":-177.3550}' "$work/crash.json" ||
     fail "(c) the JSON crash should give OM X Y Z: $(cat "$work/crash.json")"
 
-# A setup for the other kind of machine, or for rotary axes, is refused.
-"$bin" run --machine mill4 --setup mill slot.iso >/dev/null 2>"$work/err"
-[ $? -eq 64 ] || fail "(c) a setup on mill4 should be a usage error"
-grep -qF "machine 'mill4' has rotary axes" "$work/err" || fail "(c) mill4: $(cat "$work/err")"
+# The rotary axes: on mill4 the mill's setup cuts the same part while B stays
+# at 0; a B move is not made (1206); an A axis is refused.
+run_on() { "$bin" run --machine "$1" --setup mill "${pref[@]}" --set PREF.Z=-290 "${d2[@]}" "${@:2}"; }
+run_on mill --measure "width Y X60 Y40 Z-2" --json slot.iso >"$work/on_mill.json" 2>"$work/err" ||
+    fail "(c) mill: $(cat "$work/err")"
+run_on mill4 --measure "width Y X60 Y40 Z-2" --json slot.iso >"$work/on_mill4.json" 2>"$work/err" ||
+    fail "(c) mill4: $(cat "$work/err")"
+grep -o '"measurements":.*' "$work/on_mill.json" >"$work/m1"
+grep -o '"measurements":.*' "$work/on_mill4.json" >"$work/m4"
+cmp -s "$work/m1" "$work/m4" || fail "(c) mill4 should cut the mill's part: $(cat "$work/m4")"
+printf '%%9\nN10 T2 D2 M6\nN20 G0 B15\nN30 M2\n' >"$work/tilt.iso"
+run_on mill4 "$work/tilt.iso" >/dev/null 2>"$work/err"
+[ $? -eq 1 ] || fail "(c) a B move on mill4 with the workshop should stop"
+grep -q 'N20: error 1206: B15.000: the workshop models the tool vertical' "$work/err" ||
+    fail "(c) 1206: $(cat "$work/err")"
+sed 's/\bB\b/A/g; s/travel\.B/travel.A/; s/rapid\.B/rapid.A/; s/home\.B/home.A/' \
+    "$here/../../data/machines/mill4.machine" | grep -v "^kinematics" >"$work/a.machine"
+"$bin" run --machine "$work/a.machine" --setup mill slot.iso >/dev/null 2>"$work/err"
+[ $? -eq 64 ] || fail "(c) a setup on a machine with A should be a usage error: $(cat "$work/err")"
+grep -qF "has an A axis: the workshop models a C table, and B at 0, only" "$work/err" ||
+    fail "(c) A: $(cat "$work/err")"
 
 # plot --setup draws the block from above once (no lathe's mirror image),
 # the slot and the pocket as holes, and frames the whole block (Y -40..40).
