@@ -54,7 +54,7 @@ std::vector<std::vector<std::array<double, 2>>> part_in_program_frame(const work
     std::vector<std::vector<std::array<double, 2>>> out;
     if (const workshop::MillWorld* block = w.mill()) {
         // Seen from above where the program frame puts it, as the lathe's part.
-        const workshop::P3 tip = w.tip3(om);
+        const workshop::P3 tip = w.tip3(om, false);
         out = workshop::block_from_above(*block);
         for (auto& poly : out)
             for (auto& p : poly) p[0] += op[X] - tip[0], p[1] += op[Y] - tip[1];

@@ -702,7 +702,7 @@ pages::View Session::view() const {
         v.graph.part = &part_now_, v.graph.chuck = &chuck_now_;
         if (const workshop::Workshop* w = sim_->shop(); w->is_mill()) {
             // The block where the program frame puts it, as for the lathe's part.
-            const workshop::P3 tip = w->tip3(sim_->om());
+            const workshop::P3 tip = w->tip3(sim_->om(), false);
             v.graph.block = w->mill();
             v.graph.block_dx = tool_now_[X] - tip[0];
             v.graph.block_dy = tool_now_[Y] - tip[1];

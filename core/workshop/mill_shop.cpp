@@ -128,7 +128,7 @@ Cutter Workshop::cutter(double grow) const {
 // axis, so the tool is where the machine point is, turned by C about that
 // axis in the part's frame at C0 (the tool frame in the part's, forward5 of
 // core/geometry/kinematics.cpp: Rot_Z(C) about the table's axis).
-P3 Workshop::tip3(const Axes& om) const {
+P3 Workshop::tip3(const Axes& om, bool turned) const {
     const Tool* t = current();
     double length = 0;
     if (t) {
@@ -136,7 +136,7 @@ P3 Workshop::tip3(const Axes& om) const {
         length = tt.length - (tt.wear > 0 ? tt.wear * 1e-3 * (t->cut / 1000) : 0);
     }
     double x = om[X], y = om[Y];
-    if (m_.has(C) && om[C] != 0) {
+    if (turned && m_.has(C) && om[C] != 0) {
         const double a = om[C] * geometry::kDeg, cx = setup_.mill.c_x, cy = setup_.mill.c_y;
         const double dx = x - cx, dy = y - cy;
         x = cx + dx * std::cos(a) - dy * std::sin(a);

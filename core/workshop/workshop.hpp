@@ -128,8 +128,10 @@ class Workshop final : public MachineSink {
     // `corrector`: the one in use now (the interpreter's D).
     Frame part_frame(const Axes& om, const Axes& op, int corrector) const;
     // A machining centre's: the true tip of the cutter in the spindle (X, Y,
-    // Z); the gauge line itself when none.
-    P3 tip3(const Axes& om) const;
+    // Z); the gauge line itself when none. In the table's frame (a C table
+    // turned, mill5), or, not `turned`, as if C were 0: how GRAPH and plot
+    // place the block under the path, which they draw as the machine moved.
+    P3 tip3(const Axes& om, bool turned = true) const;
     // Reads an instrument; "" or what is wrong with the request.
     std::string measure(std::string_view spec, Reading& r) const;
 

@@ -98,6 +98,26 @@ TEST(MillRotary, AJogOfCStopsWhereTheBlockReachesTheCutter) {
     EXPECT_GE(gap, -kCrashDepth - 1e-3);
 }
 
+// The tool in the table's frame: at C90 the machine point X-56 Y0 is at
+// X0 Y-56 of the part as it lies at C0; not turned, where GRAPH and plot
+// place the block under the path they draw (pupitre-setup(5), LIMITATIONS).
+TEST(MillRotary, TheToolInTheTablesFrame) {
+    MachineProfile m;
+    builtin_machine("mill5", m);
+    workshop::Setup st;
+    builtin_setup("mill5", st);
+    Workshop shop(m, st, nullptr);
+    shop.tool(Loc{}, 1, 1, 0, true);
+    Axes om{};
+    om[X] = -56, om[Z] = -170, om[C] = 90;
+    const P3 t = shop.tip3(om), u = shop.tip3(om, false);
+    EXPECT_NEAR(t[0], 0, 1e-9);
+    EXPECT_NEAR(t[1], -56, 1e-9);
+    EXPECT_NEAR(t[2], -170 - 110.25, 1e-9);
+    EXPECT_NEAR(u[0], -56, 1e-9);
+    EXPECT_NEAR(u[1], 0, 1e-9);
+}
+
 // B tilts the tool (mill5's head) or the part (mill4's table): the move is
 // not made, with alarm 1206; back to B0 is let through.
 TEST(MillRotary, BAwayFromZeroIsNotModelled) {
