@@ -20,6 +20,19 @@ using test::Sets;
 
 const Sets kRight = {{"PREF.Z", -280}, {"D1.L", 110.25}, {"D1.R", 5}};
 
+// The shipped mill5 workshop alone, T1 in the spindle.
+struct Mill5 {
+    MachineProfile m;
+    workshop::Setup st;
+    std::unique_ptr<Workshop> shop;
+    Mill5() {
+        builtin_machine("mill5", m);
+        builtin_setup("mill5", st);
+        shop = std::make_unique<Workshop>(m, st, nullptr);
+        shop->tool(Loc{}, 1, 1, 0, true);
+    }
+};
+
 // The same slot, 10 wide, 2 deep, 30 long from outside the -X face, cut at C0
 // and again at C90.
 const char* kTwoSlots = R"(%5
@@ -68,12 +81,8 @@ TEST(MillRotary, ACTableTurnsThePartUnderTheTool) {
 // The cutter's axis at X-56 Y0 (1 mm from the -X face) goes round on a
 // circle of 56 in the part; its side meets the -X face when 56 cos C = 55.
 TEST(MillRotary, AJogOfCStopsWhereTheBlockReachesTheCutter) {
-    MachineProfile m;
-    builtin_machine("mill5", m);
-    workshop::Setup st;
-    builtin_setup("mill5", st);
-    Workshop shop(m, st, nullptr);
-    shop.tool(Loc{}, 1, 1, 0, true);
+    Mill5 five;
+    Workshop& shop = *five.shop;
     MoveEvent e;
     e.g = 1;
     e.from_mach[X] = -56;
@@ -102,12 +111,8 @@ TEST(MillRotary, AJogOfCStopsWhereTheBlockReachesTheCutter) {
 // X0 Y-56 of the part as it lies at C0; not turned, where GRAPH and plot
 // place the block under the path they draw (pupitre-setup(5), LIMITATIONS).
 TEST(MillRotary, TheToolInTheTablesFrame) {
-    MachineProfile m;
-    builtin_machine("mill5", m);
-    workshop::Setup st;
-    builtin_setup("mill5", st);
-    Workshop shop(m, st, nullptr);
-    shop.tool(Loc{}, 1, 1, 0, true);
+    Mill5 five;
+    Workshop& shop = *five.shop;
     Axes om{};
     om[X] = -56, om[Z] = -170, om[C] = 90;
     const P3 t = shop.tip3(om), u = shop.tip3(om, false);
