@@ -365,7 +365,7 @@ Outcome Workshop::mill_apply(const MoveEvent& e) {
 // holder with the block, a fixture or the shim stops the move.
 Outcome Workshop::mill_jog(const MoveEvent& e, bool continuous) {
     Outcome o;
-    if (!current() || crashed() || tilted(e, o)) return o;
+    if (crashed() || tilted(e, o) || !current()) return o;  // B first, as a program's move
     if (m_.has(C) && e.to_mach[C] != e.from_mach[C] && !in_turn_) return mill_jog_c(e, continuous);
     const P3 a = tip3(e.from_mach), b = tip3(e.to_mach);
     Met what = Met::none;

@@ -147,6 +147,10 @@ TEST(MillRotary, BAwayFromZeroIsNotModelled) {
     shop.clear_crash();
     std::swap(e.from_mach, e.to_mach);  // back to B0
     EXPECT_FALSE(shop.apply(e).crashed);
+    // A jog of B too, even with no tool in the spindle.
+    std::swap(e.from_mach, e.to_mach);
+    EXPECT_TRUE(shop.jog(e, true).crashed);
+    EXPECT_EQ(shop.crashes().front().code, kNotModelled);
 }
 
 }  // namespace
