@@ -7,10 +7,8 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "core/i18n.hpp"
 
@@ -63,30 +61,30 @@ bool ProgramMemory::load_file(const std::string& path, Diag& d) {
         d = Diag{Severity::error, err::kCannotRead, path, -1, 0, -1, 0, tr(why)};
         return false;
     };
-    // A large regular file is mapped (text.hpp); a smaller one is read in one
-    // piece (a program is kept whole in memory anyway); a pipe or a terminal
-    // is read to its end.
     const int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
     if (fd < 0) return cannot(N_("cannot open the file"));
     struct stat st {};
     const bool regular = fstat(fd, &st) == 0 && S_ISREG(st.st_mode);
-    std::shared_ptr<Text> mapped;
-    if (regular && size_t(st.st_size) >= kMapFrom) mapped = Text::map(fd, size_t(st.st_size));
-    close(fd);
-    if (mapped) return load_shared(path, std::move(mapped), d);
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return cannot(N_("cannot open the file"));
+    // A large regular file is mapped (text.hpp).
+    if (regular && size_t(st.st_size) >= kMapFrom)
+        if (std::shared_ptr<Text> mapped = Text::map(fd, size_t(st.st_size))) {
+            close(fd);
+            return load_shared(path, std::move(mapped), d);
+        }
+    // A smaller one, a pipe or a terminal is read to its end (a program is
+    // kept whole in memory anyway).
     std::string text;
-    if (regular) {
-        text.resize(size_t(st.st_size));
-        in.read(text.data(), std::streamsize(text.size()));
-        text.resize(size_t(in.gcount()));
-    } else {
-        std::ostringstream ss;
-        ss << in.rdbuf();
-        text = std::move(ss).str();
+    if (regular) text.reserve(size_t(st.st_size) + 1);  // + the '\n' load_text may add
+    char buf[1 << 16];
+    ssize_t n;
+    while ((n = read(fd, buf, sizeof buf)) != 0) {
+        if (n > 0)
+            text.append(buf, size_t(n));
+        else if (errno != EINTR)
+            break;
     }
-    if (in.bad()) return cannot(N_("read error"));
+    close(fd);
+    if (n < 0) return cannot(N_("read error"));
     return load_text(path, std::move(text), d);
 }
 

@@ -126,3 +126,44 @@ TEST(ProgramFile, ASmallFileIsRead) {
     ASSERT_TRUE(mem.find(5));
     EXPECT_FALSE(mem.find(5)->text->mapped());
 }
+
+// A file is split at its header lines: a line whose first non-blank
+// character is '%' (a '%' in a comment is none); the text before the first
+// header is program 0 only when a line of it is a block.
+TEST(ProgramFile, AFileIsSplitAtItsHeaderLinesOnly) {
+    ProgramMemory mem;
+    Diag d;
+    ASSERT_TRUE(
+        mem.load_text("f.iso", "(SHOP 50%)\n\n  %7.2 (SEVEN)\nN10 G0 X1 (100%)\n%8\nG0 X2", d));
+    ASSERT_EQ(mem.programs().size(), 2u);
+    const ProgramText* p7 = mem.find(7);
+    const ProgramText* p8 = mem.find(8);
+    ASSERT_TRUE(p7 && p8);
+    EXPECT_EQ(p7->index, 2);
+    EXPECT_EQ(p7->title, "SEVEN");
+    EXPECT_EQ(p7->first_line, 4);
+    EXPECT_EQ(p7->body(), "N10 G0 X1 (100%)\n");
+    EXPECT_EQ(p8->first_line, 6);
+    EXPECT_EQ(p8->body(), "G0 X2\n");
+    ProgramMemory with0;
+    ASSERT_TRUE(with0.load_text("g.iso", "G0 X5\n%3\nG0 X6\n", d));
+    ASSERT_EQ(with0.programs().size(), 2u);
+    EXPECT_EQ(with0.programs()[0]->number, 0);
+    EXPECT_EQ(with0.programs()[0]->body(), "G0 X5\n");
+    EXPECT_EQ(with0.find(3)->first_line, 3);
+}
+
+// A pipe (or a terminal) is read to its end.
+TEST(ProgramFile, APipeIsReadToItsEnd) {
+    int fds[2];
+    ASSERT_EQ(pipe(fds), 0);
+    const std::string text = "%9\nG0 X1\n";
+    ASSERT_EQ(write(fds[1], text.data(), text.size()), ssize_t(text.size()));
+    close(fds[1]);
+    ProgramMemory mem;
+    Diag d;
+    EXPECT_TRUE(mem.load_file("/proc/self/fd/" + std::to_string(fds[0]), d)) << d.detail;
+    close(fds[0]);
+    ASSERT_TRUE(mem.find(9));
+    EXPECT_EQ(mem.find(9)->body(), "G0 X1\n");
+}
