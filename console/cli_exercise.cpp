@@ -14,9 +14,9 @@
 #include "console/class_report.hpp"
 #include "console/cli.hpp"
 #include "console/exercise.hpp"
+#include "console/plot_loader.hpp"
 #include "core/i18n.hpp"
 #include "core/output/cairo_plot.hpp"
-#include "core/output/plot_module.hpp"
 #include "store/store.hpp"
 
 namespace pupitre::cli {

@@ -11,10 +11,10 @@
 #include <vector>
 
 #include "console/cli.hpp"
+#include "console/plot_loader.hpp"
 #include "core/i18n.hpp"
 #include "core/interp/interp.hpp"
 #include "core/output/cairo_plot.hpp"
-#include "core/output/plot_module.hpp"
 #include "core/output/scene.hpp"
 #include "core/output/svg.hpp"
 #include "core/output/toolpath.hpp"

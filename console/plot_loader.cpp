@@ -6,6 +6,8 @@
 // build tree it was built in. When none loads, each writer fails and
 // plot_module_error() says why, for the caller's message.
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include "console/plot_loader.hpp"
+
 #include <dlfcn.h>
 
 #include <cstdio>

@@ -113,8 +113,8 @@ class Session {
     // on the message line and at the head of the WORKSHOP page's list.
     Effect read_part(std::string_view spec);
     std::string no_workshop() const;  // what to type for one
-    const char* machine_setup()
-        const;  // the built-in setup to suggest: lathe, mill, mill5, cazeneuve
+    // The built-in setup to suggest: lathe, mill, mill5, cazeneuve.
+    const char* machine_setup() const;
     Effect undo();
     Effect protect_command(std::string_view args);
     bool unprotected(std::string_view what);  // says why when protected

@@ -6,9 +6,9 @@
 #include <fstream>
 #include <sstream>
 
+#include "console/plot_loader.hpp"
 #include "core/i18n.hpp"
 #include "core/output/height_png.hpp"
-#include "core/output/plot_module.hpp"
 #include "core/training/exercise.hpp"
 #include "core/workshop/report.hpp"
 

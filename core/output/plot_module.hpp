@@ -24,10 +24,6 @@ struct PlotModule {
     bool (*gray16_png)(const std::vector<uint16_t>& values, int width, int height, std::FILE* out);
 };
 
-// In the executable (console/plot_loader.cpp): why the module cannot be
-// loaded, empty when it is; the writers then fail.
-std::string plot_module_error();
-
 }  // namespace pupitre
 
 // The module's one exported symbol.
