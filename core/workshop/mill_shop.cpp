@@ -172,17 +172,12 @@ Outcome Workshop::mill_jog_c(const MoveEvent& e, bool continuous) {
     std::vector<Axes> oms;
     path_of(e, oms);
     const double span = e.to_mach[C] - e.from_mach[C];
-    in_turn_ = true;
-    struct Done {
-        bool& flag;
-        ~Done() { flag = false; }
-    } done{in_turn_};
     for (size_t i = 0; i + 1 < oms.size(); ++i) {
         MoveEvent piece = e;
         piece.g = 1;
         piece.from_mach = oms[i];
         piece.to_mach = oms[i + 1];
-        Outcome o = mill_jog(piece, continuous);
+        Outcome o = mill_jog_line(piece, continuous);
         if (!o.crashed && !o.touched) continue;
         o.fraction = span != 0 ? (o.stop[C] - e.from_mach[C]) / span : 1;
         if (o.crashed) crashes_.back().fraction = o.fraction;
@@ -366,7 +361,13 @@ Outcome Workshop::mill_apply(const MoveEvent& e) {
 Outcome Workshop::mill_jog(const MoveEvent& e, bool continuous) {
     Outcome o;
     if (crashed() || tilted(e, o) || !current()) return o;  // B first, as a program's move
-    if (m_.has(C) && e.to_mach[C] != e.from_mach[C] && !in_turn_) return mill_jog_c(e, continuous);
+    if (m_.has(C) && e.to_mach[C] != e.from_mach[C]) return mill_jog_c(e, continuous);
+    return mill_jog_line(e, continuous);
+}
+
+// A jog along a straight line of the table's frame.
+Outcome Workshop::mill_jog_line(const MoveEvent& e, bool continuous) {
+    Outcome o;
     const P3 a = tip3(e.from_mach), b = tip3(e.to_mach);
     Met what = Met::none;
     const bool touching = mill_depth(cutter(kNear), below(a, kNear), what) > kTouchDepth;

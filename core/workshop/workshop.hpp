@@ -193,9 +193,10 @@ class Workshop final : public MachineSink {
     Outcome mill_apply(const MoveEvent& e);
     Outcome mill_jog(const MoveEvent& e, bool continuous);
     // A C table (mill5) turns the part under the tool: a jog of C is made
-    // piece by piece, each a jog. B away from 0 tilts the tool: the move is
-    // stopped at its start (alarm 1206).
+    // chord by chord, each a jog along a line. B away from 0 tilts the tool:
+    // the move is stopped at its start (alarm 1206).
     Outcome mill_jog_c(const MoveEvent& e, bool continuous);
+    Outcome mill_jog_line(const MoveEvent& e, bool continuous);
     bool tilted(const MoveEvent& e, Outcome& o);
     bool mill_stroke(const MoveEvent& e, const P3& a, const P3& b, const Axes& oma,
                      const Axes& omb);
@@ -268,7 +269,6 @@ class Workshop final : public MachineSink {
     void note_frame(const MoveEvent& e);
     double shim_ = 0;
     bool hide_places_ = false;
-    bool in_turn_ = false;  // mill_jog_c is making its pieces
     int dir_ = 5;
     std::vector<Crash> crashes_;
 };
