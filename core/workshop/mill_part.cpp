@@ -11,13 +11,13 @@
 #include <utility>
 
 #include "core/workshop/narrow.hpp"
+#include "core/workshop/tilt.hpp"
 
 namespace pupitre::workshop {
 
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kGolden = 0.6180339887498949;
 // Farther than this (mm) is not a workshop: refused, and the text stays short.
 constexpr double kFar = 1e7;
 
@@ -25,41 +25,6 @@ constexpr double kFar = 1e7;
 // that a part read back from its text is the very part that was saved.
 double grain(double v) {
     return std::round(v * 1e4) / 1e4;
-}
-
-// The minimum of a convex f on [lo, hi], golden section down to `tol`:
-// {where, value}.
-template <class F>
-std::pair<double, double> golden_min(F f, double lo, double hi, double tol) {
-    const double lo0 = lo, hi0 = hi;
-    double x1 = hi - kGolden * (hi - lo), x2 = lo + kGolden * (hi - lo);
-    double f1 = f(x1), f2 = f(x2);
-    while (hi - lo > tol) {
-        if (f1 <= f2) {
-            hi = x2, x2 = x1, f2 = f1;
-            x1 = hi - kGolden * (hi - lo), f1 = f(x1);
-        } else {
-            lo = x1, x1 = x2, f1 = f2;
-            x2 = lo + kGolden * (hi - lo), f2 = f(x2);
-        }
-    }
-    std::pair<double, double> best{x1, f1};
-    if (f2 < best.second) best = {x2, f2};
-    // A minimum at an end: the bracket closes on it without evaluating it.
-    for (double t : {lo0, hi0})
-        if (double v = f(t); v < best.second) best = {t, v};
-    return best;
-}
-
-// Where a function that is >= 0 at `in` and < 0 at `out` crosses zero
-// (the side where it is >= 0), to `tol`.
-template <class F>
-double crossing(F f, double in, double out, double tol) {
-    while (std::abs(out - in) > tol) {
-        double mid = 0.5 * (in + out);
-        (f(mid) >= 0 ? in : out) = mid;
-    }
-    return in;
 }
 
 // The interval of s where the line p = p0 (in the plane (s, p)) is within
@@ -164,40 +129,68 @@ void MillWorld::new_part() {
     tile_stale_.assign(size_t(tx_) * size_t(ty_), 0);
     stale_ = false;
     strokes_.clear();
+    under_.clear();
     buckets_.assign(size_t(bx_) * size_t(by_), {});
     ++generation_;
 }
 
-bool MillWorld::make_stroke(const P3& a, const P3& b, double radius, double corner, Stroke& s) {
+bool leans(const P3& u) {
+    return std::abs(u[0]) > 1e-9 || std::abs(u[1]) > 1e-9 || !(u[2] > 0);
+}
+
+bool MillWorld::make_stroke(const P3& a, const P3& b, double radius, double corner, const P3& u,
+                            Stroke& s) {
     for (double v : {a[0], a[1], a[2], b[0], b[1], b[2], radius, corner})
         if (!(std::abs(v) <= kFar)) return false;
     s = Stroke{};
     for (int k = 0; k < 3; ++k) s.a[k] = grain(a[k]), s.b[k] = grain(b[k]);
     s.radius = grain(radius);
     s.corner = std::clamp(grain(corner), 0.0, s.radius);
+    const double len = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+    if (!(len > 0.5 && len < 2)) return false;
+    // The axis is kept to 1e-9, as the store keeps it.
+    for (int k = 0; k < 3; ++k) s.u[k] = std::round(u[k] / len * 1e9) / 1e9;
+    s.tilt = leans(s.u);
+    if (!s.tilt) s.u = kUp;
     return s.radius > 0;
 }
 
-bool MillWorld::meets_stock(const Stroke& s) const {
+// Where a stroke can take material: its tip's box grown by the radius; a
+// tilted one's whole cylinder up to the stock's top, within the stock.
+void MillWorld::bound(Stroke& s) const {
     const double r = s.radius;
-    return std::min(s.a[0], s.b[0]) - r <= stock_.hi[0] &&
-           std::max(s.a[0], s.b[0]) + r >= stock_.lo[0] &&
-           std::min(s.a[1], s.b[1]) - r <= stock_.hi[1] &&
-           std::max(s.a[1], s.b[1]) + r >= stock_.lo[1] && std::min(s.a[2], s.b[2]) <= stock_.hi[2];
+    for (int k = 0; k < 3; ++k)
+        s.reach.lo[k] = std::min(s.a[k], s.b[k]) - r, s.reach.hi[k] = std::max(s.a[k], s.b[k]) + r;
+    if (!s.tilt) {
+        s.reach.lo[2] = std::min(s.a[2], s.b[2]);
+        return;
+    }
+    const double rise = stock_.hi[2] - s.reach.lo[2];
+    const double up = s.u[2] > 1e-6 ? std::min(rise / s.u[2], kFar) : kFar;
+    for (int k = 0; k < 2; ++k) {
+        s.reach.lo[k] = std::max(s.reach.lo[k] + std::min(0.0, up * s.u[k]), stock_.lo[k] - r);
+        s.reach.hi[k] = std::min(s.reach.hi[k] + std::max(0.0, up * s.u[k]), stock_.hi[k] + r);
+    }
+}
+
+bool MillWorld::meets_stock(const Stroke& s) const {
+    const Box3& b = s.reach;
+    return b.lo[0] <= stock_.hi[0] && b.hi[0] >= stock_.lo[0] && b.lo[1] <= stock_.hi[1] &&
+           b.hi[1] >= stock_.lo[1] && b.lo[2] <= stock_.hi[2];
 }
 
 void MillWorld::record(const Stroke& s) {
     // A margin of 1 µm: a line exactly on a bucket's edge finds the strokes
     // that end there whichever way the division rounds.
-    const double r = s.radius + 1e-3;
+    constexpr double m = 1e-3;
     auto bucket = [&](double v, int k, int n) {
         return std::clamp(int(std::floor((v - stock_.lo[k]) / bucket_)), 0, n - 1);
     };
     Stroke t = s;
-    t.bi = bucket(std::min(s.a[0], s.b[0]) - r, 0, bx_);
-    t.bj = bucket(std::min(s.a[1], s.b[1]) - r, 1, by_);
-    const int bi1 = bucket(std::max(s.a[0], s.b[0]) + r, 0, bx_);
-    const int bj1 = bucket(std::max(s.a[1], s.b[1]) + r, 1, by_);
+    t.bi = bucket(s.reach.lo[0] - m, 0, bx_);
+    t.bj = bucket(s.reach.lo[1] - m, 1, by_);
+    const int bi1 = bucket(s.reach.hi[0] + m, 0, bx_);
+    const int bj1 = bucket(s.reach.hi[1] + m, 1, by_);
     const auto k = uint32_t(strokes_.size());
     strokes_.push_back(t);
     for (int j = t.bj; j <= bj1; ++j)
@@ -205,9 +198,11 @@ void MillWorld::record(const Stroke& s) {
             buckets_[size_t(j) * size_t(bx_) + size_t(i)].push_back(k);
 }
 
-double MillWorld::cut(const Cutter& c, const P3& a, const P3& b) {
+double MillWorld::cut(const Cutter& c, const P3& a, const P3& b, const P3& u) {
     Stroke s;
-    if (!make_stroke(a, b, c.radius, c.corner, s) || !meets_stock(s)) return 0;
+    if (!make_stroke(a, b, c.radius, c.corner, u, s)) return 0;
+    bound(s);
+    if (!meets_stock(s)) return 0;
     // Recorded even when the height field does not change: the stroke may
     // still take a sliver between the cells' centres, which the instruments see.
     record(s);
@@ -247,6 +242,7 @@ double MillWorld::lowest(const Stroke& s, double x, double y, double tol) {
 }
 
 double MillWorld::apply(const Stroke& s) {
+    if (s.tilt) return apply_tilted(s);
     const double r = s.radius, lox = stock_.lo[0], loy = stock_.lo[1], top = stock_.hi[2];
     auto from = [&](double v, double lo, int n) {
         return std::clamp(int(std::floor((v - lo) / cell_ - 0.5)), 0, n - 1);
@@ -291,6 +287,11 @@ double MillWorld::apply(const Stroke& s) {
             }
             if (!(low <= top)) continue;
             reached[i] = 1;
+            if (!under_.empty() && under_.count(size_t(j) * size_t(nx_) + size_t(i))) {
+                row += carve(size_t(j) * size_t(nx_) + size_t(i), low, kInf) *
+                       (i == nx_ - 1 ? last_w : cell_);
+                continue;
+            }
             const float z = std::max(float(low), floor_z);
             if (z < h[i]) {
                 row += double(h[i] - z) * (i == nx_ - 1 ? last_w : cell_);
@@ -327,6 +328,17 @@ void MillWorld::refresh() const {
 }
 
 bool MillWorld::removal(const Stroke& s, int axis, const P3& at, double& lo, double& hi) {
+    if (s.tilt) {
+        tilt::Line l;
+        l.o = at;
+        l.o[axis] = 0;
+        l.e = {0, 0, 0};
+        l.e[axis] = 1;
+        const P3 d{s.b[0] - s.a[0], s.b[1] - s.a[1], s.b[2] - s.a[2]};
+        const tilt::Span sp = tilt::swept_cutter(s.radius, s.corner, s.a, d, s.u, l, 1e-10);
+        lo = sp.lo, hi = sp.hi;
+        return !sp.empty();
+    }
     if (axis == 2) {
         lo = lowest(s, at[0], at[1], 1e-10), hi = kInf;
         return lo < kInf;
@@ -368,14 +380,19 @@ std::string MillWorld::to_text() const {
     std::string o;
     char line[512];
     for (const Stroke& s : strokes_) {
-        int n = std::snprintf(line, sizeof line, "%.4f %.4f %.4f %.4f %.4f %.4f %.4f %.4f\n",
-                              s.a[0], s.a[1], s.a[2], s.b[0], s.b[1], s.b[2], s.radius, s.corner);
+        int n = s.tilt ? std::snprintf(line, sizeof line,
+                                       "%.4f %.4f %.4f %.4f %.4f %.4f %.4f %.4f %.9f %.9f %.9f\n",
+                                       s.a[0], s.a[1], s.a[2], s.b[0], s.b[1], s.b[2], s.radius,
+                                       s.corner, s.u[0], s.u[1], s.u[2])
+                       : std::snprintf(line, sizeof line, "%.4f %.4f %.4f %.4f %.4f %.4f %.4f %.4f\n",
+                                       s.a[0], s.a[1], s.a[2], s.b[0], s.b[1], s.b[2], s.radius,
+                                       s.corner);
         o.append(line, size_t(std::clamp(n, 0, int(sizeof line) - 1)));
     }
     return o;
 }
 
-// text -> { stroke "\n" } ; stroke -> ax ay az bx by bz radius corner
+// text -> { stroke "\n" } ; stroke -> ax ay az bx by bz radius corner [ux uy uz]
 // (blank lines are allowed; anything else refuses the whole text).
 bool MillWorld::from_text(std::string_view text) {
     size_t lines = size_t(std::count(text.begin(), text.end(), '\n'));
@@ -393,18 +410,20 @@ bool MillWorld::from_text(std::string_view text) {
         };
         blank();
         if (p == end) continue;
-        double v[8];
-        for (double& x : v) {
-            blank();
-            auto r = std::from_chars(p, end, x);
-            if (r.ec != std::errc() || !std::isfinite(x)) return false;
+        double v[11] = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1};
+        int n = 0;
+        for (; n < 11 && p < end; ++n) {
+            auto r = std::from_chars(p, end, v[n]);
+            if (r.ec != std::errc() || !std::isfinite(v[n])) return false;
             p = r.ptr;
+            blank();
         }
-        blank();
         Stroke s;
-        if (p != end || !(v[6] > 0) || v[7] < 0 || v[7] > v[6] ||
-            !make_stroke({v[0], v[1], v[2]}, {v[3], v[4], v[5]}, v[6], v[7], s))
+        if (p != end || (n != 8 && n != 11) || !(v[6] > 0) || v[7] < 0 || v[7] > v[6] ||
+            !make_stroke({v[0], v[1], v[2]}, {v[3], v[4], v[5]}, v[6], v[7], {v[8], v[9], v[10]},
+                         s))
             return false;
+        bound(s);
         parsed.push_back(s);
     }
     new_part();

@@ -8,18 +8,28 @@
 //    contacts (a contact on a face the tools have cut is found to half a
 //    cell; the stock's own faces, the floor of a cut, the fixtures are exact).
 // Everything is in machine coordinates, mm; a cutter is a solid of
-// revolution about a vertical axis, its tip (lowest point) at `tip`.
+// revolution about its axis (vertical, or tilted along u: then a cell whose
+// column it cuts from the side keeps the material above and below, as
+// intervals, and its contacts are found at the cells' centres), its tip
+// (the end's centre) at `tip`.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 #include <array>
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 namespace pupitre::workshop {
 
 using P3 = std::array<double, 3>;  // machine X, Y, Z (mm)
+
+// A cutter's axis, a unit vector from its tip towards the spindle: up,
+// unless the head or the table is tilted (B, mill_tilt.cpp).
+inline constexpr P3 kUp{0, 0, 1};
+// Whether the axis leans away from the vertical (by more than 1e-9 rad).
+bool leans(const P3& u);
 
 // A milling cutter as it really is, below the gauge line.
 struct Cutter {
@@ -75,17 +85,21 @@ class MillWorld {
     // to `b` (the flute and everything above it: the material is a height
     // field, cut from above). Returns the volume removed (mm³, from the
     // height field), 0 when the move cut nothing.
-    double cut(const Cutter& c, const P3& a, const P3& b);
+    double cut(const Cutter& c, const P3& a, const P3& b, const P3& u = kUp);
 
     // How deep `part` of the cutter, tip at `tip`, is into the material (mm:
     // the largest height of material above that part's surface), 0 when it
     // only touches or is clear.
-    double depth_into(const Cutter& c, const P3& tip, Part part) const;
+    double depth_into(const Cutter& c, const P3& tip, Part part, const P3& u = kUp) const;
     // The first fraction of the straight move a->b (0..1) where `part` comes
     // deeper than `depth` into the material, within 0.1 µm of travel; 2 when
     // it never does. `before`: the last fraction where it does not yet.
     double first_contact(const Cutter& c, const P3& a, const P3& b, Part part, double depth,
-                         bool before = false) const;
+                         bool before = false, const P3& u = kUp) const;
+    // The material in cell (i, j)'s column: sorted, disjoint intervals of
+    // machine Z (one, from the stock's bottom to height(), unless a tilted
+    // cutter went under the top).
+    void material(int i, int j, std::vector<std::array<double, 2>>& out) const;
 
     // What an instrument reads: the material along the line through `at`
     // parallel to `axis` (0 X, 1 Y, 2 Z), as sorted, disjoint intervals of
@@ -96,7 +110,8 @@ class MillWorld {
     // kept counts, even one that takes only a sliver between cell centres.
     uint64_t generation() const { return generation_; }
     // The strokes as text for the store, one per line ("ax ay az bx by bz
-    // radius corner", µm integers would lose nothing: %.4f); and back: the
+    // radius corner", µm integers would lose nothing: %.4f; then "ux uy uz"
+    // to 1e-9 when the cutter was tilted); and back: the
     // height field is rebuilt from them (false, and nothing changed, when
     // the text is not one).
     std::string to_text() const;
@@ -106,13 +121,26 @@ class MillWorld {
     struct Stroke {
         P3 a, b;
         double radius, corner;
+        P3 u = kUp;
+        bool tilt = false;
+        Box3 reach;          // where it can remove material (tilted: within the stock)
         int bi = 0, bj = 0;  // its first bucket of the index (each is listed once per line)
     };
     static constexpr int kTile = 16;  // cells a side of the tiles that keep the highest top
-    static bool make_stroke(const P3& a, const P3& b, double radius, double corner, Stroke& s);
+    static bool make_stroke(const P3& a, const P3& b, double radius, double corner, const P3& u,
+                            Stroke& s);
+    void bound(Stroke& s) const;  // its reach
     bool meets_stock(const Stroke& s) const;
     void record(const Stroke& s);
     double apply(const Stroke& s);
+    // --- a tilted cutter (mill_tilt.cpp) ---
+    double apply_tilted(const Stroke& s);
+    // Takes [lo, hi] out of a cell's column: the length taken.
+    double carve(size_t cell, double lo, double hi);
+    double tilted_depth(const Cutter& c, const P3& tip, const P3& u, Part part,
+                        double above) const;
+    double tilted_first(const Cutter& c, const P3& a, const P3& b, const P3& u, Part part,
+                        double depth, bool before) const;
     // Brings the tiles' highest tops up to date (kept lazily: a pocket's
     // thousands of strokes would each rescan the tiles they cross).
     void refresh() const;
@@ -130,6 +158,8 @@ class MillWorld {
     double cell_;
     int nx_ = 0, ny_ = 0;
     std::vector<float> h_;
+    // The columns a tilted cutter went into under their top: their material.
+    std::unordered_map<size_t, std::vector<std::array<double, 2>>> under_;
     std::vector<Stroke> strokes_;
     uint64_t generation_ = 0;
     std::vector<double> xs_, ys_;              // the cells' centres (clamped into the stock)
@@ -150,5 +180,10 @@ class MillWorld {
 // the caller finds a first contact by bisecting on it.
 double depth_into(const Cutter& c, const P3& tip, Part part, const Box3& b);
 double depth_into(const Cutter& c, const P3& tip, Part part, const Cylinder& k);
+// A tilted part, as points of its surface (tilt::surface) from its tip at
+// `tip`: how deep the deepest of them is inside a box or a cylinder (exact
+// for a face square to an axis, the points holding the outermost ones).
+double depth_into(const std::vector<P3>& points, const P3& tip, const Box3& b);
+double depth_into(const std::vector<P3>& points, const P3& tip, const Cylinder& k);
 
 }  // namespace pupitre::workshop

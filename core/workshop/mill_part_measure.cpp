@@ -68,7 +68,7 @@ std::vector<std::array<double, 2>> MillWorld::along(int axis, const P3& at) cons
                 if ((axis == 0 && std::max(s.bi, i0) != i) ||
                     (axis == 1 && std::max(s.bj, j0) != j))
                     continue;
-                if (axis != 2 && at[2] < std::min(s.a[2], s.b[2])) continue;
+                if (axis != 2 && at[2] < s.reach.lo[2]) continue;
                 double lo, hi;
                 if (removal(s, axis, at, lo, hi) && lo < s1 && hi > s0) cuts.push_back({lo, hi});
             }
@@ -105,8 +105,9 @@ PartSpan span_of(const Cutter& c, Part part) {
     return {c.radius, 0, c.flute, true};
 }
 
-double MillWorld::depth_into(const Cutter& c, const P3& tip, Part part) const {
+double MillWorld::depth_into(const Cutter& c, const P3& tip, Part part, const P3& u) const {
     refresh();
+    if (leans(u)) return tilted_depth(c, tip, u, part, kInf);
     return penetration(c, tip, part, kInf);
 }
 
@@ -202,7 +203,8 @@ std::vector<std::array<double, 2>> MillWorld::spans(const Cutter& c, const P3& a
 }
 
 double MillWorld::first_contact(const Cutter& c, const P3& a, const P3& b, Part part, double depth,
-                                bool before) const {
+                                bool before, const P3& u) const {
+    if (leans(u)) return tilted_first(c, a, b, u, part, depth, before);
     const double len = std::sqrt(sq(b[0] - a[0]) + sq(b[1] - a[1]) + sq(b[2] - a[2]));
     auto deeper = [&](double t) {
         const P3 p{a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])};

@@ -1,8 +1,12 @@
-// The parameter range of a linear motion within bounds: shared by the
-// machining centre's material (mill_part.cpp, mill_part_measure.cpp).
+// One-dimensional searches shared by the machining centre's material
+// (mill_part.cpp, mill_part_measure.cpp, mill_tilt.cpp): the parameter range
+// of a linear motion within bounds, the minimum of a convex function, the
+// zero of a function that changes sign once.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 #include <algorithm>
+#include <cmath>
+#include <utility>
 
 namespace pupitre::workshop {
 
@@ -13,6 +17,42 @@ inline bool narrow(double p, double dp, double lo, double hi, double& t0, double
     if (a > b) std::swap(a, b);
     t0 = std::max(t0, a), t1 = std::min(t1, b);
     return t0 <= t1;
+}
+
+// The minimum of a convex f on [lo, hi], golden section down to `tol`:
+// {where, value}.
+template <class F>
+inline std::pair<double, double> golden_min(F f, double lo, double hi, double tol) {
+    const double lo0 = lo, hi0 = hi;
+    constexpr double kGolden = 0.6180339887498949;
+    double x1 = hi - kGolden * (hi - lo), x2 = lo + kGolden * (hi - lo);
+    double f1 = f(x1), f2 = f(x2);
+    while (hi - lo > tol) {
+        if (f1 <= f2) {
+            hi = x2, x2 = x1, f2 = f1;
+            x1 = hi - kGolden * (hi - lo), f1 = f(x1);
+        } else {
+            lo = x1, x1 = x2, f1 = f2;
+            x2 = lo + kGolden * (hi - lo), f2 = f(x2);
+        }
+    }
+    std::pair<double, double> best{x1, f1};
+    if (f2 < best.second) best = {x2, f2};
+    // A minimum at an end: the bracket closes on it without evaluating it.
+    for (double t : {lo0, hi0})
+        if (double v = f(t); v < best.second) best = {t, v};
+    return best;
+}
+
+// Where a function that is >= 0 at `in` and < 0 at `out` crosses zero
+// (the side where it is >= 0), to `tol`.
+template <class F>
+inline double crossing(F f, double in, double out, double tol) {
+    while (std::abs(out - in) > tol) {
+        double mid = 0.5 * (in + out);
+        (f(mid) >= 0 ? in : out) = mid;
+    }
+    return in;
 }
 
 }  // namespace pupitre::workshop

@@ -1,0 +1,221 @@
+// The machining centre's material under a tilted cutter (B away from 0; see
+// mill_part.hpp and tilt.hpp). A tilted cutter cuts a column of the height
+// field from its side as well as from above: what it takes is the exact
+// interval where the column's centre line crosses the volume it sweeps, and
+// a column it went into under its top keeps its material as intervals
+// (`under_`). Its contacts are found where it crosses the columns' centre
+// lines, as a vertical cutter's on a face that was cut (to half a cell).
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/workshop/mill_part.hpp"
+#include "core/workshop/tilt.hpp"
+
+namespace pupitre::workshop {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+// The contact's precision in travel (mm), as a vertical cutter's.
+constexpr double kTravelTol = 1e-5;
+// Shorter than this (mm), what a cut leaves of a column is rounding.
+constexpr double kSliver = 1e-9;
+
+P3 lerp(const P3& a, const P3& b, double f) {
+    return {a[0] + f * (b[0] - a[0]), a[1] + f * (b[1] - a[1]), a[2] + f * (b[2] - a[2])};
+}
+
+}  // namespace
+
+void MillWorld::material(int i, int j, std::vector<std::array<double, 2>>& out) const {
+    out.clear();
+    if (i < 0 || j < 0 || i >= nx_ || j >= ny_) return;
+    const size_t cell = size_t(j) * size_t(nx_) + size_t(i);
+    if (auto it = under_.find(cell); it != under_.end()) {
+        out = it->second;
+        return;
+    }
+    if (double(h_[cell]) > stock_.lo[2]) out.push_back({stock_.lo[2], double(h_[cell])});
+}
+
+double MillWorld::carve(size_t cell, double lo, double hi) {
+    const double floor_z = stock_.lo[2];
+    std::vector<std::array<double, 2>> was, left;
+    if (auto it = under_.find(cell); it != under_.end())
+        was = std::move(it->second);
+    else if (double(h_[cell]) > floor_z)
+        was.push_back({floor_z, double(h_[cell])});
+    double taken = 0;
+    for (const auto& g : was) {
+        const double a = std::max(g[0], lo), b = std::min(g[1], hi);
+        if (!(a < b)) {
+            left.push_back(g);
+            continue;
+        }
+        taken += b - a;
+        if (a - g[0] > kSliver) left.push_back({g[0], a});
+        if (g[1] - b > kSliver) left.push_back({b, g[1]});
+    }
+    h_[cell] = left.empty() ? float(floor_z) : float(left.back()[1]);
+    if (left.empty() || (left.size() == 1 && left[0][0] <= floor_z))
+        under_.erase(cell);
+    else
+        under_[cell] = std::move(left);
+    return taken;
+}
+
+double MillWorld::apply_tilted(const Stroke& s) {
+    const double lox = stock_.lo[0], loy = stock_.lo[1], floor_z = stock_.lo[2];
+    // The cells whose centres are within the stroke's reach.
+    auto from = [&](double v, double lo, int n) {
+        return std::clamp(int(std::floor((v - lo) / cell_ - 0.5)), 0, n - 1);
+    };
+    auto to = [&](double v, double lo, int n) {
+        return std::clamp(int(std::ceil((v - lo) / cell_ - 0.5)), 0, n - 1);
+    };
+    const int i0 = from(s.reach.lo[0], lox, nx_), i1 = to(s.reach.hi[0], lox, nx_);
+    const int j0 = from(s.reach.lo[1], loy, ny_), j1 = to(s.reach.hi[1], loy, ny_);
+    const P3 d{s.b[0] - s.a[0], s.b[1] - s.a[1], s.b[2] - s.a[2]};
+    const double last_w = stock_.hi[0] - (lox + (nx_ - 1) * cell_);
+    const double last_h = stock_.hi[1] - (loy + (ny_ - 1) * cell_);
+    double removed = 0;
+    for (int j = j0; j <= j1; ++j)
+        for (int i = i0; i <= i1; ++i) {
+            const size_t cell = size_t(j) * size_t(nx_) + size_t(i);
+            const double top = h_[cell];
+            if (top <= floor_z) continue;
+            tilt::Line l;
+            l.o = {xs_[size_t(i)], ys_[size_t(j)], 0};
+            // 0.1 nm of the move: the height field keeps a float.
+            const tilt::Span sp = tilt::swept_cutter(s.radius, s.corner, s.a, d, s.u, l, 1e-7);
+            if (sp.empty() || sp.lo >= top || sp.hi <= floor_z) continue;
+            touched_[cell] = 1;
+            removed += carve(cell, sp.lo, sp.hi) * (i == nx_ - 1 ? last_w : cell_) *
+                       (j == ny_ - 1 ? last_h : cell_);
+        }
+    if (removed > 0) {
+        for (int tj = j0 / kTile; tj <= j1 / kTile; ++tj)
+            for (int ti = i0 / kTile; ti <= i1 / kTile; ++ti)
+                tile_stale_[size_t(tj) * size_t(tx_) + size_t(ti)] = 1;
+        stale_ = true;
+    }
+    return removed;
+}
+
+namespace {
+
+// How far above the tip a part is followed for the material: up to the
+// stock's top (a part lying flat or pointing down, across the table).
+double part_top(const Cutter& c, Part part, const P3& tip, const P3& u, double zmax) {
+    const PartSpan s = span_of(c, part);
+    if (u[2] <= 1e-6) return std::min(s.top, s.base + 2000);
+    const double lean = s.radius * std::sqrt(std::max(0.0, 1 - u[2] * u[2]));
+    return std::min(s.top, std::max(s.base, (zmax - tip[2] + lean) / u[2]));
+}
+
+}  // namespace
+
+double MillWorld::tilted_depth(const Cutter& c, const P3& tip, const P3& u, Part part,
+                               double above) const {
+    const PartSpan sh = span_of(c, part);
+    const double floor_z = stock_.lo[2];
+    if (!(sh.radius > 0)) return 0;
+    const Box3 bb = tilt::part_box(c, part, tip, u, part_top(c, part, tip, u, stock_.hi[2]));
+    if (bb.lo[2] >= stock_.hi[2] || bb.hi[2] <= floor_z || bb.hi[0] < stock_.lo[0] ||
+        bb.lo[0] > stock_.hi[0] || bb.hi[1] < stock_.lo[1] || bb.lo[1] > stock_.hi[1])
+        return 0;
+    auto cells = [&](double v, double lo, int n) {
+        return std::clamp(int(std::floor((v - lo) / cell_)), 0, n - 1);
+    };
+    const int ci0 = cells(bb.lo[0], stock_.lo[0], nx_), ci1 = cells(bb.hi[0], stock_.lo[0], nx_);
+    const int cj0 = cells(bb.lo[1], stock_.lo[1], ny_), cj1 = cells(bb.hi[1], stock_.lo[1], ny_);
+    std::vector<std::array<double, 2>> segs;
+    double best = 0;
+    for (int tj = cj0 / kTile; tj <= cj1 / kTile; ++tj)
+        for (int ti = ci0 / kTile; ti <= ci1 / kTile; ++ti) {
+            // A tile all below the part's lowest point is clear of it.
+            if (tile_max_[size_t(tj) * size_t(tx_) + size_t(ti)] <= bb.lo[2]) continue;
+            const int i0 = std::max(ci0, ti * kTile), i1 = std::min(ci1, ti * kTile + kTile - 1);
+            const int j0 = std::max(cj0, tj * kTile), j1 = std::min(cj1, tj * kTile + kTile - 1);
+            for (int j = j0; j <= j1; ++j)
+                for (int i = i0; i <= i1; ++i) {
+                    const double h = h_[size_t(j) * size_t(nx_) + size_t(i)];
+                    if (h <= floor_z || h <= bb.lo[2]) continue;
+                    const double x = xs_[size_t(i)], y = ys_[size_t(j)];
+                    const double in = tilt::inset(sh, tip, u, x, y);
+                    if (in <= best) continue;
+                    tilt::Line l;
+                    l.o = {x, y, 0};
+                    const tilt::Span sp = tilt::part_span(c, part, tip, u, l);
+                    if (sp.empty() || sp.lo >= h) continue;
+                    material(i, j, segs);
+                    for (const auto& g : segs) {
+                        const double o = std::min(sp.hi, g[1]) - std::max(sp.lo, g[0]);
+                        best = std::max(best, std::min(o, in));
+                    }
+                    if (best > above) return best;
+                }
+        }
+    return best;
+}
+
+double MillWorld::tilted_first(const Cutter& c, const P3& a, const P3& b, const P3& u, Part part,
+                               double depth, bool before) const {
+    refresh();
+    auto deeper = [&](double t) {
+        return tilted_depth(c, lerp(a, b, t), u, part, depth) > depth;
+    };
+    if (deeper(0)) return 0;
+    const double len = std::hypot(b[0] - a[0], b[1] - a[1], b[2] - a[2]);
+    if (!(len > 0)) return 2;
+    // Nothing to meet: the part stays above every top, or beside the stock.
+    const double zmax = *std::max_element(tile_max_.begin(), tile_max_.end());
+    const Box3 ba = tilt::part_box(c, part, a, u, part_top(c, part, a, u, zmax));
+    const Box3 bb = tilt::part_box(c, part, b, u, part_top(c, part, b, u, zmax));
+    if (std::min(ba.lo[2], bb.lo[2]) >= zmax) return 2;
+    for (int k = 0; k < 2; ++k)
+        if (std::max(ba.hi[k], bb.hi[k]) < stock_.lo[k] ||
+            std::min(ba.lo[k], bb.lo[k]) > stock_.hi[k])
+            return 2;
+    // March in steps no longer than a cell, then halve the step between the
+    // last clear place and the first deep one.
+    const double step = std::min(cell_, 0.25) / len;
+    double clear = 0;
+    for (double t = std::min(step, 1.0);; t = std::min(t + step, 1.0)) {
+        if (deeper(t)) {
+            double deep = t;
+            while ((deep - clear) * len > kTravelTol) {
+                const double mid = 0.5 * (clear + deep);
+                (deeper(mid) ? deep : clear) = mid;
+            }
+            return before ? clear : deep;
+        }
+        clear = t;
+        if (t >= 1) break;
+    }
+    return 2;
+}
+
+double depth_into(const std::vector<P3>& points, const P3& tip, const Box3& b) {
+    double best = 0;
+    for (const P3& q : points) {
+        const double x = tip[0] + q[0], y = tip[1] + q[1], z = tip[2] + q[2];
+        best = std::max(best, std::min({x - b.lo[0], b.hi[0] - x, y - b.lo[1], b.hi[1] - y,
+                                        z - b.lo[2], b.hi[2] - z}));
+    }
+    return best;
+}
+
+double depth_into(const std::vector<P3>& points, const P3& tip, const Cylinder& k) {
+    double best = 0;
+    for (const P3& q : points) {
+        const double x = tip[0] + q[0], y = tip[1] + q[1], z = tip[2] + q[2];
+        best = std::max(best, std::min({k.radius - std::hypot(x - k.x, y - k.y), z - k.z0,
+                                        k.z1 - z}));
+    }
+    return best;
+}
+
+}  // namespace pupitre::workshop

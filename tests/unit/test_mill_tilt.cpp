@@ -1,0 +1,207 @@
+// A tilted cutter in the machining centre's material (issue 15): the line
+// through the volume a tilted cutter sweeps, against a membership test in
+// closed form; cuts from the side that leave material above (a slot in a
+// face), a chamfer cut with the end of a cutter at 45°, a tilted ball end,
+// the store's text, and the first contact of a tilted end with the top.
+// Values worked out by hand in the comments.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "core/workshop/mill_part.hpp"
+#include "core/workshop/tilt.hpp"
+
+namespace pupitre::workshop {
+namespace {
+
+using tilt::Line;
+using tilt::Span;
+
+// Whether p is in the volume a flat end (radius r, axis u) sweeps, its tip
+// going from a to a + d: the t of [0, 1] with p above the end (t m <= h)
+// and within r of the axis (a quadratic in t) meet.
+bool in_swept_flat(const P3& p, const P3& a, const P3& d, const P3& u, double r) {
+    const P3 w = tilt::sub(p, a);
+    const double h = tilt::dot(w, u), m = tilt::dot(d, u);
+    const P3 pw = tilt::sub(w, tilt::mul(u, h)), pd = tilt::sub(d, tilt::mul(u, m));
+    double t0 = 0, t1 = 1;
+    if (m > 0) t1 = std::min(t1, h / m);
+    if (m < 0) t0 = std::max(t0, h / m);
+    if (m == 0 && h < 0) return false;
+    if (t0 > t1) return false;
+    // |pw - t pd|² <= r²: its minimum over [t0, t1].
+    const double dd = tilt::dot(pd, pd);
+    const double t = dd > 0 ? std::clamp(tilt::dot(pw, pd) / dd, t0, t1) : t0;
+    const P3 e = tilt::sub(pw, tilt::mul(pd, t));
+    return tilt::dot(e, e) <= r * r;
+}
+
+P3 unit(P3 v) {
+    return tilt::mul(v, 1 / std::sqrt(tilt::dot(v, v)));
+}
+
+TEST(TiltGeometry, SweptFlatMatchesMembership) {
+    std::mt19937 rng(15);
+    std::uniform_real_distribution<double> c(-10, 10), tiltang(0, 1.6), rad(0.5, 6);
+    int crossed = 0;
+    for (int n = 0; n < 3000; ++n) {
+        const double b = tiltang(rng), az = c(rng);
+        const P3 u{std::sin(b) * std::cos(az), std::sin(b) * std::sin(az), std::cos(b)};
+        const P3 a{c(rng), c(rng), c(rng)}, d{c(rng), c(rng), n % 7 == 0 ? 0 : c(rng)};
+        const double r = rad(rng);
+        Line l;
+        l.o = {c(rng), c(rng), c(rng)};
+        l.e = n % 3 == 0 ? P3{0, 0, 1} : unit({c(rng), c(rng), c(rng)});
+        const Span sp = tilt::swept_flat(a, d, u, r, l, 1e-10);
+        auto at = [&](double s) { return tilt::add(l.o, tilt::mul(l.e, s)); };
+        if (sp.empty()) {
+            // Nothing of the line near the cutter is in it.
+            for (double s = -60; s <= 60; s += 0.01)
+                ASSERT_FALSE(in_swept_flat(at(s), a, d, u, r)) << n << " s " << s;
+            continue;
+        }
+        ++crossed;
+        constexpr double e = 1e-6;
+        if (std::isfinite(sp.lo)) {
+            EXPECT_FALSE(in_swept_flat(at(sp.lo - e), a, d, u, r)) << n;
+            if (sp.hi - sp.lo > 4 * e) {
+                EXPECT_TRUE(in_swept_flat(at(sp.lo + e), a, d, u, r)) << n;
+            }
+        }
+        if (std::isfinite(sp.hi)) {
+            EXPECT_FALSE(in_swept_flat(at(sp.hi + e), a, d, u, r)) << n;
+            if (sp.hi - sp.lo > 4 * e) {
+                EXPECT_TRUE(in_swept_flat(at(sp.hi - e), a, d, u, r)) << n;
+            }
+        }
+    }
+    EXPECT_GT(crossed, 500);
+}
+
+// The stock of these tests: 100 x 100 x 50 from the origin, cells of 0.1.
+MillWorld block() {
+    return MillWorld(Box3{{0, 0, 0}, {100, 100, 50}}, 0.1);
+}
+
+Cutter flat(double r) {
+    Cutter c;
+    c.radius = r;
+    c.corner = 0;
+    c.flute = 30;
+    c.reach = 45;
+    c.holder = 16;
+    return c;
+}
+
+void expect_spans(const std::vector<std::array<double, 2>>& got,
+                  const std::vector<std::array<double, 2>>& want, double tol = 1e-6) {
+    ASSERT_EQ(got.size(), want.size());
+    for (size_t k = 0; k < got.size(); ++k) {
+        EXPECT_NEAR(got[k][0], want[k][0], tol) << k;
+        EXPECT_NEAR(got[k][1], want[k][1], tol) << k;
+    }
+}
+
+// B90: a Ø10 end mill lying along +X, its end 2 mm inside the +X face at
+// Z30, fed along Y across the block: a slot 2 deep from Z25 to Z35 in the
+// face, the material above it kept.
+TEST(MillTilt, SideSlotKeepsTheMaterialAbove) {
+    MillWorld w = block();
+    const double v = w.cut(flat(5), {98, -10, 30}, {98, 110, 30}, {1, 0, 0});
+    EXPECT_NEAR(v, 2 * 10 * 100, 2 * 100 * 0.1 + 1);  // to the cells
+    expect_spans(w.along(2, {99, 50, 0}), {{0, 25}, {35, 50}});
+    expect_spans(w.along(0, {0, 50, 30}), {{0, 98}});
+    expect_spans(w.along(0, {0, 50, 36}), {{0, 100}});
+    // The height field keeps the top; the column keeps both pieces.
+    const int i = 990, j = 500;  // the cell whose centre is X99.05 Y50.05
+    EXPECT_FLOAT_EQ(w.height(i, j), 50);
+    std::vector<std::array<double, 2>> col;
+    w.material(i, j, col);
+    expect_spans(col, {{0, 25}, {35, 50}});
+    // A vertical Ø2 cutter plunged there to Z20 takes the top piece and the
+    // top of the lower one.
+    Cutter small = flat(1);
+    w.cut(small, {99.05, 50.05, 60}, {99.05, 50.05, 20});
+    w.material(i, j, col);
+    expect_spans(col, {{0, 20}});
+    EXPECT_FLOAT_EQ(w.height(i, j), 20);
+    expect_spans(w.along(2, {99, 50, 0}), {{0, 20}});
+}
+
+// B45: the end of a Ø10 end mill square to (1, 0, 1)/√2, its centre at X99
+// Z49, fed along Y: the plane X + Z = 148 cuts a 2 x 2 chamfer off the edge
+// of the +X face and the top (every point of it within 1.42 of the axis).
+TEST(MillTilt, ChamferWithTheEnd) {
+    MillWorld w = block();
+    const double s = std::sqrt(0.5);
+    w.cut(flat(5), {99, -10, 49}, {99, 110, 49}, {s, 0, s});
+    for (double x : {98.2, 98.75, 99.5, 99.9}) {
+        const auto z = w.along(2, {x, 40, 0});
+        ASSERT_EQ(z.size(), 1u) << x;
+        EXPECT_NEAR(z[0][1], 148 - x, 1e-6) << x;
+    }
+    expect_spans(w.along(2, {97.9, 40, 0}), {{0, 50}});
+    expect_spans(w.along(0, {0, 40, 49}), {{0, 99}});
+    // The height field at a cell's centre: X99.05 -> 48.95.
+    EXPECT_NEAR(w.height(990, 400), 48.95, 1e-4);
+}
+
+// A Ø6 ball end leaning 30° towards +X, its tip at X50 Z45, fed along Y:
+// the ball's centre is 3 up the axis, at X51.5 Z47.598; under it the
+// groove's bottom is 3 lower, Z44.598.
+TEST(MillTilt, TiltedBallEnd) {
+    MillWorld w = block();
+    Cutter ball = flat(3);
+    ball.corner = 3;
+    const double b = 30 * M_PI / 180;
+    w.cut(ball, {50, 20, 45}, {50, 80, 45}, {std::sin(b), 0, std::cos(b)});
+    const double cz = 45 + 3 * std::cos(b), cx = 50 + 3 * std::sin(b);
+    const auto z = w.along(2, {cx, 50, 0});
+    ASSERT_EQ(z.size(), 1u);
+    EXPECT_NEAR(z[0][1], cz - 3, 1e-6);
+    // Beside the centre, on the ball: sqrt(9 - 1) below the centre.
+    EXPECT_NEAR(w.along(2, {cx + 1, 50, 0})[0][1], cz - std::sqrt(8.0), 1e-6);
+}
+
+// The store's text keeps the axis: read back, the part is the same.
+TEST(MillTilt, TextRoundTrip) {
+    MillWorld w = block();
+    const double s = std::sqrt(0.5);
+    w.cut(flat(5), {98, -10, 30}, {98, 110, 30}, {1, 0, 0});
+    w.cut(flat(5), {99, -10, 49}, {99, 110, 49}, {s, 0, s});
+    w.cut(flat(2), {20, 20, 60}, {20, 20, 40});
+    const std::string text = w.to_text();
+    MillWorld v = block();
+    ASSERT_TRUE(v.from_text(text));
+    EXPECT_EQ(v.to_text(), text);
+    for (int j = 0; j < v.ny(); j += 7)
+        for (int i = 0; i < v.nx(); i += 7) ASSERT_EQ(v.height(i, j), w.height(i, j)) << i << ' ' << j;
+    expect_spans(v.along(2, {99, 50, 0}), {{0, 25}, {35, 49}});
+    // Nine numbers are not a stroke.
+    EXPECT_FALSE(v.from_text("1 2 3 4 5 6 7 0 1\n"));
+}
+
+// A Ø10 end mill leaning 30° towards +X comes down on the top: its rim's
+// lowest point, r (cos 30°, 0, -sin 30°) from the tip, meets Z50 when the
+// tip is at Z52.5. The tip is placed so that point is over a cell's centre.
+TEST(MillTilt, FirstContactOfTheRim) {
+    MillWorld w = block();
+    const double b = 30 * M_PI / 180;
+    const P3 u{std::sin(b), 0, std::cos(b)};
+    const double x = 50.05 - 5 * std::cos(b);
+    const P3 a{x, 50.05, 60}, c{x, 50.05, 40};
+    const double f = w.first_contact(flat(5), a, c, Part::flute, 1e-4, true, u);
+    ASSERT_LE(f, 1);
+    EXPECT_NEAR(60 - 20 * f, 52.5, 1e-4);
+    // Upright, the same cutter meets the top with its whole end at Z50.
+    const double g = w.first_contact(flat(5), a, c, Part::flute, 1e-4, true);
+    EXPECT_NEAR(60 - 20 * g, 50, 1e-4);
+    // Beside the block, clear of it all the way down to Z40.
+    EXPECT_GT(w.first_contact(flat(5), {120, 50, 60}, {120, 50, 40}, Part::flute, 1e-4, true, u),
+              1);
+}
+
+}  // namespace
+}  // namespace pupitre::workshop
