@@ -141,6 +141,17 @@ class MillWorld {
                         double above) const;
     double tilted_first(const Cutter& c, const P3& a, const P3& b, const P3& u, Part part,
                         double depth, bool before) const;
+    // The stock's own faces and top, exact: how deep the part's surface
+    // points are in the stock as loaded, where no cut came near.
+    double stock_depth(const std::vector<P3>& points, const P3& tip) const;
+    const std::vector<P3>& surface_of(const Cutter& c, Part part, const P3& u) const;
+    struct Surface {
+        Cutter c;
+        Part part = Part::flute;
+        P3 u{};
+        std::vector<P3> points;
+    };
+    mutable Surface surface_;  // the last part's, kept: a contact search asks for it often
     // Brings the tiles' highest tops up to date (kept lazily: a pocket's
     // thousands of strokes would each rescan the tiles they cross).
     void refresh() const;

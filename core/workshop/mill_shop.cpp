@@ -10,6 +10,7 @@
 #include "core/geometry/geometry.hpp"
 #include "core/i18n.hpp"
 #include "core/numfmt.hpp"
+#include "core/workshop/tilt.hpp"
 #include "core/workshop/workshop.hpp"
 
 namespace pupitre::workshop {
@@ -22,17 +23,36 @@ P3 lerp(const P3& a, const P3& b, double f) {
     return {a[0] + f * (b[0] - a[0]), a[1] + f * (b[1] - a[1]), a[2] + f * (b[2] - a[2])};
 }
 
-// A cutter grown by `g` (cutter(g)) has its tip `g` lower.
-P3 below(const P3& p, double g) {
-    return {p[0], p[1], p[2] - g};
+// A cutter grown by `g` (cutter(g)) has its tip `g` further down its axis.
+P3 below(const P3& p, double g, const P3& u = kUp) {
+    return {p[0] - g * u[0], p[1] - g * u[1], p[2] - g * u[2]};
 }
 
 double dist(const P3& a, const P3& b) {
     return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
 }
 
+// The holder of a tilted cutter is followed this far above its face (mm):
+// nothing in the workshop stands higher above the block.
+constexpr double kHolderLength = 150;
+
+bool overlap(const Box3& p, const Box3& q) {
+    for (int k = 0; k < 3; ++k)
+        if (p.hi[k] < q.lo[k] || p.lo[k] > q.hi[k]) return false;
+    return true;
+}
+
 // Whether `part` swept from a to b can come near the box at all.
-bool may_meet(const Cutter& c, Part part, const P3& a, const P3& b, const Box3& box) {
+bool may_meet(const Cutter& c, Part part, const P3& a, const P3& b, const Box3& box,
+              const P3& u = kUp) {
+    if (leans(u)) {
+        const double top = span_of(c, part).base + kHolderLength;
+        Box3 s = tilt::part_box(c, part, a, u, top);
+        const Box3 t = tilt::part_box(c, part, b, u, top);
+        for (int k = 0; k < 3; ++k)
+            s.lo[k] = std::min(s.lo[k], t.lo[k]) - 1e-3, s.hi[k] = std::max(s.hi[k], t.hi[k]) + 1e-3;
+        return overlap(s, box);
+    }
     const PartSpan s = span_of(c, part);
     const double r = s.radius + 1e-3;
     return std::min(a[0], b[0]) - r <= box.hi[0] && std::max(a[0], b[0]) + r >= box.lo[0] &&
@@ -72,7 +92,8 @@ constexpr Part kParts[] = {Part::flute, Part::shank, Part::holder};
 // A point of the tool seen from the workshop: the tip of the cutter grown by
 // `g` for a contact or a shim.
 P3 Workshop::grown_tip(const Axes& om, double g) const {
-    return below(tip3(om), g);
+    const Pose p = pose3(om, true);
+    return below(p.tip, g, p.u);
 }
 
 // The fixtures of the setup, built once by the constructor.
@@ -124,54 +145,68 @@ Cutter Workshop::cutter(double grow) const {
     return c;
 }
 
-// In the table's frame: a C table turned by C carries the part round its
-// axis, so the tool is where the machine point is, turned by C about that
-// axis in the part's frame at C0 (the tool frame in the part's, forward5 of
-// core/geometry/kinematics.cpp: Rot_Z(C) about the table's axis).
-P3 Workshop::tip3(const Axes& om, bool turned) const {
+// The tool in the table's frame (the tool frame in the part's of course
+// notes 004 §5, core/geometry/kinematics.cpp):
+//  - a B head (mill5, forward5: Rot_Y(B) about the head's axis, `pivot`
+//    above the gauge line) swings the tool about that axis;
+//  - a B table (mill4, forward4: Rot_Y(B) about the table's axis) tilts the
+//    part, so the tool is the machine's, turned by B about that axis;
+//  - a C table (mill5: Rot_Z(C) about the table's axis) carries the part
+//    round, so the tool is turned by C about that axis.
+Workshop::Pose Workshop::pose3(const Axes& om, bool turned) const {
     const Tool* t = current();
     double length = 0;
     if (t) {
         const ToolTruth& tt = *t->truth;
         length = tt.length - (tt.wear > 0 ? tt.wear * 1e-3 * (t->cut / 1000) : 0);
     }
-    double x = om[X], y = om[Y];
-    if (turned && m_.has(C) && om[C] != 0) {
-        const double a = om[C] * geometry::kDeg, cx = setup_.mill.c_x, cy = setup_.mill.c_y;
-        const double dx = x - cx, dy = y - cy;
-        x = cx + dx * std::cos(a) - dy * std::sin(a);
-        y = cy + dx * std::sin(a) + dy * std::cos(a);
+    Pose p{{om[X], om[Y], om[Z] - length}, kUp};
+    if (!turned) return p;
+    const MillSetup& ms = setup_.mill;
+    if (m_.has(B) && om[B] != 0) {
+        const double a = om[B] * geometry::kDeg, cb = std::cos(a), sb = std::sin(a);
+        p.u = {sb, 0, cb};
+        if (m_.kinematics == "table") {
+            const double dx = p.tip[0] - ms.b_x, dz = p.tip[2] - ms.b_z;
+            p.tip[0] = ms.b_x + cb * dx + sb * dz;
+            p.tip[2] = ms.b_z - sb * dx + cb * dz;
+        } else {
+            const double down = ms.pivot + length;
+            p.tip[0] = om[X] - sb * down;
+            p.tip[2] = om[Z] + ms.pivot - cb * down;
+        }
     }
-    return {x, y, om[Z] - length};
+    if (m_.has(C) && om[C] != 0) {
+        const double a = om[C] * geometry::kDeg, cc = std::cos(a), sc = std::sin(a);
+        const double dx = p.tip[0] - ms.c_x, dy = p.tip[1] - ms.c_y;
+        p.tip[0] = ms.c_x + dx * cc - dy * sc;
+        p.tip[1] = ms.c_y + dx * sc + dy * cc;
+        p.u = {p.u[0] * cc - p.u[1] * sc, p.u[0] * sc + p.u[1] * cc, p.u[2]};
+    }
+    return p;
 }
 
-// The workshop's cutter stays vertical to the table: a move that ends with B
-// away from 0 is stopped at its start (a move back to B0 is let through).
-bool Workshop::tilted(const MoveEvent& e, Outcome& o) {
-    if (!m_.has(B) || std::fabs(e.to_mach[B]) < 1e-9) return false;
-    Crash cr;
-    cr.code = kNotModelled;
-    cr.loc = e.loc;
-    cr.tool = tool_;
-    cr.om = e.from_mach;
-    cr.fraction = 0;
-    cr.what = strf(tr("B%s: the workshop models the tool vertical to the table (B0) only; the "
-                      "move is not made (without the workshop: :setup off)"),
-                   fixed3(e.to_mach[B]).c_str());
-    crashes_.push_back(cr);
-    o.crashed = true;
-    o.stop = e.from_mach;
-    o.fraction = 0;
-    o.what = cr.what;
-    return true;
+P3 Workshop::tip3(const Axes& om, bool turned) const {
+    return pose3(om, turned).tip;
 }
 
-// A jog of C: the part turns under the tool along an arc about the table's
-// axis, made as the jogs of its chords, up to the first that stops.
-Outcome Workshop::mill_jog_c(const MoveEvent& e, bool continuous) {
+P3 Workshop::axis3(const Axes& om) const {
+    return pose3(om, true).u;
+}
+
+P3 Workshop::piece_axis(const Axes& from, const Axes& to) const {
+    Axes mid = from;
+    for (size_t i = 0; i < mid.size(); ++i) mid[i] += 0.5 * (to[i] - from[i]);
+    return axis3(mid);
+}
+
+// A jog of C or B: the part turns under the tool or the tool swings, made as
+// the jogs of the chords of its path, up to the first that stops.
+Outcome Workshop::mill_jog_turn(const MoveEvent& e, bool continuous) {
     std::vector<Axes> oms;
     path_of(e, oms);
-    const double span = e.to_mach[C] - e.from_mach[C];
+    const int axis = m_.has(C) && e.to_mach[C] != e.from_mach[C] ? C : B;
+    const double span = e.to_mach[axis] - e.from_mach[axis];
     for (size_t i = 0; i + 1 < oms.size(); ++i) {
         MoveEvent piece = e;
         piece.g = 1;
@@ -179,7 +214,7 @@ Outcome Workshop::mill_jog_c(const MoveEvent& e, bool continuous) {
         piece.to_mach = oms[i + 1];
         Outcome o = mill_jog_line(piece, continuous);
         if (!o.crashed && !o.touched) continue;
-        o.fraction = span != 0 ? (o.stop[C] - e.from_mach[C]) / span : 1;
+        o.fraction = span != 0 ? (o.stop[axis] - e.from_mach[axis]) / span : 1;
         if (o.crashed) crashes_.back().fraction = o.fraction;
         return o;
     }
@@ -187,15 +222,23 @@ Outcome Workshop::mill_jog_c(const MoveEvent& e, bool continuous) {
 }
 
 // How deep the cutter is into anything at `tip`, and what.
-double Workshop::mill_depth(const Cutter& c, const P3& tip, Met& what) const {
+double Workshop::mill_depth(const Cutter& c, const P3& tip, const P3& u, Met& what) const {
     double deepest = 0;
     what = Met::none;
     auto keep = [&](double d, Met h) {
         if (d > deepest) deepest = d, what = h;
     };
+    const bool lean = leans(u);
     for (Part p : kParts) {
-        keep(mill_->depth_into(c, tip, p), Met::material);
-        for (const Fixture& f : fixtures_) keep(f.depth(c, tip, p), f.what);
+        keep(mill_->depth_into(c, tip, p, u), Met::material);
+        if (!lean) {
+            for (const Fixture& f : fixtures_) keep(f.depth(c, tip, p), f.what);
+            continue;
+        }
+        const std::vector<P3> points =
+            tilt::surface(c, p, u, span_of(c, p).base + kHolderLength);
+        for (const Fixture& f : fixtures_)
+            if (may_meet(c, p, tip, tip, f.box, u)) keep(f.depth(points, tip), f.what);
     }
     return deepest;
 }
@@ -203,8 +246,9 @@ double Workshop::mill_depth(const Cutter& c, const P3& tip, Met& what) const {
 // The first contact along a->b deeper than `depth`: with the material
 // (`with_material`: the flute too; else only the shank and the holder, the
 // flute cutting) and every fixture.
-Workshop::Contact Workshop::mill_first(const Cutter& c, const P3& a, const P3& b, double depth,
-                                       bool with_material, bool before, double flute_depth) const {
+Workshop::Contact Workshop::mill_first(const Cutter& c, const P3& a, const P3& b, const P3& u,
+                                       double depth, bool with_material, bool before,
+                                       double flute_depth) const {
     Contact k;
     auto keep = [&](double f, Met h, Part p) {
         if (f < k.f) k = Contact{f, h, p};
@@ -212,15 +256,28 @@ Workshop::Contact Workshop::mill_first(const Cutter& c, const P3& a, const P3& b
     // A part whose lowest point stays above the block's top as loaded never
     // meets the material (most moves: the shank and holder while cutting,
     // the flute on a rapid over the part).
-    const double low = std::min(a[2], b[2]), top = mill_->stock().hi[2] + depth;
+    const bool lean = leans(u);
+    const double top = mill_->stock().hi[2] + depth;
     for (Part p : kParts) {
         const double d = p == Part::flute && flute_depth >= 0 ? flute_depth : depth;
-        if ((with_material || p != Part::flute) && low + span_of(c, p).base < top + (d - depth))
-            keep(mill_->first_contact(c, a, b, p, d, before), Met::material, p);
-        for (const Fixture& f : fixtures_)
-            if (may_meet(c, p, a, b, f.box))
+        const double reach = span_of(c, p).base + kHolderLength;
+        const double low = lean ? std::min(tilt::part_box(c, p, a, u, reach).lo[2],
+                                           tilt::part_box(c, p, b, u, reach).lo[2])
+                                : std::min(a[2], b[2]) + span_of(c, p).base;
+        if ((with_material || p != Part::flute) && low < top + (d - depth))
+            keep(mill_->first_contact(c, a, b, p, d, before, u), Met::material, p);
+        std::vector<P3> points;
+        for (const Fixture& f : fixtures_) {
+            if (!may_meet(c, p, a, b, f.box, u)) continue;
+            if (!lean) {
                 keep(marched(a, b, d, before, [&](const P3& q) { return f.depth(c, q, p); }),
                      f.what, p);
+                continue;
+            }
+            if (points.empty()) points = tilt::surface(c, p, u, reach);
+            keep(marched(a, b, d, before, [&](const P3& q) { return f.depth(points, q); }), f.what,
+                 p);
+        }
     }
     return k;
 }
@@ -281,8 +338,8 @@ std::string Workshop::mill_touch_text(const Contact& c, const std::string& place
 // One straight piece of a move, tip from a to b (the machine from oma to
 // omb): cut while cutting, checked against everything; false on a crash,
 // recorded with the fraction of this piece done.
-bool Workshop::mill_stroke(const MoveEvent& e, const P3& a, const P3& b, const Axes& oma,
-                           const Axes& omb) {
+bool Workshop::mill_stroke(const MoveEvent& e, const P3& a, const P3& b, const P3& u,
+                           const Axes& oma, const Axes& omb) {
     Tool* t = current();
     if (!t) return true;
     const ToolTruth& tt = *t->truth;
@@ -305,15 +362,18 @@ bool Workshop::mill_stroke(const MoveEvent& e, const P3& a, const P3& b, const A
     const double len = dist(a, b);
     const Cutter c0 = cutter();
     const double step = std::min(1.0, c0.flute / 2);
-    const bool deep = std::min(a[2], b[2]) + c0.flute < mill_->stock().hi[2] + kCrashDepth;
+    const double shank = leans(u) ? std::min(tilt::part_box(c0, Part::shank, a, u, c0.reach).lo[2],
+                                             tilt::part_box(c0, Part::shank, b, u, c0.reach).lo[2])
+                                  : std::min(a[2], b[2]) + c0.flute;
+    const bool deep = shank < mill_->stock().hi[2] + kCrashDepth;
     const int steps = cutting && deep ? std::max(1, int(std::ceil(len / step))) : 1;
     for (int k = 0; k < steps; ++k) {
         const double f0 = double(k) / steps, f1 = double(k + 1) / steps;
         const P3 p = lerp(a, b, f0), q = lerp(a, b, f1);
         const Cutter c = cutter();
-        const Contact hit = mill_first(c, p, q, kCrashDepth, !cutting, false);
+        const Contact hit = mill_first(c, p, q, u, kCrashDepth, !cutting, false);
         const P3 end = hit.f > 1 ? q : lerp(p, q, hit.f);
-        if (cutting && mill_->cut(c, p, end) > 0) t->cut += dist(p, end);
+        if (cutting && mill_->cut(c, p, end, u) > 0) t->cut += dist(p, end);
         if (hit.f > 1) continue;
         mill_crash(e, flute_code, hit, a, b, oma, omb, f0 + hit.f * (f1 - f0));
         return false;
@@ -336,14 +396,16 @@ void Workshop::mill_crash(const MoveEvent& e, int flute_code, const Contact& hit
 
 Outcome Workshop::mill_apply(const MoveEvent& e) {
     Outcome o;
-    if (crashed() || tilted(e, o)) return o;
+    if (crashed()) return o;
     std::vector<Axes> oms;
     path_of(e, oms);
     std::vector<double> at(oms.size(), 0);  // the path's length at each point
     for (size_t i = 1; i < oms.size(); ++i)
         at[i] = at[i - 1] + dist(tip3(oms[i - 1]), tip3(oms[i]));
     for (size_t i = 0; i + 1 < oms.size(); ++i) {
-        if (mill_stroke(e, tip3(oms[i]), tip3(oms[i + 1]), oms[i], oms[i + 1])) continue;
+        if (mill_stroke(e, tip3(oms[i]), tip3(oms[i + 1]), piece_axis(oms[i], oms[i + 1]), oms[i],
+                        oms[i + 1]))
+            continue;
         Crash& c = crashes_.back();
         const double total = at.back();
         c.fraction = total > 0 ? (at[i] + c.fraction * (at[i + 1] - at[i])) / total : 1;
@@ -360,34 +422,36 @@ Outcome Workshop::mill_apply(const MoveEvent& e) {
 // holder with the block, a fixture or the shim stops the move.
 Outcome Workshop::mill_jog(const MoveEvent& e, bool continuous) {
     Outcome o;
-    if (crashed() || tilted(e, o) || !current()) return o;  // B first, as a program's move
-    if (m_.has(C) && e.to_mach[C] != e.from_mach[C]) return mill_jog_c(e, continuous);
+    if (crashed() || !current()) return o;
+    if ((m_.has(C) && e.to_mach[C] != e.from_mach[C]) ||
+        (m_.has(B) && e.to_mach[B] != e.from_mach[B]))
+        return mill_jog_turn(e, continuous);
     return mill_jog_line(e, continuous);
 }
 
 // A jog along a straight line of the table's frame.
 Outcome Workshop::mill_jog_line(const MoveEvent& e, bool continuous) {
     Outcome o;
-    const P3 a = tip3(e.from_mach), b = tip3(e.to_mach);
+    const P3 a = tip3(e.from_mach), b = tip3(e.to_mach), u = piece_axis(e.from_mach, e.to_mach);
     Met what = Met::none;
-    const bool touching = mill_depth(cutter(kNear), below(a, kNear), what) > kTouchDepth;
+    const bool touching = mill_depth(cutter(kNear), below(a, kNear, u), u, what) > kTouchDepth;
     // A shim on the part (the paper test): the cutter meets the part a
     // shim's thickness early, and cannot cut through it.
     const bool on_shim =
-        shim_ > 0 && mill_->depth_into(cutter(shim_ + kNear), below(a, shim_ + kNear),
-                                       Part::flute) > kTouchDepth;
+        shim_ > 0 && mill_->depth_into(cutter(shim_ + kNear), below(a, shim_ + kNear, u),
+                                       Part::flute, u) > kTouchDepth;
     if (on_shim && !continuous) return on_the_shim(e.from_mach, tool_);
     if (touching && !continuous) return finder() ? finder_push(e) : mill_apply(e);
     // A held key slides along or away, and stops again before going deeper.
     const double limit =
-        touching ? std::max(kTouchDepth, mill_depth(cutter(), a, what)) : kTouchDepth;
-    Contact k = mill_first(cutter(), a, b, limit, true, true);
+        touching ? std::max(kTouchDepth, mill_depth(cutter(), a, u, what)) : kTouchDepth;
+    Contact k = mill_first(cutter(), a, b, u, limit, true, true);
     if (shim_ > 0) {
         const Cutter over = cutter(shim_);
-        const P3 oa = below(a, shim_), ob = below(b, shim_);
-        const double deep = on_shim ? mill_->depth_into(over, oa, Part::flute) : 0;
-        const double f =
-            mill_->first_contact(over, oa, ob, Part::flute, std::max(kTouchDepth, deep), true);
+        const P3 oa = below(a, shim_, u), ob = below(b, shim_, u);
+        const double deep = on_shim ? mill_->depth_into(over, oa, Part::flute, u) : 0;
+        const double f = mill_->first_contact(over, oa, ob, Part::flute,
+                                              std::max(kTouchDepth, deep), true, u);
         if (f < k.f) k = Contact{f, Met::shim, Part::flute};
     }
     // A finder pushed aside (finder_push) moves off the face without crashing.
@@ -397,8 +461,8 @@ Outcome Workshop::mill_jog_line(const MoveEvent& e, bool continuous) {
     for (size_t i = 0; i < o.stop.size(); ++i)
         o.stop[i] = e.from_mach[i] + k.f * (e.to_mach[i] - e.from_mach[i]);
     const std::string place = mill_where(lerp(a, b, k.f));
-    o.what = told(finder() && k.what != Met::shim ? finder_text(k, a, b, place)
-                                                  : mill_touch_text(k, place));
+    o.what = told(finder() && k.what != Met::shim && !leans(u) ? finder_text(k, a, b, place)
+                                                               : mill_touch_text(k, place));
     return o;
 }
 
@@ -412,9 +476,9 @@ bool Workshop::finder() const {
 // then it is bent (1205; the shank and the holder are rigid, 1203 and 1202).
 Outcome Workshop::finder_push(const MoveEvent& e) {
     Outcome o;
-    const P3 a = tip3(e.from_mach), b = tip3(e.to_mach);
+    const P3 a = tip3(e.from_mach), b = tip3(e.to_mach), u = piece_axis(e.from_mach, e.to_mach);
     const Cutter c = cutter();
-    const Contact hit = mill_first(c, a, b, kCrashDepth, true, false, kFinderTravel);
+    const Contact hit = mill_first(c, a, b, u, kCrashDepth, true, false, kFinderTravel);
     if (hit.f <= 1) {
         mill_crash(e, kCrashProbe, hit, a, b, e.from_mach, e.to_mach, hit.f);
         o.crashed = true;
@@ -424,7 +488,7 @@ Outcome Workshop::finder_push(const MoveEvent& e) {
         return o;
     }
     Met what = Met::none;
-    const double aside = mill_depth(c, b, what);
+    const double aside = mill_depth(c, b, u, what);
     if (aside <= kTouchDepth) return o;  // off the face: it runs true again
     o.touched = true;
     o.stop = e.to_mach;

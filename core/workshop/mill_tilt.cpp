@@ -4,7 +4,8 @@
 // interval where the column's centre line crosses the volume it sweeps, and
 // a column it went into under its top keeps its material as intervals
 // (`under_`). Its contacts are found where it crosses the columns' centre
-// lines, as a vertical cutter's on a face that was cut (to half a cell).
+// lines, as a vertical cutter's on a face that was cut (to half a cell), and
+// exactly on the stock's own faces where no cut came near.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <algorithm>
 #include <cmath>
@@ -22,6 +23,8 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kTravelTol = 1e-5;
 // Shorter than this (mm), what a cut leaves of a column is rounding.
 constexpr double kSliver = 1e-9;
+// The holder is followed this far above its face (mm) for the stock's faces.
+constexpr double kHolderLength = 150;
 
 P3 lerp(const P3& a, const P3& b, double f) {
     return {a[0] + f * (b[0] - a[0]), a[1] + f * (b[1] - a[1]), a[2] + f * (b[2] - a[2])};
@@ -132,7 +135,8 @@ double MillWorld::tilted_depth(const Cutter& c, const P3& tip, const P3& u, Part
     const int ci0 = cells(bb.lo[0], stock_.lo[0], nx_), ci1 = cells(bb.hi[0], stock_.lo[0], nx_);
     const int cj0 = cells(bb.lo[1], stock_.lo[1], ny_), cj1 = cells(bb.hi[1], stock_.lo[1], ny_);
     std::vector<std::array<double, 2>> segs;
-    double best = 0;
+    double best = stock_depth(surface_of(c, part, u), tip);
+    if (best > above) return best;
     for (int tj = cj0 / kTile; tj <= cj1 / kTile; ++tj)
         for (int ti = ci0 / kTile; ti <= ci1 / kTile; ++ti) {
             // A tile all below the part's lowest point is clear of it.
@@ -196,6 +200,35 @@ double MillWorld::tilted_first(const Cutter& c, const P3& a, const P3& b, const 
         if (t >= 1) break;
     }
     return 2;
+}
+
+const std::vector<P3>& MillWorld::surface_of(const Cutter& c, Part part, const P3& u) const {
+    Surface& s = surface_;
+    const bool same = !s.points.empty() && s.part == part && s.u == u &&
+                      s.c.radius == c.radius && s.c.corner == c.corner && s.c.flute == c.flute &&
+                      s.c.reach == c.reach && s.c.holder == c.holder;
+    if (!same) {
+        s.c = c, s.part = part, s.u = u;
+        s.points = tilt::surface(c, part, u, span_of(c, part).base + kHolderLength);
+    }
+    return s.points;
+}
+
+double MillWorld::stock_depth(const std::vector<P3>& points, const P3& tip) const {
+    const Box3& b = stock_;
+    double best = 0;
+    for (const P3& q : points) {
+        const double x = tip[0] + q[0], y = tip[1] + q[1], z = tip[2] + q[2];
+        const double d =
+            std::min({x - b.lo[0], b.hi[0] - x, y - b.lo[1], b.hi[1] - y, z - b.lo[2], b.hi[2] - z});
+        if (d <= best) continue;
+        const int i = std::clamp(int(std::floor((x - b.lo[0]) / cell_)), 0, nx_ - 1);
+        const int j = std::clamp(int(std::floor((y - b.lo[1]) / cell_)), 0, ny_ - 1);
+        const size_t cell = size_t(j) * size_t(nx_) + size_t(i);
+        if (touched_[cell] || cut_beside(i, j) || under_.count(cell)) continue;
+        best = d;
+    }
+    return best;
 }
 
 double depth_into(const std::vector<P3>& points, const P3& tip, const Box3& b) {

@@ -87,6 +87,9 @@ constexpr KeyOf<MillSetup> kMillKeys[] = {
     {"zmap.cell", 0.02, 2, &MillSetup::cell},
     {"table.c.x", -kBig, kBig, &MillSetup::c_x},
     {"table.c.y", -kBig, kBig, &MillSetup::c_y},
+    {"head.pivot", 0, 5000, &MillSetup::pivot},
+    {"table.b.x", -kBig, kBig, &MillSetup::b_x},
+    {"table.b.z", -kBig, kBig, &MillSetup::b_z},
 };
 
 constexpr KeyOf<Pin> kPinKeys[] = {

@@ -62,6 +62,11 @@ struct MillSetup {
     // A C rotary table (mill5): its axis's machine X and Y. The setup is
     // described at C0; the table carries the stock and the fixtures round.
     double c_x = 0, c_y = 0;
+    // A B head (mill5): its axis's height above the spindle's gauge line.
+    // A B table (mill4): its axis's machine X and Z; the setup is described
+    // at B0 and the table tilts the stock and the fixtures with it.
+    double pivot = 0;
+    double b_x = 0, b_z = 0;
 };
 
 struct LatheSetup {

@@ -120,7 +120,7 @@ bool Workshop::probe_contact(const Axes& om) const {
     if (!t || !t->truth->probe) return false;
     if (mill_) {
         Met what = Met::none;
-        return mill_depth(cutter(kNear), grown_tip(om, kNear), what) > kTouchDepth;
+        return mill_depth(cutter(kNear), grown_tip(om, kNear), axis3(om), what) > kTouchDepth;
     }
     const CPaths ball = LatheWorld::sweep(t->near.insert, {tip(om)});
     for (Obstacle w : {Obstacle::material, Obstacle::chuck, Obstacle::tailstock, Obstacle::gauge})
@@ -173,18 +173,32 @@ void Workshop::path_of(const MoveEvent& e, std::vector<Axes>& out) const {
     turn_pieces(out);
 }
 
-// A C table turning along the path: pieces short enough that the part's
-// arc under the tool is within 0.5 µm of their chords, at the largest
-// distance of the machine point from the table's axis.
+// A C table turning or B tilting along the path: pieces short enough that
+// the tool's tip, seen from the part, is within 0.5 µm of their chords (at
+// its largest distance from the axis), and that the tool's axis turns by at
+// most 0.05° in one (a piece is cut with its middle's axis: within 2.2 µm
+// at the side of a Ø10 cutter).
 void Workshop::turn_pieces(std::vector<Axes>& out) const {
-    if (!mill_ || !m_.has(C) || out.front()[C] == out.back()[C]) return;
-    const double cx = setup_.mill.c_x, cy = setup_.mill.c_y;
-    double r = 0;
-    for (const Axes& p : out) r = std::max(r, std::hypot(p[X] - cx, p[Y] - cy));
-    const double step = r > 1e-3 ? 2 * std::acos(1 - 5e-4 / r) / geometry::kDeg : 360;
+    if (!mill_) return;
+    const bool c_turns = m_.has(C) && out.front()[C] != out.back()[C];
+    const bool b_turns = m_.has(B) && out.front()[B] != out.back()[B];
+    if (!c_turns && !b_turns) return;
+    const MillSetup& ms = setup_.mill;
+    double rc = 0, rb = 0;
+    for (const Axes& p : out) {
+        const P3 tip = tip3(p);
+        rc = std::max(rc, std::hypot(tip[0] - ms.c_x, tip[1] - ms.c_y));
+        rb = std::max(rb, m_.kinematics == "table" ? std::hypot(tip[0] - ms.b_x, tip[2] - ms.b_z)
+                                                   : ms.pivot + p[Z] - tip3(p, false)[2]);
+    }
+    auto chord = [](double r) { return r > 1e-3 ? 2 * std::acos(1 - 5e-4 / r) / geometry::kDeg : 360; };
+    const double step_c = chord(rc), step_b = std::min(0.05, chord(rb));
     std::vector<Axes> fine{out.front()};
     for (size_t i = 0; i + 1 < out.size(); ++i) {
-        const int n = std::max(1, int(std::ceil(std::fabs(out[i + 1][C] - out[i][C]) / step)));
+        double turns = 1;
+        if (c_turns) turns = std::max(turns, std::fabs(out[i + 1][C] - out[i][C]) / step_c);
+        if (b_turns) turns = std::max(turns, std::fabs(out[i + 1][B] - out[i][B]) / step_b);
+        const int n = int(std::ceil(turns));
         for (int k = 1; k <= n; ++k) {
             Axes p = out[i];
             for (size_t a = 0; a < p.size(); ++a) p[a] += (out[i + 1][a] - out[i][a]) * k / n;

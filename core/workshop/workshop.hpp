@@ -24,7 +24,6 @@ inline constexpr int kCrashChuck = 1202;      // the tool or holder hits the wor
 inline constexpr int kCrashHolder = 1203;     // the holder or shank hits the material
 inline constexpr int kCrashDirection = 1204;  // cutting with the spindle turning the wrong way
 inline constexpr int kCrashProbe = 1205;      // a touch probe driven into the material
-inline constexpr int kNotModelled = 1206;     // B away from 0: a tilted tool is not modelled
 
 // What a move came to.
 struct Outcome {
@@ -128,10 +127,13 @@ class Workshop final : public MachineSink {
     // `corrector`: the one in use now (the interpreter's D).
     Frame part_frame(const Axes& om, const Axes& op, int corrector) const;
     // A machining centre's: the true tip of the cutter in the spindle (X, Y,
-    // Z); the gauge line itself when none. In the table's frame (a C table
-    // turned, mill5), or, not `turned`, as if C were 0: how GRAPH and plot
-    // place the block under the path, which they draw as the machine moved.
+    // Z: the centre of its end); the gauge line itself when none. In the
+    // table's frame (a C table turned, mill5; a B head or table tilted), or,
+    // not `turned`, as if B and C were 0: how GRAPH and plot place the block
+    // under the path, which they draw as the machine moved.
     P3 tip3(const Axes& om, bool turned = true) const;
+    // The cutter's axis in the table's frame, from its tip up (kUp at B0).
+    P3 axis3(const Axes& om) const;
     // Reads an instrument; "" or what is wrong with the request.
     std::string measure(std::string_view spec, Reading& r) const;
 
@@ -185,20 +187,24 @@ class Workshop final : public MachineSink {
     };
     void mill_fixtures();
     P3 grown_tip(const Axes& om, double g) const;
+    struct Pose {
+        P3 tip, u;
+    };
+    Pose pose3(const Axes& om, bool turned) const;
+    // The axis a piece of a path is cut with: the tool's half way along it.
+    P3 piece_axis(const Axes& from, const Axes& to) const;
     Cutter cutter(double grow = 0) const;  // the one in the spindle, worn, grown by `grow`
     // `flute_depth`: the flute's own limit, when not `depth` (>= 0).
-    Contact mill_first(const Cutter& c, const P3& a, const P3& b, double depth, bool with_material,
-                       bool before, double flute_depth = -1) const;
-    double mill_depth(const Cutter& c, const P3& tip, Met& what) const;
+    Contact mill_first(const Cutter& c, const P3& a, const P3& b, const P3& u, double depth,
+                       bool with_material, bool before, double flute_depth = -1) const;
+    double mill_depth(const Cutter& c, const P3& tip, const P3& u, Met& what) const;
     Outcome mill_apply(const MoveEvent& e);
     Outcome mill_jog(const MoveEvent& e, bool continuous);
-    // A C table (mill5) turns the part under the tool: a jog of C is made
-    // chord by chord, each a jog along a line. B away from 0 tilts the tool:
-    // the move is stopped at its start (alarm 1206).
-    Outcome mill_jog_c(const MoveEvent& e, bool continuous);
+    // A C table (mill5) turns the part under the tool and B tilts the tool:
+    // a jog of C or B is made chord by chord, each a jog along a line.
+    Outcome mill_jog_turn(const MoveEvent& e, bool continuous);
     Outcome mill_jog_line(const MoveEvent& e, bool continuous);
-    bool tilted(const MoveEvent& e, Outcome& o);
-    bool mill_stroke(const MoveEvent& e, const P3& a, const P3& b, const Axes& oma,
+    bool mill_stroke(const MoveEvent& e, const P3& a, const P3& b, const P3& u, const Axes& oma,
                      const Axes& omb);
     // Records a crash of `hit` at `f` of the piece a->b (oma->omb).
     void mill_crash(const MoveEvent& e, int flute_code, const Contact& hit, const P3& a,
@@ -222,6 +228,10 @@ class Workshop final : public MachineSink {
         double depth(const Cutter& c, const P3& tip, Part p) const {
             return pin ? depth_into(c, tip, p, *pin) : depth_into(c, tip, p, box);
         }
+        // A tilted part, as points of its surface.
+        double depth(const std::vector<P3>& points, const P3& tip) const {
+            return pin ? depth_into(points, tip, *pin) : depth_into(points, tip, box);
+        }
     };
     std::vector<Fixture> fixtures_;
     std::unique_ptr<MillWorld> mill_;
@@ -235,7 +245,7 @@ class Workshop final : public MachineSink {
     Tool* current();
     const Tool* current() const;
     // The machine positions along a move, arcs and the turn of a C table
-    // within the chord error.
+    // within the chord error (B: the tool's axis within 2 µm at its side).
     void path_of(const MoveEvent& e, std::vector<Axes>& out) const;
     void turn_pieces(std::vector<Axes>& out) const;
     // Checks a path of the tool; on a crash records it and returns false,

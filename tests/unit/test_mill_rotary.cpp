@@ -1,5 +1,6 @@
 // The machining centre's workshop with rotary axes (issue 15): a C table
-// (mill5) turns the part under the vertical tool; B must stay at 0 (1206).
+// (mill5) turns the part under the tool, mill5's B head tilts the tool,
+// mill4's B table tilts the part.
 // The shipped mill5 setup (data/setups/mill5.setup): the C axis at machine
 // X0 Y0 through the centre of a 100 x 100 x 50 block, its corner at X-50
 // Y-50, its top at Z-280; T1 a Ø10 flat end mill, L 110.25. Values worked
@@ -123,34 +124,116 @@ TEST(MillRotary, TheToolInTheTablesFrame) {
     EXPECT_NEAR(u[1], 0, 1e-9);
 }
 
-// B tilts the tool (mill5's head) or the part (mill4's table): the move is
-// not made, with alarm 1206; back to B0 is let through.
-TEST(MillRotary, BAwayFromZeroIsNotModelled) {
-    const char* tilt = "%7\nN10 T1 D1 M6\nN20 G0 X-80 Y0 Z5\nN30 B10\nN40 M2\n";
-    test::ShopRun r5("mill5", tilt, kRight, "");
-    ASSERT_EQ(r5.crash(), kNotModelled);
-    const Crash& c = r5.shop->crashes().front();
-    EXPECT_EQ(c.loc.line, 4);
-    EXPECT_DOUBLE_EQ(c.om[B], 0);  // stopped at its start
-    EXPECT_NE(c.what.find("B10.000: the workshop models the tool vertical"), std::string::npos)
-        << c.what;
+// A move of the machine as the workshop makes it.
+Outcome go(Workshop& w, const Axes& from, const Axes& to, int g, bool jog = false) {
+    MoveEvent e;
+    e.g = g;
+    e.from_mach = from;
+    e.to_mach = to;
+    e.to_prog = to;
+    return jog ? w.jog(e, true) : w.apply(e);
+}
+
+Axes at(double x, double y, double z, double b = 0, double c = 0) {
+    Axes a{};
+    a[X] = x, a[Y] = y, a[Z] = z, a[B] = b, a[C] = c;
+    return a;
+}
+
+// mill5's head turns about its B axis, 250 above the gauge line (the
+// setup's head.pivot, the profile's kinematics.lz): at B45 T1's tip is
+// 360.25 (250 + 110.25) from it along the tool's axis (sin 45°, 0, cos 45°).
+// The machine at X303.7347 Z-276.2653 puts the tip at X49 Z-281, 1 from the
+// +X face and 1 under the top: fed along Y, the end cuts the chamfer
+// X + Z = -232, 2 x 2 on the edge, read with the depth gauge 1 in from the
+// face (from the block's corner: X99) as 1.000.
+TEST(MillRotary, ATiltedHeadCutsAChamferWithTheEnd) {
+    Mill5 five;
+    Workshop& shop = *five.shop;
+    const double k = std::sqrt(0.5) * 360.25;
+    const Axes up = at(49 + k, -80, -100, 45), start = at(49 + k, -80, -281 - 250 + k, 45),
+               end = at(49 + k, 80, -281 - 250 + k, 45);
+    const P3 tip = shop.tip3(start), u = shop.axis3(start);
+    EXPECT_NEAR(tip[0], 49, 1e-9);
+    EXPECT_NEAR(tip[2], -281, 1e-9);
+    EXPECT_NEAR(u[0], std::sqrt(0.5), 1e-12);
+    // The head swings to B45 above the part, comes down beside it and feeds.
+    EXPECT_FALSE(go(shop, at(49 + k, -80, -100), up, 0).crashed);
+    EXPECT_FALSE(go(shop, up, start, 0).crashed);
+    SpindleEvent on;
+    on.dir = 3, on.rpm = 1000;
+    shop.spindle(on);
+    Outcome o = go(shop, start, end, 1);
+    ASSERT_FALSE(o.crashed) << o.what;
+    Reading r;
+    ASSERT_EQ(shop.measure("depth X99 Y50", r), "");
+    EXPECT_NEAR(r.value, 1, 1e-9);
+    ASSERT_EQ(shop.measure("depth X98.5 Y50", r), "");
+    EXPECT_NEAR(r.value, 0.5, 1e-9);
+    ASSERT_EQ(shop.measure("depth X97 Y50", r), "");
+    EXPECT_NEAR(r.value, 0, 1e-9);
+    // The height X-Z=... along X at Z-1 under the top: the face now at X99.
+    ASSERT_EQ(shop.measure("length X Y50 Z-1", r), "");
+    EXPECT_NEAR(r.value, 99, 1e-9);
+}
+
+// A rapid of the tilted tool into the block is a crash, stopped where the
+// end's lowest point (r (cos 45°, 0, -sin 45°) from the tip: 3.536 under
+// it) reaches the top: the tip at Z-276.464.
+TEST(MillRotary, ATiltedToolCrashesWhereItsRimMeetsTheTop) {
+    Mill5 five;
+    Workshop& shop = *five.shop;
+    const double k = std::sqrt(0.5) * 360.25, rim = 5 * std::sqrt(0.5);
+    // The rim's lowest point over X0.05 Y0.05, a cell's centre.
+    const double x = 0.05 - rim + k;
+    Outcome o = go(shop, at(x, 0.05, -100, 45), at(x, 0.05, -300, 45), 0);
+    ASSERT_TRUE(o.crashed);
+    EXPECT_EQ(shop.crashes().front().code, kCrashRapid);
+    const P3 tip = shop.tip3(o.stop);
+    EXPECT_NEAR(tip[2], -280 + rim, kCrashDepth + 1e-4);
+    EXPECT_NE(o.what.find("T1 rapid (G0) into the part"), std::string::npos) << o.what;
+    // A jog stops there instead.
+    shop.clear_crash();
+    Outcome j = go(shop, at(x, 0.05, -100, 45), at(x, 0.05, -300, 45), 0, true);
+    ASSERT_TRUE(j.touched) << j.what;
+    EXPECT_NEAR(shop.tip3(j.stop)[2], -280 + rim, 2e-4);
+}
+
+// A jog of B swings the tool: held down beside the block, the tool's end
+// comes round into its -X face and stops there. The tip 5 under the top,
+// its side 10 from the face at B0 (axis at X-65); B negative swings the tip
+// towards +X by 360.25 sin |B| about the pivot, and the end's rim, 5 cos |B|
+// further, meets the face at about |B| = 1.59°.
+TEST(MillRotary, AJogOfBStopsAtTheFace) {
+    Mill5 five;
+    Workshop& shop = *five.shop;
+    const Axes from = at(-65, 0, -285 + 110.25), to = at(-65, 0, -285 + 110.25, -10);
+    Outcome o = go(shop, from, to, 1, true);
+    ASSERT_TRUE(o.touched) << o.what;
+    const P3 tip = shop.tip3(o.stop);
+    const double b = -o.stop[B] * std::acos(-1.0) / 180;
+    EXPECT_NEAR(tip[0], -65 + 360.25 * std::sin(b), 1e-9);
+    // The rim at the face, within 2.2 µm (the piece is cut with its middle's axis).
+    EXPECT_GT(b, 0);
+    EXPECT_NEAR(tip[0] + 5 * std::cos(b), -50, 0.003);
+}
+
+// mill4's B table tilts the part about its axis (the setup's table.b.x
+// and .b.z): seen from the part the vertical tool leans by B the other way
+// round (Rot_Y(B) of forward4), and its tip turns about that axis.
+TEST(MillRotary, ABTableTiltsThePart) {
     MachineProfile m4;
     builtin_machine("mill4", m4);
     workshop::Setup st;
     builtin_setup("mill", st);
     Workshop shop(m4, st, nullptr);
-    MoveEvent e;
-    e.g = 0;
-    e.to_mach[B] = 30;
-    EXPECT_TRUE(shop.apply(e).crashed);
-    EXPECT_EQ(shop.crashes().front().code, kNotModelled);
-    shop.clear_crash();
-    std::swap(e.from_mach, e.to_mach);  // back to B0
-    EXPECT_FALSE(shop.apply(e).crashed);
-    // A jog of B too, even with no tool in the spindle.
-    std::swap(e.from_mach, e.to_mach);
-    EXPECT_TRUE(shop.jog(e, true).crashed);
-    EXPECT_EQ(shop.crashes().front().code, kNotModelled);
+    const Axes om = at(st.mill.b_x + 10, 0, st.mill.b_z, 90);
+    const P3 tip = shop.tip3(om), u = shop.axis3(om);
+    EXPECT_NEAR(u[0], 1, 1e-12);
+    EXPECT_NEAR(u[2], 0, 1e-12);
+    // No tool: the gauge line's point 10 from the axis along X goes under it.
+    EXPECT_NEAR(tip[0], st.mill.b_x, 1e-9);
+    EXPECT_NEAR(tip[2], st.mill.b_z - 10, 1e-9);
 }
 
 }  // namespace
