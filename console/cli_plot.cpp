@@ -184,7 +184,10 @@ int plot(const PlotArgs& a) {
     if (!a.setup.empty() && !load_setup(a.setup, m, setup)) return kUsage;
     Toolpath path(m);
     std::unique_ptr<workshop::Workshop> shop;
-    if (!a.setup.empty()) shop = std::make_unique<workshop::Workshop>(m, setup, &path);
+    if (!a.setup.empty()) {
+        shop = std::make_unique<workshop::Workshop>(m, setup, &path);
+        shop->draw_on_part(true);  // a C or B turn drawn on the part
+    }
     RunOptions o;
     o.block_skip = a.block_skip;
     o.max_blocks = a.max_blocks;

@@ -693,6 +693,9 @@ pages::View Session::view() const {
     v.graph.path = &path_;
     if (!graph_plane_chosen && !path_.empty()) v.graph.plane = path_.default_plane();
     tool_now_ = sim_->op();
+    // The tool where it is over the part (a C turn, a B tilt), as the path.
+    const Axes op_now = tool_now_;
+    if (const workshop::Workshop* w = sim_->shop()) tool_now_ = w->on_part(sim_->om(), op_now);
     v.graph.tool = &tool_now_;
     v.graph.cache = &graph_cache_;
     // An exercise: the part drawn, but no coordinates read off it (the truth).
@@ -704,8 +707,8 @@ pages::View Session::view() const {
             // The block where the program frame puts it, as for the lathe's part.
             const workshop::P3 tip = w->tip3(sim_->om(), false);
             v.graph.block = w->mill();
-            v.graph.block_dx = tool_now_[X] - tip[0];
-            v.graph.block_dy = tool_now_[Y] - tip[1];
+            v.graph.block_dx = op_now[X] - tip[0];
+            v.graph.block_dy = op_now[Y] - tip[1];
         }
     }
     return v;

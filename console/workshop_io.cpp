@@ -99,12 +99,12 @@ std::string read_setup(const std::string& name, const MachineProfile& m, worksho
         return why;
     }
     if (!m.lathe && m.has(A)) {
-        // The workshop's block is cut from above by a vertical cutter, which a
-        // C table turns (mill5) and B must leave vertical (alarm 1206): an
-        // A axis would tilt what it does not model.
+        // The workshop turns the part with a C table (mill5) and tilts the
+        // cutter with a B head (mill5) or table (mill4), about Y: an A axis
+        // would tilt it about X, which it does not model.
         s = workshop::Setup{};
-        return strf(tr("machine '%s' has an A axis: the workshop models a C table, and B at 0, "
-                       "only"),
+        return strf(tr("machine '%s' has an A axis: the workshop models a C table and a B head "
+                       "or table only"),
                     m.name.c_str());
     }
     return {};

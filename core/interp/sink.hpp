@@ -33,6 +33,9 @@ struct MoveEvent {
     double seconds = 0;              // duration
     bool x_diameter = false;         // lathe X shown as a diameter
     bool comp = false;               // a piece of the radius-compensated tool path
+    // A piece after the first of a move drawn on the part (a C turn, a B
+    // tilt: Workshop::on_part): part of that move, not one of its own.
+    bool piece = false;
 };
 
 struct SpindleEvent {

@@ -141,8 +141,8 @@ std::vector<std::pair<std::string, Rgb>> note_lines(const Scene& s) {
     // TRANSLATORS: the English says "moves" whatever the number.
     out.push_back(
         {strf(tr("cycle time %s"), hms(s.opt.seconds >= 0 ? s.opt.seconds : p.seconds()).c_str()) +
-             " \u00b7 " + strf(trn("%zu moves", "%zu moves", p.size()), p.size()) + " \u00b7 " +
-             strf(tr("path %.3f mm"), p.length()),
+             " \u00b7 " + strf(trn("%zu moves", "%zu moves", p.moves_made()), p.moves_made()) +
+             " \u00b7 " + strf(tr("path %.3f mm"), p.length()),
          kInk});
     // TRANSLATORS: a note of the plot, followed by the extents of each axis (X -10/20  Z 0/50).
     std::string ext = tr("extents");

@@ -47,6 +47,7 @@ void Toolpath::clear() {
     all_ = cut_ = PathBox{};
     em_mask_lo_ = em_mask_hi_ = 0;
     counts_[0] = counts_[1] = counts_[2] = 0;
+    pieces_.clear();
     travel_ = 0;
     plane_arcs_[0] = plane_arcs_[1] = plane_arcs_[2] = 0;
     ltype_rapid_ = ltype_feed_ = -1;
@@ -92,6 +93,7 @@ void Toolpath::add(const MoveEvent& e) {
     mv.kind = e.g == 0 ? PathKind::rapid : e.comp ? PathKind::comp : PathKind::feed;
     mv.ltype = e.g == 0 ? ltype_rapid_ : ltype_feed_;
     if (e.g52) mv.flags |= pathflag::g52;
+    if (e.piece) mv.flags |= pathflag::piece;
     if (beyond_travel(e.to_mach)) {
         mv.flags |= pathflag::travel;
         ++travel_;
@@ -123,10 +125,19 @@ void Toolpath::add(const MoveEvent& e) {
         cut_.add(one);
         cut_.add(from(index));
     }
-    counts_[size_t(mv.kind)]++;
+    if (e.piece)
+        pieces_.push_back(index);
+    else
+        counts_[size_t(mv.kind)]++;
     seconds_ += e.seconds;
     length_ += e.length;
     x_diam_ = e.x_diameter;
+}
+
+size_t Toolpath::moves_made(size_t upto) const {
+    upto = std::min(upto, moves_.size());
+    return upto - size_t(std::lower_bound(pieces_.begin(), pieces_.end(), uint32_t(upto)) -
+                         pieces_.begin());
 }
 
 // The arc's extreme points: where it crosses the directions 0°, 90°, 180°, 270°.
@@ -289,12 +300,14 @@ void count_outside(const Toolpath& p, PathPlane plane, size_t upto, PathFit& f) 
     plane_axes(plane, h, v);
     const double tol = 1e-6 * (1 + std::max(f.x1 - f.x0, f.y1 - f.y0));
     f.outside = 0;
+    bool counted = false;  // the move these pieces belong to is counted
     for (size_t i = 0; i < std::min(upto, p.size()); ++i) {
-        if (p[i].kind != PathKind::rapid) continue;
+        if (!(p[i].flags & pathflag::piece)) counted = false;
+        if (p[i].kind != PathKind::rapid || counted) continue;
         auto out = [&](const double* q) {
             return q[h] < f.x0 - tol || q[h] > f.x1 + tol || q[v] < f.y0 - tol || q[v] > f.y1 + tol;
         };
-        if (out(p.from(i)) || out(p[i].p)) ++f.outside;
+        if (out(p.from(i)) || out(p[i].p)) ++f.outside, counted = true;
     }
 }
 

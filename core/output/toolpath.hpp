@@ -38,6 +38,7 @@ namespace pathflag {
 inline constexpr uint8_t travel = 1;  // ends beyond the machine's travel (profile limits)
 inline constexpr uint8_t error = 2;   // made by a block that raised an error (149 gouge, …)
 inline constexpr uint8_t g52 = 4;     // programmed in machine coordinates
+inline constexpr uint8_t piece = 8;   // a piece after the first of one move (MoveEvent::piece)
 }  // namespace pathflag
 
 // One move. Its start is the end of the previous move (or Toolpath::start()).
@@ -128,6 +129,10 @@ class Toolpath final : public MachineSink {
     // Changes with every clear(): a drawing cached for one run is not reused for the next.
     uint32_t generation() const { return gen_; }
     size_t size() const { return moves_.size(); }
+    // The moves the program made among the first `upto` drawn (a move drawn
+    // on the part in pieces counts once).
+    size_t moves_made(size_t upto) const;
+    size_t moves_made() const { return moves_made(moves_.size()); }
     bool empty() const { return moves_.empty(); }
     const PathMove& operator[](size_t i) const { return moves_[i]; }
     const std::vector<PathMove>& moves() const { return moves_; }
@@ -192,6 +197,7 @@ class Toolpath final : public MachineSink {
     Axes em_lo_{}, em_hi_{};
     uint16_t em_mask_lo_ = 0, em_mask_hi_ = 0;
     size_t counts_[3] = {0, 0, 0};
+    std::vector<uint32_t> pieces_;  // the indices of the pieces (pathflag::piece), in order
     size_t travel_ = 0;
     int plane_arcs_[3] = {0, 0, 0};
     int8_t ltype_rapid_ = -1, ltype_feed_ = -1;

@@ -512,7 +512,10 @@ void Sim::begin_move(Ev& e) {
         auto r = ew.find(31000), f = ew.find(31001);
         path_->set_line_types(r == ew.end() ? -1 : int(r->second),
                               f == ew.end() ? -1 : int(f->second));
-        path_->add(e.m);
+        // A turned table or a tilted tool: the path drawn on the part.
+        std::vector<MoveEvent> pieces;
+        if (!shop_ || !shop_->on_part(e.m, pieces)) return path_->add(e.m);
+        for (const MoveEvent& p : pieces) path_->add(p);
     }
 }
 

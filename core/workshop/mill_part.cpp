@@ -384,9 +384,9 @@ std::string MillWorld::to_text() const {
                                        "%.4f %.4f %.4f %.4f %.4f %.4f %.4f %.4f %.9f %.9f %.9f\n",
                                        s.a[0], s.a[1], s.a[2], s.b[0], s.b[1], s.b[2], s.radius,
                                        s.corner, s.u[0], s.u[1], s.u[2])
-                       : std::snprintf(line, sizeof line, "%.4f %.4f %.4f %.4f %.4f %.4f %.4f %.4f\n",
-                                       s.a[0], s.a[1], s.a[2], s.b[0], s.b[1], s.b[2], s.radius,
-                                       s.corner);
+                       : std::snprintf(line, sizeof line,
+                                       "%.4f %.4f %.4f %.4f %.4f %.4f %.4f %.4f\n", s.a[0], s.a[1],
+                                       s.a[2], s.b[0], s.b[1], s.b[2], s.radius, s.corner);
         o.append(line, size_t(std::clamp(n, 0, int(sizeof line) - 1)));
     }
     return o;

@@ -137,8 +137,7 @@ class MillWorld {
     double apply_tilted(const Stroke& s);
     // Takes [lo, hi] out of a cell's column: the length taken.
     double carve(size_t cell, double lo, double hi);
-    double tilted_depth(const Cutter& c, const P3& tip, const P3& u, Part part,
-                        double above) const;
+    double tilted_depth(const Cutter& c, const P3& tip, const P3& u, Part part, double above) const;
     double tilted_first(const Cutter& c, const P3& a, const P3& b, const P3& u, Part part,
                         double depth, bool before) const;
     // The stock's own faces and top, exact: how deep the part's surface

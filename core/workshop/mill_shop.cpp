@@ -50,7 +50,8 @@ bool may_meet(const Cutter& c, Part part, const P3& a, const P3& b, const Box3& 
         Box3 s = tilt::part_box(c, part, a, u, top);
         const Box3 t = tilt::part_box(c, part, b, u, top);
         for (int k = 0; k < 3; ++k)
-            s.lo[k] = std::min(s.lo[k], t.lo[k]) - 1e-3, s.hi[k] = std::max(s.hi[k], t.hi[k]) + 1e-3;
+            s.lo[k] = std::min(s.lo[k], t.lo[k]) - 1e-3,
+            s.hi[k] = std::max(s.hi[k], t.hi[k]) + 1e-3;
         return overlap(s, box);
     }
     const PartSpan s = span_of(c, part);
@@ -194,6 +195,47 @@ P3 Workshop::axis3(const Axes& om) const {
     return pose3(om, true).u;
 }
 
+namespace {
+
+bool turned(const MachineProfile& m, const Axes& a) {
+    return (m.has(B) && a[B] != 0) || (m.has(C) && a[C] != 0);
+}
+
+}  // namespace
+
+Axes Workshop::on_part(const Axes& om, const Axes& op) const {
+    if (!mill_ || !turned(m_, om)) return op;
+    const P3 at = tip3(om), flat = tip3(om, false);
+    Axes p = op;
+    for (int k = 0; k < 3; ++k) p[size_t(k)] += at[size_t(k)] - flat[size_t(k)];
+    return p;
+}
+
+bool Workshop::on_part(const MoveEvent& e, std::vector<MoveEvent>& out) const {
+    out.clear();
+    if (!mill_ || (!turned(m_, e.from_mach) && !turned(m_, e.to_mach))) return false;
+    std::vector<Axes> oms;
+    path_of(e, oms);
+    const double n = double(oms.size() - 1);
+    for (size_t i = 0; i + 1 < oms.size(); ++i) {
+        MoveEvent p = e;
+        p.g = e.g == 0 ? 0 : 1;
+        p.sweep = 0;
+        p.from_mach = oms[i];
+        p.to_mach = oms[i + 1];
+        // The program point of that machine position (the offsets of the
+        // move's end), then moved onto the part.
+        Axes op = oms[i + 1];
+        for (size_t k = 0; k < op.size(); ++k) op[k] -= e.to_mach[k] - e.to_prog[k];
+        p.to_prog = on_part(oms[i + 1], op);
+        p.length = e.length / n;
+        p.seconds = e.seconds / n;
+        p.piece = i > 0;
+        out.push_back(p);
+    }
+    return true;
+}
+
 P3 Workshop::piece_axis(const Axes& from, const Axes& to) const {
     Axes mid = from;
     for (size_t i = 0; i < mid.size(); ++i) mid[i] += 0.5 * (to[i] - from[i]);
@@ -235,8 +277,7 @@ double Workshop::mill_depth(const Cutter& c, const P3& tip, const P3& u, Met& wh
             for (const Fixture& f : fixtures_) keep(f.depth(c, tip, p), f.what);
             continue;
         }
-        const std::vector<P3> points =
-            tilt::surface(c, p, u, span_of(c, p).base + kHolderLength);
+        const std::vector<P3> points = tilt::surface(c, p, u, span_of(c, p).base + kHolderLength);
         for (const Fixture& f : fixtures_)
             if (may_meet(c, p, tip, tip, f.box, u)) keep(f.depth(points, tip), f.what);
     }
@@ -450,8 +491,8 @@ Outcome Workshop::mill_jog_line(const MoveEvent& e, bool continuous) {
         const Cutter over = cutter(shim_);
         const P3 oa = below(a, shim_, u), ob = below(b, shim_, u);
         const double deep = on_shim ? mill_->depth_into(over, oa, Part::flute, u) : 0;
-        const double f = mill_->first_contact(over, oa, ob, Part::flute,
-                                              std::max(kTouchDepth, deep), true, u);
+        const double f =
+            mill_->first_contact(over, oa, ob, Part::flute, std::max(kTouchDepth, deep), true, u);
         if (f < k.f) k = Contact{f, Met::shim, Part::flute};
     }
     // A finder pushed aside (finder_push) moves off the face without crashing.

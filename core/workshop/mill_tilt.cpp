@@ -168,9 +168,7 @@ double MillWorld::tilted_depth(const Cutter& c, const P3& tip, const P3& u, Part
 double MillWorld::tilted_first(const Cutter& c, const P3& a, const P3& b, const P3& u, Part part,
                                double depth, bool before) const {
     refresh();
-    auto deeper = [&](double t) {
-        return tilted_depth(c, lerp(a, b, t), u, part, depth) > depth;
-    };
+    auto deeper = [&](double t) { return tilted_depth(c, lerp(a, b, t), u, part, depth) > depth; };
     if (deeper(0)) return 0;
     const double len = std::hypot(b[0] - a[0], b[1] - a[1], b[2] - a[2]);
     if (!(len > 0)) return 2;
@@ -204,9 +202,9 @@ double MillWorld::tilted_first(const Cutter& c, const P3& a, const P3& b, const 
 
 const std::vector<P3>& MillWorld::surface_of(const Cutter& c, Part part, const P3& u) const {
     Surface& s = surface_;
-    const bool same = !s.points.empty() && s.part == part && s.u == u &&
-                      s.c.radius == c.radius && s.c.corner == c.corner && s.c.flute == c.flute &&
-                      s.c.reach == c.reach && s.c.holder == c.holder;
+    const bool same = !s.points.empty() && s.part == part && s.u == u && s.c.radius == c.radius &&
+                      s.c.corner == c.corner && s.c.flute == c.flute && s.c.reach == c.reach &&
+                      s.c.holder == c.holder;
     if (!same) {
         s.c = c, s.part = part, s.u = u;
         s.points = tilt::surface(c, part, u, span_of(c, part).base + kHolderLength);
@@ -219,8 +217,8 @@ double MillWorld::stock_depth(const std::vector<P3>& points, const P3& tip) cons
     double best = 0;
     for (const P3& q : points) {
         const double x = tip[0] + q[0], y = tip[1] + q[1], z = tip[2] + q[2];
-        const double d =
-            std::min({x - b.lo[0], b.hi[0] - x, y - b.lo[1], b.hi[1] - y, z - b.lo[2], b.hi[2] - z});
+        const double d = std::min(
+            {x - b.lo[0], b.hi[0] - x, y - b.lo[1], b.hi[1] - y, z - b.lo[2], b.hi[2] - z});
         if (d <= best) continue;
         const int i = std::clamp(int(std::floor((x - b.lo[0]) / cell_)), 0, nx_ - 1);
         const int j = std::clamp(int(std::floor((y - b.lo[1]) / cell_)), 0, ny_ - 1);
@@ -245,8 +243,8 @@ double depth_into(const std::vector<P3>& points, const P3& tip, const Cylinder& 
     double best = 0;
     for (const P3& q : points) {
         const double x = tip[0] + q[0], y = tip[1] + q[1], z = tip[2] + q[2];
-        best = std::max(best, std::min({k.radius - std::hypot(x - k.x, y - k.y), z - k.z0,
-                                        k.z1 - z}));
+        best =
+            std::max(best, std::min({k.radius - std::hypot(x - k.x, y - k.y), z - k.z0, k.z1 - z}));
     }
     return best;
 }

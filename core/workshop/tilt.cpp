@@ -212,7 +212,8 @@ std::vector<P3> surface(const Cutter& c, Part part, const P3& u, double top) {
         }
         for (int i = 0; i < n; ++i) {
             const double phi = 2 * M_PI * i / n;
-            out.push_back(add(centre, add(mul(e1, rho * std::cos(phi)), mul(e2, rho * std::sin(phi)))));
+            out.push_back(
+                add(centre, add(mul(e1, rho * std::cos(phi)), mul(e2, rho * std::sin(phi)))));
         }
         for (const P3& dir : kDirs) {
             const P3 q = perp(dir, u);

@@ -1,6 +1,6 @@
 // A cutter tilted against the table (mill5's B head, mill4's B table): where
 // a line crosses the cutter or the volume it sweeps, exactly for a flat or a
-// ball end (a bull nose's torus is a ring of balls within 0.25 µm), and the
+// ball end (a bull nose's torus is a ring of balls within 0.5 µm), and the
 // points of its surface that meet a box face first. Pure geometry for the
 // material (mill_tilt.cpp): machine X, Y, Z in mm, the tool's axis `u` a
 // unit vector from the tip towards the spindle.

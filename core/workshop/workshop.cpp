@@ -191,7 +191,9 @@ void Workshop::turn_pieces(std::vector<Axes>& out) const {
         rb = std::max(rb, m_.kinematics == "table" ? std::hypot(tip[0] - ms.b_x, tip[2] - ms.b_z)
                                                    : ms.pivot + p[Z] - tip3(p, false)[2]);
     }
-    auto chord = [](double r) { return r > 1e-3 ? 2 * std::acos(1 - 5e-4 / r) / geometry::kDeg : 360; };
+    auto chord = [](double r) {
+        return r > 1e-3 ? 2 * std::acos(1 - 5e-4 / r) / geometry::kDeg : 360;
+    };
     const double step_c = chord(rc), step_b = std::min(0.05, chord(rb));
     std::vector<Axes> fine{out.front()};
     for (size_t i = 0; i + 1 < out.size(); ++i) {
@@ -503,7 +505,11 @@ MoveEvent Workshop::truncated(const MoveEvent& e, const Axes& stop, double fract
 void Workshop::move(const MoveEvent& e) {
     if (crashed()) return;  // the machine stopped at the contact
     Outcome o = apply(e);
-    if (next_) next_->move(o.crashed ? truncated(e, o.stop, o.fraction) : e);
+    if (!next_) return;
+    const MoveEvent made = o.crashed ? truncated(e, o.stop, o.fraction) : e;
+    std::vector<MoveEvent> pieces;
+    if (!draw_on_part_ || !on_part(made, pieces)) return next_->move(made);
+    for (const MoveEvent& p : pieces) next_->move(p);
 }
 
 uint64_t Workshop::generation() const {

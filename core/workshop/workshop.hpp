@@ -134,6 +134,16 @@ class Workshop final : public MachineSink {
     P3 tip3(const Axes& om, bool turned = true) const;
     // The cutter's axis in the table's frame, from its tip up (kUp at B0).
     P3 axis3(const Axes& om) const;
+    // Where the path is drawn on the part (GRAPH, plot): the program point
+    // `op` of machine position `om`, moved by what the rotary axes turn the
+    // tool in the table's frame (the tip there, in the frame the program
+    // reads at B0 C0). `op` itself at B0 C0.
+    Axes on_part(const Axes& om, const Axes& op) const;
+    // A move as on_part() draws it: pieces within the chord error when a
+    // rotary axis is away from 0 along it (false, nothing added, when none is).
+    bool on_part(const MoveEvent& e, std::vector<MoveEvent>& out) const;
+    // Passes the moves on to the next sink as on_part() draws them (plot).
+    void draw_on_part(bool on) { draw_on_part_ = on; }
     // Reads an instrument; "" or what is wrong with the request.
     std::string measure(std::string_view spec, Reading& r) const;
 
@@ -279,6 +289,7 @@ class Workshop final : public MachineSink {
     void note_frame(const MoveEvent& e);
     double shim_ = 0;
     bool hide_places_ = false;
+    bool draw_on_part_ = false;
     int dir_ = 5;
     std::vector<Crash> crashes_;
 };

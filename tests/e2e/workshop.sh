@@ -336,8 +336,8 @@ mill5)
     # The five-axis centre's C table (data/setups/mill5.setup: the C axis at
     # X0 Y0 through a 100 x 100 block, its top at Z -280; T1 Ø10, L 110.25):
     # T1 down beside the -X face, 1 mm off; C jogged: the block swings into
-    # the cutter and the jog stops at C 10.84 (56 cos C = 55). Then B, which
-    # would tilt the tool, is refused with alarm 1206 and B stays at 0.
+    # the cutter and the jog stops at C 10.84 (56 cos C = 55). Then the B
+    # head tilts the tool, and its end's rim touches the top.
     start --machine mill5
     pom
     cmd ":setup mill5"
@@ -357,10 +357,15 @@ mill5)
     [ "$(op_value C)" = "10.8420" ] || fail "the C jog should stop at C 10.8420: $(op_value C)"
     cmd ":jog Z 100"
     wait_for '^ +Z +-74.750' 10
-    cmd ":jog B 10"
-    wait_for 'ALARM 1206' 10
-    wait_for 'B10.000: the workshop models the tool vertical' 5
-    [ "$(op_value B)" = "0.0000" ] || fail "B should not have moved: $(op_value B)"
+    # The head tilted to B-10 swings the tip 62.56 to +X and 4.98 up, over
+    # the block; jogged down, the end's lowest point (5 sin 10° under the
+    # tip) meets the top at Z-280: the machine at Z -280 + 0.868 - 250 +
+    # 360.25 cos 10° = -174.355.
+    cmd ":jog B -10"
+    wait_for '^ +B +-10.0000' 10
+    cmd ":jog Z -200"
+    wait_for 'T1 touched the part' 20
+    [ "$(op_value Z)" = "-174.355" ] || fail "the tilted end should stop at Z -174.355: $(op_value Z)"
     ;;
 *)
     echo "unknown case $case"

@@ -11,6 +11,7 @@
 #include <random>
 
 #include "core/workshop/mill_part.hpp"
+#include "core/workshop/narrow.hpp"
 #include "core/workshop/tilt.hpp"
 
 namespace pupitre::workshop {
@@ -78,6 +79,65 @@ TEST(TiltGeometry, SweptFlatMatchesMembership) {
         }
     }
     EXPECT_GT(crossed, 500);
+}
+
+// Whether p is in the volume a bull nose (radius r, corner c, axis u)
+// sweeps, its tip from a to a + d: within c of the flat cylinder of radius
+// r - c that starts c up the axis, for some t (the distance is convex in t).
+double bull_gap(const P3& p, const P3& a, const P3& d, const P3& u, double r, double c) {
+    auto dist = [&](double t) {
+        const P3 q = tilt::sub(p, tilt::add(a, tilt::mul(d, t)));
+        const double h = tilt::dot(q, u) - c;
+        const P3 side = tilt::sub(q, tilt::mul(u, tilt::dot(q, u)));
+        const double e = std::sqrt(tilt::dot(side, side)) - (r - c);
+        if (h >= 0) return std::max(0.0, e);
+        return e <= 0 ? -h : std::hypot(h, e);
+    };
+    return golden_min(dist, 0, 1, 1e-12).second - c;
+}
+
+bool in_swept_bull(const P3& p, const P3& a, const P3& d, const P3& u, double r, double c) {
+    return bull_gap(p, a, d, u, r, c) <= 0;
+}
+
+// The ring of balls stands for the torus within 0.5 µm: the line's ends
+// are within 0.5 µm inside the surface (along a line that meets it at a
+// slant, a few µm: 2 µm each way is checked by membership).
+TEST(TiltGeometry, SweptBullNoseMatchesMembership) {
+    std::mt19937 rng(16);
+    std::uniform_real_distribution<double> c(-10, 10), tiltang(0, 1.6), rad(1, 6), frac(0.2, 0.8);
+    int crossed = 0;
+    for (int n = 0; n < 300; ++n) {
+        const double b = tiltang(rng), az = c(rng);
+        const P3 u{std::sin(b) * std::cos(az), std::sin(b) * std::sin(az), std::cos(b)};
+        const P3 a{c(rng) / 2, c(rng) / 2, c(rng) / 2}, d{c(rng), c(rng), c(rng)};
+        const double r = rad(rng), k = r * frac(rng);
+        Line l;
+        l.o = {c(rng), c(rng), c(rng)};
+        l.e = n % 2 ? P3{0, 0, 1} : unit({c(rng), c(rng), c(rng)});
+        const Span sp = tilt::swept_cutter(r, k, a, d, u, l, 1e-10);
+        if (sp.empty()) continue;
+        ++crossed;
+        auto at = [&](double s) { return tilt::add(l.o, tilt::mul(l.e, s)); };
+        constexpr double e = 2e-3;
+        for (double end : {sp.lo, sp.hi}) {
+            if (!std::isfinite(end)) continue;
+            const double gap = bull_gap(at(end), a, d, u, r, k);
+            EXPECT_LE(gap, 1e-6) << n;
+            EXPECT_GE(gap, -5e-4) << n;
+        }
+        if (std::isfinite(sp.lo)) {
+            EXPECT_FALSE(in_swept_bull(at(sp.lo - e), a, d, u, r, k)) << n;
+        }
+        if (std::isfinite(sp.hi)) {
+            EXPECT_FALSE(in_swept_bull(at(sp.hi + e), a, d, u, r, k)) << n;
+        }
+        if (sp.hi - sp.lo > 4 * e) {
+            EXPECT_TRUE(in_swept_bull(at(sp.lo + e), a, d, u, r, k)) << n;
+            EXPECT_TRUE(in_swept_bull(at(sp.hi - e), a, d, u, r, k)) << n;
+        }
+    }
+    EXPECT_GT(crossed, 50);
 }
 
 // The stock of these tests: 100 x 100 x 50 from the origin, cells of 0.1.
@@ -177,7 +237,8 @@ TEST(MillTilt, TextRoundTrip) {
     ASSERT_TRUE(v.from_text(text));
     EXPECT_EQ(v.to_text(), text);
     for (int j = 0; j < v.ny(); j += 7)
-        for (int i = 0; i < v.nx(); i += 7) ASSERT_EQ(v.height(i, j), w.height(i, j)) << i << ' ' << j;
+        for (int i = 0; i < v.nx(); i += 7)
+            ASSERT_EQ(v.height(i, j), w.height(i, j)) << i << ' ' << j;
     expect_spans(v.along(2, {99, 50, 0}), {{0, 25}, {35, 49}});
     // Nine numbers are not a stroke.
     EXPECT_FALSE(v.from_text("1 2 3 4 5 6 7 0 1\n"));

@@ -56,7 +56,7 @@ grep -q '"om":{"X":172.0266,"Y":-89.1906,"Z":-177.3550}' "$work/crash.json" ||
     fail "(c) the JSON crash should give OM X Y Z: $(cat "$work/crash.json")"
 
 # The rotary axes: on mill4 the mill's setup cuts the same part while B stays
-# at 0; a B move is not made (1206); an A axis is refused.
+# at 0; mill5's tilted head cuts a chamfer; an A axis is refused.
 run_on() { "$bin" run --machine "$1" --setup mill "${pref[@]}" --set PREF.Z=-290 "${d2[@]}" "${@:2}"; }
 run_on mill --measure "width Y X60 Y40 Z-2" --json slot.iso >"$work/on_mill.json" 2>"$work/err" ||
     fail "(c) mill: $(cat "$work/err")"
@@ -65,16 +65,21 @@ run_on mill4 --measure "width Y X60 Y40 Z-2" --json slot.iso >"$work/on_mill4.js
 grep -o '"measurements":.*' "$work/on_mill.json" >"$work/m1"
 grep -o '"measurements":.*' "$work/on_mill4.json" >"$work/m4"
 cmp -s "$work/m1" "$work/m4" || fail "(c) mill4 should cut the mill's part: $(cat "$work/m4")"
-printf '%%9\nN10 T2 D2 M6\nN20 G0 B15\nN30 M2\n' >"$work/tilt.iso"
-run_on mill4 "$work/tilt.iso" >/dev/null 2>"$work/err"
-[ $? -eq 1 ] || fail "(c) a B move on mill4 with the workshop should stop"
-grep -q 'N20: error 1206: B15.000: the workshop models the tool vertical' "$work/err" ||
-    fail "(c) 1206: $(cat "$work/err")"
+# mill5's head at B45: T1's end cuts a 2 x 2 chamfer on the block's +X top
+# edge (the tip at X49 Z-281 of the machine, the head's axis 250 above the
+# gauge line: machine X 49 + 360.25 sin 45° = 303.735, Z -531 + 360.25 cos
+# 45° = -276.265, so program Z -106.515 with PREF Z-280 and L 110.25:
+# tests/workshop/chamfer.iso).
+"$bin" run --machine mill5 --setup mill5 --set PREF.Z=-280 --set D1.L=110.25 --set D1.R=5 \
+    --measure "depth X99 Y50" --measure "depth X98.5 Y0" --measure "length X Y50 Z-1" \
+    --json chamfer.iso >"$work/chamfer.json" 2>"$work/err" || fail "(c) B45: $(cat "$work/err")"
+grep -q '"crashes":\[\],"measurements":\[{"spec":"depth X99 Y50","instrument":"depth gauge","value":1.0000,.*"value":0.5000,.*"value":99.0000' \
+    "$work/chamfer.json" || fail "(c) the B45 chamfer: $(cat "$work/chamfer.json")"
 sed 's/\bB\b/A/g; s/travel\.B/travel.A/; s/rapid\.B/rapid.A/; s/home\.B/home.A/' \
     "$here/../../data/machines/mill4.machine" | grep -v "^kinematics" >"$work/a.machine"
 "$bin" run --machine "$work/a.machine" --setup mill slot.iso >/dev/null 2>"$work/err"
 [ $? -eq 64 ] || fail "(c) a setup on a machine with A should be a usage error: $(cat "$work/err")"
-grep -qF "has an A axis: the workshop models a C table, and B at 0, only" "$work/err" ||
+grep -qF "has an A axis: the workshop models a C table and a B head or table only" "$work/err" ||
     fail "(c) A: $(cat "$work/err")"
 
 # plot --setup draws the block from above once (no lathe's mirror image),
