@@ -241,6 +241,12 @@ double MillWorld::lowest(const Stroke& s, double x, double y, double tol) {
     return golden_min(f, t0, t1, tol / len).second;
 }
 
+double MillWorld::side(int axis, int k) const {
+    // The last row and column may be partial cells.
+    const int n = axis == 0 ? nx_ : ny_;
+    return k == n - 1 ? stock_.hi[axis] - (stock_.lo[axis] + (n - 1) * cell_) : cell_;
+}
+
 double MillWorld::apply(const Stroke& s) {
     if (s.tilt) return apply_tilted(s);
     const double r = s.radius, lox = stock_.lo[0], loy = stock_.lo[1], top = stock_.hi[2];
@@ -258,9 +264,6 @@ double MillWorld::apply(const Stroke& s) {
     const Cutter k = cutter_of(r, s.corner);
     const double dx = s.b[0] - s.a[0], dy = s.b[1] - s.a[1], A = dx * dx + dy * dy;
     const float floor_z = float(stock_.lo[2]);
-    // The last row and column may be partial cells.
-    const double last_w = stock_.hi[0] - (lox + (nx_ - 1) * cell_);
-    const double last_h = stock_.hi[1] - (loy + (ny_ - 1) * cell_);
     double removed = 0;
     for (int j = j0; j <= j1; ++j) {
         const double y = ys_[size_t(j)];
@@ -288,25 +291,26 @@ double MillWorld::apply(const Stroke& s) {
             if (!(low <= top)) continue;
             reached[i] = 1;
             if (!under_.empty() && under_.count(size_t(j) * size_t(nx_) + size_t(i))) {
-                row += carve(size_t(j) * size_t(nx_) + size_t(i), low, kInf) *
-                       (i == nx_ - 1 ? last_w : cell_);
+                row += carve(size_t(j) * size_t(nx_) + size_t(i), low, kInf) * side(0, i);
                 continue;
             }
             const float z = std::max(float(low), floor_z);
             if (z < h[i]) {
-                row += double(h[i] - z) * (i == nx_ - 1 ? last_w : cell_);
+                row += double(h[i] - z) * side(0, i);
                 h[i] = z;
             }
         }
-        removed += row * (j == ny_ - 1 ? last_h : cell_);
+        removed += row * side(1, j);
     }
-    if (removed > 0) {
-        for (int tj = j0 / kTile; tj <= j1 / kTile; ++tj)
-            for (int ti = i0 / kTile; ti <= i1 / kTile; ++ti)
-                tile_stale_[size_t(tj) * size_t(tx_) + size_t(ti)] = 1;
-        stale_ = true;
-    }
+    if (removed > 0) mark_stale(i0, i1, j0, j1);
     return removed;
+}
+
+void MillWorld::mark_stale(int i0, int i1, int j0, int j1) {
+    for (int tj = j0 / kTile; tj <= j1 / kTile; ++tj)
+        for (int ti = i0 / kTile; ti <= i1 / kTile; ++ti)
+            tile_stale_[size_t(tj) * size_t(tx_) + size_t(ti)] = 1;
+    stale_ = true;
 }
 
 void MillWorld::refresh() const {
@@ -335,7 +339,7 @@ bool MillWorld::removal(const Stroke& s, int axis, const P3& at, double& lo, dou
         l.e = {0, 0, 0};
         l.e[axis] = 1;
         const P3 d{s.b[0] - s.a[0], s.b[1] - s.a[1], s.b[2] - s.a[2]};
-        const tilt::Span sp = tilt::swept_cutter(s.radius, s.corner, s.a, d, s.u, l, 1e-10);
+        const tilt::Span sp = tilt::swept_cutter(s.radius, s.corner, s.a, d, s.u, l);
         lo = sp.lo, hi = sp.hi;
         return !sp.empty();
     }

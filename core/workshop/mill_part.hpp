@@ -133,6 +133,8 @@ class MillWorld {
     bool meets_stock(const Stroke& s) const;
     void record(const Stroke& s);
     double apply(const Stroke& s);
+    double side(int axis, int k) const;               // cell k's width along X (0) or Y (1)
+    void mark_stale(int i0, int i1, int j0, int j1);  // cells cut: their tiles
     // --- a tilted cutter (mill_tilt.cpp) ---
     double apply_tilted(const Stroke& s);
     // Takes [lo, hi] out of a cell's column: the length taken.

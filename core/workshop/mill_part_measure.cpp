@@ -14,8 +14,6 @@ namespace pupitre::workshop {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-// The contact's precision in travel (mm): 0.01 µm, ten times the promise.
-constexpr double kTravelTol = 1e-5;
 
 // One part of the cutter: its radius, its lowest surface above the tip (the
 // flute adds bottom(d)) and its top above the tip.
@@ -217,21 +215,11 @@ double MillWorld::first_contact(const Cutter& c, const P3& a, const P3& b, Part 
     // cell (a wall a cell thick is not stepped over), then halve the step
     // between the last clear place and the first deep one.
     const double step = std::min(cell_, 0.25) / len;
-    for (const auto& s : spans(c, a, b, part, depth)) {
-        double clear = std::max(0.0, s[0] - step);
-        for (double t = s[0];; t = std::min(t + step, s[1])) {
-            if (deeper(t)) {
-                double deep = t;
-                while ((deep - clear) * len > kTravelTol) {
-                    const double mid = 0.5 * (clear + deep);
-                    (deeper(mid) ? deep : clear) = mid;
-                }
-                return before ? clear : deep;
-            }
-            clear = t;
-            if (t >= s[1]) break;
-        }
-    }
+    for (const auto& s : spans(c, a, b, part, depth))
+        if (const double f = march(deeper, s[0], s[1], std::max(0.0, s[0] - step), step, len,
+                                   kTravelTol, before);
+            f <= 1)
+            return f;
     return 2;
 }
 

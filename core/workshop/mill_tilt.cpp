@@ -12,6 +12,7 @@
 #include <limits>
 
 #include "core/workshop/mill_part.hpp"
+#include "core/workshop/narrow.hpp"
 #include "core/workshop/tilt.hpp"
 
 namespace pupitre::workshop {
@@ -19,8 +20,6 @@ namespace pupitre::workshop {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-// The contact's precision in travel (mm), as a vertical cutter's.
-constexpr double kTravelTol = 1e-5;
 // Shorter than this (mm), what a cut leaves of a column is rounding.
 constexpr double kSliver = 1e-9;
 // The holder is followed this far above its face (mm) for the stock's faces.
@@ -81,8 +80,6 @@ double MillWorld::apply_tilted(const Stroke& s) {
     const int i0 = from(s.reach.lo[0], lox, nx_), i1 = to(s.reach.hi[0], lox, nx_);
     const int j0 = from(s.reach.lo[1], loy, ny_), j1 = to(s.reach.hi[1], loy, ny_);
     const P3 d{s.b[0] - s.a[0], s.b[1] - s.a[1], s.b[2] - s.a[2]};
-    const double last_w = stock_.hi[0] - (lox + (nx_ - 1) * cell_);
-    const double last_h = stock_.hi[1] - (loy + (ny_ - 1) * cell_);
     double removed = 0;
     for (int j = j0; j <= j1; ++j)
         for (int i = i0; i <= i1; ++i) {
@@ -91,19 +88,12 @@ double MillWorld::apply_tilted(const Stroke& s) {
             if (top <= floor_z) continue;
             tilt::Line l;
             l.o = {xs_[size_t(i)], ys_[size_t(j)], 0};
-            // 0.1 nm of the move: the height field keeps a float.
-            const tilt::Span sp = tilt::swept_cutter(s.radius, s.corner, s.a, d, s.u, l, 1e-7);
+            const tilt::Span sp = tilt::swept_cutter(s.radius, s.corner, s.a, d, s.u, l);
             if (sp.empty() || sp.lo >= top || sp.hi <= floor_z) continue;
             touched_[cell] = 1;
-            removed += carve(cell, sp.lo, sp.hi) * (i == nx_ - 1 ? last_w : cell_) *
-                       (j == ny_ - 1 ? last_h : cell_);
+            removed += carve(cell, sp.lo, sp.hi) * side(0, i) * side(1, j);
         }
-    if (removed > 0) {
-        for (int tj = j0 / kTile; tj <= j1 / kTile; ++tj)
-            for (int ti = i0 / kTile; ti <= i1 / kTile; ++ti)
-                tile_stale_[size_t(tj) * size_t(tx_) + size_t(ti)] = 1;
-        stale_ = true;
-    }
+    if (removed > 0) mark_stale(i0, i1, j0, j1);
     return removed;
 }
 
@@ -184,20 +174,7 @@ double MillWorld::tilted_first(const Cutter& c, const P3& a, const P3& b, const 
     // March in steps no longer than a cell, then halve the step between the
     // last clear place and the first deep one.
     const double step = std::min(cell_, 0.25) / len;
-    double clear = 0;
-    for (double t = std::min(step, 1.0);; t = std::min(t + step, 1.0)) {
-        if (deeper(t)) {
-            double deep = t;
-            while ((deep - clear) * len > kTravelTol) {
-                const double mid = 0.5 * (clear + deep);
-                (deeper(mid) ? deep : clear) = mid;
-            }
-            return before ? clear : deep;
-        }
-        clear = t;
-        if (t >= 1) break;
-    }
-    return 2;
+    return march(deeper, std::min(step, 1.0), 1.0, 0, step, len, kTravelTol, before);
 }
 
 const std::vector<P3>& MillWorld::surface_of(const Cutter& c, Part part, const P3& u) const {

@@ -10,6 +10,9 @@
 
 namespace pupitre::workshop {
 
+// A contact's precision in travel (mm): 0.01 µm, ten times the promise.
+inline constexpr double kTravelTol = 1e-5;
+
 // Narrows [t0, t1] to the t where lo <= p + t dp <= hi; false when empty.
 inline bool narrow(double p, double dp, double lo, double hi, double& t0, double& t1) {
     if (dp == 0) return p >= lo && p <= hi && t0 <= t1;
@@ -53,6 +56,28 @@ inline double crossing(F f, double in, double out, double tol) {
         (f(mid) >= 0 ? in : out) = mid;
     }
     return in;
+}
+
+// The first t from t0 to t1, in steps of `step`, where `deep(t)` holds,
+// then halved back towards the last t where it does not (`clear`, where it
+// does not either) to `tol` of travel along a move `len` long: that last
+// clear t (`before`) or the first deep one; 2 when it never holds.
+template <class F>
+inline double march(F deep, double t0, double t1, double clear, double step, double len, double tol,
+                    bool before) {
+    for (double t = t0;; t = std::min(t + step, t1)) {
+        if (deep(t)) {
+            double d = t;
+            while ((d - clear) * len > tol) {
+                const double mid = 0.5 * (clear + d);
+                (deep(mid) ? d : clear) = mid;
+            }
+            return before ? clear : d;
+        }
+        clear = t;
+        if (t >= t1) break;
+    }
+    return 2;
 }
 
 }  // namespace pupitre::workshop

@@ -3,11 +3,10 @@
 // The volume a flat end sweeps is the end's disc, square to u, added to the
 // half strip {a + l u + t d : l >= 0, 0 <= t <= 1}: a point is in it when,
 // for some t, it is above the end (axial) and within r of the axis (radial).
-// Along a line o + s e that is a convex region of the plane (s, t): for each
-// t the radial condition is a quadratic in s, whose lower root is convex in
-// t and upper root concave, and the axial one a half plane. So the line's
-// interval is found by one-dimensional convex searches over t
-// (golden_min, narrow.hpp), without sampling.
+// Along a line o + s e that is a convex region of the plane (s, t): the
+// radial condition an ellipse (or a strip), the axial one and 0 <= t <= 1
+// half planes. So the line's interval is in closed form: the least and the
+// greatest s of that region (swept_moving), without sampling.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/workshop/tilt.hpp"
 
@@ -72,7 +71,55 @@ void frame(const P3& u, P3& e1, P3& e2) {
     e2 = cross(u, e1);
 }
 
-Span swept_flat(const P3& a, const P3& d, const P3& u, double r, const Line& l, double tol) {
+// The flat end moving (d != 0; its parts square to u: pd, and along u: m),
+// the line's point s (pw + s pe square to u, h0 + s k along it): the
+// region of (s, t) where the point is in the cylinder whose end is at
+// a + t d, |pw + s pe - t pd| <= r, 0 <= t <= 1 and h0 + s k - t m >= 0, is
+// convex and bounded (pe != 0). Its least and greatest s are at the
+// ellipse's own extremes in s, its crossings with the three lines, or the
+// lines' crossings: the interval is the span of those that are in it.
+namespace {
+
+Span swept_moving(const P3& pw, const P3& pe, const P3& pd, double k, double m, double h0,
+                  double r) {
+    const double r2 = r * r;
+    auto inside = [&](double s, double t) {
+        const P3 v = sub(add(pw, mul(pe, s)), mul(pd, t));
+        const double slack = 1e-9 * (1 + std::abs(h0) + std::abs(s * k) + std::abs(t * m));
+        return std::isfinite(s) && t >= -1e-12 && t <= 1 + 1e-12 &&
+               dot(v, v) <= r2 * (1 + 1e-9) + 1e-18 && h0 + s * k - t * m >= -slack;
+    };
+    Span out;
+    auto keep = [&](double s, double t) {
+        if (inside(s, t)) out.hull({s, s});
+    };
+    // Where |v0 + x v1| = r along a line of the plane, x its parameter.
+    auto roots = [&](const P3& v0, const P3& v1, auto&& at) {
+        double x0 = -kInf, x1 = kInf;
+        const double A = dot(v1, v1);
+        if (A > 1e-30 && quad_le(A, 2 * dot(v0, v1), dot(v0, v0) - r2, x0, x1)) at(x0), at(x1);
+    };
+    // The ellipse's extremes in s: where its tangent runs along t.
+    if (const double pdd = dot(pd, pd); pdd > 1e-30) {
+        auto off = [&](const P3& v) { return sub(v, mul(pd, dot(v, pd) / pdd)); };
+        roots(off(pw), off(pe), [&](double s) { keep(s, dot(pd, add(pw, mul(pe, s))) / pdd); });
+    }
+    // Its crossings with t = 0, t = 1 and the axial line, and the lines'.
+    roots(pw, pe, [&](double s) { keep(s, 0); });
+    roots(sub(pw, pd), pe, [&](double s) { keep(s, 1); });
+    if (std::abs(m) >= std::abs(k) && m != 0)
+        roots(sub(pw, mul(pd, h0 / m)), sub(pe, mul(pd, k / m)),
+              [&](double s) { keep(s, (h0 + s * k) / m); });
+    else if (k != 0)
+        roots(sub(pw, mul(pe, h0 / k)), sub(mul(pe, m / k), pd),
+              [&](double t) { keep((t * m - h0) / k, t); });
+    if (k != 0) keep(-h0 / k, 0), keep((m - h0) / k, 1);
+    return out;
+}
+
+}  // namespace
+
+Span swept_flat(const P3& a, const P3& d, const P3& u, double r, const Line& l) {
     Span out;
     if (!(r > 0)) return out;
     const P3 w = sub(l.o, a), pw = perp(w, u), pe = perp(l.e, u), pd = perp(d, u);
@@ -86,37 +133,7 @@ Span swept_flat(const P3& a, const P3& d, const P3& u, double r, const Line& l, 
             return out;
         return {s0, s1};
     }
-    // For each t the radial roots are (-beta(t) -+ sqrt(disc(t))) / alpha,
-    // beta(t) = b0 - t b1 and disc(t) = A0 + A1 t + A2 t² (A2 <= 0).
-    const double b1 = dot(pe, pd), pww = dot(pw, pw), pwd = dot(pw, pd), pdd = dot(pd, pd);
-    const double A2 = b1 * b1 - alpha * pdd, A1 = 2 * (alpha * pwd - b0 * b1),
-                 A0 = b0 * b0 - alpha * (pww - r * r);
-    double t0 = 0, t1 = 1;
-    if (!quad_le(std::max(0.0, -A2), -A1, -A0, t0, t1)) return out;
-    const double tt = std::max(1e-15, tol / std::sqrt(dot(d, d)));
-    auto root = [&](double t) { return std::sqrt(std::max(0.0, A0 + t * (A1 + t * A2))); };
-    auto low = [&](double t) { return (t * b1 - b0 - root(t)) / alpha; };
-    auto high = [&](double t) { return (t * b1 - b0 + root(t)) / alpha; };
-    auto top = [&](double f0, double f1, auto f) {
-        return -golden_min([&](double t) { return -f(t); }, f0, f1, tt).second;
-    };
-    if (std::abs(k) < 1e-12) {
-        // The line square to the axis: only the t where it is above the end.
-        if (!narrow(h0, -m, 0, kInf, t0, t1)) return out;
-        return {golden_min(low, t0, t1, tt).second, top(t0, t1, high)};
-    }
-    // s >= bound(t) (k > 0) or s <= bound(t) (k < 0): the axial half plane.
-    auto bound = [&](double t) { return (t * m - h0) / k; };
-    auto room = [&](double t) { return k > 0 ? high(t) - bound(t) : bound(t) - low(t); };
-    const auto [tm, least] = golden_min([&](double t) { return -room(t); }, t0, t1, tt);
-    if (least > 0) return out;
-    const double f0 = room(t0) >= 0 ? t0 : crossing(room, tm, t0, tt);
-    const double f1 = room(t1) >= 0 ? t1 : crossing(room, tm, t1, tt);
-    if (k > 0)
-        return {golden_min([&](double t) { return std::max(low(t), bound(t)); }, f0, f1, tt).second,
-                top(f0, f1, high)};
-    return {golden_min(low, f0, f1, tt).second,
-            top(f0, f1, [&](double t) { return std::min(high(t), bound(t)); })};
+    return swept_moving(pw, pe, pd, k, m, h0, r);
 }
 
 Span capsule(const P3& a, const P3& d, double r, const Line& l) {
@@ -140,18 +157,18 @@ Span capsule(const P3& a, const P3& d, double r, const Line& l) {
 }
 
 Span swept_cutter(double radius, double corner, const P3& a, const P3& d, const P3& u,
-                  const Line& l, double tol) {
+                  const Line& l) {
     const double c = std::clamp(corner, 0.0, radius);
-    if (c <= 0) return swept_flat(a, d, u, radius, l, tol);
+    if (c <= 0) return swept_flat(a, d, u, radius, l);
     // Above the corner the cutter is a flat end of its full radius.
     const P3 centre = add(a, mul(u, c));
-    Span out = swept_flat(centre, d, u, radius, l, tol);
+    Span out = swept_flat(centre, d, u, radius, l);
     const double inner = radius - c;
     if (inner <= 1e-9) {
         out.hull(capsule(centre, d, c, l));  // a ball end
         return out;
     }
-    out.hull(swept_flat(a, d, u, inner, l, tol));  // the flat of the end
+    out.hull(swept_flat(a, d, u, inner, l));  // the flat of the end
     // The corner's balls all lie within `radius` of the axis at the corner's
     // height: a line that misses that misses them.
     if (capsule(centre, d, radius, l).empty()) return out;
@@ -169,8 +186,8 @@ Span swept_cutter(double radius, double corner, const P3& a, const P3& d, const 
 Span part_span(const Cutter& c, Part part, const P3& tip, const P3& u, const Line& l) {
     const PartSpan s = span_of(c, part);
     const P3 still{0, 0, 0};
-    Span out = s.flute ? swept_cutter(c.radius, c.corner, tip, still, u, l, 0)
-                       : swept_flat(add(tip, mul(u, s.base)), still, u, s.radius, l, 0);
+    Span out = s.flute ? swept_cutter(c.radius, c.corner, tip, still, u, l)
+                       : swept_flat(add(tip, mul(u, s.base)), still, u, s.radius, l);
     if (out.empty() || std::isinf(s.top)) return out;
     if (!narrow(dot(sub(l.o, tip), u), dot(l.e, u), -kInf, s.top, out.lo, out.hi)) return {};
     return out;

@@ -32,9 +32,9 @@ struct Span {
 
 // The flat-ended cylinder of radius r about the axis u from the point a
 // upwards without end, its end's centre going straight from a to a + d:
-// where the line crosses the volume it sweeps (convex: one interval), to
-// `tol` of the move. d = 0: the cylinder standing at a, in closed form.
-Span swept_flat(const P3& a, const P3& d, const P3& u, double r, const Line& l, double tol);
+// where the line crosses the volume it sweeps (convex: one interval), in
+// closed form. d = 0: the cylinder standing at a.
+Span swept_flat(const P3& a, const P3& d, const P3& u, double r, const Line& l);
 // The points within r of the segment from a to a + d.
 Span capsule(const P3& a, const P3& d, double r, const Line& l);
 // A cutter of `radius` with a `corner` radius, tip (the end's centre) going
@@ -42,7 +42,7 @@ Span capsule(const P3& a, const P3& d, double r, const Line& l);
 // volume it sweeps, as the material counts a cut (the hull of the pieces:
 // the flat of the end, the cylinder above the corner and the corner's balls).
 Span swept_cutter(double radius, double corner, const P3& a, const P3& d, const P3& u,
-                  const Line& l, double tol);
+                  const Line& l);
 // `part` of the cutter standing with its tip at `tip` (the holder ends
 // `top` mm above the tip, whatever its own length).
 Span part_span(const Cutter& c, Part part, const P3& tip, const P3& u, const Line& l);

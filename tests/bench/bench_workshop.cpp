@@ -7,6 +7,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -315,6 +316,36 @@ void BM_GraphFrameBlock(benchmark::State& st) {
     }
 }
 BENCHMARK(BM_GraphFrameBlock)->Unit(benchmark::kMillisecond);
+
+// mill5's head at B30, T1 (Ø10) cutting with its end 1 mm under the top of
+// the 100 x 100 block, fed 140 mm along Y across it: one tilted stroke,
+// every column of its 10 mm band carved (100,000 cells), on fresh stock.
+void BM_MillTiltedPass(benchmark::State& st) {
+    MachineProfile m;
+    builtin_machine("mill5", m);
+    workshop::Setup setup;
+    builtin_setup("mill5", setup);
+    const double b = 30 * 3.14159265358979323846 / 180, reach = 250 + 110.25;
+    MoveEvent e;
+    e.g = 1;
+    e.from_mach[X] = e.to_mach[X] = std::sin(b) * reach;
+    e.from_mach[Y] = -70, e.to_mach[Y] = 70;
+    e.from_mach[Z] = e.to_mach[Z] = -281 - 250 + std::cos(b) * reach;
+    e.from_mach[B] = e.to_mach[B] = 30;
+    e.to_prog = e.to_mach;
+    SpindleEvent on;
+    on.dir = 3, on.rpm = 1000;
+    for (auto _ : st) {
+        st.PauseTiming();
+        workshop::Workshop shop(m, setup, nullptr);
+        shop.tool(Loc{}, 1, 1, 0, true);
+        shop.spindle(on);
+        st.ResumeTiming();
+        workshop::Outcome o = shop.apply(e);
+        benchmark::DoNotOptimize(o.crashed);
+    }
+}
+BENCHMARK(BM_MillTiltedPass)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 
