@@ -75,6 +75,13 @@ cmp -s "$work/m1" "$work/m4" || fail "(c) mill4 should cut the mill's part: $(ca
     --json chamfer.iso >"$work/chamfer.json" 2>"$work/err" || fail "(c) B45: $(cat "$work/err")"
 grep -q '"crashes":\[\],"measurements":\[{"spec":"depth X99 Y50","instrument":"depth gauge","value":1.0000,.*"value":0.5000,.*"value":99.0000' \
     "$work/chamfer.json" || fail "(c) the B45 chamfer: $(cat "$work/chamfer.json")"
+# Drawn on the part: the head at B45 puts the tip 254.735 to -X of the
+# gauge line (X0 before N50: X-254.735), each B turn drawn in pieces that
+# count as one move.
+"$bin" plot --machine mill5 --setup mill5 --set PREF.Z=-280 --set D1.L=110.25 --set D1.R=5 \
+    --svg "$work/chamfer.svg" chamfer.iso 2>"$work/err" || fail "(c) plot B45: $(cat "$work/err")"
+grep -q '7 moves · path 1296.874 mm' "$work/chamfer.svg" || fail "(c) plot B45: the moves"
+grep -q 'extents  X -254.735/303.735' "$work/chamfer.svg" || fail "(c) plot B45: the path on the part"
 sed 's/\bB\b/A/g; s/travel\.B/travel.A/; s/rapid\.B/rapid.A/; s/home\.B/home.A/' \
     "$here/../../data/machines/mill4.machine" | grep -v "^kinematics" >"$work/a.machine"
 "$bin" run --machine "$work/a.machine" --setup mill slot.iso >/dev/null 2>"$work/err"
