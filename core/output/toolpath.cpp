@@ -48,6 +48,7 @@ void Toolpath::clear() {
     em_mask_lo_ = em_mask_hi_ = 0;
     counts_[0] = counts_[1] = counts_[2] = 0;
     pieces_.clear();
+    beyond_ = false;
     travel_ = 0;
     plane_arcs_[0] = plane_arcs_[1] = plane_arcs_[2] = 0;
     ltype_rapid_ = ltype_feed_ = -1;
@@ -94,9 +95,11 @@ void Toolpath::add(const MoveEvent& e) {
     mv.ltype = e.g == 0 ? ltype_rapid_ : ltype_feed_;
     if (e.g52) mv.flags |= pathflag::g52;
     if (e.piece) mv.flags |= pathflag::piece;
+    if (!e.piece) beyond_ = false;
     if (beyond_travel(e.to_mach)) {
         mv.flags |= pathflag::travel;
-        ++travel_;
+        if (!beyond_) ++travel_;  // a move drawn in pieces counts once
+        beyond_ = true;
     }
     bool arc =
         (e.g == 2 || e.g == 3) && e.plane_a0 < 3 && e.plane_a1 < 3 && e.plane_a0 != e.plane_a1;

@@ -199,6 +199,7 @@ class Toolpath final : public MachineSink {
     size_t counts_[3] = {0, 0, 0};
     std::vector<uint32_t> pieces_;  // the indices of the pieces (pathflag::piece), in order
     size_t travel_ = 0;
+    bool beyond_ = false;  // the move being drawn is counted beyond travel
     int plane_arcs_[3] = {0, 0, 0};
     int8_t ltype_rapid_ = -1, ltype_feed_ = -1;
     double seconds_ = 0, length_ = 0;

@@ -148,8 +148,10 @@ bool MillWorld::make_stroke(const P3& a, const P3& b, double radius, double corn
     s.corner = std::clamp(grain(corner), 0.0, s.radius);
     const double len = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
     if (!(len > 0.5 && len < 2)) return false;
-    // The axis is kept to 1e-9, as the store keeps it.
-    for (int k = 0; k < 3; ++k) s.u[k] = std::round(u[k] / len * 1e9) / 1e9;
+    // The axis is kept to 1e-9, as the store keeps it: one read back (a unit
+    // vector within 1e-8) is not made a unit again, so it stays the same.
+    const double norm = std::abs(len - 1) < 1e-8 ? 1 : len;
+    for (int k = 0; k < 3; ++k) s.u[k] = std::round(u[k] / norm * 1e9) / 1e9;
     s.tilt = leans(s.u);
     if (!s.tilt) s.u = kUp;
     return s.radius > 0;
@@ -165,6 +167,8 @@ void MillWorld::bound(Stroke& s) const {
         s.reach.lo[2] = std::min(s.a[2], s.b[2]);
         return;
     }
+    // Pointing up (B beyond 90°), the cutter's body goes down without end.
+    if (s.u[2] < -1e-6) s.reach.lo[2] = std::min(s.reach.lo[2], stock_.lo[2] - r);
     const double rise = stock_.hi[2] - s.reach.lo[2];
     const double up = s.u[2] > 1e-6 ? std::min(rise / s.u[2], kFar) : kFar;
     for (int k = 0; k < 2; ++k) {

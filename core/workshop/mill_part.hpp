@@ -164,6 +164,8 @@ class MillWorld {
     // The deepest column (as depth_into), or any value above `above` as
     // soon as one is found.
     double penetration(const Cutter& c, const P3& tip, Part part, double above) const;
+    double column_depth(const Cutter& c, const PartSpan& sh, const P3& tip, size_t cell, double h,
+                        double d) const;
     std::vector<std::array<double, 2>> spans(const Cutter& c, const P3& a, const P3& b, Part part,
                                              double depth) const;
     Box3 stock_;

@@ -103,6 +103,18 @@ PartSpan span_of(const Cutter& c, Part part) {
     return {c.radius, 0, c.flute, true};
 }
 
+// A column a tilted cutter went under is its pieces: a vertical part wholly
+// under one (in the void) is clear of it.
+double MillWorld::column_depth(const Cutter& c, const PartSpan& sh, const P3& tip, size_t cell,
+                               double h, double d) const {
+    const auto it = under_.empty() ? under_.end() : under_.find(cell);
+    if (it == under_.end()) return column(c, sh, tip, h, d);
+    double best = 0;
+    for (const auto& g : it->second)
+        if (tip[2] + sh.top > g[0]) best = std::max(best, column(c, sh, tip, g[1], d));
+    return best;
+}
+
 double MillWorld::depth_into(const Cutter& c, const P3& tip, Part part, const P3& u) const {
     refresh();
     if (leans(u)) return tilted_depth(c, tip, u, part, kInf);
@@ -146,7 +158,7 @@ double MillWorld::penetration(const Cutter& c, const P3& tip, Part part, double 
                         touched_[row + size_t(i)] || cut_beside(i, j)
                             ? std::sqrt(sq(xs_[size_t(i)] - tip[0]) + sq(yc - tip[1]))
                             : to_rect(tip[0], tip[1], x_edge(i), x_edge(i + 1), y0, y1);
-                    const double p = column(c, sh, tip, h, d);
+                    const double p = column_depth(c, sh, tip, row + size_t(i), h, d);
                     if (p > best) {
                         best = p;
                         if (best > above) return best;

@@ -194,7 +194,12 @@ void Workshop::turn_pieces(std::vector<Axes>& out) const {
     auto chord = [](double r) {
         return r > 1e-3 ? 2 * std::acos(1 - 5e-4 / r) / geometry::kDeg : 360;
     };
-    const double step_c = chord(rc), step_b = std::min(0.05, chord(rb));
+    // Turning C with the tool tilted by B turns its axis by dC sin B.
+    double lean = 0;
+    if (m_.has(B))
+        for (const Axes& p : out) lean = std::max(lean, std::fabs(std::sin(p[B] * geometry::kDeg)));
+    const double step_c = std::min(chord(rc), lean > 1e-9 ? 0.05 / lean : 360);
+    const double step_b = std::min(0.05, chord(rb));
     std::vector<Axes> fine{out.front()};
     for (size_t i = 0; i + 1 < out.size(); ++i) {
         double turns = 1;

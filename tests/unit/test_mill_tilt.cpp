@@ -228,9 +228,13 @@ TEST(MillTilt, SideSlotKeepsTheMaterialAbove) {
     std::vector<std::array<double, 2>> col;
     w.material(i, j, col);
     expect_spans(col, {{0, 25}, {35, 50}});
-    // A vertical Ø2 cutter plunged there to Z20 takes the top piece and the
-    // top of the lower one.
+    // A vertical Ø2 cutter (its flute 5 long) standing in the slot, its tip
+    // at Z27: the flute is in the void, its shank in the material above.
     Cutter small = flat(1);
+    small.flute = 5;
+    EXPECT_EQ(w.depth_into(small, {99.05, 50.05, 27}, Part::flute), 0);
+    EXPECT_GT(w.depth_into(small, {99.05, 50.05, 27}, Part::shank), 0.5);
+    // Plunged there to Z20 it takes the top piece and the top of the lower one.
     w.cut(small, {99.05, 50.05, 60}, {99.05, 50.05, 20});
     w.material(i, j, col);
     expect_spans(col, {{0, 20}});
@@ -273,6 +277,26 @@ TEST(MillTilt, TiltedBallEnd) {
     EXPECT_NEAR(w.along(2, {cx + 1, 50, 0})[0][1], cz - std::sqrt(8.0), 1e-6);
 }
 
+// Pointing up (B150: the axis (sin 150°, 0, cos 150°), the body going down
+// towards +X), the cutter takes what its sweep holds, below its tip too: a
+// line along X reads the material as the membership test says.
+TEST(MillTilt, PointingUpCutsBelowTheTip) {
+    MillWorld w = block();
+    const double b = 150 * M_PI / 180;
+    const P3 u{std::sin(b), 0, std::cos(b)}, a{97, 20, 30}, c{97, 80, 30};
+    w.cut(flat(5), a, c, u);
+    int cut = 0;
+    for (double z = 10; z <= 40; z += 0.5) {
+        bool solid = false;
+        for (const auto& s : w.along(0, {0, 50, z}))
+            solid = solid || (s[0] <= 99.5 && s[1] >= 99.5);
+        const bool taken = in_swept_flat({99.5, 50, z}, a, tilt::sub(c, a), u, 5);
+        EXPECT_NE(solid, taken) << z;
+        cut += taken;
+    }
+    EXPECT_GT(cut, 4);
+}
+
 // The store's text keeps the axis: read back, the part is the same.
 TEST(MillTilt, TextRoundTrip) {
     MillWorld w = block();
@@ -280,6 +304,9 @@ TEST(MillTilt, TextRoundTrip) {
     w.cut(flat(5), {98, -10, 30}, {98, 110, 30}, {1, 0, 0});
     w.cut(flat(5), {99, -10, 49}, {99, 110, 49}, {s, 0, s});
     w.cut(flat(2), {20, 20, 60}, {20, 20, 40});
+    // An axis whose last digit a second rounding to a unit vector would move.
+    const double b = -33.2 * M_PI / 180;
+    w.cut(flat(3), {10, -10, 45}, {10, 110, 45}, {std::sin(b), 0, std::cos(b)});
     const std::string text = w.to_text();
     MillWorld v = block();
     ASSERT_TRUE(v.from_text(text));
