@@ -1,7 +1,8 @@
 // libFuzzer target: setup text -> parse_setup, then the lathe's world built
 // from it (stock, chuck, tailstock), every tool's true shape, a Workshop and
 // the instruments' readings; a machining centre's: its Workshop, a jog, a
-// plunge and a pass of each tool, the instruments. Any crash, sanitizer report, hang or runaway
+// plunge and a pass of each tool, the instruments, then the same under
+// mill5's tilted head. Any crash, sanitizer report, hang or runaway
 // allocation is a bug: a bad setup must end in "line N: ..." (pupitre-setup(5)).
 // A text that reads as an exercise (pupitre-exercise(5)) is drawn, its
 // targets worked out, graded with nothing entered and reported.
@@ -31,6 +32,44 @@ MoveEvent move(const Axes& from, double dx, double dy, double dz, int g) {
     e.to_mach[X] += dx, e.to_mach[Y] += dy, e.to_mach[Z] += dz;
     e.to_prog = e.to_mach;
     return e;
+}
+
+// The block under mill5's head (the setup's head.pivot): the first tool
+// swung to B30 above it, jogged down, a pass, a C turn, the instruments and
+// the part's text read back (a tilted cutter's strokes).
+int mill_tilted(const Setup& s) {
+    static MachineProfile five;
+    static bool init = builtin_machine("mill5", five);
+    (void)init;
+    if (s.tools.empty()) return 0;
+    const MillSetup& m = s.mill;
+    Workshop w(five, s, nullptr);
+    SpindleEvent on;
+    on.dir = 3;
+    on.rpm = 1000;
+    w.spindle(on);
+    const ToolTruth& t = s.tools.front();
+    w.tool(Loc{}, t.position, t.position, 0, true);
+    Axes at{};
+    at[X] = m.stock_x + m.length / 2 + 0.5 * (m.pivot + t.length);
+    at[Y] = m.stock_y + m.width / 2;
+    at[Z] = m.stock_z + m.height + 20 + t.length;
+    MoveEvent tilt = move(at, 0, 0, 0, 0);
+    tilt.to_mach[B] = 30;
+    (void)w.apply(tilt);
+    at[B] = 30;
+    Outcome o = w.jog(move(at, 0, 0, -40, 1), true);
+    at = o.touched ? o.stop : at;
+    (void)w.apply(move(at, m.length / 4, m.width / 3, -2, 1));
+    MoveEvent turn = move(at, 0, 0, 0, 1);
+    turn.to_mach[C] = 20;
+    (void)w.jog(turn, true);
+    w.clear_crash();
+    Reading r;
+    (void)w.measure("depth X1 Y1", r);
+    (void)w.measure("width X X10 Y10 Z-1", r);
+    (void)w.load_part(w.part_text());
+    return 0;
 }
 
 int mill(const Setup& s) {
@@ -67,7 +106,7 @@ int mill(const Setup& s) {
     }
     const std::string text = w.part_text();
     (void)w.load_part(text);
-    return 0;
+    return mill_tilted(s);
 }
 
 // An exercise: its truth drawn with two seeds, what must be found, a grade
