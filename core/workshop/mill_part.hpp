@@ -96,6 +96,9 @@ class MillWorld {
     // it never does. `before`: the last fraction where it does not yet.
     double first_contact(const Cutter& c, const P3& a, const P3& b, Part part, double depth,
                          bool before = false, const P3& u = kUp) const;
+    // A tilted part's surface points from its tip (tilt::surface; the holder
+    // followed 150 mm), kept for the last few parts asked for.
+    const std::vector<P3>& surface_of(const Cutter& c, Part part, const P3& u) const;
     // The material in cell (i, j)'s column: sorted, disjoint intervals of
     // machine Z (one, from the stock's bottom to height(), unless a tilted
     // cutter went under the top).
@@ -145,14 +148,16 @@ class MillWorld {
     // The stock's own faces and top, exact: how deep the part's surface
     // points are in the stock as loaded, where no cut came near.
     double stock_depth(const std::vector<P3>& points, const P3& tip) const;
-    const std::vector<P3>& surface_of(const Cutter& c, Part part, const P3& u) const;
     struct Surface {
         Cutter c;
         Part part = Part::flute;
         P3 u{};
         std::vector<P3> points;
     };
-    mutable Surface surface_;  // the last part's, kept: a contact search asks for it often
+    // The last parts' (a cutter and the same grown by a contact's margin,
+    // three parts each), kept: a contact search asks for them often.
+    mutable std::array<Surface, 6> surfaces_;
+    mutable size_t next_surface_ = 0;
     // Brings the tiles' highest tops up to date (kept lazily: a pocket's
     // thousands of strokes would each rescan the tiles they cross).
     void refresh() const;

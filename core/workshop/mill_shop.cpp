@@ -277,7 +277,7 @@ double Workshop::mill_depth(const Cutter& c, const P3& tip, const P3& u, Met& wh
             for (const Fixture& f : fixtures_) keep(f.depth(c, tip, p), f.what);
             continue;
         }
-        const std::vector<P3> points = tilt::surface(c, p, u, span_of(c, p).base + kHolderLength);
+        const std::vector<P3>& points = mill_->surface_of(c, p, u);
         for (const Fixture& f : fixtures_)
             if (may_meet(c, p, tip, tip, f.box, u)) keep(f.depth(points, tip), f.what);
     }
@@ -307,7 +307,7 @@ Workshop::Contact Workshop::mill_first(const Cutter& c, const P3& a, const P3& b
                                 : std::min(a[2], b[2]) + span_of(c, p).base;
         if ((with_material || p != Part::flute) && low < top + (d - depth))
             keep(mill_->first_contact(c, a, b, p, d, before, u), Met::material, p);
-        std::vector<P3> points;
+        const std::vector<P3>* points = nullptr;
         for (const Fixture& f : fixtures_) {
             if (!may_meet(c, p, a, b, f.box, u)) continue;
             if (!lean) {
@@ -315,8 +315,8 @@ Workshop::Contact Workshop::mill_first(const Cutter& c, const P3& a, const P3& b
                      f.what, p);
                 continue;
             }
-            if (points.empty()) points = tilt::surface(c, p, u, reach);
-            keep(marched(a, b, d, before, [&](const P3& q) { return f.depth(points, q); }), f.what,
+            if (!points) points = &mill_->surface_of(c, p, u);
+            keep(marched(a, b, d, before, [&](const P3& q) { return f.depth(*points, q); }), f.what,
                  p);
         }
     }

@@ -68,6 +68,49 @@ double MillWorld::carve(size_t cell, double lo, double hi) {
     return taken;
 }
 
+namespace {
+
+// A lower bound of a tilted part's Z over a vertical line: a point of the
+// part, tip + l u + w (w square to u, |w| <= radius), lies `delta` along the
+// axis's lean from the tip horizontally with delta <= l |u_h| + radius u_z,
+// and its Z is at least tip Z + l u_z - radius |u_h|. So a column whose top
+// is under the bound at its place is clear of the part (u_z > 0; a part
+// lying flat or pointing down has none).
+struct Lowest {
+    Lowest(const PartSpan& s, const P3& tip, const P3& u) : s_(s), tip_(tip), u_(u) {
+        uh_ = std::hypot(u[0], u[1]);
+    }
+    // The least l of the part's points over the line.
+    double least(double x, double y) const {
+        double l = s_.base;
+        if (uh_ > 1e-9) {
+            const double delta = ((x - tip_[0]) * u_[0] + (y - tip_[1]) * u_[1]) / uh_;
+            l = std::max(l, (delta - s_.radius * u_[2]) / uh_);
+        }
+        return l;
+    }
+    double at(double x, double y) const {
+        if (!(u_[2] > 1e-6)) return -kInf;
+        return tip_[2] + least(x, y) * u_[2] - s_.radius * uh_;
+    }
+    // Over a rectangle: the least of its corners' (the bound is monotonic
+    // along the lean, the same across it).
+    double over(double x0, double x1, double y0, double y1) const {
+        return std::min({at(x0, y0), at(x0, y1), at(x1, y0), at(x1, y1)});
+    }
+    // Swept from this tip to the other's: each term at its least.
+    double swept(const Lowest& o, double x, double y) const {
+        if (!(u_[2] > 1e-6)) return -kInf;
+        return std::min(tip_[2], o.tip_[2]) + std::min(least(x, y), o.least(x, y)) * u_[2] -
+               s_.radius * uh_;
+    }
+    PartSpan s_;
+    P3 tip_, u_;
+    double uh_ = 0;
+};
+
+}  // namespace
+
 double MillWorld::apply_tilted(const Stroke& s) {
     const double lox = stock_.lo[0], loy = stock_.lo[1], floor_z = stock_.lo[2];
     // The cells whose centres are within the stroke's reach.
@@ -80,14 +123,17 @@ double MillWorld::apply_tilted(const Stroke& s) {
     const int i0 = from(s.reach.lo[0], lox, nx_), i1 = to(s.reach.hi[0], lox, nx_);
     const int j0 = from(s.reach.lo[1], loy, ny_), j1 = to(s.reach.hi[1], loy, ny_);
     const P3 d{s.b[0] - s.a[0], s.b[1] - s.a[1], s.b[2] - s.a[2]};
+    // A column whose top is under the cutter all along is left alone.
+    const PartSpan whole{s.radius, 0, kInf, true};
+    const Lowest ends[2] = {Lowest(whole, s.a, s.u), Lowest(whole, s.b, s.u)};
     double removed = 0;
     for (int j = j0; j <= j1; ++j)
         for (int i = i0; i <= i1; ++i) {
             const size_t cell = size_t(j) * size_t(nx_) + size_t(i);
-            const double top = h_[cell];
-            if (top <= floor_z) continue;
+            const double top = h_[cell], x = xs_[size_t(i)], y = ys_[size_t(j)];
+            if (top <= floor_z || top <= ends[0].swept(ends[1], x, y)) continue;
             tilt::Line l;
-            l.o = {xs_[size_t(i)], ys_[size_t(j)], 0};
+            l.o = {x, y, 0};
             const tilt::Span sp = tilt::swept_cutter(s.radius, s.corner, s.a, d, s.u, l);
             if (sp.empty() || sp.lo >= top || sp.hi <= floor_z) continue;
             touched_[cell] = 1;
@@ -127,17 +173,21 @@ double MillWorld::tilted_depth(const Cutter& c, const P3& tip, const P3& u, Part
     std::vector<std::array<double, 2>> segs;
     double best = stock_depth(surface_of(c, part, u), tip);
     if (best > above) return best;
+    const Lowest low(sh, tip, u);
     for (int tj = cj0 / kTile; tj <= cj1 / kTile; ++tj)
         for (int ti = ci0 / kTile; ti <= ci1 / kTile; ++ti) {
-            // A tile all below the part's lowest point is clear of it.
-            if (tile_max_[size_t(tj) * size_t(tx_) + size_t(ti)] <= bb.lo[2]) continue;
             const int i0 = std::max(ci0, ti * kTile), i1 = std::min(ci1, ti * kTile + kTile - 1);
             const int j0 = std::max(cj0, tj * kTile), j1 = std::min(cj1, tj * kTile + kTile - 1);
+            // A tile all below the part is clear of it.
+            const double top = tile_max_[size_t(tj) * size_t(tx_) + size_t(ti)];
+            if (top <= bb.lo[2] ||
+                top <= low.over(xs_[size_t(i0)], xs_[size_t(i1)], ys_[size_t(j0)], ys_[size_t(j1)]))
+                continue;
             for (int j = j0; j <= j1; ++j)
                 for (int i = i0; i <= i1; ++i) {
                     const double h = h_[size_t(j) * size_t(nx_) + size_t(i)];
-                    if (h <= floor_z || h <= bb.lo[2]) continue;
                     const double x = xs_[size_t(i)], y = ys_[size_t(j)];
+                    if (h <= floor_z || h <= bb.lo[2] || h <= low.at(x, y)) continue;
                     const double in = tilt::inset(sh, tip, u, x, y);
                     if (in <= best) continue;
                     tilt::Line l;
@@ -178,14 +228,14 @@ double MillWorld::tilted_first(const Cutter& c, const P3& a, const P3& b, const 
 }
 
 const std::vector<P3>& MillWorld::surface_of(const Cutter& c, Part part, const P3& u) const {
-    Surface& s = surface_;
-    const bool same = !s.points.empty() && s.part == part && s.u == u && s.c.radius == c.radius &&
-                      s.c.corner == c.corner && s.c.flute == c.flute && s.c.reach == c.reach &&
-                      s.c.holder == c.holder;
-    if (!same) {
-        s.c = c, s.part = part, s.u = u;
-        s.points = tilt::surface(c, part, u, span_of(c, part).base + kHolderLength);
-    }
+    for (const Surface& s : surfaces_)
+        if (!s.points.empty() && s.part == part && s.u == u && s.c.radius == c.radius &&
+            s.c.corner == c.corner && s.c.flute == c.flute && s.c.reach == c.reach &&
+            s.c.holder == c.holder)
+            return s.points;
+    Surface& s = surfaces_[next_surface_++ % surfaces_.size()];
+    s.c = c, s.part = part, s.u = u;
+    s.points = tilt::surface(c, part, u, span_of(c, part).base + kHolderLength);
     return s.points;
 }
 

@@ -41,10 +41,37 @@ P3 perp(const P3& v, const P3& u) {
 
 // The corner's balls: enough that between two of them the ring of balls
 // falls short of the torus by at most 0.5 µm (the shortfall is about
-// (pi / n)² inner r / (2 c)).
+// (pi / n)² inner r / (2 c)), up to 256 of them.
 int ring_count(double inner, double radius, double corner) {
     const double step = std::sqrt(2 * 5e-4 * corner / (inner * radius));
-    return std::clamp(int(std::ceil(M_PI / step)), 8, 1000);
+    return std::clamp(int(std::ceil(M_PI / step)), 8, kRing);
+}
+
+// A bull nose standing still, below its corner's top: the points within c
+// of the inner cylinder (radius - c, from c up the axis), in the slab
+// 0 <= axial <= c. Along the line that is a bounded stretch where the
+// distance to the inner cylinder, less c, is convex: its least by a golden
+// search, its ends by bisection, to 1e-10 mm.
+Span still_corner(double radius, double c, const P3& a, const P3& u, const Line& l) {
+    const double inner = radius - c;
+    auto gap = [&](double s) {
+        const P3 q = sub(add(l.o, mul(l.e, s)), a), side = perp(q, u);
+        const double h = dot(q, u) - c, e = std::sqrt(dot(side, side)) - inner;
+        if (h >= 0) return std::max(0.0, e) - c;
+        return (e <= 0 ? -h : std::hypot(h, e)) - c;
+    };
+    double s0 = -kInf, s1 = kInf;
+    const P3 w = sub(l.o, a), pw = perp(w, u), pe = perp(l.e, u);
+    if (!narrow(dot(w, u), dot(l.e, u), 0, c, s0, s1) ||
+        !quad_le(dot(pe, pe), 2 * dot(pe, pw), dot(pw, pw) - radius * radius, s0, s1) ||
+        !std::isfinite(s0) || !std::isfinite(s1))
+        return {};
+    constexpr double tol = 1e-10;
+    const auto [sm, least] = golden_min(gap, s0, s1, tol);
+    if (least > 0) return {};
+    auto in = [&](double s) { return -gap(s); };
+    return {gap(s0) <= 0 ? s0 : crossing(in, sm, s0, tol),
+            gap(s1) <= 0 ? s1 : crossing(in, sm, s1, tol)};
 }
 
 // The line moving along the cylinder's axis: in it for the t where the
@@ -71,6 +98,8 @@ void frame(const P3& u, P3& e1, P3& e2) {
     e2 = cross(u, e1);
 }
 
+namespace {
+
 // The flat end moving (d != 0; its parts square to u: pd, and along u: m),
 // the line's point s (pw + s pe square to u, h0 + s k along it): the
 // region of (s, t) where the point is in the cylinder whose end is at
@@ -78,8 +107,6 @@ void frame(const P3& u, P3& e1, P3& e2) {
 // convex and bounded (pe != 0). Its least and greatest s are at the
 // ellipse's own extremes in s, its crossings with the three lines, or the
 // lines' crossings: the interval is the span of those that are in it.
-namespace {
-
 Span swept_moving(const P3& pw, const P3& pe, const P3& pd, double k, double m, double h0,
                   double r) {
     const double r2 = r * r;
@@ -159,13 +186,19 @@ Span capsule(const P3& a, const P3& d, double r, const Line& l) {
 Span swept_cutter(double radius, double corner, const P3& a, const P3& d, const P3& u,
                   const Line& l) {
     const double c = std::clamp(corner, 0.0, radius);
-    if (c <= 0) return swept_flat(a, d, u, radius, l);
+    // A corner of 2 µm or less (a flat end grown by a contact's margin) is a
+    // flat end's within 0.6 µm.
+    if (c <= 2e-3) return swept_flat(a, d, u, radius, l);
     // Above the corner the cutter is a flat end of its full radius.
     const P3 centre = add(a, mul(u, c));
     Span out = swept_flat(centre, d, u, radius, l);
     const double inner = radius - c;
     if (inner <= 1e-9) {
         out.hull(capsule(centre, d, c, l));  // a ball end
+        return out;
+    }
+    if (d[0] == 0 && d[1] == 0 && d[2] == 0) {
+        out.hull(still_corner(radius, c, a, u, l));  // exact, standing still
         return out;
     }
     out.hull(swept_flat(a, d, u, inner, l));  // the flat of the end
@@ -221,17 +254,22 @@ std::vector<P3> surface(const Cutter& c, Part part, const P3& u, double top) {
     frame(u, e1, e2);
     std::vector<P3> out;
     static const P3 kDirs[] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    // The unit circle in 48 and 24 steps, worked out once.
+    static const auto circle = [](int n) {
+        std::vector<std::array<double, 2>> unit;
+        for (int i = 0; i < n; ++i)
+            unit.push_back({std::cos(2 * M_PI * i / n), std::sin(2 * M_PI * i / n)});
+        return unit;
+    };
+    static const std::vector<std::array<double, 2>> c48 = circle(48), c24 = circle(24);
     auto ring = [&](double h, double rho, int n) {
         const P3 centre = mul(u, h);
         if (rho <= 0) {
             out.push_back(centre);
             return;
         }
-        for (int i = 0; i < n; ++i) {
-            const double phi = 2 * M_PI * i / n;
-            out.push_back(
-                add(centre, add(mul(e1, rho * std::cos(phi)), mul(e2, rho * std::sin(phi)))));
-        }
+        for (const auto& cs : n == 48 ? c48 : c24)
+            out.push_back(add(centre, add(mul(e1, rho * cs[0]), mul(e2, rho * cs[1]))));
         for (const P3& dir : kDirs) {
             const P3 q = perp(dir, u);
             const double len = std::sqrt(dot(q, q));

@@ -1,6 +1,8 @@
 // A cutter tilted against the table (mill5's B head, mill4's B table): where
 // a line crosses the cutter or the volume it sweeps, exactly for a flat or a
-// ball end (a bull nose's torus is a ring of balls within 0.5 µm), and the
+// ball end (a moving bull nose's torus is a ring of kRing balls at most:
+// within 0.5 µm, or (pi / 256)² inner r / (2 c) for a small corner on a
+// large cutter; standing still, exact), and the
 // points of its surface that meet a box face first. Pure geometry for the
 // material (mill_tilt.cpp): machine X, Y, Z in mm, the tool's axis `u` a
 // unit vector from the tip towards the spindle.
@@ -14,6 +16,8 @@
 namespace pupitre::workshop::tilt {
 
 inline constexpr double kInf = std::numeric_limits<double>::infinity();
+// The most balls a moving bull nose's corner is made of.
+inline constexpr int kRing = 256;
 
 // The line o + s e, e a unit vector.
 struct Line {
@@ -40,7 +44,8 @@ Span capsule(const P3& a, const P3& d, double r, const Line& l);
 // A cutter of `radius` with a `corner` radius, tip (the end's centre) going
 // from a to a + d along the axis u, with everything above its end: the
 // volume it sweeps, as the material counts a cut (the hull of the pieces:
-// the flat of the end, the cylinder above the corner and the corner's balls).
+// the flat of the end, the cylinder above the corner and the corner's balls;
+// a corner of 2 µm or less is a flat end's).
 Span swept_cutter(double radius, double corner, const P3& a, const P3& d, const P3& u,
                   const Line& l);
 // `part` of the cutter standing with its tip at `tip` (the holder ends

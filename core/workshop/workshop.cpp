@@ -176,8 +176,9 @@ void Workshop::path_of(const MoveEvent& e, std::vector<Axes>& out) const {
 // A C table turning or B tilting along the path: pieces short enough that
 // the tool's tip, seen from the part, is within 0.5 µm of their chords (at
 // its largest distance from the axis), and that the tool's axis turns by at
-// most 0.05° in one (a piece is cut with its middle's axis: within 2.2 µm
-// at the side of a Ø10 cutter).
+// most kAxisStep in one (a piece is cut with its middle's axis: within
+// 9 µm at the side of a Ø10 cutter; 3+2 work, B and C still while cutting,
+// is exact).
 void Workshop::turn_pieces(std::vector<Axes>& out) const {
     if (!mill_) return;
     const bool c_turns = m_.has(C) && out.front()[C] != out.back()[C];
@@ -198,8 +199,8 @@ void Workshop::turn_pieces(std::vector<Axes>& out) const {
     double lean = 0;
     if (m_.has(B))
         for (const Axes& p : out) lean = std::max(lean, std::fabs(std::sin(p[B] * geometry::kDeg)));
-    const double step_c = std::min(chord(rc), lean > 1e-9 ? 0.05 / lean : 360);
-    const double step_b = std::min(0.05, chord(rb));
+    const double step_c = std::min(chord(rc), lean > 1e-9 ? kAxisStep / lean : 360);
+    const double step_b = std::min(kAxisStep, chord(rb));
     std::vector<Axes> fine{out.front()};
     for (size_t i = 0; i + 1 < out.size(); ++i) {
         double turns = 1;

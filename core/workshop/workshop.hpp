@@ -39,6 +39,10 @@ struct Outcome {
 inline constexpr double kTouchDepth = 1e-4;
 inline constexpr double kNear = 1e-3;
 
+// A move that turns B, or C with the tool tilted, goes in pieces in which the
+// tool's axis turns by at most this (degrees).
+inline constexpr double kAxisStep = 0.2;
+
 // A contact deeper than this is a crash; a tool that only touches (a finishing
 // pass along a cut face) is not (mm, about twice the chord error).
 inline constexpr double kCrashDepth = 2e-3;

@@ -7,6 +7,8 @@
 // A text that reads as an exercise (pupitre-exercise(5)) is drawn, its
 // targets worked out, graded with nothing entered and reported.
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -37,12 +39,16 @@ MoveEvent move(const Axes& from, double dx, double dy, double dz, int g) {
 // The block under mill5's head (the setup's head.pivot): the first tool
 // swung to B30 above it, jogged down, a pass, a C turn, the instruments and
 // the part's text read back (a tilted cutter's strokes).
-int mill_tilted(const Setup& s) {
+int mill_tilted(const Setup& given) {
     static MachineProfile five;
     static bool init = builtin_machine("mill5", five);
     (void)init;
+    // A tilted cutter's contacts read every column under it: cells coarse
+    // enough for at most 250,000 of them.
+    Setup s = given;
+    MillSetup& m = s.mill;
+    m.cell = std::max(m.cell, std::sqrt(m.length * m.width / 2.5e5));
     if (s.tools.empty()) return 0;
-    const MillSetup& m = s.mill;
     Workshop w(five, s, nullptr);
     SpindleEvent on;
     on.dir = 3;
@@ -62,7 +68,7 @@ int mill_tilted(const Setup& s) {
     at = o.touched ? o.stop : at;
     (void)w.apply(move(at, m.length / 4, m.width / 3, -2, 1));
     MoveEvent turn = move(at, 0, 0, 0, 1);
-    turn.to_mach[C] = 20;
+    turn.to_mach[C] = 5;
     (void)w.jog(turn, true);
     w.clear_crash();
     Reading r;

@@ -213,9 +213,9 @@ TEST(MillRotary, AJogOfBStopsAtTheFace) {
     const P3 tip = shop.tip3(o.stop);
     const double b = -o.stop[B] * std::acos(-1.0) / 180;
     EXPECT_NEAR(tip[0], -65 + 360.25 * std::sin(b), 1e-9);
-    // The rim at the face, within 2.2 µm (the piece is cut with its middle's axis).
+    // The rim at the face, within 9 µm (the piece is cut with its middle's axis).
     EXPECT_GT(b, 0);
-    EXPECT_NEAR(tip[0] + 5 * std::cos(b), -50, 0.003);
+    EXPECT_NEAR(tip[0] + 5 * std::cos(b), -50, 0.009);
 }
 
 // mill4's B table tilts the part about its axis (the setup's table.b.x

@@ -148,9 +148,10 @@ bool in_swept_bull(const P3& p, const P3& a, const P3& d, const P3& u, double r,
     return bull_gap(p, a, d, u, r, c) <= 0;
 }
 
-// The ring of balls stands for the torus within 0.5 µm: the line's ends
-// are within 0.5 µm inside the surface (along a line that meets it at a
-// slant, a few µm: 2 µm each way is checked by membership).
+// The ring of balls stands for the torus within 0.5 µm (or what 256 balls
+// give): the line's ends are that close inside the surface (along a line
+// that meets it at a slant, a few µm: 2 µm each way is checked by
+// membership). Standing still, the corner is exact.
 TEST(TiltGeometry, SweptBullNoseMatchesMembership) {
     std::mt19937 rng(16);
     std::uniform_real_distribution<double> c(-10, 10), tiltang(0, 1.6), rad(1, 6), frac(0.2, 0.8);
@@ -172,7 +173,9 @@ TEST(TiltGeometry, SweptBullNoseMatchesMembership) {
             if (!std::isfinite(end)) continue;
             const double gap = bull_gap(at(end), a, d, u, r, k);
             EXPECT_LE(gap, 1e-6) << n;
-            EXPECT_GE(gap, -5e-4) << n;
+            // 256 balls at most: (pi / 256)² inner r / (2 c) short at worst.
+            const double x = M_PI / tilt::kRing;
+            EXPECT_GE(gap, -std::max(5e-4, x * x * (r - k) * r / (2 * k)) - 1e-7) << n;
         }
         if (std::isfinite(sp.lo)) {
             EXPECT_FALSE(in_swept_bull(at(sp.lo - e), a, d, u, r, k)) << n;
@@ -186,6 +189,25 @@ TEST(TiltGeometry, SweptBullNoseMatchesMembership) {
         }
     }
     EXPECT_GT(crossed, 50);
+    // Standing still (d = 0): the ends are on the surface, to 1e-8.
+    int still = 0;
+    for (int n = 0; n < 300; ++n) {
+        const double b = tiltang(rng), az = c(rng);
+        const P3 u{std::sin(b) * std::cos(az), std::sin(b) * std::sin(az), std::cos(b)};
+        const P3 a{c(rng) / 2, c(rng) / 2, c(rng) / 2}, d{0, 0, 0};
+        const double r = rad(rng), k = r * frac(rng);
+        Line l;
+        l.o = {c(rng) / 2, c(rng) / 2, c(rng) / 2};
+        l.e = n % 2 ? P3{0, 0, 1} : unit({c(rng), c(rng), c(rng)});
+        const Span sp = tilt::swept_cutter(r, k, a, d, u, l);
+        if (sp.empty()) continue;
+        ++still;
+        for (double end : {sp.lo, sp.hi}) {
+            if (!std::isfinite(end)) continue;
+            EXPECT_NEAR(bull_gap(tilt::add(l.o, tilt::mul(l.e, end)), a, d, u, r, k), 0, 1e-8) << n;
+        }
+    }
+    EXPECT_GT(still, 50);
 }
 
 // The stock of these tests: 100 x 100 x 50 from the origin, cells of 0.1.
