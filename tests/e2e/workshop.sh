@@ -332,6 +332,36 @@ mill)
     wait_for 'ALARM 1200' 20
     wait_for 'crash: T2 rapid \(G0\) into the part' 5
     ;;
+mill5_chamfer)
+    # mill5's head at B45 (tests/workshop/chamfer.iso): T1's end cuts a 2 x 2
+    # chamfer on the block's +X top edge, read with the depth gauge 1 in from
+    # the face; GRAPH draws the path on the part, the B turns in pieces that
+    # count as one move each (7 moves), and a restart keeps the chamfer.
+    "$bin" import "$(dirname "$0")/../workshop/chamfer.iso" >/dev/null || fail "import"
+    start --machine mill5
+    pom
+    cmd ":setup mill5"
+    wait_for 'workshop: setup mill5' 5
+    cmd ":speed max"
+    cmd ":set PREF.Z=-280"
+    cmd ":set D1.L=110.25"
+    cmd ":set D1.R=5"
+    cmd ":load 11"
+    wait_for '%11 selected' 5
+    cmd ":mode auto"
+    keys F9
+    wait_for 'M02: end of program %11' 30
+    cmd ":measure depth X99 Y50"
+    wait_for 'depth gauge: depth X99 Y50 = 1.00 mm' 5
+    cmd ":page graph"
+    wait_for ' 7 moves ' 10
+    cmd ":quit!"
+    wait_for '^EXIT=0' 10
+    T kill-session -t e2e 2>/dev/null
+    start --machine mill5
+    cmd ":measure length X Y50 Z-1"
+    wait_for 'caliper: length X Y50 Z-1 = 99.00 mm' 5
+    ;;
 mill5)
     # The five-axis centre's C table (data/setups/mill5.setup: the C axis at
     # X0 Y0 through a 100 x 100 block, its top at Z -280; T1 Ø10, L 110.25):
