@@ -65,6 +65,12 @@ struct PartSpan {
     bool flute;
 };
 PartSpan span_of(const Cutter& c, Part part);
+// How far above the tip a tilted part is followed (mm): the holder for
+// 150 mm above its face (nothing in the workshop stands higher above the
+// block), the flute and the shank to their ends.
+inline double followed(const Cutter& c, Part part) {
+    return span_of(c, part).base + 150;
+}
 
 class MillWorld {
   public:

@@ -32,10 +32,6 @@ double dist(const P3& a, const P3& b) {
     return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
 }
 
-// The holder of a tilted cutter is followed this far above its face (mm):
-// nothing in the workshop stands higher above the block.
-constexpr double kHolderLength = 150;
-
 bool overlap(const Box3& p, const Box3& q) {
     for (int k = 0; k < 3; ++k)
         if (p.hi[k] < q.lo[k] || p.lo[k] > q.hi[k]) return false;
@@ -46,7 +42,7 @@ bool overlap(const Box3& p, const Box3& q) {
 bool may_meet(const Cutter& c, Part part, const P3& a, const P3& b, const Box3& box,
               const P3& u = kUp) {
     if (leans(u)) {
-        const double top = span_of(c, part).base + kHolderLength;
+        const double top = followed(c, part);
         Box3 s = tilt::part_box(c, part, a, u, top);
         const Box3 t = tilt::part_box(c, part, b, u, top);
         for (int k = 0; k < 3; ++k)
@@ -301,7 +297,7 @@ Workshop::Contact Workshop::mill_first(const Cutter& c, const P3& a, const P3& b
     const double top = mill_->stock().hi[2] + depth;
     for (Part p : kParts) {
         const double d = p == Part::flute && flute_depth >= 0 ? flute_depth : depth;
-        const double reach = span_of(c, p).base + kHolderLength;
+        const double reach = followed(c, p);
         const double low = lean ? std::min(tilt::part_box(c, p, a, u, reach).lo[2],
                                            tilt::part_box(c, p, b, u, reach).lo[2])
                                 : std::min(a[2], b[2]) + span_of(c, p).base;

@@ -22,8 +22,6 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 // Shorter than this (mm), what a cut leaves of a column is rounding.
 constexpr double kSliver = 1e-9;
-// The holder is followed this far above its face (mm) for the stock's faces.
-constexpr double kHolderLength = 150;
 
 P3 lerp(const P3& a, const P3& b, double f) {
     return {a[0] + f * (b[0] - a[0]), a[1] + f * (b[1] - a[1]), a[2] + f * (b[2] - a[2])};
@@ -235,7 +233,7 @@ const std::vector<P3>& MillWorld::surface_of(const Cutter& c, Part part, const P
             return s.points;
     Surface& s = surfaces_[next_surface_++ % surfaces_.size()];
     s.c = c, s.part = part, s.u = u;
-    s.points = tilt::surface(c, part, u, span_of(c, part).base + kHolderLength);
+    s.points = tilt::surface(c, part, u, followed(c, part));
     return s.points;
 }
 

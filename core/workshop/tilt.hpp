@@ -48,8 +48,8 @@ Span capsule(const P3& a, const P3& d, double r, const Line& l);
 // a corner of 2 µm or less is a flat end's).
 Span swept_cutter(double radius, double corner, const P3& a, const P3& d, const P3& u,
                   const Line& l);
-// `part` of the cutter standing with its tip at `tip` (the holder ends
-// `top` mm above the tip, whatever its own length).
+// `part` of the cutter standing with its tip at `tip` (the holder without
+// end).
 Span part_span(const Cutter& c, Part part, const P3& tip, const P3& u, const Line& l);
 // How far a vertical line through (x, y) is inside the part's radius from
 // its axis (negative: outside).
