@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <random>
+#include <string>
 
 #include "core/workshop/mill_part.hpp"
 #include "core/workshop/narrow.hpp"
@@ -43,6 +44,39 @@ P3 unit(P3 v) {
     return tilt::mul(v, 1 / std::sqrt(tilt::dot(v, v)));
 }
 
+// A line's interval through a flat end's sweep against the membership
+// test: when empty, nothing of the line within `reach` of its origin is in
+// the sweep; else just outside each finite end is out and just inside in
+// (an end without end: 1 mm along). Whether the line crossed it.
+bool check_flat(const Span& sp, const P3& a, const P3& d, const P3& u, double r, const Line& l,
+                double reach, const std::string& what) {
+    auto in = [&](double s) {
+        return in_swept_flat(tilt::add(l.o, tilt::mul(l.e, s)), a, d, u, r);
+    };
+    if (sp.empty()) {
+        for (double s = -reach; s <= reach; s += 0.02) {
+            if (!in(s)) continue;
+            ADD_FAILURE() << what << ": in the sweep at s " << s << ", the line missing it";
+            break;
+        }
+        return false;
+    }
+    constexpr double e = 1e-6;
+    if (std::isfinite(sp.lo)) {
+        EXPECT_FALSE(in(sp.lo - e)) << what;
+    }
+    if (std::isfinite(sp.hi)) {
+        EXPECT_FALSE(in(sp.hi + e)) << what;
+    }
+    const double lo = std::isfinite(sp.lo) ? sp.lo : sp.hi - 1;
+    const double hi = std::isfinite(sp.hi) ? sp.hi : sp.lo + 1;
+    if (hi - lo > 4 * e) {
+        EXPECT_TRUE(in(lo + e)) << what;
+        EXPECT_TRUE(in(hi - e)) << what;
+    }
+    return true;
+}
+
 TEST(TiltGeometry, SweptFlatMatchesMembership) {
     std::mt19937 rng(15);
     std::uniform_real_distribution<double> c(-10, 10), tiltang(0, 1.6), rad(0.5, 6);
@@ -55,28 +89,8 @@ TEST(TiltGeometry, SweptFlatMatchesMembership) {
         Line l;
         l.o = {c(rng), c(rng), c(rng)};
         l.e = n % 3 == 0 ? P3{0, 0, 1} : unit({c(rng), c(rng), c(rng)});
-        const Span sp = tilt::swept_flat(a, d, u, r, l);
-        auto at = [&](double s) { return tilt::add(l.o, tilt::mul(l.e, s)); };
-        if (sp.empty()) {
-            // Nothing of the line near the cutter is in it.
-            for (double s = -60; s <= 60; s += 0.01)
-                ASSERT_FALSE(in_swept_flat(at(s), a, d, u, r)) << n << " s " << s;
-            continue;
-        }
-        ++crossed;
-        constexpr double e = 1e-6;
-        if (std::isfinite(sp.lo)) {
-            EXPECT_FALSE(in_swept_flat(at(sp.lo - e), a, d, u, r)) << n;
-            if (sp.hi - sp.lo > 4 * e) {
-                EXPECT_TRUE(in_swept_flat(at(sp.lo + e), a, d, u, r)) << n;
-            }
-        }
-        if (std::isfinite(sp.hi)) {
-            EXPECT_FALSE(in_swept_flat(at(sp.hi + e), a, d, u, r)) << n;
-            if (sp.hi - sp.lo > 4 * e) {
-                EXPECT_TRUE(in_swept_flat(at(sp.hi - e), a, d, u, r)) << n;
-            }
-        }
+        crossed += check_flat(tilt::swept_flat(a, d, u, r, l), a, d, u, r, l, 60,
+                              "case " + std::to_string(n));
     }
     EXPECT_GT(crossed, 500);
 }
@@ -103,28 +117,9 @@ TEST(TiltGeometry, SweptFlatOnTheAxes) {
                         l.o = {c(rng), c(rng), c(rng)};
                         l.e = {0, 0, 0};
                         l.e[size_t(axis)] = 1;
-                        const Span sp = tilt::swept_flat(a, d, u, r, l);
-                        auto at = [&](double s) { return tilt::add(l.o, tilt::mul(l.e, s)); };
-                        if (sp.empty()) {
-                            for (double s = -40; s <= 40; s += 0.02)
-                                ASSERT_FALSE(in_swept_flat(at(s), a, d, u, r)) << b << ' ' << s;
-                            continue;
-                        }
-                        ++crossed;
-                        constexpr double e = 1e-6;
-                        if (std::isfinite(sp.lo)) {
-                            EXPECT_FALSE(in_swept_flat(at(sp.lo - e), a, d, u, r)) << b << ' ' << n;
-                        }
-                        if (std::isfinite(sp.hi)) {
-                            EXPECT_FALSE(in_swept_flat(at(sp.hi + e), a, d, u, r)) << b << ' ' << n;
-                        }
-                        // A line along the axis goes in it without end.
-                        const double lo = std::isfinite(sp.lo) ? sp.lo : sp.hi - 1;
-                        const double hi = std::isfinite(sp.hi) ? sp.hi : sp.lo + 1;
-                        if (hi - lo > 4 * e) {
-                            EXPECT_TRUE(in_swept_flat(at(lo + e), a, d, u, r)) << b << ' ' << n;
-                            EXPECT_TRUE(in_swept_flat(at(hi - e), a, d, u, r)) << b << ' ' << n;
-                        }
+                        crossed +=
+                            check_flat(tilt::swept_flat(a, d, u, r, l), a, d, u, r, l, 40,
+                                       "tilt " + std::to_string(b) + " case " + std::to_string(n));
                     }
     EXPECT_GT(crossed, 1000);
 }
