@@ -91,6 +91,33 @@ TEST(Toolpath, TravelFlagsMovesBeyondTheProfile) {
     EXPECT_NE(p[1].flags & pathflag::error, 0);  // the failing block's moves
 }
 
+// A move drawn on the part in pieces (a C turn, Workshop::on_part) is one
+// move: counted once among the moves, beyond travel and outside the frame.
+TEST(Toolpath, APieceOfAMoveIsNotAMove) {
+    MachineProfile m;
+    builtin_machine("mill", m);
+    Toolpath p(m);
+    MoveEvent e;
+    e.g = 0;
+    for (int k = 1; k <= 3; ++k) {  // one rapid in three pieces, all beyond 700
+        e.piece = k > 1;
+        e.to_prog[X] = e.to_mach[X] = 700 + 10 * k;
+        p.add(e);
+    }
+    e.piece = false;
+    e.to_prog[X] = e.to_mach[X] = 760;  // a move of its own
+    p.add(e);
+    EXPECT_EQ(p.size(), 4u);
+    EXPECT_EQ(p.moves_made(), 2u);
+    EXPECT_EQ(p.moves_made(3), 1u);
+    EXPECT_EQ(p.count(PathKind::rapid), 2u);
+    EXPECT_EQ(p.travel_moves(), 2u);
+    PathFit f;
+    f.x0 = -1, f.x1 = 1, f.y0 = -1, f.y1 = 1;
+    count_outside(p, PathPlane::xy, p.size(), f);
+    EXPECT_EQ(f.outside, 2u);
+}
+
 TEST(Toolpath, LineTypesApplyToLaterMoves) {
     MachineProfile m;
     builtin_machine("mill", m);

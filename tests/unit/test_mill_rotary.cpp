@@ -218,6 +218,29 @@ TEST(MillRotary, AJogOfBStopsAtTheFace) {
     EXPECT_NEAR(tip[0] + 5 * std::cos(b), -50, 0.009);
 }
 
+// A C turn with the tool tilted by B turns its axis by C sin B. With the
+// tip on the C axis (B30: 360.25 sin 30° = 180.125 from the gauge line) the
+// tip does not move, and the pieces are those of the axis alone: 0.2° of it,
+// 0.4° of C, 25 for a turn of 10°.
+TEST(MillRotary, ATiltedCTurnGoesInPiecesOfTheAxis) {
+    Mill5 five;
+    Workshop& shop = *five.shop;
+    MoveEvent e;
+    e.g = 1;
+    e.from_mach = at(0.5 * 360.25, 0, -100, 30);
+    e.to_mach = at(0.5 * 360.25, 0, -100, 30, 10);
+    e.to_prog = e.to_mach;
+    EXPECT_NEAR(shop.tip3(e.from_mach)[0], 0, 1e-9);
+    std::vector<MoveEvent> pieces;
+    ASSERT_TRUE(shop.on_part(e, pieces));
+    EXPECT_EQ(pieces.size(), 25u);
+    for (const MoveEvent& p : pieces) {
+        const P3 u = shop.axis3(p.from_mach), v = shop.axis3(p.to_mach);
+        const double turn = std::acos(std::min(1.0, u[0] * v[0] + u[1] * v[1] + u[2] * v[2]));
+        EXPECT_LE(turn * 180 / std::acos(-1.0), kAxisStep + 1e-9);
+    }
+}
+
 // mill4's B table tilts the part about its axis (the setup's table.b.x
 // and .b.z): seen from the part the vertical tool leans by B the other way
 // round (Rot_Y(B) of forward4), and its tip turns about that axis.
