@@ -132,8 +132,10 @@ bool Interpreter::CazDecoder::axis_word(const Word& w) {
     double v = 0;
     if (!number(w, *address_of(w.addr), v)) return false;
     if (axis == X && p.g[96]) {
+        // Signed: the rear turret works at negative x (003:1110-1119, "Signe
+        // de x"), and the speed follows |x of G96 + the move| from there.
         p.spindle.has_x = true;
-        p.spindle.x = std::fabs(v) * caz::kUm;
+        p.spindle.x = v * caz::kUm;
         return true;
     }
     p.to.axis.set(size_t(axis));

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 #include "core/interp/caz.hpp"
 #include "core/parse/codes.hpp"
@@ -349,6 +350,26 @@ TEST(Cazeneuve, G25LimitsTheConstantSurfaceSpeed) {
     EXPECT_NEAR(running_rpm(only), 450, 1e-9);
     EXPECT_EQ(caz("N10 G25\nN20 M2\n").error(), caz::kFunction);
     EXPECT_EQ(caz("N10 G96 G25 S1500 X5000\nN20 M2\n").error(), caz::kFunction);
+}
+
+// The VCC on the rear turret: x is signed (003:1110-1119), so the speed is
+// 1000 V / (pi 2 |x of G96 + the move|), the front turret's mirror: the
+// thesis's narrow-groove program plunges so (issue 39 item 4).
+TEST(Cazeneuve, ConstantSurfaceSpeedOnTheRearTurret) {
+    for (const char* sign : {"", "-"}) {
+        const std::string s(sign);
+        Prog p = caz("N10 M4 S450\nN20 T101\nN30 G00 X" + s + "52000 Z-43000\nN40 G25 S1500\n" +
+                     "N50 G96 S120 X" + s + "52000\nN60 G1 G95 X" + s + "40000 F50\nN70 G1 X" + s +
+                     "20000\nN80 M2\n");
+        ASSERT_EQ(p.error(), 0) << sign;
+        std::vector<double> rpm;
+        for (const SpindleEvent& e : p.cap.spindles)
+            if (e.dir == 3 || e.dir == 4) rpm.push_back(e.rpm);
+        ASSERT_GE(rpm.size(), 2u) << sign;
+        // 120 m/min on r40 and r20: 477.5 and 954.9 rev/min, on either side.
+        EXPECT_NEAR(rpm[rpm.size() - 2], 120000 / (std::numbers::pi * 80), 0.05) << sign;
+        EXPECT_NEAR(rpm.back(), 120000 / (std::numbers::pi * 40), 0.05) << sign;
+    }
 }
 
 // G95 has a maximum of its own, 9.2 m/min, where G94 stops at 5.1 (003:890-891).
