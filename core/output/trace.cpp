@@ -80,7 +80,7 @@ void TraceWriter::move(const MoveEvent& e) {
     buf_ += ",\"g\":";
     buf_ += std::to_string(e.g);
     if (e.g52) buf_ += ",\"g52\":true";
-    axes("to", e.to_prog, e.x_diameter);
+    axes("to", e.to_prog, x_diameter());
     if (e.g == 2 || e.g == 3) {
         buf_ += ",\"center\":{";
         int a0 = e.plane_a0, a1 = e.plane_a1;
@@ -92,15 +92,15 @@ void TraceWriter::move(const MoveEvent& e) {
         buf_ += '"';
         buf_ += kAxisNames[size_t(a0)];
         buf_ += "\":";
-        append_fixed4(buf_, (a0 == X && e.x_diameter) ? 2 * c0 : c0);
+        append_fixed4(buf_, (a0 == X && x_diameter()) ? 2 * c0 : c0);
         buf_ += ",\"";
         buf_ += kAxisNames[size_t(a1)];
         buf_ += "\":";
-        append_fixed4(buf_, (a1 == X && e.x_diameter) ? 2 * c1 : c1);
+        append_fixed4(buf_, (a1 == X && x_diameter()) ? 2 * c1 : c1);
         buf_ += "},\"sweep\":";
         append_fixed4(buf_, e.sweep);
     }
-    axes("om", e.to_mach, e.x_diameter);
+    axes("om", e.to_mach, x_diameter());
     buf_ += ",\"feed\":";
     append_fixed4(buf_, e.feed);
     buf_ += ",\"rpm\":";

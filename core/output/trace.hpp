@@ -25,6 +25,9 @@ class TraceWriter final : public MachineSink {
   private:
     void head(const char* ev, const Loc& l);
     void axes(const char* key, const Axes& v, bool x_diam);
+    // A diameter lathe's X is written as a diameter in every event, E11005=0
+    // (X programmed as a radius) included: one unit for the whole trace.
+    bool x_diameter() const { return m_.lathe && m_.x_diameter; }
     std::FILE* out_;
     const MachineProfile& m_;
     std::string buf_;
