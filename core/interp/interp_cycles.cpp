@@ -394,6 +394,13 @@ bool Interpreter::cycle_block(const Plan& p) {
     if (modal_.radcomp != 40) return fail(140, tr("machining cycle under radius compensation"));
     const int code = p.g[31] ? 31 : modal_.cycle;
     if (!cycle_words(p, code)) return false;
+    // Warning 1112: R positions along a circle between the holes under G2/G3
+    // (seed 000's %333), and means nothing under G0/G1: a cycle's retract
+    // plane is ER (pupitre-iso(5)), as in a G0/G1 block.
+    if (p.to.has_r && (modal_.motion == 0 || modal_.motion == 1))
+        warn(err::wIdleWord, strf(tr("word R has no effect in a G%d block under G0/G1: the retract "
+                                     "plane of a cycle is ER"),
+                                  code));
     const int ax = cycle_axis();
     std::bitset<kAxes> plane = p.to.axis;
     plane.reset(size_t(ax));
