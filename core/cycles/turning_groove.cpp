@@ -285,9 +285,19 @@ Error g66(V2 tool, const G66Args& a, std::vector<Move>& out) {
     double width = Bt.x() - A.x();
     if (width * (B.x() - A.x()) < 0) return {863, tr("the groove is narrower than the tool")};
     double slope = std::tan(a.ea * kDeg);
-    auto bottom = [&](double x) { return Bt.y() + (x - Bt.x()) * slope; };
+    // The blade is flat between its two corners: the first's point is the
+    // one programmed, the second's lies -gauge_delta from it. A plunge stops
+    // where the first corner meets the bottom line through B (issue 39 item
+    // 3: on a slope the higher end of the bottom under the blade, not the
+    // second corner's alone).
+    const V2 delta = fr.to(a.gauge_delta);
+    auto line_at = [&](double x) { return B.y() + (x - B.x()) * slope; };
+    int dir = line_at(A.x()) < A.y() ? -1 : 1;  // plunge direction along y
+    auto bottom = [&](double x) {
+        const double first = line_at(x), second = line_at(x - delta.x()) + delta.y();
+        return dir < 0 ? std::max(first, second) : std::min(first, second);
+    };
     int n = int(std::ceil(std::fabs(width) / step - 1e-9));
-    int dir = bottom(A.x()) < A.y() ? -1 : 1;  // plunge direction along y
     for (int i = 0; i <= n; ++i) {
         double x = n ? A.x() + width * i / n : A.x();
         double depth = bottom(x) - A.y();

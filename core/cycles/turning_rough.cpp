@@ -283,6 +283,14 @@ std::vector<std::vector<Elem>> reached_stretches(const Material& m, const std::v
     return out;
 }
 
+// The segment p-q runs along the finished profile (its middle lies on it).
+bool along_F(const Material& m, const V2& p, const V2& q) {
+    const V2 mid = (p + q) / 2;
+    for (const Elem& e : m.F)
+        if ((closest(e, mid) - mid).norm() <= kUm) return true;
+    return false;
+}
+
 // [DECISION] (issue 19) G64 ends with a pass along the profile plus allowance
 // over what the passes reached, in their direction: it takes off the steps
 // the levels leave on cones and arcs (the seeds give no toolpath; seed
@@ -329,17 +337,34 @@ void contour_pass(Emit& em, const Material& m, int d, double c, double y_safe) {
                 em.go(1, e.b);
         }
         // At the end of the profile, on along the level to where the material
-        // ends: the allowance along the passes leaves a strip there (%555 Z0).
-        if ((s.back().b - fp.back().b).norm() <= kUm && (end.x() - em.cur.x()) * d > kUm)
-            em.go(1, V2(end.x(), em.cur.y()));
+        // ends: the allowance along the passes leaves a strip there (%555 Z0);
+        // not where the way out from there would run along the finished
+        // profile (issue 39 item 2: a bore's wall alone, %7300's H8 bore,
+        // was climbed at feed and cut to size).
+        const V2 ext(end.x(), em.cur.y());
+        if ((s.back().b - fp.back().b).norm() <= kUm && (end.x() - em.cur.x()) * d > kUm &&
+            !along_F(m, ext, V2(ext.x(), above(ext))))
+            em.go(1, ext);
         em.go(1, V2(em.cur.x(), above(em.cur)));
     }
+}
+
+// The level the tool travels at to the passes, between the stretches of the
+// last pass and back: its start's, or above the material when it started
+// lower, as in front of a bore's face outside it (issue 39 item 1: a rapid
+// at the start's level went through the bore's wall). It goes to it and back
+// square to the passes where it stands.
+double travel_level(const Material& m, const V2& s, double c) {
+    double y_top = -kInf;
+    for (const Elem& e : m.M) y_top = std::max(y_top, max_y(e));
+    return s.y() >= y_top - kUm ? s.y() : y_top + c;
 }
 
 // One pass per level, over the first interval met from the stock, up to where
 // the profile hides the material (§6.3 step 4); then back to the start point.
 void rough_passes(Emit& em, const Material& m, const std::vector<double>& ys, int d, double c) {
-    V2 s = em.cur;
+    const V2 s = em.cur;
+    const double y_travel = travel_level(m, s, c);
     bool first = true;
     for (double y : ys) {
         auto ivs = zone::m_intervals(m, y, d);
@@ -351,16 +376,17 @@ void rough_passes(Emit& em, const Material& m, const std::vector<double>& ys, in
             if (runs.empty() || std::fabs(runs[0].first - xs) > kTol) break;
             double end = zone::first_hidden(m, y, xs, runs[0].second, d);
             if (std::fabs(end - xs) <= kUm) break;
-            pass(em, y, xs, end, d, c, first, s.y());
+            if (first && y_travel > s.y() + kUm) em.go(0, V2(s.x(), y_travel));
+            pass(em, y, xs, end, d, c, first, y_travel);
             first = false;
             break;  // one pass per level: the first interval met from the stock
         }
     }
-    if (!first) {
-        contour_pass(em, m, d, c, s.y());
-        em.go(0, V2(em.cur.x(), s.y()));
-        em.go(0, s);
-    }
+    if (first) return;
+    contour_pass(em, m, d, c, y_travel);
+    em.go(0, V2(em.cur.x(), y_travel));
+    if (y_travel > s.y() + kUm) em.go(0, V2(s.x(), y_travel));
+    em.go(0, s);
 }
 }  // namespace
 

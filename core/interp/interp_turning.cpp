@@ -391,6 +391,22 @@ bool Interpreter::turning_g65_g63(const Plan& p) {
     return true;
 }
 
+namespace {
+// Warning 1117 too: the second corrector's edge lies on the start side of the
+// first's, so the blade reaches back over A at the first plunge and the last
+// one runs the width past B (issue 39 item 3). Empty when it does not.
+std::string g66_swapped(const turning::G66Args& a, const comp::V2& tool) {
+    if (!a.has_x || !a.has_z || (!a.has_p && !a.has_r)) return {};
+    const double edge =
+        a.has_p ? -a.gauge_delta.y() : -a.gauge_delta.x();           // D's edge from the first
+    const double ahead = a.has_p ? a.x - tool.y() : a.z - tool.x();  // B from A
+    if (std::fabs(edge) <= 1e-6 || edge * ahead >= 0) return {};
+    return strf(tr("G66: the edge of D%d lies on the start side of the edge of D%d: the groove is "
+                   "cut %.3f mm beyond B and before A; swap the correctors"),
+                a.d, a.d_first, std::fabs(edge));
+}
+}  // namespace
+
 // G66 cuts a groove with the tool's two edges, the active corrector and D:
 // the difference of their gauges is the tool's width.
 bool Interpreter::turning_g66(const Plan& p) {
@@ -419,6 +435,7 @@ bool Interpreter::turning_g66(const Plan& p) {
                   a.d_first, a.d, a.d));
     std::vector<turning::Move> moves;
     const comp::V2 tool(prog_[Z], prog_[X]);
+    if (std::string why = g66_swapped(a, tool); !why.empty()) warn(err::wNoToolWidth, why);
     if (Error e = turning::g66(tool, a, moves)) return fail(e);
     if (opt_.on_g66) opt_.on_g66(tool, a, moves);
     if (!turning_emit_ef(p, moves)) return false;

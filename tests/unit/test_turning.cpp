@@ -811,6 +811,10 @@ TEST(G64, Cabestan) {
         874);
 }
 
+namespace {
+void check_walls(const Oracle& o, V2 tool, const std::vector<Move>& mv, const std::string& what);
+}  // namespace
+
 // Random stepped shafts (shoulders, cylinders and cones), roughed along Z and
 // along X with random allowances and depths.
 TEST(G64, RandomShaftsProperties) {
@@ -851,6 +855,7 @@ TEST(G64, RandomShaftsProperties) {
         double low = 1e300;
         for (V2 p : pts) low = std::min(low, (along_x ? p.x() + a.k : p.y() + a.i));
         check_cover(o, tool, mv, along_x, 1, step, low, name.c_str());
+        check_walls(o, tool, mv, name);
         // A stepped profile with paraxial allowances: nothing nearer than the
         // smaller allowance (shoulders get K, cylinders I, cones more).
         for (const Seg& s : feeds(tool, mv))
@@ -902,10 +907,15 @@ TEST(G64, RandomGroovesBoresAndSigns) {
         double top = pts[0].y() + 1 + 4 * u(rng);
         std::vector<V2> stock{V2(0, top), V2(z + 2, top), V2(z + 2, pts.back().y())};
         V2 tool(z + 30, top + 20);
-        if (bore) {  // the mirror r -> 50 - r: a stepped bore opening towards +Z
+        const int start = (n / 8) % 3;  // a bore's start: inside, in front outside it, beyond
+        if (bore) {                     // the mirror r -> 50 - r: a stepped bore opening towards +Z
             for (V2& q : pts) q.y() = 50 - q.y();
             for (V2& q : stock) q.y() = 50 - q.y();
-            tool = V2(z + 30, 2);
+            // Issue 39 item 1: started in front of the face outside the bore,
+            // a G64 rapided through the wall at the start's radius.
+            double mouth = 0;
+            for (const V2& q : pts) mouth = std::max(mouth, q.y());
+            tool = V2(z + 30, start == 0 ? 2 : start == 1 ? mouth - 2 * u(rng) : 70);
         }
         Profile f;
         for (size_t i = 0; i + 1 < pts.size(); ++i) f.elems.push_back(L(pts[i], pts[i + 1]));
@@ -916,7 +926,11 @@ TEST(G64, RandomGroovesBoresAndSigns) {
         double step = .8 + 2 * u(rng);
         std::vector<Move> mv;
         std::string name = "profile " + std::to_string(n) + (bore ? " bore" : " outside") +
-                           (groove ? " groove" : "") + (along_x ? " R" : " P");
+                           (groove ? " groove" : "") + (along_x ? " R" : " P") +
+                           (bore ? (start == 0   ? " from inside"
+                                    : start == 1 ? " from the face"
+                                                 : " from beyond")
+                                 : "");
         ASSERT_TRUE(ok(g64_called(f, stock, tool, a, along_x, step, mv))) << name;
         ASSERT_FALSE(feeds(tool, mv).empty()) << name;
         EXPECT_EQ(a.allowance_inside, variant == 3) << name;
@@ -924,7 +938,13 @@ TEST(G64, RandomGroovesBoresAndSigns) {
         inside += a.allowance_inside;
         Oracle o(a.allowance_inside ? shifted(f, t) : f, stock, a.allowance_inside ? V2(0, 0) : t);
         check_clear(o, tool, mv, std::min(1.0, step / 2), name.c_str());
+        std::vector<V2> part = pts;
+        part.push_back(V2(pts.back().x(), bore ? 60 : -1));
+        part.push_back(V2(pts.front().x(), bore ? 60 : -1));
         if (variant != 3) {
+            // No rapid through the part itself, beyond the allowance zone.
+            check_out_of_part(o, part, tool, mv, name);
+            if (!groove) check_walls(o, tool, mv, name);
             // The same profile with no allowance: the allowance zone is then
             // empty, so the part itself is the oracle (closed far inside it).
             G64Args bare = a;
@@ -932,9 +952,6 @@ TEST(G64, RandomGroovesBoresAndSigns) {
             std::vector<Move> mz;
             ASSERT_TRUE(ok(g64_called(f, stock, tool, bare, along_x, step, mz)))
                 << name << " with no allowance: ";
-            std::vector<V2> part = pts;
-            part.push_back(V2(pts.back().x(), bore ? 60 : -1));
-            part.push_back(V2(pts.front().x(), bore ? 60 : -1));
             check_out_of_part(Oracle(f, stock, V2(0, 0)), part, tool, mz,
                               name + " with no allowance");
         }
@@ -947,6 +964,76 @@ TEST(G64, RandomGroovesBoresAndSigns) {
     }
     EXPECT_EQ(inside, 12);
     EXPECT_EQ(tried, 12);
+}
+
+// Issue 39 items 1 and 2: profiles that are one wall (a bore's or a shaft's
+// cylinder alone, %7300's H8 bore), roughed along X and along Z, started
+// inside the bore, in front of the face outside it and beyond the part: the
+// way out goes away from the wall (it climbed the finished wall at feed),
+// no rapid enters the part, and the wall keeps its allowance.
+TEST(G64, OneWallProfiles) {
+    int runs = 0;
+    for (bool bore : {true, false})
+        for (bool along_x : {true, false})
+            for (int start = 0; start < 3; ++start) {
+                // The wall at r 20 from Z1 to Z-20; the stock's other side at r 10
+                // (the drilled hole) or r 30 (the bar).
+                const double other = bore ? 10 : 30;
+                Profile f = poly_profile({V2(1, 20), V2(-20, 20)});
+                std::vector<V2> stock{V2(1, 20), V2(1, other), V2(-20, other), V2(-20, 20)};
+                const V2 tool = bore ? V2(5, start == 0   ? 9
+                                             : start == 1 ? 22
+                                                          : 40)
+                                     : V2(5, start == 0   ? 32
+                                             : start == 1 ? 18
+                                                          : 50);
+                if (!bore && start == 1) continue;  // outside, "in front below the bar" is the part
+                G64Args a;
+                a.i = bore ? -.3 : .3, a.k = 0;
+                (along_x ? a.has_r : a.has_p) = true;
+                (along_x ? a.r : a.p) = 2;
+                std::vector<Move> mv;
+                const std::string name = std::string(bore ? "bore" : "shaft") +
+                                         (along_x ? " R" : " P") + " start " +
+                                         std::to_string(start);
+                ASSERT_TRUE(ok(g64(f, stock, tool, a, mv))) << name;
+                ASSERT_FALSE(feeds(tool, mv).empty()) << name;
+                Oracle o(f, stock, V2(a.k, a.i));
+                check_clear(o, tool, mv, 1, name.c_str());
+                std::vector<V2> part{V2(1, 20), V2(-20, 20), V2(-20, bore ? 60 : 0),
+                                     V2(1, bore ? 60 : 0)};
+                check_out_of_part(o, part, tool, mv, name);
+                for (const Seg& s : feeds(tool, mv)) {
+                    for (int i = 0; i <= 20; ++i) {
+                        const V2 q = s.a + (s.b - s.a) * (i / 20.0);
+                        if (q.x() < 1 - 1e-9 && q.x() > -20 + 1e-9) {
+                            EXPECT_GE(std::fabs(q.y() - 20), .3 - 1e-6)
+                                << name << ": a feed on the wall at " << q.transpose();
+                        }
+                    }
+                }
+                EXPECT_TRUE(mv.back().to.isApprox(tool, 1e-12)) << name;
+                ++runs;
+            }
+    EXPECT_EQ(runs, 10);
+}
+
+// %7300 N250 (issue 39 item 2): G64 N220 N230 I-.5 R2 on the H8 bore's wall
+// alone, L3 = 47.5195 and L9 = 14.6675: the last pass ends on the wall plus
+// allowance and leaves it along Z at X46.5195, never on the Ø47.5195 wall.
+TEST(G64, Cabestan7300KeepsItsAllowance) {
+    const double l3 = 48 - .5 + .0195, l9 = 7.81 * 1.75 + 1;
+    Profile f = poly_profile({P(l3, 2), P(l3, -l9)});
+    std::vector<V2> stock{P(l3, 2), P(20, 2), P(20, -l9), P(l3, -l9)};
+    G64Args a;
+    a.i = -.5, a.has_r = true, a.r = 2;
+    std::vector<Move> mv;
+    const V2 tool = P(20, 5);
+    ASSERT_TRUE(ok(g64(f, stock, tool, a, mv)));
+    for (const Seg& s : segs(tool, mv)) {
+        EXPECT_LE(s.b.y(), l3 / 2 - .5 + 1e-9)
+            << "G" << s.g << " to X" << 2 * s.b.y() << " Z" << s.b.x();
+    }
 }
 
 // Every G64 of the handbook programs (../shared/programs), run by the
@@ -1242,6 +1329,35 @@ std::vector<V2> shifted_pts(std::vector<V2> v, V2 t) {
 // No move, feed or rapid, of a cycle with no stock (G65, G63) comes deeper
 // than 0.1 µm into the part (the polygon `part`) or into the
 // allowance zone of the oracle (swept band or normal allowance).
+// Every wall roughed down to its allowance (issue 39): each point of the
+// profile plus allowance that the stock covers and no groove hides is met by
+// a feed move within 1 µm, and no feed move comes nearer the finished profile
+// than a quarter of the smaller allowance (none cuts a wall to size: a cone
+// under a paraxial allowance keeps less than either of its components).
+void check_walls(const Oracle& o, V2 tool, const std::vector<Move>& mv, const std::string& what) {
+    const std::vector<Seg> fs = feeds(tool, mv);
+    int far = 0, near = 0;
+    const double least = std::min(std::fabs(o.t.x()), std::fabs(o.t.y()));
+    for (const Seg& s : fs)
+        for (int i = 0; i <= 20; ++i)
+            if (o.dist_f(s.a + (s.b - s.a) * (i / 20.0)) < least / 4 - 1e-6 && ++near <= 2)
+                ADD_FAILURE() << what << ": a feed nearer the profile than the allowance at "
+                              << (s.a + (s.b - s.a) * (i / 20.0)).transpose();
+    for (const Elem& e : o.fe) {
+        for (int k = 1; k < 20; ++k) {
+            const V2 q = e.a + (e.b - e.a) * (k / 20.0) + o.t;
+            bool corner = false;  // near a closing segment: the swept corner
+            for (auto [a, b] : o.closing) corner = corner || seg_point(q, a, b) < o.t.norm() + 1e-3;
+            if (corner || !o.in_M(q, 0)) continue;
+            double best = 1e300;
+            for (const Seg& s : fs) best = std::min(best, seg_point(q, s.a, s.b));
+            if (best > 1e-3 && ++far <= 2)
+                ADD_FAILURE() << what << ": the wall at Z" << q.x() << " r" << q.y() << " is left "
+                              << best << " above its allowance";
+        }
+    }
+    EXPECT_EQ(far + near, 0) << what;
+}
 int check_out_of_part(const Oracle& o, const std::vector<V2>& part, V2 tool,
                       const std::vector<Move>& mv, const std::string& what) {
     int bad = 0;
@@ -1867,7 +1983,8 @@ TEST(G66, EpStopsOverTheFirstPlunge) {
 // sloped up to 15° either way, EP up to twice the spacing of the plunges. The
 // groove is the rectangle from A's flank to B's, from the approach level to
 // the bottom line: no move of the tool's reference edge (the first
-// corrector's) leaves it below the approach level.
+// corrector's) leaves it below the approach level, and neither corner of the
+// flat blade goes below the sloped bottom under it.
 TEST(G66, GeneratedGroovesStayInTheGroove) {
     std::mt19937 rng(20261128);
     std::uniform_real_distribution<double> u(0, 1);
@@ -1909,7 +2026,11 @@ TEST(G66, GeneratedGroovesStayInTheGroove) {
         for (const Seg& sg : segs(Azr, mv))
             for (int i = 0; i <= 20; ++i) {
                 V2 q = frame(sg.a + (sg.b - sg.a) * (i / 20.0));
-                double bottom = -depth + (q.x() - (width - w)) * t;
+                // The blade is flat from its first edge (q.x) to its second
+                // (q.x + w): neither corner goes below the line under it
+                // (issue 39 item 3: the second corner's alone was checked).
+                double bottom =
+                    std::max(-depth + (q.x() - width) * t, -depth + (q.x() + w - width) * t);
                 bool below_top = q.y() < 0 - 1e-9;  // the land at y 0
                 if ((q.y() < bottom - 1e-6 ||
                      (below_top && (q.x() < -1e-6 || q.x() > width - w + 1e-6))) &&
@@ -1919,6 +2040,31 @@ TEST(G66, GeneratedGroovesStayInTheGroove) {
         failing += bad > 0;
     }
     EXPECT_EQ(failing, 0);
+}
+
+// Issue 39 item 3: G66 D2 X30 Z-30 EA5 R3 from X44 Z-20 with D2.Z=4 (a 4 mm
+// blade; the groove runs towards -Z, so D2's edge is 4 mm on: its gauge 4
+// longer). The bottom rises towards A: the blade stops where its first
+// corner meets it, 4 tan 5 = 0.35 mm above where the second corner would.
+TEST(G66, SlopeUnderTheWholeBlade) {
+    for (double ea : {5.0, 10.0}) {
+        G66Args a;
+        a.d_first = 1, a.d = 2, a.gauge_delta = V2(4, 0), a.has_x = a.has_z = true, a.x = 15,
+        a.z = -30, a.ea = ea, a.has_r = true, a.r = 3;
+        std::vector<Move> mv;
+        const V2 tool = P(44, -20);
+        ASSERT_TRUE(ok(g66(tool, a, mv)));
+        const double t = std::tan(ea * kPi / 180);
+        for (const Seg& s : feeds(tool, mv)) {
+            const double z1 = s.b.x(), z2 = z1 - 4;  // the first and second corners
+            const double under = std::max(15 + (z1 + 30) * t, 15 + (z2 + 30) * t);
+            EXPECT_NEAR(s.b.y(), under, 1e-9) << "EA" << ea << " Z" << z1;
+        }
+        // At Z-20 the first plunge stops 4 tan EA above the second corner's line.
+        const std::vector<Seg> f = feeds(tool, mv);
+        ASSERT_FALSE(f.empty());
+        EXPECT_NEAR(f[0].b.y() - (15 + (-24 + 30) * t), 4 * t, 1e-9);
+    }
 }
 
 TEST(G66, Errors) {
