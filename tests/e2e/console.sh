@@ -381,6 +381,27 @@ graph)
     [ -n "$a" ] && [ "$a" != "$b" ] || fail "the tool marker did not move ($a / $b)"
     [ "$before" -gt 3 ] || fail "too few braille rows ($before)"
     ;;
+cycle_time)
+    # Issue 38: one cycle time everywhere. The lathe demo takes 35.778 s
+    # with its tool change (the batch summary's 0:00:35): the M02 message,
+    # the OP page's run line and the GRAPH title say the same, and so do
+    # TEST's message and title. The GRAPH title left the tool change out
+    # (0:00:33).
+    W=100 start
+    pom
+    cmd ":load 300"
+    cmd ":speed max"
+    cmd ":mode auto"
+    keys F9
+    wait_for 'M02: end of program %300, 12 blocks, cycle time 0 min 35.8 s' 30
+    wait_for 'Run +12 blocks +cycle time 35.8 s'
+    keys M-g
+    wait_for 'GRAPH .* 7 moves +0:00:35'
+    cmd ":mode test"
+    keys F9
+    wait_for 'TEST %300: no error, 12 blocks, 0 warnings, cycle time 0 min 35.8 s' 20
+    wait_for 'GRAPH .* 7 moves +0:00:35'
+    ;;
 warnings)
     # Issue 19: a warning printed during a run is not lost with M02: the end
     # message counts it and the ALARM page lists it with its block.
