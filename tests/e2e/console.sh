@@ -24,6 +24,47 @@ start)
     keys Tab
     wait_for '^> :mode$'
     ;;
+gauge_pending)
+    # Issue 38: after T1 D1 M6 in IMD the gauge is chosen, not applied: OP
+    # and INFO show the position without it and say so, as PREF does; the
+    # note goes axis by axis as they move; in French too.
+    pending() {
+        start
+        cmd ":set D1.X=63.345"
+        cmd ":set D1.Z=38.237"
+        cmd ":mode pom"
+        keys F9
+        wait_for '^ POM .*(READY|PRÊT)' 20
+        cmd ":mode imd"
+        cmd "T1 D1 M6"
+        keys F9
+        wait_for "$1" 10
+    }
+    pending 'IMD done'
+    cmd ":page op"
+    wait_for 'Tool +T1 +D1$'
+    wait_for '^ {12}gauge on X Z not applied yet: at the next move or touch-off'
+    sgr_line 'gauge on X Z not applied' | grep -q $'\e\\[' || fail "the note is not coloured"
+    cmd ":page info"
+    wait_for '^ gauge +X +[0-9.-]+ +Z +[0-9.-]+ *$'
+    wait_for '^ {12}gauge on X Z not applied yet: at the next move or touch-off'
+    cmd "G0 Z100"
+    keys F9
+    wait_for 'IMD done' 10
+    wait_for '^ {12}gauge on X not applied yet'
+    cmd "G0 X200"
+    keys F9
+    wait_for 'IMD done' 10
+    cmd ":page op"
+    sleep 0.3
+    screen | grep -q 'not applied yet' && fail "the note stays after both axes moved"
+    cmd ":quit"
+    wait_for '^EXIT=0' 10
+    next_server
+    E2E_ENV="LANGUAGE= LANG=fr_FR.UTF-8" pending 'IMD terminé'
+    cmd ":page op"
+    wait_for 'jauge sur X Z non appliquée : au prochain mouvement ou tangentage'
+    ;;
 themes)
     start --theme mono --ascii
     wait_for '^- OP  program position'
