@@ -118,6 +118,24 @@ hidden)
     wait_for 'submitted: '
     for s in "${secrets[@]}"; do wait_for "${s//./\\.}"; done
     ;;
+instruments)
+    # Issue 38: the WORKSHOP page offers only the instruments the exercise
+    # allows (exam-2005-drawn: dia and tool; mill-pocket: no presetter).
+    start --db "$db" exercise exam-2005-drawn --student dave
+    wait_for 'exam-2005-drawn'
+    cmd ":page shop"
+    wait_for '^ +dia Z-20 +micrometer'
+    wait_for '^ +tool T1 X\|Z\|R +presetter'
+    screen | grep -Eq '^ +(bore|groove|length) ' && fail "a forbidden instrument is offered"
+    cmd ":quit"
+    wait_for '^EXIT=0' 10
+    next_server
+    start --db "$db" exercise mill-pocket --student dave
+    wait_for 'mill-pocket'
+    cmd ":page shop"
+    wait_for '^ +depth X60 Y30 +depth gauge'
+    screen | grep -Eq '^ +tool T1 L' && fail "the presetter is offered in mill-pocket"
+    ;;
 mill)
     # mill-pocket at the machine: the edge finder kicks on the block's -X and
     # -Y faces (PREF = OM + its radius), the probe's lamp on the top (PREF Z
