@@ -19,6 +19,9 @@ start)
     wait_for 'HELP  keys and commands'
     keys F6
     wait_for '%300'
+    # The two demos tell themselves apart on DIR by their titles (issue 38).
+    wait_for '^[* ] %300 .*LATHE DEMO: TURNING WITH G02 G03'
+    wait_for '^[* ] %301 .*MILL DEMO: G02 G03 IN THE G19 PLANE'
     # Tab completes a command on the readline input line.
     keys -l ":mo"
     keys Tab
