@@ -80,6 +80,11 @@ diameter)
     grep -q 'X taken as a diameter instead of a radius' "$work/report" || fail "report: $(cat "$work/report")"
     "$bin" --db "$db" class report --html "$work/class.html" > /dev/null || fail "html"
     grep -q '<td>bob</td>' "$work/class.html" || fail "html report"
+    # bob's 83 made 100 in the store (issue 38): TAMPERED, and it counts for
+    # nothing, neither the best nor the last nor the minutes.
+    sqlite3 "$db" "UPDATE attempts SET score = 100 WHERE student = 'bob'" || fail "sqlite3"
+    "$bin" --db "$db" class report > "$work/report" || fail "class report"
+    grep -Eq '^exam-2005 +bob +1 +- +- +- +0 +0 +TAMPERED$' "$work/report" || fail "report: $(cat "$work/report")"
     ;;
 hidden)
     # The drawn exam at the machine: presetter, gauge block, touch; every
