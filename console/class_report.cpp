@@ -36,12 +36,17 @@ std::vector<Row> rows_of(const std::vector<store::Attempt>& all, const std::stri
             continue;
         }
         ++r.attempts;
+        // An attempt edited in the store counts for nothing: neither its
+        // score nor its time, crashes or mistakes; the row says TAMPERED.
+        if (!key.empty() && sign_attempt(a, key) != a.signature) {
+            r.tampered = true;
+            continue;
+        }
         r.last = a.score;
         if (a.score > r.best || (a.score == r.best && a.seconds < r.best_seconds))
             r.best = a.score, r.best_seconds = a.seconds;
         r.crashes += a.crashes;
         r.scrapped += a.scrapped;
-        if (!key.empty() && sign_attempt(a, key) != a.signature) r.tampered = true;
         // Counted once an attempt: DEC1 forgotten on X and on Z is one
         // student's one mistake, not two.
         std::istringstream words(a.mistakes);

@@ -213,7 +213,8 @@ namespace {
 // The table as a PDF through Cairo (CLARIFICATIONS 16: "a PDF through Cairo
 // if it comes cheaply").
 int report_pdf(const std::string& path, const std::string& title,
-               const std::vector<store::Attempt>& attempts, const std::string& key) {
+               const std::vector<store::Attempt>& attempts, const std::string& key,
+               std::FILE* said) {
     std::istringstream text(
         console::class_report_text(attempts, console::ReportFormat::table, key, title));
     std::vector<std::string> lines;
@@ -231,16 +232,35 @@ int report_pdf(const std::string& path, const std::string& title,
             std::fprintf(stderr, tr("pupitre: cannot write %s\n"), path.c_str());
         return kCantCreate;
     }
-    std::printf(tr("the report written to %s\n"), path.c_str());
+    std::fprintf(said, tr("the report written to %s\n"), path.c_str());
+    return kOk;
+}
+
+// The report as one HTML file ("-": on the standard output).
+int report_html(const std::string& path, const std::string& title,
+                const std::vector<store::Attempt>& attempts, const std::string& key,
+                std::FILE* said) {
+    const std::string text =
+        console::class_report_text(attempts, console::ReportFormat::html, key, title);
+    if (path == "-") {
+        std::fputs(text.c_str(), stdout);
+        return kOk;
+    }
+    std::ofstream out(path, std::ios::binary);
+    if (!(out << text) || !out.flush()) {
+        std::fprintf(stderr, tr("pupitre: cannot write %s\n"), path.c_str());
+        return kCantCreate;
+    }
+    std::fprintf(said, tr("the report written to %s\n"), path.c_str());
     return kOk;
 }
 
 }  // namespace
 
-// class report [EXERCISE]: the table, --csv, --html FILE or --pdf FILE.
+// class report [EXERCISE]: the table, or each of --csv, --html FILE, --pdf FILE.
 int class_report(const ExerciseArgs& a) {
     if (a.words.empty() || a.words[0] != "report" || a.words.size() > 2) {
-        std::fputs(tr("pupitre: class report [EXERCISE] [--csv | --html FILE | --pdf FILE]\n"),
+        std::fputs(tr("pupitre: class report [EXERCISE] [--csv] [--html FILE] [--pdf FILE]\n"),
                    stderr);
         return kUsage;
     }
@@ -251,25 +271,30 @@ int class_report(const ExerciseArgs& a) {
     if (r.error) return report(r.error);
     std::string key;
     if (!console::class_key(false, key).empty()) key.clear();
-    const console::ReportFormat f = a.csv               ? console::ReportFormat::csv
-                                    : !a.output.empty() ? console::ReportFormat::html
-                                                        : console::ReportFormat::table;
     const std::string title =
         exercise.empty() ? std::string(tr("pupitre: the class's attempts"))
                          : strf(tr("pupitre: the class's attempts at %s"), exercise.c_str());
-    if (!a.pdf.empty()) return report_pdf(a.pdf, title, r.value, key);
-    const std::string text = console::class_report_text(r.value, f, key, title);
-    if (f != console::ReportFormat::html || a.output == "-") {
-        std::fputs(text.c_str(), stdout);
-        return kOk;
+    // Every output asked for is written (--csv --html F --pdf G: the three),
+    // none asked for, the table; what is written to a file is said on the
+    // standard error when the standard output carries a report.
+    if (a.csv && a.output == "-") {
+        std::fputs(tr("pupitre: --csv and --html - would both write to the standard output\n"),
+                   stderr);
+        return kUsage;
     }
-    std::ofstream out(a.output, std::ios::binary);
-    if (!(out << text) || !out.flush()) {
-        std::fprintf(stderr, tr("pupitre: cannot write %s\n"), a.output.c_str());
-        return kCantCreate;
-    }
-    std::printf(tr("the report written to %s\n"), a.output.c_str());
-    return kOk;
+    std::FILE* said = a.csv || a.output == "-" ? stderr : stdout;
+    int rc = kOk;
+    if (a.csv)
+        std::fputs(
+            console::class_report_text(r.value, console::ReportFormat::csv, key, title).c_str(),
+            stdout);
+    if (!a.output.empty()) rc = std::max(rc, report_html(a.output, title, r.value, key, said));
+    if (!a.pdf.empty()) rc = std::max(rc, report_pdf(a.pdf, title, r.value, key, said));
+    if (!a.csv && a.output.empty() && a.pdf.empty())
+        std::fputs(
+            console::class_report_text(r.value, console::ReportFormat::table, key, title).c_str(),
+            stdout);
+    return rc;
 }
 
 }  // namespace pupitre::cli

@@ -691,6 +691,7 @@ pages::View Session::view() const {
     view_editor(v);
     v.graph = graph;
     v.graph.path = &path_;
+    if (sim_->ran_program()) v.graph.seconds = sim_->cycle_time();  // the M02 message's
     if (!graph_plane_chosen && !path_.empty()) v.graph.plane = path_.default_plane();
     tool_now_ = sim_->op();
     // The tool where it is over the part (a C turn, a B tilt), as the path.

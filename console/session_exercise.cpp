@@ -238,6 +238,7 @@ Effect Session::exercise_command(std::string_view args) {
 void Session::exercise_view(pages::View& v) const {
     if (!exercise_) return;
     const ExerciseRun& x = *exercise_;
+    v.instruments = &x.ex.instruments;
     using K = pages::ExLine;
     if (x.grade) {
         // The report's lines: its title, the score, the tables' headings,

@@ -415,7 +415,7 @@ void page_graph(const GraphView& g, const MachineProfile& m, Canvas& c, const Re
     }
     const Toolpath& p = *g.path;
     char buf[96];
-    double t = p.seconds();
+    double t = g.seconds >= 0 ? g.seconds : p.seconds();
     std::snprintf(buf, sizeof buf, tr(" %zu moves  %d:%02d:%02d "), p.moves_made(moves_shown(g)),
                   int(t / 3600), int(t / 60) % 60, int(t) % 60);
     // The title gives way to the count and the time on a narrow page.

@@ -48,7 +48,10 @@ struct GraphView {
     double cur_x = 0, cur_y = 0;  // the cursor, world
     const Axes* tool = nullptr;   // the tool now, program frame, internal units; null: none shown
     size_t upto = SIZE_MAX;       // moves drawn: [0, upto)
-    bool mirror = true;           // lathe: the half-profile's mirror image below the axis
+    // The cycle time in the title (the console's Sim::cycle_time(), the M02
+    // message's); < 0: the path's own count.
+    double seconds = -1;
+    bool mirror = true;               // lathe: the half-profile's mirror image below the axis
     Glyphs glyphs = Glyphs::braille;  // braille or quadrant blocks; ASCII when the canvas is ASCII
     GraphCache* cache = nullptr;      // null: every frame draws every move
     // The workshop's part (lathe): its half-section as polygons, (Z, X as a

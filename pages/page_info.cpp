@@ -33,6 +33,14 @@ void kv(std::vector<Line>& lines, std::string k, std::string val) {
     lines.push_back(std::move(l));
 }
 
+// The gauge applied, and the one waiting for the next move or touch-off
+// (T1 D1 M6 in IMD has chosen it, no axis has moved yet).
+void gauge_line(const Sim& s, const Axes& gauge, std::vector<Line>& lines) {
+    kv(lines, tr("gauge"), axes_text(s, gauge));
+    if (const std::string waiting = gauge_waiting_note(s); !waiting.empty())
+        lines.push_back(Line{}.add(std::string(12, ' ')).add(waiting, Style::warn));
+}
+
 // The G functions in force, one a group, then G53, G51 and G74 when active.
 std::string g_functions(const Modal& m, const Frames& f) {
     std::string gs = g(m.motion) + " " + g(m.plane) + " " + g(m.radcomp) + " " +
@@ -101,7 +109,7 @@ void offset_lines(const Sim& s, std::vector<Line>& lines) {
     kv(lines, "DEC1", axes_text(s, f.dec1));
     kv(lines, "DEC3", axes_text(s, f.dec3));
     kv(lines, "G59", axes_text(s, f.g59));
-    kv(lines, tr("gauge"), axes_text(s, f.gauge));
+    gauge_line(s, f.gauge, lines);
     std::string mir;
     for (int a = 0; a < kAxes; ++a)
         if (f.mirror[size_t(a)]) mir += std::string(1, kAxisNames[size_t(a)]) + " ";
@@ -158,7 +166,7 @@ void caz_info_lines(const Sim& s, std::vector<Line>& lines) {
     lines.push_back(
         Line{}.add(std::string(" ") + tr("Origin and gauge (X as a radius)"), Style::title));
     kv(lines, tr("origin"), axes_text(s, in.frames().pref));
-    kv(lines, tr("gauge"), axes_text(s, in.frames().gauge));
+    gauge_line(s, in.frames().gauge, lines);
     lines.push_back(Line{});
     kv(lines, tr("Switches"),
        strf(tr("block skip %s   optional stop M01 %s"),

@@ -137,6 +137,10 @@ void tool_rows(const Sim& s, Rows& rows) {
     if (s.m7() || s.m8())
         tool += std::string("  ") + (s.m7() ? "M07 " : "") + (s.m8() ? "M08" : "");
     rows.add(tr("Tool"), tool);
+    // A corrector chosen whose gauge is not applied yet (T1 D1 M6 in IMD):
+    // OP shows the position without it, and says so under the tool.
+    if (const std::string waiting = gauge_waiting_note(s); !waiting.empty())
+        rows.add("", waiting, Style::warn);
     if (const workshop::Workshop* w = s.shop(); w && w->probe_in_use()) {
         bool lit = w->probe_contact(s.om());
         const Canvas& c = rows.c;

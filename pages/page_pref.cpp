@@ -66,20 +66,14 @@ int origins_table(const View& v, Canvas& c, const Rect& r) {
 // origins waiting for a move, from row y.
 void setting_notes(const View& v, Canvas& c, const Rect& r, int y) {
     const Sim& s = *v.sim;
-    const Interpreter& in = s.interp();
     const MachineProfile& m = s.machine();
-    const Frames& f = in.frames();
     // The corrector the machine applies (D0 after M02 and RAZ, T kept); a
     // gauge not yet applied is named: a touch-off applies it first.
     std::string d =
         is_caz(m) ? strf(tr("active tool %s: turret position %d, corrector %02d"),
                          tool_word(m, s.tool(), s.corrector()).c_str(), s.tool(), s.corrector())
                   : strf(tr("active corrector D%d, tool T%d"), s.corrector(), s.tool());
-    std::string waiting;
-    for (int a = 0; a < kAxes; ++a)
-        if (m.has(a) && in.gauge_pending(a) &&
-            std::abs(in.active_gauge(a) - f.gauge[size_t(a)]) > 5e-7)
-            waiting += std::string(waiting.empty() ? "" : " ") + kAxisNames[size_t(a)];
+    const std::string waiting = gauge_waiting(s);
     if (!waiting.empty())
         d += strf(tr("; its gauge on %s applies at the next move or touch-off"), waiting.c_str());
     for (const auto& part : wrap_text(d, r.w - 2))
@@ -148,6 +142,25 @@ void touch_off_help(const View& v, Canvas& c, const Rect& r) {
 }
 
 }  // namespace
+
+std::string gauge_waiting(const Sim& s) {
+    const Interpreter& in = s.interp();
+    const MachineProfile& m = s.machine();
+    const Frames& f = in.frames();
+    std::string waiting;
+    for (int a = 0; a < kAxes; ++a)
+        if (m.has(a) && in.gauge_pending(a) &&
+            std::abs(in.active_gauge(a) - f.gauge[size_t(a)]) > 5e-7)
+            waiting += std::string(waiting.empty() ? "" : " ") + kAxisNames[size_t(a)];
+    return waiting;
+}
+
+std::string gauge_waiting_note(const Sim& s) {
+    const std::string waiting = gauge_waiting(s);
+    if (waiting.empty()) return {};
+    // TRANSLATORS: OP and INFO pages, after the tool or the gauge applied: %s are axes ("X Z").
+    return strf(tr("gauge on %s not applied yet: at the next move or touch-off"), waiting.c_str());
+}
 
 void page_pref(const View& v, Canvas& c, const Rect& r) {
     // TRANSLATORS: the PREF page's title: PREF is the page's name.

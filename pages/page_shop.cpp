@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <span>
+#include <string_view>
 
 #include "core/workshop/workshop.hpp"
 #include "pages/pages.hpp"
@@ -86,7 +87,18 @@ void machine_lines(const workshop::Workshop& w, const View& v, int width, std::v
         row(i ? "" : tr("Tools"), wrapped[i], Style::normal);
 }
 
-void instrument_lines(bool mill, std::vector<Line>& out) {
+// An instrument an exercise allows (`allowed` null or empty: every one), by
+// the first word of its request.
+bool allowed(const InstrumentLine& i, const std::vector<std::string>* allowed) {
+    if (!allowed || allowed->empty()) return true;
+    const std::string_view form(i.form);
+    const std::string_view word = form.substr(0, form.find(' '));
+    for (const std::string& a : *allowed)
+        if (a == word) return true;
+    return false;
+}
+
+void instrument_lines(bool mill, const std::vector<std::string>* only, std::vector<Line>& out) {
     out.push_back(Line{}.add(
         " " + std::string(mill ? tr("Instruments: type a request, Enter reads it (X Y Z from the "
                                     "block's corner, Z from its top face)")
@@ -94,6 +106,7 @@ void instrument_lines(bool mill, std::vector<Line>& out) {
                                     "part's right-hand face)")),
         Style::title));
     for (const InstrumentLine& i : mill ? std::span(kMill) : std::span(kLathe)) {
+        if (!allowed(i, only)) continue;  // an exercise's forbidden ones are not offered
         std::string what = std::string(tr(i.name)) + " " + i.res + "  " + tr(i.what);
         out.push_back(Line{}.add("   " + pad(i.form, 22), Style::value).add(what, Style::normal));
     }
@@ -120,7 +133,7 @@ void page_shop(const View& v, Canvas& c, const Rect& r) {
     }
     machine_lines(*w, v, r.w, lines);
     lines.push_back(Line{});
-    instrument_lines(w->is_mill(), lines);
+    instrument_lines(w->is_mill(), v.instruments, lines);
     lines.push_back(Line{});
     lines.push_back(Line{}.add(" " + std::string(tr("Readings (newest first)")), Style::title));
     if (!v.readings || v.readings->empty())

@@ -44,6 +44,11 @@ void draw_lines(const std::vector<Line>& lines, int scroll, Canvas& c, const Rec
 // NUM's "T2  D4").
 bool is_caz(const MachineProfile& m);
 std::string tool_word(const MachineProfile& m, int tool, int corrector);
+// The axes whose gauge the corrector just chosen has not applied yet ("X Z";
+// empty: none): it applies at the next move or touch-off (page_pref.cpp).
+std::string gauge_waiting(const Sim& s);
+// That said on a page: empty when no gauge waits.
+std::string gauge_waiting_note(const Sim& s);
 // The columns a line number takes in a page's left margin: `least`, or the
 // digits of `last`, the largest number shown (a CAM program has millions of
 // lines).

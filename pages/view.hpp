@@ -108,6 +108,9 @@ struct View {
     GraphView graph;
     // WORKSHOP: the readings taken, newest first, as the message line said them.
     const std::vector<std::string>* readings = nullptr;
+    // WORKSHOP: the instruments an exercise allows (their words: dia, tool);
+    // null or empty: every one.
+    const std::vector<std::string>* instruments = nullptr;
     // EXERCISE: the task before :submit, the report after; empty: none.
     std::vector<std::pair<ExLine, std::string>> exercise;
 };

@@ -42,7 +42,9 @@ std::string renumber(std::string_view text, int number) {
         if (is_header_line(text.substr(pos, eol - pos))) {
             size_t pc = text.find('%', pos) + 1;
             size_t end = pc;
-            while (end < eol && (text[end] == ' ' || (text[end] >= '0' && text[end] <= '9'))) ++end;
+            while (end < eol && text[end] == ' ') ++end;
+            // The digits only: "%300 (TITLE)" keeps the space before its title.
+            while (end < eol && text[end] >= '0' && text[end] <= '9') ++end;
             return std::string(text.substr(0, pc)) + std::to_string(number) +
                    std::string(text.substr(end));
         }

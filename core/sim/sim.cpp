@@ -140,6 +140,7 @@ std::string Sim::select(int program) {
         loc_ = Loc{};
         blocks_ = 0;
         run_seconds_ = 0;
+        ran_program_ = false;
         if (state_ == RunState::ended) state_ = RunState::idle;
     }
     selected_ = program;
@@ -191,6 +192,11 @@ std::string Sim::cycle_start() {
 // last run's counters stay.
 std::string Sim::start_from_rest() {
     message_.clear();
+    // POM, JOG and INC leave the last run's counters; IMD is not a program.
+    if (mode_ == Mode::imd) ran_program_ = false;
+    if (mode_ == Mode::automatic || mode_ == Mode::single || mode_ == Mode::dry ||
+        mode_ == Mode::test || mode_ == Mode::rns)
+        ran_program_ = true;
     switch (mode_) {
         case Mode::automatic:
         case Mode::single:
@@ -531,7 +537,7 @@ void Sim::begin_end(const Ev& e) {
         // TRANSLATORS: the second %s counts the blocks run ("%ld blocks").
         message_ = strf(tr("M02: end of program %%%d, %s, cycle time %s"), e.loc.prog,
                         strf(trn("%ld blocks", "%ld blocks", blocks_), blocks_).c_str(),
-                        fmt_seconds(run_seconds_).c_str());
+                        fmt_seconds(cycle_time()).c_str());
         // The warnings the run printed on the way must not vanish with it.
         if (run_warning_count_ > 0)
             message_ += strf(
@@ -735,7 +741,7 @@ void Sim::test_advance(long budget) {
                 strf(trn("%ld blocks", "%ld blocks", test_->blocks()), test_->blocks()).c_str(),
                 // TRANSLATORS: the English says "warnings" whatever the number.
                 strf(trn("%d warnings", "%d warnings", warnings), warnings).c_str(),
-                fmt_seconds(test_->seconds()).c_str());
+                fmt_seconds(cycle_time()).c_str());
             state_ = RunState::ended;
         }
     }

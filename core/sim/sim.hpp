@@ -124,8 +124,16 @@ class Sim final : private MachineSink {
     double clock() const { return clock_; }
     // Seconds of motion still queued (JOG keeps about 0.1 s ahead).
     double queued_time() const;
-    // Seconds of the last program run (or IMD block): jogs and POM not counted.
-    double cycle_time() const { return run_seconds_; }
+    // The cycle time, one for every page and message (the M02 and TEST
+    // messages, OP's run line, the GRAPH title): the seconds of the last
+    // program run (or IMD block), its moves, dwells and tool changes as the
+    // machine took them, jogs and POM not counted; TEST: its own count.
+    double cycle_time() const {
+        return mode_ == Mode::test && test_ ? test_->seconds() : run_seconds_;
+    }
+    // The last Cycle Start ran a program (AUTO, SEQ, DRY RUN, TEST, RNS),
+    // whose drawing the GRAPH page shows, not an IMD block.
+    bool ran_program() const { return ran_program_; }
     long blocks_done() const { return mode_ == Mode::test && test_ ? test_blocks_ : blocks_; }
     const std::vector<Alarm>& alarms() const { return alarms_; }  // history, newest last
     // The warnings of the last run (the first kMaxRunWarnings), and how many.
@@ -239,6 +247,7 @@ class Sim final : private MachineSink {
     int tool_ = 0, corr_ = 0;
     double clock_ = 0;
     double run_seconds_ = 0;
+    bool ran_program_ = false;
     long blocks_ = 0;
     long test_blocks_ = 0;
     std::vector<Alarm> alarms_;

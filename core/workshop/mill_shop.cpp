@@ -32,6 +32,17 @@ double dist(const P3& a, const P3& b) {
     return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
 }
 
+P3 plus(const P3& a, const P3& d) {
+    return {a[0] + d[0], a[1] + d[1], a[2] + d[2]};
+}
+
+// `g` mm from a towards b; nothing when they are one point.
+P3 along(const P3& a, const P3& b, double g) {
+    const double l = dist(a, b);
+    if (!(l > 0)) return {0, 0, 0};
+    return {g * (b[0] - a[0]) / l, g * (b[1] - a[1]) / l, g * (b[2] - a[2]) / l};
+}
+
 bool overlap(const Box3& p, const Box3& q) {
     for (int k = 0; k < 3; ++k)
         if (p.hi[k] < q.lo[k] || p.lo[k] > q.hi[k]) return false;
@@ -87,7 +98,7 @@ constexpr Part kParts[] = {Part::flute, Part::shank, Part::holder};
 }  // namespace
 
 // A point of the tool seen from the workshop: the tip of the cutter grown by
-// `g` for a contact or a shim.
+// `g` for a contact.
 P3 Workshop::grown_tip(const Axes& om, double g) const {
     const Pose p = pose3(om, true);
     return below(p.tip, g, p.u);
@@ -472,11 +483,13 @@ Outcome Workshop::mill_jog_line(const MoveEvent& e, bool continuous) {
     const P3 a = tip3(e.from_mach), b = tip3(e.to_mach), u = piece_axis(e.from_mach, e.to_mach);
     Met what = Met::none;
     const bool touching = mill_depth(cutter(kNear), below(a, kNear, u), u, what) > kTouchDepth;
-    // A shim on the part (the paper test): the cutter meets the part a
-    // shim's thickness early, and cannot cut through it.
-    const bool on_shim =
-        shim_ > 0 && mill_->depth_into(cutter(shim_ + kNear), below(a, shim_ + kNear, u),
-                                       Part::flute, u) > kTouchDepth;
+    // A shim on the part (the paper test) or a gauge block: a body of its own
+    // between the cutter and the surface along the approach, as a setter
+    // holds it. The cutter meets the part a shim's thickness early along
+    // the move, wherever it stands, and cannot cut through it.
+    const P3 by = along(a, b, shim_);
+    const bool on_shim = shim_ > 0 && mill_->depth_into(cutter(kNear), below(plus(a, by), kNear, u),
+                                                        Part::flute, u) > kTouchDepth;
     if (on_shim && !continuous) return on_the_shim(e.from_mach, tool_);
     if (touching && !continuous) return finder() ? finder_push(e) : mill_apply(e);
     // A held key slides along or away, and stops again before going deeper.
@@ -484,8 +497,8 @@ Outcome Workshop::mill_jog_line(const MoveEvent& e, bool continuous) {
         touching ? std::max(kTouchDepth, mill_depth(cutter(), a, u, what)) : kTouchDepth;
     Contact k = mill_first(cutter(), a, b, u, limit, true, true);
     if (shim_ > 0) {
-        const Cutter over = cutter(shim_);
-        const P3 oa = below(a, shim_, u), ob = below(b, shim_, u);
+        const Cutter over = cutter();
+        const P3 oa = plus(a, by), ob = plus(b, by);
         const double deep = on_shim ? mill_->depth_into(over, oa, Part::flute, u) : 0;
         const double f =
             mill_->first_contact(over, oa, ob, Part::flute, std::max(kTouchDepth, deep), true, u);

@@ -47,6 +47,41 @@ CPath grown(const CPath& shape, double by) {
     return out.empty() ? shape : out.front();
 }
 
+// A thin body from `from` to `len` mm further along the unit vector d
+// (20 µm wide): a shim seen edge-on.
+CPath bar(Pt from, Pt d, double len) {
+    constexpr double kHalf = 0.01;
+    const Pt n{-d[1] * kHalf, d[0] * kHalf}, to{from[0] + len * d[0], from[1] + len * d[1]};
+    CPath out;
+    for (const Pt& q : {Pt{from[0] + n[0], from[1] + n[1]}, Pt{to[0] + n[0], to[1] + n[1]},
+                        Pt{to[0] - n[0], to[1] - n[1]}, Pt{from[0] - n[0], from[1] - n[1]}})
+        out.push_back(to_int(q));
+    if (ClipperLib::Area(out) < 0) std::reverse(out.begin(), out.end());
+    return out;
+}
+
+// The outline's point farthest along d (among those within 1 µm of it, the
+// nearest the tool's point, the origin).
+Pt farthest(const CPath& shape, Pt d) {
+    double best = -1e300;
+    for (const ClipperLib::IntPoint& v : shape)
+        best = std::max(best, to_mm(v)[0] * d[0] + to_mm(v)[1] * d[1]);
+    Pt out{0, 0};
+    double near = 1e300;
+    for (const ClipperLib::IntPoint& v : shape) {
+        const Pt q = to_mm(v);
+        if (q[0] * d[0] + q[1] * d[1] < best - 1e-3) continue;
+        if (double r = std::hypot(q[0], q[1]); r < near) near = r, out = q;
+    }
+    return out;
+}
+
+// The unit vector from a to b; none when they are one point.
+Pt towards(const Pt& a, const Pt& b) {
+    const double l = std::hypot(b[0] - a[0], b[1] - a[1]);
+    return l > 0 ? Pt{(b[0] - a[0]) / l, (b[1] - a[1]) / l} : Pt{0, 0};
+}
+
 double length_of(const std::vector<Pt>& p) {
     double total = 0;
     for (size_t i = 1; i < p.size(); ++i)
@@ -425,45 +460,40 @@ Outcome Workshop::jog(const MoveEvent& e, bool continuous) {
     std::vector<Pt> tips;
     for (const Axes& om : oms) tips.push_back(tip(om));
     const std::vector<Pt> here{tips.front()};
-    const CPath* shapes[] = {&t->shape.insert, &t->shape.holder};
-    const CPath* near[] = {&t->near.insert, &t->near.holder};
+    // A shim, a pin or a gauge block (:shim) is a body of its own between the
+    // tool and the surface, along the jog, as a setter holds it: under the
+    // insert's point farthest along the jog, or, where the part is not under
+    // that point (the nose beyond the face), under the tool's point P, slid
+    // along its line of contact onto the part. Its far end meets the part:
+    // the reading is the surface's plus the thickness wherever the tool
+    // stands over it, whatever shoulder is beside it. The insert cannot cut
+    // through it.
+    const CPath shim = shim_body(t->shape.insert, towards(tips.front(), tips.back()), tips.front());
+    const CPath shim_near = shim.empty() ? CPath{} : grown(shim, kNear);
+    const CPath* shapes[] = {&shim, &t->shape.insert, &t->shape.holder};
+    const CPath* near[] = {&shim_near, &t->near.insert, &t->near.holder};
     const Obstacle things[] = {Obstacle::material, Obstacle::chuck, Obstacle::tailstock,
                                Obstacle::gauge};
     double first = 2;
     Obstacle hit = Obstacle::none;
-    bool holder = false;
-    // A shim on the part (the paper test): the insert meets the part a shim's
-    // thickness early, and cannot cut through it.
-    CPath shim_insert, shim_near;
-    if (shim_ > 0) {
-        shim_insert = grown(t->shape.insert, shim_);
-        shim_near = grown(t->shape.insert, shim_ + kNear);
-    }
-    bool on_shim = false;
-    for (int k = 0; k < 2; ++k) {
+    bool holder = false, on_shim = false;
+    for (int k = shim.empty() ? 1 : 0; k < 3; ++k) {
         const CPaths near_here = LatheWorld::sweep(*near[k], here),
                      at_here = LatheWorld::sweep(*shapes[k], here);
         const CPaths whole = LatheWorld::sweep(*shapes[k], tips);
         for (Obstacle w : things) {
-            const bool shim = k == 0 && w == Obstacle::material && shim_ > 0;
-            const CPath& shape = shim ? shim_insert : *shapes[k];
+            if (k == 0 && w != Obstacle::material) continue;  // the shim lies on the part
             // At a contact, an increment goes on as a feed; a held JOG key
             // slides along or away, and stops again before going deeper.
-            bool touching = world_.depth_into(shim ? LatheWorld::sweep(shim_near, here) : near_here,
-                                              w) > kTouchDepth;
-            if (touching && !continuous && shim) return on_the_shim(oms.front(), tool_);
+            const bool touching = world_.depth_into(near_here, w) > kTouchDepth;
+            if (touching && !continuous && k == 0) return on_the_shim(oms.front(), tool_);
             if (touching && !continuous && w == Obstacle::gauge)
                 return on_the_gauge(oms.front(), tool_);
             if (touching && !continuous) return apply(e);
-            double limit =
-                touching
-                    ? std::max(kTouchDepth, world_.depth_into(
-                                                shim ? LatheWorld::sweep(shape, here) : at_here, w))
-                    : kTouchDepth;
-            const CPaths shim_whole = shim ? LatheWorld::sweep(shape, tips) : CPaths{};
-            if (double f = first_contact(shape, tips, w, limit, true, shim ? &shim_whole : &whole);
-                f < first)
-                first = f, hit = w, holder = k == 1, on_shim = shim;
+            const double limit =
+                touching ? std::max(kTouchDepth, world_.depth_into(at_here, w)) : kTouchDepth;
+            if (double f = first_contact(*shapes[k], tips, w, limit, true, &whole); f < first)
+                first = f, hit = w, holder = k == 2, on_shim = k == 0;
         }
     }
     if (hit == Obstacle::none) return apply(e);
@@ -474,6 +504,18 @@ Outcome Workshop::jog(const MoveEvent& e, bool continuous) {
     o.fraction = first;
     o.what = told(touch_text(hit, holder, on_shim, where(done.back())));
     return o;
+}
+
+// The shim seen edge-on for a jog along d from `at` (the tool point): from
+// the insert's point farthest along d, or from P when the part is not
+// along d from that point; none without a shim or a direction.
+CPath Workshop::shim_body(const CPath& insert, Pt d, const Pt& at) const {
+    if (shim_ <= 0 || (d[0] == 0 && d[1] == 0)) return {};
+    constexpr double kFar = 1e4;  // mm: beyond any part
+    const Pt far = farthest(insert, d);
+    const bool under =
+        world_.depth_into(LatheWorld::sweep(bar(far, d, kFar), {at}), Obstacle::material) > 0;
+    return bar(under ? far : Pt{0, 0}, d, shim_);
 }
 
 // What a jog touched, where.

@@ -275,6 +275,9 @@ class Workshop final : public MachineSink {
     std::string crash_text(int code, bool holder, Obstacle what, const ToolTruth& tt,
                            const std::string& place) const;
     std::string touch_text(Obstacle hit, bool holder, bool on_shim, const std::string& place) const;
+    // The shim (:shim) as a thin body for a jog along the unit vector d from
+    // the tool point `at`; empty without one (see jog()).
+    CPath shim_body(const CPath& insert, Pt d, const Pt& at) const;
     // The first fraction of the path where `shape` comes deeper than `depth`
     // into `what` (`before`: the last one where it does not yet, within
     // 0.1 µm); 2 when it never does.

@@ -317,6 +317,15 @@ TEST(ClassReport, TableCsvAndHtmlAreGolden) {
            console::class_report_text(all, console::ReportFormat::csv, kKey, "class"));
     golden("class_report.html", console::class_report_text(all, console::ReportFormat::html, kKey,
                                                            "pupitre: the class's attempts"));
+    // The edited attempt counts for nothing: no best, no last, no time.
+    const std::string csv = console::class_report_text(all, console::ReportFormat::csv, kKey, "");
+    EXPECT_NE(csv.find("\"exam-2005\",\"<eve>\",1,0,,,,0,0,1,\"\"\n"), std::string::npos) << csv;
+    auto edited = all;
+    edited[0].score = 100, edited[0].seconds = 60;  // alice's 100 in 10 min made 1 min
+    const std::string alice =
+        console::class_report_text(edited, console::ReportFormat::csv, kKey, "");
+    EXPECT_NE(alice.find("\"exam-2005\",\"alice\",1,0,,,,0,0,1,\"\"\n"), std::string::npos)
+        << alice;
     const std::string nokey = console::class_report_text(all, console::ReportFormat::table, "", "");
     EXPECT_NE(nokey.find("Signatures not checked: no class key."), std::string::npos);
     EXPECT_EQ(nokey.find("TAMPERED"), std::string::npos);

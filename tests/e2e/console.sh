@@ -19,10 +19,54 @@ start)
     wait_for 'HELP  keys and commands'
     keys F6
     wait_for '%300'
+    # The two demos tell themselves apart on DIR by their titles (issue 38).
+    wait_for '^[* ] %300 .*LATHE DEMO: TURNING WITH G02 G03'
+    wait_for '^[* ] %301 .*MILL DEMO: G02 G03 IN THE G19 PLANE'
     # Tab completes a command on the readline input line.
     keys -l ":mo"
     keys Tab
     wait_for '^> :mode$'
+    ;;
+gauge_pending)
+    # Issue 38: after T1 D1 M6 in IMD the gauge is chosen, not applied: OP
+    # and INFO show the position without it and say so, as PREF does; the
+    # note goes axis by axis as they move; in French too.
+    pending() {
+        start
+        cmd ":set D1.X=63.345"
+        cmd ":set D1.Z=38.237"
+        cmd ":mode pom"
+        keys F9
+        wait_for '^ POM .*(READY|PRÊT)' 20
+        cmd ":mode imd"
+        cmd "T1 D1 M6"
+        keys F9
+        wait_for "$1" 10
+    }
+    pending 'IMD done'
+    cmd ":page op"
+    wait_for 'Tool +T1 +D1$'
+    wait_for '^ {12}gauge on X Z not applied yet: at the next move or touch-off'
+    sgr_line 'gauge on X Z not applied' | grep -q $'\e\\[' || fail "the note is not coloured"
+    cmd ":page info"
+    wait_for '^ gauge +X +[0-9.-]+ +Z +[0-9.-]+ *$'
+    wait_for '^ {12}gauge on X Z not applied yet: at the next move or touch-off'
+    cmd "G0 Z100"
+    keys F9
+    wait_for 'IMD done' 10
+    wait_for '^ {12}gauge on X not applied yet'
+    cmd "G0 X200"
+    keys F9
+    wait_for 'IMD done' 10
+    cmd ":page op"
+    sleep 0.3
+    screen | grep -q 'not applied yet' && fail "the note stays after both axes moved"
+    cmd ":quit"
+    wait_for '^EXIT=0' 10
+    next_server
+    E2E_ENV="LANGUAGE= LANG=fr_FR.UTF-8" pending 'IMD terminé'
+    cmd ":page op"
+    wait_for 'jauge sur X Z non appliquée : au prochain mouvement ou tangentage'
     ;;
 themes)
     start --theme mono --ascii
@@ -380,6 +424,27 @@ graph)
     b=$(screen | grep -n '◆' | head -1)
     [ -n "$a" ] && [ "$a" != "$b" ] || fail "the tool marker did not move ($a / $b)"
     [ "$before" -gt 3 ] || fail "too few braille rows ($before)"
+    ;;
+cycle_time)
+    # Issue 38: one cycle time everywhere. The lathe demo takes 35.778 s
+    # with its tool change (the batch summary's 0:00:35): the M02 message,
+    # the OP page's run line and the GRAPH title say the same, and so do
+    # TEST's message and title. The GRAPH title left the tool change out
+    # (0:00:33).
+    W=100 start
+    pom
+    cmd ":load 300"
+    cmd ":speed max"
+    cmd ":mode auto"
+    keys F9
+    wait_for 'M02: end of program %300, 12 blocks, cycle time 0 min 35.8 s' 30
+    wait_for 'Run +12 blocks +cycle time 35.8 s'
+    keys M-g
+    wait_for 'GRAPH .* 7 moves +0:00:35'
+    cmd ":mode test"
+    keys F9
+    wait_for 'TEST %300: no error, 12 blocks, 0 warnings, cycle time 0 min 35.8 s' 20
+    wait_for 'GRAPH .* 7 moves +0:00:35'
     ;;
 warnings)
     # Issue 19: a warning printed during a run is not lost with M02: the end

@@ -80,6 +80,11 @@ diameter)
     grep -q 'X taken as a diameter instead of a radius' "$work/report" || fail "report: $(cat "$work/report")"
     "$bin" --db "$db" class report --html "$work/class.html" > /dev/null || fail "html"
     grep -q '<td>bob</td>' "$work/class.html" || fail "html report"
+    # bob's 83 made 100 in the store (issue 38): TAMPERED, and it counts for
+    # nothing, neither the best nor the last nor the minutes.
+    sqlite3 "$db" "UPDATE attempts SET score = 100 WHERE student = 'bob'" || fail "sqlite3"
+    "$bin" --db "$db" class report > "$work/report" || fail "class report"
+    grep -Eq '^exam-2005 +bob +1 +- +- +- +0 +0 +TAMPERED$' "$work/report" || fail "report: $(cat "$work/report")"
     ;;
 hidden)
     # The drawn exam at the machine: presetter, gauge block, touch; every
@@ -117,6 +122,24 @@ hidden)
     cmd ":submit"
     wait_for 'submitted: '
     for s in "${secrets[@]}"; do wait_for "${s//./\\.}"; done
+    ;;
+instruments)
+    # Issue 38: the WORKSHOP page offers only the instruments the exercise
+    # allows (exam-2005-drawn: dia and tool; mill-pocket: no presetter).
+    start --db "$db" exercise exam-2005-drawn --student dave
+    wait_for 'exam-2005-drawn'
+    cmd ":page shop"
+    wait_for '^ +dia Z-20 +micrometer'
+    wait_for '^ +tool T1 X\|Z\|R +presetter'
+    screen | grep -Eq '^ +(bore|groove|length) ' && fail "a forbidden instrument is offered"
+    cmd ":quit"
+    wait_for '^EXIT=0' 10
+    next_server
+    start --db "$db" exercise mill-pocket --student dave
+    wait_for 'mill-pocket'
+    cmd ":page shop"
+    wait_for '^ +depth X60 Y30 +depth gauge'
+    screen | grep -Eq '^ +tool T1 L' && fail "the presetter is offered in mill-pocket"
     ;;
 mill)
     # mill-pocket at the machine: the edge finder kicks on the block's -X and

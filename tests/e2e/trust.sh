@@ -337,7 +337,7 @@ two)
     wait2 'another console changed: %300 r2 \(open here' 5
     cmd2 ":close!"
     cmd2 ":page dir"
-    wait2 '%300 +14 +2$' 5
+    wait2 '%300 +14 +2 +LATHE DEMO' 5
     cmd2 ":edit 300"
     wait2 'FROM CONSOLE A'
     ;;

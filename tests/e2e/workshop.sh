@@ -175,6 +175,46 @@ shim)
     cmd ":shim off"
     wait_for 'no shim on the part'
     ;;
+shim_pin)
+    # Issue 38: a Ø20 pin and a 40 mm block (exam-2005-drawn's) are bodies of
+    # their own between the tool's point and the surface, along the approach:
+    # the reading on the pin is the ø56 + 2 × 20 wherever the point stands
+    # over the ø56, and on the block the face + 40 wherever over the face.
+    # The shipped setup's truth: PREF X -20 (radius) Z 35, T1 X 52.347 Z 41.215.
+    start
+    pom
+    cmd ":setup lathe"
+    for v in PREF.X=-20 PREF.Z=35 D1.X=52.347 D1.Z=41.215; do cmd ":set $v"; done
+    cmd ":speed max"
+    cmd ":mode imd"
+    imd() { cmd "$1"; keys F9; wait_for 'IMD done' 20; }
+    imd "T1 D1 M6"
+    imd "S800 M3"
+    imd "G0 X56 Z1"
+    imd "G1 Z-5 F0.3"
+    imd "G0 X70"
+    cmd ":shim 20"
+    wait_for 'a 20.000 mm shim on the part'
+    for z in -0.5 -2 -4.5; do
+        cmd ":mode imd"
+        imd "G0 X110 Z$z"
+        cmd ":mode jog"
+        cmd ":jog X -20"
+        wait_for 'T1 touched the 20.000 mm shim on the part' 20
+        [ "$(op_value X)" = "96.000" ] || fail "the pin at Z$z should read Xø 96.000, not $(op_value X)"
+    done
+    # The block on the face, the point over the face at two diameters.
+    cmd ":shim 40"
+    for x in 20 50; do
+        cmd ":mode imd"
+        imd "G0 Z60"
+        imd "G0 X$x"
+        cmd ":mode jog"
+        cmd ":jog Z -30"
+        wait_for 'T1 touched the 40.000 mm shim on the part' 20
+        [ "$(op_value Z)" = "40.000" ] || fail "the block at Xø$x should read Z 40.000, not $(op_value Z)"
+    done
+    ;;
 probe)
     # The electric probe's lamp on the OP page: out, then lit at the contact
     # (in the alarm colour), out again when the jog backs off.

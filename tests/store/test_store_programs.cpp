@@ -36,11 +36,16 @@ TEST(StoreOpen, CreatesSeedsAndMarksTheFile) {
         EXPECT_EQ(numbers(*s), (std::vector<int>{300, 301}));
         auto lathe = s->read(300);
         ASSERT_TRUE(lathe.ok());
-        EXPECT_EQ(lathe.value.text.substr(0, 5), "%300\n");
+        EXPECT_EQ(lathe.value.text.substr(0, 6), "%300 (");
         // Both demos are %300 in the handbooks: the second is stored as %301.
         auto mill = s->read(301);
         ASSERT_TRUE(mill.ok());
-        EXPECT_EQ(mill.value.text.substr(0, 5), "%301\n");
+        EXPECT_EQ(mill.value.text.substr(0, 6), "%301 (");
+        // DIR tells the lathe's demo from the mill's by their titles (issue 38).
+        const auto all = s->list().value;
+        ASSERT_EQ(all.size(), 2u);
+        EXPECT_EQ(all[0].title, "LATHE DEMO: TURNING WITH G02 G03");
+        EXPECT_EQ(all[1].title, "MILL DEMO: G02 G03 IN THE G19 PLANE");
         EXPECT_NE(mill.value.text.find("G19"), std::string::npos);
         EXPECT_EQ(s->machines().value,
                   (std::vector<std::string>{"lathe", "mill", "mill4", "mill5"}));

@@ -92,6 +92,23 @@ grep -q 'Mistakes most made:' "$work/report" || fail "$(cat "$work/report")"
 grep -q '</html>' "$work/r.html" || fail "html file"
 "$bin" "${db[@]}" class report --pdf "$work/r.pdf" > /dev/null || fail "pdf"
 head -c 5 "$work/r.pdf" | grep -q '%PDF-' || fail "pdf file"
+# Every output asked for is written (issue 38: --html F --pdf G wrote only
+# the PDF, --csv --html F only the CSV); what went to a file is said on the
+# standard error when the CSV is on the standard output.
+rm -f "$work/r.html" "$work/r.pdf"
+"$bin" "${db[@]}" class report --html "$work/r.html" --pdf "$work/r.pdf" > "$work/out" || fail "html and pdf"
+grep -q '</html>' "$work/r.html" || fail "--html F --pdf G: no HTML"
+head -c 5 "$work/r.pdf" | grep -q '%PDF-' || fail "--html F --pdf G: no PDF"
+[ "$(grep -c 'the report written to' "$work/out")" = 2 ] || fail "$(cat "$work/out")"
+rm -f "$work/r.html" "$work/r.pdf"
+"$bin" "${db[@]}" class report --csv --html "$work/r.html" --pdf "$work/r.pdf" > "$work/out" 2> "$work/err" || fail "csv, html and pdf"
+grep -q '</html>' "$work/r.html" || fail "--csv --html F: no HTML"
+head -c 5 "$work/r.pdf" | grep -q '%PDF-' || fail "--csv --pdf G: no PDF"
+head -1 "$work/out" | grep -q "^exercise,student,attempts," || fail "$(cat "$work/out")"
+grep -q 'written' "$work/out" && fail "the CSV carries a message: $(cat "$work/out")"
+[ "$(grep -c 'the report written to' "$work/err")" = 2 ] || fail "$(cat "$work/err")"
+"$bin" "${db[@]}" class report --csv --html - > /dev/null 2>&1
+[ $? = 64 ] || fail "--csv with --html - should be a usage error"
 "$bin" "${db[@]}" class report --pdf /nonexistent/dir/r.pdf 2> /dev/null
 [ $? = 73 ] || fail "a PDF that cannot be written should exit 73"
 "$bin" "${db[@]}" class rapport 2> /dev/null

@@ -263,6 +263,24 @@ TEST(MillContacts, AJogStopsOnTheTopFaceAndASideFaceExactly) {
     EXPECT_NE(o.what.find("0.050 mm shim"), std::string::npos) << o.what;
 }
 
+// Issue 38: a 40 mm gauge block lies between the cutter and the face it
+// comes to, along the jog: 40 above the top, 40 before a side; coming down
+// beside the block (the cutter's edge 6 from the -X face) it meets nothing,
+// where a cutter grown all round rode on the block's edge.
+TEST(MillContacts, AGaugeBlockLiesAlongTheJog) {
+    Jogged j(2);
+    j.shop->set_shim(40);
+    Outcome o = j.jog(at(108.35, -91.72, -290 + 117.645 + 60), Z, -30);
+    ASSERT_TRUE(o.touched);
+    EXPECT_NEAR(o.stop[Z], -290 + 117.645 + 40, 2e-4);
+    EXPECT_NE(o.what.find("40.000 mm shim"), std::string::npos) << o.what;
+    o = j.jog(at(-20, -91.72, -295 + 117.645), X, 40);
+    ASSERT_TRUE(o.touched);
+    EXPECT_NEAR(o.stop[X], 48.35 - 4 - 40, 2e-4);
+    o = j.jog(at(48.35 - 10, -91.72, -290 + 117.645 + 60), Z, -30);
+    EXPECT_FALSE(o.touched) << o.what;
+}
+
 // On a fixture plate 20 beyond the block, with a Ø10 locating pin at X40
 // (the block's -X face is at 48.35), its top 20 above the block's bottom
 // (Z -310).

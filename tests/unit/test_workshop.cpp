@@ -361,6 +361,38 @@ struct T1OnTheLathe {
     }
 };
 
+// T1's point at radius r, from Z z0 to z1 (the shipped lathe's truth).
+MoveEvent jog_along_z(double r, double z0, double z1) {
+    MoveEvent e;
+    e.g = 1;
+    e.from_mach[X] = e.to_mach[X] = r + 52.347 - 20;
+    e.from_mach[Z] = z0 + 41.215;
+    e.to_mach[Z] = z1 + 41.215;
+    e.to_prog = e.to_mach;
+    e.length = std::abs(z1 - z0);
+    return e;
+}
+
+// Issue 38: a 40 mm gauge block on the bar's face (Z 35) is a body between
+// the point and the face along the jog, not the insert grown all round: the
+// point stops 40 before the face wherever it stands over the face, and a
+// point beside the bar (radius 31, the bar's 30) meets nothing.
+TEST(Contacts, AShimLiesAlongTheApproachNotAllRound) {
+    T1OnTheLathe t1;
+    Workshop& w = *t1.shop;
+    w.set_shim(40);
+    for (double r : {5.0, 20.0, 29.0}) {
+        Outcome o = w.jog(jog_along_z(r, 100, 60), true);
+        ASSERT_TRUE(o.touched) << r;
+        EXPECT_NEAR(w.tip(o.stop)[0], 75, 3e-4) << r;
+        EXPECT_NE(o.what.find("touched the 40.000 mm shim"), std::string::npos) << o.what;
+    }
+    EXPECT_FALSE(w.jog(jog_along_z(31, 100, 60), true).touched);
+    // A step back from the block is no step into it.
+    Outcome back = w.jog(jog_along_z(20, 75, 76), false);
+    EXPECT_FALSE(back.touched) << back.what;
+}
+
 TEST(Contacts, AJogStopsAtTheDiameterAndAShimStopsItAShimEarly) {
     T1OnTheLathe t1;
     Workshop& w = *t1.shop;
