@@ -149,6 +149,12 @@ bool Interpreter::profile_block(Plan& q, int line, ProfileRead& r) {
         if (Error e = r.solver.idle()) return fail(e);
         return true;
     }
+    // Error 72 before any intersection is sought (issue 39 item 6): the NUM
+    // reads a block before it solves the incomplete one above it, and a
+    // relative word leaves it nothing to solve with (%5200 N300, "G91 Z-.1"
+    // after N290's chamfer EB-1, was answered 113), as outside a cycle.
+    if (r.solver.pending() && (q.to.inc[X] || q.to.inc[Z] || q.to.ijk_inc.any()))
+        return fail(72, tr("relative programming (G91) after an incomplete profile block"));
     if (Error e = r.solver.push(profile_spec(q, r.solver.position(), line), r.elems))
         return fail(e);
     ++r.count;
