@@ -561,10 +561,23 @@ Error g63_material(const Profile& fin, const G63Args& a, G63Plan& p) {
 
 // The levels every P (R) from D down to EU (EW) or the profile (§6.5 step 4),
 // none closer than EQ to the one above it.
+// [DECISION] (issue 39 item 5) As G64's, a level at the height of each land
+// plus ER between the start and the last level, so that a land or a pocket's
+// bottom is left at ER and not up to a depth of cut above it (%100's G63 left
+// the Ø40 pockets at Ø36 and the Ø30 lands at Ø28); EQ does not remove them.
 std::vector<double> g63_levels(const G63Args& a, const G63Plan& p, double step) {
     std::vector<double> ys = levels(p.D.y(), p.y_u, step);
     if (ys.size() >= 2 && ys[ys.size() - 2] - ys.back() < a.eq - kTol) ys.pop_back();
     if (ys.size() == 1 && p.D.y() - ys.back() < a.eq - kTol) ys.pop_back();
+    for (const Elem& e : p.m.F) {
+        if (e.arc || std::fabs(e.a.y() - e.b.y()) > kTol || std::fabs(e.a.x() - e.b.x()) <= kUm)
+            continue;
+        const double y = e.a.y() + p.m.er;
+        if (y >= p.D.y() - kUm || y <= p.y_u + kUm) continue;
+        if (std::any_of(ys.begin(), ys.end(), [&](double l) { return std::fabs(l - y) <= kUm; }))
+            continue;
+        ys.insert(std::upper_bound(ys.begin(), ys.end(), y, std::greater<double>()), y);
+    }
     return ys;
 }
 
@@ -607,8 +620,11 @@ double enter_grooves(Emit& em, const G63Plan& p, double y, double xs, Runs& runs
     const double c = p.c;
     double end = runs[0].second;
     for (size_t j = 1; j < runs.size(); ++j) {
+        // The angle of the flank the pass goes down: measured 10 nm above
+        // the level, where a land level at a groove's bottom plus ER starts
+        // its run on the corner, nearer the flank than the bottom.
         V2 down, entry(runs[j].first, y);
-        if (entry_angle(m, entry, p.d, down) > p.eb + 1e-9) break;
+        if (entry_angle(m, V2(entry.x(), y + 1e-5), p.d, down) > p.eb + 1e-9) break;
         // The run ends at the farthest point whose climb out is clear.
         double climb = std::max(y + c, top_of_A(m, xs, runs[j].second) + c);
         auto out_ok = zone::clear_runs(m, y, climb - y, runs[j].first, runs[j].second, p.d);
