@@ -261,8 +261,12 @@ std::vector<std::vector<Elem>> reached_stretches(const Material& m, const std::v
             const bool next = k < n && reach(point_at(e, (k + 0.5) / n));
             if (k < n && next == in) continue;
             double t1 = 1;
-            if (k < n) {  // where reach changes, to 0.1 µm
-                double lo = (k - 0.5) / n, hi = (k + 0.5) / n;
+            // Where reach changes, to 0.1 µm; also between the last sample
+            // and the element's end when the end is not reached (an offset
+            // curve's end on the normal lies beyond the material).
+            const bool tail = k == n && in && !reach(point_at(e, 1));
+            if (k < n || tail) {
+                double lo = (k - 0.5) / n, hi = k < n ? (k + 0.5) / n : 1;
                 while ((hi - lo) * length(e) > 1e-4) {
                     const double mid = (lo + hi) / 2;
                     (reach(point_at(e, mid)) == in ? lo : hi) = mid;
@@ -298,21 +302,28 @@ bool along_F(const Material& m, const V2& p, const V2& q) {
 // the steps left on the N110 arc would be in the way of).  The way to each
 // stretch and back runs at feed within the clearance of the material, in rapid
 // above it.
-void contour_pass(Emit& em, const Material& m, int d, double c, double y_safe) {
-    double y_top = -kInf;
-    for (const Elem& e : m.M) y_top = std::max(y_top, max_y(e));
-    if (y_top == -kInf) y_top = y_safe;
-    y_top = std::min(y_top, y_safe);
-    // The profile plus allowance in the passes' direction; where it ends, the
-    // profile itself ends on the closing side of the material.
+// The profile plus allowance (G64's paraxial one) in the passes' direction,
+// and where the profile itself ends on the closing side of the material.
+std::vector<Elem> translated_profile(const Material& m, int d, V2& end) {
     std::vector<Elem> fp;
     for (const Elem& e : m.F) fp.push_back(translated(e, m.t));
-    V2 end = m.F.back().b;
+    end = m.F.back().b;
     if ((fp.back().b.x() - fp.front().a.x()) * d < 0) {
         std::reverse(fp.begin(), fp.end());
         for (Elem& e : fp) e = reversed(e);
         end = m.F.front().a;
     }
+    return fp;
+}
+
+// `fp` is the profile plus allowance in the passes' direction; with `strip`,
+// the pass goes on along the level from fp's end to `end`, the profile's.
+void contour_pass(Emit& em, const Material& m, const std::vector<Elem>& fp, V2 end, bool strip,
+                  int d, double c, double y_safe) {
+    double y_top = -kInf;
+    for (const Elem& e : m.M) y_top = std::max(y_top, max_y(e));
+    if (y_top == -kInf) y_top = y_safe;
+    y_top = std::min(y_top, y_safe);
     // Above the material at x, by the clearance: the way down runs in rapid
     // to there (in the air above the stock), then at feed.
     // (Only the crossings up to y_top count: max_y_in would also take the
@@ -342,7 +353,7 @@ void contour_pass(Emit& em, const Material& m, int d, double c, double y_safe) {
         // profile (issue 39 item 2: a bore's wall alone, %7300's H8 bore,
         // was climbed at feed and cut to size).
         const V2 ext(end.x(), em.cur.y());
-        if ((s.back().b - fp.back().b).norm() <= kUm && (end.x() - em.cur.x()) * d > kUm &&
+        if (strip && (s.back().b - fp.back().b).norm() <= kUm && (end.x() - em.cur.x()) * d > kUm &&
             !along_F(m, ext, V2(ext.x(), above(ext))))
             em.go(1, ext);
         em.go(1, V2(em.cur.x(), above(em.cur)));
@@ -383,7 +394,9 @@ void rough_passes(Emit& em, const Material& m, const std::vector<double>& ys, in
         }
     }
     if (first) return;
-    contour_pass(em, m, d, c, y_travel);
+    V2 end;
+    const std::vector<Elem> fp = translated_profile(m, d, end);
+    contour_pass(em, m, fp, end, true, d, c, y_travel);
     em.go(0, V2(em.cur.x(), y_travel));
     if (y_travel > s.y() + kUm) em.go(0, V2(s.x(), y_travel));
     em.go(0, s);
@@ -652,6 +665,40 @@ double enter_grooves(Emit& em, const G63Plan& p, double y, double xs, Runs& runs
     return end;
 }
 
+// The profile plus ER (G63's normal allowance) in the passes' direction: the
+// profile offset on the material's side as the radius compensation offsets a
+// contour (outside corners rounded, inside ones trimmed). False when an arc
+// is smaller than ER on its inside, where there is no such curve.
+bool offset_profile(const Material& m, int d, std::vector<Elem>& fp) {
+    std::vector<Elem> f;
+    for (const Elem& e : m.F)
+        if (length(e) > kTol) f.push_back(e);
+    if (f.empty()) return false;
+    if ((f.back().b.x() - f.front().a.x()) * d < 0) {
+        std::reverse(f.begin(), f.end());
+        for (Elem& e : f) e = reversed(e);
+    }
+    V2 tangent;
+    const V2 mid = midpoint(f.front());
+    closest(f.front(), mid, &tangent);
+    const int side = m.in_M(mid + 1e-4 * comp::normal(tangent, 1)) ? 1 : -1;
+    Elem first;
+    if (!comp::offset(f.front(), m.er, side, first)) return false;
+    std::vector<comp::Piece> path;
+    V2 from = first.a;
+    for (size_t i = 0; i + 1 < f.size(); ++i)
+        if (comp::join(f[i], from, f[i + 1], m.er, side, path, from) != 0) return false;
+    if (comp::finish(f.back(), from, m.er, side, path) != 0) return false;
+    V2 at = first.a;
+    for (const comp::Piece& pc : path) {
+        Elem e = line(at, pc.to);
+        if (pc.arc) e.arc = true, e.c = pc.c, e.sweep = pc.sweep;
+        if (length(e) > kTol) fp.push_back(e);
+        at = pc.to;
+    }
+    return !fp.empty();
+}
+
 // One pass at level y (§6.5 steps 5 and 6): in from the start line, along the level
 // and into the grooves it may enter, then out by the clearance and back over
 // the part plus ER.
@@ -692,6 +739,12 @@ Error g63(const Profile& fin, V2 tool, const G63Args& a, std::vector<Move>& out)
     em.go(0, p.D);
     bool first = true;
     for (double y : g63_levels(a, p, step)) g63_pass(em, p, y, first);
+    // [DECISION] (issue 39 item 5) As G64, a last pass along the profile plus
+    // ER over what the levels reached takes off the steps they leave on
+    // cones, arcs and flanks (%100's were left up to a depth of cut above).
+    std::vector<Elem> fp;
+    if (!first && p.m.er >= kUm && offset_profile(p.m, p.d, fp))
+        contour_pass(em, p.m, fp, V2(0, 0), false, p.d, p.c, p.D.y());
     em.go(0, V2(em.cur.x(), p.D.y()));
     em.go(0, p.D);
     return {};
