@@ -286,6 +286,12 @@ Error g66(V2 tool, const G66Args& a, std::vector<Move>& out) {
     if (width * (B.x() - A.x()) < 0) return {863, tr("the groove is narrower than the tool")};
     double slope = std::tan(a.ea * kDeg);
     auto bottom = [&](double x) { return Bt.y() + (x - Bt.x()) * slope; };
+    // More plunges than any groove needs: an input mistake, refused as a zero
+    // distance is (issue 40), before their count becomes an int.
+    constexpr double kMaxPlunges = 10000;
+    if (!(std::fabs(width) / step <= kMaxPlunges))
+        return {862, strf(tr("the distance between plunges makes more than %d plunges"),
+                          int(kMaxPlunges))};
     int n = int(std::ceil(std::fabs(width) / step - 1e-9));
     int dir = bottom(A.x()) < A.y() ? -1 : 1;  // plunge direction along y
     for (int i = 0; i <= n; ++i) {

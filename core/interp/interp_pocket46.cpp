@@ -559,6 +559,11 @@ bool Interpreter::p46_order(const Plan& p, int nu) {
                     strf(tr("the pocket bottom %s is not below the attack plane"), bottom.c_str()));
     if (c.clear < c.top - 1e-9)
         return fail(282, tr("the clearance plane ER is below the attack plane EH"));
+    // A step P so small that the depth takes more layers than any pocket
+    // needs is a bad P, as P0 is (issue 40): layers() would count past an int.
+    constexpr double kMaxLayers = 1000;
+    if (!((c.top - c.zb) / c.P <= kMaxLayers))
+        return fail(282, strf(tr("P of a G46 order makes more than %d layers"), int(kMaxLayers)));
     return p46_cut(d, nu, c);
 }
 
