@@ -1,10 +1,11 @@
 // The cycle sweep (issue 40): every canned cycle and every roughing and
 // pocket cycle of the lathe and the machining centre, from a template that
 // runs clean, with each of its numeric arguments set in turn to 0, a negative
-// value, 1e-9, 0.001 and 1e6 (1e-9 rounds to nothing in most words, 0.001 is
-// the smallest step they take). Each run must end at M02 or with a NUM error, within
-// the interpreter's move budget and a time budget; built with ASan and UBSan
-// (scripts/test), no sanitizer report either. Fuzzing found G45 with Q0
+// value, 1e-9, 0.001, 1e6 and 1e12 (1e-9 rounds to nothing in most words,
+// 0.001 is the smallest step they take, 1e12 is beyond any int). Each run
+// must end at M02 or with a NUM error, within the interpreter's move budget
+// and a time budget; built with ASan and UBSan (scripts/test), no sanitizer
+// report either. Fuzzing found G45 with Q0
 // dividing by zero; a sweep finds the same family everywhere, not by luck.
 //   cycle_sweep [-v]     -v: each run and its answer
 // SPDX-License-Identifier: GPL-3.0-or-later
@@ -47,7 +48,8 @@ const Value kValues[] = {{"0", "0"},
                          {"-1", "-1"},
                          {"1e-9", "1/1000/1000/1000"},
                          {"0.001", ".001"},  // the smallest step a word writes
-                         {"1e6", "1000*1000"}};
+                         {"1e6", "1000*1000"},
+                         {"1e12", "1000*1000*1000*1000"}};  // beyond any int
 
 const std::vector<std::pair<std::string, double>> kMillTools = {
     {"D1.R", 4}, {"D2.R", 4}, {"D3.R", 4}};
@@ -73,14 +75,14 @@ const Template kMillCycles[] = {
     // G46: the handbook's pocket with an island (seed 000 l.6538), its
     // header and its three orders.
     {"G46 pocket, island", "mill", kMillTools,
-     "%100\nN10 G46 NU0 NP1 {ED8} {Q5} {J.5} NR+ {LX25} {LY0}\nN100 G46 NU1\nN110 G1 X35 Y0\n"
+     "%100\nN10 G46 NU0 {NP1} {ED8} {Q5} {J.5} NR+ {LX25} {LY0}\nN100 G46 NU1\nN110 G1 X35 Y0\n"
      "N120 Y-15 EB5\nN130 X25\nN140 Y-20 EB5\nN150 X-15\nN160 G2 X-15 Y20 I-15 J0\n"
      "N170 G1 X25 EB5\nN180 Y15\nN190 X35 EB5\nN200 Y0\nN300 G46 NU2 LX15 LY0\nN310 G1 X15 Y5\n"
      "N320 Y-5\nN330 X-15\nN340 G2 X-15 Y5 I-15 J0\nN350 G1 X15\nN400 G46 NU9\n"
      "N510 T1 D1 M6\nN520 M3 M40 S1200\n"
      "N530 G46 NU10 NP1 G83 {Z-9.5} {P4} {Q1} {ER2} {EF.5} {F300}\n"
      "N600 T2 D2 M6\nN610 M3 M41 S1800\n"
-     "N620 G46 NU15 NP1 {Z-10} {P3} {ER1} {EH0} {EP250} {EQ350}\n"
+     "N620 G46 NU15 {NP1} {Z-10} {P3} {ER1} {EH0} {EP250} {EQ350}\n"
      "N700 T3 D3 M6\nN710 M3 M41 S2000\n"
      "N720 G46 NU20 NP1 {Z-10} {P10} {EH0} {ER2} {EI200} {EJ300} {J.2}\nN800 G Z150\nN810 M2\n"},
     // The drilling, boring and tapping cycles, and G31.
