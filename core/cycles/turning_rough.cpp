@@ -109,13 +109,13 @@ int cut_direction(const Material& m, const std::vector<double>& ys) {
     return 0;
 }
 
-// Levels y_top - k·step down to y_min, the last one exactly at y_min.
 // More passes than any roughing needs: a depth of cut too small for the
 // stock, refused (error 873, seed 000 l.13453 "P or R not programmed", the
 // number of a missing P or R) before the levels are counted; 10,000 passes
 // plan in a fraction of a second (issue 40: 250,000 took 17 s).
 constexpr double kMaxLevels = 10000;
 
+// Levels y_top - k·step down to y_min, the last one exactly at y_min.
 std::vector<double> levels(double y_top, double y_min, double step) {
     std::vector<double> ys;
     for (int k = 1;; ++k) {
