@@ -108,8 +108,9 @@ const Template kMillCycles[] = {
      MILL_START "N35 S200\nN40 G31 X30 Y30 {ER5} {Z-20} {K3} {P4} {F2} {EF1} {EC0}\n" MILL_END},
 };
 
-// The lathe's cycles: the handbook's %555 profile for G64 and G65 (seed 000
-// l.2511), %100 for G63, %2 for G66, the M20 thread for G33.
+// The lathe's cycles (G86 and G88 are not the lathe's: error 2): the
+// handbook's %555 profile for G64 and G65 (seed 000 l.2511), %100 for G63, %2
+// for G66, the M20 thread for G33.
 #define P555_PROFILE                                                                          \
     "%555\nN10 T1 D1 M6\nN20 G92 S2000\nN30 G X200 Z150\nN40 G96 S100 M3 M40\nN50 G79 N200\n" \
     "N100 X140 Z0\nN110 G2 X120 Z10 R10\nN120 G1 X60\nN130 Z20\nN140 X40 Z30\nN150 Z40\n"     \
