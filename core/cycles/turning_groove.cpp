@@ -297,6 +297,12 @@ Error g66(V2 tool, const G66Args& a, std::vector<Move>& out) {
         const double first = line_at(x), second = line_at(x - delta.x()) + delta.y();
         return dir < 0 ? std::max(first, second) : std::min(first, second);
     };
+    // More plunges than any groove needs: an input mistake, refused as a zero
+    // distance is (issue 40), before their count becomes an int.
+    constexpr double kMaxPlunges = 10000;
+    if (!(std::fabs(width) / step <= kMaxPlunges))
+        return {862, strf(tr("the distance between plunges makes more than %d plunges"),
+                          int(kMaxPlunges))};
     int n = int(std::ceil(std::fabs(width) / step - 1e-9));
     for (int i = 0; i <= n; ++i) {
         double x = n ? A.x() + width * i / n : A.x();

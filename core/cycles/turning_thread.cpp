@@ -34,6 +34,12 @@ Error g33_check(const G33Args& a) {
     if ((a.has_f && (a.f < 1 || !whole(a.f))) || n < 1 || !whole(n))
         return {837,
                 tr("the number of starts (F) and of passes (S, ES) must be whole and at least 1")};
+    // More passes than any thread needs: an input mistake, not hours of moves
+    // (issue 40, the cycle sweep's S1e6). 837 "inconsistent F or S value"
+    // (seed 000 l.13447), as S0 is.
+    constexpr double kMaxPasses = 10000;
+    if (n > kMaxPasses)
+        return {837, strf(tr("more than %d passes (S, ES) for one thread"), int(kMaxPasses))};
     if (a.has_q && a.q > a.p) return {881, tr("the last pass Q is deeper than the thread P")};
     if (std::fabs(a.ea) > 90) return {881, tr("EA must lie between -90 and 90 degrees")};
     if (a.radius_comp) return {27, tr("threading in radius compensation (G41/G42)")};

@@ -587,12 +587,8 @@ StepResult Interpreter::step() {
              strf(tr("more than %ld blocks executed: endless loop? (G79/G77)"), opt_.max_blocks));
         return StepResult::error;
     }
-    // The work done, not only the blocks: one cycle block makes many moves.
-    if (moves_ > 2 * opt_.max_blocks) {
-        fail(err::kBlockBudget,
-             strf(tr("more than %ld moves made: endless loop? (G79/G77)"), 2 * opt_.max_blocks));
-        return StepResult::error;
-    }
+    // The work done, not only the blocks: one cycle block makes many moves,
+    // and finish_move() stops the one that would pass the move budget.
     size_t depth = stack_.size();
     StepResult r = execute(block_);
     if (r == StepResult::error || ended_) return r;

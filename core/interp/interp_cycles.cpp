@@ -187,6 +187,12 @@ bool Interpreter::DrillRun::check_code() {
         return in.fail(881, tr("ES must be a whole number of pecks, 1 or more"));
     if (code == 31 && (!c.has_k || !c.has_p))
         return in.fail(883, tr("G31 needs the pitch (K) and the retract (P)"));
+    // A pitch of zero threads or taps at a feed of nothing, a retract of zero
+    // leaves the tool in the thread (issue 40): K as G33 refuses it, 835 (seed
+    // 000 l.13445); P "retract value too small", 833 (l.13443).
+    if ((code == 31 || (code == 84 && c.has_k)) && !(c.k > 0))
+        return in.fail(835, strf(tr("G%d: the pitch K must be more than 0"), code));
+    if (code == 31 && !(c.p > 0)) return in.fail(833, tr("G31: the retract P must be more than 0"));
     if (code == 31 && c.has_starts &&
         (c.starts < 1 || c.starts > 9 || c.starts != std::floor(c.starts)))
         return in.fail(884, tr("G31: the number of starts F must be 1 to 9"));

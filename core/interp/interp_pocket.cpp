@@ -116,6 +116,7 @@ struct Interpreter::Pocket45 {
     bool sizes();
     bool feeds();
     bool place(const Plan& p);
+    bool steps() const;
     bool go(int g, double x, double y, double to_z, double feed);
     bool run_contour(double off, double feed);
     std::vector<double> passes(double reach) const;
@@ -129,7 +130,7 @@ bool Interpreter::pocket(const Plan& p) {
     if (modal_.plane != 17) return fail(885, tr("G45 pockets are machined in the XY plane (G17)"));
     if (modal_.radcomp != 40) return fail(140, tr("G45 under radius compensation"));
     Pocket45 k{*this};
-    if (!k.words(p) || !k.sizes() || !k.feeds() || !k.place(p)) return false;
+    if (!k.words(p) || !k.sizes() || !k.feeds() || !k.place(p) || !k.steps()) return false;
 
     Modal saved = modal_;
     modal_.feed_mode = 94;
@@ -236,6 +237,32 @@ bool Interpreter::Pocket45::place(const Plan& p) {
         return in.fail(891, tr("G45: ER is the pocket bottom"));
     ccw = !(eg.has && std::lround(eg.v) == 2);
     d = half_small - R;
+    return true;
+}
+
+// The steps P and Q divide the depth and the width (passes(), layers()): a
+// step of zero, or one so small that the pocket takes more contours than any
+// pocket needs, is refused before a move. Error 881 "incompatible parameter
+// value" (seed 000 l.13458), the number G83 gives a zero peck: the handbook
+// has no number of its own for a zero step, 835 (seed 000 l.13445) is for a
+// signed one.
+bool Interpreter::Pocket45::steps() const {
+    for (const auto& [w, name] : {std::pair{&P, "P"}, std::pair{&Q, "Q"}})
+        if (w->has && !(w->v > 0))
+            return in.fail(881, strf(tr("%s0 in G45: a step of zero never reaches the end"), name));
+    // More contours than any pocket needs: an input mistake, not hours of moves.
+    constexpr double kMaxContours = 10000;
+    const double n_p = P.has ? std::ceil((top - zb) / P.v) : 1;
+    const double n_q = Q.has ? std::ceil(d / Q.v) + 1 : 1;
+    if (!(n_p <= kMaxContours))
+        return in.fail(
+            881, strf(tr("G45: the axial step P makes more than %d layers"), int(kMaxContours)));
+    if (!(n_q <= kMaxContours))
+        return in.fail(881, strf(tr("G45: the step-over Q makes more than %d contours a layer"),
+                                 int(kMaxContours)));
+    if (!(n_p * n_q <= kMaxContours))
+        return in.fail(
+            881, strf(tr("G45: the steps P and Q make more than %d contours"), int(kMaxContours)));
     return true;
 }
 

@@ -38,6 +38,13 @@ std::vector<double> layers(double top, double bottom, double P) {
     return zs;
 }
 
+// A word's value as an int, clamped first: NP, NU, NR or R written through an
+// L variable may be any double, and converting one beyond an int is undefined
+// (issue 40). The checks that follow refuse what is not the value written.
+int to_int(double v) {
+    return int(std::clamp(v, -1e9, 1e9));
+}
+
 struct Words {
     bool has[128] = {};
     double v[128] = {};
@@ -99,7 +106,7 @@ bool Interpreter::pocket46(const Plan& p) {
     if (!w.has[addrN('U')])
         return fail(268, tr("G46 needs NU (NU0 header, NU1-NU6 contours, NU9, NU10/15/20 orders)"));
     const double nuv = w.v[addrN('U')];
-    const int nu = int(nuv);
+    const int nu = to_int(nuv);
     const bool known = nuv == nu && (nu <= 6 || nu == 9 || nu == 10 || nu == 15 || nu == 20);
     if (!known)
         return fail(262, strf(tr("G46 NU%s: NU is 0-6, 9, 10, 15 or 20"), num(nuv).c_str()));
@@ -180,12 +187,12 @@ bool Interpreter::p46_header(const Plan& p, int) {
     for (int a = 0; a < kAxes; ++a) g59 = g59 || std::fabs(f.g59[size_t(a)]) > 1e-12;
     if (g59) return fail(275, tr("G46 NU0 with a G59 offset active"));
     p46::Def d;
-    d.np = int(w.v[addrN('P')]);
+    d.np = to_int(w.v[addrN('P')]);
     d.ed = w.v[addrE('D')];
     d.q = w.v[addr1('Q')];
     d.j = w.has[addr1('J')] ? w.v[addr1('J')] : 0;
-    d.nr = w.has[addrN('R')] ? int(w.v[addrN('R')]) : 1;
-    d.rot = w.has[addr1('R')] ? int(w.v[addr1('R')]) : 3;
+    d.nr = w.has[addrN('R')] ? to_int(w.v[addrN('R')]) : 1;
+    d.rot = w.has[addr1('R')] ? to_int(w.v[addr1('R')]) : 3;
     if (d.np <= 0 || d.np != w.v[addrN('P')] || d.ed <= 0 || d.q <= 0 || d.j < 0 ||
         (d.rot != 3 && d.rot != 4) || w.v[addr1('R')] != std::floor(w.v[addr1('R')]))
         return fail(282, tr("G46 NU0: NP a positive integer, ED and Q positive, J not negative, "
@@ -529,9 +536,10 @@ bool Interpreter::p46_order(const Plan& p, int nu) {
         w.has[p.cycle_words.word[i].a] = true,
         w.v[p.cycle_words.word[i].a] = p.cycle_words.word[i].v;
     if (!w.has[addrN('P')]) return fail(268, tr("a G46 order needs NP"));
-    auto it = p46_.defs.find(int(w.v[addrN('P')]));
+    const double np = w.v[addrN('P')];
+    auto it = np == to_int(np) ? p46_.defs.find(to_int(np)) : p46_.defs.end();
     if (it == p46_.defs.end())
-        return fail(270, strf(tr("pocket NP%d is not defined"), int(w.v[addrN('P')])));
+        return fail(270, strf(tr("pocket NP%s is not defined"), num(np).c_str()));
     const p46::Def& d = it->second;
     if (!p46_order_allowed(p, d)) return false;
     const size_t an = size_t(p46_axes(d.plane).an);
@@ -559,6 +567,11 @@ bool Interpreter::p46_order(const Plan& p, int nu) {
                     strf(tr("the pocket bottom %s is not below the attack plane"), bottom.c_str()));
     if (c.clear < c.top - 1e-9)
         return fail(282, tr("the clearance plane ER is below the attack plane EH"));
+    // A step P so small that the depth takes more layers than any pocket
+    // needs is a bad P, as P0 is (issue 40): layers() would count past an int.
+    constexpr double kMaxLayers = 1000;
+    if (!((c.top - c.zb) / c.P <= kMaxLayers))
+        return fail(282, strf(tr("P of a G46 order makes more than %d layers"), int(kMaxLayers)));
     return p46_cut(d, nu, c);
 }
 

@@ -418,7 +418,13 @@ std::string g66_swapped(const turning::G66Args& a, const comp::V2& tool) {
 bool Interpreter::turning_g66(const Plan& p) {
     turning::G66Args a;
     a.d_first = modal_.d;
-    a.d = int(cyc(p, addr1('D'), 0));
+    // D is a corrector number: one past the table was read outside it (issue
+    // 40, the cycle sweep's D1e6), refused as D300 is in any block (error 8).
+    const double dv = cyc(p, addr1('D'), 0);
+    if (!(dv <= m_.correctors))
+        return fail(
+            8, strf(tr("corrector D%d above D%d"), int(std::min(dv, 1e9)), int(m_.correctors)));
+    a.d = int(dv);
     if (a.d > 0 && a.d <= m_.correctors && modal_.d > 0) {
         const Corrector& c1 = corr_[size_t(modal_.d)];
         const Corrector& c2 = corr_[size_t(a.d)];

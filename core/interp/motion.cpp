@@ -397,6 +397,11 @@ bool Interpreter::linear(int g, const Axes& mach, bool g52, const std::bitset<kA
 
 // Books a move: the machine is there, the clock and the path advance, the sink hears.
 bool Interpreter::finish_move(MoveEvent& e, const Axes& mach, const Axes& prog, double seconds) {
+    // The move budget holds within a block too: one cycle block whose
+    // arguments ask for millions of passes stops here, not after them.
+    if (moves_ >= 2 * opt_.max_blocks)
+        return fail(err::kBlockBudget, strf(tr("more than %ld moves made: endless loop? (G79/G77)"),
+                                            2 * opt_.max_blocks));
     e.seconds = seconds;
     e.to_prog = prog;
     e.comp = comp_emitting_;

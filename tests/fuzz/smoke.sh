@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# A short fuzzing pass for CI: seeds from the golden programs and the handbook
-# corpus (or, for the key decoder, terminal key sequences; for the workshop's
-# setup files, the shipped setups and tests/fuzz/setups), then SECONDS of
-# mutation. Fails on any crash, leak or sanitizer report.
+# A short fuzzing pass for CI: seeds from the golden programs, the handbook
+# corpus and the inputs fuzzing once found (tests/fuzz/programs) (or, for the
+# key decoder, terminal key sequences; for the workshop's setup files, the
+# shipped setups and tests/fuzz/setups), then SECONDS of mutation. Fails on
+# any crash, leak or sanitizer report.
 #   smoke.sh FUZZ_BINARY [SECONDS] [programs|keys|setups]
 # SPDX-License-Identifier: GPL-3.0-or-later
 set -euo pipefail
@@ -23,7 +24,7 @@ elif [ "$kind" = setups ]; then
     # The shipped setup, the handbook's %555 blank and small bad files.
     cp "$root"/data/setups/*.setup "$root"/tests/workshop/*.setup "$here"/setups/*.setup "$corpus"/
 else
-    cp "$root"/tests/golden/programs/*.iso "$root"/data/demo/*.iso "$corpus"/
+    cp "$root"/tests/golden/programs/*.iso "$root"/data/demo/*.iso "$here"/programs/*.iso "$corpus"/
     [ -d "$root/tests/bad" ] && cp "$root"/tests/bad/*.iso "$corpus"/ 2>/dev/null || true
     [ -d "$root/../shared/programs" ] && cp "$root"/../shared/programs/*.iso "$corpus"/
 fi
