@@ -1,6 +1,7 @@
-// G33 threading cycle (turning.md §6.12): passes of decreasing (S) or constant
-// (ES) depth, a last pass Q, oblique infeed EB, taper EA, exit slope R and
-// multi-start F; and G38 chained threads (§6.13), one synchronised move a block.
+// G33 threading cycle (000:3194-3222; pupitre-iso(5), TURNING CYCLES): passes
+// of decreasing (S) or constant (ES) depth, a last pass Q, oblique infeed EB,
+// taper EA, exit slope R and multi-start F; and G38 chained threads
+// (000:3270-3294), one synchronised move a block.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <cmath>
 
@@ -21,7 +22,7 @@ bool whole(double v) {
     return std::fabs(v - std::round(v)) < 1e-9;
 }
 
-// Syntax and argument checks, in the order a block is read (§6.12 preconditions).
+// Syntax and argument checks, in the order a block is read (000:3194-3222).
 Error g33_check(const G33Args& a) {
     if (!a.has_x || !a.has_z || !a.has_p || !a.has_k)
         return {832, tr("G33 needs the end point X Z, the depth P and the lead K")};
@@ -42,7 +43,7 @@ Error g33_check(const G33Args& a) {
     return {};
 }
 
-// Cumulative depths of the passes (§6.12 step 2).
+// Cumulative depths of the passes (pupitre-iso(5), TURNING CYCLES).
 std::vector<double> depths(const G33Args& a) {
     std::vector<double> ds;
     double pr = a.p - (a.has_q ? a.q : 0);

@@ -74,7 +74,7 @@ class ProgramMemory {
     // A deep copy (the TEST mode's): programs that shared a text share its copy.
     ProgramMemory clone() const;
 
-    // G76+ H (program-flow.md §6.1): adds the empty program %number. nullptr if
+    // G76+ H (000:7020-7050): adds the empty program %number. nullptr if
     // a program with that number is in memory.
     const ProgramText* create(int number);
     // G76- H (§6.2): forgets program %number. The object stays alive, so a
