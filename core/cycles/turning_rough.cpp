@@ -34,8 +34,8 @@ std::vector<Elem> polyline(const std::vector<V2>& pts) {
     return es;
 }
 
-// The stock is written from the profile's start towards its end (the spec's
-// examples) or the other way round (the cabestan programs): true for the latter.
+// The stock is written from the profile's start towards its end (the
+// handbook's first examples) or the other way round (the cabestan programs): true for the latter.
 bool stock_reversed(const std::vector<V2>& b, const Profile& f) {
     V2 f0 = f.elems.front().a, fn = f.elems.back().b;
     return (b.front() - fn).norm() + (b.back() - f0).norm() <

@@ -75,7 +75,8 @@ Error g33(V2 tool, const G33Args& a, std::vector<Move>& out) {
     if (a.r >= std::fabs(len) - kUm) return {881, tr("the exit slope R is as long as the thread")};
     int ext = h > 0 ? 1 : -1;  // external thread: the depth goes down the level axis
     // The tool retracts to the line parallel to the crest through the start
-    // point: (r_S, z_E) of the spec for a cylindrical thread, and clear of a cone.
+    // point: the start's level at the thread's end for a cylindrical thread,
+    // and clear of a cone.
     auto clear = [&](double x) { return V2(x, crest(x) + h); };
     int starts = a.has_f ? int(std::lround(a.f)) : 1;
     double tan_eb = std::tan(a.eb * kDeg);

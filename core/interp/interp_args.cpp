@@ -263,7 +263,7 @@ bool Interpreter::Decoder::g46_arg(const Word& w) {
 }
 
 // One axis group: G78 P1 synchronises with itself. Each digit of P names a
-// group (errors.md §3.1: G78 P12345, G78 P3 -> 78).
+// group (000:13224: G78 P12345, G78 P3 -> 78).
 bool Interpreter::Decoder::g78_arg(const Word& w) {
     int iv;
     double v;
