@@ -1,7 +1,7 @@
 // The console: pupitre with no command. Opens the store, the machine and the
 // terminal, then runs the event loop: keys in, animation ticks, the screen
 // drawn from the pages. Nothing in the loop waits for long: a running
-// program advances a frame at a time (DESIGN §1).
+// program advances a frame at a time (ARCHITECTURE.md).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <poll.h>
 #include <unistd.h>

@@ -1,4 +1,4 @@
-// Key bindings are data (STYLE.md, ncmpcpp): a table of KEY ACTION [ARG]
+// Key bindings are data (ARCHITECTURE.md, Conventions; ncmpcpp): a table of KEY ACTION [ARG]
 // [@CONTEXT] lines, shipped in data/bindings.txt and overridable by the user's
 // $XDG_CONFIG_HOME/pupitre/bindings. Actions have names, a can_run() and a
 // help text; soft-key labels and the HELP page are generated from the table.

@@ -1,4 +1,4 @@
-// The batch commands of the pupitre executable (DESIGN §2.1).
+// The batch commands of the pupitre executable (pupitre(1), OPTIONS).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 #include <memory>
@@ -26,8 +26,8 @@ inline constexpr int kOk = 0, kProgramErrors = 1, kUsage = 64, kDataErr = 65, kN
                      kSoftware = 70, kCantCreate = 73, kIoErr = 74, kNoPerm = 77;
 
 // One default machine for every batch command and the console's first start
-// (CLARIFICATIONS 12.10): the lathe. A batch command never depends on what
-// the console used last.
+// is the lathe. A batch command never depends on what the console used last
+// (docs/decisions.md, The default machine is the lathe).
 inline constexpr const char* kDefaultMachine = "lathe";
 
 struct RunArgs {

@@ -210,8 +210,8 @@ int exercise(const ExerciseArgs& a) {
 
 namespace {
 
-// The table as a PDF through Cairo (CLARIFICATIONS 16: "a PDF through Cairo
-// if it comes cheaply").
+// The table as a PDF through Cairo, beside the HTML report (docs/decisions.md,
+// Exercises hide the truth).
 int report_pdf(const std::string& path, const std::string& title,
                const std::vector<store::Attempt>& attempts, const std::string& key,
                std::FILE* said) {

@@ -205,7 +205,8 @@ int plot(const PlotArgs& a) {
     if (shop) draw_workshop(*shop, in, mem, a.files.front(), path);
     default_machine_note(a.machine, in.has_errors() || crashed);
     // A run that fails before any move has nothing to draw: no file is left
-    // behind (CLARIFICATIONS 12.10). One that fails later draws what ran.
+    // behind (docs/decisions.md, A failed run still plots). One that
+    // fails later draws what ran.
     if (in.has_errors() && in.moves() == 0) {
         std::fputs(tr("pupitre: no drawing written: the program failed before its first move\n"),
                    stderr);

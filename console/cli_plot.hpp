@@ -1,5 +1,5 @@
 // pupitre plot: the toolpath of a dry run drawn as SVG, PNG or PDF (issue 7,
-// issue 12.11, DESIGN §2.1).
+// issue 12.11, pupitre(1), OPTIONS).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 #include <string>
@@ -22,7 +22,7 @@ struct PlotArgs {
 };
 
 // Runs the program to its end (or its first error) and writes the drawing; the
-// diagnostics go to stderr as `run` prints them. Exit codes as DESIGN §2.1:
+// diagnostics go to stderr as `run` prints them. Exit codes as pupitre(1), EXIT STATUS:
 // 0, 1 (the program has errors: what ran is drawn, the error marked), 64, 65,
 // 66, 73 (an output cannot be created), 74 (it cannot be written).
 int plot(const PlotArgs& a);

@@ -1,5 +1,5 @@
 // pupitre import / export / list / rm / history / restore, and the store of a
-// `run` or `check` given --db (DESIGN §2.1, §4).
+// `run` or `check` given --db (pupitre(1), OPTIONS and PROGRAM STORE).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <cerrno>
 #include <cstdio>

@@ -1,4 +1,4 @@
-// The ':' commands of the input line (DESIGN §2.5): every page and mode is
+// The ':' commands of the input line (pupitre(1), COMMANDS): every page and mode is
 // reachable by them, which is also how the end-to-end tests drive the console.
 // One small function per command, and at the end the table that names them.
 // SPDX-License-Identifier: GPL-3.0-or-later

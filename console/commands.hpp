@@ -1,4 +1,4 @@
-// The table of the ':' commands (DESIGN §2.5): one row per command, read by the
+// The table of the ':' commands (pupitre(1), COMMANDS): one row per command, read by the
 // dispatch (Session::command), the HELP page, completion and the man-page check
 // (tests/console/man_sync.py parses the rows in console/commands.cpp).
 // SPDX-License-Identifier: GPL-3.0-or-later

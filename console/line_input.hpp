@@ -1,4 +1,4 @@
-// The input line behind an interface (STYLE.md): readline through its callback
+// The input line behind an interface (ARCHITECTURE.md, Conventions): readline through its callback
 // interface in the console, a plain fake in the tests.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once

@@ -1,4 +1,4 @@
-// pupitre: entry point and command line (DESIGN §2.1).
+// pupitre: entry point and command line (pupitre(1), OPTIONS).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <CLI/CLI.hpp>
 #include <charconv>

@@ -1,6 +1,6 @@
 // The console's session: the simulated machine, the store, the page shown, the
 // input line and the key dispatch. No ncurses here, so the tests drive a
-// Session exactly as the terminal does (DESIGN §1, STYLE.md).
+// Session exactly as the terminal does (ARCHITECTURE.md).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 #include <functional>
@@ -156,7 +156,7 @@ class Session {
     // Completion of the word before the cursor: G/M codes and commands.
     std::vector<std::string> complete(std::string_view word) const;
 
-    // Where text typed on the input line goes (DESIGN §2.5): the page when it
+    // Where text typed on the input line goes (pupitre(1), COMMANDS): the page when it
     // takes text (editor, PREF, CORR, PARAM), else the mode. The prompt names it.
     enum class Target { edit, pref, corr, param, shop, imd, rns, inc, other };
     Target target() const;

@@ -29,7 +29,8 @@ bool is_origin(std::string_view n) {
 }
 
 // A number typed on a setting page. A French decimal comma (Z 1,5) is read
-// as a point (CLARIFICATIONS 12.3/12.5); `comma` says so, to echo it.
+// as a point (docs/decisions.md, A decimal comma on the setting pages); `comma`
+// says so, to echo it.
 bool parse_num(std::string_view s, double& v, bool* comma = nullptr) {
     while (!s.empty() && s.front() == ' ') s.remove_prefix(1);
     while (!s.empty() && s.back() == ' ') s.remove_suffix(1);
@@ -337,7 +338,7 @@ Effect Session::setting_text(std::string_view text) {
             touch(axis, v);
         else if (corr_cursor != sim_->corrector() && at_rest(*sim_).empty()) {
             // The tool touching is the one of the active corrector: measuring
-            // another asks first (CLARIFICATIONS 12.5; :measure never asks).
+            // another asks first (docs/decisions.md, :measure never asks).
             int d = corr_cursor;
             // TRANSLATORS: the corrector under the cursor, the active one, the first again.
             confirm(strf(tr("D%d is not the active corrector (D%d): measure D%d with this tool?"),

@@ -1,5 +1,5 @@
 // Two consoles on one store (issue 12.9): a classroom server, two terminals
-// of one operator (CLARIFICATIONS 12.9: the same machine state). Every half
+// of one operator (docs/decisions.md, Two consoles, one operator). Every half
 // second the console asks SQLite whether another connection committed
 // (PRAGMA data_version); if so it takes the other console's origins,
 // correctors and programs, and says what changed. A program open in EDIT

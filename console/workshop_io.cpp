@@ -81,7 +81,7 @@ std::string read_setup(const std::string& name, const MachineProfile& m, worksho
         std::ostringstream text;
         text << in.rdbuf();
         // An exercise's file is not a setup: its truth is for the student
-        // to find (CLARIFICATIONS 16: run --setup refuses it).
+        // to find (docs/decisions.md, Exercises hide the truth: run --setup refuses it).
         if (training::parse_exercise(text.str(), e).empty())
             return strf(tr("%s is an exercise: its setup is hidden (pupitre exercise %s starts "
                            "it)"),

@@ -1,4 +1,4 @@
-// Diagnostics: NUM error numbers with the place they come from (DESIGN §2.2).
+// Diagnostics: NUM error numbers with the place they come from (pupitre(1), DIAGNOSTICS).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 #include <string>
@@ -72,7 +72,7 @@ struct Diag {
 // program, line, N).
 Diag diag_of(const Error& e, Severity s = Severity::error);
 
-// "FILE:LINE[:COL]: N<n>: error <code>: <message>" (DESIGN §2.2): the column
+// "FILE:LINE[:COL]: N<n>: error <code>: <message>" (pupitre(1), DIAGNOSTICS): the column
 // of the word at fault when there is one, as GNU tools write it.
 std::string format_diag(const Diag& d);
 

@@ -1,6 +1,6 @@
 // The Canvas: a grid of character cells with logical styles, which pages draw
 // into (FTXUI's virtual screen). Only console/ turns it into ncurses calls; the
-// tests print it as text (DESIGN §2.4).
+// tests print it as text (pupitre(1), THE CONSOLE).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 #include <cstdint>

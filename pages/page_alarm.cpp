@@ -1,5 +1,5 @@
 // The ALARM page: the alarm in force with its NUM number, the manual's text
-// (spec/errors.tsv) and where it was raised; then the earlier alarms, newest
+// (data/errors.tsv) and where it was raised; then the earlier alarms, newest
 // first.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <algorithm>

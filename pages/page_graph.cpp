@@ -158,8 +158,8 @@ void draw_frame_marks(const GraphView& g, const ViewXf& xf, bool lathe, DotRaste
     }
 }
 
-// 150-158: the move was refused at the travel limit of an axis (DESIGN §3:
-// the X error is 150); it is drawn as the travel highlight, not as an alarm.
+// 150-158: the move was refused at the travel limit of an axis (pupitre-iso(5), DECISIONS:
+// the X travel error is 150); it is drawn as the travel highlight, not as an alarm.
 bool travel_error(int code) {
     return code >= 150 && code <= 158;
 }

@@ -1,5 +1,5 @@
 // The pages of the console: each renders the view into a rectangle of the
-// canvas (STYLE.md: pages are pure renderers). One file per page.
+// canvas (ARCHITECTURE.md, Conventions: pages are pure renderers). One file per page.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 #include <algorithm>

@@ -1,4 +1,4 @@
-// The screen layout (DESIGN §2.4): status line, page, message line, input line,
+// The screen layout (pupitre(1), THE CONSOLE): status line, page, message line, input line,
 // soft keys. The same on every terminal of at least 80x24; a bigger one gives
 // the page more room.
 // SPDX-License-Identifier: GPL-3.0-or-later
@@ -138,7 +138,7 @@ std::string fmt_axis(int axis, double v) {
 namespace {
 
 // Below 80x24 the layout cannot hold: one clear screen says so, and what
-// runs goes on (DESIGN §2.4).
+// runs goes on (pupitre(1), THE CONSOLE).
 void too_small(const View& v, Canvas& c) {
     const std::string lines[] = {
         tr("Terminal too small"),

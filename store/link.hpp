@@ -2,7 +2,7 @@
 // stored correctors and origins of the machine seeded into the interpreter, and
 // the program's writes to them (E50001-E55255, E6x000 PREF, E6x001 DEC1, E6x004
 // DEC3) kept afterwards, as NUM keeps E parameters across programs
-// (program-flow.md §9.2).
+// (000:7590-7649; pupitre-iso(5), E parameters).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 #include <map>

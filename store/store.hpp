@@ -1,4 +1,4 @@
-// The program store (DESIGN §4): one SQLite file holding the part programs with
+// The program store (pupitre(1), PROGRAM STORE): one SQLite file holding the part programs with
 // every revision, the tool correctors and origins of each machine with an audit
 // of their changes, the machine profiles, settings and the IMD history. Only
 // store/ includes sqlite3.h; this header is what the rest of pupitre sees.
@@ -31,7 +31,7 @@ enum class Fault {
 };
 int exit_code(Fault f);
 
-// Errors are values (STYLE.md). The message names the file and says what to do.
+// Errors are values (ARCHITECTURE.md, Conventions). The message names the file and says what to do.
 struct Error {
     Fault fault = Fault::none;
     std::string message;
@@ -120,7 +120,7 @@ struct Piece {
 
 // ---- machine values: correctors and origins ----
 
-// Values are named as --set names them (DESIGN §2.1): "D3.X", "D12.DL", "PREF.Z",
+// Values are named as --set names them (pupitre(1), OPTIONS): "D3.X", "D12.DL", "PREF.Z",
 // "DEC1.X", "DEC3.B", and held in the internal units of the E parameters: µm
 // (lathe X gauges and origins as radii, DX a diameter), 0.0001° for rotary axes,
 // the orientation code for C.

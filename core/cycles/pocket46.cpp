@@ -1,6 +1,7 @@
-// G46 pockets and facing (milling.md §7.2.4): region of the tool centre on a
-// line (exact for lines and arcs), zig-zag roughing, clean-up and finishing
-// contours by the radius-compensation offsets of core/comp.
+// G46 pockets and facing (pupitre-iso(5), DECISIONS, G46: what the seeds do not
+// say): region of the tool centre on a line (exact for lines and arcs), zig-zag
+// roughing, clean-up and finishing contours by the radius-compensation offsets
+// of core/comp.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/cycles/pocket46.hpp"
 

@@ -1,4 +1,4 @@
-// G46 pockets and facing with any contour (milling.md §7.2): the geometric
+// G46 pockets and facing with any contour (000:6078-6369; pupitre-iso(5), POCKETS): the geometric
 // definition and the planning of its toolpaths — zig-zag roughing with a
 // contour-parallel clean-up, finishing contours, plunge points. Pure plane
 // geometry (first and second axis of the plane), no interpreter state.

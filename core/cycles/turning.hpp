@@ -1,8 +1,9 @@
-// Turning cycles as functions from arguments to elementary moves (STYLE.md): G64
-// paraxial roughing, G65 groove roughing, G66 plunge roughing, G63 roughing with
-// grooves, G33 threading, G38 chained threading (turning.md §6). Pure geometry in
-// the lathe plane with abscissa Z and ordinate X as a radius (internal units); the
-// interpreter extracts profiles and stock from the program and emits the moves.
+// Turning cycles as functions from arguments to elementary moves
+// (ARCHITECTURE.md, Conventions): G64 paraxial roughing, G65 groove roughing,
+// G66 plunge roughing, G63 roughing with grooves, G33 threading, G38 chained
+// threading (pupitre-iso(5), TURNING CYCLES). Pure geometry in the lathe plane
+// with abscissa Z and ordinate X as a radius (internal units); the interpreter
+// extracts profiles and stock from the program and emits the moves.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 #include <string>
@@ -43,20 +44,22 @@ struct Profile {
 // (D above 255). After every roughing cycle the motion state is G00.
 
 // G64 N<a> N<b> [I..] [K..] P.. | R.. [F..], then the stock blocks until G80
-// (turning.md §6.3). `stock` lists the stock points in the order written.
+// (000:2434-2458; pupitre-iso(5), TURNING CYCLES). `stock` lists the stock
+// points in the order written.
 struct G64Args {
     double i = 0, k = 0;  // allowances along X (radius) and Z, signed
     bool has_p = false, has_r = false;
     double p = 0, r = 0;     // depth of cut: P along X (passes along Z), R along Z
     double clearance = 1.0;  // configuration item cycle_clearance, mm
     // Out: the allowance points into the part (a positive I on a bore); the
-    // passes cut it as written, into the part (§11 item 6, warning 1116).
+    // passes cut it as written, into the part (docs/decisions.md, Roughing allowances
+    // are signed; warning 1116).
     mutable bool allowance_inside = false;
 };
 Error g64(const Profile& finished, const std::vector<V2>& stock, V2 tool, const G64Args& a,
           std::vector<Move>& out);
 
-// G65 N<a> N<b> X.. | Z.. [I..] [K..] EA.. P.. | R.. [Q..] [EF..] [F..] (§6.4).
+// G65 N<a> N<b> X.. | Z.. [I..] [K..] EA.. P.. | R.. [Q..] [EF..] [F..] (000:2587-2612).
 struct G65Args {
     bool has_x = false, has_z = false;
     double x = 0, z = 0;  // end of the passes: Z with P (axial), X with R (frontal)
@@ -74,7 +77,7 @@ struct G65Args {
 Error g65(const Profile& finished, V2 tool, const G65Args& a, std::vector<Move>& out);
 
 // G63 N<a> N<b> X.. Z.. EX.. | EZ.. P.. | R.. [EA.. | EU.. EW..] [EB..] [EC..] [ER..]
-// [Q..] [EQ..] [EF..] (§6.5, 1040/1060).
+// [Q..] [EQ..] [EF..] (000:2634-2707, 1040/1060).
 struct G63Args {
     bool has_x = false, has_z = false;
     double x = 0, z = 0;  // start point D (radius, Z)
@@ -93,7 +96,7 @@ struct G63Args {
 };
 Error g63(const Profile& finished, V2 tool, const G63Args& a, std::vector<Move>& out);
 
-// G66 D.. X.. Z.. [EA..] P.. | R.. [EP..] [EF..] [F..] (§6.6). The moves are in the
+// G66 D.. X.. Z.. [EA..] P.. | R.. [EP..] [EF..] [F..] (000:2791-2840). The moves are in the
 // terms of the first corrector (the one active at the call); after the cycle the
 // second corrector `d` is active and the tool stands at (Z of B, X of A) in its
 // terms.
@@ -112,7 +115,7 @@ struct G66Args {
 };
 Error g66(V2 tool, const G66Args& a, std::vector<Move>& out);
 
-// G33 X.. Z.. K.. [EA..] [EB..] P.. [Q..] [R..] [F..] [S.. | ES..] (§6.12). The S of
+// G33 X.. Z.. K.. [EA..] [EB..] P.. [Q..] [R..] [F..] [S.. | ES..] (000:3194-3222). The S of
 // the block is a number of passes here, not a spindle speed.
 struct G33Args {
     bool has_x = false, has_z = false;
@@ -136,7 +139,7 @@ struct G33Args {
 };
 Error g33(V2 tool, const G33Args& a, std::vector<Move>& out);
 
-// G38 X.. Z.. [K..] (§6.13): one synchronised move per block, chained. `prev_k` is
+// G38 X.. Z.. [K..] (000:3270-3294): one synchronised move per block, chained. `prev_k` is
 // the lead of the previous G38 block (0 when this block starts a chain); the lead
 // used is k when given, else prev_k.
 struct G38Args {

@@ -15,7 +15,7 @@ using comp::Elem;
 using V2 = comp::V2;
 
 constexpr double kTol = 1e-9;  // coincidence of points, mm
-constexpr double kUm = 1e-6;   // the 1 µm of the spec
+constexpr double kUm = 1e-6;   // 1 µm, the internal resolution of lengths
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 Elem line(const V2& a, const V2& b);

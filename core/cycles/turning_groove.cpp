@@ -1,6 +1,7 @@
-// G65 groove roughing (turning.md §6.4): passes from the infeed line at angle EA
-// towards the programmed limit, inside the zone the finished profile closes; and
-// G66 plunge roughing (§6.6): plunges spread evenly between two correctors.
+// G65 groove roughing (000:2587-2612; pupitre-iso(5), TURNING CYCLES): passes
+// from the infeed line at angle EA towards the programmed limit, inside the
+// zone the finished profile closes; and G66 plunge roughing (000:2791-2840):
+// plunges spread evenly between two correctors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <algorithm>
 #include <cmath>
@@ -87,7 +88,7 @@ double lowest(const Material& m, double x0, double x1) {
     return y;
 }
 
-// G65 argument checks (§6.4 errors).
+// G65 argument checks (000:2587-2612; docs/decisions.md, Cycle argument errors).
 Error g65_check(const Profile& fin, const G65Args& a) {
     if ((a.has_p && a.has_r) || (a.has_x && a.has_z))
         return {889, tr("G65 takes P or R, and X or Z, not both")};
@@ -141,7 +142,7 @@ Error g65_frame(const G65Args& a, V2 tool, G65Plan& p) {
     return {};
 }
 
-// S outside the part; C, the first contact of the EA line (§6.4 step 1); the
+// S outside the part; C, the first contact of the EA line (pupitre-iso(5), TURNING CYCLES); the
 // levels go down to C or to the profile's lowest point before the limit.
 Error g65_contact(const G65Args& a, G65Plan& p) {
     const Material& m = p.m;
@@ -174,7 +175,7 @@ bool pass_start(const G65Plan& p, double y, V2& e) {
     return true;
 }
 
-// One pass at level y from e (§6.4 step 3): the infeed, along the level as far
+// One pass at level y from e (pupitre-iso(5), TURNING CYCLES): the infeed, along the level as far
 // as its retract stays clear, the retract and back to e.
 void g65_pass(G65Walk& w, const G65Plan& p, double y, V2 e) {
     const Material& m = p.m;
@@ -202,7 +203,8 @@ void g65_pass(G65Walk& w, const G65Plan& p, double y, V2 e) {
     w.prev = e;
 }
 
-// The levels from S down every P (R), the last one at the lowest level (§6.4 step 2).
+// The levels from S down every P (R), the last one at the lowest level
+// (pupitre-iso(5), TURNING CYCLES).
 void g65_passes(G65Walk& w, const G65Plan& p) {
     for (int k = 1;; ++k) {
         double y = p.s.y() - k * p.step;
@@ -215,7 +217,7 @@ void g65_passes(G65Walk& w, const G65Plan& p) {
     }
 }
 
-// Out: up to the start level, then to S (§6.4 step 4); where an overhang
+// Out: up to the start level, then to S (pupitre-iso(5), TURNING CYCLES); where an overhang
 // on the start side hides that way, back along the infeeds.
 void g65_out(G65Walk& w, const G65Plan& p) {
     Emit& em = w.em;
@@ -229,7 +231,7 @@ void g65_out(G65Walk& w, const G65Plan& p) {
     em.go(0, s);
 }
 
-// G66 argument checks (§6.6 errors).
+// G66 argument checks (000:2791-2840; docs/decisions.md, Cycle argument errors).
 Error g66_check(const G66Args& a) {
     if (a.has_p && a.has_r) return {889, tr("G66 takes P or R, not both")};
     if (!(a.has_p || a.has_r) || !a.has_x || !a.has_z)
@@ -251,10 +253,11 @@ Error g65(const Profile& fin, V2 tool, const G65Args& a, std::vector<Move>& out)
     if (Error e = g65_frame(a, tool, p)) return e;
     p.m.F = p.fr.to(fin.elems);
     p.m.translate(p.fr.to(V2(a.k, a.i)));
-    // The allowance as written (turning.md §11 item 6): pointing down the level
-    // axis it lies inside the part; the passes rough the translated profile and
-    // cut into it, the caller warns (1116). Along the passes a groove has walls
-    // facing both ways, so that component alone says nothing.
+    // The allowance as written (docs/decisions.md, Roughing allowances are
+    // signed): pointing down the level axis it lies inside the part; the passes
+    // rough the translated profile and cut into it, the caller warns (1116).
+    // Along the passes a groove has walls facing both ways, so that component
+    // alone says nothing.
     if (p.m.t.y() < -kUm) {
         a.allowance_inside = true;
         Profile moved;

@@ -1,6 +1,7 @@
-// G64 paraxial roughing (turning.md §6.3): passes parallel to Z (P) or X (R)
-// between the stock and the finished profile translated by the allowances; and
-// G63 roughing with grooves (§6.5), the same passes entering grooves.
+// G64 paraxial roughing (000:2434-2458; pupitre-iso(5), TURNING CYCLES): passes
+// parallel to Z (P) or X (R) between the stock and the finished profile
+// translated by the allowances; and G63 roughing with grooves (000:2634-2707),
+// the same passes entering grooves.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <algorithm>
 #include <cmath>
@@ -33,8 +34,8 @@ std::vector<Elem> polyline(const std::vector<V2>& pts) {
     return es;
 }
 
-// The stock is written from the profile's start towards its end (the spec's
-// examples) or the other way round (the cabestan programs): true for the latter.
+// The stock is written from the profile's start towards its end (the
+// handbook's first examples) or the other way round (the cabestan programs): true for the latter.
 bool stock_reversed(const std::vector<V2>& b, const Profile& f) {
     V2 f0 = f.elems.front().a, fn = f.elems.back().b;
     return (b.front() - fn).norm() + (b.back() - f0).norm() <
@@ -42,7 +43,7 @@ bool stock_reversed(const std::vector<V2>& b, const Profile& f) {
 }
 
 // The closed material region: stock, closing segment to the profile's end, the
-// profile backwards, closing segment to the stock's start (§6.3 step 2).
+// profile backwards, closing segment to the stock's start (pupitre-iso(5), TURNING CYCLES).
 void build_region(const std::vector<V2>& b, const Profile& f, Material& m) {
     for (const Elem& e : polyline(b)) {
         if ((e.b - e.a).norm() <= kTol) continue;
@@ -80,7 +81,8 @@ Material to_frame(const Material& m, const Frame& fr) {
     return f;
 }
 
-// One pass at level y from x_s (in air, c before the stock) to x_e (§6.3 step 4).
+// One pass at level y from x_s (in air, c before the stock) to x_e
+// (pupitre-iso(5), TURNING CYCLES).
 void pass(Emit& em, double y, double xs, double xe, int d, double c, bool first, double sy) {
     V2 start(xs - d * c, y);
     if (first) em.go(0, V2(start.x(), sy));  // from the tool: along the passes, then down
@@ -129,7 +131,7 @@ std::vector<double> levels(double y_top, double y_min, double step) {
     return ys;
 }
 // The arguments, the finished profile and the stock, in the order the NUM
-// checks them (§6.3 step 1): the first fault's error number, or 0.
+// checks them (pupitre-iso(5), TURNING CYCLES): the first fault's error number, or 0.
 Error check_g64(const Profile& fin, const std::vector<V2>& stock, const std::vector<Elem>& bs,
                 const G64Args& a) {
     if (!a.has_p && !a.has_r)
@@ -155,7 +157,7 @@ double along(const Frame& fr, const V2& p) {
     return fr.swap ? p.y() : p.x();
 }
 
-// Frame: passes along x; the material above the profile (§6.3 step 2). Its
+// Frame: passes along x; the material above the profile (pupitre-iso(5), TURNING CYCLES). Its
 // side is the mean normal of the profile towards the material, which is the
 // profile's chord turned a quarter towards the side M lies on; when that
 // says nothing along the level axis, the tool is on the side of the stock
@@ -213,7 +215,7 @@ Error pass_levels(const Material& m, const std::vector<V2>& stock, const Frame& 
 }
 
 // Cutting direction: from the stock into the material, towards the profile
-// (§6.3 step 4: from the end of the called profile towards its start, when
+// (pupitre-iso(5), TURNING CYCLES: from the end of the called profile towards its start, when
 // the stock is written from its start; the reverse when it is written from
 // its end, as in the cabestan programs).
 int pass_direction(const Material& m, const std::vector<double>& ys, const Profile& fin,
@@ -378,7 +380,7 @@ double travel_level(const Material& m, const V2& s, double c) {
 }
 
 // One pass per level, over the first interval met from the stock, up to where
-// the profile hides the material (§6.3 step 4); then back to the start point.
+// the profile hides the material (pupitre-iso(5), TURNING CYCLES); then back to the start point.
 void rough_passes(Emit& em, const Material& m, const std::vector<double>& ys, int d, double c) {
     const V2 s = em.cur;
     const double y_travel = travel_level(m, s, c);
@@ -430,11 +432,12 @@ Error g64(const Profile& fin, const std::vector<V2>& stock, V2 tool, const G64Ar
     std::vector<double> ys;
     if (Error e = pass_levels(m, stock, fr, step, ys)) return e;
     int d = pass_direction(m, ys, fin, bs, rev, fr);
-    // The allowance is a signed translation (turning.md §11 item 6): the NUM
-    // cannot know which side is material. Where it points into the part (a
-    // positive I on a bore, seed 000: "I et K peuvent être munies du signe −
-    // (sur-épaisseur pour un alésage)"), the passes rough the translated
-    // profile as written and cut into the part; the caller warns (1116).
+    // The allowance is a signed translation (docs/decisions.md, Roughing
+    // allowances are signed): the NUM cannot know which side is material. Where
+    // it points into the part (a positive I on a bore, seed 000: "I et K
+    // peuvent être munies du signe − (sur-épaisseur pour un alésage)"), the
+    // passes rough the translated profile as written and cut into the part; the
+    // caller warns (1116).
     if (m.t.y() < -kUm || m.t.x() * d > kUm) {
         a.allowance_inside = true;
         Profile moved;
@@ -451,7 +454,7 @@ Error g64(const Profile& fin, const std::vector<V2>& stock, V2 tool, const G64Ar
 }
 
 namespace {
-// G63 argument checks (§6.5 errors, the convention of spec/README.md item 37).
+// G63 argument checks (000:2634-2707; docs/decisions.md, Cycle argument errors).
 Error g63_check(const Profile& fin, const G63Args& a) {
     if (!a.has_p && !a.has_r)
         return {873, tr("G63 needs P (passes along Z) or R (passes along X)")};
@@ -562,7 +565,7 @@ Error g63_start_line(const Profile& fin, const G63Args& a, G63Plan& p) {
     return {};
 }
 
-// Stock: the start line, the start level, the end of the passes (§6.5 step 2);
+// Stock: the start line, the start level, the end of the passes (pupitre-iso(5), TURNING CYCLES);
 // the material it closes with the profile, offset by ER (step 3).
 Error g63_material(const Profile& fin, const G63Args& a, G63Plan& p) {
     std::vector<V2> b{p.fr.back(p.on_start_line(std::min(p.y_u, p.D.y()))), p.dr,
@@ -578,7 +581,7 @@ Error g63_material(const Profile& fin, const G63Args& a, G63Plan& p) {
     return {};
 }
 
-// The levels every P (R) from D down to EU (EW) or the profile (§6.5 step 4),
+// The levels every P (R) from D down to EU (EW) or the profile (pupitre-iso(5), TURNING CYCLES),
 // none closer than EQ to the one above it.
 // [DECISION] (issue 39 item 5) As G64's, a level at the height of each land
 // plus ER between the start and the last level, so that a land or a pocket's
@@ -631,7 +634,7 @@ bool level_runs(const G63Plan& p, double y, double& xs, Runs& runs) {
     return true;
 }
 
-// Enters the grooves of the level one after the other (§6.5: the passes enter
+// Enters the grooves of the level one after the other (000:2634-2707: the passes enter
 // grooves whose entry is no steeper than EB), over the land between them;
 // returns where the pass ends, `entered` when it went into a groove.
 double enter_grooves(Emit& em, const G63Plan& p, double y, double xs, Runs& runs, bool& entered) {
@@ -705,7 +708,7 @@ bool offset_profile(const Material& m, int d, std::vector<Elem>& fp) {
     return !fp.empty();
 }
 
-// One pass at level y (§6.5 steps 5 and 6): in from the start line, along the level
+// One pass at level y (pupitre-iso(5), TURNING CYCLES): in from the start line, along the level
 // and into the grooves it may enter, then out by the clearance and back over
 // the part plus ER.
 void g63_pass(Emit& em, const G63Plan& p, double y, bool& first) {

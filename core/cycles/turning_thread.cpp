@@ -1,6 +1,7 @@
-// G33 threading cycle (turning.md §6.12): passes of decreasing (S) or constant
-// (ES) depth, a last pass Q, oblique infeed EB, taper EA, exit slope R and
-// multi-start F; and G38 chained threads (§6.13), one synchronised move a block.
+// G33 threading cycle (000:3194-3222; pupitre-iso(5), TURNING CYCLES): passes
+// of decreasing (S) or constant (ES) depth, a last pass Q, oblique infeed EB,
+// taper EA, exit slope R and multi-start F; and G38 chained threads
+// (000:3270-3294), one synchronised move a block.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <cmath>
 
@@ -21,7 +22,7 @@ bool whole(double v) {
     return std::fabs(v - std::round(v)) < 1e-9;
 }
 
-// Syntax and argument checks, in the order a block is read (§6.12 preconditions).
+// Syntax and argument checks, in the order a block is read (000:3194-3222).
 Error g33_check(const G33Args& a) {
     if (!a.has_x || !a.has_z || !a.has_p || !a.has_k)
         return {832, tr("G33 needs the end point X Z, the depth P and the lead K")};
@@ -48,7 +49,7 @@ Error g33_check(const G33Args& a) {
     return {};
 }
 
-// Cumulative depths of the passes (§6.12 step 2).
+// Cumulative depths of the passes (pupitre-iso(5), TURNING CYCLES).
 std::vector<double> depths(const G33Args& a) {
     std::vector<double> ds;
     double pr = a.p - (a.has_q ? a.q : 0);
@@ -80,7 +81,8 @@ Error g33(V2 tool, const G33Args& a, std::vector<Move>& out) {
     if (a.r >= std::fabs(len) - kUm) return {881, tr("the exit slope R is as long as the thread")};
     int ext = h > 0 ? 1 : -1;  // external thread: the depth goes down the level axis
     // The tool retracts to the line parallel to the crest through the start
-    // point: (r_S, z_E) of the spec for a cylindrical thread, and clear of a cone.
+    // point: the start's level at the thread's end for a cylindrical thread,
+    // and clear of a cone.
     auto clear = [&](double x) { return V2(x, crest(x) + h); };
     int starts = a.has_f ? int(std::lround(a.f)) : 1;
     double tan_eb = std::tan(a.eb * kDeg);

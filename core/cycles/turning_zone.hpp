@@ -79,7 +79,7 @@ std::vector<std::pair<double, double>> free_runs(const Material& m, double Y, do
 // Where a pass along y = Y from x0 towards x1 (direction d) must stop so that
 // its retract, straight up, stays out of A: the first x whose vertical above
 // the line meets A (the point is "hidden"), or x1. What the profile hides from
-// the retract side is a groove, left to G65 (turning.md §6.3 item 5).
+// the retract side is a groove, left to G65 (000:2434-2458; pupitre-iso(5), TURNING CYCLES).
 double first_hidden(const Material& m, double Y, double x0, double x1, int d);
 // The part, in a frame where it lies below the profile: the profile closed by
 // two verticals down from its ends and a line far below (for winding numbers).

@@ -1,6 +1,6 @@
 // Tool radius compensation geometry (G41/G42): offset elements, the joints
 // between consecutive offset elements, and the checks that raise error 149
-// (turning.md §3.7, milling.md §4.4.2, S4 L756-758). Pure 2-D geometry in the
+// (000:3889-3938; pupitre-iso(5), TOOLS AND CORRECTORS, 004:756-758). Pure 2-D geometry in the
 // plane of the compensation, with Eigen.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once

@@ -1,6 +1,7 @@
 // The offset chain between program coordinates and the machine position of the
 // tool reference: mirror -> scale -> ED rotation -> G59 (scaled) -> DEC1 + PREF
-// (not in G53) + DEC3 -> tool gauge (DESIGN §3, milling.md §3.2, turning.md §2.4).
+// (not in G53) + DEC3 -> tool gauge (000:10681, 000:3982-4018, 000:292-299;
+// pupitre-iso(5), COORDINATES AND OFFSETS and DECISIONS, the offset chain).
 // Everything is in internal units: mm, lathe X as a radius, degrees.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once

@@ -24,10 +24,10 @@ inline V2 perp(const V2& v) {
     return V2(-v.y(), v.x());
 }
 
-// The lathe tool's nose orientation C0-C8 (turning.md §3.5, [DECISION]
-// table): the tool point P = nose centre + R·(sx, sz), {sx, sz} here; C0 puts
-// P at the centre. The interpreter's compensation and the workshop's true
-// tools read the same table.
+// The lathe tool's nose orientation C0-C8 (a table pupitre chose, the handbook's
+// figures being lost: pupitre-iso(5), TOOLS AND CORRECTORS): the tool point P =
+// nose centre + R·(sx, sz), {sx, sz} here; C0 puts P at the centre. The
+// interpreter's compensation and the workshop's true tools read the same table.
 inline constexpr int kNose[9][2] = {{0, 0}, {1, 1}, {1, -1}, {-1, -1}, {-1, 1},
                                     {0, 1}, {1, 0}, {0, -1}, {-1, 0}};
 

@@ -1,4 +1,4 @@
-// Kinematic models of the mill4 and mill5 (004:1588-1801; milling.md §9.3-9.4).
+// Kinematic models of the mill4 and mill5 (004:1588-1801; pupitre(1), MACHINE PROFILES).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/geometry/kinematics.hpp"
 

@@ -1,7 +1,8 @@
-// Four- and five-axis machining-centre kinematics (course notes 004 §5,
-// milling.md §9): the tool frame in the part frame from the axis positions
-// (forward) and the axis positions for a wanted tool frame (inverse), with
-// homogeneous transforms (Eigen::Isometry3d). Angles in degrees at the interface.
+// Four- and five-axis machining-centre kinematics (the course notes' §5,
+// 004:1436-2018; pupitre(1), MACHINE PROFILES): the tool frame in the part
+// frame from the axis positions (forward) and the axis positions for a wanted
+// tool frame (inverse), with homogeneous transforms (Eigen::Isometry3d). Angles
+// in degrees at the interface.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 #include <Eigen/Geometry>

@@ -1,10 +1,11 @@
-// Profile geometry programming (pgp.md §3-§8). Each block is classified by what
-// it fixes of its element; an entity of 2 or 3 blocks is solved by enumerating
+// Profile geometry programming (000:8358-8564, 000:13241-13279; pupitre-iso(5),
+// PROFILE GEOMETRY PROGRAMMING (PGP)). Each block is classified by what it
+// fixes of its element; an entity of 2 or 3 blocks is solved by enumerating
 // every geometric candidate (intersections, tangent lines and circles), keeping
 // those without a cusp at a tangency and with lines travelled forward, then
-// choosing with the discriminants of pgp.md §5. EB corners are cut afterwards,
-// when both elements are known. The elements and the corners themselves are
-// built in pgp_elements.cpp.
+// choosing with the discriminants pupitre chose (pupitre-iso(5), DECISIONS,
+// Discriminants of PGP). EB corners are cut afterwards, when both elements are
+// known. The elements and the corners themselves are built in pgp_elements.cpp.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/geometry/pgp.hpp"
 
@@ -282,7 +283,7 @@ struct Entity {
         return !c.sup[k].arc && x.end_axis >= 0 && along(a, c.sup[k].d, x.end_axis, x.end_val, b);
     }
 
-    // No cusp at a tangency (pgp.md §2 rule 2); lines are travelled forward.
+    // No cusp at a tangency (000:8405); lines are travelled forward.
     bool feasible(const Cand& c) const {
         for (int k = 0; k < n; ++k) {
             V2 a, b;
@@ -295,7 +296,8 @@ struct Entity {
         return true;
     }
 
-    // §5.1 on arc k: +1 when its centre is on the left of its chord; its sweep.
+    // E± on arc k (pupitre-iso(5), DECISIONS): +1 when its centre is on the
+    // left of its chord; its sweep.
     bool arc_side(const Cand& c, int k, int& side, double& sweep) const {
         V2 a, b;
         if (k < 0 || !c.sup[k].arc || !ends(c, k, a, b)) return false;
@@ -321,8 +323,9 @@ struct Entity {
         return out;
     }
 
-    // ES±: the order along the line (first met = -, pgp.md §5.2 and §5.4), or the
-    // side of the line of centres for two circles (§5.3).
+    // ES±: the order along the line (first met = -, pupitre-iso(5), DECISIONS,
+    // Discriminants of PGP), or the side of the line of centres for two
+    // circles.
     bool by_secant(const std::vector<Cand>& cs, Cand& pick, Error& f) const {
         if (disc[0] == 0)
             return failed(f, 114, tr("two intersections: choose one with ES+ or ES-"));
@@ -373,7 +376,8 @@ struct Entity {
         }
         pick = per[0];
         if (per.size() > 1) {
-            // ET± of the middle block (pgp.md §5.5) must designate one solution.
+            // ET± of the middle block (pupitre-iso(5), DECISIONS, Discriminants
+            // of PGP) must designate one solution.
             block = 1;
             if (disc[1] == 0)
                 return failed(

@@ -1,8 +1,9 @@
-// Profile geometry programming (PGP, pgp.md): lines by angle, circles by centre or
-// radius, tangency ET and secancy ES, the E+/E- discriminants, fillets EB+ and
-// chamfers EB-. The solver takes one block's element description at a time and
-// gives back resolved elements as soon as they are determined (look-ahead of at
-// most two blocks). Pure plane geometry in (abscissa, ordinate) of the plane,
+// Profile geometry programming (PGP, 000:8358-8564; pupitre-iso(5), PROFILE
+// GEOMETRY PROGRAMMING (PGP)): lines by angle, circles by centre or radius,
+// tangency ET and secancy ES, the E+/E- discriminants, fillets EB+ and chamfers
+// EB-. The solver takes one block's element description at a time and gives
+// back resolved elements as soon as they are determined (look-ahead of at most
+// two blocks). Pure plane geometry in (abscissa, ordinate) of the plane,
 // internal units (lathe X as a radius), no interpreter state.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once

@@ -1,6 +1,7 @@
-// PGP elements (pgp.md §3, §5.1, §7): the supporting geometry, what one block
-// fixes of its element (its syntax, its end, its centre or its radius), and the
-// fillets and chamfers EB cuts into a corner. The solver is pgp.cpp.
+// PGP elements (000:8358-8564; pupitre-iso(5), PROFILE GEOMETRY PROGRAMMING
+// (PGP)): the supporting geometry, what one block fixes of its element (its
+// syntax, its end, its centre or its radius), and the fillets and chamfers EB
+// cuts into a corner. The solver is pgp.cpp.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/geometry/pgp_elements.hpp"
 
@@ -204,7 +205,8 @@ bool syntax(const Spec& s, int pos, Error& f) {
 }
 
 // A complete arc from S to E by its radius: the centre on the left of the chord
-// with E+, on the right with E-, the smaller arc without (pgp.md §5.1).
+// with E+, on the right with E-, the smaller arc without (000:8388, 004:622;
+// pupitre-iso(5), DECISIONS, Arcs with R).
 bool arc_by_radius(const Spec& s, int sense, const V2& S, const V2& E, Elt& e, Error& f) {
     V2 ch = E - S;
     double d = ch.norm();

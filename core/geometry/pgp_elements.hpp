@@ -10,7 +10,7 @@
 
 namespace pupitre::pgp::detail {
 
-constexpr double kEq = 1e-6;         // mm: equal points (pgp.md §6.7)
+constexpr double kEq = 1e-6;         // mm: equal points (pupitre-iso(5), DECISIONS, Arcs with R)
 constexpr double kArcTol = 0.020;    // mm: start and end radii of an I J arc (004:626)
 constexpr double kChordTol = 0.001;  // mm: a chord up to 2R + 1 µm is a half circle
 constexpr double kOverTol = 0.001;   // mm: a tangency between two fully programmed elements

@@ -1,4 +1,4 @@
-// Spline curves G48/G06/G49 (turning.md §4.10, milling.md §5.7): a cubic spline
+// Spline curves G48/G06/G49 (000:4854-4888; pupitre-iso(5), SPLINES): a cubic spline
 // through the programmed points, parametrised by chord length, with the start
 // and end tangents when given (clamped) or free (natural) when their block is
 // empty. Executed as short lines within a chord tolerance.

@@ -34,7 +34,7 @@ struct Interpreter::Decoder {
     bool owned = false;  // the word being read belongs to `owner`
     std::bitset<kAddrCount> seen;
     bool g52_seen = false, axis_seen = false;
-    int pqr_sign_col = 0;  // a P± Q± R± met before any G16 (turning.md §1.7.2: error 3)
+    int pqr_sign_col = 0;  // a P± Q± R± met before any G16: error 3 (000:13178)
     int coded_modal = 0, coded_nonmodal = 0;
 
     bool bad(int code, std::string detail, int column = 0);

@@ -49,9 +49,10 @@ void Interpreter::power_on() {
     if (m_.dialect == Dialect::cazeneuve) caz_power_on();
 }
 
-// RAZ (turning.md §8.3): the run is abandoned, the modal state is the one of
-// M02, the alarms are acknowledged. Positions, origins, correctors and the L
-// variables stay: RAZ moves nothing and forgets no setting.
+// RAZ (000:1245, 000:13194; pupitre-iso(5), M02): the run is abandoned, the
+// modal state is the one of M02, the alarms are acknowledged. Positions,
+// origins, correctors and the L variables stay: RAZ moves nothing and forgets
+// no setting.
 void Interpreter::raz() {
     stack_.clear();
     main_ = nullptr;
@@ -219,7 +220,7 @@ double Interpreter::gauge_for(int d, int axis) const {
 }
 
 // The gauge of a new corrector is applied on an axis at the first block that
-// programs that axis (turning.md §3.4, 000:843-865; milling.md §4.3.3).
+// programs that axis (000:797, 000:843-865, 000:3813-3853; pupitre-iso(5), DECISIONS).
 void Interpreter::apply_corrector_gauges(const std::bitset<kAxes>& programmed) {
     // Under a new D the axes no block programs stay pending: every move asks.
     if ((gauge_pending_ & programmed).none()) return;
@@ -244,8 +245,9 @@ bool parse_double(std::string_view s, double& v) {
 }  // namespace
 
 namespace {
-// The fields of a corrector a setting names after "D<n>." (turning.md §3.3,
-// milling.md §4.3.1); a lathe's C, the nose orientation, is a whole number.
+// The fields of a corrector a setting names after "D<n>." (000:813-833,
+// 000:3763-3791; pupitre-iso(5), TOOLS AND CORRECTORS); a lathe's C, the nose
+// orientation, is a whole number.
 struct CorrField {
     std::string_view name;
     double Corrector::*v;
@@ -335,7 +337,7 @@ std::string Interpreter::set_corrector(std::string_view name, double value) {
         return m_.lathe ? tr("lathe correctors have X Z R C DX DZ")
                         : tr("mill correctors have L R DL DR and the end radius A");
     // The active corrector's new gauge applies at the next move of each of
-    // its axes (turning.md §3.4); a new radius at the next G41/G42.
+    // its axes (000:797, 000:843-865; pupitre-iso(5), DECISIONS); a new radius at the next G41/G42.
     if (int(d) == modal_.d) {
         if (m_.lathe)
             gauge_pending_.set(X), gauge_pending_.set(Z);
@@ -432,7 +434,7 @@ bool Interpreter::end_of_frame() {
         return false;
     }
     if (f.prog == main_ || stack_.size() == 1) {
-        // Error 20 only for the main program (DESIGN §3, spec README (b) 28).
+        // Error 20 only for the main program (pupitre-iso(5), DECISIONS, M02 in a called program).
         loc_.line = f.line - 1;
         loc_.n = -1;
         fail(20, strf(tr("end of program %%%d without M02"), main_->number));
@@ -483,7 +485,8 @@ void Interpreter::after_block(int lineno) {
 bool Interpreter::call(const Plan& p) {
     const ProgramText* target = stack_.back().prog;
     if (p.g77.level > 0) {
-        // G77 -i: the return block of level i (spec README (b) 24).
+        // G77 -i: the return block of level i (000:6921-6947; pupitre-iso(5),
+        // DECISIONS, G77 limits and levels).
         int depth = int(stack_.size()) - 1;
         if (p.g77.level > depth)
             return fail(26, strf(tr("G77 -%d: there is no call level %d (depth %d)"), p.g77.level,
@@ -605,7 +608,7 @@ StepResult Interpreter::run_to_end() {
     }
 }
 
-// ---- E parameters (program-flow.md §9, eparams.tsv) ----
+// ---- E parameters (000:7573-7735; pupitre-iso(5), E parameters) ----
 
 Error Interpreter::e_rights(int n, bool write) const {
     auto ro = [&]() -> Error {
@@ -648,7 +651,7 @@ double mm_of(int64_t v) {
 }  // namespace
 
 // An E access stops the block preparation: not under compensation (140) nor
-// after an incomplete profile block (96) (program-flow.md §9.4).
+// after an incomplete profile block (96) (000:7596-7642, 000:13236).
 Error Interpreter::e_access() const {
     if (modal_.radcomp != 40)
         return {140, tr("E parameter access under radius compensation (G41/G42)")};
@@ -663,7 +666,7 @@ Error Interpreter::read_e(int n, int64_t& out) {
     return {};
 }
 
-// What E<n> reads (program-flow.md §9, eparams.tsv): the machine's state for
+// What E<n> reads (000:7573-7735; pupitre-iso(5), E parameters): the machine's state for
 // the parameters that show it, else what was written or set.
 int64_t Interpreter::e_value(int n) const {
     const int x = (n / 1000) % 10, k = n % 1000, type = n / 10000;

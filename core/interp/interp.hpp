@@ -1,6 +1,7 @@
-// The NUM interpreter: executes one block per step() and reports what the machine
-// does to an injected MachineSink (STYLE.md: LinuxCNC canonical functions). The
-// simulated clock lives here; the console decides how fast to show it.
+// The NUM interpreter: executes one block per step() and reports what the
+// machine does to an injected MachineSink (ARCHITECTURE.md, Conventions:
+// LinuxCNC's canonical functions). The simulated clock lives here; the console
+// decides how fast to show it.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 #include <array>
@@ -30,9 +31,10 @@
 
 namespace pupitre {
 
-// One tool corrector (turning.md §3.3, milling.md §4.3.1). Lathe: X and Z gauges
-// (X a radius), nose radius R, orientation C, dynamic DX (a diameter) and DZ.
-// Mill: length L, radius R, end radius @, dynamic DL and DR.
+// One tool corrector (000:813-833, 000:3763-3791; pupitre-iso(5), TOOLS AND
+// CORRECTORS). Lathe: X and Z gauges (X a radius), nose radius R, orientation
+// C, dynamic DX (a diameter) and DZ. Mill: length L, radius R, end radius @,
+// dynamic DL and DR.
 struct Corrector {
     double x = 0, z = 0, r = 0, dx = 0, dz = 0;
     int c = 0;
@@ -115,10 +117,11 @@ class Interpreter final : private EAccess {
 
     // Power-on state: modal defaults, machine at home, origins from the profile.
     void power_on();
-    // Settings before a run (DESIGN §2.1 --set): PREF.X=-120.5, D1.R=4, L5=2, E80000=18000.
-    // Returns an empty string or the reason it is refused.
-    // `immediate` false (a setting changed while a program is in cycle): an
-    // origin takes effect at the next move, not on the position shown now.
+    // Settings before a run (pupitre(1), OPTIONS, --set): PREF.X=-120.5,
+    // D1.R=4, L5=2, E80000=18000. Returns an empty string or the reason it is
+    // refused. `immediate` false (a setting changed while a program is in
+    // cycle): an origin takes effect at the next move, not on the position
+    // shown now.
     std::string set(std::string_view name, double value, bool immediate = true);
     // The value of a setting as set() names it (mm, X of origins and gauges as
     // radii, DX a diameter); false for an unknown name.
@@ -240,7 +243,7 @@ class Interpreter final : private EAccess {
         OwnFeed& operator=(const OwnFeed&) = delete;
     };
 
-    // interp_caz*.cpp: the Cazeneuve HB CNC dialect (DESIGN §6,
+    // interp_caz*.cpp: the Cazeneuve HB CNC dialect (seed 003;
     // pupitre-cazeneuve(5)); its decoder reads a block into the same Plan.
     struct CazDecoder;
     struct CazState;
@@ -297,7 +300,7 @@ class Interpreter final : private EAccess {
     bool transfer_line(const ProgramText* target, size_t pos, size_t eol);
     bool transfer_field(const ProgramText* target, bool is_l, long n, size_t field, size_t width,
                         bool word_follows);
-    // interp_g76.cpp: G76+ / G76- (program-flow.md §6.1-6.4)
+    // interp_g76.cpp: G76+ / G76- (000:7018-7170; pupitre-iso(5), PROGRAM FLOW)
     bool edit_program(const Block& b, const Plan& p);
     bool edit_block_alone(const Block& b, char sign);
     bool edit_whole_program(const Block& b, const Plan& p);

@@ -1,4 +1,4 @@
-// Block decoding, the words a G function owns (turning.md §1.7.2): G4 F, G59
+// Block decoding, the words a G function owns (000:13178; pupitre-iso(5), WORDS): G4 F, G59
 // X.., G77 N.. N.. H.., the cycle words… one reader per function, picked by
 // its number.
 // SPDX-License-Identifier: GPL-3.0-or-later
@@ -93,7 +93,8 @@ bool Interpreter::Decoder::g59_arg(const Word& w) {
     if (axis_addr(w.addr, axis)) {
         if (!m.has(axis))
             return bad(1, strf(tr("axis %c is not on this machine"), letter(w)), w.col);
-        // G52/G59 X on a lathe is a radius (turning.md §2.8).
+        // G52/G59 X on a lathe is a radius (000:1234, 000:1364; pupitre-iso(5),
+        // COORDINATES AND OFFSETS).
         p.g59.axis.set(size_t(axis));
         p.g59.val[size_t(axis)] = is_rotary(axis) ? v : v * unit;
     } else if (w.addr == addrE('D')) {
@@ -251,7 +252,7 @@ bool Interpreter::Decoder::drill_arg(const Word& w) {
     return cyc_word(w);
 }
 
-// G46 NU.. (milling.md §7.2): NR+ / NR- keep their sign only.
+// G46 NU.. (000:6078-6369; pupitre-iso(5), POCKETS): NR+ / NR- keep their sign only.
 bool Interpreter::Decoder::g46_arg(const Word& w) {
     if (w.addr != addrN('R')) return cyc_word(w);
     if (w.v.kind != Operand::SignOnly && w.v.kind != Operand::Blank)
@@ -262,7 +263,7 @@ bool Interpreter::Decoder::g46_arg(const Word& w) {
 }
 
 // One axis group: G78 P1 synchronises with itself. Each digit of P names a
-// group (errors.md §3.1: G78 P12345, G78 P3 -> 78).
+// group (000:13224: G78 P12345, G78 P3 -> 78).
 bool Interpreter::Decoder::g78_arg(const Word& w) {
     int iv;
     double v;

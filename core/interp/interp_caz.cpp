@@ -1,4 +1,4 @@
-// The Cazeneuve HB CNC dialect (seed 003, chapter VI; DESIGN §6): its words
+// The Cazeneuve HB CNC dialect (seed 003, chapter VI; pupitre-cazeneuve(5)): its words
 // are read into the interpreter's Plan in internal units (mm, X a radius), and
 // the shared steps run it wherever the meaning is the NUM's. What differs is
 // here: micrometres, G alone, a blank axis word, T<position><corrector>,
@@ -260,14 +260,14 @@ void Interpreter::caz_power_on() {
 }
 
 // A block of this dialect: decoded into a Plan, then the NUM steps where the
-// meaning is the same (turning.md §1.7.5 order), with this controller's own
-// functions in their place.
-// G25 S: the spindle's limit under constant surface speed, in rev/min. The
-// thesis asks for a limit "programmed in the G96 block" and prints its word
-// "G434" (003:1124-1126); the one program that limits the speed writes
-// "N50 G25 S1500" in a block of its own just before its G96 (003:1571), and
-// 1500 rev/min is the S max its example 7 gives (003:1135-1147): G25 S is
-// that limit, as the NUM's G92 S. It takes the block's S, so not with G96.
+// meaning is the same (the order of pupitre-iso(5), MODAL STATE AND THE ORDER
+// INSIDE A BLOCK), with this controller's own functions in their place. G25 S:
+// the spindle's limit under constant surface speed, in rev/min. The thesis asks
+// for a limit "programmed in the G96 block" and prints its word "G434"
+// (003:1124-1126); the one program that limits the speed writes "N50 G25 S1500"
+// in a block of its own just before its G96 (003:1571), and 1500 rev/min is the
+// S max its example 7 gives (003:1135-1147): G25 S is that limit, as the NUM's
+// G92 S. It takes the block's S, so not with G96.
 bool Interpreter::caz_speed_limit(Plan& p) {
     if (!p.tech.has_s)
         return fail(caz::kFunction, tr("G25 needs S, the spindle limit in rev/min (003:1571)"));

@@ -3,7 +3,7 @@
 // the joint); the events of the blocks in between are held with it (GateSink) so
 // the trace keeps the order of execution. Entry: a line ending on the normal of
 // the next element; exit (G40): a line from the normal at the end of the last one
-// (turning.md §3.7, milling.md §4.4.2, S4 L756-757).
+// (000:3889-3938; pupitre-iso(5), TOOLS AND CORRECTORS, 004:756-757).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <cmath>
 #include <numbers>
@@ -33,7 +33,8 @@ bool Interpreter::comp_engage(int g) {
     comp_.a0 = m_.lathe ? Z : modal_.plane == 17 ? X : modal_.plane == 18 ? Z : Y;
     comp_.a1 = m_.lathe ? X : modal_.plane == 17 ? Y : modal_.plane == 18 ? X : Z;
     comp_.side = g == 41 ? 1 : -1;
-    // A mirror on one axis of the plane swaps left and right (milling.md §3.8).
+    // A mirror on one axis of the plane swaps left and right (000:10627-10646;
+    // pupitre-iso(5), COORDINATES AND OFFSETS).
     if (frames_.mirror[size_t(comp_.a0)] != frames_.mirror[size_t(comp_.a1)])
         comp_.side = -comp_.side;
     if (m_.lathe) {

@@ -1,6 +1,7 @@
 // Drilling, boring and tapping cycles G81-G89 (modal: each positioning block
 // drills a hole) and the single-point thread cycle G31, on the machining centre
-// and on the lathe axis (milling.md §6, turning.md §6.7-6.11). A cycle is a
+// and on the lathe axis (000:5330-5411, 000:2857-2869;
+// pupitre-iso(5), DRILLING, BORING AND TAPPING CYCLES). A cycle is a
 // sequence of elementary moves along the cycle axis.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <cmath>
@@ -80,7 +81,8 @@ bool Interpreter::cycle_words(const Plan& p, int code) {
             return fail(
                 835, strf(tr("%s must be positive in a cycle"), std::string(addr_name(a)).c_str()));
     }
-    // The bottom is the cycle-axis word, absolute also in G91 (milling.md §6.1.3).
+    // The bottom is the cycle-axis word, absolute also in G91 (000:5394-5411;
+    // pupitre-iso(5), DRILLING, BORING AND TAPPING CYCLES).
     if (p.to.axis[size_t(ax)]) {
         c.z =
             p.to.inc[size_t(ax)] ? prog_[size_t(ax)] + p.to.val[size_t(ax)] : p.to.val[size_t(ax)];
@@ -91,7 +93,7 @@ bool Interpreter::cycle_words(const Plan& p, int code) {
 }
 
 // One execution of a cycle at the block's position: the checks, the approach
-// and the machining of its code (milling.md §6.1.5).
+// and the machining of its code (000:6405-6439).
 struct Interpreter::DrillRun {
     using Step = bool (DrillRun::*)();
     static Step machining(int code);
@@ -238,7 +240,7 @@ bool Interpreter::DrillRun::dwell_bottom() {
     return move(1, c.z) && dwell(c.ef) && move(0, c.er);
 }
 
-// Peck law (milling.md §6.5, spec README (b) 18).
+// Peck law (pupitre-iso(5), DRILLING, BORING AND TAPPING CYCLES, a [DECISION]).
 bool Interpreter::DrillRun::pecks(std::vector<double>& out) {
     // More pecks than any hole needs: an input mistake, not hours of moves.
     constexpr double kMaxPecks = 100000;
@@ -369,7 +371,7 @@ bool Interpreter::DrillRun::bore_dwell() {
 }
 
 // G31 single-point threading: per start, feed synchronised at K per revolution,
-// retract P radially, back up to ER (milling.md §6.13 [impl]).
+// retract P radially, back up to ER (docs/decisions.md, G31 retract).
 bool Interpreter::DrillRun::thread() {
     Modal& modal = in.modal_;
     int starts = c.has_starts ? int(c.starts) : 1;
@@ -395,7 +397,7 @@ bool Interpreter::DrillRun::thread() {
     return true;
 }
 
-// A block while a cycle is active, or a G31 block (milling.md §6.1.4).
+// A block while a cycle is active, or a G31 block (000:5338-5344, 004:956).
 bool Interpreter::cycle_block(const Plan& p) {
     if (modal_.radcomp != 40) return fail(140, tr("machining cycle under radius compensation"));
     const int code = p.g[31] ? 31 : modal_.cycle;

@@ -1,4 +1,5 @@
-// Executing one block in the order of turning.md §1.7.5 / milling.md §2.4:
+// Executing one block in the order of pupitre-iso(5), MODAL STATE AND THE
+// ORDER INSIDE A BLOCK (000:497-498; docs/decisions.md, Execution order inside a block):
 // assignments, modal changes, avant M, motion, dwell, après M, then G77/G79.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <algorithm>
@@ -39,7 +40,7 @@ bool Interpreter::assign_e(const Operand& t, double v, int col) {
         n = int(nn);
     }
     if (std::fabs(v) > 9.2e18) return fail(92, tr("value too large for an E parameter"), col);
-    // A decimal stored into E is truncated toward zero (program-flow.md §9.3).
+    // A decimal stored into E is truncated toward zero (000:7651-7669; pupitre-iso(5), DECISIONS).
     if (Error e = write_e(n, int64_t(std::trunc(v)))) return fail(e.code, e.detail, col);
     return true;
 }
@@ -61,7 +62,8 @@ bool Interpreter::assign_all(const Block& b) {
 // do is their whole effect. Empty for an ordinary block.
 std::optional<StepResult> Interpreter::run_apart(const Block& b, const Plan& p) {
     if (g64_pending_) {
-        // G64's rough stock until G80, which runs the roughing first (turning.md §6.3).
+        // G64's rough stock until G80, which runs the roughing first
+        // (000:2434-2458; pupitre-iso(5), TURNING CYCLES).
         if (p.mode.cycle != 80) return turning_stock(p) ? StepResult::running : StepResult::error;
         if (!turning_g64_run()) return StepResult::error;
     }
@@ -74,7 +76,7 @@ std::optional<StepResult> Interpreter::run_apart(const Block& b, const Plan& p) 
     // G76+/G76- edit the program memory and do nothing else.
     if (p.g76.sign) return edit_program(b, p) ? StepResult::running : StepResult::error;
     // G46 blocks, and the contour blocks of a G46 definition, move nothing but
-    // what the pocket orders plan (milling.md §7.2).
+    // what the pocket orders plan (000:6078-6369; pupitre-iso(5), POCKETS).
     // A definition left open by a run that stopped inside it (RAZ, an error
     // before this point) is dropped: its blocks are no longer consecutive.
     if (p46_.defining && blocks_ != p46_.last_block + 1) p46_.defining = false;
@@ -96,7 +98,8 @@ bool Interpreter::block_allowed(const Plan& p) {
                 return fail(131,
                             strf(tr("a fillet or chamfer (EB) in a block with M0%d"), p.tech.m[i]));
     if (pgp_.pending()) {
-        // The held element needs the next blocks (pgp.md §6 item 5).
+        // The held element needs the next blocks (000:8358-8564;
+        // pupitre-iso(5), PROFILE GEOMETRY PROGRAMMING (PGP)).
         if (p.mode.plane >= 0 && p.mode.plane != modal_.plane)
             return fail(137, tr("plane change while a profile element is incomplete"));
         for (int i = 0; i < p.tech.nm; ++i)
@@ -107,7 +110,7 @@ bool Interpreter::block_allowed(const Plan& p) {
             if (p.tech.m[i] == 0 || p.tech.m[i] == 1)
                 return fail(78, strf(tr("G78 with a program stop M0%d"), p.tech.m[i]));
     }
-    // Radius compensation restrictions (turning.md §3.7, milling.md §4.4.2).
+    // Radius compensation restrictions (000:3889-3938; pupitre-iso(5), TOOLS AND CORRECTORS).
     bool comp = modal_.radcomp != 40;
     if (comp && p.g[16]) return fail(140, tr("G16 under radius compensation"));
     return true;
@@ -155,7 +158,8 @@ bool Interpreter::do_flow(const Block& b, const Plan& p) {
     return true;
 }
 
-// The steps of turning.md §1.7.5 in the order of block_steps() (codes.cpp;
+// The steps of that order (pupitre-iso(5), MODAL STATE AND THE ORDER INSIDE A
+// BLOCK) in the order of block_steps() (codes.cpp;
 // test BlockSteps.ExecuteFollowsTheCodesTable). Each step returns false once
 // it has reported the error that stops the block. The steps an ordinary move
 // does not need are called only when the block holds their words: this runs
@@ -206,7 +210,9 @@ bool Interpreter::modal_cycle(const Plan& p) {
         if (p.mode.cycle == 80) {
             cyc_ = CycleParams{};
         } else {
-            // Another cycle keeps Z, ER and EH and resets the rest (milling.md §6.1.3).
+            // Another cycle keeps Z, ER and EH and resets the rest
+            // (000:5394-5411; pupitre-iso(5), DRILLING, BORING AND TAPPING
+            // CYCLES).
             CycleParams keep;
             keep.has_z = cyc_.has_z, keep.z = cyc_.z;
             keep.has_er = cyc_.has_er, keep.er = cyc_.er;
@@ -236,12 +242,13 @@ bool Interpreter::modal_frame_switches(const Plan& p) {
 
 // G93-G95 and F.
 bool Interpreter::modal_feed(const Plan& p) {
-    // Feed: turning.md §5.2 wants F in the block that changes the unit, but seven
-    // handbook programs write "G95 G92 S1500" or "G80 G40 G95" and give F later
-    // (000:9661, 10037, 10186…): the unit changes, and a feed move made before a
-    // new F is the error (2, F being G95's mandatory argument).
-    // Warning 1115 at every G94/G95 block without F (seed 000: "doit être suivie
-    // obligatoirement de l'argument F"; CLARIFICATIONS 18).
+    // Feed: the handbook wants F in the block that changes the unit (000:2218,
+    // 000:2267), but seven handbook programs write "G95 G92 S1500" or "G80 G40
+    // G95" and give F later (000:9661, 10037, 10186…): the unit changes, and a
+    // feed move made before a new F is the error (2, F being G95's mandatory
+    // argument). Warning 1115 at every G94/G95 block without F (seed 000: "doit
+    // être suivie obligatoirement de l'argument F"; pupitre-iso(5), DECISIONS,
+    // changing the feed unit without F).
     if ((p.mode.feed == 94 || p.mode.feed == 95) && !p.tech.has_f && m_.strict)
         return fail(2,
                     strf(tr("G%d without F (seed 000: F is its mandatory argument)"), p.mode.feed));
@@ -300,7 +307,8 @@ void Interpreter::ed_axes(int& a0, int& a1) const {
     a1 = m_.lathe ? X : modal_.plane == 17 ? Y : modal_.plane == 18 ? X : Z;
 }
 
-// G59 offsets, modal per axis (turning.md §2.8); G91 G59 adds.
+// G59 offsets, modal per axis (000:1234, 000:1364; pupitre-iso(5), COORDINATES
+// AND OFFSETS); G91 G59 adds.
 bool Interpreter::modal_g59(const Plan& p) {
     if (p.g59.axis.none() && !p.g59.has_ed && p.g59.ijk.none())
         return fail(2, tr("G59 needs at least one axis offset"));
@@ -412,8 +420,9 @@ void Interpreter::warn_spindle_words(const Plan& p) {
                   fixed3(p.tech.s).c_str(), fixed3(p.tech.s).c_str(), std::lround(p.tech.s)));
 }
 
-// Warning 1111: an L read before anything set it reads 0 (CLARIFICATIONS 18:
-// set since power-on in the console; in this run or by --set in a batch run).
+// Warning 1111: an L read before anything set it reads 0 (set since
+// power-on in the console; in this run or by --set in a batch run:
+// docs/decisions.md, An L variable read before it is set).
 void Interpreter::report_unset_reads() {
     if (!l_.any_unset_read) return;
     l_.any_unset_read = false;
@@ -453,7 +462,8 @@ bool Interpreter::apply_spindle(const Plan& p) {
     if (modal_.spindle_mode == 97 && p.tech.has_s && m_.auto_range && !range_written &&
         modal_.range < 0 && !m_.ranges.empty() && modal_.s > 0) {
         // Automatic range: with none in force, the first range holding S
-        // (turning.md §5.12); a range the program chose stays in force.
+        // (000:1698-1726; pupitre-iso(5), FEEDS AND SPINDLE); a range the
+        // program chose stays in force.
         int found = -1;
         for (size_t i = 0; i < m_.ranges.size() && found < 0; ++i)
             if (modal_.s >= m_.ranges[i].min && modal_.s <= m_.ranges[i].max) found = int(i);
@@ -619,11 +629,12 @@ bool Interpreter::do_m_apres(const Plan& p, StepResult& r) {
     return true;
 }
 
-// M02 and RAZ (turning.md §8.3): modal groups to power-on, D0, M05, M09; G59, ED,
-// G51, G74, G75, G92 S, G92 R, EG cleared; PREF, T, correctors, E and L kept.
-// D0 takes effect at once: no program is left to carry a pending gauge to its
-// next move, and every page (OP, INFO, PREF, CORR) and the touch-off must see
-// the gauge the machine applies, which is D0's (none) [DECISION, pupitre(1)].
+// M02 and RAZ (000:1245, 000:13194; pupitre-iso(5), M02): modal groups to
+// power-on, D0, M05, M09; G59, ED, G51, G74, G75, G92 S, G92 R, EG cleared;
+// PREF, T, correctors, E and L kept. D0 takes effect at once: no program is
+// left to carry a pending gauge to its next move, and every page (OP, INFO,
+// PREF, CORR) and the touch-off must see the gauge the machine applies, which
+// is D0's (none) [DECISION, pupitre(1)].
 void Interpreter::reset_modal_m02() {
     Modal fresh;
     fresh.plane = m_.lathe ? 18 : 17;

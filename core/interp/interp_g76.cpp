@@ -1,8 +1,9 @@
 // The G76 family: G76 writes the current L/E values into a program's text;
 // G76+ and G76- are a program that creates and deletes programs, and inserts
-// and deletes blocks, in the program memory (program-flow.md §6, from the
-// handbook 000:7018-7170, 7679-7735). The changes live in memory: `pupitre run` never
-// writes its files, the console stores them as revisions.
+// and deletes blocks, in the program memory (from the handbook
+// 000:7018-7170, 7679-7735; pupitre-iso(5), PROGRAM FLOW). The changes live in
+// memory: `pupitre run` never writes its files, the console stores them as
+// revisions.
 //
 // Decisions where the handbook is silent (man/pupitre-iso.5, G76+ AND G76-):
 // - The pointed block N.. is line 0 of the +k count; G76+ inserts after line k,
@@ -48,7 +49,7 @@ bool listed_word(char c) {
 
 // G76 [H..] [N.. N..]: writes the current values of the L and E assignments that
 // open the blocks of a program (or a range of it) into their reserved fields of
-// at least 10 characters (000:7679-7735, program-flow.md §6.5). The text keeps its
+// at least 10 characters (000:7679-7735, pupitre-iso(5), PROGRAM FLOW). The text keeps its
 // length, so labels and positions stay valid.
 bool Interpreter::transfer(const Plan& p) {
     const ProgramText* target = stack_.back().prog;

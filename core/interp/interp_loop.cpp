@@ -1,4 +1,4 @@
-// The endless-loop guard (issue 14; CLARIFICATIONS "Speed and bounded work"):
+// The endless-loop guard (issue 14; docs/decisions.md, The endless-loop guard):
 // at each backward G79 jump the interpreter takes a 128-bit digest of its
 // whole state — where it reads (every frame of the call stack), the L and E
 // variables written, the modal state, the position and the frames, the

@@ -1,8 +1,9 @@
 // Profile geometry programming in the interpreter: blocks with EA, EB, ES, ET,
-// E± or an incomplete circle go to the PGP solver (core/geometry/pgp.cpp), which gives back
-// lines and arcs once their entity is determined; those are run like programmed
-// elements (through radius compensation when it is on). The events of the blocks
-// met meanwhile are held with them (pgp.md §6; 000:8358-8564).
+// E± or an incomplete circle go to the PGP solver (core/geometry/pgp.cpp),
+// which gives back lines and arcs once their entity is determined; those are
+// run like programmed elements (through radius compensation when it is on). The
+// events of the blocks met meanwhile are held with them (pupitre-iso(5),
+// PROFILE GEOMETRY PROGRAMMING (PGP); 000:8358-8564).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <cmath>
 
@@ -26,7 +27,8 @@ void Interpreter::plane_axes(int& a0, int& a1) const {
 bool Interpreter::pgp_wanted(const Plan& p) const {
     if (p.pgp.any || pgp_.pending()) return true;
     if (modal_.motion != 2 && modal_.motion != 3) return false;
-    // An incomplete circle: PGP completes it from the next block (pgp.md §3).
+    // An incomplete circle: PGP completes it from the next block
+    // (000:8358-8564; pupitre-iso(5), PROFILE GEOMETRY PROGRAMMING (PGP)).
     int a0, a1;
     plane_axes(a0, a1);
     bool words = p.to.axis[size_t(a0)] || p.to.axis[size_t(a1)] || p.to.ijk.any() || p.to.has_r;

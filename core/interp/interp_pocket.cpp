@@ -1,5 +1,5 @@
 // G45 simple pockets: circular, oblong, rectangular with corner fillets
-// (milling.md §7.1, 000:5943-6076): roughing by layers P and contours Q from the
+// (000:5943-6076; pupitre-iso(5), POCKETS): roughing by layers P and contours Q from the
 // centre outwards, floor finishing by I, wall finishing by J.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <cmath>

@@ -1,4 +1,4 @@
-// G46 pockets and facing with any contour (milling.md §7.2, 000:6078-6369):
+// G46 pockets and facing with any contour (000:6078-6369; pupitre-iso(5), POCKETS):
 // the geometric definition (NU0 header, NU1-NU6 contours, NU9) is read block by
 // block without moving; the orders NU10 (drilling at the plunge points), NU15
 // (roughing) and NU20 (finishing) turn it into elementary moves. The plane
@@ -74,21 +74,21 @@ std::string centre_name(int a) {
 // changed between pocket definition and machining" (000:13340, 13347, 13349)
 // show that it runs in any plane, and the drilling cycles NU10 uses are defined
 // in G17 "pour les autres plans : permuter" (004:918-920, 950). pupitre permutes
-// the axes as for circles and cycles (milling.md §5.1, 000:4650):
+// the axes as for circles and cycles (000:4650):
 //   plane   first second normal   contour centres   bottom ER EH   G16
 //   G17       X     Y      Z           I J              Z          R+
 //   G18       Z     X      Y           K I              Y          Q+
 //   G19       Y     Z      X           J K              X          P+
 // so a pocket drawn in G18 is the same contour as in G17 turned onto the ZX
-// plane (circles seen from +Y, milling.md §2.2). LX LY (start and plunge point,
-// finishing start) and EX EY (end of roughing) are fixed words: they are the
-// first and second coordinates of the plane in its own order (in G18, LX is the
-// Z and LY the X). The bottom of the orders NU10, NU15 and NU20 (the "Z.." of
-// 000:6281-6359) is the word of the normal axis, as the hole bottom of G81-G89:
-// Y in G18, X in G19; a plane coordinate there (Z in G18) is error 267 as X or
-// Y is in G17. ER and EH are coordinates on the normal axis, "up" towards the
-// spindle: the tool must point along the positive normal (G16 R+, Q+, P+),
-// otherwise 271.
+// plane (circles seen from +Y, 000:4312-4316; pupitre-iso(5), MOTION). LX LY
+// (start and plunge point, finishing start) and EX EY (end of roughing) are
+// fixed words: they are the first and second coordinates of the plane in its
+// own order (in G18, LX is the Z and LY the X). The bottom of the orders NU10,
+// NU15 and NU20 (the "Z.." of 000:6281-6359) is the word of the normal axis, as
+// the hole bottom of G81-G89: Y in G18, X in G19; a plane coordinate there (Z
+// in G18) is error 267 as X or Y is in G17. ER and EH are coordinates on the
+// normal axis, "up" towards the spindle: the tool must point along the positive
+// normal (G16 R+, Q+, P+), otherwise 271.
 Interpreter::P46Axes Interpreter::p46_axes(int plane) {
     if (plane == 18) return {Z, X, Y};
     if (plane == 19) return {Y, Z, X};
@@ -269,8 +269,9 @@ bool Interpreter::p46_contour_start(const Plan& p, const P46Axes& ax, int motion
     return true;
 }
 
-// One element of the contour, solved by the PGP solver (pgp.md), which may
-// hold it until the next element fixes its end.
+// One element of the contour, solved by the PGP solver (pupitre-iso(5), PROFILE
+// GEOMETRY PROGRAMMING (PGP)), which may hold it until the next element fixes
+// its end.
 bool Interpreter::p46_contour_elem(const Plan& p, const P46Axes& ax, int motion, p46::V2 t) {
     const size_t a0 = size_t(ax.a0), a1 = size_t(ax.a1);
     ++p46_.blocks;
@@ -382,7 +383,7 @@ bool Interpreter::p46_emit(const P46Axes& ax, const std::vector<p46::Run>& runs,
                    r1 = (pc.to - pc.c).norm();
             if (std::fabs(pc.sweep) < 1e-12) continue;
             // Counter-clockwise from the first axis towards the second is G3 in
-            // every plane (milling.md §2.2).
+            // every plane (000:4312-4316; pupitre-iso(5), MOTION).
             if (!emit_arc(pc.sweep > 0 ? 3 : 2, t, ax.a0, ax.a1, pc.c.x(), pc.c.y(), pc.sweep, r0,
                           r1, -1))
                 return false;

@@ -1,5 +1,5 @@
 // G48 (define a spline from point blocks), G06 (run it from the current point),
-// G49 (delete it): turning.md §4.10, milling.md §5.7.
+// G49 (delete it): 000:4854-4888; pupitre-iso(5), SPLINES.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/i18n.hpp"
 #include "core/interp/plan.hpp"

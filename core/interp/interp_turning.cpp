@@ -1,4 +1,4 @@
-// The turning cycles in the interpreter (turning.md §6): the finished profile is
+// The turning cycles in the interpreter (pupitre-iso(5), TURNING CYCLES): the finished profile is
 // read from its blocks N<a>..N<b> (PGP included, without running them), the rough
 // stock of G64 from the blocks up to G80, and the moves the cycle functions of
 // core/cycles/turning.cpp return are run like programmed ones.
@@ -452,7 +452,7 @@ bool Interpreter::turning_g66(const Plan& p) {
     if (opt_.on_g66) opt_.on_g66(tool, a, moves);
     if (!turning_emit_ef(p, moves)) return false;
     // The second corrector is active afterwards; the tool has not moved
-    // (turning.md §6.6).
+    // (000:2791-2840; pupitre-iso(5), TURNING CYCLES).
     modal_.d = a.d;
     frames_.gauge[X] = gauge_for(a.d, X);
     frames_.gauge[Z] = gauge_for(a.d, Z);

@@ -1,6 +1,6 @@
 // Block decoding: words to a Plan (which G owns which word, units, lathe
 // diameters): the value of a word, the G words and the default meaning of each
-// address (turning.md §1.4, §1.7; milling.md §1). The words a G function owns
+// address (000:362-500, 000:510-587; pupitre-iso(5), WORDS). The words a G function owns
 // are read in interp_args.cpp.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <array>
@@ -200,7 +200,7 @@ bool Interpreter::variable_value(const Word& w, double& out) {
 }
 
 // Words are scanned left to right. A G function with arguments owns the words that
-// follow it while they are in its argument set (turning.md §1.7.2 parser model);
+// follow it while they are in its argument set (000:13178; pupitre-iso(5), WORDS);
 // the other words take their default meaning. G90/G91 act positionally.
 bool Interpreter::decode(const Block& b, Plan& p) {
     Decoder d(*this, p, b);
@@ -283,8 +283,8 @@ bool Interpreter::Decoder::finish() {
     if (p.g[16] && p.g16.axis < 0 && pqr_sign_col)
         return bad(3, tr("the argument of G16 must follow it (G16 R+)"), pqr_sign_col);
     if (p.g[78] && !p.flow.g78_p) return bad(2, tr("G78 needs P (the axis groups to synchronise)"));
-    // milling.md §8.6 (impl): the axis values after EM+/EM- are the part's
-    // extremes for the graphic display, not a move.
+    // The axis values after EM+/EM- are the part's extremes for the graphic
+    // display, not a move (docs/decisions.md, EM- and EM+).
     if (p.to.em) {
         p.to.axis.reset();
         p.to.inc.reset();
@@ -413,7 +413,8 @@ bool Interpreter::Decoder::axis_word(const Word& w) {
     if (is_rotary(axis)) {
         p.to.val[size_t(axis)] = v;
     } else if (axis == X && lathe) {
-        // Absolute X is a diameter; incremental X and G52 X are radii (DESIGN §3).
+        // Absolute X is a diameter; incremental X and G52 X are radii
+        // (pupitre-iso(5), UNITS AND THE LATHE X AXIS).
         bool as_diam = diam && !inc && !g52_seen;
         p.to.val[size_t(axis)] = as_diam ? v * unit / 2 : v * unit;
     } else {
@@ -550,7 +551,7 @@ bool Interpreter::Decoder::cycle_or_pgp(const Word& w) {
 }
 
 // EA EB ES ET E±: profile geometry; ES± ET± carry the discriminant as their
-// sign (pgp.md §2).
+// sign (000:8378-8388; pupitre-iso(5), PROFILE GEOMETRY PROGRAMMING (PGP)).
 bool Interpreter::Decoder::pgp_word(const Word& w) {
     p.pgp.any = true;
     double v;
@@ -592,7 +593,7 @@ bool Interpreter::Decoder::cyc_word(const Word& w) {
     return true;
 }
 
-// G29: the surface normal P Q R (milling.md §4.6).
+// G29: the surface normal P Q R (000:3545, 004:697-699; pupitre-iso(5), G29).
 bool Interpreter::Decoder::g29_normal(const Word& w) {
     double v;
     if (!value(w, v)) return false;

@@ -36,7 +36,7 @@ inline constexpr int kHbCnc3 = 3, kHbCnc2 = 2;
 struct MachineProfile {
     std::string name;
     std::string description;
-    Dialect dialect = Dialect::num;  // the controller's language (DESIGN §6)
+    Dialect dialect = Dialect::num;  // the controller's language (pupitre-cazeneuve(5))
     bool lathe = false;
     int model = 1060;         // 1020, 1040 or 1060; kHbCnc3 or kHbCnc2 (the Cazeneuve)
     bool x_diameter = true;   // lathe: X programmed as a diameter
@@ -59,7 +59,7 @@ struct MachineProfile {
     // Part-program memory in kilobytes: G76+ may not grow the programs in memory
     // beyond it (error 36). Files loaded larger than it still run.
     double program_memory_kb = 256;
-    // 4/5 axes (milling.md §9): "table" (B table, mill4) or "table-head" (C table and
+    // 4/5 axes (004:1436-2018): "table" (B table, mill4) or "table-head" (C table and
     // B head, mill5), with the constants L_X, L_Y, L_Z of the course notes.
     std::string kinematics;
     double kin_lx = 0, kin_ly = 0, kin_lz = 0;

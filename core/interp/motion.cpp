@@ -80,7 +80,8 @@ double Interpreter::feed_time(double len, double xa, double xb) {
         double f = std::min(modal_.feed * unit, m_.max_feed);
         return len / f * 60.0;
     }
-    // G95: feed per revolution; under G96 the speed follows X (turning.md §5.8).
+    // G95: feed per revolution; under G96 the speed follows X (000:1538-1551;
+    // pupitre-iso(5), FEEDS AND SPINDLE).
     double per_rev = modal_.feed * unit;
     if (modal_.spindle_mode != 96) {
         double n = spindle_at(xa);
@@ -152,8 +153,8 @@ inline Axes Interpreter::target_of(const Target& to) const {
     return target;
 }
 
-// The motion of a block (turning.md §1.7.5, step 4): a cycle, a profile
-// element or a move.
+// The motion of a block (pupitre-iso(5), MODAL STATE AND THE ORDER INSIDE A
+// BLOCK, the motion): a cycle, a profile element or a move.
 bool Interpreter::do_motion(const Plan& p) {
     if (!motion_allowed(p)) return false;
     if (std::optional<bool> done = motion_family(p)) return *done;
@@ -271,7 +272,8 @@ inline bool Interpreter::g52_move(const Plan& p) {
         if (p.to.axis[a]) mach[a] = p.to.val[a];
     if (!check_travel(mach)) return false;
     if (!linear(modal_.motion, mach, true, p.to.axis)) return false;
-    // G96 starts again from the recomputed program X (turning.md §5.8).
+    // G96 starts again from the recomputed program X (000:1538-1551;
+    // pupitre-iso(5), FEEDS AND SPINDLE).
     modal_.css_x0 = modal_.css_pos0 = prog_[X];
     return true;
 }
@@ -292,7 +294,7 @@ inline bool Interpreter::comp_line(const Target& to, const Axes& target) {
 }
 
 // A straight G0/G1 move without compensation; R- stops one tool radius short
-// of the point, R+ beyond it (milling.md §4.5).
+// of the point, R+ beyond it (000:4542-4592; pupitre-iso(5), MOTION).
 inline bool Interpreter::straight(const Target& to, Axes target) {
     if (to.r_sign != 0 && modal_.d > 0) {
         const Corrector& c = corr_[size_t(modal_.d)];
@@ -312,10 +314,10 @@ inline bool Interpreter::straight(const Target& to, Axes target) {
     return linear(modal_.motion, mach, false, to.axis);
 }
 
-// G29, tool correction in space (milling.md §4.6): each block gives a contact
-// point X Y Z on the surface and the unit normal P Q R pointing from the
-// material to the tool; the tool tip goes where a torus cutter of radius R and
-// end radius @ touches that point:
+// G29, tool correction in space (000:3545, 004:697-699; pupitre-iso(5), G29):
+// each block gives a contact point X Y Z on the surface and the unit normal P Q
+// R pointing from the material to the tool; the tool tip goes where a torus
+// cutter of radius R and end radius @ touches that point:
 //   Ct = Pc + @ N;  w = unit(N - (N.u) u);  Oc = Ct + (R - @) w;  tip = Oc - @ u.
 bool Interpreter::g29_move(const Plan& p) {
     if (p.to.axis.none() && p.g29.has.none()) return true;

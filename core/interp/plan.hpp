@@ -1,9 +1,10 @@
-// Internal to the interpreter: a block's words resolved into values, in internal
-// units (mm, lathe X as a radius), ready for the execution steps of turning.md
-// §1.7.5: assignments, modal changes, avant M, motion, dwell, après M, flow.
-// One struct per family of words: the modal groups, the target (axes, centre,
-// radius), the technology words (F S T D M), then the arguments each G
-// function owns, read by the readers of interp_args.cpp.
+// Internal to the interpreter: a block's words resolved into values, in
+// internal units (mm, lathe X as a radius), ready for the execution steps of
+// pupitre-iso(5), MODAL STATE AND THE ORDER INSIDE A BLOCK: assignments, modal
+// changes, avant M, motion, dwell, après M, flow. One struct per family of
+// words: the modal groups, the target (axes, centre, radius), the technology
+// words (F S T D M), then the arguments each G function owns, read by the
+// readers of interp_args.cpp.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 #include <bitset>
@@ -160,7 +161,8 @@ struct Interpreter::Plan {
         Addr word = 0;  // or first word of a function not run yet
         bool has_word = false;
     };
-    // Profile geometry programming words (pgp.md §2).
+    // Profile geometry programming words (000:8378-8388; pupitre-iso(5),
+    // PROFILE GEOMETRY PROGRAMMING (PGP)).
     struct PgpArgs {
         bool any = false;  // any of EA EB ES ET E± in the block
         bool has_ea = false;

@@ -1,7 +1,7 @@
 // The plot's scene through Cairo (`pupitre plot --png`, `--pdf`): the same
 // picture as the SVG, antialiased, as a PNG or as a one-page vector PDF for
 // printing. Built into the pupitre_plot library, not the core: the
-// interpreter does not depend on Cairo (DESIGN §1).
+// interpreter does not depend on Cairo (ARCHITECTURE.md).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 #include <cstdio>

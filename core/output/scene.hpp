@@ -1,10 +1,11 @@
-// The picture of `pupitre plot` as one description (CLARIFICATIONS 12.11): the
-// frame fitted to the cutting moves, the layers of the toolpath with their
-// styles, and the marks around them (title, axis arrows, scale bar, legend,
-// notes) laid out on a page in paper millimetres. Two back-ends draw the same
-// scene: the SVG writer (svg.cpp: arcs, layer ids and the trace's exact
-// coordinates, which Cairo 1.16 cannot write) and Cairo (cairo_plot.cpp: PNG
-// and PDF). No back-end decides a colour, a position or a word.
+// The picture of `pupitre plot` as one description (docs/decisions.md, One
+// scene, two back-ends): the frame fitted to the cutting moves, the layers of
+// the toolpath with their styles, and the marks around them (title, axis
+// arrows, scale bar, legend, notes) laid out on a page in paper millimetres.
+// Two back-ends draw the same scene: the SVG writer (svg.cpp: arcs, layer ids
+// and the trace's exact coordinates, which Cairo 1.16 cannot write) and Cairo
+// (cairo_plot.cpp: PNG and PDF). No back-end decides a colour, a position or a
+// word.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 #include <array>

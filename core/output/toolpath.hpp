@@ -111,7 +111,7 @@ class Toolpath final : public MachineSink {
     void add_error(const Diag& d);
     // The rough stock of a lathe cycle (G64), as (Z, X radius) points.
     void add_stock(const Loc& l, const std::vector<std::array<double, 2>>& zr);
-    // EM- / EM+: the part's extremes as the program declares them (milling.md §8.6).
+    // EM- / EM+: the part's extremes as the program declares them (docs/decisions.md, EM- and EM+).
     void set_extremes(const Axes& lo, const Axes& hi, uint16_t mask_lo, uint16_t mask_hi);
 
     // MachineSink: moves are recorded; dwells and tool changes count in the time.
@@ -208,8 +208,8 @@ class Toolpath final : public MachineSink {
     Loc end_;
 };
 
-// EM- and EM+ of a program's text (milling.md §8.6, (impl): EM- or EM+ then
-// axis values with literal numbers). Returns false when the program has none.
+// EM- and EM+ of a program's text (EM- or EM+ then axis values with literal
+// numbers; docs/decisions.md, EM- and EM+). Returns false when the program has none.
 // Lathe X is read as a diameter when `x_diameter`.
 bool scan_extremes(const ProgramText& p, bool x_diameter, Axes& lo, Axes& hi, uint16_t& mask_lo,
                    uint16_t& mask_hi);

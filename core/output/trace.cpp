@@ -281,7 +281,7 @@ std::string summary_json(const Interpreter& in, const std::string& file,
     axes_json(o, in, in.machine_pos());
     const MachineProfile& m = in.machine();
     if (!m.kinematics.empty()) {
-        // The tool in the part frame by the kinematic model (milling.md §9).
+        // The tool in the part frame by the kinematic model (004:1436-2018).
         const Axes& p = in.program_pos();
         Eigen::Isometry3d h =
             m.kinematics == "table"

@@ -1,4 +1,4 @@
-// Output of a dry run: the JSON-lines trace (DESIGN §2.3) and the run summary,
+// Output of a dry run: the JSON-lines trace (pupitre(1), OUTPUT, Trace) and the run summary,
 // plain or JSON. Fixed 4 decimals for lengths, degrees, seconds, feeds and speeds.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once

@@ -1,6 +1,6 @@
 // The block parser: NUM character set, words, blank values, comments, L/E
 // assignments with left-to-right expressions, G79 tests, $ messages.
-// Grammar (turning.md §1.1-1.6, program-flow.md §3 and §8.4):
+// Grammar (000:362-470, 000:7444-7457; pupitre-iso(5), BLOCKS and PARAMETRIC PROGRAMMING):
 //   block      -> ['/'] { word | comment | assign | message }
 //   word       -> address [sign] [number | 'L'digits | 'E'digits | 'EL'digits | symbol]
 //   assign     -> ('L'digits | 'E'digits | 'EL'digits | symbol) '=' expr
@@ -22,7 +22,7 @@ namespace pupitre {
 namespace {
 // The text of each address (block.hpp: A-Z, EA-EZ, NA-NZ, E+, LA-LZ), built
 // at compile time: a table filled at the first call behind a flag would be a
-// data race between two interpreters on two threads (STYLE.md).
+// data race between two interpreters on two threads (ARCHITECTURE.md, Conventions).
 struct AddrNames {
     char text[kAddrCount][3] = {};
     constexpr AddrNames() {
@@ -239,7 +239,7 @@ struct Parser {
         return true;
     }
 
-    // 'A'..'Z' -> L900..L925, 'EA'..'EZ' -> L926..L951 (program-flow.md §8.1).
+    // 'A'..'Z' -> L900..L925, 'EA'..'EZ' -> L926..L951 (000:7334-7340).
     bool symbol(int32_t& l) {
         size_t start = pos;
         ++pos;  // opening quote

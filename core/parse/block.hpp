@@ -1,7 +1,7 @@
 // One NUM block, parsed: words in order, parametric assignments, a G79 test, a $
 // message. Values that name L variables or E parameters stay symbolic; the
-// interpreter resolves them when the block executes (turning.md §1.4, §1.8;
-// program-flow.md §8.4).
+// interpreter resolves them when the block executes (000:362-385, 000:7444-7457;
+// pupitre-iso(5), WORDS and PARAMETRIC PROGRAMMING).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 #include <cstdint>
@@ -91,7 +91,7 @@ struct Block {
     std::vector<Word> words;
     std::vector<Assign> assigns;
     std::vector<Term> terms;  // storage for every Expr of the block
-    // G76+ / G76- [H..] N.. [+k] <ISO block> (program-flow.md §6.3-6.4): the
+    // G76+ / G76- [H..] N.. [+k] <ISO block> (000:7098-7170): the
     // words after the pointed N are not this block's: the line offset k and the
     // raw text of the block to insert are kept apart.
     int g76_k = -1;              // the +k after the pointed block, -1 if none
@@ -115,7 +115,7 @@ struct Block {
     bool empty() const { return words.empty() && assigns.empty() && msg_channel < 0; }
 };
 
-constexpr size_t kMaxBlockChars = 117;  // turning.md §1.3 [DECISION]
+constexpr size_t kMaxBlockChars = 117;  // pupitre-iso(5), DECISIONS, 117 characters
 
 // Parses one line of program text (without its '\n'). On a syntax error returns
 // false and fills `e` (code, column, detail). `out` is cleared first, and its

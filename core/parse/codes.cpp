@@ -1,5 +1,5 @@
-// The codes table (turning.md §0.5, milling.md §1.1-1.2; groups from turning.md
-// §1.7.3 and milling.md §1.1; availability: starred functions are 1040/1060).
+// The codes table (000:510-631, 000:3602-3629; groups from 000:1012-1819 and
+// 000:510-587; pupitre-iso(5), FUNCTIONS; availability: starred functions are 1040/1060).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/parse/codes.hpp"
 

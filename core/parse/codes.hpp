@@ -1,7 +1,7 @@
 // The codes table: every G and M function of the NUM 1020/1040/1060 with its
 // modal group, where in a block it acts, the words it owns, which machines and
 // models have it, and a one-line text. Validation, modal conflicts, the help page
-// and the man page all read this one table (STYLE.md, CAMotics Codes.cpp).
+// and the man page all read this one table (ARCHITECTURE.md, Conventions: CAMotics' Codes.cpp).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 #include <bitset>
@@ -59,10 +59,11 @@ struct MCode {
     std::string_view text;  // English, a msgid: shown with tr(std::string(text).c_str())
 };
 
-// The parts of a block in the order they take effect (turning.md §1.7.5,
-// milling.md §2.4): Interpreter::execute (interp_exec.cpp) runs its steps in
-// this order, a test checks it on the trace, and pupitre-iso(5) lists them
-// from this table (tests/man/codes_table.py).
+// The parts of a block in the order they take effect (000:497-498;
+// pupitre-iso(5), MODAL STATE AND THE ORDER INSIDE A BLOCK):
+// Interpreter::execute (interp_exec.cpp) runs its steps in this order, a test
+// checks it on the trace, and pupitre-iso(5) lists them from this table
+// (tests/man/codes_table.py).
 enum class ExecStep : uint8_t {
     assign,
     modal,

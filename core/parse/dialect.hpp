@@ -1,4 +1,4 @@
-// The controller dialects (DESIGN §6): a machine profile names the one its
+// The controller dialects (pupitre-cazeneuve(5)): a machine profile names the one its
 // programs are written in; the codes table keeps one set of rows per dialect.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once

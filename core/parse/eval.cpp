@@ -1,6 +1,7 @@
-// Expression evaluation (program-flow.md §8.4): the accumulator starts with the
-// first term; each `op term` is applied in turn, no precedence, no parentheses.
-// Seed 004:1353: L1=2+3*5 gives 25.
+// Expression evaluation (000:7444-7457; pupitre-iso(5), PARAMETRIC
+// PROGRAMMING): the accumulator starts with the first term; each `op term` is
+// applied in turn, no precedence, no parentheses. Seed 004:1353: L1=2+3*5 gives
+// 25.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/parse/eval.hpp"
 

@@ -1,6 +1,7 @@
 // Parametric programming: L variables and strictly left-to-right expressions
-// with S C A R T (program-flow.md §8). E parameters are reached through EAccess,
-// which the interpreter implements, since most of them are live machine data.
+// with S C A R T (000:7322-7545; pupitre-iso(5), PARAMETRIC PROGRAMMING). E
+// parameters are reached through EAccess, which the interpreter implements,
+// since most of them are live machine data.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 #include <array>
@@ -32,11 +33,11 @@ class EAccess {
 };
 
 // Value of an operand in an expression: E parameters as raw integers (no unit
-// scaling, program-flow.md §9.3).
+// scaling, 000:7651-7669; pupitre-iso(5), DECISIONS).
 Error eval_operand(const Operand& o, const LVars& l, EAccess& e, double& out);
 // Evaluates terms [first, first+count) of `b`.
 Error eval_expr(const Block& b, Expr x, const LVars& l, EAccess& e, double& out);
-// Comparison after rounding both sides to 1e-6 (program-flow.md §3, Q6).
+// Comparison after rounding both sides to 1e-6 (pupitre-iso(5), DECISIONS, G79 comparisons).
 bool compare(Cmp c, double a, double b);
 
 }  // namespace pupitre

@@ -29,7 +29,8 @@ long line_label(std::string_view line) {
         ++i;
         ++digits;
     }
-    // "NC", "NU"… are other addresses; a bare N is N0 (turning.md §1.4.4).
+    // "NC", "NU"… are other addresses; a bare N is N0 (004:236, 000:2478;
+    // pupitre-iso(5), DECISIONS).
     if (digits == 0 && i < line.size() && line[i] >= 'A' && line[i] <= 'Z') return -1;
     return n;
 }

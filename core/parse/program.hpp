@@ -74,13 +74,13 @@ class ProgramMemory {
     // A deep copy (the TEST mode's): programs that shared a text share its copy.
     ProgramMemory clone() const;
 
-    // G76+ H (program-flow.md §6.1): adds the empty program %number. nullptr if
+    // G76+ H (000:7020-7050): adds the empty program %number. nullptr if
     // a program with that number is in memory.
     const ProgramText* create(int number);
-    // G76- H (§6.2): forgets program %number. The object stays alive, so a
+    // G76- H (000:7053-7097): forgets program %number. The object stays alive, so a
     // pointer to it stays valid, but find() no longer returns it.
     bool remove(int number);
-    // G76+/G76- N (§6.3-6.4): replaces `del` bytes at `at` in the text of `p`
+    // G76+/G76- N (000:7098-7170): replaces `del` bytes at `at` in the text of `p`
     // by `ins`. The programs that share the text (one file) move with it; their
     // label indexes follow. `at` and `at + del` must be line starts of `p`.
     Splice splice(const ProgramText* p, size_t at, size_t del, std::string_view ins);

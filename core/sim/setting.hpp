@@ -1,5 +1,5 @@
-// The setter's arithmetic (turning.md §2.4, milling.md §4.3; seed 000 L292-294
-// and L1187-1211; the course notes' exam, seed 004 L2050-2093): PREF by
+// The setter's arithmetic (000:292-294, 000:1187-1211, 000:3763-3853; the
+// course notes' exam, 004:2050-2093; pupitre-iso(5), UNITS AND THE LATHE X AXIS): PREF by
 // touch-off, tool gauges by touching a known surface or from a presetter.
 // Everything in internal units: mm, lathe X as a radius.
 // SPDX-License-Identifier: GPL-3.0-or-later

@@ -620,7 +620,8 @@ double Sim::rpm() const {
     if (sp_.dir != 3 && sp_.dir != 4) return 0;
     double n = sp_.rpm;
     if (sp_.css && sp_.vc > 0 && m_.lathe) {
-        // G96: the speed follows the diameter being cut (turning.md §5.8).
+        // G96: the speed follows the diameter being cut (000:1538-1551;
+        // pupitre-iso(5), FEEDS AND SPINDLE).
         double d = 2 * std::abs(op()[X]);
         double limit = m_.spindle_max;
         if (sp_.range >= 40 && size_t(sp_.range - 40) < m_.ranges.size())

@@ -1,5 +1,5 @@
 // The simulated machine behind the console: it runs the interpreter block by
-// block and animates the moves on a simulated clock (DESIGN §1 "sim"). The
+// block and animates the moves on a simulated clock (ARCHITECTURE.md, data flow). The
 // console decides how many simulated seconds pass per frame; nothing here
 // knows the wall clock or the terminal.
 // SPDX-License-Identifier: GPL-3.0-or-later

@@ -1,4 +1,4 @@
-// The Sim's side of the workshop (DESIGN §5): each move meets the part as
+// The Sim's side of the workshop (ARCHITECTURE.md, the workshop): each move meets the part as
 // the machine starts it (see sim.hpp, set_workshop).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/sim/sim.hpp"

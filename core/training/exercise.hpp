@@ -1,4 +1,4 @@
-// Exercises (issue 16, DESIGN §5): a machine, a setup whose values are drawn
+// Exercises (issue 16, ARCHITECTURE.md, the workshop): a machine, a setup whose values are drawn
 // from ranges, the task, what the student must find, a program to machine
 // and the drawing's dimensions. A student's truth is drawn with a seed made
 // of the exercise, the student and the class's secret, so neighbours get

@@ -1,4 +1,4 @@
-// The workshop's truth (DESIGN §5): where the chuck and the stock really are
+// The workshop's truth (ARCHITECTURE.md, the workshop): where the chuck and the stock really are
 // and what each tool really measures, in the machine frame. The interpreter
 // never sees it; the workshop turns the OM path into cuts, contacts and
 // crashes with it. Text format: pupitre-setup(5).
@@ -15,12 +15,14 @@ using Pt = std::array<double, 2>;  // (Z, X) in mm, X a radius
 
 // A tool as it really is. The tip is given the way a presetter reads it and a
 // corrector holds it: the true gauge, OM - P for each axis, P being the
-// theoretical tool point of the nose (turning.md §3.5). On a lathe X is a radius.
+// theoretical tool point of the nose (000:706-731; pupitre-iso(5), TOOLS AND
+// CORRECTORS). On a lathe X is a radius.
 struct ToolTruth {
     int position = 0;     // turret position 1..n
     double x = 0, z = 0;  // true gauge (mm)
     double radius = 0;    // nose radius (mm)
-    int orientation = 3;  // C1..C8 as in the corrector (turning.md §3.5); C0: a point
+    int orientation = 3;  // C1..C8 as in the corrector (000:706-731; pupitre-iso(5), TOOLS AND
+                          // CORRECTORS); C0: a point
     double angle = 80;    // the insert's tip angle (degrees)
     double edge = 10;     // length of its cutting edges from the nose (mm)
     int spindle = 0;      // 3 or 4: the direction it cuts with; 0: either

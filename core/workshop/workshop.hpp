@@ -1,4 +1,4 @@
-// The workshop (DESIGN §5): the interpreter's events, OM positions computed
+// The workshop (ARCHITECTURE.md, the workshop): the interpreter's events, OM positions computed
 // from what the operator entered, become what really happens to the setup's
 // true part and tools: cuts, contacts, crashes. A MachineSink that passes
 // every event on to the next sink (the trace, the console's queue).
@@ -17,7 +17,7 @@
 
 namespace pupitre::workshop {
 
-// Workshop alarms, 1200-1299 (DESIGN §2.2; pupitre(1), DIAGNOSTICS).
+// Workshop alarms, 1200-1299 (pupitre(1), DIAGNOSTICS).
 inline constexpr int kCrashRapid = 1200;      // a rapid into the material
 inline constexpr int kCrashStopped = 1201;    // a feed into the material, spindle stopped
 inline constexpr int kCrashChuck = 1202;      // the tool or holder hits the work-holding

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Runs one bad program of tests/bad and checks the NUM error it states on its
-# first line (STYLE.md, Tests): the living catalogue of the errors pupitre raises.
+# first line (ARCHITECTURE.md, Conventions): the living catalogue of the errors pupitre raises.
 #
 # Usage: run_bad.sh PUPITRE_BINARY FILE.iso
 #
@@ -18,7 +18,7 @@
 # Passes iff `pupitre check` exits 1 (65 for 1002 and 1003, errors found while
 # loading the file) and stderr has a diagnostic line of the file or one of its
 # companions, `FILE:LINE[:COL]: [N<n>: ]error <code>: ...`, with `N<n>:` and the
-# column on that same line when the header gives them (DESIGN.md §2.2).
+# column on that same line when the header gives them (pupitre(1), DIAGNOSTICS).
 set -u
 
 if [[ $# -ne 2 ]]; then

@@ -1,4 +1,4 @@
-// The workshop in the console's Sim (issue 15, CLARIFICATIONS "The workshop"):
+// The workshop in the console's Sim (issue 15, docs/decisions.md, The workshop):
 // a crash in every mode that moves the machine, the motion stopped at the
 // contact, RAZ, and a workshop that outlives the run.
 // SPDX-License-Identifier: GPL-3.0-or-later

@@ -31,7 +31,7 @@ TOL_FEED = 1e-3
 LIM = {"X": 400_000, "Y": 400_000, "Z": 200_000}  # µm
 CENTRE_WORD = {"X": "I", "Y": "J", "Z": "K"}
 # (first, second, normal) axes of each plane; CCW turns first towards second,
-# seen from the normal's positive end (NUM milling.md §5.1; same in RS274).
+# seen from the normal's positive end (NUM 000:4276-4300; pupitre-iso(5), MOTION; same in RS274).
 PLANES = {17: ("X", "Y", "Z"), 18: ("Z", "X", "Y"), 19: ("Y", "Z", "X")}
 CANON_PLANE = {"CANON_PLANE_XY": 17, "CANON_PLANE_XZ": 18, "CANON_PLANE_YZ": 19}
 NUM_HEADER = "%1"
@@ -227,7 +227,7 @@ def parse_rs274(text):
 
 
 def parse_trace(text):
-    """pupitre --trace JSON lines (DESIGN.md §2.3) -> normalised moves."""
+    """pupitre --trace JSON lines (pupitre(1), OUTPUT, Trace) -> normalised moves."""
     moves = []
     for ln, raw in enumerate(text.splitlines(), 1):
         if not raw.strip():
@@ -969,7 +969,7 @@ def main_comp(args, peer):
 # Real rs274 output (linuxcnc-uspace from Debian) for
 #   G21 G90 G90.1 G17 G94 / N10 G0 X10 Y0 Z5 / N20 G2 X0 Y10 I0 J0 F100 /
 #   G18 / G0 X0 Y0 Z0 / G2 X0 Z6 I4 K3 / G19 / G0 X0 Y0 Z0 / G3 Y6 Z0 J3 K4 / M2
-# and the DESIGN.md §2.3 trace sample, for --selftest.
+# and the trace sample of pupitre(1), OUTPUT, for --selftest.
 SELFTEST_CANON = """\
    13 N10    STRAIGHT_TRAVERSE(10.0000, 0.0000, 5.0000, 0.0000, 0.0000, 0.0000)
    14 N20    SET_FEED_RATE(100.0000)

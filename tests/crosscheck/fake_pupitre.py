@@ -78,7 +78,7 @@ def main(argv):
     if bug == "drop":
         del out[-2]  # the last move (out[-1] is the end event)
     for e in out:
-        # fixed 4 decimals as DESIGN.md §2.3 prints them
+        # fixed 4 decimals as the trace prints them (pupitre(1), OUTPUT)
         print(re.sub(r"(-?\d+\.\d+)", lambda m: f"{float(m.group(1)):.4f}", json.dumps(e, separators=(",", ":"))))
     return 0
 

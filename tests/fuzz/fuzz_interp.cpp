@@ -1,6 +1,6 @@
 // libFuzzer target: program text -> lexer, parser and interpreter, on the lathe
 // and the mill. Any crash, sanitizer report, hang or runaway allocation is a bug:
-// bad input must end in a diagnostic (DESIGN §2.2). Each line is parsed with
+// bad input must end in a diagnostic (pupitre(1), DIAGNOSTICS). Each line is parsed with
 // and without the parser's lane of plain blocks (the same Block or the same
 // error), and each input runs with the interpreter's plain lane on and off
 // (core/interp/interp_fast.cpp): the two runs must report the same events and

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-# The layers of pupitre (DESIGN §1, issue 13): core/ knows neither the console
+# The layers of pupitre (ARCHITECTURE.md, Invariants): core/ knows neither the console
 # nor the pages; pages/ are pure renderers that never call ncurses nor the
 # console; only the store (store/) speaks SQL; the core links no Cairo.
 # Fails, naming file and line, on a product #include that crosses the wrong way.

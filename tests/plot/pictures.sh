@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # `pupitre plot --svg --png --pdf` end to end (issue 12.11): one scene, three
-# files. A lathe and a mill program (copies of ../shared/programs/004_p555.iso
+# files. A lathe and a mill program (copies of the handbook programs 004_p555.iso
 # and 000_p200_boitier.iso in tests/plot/programs/) give a PNG of the width
 # asked, a one-page PDF and an SVG with its layers and the marks around them
 # (title, axis arrows, scale bar, legend, notes); each file alone works; an

@@ -15,7 +15,7 @@ using namespace pupitre::pages;
 
 namespace {
 
-// The handbook programs the snapshots draw, copied from ../shared/programs.
+// The handbook programs the snapshots draw, copied into the tests.
 const std::string kPrograms = std::string(PUPITRE_SOURCE_DIR) + "/tests/golden/programs";
 const std::string kSource = PUPITRE_SOURCE_DIR;
 
@@ -24,7 +24,7 @@ void snapshot(const std::string& name, const std::string& screen) {
 }
 
 // The page as the console lays it out: status line above, message, input and
-// soft keys below (DESIGN §2.4).
+// soft keys below (pupitre(1), THE CONSOLE).
 Canvas draw(const GraphView& g, const MachineProfile& m, int w, int h, bool ascii = false) {
     Canvas c(w, h, ascii);
     page_graph(g, m, c, Rect{0, 1, w, h - 4});

@@ -1,4 +1,4 @@
-// Screen snapshots (DESIGN §2.4): a drawn screen compared with a text file
+// Screen snapshots (pupitre(1), THE CONSOLE): a drawn screen compared with a text file
 // under the source tree; PUPITRE_BLESS=1 rewrites the file instead, for an
 // intended change to be reviewed in the diff.
 // SPDX-License-Identifier: GPL-3.0-or-later

@@ -1,4 +1,4 @@
-// Screen snapshots (DESIGN §2.4): every page and mode at 80x24, drawn through
+// Screen snapshots (pupitre(1), THE CONSOLE): every page and mode at 80x24, drawn through
 // the Canvas and compared with tests/screen/expected/NAME.txt. Run with
 // PUPITRE_BLESS=1 to rewrite the files after an intended change, and review
 // the diff.

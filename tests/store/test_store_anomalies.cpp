@@ -1,4 +1,4 @@
-// Store anomalies (STYLE.md, SQLite's own discipline): not a database, another
+// Store anomalies (ARCHITECTURE.md, Conventions: SQLite's own discipline): not a database, another
 // application's database, a newer schema, a truncated or corrupt file, a
 // read-only directory, a lock held by another process, a full disk. Each gives
 // a clear error of the right kind and leaves the file as it was.

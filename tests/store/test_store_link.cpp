@@ -118,7 +118,7 @@ TEST(StoreLink, ProgramWritesPersistWithAnAudit) {
     TempDir t;
     auto s = test::open_store(t / "l.db");
     ASSERT_TRUE(s->set_values("lathe", {{"D1.X", 1000}}, "page CORR").ok());
-    // Program %555 of the handbook loads tool gauges by program (program-flow.md §9).
+    // Program %555 of the handbook loads tool gauges by program (000:7573-7735).
     StoreRun r(
         *s, "lathe",
         "%555\nE50001=15157\nE51001=42126\nE50003=13589\nE55003=2\nE53003=-40\nE60000=12235\n"

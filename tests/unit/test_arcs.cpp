@@ -76,7 +76,7 @@ TEST(Arcs, ValidityRules) {
     EXPECT_EQ(Prog("%1\nX0 Y0\nG2 X10 Y0 I5.009 J0\nM2\n").error(), 0);  // 18 µm apart: accepted
     EXPECT_EQ(Prog("%1\nX0 Y0\nG2 X20 Y0\nM2\n").error(), 101);
     // With PGP (the simulated machines have it) one end coordinate and the centre
-    // determine the circle; a centre alone needs the next block (pgp.md §3, 131).
+    // determine the circle; a centre alone needs the next block (000:8358-8564, error 131).
     EXPECT_EQ(Prog("%1\nX0 Y0\nG2 X20 I10 J0\nM2\n").error(), 0);
     EXPECT_EQ(Prog("%1\nX0 Y0\nG2 I10 J0\nM2\n").error(), 131);
     // Chord = 2R within 1 µm: a half circle (000:7861).

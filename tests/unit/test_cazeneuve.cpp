@@ -72,7 +72,7 @@ TEST(Cazeneuve, HbCnc2ModelHasItsOwnRanges) {
     EXPECT_EQ(first_error(in3), caz::kSpeed);
 }
 
-// The same number means something else per dialect (DESIGN §6).
+// The same number means something else per dialect (pupitre-cazeneuve(5)).
 TEST(Cazeneuve, CodesTableHasItsOwnRows) {
     const GCode* num92 = find_g(92);
     const GCode* caz92 = find_g(92, Dialect::cazeneuve);

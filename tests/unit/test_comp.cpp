@@ -160,9 +160,10 @@ TEST(Comp, EntryOnTheNormalOfTheNextElementAndEventsInOrder) {
 }
 
 TEST(Comp, LatheNoseRadiusAndOrientation) {
-    // G42 towards -Z on the outside of a shaft (turning.md §3.7): the nose centre is
-    // R above the profile and R from the face; with C3 the driven point is R·(-1,-1)
-    // from the centre, so on paraxial cuts it follows the profile as in G40 (§3.5).
+    // G42 towards -Z on the outside of a shaft (pupitre-iso(5), TOOLS AND
+    // CORRECTORS): the nose centre is R above the profile and R from the face;
+    // with C3 the driven point is R·(-1,-1) from the centre, so on paraxial
+    // cuts it follows the profile as in G40.
     Prog r("%1\nG0 X60 Z10\nG1 F100\nD1 G42 X40 Z2\nZ-30\nX60\nG40 X80 Z-30\nM2\n", "lathe",
            {{"D1.R", 0.8}, {"D1.C", 3}});
     ASSERT_EQ(r.error(), 0);

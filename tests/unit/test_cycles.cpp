@@ -1,5 +1,5 @@
 // Drilling cycles G81-G89 and G31: the motion skeleton, the peck law, tapping,
-// modal behaviour (milling.md §6, spec README (b) 18).
+// modal behaviour (pupitre-iso(5), DRILLING, BORING AND TAPPING CYCLES).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <gtest/gtest.h>
 
@@ -35,7 +35,8 @@ TEST(Cycles, G81SkeletonAndRetractPlaneDefault) {
 }
 
 TEST(Cycles, PeckLawPAndQDecreases) {
-    // P10 Q2.5 over 35 mm: 10, 8.5, 7, 5.5, 4 (turning.md §6.9 check).
+    // P10 Q2.5 over 35 mm: 10, 8.5, 7, 5.5, 4 (the peck law of pupitre-iso(5),
+    // DRILLING, BORING AND TAPPING CYCLES).
     Prog r("%1\nS1000 M3\nG0 X0 Y0 Z0\nG83 Z-35 P10 Q2.5 F100\nG80 G0 Z50\nM2\n");
     ASSERT_EQ(r.error(), 0);
     std::vector<double> want = {-10, -18.5, -25.5, -31, -35};

@@ -1,4 +1,5 @@
-// Expressions: strictly left to right (program-flow.md §8.4), seed examples.
+// Expressions: strictly left to right (000:7444-7457; pupitre-iso(5),
+// PARAMETRIC PROGRAMMING), seed examples.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <gtest/gtest.h>
 

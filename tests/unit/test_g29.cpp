@@ -1,5 +1,6 @@
-// G29, tool correction in space (milling.md §4.6): the tool tip for a contact
-// point and a surface normal, with expected points computed by hand.
+// G29, tool correction in space (000:3545, 004:697-699; pupitre-iso(5), G29):
+// the tool tip for a contact point and a surface normal, with expected points
+// computed by hand.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <gtest/gtest.h>
 

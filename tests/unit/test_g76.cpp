@@ -1,6 +1,6 @@
 // The G76 family: writing L/E values into a program (G76), creating and
 // deleting programs (G76+ H / G76- H), inserting and deleting blocks
-// (G76+ / G76- [H] N.. [+k]), program-flow.md §6 and 000:7018-7170, 7679-7735.
+// (G76+ / G76- [H] N.. [+k]), 000:7018-7170, 7679-7735; pupitre-iso(5), PROGRAM FLOW.
 // Expected texts are written by hand from the handbook's rules.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <gtest/gtest.h>

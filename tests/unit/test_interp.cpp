@@ -137,7 +137,8 @@ TEST(Warnings, DecimalSpeedRunsAsWrittenAndNamesIt) {
 
 TEST(Warnings, AnLGivenBeforeTheRunIsSet) {
     // --set, the PARAM page and earlier programs (the console's power-on
-    // lifetime) all count as setting it (CLARIFICATIONS 18).
+    // lifetime) all count as setting it (docs/decisions.md, An L
+    // variable read before it is set).
     const std::string text = "%1\nG0 XL2 Y0\nM2\n";
     Prog given(text, "mill", {{"L2", 5}});
     Prog unset(text, "mill");
@@ -203,7 +204,7 @@ TEST(Text, SeveralProgramsAndNoHeader) {
     EXPECT_EQ(r.cap.moves.size(), 2u);
 }
 
-// milling.md §8.6 (impl): EM- / EM+ give the part's extremes for the graphic
+// EM- / EM+ (docs/decisions.md, EM- and EM+) give the part's extremes for the graphic
 // display; their axis words do not move the machine.
 TEST(Interp, ExtremesEmDoNotMove) {
     pupitre::test::Prog p("%1\nG0 X5 Y5 Z5\nEM- X0 Y0 Z-10\nEM+ X100 Y50 Z0\nM2\n", "mill");
@@ -214,9 +215,10 @@ TEST(Interp, ExtremesEmDoNotMove) {
 }
 
 // The parts of a block take effect in the order of the codes table's
-// block_steps() (turning.md §1.7.5): a block with an assignment, M03 (before
-// the motion), S, a $ message, a move, G04 and M05 (after the motion) reports
-// its events in that order.
+// block_steps() (000:497-498; pupitre-iso(5), MODAL STATE AND THE ORDER INSIDE
+// A BLOCK): a block with an assignment, M03 (before the motion), S, a $
+// message, a move, G04 and M05 (after the motion) reports its events in that
+// order.
 TEST(BlockSteps, ExecuteFollowsTheCodesTable) {
     struct Order : MachineSink {
         std::vector<ExecStep> seen;
@@ -256,7 +258,7 @@ TEST(BlockSteps, ExecuteFollowsTheCodesTable) {
     for (size_t i = 1; i < want.size(); ++i) EXPECT_LT(rank(want[i - 1]), rank(want[i]));
 }
 
-// STYLE.md promises that two interpreters on two threads are safe: nothing in
+// ARCHITECTURE.md (Conventions) promises that two interpreters on two threads are safe: nothing in
 // the core is shared behind a flag (addr_name's table is built at compile
 // time). Both runs, at once, give what one run alone gives.
 TEST(Threads, TwoInterpretersOnTwoThreadsRunAsOneAlone) {
@@ -282,7 +284,7 @@ TEST(Threads, TwoInterpretersOnTwoThreadsRunAsOneAlone) {
 }
 
 // A diagnostic names the column of the word at fault, and none for an error
-// about the whole block (DESIGN §2.2: FILE:LINE[:COL]).
+// about the whole block (pupitre(1), DIAGNOSTICS: FILE:LINE[:COL]).
 TEST(Diagnostics, ColumnOfTheWordOnlyWhenAWordIsAtFault) {
     test::Prog word("%1\nG0 X10 Y1.23456\nM2\n");
     ASSERT_EQ(word.error(), 1);

@@ -1,4 +1,4 @@
-// 4- and 5-axis kinematics: the test vectors of milling.md §9.3-9.4, computed from
+// 4- and 5-axis kinematics: the test vectors of 004:1588-1801, computed from
 // the course notes' formulas (004:1654-1801), and forward/inverse round trips.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <gtest/gtest.h>
@@ -75,7 +75,8 @@ TEST(Kinematics, Program170ComputesItsOwnFrame) {
     ASSERT_FALSE(in.has_errors()) << format_diag(in.diags().front());
     EXPECT_NEAR(in.lvars().v[16], 186.8424, 5e-5);
     EXPECT_NEAR(in.lvars().v[17], 209.0373, 5e-5);
-    // The program's formulas are the inverse model of §9.3: the frame R2 (Rp
+    // The program's formulas are the inverse model of the four-axis centre
+    // (004:1588-1718): the frame R2 (Rp
     // turned by B30 about Y, origin at (70, 75, 34.225)) with the table axis at
     // L_X = L14, L_Z = L15 gives X = L16 and Z = L17.
     const auto& L = in.lvars().v;

@@ -1,8 +1,9 @@
-// PGP solver (pgp.md): every construction of §9 with its expected values, the
-// one-block table §4.1, the table rows of §4.2/§4.3, the seed applications %666
-// (chess piece, lathe) and %888 (biellette), one test per error number the solver
-// raises, and properties: fillets tangent to both elements, junctions exact.
-// Expected values: pgp.md §9 (1e-3 mm, 0.01°); %666 and %888 recomputed
+// PGP solver (pupitre-iso(5), PROFILE GEOMETRY PROGRAMMING (PGP)): the
+// handbook's examples with their expected values, its one-block table
+// (000:8411-8419) and the rows of its tables A and B (000:8423-8459), the seed
+// applications %666 (chess piece, lathe) and %888 (biellette), one test per
+// error number the solver raises, and properties: fillets tangent to both
+// elements, junctions exact. Expected values to 1e-3 mm and 0.01°, computed
 // independently (plane geometry by hand in Python, once) and written here.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <gtest/gtest.h>
@@ -178,7 +179,7 @@ double dist(const comp::Elem& e, const V2& q) {
 }
 }  // namespace
 
-// §9.1 and §4.1: one block, the discriminant chooses the arc.
+// One block, the discriminant chooses the arc (000:8411-8419).
 TEST(Pgp, OneBlockDiscriminant) {
     Result r = ok({30, 20}, {"G1 EA30 X60", "G2 X80 Y20 R15 E-"});
     ASSERT_EQ(r.els.size(), 2u);
@@ -227,7 +228,8 @@ TEST(Pgp, CompleteBlocks) {
     arc(r.els[2], 0, 5, 5, 5, 180);
 }
 
-// §9.2 E1 (table A1): line-line intersection.
+// The handbook's numeric examples (000:8467-8507). E1 (table A1): line-line
+// intersection.
 TEST(Pgp, E1_LineLine) {
     Result r = ok({0, 10}, {"G1 EA10 ES", "EA45 X50 Y50"});
     ASSERT_EQ(r.els.size(), 2u);
@@ -412,7 +414,8 @@ TEST(Pgp, E16_FilletLineArc) {
     EXPECT_NEAR(dist(r.els[2].geo, {-40.044, 20.935}), 0, kMm);
 }
 
-// §9.3: the two intersections of a line and a circle.
+// Cases the handbook does not print, for regression: the two intersections of
+// a line and a circle.
 TEST(Pgp, LineCircleDiscriminant) {
     Result r = ok({0, 0}, {"G1 EA0 ES+", "G3 I20 J5 X30 Y5"});
     ASSERT_EQ(r.els.size(), 2u);
@@ -554,7 +557,7 @@ TEST(Pgp, TableB16) {
     EXPECT_PT(r.els[0].geo.c, 6.376, 14.556);
 }
 
-// §9.4: the chess piece %666 on the lathe (Z abscissa, X diameter as ordinate).
+// The chess piece %666 (000:8519-8531) on the lathe (Z abscissa, X diameter as ordinate).
 // Values computed independently: N20/N30 intersection Z 4.985 X Ø29.172 (second
 // intersection at Z 67.179 rejected by ES-), N40 start/end radii 23.000/22.984,
 // N50/N60 at Z 56.756 X Ø24.
@@ -572,7 +575,7 @@ TEST(Pgp, ChessPiece666) {
     arc(r.els[4], 54, 0, 81.5, 0, 25.87);
 }
 
-// §9.5: the biellette %888, G17. Junctions computed independently.
+// The biellette %888 (000:8534-8559), G17. Junctions computed independently.
 TEST(Pgp, Biellette888) {
     Result r = ok({30, -60}, {"G1 EA90 ES EB+10",    // N20
                               "EA135 X15 Y",         // N30
@@ -689,7 +692,7 @@ TEST(Pgp, PendingPositionIdle) {
     EXPECT_FALSE(s.pending());
 }
 
-// One test per error number the solver raises (pgp.md §8 triggers).
+// One test per error number the solver raises (000:13241-13279).
 TEST(PgpErrors, E101_CircleInsufficient) {
     EXPECT_EQ(error({0, 0}, {"G2 X20 Y0"}), 101);
     EXPECT_EQ(error({0, 0}, {"G1 EA30 ES", "G2 X20 Y0"}), 101);
@@ -754,12 +757,13 @@ TEST(PgpErrors, E124_TangencyChoice) {
     EXPECT_EQ(error({150, 17}, {"G1 ET", "G3 I30 J17", "G3 I35 J50 X60 Y20"}, &tag), 124);
     EXPECT_EQ(tag, 2);
     // Both arcs of block 2 (r 5.675 and 72.428) have their centre on the left of
-    // their chord: §5.1 cannot tell them apart, ET± designates neither (Q1).
+    // their chord: E± cannot tell them apart, ET± designates neither
+    // (pupitre-iso(5), DECISIONS, Discriminants of PGP).
     EXPECT_EQ(error({150, 17}, {"G1 ET", "G3 I30 J17 ET+", "G3 I35 J50 X60 Y20"}), 124);
     EXPECT_EQ(error({150, 17}, {"G1 ET", "G3 I30 J17 ET-", "G3 I35 J50 X60 Y20"}), 124);
 }
 
-// §5.5: the middle block's ET± chooses the 2-3 tangency (table A12). Circle 2
+// The middle block's ET± chooses the 2-3 tangency (table A12). Circle 2
 // about (0,0) is inside circle 3 (r 20, E-: centre on the right of its chord,
 // 289.47°) or around it (r 40, E+, 131.81°). Values computed independently.
 TEST(Pgp, MiddleDiscriminantA12) {

@@ -1,6 +1,6 @@
 // PGP through the interpreter: seed examples run as programs, compensation of a
 // PGP profile, and the errors the interpreter raises around the solver (72, 96,
-// 131, 136, 137; pgp.md §6 item 5 and §8).
+// 131, 136, 137; pupitre-iso(5), PROFILE GEOMETRY PROGRAMMING (PGP)).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
-// G45 pockets: the BOÎTIER test vector of milling.md §7.1.6 (000:6514) and the
-// errors of §7.1.5.
+// G45 pockets: the BOÎTIER test vector of 000:6514 and the
+// errors G45 raises (pupitre-iso(5), POCKETS).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <gtest/gtest.h>
 
@@ -24,7 +24,7 @@ TEST(Pocket, BoitierSquareLayersAndContours) {
         if (m.g == 1 && std::fabs(m.to_prog[Y]) < 1e-9 && m.to_prog[X] > 0)
             contours.insert(m.to_prog[X]);
     }
-    // Roughing layers of 7.5 leaving I = 0.5, then the floor at -20 (§7.1.6).
+    // Roughing layers of 7.5 leaving I = 0.5, then the floor at -20 (000:6514).
     EXPECT_EQ(layers, (std::set<double>{-4.5, -12, -19.5, -20}));
     // Contours at 7.875, 15.75, 23.625, 31.5 (leaving J), finishing at 32.
     for (double x : {7.875, 15.75, 23.625, 31.5, 32.0}) EXPECT_TRUE(contours.count(x)) << x;

@@ -1,4 +1,4 @@
-// G46 pockets with islands (milling.md §7.2): %100 POCHE AVEC ILOT
+// G46 pockets with islands (000:6078-6369; pupitre-iso(5), POCKETS): %100 POCHE AVEC ILOT
 // (000:6538-6546) against its walls drawn by hand, the passes and layers
 // computed by hand, and the errors 260-293.
 // SPDX-License-Identifier: GPL-3.0-or-later

@@ -1,5 +1,5 @@
 // G46 in the planes G18 (ZX) and G19 (YZ): the same pocket written in each
-// plane gives the G17 toolpath with its coordinates permuted (milling.md §5.1:
+// plane gives the G17 toolpath with its coordinates permuted (000:4276-4300, 000:4650:
 // first, second, normal axis X Y Z, Z X Y, Y Z X), drilling NU10, roughing NU15
 // and finishing NU20 alike; and the errors of a pocket in the wrong plane.
 // SPDX-License-Identifier: GPL-3.0-or-later

@@ -261,7 +261,7 @@ TEST(Pocket46, GeneratedPocketsNeverEnterTheWallsOrIslands) {
     EXPECT_GE(finished, 40);
 }
 
-// G45 (milling.md §7.1): generated rectangular pockets with corner radii,
+// G45 (000:5943-6076; pupitre-iso(5), POCKETS): generated rectangular pockets with corner radii,
 // circles and oblongs, cutters R3 to R8, step-overs from R/2 to 1.9R, layers,
 // allowances I and J, run by the interpreter. The cutter centre keeps R from
 // every wall (R + J but for the finishing contour) and never goes below the

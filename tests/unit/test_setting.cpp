@@ -19,7 +19,8 @@ TEST(Setting, TheHandbooksG92Example) {
 // for the tool; measurement 1 touches a 100 mm shim laid on the face (the tool
 // point at Z+100) with OM Z -531.699; measurement 2 touches the turned
 // diameter 59.978 with OM X -22.143. The OM page shows X as a diameter
-// (turning.md §2.5 [DECISION]), so OM X is a radius of -11.0715 internally.
+// (pupitre-iso(5), DECISIONS, diameter and radius values on the lathe), so OM X
+// is a radius of -11.0715 internally.
 TEST(Setting, TheCourseNotesExam) {
     Prog p("%1\nM2\n", "lathe", {{"D1.X", 63.345}, {"D1.Z", 38.237}});
     Interpreter& in = *p.in;

@@ -1,5 +1,5 @@
 // Splines G48/G06/G49: the curve goes through every point, leaves along the start
-// tangent, and the errors 600-605 (turning.md §4.10).
+// tangent, and the errors 600-605 (pupitre-iso(5), SPLINES).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <gtest/gtest.h>
 

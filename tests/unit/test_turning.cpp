@@ -1,4 +1,4 @@
-// Turning cycles (turning.md §6.1, §6.3-§6.6, §6.12-§6.13): expected points of
+// Turning cycles (000:2434-2840, 000:3194-3294; pupitre-iso(5), TURNING CYCLES): expected points of
 // the handbook programs, computed by hand or once with an independent script
 // (polygons with densified arcs, scanning and bisection), and properties checked
 // with an oracle that shares no code with the cycles: the passes never come
@@ -65,7 +65,7 @@ Profile poly_profile(std::initializer_list<V2> pts) {
 }
 
 // The profile translated by t (z, r): what G64 roughs when the allowance
-// points into the part (§11 item 6).
+// points into the part (docs/decisions.md, Roughing allowances are signed).
 Profile shifted(const Profile& p, V2 t) {
     Profile out = p;
     for (Elem& e : out.elems) e.a += t, e.b += t, e.c += t;
@@ -411,7 +411,7 @@ TEST(G64, P555AlongZ) {
     // Approach along Z then down; each pass: rapid in, feed, retract 1 mm
     // radially, rapid back; then the pass along the profile plus allowance,
     // which ends at its start Z0 (r 70.5); at the end up to X200 then to Z150
-    // (§6.3 steps 4, 6).
+    // (pupitre-iso(5), TURNING CYCLES).
     ASSERT_GE(mv.size(), 6u);
     EXPECT_TRUE(mv[0].g == 0 && mv[0].to.isApprox(V2(14.230769, 100), 1e-6));
     EXPECT_TRUE(mv[1].g == 0 && mv[1].to.isApprox(V2(14.230769, 70), 1e-6));
@@ -543,10 +543,11 @@ TEST(G64, P555Properties) {
         Oracle o(p555(), kStock555, V2(.2, .5));
         check_clear(o, tool, mv, 1, along_x ? "R3" : "P2");
         // The groove between the Ø60 lands is G65's work in both variants
-        // (§6.3). Along Z the level at r 30 stops on the cone behind it, so the
-        // strip up to the level r 32 over the land and the groove is left too;
-        // along X what the lands and the cone hide from +Z is left: below the
-        // land's r 30.5 from the flank N140 to the flank N160.
+        // (pupitre-iso(5), TURNING CYCLES). Along Z the level at r 30 stops on
+        // the cone behind it, so the strip up to the level r 32 over the land
+        // and the groove is left too; along X what the lands and the cone hide
+        // from +Z is left: below the land's r 30.5 from the flank N140 to the
+        // flank N160.
         auto groove = [&](V2 q) {
             if (along_x) return q.x() > 20 && q.x() < 50.2 && q.y() < 30.5;
             return q.x() > 10 && q.x() < 61.1 && q.y() < 32;
@@ -657,7 +658,8 @@ TEST(G64, PalierP2000Face) {
     check_cover(o, tool, mv, true, 1, 2, -7.6, "%2000");
 }
 
-// %2001 roughs a bore with I.5, a positive allowance (the spec's §11.6 flag):
+// %2001 roughs a bore with I.5, a positive allowance (docs/decisions.md,
+// Roughing allowances are signed):
 // the translation goes into the wall. The NUM cannot know which side is
 // material, so the passes rough the translated profile as written, 0.5 into
 // the wall, and the interpreter warns (1116); K.4 still leaves 0.4 on the
@@ -803,7 +805,7 @@ TEST(G64, Cabestan) {
         for (size_t i = 0; i < mv.size(); ++i) EXPECT_TRUE(mv2[i].to.isApprox(mv[i].to, 1e-9));
     }
     // %4200 on a fresh start: L13 = L3-2 is read before %7300 sets L3, so the
-    // profile starts at X-2, beyond the spindle axis (EXPECTED.md: error 874).
+    // profile starts at X-2, beyond the spindle axis: error 874.
     std::vector<Move> mv;
     Profile fresh = poly_profile({P(-2, -4), P(82, -4), P(130.15, -.878), P(130.15, 2)});
     EXPECT_EQ(
@@ -1036,10 +1038,10 @@ TEST(G64, Cabestan7300KeepsItsAllowance) {
     }
 }
 
-// Every G64 of the handbook programs (../shared/programs), run by the
-// interpreter with the programs that call them: no move, feed or rapid, enters
-// the part plus its allowance (issue 19 item 1). A corpus sweep: skipped
-// without ../shared.
+// Every G64 of the handbook programs, run by the interpreter with the programs
+// that call them: no move, feed or rapid, enters the part plus its allowance
+// (issue 19 item 1). A sweep of the whole handbook corpus, which lives beside
+// the repository (PUPITRE_SHARED/programs): skipped without it.
 TEST(G64, HandbookProgramsNeverEnterThePart) {
     const std::string dir = std::string(PUPITRE_SHARED) + "/programs/";
     if (!std::filesystem::exists(dir + "INDEX.tsv")) GTEST_SKIP() << "no " << dir;
@@ -1127,7 +1129,7 @@ TEST(G64, Errors) {
 
 // ---------------------------------------------------------------- G65 ----
 
-// %555 groove (000:2593-2612, worked check §12.5): from X62 Z50, EA-135 P2 Z20
+// %555 groove (000:2593-2612, checked by hand): from X62 Z50, EA-135 P2 Z20
 // I.5 K.2. The infeed line r = z - 19 runs parallel to the translated flank
 // and meets the translated bottom at C (Z39.5, r 20.5); passes at r 29 ... 20.5
 // from the EA line to the translated left flank, the limit Z20 never reached.
@@ -1160,7 +1162,7 @@ TEST(G65, P555Groove) {
     EXPECT_TRUE(mv[4].to.isApprox(V2(48, 29), 1e-9));
     EXPECT_TRUE(mv[mv.size() - 2].to.isApprox(V2(39.5, 31), 1e-9));
     EXPECT_TRUE(mv.back().to.isApprox(tool, 1e-12));
-    // Without allowance the line meets N150 (Ø40) at Z39 (EXPECTED.md).
+    // Without allowance the line meets N150 (Ø40) at Z39 (by hand).
     a.i = a.k = 0;
     ASSERT_TRUE(ok(g65(p555(), tool, a, mv)));
     f = feeds(tool, mv);
@@ -1694,7 +1696,7 @@ TEST(G63, GeneratedProfilesNeverEnterThePart) {
     EXPECT_GT(entered, 20);
 }
 
-// Every G65, G63 and G66 of the handbook programs (../shared/programs), run by
+// Every G65, G63 and G66 of the handbook programs (a corpus sweep), run by
 // the interpreter: no move enters the part plus its allowance (issue 19 item
 // 1). The part is the profile closed far away on the side the infeed (G65)
 // or the levels (G63) go to; G66 stays inside the groove it is given.
@@ -1774,7 +1776,7 @@ TEST(G65, HandbookProgramsNeverEnterThePart) {
 
 // %100's interior profile (000:2708-2767) with its R2 fillets resolved: tangent
 // points X40 Z-43.292 / X37.143 Z-45.208 and X37.143 Z-54.792 / X40 Z-56.708
-// around the R5 semicircle centred X40 Z-50 (EXPECTED.md).
+// around the R5 semicircle centred X40 Z-50 (computed by hand).
 Profile p100() {
     double zt = -50 + std::sqrt(45.0);
     V2 c0 = P(40, -50), c1(zt, 18), c2(-100 - zt, 18);
@@ -1898,7 +1900,7 @@ TEST(G63, Errors) {
     EXPECT_EQ(g63(Profile{}, P(10, 10), a, mv).code, 871);
     a.has_ea = true, a.ea = 0;  // the start line along the passes
     EXPECT_EQ(g63(p100(), P(10, 10), a, mv).code, 875);
-    // The printed N160 X-40 crosses the spindle axis (EXPECTED.md: 874).
+    // The printed N160 X-40 crosses the spindle axis: error 874.
     Profile bad =
         poly_profile({P(50, 5), P(30, -5), P(30, -20), P(-40, -25), P(40, -45), P(16, -92)});
     EXPECT_EQ(g63(bad, P(10, 10), p100_args(), mv).code, 874);
@@ -2102,7 +2104,7 @@ TEST(G66, Errors) {
 
 // ---------------------------------------------------------------- G33 ----
 
-// M20×2.5 (000:3226-3236, §12.6): G33 X20 Z10 K2.5 P2.165 Q.05 S6 from X24 Z64.
+// M20×2.5 (000:3226-3236, checked by hand): G33 X20 Z10 K2.5 P2.165 Q.05 S6 from X24 Z64.
 TEST(G33, DegressivePasses) {
     G33Args a;
     a.has_x = a.has_z = a.has_k = a.has_p = a.has_q = a.has_s = true;

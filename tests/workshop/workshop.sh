@@ -90,8 +90,8 @@ grep -q 'id="part"' "$work/plain.svg" && fail "(f) no part without --setup"
     --svg "$work/crash.svg" turn.iso 2>"$work/err"
 [ $? -eq 1 ] || fail "(f) a crash in plot should exit 1"
 grep -Eq 'error 1200: crash:' "$work/err" || fail "(f) plot should print the crash: $(cat "$work/err")"
-# (g) The handbook's %555 (G64 then G65, a copy of shared/programs
-# 000_p555_cycles_x.iso) on its blank: G64 leaves the Ø60 lands at Ø61 (I.5),
+# (g) The handbook's %555 (G64 then G65, a copy of the handbook
+# program 000_p555_cycles_x.iso) on its blank: G64 leaves the Ø60 lands at Ø61 (I.5),
 # so N340's rapid to X62 Z50 and the G65 after it run clear of the part
 # (issue 19: before, the lands stayed at Ø64 and N340 crashed).
 p555=(--set PREF.X=-20 --set PREF.Z=-54 --set D1.X=52.347 --set D1.Z=41.215 --set D1.R=0.8 --set D1.C=3
