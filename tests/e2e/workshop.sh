@@ -434,7 +434,10 @@ mill5)
     cmd ":jog B -10"
     wait_for '^ +B +-10.0000' 10
     cmd ":jog Z -200"
-    wait_for 'T1 touched the part' 20
+    # The C jog's "T1 touched the part" may still be on the message line:
+    # wait for the jog's own stop, where Z reads the contact.
+    wait_for '^ +Z +-174.355' 20
+    wait_for 'T1 touched the part' 5
     [ "$(op_value Z)" = "-174.355" ] || fail "the tilted end should stop at Z -174.355: $(op_value Z)"
     ;;
 *)
