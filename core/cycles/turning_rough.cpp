@@ -295,6 +295,13 @@ std::vector<std::vector<Elem>> reached_stretches(const Material& m, const std::v
     return out;
 }
 
+// The highest point of the material region, -inf when it is empty.
+double top_of_M(const Material& m) {
+    double y_top = -kInf;
+    for (const Elem& e : m.M) y_top = std::max(y_top, max_y(e));
+    return y_top;
+}
+
 // The segment p-q runs along the finished profile (its middle lies on it).
 bool along_F(const Material& m, const V2& p, const V2& q) {
     const V2 mid = (p + q) / 2;
@@ -303,13 +310,6 @@ bool along_F(const Material& m, const V2& p, const V2& q) {
     return false;
 }
 
-// [DECISION] (issue 19) G64 ends with a pass along the profile plus allowance
-// over what the passes reached, in their direction: it takes off the steps
-// the levels leave on cones and arcs (the seeds give no toolpath; seed
-// 000:2626 has %555 rapid to X142 Z0 with G41 after the cycle, which
-// the steps left on the N110 arc would be in the way of).  The way to each
-// stretch and back runs at feed within the clearance of the material, in rapid
-// above it.
 // The profile plus allowance (G64's paraxial one) in the passes' direction,
 // and where the profile itself ends on the closing side of the material.
 std::vector<Elem> translated_profile(const Material& m, int d, V2& end) {
@@ -324,12 +324,18 @@ std::vector<Elem> translated_profile(const Material& m, int d, V2& end) {
     return fp;
 }
 
+// [DECISION] (issue 19) G64 ends with a pass along the profile plus allowance
+// over what the passes reached, in their direction: it takes off the steps
+// the levels leave on cones and arcs (the seeds give no toolpath; seed
+// 000:2626 has %555 rapid to X142 Z0 with G41 after the cycle, which
+// the steps left on the N110 arc would be in the way of).  The way to each
+// stretch and back runs at feed within the clearance of the material, in rapid
+// above it.
 // `fp` is the profile plus allowance in the passes' direction; with `strip`,
 // the pass goes on along the level from fp's end to `end`, the profile's.
 void contour_pass(Emit& em, const Material& m, const std::vector<Elem>& fp, V2 end, bool strip,
                   int d, double c, double y_safe) {
-    double y_top = -kInf;
-    for (const Elem& e : m.M) y_top = std::max(y_top, max_y(e));
+    double y_top = top_of_M(m);
     if (y_top == -kInf) y_top = y_safe;
     y_top = std::min(y_top, y_safe);
     // Above the material at x, by the clearance: the way down runs in rapid
@@ -374,8 +380,7 @@ void contour_pass(Emit& em, const Material& m, const std::vector<Elem>& fp, V2 e
 // at the start's level went through the bore's wall). It goes to it and back
 // square to the passes where it stands.
 double travel_level(const Material& m, const V2& s, double c) {
-    double y_top = -kInf;
-    for (const Elem& e : m.M) y_top = std::max(y_top, max_y(e));
+    const double y_top = top_of_M(m);
     return s.y() >= y_top - kUm ? s.y() : y_top + c;
 }
 
