@@ -658,6 +658,11 @@ TEST(G64, PalierP2000Face) {
     check_cover(o, tool, mv, true, 1, 2, -7.6, "%2000");
 }
 
+namespace {
+int check_out_of_part(const Oracle& o, const std::vector<V2>& part, V2 tool,
+                      const std::vector<Move>& mv, const std::string& what);
+}  // namespace
+
 // %2001 roughs a bore with I.5, a positive allowance (docs/decisions.md,
 // Roughing allowances are signed):
 // the translation goes into the wall. The NUM cannot know which side is
@@ -679,6 +684,13 @@ TEST(G64, PalierP2001BorePositiveI) {
     EXPECT_TRUE(a.allowance_inside);
     Oracle moved(shifted(f, V2(.4, .5)), stock, V2(0, 0));
     check_clear(moved, tool, mv, .5, "%2001 as written");
+    // Issue 39 item 1: started at the chamfer's outer end, in front of the
+    // face outside the bore, the last pass rapided at X35.987 over the whole
+    // Ø29.987 wall: no move enters the part (the wall, r 15 to 30).
+    check_out_of_part(moved,
+                      {P(35.987 + 1, 1.5 + .4), P(29.987 + 1, -1.5 + .4), P(29.987 + 1, -51.6),
+                       P(60, -51.6), P(60, 1.9)},
+                      tool, mv, "%2001 as written");
     // The level r 15.9935 ends on the translated chamfer at Z-0.6, 0.1 beyond
     // the finished chamfer (Z-0.5 at that radius): the allowance as written.
     int at = 0;
@@ -966,6 +978,28 @@ TEST(G64, RandomGroovesBoresAndSigns) {
     }
     EXPECT_EQ(inside, 12);
     EXPECT_EQ(tried, 12);
+}
+
+// Issue 39 item 1: a counterbore Ø40 x 30 in a Ø20 bore, started at X44 Z2
+// in front of the face, outside the bore: the rapids went 2 mm into the Ø40
+// wall, both ways, and the wall was never roughed below Ø38. Every wall is
+// now at its allowance, and nothing enters the part.
+TEST(G64, CounterboreFromInFrontOfTheFace) {
+    Profile f = poly_profile({P(40, 0), P(40, -30), P(20, -30)});
+    std::vector<V2> stock{P(20, -30), P(20, 0), P(40, 0)};
+    for (const V2& tool : {P(44, 2), P(50, 2), P(18, 2)}) {
+        G64Args a;
+        a.i = -.25, a.k = .25, a.has_p = true, a.p = 2;
+        std::vector<Move> mv;
+        ASSERT_TRUE(ok(g64(f, stock, tool, a, mv)));
+        const std::string name = "counterbore from X" + std::to_string(2 * tool.y());
+        Oracle o(f, stock, V2(a.k, a.i));
+        check_clear(o, tool, mv, 1, name.c_str());
+        check_out_of_part(o, {P(40, 0), P(40, -30), P(20, -30), P(20, -60), P(120, -60), P(120, 0)},
+                          tool, mv, name);
+        check_walls(o, tool, mv, name);
+        EXPECT_TRUE(mv.back().to.isApprox(tool, 1e-12)) << name;
+    }
 }
 
 // Issue 39 items 1 and 2: profiles that are one wall (a bore's or a shaft's
