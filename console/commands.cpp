@@ -87,6 +87,8 @@ bool axis_value(const CommandCall& c, size_t at, int& axis, double& v) {
     return c.words.size() == at + 2 && axis >= 0 && number(c.words[at + 1], v);
 }
 
+const Command* find_command(std::string_view name);
+
 Effect usage(Session& s, std::string_view u) {
     s.say(strf(tr("usage: %s"), std::string(u).c_str()), true);
     return Effect::redraw;
@@ -112,7 +114,7 @@ Effect mode(Session& s, const CommandCall& c) {
     if (!parse_mode(name, m)) {
         if (name == "modif") return s.modif_start();
         if (name == "edit") return s.command("edit");
-        return usage(s, ":mode auto|seq|dry|test|rns|imd|jog|inc|pom");
+        return usage(s, find_command("mode")->usage);  // the table's: every word it takes
     }
     if (std::string why = s.sim().set_mode(m); !why.empty())
         s.say(why, true);

@@ -52,6 +52,13 @@ std::string editor_text(const Console& c) {
 
 }  // namespace
 
+// Item 19: :mode's usage names every word it takes.
+TEST(Newcomer, ModeUsageNamesEditAndModif) {
+    Console c;
+    c.type(":mode xyz");
+    EXPECT_TRUE(has(c.message(), "|edit|modif")) << c.message();
+}
+
 // Item 20: after another program's import, this console's own settings are
 // no news, even those that hold fractions of a µm (a touch-off's PREF).
 TEST(Newcomer, AnImportElsewhereDoesNotListThisConsolesOwnSettings) {
