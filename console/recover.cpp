@@ -115,6 +115,23 @@ std::string Session::recovered_note() const {
     return strf(tr("unsaved work recovered for %s: :edit %d, then :recover"), list.c_str(), first);
 }
 
+// The editor's unsaved work when a signal ends the console (app.cpp):
+// where it is, for stderr; "" when there is none.
+std::string Session::unsaved_note() const {
+    if (!editor.is_open() || !editor.dirty) return {};
+    const int n = editor.number;
+    if (modif) return strf(tr("the MODIF changes of %%%d are lost"), n);
+    std::string path = journal_path(n);
+    if (path.empty() || ::access(path.c_str(), F_OK) != 0)
+        // A new program's % line alone is no work; anything else had no journal.
+        return editor.lines().size() <= 1
+                   ? std::string()
+                   : strf(tr("the unsaved changes of %%%d are lost (no journal)"), n);
+    return strf(tr("the unsaved changes of %%%d are in the recovery journal %s: :edit %d, then "
+                   ":recover"),
+                n, path.c_str(), n);
+}
+
 // On :edit N: a journal that differs from the text loaded is offered.
 void Session::offer_journal(int number, const std::string& loaded) {
     std::string text;

@@ -184,6 +184,10 @@ bool Session::select_program(int number) {
     }
     for (size_t i = 0; i < dir_.size(); ++i)
         if (dir_[i].number == number) dir_cursor = int(i);
+    // Kept at once, not at a clean exit: a killed console starts on it again.
+    // An exercise selects its own program (app.cpp).
+    if (store_ && !exercise_)
+        store_->set_setting("console.program." + m_.name, std::to_string(number));
     Mode m = sim_->mode();
     bool runs = m == Mode::automatic || m == Mode::single || m == Mode::dry || m == Mode::test ||
                 m == Mode::rns;

@@ -133,6 +133,7 @@ class Session {
     Effect close_command(bool force);      // :close asks too
     Effect cycle_command();                // :cycle, Cycle Start
     std::string recovered_note() const;    // journals left by an earlier session
+    std::string unsaved_note() const;      // where unsaved editor work is, "" if none
     // Two consoles on one store (console/shared.cpp).
     void remember_store();
     void follow_store(double dt);

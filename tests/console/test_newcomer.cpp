@@ -52,6 +52,30 @@ std::string editor_text(const Console& c) {
 
 }  // namespace
 
+// Item 6: the program selected is kept when it is selected, not at exit.
+TEST(Newcomer, TheSelectedProgramIsStoredWhenSelected) {
+    TempStore st("selected");
+    Console c("lathe", {}, st.open());
+    c.type(":load 300");
+    auto r = c.s->store()->setting("console.program.lathe");
+    ASSERT_FALSE(r.error);
+    ASSERT_TRUE(r.value.has_value());
+    EXPECT_EQ(*r.value, "300");
+}
+
+// Item 7: what a signal leaves says where the work is.
+TEST(Newcomer, UnsavedWorkAtASignalNamesItsJournal) {
+    TempStore st("signal_note");
+    Console c("lathe", {}, st.open());
+    EXPECT_EQ(c.s->unsaved_note(), "");
+    c.type(":edit 500");
+    EXPECT_EQ(c.s->unsaved_note(), "");
+    c.type("N50 M2");
+    EXPECT_TRUE(has(c.s->unsaved_note(), st.path + ".recover/500.iso")) << c.s->unsaved_note();
+    c.type(":save");
+    EXPECT_EQ(c.s->unsaved_note(), "");
+}
+
 // Item 19: :mode's usage names every word it takes.
 TEST(Newcomer, ModeUsageNamesEditAndModif) {
     Console c;
