@@ -98,6 +98,7 @@ int event_loop(console::Session& s, console::Terminal& term, bool ascii) {
     for (;;) {
         if (term.resized()) dirty = true;
         s.rows = term.rows();
+        s.cols = term.cols();
         if (dirty) {
             if (canvas.width() != term.cols() || canvas.height() != term.rows())
                 canvas.resize(term.cols(), term.rows());

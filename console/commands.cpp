@@ -575,6 +575,30 @@ Effect Session::command(std::string_view text) {
     return Effect::redraw;
 }
 
+// Whether a line typed is :quit (or :q, :quit!): all a too small screen takes.
+bool Session::quits(std::string_view line) {
+    if (line.empty() || line.front() != ':') return false;
+    std::vector<std::string_view> w = words(line.substr(1));
+    const Command* c = w.empty() ? nullptr : find_command(w[0]);
+    return c && c->names.substr(0, c->names.find(' ')) == "quit";
+}
+
+// A key on the "Terminal too small" screen, where the operator sees nothing
+// of the page: only what quits, and the input line's keys to type :quit
+// (not the page's bindings of those keys: Enter on DIR would load blind).
+Effect Session::small_screen_key(const Key& k) {
+    for (const Binding* b : bindings.find(k, pages::page_word(page), mode_word(sim_->mode()),
+                                          m_.lathe ? "lathe" : "mill"))
+        if (const Action* a = find_action(b->action); a && b->action == "quit")
+            return a->run(*this, b->arg);
+    if (k.code == KeyCode::escape && !k.alt && !k.ctrl) return cancel_input();
+    if (for_line_editor(k))
+        input_.feed(k.raw);
+    else
+        say(tr("the terminal is too small: enlarge it, or :quit"), true);
+    return Effect::redraw;
+}
+
 // Cycle Start, after MODIF's changed blocks are taken in.
 Effect Session::cycle_command() {
     if (!modif_apply()) return Effect::redraw;
@@ -605,7 +629,7 @@ Effect Session::close_command(bool force) {
     auto close = [this, n] {
         bool dirty = editor.dirty;
         editor.close();
-        drop_journal(n);
+        if (dirty) drop_journal(n);  // its own; an earlier session's stays for :recover
         release_lease();
         say(dirty ? tr("editor closed (unsaved changes dropped)") : tr("editor closed"));
     };

@@ -24,6 +24,18 @@ Effect Session::edit_open(int number) {
             true);
         return Effect::redraw;
     }
+    if (editor.is_open() && editor.dirty) {
+        // The same program again: loading the stored text would drop the
+        // changes (and the next key would write it over their journal).
+        show_page(pages::PageId::edit);
+        confirm(strf(tr("%%%d has unsaved changes: load the stored text and drop them?"), number),
+                [this, number] {
+                    editor.dirty = false;
+                    drop_journal(number);
+                    edit_open(number);
+                });
+        return Effect::redraw;
+    }
     std::string text;
     int rev = 0;
     bool fresh = false;
@@ -175,6 +187,16 @@ Effect Session::edit_restore(int rev) {
         return Effect::redraw;
     }
     if (!unprotected("programs")) return Effect::redraw;
+    if (editor.dirty) {
+        confirm(strf(tr("%%%d has unsaved changes: restore revision %d and drop them?"),
+                     editor.number, rev),
+                [this, rev] {
+                    editor.dirty = false;
+                    drop_journal(editor.number);
+                    edit_restore(rev);
+                });
+        return Effect::redraw;
+    }
     int n = editor.number;
     auto r = store_->restore(n, rev, "page EDIT");
     if (r.error) {

@@ -141,10 +141,32 @@ void Session::offer_journal(int number, const std::string& loaded) {
         drop_journal(number);
         return;
     }
+    journal_held_ = number;  // no change may write over it before the operator chooses
     say(strf(tr("%%%d has unsaved changes from an earlier session: :recover loads them, :discard "
                 "drops them"),
              number),
         true);
+}
+
+// A key while an earlier session's journal waits for :recover or :discard:
+// a change to the text would write the journal over, so it is undone and
+// refused. Only then is the editor copied (a rare moment).
+Effect Session::held_key(const Key& k) {
+    const Editor before = editor;
+    Effect e = dispatch_key(k);
+    if (journal_held_ == before.number && editor.is_open() && editor.number == before.number &&
+        editor.changes != before.changes) {
+        editor = before;
+        say(strf(tr("%%%d has unsaved changes from an earlier session: :recover or :discard them "
+                    "first"),
+                 before.number),
+            true);
+    }
+    return e;
+}
+
+bool Session::journal_held() const {
+    return journal_held_ >= 0 && editor.is_open() && !modif && editor.number == journal_held_;
 }
 
 // :recover and :discard, on the program open in EDIT.
@@ -160,6 +182,7 @@ Effect Session::recover_command(bool discard) {
         say(strf(tr("%%%d has no recovered changes"), n), true);
         return Effect::redraw;
     }
+    journal_held_ = -1;
     if (discard) {
         drop_journal(n);
         say(strf(tr("recovered changes of %%%d dropped"), n));
@@ -187,7 +210,8 @@ Effect Session::quit_command(bool force) {
             });
         return Effect::redraw;
     }
-    if (force && editor.is_open() && !modif) drop_journal(editor.number);
+    // Only the editor's own journal: a clean editor's is an earlier session's.
+    if (force && editor.is_open() && editor.dirty && !modif) drop_journal(editor.number);
     release_lease();
     quit = true;
     return Effect::quit;

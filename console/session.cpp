@@ -171,6 +171,12 @@ void Session::say(std::string text, bool error) {
 }
 
 void Session::show_page(pages::PageId p) {
+    if (page != p && !pending_confirm.empty()) {
+        // The question was about the page left: it is not answered blind.
+        pending_confirm.clear();
+        on_confirm = nullptr;
+        say(tr("question cancelled: the page changed (nothing changed)"));
+    }
     if (page != p) scroll = 0;
     // The store may have changed (a save, a conflict, another console).
     if (p == pages::PageId::dir && page != p) refresh_dir();
@@ -224,12 +230,14 @@ bool Session::delete_program(int number) {
 // ---- keys ----
 
 Effect Session::on_key(const Key& k) {
-    Effect e = dispatch_key(k);
+    Effect e = journal_held() ? held_key(k) : dispatch_key(k);
     sync_journal();  // a change to the program in EDIT is journaled at once
     return e;
 }
 
 Effect Session::dispatch_key(const Key& k) {
+    if (too_small()) return small_screen_key(k);
+    if (answer_key(k)) return Effect::redraw;
     std::string pg(pages::page_word(page)), md(mode_word(sim_->mode()));
     if (k.code != KeyCode::del) pending_delete = -1;
     for (const Binding* b : bindings.find(k, pg, md, m_.lathe ? "lathe" : "mill")) {
@@ -290,6 +298,10 @@ Effect Session::submit(const std::string& raw) {
     std::string_view line = trim(raw);
     if (line.empty()) return Effect::none;
     input_.add_history(std::string(line));
+    if (too_small() && !quits(line)) {
+        say(tr("the terminal is too small: enlarge it, or :quit"), true);
+        return Effect::redraw;
+    }
     if (line.front() == ':') {
         // A command instead of an answer: the question is dropped, not answered yes.
         pending_confirm.clear();
@@ -409,15 +421,9 @@ std::string Session::mode_news(Mode m) const {
 // never runs an older block than the one the operator believes typed.
 Effect Session::plain_text(const std::string& text) {
     if (!pending_confirm.empty()) {
-        std::string answer = text;
-        for (char& c : answer) c = char(std::tolower(static_cast<unsigned char>(c)));
-        auto run = std::move(on_confirm);
-        pending_confirm.clear();
-        on_confirm = nullptr;
-        if (answer == "y" || answer == "yes" || answer == "o" || answer == "oui")
-            run();
-        else
-            say(tr("cancelled: nothing changed"));
+        std::string a = text;
+        for (char& c : a) c = char(std::tolower(static_cast<unsigned char>(c)));
+        answer(a == "y" || a == "yes" || a == "o" || a == "oui");
         return Effect::redraw;
     }
     long before = refusals_;

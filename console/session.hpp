@@ -170,6 +170,9 @@ class Session {
     // A plausible-but-doubtful setting waits for "y" on the input line.
     std::string pending_confirm;  // what is asked; empty: nothing
     std::function<void()> on_confirm;
+    void answer(bool yes);  // runs on_confirm on yes; either way the question ends
+    // Below 80x24 (DESIGN §2.4) only a resize, :quit and Ctrl-C act.
+    bool too_small() const { return cols < 80 || rows < 24; }
 
   private:
     Effect plain_text(const std::string& line);
@@ -188,6 +191,12 @@ class Session {
     bool read_journal(int number, std::string& text, int& base) const;
     void offer_journal(int number, const std::string& loaded);
     Effect dispatch_key(const Key& k);
+    bool answer_key(const Key& k);
+    Effect small_screen_key(const Key& k);
+    static bool quits(std::string_view line);
+    Effect held_key(const Key& k);
+    bool journal_held() const;
+    int journal_held_ = -1;  // an earlier session's journal not yet recovered or discarded
     void persist_run();
     void check_run_end();
 

@@ -160,6 +160,28 @@ void Session::confirm(std::string question, std::function<void()> then) {
     say(strf(tr("%s y/n?"), question.c_str()), true);
 }
 
+void Session::answer(bool yes) {
+    auto run = std::move(on_confirm);
+    pending_confirm.clear();
+    on_confirm = nullptr;
+    if (yes && run)
+        run();
+    else
+        say(tr("cancelled: nothing changed"));
+}
+
+// One key answers a question (y or o yes, n no), as on the panel; a word
+// typed after another first key still answers at Enter (plain_text).
+bool Session::answer_key(const Key& k) {
+    if (pending_confirm.empty() || !input_.text().empty() || k.code != KeyCode::character ||
+        k.alt || k.ctrl)
+        return false;
+    const char32_t c = k.ch | 0x20;  // lower case, for the ASCII letters asked
+    if (c != U'y' && c != U'o' && c != U'n') return false;
+    answer(c != U'n');
+    return true;
+}
+
 Effect Session::touch(int axis, double surface) {
     if (std::string w = at_rest(*sim_); !w.empty()) {
         say(strf(tr("touch-off: %s"), w.c_str()), true);

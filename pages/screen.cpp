@@ -154,6 +154,13 @@ void too_small(const View& v, Canvas& c) {
         c.text(std::max(0, (c.width() - w) / 2), y0 + i, lines[i],
                i == 0 ? Style::alarm : Style::normal, c.width());
     }
+    // Below, the message and the input line: what :quit needs, seen as typed.
+    const int h = c.height();
+    if (h < y0 + n + 2) return;
+    c.text(0, h - 2, v.message, v.message_error ? Style::alarm : Style::normal, c.width());
+    c.fill(Rect{0, h - 1, c.width(), 1}, U' ', Style::input);
+    const int px = c.text(0, h - 1, v.prompt, Style::input);
+    c.text(px, h - 1, v.input, Style::input, std::max(0, c.width() - px));
 }
 
 }  // namespace

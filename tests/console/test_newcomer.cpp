@@ -52,6 +52,72 @@ std::string editor_text(const Console& c) {
 
 }  // namespace
 
+// Item 5: :edit N on the program open with changes asks first; "n" keeps
+// the changes and the journal goes on holding them.
+TEST(Newcomer, EditingTheOpenProgramAgainAsksBeforeDroppingItsChanges) {
+    TempStore st("edit_again");
+    Console c("lathe", {}, st.open());
+    c.type(":edit 500");
+    c.type("N50 M2 (IMPORTANT WORK)");
+    ASSERT_TRUE(has(st.journal(500), "IMPORTANT WORK"));
+    c.type(":edit 500");
+    ASSERT_FALSE(c.s->pending_confirm.empty()) << c.message();
+    EXPECT_TRUE(has(c.message(), "unsaved changes")) << c.message();
+    c.key("n");  // one key answers
+    EXPECT_TRUE(c.s->pending_confirm.empty());
+    c.type("N60 M5");
+    EXPECT_TRUE(has(editor_text(c), "IMPORTANT WORK")) << editor_text(c);
+    EXPECT_TRUE(has(st.journal(500), "IMPORTANT WORK")) << st.journal(500);
+    EXPECT_TRUE(has(st.journal(500), "N60 M5")) << st.journal(500);
+    // "y" drops them, as asked, with their journal.
+    c.type(":edit 500");
+    c.key("y");
+    EXPECT_FALSE(has(editor_text(c), "IMPORTANT WORK")) << editor_text(c);
+    EXPECT_EQ(st.journal(500), "");
+}
+
+// Item 5, the audit: :restore over unsaved changes asks too.
+TEST(Newcomer, RestoringARevisionOverUnsavedChangesAsks) {
+    TempStore st("restore_dirty");
+    Console c("lathe", {}, st.open());
+    c.type(":edit 300");
+    c.type("N1 (SAVED ONE)");
+    c.type(":save");
+    c.type("N2 (NOT SAVED)");
+    c.type(":restore 1");
+    ASSERT_FALSE(c.s->pending_confirm.empty()) << c.message();
+    c.key("n");
+    EXPECT_TRUE(has(editor_text(c), "NOT SAVED"));
+    EXPECT_TRUE(has(st.journal(300), "NOT SAVED"));
+}
+
+// Item 5, the audit: an earlier session's journal offered by :edit is not
+// written over by the next key, nor dropped by :close, before :recover or
+// :discard.
+TEST(Newcomer, AnEarlierSessionsJournalWaitsForRecoverOrDiscard) {
+    TempStore st("held_journal");
+    {
+        Console a("lathe", {}, st.open());
+        a.type(":edit 500");
+        a.type("N50 M2 (IMPORTANT WORK)");
+    }  // killed: the journal stays
+    ASSERT_TRUE(has(st.journal(500), "IMPORTANT WORK"));
+    Console b("lathe", {}, st.open());
+    b.type(":edit 500");
+    EXPECT_TRUE(has(b.message(), "earlier session")) << b.message();
+    b.type("N60 M5");
+    EXPECT_TRUE(has(b.message(), ":recover or :discard")) << b.message();
+    EXPECT_FALSE(has(editor_text(b), "N60 M5"));
+    EXPECT_TRUE(has(st.journal(500), "IMPORTANT WORK")) << st.journal(500);
+    b.type(":close");
+    EXPECT_TRUE(has(st.journal(500), "IMPORTANT WORK")) << st.journal(500);
+    b.type(":edit 500");
+    b.type(":recover");
+    b.type("N60 M5");
+    EXPECT_TRUE(has(editor_text(b), "IMPORTANT WORK"));
+    EXPECT_TRUE(has(st.journal(500), "N60 M5")) << st.journal(500);
+}
+
 // Item 6: the program selected is kept when it is selected, not at exit.
 TEST(Newcomer, TheSelectedProgramIsStoredWhenSelected) {
     TempStore st("selected");
@@ -74,6 +140,55 @@ TEST(Newcomer, UnsavedWorkAtASignalNamesItsJournal) {
     EXPECT_TRUE(has(c.s->unsaved_note(), st.path + ".recover/500.iso")) << c.s->unsaved_note();
     c.type(":save");
     EXPECT_EQ(c.s->unsaved_note(), "");
+}
+
+// Item 13: one key answers; a page change cancels the question and says so.
+TEST(Newcomer, OneKeyAnswersAndAPageChangeCancels) {
+    Console c;
+    c.type(":page pref");
+    c.type("Z 0");  // D0: asks
+    ASSERT_FALSE(c.s->pending_confirm.empty());
+    c.named("F2");
+    EXPECT_TRUE(c.s->pending_confirm.empty());
+    EXPECT_TRUE(has(c.message(), "question cancelled")) << c.message();
+    c.type(":page pref");
+    c.type("Z 0");
+    ASSERT_FALSE(c.s->pending_confirm.empty());
+    const double before = c.s->sim().interp().frames().pref[Z];
+    c.key("y");  // no Enter
+    EXPECT_TRUE(c.s->pending_confirm.empty());
+    EXPECT_NE(c.s->sim().interp().frames().pref[Z], before);
+    EXPECT_EQ(c.s->input().text(), "");
+}
+
+// Item 14: on the "Terminal too small" screen no key acts blind; :quit and
+// Ctrl-C do.
+TEST(Newcomer, KeysDoNothingBlindOnATooSmallScreen) {
+    Console c;
+    c.type(":mode pom");
+    c.named("F9");
+    c.run_until_settled();
+    c.type(":load 300");
+    c.type(":mode auto");
+    c.s->cols = 60, c.s->rows = 20;
+    c.named("F9");
+    EXPECT_EQ(c.s->sim().state(), RunState::idle);
+    c.named("F2");
+    EXPECT_NE(c.s->page, pages::PageId::om);
+    c.type(":cycle");
+    EXPECT_EQ(c.s->sim().state(), RunState::idle);
+    EXPECT_TRUE(has(c.message(), "too small")) << c.message();
+    const std::string small = c.screen(60, 20);
+    EXPECT_TRUE(has(small, "too small")) << small;
+    c.type(":quit");
+    EXPECT_TRUE(c.s->quit);
+}
+
+TEST(Newcomer, CtrlCQuitsOnATooSmallScreen) {
+    Console c;
+    c.s->cols = 60, c.s->rows = 20;
+    c.named("C-c");
+    EXPECT_TRUE(c.s->quit);
 }
 
 // Item 19: :mode's usage names every word it takes.
