@@ -13,7 +13,8 @@ namespace {
 const char* const kGettingStarted[] = {
     N_("1. Home: F8 until the status line shows POM, then Cycle Start (F9)."),
     N_("2. Jog: F8 to JOG, hold an arrow key (the OP page lists the keys); INC moves one step."),
-    N_("3. Tool: F8 to IMD, type T1 D1 M6, Enter, then F9 (Cycle Start)."),
+    N_("3. Tool: F2 for the OP page, F8 to IMD, type T1 D1 M6, Enter, then F9 (Cycle Start); "
+       "the PREF and CORR pages take settings, not blocks."),
     N_("4. Touch off: jog the tool onto the part, Alt-p for the PREF page, type Z 0 for the face "
        "or "
        "X 59.978 for a diameter; the OP page then reads what you typed."),

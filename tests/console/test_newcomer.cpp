@@ -142,6 +142,28 @@ TEST(Newcomer, UnsavedWorkAtASignalNamesItsJournal) {
     EXPECT_EQ(c.s->unsaved_note(), "");
 }
 
+// Item 12: an ISO block typed on CORR or PREF is refused there, and the
+// message says where blocks go.
+TEST(Newcomer, AnImdBlockTypedOnASettingPageIsRefusedThere) {
+    Console c;
+    c.type(":mode imd");
+    c.type(":page corr");
+    double x = 0, after = 0;
+    ASSERT_TRUE(c.s->sim().interp().get("D1.X", x));
+    c.type("T1 D1 M6 S500 M3");
+    EXPECT_TRUE(has(c.message(), "OP page (F2)")) << c.message();
+    EXPECT_TRUE(c.s->view().message_error);
+    ASSERT_TRUE(c.s->sim().interp().get("D1.X", after));
+    EXPECT_EQ(after, x);
+    c.type(":page pref");
+    c.type("G0 X40 Z25");
+    EXPECT_TRUE(has(c.message(), "OP page (F2)")) << c.message();
+    c.type("X40 Z25");
+    EXPECT_TRUE(has(c.message(), "OP page (F2)")) << c.message();
+    c.type("Z 0");  // still a touch-off (D0: it asks)
+    EXPECT_FALSE(c.s->pending_confirm.empty()) << c.message();
+}
+
 // Item 13: one key answers; a page change cancels the question and says so.
 TEST(Newcomer, OneKeyAnswersAndAPageChangeCancels) {
     Console c;
