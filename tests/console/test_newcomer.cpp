@@ -213,6 +213,17 @@ TEST(Newcomer, CtrlCQuitsOnATooSmallScreen) {
     EXPECT_TRUE(c.s->quit);
 }
 
+// Item 15: an IMD block longer than a block may be is refused at Enter.
+TEST(Newcomer, AnOverlongImdBlockIsRefusedAtEnter) {
+    Console c;
+    c.type(":mode imd");
+    c.type("G0 X10 (" + std::string(5490, 'A') + ")");
+    EXPECT_TRUE(has(c.message(), "error 1: block longer than 117 characters")) << c.message();
+    EXPECT_TRUE(c.s->view().message_error);
+    c.named("F9");
+    EXPECT_FALSE(c.s->sim().alarm_active());
+}
+
 // Item 19: :mode's usage names every word it takes.
 TEST(Newcomer, ModeUsageNamesEditAndModif) {
     Console c;
