@@ -4,7 +4,9 @@
 // and MODIF: changing the blocks not yet prepared of an interrupted program,
 // which the resumed run then executes.
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include <cctype>
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
 
 #include "console/session.hpp"
@@ -80,6 +82,7 @@ Effect Session::edit_text(const std::string& block) {
         say(tr("no program open: :edit N"), true);
         return Effect::redraw;
     }
+    if (!block.empty() && block[0] == '%') return edit_header(block);
     std::string why = modify_pending ? editor.replace(block) : editor.insert_after(block);
     modify_pending = false;
     if (!why.empty())
@@ -87,6 +90,26 @@ Effect Session::edit_text(const std::string& block) {
     else
         say(editor.dirty ? strf(tr("block %d (not saved)"), editor.cursor + 1)
                          : strf(tr("block %d"), editor.cursor + 1));
+    return Effect::redraw;
+}
+
+// "%500 (TEST)" typed in %500 is its header, as the first line of a file
+// would be; another number is another program, opened by :edit.
+Effect Session::edit_header(const std::string& line) {
+    modify_pending = false;
+    long n = std::strtol(line.c_str() + 1, nullptr, 10);
+    if (n != editor.number || line.size() < 2 ||
+        !std::isdigit(static_cast<unsigned char>(line[1]))) {
+        say(strf(tr("this is %%%d: a %% line is its header, %%%d (TITLE); :edit N opens another"),
+                 editor.number, editor.number),
+            true);
+        return Effect::redraw;
+    }
+    if (std::string why = editor.set_header(line); !why.empty()) {
+        say(why, true);
+        return Effect::redraw;
+    }
+    say(strf(tr("header %s (not saved)"), line.c_str()));
     return Effect::redraw;
 }
 

@@ -143,6 +143,7 @@ class Session {
     std::string other_editor(int number) const;
     Effect edit_save(bool force);
     Effect edit_text(const std::string& block);
+    Effect edit_header(const std::string& line);  // a % line typed in EDIT
     Effect edit_history();
     Effect edit_restore(int revision);
     Effect modif_start();

@@ -224,6 +224,26 @@ TEST(Newcomer, AnOverlongImdBlockIsRefusedAtEnter) {
     EXPECT_FALSE(c.s->sim().alarm_active());
 }
 
+// Item 18: a typed % line of the program open is its header.
+TEST(Newcomer, ATypedHeaderIsTheNewProgramsHeader) {
+    TempStore st("header");
+    Console c("lathe", {}, st.open());
+    c.type(":edit 500");
+    c.type("%500 (TEST)");
+    c.type("N10 G0 X10");
+    c.type("N20 M2");
+    ASSERT_EQ(c.s->editor.lines().size(), 3u) << editor_text(c);
+    EXPECT_EQ(c.s->editor.lines()[0], "%500 (TEST)");
+    c.type(":save");
+    EXPECT_TRUE(has(c.message(), "saved as revision")) << c.message();
+    auto r = c.s->store()->read(500);
+    ASSERT_FALSE(r.error);
+    EXPECT_EQ(r.value.text, "%500 (TEST)\nN10 G0 X10\nN20 M2\n");
+    c.type("%501 (OTHER)");
+    EXPECT_TRUE(has(c.message(), ":edit N opens another")) << c.message();
+    EXPECT_EQ(c.s->editor.lines().size(), 3u);
+}
+
 // Item 19: :mode's usage names every word it takes.
 TEST(Newcomer, ModeUsageNamesEditAndModif) {
     Console c;
