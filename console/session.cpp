@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <utility>
 
 #include "console/commands.hpp"
 #include "console/exercise.hpp"
@@ -237,6 +238,8 @@ Effect Session::on_key(const Key& k) {
 
 Effect Session::dispatch_key(const Key& k) {
     if (too_small()) return small_screen_key(k);
+    if (std::exchange(swallow_enter_, false) && k.code == KeyCode::enter && input_.text().empty())
+        return Effect::redraw;
     if (answer_key(k)) return Effect::redraw;
     std::string pg(pages::page_word(page)), md(mode_word(sim_->mode()));
     if (k.code != KeyCode::del) pending_delete = -1;

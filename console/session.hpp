@@ -193,6 +193,7 @@ class Session {
     void offer_journal(int number, const std::string& loaded);
     Effect dispatch_key(const Key& k);
     bool answer_key(const Key& k);
+    bool swallow_enter_ = false;  // a key just answered a question
     Effect small_screen_key(const Key& k);
     static bool quits(std::string_view line);
     Effect held_key(const Key& k);

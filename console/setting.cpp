@@ -198,6 +198,7 @@ bool Session::answer_key(const Key& k) {
     const char32_t c = k.ch | 0x20;  // lower case, for the ASCII letters asked
     if (c != U'y' && c != U'o' && c != U'n') return false;
     answer(c != U'n');
+    swallow_enter_ = true;  // "y" then Enter, by habit: the Enter is not a second action
     return true;
 }
 
@@ -345,7 +346,7 @@ Effect Session::setting_text(std::string_view text) {
     bool corr = page == pages::PageId::corr;
     if (eq == std::string::npos && looks_like_block(t)) {
         // TRANSLATORS: on the PREF or CORR page, an ISO block typed there.
-        say(tr("an ISO block goes to IMD on the OP page (F2); this page takes settings"), true);
+        say(tr("ISO blocks are typed in IMD on the OP page (F2), not here"), true);
         return Effect::redraw;
     }
     if (eq != std::string::npos) {

@@ -151,15 +151,15 @@ TEST(Newcomer, AnImdBlockTypedOnASettingPageIsRefusedThere) {
     double x = 0, after = 0;
     ASSERT_TRUE(c.s->sim().interp().get("D1.X", x));
     c.type("T1 D1 M6 S500 M3");
-    EXPECT_TRUE(has(c.message(), "OP page (F2)")) << c.message();
+    EXPECT_TRUE(has(c.message(), "in IMD on the OP page (F2)")) << c.message();
     EXPECT_TRUE(c.s->view().message_error);
     ASSERT_TRUE(c.s->sim().interp().get("D1.X", after));
     EXPECT_EQ(after, x);
     c.type(":page pref");
     c.type("G0 X40 Z25");
-    EXPECT_TRUE(has(c.message(), "OP page (F2)")) << c.message();
+    EXPECT_TRUE(has(c.message(), "in IMD on the OP page (F2)")) << c.message();
     c.type("X40 Z25");
-    EXPECT_TRUE(has(c.message(), "OP page (F2)")) << c.message();
+    EXPECT_TRUE(has(c.message(), "in IMD on the OP page (F2)")) << c.message();
     c.type("Z 0");  // still a touch-off (D0: it asks)
     EXPECT_FALSE(c.s->pending_confirm.empty()) << c.message();
 }
@@ -181,6 +181,15 @@ TEST(Newcomer, OneKeyAnswersAndAPageChangeCancels) {
     EXPECT_TRUE(c.s->pending_confirm.empty());
     EXPECT_NE(c.s->sim().interp().frames().pref[Z], before);
     EXPECT_EQ(c.s->input().text(), "");
+    // The Enter typed after it by habit is not a second action (in EDIT,
+    // Enter on an empty line would take the block under the cursor).
+    c.type(":edit 300");
+    c.type("N1 (CHANGED)");
+    c.type(":close");
+    c.key("n");
+    c.key("\r");
+    EXPECT_FALSE(c.s->modify_pending);
+    EXPECT_TRUE(has(c.message(), "cancelled")) << c.message();
 }
 
 // Item 14: on the "Terminal too small" screen no key acts blind; :quit and
