@@ -100,7 +100,7 @@ Effect Session::edit_header(const std::string& line) {
     long n = std::strtol(line.c_str() + 1, nullptr, 10);
     if (n != editor.number || line.size() < 2 ||
         !std::isdigit(static_cast<unsigned char>(line[1]))) {
-        say(strf(tr("this is %%%d: a %% line is its header, %%%d (TITLE); :edit N opens another"),
+        say(strf(tr("this is %%%d: its header is %%%d (TITLE); :edit N opens another"),
                  editor.number, editor.number),
             true);
         return Effect::redraw;

@@ -157,8 +157,7 @@ Effect Session::held_key(const Key& k) {
     if (journal_held_ == before.number && editor.is_open() && editor.number == before.number &&
         editor.changes != before.changes) {
         editor = before;
-        say(strf(tr("%%%d has unsaved changes from an earlier session: :recover or :discard them "
-                    "first"),
+        say(strf(tr("%%%d: an earlier session's changes wait: :recover or :discard them first"),
                  before.number),
             true);
     }
