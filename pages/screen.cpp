@@ -254,10 +254,13 @@ void draw_lines(const std::vector<Line>& lines, int scroll, Canvas& c, const Rec
         if (l.fill) c.style(Rect{r.x, r.y + i, r.w, 1}, l.fill_style);
     }
     if (n > r.h) {
-        // Where we are in a long page: "12-31/140" at the bottom right.
+        // Where we are in a long page: "12-31/140" at the right of the page's
+        // rule above the lines, where it hides no text (over the last line
+        // it hid the end of whatever was there).
         std::string where = std::to_string(scroll + 1) + "-" +
                             std::to_string(std::min(n, scroll + r.h)) + "/" + std::to_string(n);
-        c.text_right(r.x, r.y + r.h - 1, r.w, " " + where + " ", Style::dim);
+        const int row = r.y > 0 ? r.y - 1 : r.y + r.h - 1;
+        c.text_right(r.x, row, r.w - 1, " " + where + " ", Style::dim);
     }
 }
 
