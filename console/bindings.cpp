@@ -382,8 +382,8 @@ const Action* find_action(std::string_view name) {
 // The soft-key labels of the pages (F1-F7 and the like), for the catalogue.
 // TRANSLATORS: a page's soft-key label: at most 6 columns (5 on F10).
 [[maybe_unused]] const char* const kPageLabels[] = {
-    N_("HELP"), N_("OP/OM"), N_("PROG/GR"), N_("INFO"),  N_("SET"),  N_("DIR"),     N_("ALARM"),
-    N_("PREF"), N_("CORR"),  N_("PARAM"),   N_("GRAPH"), N_("EDIT"), N_("HISTORY"), N_("SHOP")};
+    N_("HELP"), N_("OP/OM"), N_("PRG/GR"), N_("INFO"),  N_("SET"),  N_("DIR"),     N_("ALARM"),
+    N_("PREF"), N_("CORR"),  N_("PARAM"),  N_("GRAPH"), N_("EDIT"), N_("HISTORY"), N_("SHOP")};
 
 std::string help_text(const Action& a, std::string_view arg) {
     std::string h = pages::tr_text(a.help);
@@ -400,7 +400,7 @@ std::string soft_label(const Action& a, std::string_view arg) {
     if (size_t p = l.find("%S"); p != std::string::npos) {
         std::string up(arg == "pos"    ? "OP/OM"
                        : arg == "set"  ? "SET"
-                       : arg == "prog" ? "PROG/GR"
+                       : arg == "prog" ? "PRG/GR"
                                        : arg);
         for (char& c : up) c = char(std::toupper(static_cast<unsigned char>(c)));
         // A page's soft key in the language of the panel (the modes keep their NUM names).

@@ -166,6 +166,11 @@ void Session::refresh_dir() {
 }
 
 void Session::say(std::string text, bool error) {
+    // The ALARM page keeps them in full: the message line cuts a long one.
+    if (!text.empty() && (said_.empty() || said_.front() != text)) {
+        said_.insert(said_.begin(), text);
+        if (said_.size() > 30) said_.pop_back();
+    }
     message_ = std::move(text);
     message_error_ = error;
     if (error) ++refusals_;
@@ -700,6 +705,7 @@ pages::View Session::view() const {
     v.last_setting = last_setting_;
     v.witness = witness_text();
     v.readings = &readings_;
+    v.messages = &said_;
     exercise_view(v);
     view_editor(v);
     v.graph = graph;

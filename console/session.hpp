@@ -238,6 +238,7 @@ class Session {
     long refusals_ = 0;
     std::string last_setting_;           // the PREF and CORR pages show its arithmetic
     std::vector<std::string> readings_;  // the WORKSHOP page's, newest first
+    std::vector<std::string> said_;      // the message line's, newest first (ALARM page)
     uint64_t journaled_changes_ = 0;
     int64_t data_version_ = -1;  // PRAGMA data_version last seen
     double poll_wait_ = 0, lease_wait_ = 0;

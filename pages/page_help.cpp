@@ -75,7 +75,21 @@ void entry(std::vector<Line>& lines, const std::string& key, int col, const std:
     const int indent = 3 + col + 1;
     std::string text = what + (when.empty() ? "" : "  (" + when + ")");
     bool own_line = columns(key) > col;
-    if (own_line) lines.push_back(Line{}.add("   " + key, Style::value));
+    if (own_line) {
+        // A usage wider than the page breaks after a '|' (":page om|op|…").
+        std::string row;
+        for (size_t i = 0; i < key.size();) {
+            size_t bar = key.find('|', i);
+            std::string piece = key.substr(i, bar == std::string::npos ? bar : bar + 1 - i);
+            i = bar == std::string::npos ? key.size() : bar + 1;
+            if (!row.empty() && 5 + columns(row + piece) > width) {
+                lines.push_back(Line{}.add("   " + row, Style::value));
+                row = "  ";
+            }
+            row += piece;
+        }
+        lines.push_back(Line{}.add("   " + row, Style::value));
+    }
     auto parts = wrap_text(text, std::max(20, width - indent - 1));
     for (size_t i = 0; i < parts.size(); ++i) {
         Line l;

@@ -86,16 +86,16 @@ void machine_lines(const workshop::Workshop& w, const View& v, int width, std::v
         row(i ? "" : tr("Tools"), wrapped[i], Style::normal);
 }
 
-void instrument_lines(bool mill, std::vector<Line>& out) {
-    out.push_back(Line{}.add(
-        " " + std::string(mill ? tr("Instruments: type a request, Enter reads it (X Y Z from the "
-                                    "block's corner, Z from its top face)")
-                               : tr("Instruments: type a request, Enter reads it (Z from the "
-                                    "part's right-hand face)")),
-        Style::title));
+void instrument_lines(bool mill, int width, std::vector<Line>& out) {
+    add_wrapped(out, Line{}.add(" "),
+                mill ? tr("Instruments: type a request, Enter reads it (X Y Z from the "
+                          "block's corner, Z from its top face)")
+                     : tr("Instruments: type a request, Enter reads it (Z from the "
+                          "part's right-hand face)"),
+                width, Style::title);
     for (const InstrumentLine& i : mill ? std::span(kMill) : std::span(kLathe)) {
         std::string what = std::string(tr(i.name)) + " " + i.res + "  " + tr(i.what);
-        out.push_back(Line{}.add("   " + pad(i.form, 22), Style::value).add(what, Style::normal));
+        add_wrapped(out, Line{}.add("   " + pad(i.form, 22), Style::value), what, width);
     }
 }
 
@@ -108,30 +108,33 @@ void page_shop(const View& v, Canvas& c, const Rect& r) {
     c.rule(r.y, w ? strf(tr("WORKSHOP  setup %s"), w->setup().name.c_str())
                   : std::string(tr("WORKSHOP")));
     std::vector<Line> lines;
+    const int width = r.w - 1;
     if (!w) {
-        lines.push_back(Line{}.add(
-            " " + std::string(mill ? tr("No workshop: the machine moves a point. :setup mill puts "
-                                        "a block in the vice.")
-                                   : tr("No workshop: the machine moves a point. :setup lathe "
-                                        "puts a bar in the chuck.")),
-            Style::dim));
+        add_wrapped(lines, Line{}.add(" "),
+                    mill ? tr("No workshop: the machine moves a point. :setup mill puts "
+                              "a block in the vice.")
+                         : tr("No workshop: the machine moves a point. :setup lathe "
+                              "puts a bar in the chuck."),
+                    width, Style::dim);
         draw_lines(lines, v.scroll, c, Rect{r.x, r.y + 1, r.w, r.h - 1});
         return;
     }
     machine_lines(*w, v, r.w, lines);
-    lines.push_back(Line{});
-    instrument_lines(w->is_mill(), lines);
+    // The readings before the instruments' table: the newest is what the
+    // operator looks for, on the first screen.
     lines.push_back(Line{});
     lines.push_back(Line{}.add(" " + std::string(tr("Readings (newest first)")), Style::title));
     if (!v.readings || v.readings->empty())
         lines.push_back(Line{}.add("   " + std::string(tr("none yet")), Style::dim));
     else
-        for (const std::string& s : *v.readings) lines.push_back(Line{}.add("   " + s));
+        for (const std::string& s : *v.readings) add_wrapped(lines, Line{}.add("   "), s, width);
     lines.push_back(Line{});
-    lines.push_back(Line{}.add(
-        " " + std::string(tr(":part new fresh stock, :part export FILE, :shim MM|off the paper "
-                             "test, :setup NAME|off")),
-        Style::dim));
+    instrument_lines(w->is_mill(), width, lines);
+    lines.push_back(Line{});
+    add_wrapped(lines, Line{}.add(" "),
+                tr(":part new fresh stock, :part export FILE, :shim MM|off the paper "
+                   "test, :setup NAME|off"),
+                width, Style::dim);
     draw_lines(lines, v.scroll, c, Rect{r.x, r.y + 1, r.w, r.h - 1});
 }
 

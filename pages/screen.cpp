@@ -242,6 +242,21 @@ std::vector<std::string> wrap_text(const std::string& text, int width) {
     return out;
 }
 
+void add_wrapped(std::vector<Line>& out, Line lead, const std::string& text, int width, Style st) {
+    int indent = 0;
+    for (const auto& part : lead.parts) indent += columns(part.first);
+    const auto parts = wrap_text(text, std::max(20, width - indent));
+    for (size_t i = 0; i < parts.size(); ++i) {
+        if (i == 0) {
+            out.push_back(std::move(lead));
+            out.back().add(parts[i], st);
+        } else {
+            out.push_back(Line{}.add(std::string(size_t(indent), ' ') + parts[i], st));
+        }
+    }
+    if (parts.empty()) out.push_back(std::move(lead));
+}
+
 // A long page is a list of lines; the view's scroll picks the ones shown.
 void draw_lines(const std::vector<Line>& lines, int scroll, Canvas& c, const Rect& r) {
     int n = int(lines.size());

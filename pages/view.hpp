@@ -108,6 +108,7 @@ struct View {
     GraphView graph;
     // WORKSHOP: the readings taken, newest first, as the message line said them.
     const std::vector<std::string>* readings = nullptr;
+    const std::vector<std::string>* messages = nullptr;  // the message line's, newest first
     // EXERCISE: the task before :submit, the report after; empty: none.
     std::vector<std::pair<ExLine, std::string>> exercise;
 };
