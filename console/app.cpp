@@ -25,6 +25,7 @@
 #include "console/term.hpp"
 #include "core/i18n.hpp"
 #include "pages/canvas.hpp"
+#include "pages/pages.hpp"
 #include "pages/view.hpp"
 #include "store/store.hpp"
 
@@ -198,7 +199,7 @@ void first_screen(console::Session& s, const MachineProfile& m) {
         // TRANSLATORS: the console's first message line (80 columns): the
         // version, the machine profile's name, the keys to begin with.
         news = strf(tr("pupitre %s, %s: F1 help, F6 programs, F8 mode, F9 Cycle Start"),
-                    PUPITRE_VERSION, m.name.c_str());
+                    PUPITRE_VERSION, pages::machine_word(m.name).c_str());
     s.say(news, false);
 }
 

@@ -18,6 +18,7 @@
 #include "console/workshop_io.hpp"
 #include "core/i18n.hpp"
 #include "core/workshop/report.hpp"
+#include "pages/pages.hpp"
 
 namespace pupitre::console {
 
@@ -232,7 +233,7 @@ Effect setup(Session& s, const CommandCall& c) {
     if (s.hidden(":setup")) return Effect::redraw;
     if (what.empty()) {
         s.say(now ? strf(tr("workshop: setup %s, %s"), now->setup().name.c_str(),
-                         now->setup().description.c_str())
+                         pages::tr_text(now->setup().description).c_str())
                   : strf(tr("no workshop: the machine moves a point (:setup %s)"),
                          s.machine_setup()));
         return Effect::redraw;
@@ -255,7 +256,7 @@ Effect setup(Session& s, const CommandCall& c) {
     s.sim().set_workshop(std::make_unique<workshop::Workshop>(s.machine(), st, nullptr));
     s.say(strf(st.kind == "mill" ? tr("workshop: setup %s, %s; a fresh block in the vice")
                                  : tr("workshop: setup %s, %s; fresh stock in the chuck"),
-               st.name.c_str(), st.description.c_str()));
+               st.name.c_str(), pages::tr_text(st.description).c_str()));
     s.save_workshop();
     return Effect::redraw;
 }

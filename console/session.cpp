@@ -119,7 +119,7 @@ Effect Session::read_part(std::string_view spec) {
     }
     // An exercise allows some instruments only; what is read may explain a
     // mistake (a diameter taken for a radius).
-    const std::string word = asked.substr(0, asked.find(' '));
+    const std::string word(workshop::instrument_word(asked.substr(0, asked.find(' '))));
     if (!instrument_allowed(word)) return Effect::redraw;
     note_reading(word, r.value);
     int decimals = r.resolution < 0.005 ? 3 : 2;

@@ -81,7 +81,8 @@ void status_line(const View& v, Canvas& c) {
     // TRANSLATORS: status line, memory protection on: at most 5 columns.
     std::string lock = v.protect ? std::string(tr("LOCK")) + " " : "";
     char right[112];
-    std::snprintf(right, sizeof right, "%s%s F%d%% S%d%%%s%s %s ", lock.c_str(), v.machine.c_str(),
+    const std::string machine = machine_word(v.machine);
+    std::snprintf(right, sizeof right, "%s%s F%d%% S%d%%%s%s %s ", lock.c_str(), machine.c_str(),
                   s.feed_override, s.spindle_override, s.interp().options().block_skip ? " /" : "",
                   s.interp().options().optional_stop ? " M01" : "", v.speed.c_str());
     c.text_right(0, 0, c.width(), right, Style::status);
@@ -107,6 +108,14 @@ void softkeys(const View& v, Canvas& c, int y) {
 }
 
 }  // namespace
+
+// The machine's name as the panel says it: the built-in lathe and mill in
+// the console's language (a profile's own name as it is).
+std::string machine_word(const std::string& name) {
+    if (name == "lathe") return tr("lathe");
+    if (name == "mill") return tr("mill");
+    return name;
+}
 
 std::string_view page_word(PageId p) {
     return kPageWords[int(p)];
