@@ -237,8 +237,8 @@ french)
     wait_for 'PREF.Z = OM 100.000 - jauge 38.237 - surface 0.000 = 61.763'
     cmd "X 59,978"
     wait_for 'X 59,978 lu comme 59.978'
-    wait_for 'PREF.X \(rayon\) = OM ø220.000/2 - jauge 63.345 - surface ø59.978/2 ='
-    wait_for '^ +16.666 \(avant 0.000\)'
+    wait_for 'PREF.X \(rayon\) = OM ø220.000/2 - jauge 63.345 - surface ø59.978/2'
+    wait_for '^ +(= )?16.666 \(avant 0.000\)'
     status=$(screen_e | head -1)
     [[ $status == *'[37m'*'[44m'* || $status == *'37;44'* ]] || fail "the status line is not white on blue: $status"
     cmd ":page op"
