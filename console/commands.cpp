@@ -48,10 +48,16 @@ std::vector<std::string_view> words(std::string_view s) {
     return out;
 }
 
+// A number typed in a command; a French decimal comma (:jog X -1,5) is read
+// as a point, as on the setting pages (README). Programs keep error 1.
 bool number(std::string_view s, double& out) {
     if (!s.empty() && s.front() == '+') s.remove_prefix(1);
-    auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
-    return ec == std::errc() && p == s.data() + s.size() && std::isfinite(out);
+    std::string t(s);
+    if (size_t c = t.find(','); c != std::string::npos && t.find(',', c + 1) == std::string::npos &&
+                                t.find('.') == std::string::npos)
+        t[c] = '.';
+    auto [p, ec] = std::from_chars(t.data(), t.data() + t.size(), out);
+    return ec == std::errc() && p == t.data() + t.size() && std::isfinite(out);
 }
 
 bool integer(std::string_view s, long& out) {

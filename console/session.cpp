@@ -503,8 +503,9 @@ Effect Session::set_value(std::string_view a) {
     size_t eq = a.find('=');
     std::string name(trim(a.substr(0, eq)));
     double v = 0;
-    std::string_view val =
-        eq == std::string_view::npos ? std::string_view{} : trim(a.substr(eq + 1));
+    std::string val(eq == std::string_view::npos ? std::string_view{} : trim(a.substr(eq + 1)));
+    if (size_t c = val.find(','); c != std::string::npos && val.find('.') == std::string::npos)
+        val[c] = '.';  // L5=2,5: a French decimal comma, as on the setting pages
     auto [p, ec] = std::from_chars(val.data(), val.data() + val.size(), v);
     if (eq == std::string_view::npos || ec != std::errc() || p != val.data() + val.size()) {
         say(tr("set: NAME=VALUE, e.g. L5=2, E80000=18000, PREF.X=-120.5, D1.R=0.8"), true);

@@ -275,3 +275,16 @@ TEST(Newcomer, AnImportElsewhereDoesNotListThisConsolesOwnSettings) {
     EXPECT_FALSE(has(a.message(), "PREF.Z")) << a.message();
     EXPECT_FALSE(has(a.message(), "D1.X")) << a.message();
 }
+
+// Item 9: the decimal comma the README promises, in commands and on PARAM
+// as on the setting pages.
+TEST(Newcomer, ADecimalCommaIsReadInCommandsAndOnParam) {
+    Console c;
+    c.type(":inc 0,5");
+    EXPECT_EQ(c.s->sim().increment, 0.5) << c.message();
+    c.type(":set L6=1,25");
+    EXPECT_EQ(c.message(), "L6 = 1.25");
+    c.type(":page param");
+    c.type("L5=2,5");
+    EXPECT_EQ(c.message(), "L5 = 2.5");
+}
