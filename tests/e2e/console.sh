@@ -14,7 +14,7 @@ start)
     start
     wait_for '^ AUTO '
     wait_for 'OP  program position'
-    wait_for '1HELP +2OP/OM +3PROG'
+    wait_for '1HELP +2OP/OM +3PRG/GR'
     keys F1
     wait_for 'HELP  keys and commands'
     keys F6
