@@ -152,15 +152,9 @@ std::string Sim::imd(std::string_view blocks) {
     if (in_cycle()) return tr("the previous IMD block is still running");
     // A block that does not read is refused now, as :save refuses it, not at
     // Cycle Start as an alarm that needs RAZ (a paste of 5,000 characters).
-    for (size_t at = 0; at <= blocks.size();) {
-        size_t eol = std::min(blocks.find('\n', at), blocks.size());
-        Block b;
-        Error e;
-        if (!parse_block(blocks.substr(at, eol - at), b, e))
-            // TRANSLATORS: an IMD block refused at Enter: the NUM error and its text.
-            return strf(tr("error %d: %s (not taken)"), e.code, e.detail.c_str());
-        at = eol + 1;
-    }
+    if (Error e; !parse_lines(blocks, e))
+        // TRANSLATORS: an IMD block refused at Enter: the NUM error and its text.
+        return strf(tr("error %d: %s (not taken)"), e.code, e.detail.c_str());
     imd_ = std::make_unique<ProgramText>();
     imd_->file = "IMD";
     imd_->text = std::make_shared<Text>(std::string(blocks) + "\n");
