@@ -435,6 +435,15 @@ std::string soft_label(const Action& a, std::string_view arg) {
     return l;
 }
 
+// TRANSLATORS: the label of these keys on a keyboard of your language.
+[[maybe_unused]] const char* const kKeyLabels[] = {N_("Enter"), N_("Del"), N_("Esc")};
+
+std::string key_label(const std::string& key_text) {
+    for (const char* k : kKeyLabels)
+        if (key_text == k) return tr(k);
+    return key_text;
+}
+
 std::string context_text(const Context& c) {
     std::string out;
     auto add = [&](const std::string& s) {

@@ -646,7 +646,7 @@ void Session::view_keys(pages::View& v) const {
         const Action* a = find_action(b.action);
         if (a)
             v.help.push_back(
-                pages::HelpLine{b.key_text, help_text(*a, b.arg), context_text(b.when)});
+                pages::HelpLine{key_label(b.key_text), help_text(*a, b.arg), context_text(b.when)});
     }
     for (const Command& c : commands())
         if (!c.usage.empty())

@@ -49,6 +49,10 @@ TEST_F(French, HelpSaysPagesModesAndDirectionsInFrench) {
     EXPECT_TRUE(has(h, "la page AIDE")) << h;
     EXPECT_TRUE(has(h, "zoom avant")) << h;
     EXPECT_TRUE(has(h, "(gauche)")) << h;
+    // The keys as a French keyboard labels them, in the key column and the text.
+    EXPECT_TRUE(has(h, "   Entrée ")) << h;
+    EXPECT_TRUE(has(h, "   Suppr ")) << h;
+    EXPECT_FALSE(has(h, "Escape la vide")) << h;
 }
 
 TEST_F(French, TheSetupAndTheInstrumentsSpeakFrench) {
