@@ -9,6 +9,7 @@
 #include <cerrno>
 #include <chrono>
 #include <clocale>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -24,6 +25,7 @@
 #include "console/term.hpp"
 #include "core/i18n.hpp"
 #include "pages/canvas.hpp"
+#include "pages/pages.hpp"
 #include "pages/view.hpp"
 #include "store/store.hpp"
 
@@ -65,12 +67,27 @@ bool console_machine(const ConsoleArgs& a, store::Store& s, MachineProfile& m) {
     return true;
 }
 
+const char* signal_name(int sig) {
+    switch (sig) {
+        case SIGTERM:
+            return "SIGTERM";
+        case SIGHUP:
+            return "SIGHUP";
+        case SIGINT:
+            return "SIGINT";
+        case SIGQUIT:
+            return "SIGQUIT";
+    }
+    return "signal";
+}
+
 // Cursor position of the input line, as render_screen lays it out.
 void input_cursor(const pages::View& v, const pages::Canvas& c, int& x, int& y) {
     int px = pages::columns(v.prompt);
     int room = c.width() - px - 1;
     x = px + (v.input_cursor > room ? room : v.input_cursor);
     y = c.height() - 2;
+    if (c.width() < 80 || c.height() < 24) y = c.height() - 1;  // the "too small" screen's
 }
 
 int event_loop(console::Session& s, console::Terminal& term, bool ascii) {
@@ -82,6 +99,7 @@ int event_loop(console::Session& s, console::Terminal& term, bool ascii) {
     for (;;) {
         if (term.resized()) dirty = true;
         s.rows = term.rows();
+        s.cols = term.cols();
         if (dirty) {
             if (canvas.width() != term.cols() || canvas.height() != term.rows())
                 canvas.resize(term.cols(), term.rows());
@@ -181,7 +199,7 @@ void first_screen(console::Session& s, const MachineProfile& m) {
         // TRANSLATORS: the console's first message line (80 columns): the
         // version, the machine profile's name, the keys to begin with.
         news = strf(tr("pupitre %s, %s: F1 help, F6 programs, F8 mode, F9 Cycle Start"),
-                    PUPITRE_VERSION, m.name.c_str());
+                    PUPITRE_VERSION, pages::machine_word(m.name).c_str());
     s.say(news, false);
 }
 
@@ -267,9 +285,15 @@ int console(const ConsoleArgs& a) {
     }
     bool ascii = a.ascii || !console::Terminal::utf8_locale();
     int rc = event_loop(s, term, ascii);
-    if (s.sim().selected() >= 0)
-        s.store()->set_setting("console.program." + m.name, std::to_string(s.sim().selected()));
     term.close();
+    // A signal (a logout, a kill) ended the console with the editor's work
+    // unsaved: the shell hears how it ended, the operator where the work is.
+    if (int sig = console::Terminal::signal_caught(); sig != 0) {
+        if (std::string note = s.unsaved_note(); !note.empty()) {
+            std::fprintf(stderr, tr("pupitre: %s: %s\n"), signal_name(sig), note.c_str());
+            return 128 + sig;
+        }
+    }
     if (!s.restart_exercise.empty()) return restart_on(a, s, s.restart_exercise);
     return rc;
 }

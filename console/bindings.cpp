@@ -382,8 +382,33 @@ const Action* find_action(std::string_view name) {
 // The soft-key labels of the pages (F1-F7 and the like), for the catalogue.
 // TRANSLATORS: a page's soft-key label: at most 6 columns (5 on F10).
 [[maybe_unused]] const char* const kPageLabels[] = {
-    N_("HELP"), N_("OP/OM"), N_("PROG/GR"), N_("INFO"),  N_("SET"),  N_("DIR"),     N_("ALARM"),
-    N_("PREF"), N_("CORR"),  N_("PARAM"),   N_("GRAPH"), N_("EDIT"), N_("HISTORY"), N_("SHOP")};
+    N_("HELP"), N_("OP/OM"), N_("PRG/GR"), N_("INFO"),  N_("SET"),  N_("DIR"),     N_("ALARM"),
+    N_("PREF"), N_("CORR"),  N_("PARAM"),  N_("GRAPH"), N_("EDIT"), N_("HISTORY"), N_("SHOP")};
+
+// The words of the bindings' arguments, for the catalogue: the HELP page
+// says them in the console's language (arg_text).
+[[maybe_unused]] const char* const kArgWords[] = {N_("in"), N_("out"),  N_("left"), N_("right"),
+                                                  N_("up"), N_("down"), N_("home"), N_("end")};
+
+// An action's argument as HELP says it: a page by its name on the panel
+// (AIDE, ALARME), a mode by its NUM name, a direction in the console's
+// language; a number or an axis as it is.
+std::string arg_text(std::string_view action, std::string_view arg) {
+    std::string up(arg);
+    for (char& c : up) c = char(std::toupper(static_cast<unsigned char>(c)));
+    if (action == "page") return up == "SHOP" ? std::string(tr("WORKSHOP")) : pages::tr_text(up);
+    if (action == "mode") {
+        // "jog|inc" (a context): each of them.
+        if (size_t bar = arg.find('|'); bar != std::string_view::npos)
+            return arg_text(action, arg.substr(0, bar)) + "|" +
+                   arg_text(action, arg.substr(bar + 1));
+        Mode m;
+        return parse_mode(arg, m) ? std::string(mode_name(m)) : up;
+    }
+    for (const char* w : kArgWords)
+        if (arg == w) return pages::tr_text(w);
+    return std::string(arg);
+}
 
 std::string help_text(const Action& a, std::string_view arg) {
     std::string h = pages::tr_text(a.help);
@@ -391,7 +416,7 @@ std::string help_text(const Action& a, std::string_view arg) {
     if (a.name == "page" && arg == "set") return tr("show the PARAM, PREF and CORR pages in turn");
     if (a.name == "page" && arg == "prog")
         return tr("show the PROG page, again for the GRAPH page");
-    if (size_t p = h.find("%s"); p != std::string::npos) h.replace(p, 2, arg);
+    if (size_t p = h.find("%s"); p != std::string::npos) h.replace(p, 2, arg_text(a.name, arg));
     return h;
 }
 
@@ -400,7 +425,7 @@ std::string soft_label(const Action& a, std::string_view arg) {
     if (size_t p = l.find("%S"); p != std::string::npos) {
         std::string up(arg == "pos"    ? "OP/OM"
                        : arg == "set"  ? "SET"
-                       : arg == "prog" ? "PROG/GR"
+                       : arg == "prog" ? "PRG/GR"
                                        : arg);
         for (char& c : up) c = char(std::toupper(static_cast<unsigned char>(c)));
         // A page's soft key in the language of the panel (the modes keep their NUM names).
@@ -410,6 +435,15 @@ std::string soft_label(const Action& a, std::string_view arg) {
     return l;
 }
 
+// TRANSLATORS: the label of these keys on a keyboard of your language.
+[[maybe_unused]] const char* const kKeyLabels[] = {N_("Enter"), N_("Del"), N_("Esc")};
+
+std::string key_label(const std::string& key_text) {
+    for (const char* k : kKeyLabels)
+        if (key_text == k) return tr(k);
+    return key_text;
+}
+
 std::string context_text(const Context& c) {
     std::string out;
     auto add = [&](const std::string& s) {
@@ -417,8 +451,8 @@ std::string context_text(const Context& c) {
         if (!out.empty()) out += ", ";
         out += s;
     };
-    if (!c.page.empty()) add(strf(tr("page %s"), c.page.c_str()));
-    if (!c.mode.empty()) add(strf(tr("mode %s"), c.mode.c_str()));
+    if (!c.page.empty()) add(strf(tr("page %s"), arg_text("page", c.page).c_str()));
+    if (!c.mode.empty()) add(strf(tr("mode %s"), arg_text("mode", c.mode).c_str()));
     add(c.kind == "lathe" ? tr("lathe") : c.kind == "mill" ? tr("mill") : c.kind);
     return out;
 }

@@ -60,5 +60,8 @@ std::string_view default_bindings();
 std::string help_text(const Action& a, std::string_view arg);
 std::string soft_label(const Action& a, std::string_view arg);
 std::string context_text(const Context& c);
+// A key as HELP names it: Enter, Del and Esc as the keyboard of the
+// console's language labels them (Entrée, Suppr, Échap); others as written.
+std::string key_label(const std::string& key_text);
 
 }  // namespace pupitre::console

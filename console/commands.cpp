@@ -18,6 +18,7 @@
 #include "console/workshop_io.hpp"
 #include "core/i18n.hpp"
 #include "core/workshop/report.hpp"
+#include "pages/pages.hpp"
 
 namespace pupitre::console {
 
@@ -47,10 +48,16 @@ std::vector<std::string_view> words(std::string_view s) {
     return out;
 }
 
+// A number typed in a command; a French decimal comma (:jog X -1,5) is read
+// as a point, as on the setting pages (README). Programs keep error 1.
 bool number(std::string_view s, double& out) {
     if (!s.empty() && s.front() == '+') s.remove_prefix(1);
-    auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
-    return ec == std::errc() && p == s.data() + s.size() && std::isfinite(out);
+    std::string t(s);
+    if (size_t c = t.find(','); c != std::string::npos && t.find(',', c + 1) == std::string::npos &&
+                                t.find('.') == std::string::npos)
+        t[c] = '.';
+    auto [p, ec] = std::from_chars(t.data(), t.data() + t.size(), out);
+    return ec == std::errc() && p == t.data() + t.size() && std::isfinite(out);
 }
 
 bool integer(std::string_view s, long& out) {
@@ -87,6 +94,8 @@ bool axis_value(const CommandCall& c, size_t at, int& axis, double& v) {
     return c.words.size() == at + 2 && axis >= 0 && number(c.words[at + 1], v);
 }
 
+const Command* find_command(std::string_view name);
+
 Effect usage(Session& s, std::string_view u) {
     s.say(strf(tr("usage: %s"), std::string(u).c_str()), true);
     return Effect::redraw;
@@ -112,7 +121,7 @@ Effect mode(Session& s, const CommandCall& c) {
     if (!parse_mode(name, m)) {
         if (name == "modif") return s.modif_start();
         if (name == "edit") return s.command("edit");
-        return usage(s, ":mode auto|seq|dry|test|rns|imd|jog|inc|pom");
+        return usage(s, find_command("mode")->usage);  // the table's: every word it takes
     }
     if (std::string why = s.sim().set_mode(m); !why.empty())
         s.say(why, true);
@@ -230,7 +239,7 @@ Effect setup(Session& s, const CommandCall& c) {
     if (s.hidden(":setup")) return Effect::redraw;
     if (what.empty()) {
         s.say(now ? strf(tr("workshop: setup %s, %s"), now->setup().name.c_str(),
-                         now->setup().description.c_str())
+                         pages::tr_text(now->setup().description).c_str())
                   : strf(tr("no workshop: the machine moves a point (:setup %s)"),
                          s.machine_setup()));
         return Effect::redraw;
@@ -253,7 +262,7 @@ Effect setup(Session& s, const CommandCall& c) {
     s.sim().set_workshop(std::make_unique<workshop::Workshop>(s.machine(), st, nullptr));
     s.say(strf(st.kind == "mill" ? tr("workshop: setup %s, %s; a fresh block in the vice")
                                  : tr("workshop: setup %s, %s; fresh stock in the chuck"),
-               st.name.c_str(), st.description.c_str()));
+               st.name.c_str(), pages::tr_text(st.description).c_str()));
     s.save_workshop();
     return Effect::redraw;
 }
@@ -573,6 +582,30 @@ Effect Session::command(std::string_view text) {
     return Effect::redraw;
 }
 
+// Whether a line typed is :quit (or :q, :quit!): all a too small screen takes.
+bool Session::quits(std::string_view line) {
+    if (line.empty() || line.front() != ':') return false;
+    std::vector<std::string_view> w = words(line.substr(1));
+    const Command* c = w.empty() ? nullptr : find_command(w[0]);
+    return c && c->names.substr(0, c->names.find(' ')) == "quit";
+}
+
+// A key on the "Terminal too small" screen, where the operator sees nothing
+// of the page: only what quits, and the input line's keys to type :quit
+// (not the page's bindings of those keys: Enter on DIR would load blind).
+Effect Session::small_screen_key(const Key& k) {
+    for (const Binding* b : bindings.find(k, pages::page_word(page), mode_word(sim_->mode()),
+                                          m_.lathe ? "lathe" : "mill"))
+        if (const Action* a = find_action(b->action); a && b->action == "quit")
+            return a->run(*this, b->arg);
+    if (k.code == KeyCode::escape && !k.alt && !k.ctrl) return cancel_input();
+    if (for_line_editor(k))
+        input_.feed(k.raw);
+    else
+        say(tr("the terminal is too small: enlarge it, or :quit"), true);
+    return Effect::redraw;
+}
+
 // Cycle Start, after MODIF's changed blocks are taken in.
 Effect Session::cycle_command() {
     if (!modif_apply()) return Effect::redraw;
@@ -603,7 +636,7 @@ Effect Session::close_command(bool force) {
     auto close = [this, n] {
         bool dirty = editor.dirty;
         editor.close();
-        drop_journal(n);
+        if (dirty) drop_journal(n);  // its own; an earlier session's stays for :recover
         release_lease();
         say(dirty ? tr("editor closed (unsaved changes dropped)") : tr("editor closed"));
     };

@@ -4,7 +4,9 @@
 // and MODIF: changing the blocks not yet prepared of an interrupted program,
 // which the resumed run then executes.
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include <cctype>
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
 
 #include "console/session.hpp"
@@ -22,6 +24,18 @@ Effect Session::edit_open(int number) {
         say(strf(tr("%%%d has changes: :save it (or :save! despite errors, :close to drop them)"),
                  editor.number),
             true);
+        return Effect::redraw;
+    }
+    if (editor.is_open() && editor.dirty) {
+        // The same program again: loading the stored text would drop the
+        // changes (and the next key would write it over their journal).
+        show_page(pages::PageId::edit);
+        confirm(strf(tr("%%%d has unsaved changes: load the stored text and drop them?"), number),
+                [this, number] {
+                    editor.dirty = false;
+                    drop_journal(number);
+                    edit_open(number);
+                });
         return Effect::redraw;
     }
     std::string text;
@@ -68,6 +82,7 @@ Effect Session::edit_text(const std::string& block) {
         say(tr("no program open: :edit N"), true);
         return Effect::redraw;
     }
+    if (!block.empty() && block[0] == '%') return edit_header(block);
     std::string why = modify_pending ? editor.replace(block) : editor.insert_after(block);
     modify_pending = false;
     if (!why.empty())
@@ -75,6 +90,26 @@ Effect Session::edit_text(const std::string& block) {
     else
         say(editor.dirty ? strf(tr("block %d (not saved)"), editor.cursor + 1)
                          : strf(tr("block %d"), editor.cursor + 1));
+    return Effect::redraw;
+}
+
+// "%500 (TEST)" typed in %500 is its header, as the first line of a file
+// would be; another number is another program, opened by :edit.
+Effect Session::edit_header(const std::string& line) {
+    modify_pending = false;
+    long n = std::strtol(line.c_str() + 1, nullptr, 10);
+    if (n != editor.number || line.size() < 2 ||
+        !std::isdigit(static_cast<unsigned char>(line[1]))) {
+        say(strf(tr("this is %%%d: its header is %%%d (TITLE); :edit N opens another"),
+                 editor.number, editor.number),
+            true);
+        return Effect::redraw;
+    }
+    if (std::string why = editor.set_header(line); !why.empty()) {
+        say(why, true);
+        return Effect::redraw;
+    }
+    say(strf(tr("header %s (not saved)"), line.c_str()));
     return Effect::redraw;
 }
 
@@ -175,6 +210,16 @@ Effect Session::edit_restore(int rev) {
         return Effect::redraw;
     }
     if (!unprotected("programs")) return Effect::redraw;
+    if (editor.dirty) {
+        confirm(strf(tr("%%%d has unsaved changes: restore revision %d and drop them?"),
+                     editor.number, rev),
+                [this, rev] {
+                    editor.dirty = false;
+                    drop_journal(editor.number);
+                    edit_restore(rev);
+                });
+        return Effect::redraw;
+    }
     int n = editor.number;
     auto r = store_->restore(n, rev, "page EDIT");
     if (r.error) {

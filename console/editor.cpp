@@ -79,6 +79,20 @@ std::string Editor::replace(std::string block) {
     return {};
 }
 
+// A % line typed for the program open: it becomes the header (a second %
+// line would start another program, which the store refuses).
+std::string Editor::set_header(std::string line) {
+    if (locked > 0) return refusal(0);
+    if (lines_.empty() || lines_[0].empty() || lines_[0][0] != '%')
+        lines_.insert(lines_.begin(), std::string());
+    else if (lines_[0] == line)
+        return {};
+    lines_[0] = std::move(line);
+    dirty = true;
+    ++changes;
+    return {};
+}
+
 std::string Editor::copy() {
     int a, b;
     range(a, b);

@@ -35,6 +35,7 @@ class Editor {
     // Editing; each returns "" or why it was refused.
     std::string insert_after(std::string block);  // the new block becomes current
     std::string replace(std::string block);       // the current block
+    std::string set_header(std::string line);     // the % line, "%500 (TITLE)"
     std::string erase();                          // the current block or the marked range
     std::string copy();                           // to the clipboard
     std::string cut();

@@ -115,6 +115,23 @@ std::string Session::recovered_note() const {
     return strf(tr("unsaved work recovered for %s: :edit %d, then :recover"), list.c_str(), first);
 }
 
+// The editor's unsaved work when a signal ends the console (app.cpp):
+// where it is, for stderr; "" when there is none.
+std::string Session::unsaved_note() const {
+    if (!editor.is_open() || !editor.dirty) return {};
+    const int n = editor.number;
+    if (modif) return strf(tr("the MODIF changes of %%%d are lost"), n);
+    std::string path = journal_path(n);
+    if (path.empty() || ::access(path.c_str(), F_OK) != 0)
+        // A new program's % line alone is no work; anything else had no journal.
+        return editor.lines().size() <= 1
+                   ? std::string()
+                   : strf(tr("the unsaved changes of %%%d are lost (no journal)"), n);
+    return strf(tr("the unsaved changes of %%%d are in the recovery journal %s: :edit %d, then "
+                   ":recover"),
+                n, path.c_str(), n);
+}
+
 // On :edit N: a journal that differs from the text loaded is offered.
 void Session::offer_journal(int number, const std::string& loaded) {
     std::string text;
@@ -124,10 +141,31 @@ void Session::offer_journal(int number, const std::string& loaded) {
         drop_journal(number);
         return;
     }
+    journal_held_ = number;  // no change may write over it before the operator chooses
     say(strf(tr("%%%d has unsaved changes from an earlier session: :recover loads them, :discard "
                 "drops them"),
              number),
         true);
+}
+
+// A key while an earlier session's journal waits for :recover or :discard:
+// a change to the text would write the journal over, so it is undone and
+// refused. Only then is the editor copied (a rare moment).
+Effect Session::held_key(const Key& k) {
+    const Editor before = editor;
+    Effect e = dispatch_key(k);
+    if (journal_held_ == before.number && editor.is_open() && editor.number == before.number &&
+        editor.changes != before.changes) {
+        editor = before;
+        say(strf(tr("%%%d: an earlier session's changes wait: :recover or :discard them first"),
+                 before.number),
+            true);
+    }
+    return e;
+}
+
+bool Session::journal_held() const {
+    return journal_held_ >= 0 && editor.is_open() && !modif && editor.number == journal_held_;
 }
 
 // :recover and :discard, on the program open in EDIT.
@@ -143,6 +181,7 @@ Effect Session::recover_command(bool discard) {
         say(strf(tr("%%%d has no recovered changes"), n), true);
         return Effect::redraw;
     }
+    journal_held_ = -1;
     if (discard) {
         drop_journal(n);
         say(strf(tr("recovered changes of %%%d dropped"), n));
@@ -170,7 +209,8 @@ Effect Session::quit_command(bool force) {
             });
         return Effect::redraw;
     }
-    if (force && editor.is_open() && !modif) drop_journal(editor.number);
+    // Only the editor's own journal: a clean editor's is an earlier session's.
+    if (force && editor.is_open() && editor.dirty && !modif) drop_journal(editor.number);
     release_lease();
     quit = true;
     return Effect::quit;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <utility>
 
 #include "console/commands.hpp"
 #include "console/exercise.hpp"
@@ -118,7 +119,7 @@ Effect Session::read_part(std::string_view spec) {
     }
     // An exercise allows some instruments only; what is read may explain a
     // mistake (a diameter taken for a radius).
-    const std::string word = asked.substr(0, asked.find(' '));
+    const std::string word(workshop::instrument_word(asked.substr(0, asked.find(' '))));
     if (!instrument_allowed(word)) return Effect::redraw;
     note_reading(word, r.value);
     int decimals = r.resolution < 0.005 ? 3 : 2;
@@ -165,12 +166,23 @@ void Session::refresh_dir() {
 }
 
 void Session::say(std::string text, bool error) {
+    // The ALARM page keeps them in full: the message line cuts a long one.
+    if (!text.empty() && (said_.empty() || said_.front() != text)) {
+        said_.insert(said_.begin(), text);
+        if (said_.size() > 30) said_.pop_back();
+    }
     message_ = std::move(text);
     message_error_ = error;
     if (error) ++refusals_;
 }
 
 void Session::show_page(pages::PageId p) {
+    if (page != p && !pending_confirm.empty()) {
+        // The question was about the page left: it is not answered blind.
+        pending_confirm.clear();
+        on_confirm = nullptr;
+        say(tr("question cancelled: the page changed (nothing changed)"));
+    }
     if (page != p) scroll = 0;
     // The store may have changed (a save, a conflict, another console).
     if (p == pages::PageId::dir && page != p) refresh_dir();
@@ -184,6 +196,10 @@ bool Session::select_program(int number) {
     }
     for (size_t i = 0; i < dir_.size(); ++i)
         if (dir_[i].number == number) dir_cursor = int(i);
+    // Kept at once, not at a clean exit: a killed console starts on it again.
+    // An exercise selects its own program (app.cpp).
+    if (store_ && !exercise_)
+        store_->set_setting("console.program." + m_.name, std::to_string(number));
     Mode m = sim_->mode();
     bool runs = m == Mode::automatic || m == Mode::single || m == Mode::dry || m == Mode::test ||
                 m == Mode::rns;
@@ -220,12 +236,16 @@ bool Session::delete_program(int number) {
 // ---- keys ----
 
 Effect Session::on_key(const Key& k) {
-    Effect e = dispatch_key(k);
+    Effect e = journal_held() ? held_key(k) : dispatch_key(k);
     sync_journal();  // a change to the program in EDIT is journaled at once
     return e;
 }
 
 Effect Session::dispatch_key(const Key& k) {
+    if (too_small()) return small_screen_key(k);
+    if (std::exchange(swallow_enter_, false) && k.code == KeyCode::enter && input_.text().empty())
+        return Effect::redraw;
+    if (answer_key(k)) return Effect::redraw;
     std::string pg(pages::page_word(page)), md(mode_word(sim_->mode()));
     if (k.code != KeyCode::del) pending_delete = -1;
     for (const Binding* b : bindings.find(k, pg, md, m_.lathe ? "lathe" : "mill")) {
@@ -286,6 +306,10 @@ Effect Session::submit(const std::string& raw) {
     std::string_view line = trim(raw);
     if (line.empty()) return Effect::none;
     input_.add_history(std::string(line));
+    if (too_small() && !quits(line)) {
+        say(tr("the terminal is too small: enlarge it, or :quit"), true);
+        return Effect::redraw;
+    }
     if (line.front() == ':') {
         // A command instead of an answer: the question is dropped, not answered yes.
         pending_confirm.clear();
@@ -405,15 +429,9 @@ std::string Session::mode_news(Mode m) const {
 // never runs an older block than the one the operator believes typed.
 Effect Session::plain_text(const std::string& text) {
     if (!pending_confirm.empty()) {
-        std::string answer = text;
-        for (char& c : answer) c = char(std::tolower(static_cast<unsigned char>(c)));
-        auto run = std::move(on_confirm);
-        pending_confirm.clear();
-        on_confirm = nullptr;
-        if (answer == "y" || answer == "yes" || answer == "o" || answer == "oui")
-            run();
-        else
-            say(tr("cancelled: nothing changed"));
+        std::string a = text;
+        for (char& c : a) c = char(std::tolower(static_cast<unsigned char>(c)));
+        answer(a == "y" || a == "yes" || a == "o" || a == "oui");
         return Effect::redraw;
     }
     long before = refusals_;
@@ -485,8 +503,9 @@ Effect Session::set_value(std::string_view a) {
     size_t eq = a.find('=');
     std::string name(trim(a.substr(0, eq)));
     double v = 0;
-    std::string_view val =
-        eq == std::string_view::npos ? std::string_view{} : trim(a.substr(eq + 1));
+    std::string val(eq == std::string_view::npos ? std::string_view{} : trim(a.substr(eq + 1)));
+    if (size_t c = val.find(','); c != std::string::npos && val.find('.') == std::string::npos)
+        val[c] = '.';  // L5=2,5: a French decimal comma, as on the setting pages
     auto [p, ec] = std::from_chars(val.data(), val.data() + val.size(), v);
     if (eq == std::string_view::npos || ec != std::errc() || p != val.data() + val.size()) {
         say(tr("set: NAME=VALUE, e.g. L5=2, E80000=18000, PREF.X=-120.5, D1.R=0.8"), true);
@@ -627,7 +646,7 @@ void Session::view_keys(pages::View& v) const {
         const Action* a = find_action(b.action);
         if (a)
             v.help.push_back(
-                pages::HelpLine{b.key_text, help_text(*a, b.arg), context_text(b.when)});
+                pages::HelpLine{key_label(b.key_text), help_text(*a, b.arg), context_text(b.when)});
     }
     for (const Command& c : commands())
         if (!c.usage.empty())
@@ -687,6 +706,7 @@ pages::View Session::view() const {
     v.last_setting = last_setting_;
     v.witness = witness_text();
     v.readings = &readings_;
+    v.messages = &said_;
     exercise_view(v);
     view_editor(v);
     v.graph = graph;

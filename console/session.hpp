@@ -133,6 +133,7 @@ class Session {
     Effect close_command(bool force);      // :close asks too
     Effect cycle_command();                // :cycle, Cycle Start
     std::string recovered_note() const;    // journals left by an earlier session
+    std::string unsaved_note() const;      // where unsaved editor work is, "" if none
     // Two consoles on one store (console/shared.cpp).
     void remember_store();
     void follow_store(double dt);
@@ -142,6 +143,7 @@ class Session {
     std::string other_editor(int number) const;
     Effect edit_save(bool force);
     Effect edit_text(const std::string& block);
+    Effect edit_header(const std::string& line);  // a % line typed in EDIT
     Effect edit_history();
     Effect edit_restore(int revision);
     Effect modif_start();
@@ -169,6 +171,9 @@ class Session {
     // A plausible-but-doubtful setting waits for "y" on the input line.
     std::string pending_confirm;  // what is asked; empty: nothing
     std::function<void()> on_confirm;
+    void answer(bool yes);  // runs on_confirm on yes; either way the question ends
+    // Below 80x24 (DESIGN §2.4) only a resize, :quit and Ctrl-C act.
+    bool too_small() const { return cols < 80 || rows < 24; }
 
   private:
     Effect plain_text(const std::string& line);
@@ -187,6 +192,13 @@ class Session {
     bool read_journal(int number, std::string& text, int& base) const;
     void offer_journal(int number, const std::string& loaded);
     Effect dispatch_key(const Key& k);
+    bool answer_key(const Key& k);
+    bool swallow_enter_ = false;  // a key just answered a question
+    Effect small_screen_key(const Key& k);
+    static bool quits(std::string_view line);
+    Effect held_key(const Key& k);
+    bool journal_held() const;
+    int journal_held_ = -1;  // an earlier session's journal not yet recovered or discarded
     void persist_run();
     void check_run_end();
 
@@ -226,6 +238,7 @@ class Session {
     long refusals_ = 0;
     std::string last_setting_;           // the PREF and CORR pages show its arithmetic
     std::vector<std::string> readings_;  // the WORKSHOP page's, newest first
+    std::vector<std::string> said_;      // the message line's, newest first (ALARM page)
     uint64_t journaled_changes_ = 0;
     int64_t data_version_ = -1;  // PRAGMA data_version last seen
     double poll_wait_ = 0, lease_wait_ = 0;

@@ -46,6 +46,25 @@ bool parse_num(std::string_view s, double& v, bool* comma = nullptr) {
     return ec == std::errc() && p == text.data() + text.size() && std::isfinite(v);
 }
 
+// An ISO block typed on a setting page ("T1 D1 M6", "G0 X40 Z25"): a word
+// of the program's letters first, or two address words. What these pages
+// read is one word and a number ("X 59.978", "D5", "PREF.Z=-300").
+bool looks_like_block(std::string_view t) {
+    auto address = [](std::string_view w) {
+        return w.size() > 1 && std::isalpha(static_cast<unsigned char>(w[0])) &&
+               (std::isdigit(static_cast<unsigned char>(w[1])) || w[1] == '-' || w[1] == '.');
+    };
+    size_t sp = t.find(' ');
+    std::string_view first = t.substr(0, sp);
+    if (!first.empty() && first[0] == '%') return true;
+    if (address(first) && std::string_view("GMTSFN").find(first[0]) != std::string_view::npos)
+        return true;
+    if (sp == std::string_view::npos || !address(first)) return false;
+    std::string_view rest = t.substr(sp + 1);
+    while (!rest.empty() && rest.front() == ' ') rest.remove_prefix(1);
+    return address(rest.substr(0, rest.find(' ')));
+}
+
 // The field of a corrector a setting names ("D3.X" -> "X"), or "".
 std::string corrector_field(const std::string& name) {
     if (name.size() < 3 || name[0] != 'D' || !std::isdigit(static_cast<unsigned char>(name[1])))
@@ -159,6 +178,29 @@ void Session::confirm(std::string question, std::function<void()> then) {
     on_confirm = std::move(then);
     // TRANSLATORS: a question on the message line; y, yes, o and oui answer yes.
     say(strf(tr("%s y/n?"), question.c_str()), true);
+}
+
+void Session::answer(bool yes) {
+    auto run = std::move(on_confirm);
+    pending_confirm.clear();
+    on_confirm = nullptr;
+    if (yes && run)
+        run();
+    else
+        say(tr("cancelled: nothing changed"));
+}
+
+// One key answers a question (y or o yes, n no), as on the panel; a word
+// typed after another first key still answers at Enter (plain_text).
+bool Session::answer_key(const Key& k) {
+    if (pending_confirm.empty() || !input_.text().empty() || k.code != KeyCode::character ||
+        k.alt || k.ctrl)
+        return false;
+    const char32_t c = k.ch | 0x20;  // lower case, for the ASCII letters asked
+    if (c != U'y' && c != U'o' && c != U'n') return false;
+    answer(c != U'n');
+    swallow_enter_ = true;  // "y" then Enter, by habit: the Enter is not a second action
+    return true;
 }
 
 Effect Session::touch(int axis, double surface) {
@@ -303,6 +345,11 @@ Effect Session::setting_text(std::string_view text) {
     for (char& c : t) c = char(std::toupper(static_cast<unsigned char>(c)));
     size_t eq = t.find('=');
     bool corr = page == pages::PageId::corr;
+    if (eq == std::string::npos && looks_like_block(t)) {
+        // TRANSLATORS: on the PREF or CORR page, an ISO block typed there.
+        say(tr("ISO blocks are typed in IMD on the OP page (F2), not here"), true);
+        return Effect::redraw;
+    }
     if (eq != std::string::npos) {
         std::string name = t.substr(0, eq);
         while (!name.empty() && name.back() == ' ') name.pop_back();

@@ -80,7 +80,9 @@ void Session::sync_from_store() {
         for (const auto& [name, value] : r.value) {
             std::string shown = store::format_value(name, value);
             double mm = std::strtod(shown.c_str(), nullptr), now = 0;
-            if (in.get(name, now) && std::abs(now - mm) < 5e-7) continue;
+            // Compared as stored (µm, 0.0001°): a touch-off's PREF holds
+            // fractions of a µm the store rounds, which are no other console's.
+            if (in.get(name, now) && store::internal_value(name, now) == value) continue;
             if (in.set(name, mm).empty()) news += (news.empty() ? "" : ", ") + name + " " + shown;
         }
         in.apply_gauges_now();

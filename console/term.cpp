@@ -43,8 +43,8 @@ void crash_handler(int sig) {
     std::raise(sig);
 }
 
-void quit_handler(int) {
-    g_quit = 1;
+void quit_handler(int sig) {
+    g_quit = sig;
 }
 void winch_handler(int) {
     g_winch = 1;
@@ -90,6 +90,10 @@ bool Terminal::utf8_locale() {
 
 bool Terminal::interrupted() {
     return g_quit != 0;
+}
+
+int Terminal::signal_caught() {
+    return int(g_quit);
 }
 
 std::string Terminal::open(Theme theme) {

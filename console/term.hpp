@@ -26,6 +26,7 @@ class Terminal {
     void draw(const pages::Canvas& c, int cursor_x, int cursor_y);
     // Set by SIGINT, SIGTERM, SIGHUP: the event loop leaves cleanly.
     static bool interrupted();
+    static int signal_caught();  // SIGTERM, SIGHUP…: the one that ended the loop, or 0
     // Whether the terminal's locale can show UTF-8 (else the ASCII fallback).
     static bool utf8_locale();
 

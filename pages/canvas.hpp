@@ -46,6 +46,11 @@ class Canvas {
     int width() const { return w_; }
     int height() const { return h_; }
     bool ascii() const { return ascii_; }
+    // How many texts were cut by their room (each marked) since clear().
+    int cuts() const { return cut_; }
+    // How many letters a text drew over another text's since clear(): a
+    // cut with no mark (the status line's right over its left, say).
+    int overwrites() const { return overwrites_; }
     void resize(int width, int height);
     void clear();
 
@@ -72,6 +77,9 @@ class Canvas {
   private:
     int w_, h_;
     bool ascii_;
+    int cut_ = 0, overwrites_ = 0;
+    int writer_ = 0, texts_ = 0;  // the text() drawing now (0: none), the last one's number
+    std::vector<int> owner_;      // per cell: the text() that drew it, 0 when none
     std::vector<Cell> cells_;
 };
 

@@ -1,6 +1,6 @@
 // The ALARM page: the alarm in force with its NUM number, the manual's text
-// (data/errors.tsv) and where it was raised; then the earlier alarms, newest
-// first.
+// (data/errors.tsv) and where it was raised; the last messages in full; then
+// the earlier alarms, newest first.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <algorithm>
 #include <cstdio>
@@ -51,16 +51,24 @@ void page_alarm(const View& v, Canvas& c, const Rect& r) {
         lines.push_back(Line{}.add(std::string(" ") + tr("No alarm in force."), Style::dim));
     }
     lines.push_back(Line{});
+    // The message line in full (it cuts a long one with a mark).
+    if (v.messages && !v.messages->empty()) {
+        lines.push_back(Line{}.add(std::string(" ") + tr("Messages (newest first)"), Style::title));
+        for (size_t i = 0; i < std::min<size_t>(v.messages->size(), 10); ++i)
+            add_wrapped(lines, Line{}.add("   "), (*v.messages)[i], r.w - 1);
+        lines.push_back(Line{});
+    }
     // The warnings of the last run: what ran instead of what was written.
     if (s.run_warning_count() > 0) {
         lines.push_back(Line{}.add(
             " " + strf(tr("Warnings of the last run (%zu)"), size_t(s.run_warning_count())),
             Style::title));
         for (const Diag& w : s.run_warnings()) {
-            lines.push_back(Line{}
-                                .add("   " + lpad(std::to_string(w.code), 4), Style::value)
-                                .add("  " + pad(alarm_place(w), 22), Style::value)
-                                .add(explain(w.code)));
+            add_wrapped(lines,
+                        Line{}
+                            .add("   " + lpad(std::to_string(w.code), 4), Style::value)
+                            .add("  " + pad(alarm_place(w), 22), Style::value),
+                        explain(w.code), r.w - 1);
             for (const std::string& l : wrap_text(w.detail, std::max(20, r.w - 10)))
                 lines.push_back(Line{}.add("         " + l, Style::dim));
         }
@@ -77,12 +85,13 @@ void page_alarm(const View& v, Canvas& c, const Rect& r) {
         const Alarm& a = all[i];
         char t[32];
         std::snprintf(t, sizeof t, "%9.1f s", a.clock);
-        lines.push_back(Line{}
-                            .add(" " + std::string(t) + "  ", Style::dim)
-                            .add(lpad(std::to_string(a.diag.code), 4), Style::alarm)
-                            .add("  " + pad(alarm_place(a.diag), 22), Style::value)
-                            .add(explain(a.diag.code)));
-        lines.push_back(Line{}.add(std::string(19, ' ') + a.diag.detail, Style::dim));
+        add_wrapped(lines,
+                    Line{}
+                        .add(" " + std::string(t) + "  ", Style::dim)
+                        .add(lpad(std::to_string(a.diag.code), 4), Style::alarm)
+                        .add("  " + pad(alarm_place(a.diag), 22), Style::value),
+                    explain(a.diag.code), r.w - 1);
+        add_wrapped(lines, Line{}.add(std::string(19, ' ')), a.diag.detail, r.w - 1, Style::dim);
     }
     draw_lines(lines, v.scroll, c, Rect{r.x, r.y + 1, r.w, r.h - 1});
 }

@@ -33,13 +33,12 @@ void page_exercise(const View& v, Canvas& c, const Rect& r) {
     // TRANSLATORS: the EXERCISE page's title; EXERCISE is the page's name.
     c.rule(r.y, tr("EXERCISE"));
     std::vector<Line> lines;
-    if (v.exercise.empty()) {
-        lines.push_back(Line{}.add(
-            " " + std::string(tr("No exercise in progress: pupitre exercise NAME starts one "
-                                 "(pupitre exercise list shows them).")),
-            Style::dim));
-    }
     const int width = std::max(20, r.w - 2);
+    if (v.exercise.empty())
+        add_wrapped(lines, Line{}.add(" "),
+                    tr("No exercise in progress: pupitre exercise NAME starts one "
+                       "(pupitre exercise list shows them)."),
+                    width, Style::dim);
     for (const auto& [kind, text] : v.exercise) {
         // Report tables keep their columns; the rest wraps under its indent.
         const size_t indent = std::min(text.find_first_not_of(' '), text.size());

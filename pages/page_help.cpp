@@ -3,6 +3,8 @@
 // command, generated from the bindings and commands tables so that it can
 // never disagree with them. Long texts wrap under their column at any width.
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include <cctype>
+
 #include "pages/pages.hpp"
 
 namespace pupitre::pages {
@@ -13,10 +15,10 @@ namespace {
 const char* const kGettingStarted[] = {
     N_("1. Home: F8 until the status line shows POM, then Cycle Start (F9)."),
     N_("2. Jog: F8 to JOG, hold an arrow key (the OP page lists the keys); INC moves one step."),
-    N_("3. Tool: F8 to IMD, type T1 D1 M6, Enter, then F9 (Cycle Start)."),
-    N_("4. Touch off: jog the tool onto the part, Alt-p for the PREF page, type Z 0 for the face "
-       "or "
-       "X 59.978 for a diameter; the OP page then reads what you typed."),
+    N_("3. Tool: F2 for the OP page, F8 to IMD, type T1 D1 M6, Enter, then F9 (Cycle Start); "
+       "the PREF and CORR pages take settings, not blocks."),
+    N_("4. Touch off: jog the tool onto the part, Alt-p for the PREF page, type Z\u00a00 for the "
+       "face or X\u00a059.978 for a diameter; the OP page then reads what you typed."),
     N_("5. Run: F6 lists the programs (Enter selects), F8 to AUTO, F9 runs; F10 holds, F12 (RAZ) "
        "abandons."),
     N_("6. A real part: :setup lathe puts a bar in the chuck; a jog stops when the tool touches "
@@ -52,6 +54,20 @@ const char* const kGettingStarted[] = {
     N_("Cycle Start (F9) homes the axes"),
 };
 
+// A step of "Getting started": "6. text" wraps under its text; a paragraph
+// that starts with blanks belongs to the step above and stands under its
+// text, every line; one without is a note at the margin.
+void step(std::vector<Line>& lines, std::string_view text, int width) {
+    size_t blanks = text.find_first_not_of(' ');
+    if (blanks == std::string_view::npos) return;
+    text.remove_prefix(blanks);
+    const bool numbered = std::isdigit(static_cast<unsigned char>(text[0])) != 0;
+    const std::string first(blanks > 0 ? 6 : 3, ' '), next(blanks > 0 || numbered ? 6 : 3, ' ');
+    const auto parts = wrap_text(std::string(text), width - int(next.size()));
+    for (size_t i = 0; i < parts.size(); ++i)
+        lines.push_back(Line{}.add((i ? next : first) + parts[i]));
+}
+
 // A two-column entry: the key (or command) in its column, the text beside it
 // wrapped under itself; a key too wide for its column takes a line of its own.
 void entry(std::vector<Line>& lines, const std::string& key, int col, const std::string& what,
@@ -59,7 +75,21 @@ void entry(std::vector<Line>& lines, const std::string& key, int col, const std:
     const int indent = 3 + col + 1;
     std::string text = what + (when.empty() ? "" : "  (" + when + ")");
     bool own_line = columns(key) > col;
-    if (own_line) lines.push_back(Line{}.add("   " + key, Style::value));
+    if (own_line) {
+        // A usage wider than the page breaks after a '|' (":page om|op|…").
+        std::string row;
+        for (size_t i = 0; i < key.size();) {
+            size_t bar = key.find('|', i);
+            std::string piece = key.substr(i, bar == std::string::npos ? bar : bar + 1 - i);
+            i = bar == std::string::npos ? key.size() : bar + 1;
+            if (!row.empty() && 5 + columns(row + piece) > width) {
+                lines.push_back(Line{}.add("   " + row, Style::value));
+                row = "  ";
+            }
+            row += piece;
+        }
+        lines.push_back(Line{}.add("   " + row, Style::value));
+    }
     auto parts = wrap_text(text, std::max(20, width - indent - 1));
     for (size_t i = 0; i < parts.size(); ++i) {
         Line l;
@@ -100,13 +130,9 @@ void page_help(const View& v, Canvas& c, const Rect& r) {
     c.rule(r.y, tr("HELP  keys and commands (PgUp/PgDn scroll)"));
     std::vector<Line> lines;
     lines.push_back(Line{}.add(std::string(" ") + tr("Getting started"), Style::title));
-    // The text wraps short of the right edge, where the scroll position shows.
-    const int width = r.w - 10;
-    for (const char* s : kGettingStarted) {
-        auto parts = wrap_text(tr(s), width - 6);
-        for (size_t i = 0; i < parts.size(); ++i)
-            lines.push_back(Line{}.add((i ? "      " : "   ") + parts[i]));
-    }
+    // The whole width but a margin (the scroll position is on the rule).
+    const int width = r.w - 1;
+    for (const char* s : kGettingStarted) step(lines, tr(s), width);
     lines.push_back(Line{});
     modes(v, lines, width);
     std::string section;

@@ -37,6 +37,15 @@ constexpr InstrumentLine kMill[] = {
     {"tool T1 L|R", N_("presetter"), "0.001", N_("a cutter's true length or radius, ±0.002")},
 };
 
+// The built-in setups' descriptions (data/setups), for the catalogue: shown
+// in the console's language; a setup of one's own as it is written.
+[[maybe_unused]] const char* const kSetupTexts[] = {
+    N_("hydraulic three-jaw chuck, Ø60 bar sticking out 95 mm, front turret T1-T4, rear turret "
+       "T11-T14"),
+    N_("three-jaw chuck, Ø60 bar sticking out 95 mm, four tools"),
+    N_("machine vice, 120 x 80 x 40 block, a tool setter, five tools"),
+    N_("C rotary table and B head, fixture plate, 100 x 100 x 50 block, three tools")};
+
 // A tool as the operator sees it on the turret or in the magazine: its
 // nominal size and kind, to 0.1 mm.
 std::string looks(const workshop::ToolTruth& t, bool mill) {
@@ -60,7 +69,7 @@ void machine_lines(const workshop::Workshop& w, const View& v, int width, std::v
     auto row = [&](const char* label, const std::string& text, Style st = Style::value) {
         out.push_back(Line{}.add(" " + pad(label, 11), Style::dim).add(text, st));
     };
-    row(tr("Setup"), s.name + (s.description.empty() ? "" : ": " + s.description));
+    row(tr("Setup"), s.name + (s.description.empty() ? "" : ": " + tr_text(s.description)));
     const workshop::ToolTruth* t = w.setup().tool(w.tool());
     row(tr("In use"),
         t              ? looks(*t, mill)
@@ -98,17 +107,32 @@ bool allowed(const InstrumentLine& i, const std::vector<std::string>* allowed) {
     return false;
 }
 
-void instrument_lines(bool mill, const std::vector<std::string>* only, std::vector<Line>& out) {
-    out.push_back(Line{}.add(
-        " " + std::string(mill ? tr("Instruments: type a request, Enter reads it (X Y Z from the "
-                                    "block's corner, Z from its top face)")
-                               : tr("Instruments: type a request, Enter reads it (Z from the "
-                                    "part's right-hand face)")),
-        Style::title));
+// The instruments' words, for the catalogue: the page shows the request in
+// the console's language, and the workshop reads both (instrument_word).
+// TRANSLATORS: an instrument's word, typed on the WORKSHOP page: only diam,
+// alésage, gorge, longueur, outil, largeur, profondeur and hauteur are read.
+[[maybe_unused]] const char* const kWords[] = {N_("dia"),  N_("bore"),  N_("groove"), N_("length"),
+                                               N_("tool"), N_("width"), N_("depth"),  N_("height")};
+
+// "length X Y30 Z-5" with its word in the console's language.
+std::string form_text(std::string_view form) {
+    const size_t sp = form.find(' ');
+    const std::string word(form.substr(0, sp));
+    return tr_text(word) + std::string(sp == std::string_view::npos ? "" : form.substr(sp));
+}
+
+void instrument_lines(bool mill, const std::vector<std::string>* only, int width,
+                      std::vector<Line>& out) {
+    add_wrapped(out, Line{}.add(" "),
+                mill ? tr("Instruments: type a request, Enter reads it (X Y Z from the "
+                          "block's corner, Z from its top face)")
+                     : tr("Instruments: type a request, Enter reads it (Z from the "
+                          "part's right-hand face)"),
+                width, Style::title);
     for (const InstrumentLine& i : mill ? std::span(kMill) : std::span(kLathe)) {
         if (!allowed(i, only)) continue;  // an exercise's forbidden ones are not offered
         std::string what = std::string(tr(i.name)) + " " + i.res + "  " + tr(i.what);
-        out.push_back(Line{}.add("   " + pad(i.form, 22), Style::value).add(what, Style::normal));
+        add_wrapped(out, Line{}.add("   " + pad(form_text(i.form), 22), Style::value), what, width);
     }
 }
 
@@ -121,30 +145,33 @@ void page_shop(const View& v, Canvas& c, const Rect& r) {
     c.rule(r.y, w ? strf(tr("WORKSHOP  setup %s"), w->setup().name.c_str())
                   : std::string(tr("WORKSHOP")));
     std::vector<Line> lines;
+    const int width = r.w - 1;
     if (!w) {
-        lines.push_back(Line{}.add(
-            " " + std::string(mill ? tr("No workshop: the machine moves a point. :setup mill puts "
-                                        "a block in the vice.")
-                                   : tr("No workshop: the machine moves a point. :setup lathe "
-                                        "puts a bar in the chuck.")),
-            Style::dim));
+        add_wrapped(lines, Line{}.add(" "),
+                    mill ? tr("No workshop: the machine moves a point. :setup mill puts "
+                              "a block in the vice.")
+                         : tr("No workshop: the machine moves a point. :setup lathe "
+                              "puts a bar in the chuck."),
+                    width, Style::dim);
         draw_lines(lines, v.scroll, c, Rect{r.x, r.y + 1, r.w, r.h - 1});
         return;
     }
     machine_lines(*w, v, r.w, lines);
-    lines.push_back(Line{});
-    instrument_lines(w->is_mill(), v.instruments, lines);
+    // The readings before the instruments' table: the newest is what the
+    // operator looks for, on the first screen.
     lines.push_back(Line{});
     lines.push_back(Line{}.add(" " + std::string(tr("Readings (newest first)")), Style::title));
     if (!v.readings || v.readings->empty())
         lines.push_back(Line{}.add("   " + std::string(tr("none yet")), Style::dim));
     else
-        for (const std::string& s : *v.readings) lines.push_back(Line{}.add("   " + s));
+        for (const std::string& s : *v.readings) add_wrapped(lines, Line{}.add("   "), s, width);
     lines.push_back(Line{});
-    lines.push_back(Line{}.add(
-        " " + std::string(tr(":part new fresh stock, :part export FILE, :shim MM|off the paper "
-                             "test, :setup NAME|off")),
-        Style::dim));
+    instrument_lines(w->is_mill(), v.instruments, width, lines);
+    lines.push_back(Line{});
+    add_wrapped(lines, Line{}.add(" "),
+                tr(":part new fresh stock, :part export FILE, :shim MM|off the paper "
+                   "test, :setup NAME|off"),
+                width, Style::dim);
     draw_lines(lines, v.scroll, c, Rect{r.x, r.y + 1, r.w, r.h - 1});
 }
 

@@ -39,6 +39,11 @@ struct Line {
     }
 };
 void draw_lines(const std::vector<Line>& lines, int scroll, Canvas& c, const Rect& r);
+std::string machine_word(const std::string& name);  // "tour" for the lathe in French
+// `lead` (a label, a column) then `text` wrapped in the rest of `width`, its
+// next lines under its first: a line of a page that is never cut unseen.
+void add_wrapped(std::vector<Line>& out, Line lead, const std::string& text, int width,
+                 Style st = Style::normal);
 
 // A machine of the Cazeneuve dialect (page_caz.cpp): its T word ("T204"; the
 // NUM's "T2  D4").

@@ -81,7 +81,8 @@ void status_line(const View& v, Canvas& c) {
     // TRANSLATORS: status line, memory protection on: at most 5 columns.
     std::string lock = v.protect ? std::string(tr("LOCK")) + " " : "";
     char right[112];
-    std::snprintf(right, sizeof right, "%s%s F%d%% S%d%%%s%s %s ", lock.c_str(), v.machine.c_str(),
+    const std::string machine = machine_word(v.machine);
+    std::snprintf(right, sizeof right, "%s%s F%d%% S%d%%%s%s %s ", lock.c_str(), machine.c_str(),
                   s.feed_override, s.spindle_override, s.interp().options().block_skip ? " /" : "",
                   s.interp().options().optional_stop ? " M01" : "", v.speed.c_str());
     c.text_right(0, 0, c.width(), right, Style::status);
@@ -107,6 +108,14 @@ void softkeys(const View& v, Canvas& c, int y) {
 }
 
 }  // namespace
+
+// The machine's name as the panel says it: the built-in lathe and mill in
+// the console's language (a profile's own name as it is).
+std::string machine_word(const std::string& name) {
+    if (name == "lathe") return tr("lathe");
+    if (name == "mill") return tr("mill");
+    return name;
+}
 
 std::string_view page_word(PageId p) {
     return kPageWords[int(p)];
@@ -154,6 +163,13 @@ void too_small(const View& v, Canvas& c) {
         c.text(std::max(0, (c.width() - w) / 2), y0 + i, lines[i],
                i == 0 ? Style::alarm : Style::normal, c.width());
     }
+    // Below, the message and the input line: what :quit needs, seen as typed.
+    const int h = c.height();
+    if (h < y0 + n + 2) return;
+    c.text(0, h - 2, v.message, v.message_error ? Style::alarm : Style::normal, c.width());
+    c.fill(Rect{0, h - 1, c.width(), 1}, U' ', Style::input);
+    const int px = c.text(0, h - 1, v.prompt, Style::input);
+    c.text(px, h - 1, v.input, Style::input, std::max(0, c.width() - px));
 }
 
 }  // namespace
@@ -235,6 +251,21 @@ std::vector<std::string> wrap_text(const std::string& text, int width) {
     return out;
 }
 
+void add_wrapped(std::vector<Line>& out, Line lead, const std::string& text, int width, Style st) {
+    int indent = 0;
+    for (const auto& part : lead.parts) indent += columns(part.first);
+    const auto parts = wrap_text(text, std::max(20, width - indent));
+    for (size_t i = 0; i < parts.size(); ++i) {
+        if (i == 0) {
+            out.push_back(std::move(lead));
+            out.back().add(parts[i], st);
+        } else {
+            out.push_back(Line{}.add(std::string(size_t(indent), ' ') + parts[i], st));
+        }
+    }
+    if (parts.empty()) out.push_back(std::move(lead));
+}
+
 // A long page is a list of lines; the view's scroll picks the ones shown.
 void draw_lines(const std::vector<Line>& lines, int scroll, Canvas& c, const Rect& r) {
     int n = int(lines.size());
@@ -247,10 +278,13 @@ void draw_lines(const std::vector<Line>& lines, int scroll, Canvas& c, const Rec
         if (l.fill) c.style(Rect{r.x, r.y + i, r.w, 1}, l.fill_style);
     }
     if (n > r.h) {
-        // Where we are in a long page: "12-31/140" at the bottom right.
+        // Where we are in a long page: "12-31/140" at the right of the page's
+        // rule above the lines, where it hides no text (over the last line
+        // it hid the end of whatever was there).
         std::string where = std::to_string(scroll + 1) + "-" +
                             std::to_string(std::min(n, scroll + r.h)) + "/" + std::to_string(n);
-        c.text_right(r.x, r.y + r.h - 1, r.w, " " + where + " ", Style::dim);
+        const int row = r.y > 0 ? r.y - 1 : r.y + r.h - 1;
+        c.text_right(r.x, row, r.w - 1, " " + where + " ", Style::dim);
     }
 }
 

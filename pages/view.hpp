@@ -111,6 +111,7 @@ struct View {
     // WORKSHOP: the instruments an exercise allows (their words: dia, tool);
     // null or empty: every one.
     const std::vector<std::string>* instruments = nullptr;
+    const std::vector<std::string>* messages = nullptr;  // the message line's, newest first
     // EXERCISE: the task before :submit, the report after; empty: none.
     std::vector<std::pair<ExLine, std::string>> exercise;
 };

@@ -654,6 +654,16 @@ bool parse_block(std::string_view line, Block& out, Error& e) {
     return parse_line(line, out, e, true);
 }
 
+bool parse_lines(std::string_view text, Error& e) {
+    Block b;
+    for (size_t at = 0; at <= text.size();) {
+        const size_t eol = std::min(text.find('\n', at), text.size());
+        if (!parse_block(text.substr(at, eol - at), b, e)) return false;
+        at = eol + 1;
+    }
+    return true;
+}
+
 bool parse_block_general(std::string_view line, Block& out, Error& e) {
     return parse_line(line, out, e, false);
 }

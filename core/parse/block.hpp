@@ -123,6 +123,8 @@ constexpr size_t kMaxBlockChars = 117;  // pupitre-iso(5), DECISIONS, 117 charac
 // the Error is an argument, not the result, for the same reason: this is the
 // hot path, and the caller keeps one.
 bool parse_block(std::string_view line, Block& out, Error& e);
+// Whether every line of `text` parses as a block; `e` says why not.
+bool parse_lines(std::string_view text, Error& e);
 // The same with the general parser alone, without the lane of plain blocks
 // that parse_block tries first: the reference its differential test
 // (tests/unit/test_parse_lane.cpp) compares the lane with.

@@ -9,6 +9,7 @@
 
 #include "core/geometry/geometry.hpp"
 #include "core/i18n.hpp"
+#include "core/parse/block.hpp"
 
 namespace pupitre {
 
@@ -150,6 +151,11 @@ std::string Sim::select(int program) {
 std::string Sim::imd(std::string_view blocks) {
     if (mode_ != Mode::imd) return tr("blocks are typed in IMD mode");
     if (in_cycle()) return tr("the previous IMD block is still running");
+    // A block that does not read is refused now, as :save refuses it, not at
+    // Cycle Start as an alarm that needs RAZ (a paste of 5,000 characters).
+    if (Error e; !parse_lines(blocks, e))
+        // TRANSLATORS: an IMD block refused at Enter: the NUM error and its text.
+        return strf(tr("error %d: %s (not taken)"), e.code, e.detail.c_str());
     imd_ = std::make_unique<ProgramText>();
     imd_->file = "IMD";
     imd_->text = std::make_shared<Text>(std::string(blocks) + "\n");

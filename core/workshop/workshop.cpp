@@ -609,7 +609,19 @@ constexpr Instrument kInstruments[] = {
 
 }  // namespace
 
+std::string_view instrument_word(std::string_view word) {
+    static constexpr std::pair<std::string_view, std::string_view> kFrench[] = {
+        {"diam", "dia"},       {"diamètre", "dia"},     {"alésage", "bore"},
+        {"alesage", "bore"},   {"gorge", "groove"},     {"longueur", "length"},
+        {"outil", "tool"},     {"largeur", "width"},    {"profondeur", "depth"},
+        {"hauteur", "height"}, {"épaisseur", "height"}, {"epaisseur", "height"}};
+    for (const auto& [fr, en] : kFrench)
+        if (word == fr) return en;
+    return word;
+}
+
 bool is_instrument(std::string_view word) {
+    word = instrument_word(word);
     for (const Instrument& i : kInstruments)
         if (word == i.word) return true;
     return word == "tool" || is_mill_instrument(word);
@@ -668,7 +680,7 @@ std::string Workshop::measure(std::string_view spec, Reading& r) const {
     std::string_view s = spec;
     while (!s.empty() && s.front() == ' ') s.remove_prefix(1);
     size_t sp = s.find(' ');
-    std::string_view word = s.substr(0, sp),
+    std::string_view word = instrument_word(s.substr(0, sp)),
                      rest = sp == std::string_view::npos ? "" : s.substr(sp + 1);
     while (!rest.empty() && rest.front() == ' ') rest.remove_prefix(1);
     while (!rest.empty() && rest.back() == ' ') rest.remove_suffix(1);

@@ -72,6 +72,10 @@ struct Reading {
 // Whether `word` begins an instrument's request on either machine ("dia",
 // "depth", "tool", …): what :measure reads on the part rather than a gauge.
 bool is_instrument(std::string_view word);
+// An instrument's word as the workshop knows it: the French word a French
+// console shows (longueur, alésage, outil…) is the English one (length,
+// bore, tool…); any other word as it is.
+std::string_view instrument_word(std::string_view word);
 bool is_mill_instrument(std::string_view word);  // mill_shop.cpp
 
 class Workshop final : public MachineSink {

@@ -14,7 +14,7 @@ start)
     start
     wait_for '^ AUTO '
     wait_for 'OP  program position'
-    wait_for '1HELP +2OP/OM +3PROG'
+    wait_for '1HELP +2OP/OM +3PRG/GR'
     keys F1
     wait_for 'HELP  keys and commands'
     keys F6
@@ -281,8 +281,8 @@ french)
     wait_for 'PREF.Z = OM 100.000 - jauge 38.237 - surface 0.000 = 61.763'
     cmd "X 59,978"
     wait_for 'X 59,978 lu comme 59.978'
-    wait_for 'PREF.X \(rayon\) = OM ø220.000/2 - jauge 63.345 - surface ø59.978/2 ='
-    wait_for '^ +16.666 \(avant 0.000\)'
+    wait_for 'PREF.X \(rayon\) = OM ø220.000/2 - jauge 63.345 - surface ø59.978/2'
+    wait_for '^ +(= )?16.666 \(avant 0.000\)'
     status=$(screen_e | head -1)
     [[ $status == *'[37m'*'[44m'* || $status == *'37;44'* ]] || fail "the status line is not white on blue: $status"
     cmd ":page op"

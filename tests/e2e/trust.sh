@@ -132,7 +132,7 @@ target)
     wait_for 'Cycle Start \(F9\) executes: G0 X40 Z25'
     cmd ":page pref"
     cmd "G0 X10"
-    wait_for '^ IMD block dropped: PREF: '
+    wait_for '^ IMD block dropped: ISO blocks are typed in IMD on the OP page'
     keys F9
     wait_for 'IMD: type a block first'
     cmd ":page op"
