@@ -172,7 +172,7 @@ class Session {
     std::string pending_confirm;  // what is asked; empty: nothing
     std::function<void()> on_confirm;
     void answer(bool yes);  // runs on_confirm on yes; either way the question ends
-    // Below 80x24 (DESIGN §2.4) only a resize, :quit and Ctrl-C act.
+    // Below 80x24 (pupitre(1), THE CONSOLE) only a resize, :quit and Ctrl-C act.
     bool too_small() const { return cols < 80 || rows < 24; }
 
   private:
