@@ -11,6 +11,7 @@
 #include "console/workshop_io.hpp"
 #include "core/i18n.hpp"
 #include "core/interp/interp.hpp"
+#include "core/output/summary.hpp"
 #include "core/output/trace.hpp"
 #include "core/workshop/report.hpp"
 

@@ -7,7 +7,7 @@
 #pragma once
 #include <bitset>
 
-#include "core/interp/machine.hpp"
+#include "core/geometry/axis.hpp"
 
 namespace pupitre {
 

@@ -18,13 +18,6 @@ std::string_view machine_mill5();
 std::string_view machine_cazeneuve();
 }  // namespace data
 
-int axis_of(char letter) {
-    // X Y Z U V W A B C -> 0..8, by table: this runs for every axis word.
-    static constexpr signed char kIndex[26] = {6,  7,  8,  -1, -1, -1, -1, -1, -1, -1, -1, -1, -1,
-                                               -1, -1, -1, -1, -1, -1, -1, 3,  4,  5,  0,  1,  2};
-    return (letter >= 'A' && letter <= 'Z') ? kIndex[letter - 'A'] : -1;
-}
-
 namespace {
 using kv::number;
 using kv::trim;

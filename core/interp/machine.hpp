@@ -7,18 +7,10 @@
 #include <string_view>
 #include <vector>
 
+#include "core/geometry/axis.hpp"
 #include "core/parse/dialect.hpp"
 
 namespace pupitre {
-
-// Axis index, as in the E parameters (E6x000…) and travel errors 150-158.
-enum Axis : int { X = 0, Y, Z, U, V, W, A, B, C, kAxes };
-using Axes = std::array<double, kAxes>;
-constexpr std::string_view kAxisNames = "XYZUVWABC";
-inline bool is_rotary(int a) {
-    return a >= A;
-}
-int axis_of(char letter);  // -1 if not an axis letter
 
 struct AxisConfig {
     bool present = false;

@@ -1,49 +1,10 @@
-// JSON-lines trace and run summaries.
+// The JSON-lines trace of a run (pupitre(1), OUTPUT, Trace).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/output/trace.hpp"
 
-#include <cmath>
-
-#include "core/geometry/kinematics.hpp"
-#include "core/i18n.hpp"
+#include "core/output/json.hpp"
 
 namespace pupitre {
-
-void append_fixed4(std::string& s, double v) {
-    if (std::fabs(v) < 0.00005) v = 0;
-    char buf[64];
-    int n = std::snprintf(buf, sizeof buf, "%.4f", v);
-    s.append(buf, size_t(n));
-}
-
-void append_json_string(std::string& s, std::string_view v) {
-    s += '"';
-    for (char c : v) {
-        switch (c) {
-            case '"':
-                s += "\\\"";
-                break;
-            case '\\':
-                s += "\\\\";
-                break;
-            case '\n':
-                s += "\\n";
-                break;
-            case '\t':
-                s += "\\t";
-                break;
-            default:
-                if (static_cast<unsigned char>(c) < 0x20) {
-                    char buf[8];
-                    std::snprintf(buf, sizeof buf, "\\u%04x", c);
-                    s += buf;
-                } else {
-                    s += c;
-                }
-        }
-    }
-    s += '"';
-}
 
 void TraceWriter::head(const char* ev, const Loc& l) {
     buf_.clear();
@@ -111,18 +72,18 @@ void TraceWriter::move(const MoveEvent& e) {
     std::fwrite(buf_.data(), 1, buf_.size(), out_);
 }
 
-void TraceWriter::dwell(const Loc& l, double s) {
-    seconds += s;
+void TraceWriter::dwell(const Loc& l, double duration) {
+    seconds += duration;
     head("dwell", l);
     buf_ += ",\"t\":";
-    append_fixed4(buf_, s);
+    append_fixed4(buf_, duration);
     buf_ += "}\n";
     std::fwrite(buf_.data(), 1, buf_.size(), out_);
 }
 
 // "m6": an M06 changed the tool (true) or only the corrector D changed.
-void TraceWriter::tool(const Loc& l, int t, int d, double s, bool m6) {
-    seconds += s;
+void TraceWriter::tool(const Loc& l, int t, int d, double duration, bool m6) {
+    seconds += duration;
     head("tool", l);
     buf_ += ",\"t\":" + std::to_string(t) + ",\"d\":" + std::to_string(d);
     buf_ += m6 ? ",\"m6\":true}\n" : ",\"m6\":false}\n";
@@ -173,180 +134,6 @@ void TraceWriter::end(const Loc& l, int m) {
     append_fixed4(buf_, seconds);
     buf_ += "}\n";
     std::fwrite(buf_.data(), 1, buf_.size(), out_);
-}
-
-namespace {
-std::string fixed(double v, int decimals) {
-    if (std::fabs(v) < 0.5 * std::pow(10.0, -decimals)) v = 0;
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-    return buf;
-}
-
-// Shortest decimal form of an L value (up to 6 decimals, no trailing zeros).
-std::string compact(double v) {
-    std::string s = fixed(v, 6);
-    if (s.find('.') != std::string::npos) {
-        while (s.back() == '0') s.pop_back();
-        if (s.back() == '.') s.pop_back();
-    }
-    return s == "-0" ? "0" : s;
-}
-
-std::string clock_text(double s) {
-    long total = long(s);
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%ld:%02ld:%02ld", total / 3600, (total / 60) % 60, total % 60);
-    return buf;
-}
-
-void axes_json(std::string& o, const Interpreter& in, const Axes& v) {
-    o += '{';
-    bool first = true;
-    for (int a = 0; a < kAxes; ++a) {
-        if (!in.machine().has(a)) continue;
-        if (!first) o += ',';
-        first = false;
-        o += '"';
-        o += kAxisNames[size_t(a)];
-        o += "\":";
-        append_fixed4(o, in.to_display(a, v[size_t(a)]));
-    }
-    o += '}';
-}
-
-std::string axes_text(const Interpreter& in, const Axes& v) {
-    std::string o;
-    for (int a = 0; a < kAxes; ++a) {
-        if (!in.machine().has(a)) continue;
-        if (!o.empty()) o += ' ';
-        o += kAxisNames[size_t(a)];
-        o += fixed(in.to_display(a, v[size_t(a)]), 3);
-    }
-    return o;
-}
-
-void diag_json(std::string& o, const Diag& d) {
-    o += "{\"code\":" + std::to_string(d.code) + ",\"file\":";
-    append_json_string(o, d.file);
-    o += ",\"line\":" + std::to_string(d.line) + ",\"n\":";
-    o += d.n >= 0 ? std::to_string(d.n) : std::string("null");
-    o += ",\"message\":";
-    append_json_string(o, d.detail);
-    o += '}';
-}
-}  // namespace
-
-std::string summary_text(const Interpreter& in, const std::string& file) {
-    std::string o;
-    // TRANSLATORS: a count in the summary of a run; the English says "blocks" whatever the number.
-    std::string blocks = strf(trn("%ld blocks", "%ld blocks", in.blocks()), in.blocks());
-    // TRANSLATORS: a count in the summary of a run; the English says "moves" whatever the number.
-    std::string moves = strf(trn("%ld moves", "%ld moves", in.moves()), in.moves());
-    // TRANSLATORS: the first line of the summary of a run: program number, file, machine profile,
-    // then the counts of blocks and moves, the path length, the cycle time h:mm:ss and in seconds.
-    o += strf(tr("%%%d (%s) on %s: %s, %s, path %s mm, cycle time %s (%s s)\n"), in.main_program(),
-              file.c_str(), in.machine().name.c_str(), blocks.c_str(), moves.c_str(),
-              fixed(in.path_length(), 3).c_str(), clock_text(in.seconds()).c_str(),
-              fixed(in.seconds(), 3).c_str());
-    if (in.machine().dialect == Dialect::cazeneuve)
-        // The programs are in micrometres; OP and OM are shown as the machine's pages show them.
-        o += tr("units: mm, X a radius (the program's X15000 is X15.000; pupitre-cazeneuve(5))\n");
-    o += strf(tr("final OP: %s\n"), axes_text(in, in.program_pos()).c_str());
-    o += strf(tr("final OM: %s\n"), axes_text(in, in.machine_pos()).c_str());
-    if (!in.tools_used().empty()) {
-        o += tr("tools:");
-        for (int t : in.tools_used()) o += " T" + std::to_string(t);
-        o += '\n';
-    }
-    return o;
-}
-
-std::string summary_json(const Interpreter& in, const std::string& file,
-                         const std::vector<Diag>& more, std::string_view fields) {
-    std::string o = "{\"file\":";
-    append_json_string(o, file);
-    o += ",\"program\":" + std::to_string(in.main_program());
-    o += ",\"machine\":";
-    append_json_string(o, in.machine().name);
-    o += ",\"blocks\":" + std::to_string(in.blocks());
-    o += ",\"moves\":" + std::to_string(in.moves());
-    o += ",\"path_length\":";
-    append_fixed4(o, in.path_length());
-    o += ",\"cycle_time\":";
-    append_fixed4(o, in.seconds());
-    o += ",\"op\":";
-    axes_json(o, in, in.program_pos());
-    o += ",\"om\":";
-    axes_json(o, in, in.machine_pos());
-    const MachineProfile& m = in.machine();
-    if (!m.kinematics.empty()) {
-        // The tool in the part frame by the kinematic model (004:1436-2018).
-        const Axes& p = in.program_pos();
-        Eigen::Isometry3d h =
-            m.kinematics == "table"
-                ? kin::forward4({p[X], p[Y], p[Z], p[B]}, m.kin_lx, m.kin_lz)
-                : kin::forward5({p[X], p[Y], p[Z], p[B], p[C]}, m.kin_lx, m.kin_ly, m.kin_lz);
-        Eigen::Vector3d t = h.translation(), k = h.linear().col(2);
-        o += ",\"tool_in_part\":{\"X\":";
-        append_fixed4(o, t.x());
-        o += ",\"Y\":";
-        append_fixed4(o, t.y());
-        o += ",\"Z\":";
-        append_fixed4(o, t.z());
-        o += ",\"axis\":[";
-        append_fixed4(o, k.x());
-        o += ',';
-        append_fixed4(o, k.y());
-        o += ',';
-        append_fixed4(o, k.z());
-        o += "]}";
-    }
-    o += ",\"tools\":[";
-    for (size_t i = 0; i < in.tools_used().size(); ++i) {
-        if (i) o += ',';
-        o += std::to_string(in.tools_used()[i]);
-    }
-    o += "],\"L\":{";
-    bool first = true;
-    for (size_t i = 0; i < in.lvars().v.size(); ++i) {
-        if (!in.lvars().written.test(i)) continue;
-        if (!first) o += ',';
-        first = false;
-        o += "\"L" + std::to_string(i) + "\":" + compact(in.lvars().v[i]);
-    }
-    o += "},\"E\":{";
-    first = true;
-    for (const auto& [n, v] : in.e_written()) {
-        if (!first) o += ',';
-        first = false;
-        o += "\"E" + std::to_string(n) + "\":" + std::to_string(v);
-    }
-    o += "},\"errors\":[";
-    first = true;
-    for (const Diag& d : in.diags()) {
-        if (!d.is_error()) continue;
-        if (!first) o += ',';
-        first = false;
-        diag_json(o, d);
-    }
-    for (const Diag& d : more) {
-        if (!first) o += ',';
-        first = false;
-        diag_json(o, d);
-    }
-    o += "],\"warnings\":[";
-    first = true;
-    for (const Diag& d : in.diags()) {
-        if (d.is_error()) continue;
-        if (!first) o += ',';
-        first = false;
-        diag_json(o, d);
-    }
-    o += ']';
-    o += fields;
-    o += "}\n";
-    return o;
 }
 
 }  // namespace pupitre

@@ -1,11 +1,11 @@
-// Output of a dry run: the JSON-lines trace (pupitre(1), OUTPUT, Trace) and the run summary,
-// plain or JSON. Fixed 4 decimals for lengths, degrees, seconds, feeds and speeds.
+// The JSON-lines trace of a dry run (pupitre(1), OUTPUT, Trace), one line per event: a sink
+// that compiles against the machine boundary alone (sink.hpp).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 #include <cstdio>
 #include <string>
 
-#include "core/interp/interp.hpp"
+#include "core/interp/sink.hpp"
 
 namespace pupitre {
 
@@ -32,16 +32,5 @@ class TraceWriter final : public MachineSink {
     const MachineProfile& m_;
     std::string buf_;
 };
-
-// Appends v with exactly 4 decimals ("-0.0000" is written "0.0000").
-void append_fixed4(std::string& s, double v);
-// Appends a JSON string literal.
-void append_json_string(std::string& s, std::string_view v);
-
-std::string summary_text(const Interpreter& in, const std::string& file);
-// `more` are errors found outside the interpreter (the workshop's crashes);
-// `fields` is JSON inserted before the closing brace (",\"workshop\":{…}").
-std::string summary_json(const Interpreter& in, const std::string& file,
-                         const std::vector<Diag>& more = {}, std::string_view fields = {});
 
 }  // namespace pupitre

@@ -179,7 +179,7 @@ bool parse_plain(std::string_view line, Block& b) {
 }
 
 struct Parser {
-    std::string_view s;
+    std::string_view line;
     size_t pos = 0;
     Block& b;
     Error& err;
@@ -190,19 +190,20 @@ struct Parser {
         err.detail = std::move(msg);
         return false;
     }
-    char peek(size_t k = 0) const { return pos + k < s.size() ? s[pos + k] : '\0'; }
+    char peek(size_t k = 0) const { return pos + k < line.size() ? line[pos + k] : '\0'; }
     void skip_spaces() {
-        while (pos < s.size() && (s[pos] == ' ' || s[pos] == '\t' || s[pos] == '\r')) ++pos;
+        while (pos < line.size() && (line[pos] == ' ' || line[pos] == '\t' || line[pos] == '\r'))
+            ++pos;
     }
     size_t after_spaces(size_t p) const {
-        while (p < s.size() && (s[p] == ' ' || s[p] == '\t')) ++p;
+        while (p < line.size() && (line[p] == ' ' || line[p] == '\t')) ++p;
         return p;
     }
 
-    // digits [ '.' digits ] | '.' digits
+    /* number -> digits ['.' digits] | '.' digits */
     bool number(Operand& v) {
         const size_t start = pos;
-        const Digits d = scan_digits(s.data(), start, s.size());
+        const Digits d = scan_digits(line.data(), start, line.size());
         pos = d.end;
         v.int_digits = uint8_t(std::min<size_t>(d.int_digits, 255));
         v.frac_digits = uint8_t(std::min<size_t>(d.frac_digits, 255));
@@ -210,7 +211,7 @@ struct Parser {
         if (d.int_digits + d.frac_digits <= kExactDigits) {
             v.num = exact_value(d);
         } else {
-            std::string_view span = s.substr(start, pos - start);
+            std::string_view span = line.substr(start, pos - start);
             char buf[64];
             if (span.size() >= sizeof buf - 1) return fail(1, start, tr("too many digits"));
             size_t k = 0;
@@ -229,7 +230,7 @@ struct Parser {
         size_t start = pos;
         long long n = 0;
         while (is_digit(peek())) {
-            n = n * 10 + (s[pos] - '0');
+            n = n * 10 + (line[pos] - '0');
             ++pos;
             if (int(pos - start) > max_digits)
                 return fail(91, start, tr("parameter number too long"));
@@ -250,7 +251,7 @@ struct Parser {
         }
         if (!is_upper(peek()) || peek(1) != '\'')
             return fail(93, start, tr("bad symbol, expected 'A'..'Z' or 'EA'..'EZ'"));
-        l = base + (s[pos] - 'A');
+        l = base + (line[pos] - 'A');
         pos += 2;
         return true;
     }
@@ -289,7 +290,7 @@ struct Parser {
     // After pos (a variable's end), does an assignment '=' follow? ("<=" ">=" are tests.)
     bool assignment_follows(size_t p) const {
         p = after_spaces(p);
-        return p < s.size() && s[p] == '=';
+        return p < line.size() && line[p] == '=';
     }
 
     // The value of an address word.
@@ -320,6 +321,7 @@ struct Parser {
         return true;
     }
 
+    /* term -> {'+' | '-' | S | C | A | R | T} (number | variable) */
     bool term(Term& t) {
         for (;;) {
             skip_spaces();
@@ -338,13 +340,13 @@ struct Parser {
         bool found;
         if (!variable(t.v, found)) return false;
         if (!found) {
-            if (pos >= s.size()) return fail(93, pos, tr("expression ends without a value"));
+            if (pos >= line.size()) return fail(93, pos, tr("expression ends without a value"));
             return fail(93, pos, strf(tr("'%c' cannot appear in an expression"), c));
         }
         return true;
     }
 
-    // expr -> term { binop term }; stops before a comparator or the next word.
+    /* expr -> term {binop term} ; stops before a comparator or the next word */
     bool expr(Expr& e) {
         e.first = uint16_t(b.terms.size());
         Term t;
@@ -353,7 +355,7 @@ struct Parser {
         b.terms.push_back(t);
         for (;;) {
             size_t p = after_spaces(pos);
-            char c = p < s.size() ? s[p] : '\0';
+            char c = p < line.size() ? line[p] : '\0';
             if (c == '+' || c == '-' || c == '*' || c == '/' || c == '&' || c == '!') {
                 pos = p + 1;
                 Term u;
@@ -406,6 +408,7 @@ struct Parser {
         return true;
     }
 
+    /* test -> expr cmp expr */
     bool test() {
         b.test.col = uint16_t(pos + 1);
         in_test_ = true;
@@ -428,13 +431,15 @@ struct Parser {
         static constexpr std::string_view kws[] = {"WHILE", "ENDW", "FOR",    "ENDF", "ENDIF",
                                                    "ENDI",  "ELSE", "THEN",   "PUSH", "PULL",
                                                    "VAR",   "DO",   "REPEAT", "UNTIL"};
-        std::string_view rest = s.substr(pos);
+        std::string_view rest = line.substr(pos);
         for (auto kw : kws)
             if (keyword_at(rest, kw)) return true;
         // IF alone reads as I0 F0 (004:236) unless it opens an IF…THEN construct.
-        return keyword_at(rest, "IF") && s.find("THEN") != std::string_view::npos;
+        return keyword_at(rest, "IF") && line.find("THEN") != std::string_view::npos;
     }
 
+    /* word -> 'E' ('+' | '-') | address operand [g_suffix] [test]
+       address -> letter | 'E' letter | 'N' ('C' | 'U' | 'P' | 'R') ; test after a G79 */
     bool word(char c) {
         size_t col = pos;
         Word w;
@@ -467,31 +472,16 @@ struct Parser {
             ++pos;
         }
         if (!operand(w.v)) return false;
-        if (c == 'G' && w.addr == addr1('G') && w.v.kind == Operand::Number) {
-            // A G number out of int's range is no G76/G77/G79 (decode says error 2).
-            int g = w.v.num >= 0 && w.v.num < 1e6 ? int(w.v.num) : -1;
-            if ((g == 76 || g == 79) && (peek() == '+' || peek() == '-')) {
-                w.gsign = peek();
-                ++pos;
-                if (g == 76) g76_edit_ = b.words.size() + 1;
-            } else if (g == 77) {
-                size_t p = after_spaces(pos);
-                if (p + 1 < s.size() && s[p] == '-' && is_digit(s[p + 1])) {
-                    pos = p + 1;
-                    int lvl = 0;
-                    while (is_digit(peek()) && lvl < 1000) lvl = lvl * 10 + (s[pos++] - '0');
-                    w.glevel = int16_t(lvl);
-                }
-            }
-        }
+        if (c == 'G' && w.addr == addr1('G') && w.v.kind == Operand::Number) g_suffix(w);
         b.words.push_back(w);
         if (c == 'G' && w.v.kind == Operand::Number && w.v.num == 79 && w.gsign == 0) {
             // A condition follows unless the next word is the target N.
             size_t p = after_spaces(pos);
-            if (p < s.size()) {
-                char k = s[p];
+            if (p < line.size()) {
+                char k = line[p];
                 if (k == 'L' || k == '\'' || k == '+' || k == '-' || is_digit(k) || k == '.' ||
-                    (k == 'E' && p + 1 < s.size() && (is_digit(s[p + 1]) || s[p + 1] == 'L'))) {
+                    (k == 'E' && p + 1 < line.size() &&
+                     (is_digit(line[p + 1]) || line[p + 1] == 'L'))) {
                     pos = p;
                     return test();
                 }
@@ -500,6 +490,26 @@ struct Parser {
         return true;
     }
 
+    /* g_suffix -> ('+' | '-') after G76 or G79 | '-' level after G77 */
+    void g_suffix(Word& w) {
+        // A G number out of int's range is no G76/G77/G79 (decode says error 2).
+        int g = w.v.num >= 0 && w.v.num < 1e6 ? int(w.v.num) : -1;
+        if ((g == 76 || g == 79) && (peek() == '+' || peek() == '-')) {
+            w.gsign = peek();
+            ++pos;
+            if (g == 76) g76_edit_ = b.words.size() + 1;
+        } else if (g == 77) {
+            size_t p = after_spaces(pos);
+            if (p + 1 < line.size() && line[p] == '-' && is_digit(line[p + 1])) {
+                pos = p + 1;
+                int lvl = 0;
+                while (is_digit(peek()) && lvl < 1000) lvl = lvl * 10 + (line[pos++] - '0');
+                w.glevel = int16_t(lvl);
+            }
+        }
+    }
+
+    /* block -> ['/'] {comment | message | element} */
     bool run() {
         skip_spaces();
         if (peek() == '/') {
@@ -507,34 +517,14 @@ struct Parser {
             ++pos;
         }
         bool first_word = true;
-        while (true) {
-            skip_spaces();
-            if (pos >= s.size()) break;
-            char c = s[pos];
+        for (skip_spaces(); pos < line.size(); skip_spaces()) {
+            const char c = line[pos];
             if (c == '(') {
-                size_t close = s.find(')', pos);
-                if (close == std::string_view::npos)
-                    return fail(17, pos, tr("end of block inside a comment"));
-                pos = close + 1;
+                if (!comment()) return false;
                 continue;
             }
             if (c == '$') {
-                if (!is_digit(peek(1)))
-                    return fail(1, pos, tr("'$' must be followed by a channel digit 0-6"));
-                int ch = peek(1) - '0';
-                if (ch > 6) return fail(1, pos, tr("message channel must be $0 to $6"));
-                pos += 2;
-                size_t end = s.find('(', pos);
-                if (end == std::string_view::npos) end = s.size();
-                std::string_view text = s.substr(pos, end - pos);
-                while (!text.empty() && (text.front() == ' ' || text.front() == '\t'))
-                    text.remove_prefix(1);
-                while (!text.empty() &&
-                       (text.back() == ' ' || text.back() == '\t' || text.back() == '\r'))
-                    text.remove_suffix(1);
-                b.msg_channel = ch;
-                b.msg = text;
-                pos = end;
+                if (!message()) return false;
                 continue;
             }
             if (first_word || (b.words.size() == 1 && b.words[0].addr == addr1('N'))) {
@@ -545,84 +535,130 @@ struct Parser {
                                      "\u2026"));
             }
             first_word = false;
-            if (c == 'L' && is_upper(peek(1)) && peek(1) != 'O') {
-                Word w;
-                w.col = uint16_t(pos + 1);
-                w.addr = addrL(peek(1));
-                pos += 2;
-                if (!operand(w.v)) return false;
-                b.words.push_back(w);
-                continue;
-            }
-            if (c == 'L' || c == '\'' ||
-                (c == 'E' && (is_digit(peek(1)) || (peek(1) == 'L' && is_digit(peek(2)))))) {
-                size_t col = pos;
-                Operand target;
-                bool found;
-                if (!variable(target, found)) return false;
-                if (!found) return fail(93, col, tr("bad parameter"));
-                if (!assignment_follows(pos)) {
-                    if (target.kind == Operand::LVar)
-                        return fail(93, col, tr("L variable not followed by '='"));
-                    return fail(93, col, tr("E parameter not followed by '='"));
-                }
-                if (!assign(target, col)) return false;
-                continue;
-            }
-            if (is_upper(c)) {
-                if (c == 'O')
-                    return fail(1, pos, tr("the letter O is not an ISO address (did you mean 0?)"));
-                if (!word(c)) return false;
-                if (g76_edit_ && b.words.size() > g76_edit_ && b.words.back().addr == addr1('N')) {
-                    if (!g76_tail()) return false;
-                    break;
-                }
-                if (b.words.size() == 1 && c == 'N' && b.words[0].addr == addr1('N')) {
-                    const Operand& v = b.words[0].v;
-                    if (v.kind == Operand::Number) {
-                        if (v.frac_digits || v.int_digits > 5)
-                            return fail(1, b.words[0].col - 1,
-                                        tr("block number must have 1 to 5 digits"));
-                        b.n = long(v.num);
-                    } else if (v.kind == Operand::Blank) {
-                        b.n = 0;
-                    } else {
-                        return fail(1, b.words[0].col - 1, tr("block number must be a number"));
-                    }
-                }
-                continue;
-            }
-            if (c >= 'a' && c <= 'z')
-                return fail(1, pos, strf(tr("lower-case letter '%c' outside a comment"), c));
-            if (is_digit(c) || c == '.' || c == '+' || c == '-')
-                return fail(1, pos, tr("value without an address letter"));
-            if (static_cast<unsigned char>(c) < 32 || static_cast<unsigned char>(c) > 126)
-                return fail(1, pos, tr("character outside the ISO set"));
-            return fail(1, pos, strf(tr("unknown character '%c'"), c));
+            if (!element(c)) return false;
         }
         return true;
     }
 
+    /* comment -> '(' {character} ')' */
+    bool comment() {
+        size_t close = line.find(')', pos);
+        if (close == std::string_view::npos)
+            return fail(17, pos, tr("end of block inside a comment"));
+        pos = close + 1;
+        return true;
+    }
+
+    /* message -> '$' channel {character}, up to the next '(' or the block's end */
+    bool message() {
+        if (!is_digit(peek(1)))
+            return fail(1, pos, tr("'$' must be followed by a channel digit 0-6"));
+        int channel = peek(1) - '0';
+        if (channel > 6) return fail(1, pos, tr("message channel must be $0 to $6"));
+        pos += 2;
+        size_t end = line.find('(', pos);
+        if (end == std::string_view::npos) end = line.size();
+        std::string_view text = line.substr(pos, end - pos);
+        while (!text.empty() && (text.front() == ' ' || text.front() == '\t'))
+            text.remove_prefix(1);
+        while (!text.empty() && (text.back() == ' ' || text.back() == '\t' || text.back() == '\r'))
+            text.remove_suffix(1);
+        b.msg_channel = channel;
+        b.msg = text;
+        pos = end;
+        return true;
+    }
+
+    /* element -> l_word | assignment | address_word */
+    bool element(char c) {
+        if (c == 'L' && is_upper(peek(1)) && peek(1) != 'O') return l_word();
+        if (c == 'L' || c == '\'' ||
+            (c == 'E' && (is_digit(peek(1)) || (peek(1) == 'L' && is_digit(peek(2))))))
+            return assignment();
+        if (is_upper(c)) return address_word(c);
+        if (c >= 'a' && c <= 'z')
+            return fail(1, pos, strf(tr("lower-case letter '%c' outside a comment"), c));
+        if (is_digit(c) || c == '.' || c == '+' || c == '-')
+            return fail(1, pos, tr("value without an address letter"));
+        if (static_cast<unsigned char>(c) < 32 || static_cast<unsigned char>(c) > 126)
+            return fail(1, pos, tr("character outside the ISO set"));
+        return fail(1, pos, strf(tr("unknown character '%c'"), c));
+    }
+
+    /* l_word -> 'L' letter operand ; the letter is no O */
+    bool l_word() {
+        Word w;
+        w.col = uint16_t(pos + 1);
+        w.addr = addrL(peek(1));
+        pos += 2;
+        if (!operand(w.v)) return false;
+        b.words.push_back(w);
+        return true;
+    }
+
+    /* assignment -> variable '=' expr */
+    bool assignment() {
+        size_t col = pos;
+        Operand target;
+        bool found;
+        if (!variable(target, found)) return false;
+        if (!found) return fail(93, col, tr("bad parameter"));
+        if (!assignment_follows(pos)) {
+            if (target.kind == Operand::LVar)
+                return fail(93, col, tr("L variable not followed by '='"));
+            return fail(93, col, tr("E parameter not followed by '='"));
+        }
+        return assign(target, col);
+    }
+
+    /* address_word -> word [block_number] [g76_tail] ; the letter is no O */
+    bool address_word(char c) {
+        if (c == 'O')
+            return fail(1, pos, tr("the letter O is not an ISO address (did you mean 0?)"));
+        if (!word(c)) return false;
+        if (g76_edit_ && b.words.size() > g76_edit_ && b.words.back().addr == addr1('N'))
+            return g76_tail();  // the rest of the line is the block to insert
+        if (b.words.size() == 1 && c == 'N' && b.words[0].addr == addr1('N'))
+            return block_number(b.words[0]);
+        return true;
+    }
+
+    /* block_number -> 'N' [digit {digit}] ; 1 to 5 digits, blank for N0 */
+    bool block_number(const Word& n) {
+        const Operand& v = n.v;
+        if (v.kind == Operand::Number) {
+            if (v.frac_digits || v.int_digits > 5)
+                return fail(1, n.col - 1, tr("block number must have 1 to 5 digits"));
+            b.n = long(v.num);
+        } else if (v.kind == Operand::Blank) {
+            b.n = 0;
+        } else {
+            return fail(1, n.col - 1, tr("block number must be a number"));
+        }
+        return true;
+    }
+
+    /* g76_tail -> ['+' digits] {character} */
     // After the pointed block of G76+/G76-: an optional "+k" line offset, then the
     // block to insert, kept as text (000:7098-7147).
     bool g76_tail() {
         size_t p = after_spaces(pos);
-        if (p + 1 < s.size() && s[p] == '+' && is_digit(s[p + 1])) {
+        if (p + 1 < line.size() && line[p] == '+' && is_digit(line[p + 1])) {
             int k = 0, digits = 0;
             size_t at = p++;
-            while (p < s.size() && is_digit(s[p])) {
+            while (p < line.size() && is_digit(line[p])) {
                 if (++digits > 5)
                     return fail(1, at, tr("the line offset +k has more than 5 digits"));
-                k = k * 10 + (s[p++] - '0');
+                k = k * 10 + (line[p++] - '0');
             }
             b.g76_k = k;
             p = after_spaces(p);
         }
-        std::string_view rest = s.substr(p);
+        std::string_view rest = line.substr(p);
         while (!rest.empty() && (rest.back() == ' ' || rest.back() == '\t')) rest.remove_suffix(1);
         b.g76_block = rest;
         b.g76_block_col = uint16_t(p + 1);
-        pos = s.size();
+        pos = line.size();
         return true;
     }
 

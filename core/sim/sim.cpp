@@ -46,10 +46,10 @@ constexpr ModeInfo kModes[] = {
     {Mode::pom, "pom", "POM", N_("homing"), N_("Cycle Start (F9) homes the axes")},
 };
 
-std::string fmt_seconds(double s) {
+std::string fmt_seconds(double seconds) {
     char buf[32];
-    int m = int(s / 60);
-    std::snprintf(buf, sizeof buf, "%d min %04.1f s", m, s - 60 * m);
+    int m = int(seconds / 60);
+    std::snprintf(buf, sizeof buf, "%d min %04.1f s", m, seconds - 60 * m);
     return buf;
 }
 
@@ -88,8 +88,8 @@ bool parse_mode(std::string_view word, Mode& out) {
     return false;
 }
 
-std::string_view state_name(RunState s) {
-    switch (s) {
+std::string_view state_name(RunState state) {
+    switch (state) {
         case RunState::idle:
             return "READY";
         case RunState::running:
@@ -404,15 +404,15 @@ void Sim::move(const MoveEvent& m) {
     push(std::move(e));
 }
 
-void Sim::dwell(const Loc& l, double s) {
+void Sim::dwell(const Loc& l, double duration) {
     Ev e = event(Ev::dwell, l);
-    e.seconds = s;
+    e.seconds = duration;
     push(std::move(e));
 }
 
-void Sim::tool(const Loc& l, int t, int d, double s, bool) {
+void Sim::tool(const Loc& l, int t, int d, double duration, bool) {
     Ev e = event(Ev::tool, l);
-    e.a = t, e.b = d, e.seconds = s;
+    e.a = t, e.b = d, e.seconds = duration;
     push(std::move(e));
 }
 

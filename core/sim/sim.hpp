@@ -34,7 +34,7 @@ enum class RunState {
     ended,    // M02, end of an IMD block, end of a POM or a jog
     alarm,    // an error stopped the run: RAZ acknowledges it
 };
-std::string_view state_name(RunState s);
+std::string_view state_name(RunState state);
 
 struct Alarm {
     Diag diag;

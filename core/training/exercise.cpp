@@ -42,17 +42,17 @@ constexpr Builtin kBuiltins[] = {
     {"wear", data::exercise_wear},
 };
 
-bool number(std::string_view s, double& v) {
-    return kv::number(s, v) && std::isfinite(v) && std::abs(v) < 1e5;
+bool number(std::string_view text, double& v) {
+    return kv::number(text, v) && std::isfinite(v) && std::abs(v) < 1e5;
 }
 
-// The words of `s`, split at blanks.
-std::vector<std::string_view> words(std::string_view s) {
+// The words of `text`, split at blanks.
+std::vector<std::string_view> words(std::string_view text) {
     std::vector<std::string_view> out;
-    while (!(s = trim(s)).empty()) {
-        size_t end = s.find_first_of(" \t");
-        out.push_back(s.substr(0, end));
-        s = end == std::string_view::npos ? std::string_view{} : s.substr(end);
+    while (!(text = trim(text)).empty()) {
+        size_t end = text.find_first_of(" \t");
+        out.push_back(text.substr(0, end));
+        text = end == std::string_view::npos ? std::string_view{} : text.substr(end);
     }
     return out;
 }
@@ -76,18 +76,18 @@ std::string draw_value(std::string_view val, Draw& d) {
 }
 
 // "truth", "truth + 0.015", "truth - 0.2" or a number.
-std::string start_value_text(std::string_view val, Start& s) {
+std::string start_value_text(std::string_view val, Start& start) {
     if (val.substr(0, 5) != "truth") {
-        if (!number(val, s.value)) return tr("expected a number or truth + N");
+        if (!number(val, start.value)) return tr("expected a number or truth + N");
         return {};
     }
-    s.from_truth = true;
+    start.from_truth = true;
     std::string_view rest = trim(val.substr(5));
     if (rest.empty()) return {};
     double v = 0;
     if ((rest[0] != '+' && rest[0] != '-') || !number(rest.substr(1), v))
         return tr("expected truth + N or truth - N");
-    s.value = rest[0] == '-' ? -v : v;
+    start.value = rest[0] == '-' ? -v : v;
     return {};
 }
 
@@ -394,19 +394,20 @@ uint64_t seed_of(const Exercise& e, std::string_view student, std::string_view s
     return std::stoull(h.substr(0, 16), nullptr, 16);
 }
 
-std::string draw_setup(const Exercise& e, uint64_t seed, workshop::Setup& s) {
-    return workshop::parse_setup(setup_text(e, 2, seed), s);
+std::string draw_setup(const Exercise& e, uint64_t seed, workshop::Setup& setup) {
+    return workshop::parse_setup(setup_text(e, 2, seed), setup);
 }
 
-std::string exercise_from_setup(const workshop::Setup& s, std::string_view name) {
+std::string exercise_from_setup(const workshop::Setup& setup, std::string_view name) {
     std::string out = strf(
         "# pupitre exercise (pupitre-exercise(5)), from the setup %s: every value fixed.\n"
         "# Give ranges (LO .. HI) to the values each student must find.\n"
         "name = %.*s\ntitle = %s\nmachine = %s\n",
-        s.name.c_str(), int(name.size()), name.data(), s.description.c_str(), s.kind.c_str());
-    out += s.kind == "lathe" ? "find = PREF.X 0.01\nfind = PREF.Z 0.01\n"
-                             : "find = PREF.X 0.01\nfind = PREF.Y 0.01\nfind = PREF.Z 0.01\n";
-    std::string_view text = s.source;
+        setup.name.c_str(), int(name.size()), name.data(), setup.description.c_str(),
+        setup.kind.c_str());
+    out += setup.kind == "lathe" ? "find = PREF.X 0.01\nfind = PREF.Z 0.01\n"
+                                 : "find = PREF.X 0.01\nfind = PREF.Y 0.01\nfind = PREF.Z 0.01\n";
+    std::string_view text = setup.source;
     int lineno = 0;
     for (std::string_view line; kv::next_line(text, line, lineno);) {
         size_t eq = line.find('=');

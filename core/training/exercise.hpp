@@ -96,7 +96,7 @@ bool builtin_exercise(std::string_view name, Exercise& e);
 uint64_t seed_of(const Exercise& e, std::string_view student, std::string_view secret);
 // The setup drawn with `seed` (its text: the built-in setup, then one line
 // per truth key). "" or what is wrong.
-std::string draw_setup(const Exercise& e, uint64_t seed, workshop::Setup& s);
+std::string draw_setup(const Exercise& e, uint64_t seed, workshop::Setup& setup);
 // The value the machine has at the start for `name` given the truth, if the
 // exercise says one.
 bool start_value(const Exercise& e, const workshop::Setup& truth, const std::string& name,
@@ -118,6 +118,6 @@ std::string rehearse(const Exercise& e, const workshop::Setup& truth);
 
 // An exercise file from a machine's setup, every value fixed: a start for
 // the teacher's own (`pupitre exercise save`).
-std::string exercise_from_setup(const workshop::Setup& s, std::string_view name);
+std::string exercise_from_setup(const workshop::Setup& setup, std::string_view name);
 
 }  // namespace pupitre::training

@@ -183,9 +183,10 @@ constexpr Row kMistakes[] = {
     {Mistake::unset, "unset", N_("not entered"), unset},
 };
 
-void name_mistake(const Exercise& e, const workshop::Setup& s, const Context& ctx, ItemGrade& it) {
+void name_mistake(const Exercise& e, const workshop::Setup& truth, const Context& ctx,
+                  ItemGrade& it) {
     const size_t dot = it.name.find('.');
-    Probe p{e, s, ctx, it, it.name.substr(0, dot), it.name.substr(dot + 1), it.tolerance};
+    Probe p{e, truth, ctx, it, it.name.substr(0, dot), it.name.substr(dot + 1), it.tolerance};
     for (const Row& r : kMistakes) {
         std::string why = r.find(p);
         if (why.empty()) continue;

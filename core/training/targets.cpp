@@ -19,10 +19,10 @@ struct Name {
     std::string field;  // X, Z, R, DX, DZ, L, DL, DR
 };
 
-bool split(std::string_view s, Name& n) {
-    size_t dot = s.find('.');
+bool split(std::string_view text, Name& n) {
+    size_t dot = text.find('.');
     if (dot == std::string_view::npos) return false;
-    std::string_view head = s.substr(0, dot), tail = s.substr(dot + 1);
+    std::string_view head = text.substr(0, dot), tail = text.substr(dot + 1);
     if (head == "PREF" || head == "DEC1") {
         n.kind = head == "PREF" ? Name::pref : Name::dec1;
         if (tail.size() != 1) return false;
@@ -101,18 +101,18 @@ bool mill_origin(const Exercise& e, const workshop::MillSetup& m, const Name& n,
 
 // A corrector's true value: the tool's gauge, radius or length; a wear
 // field (DX…) what brings the given gauge to the truth.
-bool corrector(const Exercise& e, const workshop::Setup& s, const Name& n, double& v,
+bool corrector(const Exercise& e, const workshop::Setup& setup, const Name& n, double& v,
                std::string* how) {
-    const workshop::ToolTruth* t = s.tool(n.d);
+    const workshop::ToolTruth* t = setup.tool(n.d);
     if (!t) return false;
-    const bool lathe = s.kind == "lathe";
+    const bool lathe = setup.kind == "lathe";
     const std::string& f = n.field;
     std::string text;
     if (f == "DX" || f == "DZ" || f == "DL" || f == "DR") {
         const std::string base = "D" + std::to_string(n.d) + "." + f.substr(1);
         double truth = 0, given = 0;
-        expected(e, s, base, truth);
-        if (!start_value(e, s, base, given)) given = truth;
+        expected(e, setup, base, truth);
+        if (!start_value(e, setup, base, given)) given = truth;
         v = truth - given;
         text = strf(tr("D%d %s = T%d's true %s - D%d %s as given = %s - %s = %s"), n.d, f.c_str(),
                     n.d, f.c_str() + 1, n.d, f.c_str() + 1, mm(truth).c_str(), mm(given).c_str(),
@@ -164,13 +164,13 @@ bool target_name(std::string_view name, bool lathe) {
     return false;
 }
 
-bool expected(const Exercise& e, const workshop::Setup& s, const std::string& name, double& v,
+bool expected(const Exercise& e, const workshop::Setup& truth, const std::string& name, double& v,
               std::string* how) {
     Name n;
-    if (!split(name, n) || !target_name(name, s.kind == "lathe")) return false;
-    if (n.kind == Name::corr) return corrector(e, s, n, v, how);
-    return s.kind == "lathe" ? lathe_origin(e, s.lathe, n, v, how)
-                             : mill_origin(e, s.mill, n, v, how);
+    if (!split(name, n) || !target_name(name, truth.kind == "lathe")) return false;
+    if (n.kind == Name::corr) return corrector(e, truth, n, v, how);
+    return truth.kind == "lathe" ? lathe_origin(e, truth.lathe, n, v, how)
+                                 : mill_origin(e, truth.mill, n, v, how);
 }
 
 bool start_value(const Exercise& e, const workshop::Setup& truth, const std::string& name,

@@ -7,7 +7,7 @@
 
 #include "core/i18n.hpp"
 #include "core/numfmt.hpp"
-#include "core/output/trace.hpp"
+#include "core/output/json.hpp"
 
 namespace pupitre::workshop {
 

@@ -30,8 +30,8 @@ namespace {
 using kv::trim;
 
 // A number of a setup: finite, and below 100 km (no workshop is larger).
-bool number(std::string_view s, double& v) {
-    return kv::number(s, v) && std::isfinite(v) && std::abs(v) < 1e5;
+bool number(std::string_view text, double& v) {
+    return kv::number(text, v) && std::isfinite(v) && std::abs(v) < 1e5;
 }
 
 // Reads a number into `out` if it lies in [lo, hi]; else says why.

@@ -2,6 +2,8 @@
 # The layers of pupitre (ARCHITECTURE.md, Invariants): core/ knows neither the console
 # nor the pages; pages/ are pure renderers that never call ncurses nor the
 # console; only the store (store/) speaks SQL; the core links no Cairo.
+# Inside the core, its folders stand in one order (CORE_ORDER, ARCHITECTURE.md):
+# a folder includes its own headers and those of the folders below it.
 # Fails, naming file and line, on a product #include that crosses the wrong way.
 # Tests are not product code: the store's anomaly tests include sqlite3.h.
 #   layering.py ROOT        check the source tree at ROOT
@@ -28,6 +30,32 @@ RULES = [
     ("core/", None, r"^<png\.h>", "the core links no libpng"),
 ]
 
+# The core's folders from the ground up: the files at core/'s top (diag, i18n,
+# numfmt, keyvalue, sha256) first, then each folder, which may include its own
+# headers and those of the folders before it, never one after it.
+CORE_ORDER = ("", "parse", "geometry", "cycles", "interp", "output", "workshop", "sim",
+              "training")
+CORE_INCLUDE = re.compile(r'^"core/(?:([a-z_]+)/)?[^/"]+"$')
+CORE_WHY = "core's folders include only downwards: " + " < ".join(f or "core/*" for f in CORE_ORDER)
+
+
+def core_folder(rel):
+    """The folder of a core/ file, "" for one at core/'s top."""
+    parts = rel.split("/")
+    return parts[1] if len(parts) > 2 else ""
+
+
+def core_order(rel, header):
+    """Why this include of a core/ file runs back up inside the core, or None."""
+    m = CORE_INCLUDE.match(header)
+    if not rel.startswith("core/") or not m:
+        return None
+    mine, theirs = core_folder(rel), m.group(1) or ""
+    if mine in CORE_ORDER and theirs in CORE_ORDER and CORE_ORDER.index(theirs) > CORE_ORDER.index(mine):
+        return CORE_WHY
+    return None
+
+
 # The plot back-end lives beside the scene it draws, under core/, but is a
 # library of its own (pupitre_plot in CMakeLists.txt) that the interpreter and
 # the rest of the core never link: the one file allowed to include Cairo.
@@ -48,6 +76,8 @@ def product_files(root):
 def violations(root):
     found = []
     for rel, path in product_files(root):
+        if rel.startswith("core/") and core_folder(rel) not in CORE_ORDER:
+            found.append(f"{rel}: core/{core_folder(rel)}/ has no place in CORE_ORDER (layering.py)")
         text = open(path, encoding="utf-8", errors="replace").read()
         for m in INCLUDE.finditer(text):
             header = m.group(1)
@@ -57,6 +87,9 @@ def violations(root):
                     continue
                 if re.search(banned, header) and (rel, why) not in EXCEPTIONS:
                     found.append(f"{rel}:{line}: includes {header}: {why}")
+            why = core_order(rel, header)
+            if why:
+                found.append(f"{rel}:{line}: includes {header}: {why}")
     return found
 
 
@@ -84,6 +117,10 @@ def selftest():
         "pages/screen.cpp": '#include "console/keys.hpp"\n',
         "console/session.cpp": "#include <sqlite3.h>\n",
         "console/app.cpp": '#  include "store/sql.hpp"\n',
+        "core/geometry/frames.hpp": '#include "core/interp/machine.hpp"\n',
+        "core/workshop/setup.cpp": '#include "core/sim/sim.hpp"\n',
+        "core/diag.cpp": '#include "core/parse/program.hpp"\n',
+        "core/spare/new.hpp": '#include "core/diag.hpp"\n',
     }
     good = {
         "store/sql.hpp": "#include <sqlite3.h>\n",
@@ -93,6 +130,9 @@ def selftest():
         "console/main.cpp": '#include "core/sim/sim.hpp"\n#include "pages/pages.hpp"\n',
         "pages/page_help.cpp": '#include "core/parse/codes.hpp"\n#include "pages/view.hpp"\n',
         "tests/store/anomalies.cpp": "#include <sqlite3.h>\n",
+        "core/sim/sim.hpp": '#include "core/workshop/workshop.hpp"\n#include "core/diag.hpp"\n',
+        "core/training/grade.cpp": '#include "core/interp/interp.hpp"\n#include "core/training/grade.hpp"\n',
+        "core/i18n.cpp": '#include "core/i18n.hpp"\n',
     }
     with tempfile.TemporaryDirectory() as root:
         for rel, text in {**bad, **good}.items():
@@ -118,4 +158,5 @@ if __name__ == "__main__":
         print("\n".join(problems))
         sys.exit(1)
     n = sum(1 for _ in product_files(root))
-    print(f"{n} files of core/, pages/ and console/ include across layers only downwards")
+    print(f"{n} files of core/, pages/ and console/ include across layers only downwards, "
+          f"and core's folders in their order")
