@@ -1720,6 +1720,31 @@ TEST(G63, GeneratedProfilesNeverEnterThePart) {
         Oracle o(f, {tool}, V2(0, 0));
         o.er = a.er;
         if (check_out_of_part(o, p.part(-20), tool, mv, name)) ++failing;
+        // Issue 39 item 5: with no groove, every wall, land and cone is left
+        // at ER by the last pass along the profile plus ER: each point at ER
+        // from the profile on the material's side, away from its corners and
+        // its ends, lies on a feed move.
+        if (shape == 0 && a.er > 0) {
+            const std::vector<V2> part = p.part(-20);
+            const std::vector<Seg> fs = feeds(tool, mv);
+            int left = 0;
+            for (const Elem& e : f.elems) {
+                if (e.arc) continue;
+                const V2 t = (e.b - e.a).normalized(), nrm(-t.y(), t.x());
+                for (int k = 1; k < 10; ++k) {
+                    const V2 on = e.a + (e.b - e.a) * (k / 10.0);
+                    if ((on - e.a).norm() < a.er + .1 || (on - e.b).norm() < a.er + .1) continue;
+                    V2 q = on + a.er * nrm;
+                    if (in_polygon(part, q)) q = on - a.er * nrm;
+                    double best = 1e300;
+                    for (const Seg& sg : fs) best = std::min(best, seg_point(q, sg.a, sg.b));
+                    if (best > 1e-3 && ++left <= 2)
+                        ADD_FAILURE() << name << ": the profile at " << on.transpose()
+                                      << " is left " << best << " above ER";
+                }
+            }
+            failing += left > 0;
+        }
         for (const Seg& s : feeds(tool, mv)) {
             entered += s.infeed;
             V2 lv = map.dir(V2(0, 1));
