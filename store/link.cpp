@@ -6,26 +6,16 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/interp/value_name.hpp"
 #include "store/text.hpp"
 
 namespace pupitre::store {
 
 namespace {
 
-// Corrector fields by E family (E50xxx … E55xxx), as Interpreter::write_e maps them.
-constexpr const char* kLatheFields[] = {"X", "Z", "R", "DX", "DZ", "C"};
-constexpr const char* kMillFields[] = {"L", "A", "R", "DL", "DR", "C"};
-constexpr const char* kOrigins[] = {"PREF", "DEC1", nullptr, nullptr, "DEC3"};  // E6x000, 001, 004
-
 bool is_origin(std::string_view name) {
     return name.substr(0, 5) == "PREF." || name.substr(0, 5) == "DEC1." ||
            name.substr(0, 5) == "DEC3.";
-}
-
-bool rotary_name(std::string_view name) {
-    if (!is_origin(name)) return false;  // correctors are lengths
-    char axis = name.back();
-    return axis == 'A' || axis == 'B' || axis == 'C';
 }
 
 }  // namespace
@@ -73,27 +63,13 @@ Result<std::map<std::string, int64_t>> seed_machine(Store& s, Interpreter& in,
             std::from_chars(head.data() + 1, head.data() + head.size(), d);
             if (d < 1 || d > m.correctors) continue;
             Corrector& c = in.corrector(d);
-            double* f = nullptr;
-            if (m.lathe)
-                f = field == "X"    ? &c.x
-                    : field == "Z"  ? &c.z
-                    : field == "R"  ? &c.r
-                    : field == "DX" ? &c.dx
-                    : field == "DZ" ? &c.dz
-                                    : nullptr;
+            // A field of the other kind of machine is skipped.
+            const CorrField* f = corr_field(field, m.lathe);
+            if (!f || !f->stored) continue;
+            if (f->member)
+                c.*f->member = double(v) / 1000.0;
             else
-                f = field == "L"    ? &c.l
-                    : field == "A"  ? &c.tip
-                    : field == "R"  ? &c.r
-                    : field == "DL" ? &c.dl
-                    : field == "DR" ? &c.dr
-                                    : nullptr;
-            if (field == "C")
                 c.c = int(v);
-            else if (f)
-                *f = double(v) / 1000.0;
-            else
-                continue;  // a field of the other kind of machine
         } else {
             int axis = axis_of(field.empty() ? '?' : field[0]);
             if (!m.has(axis)) continue;
@@ -111,12 +87,14 @@ std::vector<std::pair<std::string, int64_t>> persistent_writes(const Interpreter
     for (const auto& [n, v] : in.e_written()) {
         int k = n % 1000, fam = (n / 1000) % 10;
         if (n >= 50000 && n < 56000 && k >= 1 && k <= 255) {
-            const char* f = (m.lathe ? kLatheFields : kMillFields)[fam];
-            out.emplace_back("D" + std::to_string(k) + "." + f, v);
+            // Corrector fields by E family (E50xxx … E55xxx), as write_e maps them.
+            ValueName name{ValueName::Kind::corrector, k, corr_field_of_e(fam, m.lathe)};
+            out.emplace_back(format_value_name(name), v);
         } else if (n >= 60000 && n < 69000 && (k == 0 || k == 1 || k == 4)) {
             int axis = fam;  // E6x…: x is the axis
             if (!m.has(axis)) continue;
-            out.emplace_back(std::string(kOrigins[k]) + "." + kAxisNames[size_t(axis)], v);
+            ValueName name{ValueName::Kind::origin, k == 4 ? 2 : k, nullptr, axis};
+            out.emplace_back(format_value_name(name), v);  // E6x000, 001, 004
         }
     }
     return out;
@@ -130,16 +108,16 @@ Result<std::vector<Change>> persist_run(Store& s, const Interpreter& in, std::st
 }
 
 int64_t internal_value(std::string_view name, double v) {
-    if (!is_origin(name) && name.size() > 2 && name.substr(name.size() - 2) == ".C")
-        return int64_t(v);
-    return int64_t(std::llround(v * (rotary_name(name) ? 1e4 : 1e3)));
+    const ValueUnit u = value_unit(name);
+    if (u == ValueUnit::whole) return int64_t(v);
+    return int64_t(std::llround(v * (u == ValueUnit::angle ? 1e4 : 1e3)));
 }
 
 std::string format_value(std::string_view name, int64_t v) {
-    if (!is_origin(name) && name.size() >= 2 && name.substr(name.size() - 2) == ".C")
-        return std::to_string(v);
+    const ValueUnit u = value_unit(name);
+    if (u == ValueUnit::whole) return std::to_string(v);
     char buf[48];
-    if (rotary_name(name))
+    if (u == ValueUnit::angle)
         std::snprintf(buf, sizeof buf, "%.4f", double(v) / 1e4);
     else
         std::snprintf(buf, sizeof buf, "%.3f", double(v) / 1000.0);

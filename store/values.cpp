@@ -5,6 +5,7 @@
 #include <charconv>
 
 #include "core/i18n.hpp"
+#include "core/interp/value_name.hpp"
 #include "store/sql.hpp"
 #include "store/store.hpp"
 
@@ -12,35 +13,28 @@ namespace pupitre::store {
 
 namespace {
 
-// "D12.DX" -> corrector 12, field DX; "PREF.Z" -> origin PREF, axis Z.
-struct Name {
+// "D12.DX" -> corrector 12, field DX; "PREF.Z" -> origin PREF, axis Z: the
+// columns of a row of correctors or origins.
+struct StoredName {
     bool corrector = false;
     int d = 0;
     std::string field;  // corrector field, or origin kind
     std::string axis;
 };
 
-bool parse_name(std::string_view s, Name& n) {
-    size_t dot = s.find('.');
-    if (dot == std::string_view::npos) return false;
-    std::string_view head = s.substr(0, dot), tail = s.substr(dot + 1);
-    if (head == "PREF" || head == "DEC1" || head == "DEC3") {
-        if (tail.size() != 1 ||
-            std::string_view("XYZUVWABC").find(tail[0]) == std::string_view::npos)
-            return false;
-        n.corrector = false;
-        n.field = std::string(head);
-        n.axis = std::string(tail);
-        return true;
+bool parse_name(std::string_view s, StoredName& n) {
+    ValueName v;
+    if (!parse_value_name(s, v)) return false;
+    n.corrector = v.kind == ValueName::Kind::corrector;
+    if (n.corrector) {
+        n.d = v.number;
+        n.field = std::string(v.field->text);
+    } else if (v.kind == ValueName::Kind::origin) {
+        n.field = std::string(kOriginNames[v.number]);
+        n.axis = std::string(1, kAxisNames[size_t(v.axis)]);
+    } else {
+        return false;  // L and E parameters are no rows
     }
-    if (head.size() < 2 || head[0] != 'D') return false;
-    auto [p, ec] = std::from_chars(head.data() + 1, head.data() + head.size(), n.d);
-    if (ec != std::errc() || p != head.data() + head.size() || n.d < 1 || n.d > 255) return false;
-    static constexpr std::string_view kFields[] = {"X",  "Z", "R", "C",  "DX",
-                                                   "DZ", "L", "A", "DL", "DR"};
-    if (std::find(std::begin(kFields), std::end(kFields), tail) == std::end(kFields)) return false;
-    n.corrector = true;
-    n.field = std::string(tail);
     return true;
 }
 
@@ -120,7 +114,7 @@ Result<std::vector<Change>> Store::set_values(std::string_view machine,
                                               const std::vector<std::pair<std::string, int64_t>>& v,
                                               std::string_view source, std::string_view profile) {
     Result<std::vector<Change>> r;
-    std::vector<Name> names(v.size());
+    std::vector<StoredName> names(v.size());
     for (size_t i = 0; i < v.size(); ++i)
         if (!parse_name(v[i].first, names[i])) {
             r.error = {Fault::bad_data,
@@ -156,7 +150,7 @@ Result<std::vector<Change>> Store::set_values(std::string_view machine,
         if (int rc = u.step(); rc != SQLITE_DONE) return abort(fail(rc, what));
     }
     for (size_t i = 0; i < v.size(); ++i) {
-        const Name& n = names[i];
+        const StoredName& n = names[i];
         Change c{v[i].first, std::nullopt, v[i].second};
         {
             sql::Use u(prepare(
