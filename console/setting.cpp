@@ -12,6 +12,7 @@
 
 #include "console/session.hpp"
 #include "core/i18n.hpp"
+#include "core/interp/value_name.hpp"
 #include "core/sha256.hpp"
 #include "store/link.hpp"
 #include "store/store.hpp"
@@ -65,12 +66,15 @@ bool looks_like_block(std::string_view t) {
     return address(rest.substr(0, rest.find(' ')));
 }
 
-// The field of a corrector a setting names ("D3.X" -> "X"), or "".
-std::string corrector_field(const std::string& name) {
+// The field of a corrector a setting names ("D3.X" -> X), of either machine,
+// or nullptr. The corrector's number is Interpreter::set's to refuse, with
+// its message.
+const CorrField* corrector_field(const std::string& name) {
     if (name.size() < 3 || name[0] != 'D' || !std::isdigit(static_cast<unsigned char>(name[1])))
-        return {};
+        return nullptr;
     size_t dot = name.find('.');
-    return dot == std::string::npos ? std::string() : name.substr(dot + 1);
+    return dot == std::string::npos ? nullptr
+                                    : any_corr_field(std::string_view(name).substr(dot + 1));
 }
 
 }  // namespace
@@ -100,7 +104,8 @@ bool Session::apply_setting(const std::string& name, double value, const std::st
         say(strf(tr("%s: the nose orientation is a code from 0 to 8"), name.c_str()), true);
         return false;
     }
-    if (corrector_field(name) == "R" && value < 0) {
+    const CorrField* field = corrector_field(name);
+    if (field && field->text == "R" && value < 0) {
         say(strf(tr("%s: a tool or nose radius is never negative (its wear goes in %s)"),
                  name.c_str(), m_.lathe ? "DX/DZ" : "DR"),
             true);
@@ -159,10 +164,11 @@ static std::string at_rest(const Sim& s) {
 // A gauge longer than the axis travel cannot be a tool's: the question to ask
 // first, or "".
 std::string Session::implausible_gauge(const std::string& name, double value) const {
-    std::string field = corrector_field(name);
-    int axis = field == "X" || field == "DX"   ? X
-               : field == "Z" || field == "DZ" ? Z
-               : field == "L" || field == "DL" ? sim_->interp().modal().tool_axis
+    const CorrField* field = corrector_field(name);
+    const GaugeAxis gauge = field ? field->gauge : GaugeAxis::none;
+    int axis = gauge == GaugeAxis::x           ? X
+               : gauge == GaugeAxis::z         ? Z
+               : gauge == GaugeAxis::tool_axis ? sim_->interp().modal().tool_axis
                                                : -1;
     if (axis < 0 || !m_.has(axis)) return {};
     const AxisConfig& ax = m_.axes[size_t(axis)];

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "core/interp/value_name.hpp"
 #include "pages/pages.hpp"
 
 namespace pupitre::pages {
@@ -20,16 +21,13 @@ std::string num(double v, int decimals = 3) {
 }
 
 // A gauge of the active corrector not yet applied on its axis.
-bool pending(const Sim& s, bool active, const std::string& field, double val) {
+bool pending(const Sim& s, bool active, const CorrField& field, double val) {
     const Interpreter& in = s.interp();
-    const MachineProfile& m = s.machine();
     return active && s.in_cycle() &&
-           ((m.lathe && ((field == "X" || field == "DX")   ? in.gauge_pending(X)
-                         : (field == "Z" || field == "DZ") ? in.gauge_pending(Z)
-                                                           : false)) ||
-            (!m.lathe && (field == "L" || field == "DL") &&
-             in.gauge_pending(in.modal().tool_axis)) ||
-            (field == "R" && in.comp_active() && std::abs(in.comp_radius() - val) > 1e-9));
+           ((field.gauge == GaugeAxis::x && in.gauge_pending(X)) ||
+            (field.gauge == GaugeAxis::z && in.gauge_pending(Z)) ||
+            (field.gauge == GaugeAxis::tool_axis && in.gauge_pending(in.modal().tool_axis)) ||
+            (field.text == "R" && in.comp_active() && std::abs(in.comp_radius() - val) > 1e-9));
 }
 
 // How a corrector is measured on a known surface: the Cazeneuve's (and any
@@ -80,28 +78,28 @@ void page_corr(const View& v, Canvas& c, const Rect& r) {
                           : tr("CORR  tool correctors"));
     // The Cazeneuve's correctors have no orientation: its gauges pilot the
     // nose centre (003:1912).
-    std::vector<std::string> fields =
-        is_caz(m) ? std::vector<std::string>{"X", "Z", "R", "DX", "DZ"}
-        : m.lathe ? std::vector<std::string>{"X", "Z", "R", "C", "DX", "DZ"}
-                  : std::vector<std::string>{"L", "R", "DL", "DR"};
+    std::vector<const CorrField*> fields;
+    for (const CorrField& f : corr_fields())
+        if (f.lathe == m.lathe && f.shown && !(is_caz(m) && f.unit == ValueUnit::whole))
+            fields.push_back(&f);
     int y = r.y + 1;
     c.text(2, y, "D", Style::dim);
     for (size_t i = 0; i < fields.size(); ++i)
-        c.text_right(6 + int(i) * 10, y, 10, fields[i], Style::title);
+        c.text_right(6 + int(i) * 10, y, 10, std::string(fields[i]->text), Style::title);
     ++y;
     int rows = r.h - 6 - (v.last_setting.empty() ? 0 : 1);
     int active = s.corrector();
     int first = std::clamp(v.corr_cursor - rows / 2, 1, std::max(1, m.correctors - rows + 1));
     for (int i = 0; i < rows && first + i <= m.correctors; ++i) {
         int d = first + i;
-        std::string dn = "D" + std::to_string(d);
         bool cur = d == v.corr_cursor;
         c.text(2, y + i, std::to_string(d), cur ? Style::select : Style::dim);
         for (size_t k = 0; k < fields.size(); ++k) {
             double val = 0;
-            in.get(dn + "." + fields[k], val);
-            bool star = pending(s, d == active, fields[k], val);
-            std::string t = fields[k] == "C" ? std::to_string(int(val)) : num(val);
+            in.get(format_value_name({ValueName::Kind::corrector, d, fields[k]}), val);
+            bool star = pending(s, d == active, *fields[k], val);
+            std::string t =
+                fields[k]->unit == ValueUnit::whole ? std::to_string(int(val)) : num(val);
             c.text_right(6 + int(k) * 10, y + i, 10, t + (star ? "*" : " "),
                          star       ? Style::warn
                          : val != 0 ? Style::value

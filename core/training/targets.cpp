@@ -3,38 +3,35 @@
 // with its arithmetic for the report (seed 004:552-580: the setting is the
 // identification of the constants of the machine's equation).
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include <charconv>
-
 #include "core/i18n.hpp"
+#include "core/interp/value_name.hpp"
 #include "core/training/exercise.hpp"
 
 namespace pupitre::training {
 
 namespace {
 
-struct Name {
+// A value a student must find, as the truth's arithmetic reads it.
+struct Sought {
     enum Kind { pref, dec1, corr } kind = pref;
     char axis = 0;      // PREF and DEC1
     int d = 0;          // Dn
     std::string field;  // X, Z, R, DX, DZ, L, DL, DR
 };
 
-bool split(std::string_view text, Name& n) {
-    size_t dot = text.find('.');
-    if (dot == std::string_view::npos) return false;
-    std::string_view head = text.substr(0, dot), tail = text.substr(dot + 1);
-    if (head == "PREF" || head == "DEC1") {
-        n.kind = head == "PREF" ? Name::pref : Name::dec1;
-        if (tail.size() != 1) return false;
-        n.axis = tail[0];
+// PREF and DEC1 on an axis, D1 to D99 on a field of either machine.
+bool split(std::string_view text, Sought& n) {
+    ValueName v;
+    if (!parse_value_name(text, v)) return false;
+    if (v.kind == ValueName::Kind::origin && v.number < 2) {
+        n.kind = v.number == 0 ? Sought::pref : Sought::dec1;
+        n.axis = kAxisNames[size_t(v.axis)];
         return true;
     }
-    if (head.size() < 2 || head[0] != 'D') return false;
-    auto r = std::from_chars(head.data() + 1, head.data() + head.size(), n.d);
-    if (r.ec != std::errc() || r.ptr != head.data() + head.size() || n.d < 1 || n.d > 99)
-        return false;
-    n.kind = Name::corr;
-    n.field = std::string(tail);
+    if (v.kind != ValueName::Kind::corrector || v.number > 99) return false;
+    n.kind = Sought::corr;
+    n.d = v.number;
+    n.field = std::string(v.field->text);
     return true;
 }
 
@@ -45,17 +42,17 @@ std::string mm(double v) {
 // The lathe's origins: the spindle axis for X; for Z the part's face (origin
 // = face) or the jaws' face with DEC1 Z the stick-out (origin = jaws, as
 // seed 004's exam sets it: PREF on the work-holder, DEC1 to the part).
-bool lathe_origin(const Exercise& e, const workshop::LatheSetup& l, const Name& n, double& v,
+bool lathe_origin(const Exercise& e, const workshop::LatheSetup& l, const Sought& n, double& v,
                   std::string* how) {
     const bool jaws = e.origin == "jaws";
     std::string text;
     if (n.axis == 'X') {
-        v = n.kind == Name::pref ? l.axis_x : 0;
-        text = n.kind == Name::pref
+        v = n.kind == Sought::pref ? l.axis_x : 0;
+        text = n.kind == Sought::pref
                    ? strf(tr("PREF X = the spindle axis, as a tool point reads it = %s"),
                           mm(v).c_str())
                    : std::string(tr("DEC1 X = 0: the program's origin is on the axis"));
-    } else if (n.axis == 'Z' && n.kind == Name::pref) {
+    } else if (n.axis == 'Z' && n.kind == Sought::pref) {
         v = jaws ? l.chuck_z : l.chuck_z + l.stickout;
         text = jaws ? strf(tr("PREF Z = the jaws' face = %s"), mm(v).c_str())
                     : strf(tr("PREF Z = the jaws' face + the stick-out = %s + %s = %s"),
@@ -72,11 +69,11 @@ bool lathe_origin(const Exercise& e, const workshop::LatheSetup& l, const Name& 
     return true;
 }
 
-bool mill_origin(const Exercise& e, const workshop::MillSetup& m, const Name& n, double& v,
+bool mill_origin(const Exercise& e, const workshop::MillSetup& m, const Sought& n, double& v,
                  std::string* how) {
     const bool centre = e.origin == "centre";
     std::string text;
-    if (n.kind == Name::dec1) {
+    if (n.kind == Sought::dec1) {
         if (n.axis != 'X' && n.axis != 'Y' && n.axis != 'Z') return false;
         v = 0;
         text = strf(tr("DEC1 %c = 0: PREF is the program's origin"), n.axis);
@@ -101,7 +98,7 @@ bool mill_origin(const Exercise& e, const workshop::MillSetup& m, const Name& n,
 
 // A corrector's true value: the tool's gauge, radius or length; a wear
 // field (DX…) what brings the given gauge to the truth.
-bool corrector(const Exercise& e, const workshop::Setup& setup, const Name& n, double& v,
+bool corrector(const Exercise& e, const workshop::Setup& setup, const Sought& n, double& v,
                std::string* how) {
     const workshop::ToolTruth* t = setup.tool(n.d);
     if (!t) return false;
@@ -147,28 +144,21 @@ bool corrector(const Exercise& e, const workshop::Setup& setup, const Name& n, d
 }  // namespace
 
 bool target_name(std::string_view name, bool lathe) {
-    Name n;
+    Sought n;
     if (!split(name, n)) return false;
-    if (n.kind != Name::corr)
+    if (n.kind != Sought::corr)
         return lathe ? n.axis == 'X' || n.axis == 'Z'
                      : n.axis == 'X' || n.axis == 'Y' || n.axis == 'Z';
-    static constexpr std::string_view kLathe[] = {"X", "Z", "R", "DX", "DZ"};
-    static constexpr std::string_view kMill[] = {"L", "R", "DL", "DR"};
-    if (lathe) {
-        for (std::string_view f : kLathe)
-            if (n.field == f) return true;
-    } else {
-        for (std::string_view f : kMill)
-            if (n.field == f) return true;
-    }
-    return false;
+    // The CORR page's columns, but the orientation: a code, not a measure.
+    const CorrField* f = corr_field(n.field, lathe);
+    return f && f->shown && f->unit != ValueUnit::whole;
 }
 
 bool expected(const Exercise& e, const workshop::Setup& truth, const std::string& name, double& v,
               std::string* how) {
-    Name n;
+    Sought n;
     if (!split(name, n) || !target_name(name, truth.kind == "lathe")) return false;
-    if (n.kind == Name::corr) return corrector(e, truth, n, v, how);
+    if (n.kind == Sought::corr) return corrector(e, truth, n, v, how);
     return truth.kind == "lathe" ? lathe_origin(e, truth.lathe, n, v, how)
                                  : mill_origin(e, truth.mill, n, v, how);
 }
