@@ -2,7 +2,6 @@
 // audit row per change, settings, and the IMD history.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <algorithm>
-#include <charconv>
 
 #include "core/i18n.hpp"
 #include "core/interp/value_name.hpp"
