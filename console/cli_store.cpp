@@ -18,7 +18,7 @@ namespace pupitre::cli {
 using store::Fault;
 using store::Store;
 
-int report(const store::Error& e) {
+int report(const store::StoreError& e) {
     // TRANSLATORS: any message, after the program's name.
     std::fprintf(stderr, tr("pupitre: %s\n"), e.message.c_str());
     return store::exit_code(e.fault);

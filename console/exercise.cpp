@@ -124,7 +124,7 @@ std::string store_class_key(store::Store& st, bool create, std::string& key) {
     if (id.error) return id.error.message;
     if (std::string why = class_key(create && !id.value, key); !why.empty()) return why;
     if (!id.value) {
-        if (store::Error e = st.set_setting(kKeyIdSetting, key_id(key))) return e.message;
+        if (store::StoreError e = st.set_setting(kKeyIdSetting, key_id(key))) return e.message;
         return {};
     }
     if (*id.value != key_id(key))
