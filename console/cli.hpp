@@ -12,7 +12,7 @@ struct Diag;
 class Interpreter;
 namespace store {
 class Store;
-struct Error;
+struct StoreError;
 }  // namespace store
 namespace workshop {
 struct Setup;
@@ -87,7 +87,7 @@ struct StoreArgs {
 };
 
 // Prints a store's error; its exit code.
-int report(const store::Error& e);
+int report(const store::StoreError& e);
 // The store named by --db, or the default one (its directory made if needed).
 int open_store(const std::string& db, std::unique_ptr<store::Store>& out);
 

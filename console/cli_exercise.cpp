@@ -104,7 +104,7 @@ int exercise_add(const ExerciseArgs& a) {
     }
     std::unique_ptr<store::Store> st;
     if (int rc = open_store(a.db, st)) return rc;
-    if (store::Error err = st->put_exercise(e.name, text)) return report(err);
+    if (store::StoreError err = st->put_exercise(e.name, text)) return report(err);
     std::printf(tr("exercise %s stored: pupitre exercise %s starts it\n"), e.name.c_str(),
                 e.name.c_str());
     return kOk;

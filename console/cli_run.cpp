@@ -273,7 +273,7 @@ int run(const RunArgs& a) {
     print_summary(a, in, shop.get(), crashes, asked);
     std::fflush(stdout);
     if (shop && !a.part_out.empty())
-        if (std::string why; int rc = write_part(a.part_out, *shop, a.files.front(), why)) {
+        if (auto [rc, why] = write_part(a.part_out, *shop, a.files.front()); rc != 0) {
             std::fprintf(stderr, tr("pupitre: %s\n"), why.c_str());
             return rc;
         }

@@ -7,6 +7,7 @@
 #include <ctime>
 
 #include "console/cli.hpp"
+#include "console/refusal.hpp"
 #include "core/i18n.hpp"
 #include "core/interp/interp.hpp"
 #include "store/link.hpp"
@@ -18,7 +19,7 @@ namespace pupitre::cli {
 using store::Fault;
 using store::Store;
 
-int report(const store::Error& e) {
+int report(const store::StoreError& e) {
     // TRANSLATORS: any message, after the program's name.
     std::fprintf(stderr, tr("pupitre: %s\n"), e.message.c_str());
     return store::exit_code(e.fault);
@@ -102,21 +103,22 @@ const char* kind_label(store::RevisionKind k) {
     return tr("save");
 }
 
-bool read_file(const std::string& path, std::string& text, std::string& why) {
+// The file's bytes, or why they could not be read (then what was read before the error).
+Answer<std::string> read_file(const std::string& path) {
+    Answer<std::string> r;
     std::FILE* f = std::fopen(path.c_str(), "rb");
     if (!f) {
-        why = std::strerror(errno);
-        return false;
+        r.why = std::strerror(errno);
+        return r;
     }
-    text.clear();
     char buf[1 << 16];
     size_t n;
-    while ((n = std::fread(buf, 1, sizeof buf, f)) > 0) text.append(buf, n);
+    while ((n = std::fread(buf, 1, sizeof buf, f)) > 0) r.value.append(buf, n);
     bool ok = !std::ferror(f);
     int err = errno;  // a directory: EISDIR
     std::fclose(f);
-    if (!ok) why = std::strerror(err);
-    return ok;
+    if (!ok) r.why = std::strerror(err);
+    return r;
 }
 
 void say_saved(const store::SaveResult& r, const std::string& from) {
@@ -163,8 +165,8 @@ int store_import(const StoreArgs& a) {
         return kUsage;
     }
     for (const auto& f : a.files) {
-        std::string text, why;
-        if (!read_file(f, text, why)) {
+        auto [text, why] = read_file(f);
+        if (!why.empty()) {
             std::fprintf(stderr, tr("pupitre: %s: cannot read: %s\n"), f.c_str(), why.c_str());
             return kNoInput;
         }
@@ -326,8 +328,7 @@ int RunStore::persist(const Interpreter& in, const std::string& file,
     std::string profile;
     MachineProfile builtin;
     if (!builtin_machine(machine_arg, builtin)) {
-        std::string why;
-        read_file(machine_arg, profile, why);  // a .machine file: kept with the values
+        profile = read_file(machine_arg).value;  // a .machine file: kept with the values
     }
     std::string source = "program %" + std::to_string(in.main_program()) + " (" + file + ")";
     auto r = store::persist_run(*s_, in, source, profile);

@@ -321,8 +321,8 @@ Effect gauge(Session& s, const CommandCall& c) {
 
 // ":part export FILE": the part as write_part writes it (workshop_io.hpp).
 Effect export_part(Session& s, const workshop::Workshop& w, std::string_view file) {
-    std::string path(file), why;
-    if (write_part(path, w, w.setup().name, why) != 0)
+    std::string path(file);
+    if (auto [rc, why] = write_part(path, w, w.setup().name); rc != 0)
         s.say(why, true);
     else
         s.say(strf(tr("the part written to %s"), path.c_str()));

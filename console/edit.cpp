@@ -129,12 +129,12 @@ Effect Session::edit_save(bool force) {
             true);
         return Effect::redraw;
     }
-    Diag d;
-    if (!editor.check(d) && !force) {
-        std::string at = strf(tr("line %d"), d.line) + (d.n >= 0 ? " N" + std::to_string(d.n) : "");
+    if (std::optional<Diag> d = editor.check(); d && !force) {
+        std::string at =
+            strf(tr("line %d"), d->line) + (d->n >= 0 ? " N" + std::to_string(d->n) : "");
         // TRANSLATORS: "line 12 N40: error 107: the detail (not saved; ...)".
-        say(strf(tr("%s: error %d: %s (not saved; :save! forces)"), at.c_str(), d.code,
-                 d.detail.c_str()),
+        say(strf(tr("%s: error %d: %s (not saved; :save! forces)"), at.c_str(), d->code,
+                 d->detail.c_str()),
             true);
         return Effect::redraw;
     }
@@ -286,12 +286,13 @@ bool Session::modif_apply() {
         return true;
     }
     std::string text = editor.text();
-    Diag d;
-    if (!editor.check(d)) {
+    if (std::optional<Diag> bad = editor.check()) {
         modif = true;
-        say(strf(tr("MODIF: line %d: error %d: %s"), d.line, d.code, d.detail.c_str()), true);
+        say(strf(tr("MODIF: line %d: error %d: %s"), bad->line, bad->code, bad->detail.c_str()),
+            true);
         return false;
     }
+    Diag d;
     if (!mem_.replace(editor.number, "store:%" + std::to_string(editor.number), text, d)) {
         modif = true;
         say("MODIF: " + d.detail, true);

@@ -235,23 +235,23 @@ int Editor::renumber(long start, long step) {
     return count;
 }
 
-bool Editor::check(Diag& d) {
+std::optional<Diag> Editor::check() {
     Block b;
     for (size_t i = 0; i < lines_.size(); ++i) {
         const std::string& l = lines_[i];
         if (!l.empty() && l[0] == '%') continue;
         Error e;
         if (!parse_block(l, b, e)) {
-            d = diag_of(e);
+            Diag d = diag_of(e);
             d.line = int(i) + 1;
             d.n = line_label(l);
             error_line = int(i);
             cursor = int(i);
-            return false;
+            return d;
         }
     }
     error_line = -1;
-    return true;
+    return std::nullopt;
 }
 
 }  // namespace pupitre::console

@@ -5,6 +5,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -48,9 +49,9 @@ class Editor {
     // Renumbers the N labels from `start` by `step` and rewrites the labels
     // that G77 and G79 blocks name. Returns how many blocks were renumbered.
     int renumber(long start, long step);
-    // The first block that does not parse: false with `d` and error_line set,
-    // the cursor on it.
-    bool check(Diag& d);
+    // The first block that does not parse, error_line set and the cursor on
+    // it; none when every block parses.
+    std::optional<Diag> check();
 
   private:
     // Why a range of lines starting at `first` may not be changed, or "" when

@@ -15,6 +15,7 @@
 #include <sstream>
 #include <string_view>
 
+#include "console/refusal.hpp"
 #include "console/session.hpp"
 #include "core/i18n.hpp"
 #include "core/sha256.hpp"
@@ -43,16 +44,17 @@ std::string to_hex(std::string_view bytes) {
     return out;
 }
 
-std::string random_hex(std::string& why) {
+// 32 random bytes as hex, or why /dev/urandom gave none.
+Answer<std::string> random_hex() {
     unsigned char b[32];
     int fd = open("/dev/urandom", O_RDONLY | O_CLOEXEC);
     if (fd < 0 || read(fd, b, sizeof b) != ssize_t(sizeof b)) {
-        why = strf(tr("cannot read /dev/urandom: %s"), std::strerror(errno));
+        Answer<std::string> no{{}, strf(tr("cannot read /dev/urandom: %s"), std::strerror(errno))};
         if (fd >= 0) close(fd);
-        return {};
+        return no;
     }
     close(fd);
-    return to_hex(std::string_view(reinterpret_cast<const char*>(b), sizeof b));
+    return {to_hex(std::string_view(reinterpret_cast<const char*>(b), sizeof b)), {}};
 }
 
 // A keystream from SHA-256 of the seed and a counter, XORed in, as hex.
@@ -95,8 +97,7 @@ std::string class_key(bool create, std::string& key) {
     if (!create)
         return strf(tr("no class key at %s: the teacher's key is needed (PUPITRE_CLASS_KEY)"),
                     path.c_str());
-    std::string why;
-    std::string fresh = random_hex(why);
+    auto [fresh, why] = random_hex();
     if (fresh.empty()) return why;
     std::error_code ec;
     std::filesystem::create_directories(std::filesystem::path(path).parent_path(), ec);
@@ -124,7 +125,7 @@ std::string store_class_key(store::Store& st, bool create, std::string& key) {
     if (id.error) return id.error.message;
     if (std::string why = class_key(create && !id.value, key); !why.empty()) return why;
     if (!id.value) {
-        if (store::Error e = st.set_setting(kKeyIdSetting, key_id(key))) return e.message;
+        if (store::StoreError e = st.set_setting(kKeyIdSetting, key_id(key))) return e.message;
         return {};
     }
     if (*id.value != key_id(key))

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "console/refusal.hpp"
 #include "core/i18n.hpp"
 #include "core/output/cairo_plot.hpp"
 #include "core/output/height_png.hpp"
@@ -30,31 +31,26 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const PlotModule* open_file(const fs::path& file, std::string& why) {
+Answer<const PlotModule*> open_file(const fs::path& file) {
     void* h = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
-    if (!h) {
-        why = dlerror();
-        return nullptr;
-    }
+    if (!h) return {nullptr, dlerror()};
     using Entry = const PlotModule* (*)();
     auto entry = reinterpret_cast<Entry>(dlsym(h, PUPITRE_PLOT_ENTRY));
     if (!entry) {
-        why = dlerror();
+        Answer<const PlotModule*> no{nullptr, dlerror()};
         dlclose(h);
-        return nullptr;
+        return no;
     }
-    return entry();  // kept open: the writers live in it
+    return {entry(), {}};  // kept open: the writers live in it
 }
 
-const PlotModule* open_module(std::string& why) {
+Answer<const PlotModule*> open_module() {
     std::error_code ec;
     // PUPITRE_PLOT_MODULE: that file and no other (a package's own place).
     if (const char* file = std::getenv("PUPITRE_PLOT_MODULE"); file && *file) {
-        if (!fs::exists(file, ec)) {
-            why = strf(tr("%s not found (PUPITRE_PLOT_MODULE)"), file);
-            return nullptr;
-        }
-        return open_file(file, why);
+        if (!fs::exists(file, ec))
+            return {nullptr, strf(tr("%s not found (PUPITRE_PLOT_MODULE)"), file)};
+        return open_file(file);
     }
     const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
     std::vector<fs::path> dirs;
@@ -65,24 +61,26 @@ const PlotModule* open_module(std::string& why) {
     if (*PUPITRE_PLOT_BUILD_DIR) dirs.push_back(PUPITRE_PLOT_BUILD_DIR);
     for (const fs::path& d : dirs) {
         const fs::path file = d / PUPITRE_PLOT_FILE;
-        if (fs::exists(file, ec)) return open_file(file, why);
+        if (fs::exists(file, ec)) return open_file(file);
     }
-    why = strf(tr("%s not found next to the executable or in ../lib/pupitre"), PUPITRE_PLOT_FILE);
-    return nullptr;
+    return {nullptr, strf(tr("%s not found next to the executable or in ../lib/pupitre"),
+                          PUPITRE_PLOT_FILE)};
 }
 
-std::string why_not;  // why the module did not load
+// The module and why it did not load, opened once (the batch commands and the console's thread).
+const Answer<const PlotModule*>& loaded() {
+    static const Answer<const PlotModule*> a = open_module();
+    return a;
+}
 
-// The module, opened once (the batch commands and the console's thread).
 const PlotModule* module() {
-    static const PlotModule* const m = open_module(why_not);
-    return m;
+    return loaded().value;
 }
 
 }  // namespace
 
 std::string plot_module_error() {
-    return module() ? std::string() : why_not;
+    return module() ? std::string() : loaded().why;
 }
 
 bool write_png(const Scene& scene, int width, std::FILE* out) {

@@ -139,11 +139,11 @@ void Session::save_workshop() {
     if (w) workshop_saved_ = w->generation();
     if (!store_) return;
     // An exercise's: its name, never the setup; the part scrambled.
-    store::Error e = !w ? store_->put_workshop(store_key_, "", "")
-                     : exercise_
-                         ? store_->put_workshop(store_key_, "exercise " + exercise_->ex.name,
-                                                scramble(w->part_text(), exercise_->seed))
-                         : store_->put_workshop(store_key_, w->setup().source, w->part_text());
+    store::StoreError e = !w ? store_->put_workshop(store_key_, "", "")
+                          : exercise_
+                              ? store_->put_workshop(store_key_, "exercise " + exercise_->ex.name,
+                                                     scramble(w->part_text(), exercise_->seed))
+                              : store_->put_workshop(store_key_, w->setup().source, w->part_text());
     if (e) say(strf(tr("the workshop was not stored: %s"), e.message.c_str()), true);
 }
 

@@ -65,7 +65,7 @@ std::string Session::start_exercise(const training::Exercise& e, const std::stri
         x->attempt.student = student;
         x->attempt.machine = strf("%s#%s#%s#%lld", m_.name.c_str(), e.name.c_str(), student.c_str(),
                                   (long long)wall_ms());
-        if (store::Error err = store_->start_attempt(x->attempt)) return err.message;
+        if (store::StoreError err = store_->start_attempt(x->attempt)) return err.message;
         auto values = start_values(*x);
         if (!values.empty())
             if (auto r = store_->set_values(x->attempt.machine, values, "exercise " + e.name);
@@ -184,7 +184,7 @@ Effect Session::submit_exercise() {
     a.report.clear();
     for (const std::string& l : x.report) a.report += l + "\n";
     a.signature = sign_attempt(a, x.key);
-    if (store::Error e = store_->submit_attempt(a))
+    if (store::StoreError e = store_->submit_attempt(a))
         say(strf(tr("the grade was not stored: %s"), e.message.c_str()), true);
     else
         say(strf(tr("submitted: %d%%; the report is on the EXERCISE page"), a.score));

@@ -25,44 +25,34 @@ bool ends_with(const std::string& s, const char* tail) {
 }
 
 // Writes `text` to `path` ("-": stdout).
-int write_text(const std::string& path, const std::string& text, std::string& why) {
+Answer<int> write_text(const std::string& path, const std::string& text) {
     std::FILE* f = path == "-" ? stdout : std::fopen(path.c_str(), "w");
-    if (!f) {
-        why = strf(tr("cannot write %s"), path.c_str());
-        return 73;
-    }
+    if (!f) return {73, strf(tr("cannot write %s"), path.c_str())};
     bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
     ok = (f == stdout ? std::fflush(f) : std::fclose(f)) == 0 && ok;
-    if (!ok) why = strf(tr("cannot write %s"), path.c_str());
-    return ok ? 0 : 74;
+    if (!ok) return {74, strf(tr("cannot write %s"), path.c_str())};
+    return {};
 }
 
-int write_mill(const std::string& path, const workshop::MillWorld& m, const std::string& title,
-               std::string& why) {
-    if (!ends_with(path, ".png")) {
-        why = tr(kNotPng);
-        return 64;
-    }
+Answer<int> write_mill(const std::string& path, const workshop::MillWorld& m,
+                       const std::string& title) {
+    if (!ends_with(path, ".png")) return {64, tr(kNotPng)};
     double scale = 0;
     const std::vector<uint16_t> v = workshop::height_image(m, scale);
     std::FILE* f = std::fopen(path.c_str(), "wb");
-    if (!f) {
-        why = strf(tr("cannot write %s"), path.c_str());
-        return 73;
-    }
+    if (!f) return {73, strf(tr("cannot write %s"), path.c_str())};
     bool ok = write_gray16_png(v, m.nx(), m.ny(), f);
     ok = std::fclose(f) == 0 && ok;
     if (!ok) {
         std::remove(path.c_str());  // no half-written picture
         const std::string module = plot_module_error();
-        why = module.empty() ? strf(tr("cannot write %s"), path.c_str())
-                             : strf(tr("cannot write %s: %s"), path.c_str(), module.c_str());
-        return 74;
+        return {74, module.empty() ? strf(tr("cannot write %s"), path.c_str())
+                                   : strf(tr("cannot write %s: %s"), path.c_str(), module.c_str())};
     }
     const std::string json = path.substr(0, path.size() - 4) + ".json";
     const size_t slash = path.rfind('/');
     const std::string png = slash == std::string::npos ? path : path.substr(slash + 1);
-    return write_text(json, workshop::height_json(m, png, scale, title), why);
+    return write_text(json, workshop::height_json(m, png, scale, title));
 }
 
 }  // namespace
@@ -115,12 +105,12 @@ std::string part_name_problem(const std::string& path, const workshop::Setup& s)
     return tr(kNotPng);
 }
 
-int write_part(const std::string& path, const workshop::Workshop& w, const std::string& title,
-               std::string& why) {
-    if (const workshop::MillWorld* m = w.mill()) return write_mill(path, *m, title, why);
+Answer<int> write_part(const std::string& path, const workshop::Workshop& w,
+                       const std::string& title) {
+    if (const workshop::MillWorld* m = w.mill()) return write_mill(path, *m, title);
     const bool svg = ends_with(path, ".svg");
-    return write_text(
-        path, svg ? workshop::part_svg(w.world(), title) : workshop::part_zr(w.world()), why);
+    return write_text(path,
+                      svg ? workshop::part_svg(w.world(), title) : workshop::part_zr(w.world()));
 }
 
 }  // namespace pupitre

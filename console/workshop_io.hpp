@@ -4,6 +4,7 @@
 #pragma once
 #include <string>
 
+#include "console/refusal.hpp"
 #include "core/workshop/workshop.hpp"
 
 namespace pupitre {
@@ -16,11 +17,11 @@ std::string read_setup(const std::string& name, const MachineProfile& m, worksho
 // Lathe: an SVG drawing (FILE.svg) or the (Z, R) outline as text ("-": the
 // standard output). Machining centre: the height field as a 16-bit PNG
 // (FILE.png, required) and the JSON that says how to read it beside it
-// (FILE.json). Returns 0, or an exit status (64 a name the kind cannot
+// (FILE.json). Answers 0, or an exit status (64 a name the kind cannot
 // take, 73 a file that cannot be created, 74 a write error) with the
 // message in `why`.
-int write_part(const std::string& path, const workshop::Workshop& w, const std::string& title,
-               std::string& why);
+Answer<int> write_part(const std::string& path, const workshop::Workshop& w,
+                       const std::string& title);
 // What is wrong with `path` for the part of setup `s` ("" when nothing is or
 // when there is no path): a machining centre's part needs a FILE.png.
 std::string part_name_problem(const std::string& path, const workshop::Setup& s);

@@ -59,11 +59,11 @@ std::string pct(int n) {
 
 // A program is stored under its own number: not negative, and the same as the
 // one its % line gives, if any. `h` receives the text's header.
-Error check_number(const Piece& p, const std::string& path, Header& h) {
+StoreError check_number(const Piece& p, const std::string& path, Header& h) {
     if (p.number < 0)
         return {Fault::bad_data,
                 strf(tr("%s: program number %d is negative"), path.c_str(), p.number)};
-    if (Error e = parse_program(p.text, pct(p.number), h)) return e;
+    if (StoreError e = parse_program(p.text, pct(p.number), h)) return e;
     if (h.number >= 0 && h.number != p.number)
         return {
             Fault::bad_data,
@@ -121,9 +121,9 @@ struct Store::ProgramRow {
     std::string modified_by;
 };
 
-Error Store::read_row(int number, ProgramRow& row, const std::string& what) {
+StoreError Store::read_row(int number, ProgramRow& row, const std::string& what) {
     row = ProgramRow{};
-    Error e;
+    StoreError e;
     sql::Use u(prepare(kSelectRow, e));
     if (e) return e;
     int rc = u.bind(1, number).step();
@@ -140,10 +140,10 @@ Error Store::read_row(int number, ProgramRow& row, const std::string& what) {
 }
 
 // Appends revision `rev` of a program; a null text is a deletion.
-Error Store::insert_revision(int number, int rev, RevisionKind kind, int based_on, bool conflict,
-                             const std::string* text, const std::string& source,
-                             const std::string& what) {
-    Error e;
+StoreError Store::insert_revision(int number, int rev, RevisionKind kind, int based_on,
+                                  bool conflict, const std::string* text, const std::string& source,
+                                  const std::string& what) {
+    StoreError e;
     sql::Use u(prepare(kInsertRevision, e));
     if (e) return e;
     u.bind(1, number)
@@ -157,21 +157,21 @@ Error Store::insert_revision(int number, int rev, RevisionKind kind, int based_o
         u.null(6).bind(7, int64_t(0)).bind(8, int64_t(0));
     u.bind(9, user_).bind(10, now_ms()).bind(11, source);
     int rc = u.step();
-    return rc == SQLITE_DONE ? Error{} : fail(rc, what);
+    return rc == SQLITE_DONE ? StoreError{} : fail(rc, what);
 }
 
 // Runs a one-row statement on the programs table: bindings ?1 number, then `more`.
 template <class... T>
-Error Store::update_program(const char* sql, const std::string& what, int number,
-                            const T&... more) {
-    Error e;
+StoreError Store::update_program(const char* sql, const std::string& what, int number,
+                                 const T&... more) {
+    StoreError e;
     sql::Use u(prepare(sql, e));
     if (e) return e;
     u.bind(1, number);
     int i = 2;
     (bind_value(u, i++, more), ...);
     int rc = u.step();
-    return rc == SQLITE_DONE ? Error{} : fail(rc, what);
+    return rc == SQLITE_DONE ? StoreError{} : fail(rc, what);
 }
 
 // Inside a write transaction: one program saved (see store.hpp for the rules).
@@ -186,7 +186,7 @@ Result<SaveResult> Store::save_one(const Piece& p, int based_on, RevisionKind ki
     if ((r.error = read_row(p.number, row, what))) return r;
     bool same = false;
     if (row.found && !row.deleted && row.size == int64_t(p.text.size())) {
-        Error e;
+        StoreError e;
         sql::Use u(prepare(kSelectText, e));
         if ((r.error = e)) return r;
         int rc = u.bind(1, p.number).bind(2, row.head).step();
@@ -268,7 +268,7 @@ Result<SaveResult> Store::remove(int number, int based_on, std::string_view sour
     const std::string what = strf(tr("cannot delete %%%d"), number);
     if ((r.error = begin_write())) return r;
     ProgramRow row;
-    Error e = read_row(number, row, what);
+    StoreError e = read_row(number, row, what);
     if (!e && (!row.found || row.deleted))
         e = {Fault::not_found, strf(tr("%s: no program %%%d in the store"), path_.c_str(), number)};
     if (!e && based_on != kHead && based_on != row.head) {
@@ -302,7 +302,7 @@ Result<SaveResult> Store::restore(int number, int revision, std::string_view sou
     r.value.number = number;
     const std::string what = strf(tr("cannot restore %%%d"), number);
     if ((r.error = begin_write())) return r;
-    Error e;
+    StoreError e;
     std::string text;
     bool found = false, deletion = false;
     {
@@ -344,7 +344,7 @@ Result<std::vector<ProgramInfo>> Store::list() {
     Result<std::vector<ProgramInfo>> r;
     static const std::string sql =
         std::string("SELECT ") + kInfoColumns + " FROM programs WHERE deleted = 0 ORDER BY number";
-    Error e;
+    StoreError e;
     sql::Use u(prepare(sql.c_str(), e));
     if ((r.error = e)) return r;
     int rc;
@@ -366,7 +366,7 @@ Result<Program> Store::read(int number, int revision) {
         r.error = fail(rc, what);
         return r;
     }
-    Error e;
+    StoreError e;
     bool found = false;
     {
         sql::Use u(prepare(info_sql.c_str(), e));
@@ -410,8 +410,8 @@ Result<Program> Store::read(int number, int revision) {
     return r;
 }
 
-Error Store::each_program(const std::function<void(int, std::string_view)>& f) {
-    Error e;
+StoreError Store::each_program(const std::function<void(int, std::string_view)>& f) {
+    StoreError e;
     sql::Use u(
         prepare("SELECT p.number, r.text FROM programs p JOIN revisions r "
                 "ON r.program = p.number AND r.rev = p.head WHERE p.deleted = 0 ORDER BY p.number",
@@ -419,7 +419,7 @@ Error Store::each_program(const std::function<void(int, std::string_view)>& f) {
     if (e) return e;
     int rc;
     while ((rc = u.step()) == SQLITE_ROW) f(u.i32(0), u.view(1));
-    return rc == SQLITE_DONE ? Error{} : fail(rc, tr("cannot read the programs"));
+    return rc == SQLITE_DONE ? StoreError{} : fail(rc, tr("cannot read the programs"));
 }
 
 Result<std::vector<RevisionInfo>> Store::history(int number) {
@@ -427,7 +427,7 @@ Result<std::vector<RevisionInfo>> Store::history(int number) {
     constexpr const char* kHistory =
         "SELECT rev, kind, based_on, conflict, at_ms, who, source, size, lines FROM revisions "
         "WHERE program = ?1 ORDER BY rev";
-    Error e;
+    StoreError e;
     sql::Use u(prepare(kHistory, e));
     if ((r.error = e)) return r;
     u.bind(1, number);

@@ -58,8 +58,8 @@ std::string renumber(std::string_view text, int number) {
 // Inside the creating transaction. The two demos are both %300 in the handbooks;
 // one number holds one program, so the second is stored as the next free number
 // (%301) with its % line changed accordingly.
-Error Store::seed() {
-    Error e;
+StoreError Store::seed() {
+    StoreError e;
     const int64_t now = now_ms();
     for (const Embedded& m : kMachines) {
         sql::Use u(prepare(

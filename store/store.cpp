@@ -96,7 +96,7 @@ off_t file_size(const std::string& p) {
 // Looks at the file's first 100 bytes before SQLite does: a file that is not an
 // SQLite database, or one shorter than its header says, is refused without
 // SQLite ever opening it. `empty` is set for a zero-length file.
-Error precheck(const std::string& path, bool& empty) {
+StoreError precheck(const std::string& path, bool& empty) {
     empty = false;
     int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
     if (fd < 0) {
@@ -158,24 +158,24 @@ struct Failure {
     int busy_timeout_ms;
 };
 
-Error disk_full(const Failure& f) {
+StoreError disk_full(const Failure& f) {
     return {Fault::io,
             f.head + tr("disk full (or the store reached its size limit); nothing was changed")};
 }
 
-Error locked(const Failure& f) {
+StoreError locked(const Failure& f) {
     return {Fault::io,
             f.head + strf(tr("the store is locked by another process (waited %.1f s); nothing was "
                              "changed, try again"),
                           f.busy_timeout_ms / 1000.0)};
 }
 
-Error not_a_store(const Failure& f) {
+StoreError not_a_store(const Failure& f) {
     return {Fault::bad_data,
             f.head + tr("not a pupitre store (not an SQLite database); left untouched")};
 }
 
-Error damaged(const Failure& f) {
+StoreError damaged(const Failure& f) {
     return {Fault::bad_data,
             f.head + strf(tr("the store is damaged (%s); nothing was changed: restore a backup, or "
                              "try sqlite3's .recover on a copy"),
@@ -184,7 +184,7 @@ Error damaged(const Failure& f) {
 
 // SQLite keeps its -wal and -shm files beside the store: an unwritable
 // directory is the likely cause, else the system's errno.
-Error cannot_open(const Failure& f) {
+StoreError cannot_open(const Failure& f) {
     std::string dir = dir_of(f.path);
     if (::access(dir.c_str(), W_OK) != 0)
         return {Fault::cannot_create,
@@ -197,23 +197,23 @@ Error cannot_open(const Failure& f) {
                         : std::string(tr("cannot open the store")))};
 }
 
-Error cannot_write(const Failure& f) {
+StoreError cannot_write(const Failure& f) {
     return {Fault::cannot_create,
             f.head + strf(tr("cannot write the store (%s): check the permissions of the file and "
                              "its directory"),
                           f.sqlmsg.c_str())};
 }
 
-Error too_big(const Failure& f) {
+StoreError too_big(const Failure& f) {
     return {Fault::bad_data, f.head + strf(tr("too big for the store (%s)"), f.sqlmsg.c_str())};
 }
 
-Error refused(const Failure& f) {
+StoreError refused(const Failure& f) {
     return {Fault::bad_data,
             f.head + strf(tr("refused by the store (%s); nothing was changed"), f.sqlmsg.c_str())};
 }
 
-Error io_error(const Failure& f) {
+StoreError io_error(const Failure& f) {
     int e = f.db ? sqlite3_system_errno(f.db) : 0;
     if (e == ENOSPC || e == EDQUOT || e == EFBIG)
         return {Fault::io,
@@ -233,7 +233,7 @@ Error io_error(const Failure& f) {
 // SQLite's text.
 struct Explain {
     int primary;
-    Error (*explain)(const Failure&);
+    StoreError (*explain)(const Failure&);
 };
 constexpr Explain kExplain[] = {
     {SQLITE_FULL, disk_full},        {SQLITE_BUSY, locked},        {SQLITE_LOCKED, locked},
@@ -244,7 +244,7 @@ constexpr Explain kExplain[] = {
 };
 }  // namespace
 
-Error Store::fail(int rc, std::string_view what) {
+StoreError Store::fail(int rc, std::string_view what) {
     int primary = rc & 0xff;
     std::string sqlmsg = db_ ? sqlite3_errmsg(db_) : sqlite3_errstr(rc);
     // TRANSLATORS: the beginning of a store error: the store's file, what
@@ -256,12 +256,12 @@ Error Store::fail(int rc, std::string_view what) {
     return {Fault::io, head + strf(tr("%s; nothing was changed"), sqlmsg.c_str())};
 }
 
-Error Store::exec(const char* sql) {
+StoreError Store::exec(const char* sql) {
     int rc = sqlite3_exec(db_, sql, nullptr, nullptr, nullptr);
-    return rc == SQLITE_OK ? Error{} : fail(rc, "SQL");
+    return rc == SQLITE_OK ? StoreError{} : fail(rc, "SQL");
 }
 
-sqlite3_stmt* Store::prepare(const char* sql, Error& e) {
+sqlite3_stmt* Store::prepare(const char* sql, StoreError& e) {
     auto it = stmts_.find(sql);
     if (it != stmts_.end()) return it->second;
     sqlite3_stmt* s = nullptr;
@@ -277,15 +277,15 @@ sqlite3_stmt* Store::prepare(const char* sql, Error& e) {
 // One operator action, one transaction: BEGIN IMMEDIATE takes the write lock at
 // once (waiting up to the busy timeout), so two writers never deadlock on an
 // upgrade from a read lock.
-Error Store::begin_write() {
+StoreError Store::begin_write() {
     int rc = sqlite3_exec(db_, "BEGIN IMMEDIATE", nullptr, nullptr, nullptr);
-    return rc == SQLITE_OK ? Error{} : fail(rc, tr("cannot start a change"));
+    return rc == SQLITE_OK ? StoreError{} : fail(rc, tr("cannot start a change"));
 }
 
-Error Store::commit() {
+StoreError Store::commit() {
     int rc = sqlite3_exec(db_, "COMMIT", nullptr, nullptr, nullptr);
     if (rc == SQLITE_OK) return {};
-    Error e = fail(rc, tr("cannot save the change"));
+    StoreError e = fail(rc, tr("cannot save the change"));
     rollback();
     return e;
 }
@@ -409,7 +409,7 @@ Result<std::unique_ptr<Store>> Store::open(const std::string& path, const Option
 // A new store is built under a temporary name and linked into place only when
 // complete and seeded, so no process ever sees a half-made store, and a crash
 // or a full disk during creation leaves nothing behind under the real name.
-Error Store::create_file() {
+StoreError Store::create_file() {
     std::string tmp = dir_of(path_) + "/." + path_.substr(path_.rfind('/') + 1) + ".new-" +
                       std::to_string(getpid()) + "-" + std::to_string(g_temp_counter++);
     sqlite3* db = nullptr;
@@ -417,7 +417,7 @@ Error Store::create_file() {
         sqlite3_open_v2(tmp.c_str(), &db,
                         SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE | SQLITE_OPEN_NOMUTEX, nullptr);
     if (rc == SQLITE_OK) rc = configure(db, opt_);
-    auto give_up = [&](Error e) {
+    auto give_up = [&](StoreError e) {
         for (auto& [sql, s] : stmts_) sqlite3_finalize(s);
         stmts_.clear();
         sqlite3_close_v2(db);
@@ -435,7 +435,7 @@ Error Store::create_file() {
     }
     db_ = db;
     bool fresh = false;
-    Error e = validate_and_migrate(fresh);
+    StoreError e = validate_and_migrate(fresh);
     if (!e) e = exec("PRAGMA journal_mode = WAL");
     if (e) {
         // fail() began the message with "PATH: ".
@@ -474,7 +474,7 @@ Error Store::create_file() {
 // of an empty database; applies the migrations a store written by an older
 // pupitre needs. The check is repeated inside the write transaction: another
 // process may have done the work meanwhile.
-Error Store::validate_and_migrate(bool& fresh) {
+StoreError Store::validate_and_migrate(bool& fresh) {
     fresh = false;
     for (int attempt = 0; attempt < 2; ++attempt) {
         int64_t app = 0, version = 0, objects = 0;
@@ -507,29 +507,29 @@ Error Store::validate_and_migrate(bool& fresh) {
             return {};
         }
         if (attempt == 0) {
-            if (Error e = begin_write()) return e;
+            if (StoreError e = begin_write()) return e;
             continue;  // check again under the write lock
         }
         // Under the write lock and still behind: migrate (or create) now.
         for (int v = int(version); v < kSchemaVersion; ++v) {
-            if (Error e = exec(schema::kMigrations[v])) {
+            if (StoreError e = exec(schema::kMigrations[v])) {
                 rollback();
                 return e;
             }
         }
         std::string pragmas = "PRAGMA application_id = " + std::to_string(kApplicationId) +
                               "; PRAGMA user_version = " + std::to_string(kSchemaVersion) + ";";
-        if (Error e = exec(pragmas.c_str())) {
+        if (StoreError e = exec(pragmas.c_str())) {
             rollback();
             return e;
         }
         if (blank && opt_.seed) {
-            if (Error e = seed()) {
+            if (StoreError e = seed()) {
                 rollback();
                 return e;
             }
         }
-        if (Error e = commit()) return e;
+        if (StoreError e = commit()) return e;
         fresh = blank;
         return {};
     }

@@ -32,7 +32,7 @@ enum class Fault {
 int exit_code(Fault f);
 
 // Errors are values (ARCHITECTURE.md, Conventions). The message names the file and says what to do.
-struct Error {
+struct StoreError {
     Fault fault = Fault::none;
     std::string message;
     explicit operator bool() const { return fault != Fault::none; }
@@ -41,7 +41,7 @@ struct Error {
 template <class T>
 struct Result {
     T value{};
-    Error error;
+    StoreError error;
     bool ok() const { return !error; }
 };
 
@@ -196,14 +196,14 @@ class Store {
     Result<std::vector<RevisionInfo>> history(int number);
     // Calls f(number, text) for the current text of every program, in number
     // order, from one snapshot (program memory for a run).
-    Error each_program(const std::function<void(int, std::string_view)>& f);
+    StoreError each_program(const std::function<void(int, std::string_view)>& f);
     // Makes the text of an earlier revision current again, as a new revision.
     Result<SaveResult> restore(int number, int revision, std::string_view source = "");
 
     // Machine profiles (the .machine text).
     Result<std::vector<std::string>> machines();
     Result<std::string> machine_profile(std::string_view name);
-    Error put_machine(std::string_view name, std::string_view profile);
+    StoreError put_machine(std::string_view name, std::string_view profile);
 
     // Correctors and origins of a machine (only the stored ones).
     Result<std::map<std::string, int64_t>> values(std::string_view machine);
@@ -224,24 +224,25 @@ class Store {
         std::string setup, part;
     };
     Result<std::optional<Workshop>> workshop(std::string_view machine);
-    Error put_workshop(std::string_view machine, std::string_view setup, std::string_view part);
-    Error set_setting(std::string_view key, std::string_view value);
-    Error add_imd(std::string_view machine, std::string_view block);
+    StoreError put_workshop(std::string_view machine, std::string_view setup,
+                            std::string_view part);
+    StoreError set_setting(std::string_view key, std::string_view value);
+    StoreError add_imd(std::string_view machine, std::string_view block);
     Result<std::vector<ImdEntry>> imd_history(std::string_view machine, int limit = 100);
 
     // Training (store/training.cpp): the class's exercises, the attempts.
-    Error put_exercise(std::string_view name, std::string_view text);
+    StoreError put_exercise(std::string_view name, std::string_view text);
     Result<std::optional<std::string>> exercise(std::string_view name);
     Result<std::vector<std::string>> exercises();
     // The attempt of `student` at `exercise` still in progress, if any.
     Result<std::optional<Attempt>> open_attempt(std::string_view exercise,
                                                 std::string_view student);
     // Starts an attempt (its id filled in, its machine named after it).
-    Error start_attempt(Attempt& a);
-    Error add_crash(int64_t id);
+    StoreError start_attempt(Attempt& a);
+    StoreError add_crash(int64_t id);
     // Writes the grade of an attempt in progress; not_found when it was
     // submitted already.
-    Error submit_attempt(const Attempt& a);
+    StoreError submit_attempt(const Attempt& a);
     // Every attempt (of one exercise when `exercise` is given), oldest first.
     Result<std::vector<Attempt>> attempts(std::string_view exercise = "");
 
@@ -254,22 +255,23 @@ class Store {
 
   private:
     Store() = default;
-    Error fail(int rc, std::string_view what);
-    Error exec(const char* sql);
-    sqlite3_stmt* prepare(const char* sql, Error& e);
-    Error begin_write();
-    Error commit();
+    StoreError fail(int rc, std::string_view what);
+    StoreError exec(const char* sql);
+    sqlite3_stmt* prepare(const char* sql, StoreError& e);
+    StoreError begin_write();
+    StoreError commit();
     void rollback();
-    Error create_file();
-    Error validate_and_migrate(bool& fresh);
-    Error seed();
+    StoreError create_file();
+    StoreError validate_and_migrate(bool& fresh);
+    StoreError seed();
     struct ProgramRow;
-    Error read_row(int number, ProgramRow& row, const std::string& what);
-    Error insert_revision(int number, int rev, RevisionKind kind, int based_on, bool conflict,
-                          const std::string* text, const std::string& source,
-                          const std::string& what);
+    StoreError read_row(int number, ProgramRow& row, const std::string& what);
+    StoreError insert_revision(int number, int rev, RevisionKind kind, int based_on, bool conflict,
+                               const std::string* text, const std::string& source,
+                               const std::string& what);
     template <class... T>
-    Error update_program(const char* sql, const std::string& what, int number, const T&... more);
+    StoreError update_program(const char* sql, const std::string& what, int number,
+                              const T&... more);
     Result<SaveResult> save_one(const Piece& p, int based_on, RevisionKind kind);
     int64_t now_ms() const;
 

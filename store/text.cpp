@@ -20,8 +20,8 @@ int line_of(std::string_view text, size_t pos) {
                               text.begin() + std::ptrdiff_t(std::min(pos, text.size())), '\n'));
 }
 
-Error bad(std::string msg) {
-    return Error{Fault::bad_data, std::move(msg)};
+StoreError bad(std::string msg) {
+    return StoreError{Fault::bad_data, std::move(msg)};
 }
 
 struct HeaderLine {
@@ -44,7 +44,7 @@ std::vector<HeaderLine> header_lines(std::string_view text) {
     return out;
 }
 
-Error no_nul(std::string_view text, std::string_view name) {
+StoreError no_nul(std::string_view text, std::string_view name) {
     size_t nul = text.find('\0');
     if (nul == std::string_view::npos) return {};
     return bad(strf(tr("%s:%d: not a program text (NUL byte)"), std::string(name).c_str(),
@@ -77,9 +77,9 @@ int64_t count_lines(std::string_view text) {
 namespace {
 // Reads the header of one program's text; `first_line` is the line of the text
 // in its file, for the messages.
-Error parse_piece(std::string_view text, std::string_view name, int first_line, Header& h) {
+StoreError parse_piece(std::string_view text, std::string_view name, int first_line, Header& h) {
     h = Header{};
-    if (Error e = no_nul(text, name)) return e;
+    if (StoreError e = no_nul(text, name)) return e;
     std::vector<HeaderLine> headers = header_lines(text);
     if (headers.empty()) return {};  // a fragment: its number is given by the caller
     const std::string file(name);
@@ -106,7 +106,7 @@ Error parse_piece(std::string_view text, std::string_view name, int first_line, 
 }
 }  // namespace
 
-Error parse_program(std::string_view text, std::string_view name, Header& h) {
+StoreError parse_program(std::string_view text, std::string_view name, Header& h) {
     return parse_piece(text, name, 1, h);
 }
 

@@ -29,7 +29,7 @@ bool is_header_line(std::string_view line);
 
 // Reads the header of one program's text. bad_data when the text holds a NUL
 // byte, several % lines, or blocks before its % line. `name` prefixes messages.
-Error parse_program(std::string_view text, std::string_view name, Header& h);
+StoreError parse_program(std::string_view text, std::string_view name, Header& h);
 
 // Cuts a file into its programs (see above). A file with no % line is one
 // program, stored as `number_if_headerless`; with -1 it is refused. Refused

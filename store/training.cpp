@@ -36,8 +36,8 @@ Attempt read_attempt(const sql::Use& u) {
 
 }  // namespace
 
-Error Store::put_exercise(std::string_view name, std::string_view text) {
-    Error e;
+StoreError Store::put_exercise(std::string_view name, std::string_view text) {
+    StoreError e;
     sql::Use u(
         prepare("INSERT INTO exercises (name, text, added_ms, who) VALUES (?1, ?2, ?3, ?4) "
                 "ON CONFLICT (name) DO UPDATE SET text = ?2, added_ms = ?3, who = ?4",
@@ -51,7 +51,7 @@ Error Store::put_exercise(std::string_view name, std::string_view text) {
 
 Result<std::optional<std::string>> Store::exercise(std::string_view name) {
     Result<std::optional<std::string>> r;
-    Error e;
+    StoreError e;
     sql::Use u(prepare("SELECT text FROM exercises WHERE name = ?1", e));
     if ((r.error = e)) return r;
     int rc = u.bind(1, name).step();
@@ -64,7 +64,7 @@ Result<std::optional<std::string>> Store::exercise(std::string_view name) {
 
 Result<std::vector<std::string>> Store::exercises() {
     Result<std::vector<std::string>> r;
-    Error e;
+    StoreError e;
     sql::Use u(prepare("SELECT name FROM exercises ORDER BY name", e));
     if ((r.error = e)) return r;
     int rc;
@@ -76,7 +76,7 @@ Result<std::vector<std::string>> Store::exercises() {
 Result<std::optional<Attempt>> Store::open_attempt(std::string_view exercise,
                                                    std::string_view student) {
     Result<std::optional<Attempt>> r;
-    Error e;
+    StoreError e;
     static const std::string sql = std::string("SELECT ") + kAttemptColumns +
                                    " FROM attempts WHERE exercise = ?1 AND student = ?2 AND "
                                    "submitted_ms IS NULL ORDER BY id DESC LIMIT 1";
@@ -90,8 +90,8 @@ Result<std::optional<Attempt>> Store::open_attempt(std::string_view exercise,
     return r;
 }
 
-Error Store::start_attempt(Attempt& a) {
-    Error e;
+StoreError Store::start_attempt(Attempt& a) {
+    StoreError e;
     sql::Use u(
         prepare("INSERT INTO attempts (exercise, exercise_sha, student, machine, started_ms) "
                 "VALUES (?1, ?2, ?3, ?4, ?5)",
@@ -110,8 +110,8 @@ Error Store::start_attempt(Attempt& a) {
     return {};
 }
 
-Error Store::add_crash(int64_t id) {
-    Error e;
+StoreError Store::add_crash(int64_t id) {
+    StoreError e;
     sql::Use u(prepare("UPDATE attempts SET crashes = crashes + 1 WHERE id = ?1", e));
     if (e) return e;
     if (int rc = u.bind(1, id).step(); rc != SQLITE_DONE)
@@ -119,8 +119,8 @@ Error Store::add_crash(int64_t id) {
     return {};
 }
 
-Error Store::submit_attempt(const Attempt& a) {
-    Error e;
+StoreError Store::submit_attempt(const Attempt& a) {
+    StoreError e;
     sql::Use u(prepare(
         "UPDATE attempts SET submitted_ms = ?2, seed = ?3, score = ?4, seconds = ?5, "
         "crashes = ?6, scrapped = ?7, mistakes = ?8, found = ?9, report = ?10, signature = ?11 "
@@ -138,7 +138,7 @@ Error Store::submit_attempt(const Attempt& a) {
 
 Result<std::vector<Attempt>> Store::attempts(std::string_view exercise) {
     Result<std::vector<Attempt>> r;
-    Error e;
+    StoreError e;
     static const std::string sql = std::string("SELECT ") + kAttemptColumns +
                                    " FROM attempts WHERE ?1 = '' OR exercise = ?1 ORDER BY id";
     sql::Use u(prepare(sql.c_str(), e));

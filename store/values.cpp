@@ -43,9 +43,9 @@ constexpr const char* kInsertMachine =
 
 }  // namespace
 
-Error Store::put_machine(std::string_view name, std::string_view profile) {
-    if (Error e = begin_write()) return e;
-    Error e;
+StoreError Store::put_machine(std::string_view name, std::string_view profile) {
+    if (StoreError e = begin_write()) return e;
+    StoreError e;
     {
         sql::Use u(prepare(
             "INSERT INTO machines (name, profile, builtin, updated_ms) VALUES (?1, ?2, 0, ?3) "
@@ -66,7 +66,7 @@ Error Store::put_machine(std::string_view name, std::string_view profile) {
 
 Result<std::vector<std::string>> Store::machines() {
     Result<std::vector<std::string>> r;
-    Error e;
+    StoreError e;
     sql::Use u(prepare("SELECT name FROM machines ORDER BY name", e));
     if ((r.error = e)) return r;
     int rc;
@@ -77,7 +77,7 @@ Result<std::vector<std::string>> Store::machines() {
 
 Result<std::string> Store::machine_profile(std::string_view name) {
     Result<std::string> r;
-    Error e;
+    StoreError e;
     sql::Use u(prepare("SELECT profile FROM machines WHERE name = ?1", e));
     if ((r.error = e)) return r;
     int rc = u.bind(1, name).step();
@@ -93,7 +93,7 @@ Result<std::string> Store::machine_profile(std::string_view name) {
 
 Result<std::map<std::string, int64_t>> Store::values(std::string_view machine) {
     Result<std::map<std::string, int64_t>> r;
-    Error e;
+    StoreError e;
     sql::Use u(
         prepare("SELECT 'D' || d || '.' || field, value FROM correctors WHERE machine = ?1 "
                 "UNION ALL SELECT kind || '.' || axis, value FROM origins WHERE machine = ?1",
@@ -124,13 +124,13 @@ Result<std::vector<Change>> Store::set_values(std::string_view machine,
     const std::string what =
         strf(tr("cannot store the correctors and origins of %s"), std::string(machine).c_str());
     if ((r.error = begin_write())) return r;
-    auto abort = [&](Error e) {
+    auto abort = [&](StoreError e) {
         rollback();
         r.value.clear();
         r.error = std::move(e);
         return r;
     };
-    Error e;
+    StoreError e;
     bool known = false;
     {
         sql::Use u(prepare(kMachineExists, e));
@@ -211,7 +211,7 @@ Result<std::vector<Change>> Store::set_values(std::string_view machine,
 
 Result<std::vector<AuditRow>> Store::audit(std::string_view machine, int limit) {
     Result<std::vector<AuditRow>> r;
-    Error e;
+    StoreError e;
     sql::Use u(
         prepare("SELECT id, at_ms, who, machine, name, old, new, source FROM audit "
                 "WHERE ?1 = '' OR machine = ?1 ORDER BY id DESC LIMIT ?2",
@@ -241,7 +241,7 @@ Result<std::vector<AuditRow>> Store::audit(std::string_view machine, int limit) 
 
 Result<std::optional<std::string>> Store::setting(std::string_view key) {
     Result<std::optional<std::string>> r;
-    Error e;
+    StoreError e;
     sql::Use u(prepare("SELECT value FROM settings WHERE key = ?1", e));
     if ((r.error = e)) return r;
     int rc = u.bind(1, key).step();
@@ -254,7 +254,7 @@ Result<std::optional<std::string>> Store::setting(std::string_view key) {
 
 Result<std::optional<Store::Workshop>> Store::workshop(std::string_view machine) {
     Result<std::optional<Workshop>> r;
-    Error e;
+    StoreError e;
     sql::Use u(prepare("SELECT setup, part FROM workshops WHERE machine = ?1", e));
     if ((r.error = e)) return r;
     int rc = u.bind(1, machine).step();
@@ -265,9 +265,10 @@ Result<std::optional<Store::Workshop>> Store::workshop(std::string_view machine)
     return r;
 }
 
-Error Store::put_workshop(std::string_view machine, std::string_view setup, std::string_view part) {
-    if (Error e = begin_write()) return e;
-    Error e;
+StoreError Store::put_workshop(std::string_view machine, std::string_view setup,
+                               std::string_view part) {
+    if (StoreError e = begin_write()) return e;
+    StoreError e;
     {
         if (!setup.empty()) {
             sql::Use m(prepare(kMachineExists, e));
@@ -301,7 +302,7 @@ Error Store::put_workshop(std::string_view machine, std::string_view setup, std:
 
 Result<int64_t> Store::data_version() {
     Result<int64_t> r;
-    Error e;
+    StoreError e;
     sql::Use u(prepare("PRAGMA data_version", e));
     if ((r.error = e)) return r;
     int rc = u.step();
@@ -312,9 +313,9 @@ Result<int64_t> Store::data_version() {
     return r;
 }
 
-Error Store::set_setting(std::string_view key, std::string_view value) {
-    if (Error e = begin_write()) return e;
-    Error e;
+StoreError Store::set_setting(std::string_view key, std::string_view value) {
+    if (StoreError e = begin_write()) return e;
+    StoreError e;
     {
         sql::Use u(
             prepare("INSERT INTO settings (key, value) VALUES (?1, ?2) "
@@ -332,9 +333,9 @@ Error Store::set_setting(std::string_view key, std::string_view value) {
     return commit();
 }
 
-Error Store::add_imd(std::string_view machine, std::string_view block) {
-    if (Error e = begin_write()) return e;
-    Error e;
+StoreError Store::add_imd(std::string_view machine, std::string_view block) {
+    if (StoreError e = begin_write()) return e;
+    StoreError e;
     const int64_t now = now_ms();
     {
         sql::Use u(prepare(kMachineExists, e));
@@ -370,7 +371,7 @@ Error Store::add_imd(std::string_view machine, std::string_view block) {
 
 Result<std::vector<ImdEntry>> Store::imd_history(std::string_view machine, int limit) {
     Result<std::vector<ImdEntry>> r;
-    Error e;
+    StoreError e;
     sql::Use u(
         prepare("SELECT id, at_ms, who, machine, block FROM imd_history WHERE machine = ?1 "
                 "ORDER BY id DESC LIMIT ?2",

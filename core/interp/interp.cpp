@@ -163,20 +163,31 @@ double Interpreter::to_display(int axis, double internal) const {
     return internal;
 }
 
-bool Interpreter::fail(int code, std::string detail, int column) {
+// The one place a Diag is built: what fail and warn record, at the block
+// being read (its file, program, line and N).
+Diag Interpreter::diag_here(Severity s, int code, std::string detail, int column) const {
     Diag d;
+    d.severity = s;
     d.code = code;
-    if (caz_) {
-        d.code = caz::error_of(code);
-        detail = caz::detail_of(code, std::move(detail));
-    }
-    d.file = stack_.empty() ? (main_ ? main_->file : std::string()) : stack_.back().prog->file;
+    // Outside any call an error is the main program's; a warning names no file there.
+    if (!stack_.empty())
+        d.file = stack_.back().prog->file;
+    else if (s == Severity::error && main_)
+        d.file = main_->file;
     d.program = loc_.prog;
     d.line = loc_.line;
     d.n = loc_.n;
-    d.column = column ? column : col_;
+    d.column = column;
     d.detail = std::move(detail);
-    diags_.push_back(std::move(d));
+    return d;
+}
+
+bool Interpreter::fail(int code, std::string detail, int column) {
+    if (caz_) {
+        detail = caz::detail_of(code, std::move(detail));
+        code = caz::error_of(code);
+    }
+    diags_.push_back(diag_here(Severity::error, code, std::move(detail), column ? column : col_));
     ended_ = true;
     return false;
 }
@@ -186,14 +197,7 @@ bool Interpreter::fail(const Error& e) {
 }
 
 void Interpreter::warn(int code, std::string detail) {
-    Diag d;
-    d.severity = Severity::warning;
-    d.code = code;
-    d.file = stack_.empty() ? std::string() : stack_.back().prog->file;
-    d.program = loc_.prog;
-    d.line = loc_.line;
-    d.n = loc_.n;
-    d.detail = std::move(detail);
+    Diag d = diag_here(Severity::warning, code, std::move(detail), 0);
     // One warning of a kind per line is enough (a loop would repeat it).
     for (const auto& o : diags_)
         if (o.code == d.code && o.line == d.line && o.file == d.file) return;

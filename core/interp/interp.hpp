@@ -294,6 +294,8 @@ class Interpreter final : private EAccess {
     // The same for what a pure layer answered (diag.hpp: Error).
     bool fail(const Error& e);
     void warn(int code, std::string detail);
+    // The Diag both build (interp.cpp): `code` at the current block.
+    Diag diag_here(Severity s, int code, std::string detail, int column) const;
     bool call(const Plan& p);
     bool jump(long label);
     bool transfer(const Plan& p);

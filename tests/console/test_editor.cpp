@@ -68,13 +68,13 @@ TEST(Editor, RenumberRewritesTheReferences) {
 
 TEST(Editor, TheCheckStopsOnTheFirstBadBlock) {
     Editor e = open("%500\nN10 G0 X0\nN20 G1 X10 (NO END\nN30 G1 $9\nN40 M2\n");
-    Diag d;
-    EXPECT_FALSE(e.check(d));
+    std::optional<Diag> d = e.check();
+    ASSERT_TRUE(d);
     EXPECT_EQ(e.cursor, 2);
     EXPECT_EQ(e.error_line, 2);
-    EXPECT_EQ(d.line, 3);
-    EXPECT_EQ(d.n, 20);
-    EXPECT_EQ(d.code, 17);  // end of block inside a comment
+    EXPECT_EQ(d->line, 3);
+    EXPECT_EQ(d->n, 20);
+    EXPECT_EQ(d->code, 17);  // end of block inside a comment
 }
 
 TEST(Editor, ModifLocksThePreparedBlocks) {

@@ -107,20 +107,18 @@ struct Pocket {
         for (const auto& is : islands) island_polys.push_back(polygon(is));
     }
     // The cutter centre at p keeps `need` from every wall and island, inside
-    // the pocket and outside the islands (less 0.1 µm).
-    bool ok(V2 p, double need, std::string& why) const {
+    // the pocket and outside the islands (less 0.1 µm): "" when it does, else why not.
+    std::string problem(V2 p, double need) const {
         double d = 1e300;
         for (const Elem& e : outer) d = std::min(d, dist(e, p));
         for (const auto& is : islands)
             for (const Elem& e : is) d = std::min(d, dist(e, p));
-        if (!in_polygon(outer_poly, p)) return why = "outside the pocket", false;
+        if (!in_polygon(outer_poly, p)) return "outside the pocket";
         for (const auto& is : island_polys)
-            if (in_polygon(is, p)) return why = "inside an island", false;
+            if (in_polygon(is, p)) return "inside an island";
         if (d < need - 1e-4)
-            return why = "at " + std::to_string(d) + " from a wall, " + std::to_string(need) +
-                         " needed",
-                   false;
-        return true;
+            return "at " + std::to_string(d) + " from a wall, " + std::to_string(need) + " needed";
+        return {};
     }
 };
 
@@ -143,7 +141,6 @@ std::vector<V2> along(V2 from, const comp::Piece& pc) {
 int check_runs(const Pocket& pk, const std::vector<p46::Run>& runs, double need,
                const std::string& what) {
     int bad = 0;
-    std::string why;
     V2 at(0, 0);
     bool have = false;
     for (const p46::Run& r : runs) {
@@ -157,7 +154,7 @@ int check_runs(const Pocket& pk, const std::vector<p46::Run>& runs, double need,
             from = pc.to;
         }
         for (V2 q : pts)
-            if (!pk.ok(q, need, why) && ++bad <= 2)
+            if (std::string why = pk.problem(q, need); !why.empty() && ++bad <= 2)
                 ADD_FAILURE() << what << (r.cleanup ? " clean-up" : "")
                               << (r.linked ? " linked" : "") << ": " << q.transpose() << " " << why;
         at = from;
