@@ -222,7 +222,7 @@ bool exercise_setup(const ConsoleArgs& a, store::Store& st, training::Exercise& 
 // :exercise NAME: this console ends and pupitre starts again on the
 // exercise, on the same store, theme and student.
 int restart_on(const ConsoleArgs& a, console::Session& s, const std::string& name) {
-    std::vector<std::string> args = {"pupitre", "--db", s.store()->path()};
+    std::vector<std::string> args = {"pupitre", "--db", s.store()->target()};
     if (!a.theme.empty()) args.insert(args.end(), {"--theme", a.theme});
     if (a.ascii) args.push_back("--ascii");
     args.insert(args.end(), {"exercise", name});

@@ -84,6 +84,7 @@ struct StoreArgs {
     std::vector<int> numbers;        // export N..., rm N, history N, restore N REV
     int revision = 0;                // restore
     std::string output;              // export -o
+    std::string from, to;            // store copy FROM TO
 };
 
 // Prints a store's error; its exit code.
@@ -113,6 +114,7 @@ int store_list(const StoreArgs& a);
 int store_rm(const StoreArgs& a);
 int store_history(const StoreArgs& a);
 int store_restore(const StoreArgs& a);
+int store_copy(const StoreArgs& a);
 
 // The store of one `run` or `check --db` (cli_store.cpp). Each call prints its
 // problems and returns an exit code, 0 when all is well.

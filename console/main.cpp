@@ -143,10 +143,10 @@ void add_program_options(CLI::App& app, CommandLine& c) {
                       "LC_MESSAGES, LANG; else en)"))
         ->type_name("LANG");
     app.add_option("--db", c.db,
-                   tr("the program store (default $XDG_DATA_HOME/pupitre/pupitre.db, created on "
-                      "first use); "
-                      "run and check use a store only when given"))
-        ->type_name("FILE");
+                   tr("the program store: a file, or a PostgreSQL server as postgresql://… or "
+                      "key=value (default PUPITRE_DB, else $XDG_DATA_HOME/pupitre/pupitre.db, "
+                      "created on first use); run and check use a store only when given"))
+        ->type_name("STORE");
 
     cli::ConsoleArgs& ca = c.ca;
     app.add_option("--machine", ca.machine,
@@ -276,6 +276,15 @@ void add_store(CLI::App& app, CommandLine& c, std::vector<Command>& commands) {
     commands.push_back({rm, [](const CommandLine& k) { return cli::store_rm(k.sa); }});
     commands.push_back({hist, [](const CommandLine& k) { return cli::store_history(k.sa); }});
     commands.push_back({rest, [](const CommandLine& k) { return cli::store_restore(k.sa); }});
+    CLI::App* st = app.add_subcommand("store", tr("the store itself: copy FROM TO"));
+    st->require_subcommand(1);
+    CLI::App* copy = st->add_subcommand(
+        "copy", tr("copy a whole store (file or server) into a new one, and compare them"));
+    copy->add_option("from", sa.from, tr("the store to copy: a file or a postgresql:// URI"))
+        ->required();
+    copy->add_option("to", sa.to, tr("the new store: a file or a server's empty database"))
+        ->required();
+    commands.push_back({st, [](const CommandLine& k) { return cli::store_copy(k.sa); }});
 }
 
 // The program numbers as typed (300 or %300), into sa.numbers; false (and
@@ -380,6 +389,8 @@ int main(int argc, char** argv) {
         app.exit(e);
         return g_missing_file ? cli::kNoInput : cli::kUsage;
     }
+    // PUPITRE_DB names the store as --db does (a class's server, say).
+    if (const char* env = std::getenv("PUPITRE_DB"); c.db.empty() && env && *env) c.db = env;
     c.ra.db = c.db;
     c.sa.db = c.db;
     if (!read_numbers(c)) return cli::kUsage;

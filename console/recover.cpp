@@ -41,8 +41,10 @@ bool write_all(int fd, const std::string& s) {
 }  // namespace
 
 std::string Session::journal_dir() const {
-    if (!store_ || store_->path().empty() || store_->path()[0] == ':') return {};
-    return store_->path() + ".recover";
+    if (!store_) return {};
+    std::string local = store_->local_path();  // a server's store: a directory of this PC
+    if (local.empty() || local[0] == ':') return {};
+    return local + ".recover";
 }
 
 std::string Session::journal_path(int number) const {
@@ -56,7 +58,12 @@ void Session::sync_journal() {
     journaled_changes_ = editor.changes;
     std::string path = journal_path(editor.number);
     if (path.empty()) return;
-    ::mkdir(journal_dir().c_str(), 0700);
+    // A server's journal lives under this PC's data directory: make its parents.
+    const std::string dir = journal_dir();
+    for (size_t slash = dir.find('/', 1); slash != std::string::npos;
+         slash = dir.find('/', slash + 1))
+        ::mkdir(dir.substr(0, slash).c_str(), 0700);
+    ::mkdir(dir.c_str(), 0700);
     char head[96];
     std::snprintf(head, sizeof head, kHeader, editor.number, editor.revision);
     std::string tmp = path + ".tmp";

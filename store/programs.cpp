@@ -124,11 +124,12 @@ struct Store::ProgramRow {
 StoreError Store::read_row(int number, ProgramRow& row, const std::string& what) {
     row = ProgramRow{};
     StoreError e;
-    sql::Use u(prepare(kSelectRow, e));
+    sql::Use u = use(kSelectRow);
+    e = u.error;
     if (e) return e;
     int rc = u.bind(1, number).step();
-    if (rc == SQLITE_DONE) return {};
-    if (rc != SQLITE_ROW) return fail(rc, what);
+    if (rc == db::kDone) return {};
+    if (rc != db::kRow) return fail(rc, what);
     row.found = true;
     row.head = u.i32(0);
     row.last = u.i32(1);
@@ -144,7 +145,8 @@ StoreError Store::insert_revision(int number, int rev, RevisionKind kind, int ba
                                   bool conflict, const std::string* text, const std::string& source,
                                   const std::string& what) {
     StoreError e;
-    sql::Use u(prepare(kInsertRevision, e));
+    sql::Use u = use(kInsertRevision);
+    e = u.error;
     if (e) return e;
     u.bind(1, number)
         .bind(2, rev)
@@ -157,7 +159,7 @@ StoreError Store::insert_revision(int number, int rev, RevisionKind kind, int ba
         u.null(6).bind(7, int64_t(0)).bind(8, int64_t(0));
     u.bind(9, user_).bind(10, now_ms()).bind(11, source);
     int rc = u.step();
-    return rc == SQLITE_DONE ? StoreError{} : fail(rc, what);
+    return rc == db::kDone ? StoreError{} : fail(rc, what);
 }
 
 // Runs a one-row statement on the programs table: bindings ?1 number, then `more`.
@@ -165,13 +167,14 @@ template <class... T>
 StoreError Store::update_program(const char* sql, const std::string& what, int number,
                                  const T&... more) {
     StoreError e;
-    sql::Use u(prepare(sql, e));
+    sql::Use u = use(sql);
+    e = u.error;
     if (e) return e;
     u.bind(1, number);
     int i = 2;
     (bind_value(u, i++, more), ...);
     int rc = u.step();
-    return rc == SQLITE_DONE ? StoreError{} : fail(rc, what);
+    return rc == db::kDone ? StoreError{} : fail(rc, what);
 }
 
 // Inside a write transaction: one program saved (see store.hpp for the rules).
@@ -187,11 +190,12 @@ Result<SaveResult> Store::save_one(const Piece& p, int based_on, RevisionKind ki
     bool same = false;
     if (row.found && !row.deleted && row.size == int64_t(p.text.size())) {
         StoreError e;
-        sql::Use u(prepare(kSelectText, e));
+        sql::Use u = use(kSelectText);
+        e = u.error;
         if ((r.error = e)) return r;
         int rc = u.bind(1, p.number).bind(2, row.head).step();
-        if (rc != SQLITE_ROW) {
-            r.error = fail(rc == SQLITE_DONE ? SQLITE_CORRUPT : rc, what);
+        if (rc != db::kRow) {
+            r.error = fail(rc == db::kDone ? db::kCorrupt : rc, what);
             return r;
         }
         same = u.view(0) == std::string_view(p.text);
@@ -231,113 +235,90 @@ Result<SaveResult> Store::save_one(const Piece& p, int based_on, RevisionKind ki
 
 Result<SaveResult> Store::save(int number, std::string_view text, int based_on,
                                std::string_view source) {
-    Result<SaveResult> r;
-    if ((r.error = begin_write())) return r;
-    r = save_one(Piece{number, std::string(text), std::string(source)}, based_on,
-                 RevisionKind::save);
-    if (r.error) {
-        rollback();
-        return r;
-    }
-    r.error = commit();
-    return r;
+    const Piece p{number, std::string(text), std::string(source)};
+    return in_write([&] { return save_one(p, based_on, RevisionKind::save); });
 }
 
 Result<std::vector<SaveResult>> Store::save_all(const std::vector<Piece>& pieces) {
-    Result<std::vector<SaveResult>> r;
-    if ((r.error = begin_write())) return r;
-    r.value.reserve(pieces.size());
-    for (const Piece& p : pieces) {
-        Result<SaveResult> one = save_one(p, kHead, RevisionKind::import);
-        if (one.error) {
-            rollback();
-            r.value.clear();
-            r.error = one.error;
-            return r;
+    return in_write([&] {
+        Result<std::vector<SaveResult>> r;
+        r.value.reserve(pieces.size());
+        for (const Piece& p : pieces) {
+            Result<SaveResult> one = save_one(p, kHead, RevisionKind::import);
+            if (one.error) return Result<std::vector<SaveResult>>{{}, one.error};
+            r.value.push_back(one.value);
         }
-        r.value.push_back(one.value);
-    }
-    r.error = commit();
-    if (r.error) r.value.clear();
-    return r;
+        return r;
+    });
 }
 
 Result<SaveResult> Store::remove(int number, int based_on, std::string_view source) {
-    Result<SaveResult> r;
-    r.value.number = number;
     const std::string what = strf(tr("cannot delete %%%d"), number);
-    if ((r.error = begin_write())) return r;
-    ProgramRow row;
-    StoreError e = read_row(number, row, what);
-    if (!e && (!row.found || row.deleted))
-        e = {Fault::not_found, strf(tr("%s: no program %%%d in the store"), path_.c_str(), number)};
-    if (!e && based_on != kHead && based_on != row.head) {
-        // Deleting what someone changed since it was loaded: refused, nothing lost.
-        rollback();
-        r.value.status = SaveStatus::conflict;
-        r.value.current = row.head;
-        r.value.current_by = row.modified_by;
+    return in_write([&] {
+        Result<SaveResult> r;
+        r.value.number = number;
+        ProgramRow row;
+        if ((r.error = read_row(number, row, what))) return r;
+        if (!row.found || row.deleted) {
+            r.error = {Fault::not_found,
+                       strf(tr("%s: no program %%%d in the store"), path_.c_str(), number)};
+            return r;
+        }
+        if (based_on != kHead && based_on != row.head) {
+            // Deleting what someone changed since it was loaded: refused,
+            // nothing lost (and nothing written: the commit changes nothing).
+            r.value.status = SaveStatus::conflict;
+            r.value.current = row.head;
+            r.value.current_by = row.modified_by;
+            return r;
+        }
+        const int rev = row.last + 1;
+        if ((r.error = insert_revision(number, rev, RevisionKind::remove, row.head, false, nullptr,
+                                       std::string(source), what)))
+            return r;
+        if ((r.error = update_program(kDelete, what, number, rev, now_ms(), user_))) return r;
+        r.value.status = SaveStatus::saved;
+        r.value.revision = r.value.current = rev;
+        r.value.current_by = user_;
+        r.value.deleted = true;
         return r;
-    }
-    const int rev = row.last + 1;
-    if (!e)
-        e = insert_revision(number, rev, RevisionKind::remove, row.head, false, nullptr,
-                            std::string(source), what);
-    if (!e) e = update_program(kDelete, what, number, rev, now_ms(), user_);
-    if (e) {
-        rollback();
-        r.error = e;
-        return r;
-    }
-    r.value.status = SaveStatus::saved;
-    r.value.revision = r.value.current = rev;
-    r.value.current_by = user_;
-    r.value.deleted = true;
-    r.error = commit();
+    });
+}
+
+// The text of revision `revision` of a program, for restore: not_found when
+// there is none, bad_data when it is the deletion.
+Result<std::string> Store::revision_text(int number, int revision, const std::string& what) {
+    Result<std::string> r;
+    sql::Use u = use(kSelectText);
+    if ((r.error = u.error)) return r;
+    int rc = u.bind(1, number).bind(2, revision).step();
+    if (rc == db::kDone)
+        r.error = {Fault::not_found,
+                   strf(tr("%s: no revision %d of %%%d"), path_.c_str(), revision, number)};
+    else if (rc != db::kRow)
+        r.error = fail(rc, what);
+    else if (u.is_null(0))
+        r.error = {Fault::bad_data,
+                   strf(tr("%s: revision %d of %%%d is its deletion; restore a revision before it"),
+                        path_.c_str(), revision, number)};
+    else
+        r.value = u.str(0);
     return r;
 }
 
 Result<SaveResult> Store::restore(int number, int revision, std::string_view source) {
-    Result<SaveResult> r;
-    r.value.number = number;
     const std::string what = strf(tr("cannot restore %%%d"), number);
-    if ((r.error = begin_write())) return r;
-    StoreError e;
-    std::string text;
-    bool found = false, deletion = false;
-    {
-        sql::Use u(prepare(kSelectText, e));
-        if (!e) {
-            int rc = u.bind(1, number).bind(2, revision).step();
-            if (rc == SQLITE_ROW) {
-                found = true;
-                deletion = u.is_null(0);
-                text = u.str(0);
-            } else if (rc != SQLITE_DONE) {
-                e = fail(rc, what);
-            }
-        }
-    }
-    if (!e && !found)
-        e = {Fault::not_found,
-             strf(tr("%s: no revision %d of %%%d"), path_.c_str(), revision, number)};
-    if (!e && deletion)
-        e = {Fault::bad_data,
-             strf(tr("%s: revision %d of %%%d is its deletion; restore a revision before it"),
-                  path_.c_str(), revision, number)};
-    if (e) {
-        rollback();
-        r.error = e;
-        return r;
-    }
     std::string src = source.empty() ? "restore r" + std::to_string(revision) : std::string(source);
-    r = save_one(Piece{number, std::move(text), std::move(src)}, kHead, RevisionKind::restore);
-    if (r.error) {
-        rollback();
-        return r;
-    }
-    r.error = commit();
-    return r;
+    return in_write([&] {
+        Result<std::string> text = revision_text(number, revision, what);
+        if (text.error) {
+            Result<SaveResult> r;
+            r.value.number = number;
+            r.error = text.error;
+            return r;
+        }
+        return save_one(Piece{number, std::move(text.value), src}, kHead, RevisionKind::restore);
+    });
 }
 
 Result<std::vector<ProgramInfo>> Store::list() {
@@ -345,11 +326,12 @@ Result<std::vector<ProgramInfo>> Store::list() {
     static const std::string sql =
         std::string("SELECT ") + kInfoColumns + " FROM programs WHERE deleted = 0 ORDER BY number";
     StoreError e;
-    sql::Use u(prepare(sql.c_str(), e));
+    sql::Use u = use(sql.c_str());
+    e = u.error;
     if ((r.error = e)) return r;
     int rc;
-    while ((rc = u.step()) == SQLITE_ROW) r.value.push_back(info_of(u));
-    if (rc != SQLITE_DONE) {
+    while ((rc = u.step()) == db::kRow) r.value.push_back(info_of(u));
+    if (rc != db::kDone) {
         r.value.clear();
         r.error = fail(rc, tr("cannot list the programs"));
     }
@@ -362,20 +344,18 @@ Result<Program> Store::read(int number, int revision) {
         std::string("SELECT ") + kInfoColumns + " FROM programs WHERE number = ?1";
     const std::string what = strf(tr("cannot read %%%d"), number);
     // Two statements, one snapshot.
-    if (int rc = sqlite3_exec(db_, "BEGIN", nullptr, nullptr, nullptr); rc != SQLITE_OK) {
-        r.error = fail(rc, what);
-        return r;
-    }
+    if ((r.error = begin_read())) return r;
     StoreError e;
     bool found = false;
     {
-        sql::Use u(prepare(info_sql.c_str(), e));
+        sql::Use u = use(info_sql.c_str());
+        e = u.error;
         if (!e) {
             int rc = u.bind(1, number).step();
-            if (rc == SQLITE_ROW) {
+            if (rc == db::kRow) {
                 found = true;
                 r.value.info = info_of(u);
-            } else if (rc != SQLITE_DONE) {
+            } else if (rc != db::kDone) {
                 e = fail(rc, what);
             }
         }
@@ -388,16 +368,17 @@ Result<Program> Store::read(int number, int revision) {
                   path_.c_str(), number, r.value.info.revision)};
     const int rev = revision == 0 ? r.value.info.revision : revision;
     if (!e) {
-        sql::Use u(prepare(kSelectText, e));
+        sql::Use u = use(kSelectText);
+        e = u.error;
         if (!e) {
             int rc = u.bind(1, number).bind(2, rev).step();
-            if (rc == SQLITE_ROW && !u.is_null(0)) {
+            if (rc == db::kRow && !u.is_null(0)) {
                 r.value.text = u.str(0);
                 r.value.revision = rev;
-            } else if (rc == SQLITE_ROW) {
+            } else if (rc == db::kRow) {
                 e = {Fault::not_found, strf(tr("%s: revision %d of %%%d is its deletion"),
                                             path_.c_str(), rev, number)};
-            } else if (rc == SQLITE_DONE) {
+            } else if (rc == db::kDone) {
                 e = {Fault::not_found,
                      strf(tr("%s: no revision %d of %%%d"), path_.c_str(), rev, number)};
             } else {
@@ -412,14 +393,14 @@ Result<Program> Store::read(int number, int revision) {
 
 StoreError Store::each_program(const std::function<void(int, std::string_view)>& f) {
     StoreError e;
-    sql::Use u(
-        prepare("SELECT p.number, r.text FROM programs p JOIN revisions r "
-                "ON r.program = p.number AND r.rev = p.head WHERE p.deleted = 0 ORDER BY p.number",
-                e));
+    sql::Use u =
+        use("SELECT p.number, r.text FROM programs p JOIN revisions r "
+            "ON r.program = p.number AND r.rev = p.head WHERE p.deleted = 0 ORDER BY p.number");
+    e = u.error;
     if (e) return e;
     int rc;
-    while ((rc = u.step()) == SQLITE_ROW) f(u.i32(0), u.view(1));
-    return rc == SQLITE_DONE ? StoreError{} : fail(rc, tr("cannot read the programs"));
+    while ((rc = u.step()) == db::kRow) f(u.i32(0), u.view(1));
+    return rc == db::kDone ? StoreError{} : fail(rc, tr("cannot read the programs"));
 }
 
 Result<std::vector<RevisionInfo>> Store::history(int number) {
@@ -428,11 +409,12 @@ Result<std::vector<RevisionInfo>> Store::history(int number) {
         "SELECT rev, kind, based_on, conflict, at_ms, who, source, size, lines FROM revisions "
         "WHERE program = ?1 ORDER BY rev";
     StoreError e;
-    sql::Use u(prepare(kHistory, e));
+    sql::Use u = use(kHistory);
+    e = u.error;
     if ((r.error = e)) return r;
     u.bind(1, number);
     int rc;
-    while ((rc = u.step()) == SQLITE_ROW) {
+    while ((rc = u.step()) == db::kRow) {
         RevisionInfo i;
         i.revision = u.i32(0);
         i.kind = kind_of(u.view(1));
@@ -445,7 +427,7 @@ Result<std::vector<RevisionInfo>> Store::history(int number) {
         i.lines = u.i64(8);
         r.value.push_back(std::move(i));
     }
-    if (rc != SQLITE_DONE) {
+    if (rc != db::kDone) {
         r.value.clear();
         r.error = fail(rc, strf(tr("cannot read the history of %%%d"), number));
     } else if (r.value.empty()) {

@@ -62,10 +62,11 @@ StoreError Store::seed() {
     StoreError e;
     const int64_t now = now_ms();
     for (const Embedded& m : kMachines) {
-        sql::Use u(prepare(
-            "INSERT INTO machines (name, profile, builtin, updated_ms) VALUES (?1, ?2, 1, ?3)", e));
+        sql::Use u =
+            use("INSERT INTO machines (name, profile, builtin, updated_ms) VALUES (?1, ?2, 1, ?3)");
+        e = u.error;
         if (e) return e;
-        if (int rc = u.bind(1, m.name).bind(2, m.text()).bind(3, now).step(); rc != SQLITE_DONE)
+        if (int rc = u.bind(1, m.name).bind(2, m.text()).bind(3, now).step(); rc != db::kDone)
             return fail(rc, tr("cannot seed the machine profiles"));
     }
     std::set<int> used;

@@ -1,73 +1,111 @@
-// Inside the store: a thin layer over sqlite3 statements (bind, step, read a
-// column) so the store's files read as SQL plus checks. Not for use outside store/.
+// Inside the store: a statement in use (bind, step, read a column) over either
+// backend, so the store's files read as SQL plus checks, and the one write
+// transaction every change runs in. Not for use outside store/.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-#include <sqlite3.h>
-
+#include <chrono>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
+#include <thread>
+
+#include "store/backend.hpp"
 
 namespace pupitre::store::sql {
 
-// A cached statement in use: bound, stepped, and reset when it goes out of scope
-// so the next user finds it clean (and no read transaction stays open).
+// A cached statement in use: bound, stepped, and reset when it goes out of
+// scope so the next user finds it clean (and no read stays open). `error` is
+// set when the statement could not be prepared; nothing else may then be called.
 class Use {
   public:
-    explicit Use(sqlite3_stmt* s) : s_(s) {}
+    Use(db::Stmt* s, StoreError e) : s_(s), error(std::move(e)) {}
     ~Use() {
-        if (s_) {
-            sqlite3_reset(s_);
-            sqlite3_clear_bindings(s_);
-        }
+        if (s_) s_->reset();
     }
     Use(const Use&) = delete;
     Use& operator=(const Use&) = delete;
 
     Use& bind(int i, int64_t v) {
-        sqlite3_bind_int64(s_, i, v);
+        s_->bind(i, v);
         return *this;
     }
     Use& bind(int i, int v) { return bind(i, int64_t(v)); }
     Use& bind(int i, double v) {
-        sqlite3_bind_double(s_, i, v);
+        s_->bind(i, v);
         return *this;
     }
     Use& bind(int i, std::string_view t) {
-        sqlite3_bind_text(s_, i, t.data(), int(t.size()), SQLITE_TRANSIENT);
+        s_->bind(i, t);
         return *this;
     }
     Use& bind(int i, const char* t) { return bind(i, std::string_view(t)); }
     Use& bind(int i, const std::string& t) { return bind(i, std::string_view(t)); }
-    // Program texts are blobs: stored and given back byte for byte, whatever their encoding.
     Use& blob(int i, std::string_view b) {
-        sqlite3_bind_blob64(s_, i, b.empty() ? "" : b.data(), b.size(), SQLITE_STATIC);
+        s_->blob(i, b);
         return *this;
     }
     Use& null(int i) {
-        sqlite3_bind_null(s_, i);
+        s_->null(i);
         return *this;
     }
 
-    int step() { return sqlite3_step(s_); }
+    int step() { return s_->step(); }
 
-    bool is_null(int c) const { return sqlite3_column_type(s_, c) == SQLITE_NULL; }
-    int64_t i64(int c) const { return sqlite3_column_int64(s_, c); }
-    int i32(int c) const { return sqlite3_column_int(s_, c); }
-    double f64(int c) const { return sqlite3_column_double(s_, c); }
-    std::string str(int c) const {
-        const void* p = sqlite3_column_blob(s_, c);  // text or blob: the bytes as stored
-        int n = sqlite3_column_bytes(s_, c);
-        return p ? std::string(static_cast<const char*>(p), size_t(n)) : std::string();
-    }
-    std::string_view view(int c) const {
-        const void* p = sqlite3_column_blob(s_, c);
-        int n = sqlite3_column_bytes(s_, c);
-        return p ? std::string_view(static_cast<const char*>(p), size_t(n)) : std::string_view();
-    }
+    bool is_null(int c) const { return s_->is_null(c); }
+    int64_t i64(int c) const { return s_->i64(c); }
+    int i32(int c) const { return int(s_->i64(c)); }
+    double f64(int c) const { return s_->f64(c); }
+    std::string str(int c) const { return std::string(s_->view(c)); }
+    std::string_view view(int c) const { return s_->view(c); }
 
   private:
-    sqlite3_stmt* s_;
+    db::Stmt* s_;
+
+  public:
+    StoreError error;
 };
 
+inline StoreError& error_of(StoreError& e) {
+    return e;
+}
+template <class T>
+StoreError& error_of(Result<T>& r) {
+    return r.error;
+}
+
 }  // namespace pupitre::store::sql
+
+namespace pupitre::store {
+
+// How many times a write transaction is run when the server reports a
+// serialization failure or a deadlock (PostgreSQL under many writers); SQLite
+// takes its write lock first and never meets one.
+inline constexpr int kWriteAttempts = 8;
+
+// Runs `body` (which returns a StoreError or a Result) in one write
+// transaction: committed when it succeeds, rolled back when it fails, and run
+// again from the start, up to kWriteAttempts times, when it failed on a
+// serialization failure. `body` must leave nothing behind it between runs
+// (it builds its answer afresh).
+template <class F>
+auto Store::in_write(F&& body) -> decltype(body()) {
+    using R = decltype(body());
+    for (int attempt = 1;; ++attempt) {
+        R r{};
+        if (StoreError e = begin_write()) {
+            sql::error_of(r) = std::move(e);
+        } else {
+            r = body();
+            if (sql::error_of(r))
+                rollback();
+            else if (StoreError c = commit())
+                sql::error_of(r) = std::move(c);
+        }
+        if (!sql::error_of(r).retry || attempt == kWriteAttempts) return r;
+        // Another writer won: let it finish, then read again.
+        std::this_thread::sleep_for(std::chrono::milliseconds(2 * attempt * attempt));
+    }
+}
+
+}  // namespace pupitre::store

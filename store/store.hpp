@@ -1,7 +1,10 @@
-// The program store (pupitre(1), PROGRAM STORE): one SQLite file holding the part programs with
-// every revision, the tool correctors and origins of each machine with an audit
-// of their changes, the machine profiles, settings and the IMD history. Only
-// store/ includes sqlite3.h; this header is what the rest of pupitre sees.
+// The program store (pupitre(1), PROGRAM STORE): the part programs with every
+// revision, the tool correctors and origins of each machine with an audit of
+// their changes, the machine profiles, settings, the IMD history, the
+// workshops, exercises and attempts. One SQLite file (the default), or a
+// database on a PostgreSQL server that a class shares (store/backend.hpp).
+// Only store/ includes sqlite3.h or libpq-fe.h; this header is what the rest
+// of pupitre sees.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 #include <cstdint>
@@ -13,10 +16,14 @@
 #include <string_view>
 #include <vector>
 
-struct sqlite3;
-struct sqlite3_stmt;
-
 namespace pupitre::store {
+
+namespace db {
+class Backend;
+}
+namespace sql {
+class Use;
+}
 
 inline constexpr uint32_t kApplicationId = 0x4E554D31;  // "NUM1" in PRAGMA application_id
 inline constexpr int kSchemaVersion = 3;                // PRAGMA user_version we write
@@ -35,6 +42,9 @@ int exit_code(Fault f);
 struct StoreError {
     Fault fault = Fault::none;
     std::string message;
+    // A serialization failure or a deadlock on a server: the transaction may
+    // be run again (Store::in_write does, a bounded number of times).
+    bool retry = false;
     explicit operator bool() const { return fault != Fault::none; }
 };
 
@@ -162,19 +172,42 @@ struct Attempt {
     std::string mistakes, found, report, signature;
 };
 
-// One connection to a store file. Not shared between threads: a thread or a
-// process opens its own; SQLite serialises the writers (WAL, BEGIN IMMEDIATE).
+// What `store copy` did: rows copied per table, and whether both sides agree.
+struct CopyReport {
+    struct Table {
+        std::string name;
+        int64_t rows = 0;
+        std::string checksum;  // SHA-256 of the table's rows in key order, both sides
+    };
+    std::vector<Table> tables;
+};
+
+// One connection to a store. Not shared between threads: a thread or a
+// process opens its own. SQLite serialises the writers (WAL, BEGIN
+// IMMEDIATE); PostgreSQL runs each write SERIALIZABLE and the store runs it
+// again when the server refuses it for a concurrent one.
 class Store {
   public:
-    // Opens (and on first use creates and seeds) the store at `path`. Never
-    // modifies a file that is not a pupitre store, a store of a newer schema, or
-    // a damaged one: those give bad_data.
-    static Result<std::unique_ptr<Store>> open(const std::string& path, const Options& o = {});
+    // Opens (and on first use creates and seeds) the store at `target`: a file
+    // path, or a PostgreSQL connection string (postgresql://… or key=value;
+    // libpq's PG* variables, ~/.pgpass and service files apply). Never
+    // modifies a file or database that is not a pupitre store, a store of a
+    // newer schema, or a damaged one: those give bad_data.
+    static Result<std::unique_ptr<Store>> open(const std::string& target, const Options& o = {});
     ~Store();
     Store(const Store&) = delete;
     Store& operator=(const Store&) = delete;
 
+    // The store's name for people: its file, or its server URI without password.
     const std::string& path() const { return path_; }
+    // What it was opened with (a file path or a connection string), to open it again.
+    const std::string& target() const { return target_; }
+    // Where this PC keeps what belongs beside the store on local disk (the
+    // editor's recovery journal): the file itself for SQLite; for a server,
+    // a name under the default store's directory.
+    std::string local_path() const;
+    // "sqlite" or "postgresql".
+    std::string_view engine() const;
     const std::string& user() const { return user_; }
     bool created() const { return created_; }  // this open created the file
 
@@ -246,21 +279,35 @@ class Store {
     // Every attempt (of one exercise when `exercise` is given), oldest first.
     Result<std::vector<Attempt>> attempts(std::string_view exercise = "");
 
-    // PRAGMA data_version: it changes when another connection (another console)
+    // A number that changes when another connection (another console)
     // commits, not on this one's own writes. Polled to follow other consoles.
     Result<int64_t> data_version();
 
-    // PRAGMA integrity_check: "ok" or the problems found.
+    // "ok" or the problems found (SQLite's integrity and foreign key checks;
+    // on a server, the store's own cross-table checks).
     Result<std::string> integrity_check();
 
+    // Copies this whole store into `target`, which must hold no programs,
+    // exercises or attempts yet (store/copy.cpp): programs with every
+    // revision, machines with their values and audit, settings, IMD history,
+    // workshops, exercises and attempts, in one transaction on the target;
+    // then compares each table's row count and checksum on both sides.
+    Result<CopyReport> copy_to(Store& target);
+
   private:
-    Store() = default;
+    Store();
     StoreError fail(int rc, std::string_view what);
     StoreError exec(const char* sql);
-    sqlite3_stmt* prepare(const char* sql, StoreError& e);
+    sql::Use use(const char* sql);
     StoreError begin_write();
+    StoreError begin_read();
     StoreError commit();
     void rollback();
+    template <class F>
+    auto in_write(F&& body) -> decltype(body());
+    static Result<std::unique_ptr<Store>> open_sqlite(const std::string& path, const Options& o);
+    static Result<std::unique_ptr<Store>> open_postgres(const std::string& target,
+                                                        const Options& o);
     StoreError create_file();
     StoreError validate_and_migrate(bool& fresh);
     StoreError seed();
@@ -273,14 +320,25 @@ class Store {
     StoreError update_program(const char* sql, const std::string& what, int number,
                               const T&... more);
     Result<SaveResult> save_one(const Piece& p, int based_on, RevisionKind kind);
+    Result<std::string> revision_text(int number, int revision, const std::string& what);
+    Result<CopyReport::Table> table_sum(const char* name, const char* select, const char* kinds);
+
+  public:
+    struct StoredName;  // a corrector's or origin's columns (store/values.cpp)
+  private:
+    Result<std::vector<Change>> write_values(std::string_view machine,
+                                             const std::vector<std::pair<std::string, int64_t>>& v,
+                                             const std::vector<StoredName>& names,
+                                             std::string_view source, std::string_view profile,
+                                             const std::string& what);
     int64_t now_ms() const;
 
-    sqlite3* db_ = nullptr;
+    std::unique_ptr<db::Backend> db_;
     std::string path_;
+    std::string target_;
     std::string user_;
     bool created_ = false;
     Options opt_;
-    std::map<const char*, sqlite3_stmt*> stmts_;  // prepared once, keyed by the SQL literal
 };
 
 }  // namespace pupitre::store

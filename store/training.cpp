@@ -37,27 +37,28 @@ Attempt read_attempt(const sql::Use& u) {
 }  // namespace
 
 StoreError Store::put_exercise(std::string_view name, std::string_view text) {
-    StoreError e;
-    sql::Use u(
-        prepare("INSERT INTO exercises (name, text, added_ms, who) VALUES (?1, ?2, ?3, ?4) "
-                "ON CONFLICT (name) DO UPDATE SET text = ?2, added_ms = ?3, who = ?4",
-                e));
-    if (e) return e;
-    if (int rc = u.bind(1, name).bind(2, text).bind(3, now_ms()).bind(4, user_).step();
-        rc != SQLITE_DONE)
-        return fail(rc, tr("cannot store the exercise"));
-    return {};
+    return in_write([&]() -> StoreError {
+        sql::Use u =
+            use("INSERT INTO exercises (name, text, added_ms, who) VALUES (?1, ?2, ?3, ?4) "
+                "ON CONFLICT (name) DO UPDATE SET text = ?2, added_ms = ?3, who = ?4");
+        if (u.error) return u.error;
+        if (int rc = u.bind(1, name).bind(2, text).bind(3, now_ms()).bind(4, user_).step();
+            rc != db::kDone)
+            return fail(rc, tr("cannot store the exercise"));
+        return {};
+    });
 }
 
 Result<std::optional<std::string>> Store::exercise(std::string_view name) {
     Result<std::optional<std::string>> r;
     StoreError e;
-    sql::Use u(prepare("SELECT text FROM exercises WHERE name = ?1", e));
+    sql::Use u = use("SELECT text FROM exercises WHERE name = ?1");
+    e = u.error;
     if ((r.error = e)) return r;
     int rc = u.bind(1, name).step();
-    if (rc == SQLITE_ROW)
+    if (rc == db::kRow)
         r.value = u.str(0);
-    else if (rc != SQLITE_DONE)
+    else if (rc != db::kDone)
         r.error = fail(rc, tr("cannot read the exercises"));
     return r;
 }
@@ -65,11 +66,12 @@ Result<std::optional<std::string>> Store::exercise(std::string_view name) {
 Result<std::vector<std::string>> Store::exercises() {
     Result<std::vector<std::string>> r;
     StoreError e;
-    sql::Use u(prepare("SELECT name FROM exercises ORDER BY name", e));
+    sql::Use u = use("SELECT name FROM exercises ORDER BY name");
+    e = u.error;
     if ((r.error = e)) return r;
     int rc;
-    while ((rc = u.step()) == SQLITE_ROW) r.value.push_back(u.str(0));
-    if (rc != SQLITE_DONE) r.error = fail(rc, tr("cannot read the exercises"));
+    while ((rc = u.step()) == db::kRow) r.value.push_back(u.str(0));
+    if (rc != db::kDone) r.error = fail(rc, tr("cannot read the exercises"));
     return r;
 }
 
@@ -80,60 +82,63 @@ Result<std::optional<Attempt>> Store::open_attempt(std::string_view exercise,
     static const std::string sql = std::string("SELECT ") + kAttemptColumns +
                                    " FROM attempts WHERE exercise = ?1 AND student = ?2 AND "
                                    "submitted_ms IS NULL ORDER BY id DESC LIMIT 1";
-    sql::Use u(prepare(sql.c_str(), e));
+    sql::Use u = use(sql.c_str());
+    e = u.error;
     if ((r.error = e)) return r;
     int rc = u.bind(1, exercise).bind(2, student).step();
-    if (rc == SQLITE_ROW)
+    if (rc == db::kRow)
         r.value = read_attempt(u);
-    else if (rc != SQLITE_DONE)
+    else if (rc != db::kDone)
         r.error = fail(rc, tr("cannot read the attempts"));
     return r;
 }
 
 StoreError Store::start_attempt(Attempt& a) {
-    StoreError e;
-    sql::Use u(
-        prepare("INSERT INTO attempts (exercise, exercise_sha, student, machine, started_ms) "
-                "VALUES (?1, ?2, ?3, ?4, ?5)",
-                e));
-    if (e) return e;
     a.started_ms = now_ms();
-    if (int rc = u.bind(1, a.exercise)
+    return in_write([&]() -> StoreError {
+        sql::Use u =
+            use("INSERT INTO attempts (exercise, exercise_sha, student, machine, started_ms) "
+                "VALUES (?1, ?2, ?3, ?4, ?5) RETURNING id");
+        if (u.error) return u.error;
+        int rc = u.bind(1, a.exercise)
                      .bind(2, a.exercise_sha)
                      .bind(3, a.student)
                      .bind(4, a.machine)
                      .bind(5, a.started_ms)
                      .step();
-        rc != SQLITE_DONE)
-        return fail(rc, tr("cannot store the attempt"));
-    a.id = sqlite3_last_insert_rowid(db_);
-    return {};
+        if (rc != db::kRow) return fail(rc, tr("cannot store the attempt"));
+        a.id = u.i64(0);
+        if ((rc = u.step()) != db::kDone) return fail(rc, tr("cannot store the attempt"));
+        return {};
+    });
 }
 
 StoreError Store::add_crash(int64_t id) {
-    StoreError e;
-    sql::Use u(prepare("UPDATE attempts SET crashes = crashes + 1 WHERE id = ?1", e));
-    if (e) return e;
-    if (int rc = u.bind(1, id).step(); rc != SQLITE_DONE)
-        return fail(rc, tr("cannot store the attempt"));
-    return {};
+    return in_write([&]() -> StoreError {
+        sql::Use u = use("UPDATE attempts SET crashes = crashes + 1 WHERE id = ?1");
+        if (u.error) return u.error;
+        if (int rc = u.bind(1, id).step(); rc != db::kDone)
+            return fail(rc, tr("cannot store the attempt"));
+        return {};
+    });
 }
 
 StoreError Store::submit_attempt(const Attempt& a) {
-    StoreError e;
-    sql::Use u(prepare(
-        "UPDATE attempts SET submitted_ms = ?2, seed = ?3, score = ?4, seconds = ?5, "
-        "crashes = ?6, scrapped = ?7, mistakes = ?8, found = ?9, report = ?10, signature = ?11 "
-        "WHERE id = ?1 AND submitted_ms IS NULL",
-        e));
-    if (e) return e;
-    u.bind(1, a.id).bind(2, a.submitted_ms).bind(3, a.seed).bind(4, a.score).bind(5, a.seconds);
-    u.bind(6, a.crashes).bind(7, a.scrapped ? 1 : 0).bind(8, a.mistakes).bind(9, a.found);
-    u.bind(10, a.report).bind(11, a.signature);
-    if (int rc = u.step(); rc != SQLITE_DONE) return fail(rc, tr("cannot store the attempt"));
-    if (sqlite3_changes(db_) == 0)
-        return {Fault::not_found, tr("the attempt was submitted already")};
-    return {};
+    return in_write([&]() -> StoreError {
+        sql::Use u =
+            use("UPDATE attempts SET submitted_ms = ?2, seed = ?3, score = ?4, seconds = ?5, "
+                "crashes = ?6, scrapped = ?7, mistakes = ?8, found = ?9, report = ?10, signature = "
+                "?11 WHERE id = ?1 AND submitted_ms IS NULL RETURNING id");
+        if (u.error) return u.error;
+        u.bind(1, a.id).bind(2, a.submitted_ms).bind(3, a.seed).bind(4, a.score);
+        u.bind(5, a.seconds).bind(6, a.crashes).bind(7, a.scrapped ? 1 : 0);
+        u.bind(8, a.mistakes).bind(9, a.found).bind(10, a.report).bind(11, a.signature);
+        int rc = u.step();
+        if (rc == db::kDone) return {Fault::not_found, tr("the attempt was submitted already")};
+        if (rc != db::kRow) return fail(rc, tr("cannot store the attempt"));
+        if ((rc = u.step()) != db::kDone) return fail(rc, tr("cannot store the attempt"));
+        return {};
+    });
 }
 
 Result<std::vector<Attempt>> Store::attempts(std::string_view exercise) {
@@ -141,12 +146,13 @@ Result<std::vector<Attempt>> Store::attempts(std::string_view exercise) {
     StoreError e;
     static const std::string sql = std::string("SELECT ") + kAttemptColumns +
                                    " FROM attempts WHERE ?1 = '' OR exercise = ?1 ORDER BY id";
-    sql::Use u(prepare(sql.c_str(), e));
+    sql::Use u = use(sql.c_str());
+    e = u.error;
     if ((r.error = e)) return r;
     u.bind(1, exercise);
     int rc;
-    while ((rc = u.step()) == SQLITE_ROW) r.value.push_back(read_attempt(u));
-    if (rc != SQLITE_DONE) r.error = fail(rc, tr("cannot read the attempts"));
+    while ((rc = u.step()) == db::kRow) r.value.push_back(read_attempt(u));
+    if (rc != db::kDone) r.error = fail(rc, tr("cannot read the attempts"));
     return r;
 }
 

@@ -10,18 +10,18 @@
 
 namespace pupitre::store {
 
-namespace {
-
 // "D12.DX" -> corrector 12, field DX; "PREF.Z" -> origin PREF, axis Z: the
 // columns of a row of correctors or origins.
-struct StoredName {
+struct Store::StoredName {
     bool corrector = false;
     int d = 0;
     std::string field;  // corrector field, or origin kind
     std::string axis;
 };
 
-bool parse_name(std::string_view s, StoredName& n) {
+namespace {
+
+bool parse_name(std::string_view s, Store::StoredName& n) {
     ValueName v;
     if (!parse_value_name(s, v)) return false;
     n.corrector = v.kind == ValueName::Kind::corrector;
@@ -37,6 +37,10 @@ bool parse_name(std::string_view s, StoredName& n) {
     return true;
 }
 
+// LIMIT for "all": both engines read a limit this large as none (PostgreSQL
+// refuses SQLite's -1).
+constexpr int64_t kNoLimit = INT64_MAX;
+
 constexpr const char* kMachineExists = "SELECT 1 FROM machines WHERE name = ?1";
 constexpr const char* kInsertMachine =
     "INSERT INTO machines (name, profile, builtin, updated_ms) VALUES (?1, ?2, ?3, ?4)";
@@ -44,46 +48,45 @@ constexpr const char* kInsertMachine =
 }  // namespace
 
 StoreError Store::put_machine(std::string_view name, std::string_view profile) {
-    if (StoreError e = begin_write()) return e;
-    StoreError e;
-    {
-        sql::Use u(prepare(
-            "INSERT INTO machines (name, profile, builtin, updated_ms) VALUES (?1, ?2, 0, ?3) "
-            "ON CONFLICT (name) DO UPDATE SET profile = ?2, updated_ms = ?3",
-            e));
-        if (!e) {
-            u.bind(1, name).bind(2, profile).bind(3, now_ms());
-            if (int rc = u.step(); rc != SQLITE_DONE)
-                e = fail(rc, tr("cannot store the machine profile"));
+    return in_write([&]() -> StoreError {
+        StoreError e;
+        {
+            sql::Use u = use(
+                "INSERT INTO machines (name, profile, builtin, updated_ms) VALUES (?1, ?2, 0, ?3) "
+                "ON CONFLICT (name) DO UPDATE SET profile = ?2, updated_ms = ?3");
+            e = u.error;
+            if (!e) {
+                u.bind(1, name).bind(2, profile).bind(3, now_ms());
+                if (int rc = u.step(); rc != db::kDone)
+                    e = fail(rc, tr("cannot store the machine profile"));
+            }
         }
-    }
-    if (e) {
-        rollback();
         return e;
-    }
-    return commit();
+    });
 }
 
 Result<std::vector<std::string>> Store::machines() {
     Result<std::vector<std::string>> r;
     StoreError e;
-    sql::Use u(prepare("SELECT name FROM machines ORDER BY name", e));
+    sql::Use u = use("SELECT name FROM machines ORDER BY name");
+    e = u.error;
     if ((r.error = e)) return r;
     int rc;
-    while ((rc = u.step()) == SQLITE_ROW) r.value.push_back(u.str(0));
-    if (rc != SQLITE_DONE) r.error = fail(rc, tr("cannot list the machines"));
+    while ((rc = u.step()) == db::kRow) r.value.push_back(u.str(0));
+    if (rc != db::kDone) r.error = fail(rc, tr("cannot list the machines"));
     return r;
 }
 
 Result<std::string> Store::machine_profile(std::string_view name) {
     Result<std::string> r;
     StoreError e;
-    sql::Use u(prepare("SELECT profile FROM machines WHERE name = ?1", e));
+    sql::Use u = use("SELECT profile FROM machines WHERE name = ?1");
+    e = u.error;
     if ((r.error = e)) return r;
     int rc = u.bind(1, name).step();
-    if (rc == SQLITE_ROW)
+    if (rc == db::kRow)
         r.value = u.str(0);
-    else if (rc == SQLITE_DONE)
+    else if (rc == db::kDone)
         r.error = {Fault::not_found,
                    strf(tr("%s: no machine %s"), path_.c_str(), std::string(name).c_str())};
     else
@@ -94,15 +97,15 @@ Result<std::string> Store::machine_profile(std::string_view name) {
 Result<std::map<std::string, int64_t>> Store::values(std::string_view machine) {
     Result<std::map<std::string, int64_t>> r;
     StoreError e;
-    sql::Use u(
-        prepare("SELECT 'D' || d || '.' || field, value FROM correctors WHERE machine = ?1 "
-                "UNION ALL SELECT kind || '.' || axis, value FROM origins WHERE machine = ?1",
-                e));
+    sql::Use u =
+        use("SELECT 'D' || d || '.' || field, value FROM correctors WHERE machine = ?1 "
+            "UNION ALL SELECT kind || '.' || axis, value FROM origins WHERE machine = ?1");
+    e = u.error;
     if ((r.error = e)) return r;
     u.bind(1, machine);
     int rc;
-    while ((rc = u.step()) == SQLITE_ROW) r.value[u.str(0)] = u.i64(1);
-    if (rc != SQLITE_DONE) {
+    while ((rc = u.step()) == db::kRow) r.value[u.str(0)] = u.i64(1);
+    if (rc != db::kDone) {
         r.value.clear();
         r.error = fail(rc, tr("cannot read the correctors and origins"));
     }
@@ -123,9 +126,16 @@ Result<std::vector<Change>> Store::set_values(std::string_view machine,
         }
     const std::string what =
         strf(tr("cannot store the correctors and origins of %s"), std::string(machine).c_str());
-    if ((r.error = begin_write())) return r;
+    return in_write([&] { return write_values(machine, v, names, source, profile, what); });
+}
+
+// Inside set_values' transaction.
+Result<std::vector<Change>> Store::write_values(
+    std::string_view machine, const std::vector<std::pair<std::string, int64_t>>& v,
+    const std::vector<StoredName>& names, std::string_view source, std::string_view profile,
+    const std::string& what) {
+    Result<std::vector<Change>> r;
     auto abort = [&](StoreError e) {
-        rollback();
         r.value.clear();
         r.error = std::move(e);
         return r;
@@ -133,30 +143,32 @@ Result<std::vector<Change>> Store::set_values(std::string_view machine,
     StoreError e;
     bool known = false;
     {
-        sql::Use u(prepare(kMachineExists, e));
+        sql::Use u = use(kMachineExists);
+        e = u.error;
         if (e) return abort(e);
         int rc = u.bind(1, machine).step();
-        if (rc == SQLITE_ROW)
+        if (rc == db::kRow)
             known = true;
-        else if (rc != SQLITE_DONE)
+        else if (rc != db::kDone)
             return abort(fail(rc, what));
     }
     const int64_t now = now_ms();
     if (!known) {
-        sql::Use u(prepare(kInsertMachine, e));
+        sql::Use u = use(kInsertMachine);
+        e = u.error;
         if (e) return abort(e);
         u.bind(1, machine).bind(2, profile).bind(3, 0).bind(4, now);
-        if (int rc = u.step(); rc != SQLITE_DONE) return abort(fail(rc, what));
+        if (int rc = u.step(); rc != db::kDone) return abort(fail(rc, what));
     }
     for (size_t i = 0; i < v.size(); ++i) {
         const StoredName& n = names[i];
         Change c{v[i].first, std::nullopt, v[i].second};
         {
-            sql::Use u(prepare(
+            sql::Use u = use(
                 n.corrector
                     ? "SELECT value FROM correctors WHERE machine = ?1 AND d = ?2 AND field = ?3"
-                    : "SELECT value FROM origins WHERE machine = ?1 AND kind = ?3 AND axis = ?4",
-                e));
+                    : "SELECT value FROM origins WHERE machine = ?1 AND kind = ?3 AND axis = ?4");
+            e = u.error;
             if (e) return abort(e);
             u.bind(1, machine).bind(3, n.field);
             if (n.corrector)
@@ -164,33 +176,33 @@ Result<std::vector<Change>> Store::set_values(std::string_view machine,
             else
                 u.bind(4, n.axis);
             int rc = u.step();
-            if (rc == SQLITE_ROW)
+            if (rc == db::kRow)
                 c.old_value = u.i64(0);
-            else if (rc != SQLITE_DONE)
+            else if (rc != db::kDone)
                 return abort(fail(rc, what));
         }
         if (c.old_value && *c.old_value == c.new_value) continue;
         {
-            sql::Use u(prepare(
+            sql::Use u = use(
                 n.corrector
                     ? "INSERT INTO correctors (machine, d, field, value) VALUES (?1, ?2, ?3, ?5) "
-                      "ON CONFLICT DO UPDATE SET value = ?5"
+                      "ON CONFLICT (machine, d, field) DO UPDATE SET value = ?5"
                     : "INSERT INTO origins (machine, kind, axis, value) VALUES (?1, ?3, ?4, ?5) "
-                      "ON CONFLICT DO UPDATE SET value = ?5",
-                e));
+                      "ON CONFLICT (machine, kind, axis) DO UPDATE SET value = ?5");
+            e = u.error;
             if (e) return abort(e);
             u.bind(1, machine).bind(3, n.field).bind(5, c.new_value);
             if (n.corrector)
                 u.bind(2, n.d);
             else
                 u.bind(4, n.axis);
-            if (int rc = u.step(); rc != SQLITE_DONE) return abort(fail(rc, what));
+            if (int rc = u.step(); rc != db::kDone) return abort(fail(rc, what));
         }
         {
-            sql::Use u(
-                prepare("INSERT INTO audit (at_ms, who, machine, name, old, new, source) "
-                        "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7)",
-                        e));
+            sql::Use u =
+                use("INSERT INTO audit (at_ms, who, machine, name, old, new, source) "
+                    "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7)");
+            e = u.error;
             if (e) return abort(e);
             u.bind(1, now).bind(2, user_).bind(3, machine).bind(4, c.name);
             if (c.old_value)
@@ -198,13 +210,9 @@ Result<std::vector<Change>> Store::set_values(std::string_view machine,
             else
                 u.null(5);
             u.bind(6, c.new_value).bind(7, source);
-            if (int rc = u.step(); rc != SQLITE_DONE) return abort(fail(rc, what));
+            if (int rc = u.step(); rc != db::kDone) return abort(fail(rc, what));
         }
         r.value.push_back(std::move(c));
-    }
-    if ((e = commit())) {
-        r.value.clear();
-        r.error = e;
     }
     return r;
 }
@@ -212,14 +220,14 @@ Result<std::vector<Change>> Store::set_values(std::string_view machine,
 Result<std::vector<AuditRow>> Store::audit(std::string_view machine, int limit) {
     Result<std::vector<AuditRow>> r;
     StoreError e;
-    sql::Use u(
-        prepare("SELECT id, at_ms, who, machine, name, old, new, source FROM audit "
-                "WHERE ?1 = '' OR machine = ?1 ORDER BY id DESC LIMIT ?2",
-                e));
+    sql::Use u =
+        use("SELECT id, at_ms, who, machine, name, old, new, source FROM audit "
+            "WHERE ?1 = '' OR machine = ?1 ORDER BY id DESC LIMIT ?2");
+    e = u.error;
     if ((r.error = e)) return r;
-    u.bind(1, machine).bind(2, limit > 0 ? int64_t(limit) : int64_t(-1));
+    u.bind(1, machine).bind(2, limit > 0 ? int64_t(limit) : kNoLimit);
     int rc;
-    while ((rc = u.step()) == SQLITE_ROW) {
+    while ((rc = u.step()) == db::kRow) {
         AuditRow a;
         a.id = u.i64(0);
         a.at_ms = u.i64(1);
@@ -231,7 +239,7 @@ Result<std::vector<AuditRow>> Store::audit(std::string_view machine, int limit) 
         a.source = u.str(7);
         r.value.push_back(std::move(a));
     }
-    if (rc != SQLITE_DONE) {
+    if (rc != db::kDone) {
         r.value.clear();
         r.error = fail(rc, tr("cannot read the audit"));
     }
@@ -242,12 +250,13 @@ Result<std::vector<AuditRow>> Store::audit(std::string_view machine, int limit) 
 Result<std::optional<std::string>> Store::setting(std::string_view key) {
     Result<std::optional<std::string>> r;
     StoreError e;
-    sql::Use u(prepare("SELECT value FROM settings WHERE key = ?1", e));
+    sql::Use u = use("SELECT value FROM settings WHERE key = ?1");
+    e = u.error;
     if ((r.error = e)) return r;
     int rc = u.bind(1, key).step();
-    if (rc == SQLITE_ROW)
+    if (rc == db::kRow)
         r.value = u.str(0);
-    else if (rc != SQLITE_DONE)
+    else if (rc != db::kDone)
         r.error = fail(rc, tr("cannot read the settings"));
     return r;
 }
@@ -255,133 +264,126 @@ Result<std::optional<std::string>> Store::setting(std::string_view key) {
 Result<std::optional<Store::Workshop>> Store::workshop(std::string_view machine) {
     Result<std::optional<Workshop>> r;
     StoreError e;
-    sql::Use u(prepare("SELECT setup, part FROM workshops WHERE machine = ?1", e));
+    sql::Use u = use("SELECT setup, part FROM workshops WHERE machine = ?1");
+    e = u.error;
     if ((r.error = e)) return r;
     int rc = u.bind(1, machine).step();
-    if (rc == SQLITE_ROW)
+    if (rc == db::kRow)
         r.value = Workshop{u.str(0), u.str(1)};
-    else if (rc != SQLITE_DONE)
+    else if (rc != db::kDone)
         r.error = fail(rc, tr("cannot read the workshop"));
     return r;
 }
 
 StoreError Store::put_workshop(std::string_view machine, std::string_view setup,
                                std::string_view part) {
-    if (StoreError e = begin_write()) return e;
-    StoreError e;
-    {
-        if (!setup.empty()) {
-            sql::Use m(prepare(kMachineExists, e));
-            if (!e && m.bind(1, machine).step() == SQLITE_DONE) {
-                sql::Use add(prepare(kInsertMachine, e));
-                if (!e) {
-                    add.bind(1, machine).bind(2, "").bind(3, 0).bind(4, now_ms());
-                    if (int rc = add.step(); rc != SQLITE_DONE)
-                        e = fail(rc, tr("cannot store the workshop"));
+    return in_write([&]() -> StoreError {
+        StoreError e;
+        {
+            if (!setup.empty()) {
+                sql::Use m = use(kMachineExists);
+                e = m.error;
+                if (!e && m.bind(1, machine).step() == db::kDone) {
+                    sql::Use add = use(kInsertMachine);
+                    e = add.error;
+                    if (!e) {
+                        add.bind(1, machine).bind(2, "").bind(3, 0).bind(4, now_ms());
+                        if (int rc = add.step(); rc != db::kDone)
+                            e = fail(rc, tr("cannot store the workshop"));
+                    }
                 }
             }
+            const char* sql = setup.empty()
+                                  ? "DELETE FROM workshops WHERE machine = ?1"
+                                  : "INSERT INTO workshops (machine, setup, part, updated_ms, who) "
+                                    "VALUES (?1, ?2, ?3, ?4, ?5) ON CONFLICT (machine) DO UPDATE "
+                                    "SET setup = ?2, part = ?3, updated_ms = ?4, who = ?5";
+            if (e) return e;
+            sql::Use u = use(sql);
+            e = u.error;
+            if (!e) {
+                u.bind(1, machine);
+                if (!setup.empty()) u.bind(2, setup).bind(3, part).bind(4, now_ms()).bind(5, user_);
+                if (int rc = u.step(); rc != db::kDone)
+                    e = fail(rc, tr("cannot store the workshop"));
+            }
         }
-        const char* sql = setup.empty()
-                              ? "DELETE FROM workshops WHERE machine = ?1"
-                              : "INSERT INTO workshops (machine, setup, part, updated_ms, who) "
-                                "VALUES (?1, ?2, ?3, ?4, ?5) ON CONFLICT (machine) DO UPDATE "
-                                "SET setup = ?2, part = ?3, updated_ms = ?4, who = ?5";
-        sql::Use u(e ? nullptr : prepare(sql, e));
-        if (!e) {
-            u.bind(1, machine);
-            if (!setup.empty()) u.bind(2, setup).bind(3, part).bind(4, now_ms()).bind(5, user_);
-            if (int rc = u.step(); rc != SQLITE_DONE) e = fail(rc, tr("cannot store the workshop"));
-        }
-    }
-    if (e) {
-        rollback();
         return e;
-    }
-    return commit();
+    });
 }
 
 Result<int64_t> Store::data_version() {
     Result<int64_t> r;
-    StoreError e;
-    sql::Use u(prepare("PRAGMA data_version", e));
-    if ((r.error = e)) return r;
-    int rc = u.step();
-    if (rc == SQLITE_ROW)
-        r.value = u.i64(0);
-    else
-        r.error = fail(rc, tr("cannot read the data version"));
+    if (int rc = db_->data_version(r.value)) r.error = fail(rc, tr("cannot read the data version"));
     return r;
 }
 
 StoreError Store::set_setting(std::string_view key, std::string_view value) {
-    if (StoreError e = begin_write()) return e;
-    StoreError e;
-    {
-        sql::Use u(
-            prepare("INSERT INTO settings (key, value) VALUES (?1, ?2) "
-                    "ON CONFLICT (key) DO UPDATE SET value = ?2",
-                    e));
-        if (!e) {
-            if (int rc = u.bind(1, key).bind(2, value).step(); rc != SQLITE_DONE)
-                e = fail(rc, tr("cannot store the setting"));
+    return in_write([&]() -> StoreError {
+        StoreError e;
+        {
+            sql::Use u =
+                use("INSERT INTO settings (key, value) VALUES (?1, ?2) "
+                    "ON CONFLICT (key) DO UPDATE SET value = ?2");
+            e = u.error;
+            if (!e) {
+                if (int rc = u.bind(1, key).bind(2, value).step(); rc != db::kDone)
+                    e = fail(rc, tr("cannot store the setting"));
+            }
         }
-    }
-    if (e) {
-        rollback();
         return e;
-    }
-    return commit();
+    });
 }
 
 StoreError Store::add_imd(std::string_view machine, std::string_view block) {
-    if (StoreError e = begin_write()) return e;
-    StoreError e;
-    const int64_t now = now_ms();
-    {
-        sql::Use u(prepare(kMachineExists, e));
-        if (!e) {
-            int rc = u.bind(1, machine).step();
-            if (rc == SQLITE_DONE) {
-                sql::Use m(prepare(kInsertMachine, e));
-                if (!e) {
-                    m.bind(1, machine).bind(2, "").bind(3, 0).bind(4, now);
-                    if (int rc2 = m.step(); rc2 != SQLITE_DONE)
-                        e = fail(rc2, tr("cannot store the IMD block"));
+    return in_write([&]() -> StoreError {
+        StoreError e;
+        const int64_t now = now_ms();
+        {
+            sql::Use u = use(kMachineExists);
+            e = u.error;
+            if (!e) {
+                int rc = u.bind(1, machine).step();
+                if (rc == db::kDone) {
+                    sql::Use m = use(kInsertMachine);
+                    e = m.error;
+                    if (!e) {
+                        m.bind(1, machine).bind(2, "").bind(3, 0).bind(4, now);
+                        if (int rc2 = m.step(); rc2 != db::kDone)
+                            e = fail(rc2, tr("cannot store the IMD block"));
+                    }
+                } else if (rc != db::kRow) {
+                    e = fail(rc, tr("cannot store the IMD block"));
                 }
-            } else if (rc != SQLITE_ROW) {
-                e = fail(rc, tr("cannot store the IMD block"));
             }
         }
-    }
-    if (!e) {
-        sql::Use u(prepare(
-            "INSERT INTO imd_history (at_ms, who, machine, block) VALUES (?1, ?2, ?3, ?4)", e));
         if (!e) {
-            if (int rc = u.bind(1, now).bind(2, user_).bind(3, machine).bind(4, block).step();
-                rc != SQLITE_DONE)
-                e = fail(rc, tr("cannot store the IMD block"));
+            sql::Use u =
+                use("INSERT INTO imd_history (at_ms, who, machine, block) VALUES (?1, ?2, ?3, ?4)");
+            e = u.error;
+            if (!e) {
+                if (int rc = u.bind(1, now).bind(2, user_).bind(3, machine).bind(4, block).step();
+                    rc != db::kDone)
+                    e = fail(rc, tr("cannot store the IMD block"));
+            }
         }
-    }
-    if (e) {
-        rollback();
         return e;
-    }
-    return commit();
+    });
 }
 
 Result<std::vector<ImdEntry>> Store::imd_history(std::string_view machine, int limit) {
     Result<std::vector<ImdEntry>> r;
     StoreError e;
-    sql::Use u(
-        prepare("SELECT id, at_ms, who, machine, block FROM imd_history WHERE machine = ?1 "
-                "ORDER BY id DESC LIMIT ?2",
-                e));
+    sql::Use u =
+        use("SELECT id, at_ms, who, machine, block FROM imd_history WHERE machine = ?1 "
+            "ORDER BY id DESC LIMIT ?2");
+    e = u.error;
     if ((r.error = e)) return r;
-    u.bind(1, machine).bind(2, limit > 0 ? int64_t(limit) : int64_t(-1));
+    u.bind(1, machine).bind(2, limit > 0 ? int64_t(limit) : kNoLimit);
     int rc;
-    while ((rc = u.step()) == SQLITE_ROW)
+    while ((rc = u.step()) == db::kRow)
         r.value.push_back(ImdEntry{u.i64(0), u.i64(1), u.str(2), u.str(3), u.str(4)});
-    if (rc != SQLITE_DONE) {
+    if (rc != db::kDone) {
         r.value.clear();
         r.error = fail(rc, tr("cannot read the IMD history"));
     }

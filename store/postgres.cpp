@@ -1,0 +1,518 @@
+// The PostgreSQL backend: a store that a class shares on a server. libpq's
+// own environment and files apply (PGHOST, PGPORT, PGUSER, PGSSLMODE,
+// ~/.pgpass, service files): pupitre never asks for a password and never
+// writes one. Writes run SERIALIZABLE and are run again when the server
+// refuses one for a concurrent writer (Store::in_write); the store's other
+// consoles hear of a commit by NOTIFY. All of pupitre's PostgreSQL-only SQL
+// is here and in store/schema_pg.hpp.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <libpq-fe.h>
+
+#include <cstdlib>
+#include <cstring>
+#include <map>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "core/i18n.hpp"
+#include "store/backend.hpp"
+#include "store/schema_pg.hpp"
+#include "store/store.hpp"
+
+namespace pupitre::store {
+
+static_assert(kSchemaVersion == schema_pg::kCount, "both engines have every migration");
+
+namespace {
+
+// The codes this backend's calls return besides db::kOk/kRow/kDone: the
+// server's answer (its SQLSTATE is kept), or a connection that is gone.
+constexpr int kServerError = 1;
+constexpr int kConnectionLost = 2;
+
+constexpr Oid kByteaOid = 17;
+constexpr Oid kTextOid = 25;
+constexpr const char* kChannel = "pupitre_store";
+
+// ?N -> $N outside quoted strings: the statements both engines share are
+// written with SQLite's numbered parameters. Also says which numbers appear.
+std::string dollar_params(const char* sql, std::vector<bool>& used) {
+    std::string out;
+    char quote = 0;
+    for (const char* p = sql; *p; ++p) {
+        char c = *p;
+        if (quote) {
+            if (c == quote) quote = 0;
+            out += c;
+            continue;
+        }
+        if (c == '\'' || c == '"') quote = c;
+        if (c == '?' && p[1] >= '0' && p[1] <= '9') {
+            int n = 0;
+            while (p[1] >= '0' && p[1] <= '9') n = n * 10 + (*++p - '0');
+            if (int(used.size()) < n) used.resize(size_t(n), false);
+            used[size_t(n - 1)] = true;
+            out += '$' + std::to_string(n);
+            continue;
+        }
+        out += c;
+    }
+    return out;
+}
+
+// libpq's messages end in a newline and may hold several lines; a store
+// message is one line.
+std::string one_line(const char* msg) {
+    std::string s = msg ? msg : "";
+    while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
+    // "connection to server at "h" (127.0.0.1), port 5432 failed: FATAL:  x" -> "x"
+    for (const char* cut : {"failed: ", "FATAL:  ", "ERROR:  "}) {
+        size_t at = s.rfind(cut);
+        if (at != std::string::npos) s = s.substr(at + std::strlen(cut));
+    }
+    size_t nl = s.find('\n');
+    if (nl != std::string::npos) s = s.substr(0, nl);
+    return s;
+}
+
+bool contains(const std::string& s, const char* what) {
+    return s.find(what) != std::string::npos;
+}
+
+class PgBackend;
+
+class PgStmt final : public db::Stmt {
+  public:
+    PgStmt(PgBackend& b, std::string name, const char* sql);
+    ~PgStmt() override { reset(); }
+    void bind(int i, int64_t v) override { set(i, std::to_string(v), 0); }
+    void bind(int i, double v) override {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%.17g", v);
+        set(i, buf, 0);
+    }
+    void bind(int i, std::string_view t) override { set(i, std::string(t), 0); }
+    void blob(int i, std::string_view b) override { set(i, std::string(b), 1); }
+    void null(int i) override {
+        if (i >= 1 && size_t(i) <= values_.size()) values_[size_t(i - 1)].reset();
+    }
+    int step() override;
+    void reset() override {
+        if (res_) PQclear(res_);
+        res_ = nullptr;
+        row_ = -1;
+        for (auto& v : values_) v.reset();
+        for (int& f : formats_) f = 0;
+    }
+    bool is_null(int c) const override { return PQgetisnull(res_, row_, c) != 0; }
+    int64_t i64(int c) const override {
+        return is_null(c) ? 0 : std::strtoll(PQgetvalue(res_, row_, c), nullptr, 10);
+    }
+    double f64(int c) const override {
+        return is_null(c) ? 0 : std::strtod(PQgetvalue(res_, row_, c), nullptr);
+    }
+    std::string_view view(int c) const override;
+    void forget() { prepared_ = false; }  // the connection was made again
+
+  private:
+    void set(int i, std::string v, int format) {
+        if (i < 1 || size_t(i) > values_.size()) return;
+        values_[size_t(i - 1)] = std::move(v);
+        formats_[size_t(i - 1)] = format;
+    }
+    PgBackend& b_;
+    std::string name_, sql_;
+    std::vector<Oid> types_;
+    std::vector<std::optional<std::string>> values_;
+    std::vector<int> formats_;
+    bool prepared_ = false;
+    PGresult* res_ = nullptr;
+    int row_ = -1;
+    mutable std::vector<std::string> decoded_;  // bytea columns of the current row
+    mutable int decoded_row_ = -1;
+};
+
+class PgBackend final : public db::Backend {
+  public:
+    explicit PgBackend(PGconn* c) : c_(c) {}
+    ~PgBackend() override {
+        stmts_.clear();
+        PQfinish(c_);
+    }
+    PGconn* conn() const { return c_; }
+
+    // Keeps the server's answer when it is an error; returns the code.
+    int check(PGresult* r, bool keep = false) {
+        ExecStatusType st = r ? PQresultStatus(r) : PGRES_FATAL_ERROR;
+        if (st == PGRES_COMMAND_OK || st == PGRES_TUPLES_OK) {
+            if (!keep && r) PQclear(r);
+            return db::kOk;
+        }
+        const char* state = r ? PQresultErrorField(r, PG_DIAG_SQLSTATE) : nullptr;
+        sqlstate_ = state ? state : "";
+        message_ = one_line(r ? PQresultErrorMessage(r) : PQerrorMessage(c_));
+        if (message_.empty()) message_ = one_line(PQerrorMessage(c_));
+        if (r) PQclear(r);
+        return PQstatus(c_) == CONNECTION_BAD || sqlstate_.rfind("08", 0) == 0 ||
+                       sqlstate_.rfind("57P", 0) == 0
+                   ? kConnectionLost
+                   : kServerError;
+    }
+    int run(const char* sql) { return check(PQexec(c_, sql)); }
+
+    db::Stmt* prepare(const char* sql, int& rc) override {
+        if (int r = revive()) {
+            rc = r;
+            return nullptr;
+        }
+        auto it = stmts_.find(sql);
+        if (it != stmts_.end()) return it->second.get();
+        auto s = std::make_unique<PgStmt>(*this, "p" + std::to_string(stmts_.size()), sql);
+        return stmts_.emplace(sql, std::move(s)).first->second.get();
+    }
+    int exec(const char* sql) override { return run(sql); }
+    int begin_write() override {
+        if (int r = revive()) return r;
+        int rc = run("BEGIN ISOLATION LEVEL SERIALIZABLE");
+        in_tx_ = rc == db::kOk;
+        return rc;
+    }
+    // READ COMMITTED: after waiting for the lock, the next statement sees what
+    // the process that held it committed.
+    int begin_migration() override {
+        if (int r = revive()) return r;
+        int rc = run("BEGIN");
+        in_tx_ = rc == db::kOk;
+        if (rc == db::kOk) rc = run("SELECT pg_advisory_xact_lock(1314212145)");  // "NUM1"
+        return rc;
+    }
+    int begin_read() override {
+        if (int r = revive()) return r;
+        int rc = run("BEGIN ISOLATION LEVEL REPEATABLE READ READ ONLY");
+        in_tx_ = rc == db::kOk;
+        return rc;
+    }
+    // The other consoles hear of the change once it is committed.
+    int commit() override {
+        int rc = run("NOTIFY pupitre_store");
+        if (rc == db::kOk) rc = run("COMMIT");
+        in_tx_ = false;
+        return rc;
+    }
+    void rollback() override {
+        if (PQtransactionStatus(c_) != PQTRANS_IDLE && PQstatus(c_) == CONNECTION_OK)
+            PQclear(PQexec(c_, "ROLLBACK"));
+        in_tx_ = false;
+    }
+    bool retryable(int rc) const override {
+        return rc == kServerError && (sqlstate_ == "40001" || sqlstate_ == "40P01");
+    }
+    StoreError explain(int rc, const std::string& head) const override;
+    int read_meta(db::Meta& m) override;
+    const char* migration(int v) const override { return schema_pg::kMigrations[v]; }
+    int write_meta(int64_t version) override;
+    int data_version(int64_t& out) override;
+    int integrity(std::string& out) override;
+    int after_copy() override;
+    std::string_view engine() const override { return "postgresql"; }
+
+    int listen() { return run("LISTEN pupitre_store"); }
+
+  private:
+    // A connection the server dropped (restarted, stopped) is made again
+    // before the next transaction; never inside one, whose work is lost.
+    int revive() {
+        if (PQstatus(c_) == CONNECTION_OK) return db::kOk;
+        if (in_tx_) return kConnectionLost;
+        PQreset(c_);
+        if (PQstatus(c_) != CONNECTION_OK) {
+            sqlstate_ = "08006";
+            message_ = one_line(PQerrorMessage(c_));
+            return kConnectionLost;
+        }
+        for (auto& [sql, s] : stmts_) s->forget();
+        return listen();
+    }
+
+    PGconn* c_;
+    bool in_tx_ = false;
+    std::string sqlstate_, message_;
+    int64_t version_ = 0;  // notifications heard from other connections
+    std::map<const char*, std::unique_ptr<PgStmt>> stmts_;
+
+    friend class PgStmt;
+};
+
+PgStmt::PgStmt(PgBackend& b, std::string name, const char* sql) : b_(b), name_(std::move(name)) {
+    std::vector<bool> used;
+    sql_ = dollar_params(sql, used);
+    // A number the statement does not use (SQLite allows gaps) still needs a
+    // type on the server: text, never bound.
+    for (bool u : used) types_.push_back(u ? 0 : kTextOid);
+    values_.resize(types_.size());
+    formats_.assign(types_.size(), 0);
+}
+
+int PgStmt::step() {
+    if (res_) {
+        ++row_;
+        return row_ < PQntuples(res_) ? db::kRow : db::kDone;
+    }
+    PGconn* c = b_.conn();
+    if (!prepared_) {
+        if (int rc = b_.check(PQprepare(c, name_.c_str(), sql_.c_str(), int(types_.size()),
+                                        types_.empty() ? nullptr : types_.data())))
+            return rc;
+        prepared_ = true;
+    }
+    std::vector<const char*> vals(values_.size());
+    std::vector<int> lens(values_.size());
+    for (size_t i = 0; i < values_.size(); ++i) {
+        vals[i] = values_[i] ? values_[i]->data() : nullptr;
+        lens[i] = values_[i] ? int(values_[i]->size()) : 0;
+    }
+    PGresult* r = PQexecPrepared(c, name_.c_str(), int(vals.size()), vals.data(), lens.data(),
+                                 formats_.data(), 0);
+    if (int rc = b_.check(r, true)) return rc;
+    res_ = r;
+    row_ = 0;
+    decoded_row_ = -1;
+    return PQntuples(res_) > 0 ? db::kRow : db::kDone;
+}
+
+// Text columns as the server sent them; bytea (program texts) decoded from
+// the server's hex form, so the bytes are exactly those stored.
+std::string_view PgStmt::view(int c) const {
+    if (is_null(c)) return {};
+    const char* v = PQgetvalue(res_, row_, c);
+    if (PQftype(res_, c) != kByteaOid) return {v, size_t(PQgetlength(res_, row_, c))};
+    if (decoded_row_ != row_) {
+        decoded_.assign(size_t(PQnfields(res_)), std::string());
+        decoded_row_ = row_;
+    }
+    std::string& d = decoded_[size_t(c)];
+    if (d.empty()) {
+        size_t n = 0;
+        unsigned char* bytes = PQunescapeBytea(reinterpret_cast<const unsigned char*>(v), &n);
+        if (bytes) d.assign(reinterpret_cast<const char*>(bytes), n);
+        PQfreemem(bytes);
+    }
+    return d;
+}
+
+StoreError PgBackend::explain(int rc, const std::string& head) const {
+    const std::string& m = message_;
+    if (rc == db::kCorrupt)
+        return {Fault::bad_data,
+                head + strf(tr("the store is damaged (%s); nothing was changed: restore a backup"),
+                            "revision missing")};
+    if (rc == kConnectionLost)
+        return {Fault::io,
+                head + strf(tr("the server is gone (%s); nothing was changed"), m.c_str())};
+    const std::string& s = sqlstate_;
+    if (s == "40001" || s == "40P01")
+        return {Fault::io, head + tr("other consoles changed the same rows at the same time; "
+                                     "nothing was changed, try again")};
+    if (s == "53100")
+        return {Fault::io, head + tr("the server's disk is full; nothing was changed")};
+    if (s == "42501")
+        return {Fault::cannot_create,
+                head + strf(tr("permission denied (%s); nothing was changed"), m.c_str())};
+    if (s.rfind("23", 0) == 0 || s.rfind("22", 0) == 0)
+        return {Fault::bad_data,
+                head + strf(tr("refused by the store (%s); nothing was changed"), m.c_str())};
+    return {Fault::io, head + strf(tr("%s; nothing was changed"), m.c_str())};
+}
+
+int PgBackend::read_meta(db::Meta& m) {
+    PGresult* r = PQexec(c_,
+                         "SELECT (SELECT count(*) FROM pg_tables WHERE schemaname = "
+                         "current_schema()), to_regclass('pupitre_meta') IS NOT NULL, "
+                         "current_schema()");
+    if (int rc = check(r, true)) return rc;
+    int64_t tables = std::strtoll(PQgetvalue(r, 0, 0), nullptr, 10);
+    bool ours = PQgetvalue(r, 0, 1)[0] == 't';
+    std::string schema = PQgetvalue(r, 0, 2);
+    PQclear(r);
+    m.blank = tables == 0;
+    if (m.blank) return db::kOk;
+    if (!ours) {
+        m.foreign = true;
+        m.foreign_why =
+            strf(tr("a PostgreSQL database whose schema %s holds other tables"), schema.c_str());
+        return db::kOk;
+    }
+    r = PQexec(c_,
+               "SELECT (SELECT value FROM pupitre_meta WHERE key = 'application_id'), "
+               "(SELECT value FROM pupitre_meta WHERE key = 'schema_version')");
+    if (int rc = check(r, true)) return rc;
+    int64_t app = std::strtoll(PQgetvalue(r, 0, 0), nullptr, 10);
+    m.version = std::strtoll(PQgetvalue(r, 0, 1), nullptr, 10);
+    PQclear(r);
+    if (uint32_t(app) != kApplicationId) {
+        m.foreign = true;
+        m.foreign_why = strf(tr("a pupitre_meta table of another application"));
+    }
+    return db::kOk;
+}
+
+int PgBackend::write_meta(int64_t version) {
+    std::string sql = "INSERT INTO pupitre_meta (key, value) VALUES ('application_id', " +
+                      std::to_string(kApplicationId) + "), ('schema_version', " +
+                      std::to_string(version) +
+                      ") ON CONFLICT (key) DO UPDATE SET value = excluded.value";
+    return run(sql.c_str());
+}
+
+// The number of commits other connections announced since this one was made.
+int PgBackend::data_version(int64_t& out) {
+    if (int r = revive()) return r;
+    if (!PQconsumeInput(c_)) {
+        sqlstate_ = "08006";
+        message_ = one_line(PQerrorMessage(c_));
+        return kConnectionLost;
+    }
+    const int self = PQbackendPID(c_);
+    while (PGnotify* n = PQnotifies(c_)) {
+        if (n->be_pid != self) ++version_;
+        PQfreemem(n);
+    }
+    out = version_;
+    return db::kOk;
+}
+
+// The server keeps its own pages and keys sound; what the store checks is its
+// own rule across tables: every program's current revision exists.
+int PgBackend::integrity(std::string& out) {
+    PGresult* r = PQexec(c_,
+                         "SELECT p.number FROM programs p LEFT JOIN revisions r ON r.program = "
+                         "p.number AND r.rev = p.head WHERE r.rev IS NULL ORDER BY p.number");
+    if (int rc = check(r, true)) return rc;
+    out.clear();
+    for (int i = 0; i < PQntuples(r); ++i)
+        out += std::string(out.empty() ? "" : "\n") + "program " + PQgetvalue(r, i, 0) +
+               ": its current revision is missing";
+    PQclear(r);
+    if (out.empty()) out = "ok";
+    return db::kOk;
+}
+
+// Rows copied in with their ids: identity columns go on after the largest.
+int PgBackend::after_copy() {
+    for (const char* t : {"audit", "imd_history", "attempts"}) {
+        std::string sql = std::string("SELECT setval(pg_get_serial_sequence('") + t +
+                          "', 'id'), (SELECT max(id) FROM " + t + "), true) WHERE EXISTS " +
+                          "(SELECT 1 FROM " + t + ")";
+        if (int rc = run(sql.c_str())) return rc;
+    }
+    return db::kOk;
+}
+
+// A connection failure as one line a teacher or a student can act on.
+StoreError connect_error(const std::string& name, PGconn* c) {
+    std::string m = one_line(PQerrorMessage(c));
+    const char* user = PQuser(c);
+    const char* dbname = PQdb(c);
+    if (contains(m, "password authentication failed") || contains(m, "no password supplied") ||
+        contains(m, "pg_hba.conf") || contains(m, "authentication failed"))
+        return {Fault::cannot_create,
+                strf(tr("%s: authentication failed for %s (pupitre never asks for a password: "
+                        "use ~/.pgpass, PGPASSFILE or PGSERVICE)"),
+                     name.c_str(), user ? user : "?")};
+    if (contains(m, "does not exist") && contains(m, "database"))
+        return {Fault::not_found,
+                strf(tr("%s: the database %s does not exist (a teacher creates it: createdb)"),
+                     name.c_str(), dbname ? dbname : "?")};
+    if (contains(m, "Connection refused") || contains(m, "timeout expired") ||
+        contains(m, "could not translate host name") || contains(m, "No such file or directory") ||
+        contains(m, "Network is unreachable") || contains(m, "No route to host"))
+        return {Fault::io,
+                strf(tr("%s: the server does not answer (%s)"), name.c_str(), m.c_str())};
+    return {Fault::cannot_create, strf(tr("%s: cannot connect: %s"), name.c_str(), m.c_str())};
+}
+
+}  // namespace
+
+namespace db {
+
+// postgresql://user:secret@host:5432/db?sslmode=require -> postgresql://user@host:5432/db
+// host=h dbname=d user=u password=p -> postgresql://u@h/d
+std::string display_name(const std::string& target) {
+    if (!is_server(target)) return target;
+    char* err = nullptr;
+    PQconninfoOption* opts = PQconninfoParse(target.c_str(), &err);
+    if (!opts) {
+        PQfreemem(err);
+        return "postgresql://?";
+    }
+    std::map<std::string, std::string> v;
+    for (PQconninfoOption* o = opts; o->keyword; ++o)
+        if (o->val && *o->val) v[o->keyword] = o->val;
+    PQconninfoFree(opts);
+    std::string out = "postgresql://";
+    if (v.count("user")) out += v["user"] + "@";
+    out += v.count("host") ? v["host"] : (v.count("hostaddr") ? v["hostaddr"] : "");
+    if (v.count("port")) out += ":" + v["port"];
+    out += "/";
+    if (v.count("dbname")) out += v["dbname"];
+    if (v.count("service")) out += "?service=" + v["service"];
+    return out;
+}
+
+}  // namespace db
+
+Result<std::unique_ptr<Store>> Store::open_postgres(const std::string& target, const Options& o) {
+    Result<std::unique_ptr<Store>> r;
+    const std::string name = db::display_name(target);
+    // A server that does not answer is given up after 5 s unless the
+    // connection string or PGCONNECT_TIMEOUT says otherwise.
+    const char* timeout = std::getenv("PGCONNECT_TIMEOUT");
+    const char* keys[] = {"connect_timeout", "fallback_application_name", "dbname", nullptr};
+    const char* vals[] = {timeout && *timeout ? timeout : "5", "pupitre", target.c_str(), nullptr};
+    PGconn* c = PQconnectdbParams(keys, vals, 1);
+    if (!c) {
+        r.error = {Fault::io, strf(tr("%s: cannot connect: out of memory"), name.c_str())};
+        return r;
+    }
+    if (PQstatus(c) != CONNECTION_OK) {
+        r.error = connect_error(name, c);
+        PQfinish(c);
+        return r;
+    }
+    PQsetClientEncoding(c, "UTF8");
+    std::unique_ptr<Store> st(new Store);
+    st->path_ = name;
+    st->opt_ = o;
+    // On a server a person is their database login.
+    st->user_ = o.user.empty() ? std::string(PQuser(c)) : o.user;
+    auto backend = std::make_unique<PgBackend>(c);
+    PgBackend& b = *backend;
+    st->db_ = std::move(backend);
+    if (int rc = b.run("SET client_min_messages = warning")) {
+        r.error = st->fail(rc, tr("cannot open the store"));
+        return r;
+    }
+    if (!o.create) {
+        db::Meta m;
+        if (int rc = b.read_meta(m)) {
+            r.error = st->fail(rc, tr("cannot open the store"));
+            return r;
+        }
+        if (m.blank) {
+            r.error = {Fault::not_found, strf(tr("%s: no such store"), name.c_str())};
+            return r;
+        }
+    }
+    bool fresh = false;
+    if ((r.error = st->validate_and_migrate(fresh))) return r;
+    if (int rc = b.listen()) {
+        r.error = st->fail(rc, tr("cannot open the store"));
+        return r;
+    }
+    st->created_ = fresh;
+    r.value = std::move(st);
+    return r;
+}
+
+}  // namespace pupitre::store
