@@ -13,6 +13,8 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "store/store.hpp"
 
@@ -68,4 +70,43 @@ inline std::string shared_programs() {
     return exists(dir) ? dir : std::string();
 }
 
+// Where a test's stores live, on either engine: `place / "p.db"` is a file
+// in a private directory for SQLite; for PostgreSQL, a schema of its own on
+// the test server (PUPITRE_TEST_PG, started by scripts/test), made on first
+// use and dropped at the end, named by a connection string whose
+// search_path is that schema.
+class Place {
+  public:
+    explicit Place(std::string engine) : engine_(std::move(engine)) {}
+    ~Place();
+    Place(const Place&) = delete;
+    Place& operator=(const Place&) = delete;
+    std::string operator/(const std::string& name);
+    const std::string& engine() const { return engine_; }
+    const TempDir& dir() const { return dir_; }
+
+  private:
+    std::string engine_;
+    TempDir dir_;
+    std::vector<std::pair<std::string, std::string>> made_;  // name, target
+    std::vector<std::string> schemas_;
+};
+
+// Runs one SQL text on the test server as its administrator; "" when done,
+// else the server's message.
+std::string pg_admin(const std::string& sql);
+
+// The same cases on both engines. The PostgreSQL half is skipped (one line)
+// when no test server was started, and fails under CI, where one always is.
+class OnBothEngines : public ::testing::TestWithParam<std::string> {
+  protected:
+    void SetUp() override;
+};
+
+std::string engine_name(const ::testing::TestParamInfo<std::string>& p);
+
 }  // namespace pupitre::test
+
+#define PUPITRE_ON_BOTH_ENGINES(Suite)                                                  \
+    INSTANTIATE_TEST_SUITE_P(Engines, Suite, ::testing::Values("sqlite", "postgresql"), \
+                             ::pupitre::test::engine_name)

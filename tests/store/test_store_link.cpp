@@ -37,8 +37,11 @@ struct StoreRun {
 
 }  // namespace
 
-TEST(StoreLink, StoredProgramsAreProgramMemory) {
-    TempDir t;
+using StoreLink = test::OnBothEngines;
+PUPITRE_ON_BOTH_ENGINES(StoreLink);
+
+TEST_P(StoreLink, StoredProgramsAreProgramMemory) {
+    test::Place t(GetParam());
     auto s = test::open_store(t / "l.db");
     ASSERT_TRUE(s->save(900, "L1=L1+1\nL2=7\n", kNew, "").ok());  // a fragment: no % line
     ASSERT_TRUE(s->save(901, "(LEADER)\n%901\nL3=3\n", kNew, "").ok());
@@ -65,8 +68,8 @@ TEST(StoreLink, StoredProgramsAreProgramMemory) {
     EXPECT_EQ(r.L(3), 3);
 }
 
-TEST(StoreLink, DiagnosticsInAStoredFragmentNameItsLine) {
-    TempDir t;
+TEST_P(StoreLink, DiagnosticsInAStoredFragmentNameItsLine) {
+    test::Place t(GetParam());
     auto s = test::open_store(t / "l.db");
     ASSERT_TRUE(s->save(910, "L1=1\nG77 H999\n", kNew, "").ok());
     StoreRun r(*s, "mill", "%1\nG77 H910\nM2\n");
@@ -77,8 +80,8 @@ TEST(StoreLink, DiagnosticsInAStoredFragmentNameItsLine) {
     EXPECT_EQ(d.line, 2);
 }
 
-TEST(StoreLink, SeedsCorrectorsAndOriginsOfTheMachine) {
-    TempDir t;
+TEST_P(StoreLink, SeedsCorrectorsAndOriginsOfTheMachine) {
+    test::Place t(GetParam());
     auto s = test::open_store(t / "l.db");
     ASSERT_TRUE(s->set_values("lathe",
                               {{"D1.X", 15157},
@@ -114,8 +117,8 @@ TEST(StoreLink, SeedsCorrectorsAndOriginsOfTheMachine) {
     EXPECT_FALSE(m.count("D2.L"));
 }
 
-TEST(StoreLink, ProgramWritesPersistWithAnAudit) {
-    TempDir t;
+TEST_P(StoreLink, ProgramWritesPersistWithAnAudit) {
+    test::Place t(GetParam());
     auto s = test::open_store(t / "l.db");
     ASSERT_TRUE(s->set_values("lathe", {{"D1.X", 1000}}, "page CORR").ok());
     // Program %555 of the handbook loads tool gauges by program (000:7573-7735).
@@ -146,8 +149,8 @@ TEST(StoreLink, ProgramWritesPersistWithAnAudit) {
     EXPECT_EQ(again.L(2), 50);
 }
 
-TEST(StoreLink, MillFieldsAndRotaryOrigins) {
-    TempDir t;
+TEST_P(StoreLink, MillFieldsAndRotaryOrigins) {
+    test::Place t(GetParam());
     auto s = test::open_store(t / "l.db");
     StoreRun r(
         *s, "mill5",

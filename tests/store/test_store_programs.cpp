@@ -11,6 +11,13 @@ using namespace pupitre;
 using namespace pupitre::store;
 using test::TempDir;
 
+using StorePrograms = test::OnBothEngines;
+using StoreRoundTrip = test::OnBothEngines;
+using StoreValues = test::OnBothEngines;
+PUPITRE_ON_BOTH_ENGINES(StorePrograms);
+PUPITRE_ON_BOTH_ENGINES(StoreRoundTrip);
+PUPITRE_ON_BOTH_ENGINES(StoreValues);
+
 namespace {
 
 uint32_t be32_at(const std::string& bytes, size_t off) {
@@ -128,8 +135,8 @@ TEST(StoreOpen, UserComesFromTheEnvironment) {
     if (old) setenv("USER", keep.c_str(), 1);
 }
 
-TEST(StorePrograms, SaveReadListHistory) {
-    TempDir t;
+TEST_P(StorePrograms, SaveReadListHistory) {
+    test::Place t(GetParam());
     auto s = test::open_store(t / "p.db");
     const std::string v1 = "%12.3 (BRIDE)\r\nN10 G0 X0\r\nM2";  // CRLF, no final newline
     auto r = s->save(12, v1, kNew, "test");
@@ -181,8 +188,8 @@ TEST(StorePrograms, SaveReadListHistory) {
     EXPECT_EQ(seen, 3);
 }
 
-TEST(StorePrograms, ConflictKeepsBothAndIsResolvedByRestore) {
-    TempDir t;
+TEST_P(StorePrograms, ConflictKeepsBothAndIsResolvedByRestore) {
+    test::Place t(GetParam());
     auto s = test::open_store(t / "p.db");
     ASSERT_EQ(s->save(7, "%7\nN1 X1\n", kNew, "a").value.revision, 1);
     // Alice and Bob both load r1. Bob saves first.
@@ -221,8 +228,8 @@ TEST(StorePrograms, ConflictKeepsBothAndIsResolvedByRestore) {
     EXPECT_EQ(s->read(7).value.info.conflict, 0);
 }
 
-TEST(StorePrograms, DeleteKeepsTheHistory) {
-    TempDir t;
+TEST_P(StorePrograms, DeleteKeepsTheHistory) {
+    test::Place t(GetParam());
     auto s = test::open_store(t / "p.db");
     s->save(5, "%5\nN1\n", kNew, "");
     auto d = s->remove(5);
@@ -257,8 +264,8 @@ TEST(StorePrograms, DeleteKeepsTheHistory) {
     EXPECT_TRUE(s->read(6).ok());
 }
 
-TEST(StorePrograms, RefusedTexts) {
-    TempDir t;
+TEST_P(StorePrograms, RefusedTexts) {
+    test::Place t(GetParam());
     auto s = test::open_store(t / "p.db");
     EXPECT_EQ(s->save(9, "%8\nN1\n", kNew, "").error.fault, Fault::bad_data);  // says %8
     EXPECT_EQ(s->save(9, "%9\nN1\n%10\n", kNew, "").error.fault, Fault::bad_data);
@@ -271,8 +278,8 @@ TEST(StorePrograms, RefusedTexts) {
     EXPECT_TRUE(s->save(11, "N1 G0 X0\nN2 X1\n", kNew, "").ok());
 }
 
-TEST(StorePrograms, SaveAllIsAllOrNothing) {
-    TempDir t;
+TEST_P(StorePrograms, SaveAllIsAllOrNothing) {
+    test::Place t(GetParam());
     auto s = test::open_store(t / "p.db");
     std::vector<Piece> good{{20, "%20\nA\n", "import a"}, {21, "%21\nB\n", "import a"}};
     auto r = s->save_all(good);
@@ -331,10 +338,10 @@ TEST(StoreText, RefusesWhatCannotBeStoredFaithfully) {
 
 // export(import(x)) == x for every program of every shared file, and the
 // programs of a file exported one after the other give the file back.
-TEST(StoreRoundTrip, EverySharedProgram) {
+TEST_P(StoreRoundTrip, EverySharedProgram) {
     std::string dir = test::shared_programs();
     if (dir.empty()) GTEST_SKIP() << "../shared/programs not beside the repository";
-    TempDir t;
+    test::Place t(GetParam());
     Options o;
     o.seed = false;
     auto s = test::open_store(t / "rt.db", o);
@@ -368,8 +375,8 @@ TEST(StoreRoundTrip, EverySharedProgram) {
     EXPECT_EQ(s->integrity_check().value, "ok");
 }
 
-TEST(StoreValues, CorrectorsAndOriginsWithAudit) {
-    TempDir t;
+TEST_P(StoreValues, CorrectorsAndOriginsWithAudit) {
+    test::Place t(GetParam());
     auto s = test::open_store(t / "v.db");
     auto r =
         s->set_values("lathe", {{"D1.X", 15157}, {"D1.Z", 42126}, {"PREF.X", 12235}}, "page CORR");
@@ -405,8 +412,8 @@ TEST(StoreValues, CorrectorsAndOriginsWithAudit) {
     EXPECT_EQ(s->machine_profile("nope").error.fault, Fault::not_found);
 }
 
-TEST(StoreValues, SettingsAndImdHistory) {
-    TempDir t;
+TEST_P(StoreValues, SettingsAndImdHistory) {
+    test::Place t(GetParam());
     auto s = test::open_store(t / "v.db");
     EXPECT_FALSE(s->setting("page").value);
     ASSERT_FALSE(s->set_setting("page", "om"));
@@ -426,8 +433,8 @@ TEST(StoreValues, SettingsAndImdHistory) {
 
 // The workshop of a machine (issue 15): kept, replaced, removed; a machine
 // the store did not know is added.
-TEST(StoreValues, WorkshopIsKeptPerMachine) {
-    TempDir t;
+TEST_P(StoreValues, WorkshopIsKeptPerMachine) {
+    test::Place t(GetParam());
     auto s = test::open_store(t / "w.db");
     EXPECT_FALSE(s->workshop("lathe").value);
     ASSERT_FALSE(s->put_workshop("lathe", "kind = lathe\n", "0 0 10 0 10 10\n"));
