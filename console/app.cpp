@@ -19,6 +19,7 @@
 
 #include "console/cli.hpp"
 #include "console/exercise.hpp"
+#include "console/exercise_run.hpp"
 #include "console/keys.hpp"
 #include "console/line_readline.hpp"
 #include "console/session.hpp"
@@ -98,8 +99,7 @@ int event_loop(console::Session& s, console::Terminal& term, bool ascii) {
     bool dirty = true;
     for (;;) {
         if (term.resized()) dirty = true;
-        s.rows = term.rows();
-        s.cols = term.cols();
+        s.resize(term.cols(), term.rows());
         if (dirty) {
             if (canvas.width() != term.cols() || canvas.height() != term.rows())
                 canvas.resize(term.cols(), term.rows());
@@ -127,7 +127,7 @@ int event_loop(console::Session& s, console::Terminal& term, bool ascii) {
             dec.flush(keys);
         }
         for (const console::Key& k : keys) {
-            if (s.on_key(k) == console::Effect::quit || s.quit) return kOk;
+            if (s.on_key(k) == console::Effect::quit || s.quitting()) return kOk;
             dirty = true;
         }
         double dt = std::chrono::duration<double>(now - last).count();
@@ -187,7 +187,7 @@ void first_screen(console::Session& s, const MachineProfile& m) {
     if (std::ifstream f(user); f) {
         std::stringstream ss;
         ss << f.rdbuf();
-        std::string err = s.bindings.parse(ss.str(), user);
+        std::string err = s.add_bindings(ss.str(), user);
         if (!err.empty()) news = err;
     }
     if (auto r = s.store()->setting("console.program." + m.name); !r.error && r.value) {
@@ -240,7 +240,7 @@ int restart_on(const ConsoleArgs& a, console::Session& s, const std::string& nam
 void exercise_screen(console::Session& s, const training::Exercise& e) {
     if (e.program_number > 0 && s.memory().find(e.program_number)) s.sim().select(e.program_number);
     s.show_page(pages::PageId::exercise);
-    const std::string& note = s.exercise() ? s.exercise()->program_note : std::string();
+    const std::string& note = s.exercise() ? s.exercise()->program_note() : std::string();
     s.say(note.empty()
               ? strf(tr("exercise %s: the task is on this page (Alt-x); :submit hands it in"),
                      e.name.c_str())
@@ -294,7 +294,7 @@ int console(const ConsoleArgs& a) {
             return 128 + sig;
         }
     }
-    if (!s.restart_exercise.empty()) return restart_on(a, s, s.restart_exercise);
+    if (!s.restart_exercise().empty()) return restart_on(a, s, s.restart_exercise());
     return rc;
 }
 

@@ -1,23 +1,18 @@
-// The bindings table and the actions it names (see bindings.hpp).
+// The actions the bindings name (see bindings.hpp), and the Session's
+// routing of a key through them: the binding that applies in the page and
+// the mode, the soft keys and the HELP page drawn from the same rows.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "console/bindings.hpp"
 
 #include <algorithm>
 #include <charconv>
 
+#include "console/commands.hpp"
 #include "console/session.hpp"
 #include "core/i18n.hpp"
 #include "pages/pages.hpp"
 
-namespace pupitre::data {
-std::string_view bindings_txt();
-}
-
 namespace pupitre::console {
-
-std::string_view default_bindings() {
-    return data::bindings_txt();
-}
 
 namespace {
 
@@ -28,11 +23,11 @@ bool input_empty(const Session& s) {
     return s.input().text().empty();
 }
 bool on_dir(const Session& s, std::string_view) {
-    return s.page == pages::PageId::dir && input_empty(s);
+    return s.page() == pages::PageId::dir && input_empty(s);
 }
 bool jogging(const Session& s, std::string_view) {
     Mode m = s.sim().mode();
-    return (m == Mode::jog || m == Mode::inc) && input_empty(s) && s.page != pages::PageId::edit;
+    return (m == Mode::jog || m == Mode::inc) && input_empty(s) && s.page() != pages::PageId::edit;
 }
 
 int to_int(std::string_view a) {
@@ -47,15 +42,15 @@ Effect page(Session& s, std::string_view arg) {
         using P = pages::PageId;
         // The Cazeneuve's controller has no variables (003 chapter VI): no PARAM.
         const P after_corr = pages::is_caz(s.sim().machine()) ? P::pref : P::param;
-        s.show_page(s.page == P::param ? P::pref : s.page == P::pref ? P::corr : after_corr);
+        s.show_page(s.page() == P::param ? P::pref : s.page() == P::pref ? P::corr : after_corr);
         return Effect::redraw;
     }
     if (arg == "pos") {
-        s.show_page(s.page == pages::PageId::op ? pages::PageId::om : pages::PageId::op);
+        s.show_page(s.page() == pages::PageId::op ? pages::PageId::om : pages::PageId::op);
         return Effect::redraw;
     }
     if (arg == "prog") {  // the program text, again for its drawing
-        s.show_page(s.page == pages::PageId::prog ? pages::PageId::graph : pages::PageId::prog);
+        s.show_page(s.page() == pages::PageId::prog ? pages::PageId::graph : pages::PageId::prog);
         return Effect::redraw;
     }
     return s.command("page " + std::string(arg));
@@ -72,45 +67,43 @@ Effect mode_step(Session& s, int dir) {
 }
 
 Effect scroll(Session& s, std::string_view arg) {
-    int step = std::max(1, s.rows - 8);
-    s.scroll = std::max(0, s.scroll + to_int(arg) * step);
+    s.scroll_by(to_int(arg));
     return Effect::redraw;
 }
 
 Effect dir_move(Session& s, std::string_view arg) {
-    int n = int(s.programs().size());
-    s.dir_cursor = std::clamp(s.dir_cursor + to_int(arg), 0, std::max(0, n - 1));
+    s.move_dir_cursor(to_int(arg));
     return Effect::redraw;
 }
 
 bool on_corr(const Session& s, std::string_view) {
-    return s.page == pages::PageId::corr && input_empty(s);
+    return s.page() == pages::PageId::corr && input_empty(s);
 }
 
 Effect corr_move(Session& s, std::string_view arg) {
-    s.corr_cursor = std::clamp(s.corr_cursor + to_int(arg), 1, s.machine().correctors);
+    s.setting().move_corrector(to_int(arg));
     return Effect::redraw;
 }
 
 bool on_edit(const Session& s, std::string_view) {
-    return s.page == pages::PageId::edit && s.editor.is_open() && input_empty(s);
+    return s.page() == pages::PageId::edit && s.editing().editor().is_open() && input_empty(s);
 }
 
 Effect edit_move(Session& s, std::string_view arg) {
+    Editor& ed = s.editing().editor();
     if (arg == "home")
-        s.editor.cursor = 0;
+        ed.cursor = 0;
     else if (arg == "end")
-        s.editor.cursor = int(s.editor.lines().size()) - 1;
+        ed.cursor = int(ed.lines().size()) - 1;
     else
-        s.editor.move(to_int(arg) *
-                      (std::abs(to_int(arg)) == 10 ? std::max(1, s.rows - 8) / 10 : 1));
-    s.modify_pending = false;
+        ed.move(to_int(arg) * (std::abs(to_int(arg)) == 10 ? std::max(1, s.rows() - 8) / 10 : 1));
+    s.editing().stop_modifying();
     return Effect::redraw;
 }
 
 // Edit operations that answer "" or why they were refused.
 Effect edit_op(Session& s, std::string (Editor::*op)(), const char* done) {
-    std::string why = (s.editor.*op)();
+    std::string why = (s.editing().editor().*op)();
     if (!why.empty())
         s.say(why, true);
     else
@@ -119,38 +112,21 @@ Effect edit_op(Session& s, std::string (Editor::*op)(), const char* done) {
 }
 
 Effect edit_modify(Session& s, std::string_view) {
-    std::string why;
-    if (s.editor.cursor < s.editor.locked) {
-        s.say(tr("this block is already prepared"), true);
-        return Effect::redraw;
-    }
-    s.input().set_text(s.editor.lines()[size_t(s.editor.cursor)]);
-    s.modify_pending = true;
-    s.say(tr("modify the block, Enter replaces it"));
-    return Effect::redraw;
+    return s.editing().modify_block(s.input());
 }
 
 bool on_graph(const Session& s, std::string_view) {
-    return s.page == pages::PageId::graph && input_empty(s);
+    return s.page() == pages::PageId::graph && input_empty(s);
 }
 
 Effect dir_load(Session& s, std::string_view) {
     if (s.programs().empty()) return Effect::none;
-    s.select_program(s.programs()[size_t(s.dir_cursor)].number);
+    s.select_program(s.programs()[size_t(s.dir_cursor())].number);
     return Effect::redraw;
 }
 
 Effect dir_delete(Session& s, std::string_view) {
-    if (s.programs().empty()) return Effect::none;
-    int n = s.programs()[size_t(s.dir_cursor)].number;
-    if (s.pending_delete != n) {
-        s.pending_delete = n;
-        s.say(strf(tr("delete %%%d? press Del again to confirm"), n), true);
-        return Effect::redraw;
-    }
-    s.pending_delete = -1;
-    s.delete_program(n);
-    return Effect::redraw;
+    return s.delete_under_cursor();
 }
 
 // JOG: each press adds a short stretch while less than 0.1 s of motion is
@@ -254,8 +230,9 @@ const std::vector<Action> kActions = {
      N_("DELETE")},
     {"edit-mark", "mark: the blocks between the mark and the cursor form a range", on_edit,
      [](Session& s, std::string_view) {
-         s.editor.toggle_mark();
-         s.say(s.editor.mark >= 0
+         Editor& ed = s.editing().editor();
+         ed.toggle_mark();
+         s.say(ed.mark >= 0
                    ? tr("mark set: move the cursor, then M-w copies, C-w cuts, Del deletes")
                    : tr("mark cleared"));
          return Effect::redraw;
@@ -274,10 +251,10 @@ const std::vector<Action> kActions = {
      N_("PASTE")},
     // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
     {"undo", "undo the last change of an origin or corrector", always,
-     [](Session& s, std::string_view) { return s.undo(); }, N_("UNDO")},
+     [](Session& s, std::string_view) { return s.setting().undo(); }, N_("UNDO")},
     // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
     {"protect", "memory-protect key (locks programs, origins, correctors)", always,
-     [](Session& s, std::string_view) { return s.protect_command(""); }, N_("LOCK")},
+     [](Session& s, std::string_view) { return s.setting().protect_command(""); }, N_("LOCK")},
     // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
     {"inc-step", "next INC step (0.001 0.01 0.1 1 10 mm)", always, inc_step, N_("STEP")},
     // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
@@ -289,9 +266,9 @@ const std::vector<Action> kActions = {
     // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
     {"speed-next", "animation speed x1, x10, max", always,
      [](Session& s, std::string_view) {
-         s.speed = s.speed == Speed::real  ? Speed::x10
-                   : s.speed == Speed::x10 ? Speed::max
-                                           : Speed::real;
+         s.set_speed(s.speed() == Speed::real  ? Speed::x10
+                     : s.speed() == Speed::x10 ? Speed::max
+                                               : Speed::real);
          return Effect::redraw;
      },
      N_("SPEED")},
@@ -343,40 +320,16 @@ const std::vector<Action> kActions = {
     N_("optional stop switch (M01)"),
 };
 
-std::string_view trim(std::string_view s) {
-    while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-    while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r'))
-        s.remove_suffix(1);
-    return s;
-}
-
-std::string next_word(std::string_view& s) {
-    s = trim(s);
-    size_t e = 0;
-    while (e < s.size() && s[e] != ' ' && s[e] != '\t') ++e;
-    std::string w(s.substr(0, e));
-    s.remove_prefix(e);
-    return w;
-}
-
-bool matches(const std::string& want, std::string_view have) {
-    if (want.empty()) return true;
-    std::string_view w = want;
-    while (!w.empty()) {
-        size_t bar = w.find('|');
-        if (w.substr(0, bar) == have) return true;
-        if (bar == std::string_view::npos) break;
-        w.remove_prefix(bar + 1);
-    }
-    return false;
-}
-
 }  // namespace
 
 const Action* find_action(std::string_view name) {
     for (const Action& a : kActions)
         if (a.name == name) return &a;
     return nullptr;
+}
+
+bool is_action(std::string_view name) {
+    return find_action(name) != nullptr;
 }
 
 // The soft-key labels of the pages (F1-F7 and the like), for the catalogue.
@@ -457,73 +410,78 @@ std::string context_text(const Context& c) {
     return out;
 }
 
-std::string Bindings::parse(std::string_view text, std::string_view origin) {
-    int lineno = 0;
-    while (!text.empty()) {
-        size_t eol = text.find('\n');
-        std::string_view line = text.substr(0, eol);
-        text = eol == std::string_view::npos ? std::string_view{} : text.substr(eol + 1);
-        ++lineno;
-        if (size_t hash = line.find('#');
-            hash != std::string_view::npos && (hash == 0 || line[hash - 1] == ' '))
-            line = line.substr(0, hash);
-        line = trim(line);
-        if (line.empty()) continue;
-        auto bad = [&](const std::string& what) {
-            return std::string(origin) + ":" + std::to_string(lineno) + ": " + what;
-        };
-        Binding b;
-        b.line = lineno;
-        b.key_text = next_word(line);
-        if (!parse_key_name(b.key_text, b.key))
-            return bad(strf(tr("'%s' is not a key name"), b.key_text.c_str()));
-        b.action = next_word(line);
-        if (!find_action(b.action)) return bad(strf(tr("'%s' is not an action"), b.action.c_str()));
-        std::string w = next_word(line);
-        if (!w.empty() && w[0] != '@') {
-            b.arg = w;
-            w = next_word(line);
-        }
-        if (!w.empty()) {
-            if (w[0] != '@') return bad(tr("a context starts with @"));
-            std::string_view ctx = std::string_view(w).substr(1);
-            while (!ctx.empty()) {
-                size_t comma = ctx.find(',');
-                std::string_view c = ctx.substr(0, comma);
-                ctx = comma == std::string_view::npos ? std::string_view{} : ctx.substr(comma + 1);
-                if (c.rfind("page=", 0) == 0)
-                    b.when.page = c.substr(5);
-                else if (c.rfind("mode=", 0) == 0)
-                    b.when.mode = c.substr(5);
-                else if (c == "lathe" || c == "mill")
-                    b.when.kind = c;
-                else
-                    return bad(strf(tr("unknown context '%s'"), std::string(c).c_str()));
-            }
-        }
-        if (!next_word(line).empty()) return bad(tr("too many words"));
-        list_.push_back(std::move(b));
-    }
-    return {};
+// ---- the Session's key routing ----
+
+std::string Session::add_bindings(std::string_view text, std::string_view origin) {
+    return bindings_.parse(text, origin, is_action);
 }
 
-std::vector<const Binding*> Bindings::find(const Key& k, std::string_view page,
-                                           std::string_view mode, std::string_view kind) const {
-    std::vector<const Binding*> out;
-    for (auto it = list_.rbegin(); it != list_.rend(); ++it) {  // a later line wins
-        const Binding& b = *it;
-        if (!(b.key == k)) continue;
-        if (!b.when.page.empty() && !matches(b.when.page, page)) continue;
-        if (!b.when.mode.empty() && !matches(b.when.mode, mode)) continue;
-        if (!b.when.kind.empty() && b.when.kind != kind) continue;
-        out.push_back(&b);
+// The first binding of the key that applies here and can run, run.
+bool Session::run_binding(const Key& k, Effect& e) {
+    std::string pg(pages::page_word(page_)), md(mode_word(sim_->mode()));
+    for (const Binding* b : bindings_.find(k, pg, md, m_.lathe ? "lathe" : "mill")) {
+        const Action* a = find_action(b->action);
+        if (!a || !a->can_run(*this, b->arg)) continue;
+        e = a->run(*this, b->arg);
+        return true;
     }
-    auto weight = [](const Binding* b) {
-        return int(!b->when.page.empty()) + int(!b->when.mode.empty()) + int(!b->when.kind.empty());
-    };
-    std::stable_sort(out.begin(), out.end(),
-                     [&](auto* a, auto* b) { return weight(a) > weight(b); });
-    return out;
+    return false;
+}
+
+// A key on the "Terminal too small" screen, where the operator sees nothing
+// of the page: only what quits, and the input line's keys to type :quit
+// (not the page's bindings of those keys: Enter on DIR would load blind).
+Effect Session::small_screen_key(const Key& k) {
+    for (const Binding* b : bindings_.find(k, pages::page_word(page_), mode_word(sim_->mode()),
+                                           m_.lathe ? "lathe" : "mill"))
+        if (const Action* a = find_action(b->action); a && b->action == "quit")
+            return a->run(*this, b->arg);
+    if (k.code == KeyCode::escape && !k.alt && !k.ctrl) return cancel_input();
+    if (for_line_editor(k))
+        input_.feed(k.raw);
+    else
+        say(tr("the terminal is too small: enlarge it, or :quit"), true);
+    return Effect::redraw;
+}
+
+namespace {
+
+// Whether a "page" binding's argument names the page on screen (F2 is OP and
+// OM, F3 PROG and GRAPH, F5 the setting pages).
+bool shows_page(std::string_view arg, pages::PageId p) {
+    using P = pages::PageId;
+    if (arg == "pos") return p == P::op || p == P::om;
+    if (arg == "prog") return p == P::prog || p == P::graph;
+    if (arg == "set") return p == P::param || p == P::pref || p == P::corr;
+    return arg == pages::page_word(p);
+}
+
+}  // namespace
+
+// The soft keys (what F1-F10 do here, from the bindings) and the HELP
+// page's lines (every binding, every command).
+void Session::view_keys(pages::View& v) const {
+    std::string pg(pages::page_word(page_)), md(mode_word(sim_->mode()));
+    for (int i = 1; i <= 10; ++i) {
+        Key k;
+        k.code = KeyCode(int(KeyCode::f1) + i - 1);
+        for (const Binding* b : bindings_.find(k, pg, md, m_.lathe ? "lathe" : "mill")) {
+            const Action* a = find_action(b->action);
+            if (!a) continue;
+            v.softkeys.push_back(pages::SoftKey{"F" + std::to_string(i), soft_label(*a, b->arg),
+                                                a->name == "page" && shows_page(b->arg, page_)});
+            break;
+        }
+    }
+    for (const Binding& b : bindings_.list()) {
+        const Action* a = find_action(b.action);
+        if (a)
+            v.help.push_back(
+                pages::HelpLine{key_label(b.key_text), help_text(*a, b.arg), context_text(b.when)});
+    }
+    for (const Command& c : commands())
+        if (!c.usage.empty())
+            v.help.push_back(pages::HelpLine{std::string(c.usage), pages::tr_text(c.help), ""});
 }
 
 }  // namespace pupitre::console

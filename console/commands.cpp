@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "console/exercise.hpp"
+#include "console/exercise_run.hpp"
 #include "console/session.hpp"
 #include "console/workshop_io.hpp"
 #include "core/i18n.hpp"
@@ -119,7 +121,7 @@ Effect mode(Session& s, const CommandCall& c) {
     std::string_view name = c.arg(1);
     Mode m;
     if (!parse_mode(name, m)) {
-        if (name == "modif") return s.modif_start();
+        if (name == "modif") return s.editing().modif_start();
         if (name == "edit") return s.command("edit");
         return usage(s, find_command("mode")->usage);  // the table's: every word it takes
     }
@@ -145,11 +147,7 @@ Effect feed_hold(Session& s, const CommandCall&) {
 
 // RAZ also ends MODIF: the interrupted program is abandoned with the run.
 Effect raz(Session& s, const CommandCall&) {
-    if (s.modif) {
-        s.modif = false;
-        s.editor.close();
-        s.show_page(pages::PageId::prog);
-    }
+    s.editing().abandon_modif();
     s.sim().raz();
     s.say("RAZ");
     return Effect::redraw;
@@ -187,11 +185,11 @@ Effect override_knob(Session& s, const CommandCall& c, bool feed) {
 Effect speed(Session& s, const CommandCall& c) {
     std::string_view a = c.arg(1);
     if (a == "x1")
-        s.speed = Speed::real;
+        s.set_speed(Speed::real);
     else if (a == "x10")
-        s.speed = Speed::x10;
+        s.set_speed(Speed::x10);
     else if (a == "max")
-        s.speed = Speed::max;
+        s.set_speed(Speed::max);
     else
         return usage(s, ":speed x1|x10|max");
     return Effect::redraw;
@@ -223,7 +221,7 @@ Effect touch(Session& s, const CommandCall& c) {
     double v;
     int axis;
     if (!axis_value(c, 1, axis, v)) return usage(s, tr(":touch AXIS VALUE, e.g. :touch Z 0"));
-    return s.touch(axis, v);
+    return s.setting().touch(axis, v);
 }
 
 // ---- the workshop (pupitre-setup(5)) ----
@@ -283,7 +281,7 @@ Effect shim(Session& s, const CommandCall& c) {
     if (!number(c.arg(1), mm) || mm < 0.005 || mm > 50 || !c.arg(2).empty())
         return usage(s, tr(":shim MM (0.005 to 50) or :shim off"));
     w->set_shim(mm);
-    s.note_shim(mm);
+    if (ExerciseRun* x = s.exercise()) x->note_shim(mm);
     s.say(strf(tr("a %s mm shim on the part: a jog stops when the tool pinches it; subtract it "
                   "when you touch off"),
                pages::fmt_len(mm).c_str()));
@@ -312,7 +310,7 @@ Effect gauge(Session& s, const CommandCall& c) {
     if (!number(c.arg(1), mm) || mm < 1 || mm > 500 || !c.arg(2).empty())
         return usage(s, tr(":gauge MM (1 to 500) or :gauge off"));
     w->set_gauge_block(mm);
-    s.note_shim(mm);
+    if (ExerciseRun* x = s.exercise()) x->note_shim(mm);
     s.say(strf(tr("a %s mm gauge block against the jaws' face, 2 mm above the bar: a jog stops "
                   "on its end"),
                pages::fmt_len(mm).c_str()));
@@ -351,17 +349,17 @@ Effect part(Session& s, const CommandCall& c) {
 // :witness, :witness off, :witness DIA [FACE] (console/witness.cpp).
 Effect witness(Session& s, const CommandCall& c) {
     double dia = std::nan(""), face = 0;
-    if (c.words.size() == 2 && c.arg(1) == "off") return s.witness(0, 0);
+    if (c.words.size() == 2 && c.arg(1) == "off") return s.setting().witness(0, 0);
     if (c.words.size() > 3 || (c.words.size() > 1 && (!number(c.arg(1), dia) || dia <= 0)) ||
         (c.words.size() == 3 && !number(c.arg(2), face)))
         return usage(s, ":witness DIA [FACE] | :witness off");
-    return s.witness(dia, face);
+    return s.setting().witness(dia, face);
 }
 
 Effect tangent(Session& s, const CommandCall& c) {
     const int axis = axis_word(c.arg(1));
     if (c.words.size() != 2 || (axis != X && axis != Z)) return usage(s, ":tangent X|Z");
-    return s.tangent(axis);
+    return s.setting().tangent(axis);
 }
 
 Effect measure(Session& s, const CommandCall& c) {
@@ -373,8 +371,8 @@ Effect measure(Session& s, const CommandCall& c) {
     bool ok = dn.size() > 1 && (dn[0] == 'D' || dn[0] == 'd') && integer(dn.substr(1), d) &&
               axis_value(c, 2, axis, v);
     if (!ok) return usage(s, tr(":measure Dn AXIS VALUE, e.g. :measure D2 X 59.978"));
-    s.corr_cursor = int(d);
-    return s.measure(int(d), axis, v);
+    s.setting().choose_corrector(int(d));
+    return s.setting().measure(int(d), axis, v);
 }
 
 // ---- the program store and the editor ----
@@ -392,24 +390,25 @@ Effect edit(Session& s, const CommandCall& c) {
     long n;
     std::string_view number = drop_prefix(c.arg(1), "%");
     if (number.empty()) {
-        if (s.editor.is_open()) {
+        if (s.editing().editor().is_open()) {
             s.show_page(pages::PageId::edit);
             return Effect::redraw;
         }
-        if (s.page == pages::PageId::dir && !s.programs().empty())
-            return s.edit_open(s.programs()[size_t(s.dir_cursor)].number);
-        if (s.sim().selected() >= 0) return s.edit_open(s.sim().selected());
+        if (s.page() == pages::PageId::dir && !s.programs().empty())
+            return s.editing().open(s.programs()[size_t(s.dir_cursor())].number);
+        if (s.sim().selected() >= 0) return s.editing().open(s.sim().selected());
         return usage(s, ":edit N");
     }
     if (!integer(number, n) || n < 0 || n > 99999) return usage(s, ":edit N");
-    return s.edit_open(int(n));
+    return s.editing().open(int(n));
 }
 
 Effect goto_block(Session& s, const CommandCall& c) {
-    if (!s.editor.is_open()) return usage(s, tr(":edit N first"));
+    Editor& ed = s.editing().editor();
+    if (!ed.is_open()) return usage(s, tr(":edit N first"));
     long n;
     std::string_view label = drop_prefix(c.arg(1), "Nn");
-    bool ok = integer(label, n) && s.editor.goto_n(n);
+    bool ok = integer(label, n) && ed.goto_n(n);
     s.show_page(pages::PageId::edit);
     if (!ok) s.say(strf(tr("no block N%s"), std::string(label).c_str()), true);
     return Effect::redraw;
@@ -417,21 +416,23 @@ Effect goto_block(Session& s, const CommandCall& c) {
 
 // The text searched is the rest of the line after one blank: it may hold blanks.
 Effect find_text(Session& s, const CommandCall& c) {
-    if (!s.editor.is_open()) return usage(s, tr(":edit N first"));
+    Editor& ed = s.editing().editor();
+    if (!ed.is_open()) return usage(s, tr(":edit N first"));
     std::string_view text = c.rest();
-    bool ok = s.editor.find(text.empty() ? text : text.substr(1));
+    bool ok = ed.find(text.empty() ? text : text.substr(1));
     s.show_page(pages::PageId::edit);
     if (!ok) s.say(tr("not found"), true);
     return Effect::redraw;
 }
 
 Effect renum(Session& s, const CommandCall& c) {
-    if (!s.editor.is_open()) return usage(s, tr(":edit N first"));
+    Editor& ed = s.editing().editor();
+    if (!ed.is_open()) return usage(s, tr(":edit N first"));
     long start = 10, step = 10;
     if (c.words.size() > 1 && !integer(c.words[1], start)) return usage(s, ":renum [START [STEP]]");
     if (c.words.size() > 2 && !integer(c.words[2], step)) return usage(s, ":renum [START [STEP]]");
     if (start < 0 || step < 1) return usage(s, ":renum [START [STEP]]");
-    int k = s.editor.renumber(start, step);
+    int k = ed.renumber(start, step);
     s.say(strf(tr("%d blocks renumbered from N%ld by %ld; G77/G79/cycle references follow"), k,
                start, step));
     return Effect::redraw;
@@ -440,7 +441,57 @@ Effect renum(Session& s, const CommandCall& c) {
 Effect restore(Session& s, const CommandCall& c) {
     long r;
     if (!integer(c.arg(1), r)) return usage(s, tr(":restore REV (see :history)"));
-    return s.edit_restore(int(r));
+    return s.editing().restore(int(r));
+}
+
+// :exercise NAME: checked here (it exists, it is for this kind of machine,
+// nothing unsaved), then the console starts again on it.
+Effect start_exercise(Session& s, std::string_view name) {
+    if (s.exercise() && !s.exercise()->graded()) {
+        s.say(tr("an exercise is in progress: :submit ends it"), true);
+        return Effect::redraw;
+    }
+    if (s.sim().in_cycle()) {
+        s.say(tr("a program is in cycle"), true);
+        return Effect::redraw;
+    }
+    if (const Editor& ed = s.editing().editor(); ed.is_open() && ed.dirty && !s.editing().modif()) {
+        s.say(strf(tr("%%%d has unsaved changes: :save or :close! first"), ed.number), true);
+        return Effect::redraw;
+    }
+    training::Exercise e;
+    if (std::string why = find_exercise(s.store(), std::string(name), e); !why.empty()) {
+        s.say(why, true);
+        return Effect::redraw;
+    }
+    if (!s.store()) {
+        s.say(tr("an exercise needs the store"), true);
+        return Effect::redraw;
+    }
+    s.editing().release_lease();
+    return s.restart_on(std::string(name));
+}
+
+Effect exercise(Session& s, const CommandCall& c) {
+    std::string_view args = c.rest();
+    while (!args.empty() && args.front() == ' ') args.remove_prefix(1);
+    while (!args.empty() && args.back() == ' ') args.remove_suffix(1);
+    if (!args.empty() && args != "show") return start_exercise(s, args);
+    if (!s.exercise()) {
+        s.say(tr("no exercise in progress: pupitre exercise NAME starts one"), true);
+        return Effect::redraw;
+    }
+    s.show_page(pages::PageId::exercise);
+    return Effect::redraw;
+}
+
+// :submit: the exercise run grades the attempt.
+Effect submit(Session& s, const CommandCall&) {
+    if (!s.exercise()) {
+        s.say(tr("no exercise in progress: pupitre exercise NAME starts one"), true);
+        return Effect::redraw;
+    }
+    return s.exercise()->submit();
 }
 
 Effect help_page(Session& s, const CommandCall&) {
@@ -516,15 +567,15 @@ constexpr Command kCommands[] = {
      N_("a gauge block of MM against the lathe's jaws: a jog stops on its end"), gauge},
     {"exercise", ":exercise [NAME]",
      N_("the EXERCISE page: the task, the report once submitted; NAME: start that exercise"),
-     [](Session& s, const CommandCall& c) { return s.exercise_command(c.rest()); }},
+     exercise},
     {"submit", ":submit",
      N_("hand in the exercise: the values entered and the part are graded, the truth shown"),
-     [](Session& s, const CommandCall&) { return s.submit_exercise(); }},
+     submit},
     {"undo", ":undo", N_("undo the last change of an origin or a corrector"),
-     [](Session& s, const CommandCall&) { return s.undo(); }},
+     [](Session& s, const CommandCall&) { return s.setting().undo(); }},
     {"protect", ":protect on|off [PIN]",
      N_("the memory-protect key: locks programs, origins and correctors"),
-     [](Session& s, const CommandCall& c) { return s.protect_command(c.rest()); }},
+     [](Session& s, const CommandCall& c) { return s.setting().protect_command(c.rest()); }},
     {"", ":protect pin [NEWPIN]", N_("set (or remove) the PIN that unlocks the protection"),
      nullptr},
     {"edit", ":edit N",
@@ -532,22 +583,22 @@ constexpr Command kCommands[] = {
      N_("EDIT: open program %N (new if absent; without N the one selected)"), edit},
     {"save save!", ":save",
      N_("save the program edited, after a syntax check (:save! saves despite an error)"),
-     [](Session& s, const CommandCall& c) { return s.edit_save(forced(c)); }},
+     [](Session& s, const CommandCall& c) { return s.editing().save(forced(c)); }},
     {"goto", ":goto Nnnn", N_("EDIT: the cursor to block Nnnn"), goto_block},
     {"find", ":find TEXT", N_("EDIT: the next block containing TEXT"), find_text},
     {"renum", ":renum [START [STEP]]",
      N_("EDIT: renumber the N labels (default 10 10) and their references"), renum},
     {"history", ":history / :restore REV",
      N_("EDIT: the revisions of the program, and making one current again"),
-     [](Session& s, const CommandCall&) { return s.edit_history(); }},
+     [](Session& s, const CommandCall&) { return s.editing().history(); }},
     {"restore", "", "", restore},
     {"close close!", ":close",
      N_("EDIT: close the program (asks before dropping unsaved changes; :close! does not)"),
-     [](Session& s, const CommandCall& c) { return s.close_command(forced(c)); }},
+     [](Session& s, const CommandCall& c) { return s.editing().close(forced(c)); }},
     {"recover", ":recover / :discard",
      N_("EDIT: load the changes an earlier session left unsaved, or drop them"),
-     [](Session& s, const CommandCall&) { return s.recover_command(false); }},
-    {"discard", "", "", [](Session& s, const CommandCall&) { return s.recover_command(true); }},
+     [](Session& s, const CommandCall&) { return s.editing().recover(false); }},
+    {"discard", "", "", [](Session& s, const CommandCall&) { return s.editing().recover(true); }},
     {"", ":mode modif", N_("MODIF: change the blocks to come of an interrupted program"), nullptr},
     {"quit q quit! q!", ":quit",
      N_("leave the console, also Ctrl-C (asks before dropping unsaved changes; :quit! does not)"),
@@ -590,62 +641,12 @@ bool Session::quits(std::string_view line) {
     return c && c->names.substr(0, c->names.find(' ')) == "quit";
 }
 
-// A key on the "Terminal too small" screen, where the operator sees nothing
-// of the page: only what quits, and the input line's keys to type :quit
-// (not the page's bindings of those keys: Enter on DIR would load blind).
-Effect Session::small_screen_key(const Key& k) {
-    for (const Binding* b : bindings.find(k, pages::page_word(page), mode_word(sim_->mode()),
-                                          m_.lathe ? "lathe" : "mill"))
-        if (const Action* a = find_action(b->action); a && b->action == "quit")
-            return a->run(*this, b->arg);
-    if (k.code == KeyCode::escape && !k.alt && !k.ctrl) return cancel_input();
-    if (for_line_editor(k))
-        input_.feed(k.raw);
-    else
-        say(tr("the terminal is too small: enlarge it, or :quit"), true);
-    return Effect::redraw;
-}
-
-// Cycle Start, after MODIF's changed blocks are taken in.
-Effect Session::cycle_command() {
-    if (!modif_apply()) return Effect::redraw;
-    if (std::string why = sim().cycle_start(); !why.empty()) {
-        say(why, true);
-        return Effect::redraw;
+// The first name of each command: not its aliases (:q) nor its '!' forms.
+void Session::complete_command(std::string_view word, std::vector<std::string>& out) const {
+    for (const Command& c : commands()) {
+        std::string name = ":" + std::string(c.names.substr(0, c.names.find(' ')));
+        if (c.run && name.rfind(word, 0) == 0) out.push_back(name);
     }
-    // The run's end is news even when it comes within one frame ("max").
-    last_state_ = sim().state();
-    Mode m = sim().mode();
-    bool runs_program =
-        m == Mode::automatic || m == Mode::single || m == Mode::dry || m == Mode::test;
-    if (!sim().message().empty())
-        say(sim().message());
-    else if (sim().selected() >= 0 && runs_program)
-        say(strf(tr("Cycle Start: %%%d in %s"), sim().selected(),
-                 std::string(mode_name(m)).c_str()));
-    else
-        say(strf(tr("Cycle Start (%s)"), std::string(mode_name(m)).c_str()));
-    return Effect::redraw;
-}
-
-// :close asks before dropping unsaved changes, :close! does not.
-Effect Session::close_command(bool force) {
-    if (modif) return usage(*this, tr(":close is for EDIT; MODIF ends with Cycle Start or RAZ"));
-    if (!editor.is_open()) return usage(*this, tr(":edit N first"));
-    int n = editor.number;
-    auto close = [this, n] {
-        bool dirty = editor.dirty;
-        editor.close();
-        if (dirty) drop_journal(n);  // its own; an earlier session's stays for :recover
-        release_lease();
-        say(dirty ? tr("editor closed (unsaved changes dropped)") : tr("editor closed"));
-    };
-    if (editor.dirty && !force) {
-        confirm(strf(tr("%%%d has unsaved changes: close and drop them?"), n), close);
-        return Effect::redraw;
-    }
-    close();
-    return Effect::redraw;
 }
 
 }  // namespace pupitre::console

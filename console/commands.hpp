@@ -1,12 +1,14 @@
 // The table of the ':' commands (pupitre(1), COMMANDS): one row per command, read by the
-// dispatch (Session::command), the HELP page, completion and the man-page check
-// (tests/console/man_sync.py parses the rows in console/commands.cpp).
+// dispatch (Session::command, which commands.cpp holds beside the rows), the
+// HELP page, completion and the man-page check (tests/console/man_sync.py
+// parses the rows in console/commands.cpp). A row routes its command to the
+// Session or to the desk that owns it.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 #include <span>
 #include <string_view>
 
-#include "console/bindings.hpp"
+#include "console/desk.hpp"
 
 namespace pupitre::console {
 

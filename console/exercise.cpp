@@ -16,7 +16,6 @@
 #include <string_view>
 
 #include "console/refusal.hpp"
-#include "console/session.hpp"
 #include "core/i18n.hpp"
 #include "core/sha256.hpp"
 #include "core/workshop/workshop.hpp"

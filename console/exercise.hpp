@@ -1,7 +1,8 @@
 // The console's side of training (issue 16, pupitre-exercise(5)): the class's
-// key, finding an exercise, and the attempt a Session runs on a hidden
-// setup. The truth is drawn here and handed to the workshop; no page,
-// command, trace or log shows it before :submit.
+// key, finding an exercise, the part scrambled in the store and the
+// attempt's signature. The attempt itself is the exercise run
+// (exercise_run.hpp); no page, command, trace or log shows its truth before
+// :submit.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 #include <optional>
@@ -38,20 +39,6 @@ std::string find_exercise(store::Store* st, const std::string& name, training::E
 
 // The student: `asked`, else the OS user.
 std::string student_name(const std::string& asked);
-
-// An attempt in progress, or graded.
-struct ExerciseRun {
-    training::Exercise ex;
-    std::string student, key;
-    uint64_t seed = 0;
-    workshop::Setup truth;
-    store::Attempt attempt;
-    training::Context ctx;  // the shims placed, the diameters read
-    size_t crashes_seen = 0;
-    std::string program_note;  // the store's program the exercise's replaced, said at start
-    std::optional<training::Grade> grade;
-    std::vector<std::string> report;  // after :submit
-};
 
 // The workshop's part as the store keeps it during an exercise: scrambled
 // with the seed, so that the part's outline in machine coordinates (which

@@ -17,7 +17,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "console/session.hpp"
+#include "console/edit.hpp"
 #include "core/i18n.hpp"
 #include "store/store.hpp"
 
@@ -40,23 +40,23 @@ bool write_all(int fd, const std::string& s) {
 
 }  // namespace
 
-std::string Session::journal_dir() const {
-    if (!store_) return {};
-    std::string local = store_->local_path();  // a server's store: a directory of this PC
+std::string EditDesk::journal_dir() const {
+    if (!b_.store()) return {};
+    std::string local = b_.store()->local_path();  // a server's store: a directory of this PC
     if (local.empty() || local[0] == ':') return {};
     return local + ".recover";
 }
 
-std::string Session::journal_path(int number) const {
+std::string EditDesk::journal_path(int number) const {
     std::string dir = journal_dir();
     return dir.empty() ? dir : dir + "/" + std::to_string(number) + ".iso";
 }
 
 // After every key: a change made to the program in EDIT goes to its journal.
-void Session::sync_journal() {
-    if (!editor.is_open() || modif || editor.changes == journaled_changes_) return;
-    journaled_changes_ = editor.changes;
-    std::string path = journal_path(editor.number);
+void EditDesk::sync_journal() {
+    if (!editor_.is_open() || modif_ || editor_.changes == journaled_changes_) return;
+    journaled_changes_ = editor_.changes;
+    std::string path = journal_path(editor_.number);
     if (path.empty()) return;
     // A server's journal lives under this PC's data directory: make its parents.
     const std::string dir = journal_dir();
@@ -65,26 +65,26 @@ void Session::sync_journal() {
         ::mkdir(dir.substr(0, slash).c_str(), 0700);
     ::mkdir(dir.c_str(), 0700);
     char head[96];
-    std::snprintf(head, sizeof head, kHeader, editor.number, editor.revision);
+    std::snprintf(head, sizeof head, kHeader, editor_.number, editor_.revision);
     std::string tmp = path + ".tmp";
     int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0600);
-    bool ok = fd >= 0 && write_all(fd, head + editor.text()) && ::fsync(fd) == 0;
+    bool ok = fd >= 0 && write_all(fd, head + editor_.text()) && ::fsync(fd) == 0;
     if (fd >= 0) ::close(fd);
     if (!ok || ::rename(tmp.c_str(), path.c_str()) != 0) {
         ::unlink(tmp.c_str());
-        say(strf(tr("the recovery journal cannot be written (%s): :save often"),
-                 journal_dir().c_str()),
-            true);
+        b_.say(strf(tr("the recovery journal cannot be written (%s): :save often"),
+                    journal_dir().c_str()),
+               true);
     }
 }
 
-void Session::drop_journal(int number) {
+void EditDesk::drop_journal(int number) {
     std::string path = journal_path(number);
     if (!path.empty()) ::unlink(path.c_str());
 }
 
 // The journal of a program: its text and base revision; false if none.
-bool Session::read_journal(int number, std::string& text, int& base) const {
+bool EditDesk::read_journal(int number, std::string& text, int& base) const {
     std::string path = journal_path(number);
     if (path.empty()) return false;
     std::ifstream f(path, std::ios::binary);
@@ -104,7 +104,7 @@ bool Session::read_journal(int number, std::string& text, int& base) const {
 }
 
 // Programs with a journal left by an earlier session, for the start message.
-std::string Session::recovered_note() const {
+std::string EditDesk::recovered_note() const {
     std::string dir = journal_dir();
     DIR* d = dir.empty() ? nullptr : ::opendir(dir.c_str());
     if (!d) return {};
@@ -124,14 +124,14 @@ std::string Session::recovered_note() const {
 
 // The editor's unsaved work when a signal ends the console (app.cpp):
 // where it is, for stderr; "" when there is none.
-std::string Session::unsaved_note() const {
-    if (!editor.is_open() || !editor.dirty) return {};
-    const int n = editor.number;
-    if (modif) return strf(tr("the MODIF changes of %%%d are lost"), n);
+std::string EditDesk::unsaved_note() const {
+    if (!editor_.is_open() || !editor_.dirty) return {};
+    const int n = editor_.number;
+    if (modif_) return strf(tr("the MODIF changes of %%%d are lost"), n);
     std::string path = journal_path(n);
     if (path.empty() || ::access(path.c_str(), F_OK) != 0)
         // A new program's % line alone is no work; anything else had no journal.
-        return editor.lines().size() <= 1
+        return editor_.lines().size() <= 1
                    ? std::string()
                    : strf(tr("the unsaved changes of %%%d are lost (no journal)"), n);
     return strf(tr("the unsaved changes of %%%d are in the recovery journal %s: :edit %d, then "
@@ -140,7 +140,7 @@ std::string Session::unsaved_note() const {
 }
 
 // On :edit N: a journal that differs from the text loaded is offered.
-void Session::offer_journal(int number, const std::string& loaded) {
+void EditDesk::offer_journal(int number, const std::string& loaded) {
     std::string text;
     int base = 0;
     if (!read_journal(number, text, base)) return;
@@ -149,7 +149,8 @@ void Session::offer_journal(int number, const std::string& loaded) {
         return;
     }
     journal_held_ = number;  // no change may write over it before the operator chooses
-    say(strf(tr("%%%d has unsaved changes from an earlier session: :recover loads them, :discard "
+    b_.say(
+        strf(tr("%%%d has unsaved changes from an earlier session: :recover loads them, :discard "
                 "drops them"),
              number),
         true);
@@ -157,70 +158,68 @@ void Session::offer_journal(int number, const std::string& loaded) {
 
 // A key while an earlier session's journal waits for :recover or :discard:
 // a change to the text would write the journal over, so it is undone and
-// refused. Only then is the editor copied (a rare moment).
-Effect Session::held_key(const Key& k) {
-    const Editor before = editor;
-    Effect e = dispatch_key(k);
-    if (journal_held_ == before.number && editor.is_open() && editor.number == before.number &&
-        editor.changes != before.changes) {
-        editor = before;
-        say(strf(tr("%%%d: an earlier session's changes wait: :recover or :discard them first"),
-                 before.number),
-            true);
+// refused. Only then is the editor copied (a rare moment): the Session keeps
+// `before` around the key.
+void EditDesk::refuse_changes_since(const Editor& before) {
+    if (journal_held_ == before.number && editor_.is_open() && editor_.number == before.number &&
+        editor_.changes != before.changes) {
+        editor_ = before;
+        b_.say(strf(tr("%%%d: an earlier session's changes wait: :recover or :discard them first"),
+                    before.number),
+               true);
     }
-    return e;
 }
 
-bool Session::journal_held() const {
-    return journal_held_ >= 0 && editor.is_open() && !modif && editor.number == journal_held_;
+bool EditDesk::held() const {
+    return journal_held_ >= 0 && editor_.is_open() && !modif_ && editor_.number == journal_held_;
 }
 
 // :recover and :discard, on the program open in EDIT.
-Effect Session::recover_command(bool discard) {
-    if (!editor.is_open() || modif) {
-        say(tr("open the program first: :edit N"), true);
+Effect EditDesk::recover(bool discard) {
+    if (!editor_.is_open() || modif_) {
+        b_.say(tr("open the program first: :edit N"), true);
         return Effect::redraw;
     }
-    int n = editor.number;
+    int n = editor_.number;
     std::string text;
     int base = 0;
     if (!read_journal(n, text, base)) {
-        say(strf(tr("%%%d has no recovered changes"), n), true);
+        b_.say(strf(tr("%%%d has no recovered changes"), n), true);
         return Effect::redraw;
     }
     journal_held_ = -1;
     if (discard) {
         drop_journal(n);
-        say(strf(tr("recovered changes of %%%d dropped"), n));
+        b_.say(strf(tr("recovered changes of %%%d dropped"), n));
         return Effect::redraw;
     }
-    editor.open(n, text, base, false);
-    editor.dirty = true;
-    ++editor.changes;
+    editor_.open(n, text, base, false);
+    editor_.dirty = true;
+    ++editor_.changes;
     sync_journal();
-    say(strf(tr("%%%d: recovered text loaded (based on revision %d); :save keeps it"), n, base));
+    b_.say(strf(tr("%%%d: recovered text loaded (based on revision %d); :save keeps it"), n, base));
     return Effect::redraw;
 }
 
 // :quit, Ctrl-C: unsaved changes in EDIT are dropped only when the operator
 // says so (or :quit!). The journal goes with them.
-Effect Session::quit_command(bool force) {
-    if (!force && editor.is_open() && editor.dirty && !modif) {
-        int n = editor.number;
-        confirm(
-            strf(tr("%%%d has unsaved changes: quit and drop them? (:save first, or :quit!)"), n),
-            [this, n] {
-                drop_journal(n);
-                release_lease();
-                quit = true;
-            });
-        return Effect::redraw;
-    }
+bool EditDesk::asks_before_quit(std::function<void()> quit) {
+    if (!editor_.is_open() || !editor_.dirty || modif_) return false;
+    int n = editor_.number;
+    b_.confirm(
+        strf(tr("%%%d has unsaved changes: quit and drop them? (:save first, or :quit!)"), n),
+        [this, n, quit = std::move(quit)] {
+            drop_journal(n);
+            release_lease();
+            quit();
+        });
+    return true;
+}
+
+void EditDesk::leave(bool force) {
     // Only the editor's own journal: a clean editor's is an earlier session's.
-    if (force && editor.is_open() && editor.dirty && !modif) drop_journal(editor.number);
+    if (force && editor_.is_open() && editor_.dirty && !modif_) drop_journal(editor_.number);
     release_lease();
-    quit = true;
-    return Effect::quit;
 }
 
 }  // namespace pupitre::console

@@ -6,8 +6,7 @@
 #include <charconv>
 #include <utility>
 
-#include "console/commands.hpp"
-#include "console/exercise.hpp"
+#include "console/exercise_run.hpp"
 #include "core/i18n.hpp"
 #include "core/parse/codes.hpp"
 #include "pages/pages.hpp"
@@ -33,65 +32,18 @@ bool to_long(std::string_view s, long& out) {
 
 Session::Session(const MachineProfile& m, std::unique_ptr<store::Store> store, LineInput& input)
     : m_(m),
-      store_key_(m.name),
       store_(std::move(store)),
+      store_key_(m.name),
       input_(input),
       sim_(std::make_unique<Sim>(m_, mem_)) {
-    bindings.parse(default_bindings(), "bindings");
-    sim_->set_path(&path_);
-    graph.plane = m_.lathe ? PathPlane::zx : PathPlane::xy;
+    add_bindings(default_bindings(), "bindings");
+    sim_->set_path(&graph_.path());
     input_.on_line = [this](const std::string& line) { submit(line); };
     input_.complete = [this](std::string_view w) { return complete(w); };
     input_.on_message = [this](const std::string& s) { say(s); };
 }
 
 Session::~Session() = default;
-
-std::string Session::load_store() {
-    if (!store_) {
-        refresh_dir();
-        return {};
-    }
-    std::string problem;
-    if (auto r = store::load_programs(*store_, mem_); r.error) problem = r.error.message;
-    if (auto r = store::seed_machine(*store_, sim_->interp(), store_key_); r.error)
-        problem = r.error.message;
-    sim_->interp().origins_changed();
-    if (auto r = store_->imd_history(store_key_, 200); !r.error)
-        for (auto it = r.value.rbegin(); it != r.value.rend(); ++it) input_.add_history(it->block);
-    for (const auto& [name, v] : store::persistent_writes(sim_->interp())) persisted_[name] = v;
-    if (auto r = store_->setting("protect.on"); !r.error && r.value) protect = *r.value == "1";
-    load_witness();
-    if (std::string w = load_workshop(); !w.empty() && problem.empty()) problem = w;
-    refresh_dir();
-    remember_store();
-    if (problem.empty()) problem = recovered_note();
-    return problem;
-}
-
-// The workshop this machine had when the console last stopped: the same
-// setup and the part as the tools left it (pupitre-setup(5)).
-std::string Session::load_workshop() {
-    if (exercise_) return exercise_workshop();
-    auto r = store_->workshop(store_key_);
-    if (r.error) return r.error.message;
-    if (!r.value) return {};
-    workshop::Setup st;
-    std::string why = workshop::parse_setup(r.value->setup, st);
-    if (why.empty() && (st.kind == "lathe") != m_.lathe)
-        why = st.kind == "lathe" ? tr("a lathe's, on a machining centre")
-                                 : tr("a machining centre's, on a lathe");
-    if (!why.empty())
-        return strf(tr("the stored workshop is not a setup (%s): :setup %s loads one"), why.c_str(),
-                    machine_setup());
-    auto w = std::make_unique<workshop::Workshop>(m_, st, nullptr);
-    const bool read = w->load_part(r.value->part);  // else fresh stock, as built
-    workshop_saved_ = read ? w->generation() : 0;
-    sim_->set_workshop(std::move(w));
-    return read ? std::string()
-                : std::string(tr(
-                      "the stored part could not be read: the workshop starts with fresh stock"));
-}
 
 // The built-in setup of this machine's kind: its own for the Cazeneuve.
 const char* Session::machine_setup() const {
@@ -120,8 +72,8 @@ Effect Session::read_part(std::string_view spec) {
     // An exercise allows some instruments only; what is read may explain a
     // mistake (a diameter taken for a radius).
     const std::string word(workshop::instrument_word(asked.substr(0, asked.find(' '))));
-    if (!instrument_allowed(word)) return Effect::redraw;
-    note_reading(word, r.value);
+    if (exercise_ && !exercise_->instrument_allowed(word)) return Effect::redraw;
+    if (exercise_) exercise_->note_reading(word, r.value);
     int decimals = r.resolution < 0.005 ? 3 : 2;
     // TRANSLATORS: the instrument, what it measured, the reading in mm.
     std::string said =
@@ -132,19 +84,6 @@ Effect Session::read_part(std::string_view spec) {
     readings_.insert(readings_.begin(), said);
     if (readings_.size() > 100) readings_.pop_back();
     return Effect::redraw;
-}
-
-void Session::save_workshop() {
-    const workshop::Workshop* w = sim_->shop();
-    if (w) workshop_saved_ = w->generation();
-    if (!store_) return;
-    // An exercise's: its name, never the setup; the part scrambled.
-    store::StoreError e = !w ? store_->put_workshop(store_key_, "", "")
-                          : exercise_
-                              ? store_->put_workshop(store_key_, "exercise " + exercise_->ex.name,
-                                                     scramble(w->part_text(), exercise_->seed))
-                              : store_->put_workshop(store_key_, w->setup().source, w->part_text());
-    if (e) say(strf(tr("the workshop was not stored: %s"), e.message.c_str()), true);
 }
 
 void Session::refresh_dir() {
@@ -177,16 +116,26 @@ void Session::say(std::string text, bool error) {
 }
 
 void Session::show_page(pages::PageId p) {
-    if (page != p && !pending_confirm.empty()) {
+    if (page_ != p && !pending_confirm_.empty()) {
         // The question was about the page left: it is not answered blind.
-        pending_confirm.clear();
-        on_confirm = nullptr;
+        pending_confirm_.clear();
+        on_confirm_ = nullptr;
         say(tr("question cancelled: the page changed (nothing changed)"));
     }
-    if (page != p) scroll = 0;
+    if (page_ != p) scroll_ = 0;
     // The store may have changed (a save, a conflict, another console).
-    if (p == pages::PageId::dir && page != p) refresh_dir();
-    page = p;
+    if (p == pages::PageId::dir && page_ != p) refresh_dir();
+    page_ = p;
+}
+
+void Session::scroll_by(int screens) {
+    int step = std::max(1, rows_ - 8);
+    scroll_ = std::max(0, scroll_ + screens * step);
+}
+
+void Session::move_dir_cursor(int delta) {
+    int n = int(dir_.size());
+    dir_cursor_ = std::clamp(dir_cursor_ + delta, 0, std::max(0, n - 1));
 }
 
 bool Session::select_program(int number) {
@@ -195,7 +144,7 @@ bool Session::select_program(int number) {
         return false;
     }
     for (size_t i = 0; i < dir_.size(); ++i)
-        if (dir_[i].number == number) dir_cursor = int(i);
+        if (dir_[i].number == number) dir_cursor_ = int(i);
     // Kept at once, not at a clean exit: a killed console starts on it again.
     // An exercise selects its own program (app.cpp).
     if (store_ && !exercise_)
@@ -226,18 +175,40 @@ bool Session::delete_program(int number) {
         return false;
     }
     refresh_dir();
-    dir_cursor = std::min(dir_cursor, std::max(0, int(dir_.size()) - 1));
+    dir_cursor_ = std::min(dir_cursor_, std::max(0, int(dir_.size()) - 1));
     // TRANSLATORS: the program's number, three times.
     say(strf(tr("%%%d deleted; its history stays (:history %d, then :restore %d REV)"), number,
              number, number));
     return true;
 }
 
+Effect Session::delete_under_cursor() {
+    if (dir_.empty()) return Effect::none;
+    int n = dir_[size_t(dir_cursor_)].number;
+    if (pending_delete_ != n) {
+        pending_delete_ = n;
+        say(strf(tr("delete %%%d? press Del again to confirm"), n), true);
+        return Effect::redraw;
+    }
+    pending_delete_ = -1;
+    delete_program(n);
+    return Effect::redraw;
+}
+
 // ---- keys ----
 
 Effect Session::on_key(const Key& k) {
-    Effect e = journal_held() ? held_key(k) : dispatch_key(k);
-    sync_journal();  // a change to the program in EDIT is journaled at once
+    Effect e;
+    if (editing_.held()) {
+        // An earlier session's journal waits: a change to the text is
+        // undone and refused (only then is the editor copied, a rare moment).
+        const Editor before = editing_.editor();
+        e = dispatch_key(k);
+        editing_.refuse_changes_since(before);
+    } else {
+        e = dispatch_key(k);
+    }
+    editing_.sync_journal();  // a change to the program in EDIT is journaled at once
     return e;
 }
 
@@ -246,13 +217,8 @@ Effect Session::dispatch_key(const Key& k) {
     if (std::exchange(swallow_enter_, false) && k.code == KeyCode::enter && input_.text().empty())
         return Effect::redraw;
     if (answer_key(k)) return Effect::redraw;
-    std::string pg(pages::page_word(page)), md(mode_word(sim_->mode()));
-    if (k.code != KeyCode::del) pending_delete = -1;
-    for (const Binding* b : bindings.find(k, pg, md, m_.lathe ? "lathe" : "mill")) {
-        const Action* a = find_action(b->action);
-        if (!a || !a->can_run(*this, b->arg)) continue;
-        return a->run(*this, b->arg);
-    }
+    if (k.code != KeyCode::del) pending_delete_ = -1;
+    if (Effect e; run_binding(k, e)) return e;
     if (k.code == KeyCode::escape && !k.alt && !k.ctrl) return cancel_input();
     if (!for_line_editor(k)) {
         // F11, S-F1, C-F5, M-F9…: their bytes would leak into the line as text.
@@ -287,12 +253,12 @@ bool Session::for_line_editor(const Key& k) {
 
 // Escape: the input line is emptied, MODIFY is left, a question is answered no.
 Effect Session::cancel_input() {
-    bool had = !input_.text().empty() || modify_pending || !pending_confirm.empty();
+    bool had = !input_.text().empty() || editing_.modifying() || !pending_confirm_.empty();
     input_.clear();
-    modify_pending = false;
-    if (!pending_confirm.empty()) {
-        pending_confirm.clear();
-        on_confirm = nullptr;
+    editing_.stop_modifying();
+    if (!pending_confirm_.empty()) {
+        pending_confirm_.clear();
+        on_confirm_ = nullptr;
         say(tr("cancelled: nothing changed"));
     } else if (had) {
         say(tr("input cancelled"));
@@ -301,6 +267,37 @@ Effect Session::cancel_input() {
 }
 
 // ---- the input line ----
+
+// Asks "y/n" on the input line; `then` runs on "y".
+void Session::confirm(std::string question, std::function<void()> then) {
+    pending_confirm_ = question;
+    on_confirm_ = std::move(then);
+    // TRANSLATORS: a question on the message line; y, yes, o and oui answer yes.
+    say(strf(tr("%s y/n?"), question.c_str()), true);
+}
+
+void Session::answer(bool yes) {
+    auto run = std::move(on_confirm_);
+    pending_confirm_.clear();
+    on_confirm_ = nullptr;
+    if (yes && run)
+        run();
+    else
+        say(tr("cancelled: nothing changed"));
+}
+
+// One key answers a question (y or o yes, n no), as on the panel; a word
+// typed after another first key still answers at Enter (plain_text).
+bool Session::answer_key(const Key& k) {
+    if (pending_confirm_.empty() || !input_.text().empty() || k.code != KeyCode::character ||
+        k.alt || k.ctrl)
+        return false;
+    const char32_t c = k.ch | 0x20;  // lower case, for the ASCII letters asked
+    if (c != U'y' && c != U'o' && c != U'n') return false;
+    answer(c != U'n');
+    swallow_enter_ = true;  // "y" then Enter, by habit: the Enter is not a second action
+    return true;
+}
 
 Effect Session::submit(const std::string& raw) {
     std::string_view line = trim(raw);
@@ -312,15 +309,15 @@ Effect Session::submit(const std::string& raw) {
     }
     if (line.front() == ':') {
         // A command instead of an answer: the question is dropped, not answered yes.
-        pending_confirm.clear();
-        on_confirm = nullptr;
+        pending_confirm_.clear();
+        on_confirm_ = nullptr;
         return command(line.substr(1));
     }
     return plain_text(std::string(line));
 }
 
 Session::Target Session::target() const {
-    switch (page) {
+    switch (page_) {
         case pages::PageId::edit:
             return Target::edit;
         case pages::PageId::pref:
@@ -348,16 +345,16 @@ Session::Target Session::target() const {
 
 std::string Session::prompt() const {
     // TRANSLATORS: the prompt of a yes/no question: y, yes, o and oui answer yes.
-    if (!pending_confirm.empty()) return tr("y/n> ");
+    if (!pending_confirm_.empty()) return tr("y/n> ");
     switch (target()) {
         // TRANSLATORS: the prompt while a block is modified in EDIT (EDIT and
         // MODIF are NUM names and stay).
         case Target::edit:
-            return modify_pending ? tr("MODIFY> ") : modif ? "MODIF> " : "EDIT> ";
+            return editing_.modifying() ? tr("MODIFY> ") : editing_.modif() ? "MODIF> " : "EDIT> ";
         case Target::pref:
             return "PREF> ";
         case Target::corr:
-            return "D" + std::to_string(corr_cursor) + "> ";
+            return "D" + std::to_string(setting_.corrector()) + "> ";
         case Target::param:
             return "L/E= ";
         // TRANSLATORS: the WORKSHOP page's prompt: what is typed is an instrument's request.
@@ -400,9 +397,9 @@ std::string Session::mode_hint(Mode m) const {
     // The jog keys as bound for this machine (data/bindings.txt or the user's).
     std::string keys;
     const char* word = m == Mode::jog ? "jog" : "inc";
-    for (const Binding& b : bindings.list()) {
+    for (const Binding& b : bindings_.list()) {
         if (b.action != "jog") continue;
-        auto f = bindings.find(b.key, "op", word, m_.lathe ? "lathe" : "mill");
+        auto f = bindings_.find(b.key, "op", word, m_.lathe ? "lathe" : "mill");
         if (!f.empty() && f.front() == &b)
             keys += (keys.empty() ? "" : ", ") + b.key_text + " " + b.arg;
     }
@@ -428,7 +425,7 @@ std::string Session::mode_news(Mode m) const {
 // refused drops the IMD block waiting for Cycle Start, so that Cycle Start
 // never runs an older block than the one the operator believes typed.
 Effect Session::plain_text(const std::string& text) {
-    if (!pending_confirm.empty()) {
+    if (!pending_confirm_.empty()) {
         std::string a = text;
         for (char& c : a) c = char(std::tolower(static_cast<unsigned char>(c)));
         answer(a == "y" || a == "yes" || a == "o" || a == "oui");
@@ -446,9 +443,9 @@ Effect Session::route_text(const std::string& text) {
     switch (target()) {
         case Target::pref:
         case Target::corr:
-            return setting_text(t);
+            return setting_.text(t);
         case Target::edit:
-            return edit_text(text);
+            return editing_.text(text);
         case Target::param:
             if (pages::is_caz(m_)) {
                 say(tr("this controller has no L variables and no E parameters"), true);
@@ -513,7 +510,7 @@ Effect Session::set_value(std::string_view a) {
     }
     for (char& c : name) c = char(std::toupper(static_cast<unsigned char>(c)));
     if (name[0] == 'P' || name[0] == 'D') {
-        apply_setting(name, v, ":set");
+        setting_.apply(name, v, ":set");
         return Effect::redraw;
     }
     if (sim_->in_cycle()) {
@@ -530,6 +527,59 @@ Effect Session::set_value(std::string_view a) {
     return Effect::redraw;
 }
 
+// ---- the desks ----
+
+std::string Session::start_exercise(const training::Exercise& e, const std::string& student,
+                                    const std::string& key) {
+    auto [x, why] = ExerciseRun::open(*this, e, student, key);
+    if (!why.empty()) return why;
+    store_key_ = x->machine_key();
+    if (std::string w = x->take_program(); !w.empty()) return w;
+    exercise_ = std::move(x);
+    return {};
+}
+
+bool Session::hidden(const char* what) {
+    return exercise_ && exercise_->hidden(what);
+}
+
+// Cycle Start, after MODIF's changed blocks are taken in.
+Effect Session::cycle_command() {
+    if (!editing_.modif_apply()) return Effect::redraw;
+    if (std::string why = sim_->cycle_start(); !why.empty()) {
+        say(why, true);
+        return Effect::redraw;
+    }
+    // The run's end is news even when it comes within one frame ("max").
+    last_state_ = sim_->state();
+    Mode m = sim_->mode();
+    bool runs_program =
+        m == Mode::automatic || m == Mode::single || m == Mode::dry || m == Mode::test;
+    if (!sim_->message().empty())
+        say(sim_->message());
+    else if (sim_->selected() >= 0 && runs_program)
+        say(strf(tr("Cycle Start: %%%d in %s"), sim_->selected(),
+                 std::string(mode_name(m)).c_str()));
+    else
+        say(strf(tr("Cycle Start (%s)"), std::string(mode_name(m)).c_str()));
+    return Effect::redraw;
+}
+
+// :quit, Ctrl-C: unsaved changes in EDIT are dropped only when the operator
+// says so (or :quit!).
+Effect Session::quit_command(bool force) {
+    if (!force && editing_.asks_before_quit([this] { quit_ = true; })) return Effect::redraw;
+    editing_.leave(force);
+    quit_ = true;
+    return Effect::quit;
+}
+
+Effect Session::restart_on(std::string exercise) {
+    restart_exercise_ = std::move(exercise);
+    quit_ = true;
+    return Effect::quit;
+}
+
 // ---- time ----
 
 void Session::tick(double dt) {
@@ -538,7 +588,7 @@ void Session::tick(double dt) {
         check_run_end();
         return;
     }
-    switch (speed) {
+    switch (speed_) {
         case Speed::real:
             sim_->advance(dt, 2000);
             break;
@@ -550,7 +600,7 @@ void Session::tick(double dt) {
             break;
     }
     check_run_end();
-    watch_crashes();
+    if (exercise_) exercise_->watch_crashes();
     follow_store(dt);
 }
 
@@ -578,94 +628,7 @@ void Session::check_run_end() {
     last_state_ = st;
 }
 
-void Session::persist_run() {
-    if (const workshop::Workshop* w = sim_->shop(); w && w->generation() != workshop_saved_)
-        save_workshop();
-    // The programs G76, G76+ and G76- changed: a revision each, or a deletion.
-    std::vector<int> edited = mem_.take_changed();
-    if (store_ && !edited.empty() && protect) {
-        say(tr("memory protection is on: the programs G76 changed stay in memory, not in the "
-               "store"),
-            true);
-    } else if (store_ && !edited.empty()) {
-        std::string source = "G76 in %" + std::to_string(sim_->selected()) + " (console)";
-        for (int n : edited) {
-            const ProgramText* p = mem_.find(n);
-            auto r = p ? store_->save(n, program_text(*p), store::kHead, source)
-                       : store_->remove(n, store::kHead, source);
-            if (r.error)
-                say(strf(tr("%%%d changed by G76 was not stored: %s"), n, r.error.message.c_str()),
-                    true);
-        }
-        refresh_dir();
-    }
-    if (!store_) return;
-    std::vector<std::pair<std::string, int64_t>> fresh;
-    for (const auto& [name, v] : store::persistent_writes(sim_->interp())) {
-        auto it = persisted_.find(name);
-        if (it != persisted_.end() && it->second == v) continue;
-        fresh.emplace_back(name, v);
-        persisted_[name] = v;
-    }
-    if (fresh.empty()) return;
-    std::string source = "program %" + std::to_string(sim_->selected()) + " (console)";
-    if (auto r = store_->set_values(store_key_, fresh, source); r.error)
-        say(strf(tr("the program's corrector and origin writes were not stored: %s"),
-                 r.error.message.c_str()),
-            true);
-}
-
 // ---- view ----
-
-// Whether a "page" binding's argument names the page on screen (F2 is OP and
-// OM, F3 PROG and GRAPH, F5 the setting pages).
-bool Session::shows_page(std::string_view arg, pages::PageId p) {
-    using P = pages::PageId;
-    if (arg == "pos") return p == P::op || p == P::om;
-    if (arg == "prog") return p == P::prog || p == P::graph;
-    if (arg == "set") return p == P::param || p == P::pref || p == P::corr;
-    return arg == pages::page_word(p);
-}
-
-// The soft keys (what F1-F10 do here, from the bindings) and the HELP
-// page's lines (every binding, every command).
-void Session::view_keys(pages::View& v) const {
-    std::string pg(pages::page_word(page)), md(mode_word(sim_->mode()));
-    for (int i = 1; i <= 10; ++i) {
-        Key k;
-        k.code = KeyCode(int(KeyCode::f1) + i - 1);
-        for (const Binding* b : bindings.find(k, pg, md, m_.lathe ? "lathe" : "mill")) {
-            const Action* a = find_action(b->action);
-            if (!a) continue;
-            v.softkeys.push_back(pages::SoftKey{"F" + std::to_string(i), soft_label(*a, b->arg),
-                                                a->name == "page" && shows_page(b->arg, page)});
-            break;
-        }
-    }
-    for (const Binding& b : bindings.list()) {
-        const Action* a = find_action(b.action);
-        if (a)
-            v.help.push_back(
-                pages::HelpLine{key_label(b.key_text), help_text(*a, b.arg), context_text(b.when)});
-    }
-    for (const Command& c : commands())
-        if (!c.usage.empty())
-            v.help.push_back(pages::HelpLine{std::string(c.usage), pages::tr_text(c.help), ""});
-}
-
-void Session::view_editor(pages::View& v) const {
-    if (!editor.is_open()) return;
-    v.edit_lines = &editor.lines();
-    v.edit_number = editor.number;
-    v.edit_revision = editor.revision;
-    v.edit_cursor = editor.cursor;
-    v.edit_mark = editor.mark;
-    v.edit_locked = editor.locked;
-    v.edit_error = editor.error_line;
-    v.edit_dirty = editor.dirty;
-    v.edit_modif = modif;
-    v.edit_modify = modify_pending;
-}
 
 // The word the bindings' contexts name a mode by ("auto", "jog"…).
 std::string_view Session::mode_word(Mode m) {
@@ -681,84 +644,38 @@ pages::View Session::view() const {
     v.sim = sim_.get();
     v.memory = &mem_;
     v.machine = m_.name;
-    v.page = page;
-    v.scroll = scroll;
+    v.page = page_;
+    v.scroll = scroll_;
     v.message = message_;
     v.message_error = message_error_;
     Mode m = sim_->mode();
     v.prompt = prompt();
     v.mode_hint = mode_hint(m);
-    v.history = history_;
-    v.history_number = history_number_;
-    v.history_current = history_current_;
     v.mode_setting = mode_setting(m);
     v.input = input_.text();
     v.input_cursor = input_.cursor();
-    v.speed = speed == Speed::real ? "x1" : speed == Speed::x10 ? "x10" : "max";
+    v.speed = speed_ == Speed::real ? "x1" : speed_ == Speed::x10 ? "x10" : "max";
     v.programs = dir_;
-    v.dir_cursor = dir_cursor;
+    v.dir_cursor = dir_cursor_;
     view_keys(v);
     if (store_) v.store_path = store_->path();
-    v.corr_cursor = corr_cursor;
-    v.pending = pending_origins();
-    v.protect = protect;
-    v.undo_depth = undo_.size();
-    v.last_setting = last_setting_;
-    v.witness = witness_text();
     v.readings = &readings_;
     v.messages = &said_;
-    exercise_view(v);
-    view_editor(v);
-    v.graph = graph;
-    v.graph.path = &path_;
-    if (sim_->ran_program()) v.graph.seconds = sim_->cycle_time();  // the M02 message's
-    if (!graph_plane_chosen && !path_.empty()) v.graph.plane = path_.default_plane();
-    tool_now_ = sim_->op();
-    // The tool where it is over the part (a C turn, a B tilt), as the path.
-    const Axes op_now = tool_now_;
-    if (const workshop::Workshop* w = sim_->shop()) tool_now_ = w->on_part(sim_->om(), op_now);
-    v.graph.tool = &tool_now_;
-    v.graph.cache = &graph_cache_;
+    setting_.view(v);
+    editing_.view(v);
+    if (exercise_) exercise_->view(v);
     // An exercise: the part drawn, but no coordinates read off it (the truth).
-    v.graph.no_readout = exercise_ && !exercise_->grade;
-    if (sim_->shop() && page == pages::PageId::graph) {  // only the GRAPH page draws the part
-        view_part();
-        v.graph.part = &part_now_, v.graph.chuck = &chuck_now_;
-        if (const workshop::Workshop* w = sim_->shop(); w->is_mill()) {
-            // The block where the program frame puts it, as for the lathe's part.
-            const workshop::P3 tip = w->tip3(sim_->om(), false);
-            v.graph.block = w->mill();
-            v.graph.block_dx = op_now[X] - tip[0];
-            v.graph.block_dy = op_now[Y] - tip[1];
-        }
-    }
+    graph_.fill(v, *sim_, page_ == pages::PageId::graph, exercise_ && !exercise_->graded());
     return v;
 }
 
-// The workshop's part where the program frame puts it: as the tool in use,
-// with the gauge and origins entered, would read its points (so a wrong
-// PREF shows as a path beside the part, as on the machine).
-void Session::view_part() const {
-    part_now_.clear();
-    chuck_now_.clear();
-    const workshop::Workshop* w = sim_->shop();
-    if (!w || w->is_mill()) return;
-    const workshop::Workshop::Frame f = w->part_frame(sim_->om(), tool_now_, sim_->corrector());
-    const double dz = f.dz, dx = f.dx;
-    auto place = [&](const workshop::CPaths& from,
-                     std::vector<std::vector<std::array<double, 2>>>& to) {
-        for (const workshop::CPath& q : from) {
-            to.emplace_back();
-            for (const auto& v : q) {
-                workshop::Pt p = workshop::to_mm(v);
-                to.back().push_back({p[0] + dz, p[1] + dx});
-            }
-        }
-    };
-    place(w->world().material(), part_now_);
-    place(w->world().chuck(), chuck_now_);
-    place(w->world().tailstock(), chuck_now_);
-    place(w->world().gauge(), chuck_now_);
+// A GRAPH key, in the window the screen leaves the GRAPH page.
+Effect Session::graph_key(std::string_view what, std::string_view arg) {
+    pages::View v;
+    graph_.fill(v, *sim_, page_ == pages::PageId::graph, exercise_ && !exercise_->graded());
+    std::string news = graph_.key(what, arg, pages::Rect{0, 1, cols_, rows_ - 4}, v.graph);
+    if (!news.empty()) say(news);
+    return Effect::redraw;
 }
 
 std::vector<std::string> Session::complete(std::string_view word) const {
@@ -766,11 +683,7 @@ std::vector<std::string> Session::complete(std::string_view word) const {
     if (word.empty()) return out;
     char first = char(std::toupper(static_cast<unsigned char>(word[0])));
     if (first == ':') {
-        // The first name of each command: not its aliases (:q) nor its '!' forms.
-        for (const Command& c : commands()) {
-            std::string name = ":" + std::string(c.names.substr(0, c.names.find(' ')));
-            if (c.run && name.rfind(word, 0) == 0) out.push_back(name);
-        }
+        complete_command(word, out);
         return out;
     }
     std::string up(word);

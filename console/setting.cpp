@@ -1,19 +1,20 @@
-// The setter's work at the console: the PREF and CORR pages, touch-off, tool
+// The setting desk (see setting.hpp): the PREF and CORR pages, touch-off, tool
 // measurement, changes made during a run, undo, and the memory-protect key.
 // Every change is stored with an audit row (the store's set_values).
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "core/sim/setting.hpp"
+#include "console/setting.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <random>
 
-#include "console/session.hpp"
 #include "core/i18n.hpp"
 #include "core/interp/value_name.hpp"
 #include "core/sha256.hpp"
+#include "core/sim/setting.hpp"
 #include "store/link.hpp"
 #include "store/store.hpp"
 
@@ -79,9 +80,29 @@ const CorrField* corrector_field(const std::string& name) {
 
 }  // namespace
 
-bool Session::unprotected(std::string_view what) {
-    if (!protect) return true;
-    say(what == "programs"
+void SettingDesk::load() {
+    if (store::Store* st = b_.store())
+        if (auto r = st->setting("protect.on"); !r.error && r.value) protect_ = *r.value == "1";
+    load_witness();
+}
+
+void SettingDesk::move_corrector(int delta) {
+    corr_cursor_ = std::clamp(corr_cursor_ + delta, 1, b_.machine().correctors);
+}
+
+void SettingDesk::view(pages::View& v) const {
+    v.corr_cursor = corr_cursor_;
+    v.pending = pending_origins();
+    v.protect = protect_;
+    v.undo_depth = undo_.size();
+    v.last_setting = last_setting_;
+    v.witness = witness_text();
+}
+
+bool SettingDesk::unprotected(std::string_view what) {
+    if (!protect_) return true;
+    b_.say(
+        what == "programs"
             ? tr("memory protection is on: programs cannot be changed (:protect off)")
         : what == "origins and correctors"
             ? tr("memory protection is on: origins and correctors cannot be changed (:protect off)")
@@ -93,31 +114,31 @@ bool Session::unprotected(std::string_view what) {
     return false;
 }
 
-bool Session::apply_setting(const std::string& name, double value, const std::string& source) {
+bool SettingDesk::apply(const std::string& name, double value, const std::string& source) {
     if (!unprotected("origins and correctors")) return false;
     if (std::abs(value) > 100000) {
-        say(strf(tr("%s: %s is beyond any machine"), name.c_str(), mm(value).c_str()), true);
+        b_.say(strf(tr("%s: %s is beyond any machine"), name.c_str(), mm(value).c_str()), true);
         return false;
     }
     bool code = name.size() > 2 && name.substr(name.size() - 2) == ".C";
     if (code && (value != std::floor(value) || value < 0 || value > 8)) {
-        say(strf(tr("%s: the nose orientation is a code from 0 to 8"), name.c_str()), true);
+        b_.say(strf(tr("%s: the nose orientation is a code from 0 to 8"), name.c_str()), true);
         return false;
     }
     const CorrField* field = corrector_field(name);
     if (field && field->text == "R" && value < 0) {
-        say(strf(tr("%s: a tool or nose radius is never negative (its wear goes in %s)"),
-                 name.c_str(), m_.lathe ? "DX/DZ" : "DR"),
-            true);
+        b_.say(strf(tr("%s: a tool or nose radius is never negative (its wear goes in %s)"),
+                    name.c_str(), b_.machine().lathe ? "DX/DZ" : "DR"),
+               true);
         return false;
     }
-    Interpreter& in = sim_->interp();
+    Interpreter& in = b_.sim().interp();
     double old = 0;
     bool had = in.get(name, old);
-    bool running = sim_->in_cycle();
+    bool running = b_.sim().in_cycle();
     std::string why = in.set(name, value, !running);
     if (!why.empty()) {
-        say(name + ": " + why, true);
+        b_.say(name + ": " + why, true);
         return false;
     }
     if (!had) in.get(name, old);
@@ -132,23 +153,23 @@ bool Session::apply_setting(const std::string& name, double value, const std::st
                                         ? tr("(applies at the next move)")
                                         : tr("(applies as the manual says: gauge at the next move "
                                              "of its axis, radius at the next G41/G42)"));
-    if (store_) {
-        auto r =
-            store_->set_values(store_key_, {{name, store::internal_value(name, value)}}, source);
+    if (b_.store()) {
+        auto r = b_.store()->set_values(b_.store_key(),
+                                        {{name, store::internal_value(name, value)}}, source);
         if (r.error) {
-            say(strf(tr("%s; NOT stored: %s"), news.c_str(), r.error.message.c_str()), true);
+            b_.say(strf(tr("%s; NOT stored: %s"), news.c_str(), r.error.message.c_str()), true);
             return true;
         }
     }
-    say(news);
+    b_.say(news);
     return true;
 }
 
-std::vector<std::string> Session::pending_origins() const {
+std::vector<std::string> SettingDesk::pending_origins() const {
     std::vector<std::string> out;
-    if (!sim_->in_cycle()) return out;
+    if (!b_.sim().in_cycle()) return out;
     for (const auto& [name, moves] : pending_origin_)
-        if (sim_->interp().moves() == moves) out.push_back(name);
+        if (b_.sim().interp().moves() == moves) out.push_back(name);
     return out;
 }
 
@@ -163,197 +184,165 @@ static std::string at_rest(const Sim& s) {
 
 // A gauge longer than the axis travel cannot be a tool's: the question to ask
 // first, or "".
-std::string Session::implausible_gauge(const std::string& name, double value) const {
+std::string SettingDesk::implausible_gauge(const std::string& name, double value) const {
     const CorrField* field = corrector_field(name);
     const GaugeAxis gauge = field ? field->gauge : GaugeAxis::none;
     int axis = gauge == GaugeAxis::x           ? X
                : gauge == GaugeAxis::z         ? Z
-               : gauge == GaugeAxis::tool_axis ? sim_->interp().modal().tool_axis
+               : gauge == GaugeAxis::tool_axis ? b_.sim().interp().modal().tool_axis
                                                : -1;
-    if (axis < 0 || !m_.has(axis)) return {};
-    const AxisConfig& ax = m_.axes[size_t(axis)];
+    if (axis < 0 || !b_.machine().has(axis)) return {};
+    const AxisConfig& ax = b_.machine().axes[size_t(axis)];
     double travel = ax.max - ax.min;
     if (!(travel > 0 && travel < 1e8) || std::abs(value) <= travel) return {};
     return strf(tr("%s = %s is longer than the %c travel (%s). Keep it?"), name.c_str(),
                 mm(value).c_str(), kAxisNames[size_t(axis)], mm(travel).c_str());
 }
 
-// Asks "y/n" on the input line; `then` runs on "y".
-void Session::confirm(std::string question, std::function<void()> then) {
-    pending_confirm = question;
-    on_confirm = std::move(then);
-    // TRANSLATORS: a question on the message line; y, yes, o and oui answer yes.
-    say(strf(tr("%s y/n?"), question.c_str()), true);
-}
-
-void Session::answer(bool yes) {
-    auto run = std::move(on_confirm);
-    pending_confirm.clear();
-    on_confirm = nullptr;
-    if (yes && run)
-        run();
-    else
-        say(tr("cancelled: nothing changed"));
-}
-
-// One key answers a question (y or o yes, n no), as on the panel; a word
-// typed after another first key still answers at Enter (plain_text).
-bool Session::answer_key(const Key& k) {
-    if (pending_confirm.empty() || !input_.text().empty() || k.code != KeyCode::character ||
-        k.alt || k.ctrl)
-        return false;
-    const char32_t c = k.ch | 0x20;  // lower case, for the ASCII letters asked
-    if (c != U'y' && c != U'o' && c != U'n') return false;
-    answer(c != U'n');
-    swallow_enter_ = true;  // "y" then Enter, by habit: the Enter is not a second action
-    return true;
-}
-
-Effect Session::touch(int axis, double surface) {
-    if (std::string w = at_rest(*sim_); !w.empty()) {
-        say(strf(tr("touch-off: %s"), w.c_str()), true);
+Effect SettingDesk::touch(int axis, double surface) {
+    if (std::string w = at_rest(b_.sim()); !w.empty()) {
+        b_.say(strf(tr("touch-off: %s"), w.c_str()), true);
         return Effect::redraw;
     }
-    if (sim_->corrector() == 0) {
+    if (b_.sim().corrector() == 0) {
         // D0: the gauge is zero, so PREF would place the turret reference (or the
         // spindle nose), not a tool point, on the surface. Rare, never silent.
-        confirm(strf(tr("D0, no tool gauge (T%d): the turret reference would read %c %s."),
-                     sim_->tool(), kAxisNames[size_t(axis)], mm(surface).c_str()),
-                [this, axis, surface] { touch_now(axis, surface); });
+        b_.confirm(strf(tr("D0, no tool gauge (T%d): the turret reference would read %c %s."),
+                        b_.sim().tool(), kAxisNames[size_t(axis)], mm(surface).c_str()),
+                   [this, axis, surface] { touch_now(axis, surface); });
         return Effect::redraw;
     }
     return touch_now(axis, surface);
 }
 
-Effect Session::touch_now(int axis, double surface) {
-    if (std::string w = at_rest(*sim_); !w.empty()) {  // again: a "y" may come late
-        say(strf(tr("touch-off: %s"), w.c_str()), true);
+Effect SettingDesk::touch_now(int axis, double surface) {
+    if (std::string w = at_rest(b_.sim()); !w.empty()) {  // again: a "y" may come late
+        b_.say(strf(tr("touch-off: %s"), w.c_str()), true);
         return Effect::redraw;
     }
     // The gauge of the active corrector is the one the touch-off assumes: it
     // applies now (not at the next move), so OP reads what was typed.
-    sim_->interp().apply_gauges_now();
+    b_.sim().interp().apply_gauges_now();
     setting::Touch t;
-    if (std::string why = setting::touch_off(sim_->interp(), axis, surface, t); !why.empty()) {
-        say(strf(tr("touch-off: %s"), why.c_str()), true);
+    if (std::string why = setting::touch_off(b_.sim().interp(), axis, surface, t); !why.empty()) {
+        b_.say(strf(tr("touch-off: %s"), why.c_str()), true);
         return Effect::redraw;
     }
-    if (apply_setting(
-            t.name, t.after,
-            "touch-off " + std::string(1, kAxisNames[size_t(axis)]) + " " + mm(surface))) {
+    if (apply(t.name, t.after,
+              "touch-off " + std::string(1, kAxisNames[size_t(axis)]) + " " + mm(surface))) {
         last_setting_ = t.formula + " " + strf(tr("(was %s)"), mm(t.before).c_str());
         // On CORR a student who means the tool's gauge types :touch (found
         // touching a tool off by keys): say what changed and what was meant.
         // The hint first: the message line is cut at the screen's width.
-        say(page == pages::PageId::corr
-                ? strf(tr(":touch set PREF, not D%d (here type %c %s; :undo): %s"),
-                       sim_->corrector(), kAxisNames[size_t(axis)], mm(surface).c_str(),
-                       last_setting_.c_str())
-                : last_setting_);
+        b_.say(b_.page() == pages::PageId::corr
+                   ? strf(tr(":touch set PREF, not D%d (here type %c %s; :undo): %s"),
+                          b_.sim().corrector(), kAxisNames[size_t(axis)], mm(surface).c_str(),
+                          last_setting_.c_str())
+                   : last_setting_);
     }
     return Effect::redraw;
 }
 
-Effect Session::measure(int d, int axis, double surface) {
-    if (std::string w = at_rest(*sim_); !w.empty()) {
-        say(strf(tr("measure: %s"), w.c_str()), true);
+Effect SettingDesk::measure(int d, int axis, double surface) {
+    if (std::string w = at_rest(b_.sim()); !w.empty()) {
+        b_.say(strf(tr("measure: %s"), w.c_str()), true);
         return Effect::redraw;
     }
     setting::Touch t;
-    if (std::string why = setting::measure(sim_->interp(), d, axis, surface, t); !why.empty()) {
-        say(strf(tr("measure: %s"), why.c_str()), true);
+    if (std::string why = setting::measure(b_.sim().interp(), d, axis, surface, t); !why.empty()) {
+        b_.say(strf(tr("measure: %s"), why.c_str()), true);
         return Effect::redraw;
     }
-    if (apply_setting(t.name, t.after,
-                      "measure " + std::string(1, kAxisNames[size_t(axis)]) + " " + mm(surface))) {
+    if (apply(t.name, t.after,
+              "measure " + std::string(1, kAxisNames[size_t(axis)]) + " " + mm(surface))) {
         last_setting_ = t.formula + " " + strf(tr("(was %s)"), mm(t.before).c_str());
-        say(last_setting_);
+        b_.say(last_setting_);
     }
     return Effect::redraw;
 }
 
-Effect Session::undo() {
+Effect SettingDesk::undo() {
     if (undo_.empty()) {
-        say(tr("nothing to undo"), true);
+        b_.say(tr("nothing to undo"), true);
         return Effect::redraw;
     }
     Undo u = undo_.back();
     undo_.pop_back();
-    if (apply_setting(u.name, u.old, "undo")) {
+    if (apply(u.name, u.old, "undo")) {
         undo_.pop_back();  // the undo itself is not undone by the next :undo
-        say(strf(tr("undone: %s = %s"), u.name.c_str(), mm(u.old).c_str()));
+        b_.say(strf(tr("undone: %s = %s"), u.name.c_str(), mm(u.old).c_str()));
     }
     return Effect::redraw;
 }
 
 // The memory-protect key of the panel, with an optional PIN kept hashed.
-Effect Session::protect_command(std::string_view args) {
+Effect SettingDesk::protect_command(std::string_view args) {
     std::string a(args);
     while (!a.empty() && a.front() == ' ') a.erase(0, 1);
     std::string word = a.substr(0, a.find(' '));
     std::string rest = a.find(' ') == std::string::npos ? "" : a.substr(a.find(' ') + 1);
     auto stored_pin = [&]() -> std::string {
-        if (!store_) return {};
-        auto r = store_->setting("protect.pin");
+        if (!b_.store()) return {};
+        auto r = b_.store()->setting("protect.pin");
         return !r.error && r.value ? *r.value : std::string();
     };
     auto save_state = [&]() {
-        if (store_) store_->set_setting("protect.on", protect ? "1" : "0");
+        if (b_.store()) b_.store()->set_setting("protect.on", protect_ ? "1" : "0");
     };
-    if (word == "on" || (word.empty() && !protect)) {
-        protect = true;
+    if (word == "on" || (word.empty() && !protect_)) {
+        protect_ = true;
         save_state();
-        say(tr("memory protection ON: programs, origins and correctors are locked"));
+        b_.say(tr("memory protection ON: programs, origins and correctors are locked"));
     } else if (word == "off" || word.empty()) {
         std::string pin = stored_pin();
         if (!pin.empty()) {
             std::string salt = pin.substr(0, pin.find(':'));
             if (rest.empty() || salt + ":" + sha256_hex(salt + rest) != pin) {
-                say(tr("memory protection: wrong PIN (:protect off PIN)"), true);
+                b_.say(tr("memory protection: wrong PIN (:protect off PIN)"), true);
                 return Effect::redraw;
             }
         }
-        protect = false;
+        protect_ = false;
         save_state();
-        say(tr("memory protection off"));
+        b_.say(tr("memory protection off"));
     } else if (word == "pin") {
         if (!unprotected("the PIN")) return Effect::redraw;
-        if (!store_) {
-            say(tr("no store: the PIN cannot be kept"), true);
+        if (!b_.store()) {
+            b_.say(tr("no store: the PIN cannot be kept"), true);
         } else if (rest.empty()) {
-            store_->set_setting("protect.pin", "");
-            say(tr("PIN removed: the protection key needs none"));
+            b_.store()->set_setting("protect.pin", "");
+            b_.say(tr("PIN removed: the protection key needs none"));
         } else {
             std::random_device rd;
             char salt[17];
             std::snprintf(salt, sizeof salt, "%08x%08x", rd(), rd());
-            store_->set_setting("protect.pin",
-                                std::string(salt) + ":" + sha256_hex(std::string(salt) + rest));
-            say(tr("PIN set: :protect off PIN is needed to unlock"));
+            b_.store()->set_setting("protect.pin",
+                                    std::string(salt) + ":" + sha256_hex(std::string(salt) + rest));
+            b_.say(tr("PIN set: :protect off PIN is needed to unlock"));
         }
     } else {
-        say(strf(tr("usage: %s"), ":protect [on|off [PIN]|pin [NEWPIN]]"), true);
+        b_.say(strf(tr("usage: %s"), ":protect [on|off [PIN]|pin [NEWPIN]]"), true);
     }
     return Effect::redraw;
 }
 
 // The message line says how a decimal comma was read.
-void Session::echo_comma(std::string_view typed, double v) {
-    message_ =
-        strf(tr("read %s as %s: %s"), std::string(typed).c_str(), mm(v).c_str(), message_.c_str());
+void SettingDesk::echo_comma(std::string_view typed, double v) {
+    b_.message() = strf(tr("read %s as %s: %s"), std::string(typed).c_str(), mm(v).c_str(),
+                        b_.message().c_str());
 }
 
 // Text typed on the PREF page: NAME=VALUE, or AXIS VALUE for a touch-off.
 // On the CORR page: FIELD=VALUE for the corrector under the cursor, Dn to
 // choose one, AXIS VALUE to measure it by touching a surface.
-Effect Session::setting_text(std::string_view text) {
+Effect SettingDesk::text(std::string_view text) {
     std::string t(text);
     for (char& c : t) c = char(std::toupper(static_cast<unsigned char>(c)));
     size_t eq = t.find('=');
-    bool corr = page == pages::PageId::corr;
+    bool corr = b_.page() == pages::PageId::corr;
     if (eq == std::string::npos && looks_like_block(t)) {
         // TRANSLATORS: on the PREF or CORR page, an ISO block typed there.
-        say(tr("ISO blocks are typed in IMD on the OP page (F2), not here"), true);
+        b_.say(tr("ISO blocks are typed in IMD on the OP page (F2), not here"), true);
         return Effect::redraw;
     }
     if (eq != std::string::npos) {
@@ -362,25 +351,25 @@ Effect Session::setting_text(std::string_view text) {
         double v;
         bool comma = false;
         if (!parse_num(std::string_view(t).substr(eq + 1), v, &comma)) {
-            say(strf(tr("%s: not a number (use a decimal point: 1.5)"), name.c_str()), true);
+            b_.say(strf(tr("%s: not a number (use a decimal point: 1.5)"), name.c_str()), true);
             return Effect::redraw;
         }
         if (corr && name.find('.') == std::string::npos)
-            name = "D" + std::to_string(corr_cursor) + "." + name;
+            name = "D" + std::to_string(corr_cursor_) + "." + name;
         std::string source = corr ? "page CORR" : "page PREF";
         if (std::string question = implausible_gauge(name, v); !question.empty()) {
-            confirm(question, [this, name, v, source] { apply_setting(name, v, source); });
+            b_.confirm(question, [this, name, v, source] { apply(name, v, source); });
             return Effect::redraw;
         }
-        if (apply_setting(name, v, source) && comma) echo_comma(text, v);
+        if (apply(name, v, source) && comma) echo_comma(text, v);
         return Effect::redraw;
     }
     if (corr && t.size() > 1 && t[0] == 'D' && std::isdigit(static_cast<unsigned char>(t[1]))) {
         int d = std::atoi(t.c_str() + 1);
-        if (d < 1 || d > m_.correctors)
-            say(strf(tr("correctors are D1 to D%d"), m_.correctors), true);
+        if (d < 1 || d > b_.machine().correctors)
+            b_.say(strf(tr("correctors are D1 to D%d"), b_.machine().correctors), true);
         else
-            corr_cursor = d;
+            corr_cursor_ = d;
         return Effect::redraw;
     }
     int axis = t.empty() ? -1 : axis_of(t[0]);
@@ -389,26 +378,27 @@ Effect Session::setting_text(std::string_view text) {
     if (axis >= 0 && parse_num(std::string_view(t).substr(1), v, &comma)) {
         if (!corr)
             touch(axis, v);
-        else if (corr_cursor != sim_->corrector() && at_rest(*sim_).empty()) {
+        else if (corr_cursor_ != b_.sim().corrector() && at_rest(b_.sim()).empty()) {
             // The tool touching is the one of the active corrector: measuring
             // another asks first (docs/decisions.md, :measure never asks).
-            int d = corr_cursor;
+            int d = corr_cursor_;
             // TRANSLATORS: the corrector under the cursor, the active one, the first again.
-            confirm(strf(tr("D%d is not the active corrector (D%d): measure D%d with this tool?"),
-                         d, sim_->corrector(), d),
-                    [this, d, axis, v] { measure(d, axis, v); });
+            b_.confirm(
+                strf(tr("D%d is not the active corrector (D%d): measure D%d with this tool?"), d,
+                     b_.sim().corrector(), d),
+                [this, d, axis, v] { measure(d, axis, v); });
         } else {
-            measure(corr_cursor, axis, v);
+            measure(corr_cursor_, axis, v);
         }
-        if (comma && !message_error_) echo_comma(text, v);
+        if (comma && !b_.message_is_error()) echo_comma(text, v);
         return Effect::redraw;
     }
-    say(corr ? strf(tr("CORR: X=63.345 sets a field of D%d, D5 chooses a corrector, X 59.978 "
-                       "measures by a touched diameter"),
-                    corr_cursor)
-             : std::string(
-                   tr("PREF: PREF.Z=-300 or DEC1.X=2 sets a value, Z 0 or X 59.978 touches off")),
-        true);
+    b_.say(corr ? strf(tr("CORR: X=63.345 sets a field of D%d, D5 chooses a corrector, X 59.978 "
+                          "measures by a touched diameter"),
+                       corr_cursor_)
+                : std::string(tr(
+                      "PREF: PREF.Z=-300 or DEC1.X=2 sets a value, Z 0 or X 59.978 touches off")),
+           true);
     return Effect::redraw;
 }
 

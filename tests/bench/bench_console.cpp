@@ -42,7 +42,7 @@ struct Bench {
         s->load_store();
         s->sim().select(1);
         s->sim().set_mode(mode);
-        s->speed = console::Speed::max;
+        s->set_speed(console::Speed::max);
         s->sim().cycle_start();
     }
 };
@@ -80,7 +80,7 @@ BENCHMARK(BM_TickTest)->Unit(benchmark::kMillisecond);
 void BM_RenderProg(benchmark::State& st) {
     Bench b(Mode::automatic);
     for (int i = 0; i < 10; ++i) b.s->tick(1.0 / 30);
-    b.s->page = pages::PageId::prog;
+    b.s->show_page(pages::PageId::prog);
     pages::Canvas c(200, 60);
     for (auto _ : st) {
         b.s->tick(1.0 / 30);

@@ -205,16 +205,17 @@ std::string state(Console& c) {
     pages::View v = s.view();
     std::ostringstream o;
     o << "  " << v.message << (v.message_error ? "  [error]" : "") << "\n  page "
-      << pages::page_word(s.page) << ", " << mode_name(sim.mode()) << ", run " << int(sim.state())
-      << ", %" << sim.selected() << ", speed " << int(s.speed) << ", F" << sim.feed_override
+      << pages::page_word(s.page()) << ", " << mode_name(sim.mode()) << ", run " << int(sim.state())
+      << ", %" << sim.selected() << ", speed " << int(s.speed()) << ", F" << sim.feed_override
       << "% S" << sim.spindle_override << "%, skip " << s.sim().block_skip() << " m01 "
-      << s.sim().optional_stop() << ", inc " << sim.increment << ", D" << s.corr_cursor
-      << ", protect " << s.protect << ", undo " << s.undo_depth();
-    if (s.editor.is_open())
-        o << ", edit %" << s.editor.number << (s.editor.dirty ? "*" : "") << " line "
-          << s.editor.cursor << "/" << s.editor.lines().size() << (s.modif ? " MODIF" : "");
-    if (!s.pending_confirm.empty()) o << ", asks: " << s.pending_confirm;
-    if (s.quit) o << ", quit";
+      << s.sim().optional_stop() << ", inc " << sim.increment << ", D" << s.setting().corrector()
+      << ", protect " << s.setting().locked() << ", undo " << s.setting().undo_depth();
+    if (s.editing().editor().is_open())
+        o << ", edit %" << s.editing().editor().number << (s.editing().editor().dirty ? "*" : "")
+          << " line " << s.editing().editor().cursor << "/" << s.editing().editor().lines().size()
+          << (s.editing().modif() ? " MODIF" : "");
+    if (!s.question().empty()) o << ", asks: " << s.question();
+    if (s.quitting()) o << ", quit";
     return o.str() + "\n";
 }
 

@@ -47,7 +47,7 @@ bool has(const std::string& text, const std::string& what) {
 }
 
 std::string editor_text(const Console& c) {
-    return c.s->editor.text();
+    return c.s->editing().editor().text();
 }
 
 }  // namespace
@@ -61,10 +61,10 @@ TEST(Newcomer, EditingTheOpenProgramAgainAsksBeforeDroppingItsChanges) {
     c.type("N50 M2 (IMPORTANT WORK)");
     ASSERT_TRUE(has(st.journal(500), "IMPORTANT WORK"));
     c.type(":edit 500");
-    ASSERT_FALSE(c.s->pending_confirm.empty()) << c.message();
+    ASSERT_FALSE(c.s->question().empty()) << c.message();
     EXPECT_TRUE(has(c.message(), "unsaved changes")) << c.message();
     c.key("n");  // one key answers
-    EXPECT_TRUE(c.s->pending_confirm.empty());
+    EXPECT_TRUE(c.s->question().empty());
     c.type("N60 M5");
     EXPECT_TRUE(has(editor_text(c), "IMPORTANT WORK")) << editor_text(c);
     EXPECT_TRUE(has(st.journal(500), "IMPORTANT WORK")) << st.journal(500);
@@ -85,7 +85,7 @@ TEST(Newcomer, RestoringARevisionOverUnsavedChangesAsks) {
     c.type(":save");
     c.type("N2 (NOT SAVED)");
     c.type(":restore 1");
-    ASSERT_FALSE(c.s->pending_confirm.empty()) << c.message();
+    ASSERT_FALSE(c.s->question().empty()) << c.message();
     c.key("n");
     EXPECT_TRUE(has(editor_text(c), "NOT SAVED"));
     EXPECT_TRUE(has(st.journal(300), "NOT SAVED"));
@@ -161,7 +161,7 @@ TEST(Newcomer, AnImdBlockTypedOnASettingPageIsRefusedThere) {
     c.type("X40 Z25");
     EXPECT_TRUE(has(c.message(), "in IMD on the OP page (F2)")) << c.message();
     c.type("Z 0");  // still a touch-off (D0: it asks)
-    EXPECT_FALSE(c.s->pending_confirm.empty()) << c.message();
+    EXPECT_FALSE(c.s->question().empty()) << c.message();
 }
 
 // Item 13: one key answers; a page change cancels the question and says so.
@@ -169,16 +169,16 @@ TEST(Newcomer, OneKeyAnswersAndAPageChangeCancels) {
     Console c;
     c.type(":page pref");
     c.type("Z 0");  // D0: asks
-    ASSERT_FALSE(c.s->pending_confirm.empty());
+    ASSERT_FALSE(c.s->question().empty());
     c.named("F2");
-    EXPECT_TRUE(c.s->pending_confirm.empty());
+    EXPECT_TRUE(c.s->question().empty());
     EXPECT_TRUE(has(c.message(), "question cancelled")) << c.message();
     c.type(":page pref");
     c.type("Z 0");
-    ASSERT_FALSE(c.s->pending_confirm.empty());
+    ASSERT_FALSE(c.s->question().empty());
     const double before = c.s->sim().interp().frames().pref[Z];
     c.key("y");  // no Enter
-    EXPECT_TRUE(c.s->pending_confirm.empty());
+    EXPECT_TRUE(c.s->question().empty());
     EXPECT_NE(c.s->sim().interp().frames().pref[Z], before);
     EXPECT_EQ(c.s->input().text(), "");
     // The Enter typed after it by habit is not a second action (in EDIT,
@@ -188,7 +188,7 @@ TEST(Newcomer, OneKeyAnswersAndAPageChangeCancels) {
     c.type(":close");
     c.key("n");
     c.key("\r");
-    EXPECT_FALSE(c.s->modify_pending);
+    EXPECT_FALSE(c.s->editing().modifying());
     EXPECT_TRUE(has(c.message(), "cancelled")) << c.message();
 }
 
@@ -201,25 +201,25 @@ TEST(Newcomer, KeysDoNothingBlindOnATooSmallScreen) {
     c.run_until_settled();
     c.type(":load 300");
     c.type(":mode auto");
-    c.s->cols = 60, c.s->rows = 20;
+    c.s->resize(60, 20);
     c.named("F9");
     EXPECT_EQ(c.s->sim().state(), RunState::idle);
     c.named("F2");
-    EXPECT_NE(c.s->page, pages::PageId::om);
+    EXPECT_NE(c.s->page(), pages::PageId::om);
     c.type(":cycle");
     EXPECT_EQ(c.s->sim().state(), RunState::idle);
     EXPECT_TRUE(has(c.message(), "too small")) << c.message();
     const std::string small = c.screen(60, 20);
     EXPECT_TRUE(has(small, "too small")) << small;
     c.type(":quit");
-    EXPECT_TRUE(c.s->quit);
+    EXPECT_TRUE(c.s->quitting());
 }
 
 TEST(Newcomer, CtrlCQuitsOnATooSmallScreen) {
     Console c;
-    c.s->cols = 60, c.s->rows = 20;
+    c.s->resize(60, 20);
     c.named("C-c");
-    EXPECT_TRUE(c.s->quit);
+    EXPECT_TRUE(c.s->quitting());
 }
 
 // Item 15: an IMD block longer than a block may be is refused at Enter.
@@ -241,8 +241,8 @@ TEST(Newcomer, ATypedHeaderIsTheNewProgramsHeader) {
     c.type("%500 (TEST)");
     c.type("N10 G0 X10");
     c.type("N20 M2");
-    ASSERT_EQ(c.s->editor.lines().size(), 3u) << editor_text(c);
-    EXPECT_EQ(c.s->editor.lines()[0], "%500 (TEST)");
+    ASSERT_EQ(c.s->editing().editor().lines().size(), 3u) << editor_text(c);
+    EXPECT_EQ(c.s->editing().editor().lines()[0], "%500 (TEST)");
     c.type(":save");
     EXPECT_TRUE(has(c.message(), "saved as revision")) << c.message();
     auto r = c.s->store()->read(500);
@@ -250,7 +250,7 @@ TEST(Newcomer, ATypedHeaderIsTheNewProgramsHeader) {
     EXPECT_EQ(r.value.text, "%500 (TEST)\nN10 G0 X10\nN20 M2\n");
     c.type("%501 (OTHER)");
     EXPECT_TRUE(has(c.message(), ":edit N opens another")) << c.message();
-    EXPECT_EQ(c.s->editor.lines().size(), 3u);
+    EXPECT_EQ(c.s->editing().editor().lines().size(), 3u);
 }
 
 // Item 19: :mode's usage names every word it takes.

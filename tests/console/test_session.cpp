@@ -7,6 +7,7 @@
 #include <set>
 #include <sstream>
 
+#include "console/bindings.hpp"
 #include "console/commands.hpp"
 #include "core/sha256.hpp"
 #include "tests/console/fixture.hpp"
@@ -25,15 +26,15 @@ double x_display(const Console& c) {
 TEST(Session, FunctionKeysSelectPages) {
     Console c;
     c.named("F6");
-    EXPECT_EQ(c.s->page, pages::PageId::dir);
+    EXPECT_EQ(c.s->page(), pages::PageId::dir);
     c.named("F1");
-    EXPECT_EQ(c.s->page, pages::PageId::help);
+    EXPECT_EQ(c.s->page(), pages::PageId::help);
     c.named("F2");
-    EXPECT_EQ(c.s->page, pages::PageId::op);
+    EXPECT_EQ(c.s->page(), pages::PageId::op);
     c.named("F2");  // toggles OP and OM
-    EXPECT_EQ(c.s->page, pages::PageId::om);
+    EXPECT_EQ(c.s->page(), pages::PageId::om);
     c.type(":page alarm");
-    EXPECT_EQ(c.s->page, pages::PageId::alarm);
+    EXPECT_EQ(c.s->page(), pages::PageId::alarm);
 }
 
 TEST(Session, TextGoesToTheInputLineUntilEnter) {
@@ -41,7 +42,7 @@ TEST(Session, TextGoesToTheInputLineUntilEnter) {
     c.key(":pa");
     EXPECT_EQ(c.input.text(), ":pa");
     c.key("ge info\r");
-    EXPECT_EQ(c.s->page, pages::PageId::info);
+    EXPECT_EQ(c.s->page(), pages::PageId::info);
     EXPECT_EQ(c.input.text(), "");
 }
 
@@ -50,7 +51,7 @@ TEST(Session, DirPageLoadsWithEnterAndDeletesOnlyWithAStore) {
     c.named("F6");
     ASSERT_GE(c.s->programs().size(), 2u);
     c.named("Down");
-    EXPECT_EQ(c.s->dir_cursor, 1);
+    EXPECT_EQ(c.s->dir_cursor(), 1);
     c.named("Up");
     c.named("Enter");
     EXPECT_EQ(c.s->sim().selected(), 300);
@@ -260,7 +261,7 @@ TEST(Session, SetValuesAsTheCommandLineNamesThem) {
 TEST(Session, CtrlCQuits) {
     Console c;
     c.key("\x03");
-    EXPECT_TRUE(c.s->quit);
+    EXPECT_TRUE(c.s->quitting());
 }
 
 TEST(Session, UnknownCommandsSayHowToFindTheRightOne) {
@@ -322,12 +323,12 @@ TEST(Bindings, ErrorsNameTheLine) {
 
 TEST(Bindings, UserLinesWinAndContextsAreMoreSpecific) {
     Console c;
-    c.s->bindings.parse("F1 page dir\n", "user");
+    c.s->add_bindings("F1 page dir\n", "user");
     c.named("F1");
-    EXPECT_EQ(c.s->page, pages::PageId::dir);
+    EXPECT_EQ(c.s->page(), pages::PageId::dir);
     // On the DIR page, Down moves the cursor; elsewhere it is the history.
     c.named("Down");
-    EXPECT_EQ(c.s->page, pages::PageId::dir);
+    EXPECT_EQ(c.s->page(), pages::PageId::dir);
 }
 
 TEST(Bindings, HelpAndSoftKeysComeFromTheTable) {
@@ -383,7 +384,7 @@ TEST(Setting, MeasureAToolByATouchedDiameterOnTheCorrPage) {
     c.type(":set PREF.X=0");
     c.type(":page corr");
     c.type("D2");
-    EXPECT_EQ(c.s->corr_cursor, 2);
+    EXPECT_EQ(c.s->setting().corrector(), 2);
     c.type("Z=41.5");  // presetter reading
     double z;
     ASSERT_TRUE(c.s->sim().interp().get("D2.Z", z));
@@ -399,7 +400,7 @@ TEST(Setting, MeasureAToolByATouchedDiameterOnTheCorrPage) {
     double z3;
     c.s->sim().interp().get("D3.Z", z3);
     EXPECT_NEAR(z3, 200, 1e-9);  // OM Z 200 with PREF Z 0
-    EXPECT_EQ(c.s->corr_cursor, 3);
+    EXPECT_EQ(c.s->setting().corrector(), 3);
 }
 
 TEST(Setting, UndoRestoresTheLastChange) {
@@ -417,14 +418,14 @@ TEST(Setting, UndoRestoresTheLastChange) {
 TEST(Setting, ProtectionLocksOriginsAndCorrectors) {
     Console c;
     c.named("M-k");
-    EXPECT_TRUE(c.s->protect);
+    EXPECT_TRUE(c.s->setting().locked());
     c.type(":set PREF.Z=-300");
     EXPECT_NE(c.message().find("memory protection is on"), std::string::npos);
     EXPECT_DOUBLE_EQ(c.s->sim().interp().frames().pref[Z], 0);
     c.type(":touch Z 0");
     EXPECT_DOUBLE_EQ(c.s->sim().interp().frames().pref[Z], 0);
     c.type(":protect off");
-    EXPECT_FALSE(c.s->protect);
+    EXPECT_FALSE(c.s->setting().locked());
 }
 
 TEST(Setting, AGaugeChangedDuringARunIsPendingUntilItsAxisMoves) {
@@ -458,10 +459,10 @@ TEST(Setting, AGaugeChangedDuringARunIsPendingUntilItsAxisMoves) {
 TEST(Edit, ANewProgramTypedSavedAndRun) {
     Console c("mill", {});
     c.type(":edit 777");
-    EXPECT_EQ(c.s->page, pages::PageId::edit);
+    EXPECT_EQ(c.s->page(), pages::PageId::edit);
     c.type("N10 G0 X10 Y10 Z10");
     c.type("N20 M2");
-    EXPECT_TRUE(c.s->editor.dirty);
+    EXPECT_TRUE(c.s->editing().editor().dirty);
     c.type(":save");
     EXPECT_NE(c.message().find("%777 saved"), std::string::npos) << c.message();
     ASSERT_NE(c.s->memory().find(777), nullptr);
@@ -486,8 +487,8 @@ TEST(Edit, LineNumbersPast99999AreWrittenWhole) {
     Diag d;
     ASSERT_TRUE(c.s->memory().load_text("long.iso", text, d)) << d.detail;
     c.type(":edit 780");
-    ASSERT_EQ(c.s->page, pages::PageId::edit);
-    c.s->editor.cursor = 100005;  // line 100006
+    ASSERT_EQ(c.s->page(), pages::PageId::edit);
+    c.s->editing().editor().cursor = 100005;  // line 100006
     std::string screen = c.screen();
     EXPECT_NE(screen.find("100004  G1 X1 (L100004)"), std::string::npos) << screen;
     EXPECT_NE(screen.find("100006 >G1 X1 (L100006)"), std::string::npos) << screen;
@@ -501,14 +502,14 @@ TEST(Edit, SavingABadBlockPutsTheCursorOnItWithItsNumber) {
     c.type("N30 M2");
     c.type(":save");
     EXPECT_NE(c.message().find("line 3 N20: error 17"), std::string::npos) << c.message();
-    EXPECT_EQ(c.s->editor.cursor, 2);
+    EXPECT_EQ(c.s->editing().editor().cursor, 2);
     EXPECT_EQ(c.s->memory().find(778), nullptr);  // not saved
     // Enter puts the block on the input line; the corrected text replaces it.
     c.named("Enter");
     EXPECT_EQ(c.input.text(), "N20 G1 X5 (NO END");
     c.key(")");
     c.key("\r");
-    EXPECT_EQ(c.s->editor.lines()[2], "N20 G1 X5 (NO END)");
+    EXPECT_EQ(c.s->editing().editor().lines()[2], "N20 G1 X5 (NO END)");
     c.type(":save");
     EXPECT_NE(c.s->memory().find(778), nullptr);
 }
@@ -519,15 +520,15 @@ TEST(Edit, KeysMoveDeleteCopyAndPaste) {
     c.type("A1");
     c.type("B2");
     c.named("Up");
-    EXPECT_EQ(c.s->editor.cursor, 1);
+    EXPECT_EQ(c.s->editing().editor().cursor, 1);
     c.named("M-w");  // copy A1
     c.named("End");
     c.named("C-y");  // paste after B2
-    EXPECT_EQ(c.s->editor.text(), "%779\nA1\nB2\nA1\n");
+    EXPECT_EQ(c.s->editing().editor().text(), "%779\nA1\nB2\nA1\n");
     c.named("Home");
     c.named("Down");
     c.named("Del");
-    EXPECT_EQ(c.s->editor.text(), "%779\nB2\nA1\n");
+    EXPECT_EQ(c.s->editing().editor().text(), "%779\nB2\nA1\n");
     c.type(":goto N1");
     EXPECT_NE(c.message().find("no block"), std::string::npos);
 }
@@ -545,18 +546,19 @@ TEST(Modif, AChangedBlockRunsAfterSingleBlock) {
     }
     ASSERT_EQ(c.s->sim().state(), RunState::block);
     c.type(":mode modif");
-    ASSERT_TRUE(c.s->modif) << c.message();
-    EXPECT_EQ(c.s->editor.lines()[size_t(c.s->editor.cursor)], "N50 G0 X50");
-    c.s->editor.cursor = 3;  // N30: already run
+    ASSERT_TRUE(c.s->editing().modif()) << c.message();
+    EXPECT_EQ(c.s->editing().editor().lines()[size_t(c.s->editing().editor().cursor)],
+              "N50 G0 X50");
+    c.s->editing().editor().cursor = 3;  // N30: already run
     c.named("Enter");
     EXPECT_NE(c.message().find("already prepared"), std::string::npos);
-    c.s->editor.cursor = 5;
+    c.s->editing().editor().cursor = 5;
     c.named("Enter");
     c.key("\x15");  // Ctrl-U
     c.type("N50 G0 X56");
     c.named("F9");  // the changed N50 runs
     c.run_until_settled();
-    EXPECT_FALSE(c.s->modif);
+    EXPECT_FALSE(c.s->editing().modif());
     EXPECT_NEAR(c.s->sim().to_display(X, c.s->sim().op()[X]), 56, 1e-9);
     EXPECT_NE(std::string(*c.s->memory().find(950)->text).find("N50 G0 X56"), std::string::npos);
     c.named("F9");
@@ -576,7 +578,7 @@ TEST(Modif, M999ForbidsModifAndImd) {
     ASSERT_EQ(c.s->sim().state(), RunState::stopped);  // the M00 after M999
     c.type(":mode modif");
     EXPECT_NE(c.message().find("M999"), std::string::npos);
-    EXPECT_FALSE(c.s->modif);
+    EXPECT_FALSE(c.s->editing().modif());
 }
 
 TEST(Setting, ThePinIsNeededToUnlockAndIsNotStoredInClear) {
@@ -588,9 +590,9 @@ TEST(Setting, ThePinIsNeededToUnlockAndIsNotStoredInClear) {
         Console c("lathe", {}, std::move(opened.value));
         c.type(":protect pin 4321");
         c.type(":protect on");
-        EXPECT_TRUE(c.s->protect);
+        EXPECT_TRUE(c.s->setting().locked());
         c.type(":protect off 1234");
-        EXPECT_TRUE(c.s->protect);
+        EXPECT_TRUE(c.s->setting().locked());
         EXPECT_NE(c.message().find("wrong PIN"), std::string::npos);
         c.type(":rm 300");
         EXPECT_NE(c.message().find("memory protection is on"), std::string::npos);
@@ -609,9 +611,9 @@ TEST(Setting, ThePinIsNeededToUnlockAndIsNotStoredInClear) {
     auto again = store::Store::open(path);
     ASSERT_FALSE(again.error);
     Console c("lathe", {}, std::move(again.value));
-    EXPECT_TRUE(c.s->protect);
+    EXPECT_TRUE(c.s->setting().locked());
     c.type(":protect off 4321");
-    EXPECT_FALSE(c.s->protect);
+    EXPECT_FALSE(c.s->setting().locked());
     std::remove(path.c_str());
 }
 
@@ -623,17 +625,17 @@ TEST(Graph, TestDrawsTheWholeProgramAndKeysChangeTheWindow) {
     c.type(":mode test");
     c.named("F9");
     c.run_until_settled();
-    EXPECT_EQ(c.s->toolpath().size(), 7u);  // the demo's seven moves
+    EXPECT_EQ(c.s->graph().path().size(), 7u);  // the demo's seven moves
     c.named("F3");
     c.named("F3");  // PROG, then GRAPH
-    ASSERT_EQ(c.s->page, pages::PageId::graph);
+    ASSERT_EQ(c.s->page(), pages::PageId::graph);
     c.key("+");
-    EXPECT_FALSE(c.s->graph.fit);
-    double scale = c.s->graph.scale;
+    EXPECT_FALSE(c.s->graph().window().fit);
+    double scale = c.s->graph().window().scale;
     c.key("+");
-    EXPECT_NEAR(c.s->graph.scale, scale / 2, 1e-12);
+    EXPECT_NEAR(c.s->graph().window().scale, scale / 2, 1e-12);
     c.key("f");
-    EXPECT_TRUE(c.s->graph.fit);
+    EXPECT_TRUE(c.s->graph().window().fit);
     EXPECT_EQ(c.input.text(), "");  // the keys did not reach the input line
     EXPECT_NE(c.screen().find("GRAPH  ZX"), std::string::npos);
 }
@@ -642,7 +644,7 @@ TEST(Graph, FitSaysWhatItFits) {
     Console c;
     c.named("F3");
     c.named("F3");
-    ASSERT_EQ(c.s->page, pages::PageId::graph);
+    ASSERT_EQ(c.s->page(), pages::PageId::graph);
     c.key("f");
     EXPECT_EQ(c.message(), "fit: the start point (no move yet)");
     c.type(":load 300");
@@ -655,7 +657,7 @@ TEST(Graph, FitSaysWhatItFits) {
     // X150 Z200, are left out, as the plot's frame leaves them out.
     EXPECT_EQ(c.message(), "fit: the cutting moves of %300 (4 rapids reach beyond)");
     EXPECT_NE(c.screen().find("GRAPH  ZX  %300"), std::string::npos);
-    EXPECT_TRUE(c.s->graph.fit);
+    EXPECT_TRUE(c.s->graph().window().fit);
 }
 
 TEST(Graph, AutoDrawsAsTheMovesAreShown) {
@@ -667,11 +669,11 @@ TEST(Graph, AutoDrawsAsTheMovesAreShown) {
     c.type(":mode auto");
     c.named("F9");
     for (int i = 0; i < 30 * 3; ++i) c.s->tick(1.0 / 30);
-    size_t partway = c.s->toolpath().size();
+    size_t partway = c.s->graph().path().size();
     EXPECT_GT(partway, 0u);
     EXPECT_LT(partway, 7u);
     c.run_until_settled();
-    EXPECT_EQ(c.s->toolpath().size(), 7u);
+    EXPECT_EQ(c.s->graph().path().size(), 7u);
 }
 
 // ---- G76+ / G76- in the console: the program memory is the store ----

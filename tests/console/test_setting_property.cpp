@@ -34,7 +34,7 @@ void cycle(Console& c) {
 
 // Answers "y" when the console asks (a touch-off with D0).
 void answer(Console& c) {
-    if (!c.s->pending_confirm.empty()) c.type("y");
+    if (!c.s->question().empty()) c.type("y");
 }
 
 struct Step {
@@ -198,10 +198,10 @@ TEST(SettingProperty, ACommandDropsAPendingQuestion) {
     Console c;
     c.type(":page pref");
     c.type("X 150");  // D0: asks first
-    ASSERT_FALSE(c.s->pending_confirm.empty());
+    ASSERT_FALSE(c.s->question().empty());
     double before = c.s->sim().interp().frames().pref[X];
     c.type(":page op");
-    EXPECT_TRUE(c.s->pending_confirm.empty());
+    EXPECT_TRUE(c.s->question().empty());
     EXPECT_EQ(c.s->sim().interp().frames().pref[X], before);
     c.type("y");  // no question any more: not a confirmation
     EXPECT_EQ(c.s->sim().interp().frames().pref[X], before);
@@ -238,11 +238,11 @@ TEST(SettingProperty, ALateYesDoesNotTouchOffWhileTheAxesMove) {
     Console c;
     c.type(":page pref");
     c.type("Z 0");  // D0: asks first
-    ASSERT_FALSE(c.s->pending_confirm.empty());
+    ASSERT_FALSE(c.s->question().empty());
     c.type(":mode pom");  // drops the question (a command); ask again
     c.type(":page pref");
     c.type("Z 0");
-    ASSERT_FALSE(c.s->pending_confirm.empty());
+    ASSERT_FALSE(c.s->question().empty());
     c.named("F9");  // POM: the axes move
     ASSERT_EQ(c.s->sim().state(), RunState::running);
     double before = c.s->sim().interp().frames().pref[Z];

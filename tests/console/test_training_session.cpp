@@ -18,6 +18,7 @@
 
 #include "console/class_report.hpp"
 #include "console/exercise.hpp"
+#include "console/exercise_run.hpp"
 #include "core/i18n.hpp"
 #include "core/training/exercise.hpp"
 #include "tests/console/fixture.hpp"
@@ -201,11 +202,11 @@ TEST(TrainingSession, TheProgramTheExerciseReplacesIsKeptAndNamed) {
     }
     {
         Attempt a("wear", "gina", db);
-        EXPECT_EQ(a.c->s->exercise()->program_note,
+        EXPECT_EQ(a.c->s->exercise()->program_note(),
                   "%20 is now the exercise's; the text it replaced is revision 1 (:history 20)");
     }
     Attempt again("wear", "gina", db);  // the same text: nothing replaced, nothing said
-    EXPECT_EQ(again.c->s->exercise()->program_note, "");
+    EXPECT_EQ(again.c->s->exercise()->program_note(), "");
     auto st = store::Store::open(db);
     auto old = st.value->read(20, 1);
     ASSERT_FALSE(old.error);

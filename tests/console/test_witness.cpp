@@ -90,9 +90,9 @@ TEST(Witness, CazeneuveTangentKeptInTheStore) {
         EXPECT_NE(c.s->view().witness.find("58.000"), std::string::npos);
         // No PARAM page on this controller: F5 goes PREF, CORR, PREF.
         c.named("F5");
-        EXPECT_EQ(c.s->page, pages::PageId::pref);
+        EXPECT_EQ(c.s->page(), pages::PageId::pref);
         c.named("F5");
-        EXPECT_EQ(c.s->page, pages::PageId::corr);
+        EXPECT_EQ(c.s->page(), pages::PageId::corr);
     }
     auto again = store::Store::open(path);
     ASSERT_FALSE(again.error);
