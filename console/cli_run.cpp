@@ -194,9 +194,8 @@ void warn_unreached(const RunArgs& a, const ProgramMemory& mem,
         while (pos < body.size()) {
             size_t eol = body.find('\n', pos);
             if (eol == std::string_view::npos) eol = body.size();
-            Error e;
-            if (!parse_block(body.substr(pos, eol - pos), b, e) &&
-                !reported.count({p->file, line})) {
+            Error e = parse_block(body.substr(pos, eol - pos), b);
+            if (e && !reported.count({p->file, line})) {
                 Diag d = diag_of(e, Severity::warning);
                 d.file = p->file;
                 d.program = p->number;
