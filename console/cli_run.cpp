@@ -47,10 +47,9 @@ bool load_machine(const std::string& name, MachineProfile& m) {
 // Loads every file; returns an exit code (0 on success).
 int load_all(const std::vector<std::string>& files, ProgramMemory& mem) {
     for (const auto& f : files) {
-        Diag d;
-        if (!mem.load_file(f, d)) {
-            print_diag(d);
-            return d.code == err::kCannotRead ? kNoInput : kDataErr;
+        if (std::optional<Diag> d = mem.load_file(f)) {
+            print_diag(*d);
+            return d->code == err::kCannotRead ? kNoInput : kDataErr;
         }
     }
     for (const Diag& w : mem.warnings()) print_diag(w);

@@ -157,9 +157,9 @@ Effect Session::edit_save(bool force) {
         }
         editor.revision = r.value.revision;
     }
-    Diag md;
-    if (!mem_.replace(editor.number, "store:%" + std::to_string(editor.number), text, md)) {
-        say(strf(tr("saved, but not loaded: %s"), md.detail.c_str()), true);
+    if (std::optional<Diag> md =
+            mem_.replace(editor.number, "store:%" + std::to_string(editor.number), text)) {
+        say(strf(tr("saved, but not loaded: %s"), md->detail.c_str()), true);
         return Effect::redraw;
     }
     sim_->invalidate_text_cache();
@@ -229,8 +229,7 @@ Effect Session::edit_restore(int rev) {
     editor.close();
     edit_open(n);
     if (auto p = store_->read(n); !p.error) {
-        Diag d;
-        mem_.replace(n, "store:%" + std::to_string(n), p.value.text, d);
+        mem_.replace(n, "store:%" + std::to_string(n), p.value.text);
         sim_->invalidate_text_cache();
     }
     refresh_dir();
@@ -292,10 +291,10 @@ bool Session::modif_apply() {
             true);
         return false;
     }
-    Diag d;
-    if (!mem_.replace(editor.number, "store:%" + std::to_string(editor.number), text, d)) {
+    if (std::optional<Diag> d =
+            mem_.replace(editor.number, "store:%" + std::to_string(editor.number), text)) {
         modif = true;
-        say("MODIF: " + d.detail, true);
+        say("MODIF: " + d->detail, true);
         return false;
     }
     sim_->invalidate_text_cache();

@@ -44,8 +44,7 @@ std::string rehearse(const Exercise& e, const workshop::Setup& truth) {
     Quiet quiet;
     workshop::Workshop shop(m, truth, &quiet);
     if (!e.program.empty()) {
-        Diag d;
-        if (!mem.load_text("exercise", e.program, d)) return d.detail;
+        if (std::optional<Diag> d = mem.load_text("exercise", e.program)) return d->detail;
     }
     Interpreter in(m, mem, shop);
     if (std::string why = set_right(e, truth, in); !why.empty()) return why;

@@ -61,8 +61,7 @@ void run_each_iteration(benchmark::State& st, const char* machine, const std::st
     } sink;
     for (auto _ : st) {
         ProgramMemory mem;
-        Diag d;
-        mem.load_text("bench.iso", text, d);
+        mem.load_text("bench.iso", text);
         Interpreter in(m, mem, sink);
         in.start(mem.first());
         in.run_to_end();
