@@ -47,10 +47,9 @@ bool load_machine(const std::string& name, MachineProfile& m) {
 // Loads every file; returns an exit code (0 on success).
 int load_all(const std::vector<std::string>& files, ProgramMemory& mem) {
     for (const auto& f : files) {
-        Diag d;
-        if (!mem.load_file(f, d)) {
-            print_diag(d);
-            return d.code == err::kCannotRead ? kNoInput : kDataErr;
+        if (std::optional<Diag> d = mem.load_file(f)) {
+            print_diag(*d);
+            return d->code == err::kCannotRead ? kNoInput : kDataErr;
         }
     }
     for (const Diag& w : mem.warnings()) print_diag(w);
@@ -194,9 +193,8 @@ void warn_unreached(const RunArgs& a, const ProgramMemory& mem,
         while (pos < body.size()) {
             size_t eol = body.find('\n', pos);
             if (eol == std::string_view::npos) eol = body.size();
-            Error e;
-            if (!parse_block(body.substr(pos, eol - pos), b, e) &&
-                !reported.count({p->file, line})) {
+            Error e = parse_block(body.substr(pos, eol - pos), b);
+            if (e && !reported.count({p->file, line})) {
                 Diag d = diag_of(e, Severity::warning);
                 d.file = p->file;
                 d.program = p->number;

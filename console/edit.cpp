@@ -188,10 +188,9 @@ Effect EditDesk::save(bool force) {
         }
         editor_.revision = r.value.revision;
     }
-    Diag md;
-    if (!b_.memory().replace(editor_.number, "store:%" + std::to_string(editor_.number), text,
-                             md)) {
-        b_.say(strf(tr("saved, but not loaded: %s"), md.detail.c_str()), true);
+    if (std::optional<Diag> md =
+            b_.memory().replace(editor_.number, "store:%" + std::to_string(editor_.number), text)) {
+        b_.say(strf(tr("saved, but not loaded: %s"), md->detail.c_str()), true);
         return Effect::redraw;
     }
     b_.sim().invalidate_text_cache();
@@ -261,8 +260,7 @@ Effect EditDesk::restore(int rev) {
     editor_.close();
     open(n);
     if (auto p = b_.store()->read(n); !p.error) {
-        Diag d;
-        b_.memory().replace(n, "store:%" + std::to_string(n), p.value.text, d);
+        b_.memory().replace(n, "store:%" + std::to_string(n), p.value.text);
         b_.sim().invalidate_text_cache();
     }
     b_.refresh_dir();
@@ -325,10 +323,10 @@ bool EditDesk::modif_apply() {
                true);
         return false;
     }
-    Diag d;
-    if (!b_.memory().replace(editor_.number, "store:%" + std::to_string(editor_.number), text, d)) {
+    if (std::optional<Diag> d =
+            b_.memory().replace(editor_.number, "store:%" + std::to_string(editor_.number), text)) {
         modif_ = true;
-        b_.say("MODIF: " + d.detail, true);
+        b_.say("MODIF: " + d->detail, true);
         return false;
     }
     b_.sim().invalidate_text_cache();

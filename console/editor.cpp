@@ -240,8 +240,7 @@ std::optional<Diag> Editor::check() {
     for (size_t i = 0; i < lines_.size(); ++i) {
         const std::string& l = lines_[i];
         if (!l.empty() && l[0] == '%') continue;
-        Error e;
-        if (!parse_block(l, b, e)) {
+        if (Error e = parse_block(l, b)) {
             Diag d = diag_of(e);
             d.line = int(i) + 1;
             d.n = line_label(l);

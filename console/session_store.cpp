@@ -186,9 +186,7 @@ void Session::sync_from_store() {
         if (p.error) continue;
         const ProgramText* mine = mem_.find(e.number);
         if (mine && program_text(*mine) == p.value.text) continue;
-        Diag d;
-        if (!mem_.replace(e.number, "store:%" + std::to_string(e.number), p.value.text, d))
-            continue;
+        if (mem_.replace(e.number, "store:%" + std::to_string(e.number), p.value.text)) continue;
         news += (news.empty() ? "%" : ", %") + std::to_string(e.number) + " r" +
                 std::to_string(e.revision);
         if (const Editor& ed = editing_.editor();

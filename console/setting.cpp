@@ -120,7 +120,9 @@ bool SettingDesk::apply(const std::string& name, double value, const std::string
         b_.say(strf(tr("%s: %s is beyond any machine"), name.c_str(), mm(value).c_str()), true);
         return false;
     }
-    bool code = name.size() > 2 && name.substr(name.size() - 2) == ".C";
+    // A lathe's nose orientation D3.C is a code; PREF.C, the origin of a
+    // rotary axis C, is an angle: the vocabulary tells them apart.
+    bool code = value_unit(name) == ValueUnit::whole;
     if (code && (value != std::floor(value) || value < 0 || value > 8)) {
         b_.say(strf(tr("%s: the nose orientation is a code from 0 to 8"), name.c_str()), true);
         return false;

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <span>
 
+#include "core/interp/value_name.hpp"
 #include "pages/pages.hpp"
 
 namespace pupitre::pages {
@@ -46,7 +47,7 @@ int origins_table(const View& v, Canvas& c, const Rect& r) {
             const int i = cols[k];
             bool pending = false;
             if (i < 3) {
-                std::string n = std::string(i == 0 ? "PREF." : i == 1 ? "DEC1." : "DEC3.") + name;
+                std::string n = format_value_name(ValueName::origin(i, a));
                 pending = std::find(v.pending.begin(), v.pending.end(), n) != v.pending.end();
             }
             // OM and OP show the lathe's X as the OP page does: a diameter.

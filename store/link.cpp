@@ -27,17 +27,16 @@ Result<int> load_programs(Store& s, ProgramMemory& mem) {
         if (mem.find(number)) return;
         std::string name = "store:%" + std::to_string(number);
         Header h;
-        Diag d;
         if (parse_program(text, name, h)) return;  // refused at save: cannot happen
         if (h.number >= 0) {
-            if (mem.load_text(name, std::string(text), d)) ++r.value;
+            if (!mem.load_text(name, std::string(text))) ++r.value;
             return;
         }
         // A fragment stored without a % line: its number is the store's. Its lines
         // keep their numbers in the diagnostics.
         std::string with_header = "%" + std::to_string(number) + "\n";
         with_header += text;
-        if (mem.load_text(name, std::move(with_header), d)) {
+        if (!mem.load_text(name, std::move(with_header))) {
             mem.programs().back()->first_line = 1;
             ++r.value;
         }

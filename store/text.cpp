@@ -90,9 +90,8 @@ StoreError parse_piece(std::string_view text, std::string_view name, int first_l
                "into its programs)"),
             file.c_str(), where(headers[1].line)));
     ProgramMemory mem;
-    Diag d;
-    if (!mem.load_text(std::string(name), std::string(text), d))
-        return bad(std::string(name) + ": " + d.detail);
+    if (std::optional<Diag> d = mem.load_text(std::string(name), std::string(text)))
+        return bad(std::string(name) + ": " + d->detail);
     const auto& progs = mem.programs();
     if (progs.size() != 1)  // ProgramMemory made a program of the blocks before the % line
         return bad(
@@ -118,9 +117,8 @@ Result<std::vector<Piece>> split_file(std::string_view text, std::string_view na
     const std::string source = "import " + std::string(name);
     if (starts.empty()) {
         ProgramMemory mem;
-        Diag d;
-        if (!mem.load_text(std::string(name), std::string(text), d)) {
-            r.error = bad(std::string(name) + ": " + d.detail);
+        if (std::optional<Diag> d = mem.load_text(std::string(name), std::string(text))) {
+            r.error = bad(std::string(name) + ": " + d->detail);
             return r;
         }
         if (number_if_headerless < 0) {

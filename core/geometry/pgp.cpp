@@ -37,7 +37,13 @@ struct Cand {
     int branch = 0;  // which solution of the middle element (3 blocks)
 };
 
-enum class St { Ok, Need, Fail };
+// What joining the elements of an entity answers: its candidates are
+// appended to the caller's; `need` when the next block determines the
+// junction; `error` when these blocks cannot be joined.
+struct Join {
+    bool need = false;
+    Error error{};
+};
 
 // Can the element be determined by the block after it (the middle of 3 blocks)?
 bool middle(const Elt& e) {
@@ -59,14 +65,13 @@ std::vector<V2> dirs(const Elt& e) {
     return {e.d};
 }
 
-St stop(Error& f, int code, std::string detail) {
-    failed(f, code, std::move(detail));
-    return St::Fail;
+Join stop(int code, std::string detail) {
+    return {false, Error{code, std::move(detail)}};
 }
 
-St undetermined(const Elt& b, Error& f) {
-    if (middle(b)) return St::Need;
-    return stop(f, 113, tr("the second element does not determine the junction"));
+Join undetermined(const Elt& b) {
+    if (middle(b)) return {.need = true};
+    return stop(113, tr("the second element does not determine the junction"));
 }
 
 // Where two fully known elements touch (an over-determined tangency).
@@ -96,92 +101,92 @@ void add(std::vector<Cand>& out, const Sup& s1, const Sup& s2, const V2& j) {
 
 // Junction of a first element whose support is known (a line through S at its
 // angle, a circle through S) with the next element.
-St from_fixed(const V2& S, const Sup& A, const Elt& b, bool tan, std::vector<Cand>& out, Error& f) {
+Join from_fixed(const V2& S, const Sup& A, const Elt& b, bool tan, std::vector<Cand>& out) {
     if (b.form == Form::Fixed) {
         if (!tan) {
             if (!A.arc && !b.sup.arc) {
                 if (std::fabs(cross(A.d, b.sup.d)) < 1e-9)
-                    return stop(f, 112, tr("the two lines are parallel"));
+                    return stop(112, tr("the two lines are parallel"));
                 if (b.has_end && (b.end - S).norm() < kEq)
-                    return stop(f, 112, tr("the second line ends at the start of the first"));
+                    return stop(112, tr("the second line ends at the start of the first"));
             }
             for (const V2& j : meet(A, b.sup)) add(out, A, b.sup, j);
-            return St::Ok;
+            return {};
         }
         if (!A.arc && !b.sup.arc)
-            return stop(f, 113, tr("two lines cannot be tangent (ES for their intersection)"));
+            return stop(113, tr("two lines cannot be tangent (ES for their intersection)"));
         V2 j;
         if (!touching(A, b.sup, j))
-            return stop(f, 113, tr("the elements are not tangent (ES for their intersection)"));
+            return stop(113, tr("the elements are not tangent (ES for their intersection)"));
         add(out, A, b.sup, j);
-        return St::Ok;
+        return {};
     }
-    if (!tan) return undetermined(b, f);
+    if (!tan) return undetermined(b);
     switch (b.form) {
         case Form::Centre:  // its radius from the tangency
             for (double r : radii(A, b.c)) add(out, A, circle(b.c, r, b.s), contact(A, b.c, r));
-            return St::Ok;
+            return {};
         case Form::Radius:  // through its end point, tangent to A
-            if (!b.has_end) return St::Need;
+            if (!b.has_end) return {.need = true};
             for (const Sup& l : loci(A, b.r))
                 for (const V2& q : meet(l, circle(b.end, b.r, 0)))
                     add(out, A, circle(q, b.r, b.s), contact(A, q, b.r));
-            return St::Ok;
+            return {};
         case Form::Angle:  // tangent to the circle A at its angle
         case Form::Axis:
-            if (!A.arc) return stop(f, 113, tr("a line cannot be tangent to a line"));
+            if (!A.arc) return stop(113, tr("a line cannot be tangent to a line"));
             for (const V2& d : dirs(b))
                 for (int sg : {1, -1}) {
                     V2 t = A.p + sg * A.r * perp(d);
                     add(out, A, line(t, d), t);
                 }
-            return St::Ok;
+            return {};
         case Form::Free:  // from the circle A to its end point
-            if (!A.arc) return stop(f, 113, tr("a line cannot be tangent to a line"));
-            if (!b.has_end) return St::Need;
+            if (!A.arc) return stop(113, tr("a line cannot be tangent to a line"));
+            if (!b.has_end) return {.need = true};
             for (const V2& t : touch_from(A, b.end)) {
                 V2 d = b.end - t;
                 add(out, A, line(t, d.norm() < kEq ? tangent(A, t) : V2(d.normalized())), t);
             }
-            return St::Ok;
+            return {};
         default:
-            return stop(f, 113, tr("the second element does not determine the junction"));
+            return stop(113, tr("the second element does not determine the junction"));
     }
 }
 
 // Junction of a first element (start S) with the next one.
-St solve2(const V2& S, const Elt& a, const Elt& b, char link, std::vector<Cand>& out, Error& f) {
+Join solve2(const V2& S, const Elt& a, const Elt& b, char link, std::vector<Cand>& out) {
     bool tan = link != 'S';
-    if (a.form == Form::Fixed) return from_fixed(S, a.sup, b, tan, out, f);
-    if (b.form != Form::Fixed) return undetermined(b, f);
+    if (a.form == Form::Fixed) return from_fixed(S, a.sup, b, tan, out);
+    if (b.form != Form::Fixed) return undetermined(b);
     if (a.form == Form::Free) {  // a line from S tangent to a circle
         if (!b.sup.arc)
-            return stop(f, 113, tr("a line of unknown direction must be tangent to a circle"));
+            return stop(113, tr("a line of unknown direction must be tangent to a circle"));
         for (const V2& t : touch_from(b.sup, S)) {
             V2 d = t - S;
             add(out, line(S, d.norm() < kEq ? tangent(b.sup, t) : V2(d.normalized())), b.sup, t);
         }
-        return St::Ok;
+        return {};
     }
     if (a.form == Form::Radius) {  // a circle through S tangent to b
-        if (!tan) return stop(f, 113, tr("a circle known by its radius only cannot be secant"));
+        if (!tan) return stop(113, tr("a circle known by its radius only cannot be secant"));
         for (const Sup& l : loci(b.sup, a.r))
             for (const V2& q : meet(l, circle(S, a.r, 0)))
                 add(out, circle(q, a.r, a.s), b.sup, contact(b.sup, q, a.r));
-        return St::Ok;
+        return {};
     }
-    return stop(f, 113, tr("the first element does not determine the junction"));
+    return stop(113, tr("the first element does not determine the junction"));
 }
 
 // Three blocks, the middle element found from the third one: its radius about
 // its centre, or its position at its angle, tangent to the third.
-St solve3_by_third(const V2& S, const Elt& a, const Elt& b, const Sup& C3, char link0,
-                   std::vector<Cand>& out, Error& f) {
+Join solve3_by_third(const V2& S, const Elt& a, const Elt& b, const Sup& C3, char link0,
+                     std::vector<Cand>& out) {
     std::vector<std::pair<Sup, V2>> mids;
     if (b.form == Form::Centre) {
         for (double r : radii(C3, b.c)) mids.push_back({circle(b.c, r, b.s), contact(C3, b.c, r)});
     } else {
-        if (!C3.arc) return stop(f, 123, tr("a line cannot be tangent to a line"));
+        if (!C3.arc) return stop(123, tr("a line cannot be tangent to a line"));
         for (const V2& d : dirs(b))
             for (int sg : {1, -1}) {
                 V2 t = C3.p + sg * C3.r * perp(d);
@@ -196,11 +201,9 @@ St solve3_by_third(const V2& S, const Elt& a, const Elt& b, const Sup& C3, char 
         m.has_end = true;
         m.end = t23;
         std::vector<Cand> part;
-        Error f2;
-        St st = solve2(S, a, m, link0, part, f2);
-        if (st == St::Fail && f2.code == 112)
-            return stop(f, 122, tr("the first two blocks are parallel lines"));
-        if (st != St::Ok) continue;
+        Join j = solve2(S, a, m, link0, part);
+        if (j.error.code == 112) return stop(122, tr("the first two blocks are parallel lines"));
+        if (j.need || j.error) continue;
         for (Cand& cd : part) {
             cd.j[1] = t23;
             cd.sup[2] = C3;
@@ -209,27 +212,25 @@ St solve3_by_third(const V2& S, const Elt& a, const Elt& b, const Sup& C3, char 
         }
         ++branch;
     }
-    return St::Ok;
+    return {};
 }
 
 // Three blocks: the middle element is found from the third one (its radius, its
 // position) or together with both neighbours (a circle of given radius tangent
 // to both, a common tangent line).
-St solve3(const V2& S, const Elt* e, const char link[2], std::vector<Cand>& out, Error& f) {
+Join solve3(const V2& S, const Elt* e, const char link[2], std::vector<Cand>& out) {
     const Elt &a = e[0], &b = e[1], &c = e[2];
     if (c.form != Form::Fixed)
-        return stop(f, 123,
-                    tr("the third block must fix its element: EA X Y, or I J with R or X Y"));
+        return stop(123, tr("the third block must fix its element: EA X Y, or I J with R or X Y"));
     const Sup& C3 = c.sup;
-    if (link[1] == 'S')
-        return stop(f, 123, tr("the middle element cannot be secant with the third"));
+    if (link[1] == 'S') return stop(123, tr("the middle element cannot be secant with the third"));
     if (b.form == Form::Angle || b.form == Form::Axis || b.form == Form::Centre)
-        return solve3_by_third(S, a, b, C3, link[0], out, f);
+        return solve3_by_third(S, a, b, C3, link[0], out);
     if (link[0] == 'S')
-        return stop(f, 123, tr("the first element cannot be secant with this middle element"));
+        return stop(123, tr("the first element cannot be secant with this middle element"));
     if (b.form == Form::Radius && !b.has_end) {
         if (a.form != Form::Fixed)
-            return stop(f, 123, tr("the first element must be fixed for this construction"));
+            return stop(123, tr("the first element must be fixed for this construction"));
         for (const Sup& l1 : loci(a.sup, b.r))
             for (const Sup& l3 : loci(C3, b.r))
                 for (const V2& q : meet(l1, l3)) {
@@ -241,11 +242,11 @@ St solve3(const V2& S, const Elt* e, const char link[2], std::vector<Cand>& out,
                     cd.j[1] = contact(C3, q, b.r);
                     out.push_back(cd);
                 }
-        return St::Ok;
+        return {};
     }
     if (b.form == Form::Free && !b.has_end) {
         if (a.form != Form::Fixed || !a.sup.arc || !C3.arc)
-            return stop(f, 123, tr("a line tangent at both ends needs two circles"));
+            return stop(123, tr("a line tangent at both ends needs two circles"));
         for (const Tangent& t : common(a.sup, C3)) {
             Cand cd;
             cd.sup[0] = a.sup;
@@ -255,9 +256,9 @@ St solve3(const V2& S, const Elt* e, const char link[2], std::vector<Cand>& out,
             cd.j[1] = t.t2;
             out.push_back(cd);
         }
-        return St::Ok;
+        return {};
     }
-    return stop(f, 123, tr("these three blocks do not determine the tangency points"));
+    return stop(123, tr("these three blocks do not determine the tangency points"));
 }
 
 // The entity being solved: its start, its blocks, their links and discriminants.
@@ -326,9 +327,8 @@ struct Entity {
     // ES±: the order along the line (first met = -, pupitre-iso(5), DECISIONS,
     // Discriminants of PGP), or the side of the line of centres for two
     // circles.
-    bool by_secant(const std::vector<Cand>& cs, Cand& pick, Error& f) const {
-        if (disc[0] == 0)
-            return failed(f, 114, tr("two intersections: choose one with ES+ or ES-"));
+    Error by_secant(const std::vector<Cand>& cs, Cand& pick) const {
+        if (disc[0] == 0) return {114, tr("two intersections: choose one with ES+ or ES-")};
         auto key = [&](const Cand& c) {
             if (!c.sup[0].arc) return (c.j[0] - S).dot(c.sup[0].d);
             if (!c.sup[1].arc) return (c.j[0] - c.sup[1].p).dot(c.sup[1].d);
@@ -338,11 +338,12 @@ struct Entity {
         for (const Cand& c : cs)
             if (disc[0] < 0 ? key(c) < key(*best) : key(c) > key(*best)) best = &c;
         pick = *best;
-        return true;
+        return {};
     }
 
-    // One candidate among the feasible ones; false on an ambiguity (114, 124).
-    bool choose(const std::vector<Cand>& cs, Cand& pick, Error& f, int& block) const {
+    // One candidate among the feasible ones; an ambiguity (114, 124) is about
+    // the block (its item, 0 or 1) whose discriminant should have chosen.
+    Error choose(const std::vector<Cand>& cs, Cand& pick) const {
         std::vector<int> branches;
         for (const Cand& c : cs)
             if (std::find(branches.begin(), branches.end(), c.branch) == branches.end())
@@ -355,20 +356,17 @@ struct Entity {
             Cand one = g[0];
             if (g.size() > 1) {
                 if (link[0] == 'S') {
-                    block = 0;
-                    if (!by_secant(g, one, f)) return false;
+                    if (Error f = by_secant(g, one)) return about(0, std::move(f));
                 } else {
                     std::vector<Cand> m = by_arc(g,
                                                  g[0].sup[0].arc   ? 0
                                                  : g[0].sup[1].arc ? 1
                                                                    : -1,
                                                  disc[0]);
-                    if (m.empty()) {
-                        block = 0;
-                        return failed(f, 114,
-                                      strf(tr("ET%c designates none of the tangent solutions"),
-                                           disc[0] > 0 ? '+' : '-'));
-                    }
+                    if (m.empty())
+                        return about(0, {114, strf(tr("ET%c designates none of the tangent "
+                                                      "solutions"),
+                                                   disc[0] > 0 ? '+' : '-')});
                     one = m[0];
                 }
             }
@@ -378,61 +376,68 @@ struct Entity {
         if (per.size() > 1) {
             // ET± of the middle block (pupitre-iso(5), DECISIONS, Discriminants
             // of PGP) must designate one solution.
-            block = 1;
             if (disc[1] == 0)
-                return failed(
-                    f, 124,
-                    tr("two tangencies between blocks 2 and 3: choose one with ET+ or ET-"));
+                return about(
+                    1,
+                    {124, tr("two tangencies between blocks 2 and 3: choose one with ET+ or ET-")});
             std::vector<Cand> m = by_arc(per, 1, disc[1]);
             if (m.size() != 1)
-                return failed(f, 124,
-                              strf(tr("ET%c does not designate one of the two tangencies between "
-                                      "blocks 2 and 3"),
-                                   disc[1] > 0 ? '+' : '-'));
+                return about(1, {124, strf(tr("ET%c does not designate one of the two tangencies "
+                                              "between blocks 2 and 3"),
+                                           disc[1] > 0 ? '+' : '-')});
             pick = m[0];
         }
-        return true;
+        return {};
+    }
+
+    // The error `e` about block `block` of the entity (0 to 2).
+    static Error about(int block, Error e) {
+        e.item = block;
+        return e;
     }
 };
 
-enum class Step { Complete, Wait, Solved, Error };
+enum class Step { Complete, Wait, Solved };
 
 // Solves the entity made of the waiting blocks (`count` of them, the first one
-// starting at S, `over` its support if already known). Complete: the first
-// block is an element by itself; Wait: one more block is needed; Solved: `pick`
-// is the chosen solution of en.n blocks; Error: `f` for block number `block`.
-Step entity(const V2& S, const Spec* const* specs, int count, const Sup* over, Entity& en,
-            Cand& pick, Error& f, int& block) {
-    block = 0;
-    if (!first_elt(*specs[0], S, over, en.e[0], f)) return Step::Error;
-    if (en.e[0].form == Form::Complete) return Step::Complete;
-    if (count < 2) return Step::Wait;
-    block = 1;
-    if (!next_elt(*specs[1], 1, en.e[1], f)) return Step::Error;
+// starting at S, `over` its support if already known). Answers why they do
+// not solve, its item the number of the block it is about; else `step` says
+// what they gave: Complete: the first block is an element by itself; Wait:
+// one more block is needed; Solved: `pick` is the chosen solution of en.n
+// blocks.
+Error entity(const V2& S, const Spec* const* specs, int count, const Sup* over, Entity& en,
+             Cand& pick, Step& step) {
+    step = Step::Wait;
+    if (Error f = first_elt(*specs[0], S, over, en.e[0])) return Entity::about(0, std::move(f));
+    if (en.e[0].form == Form::Complete) {
+        step = Step::Complete;
+        return {};
+    }
+    if (count < 2) return {};
+    if (Error f = next_elt(*specs[1], 1, en.e[1])) return Entity::about(1, std::move(f));
     en.S = S;
     for (int k = 0; k < 2; ++k) {
         en.link[k] = specs[k]->link;
         en.disc[k] = specs[k]->disc;
     }
     std::vector<Cand> cs;
-    St st = solve2(S, en.e[0], en.e[1], en.link[0], cs, f);
-    if (st == St::Need) {
-        if (count < 3) return Step::Wait;
-        block = 2;
-        if (!next_elt(*specs[2], 2, en.e[2], f)) return Step::Error;
+    Join j = solve2(S, en.e[0], en.e[1], en.link[0], cs);
+    if (j.need) {
+        if (count < 3) return {};
+        if (Error f = next_elt(*specs[2], 2, en.e[2])) return Entity::about(2, std::move(f));
         en.n = 3;
-        st = solve3(S, en.e, en.link, cs, f);
+        j = solve3(S, en.e, en.link, cs);
     }
-    block = en.n - 1;
-    if (st == St::Fail) return Step::Error;
+    if (j.error) return Entity::about(en.n - 1, std::move(j.error));
     std::erase_if(cs, [&](const Cand& c) { return !en.feasible(c); });
-    if (cs.empty()) {
-        failed(f, en.n == 2 ? 113 : 123,
-               en.n == 2 ? tr("no intersection or tangency between these two blocks")
-                         : tr("these three blocks give no tangency points"));
-        return Step::Error;
-    }
-    return en.choose(cs, pick, f, block) ? Step::Solved : Step::Error;
+    if (cs.empty())
+        return Entity::about(en.n - 1,
+                             {en.n == 2 ? 113 : 123,
+                              en.n == 2 ? tr("no intersection or tangency between these two blocks")
+                                        : tr("these three blocks give no tangency points")});
+    if (Error f = en.choose(cs, pick)) return f;
+    step = Step::Solved;
+    return {};
 }
 }  // namespace
 
@@ -464,10 +469,9 @@ Error Solver::push(const Spec& s, std::vector<Elem>& out) {
     idle_ = 0;
     if (s.stop && s.has_eb) return fail(131, s.tag, tr("EB on a block with M0, M1 or M2"));
     // The block's own words, checked where it stands in its entity (110, 111, 121).
-    Error f;
     Elt e;
     int pos = int(wait_.size());
-    if (!(pos == 0 ? first_elt(s, pos_, nullptr, e, f) : next_elt(s, std::min(pos, 2), e, f)))
+    if (Error f = pos == 0 ? first_elt(s, pos_, nullptr, e) : next_elt(s, std::min(pos, 2), e))
         return fail(f.code, s.tag, f.detail);
     wait_.push_back(Item{s});
     return resolve(out);
@@ -500,11 +504,10 @@ Error Solver::resolve(std::vector<Elem>& out) {
         Sup over = it.arc ? circle(it.p, it.r, it.s) : line(it.p, it.d);
         Entity en;
         Cand pick;
-        Error f;
-        int block = 0;
-        switch (entity(pos_, specs, count, it.fixed ? &over : nullptr, en, pick, f, block)) {
-            case Step::Error:
-                return fail(f.code, wait_[size_t(block)].spec.tag, f.detail);
+        Step step = Step::Wait;
+        if (Error f = entity(pos_, specs, count, it.fixed ? &over : nullptr, en, pick, step))
+            return fail(f.code, wait_[size_t(f.item)].spec.tag, f.detail);
+        switch (step) {
             case Step::Wait:
                 return {};
             case Step::Complete: {

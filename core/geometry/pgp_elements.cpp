@@ -179,11 +179,6 @@ double length(const comp::Elem& g) {
 // ---------------------------------------------------------------------------
 // What a block fixes of its element.
 
-bool failed(Error& f, int code, std::string detail) {
-    f = Error{code, std::move(detail)};
-    return false;
-}
-
 namespace {
 
 int syntax_code(int pos) {
@@ -191,36 +186,34 @@ int syntax_code(int pos) {
 }
 
 // Words that do not belong together, wherever the block stands in its entity.
-bool syntax(const Spec& s, int pos, Error& f) {
+Error syntax(const Spec& s, int pos) {
     if (s.link != 0 && s.link != 'S' && s.link != 'T')
-        return failed(f, syntax_code(pos), tr("ES and ET in the same block"));
+        return Error{syntax_code(pos), tr("ES and ET in the same block")};
     if (s.g == 1 && (s.has_i || s.has_j || s.has_r))
-        return failed(f, syntax_code(pos), tr("a line takes no centre I J nor radius R"));
-    if (s.g != 1 && s.has_ea) return failed(f, syntax_code(pos), tr("a circle takes no angle EA"));
+        return Error{syntax_code(pos), tr("a line takes no centre I J nor radius R")};
+    if (s.g != 1 && s.has_ea) return Error{syntax_code(pos), tr("a circle takes no angle EA")};
     if (s.g != 1 && s.has_i != s.has_j)
-        return failed(f, 101, tr("a circle centre needs both its coordinates"));
-    if (s.g != 1 && s.has_r && s.r <= 0)
-        return failed(f, 107, tr("circle radius R must be positive"));
-    return true;
+        return Error{101, tr("a circle centre needs both its coordinates")};
+    if (s.g != 1 && s.has_r && s.r <= 0) return Error{107, tr("circle radius R must be positive")};
+    return {};
 }
 
 // A complete arc from S to E by its radius: the centre on the left of the chord
 // with E+, on the right with E-, the smaller arc without (000:8388, 004:622;
 // pupitre-iso(5), DECISIONS, Arcs with R).
-bool arc_by_radius(const Spec& s, int sense, const V2& S, const V2& E, Elt& e, Error& f) {
+Error arc_by_radius(const Spec& s, int sense, const V2& S, const V2& E, Elt& e) {
     V2 ch = E - S;
     double d = ch.norm();
-    if (d < 1e-9) return failed(f, 107, tr("circle with R: the end point equals the start point"));
+    if (d < 1e-9) return Error{107, tr("circle with R: the end point equals the start point")};
     if (d > 2 * s.r + kChordTol + 1e-9)
-        return failed(f, 107,
-                      strf(tr("circle end point too far: chord %s > 2R %s"), fixed3(d).c_str(),
-                           fixed3(2 * s.r).c_str()));
+        return Error{107, strf(tr("circle end point too far: chord %s > 2R %s"), fixed3(d).c_str(),
+                               fixed3(2 * s.r).c_str())};
     double h = std::sqrt(std::max(0.0, s.r * s.r - d * d / 4));
     int side = s.disc != 0 ? s.disc : sense;
     V2 c = (S + E) / 2 + side * h * perp(ch) / d;
     e.form = Form::Complete;
     e.geo = piece(circle(c, s.r, sense), S, E);
-    return true;
+    return {};
 }
 
 }  // namespace
@@ -228,7 +221,7 @@ bool arc_by_radius(const Spec& s, int sense, const V2& S, const V2& E, Elt& e, E
 namespace {
 
 // A line as the first block of an entity.
-bool first_line(const Spec& s, const V2& S, const Sup* over, Elt& e, Error& f) {
+Error first_line(const Spec& s, const V2& S, const Sup* over, Elt& e) {
     bool end2 = s.has_x && s.has_y, end1 = s.has_x != s.has_y;
     int axis = s.has_x ? 0 : 1;
     double val = s.has_x ? s.x : s.y;
@@ -238,45 +231,43 @@ bool first_line(const Spec& s, const V2& S, const Sup* over, Elt& e, Error& f) {
         end = V2(s.x, s.y);
     } else if (end1 && has_d) {
         if (!along(S, d, axis, val, end))
-            return failed(f, 102, tr("the angle EA does not give the other coordinate"));
+            return Error{102, tr("the angle EA does not give the other coordinate")};
     } else if (end1) {
         end = S;  // the classic meaning: the other coordinate is unchanged
         end[axis] = val;
     } else if (has_d) {
         e.sup = line(S, d);
-        return true;
+        return {};
     } else if (s.link == 'T') {
         e.form = Form::Free;
-        return true;
+        return {};
     } else {
-        return failed(f, 110,
-                      s.link == 'S' ? tr("ES on a line needs its angle EA")
-                                    : tr("a line needs an end point, an angle EA or ET"));
+        return Error{110, s.link == 'S' ? tr("ES on a line needs its angle EA")
+                                        : tr("a line needs an end point, an angle EA or ET")};
     }
     e.form = Form::Complete;
     e.geo.a = S;
     e.geo.b = end;
-    return true;
+    return {};
 }
 
 // A circle by its centre I J as the first block of an entity.
-bool first_centre(const Spec& s, const V2& S, const V2& E, Elt& e, Error& f) {
+Error first_centre(const Spec& s, const V2& S, const V2& E, Elt& e) {
     bool end2 = s.has_x && s.has_y, end1 = s.has_x != s.has_y;
     V2 c(s.i, s.j);
     double r0 = (S - c).norm();
-    if (r0 < kEq) return failed(f, 107, tr("circle centre on the start point"));
+    if (r0 < kEq) return Error{107, tr("circle centre on the start point")};
     if (s.has_r && std::fabs(s.r - r0) > kArcTol + 1e-9)
-        return failed(f, 107,
-                      strf(tr("radius R %s differs from the start radius %s"), fixed3(s.r).c_str(),
-                           fixed3(r0).c_str()));
+        return Error{107, strf(tr("radius R %s differs from the start radius %s"),
+                               fixed3(s.r).c_str(), fixed3(r0).c_str())};
     e.sup = circle(c, r0, e.s);
-    if (!end2 && !end1) return true;
+    if (!end2 && !end1) return {};
     double r1 = (E - c).norm();
     if (std::fabs(r1 - r0) > kArcTol + 1e-9)
-        return failed(f, 107,
-                      strf(tr("circle end point inconsistent: start radius %s, end radius %s (more "
-                              "than 0.020 apart)"),
-                           fixed3(r0).c_str(), fixed3(r1).c_str()));
+        return Error{107,
+                     strf(tr("circle end point inconsistent: start radius %s, end radius %s (more "
+                             "than 0.020 apart)"),
+                          fixed3(r0).c_str(), fixed3(r1).c_str())};
     e.form = Form::Complete;
     e.geo = piece(e.sup, S, E);
     if ((E - S).norm() < 1e-7) {  // a full circle, as in classic programming
@@ -284,41 +275,41 @@ bool first_centre(const Spec& s, const V2& S, const V2& E, Elt& e, Error& f) {
         e.geo.c = c;
         e.geo.sweep = e.s * 2 * kPi;
     }
-    return true;
+    return {};
 }
 
 }  // namespace
 
 // The first block of an entity: its start S is known. `over` is the support
 // found while solving the previous entity.
-bool first_elt(const Spec& s, const V2& S, const Sup* over, Elt& e, Error& f) {
-    if (!syntax(s, 0, f)) return false;
+Error first_elt(const Spec& s, const V2& S, const Sup* over, Elt& e) {
+    if (Error f = syntax(s, 0)) return f;
     e = Elt{};
     e.s = s.g == 3 ? 1 : s.g == 2 ? -1 : 0;
     bool end2 = s.has_x && s.has_y, end1 = s.has_x != s.has_y;
-    if (s.g == 1) return first_line(s, S, over, e, f);
+    if (s.g == 1) return first_line(s, S, over, e);
     V2 E(s.has_x ? s.x : S.x(), s.has_y ? s.y : S.y());
     if (over) {
         e.sup = circle(over->p, (S - over->p).norm(), e.s);
-        if (!end2) return true;
+        if (!end2) return {};
         e.form = Form::Complete;
         e.geo = piece(e.sup, S, E);
-        return true;
+        return {};
     }
-    if (s.has_i) return first_centre(s, S, E, e, f);
+    if (s.has_i) return first_centre(s, S, E, e);
     if (s.has_r) {
-        if (end1 || end2) return arc_by_radius(s, e.s, S, E, e, f);
+        if (end1 || end2) return arc_by_radius(s, e.s, S, E, e);
         e.form = Form::Radius;
         e.r = s.r;
-        return true;
+        return {};
     }
-    return failed(f, 101, tr("a circle needs its centre I J or its radius R"));
+    return Error{101, tr("a circle needs its centre I J or its radius R")};
 }
 
 namespace {
 
 // A line after an incomplete element.
-bool next_line(const Spec& s, int pos, Elt& e, Error& f) {
+Error next_line(const Spec& s, int pos, Elt& e) {
     bool end2 = s.has_x && s.has_y, end1 = s.has_x != s.has_y;
     V2 E(s.x, s.y);
     if (end1) {
@@ -333,7 +324,7 @@ bool next_line(const Spec& s, int pos, Elt& e, Error& f) {
             e.end = E;
         } else {
             if (end1 && std::fabs(d[e.end_axis]) < 1e-12)
-                return failed(f, 102, tr("the angle EA does not give the other coordinate"));
+                return Error{102, tr("the angle EA does not give the other coordinate")};
             e.form = Form::Angle;
             e.d = d;
         }
@@ -347,25 +338,24 @@ bool next_line(const Spec& s, int pos, Elt& e, Error& f) {
     } else if (s.link == 'T') {
         e.form = Form::Free;
     } else {
-        return failed(f, syntax_code(pos),
-                      s.link == 'S' ? tr("ES on a line needs its angle EA")
-                                    : tr("a line needs an end point, an angle EA or ET"));
+        return Error{syntax_code(pos), s.link == 'S'
+                                           ? tr("ES on a line needs its angle EA")
+                                           : tr("a line needs an end point, an angle EA or ET")};
     }
-    return true;
+    return {};
 }
 
 // A circle by its centre I J after an incomplete element.
-bool next_centre(const Spec& s, Elt& e, Error& f) {
+Error next_centre(const Spec& s, Elt& e) {
     bool end2 = s.has_x && s.has_y;
     V2 E(s.x, s.y);
     V2 c(s.i, s.j);
     if (end2) {
         double r = (E - c).norm();
-        if (r < kEq) return failed(f, 107, tr("circle centre on the end point"));
+        if (r < kEq) return Error{107, tr("circle centre on the end point")};
         if (s.has_r && std::fabs(s.r - r) > kArcTol + 1e-9)
-            return failed(f, 107,
-                          strf(tr("radius R %s differs from the end radius %s"),
-                               fixed3(s.r).c_str(), fixed3(r).c_str()));
+            return Error{107, strf(tr("radius R %s differs from the end radius %s"),
+                                   fixed3(s.r).c_str(), fixed3(r).c_str())};
         e.sup = circle(c, r, e.s);
         e.has_end = true;
         e.end = E;
@@ -375,31 +365,30 @@ bool next_centre(const Spec& s, Elt& e, Error& f) {
         e.form = Form::Centre;
         e.c = c;
     }
-    return true;
+    return {};
 }
 
 }  // namespace
 
 // A block after an incomplete element (pos 1 or 2 in the entity): its start is
 // not known yet.
-bool next_elt(const Spec& s, int pos, Elt& e, Error& f) {
-    if (!syntax(s, pos, f)) return false;
+Error next_elt(const Spec& s, int pos, Elt& e) {
+    if (Error f = syntax(s, pos)) return f;
     e = Elt{};
     e.s = s.g == 3 ? 1 : s.g == 2 ? -1 : 0;
     bool end2 = s.has_x && s.has_y, end1 = s.has_x != s.has_y;
     V2 E(s.x, s.y);
-    if (s.g == 1) return next_line(s, pos, e, f);
-    if (end1)
-        return failed(f, 101, tr("a circle whose start is computed needs both end coordinates"));
-    if (s.has_i) return next_centre(s, e, f);
+    if (s.g == 1) return next_line(s, pos, e);
+    if (end1) return Error{101, tr("a circle whose start is computed needs both end coordinates")};
+    if (s.has_i) return next_centre(s, e);
     if (s.has_r) {
         e.form = Form::Radius;
         e.r = s.r;
         e.has_end = end2;
         e.end = E;
-        return true;
+        return {};
     }
-    return failed(f, 101, tr("a circle needs its centre I J or its radius R"));
+    return Error{101, tr("a circle needs its centre I J or its radius R")};
 }
 
 // ---------------------------------------------------------------------------

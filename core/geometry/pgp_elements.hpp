@@ -80,13 +80,13 @@ struct Elt {
     double end_val = 0;
 };
 
-bool failed(Error& f, int code, std::string detail);
 // The first block of an entity: its start S is known. `over` is the support
-// found while solving the previous entity.
-bool first_elt(const Spec& s, const V2& S, const Sup* over, Elt& e, Error& f);
+// found while solving the previous entity. Answers why the block does not
+// make an element (110, 101, 102, 107), empty when `e` is what it fixes.
+Error first_elt(const Spec& s, const V2& S, const Sup* over, Elt& e);
 // A block after an incomplete element (pos 1 or 2 in the entity): its start is
-// not known yet.
-bool next_elt(const Spec& s, int pos, Elt& e, Error& f);
+// not known yet. Answers as first_elt (111, 121 for 110).
+Error next_elt(const Spec& s, int pos, Elt& e);
 
 // Replaces the corner between h and e by a fillet (eb > 0) or a chamfer
 // (eb < 0) `ins`, trimming both.

@@ -433,9 +433,9 @@ StepResult Interpreter::step() {
         col_ = 0;
         cur_text_ = line;
         cur_line_ = lineno;
-        if (!parsed && !parse_block_general(line, block_, parse_error_)) {
+        if (Error e = parsed ? Error{} : parse_block_general(line, block_)) {
             loc_.n = line_label(line);
-            fail(parse_error_);
+            fail(e);
             return StepResult::error;
         }
         loc_.n = block_.n;

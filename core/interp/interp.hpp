@@ -582,7 +582,6 @@ class Interpreter final : private EAccess {
     bool sp_emitted_ = false;
     bool x_known_ = false;  // an X was programmed (G96 start diameter)
     Block block_;           // reused parse buffer
-    Error parse_error_;     // filled only when a block does not parse
     std::string_view cur_text_;
     int cur_line_ = 0;        // line of the block being executed (G76+/G76- move it)
     size_t loaded_size_ = 0;  // program memory at the start of the run (G76+ quota)

@@ -145,8 +145,7 @@ bool Interpreter::transfer_field(const ProgramText* target, bool is_l, long n, s
 bool Interpreter::edit_block_text(const Block& b, std::string& out) {
     std::string_view raw = b.g76_block;
     Block ins;
-    Error e;
-    if (!parse_block(raw, ins, e))
+    if (Error e = parse_block(raw, ins))
         return fail(e.code, "G76+: " + e.detail, b.g76_block_col - 1 + e.column);
     if (ins.msg_channel >= 0)
         return fail(1, tr("G76+: a $ message cannot be inserted"), b.g76_block_col);
@@ -239,8 +238,7 @@ bool Interpreter::inserted_assigns(const Block& b, const Block& ins,
 // address (an L value may be too large for X).
 bool Interpreter::inserted_reads_back(const Block& b, const std::string& out) {
     Block back;
-    Error e;
-    if (!parse_block(out, back, e))
+    if (Error e = parse_block(out, back))
         return fail(e.code,
                     strf(tr("G76+: the block to insert, %s: %s"), out.c_str(), e.detail.c_str()),
                     b.g76_block_col);

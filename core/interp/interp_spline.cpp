@@ -27,9 +27,8 @@ bool Interpreter::spline_define(const Plan& p) {
     Block blk;
     for (int line = a->line; line <= b->line && pos < prog->end; ++line) {
         size_t eol = std::min(text.find('\n', pos), prog->end);
-        Error e;
         loc_ = Loc{prog->number, line, line_label(text.substr(pos, eol - pos))};
-        if (!parse_block(text.substr(pos, eol - pos), blk, e)) return fail(e);
+        if (Error e = parse_block(text.substr(pos, eol - pos), blk)) return fail(e);
         Plan q;
         if (!decode(blk, q)) return false;
         if (line == a->line || line == b->line || q.to.axis.any())

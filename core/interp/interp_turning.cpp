@@ -199,9 +199,8 @@ bool Interpreter::turning_profile(long na, long nb, turning::Profile& out, comp:
         size_t eol = std::min(text.find('\n', pos_off), prog->end);
         std::string_view l = text.substr(pos_off, eol - pos_off);
         pos_off = eol + 1;
-        Error e;
         loc_ = Loc{prog->number, line, line_label(l)};
-        if (!parse_block(l, blk, e)) return fail(e);
+        if (Error e = parse_block(l, blk)) return fail(e);
         if (blk.empty()) continue;
         if (!profile_l_words(blk)) return false;
         Plan q;
@@ -231,8 +230,7 @@ bool Interpreter::coordinate_above(const ProgramText* prog, int line, int axis, 
     Block blk;
     for (size_t i = starts.size(); i-- > 0;) {
         size_t eol = std::min(text.find('\n', starts[i]), prog->end);
-        Error e;
-        if (!parse_block(text.substr(starts[i], eol - starts[i]), blk, e)) return false;
+        if (Error e = parse_block(text.substr(starts[i], eol - starts[i]), blk)) return false;
         Plan q;
         if (!decode(blk, q)) return false;
         if (q.to.axis[size_t(axis)] && !q.to.inc[size_t(axis)] && !q.g[52]) {

@@ -56,6 +56,11 @@ struct ValueName {
     int number = 0;                    // Dn, the origin (0 PREF, 1 DEC1, 2 DEC3), Ln, En
     const CorrField* field = nullptr;  // a corrector's
     int axis = -1;                     // an origin's (axis_of)
+
+    // Origin k (0 PREF, 1 DEC1, 2 DEC3) on an axis: PREF.Z.
+    static ValueName origin(int k, int axis) { return {Kind::origin, k, nullptr, axis}; }
+    // Corrector d's field f (corr_field, any_corr_field): D3.X.
+    static ValueName corrector(int d, const CorrField* f) { return {Kind::corrector, d, f, -1}; }
 };
 
 // "D12.DX", "PREF.Z", "L5", "E80000" -> the value; false for anything else:

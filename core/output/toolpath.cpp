@@ -350,8 +350,7 @@ bool scan_extremes(const ProgramText& p, bool x_diameter, Axes& lo, Axes& hi, ui
         std::string_view line = body.substr(pos, eol - pos);
         pos = eol + 1;
         if (line.find("EM") == std::string_view::npos) continue;
-        Error e;
-        if (!parse_block(line, b, e)) continue;
+        if (Error e = parse_block(line, b)) continue;
         int sign = 0;  // -1 EM-, +1 EM+
         for (const Word& w : b.words) {
             if (w.addr == addrE('M')) {

@@ -182,7 +182,7 @@ struct Parser {
     std::string_view line;
     size_t pos = 0;
     Block& b;
-    Error& err;
+    Error err{};  // what run() answers when it is false
 
     bool fail(int code, size_t at, std::string msg) {
         err.code = code;
@@ -670,38 +670,37 @@ struct Parser {
 
 // `lane`: the lane of plain blocks first (parse_plain), else the general
 // parser alone.
-static bool parse_line(std::string_view line, Block& out, Error& e, bool lane) {
+static Error parse_line(std::string_view line, Block& out, bool lane) {
     out.clear();
     if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-    if (line.size() > kMaxBlockChars) {
-        e.code = 1;
-        e.column = int(kMaxBlockChars) + 1;
-        e.detail =
-            strf(tr("block longer than %zu characters (%zu)"), size_t(kMaxBlockChars), line.size());
-        return false;
-    }
-    if (lane && parse_plain(line, out)) return true;
+    if (line.size() > kMaxBlockChars)
+        return Error{
+            1,
+            strf(tr("block longer than %zu characters (%zu)"), size_t(kMaxBlockChars), line.size()),
+            int(kMaxBlockChars) + 1};
+    if (lane && parse_plain(line, out)) return {};
     out.clear();
-    Parser p{line, 0, out, e};
-    return p.run();
+    Parser p{line, 0, out};
+    if (p.run()) return {};
+    return std::move(p.err);
 }
 
-bool parse_block(std::string_view line, Block& out, Error& e) {
-    return parse_line(line, out, e, true);
+Error parse_block(std::string_view line, Block& out) {
+    return parse_line(line, out, true);
 }
 
-bool parse_lines(std::string_view text, Error& e) {
+Error parse_lines(std::string_view text) {
     Block b;
     for (size_t at = 0; at <= text.size();) {
         const size_t eol = std::min(text.find('\n', at), text.size());
-        if (!parse_block(text.substr(at, eol - at), b, e)) return false;
+        if (Error e = parse_block(text.substr(at, eol - at), b)) return e;
         at = eol + 1;
     }
-    return true;
+    return {};
 }
 
-bool parse_block_general(std::string_view line, Block& out, Error& e) {
-    return parse_line(line, out, e, false);
+Error parse_block_general(std::string_view line, Block& out) {
+    return parse_line(line, out, false);
 }
 
 bool parse_plain_line(const char* text, size_t avail, Block& out, size_t& len) {

@@ -117,18 +117,17 @@ struct Block {
 
 constexpr size_t kMaxBlockChars = 117;  // pupitre-iso(5), DECISIONS, 117 characters
 
-// Parses one line of program text (without its '\n'). On a syntax error returns
-// false and fills `e` (code, column, detail). `out` is cleared first, and its
-// vectors keep their capacity, so parsing a program allocates almost nothing;
-// the Error is an argument, not the result, for the same reason: this is the
-// hot path, and the caller keeps one.
-bool parse_block(std::string_view line, Block& out, Error& e);
-// Whether every line of `text` parses as a block; `e` says why not.
-bool parse_lines(std::string_view text, Error& e);
+// Parses one line of program text (without its '\n'). On a syntax error
+// answers it (code, column, detail), empty on success. `out` is cleared
+// first, and its vectors keep their capacity, so parsing a program allocates
+// almost nothing (an empty Error holds no heap memory either).
+Error parse_block(std::string_view line, Block& out);
+// Why a line of `text` does not parse as a block, empty when every one does.
+Error parse_lines(std::string_view text);
 // The same with the general parser alone, without the lane of plain blocks
 // that parse_block tries first: the reference its differential test
 // (tests/unit/test_parse_lane.cpp) compares the lane with.
-bool parse_block_general(std::string_view line, Block& out, Error& e);
+Error parse_block_general(std::string_view line, Block& out);
 // The lane of plain blocks alone, on the text of a line that ends with '\n'
 // (a program's text, `avail` bytes from `text` to its end): true when the
 // lane reads the line, whose length before its '\n' it leaves in `len`;

@@ -57,10 +57,9 @@ const Label* ProgramText::find_label(long n) const {
     return (it != labels_.end() && it->n == n) ? &*it : nullptr;
 }
 
-bool ProgramMemory::load_file(const std::string& path, Diag& d) {
+std::optional<Diag> ProgramMemory::load_file(const std::string& path) {
     auto cannot = [&](const char* why) {
-        d = Diag{Severity::error, err::kCannotRead, path, -1, 0, -1, 0, tr(why)};
-        return false;
+        return Diag{Severity::error, err::kCannotRead, path, -1, 0, -1, 0, tr(why)};
     };
     const int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
     if (fd < 0) return cannot(N_("cannot open the file"));
@@ -70,7 +69,7 @@ bool ProgramMemory::load_file(const std::string& path, Diag& d) {
     if (regular && size_t(st.st_size) >= kMapFrom)
         if (std::shared_ptr<Text> mapped = Text::map(fd, size_t(st.st_size))) {
             close(fd);
-            return load_shared(path, std::move(mapped), d);
+            return load_shared(path, std::move(mapped));
         }
     // A smaller one, a pipe or a terminal is read to its end (a program is
     // kept whole in memory anyway).
@@ -86,7 +85,7 @@ bool ProgramMemory::load_file(const std::string& path, Diag& d) {
     }
     close(fd);
     if (n < 0) return cannot(N_("read error"));
-    return load_text(path, std::move(text), d);
+    return load_text(path, std::move(text));
 }
 
 namespace {
@@ -191,31 +190,28 @@ std::vector<std::unique_ptr<ProgramText>> split_programs(const std::string& name
 }
 }  // namespace
 
-bool ProgramMemory::load_text(std::string name, std::string text, Diag& d) {
+std::optional<Diag> ProgramMemory::load_text(std::string name, std::string text) {
     // Every line ends with '\n', so G76+ can insert after the last one.
     if (!text.empty() && text.back() != '\n') text.push_back('\n');
-    return load_shared(name, std::make_shared<Text>(std::move(text)), d);
+    return load_shared(name, std::make_shared<Text>(std::move(text)));
 }
 
-bool ProgramMemory::load_shared(const std::string& name, std::shared_ptr<Text> shared, Diag& d) {
+std::optional<Diag> ProgramMemory::load_shared(const std::string& name,
+                                               std::shared_ptr<Text> shared) {
     // A NUL byte is never part of a program: refuse binary input up front.
-    if (shared->find('\0') != std::string_view::npos) {
-        d = Diag{Severity::error,
-                 err::kNotText,
-                 name,
-                 -1,
-                 0,
-                 -1,
-                 0,
-                 tr("not a text file (NUL byte found)")};
-        return false;
-    }
+    if (shared->find('\0') != std::string_view::npos)
+        return Diag{Severity::error,
+                    err::kNotText,
+                    name,
+                    -1,
+                    0,
+                    -1,
+                    0,
+                    tr("not a text file (NUL byte found)")};
     std::vector<std::unique_ptr<ProgramText>> found = split_programs(name, shared);
-    if (found.empty()) {
-        d = Diag{
+    if (found.empty())
+        return Diag{
             Severity::error, err::kNoProgram, name, -1, 0, -1, 0, tr("no program in the file")};
-        return false;
-    }
     for (auto& p : found) {
         if (const ProgramText* old = find(p->number)) {
             warnings_.push_back(
@@ -227,7 +223,7 @@ bool ProgramMemory::load_shared(const std::string& name, std::shared_ptr<Text> s
         }
         progs_.push_back(std::move(p));
     }
-    return true;
+    return std::nullopt;
 }
 
 const ProgramText* ProgramMemory::find(int number) const {
@@ -354,29 +350,27 @@ std::vector<int> ProgramMemory::take_changed() {
     return out;
 }
 
-bool ProgramMemory::replace(int number, std::string name, std::string text, Diag& d) {
+std::optional<Diag> ProgramMemory::replace(int number, std::string name, std::string text) {
     ProgramMemory fresh;
-    if (!fresh.load_text(name, std::move(text), d)) return false;
+    if (std::optional<Diag> d = fresh.load_text(name, std::move(text))) return d;
     auto& got = fresh.progs_;
-    if (got.empty() || got.front()->number != number) {
-        d = Diag{Severity::error,
-                 err::kNoProgram,
-                 name,
-                 -1,
-                 0,
-                 -1,
-                 0,
-                 strf(tr("the text does not start with %%%d"), number)};
-        return false;
-    }
+    if (got.empty() || got.front()->number != number)
+        return Diag{Severity::error,
+                    err::kNoProgram,
+                    name,
+                    -1,
+                    0,
+                    -1,
+                    0,
+                    strf(tr("the text does not start with %%%d"), number)};
     for (auto& p : progs_)
         if (p->number == number) {
             *p = std::move(*got.front());  // same object: the interpreter's pointers stay good
             ++generation_;
-            return true;
+            return std::nullopt;
         }
     progs_.push_back(std::move(got.front()));
-    return true;
+    return std::nullopt;
 }
 
 }  // namespace pupitre

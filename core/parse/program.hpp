@@ -4,6 +4,7 @@
 #pragma once
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -57,18 +58,18 @@ struct Splice {
 
 class ProgramMemory {
   public:
-    // Loads every % program of a file. Returns false and fills `d` when the file
-    // cannot be read or is not text.
-    bool load_file(const std::string& path, Diag& d);
+    // Loads every % program of a file. Answers why not when the file cannot
+    // be read or is not text (1002-1004), nothing when it is loaded.
+    std::optional<Diag> load_file(const std::string& path);
     // Loads programs from text already in memory (tests, the store).
-    bool load_text(std::string name, std::string text, Diag& d);
+    std::optional<Diag> load_text(std::string name, std::string text);
     // A file of this size or more is mapped, not read (text.hpp).
     static constexpr size_t kMapFrom = size_t(1) << 20;
 
     // Replaces the text of program `number` in place (the editor's save, MODIF):
     // pointers to it stay valid, its labels are indexed again. Adds it when it
-    // is not in memory. `text` must hold that one program.
-    bool replace(int number, std::string name, std::string text, Diag& d);
+    // is not in memory. `text` must hold that one program: answers why not.
+    std::optional<Diag> replace(int number, std::string name, std::string text);
 
     const ProgramText* find(int number) const;
     // A deep copy (the TEST mode's): programs that shared a text share its copy.
@@ -98,7 +99,7 @@ class ProgramMemory {
     std::vector<Diag>& warnings() { return warnings_; }
 
   private:
-    bool load_shared(const std::string& name, std::shared_ptr<Text> text, Diag& d);
+    std::optional<Diag> load_shared(const std::string& name, std::shared_ptr<Text> text);
     std::vector<std::unique_ptr<ProgramText>> progs_;
     std::vector<std::unique_ptr<ProgramText>> removed_;  // G76-: kept for the pointers
     std::vector<int> changed_;

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/i18n.hpp"
+#include "core/interp/value_name.hpp"
 #include "core/numfmt.hpp"
 
 namespace pupitre::setting {
@@ -76,7 +77,7 @@ std::string touch_off(const Interpreter& in, int axis, double surface, Touch& t)
     double s = surface / in.to_display(axis, 1.0);  // a diameter typed for the lathe's X
     double gauge = in.active_gauge(axis);
     t.axis = axis;
-    t.name = std::string("PREF.") + kAxisNames[a];
+    t.name = format_value_name(ValueName::origin(0, axis));
     t.before = f.pref[a];
     t.after = touch_pref(in.machine_pos()[a], f.g59[a], f.dec1[a], f.dec3[a], gauge, s);
     t.formula = result_name(in, t.name, axis) + " = " + om_term(in, axis) +
@@ -100,13 +101,15 @@ std::string measure(const Interpreter& in, int d, int axis, double surface, Touc
     const Frames& f = in.frames();
     size_t a = size_t(axis);
     double s = surface / in.to_display(axis, 1.0);
-    const std::string field = m.lathe ? std::string(1, kAxisNames[a]) : "L";
+    // The gauge measured and its dynamic correction: X and DX, Z and DZ, L and DL.
+    const std::string_view gauge = m.lathe ? kAxisNames.substr(a, 1) : "L";
+    const std::string_view wear = m.lathe ? (axis == X ? "DX" : "DZ") : "DL";
     t.axis = axis;
-    t.name = "D" + std::to_string(d) + "." + field;
+    t.name = format_value_name(ValueName::corrector(d, corr_field(gauge, m.lathe)));
     in.get(t.name, t.before);
     // The dynamic correction stays what it is: the measured length is gauge + dynamic.
     double dyn = 0;
-    in.get("D" + std::to_string(d) + (m.lathe ? (axis == X ? ".DX" : ".DZ") : ".DL"), dyn);
+    in.get(format_value_name(ValueName::corrector(d, corr_field(wear, m.lathe))), dyn);
     if (m.lathe && axis == X) dyn /= 2;  // DX is a diameter
     double total = measure_gauge(in.machine_pos()[a], f.g59[a], f.pref[a], f.dec1[a], f.dec3[a], s);
     if (!m.lathe && in.modal().tool_axis_neg) total = -total;

@@ -153,7 +153,7 @@ std::string Sim::imd(std::string_view blocks) {
     if (in_cycle()) return tr("the previous IMD block is still running");
     // A block that does not read is refused now, as :save refuses it, not at
     // Cycle Start as an alarm that needs RAZ (a paste of 5,000 characters).
-    if (Error e; !parse_lines(blocks, e))
+    if (Error e = parse_lines(blocks))
         // TRANSLATORS: an IMD block refused at Enter: the NUM error and its text.
         return strf(tr("error %d: %s (not taken)"), e.code, e.detail.c_str());
     imd_ = std::make_unique<ProgramText>();

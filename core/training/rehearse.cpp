@@ -4,6 +4,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/i18n.hpp"
 #include "core/interp/interp.hpp"
+#include "core/interp/value_name.hpp"
 #include "core/training/exercise.hpp"
 #include "core/workshop/workshop.hpp"
 
@@ -17,19 +18,25 @@ struct Quiet final : MachineSink {};
 std::string set_right(const Exercise& e, const workshop::Setup& truth, Interpreter& in) {
     auto set = [&in](const std::string& name, double v) { return in.set(name, v); };
     std::string why;
+    const bool lathe = truth.kind == "lathe";
     for (const workshop::ToolTruth& t : truth.tools) {
-        const std::string d = "D" + std::to_string(t.position) + ".";
-        if (truth.kind == "lathe") {
-            why += set(d + "X", t.x) + set(d + "Z", t.z) + set(d + "R", t.radius);
-            why += set(d + "C", t.orientation);
+        auto d = [&](std::string_view field) {
+            return format_value_name(ValueName::corrector(t.position, corr_field(field, lathe)));
+        };
+        if (lathe) {
+            why += set(d("X"), t.x) + set(d("Z"), t.z) + set(d("R"), t.radius);
+            why += set(d("C"), t.orientation);
         } else {
-            why += set(d + "L", t.length) + set(d + "R", t.radius);
+            why += set(d("L"), t.length) + set(d("R"), t.radius);
         }
     }
     for (const Start& s : e.start)
         if (double v = 0; start_value(e, truth, s.name, v)) why += set(s.name, v);
-    for (const char* name : {"PREF.X", "PREF.Y", "PREF.Z", "DEC1.X", "DEC1.Y", "DEC1.Z"})
-        if (double v = 0; expected(e, truth, name, v)) why += set(name, v);
+    for (int origin : {0, 1})  // PREF, DEC1
+        for (int axis : {X, Y, Z}) {
+            const std::string name = format_value_name(ValueName::origin(origin, axis));
+            if (double v = 0; expected(e, truth, name, v)) why += set(name, v);
+        }
     for (const Target& t : e.find)
         if (double v = 0; expected(e, truth, t.name, v)) why += set(t.name, v);
     return why;
@@ -44,8 +51,7 @@ std::string rehearse(const Exercise& e, const workshop::Setup& truth) {
     Quiet quiet;
     workshop::Workshop shop(m, truth, &quiet);
     if (!e.program.empty()) {
-        Diag d;
-        if (!mem.load_text("exercise", e.program, d)) return d.detail;
+        if (std::optional<Diag> d = mem.load_text("exercise", e.program)) return d->detail;
     }
     Interpreter in(m, mem, shop);
     if (std::string why = set_right(e, truth, in); !why.empty()) return why;

@@ -106,7 +106,9 @@ bool corrector(const Exercise& e, const workshop::Setup& setup, const Sought& n,
     const std::string& f = n.field;
     std::string text;
     if (f == "DX" || f == "DZ" || f == "DL" || f == "DR") {
-        const std::string base = "D" + std::to_string(n.d) + "." + f.substr(1);
+        // The gauge the wear corrects: DX's X, DL's L (only the spelling matters).
+        const std::string base =
+            format_value_name(ValueName::corrector(n.d, any_corr_field(f.substr(1))));
         double truth = 0, given = 0;
         expected(e, setup, base, truth);
         if (!start_value(e, setup, base, given)) given = truth;

@@ -37,8 +37,7 @@ struct Bench {
         builtin_machine("mill", m);
         m.homing_required = false;
         s = std::make_unique<console::Session>(m, nullptr, input);
-        Diag d;
-        s->memory().load_text("big.iso", big_program(1'000'000), d);
+        s->memory().load_text("big.iso", big_program(1'000'000));
         s->load_store();
         s->sim().select(1);
         s->sim().set_mode(mode);

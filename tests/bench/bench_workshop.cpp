@@ -73,8 +73,7 @@ void run(benchmark::State& st, bool with_shop) {
     long moves = 0;
     for (auto _ : st) {
         ProgramMemory mem;
-        Diag d;
-        mem.load_text("p555.iso", kP555, d);
+        mem.load_text("p555.iso", kP555);
         workshop::Workshop shop(m, s, &null);
         Interpreter in(m, mem, with_shop ? static_cast<MachineSink&>(shop) : null);
         set_right(in);
@@ -107,8 +106,7 @@ void BM_LongArc(benchmark::State& st) {
     Null null;
     for (auto _ : st) {
         ProgramMemory mem;
-        Diag d;
-        mem.load_text("arc.iso", text, d);
+        mem.load_text("arc.iso", text);
         workshop::Workshop shop(m, s, &null);
         Interpreter in(m, mem, shop);
         in.set("PREF.X", -20);
@@ -150,8 +148,7 @@ void BM_GraphFramePart(benchmark::State& st) {
     workshop::Setup s = p555_setup();
     Toolpath path(m);
     ProgramMemory mem;
-    Diag d;
-    mem.load_text("p555.iso", kP555, d);
+    mem.load_text("p555.iso", kP555);
     workshop::Workshop shop(m, s, &path);
     Interpreter in(m, mem, shop);
     set_right(in);
@@ -248,8 +245,7 @@ void mill_run(benchmark::State& st, bool with_shop) {
     long moves = 0;
     for (auto _ : st) {
         ProgramMemory mem;
-        Diag d;
-        mem.load_text("p100.iso", kP100, d);
+        mem.load_text("p100.iso", kP100);
         workshop::Workshop shop(m, s, &null);
         Interpreter in(m, mem, with_shop ? static_cast<MachineSink&>(shop) : null);
         mill_right(in);
@@ -297,8 +293,7 @@ void BM_GraphFrameBlock(benchmark::State& st) {
     builtin_machine("mill", m);
     Toolpath path(m);
     ProgramMemory mem;
-    Diag d;
-    mem.load_text("p100.iso", kP100, d);
+    mem.load_text("p100.iso", kP100);
     workshop::Workshop shop(m, big_block(), &path);
     Interpreter in(m, mem, shop);
     mill_right(in);

@@ -28,9 +28,9 @@ struct Console {
         builtin_machine(machine_name, machine);
         s = std::make_unique<console::Session>(machine, std::move(st), input);
         for (const auto& p : programs) {
-            Diag d;
-            EXPECT_TRUE(s->memory().load_file(std::string(PUPITRE_SOURCE_DIR) + "/" + p, d))
-                << d.detail;
+            const std::optional<Diag> d =
+                s->memory().load_file(std::string(PUPITRE_SOURCE_DIR) + "/" + p);
+            EXPECT_FALSE(d) << d->detail;
         }
         if (before_load) before_load(*s);  // an exercise's attempt: before the store's values
         s->load_store();

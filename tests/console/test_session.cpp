@@ -484,8 +484,8 @@ TEST(Edit, LineNumbersPast99999AreWrittenWhole) {
     std::string text = "%780\n";
     for (int i = 2; i <= 100010; ++i) text += "G1 X1 (L" + std::to_string(i) + ")\n";
     text += "M2\n";
-    Diag d;
-    ASSERT_TRUE(c.s->memory().load_text("long.iso", text, d)) << d.detail;
+    const std::optional<Diag> d = c.s->memory().load_text("long.iso", text);
+    ASSERT_FALSE(d) << d->detail;
     c.type(":edit 780");
     ASSERT_EQ(c.s->page(), pages::PageId::edit);
     c.s->editing().editor().cursor = 100005;  // line 100006

@@ -250,3 +250,21 @@ TEST(SettingProperty, ALateYesDoesNotTouchOffWhileTheAxesMove) {
     EXPECT_NE(c.message().find("wait until the axes stop"), std::string::npos) << c.message();
     EXPECT_EQ(c.s->sim().interp().frames().pref[Z], before);
 }
+
+// PREF.C is the origin of a rotary axis C, an angle, and no nose orientation
+// (D3.C, a code from 0 to 8): it is set where the machine has a C axis and
+// refused for the axis where it has none.
+TEST(SettingProperty, PrefCIsTheOriginOfAxisCNotANoseOrientation) {
+    Console five("mill5", {});
+    five.type(":set PREF.C=180.5");
+    EXPECT_NEAR(five.s->sim().interp().frames().pref[C], 180.5, 1e-9) << five.message();
+    EXPECT_EQ(five.message().find("nose orientation"), std::string::npos) << five.message();
+    Console three("mill", {});
+    three.type(":set PREF.C=180.5");
+    EXPECT_NE(three.message().find("axis C is not on"), std::string::npos) << three.message();
+    EXPECT_EQ(three.s->sim().interp().frames().pref[C], 0);
+    Console lathe;
+    lathe.type(":set D1.C=9");
+    EXPECT_NE(lathe.message().find("the nose orientation is a code from 0 to 8"), std::string::npos)
+        << lathe.message();
+}

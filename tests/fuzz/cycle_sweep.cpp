@@ -246,9 +246,8 @@ Outcome run(const MachineProfile& m, const Template& t, const std::string& text)
     Outcome o;
     auto t0 = std::chrono::steady_clock::now();
     ProgramMemory mem;
-    Diag d;
-    if (!mem.load_text("sweep.iso", text, d)) {
-        o.what = "the program does not load: error " + std::to_string(d.code);
+    if (std::optional<Diag> d = mem.load_text("sweep.iso", text)) {
+        o.what = "the program does not load: error " + std::to_string(d->code);
         return o;
     }
     Ends ends;

@@ -28,8 +28,7 @@ struct PlotRun {
             const std::vector<std::pair<std::string, double>>& sets = {}) {
         builtin_machine(machine_name, machine);
         for (const auto& f : files) {
-            Diag d;
-            if (!mem.load_file(f, d)) load_error = f + ": " + d.detail;
+            if (std::optional<Diag> d = mem.load_file(f)) load_error = f + ": " + d->detail;
         }
         path = std::make_unique<Toolpath>(machine);
         in = std::make_unique<Interpreter>(machine, mem, *path);

@@ -19,8 +19,7 @@ struct StoreRun {
     std::unique_ptr<Interpreter> in;
     StoreRun(Store& s, const std::string& machine, const std::string& text) {
         builtin_machine(machine, m);
-        Diag d;
-        mem.load_text("main.iso", text, d);
+        mem.load_text("main.iso", text);
         EXPECT_FALSE(load_programs(s, mem).error);
         in = std::make_unique<Interpreter>(m, mem, sink);
         EXPECT_FALSE(seed_machine(s, *in).error);
@@ -48,8 +47,7 @@ TEST_P(StoreLink, StoredProgramsAreProgramMemory) {
     ASSERT_TRUE(s->save(902, "%902\nL4=1\n", kNew, "").ok());
     s->remove(902);
     ProgramMemory mem;
-    Diag d;
-    mem.load_text("mine.iso", "%300\nL9=9\n", d);  // a file on the command line wins
+    mem.load_text("mine.iso", "%300\nL9=9\n");  // a file on the command line wins
     auto n = load_programs(*s, mem);
     ASSERT_TRUE(n.ok());
     EXPECT_EQ(n.value, 3);  // %301, %900, %901; not %300, not the deleted %902

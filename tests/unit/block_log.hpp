@@ -40,9 +40,8 @@ inline std::string block_text(const Block& b) {
 // Both parsers' answer for one line: the Block, or the error.
 inline std::string parse_answer(std::string_view line, bool lane) {
     Block b;
-    Error e;
-    const bool ok = lane ? parse_block(line, b, e) : parse_block_general(line, b, e);
-    if (!ok)
+    const Error e = lane ? parse_block(line, b) : parse_block_general(line, b);
+    if (e)
         return "error " + std::to_string(e.code) + " col " + std::to_string(e.column) + ": " +
                e.detail;
     return block_text(b);

@@ -145,8 +145,8 @@ inline std::string run_log(const MachineProfile& m, const std::string& text,
                            const std::vector<std::pair<std::string, double>>& sets, bool fast,
                            long max_blocks = 20000, long* plain = nullptr) {
     ProgramMemory mem;
-    Diag d;
-    if (!mem.load_text("diff.iso", text, d)) return "load " + std::to_string(d.code);
+    if (std::optional<Diag> d = mem.load_text("diff.iso", text))
+        return "load " + std::to_string(d->code);
     EventLog log;
     RunOptions o;
     o.max_blocks = max_blocks;

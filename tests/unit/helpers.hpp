@@ -49,8 +49,7 @@ struct Prog {
         // "lathe-manual": the shipped lathe without automatic spindle ranges.
         builtin_machine(machine_name == "lathe-manual" ? "lathe" : machine_name, machine);
         if (machine_name == "lathe-manual") machine.auto_range = false;
-        Diag d;
-        mem.load_text("test.iso", text, d);
+        mem.load_text("test.iso", text);
         in = std::make_unique<Interpreter>(machine, mem, cap, o);
         for (auto& [k, v] : sets) in->set(k, v);
         in->start(mem.first());

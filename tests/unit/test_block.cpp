@@ -9,14 +9,14 @@ using namespace pupitre;
 namespace {
 Block parse_ok(std::string_view s) {
     Block b;
-    Error d;
-    EXPECT_TRUE(parse_block(s, b, d)) << s << ": " << d.detail;
+    const Error d = parse_block(s, b);
+    EXPECT_FALSE(d) << s << ": " << d.detail;
     return b;
 }
 int parse_err(std::string_view s) {
     Block b;
-    Error d;
-    EXPECT_FALSE(parse_block(s, b, d)) << s;
+    const Error d = parse_block(s, b);
+    EXPECT_TRUE(d) << s;
     return d.code;
 }
 }  // namespace

@@ -55,8 +55,7 @@ TEST(Cazeneuve, HbCnc2ModelHasItsOwnRanges) {
     // S2500 fits the HB CNC 2's high range, not the HB CNC 3's (2053).
     const std::string text = "N10 M3 S2500\nN20 M2\n";
     ProgramMemory mem;
-    Diag d;
-    mem.load_text("t.iso", text, d);
+    mem.load_text("t.iso", text);
     test::Capture cap2, cap3;
     Interpreter in2(two, mem, cap2, RunOptions{}), in3(three, mem, cap3, RunOptions{});
     in2.start(mem.first());

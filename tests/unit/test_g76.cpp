@@ -31,18 +31,18 @@ const Diag& first_error(const Prog& p) {
 
 TEST(G76Block, PointedBlockOffsetAndTextAreKeptApart) {
     Block b;
-    Error d;
-    ASSERT_TRUE(parse_block("N100 G76+ H120 N100 +2 G1 X3 (here)", b, d)) << d.detail;
+    Error d = parse_block("N100 G76+ H120 N100 +2 G1 X3 (here)", b);
+    ASSERT_FALSE(d) << d.detail;
     EXPECT_EQ(b.n, 100);
     EXPECT_EQ(b.g76_k, 2);
     EXPECT_EQ(b.g76_block, "G1 X3 (here)");
     EXPECT_EQ(b.g76_block_col, 24);
     ASSERT_EQ(b.words.size(), 4u);  // N100 G76+ H120 N100: the block's own words only
-    ASSERT_TRUE(parse_block("G76- N20", b, d));
+    ASSERT_FALSE(parse_block("G76- N20", b));
     EXPECT_EQ(b.g76_k, -1);
     EXPECT_TRUE(b.g76_block.empty());
     // Without the sign the N words are G76's range, not a pointed block.
-    ASSERT_TRUE(parse_block("G76 N100 N120", b, d));
+    ASSERT_FALSE(parse_block("G76 N100 N120", b));
     EXPECT_EQ(b.words.size(), 3u);
 }
 

@@ -64,10 +64,10 @@ TEST(Kinematics, Program170ComputesItsOwnFrame) {
     MachineProfile m;
     ASSERT_TRUE(builtin_machine("mill4", m));
     ProgramMemory mem;
-    Diag d;
     const std::string path =
         std::string(PUPITRE_SOURCE_DIR) + "/tests/golden/programs/004_p170.iso";
-    ASSERT_TRUE(mem.load_file(path, d)) << d.detail;
+    const std::optional<Diag> d = mem.load_file(path);
+    ASSERT_FALSE(d) << d->detail;
     test::Capture cap;
     Interpreter in(m, mem, cap);
     in.start(mem.first());

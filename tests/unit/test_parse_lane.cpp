@@ -124,10 +124,8 @@ TEST(ParseLane, NumbersOfEveryLengthAndAlignmentReadExactly) {
                 for (const std::string& tail : after) {
                     const std::string line = std::string(size_t(pad), ' ') + "X" + num + tail;
                     Block b;
-                    Error e;
-                    parse_block(
-                        line, b,
-                        e);  // a stray byte after it may be an error: the value is read first
+                    // A stray byte after it may be an error: the value is read first.
+                    parse_block(line, b);
                     ASSERT_FALSE(b.words.empty()) << line;
                     EXPECT_EQ(b.words[0].v.num, want) << line;
                     EXPECT_EQ(b.words[0].v.int_digits, whole) << line;

@@ -53,9 +53,10 @@ TEST(ProgramFile, ALargeFileIsMappedAndRunsAsTheSameTextInMemory) {
     const std::string text = big_program(ProgramMemory::kMapFrom + 1000);
     TempFile f(text);
     ProgramMemory mapped, read;
-    Diag d;
-    ASSERT_TRUE(mapped.load_file(f.path, d)) << d.detail;
-    ASSERT_TRUE(read.load_text("same", text, d)) << d.detail;
+    std::optional<Diag> d = mapped.load_file(f.path);
+    ASSERT_FALSE(d) << d->detail;
+    d = read.load_text("same", text);
+    ASSERT_FALSE(d) << d->detail;
     ASSERT_EQ(mapped.programs().size(), 2u);
     const ProgramText* p1 = mapped.find(1);
     const ProgramText* p2 = mapped.find(2);
@@ -81,8 +82,8 @@ TEST(ProgramFile, ALargeFileWithoutItsLastNewlineIsReadAndEndsWithOne) {
     text.pop_back();
     TempFile f(text);
     ProgramMemory mem;
-    Diag d;
-    ASSERT_TRUE(mem.load_file(f.path, d)) << d.detail;
+    const std::optional<Diag> d = mem.load_file(f.path);
+    ASSERT_FALSE(d) << d->detail;
     const ProgramText* p2 = mem.find(2);
     ASSERT_TRUE(p2);
     EXPECT_FALSE(p2->text->mapped());
@@ -94,17 +95,17 @@ TEST(ProgramFile, ALargeBinaryFileIsRefusedAsNotText) {
     text[text.size() / 2] = '\0';
     TempFile f(text);
     ProgramMemory mem;
-    Diag d;
-    EXPECT_FALSE(mem.load_file(f.path, d));
-    EXPECT_EQ(d.code, err::kNotText);
+    const std::optional<Diag> d = mem.load_file(f.path);
+    ASSERT_TRUE(d);
+    EXPECT_EQ(d->code, err::kNotText);
     EXPECT_TRUE(mem.programs().empty());
 }
 
 TEST(ProgramFile, ASplicedMappedTextKeepsItsProgramsInPlace) {
     TempFile f(big_program(ProgramMemory::kMapFrom));
     ProgramMemory mem;
-    Diag d;
-    ASSERT_TRUE(mem.load_file(f.path, d)) << d.detail;
+    const std::optional<Diag> d = mem.load_file(f.path);
+    ASSERT_FALSE(d) << d->detail;
     const ProgramText* p1 = mem.find(1);
     const ProgramText* p2 = mem.find(2);
     const int line2 = p2->first_line;
@@ -121,8 +122,8 @@ TEST(ProgramFile, ASplicedMappedTextKeepsItsProgramsInPlace) {
 TEST(ProgramFile, ASmallFileIsRead) {
     TempFile f("%5\nG0 X1\n");
     ProgramMemory mem;
-    Diag d;
-    ASSERT_TRUE(mem.load_file(f.path, d)) << d.detail;
+    const std::optional<Diag> d = mem.load_file(f.path);
+    ASSERT_FALSE(d) << d->detail;
     ASSERT_TRUE(mem.find(5));
     EXPECT_FALSE(mem.find(5)->text->mapped());
 }
@@ -132,9 +133,8 @@ TEST(ProgramFile, ASmallFileIsRead) {
 // header is program 0 only when a line of it is a block.
 TEST(ProgramFile, AFileIsSplitAtItsHeaderLinesOnly) {
     ProgramMemory mem;
-    Diag d;
-    ASSERT_TRUE(
-        mem.load_text("f.iso", "(SHOP 50%)\n\n  %7.2 (SEVEN)\nN10 G0 X1 (100%)\n%8\nG0 X2", d));
+    ASSERT_FALSE(
+        mem.load_text("f.iso", "(SHOP 50%)\n\n  %7.2 (SEVEN)\nN10 G0 X1 (100%)\n%8\nG0 X2"));
     ASSERT_EQ(mem.programs().size(), 2u);
     const ProgramText* p7 = mem.find(7);
     const ProgramText* p8 = mem.find(8);
@@ -146,7 +146,7 @@ TEST(ProgramFile, AFileIsSplitAtItsHeaderLinesOnly) {
     EXPECT_EQ(p8->first_line, 6);
     EXPECT_EQ(p8->body(), "G0 X2\n");
     ProgramMemory with0;
-    ASSERT_TRUE(with0.load_text("g.iso", "G0 X5\n%3\nG0 X6\n", d));
+    ASSERT_FALSE(with0.load_text("g.iso", "G0 X5\n%3\nG0 X6\n"));
     ASSERT_EQ(with0.programs().size(), 2u);
     EXPECT_EQ(with0.programs()[0]->number, 0);
     EXPECT_EQ(with0.programs()[0]->body(), "G0 X5\n");
@@ -161,8 +161,8 @@ TEST(ProgramFile, APipeIsReadToItsEnd) {
     ASSERT_EQ(write(fds[1], text.data(), text.size()), ssize_t(text.size()));
     close(fds[1]);
     ProgramMemory mem;
-    Diag d;
-    EXPECT_TRUE(mem.load_file("/proc/self/fd/" + std::to_string(fds[0]), d)) << d.detail;
+    const std::optional<Diag> d = mem.load_file("/proc/self/fd/" + std::to_string(fds[0]));
+    EXPECT_FALSE(d) << d->detail;
     close(fds[0]);
     ASSERT_TRUE(mem.find(9));
     EXPECT_EQ(mem.find(9)->body(), "G0 X1\n");

@@ -18,8 +18,7 @@ struct Machine {
     explicit Machine(const std::string& text, const std::string& name = "mill", bool homed = true) {
         builtin_machine(name, m);
         if (homed) m.homing_required = false;
-        Diag d;
-        mem.load_text("t.iso", text, d);
+        mem.load_text("t.iso", text);
         sim = std::make_unique<Sim>(m, mem);
         if (!mem.programs().empty()) sim->select(mem.programs().front()->number);
     }

@@ -1109,8 +1109,7 @@ TEST(G64, HandbookProgramsNeverEnterThePart) {
             std::ifstream in(dir + f);
             std::stringstream text;
             text << in.rdbuf();
-            Diag d;
-            mem.load_text(f, text.str(), d);
+            mem.load_text(f, text.str());
         }
         RunOptions o;
         o.on_g64 = [&](const Profile& fin, const std::vector<V2>& stock, V2 tool, const G64Args& a,
@@ -1782,8 +1781,7 @@ TEST(G65, HandbookProgramsNeverEnterThePart) {
         std::ifstream in(dir + file);
         std::stringstream text;
         text << in.rdbuf();
-        Diag d;
-        mem.load_text(file, text.str(), d);
+        mem.load_text(file, text.str());
         RunOptions o;
         o.on_g65 = [&](const Profile& fin, V2 tool, const G65Args& a, const std::vector<Move>& mv) {
             ++seen65;

@@ -31,8 +31,7 @@ struct ShopRun {
         EXPECT_TRUE(workshop::builtin_setup(kind, setup));
         if (!extra.empty()) setup_error = workshop::parse_setup(setup.source + "\n" + extra, setup);
         shop = std::make_unique<workshop::Workshop>(machine, setup, nullptr);
-        Diag d;
-        mem.load_text("test.iso", program, d);
+        mem.load_text("test.iso", program);
         in = std::make_unique<Interpreter>(machine, mem, *shop, RunOptions{});
         for (auto& [k, v] : sets) in->set(k, v);
         in->start(mem.first());
