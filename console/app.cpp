@@ -143,6 +143,7 @@ int event_loop(console::Session& s, console::Terminal& term, bool ascii) {
 // the exit code in `rc` when it cannot be opened.
 bool open_console_store(const ConsoleArgs& a, std::unique_ptr<store::Store>& st, int& rc) {
     store::Options o;
+    o.live = true;  // a server gone never holds the keys up
     std::string path = a.db;
     if (path.empty()) {
         path = store::default_path();

@@ -8,6 +8,8 @@
 #include <functional>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 #include "core/sim/sim.hpp"
 #include "pages/view.hpp"
@@ -49,6 +51,15 @@ class Bench {
     // The memory-protect key (the setting desk's): true when `what` may
     // change, else says why.
     virtual bool unprotected(std::string_view what) = 0;
+    // Stores correctors and origins of this console's machine with `source`
+    // for the audit. When a server is out of reach they are kept here and
+    // written when it answers again.
+    struct Stored {
+        std::string why;    // "" when stored, else what to say
+        bool kept = false;  // not stored yet, but kept to be
+    };
+    virtual Stored store_values(const std::vector<std::pair<std::string, int64_t>>& values,
+                                std::string_view source) = 0;
 
   protected:
     ~Bench() = default;

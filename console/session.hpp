@@ -124,6 +124,8 @@ class Session final : public Bench {
     void confirm(std::string question, std::function<void()> then) override;
     void refresh_dir() override;
     bool unprotected(std::string_view what) override { return setting_.unprotected(what); }
+    Stored store_values(const std::vector<std::pair<std::string, int64_t>>& values,
+                        std::string_view source) override;
 
     LineInput& input() { return input_; }
     const LineInput& input() const { return input_; }
@@ -177,6 +179,7 @@ class Session final : public Bench {
     void persist_run();
     void remember_store();
     void follow_store(double dt);
+    void send_outbox();
     void sync_from_store();
 
     MachineProfile m_;
@@ -226,6 +229,13 @@ class Session final : public Bench {
     double poll_wait_ = 0;
     bool store_pending_ = false;             // another console's change waits for the end of a run
     std::vector<pages::DirEntry> dir_seen_;  // the store's programs at the last look
+    // Values a server out of reach could not take, in order, until it answers.
+    struct Unsent {
+        std::string key, name;
+        int64_t value = 0;
+        std::string source;
+    };
+    std::vector<Unsent> outbox_;
 };
 
 }  // namespace pupitre::console

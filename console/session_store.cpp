@@ -120,10 +120,44 @@ void Session::persist_run() {
     }
     if (fresh.empty()) return;
     std::string source = "program %" + std::to_string(sim_->selected()) + " (console)";
-    if (auto r = store_->set_values(store_key_, fresh, source); r.error)
+    if (Stored st = store_values(fresh, source); st.kept)
+        say(strf(tr("the program's corrector and origin writes: %s"), st.why.c_str()), true);
+    else if (!st.why.empty())
         say(strf(tr("the program's corrector and origin writes were not stored: %s"),
-                 r.error.message.c_str()),
+                 st.why.c_str()),
             true);
+}
+
+Bench::Stored Session::store_values(const std::vector<std::pair<std::string, int64_t>>& values,
+                                    std::string_view source) {
+    if (!store_) return {};
+    auto r = store_->set_values(store_key_, values, source);
+    if (!r.error) return {};
+    // A server out of reach: nothing of it was written; kept here in order and
+    // sent when it answers again (the same values again are no new change).
+    if (r.error.fault != store::Fault::io || store_->engine() != "postgresql")
+        return {r.error.message, false};
+    for (const auto& [name, value] : values)
+        outbox_.push_back({store_key_, name, value, std::string(source)});
+    return {tr("the store does not answer: kept here, stored when it does"), true};
+}
+
+// From follow_store() once the server answers: what it could not take, in
+// the order it was set.
+void Session::send_outbox() {
+    size_t sent = 0;
+    std::string names;
+    while (sent < outbox_.size()) {
+        const Unsent& u = outbox_[sent];
+        auto r = store_->set_values(u.key, {{u.name, u.value}}, u.source);
+        if (r.error) break;
+        names += (names.empty() ? "" : ", ") + u.name;
+        ++sent;
+    }
+    outbox_.erase(outbox_.begin(), outbox_.begin() + long(sent));
+    if (sent)
+        say(strf(tr("the store answers again: %d values kept here are stored (%s)"), int(sent),
+                 names.c_str()));
 }
 
 // ---- two consoles on one store ----
@@ -143,6 +177,7 @@ void Session::follow_store(double dt) {
     poll_wait_ = kPollSeconds;
     editing_.keep_lease(kPollSeconds);
     auto v = store_->data_version();
+    if (!v.error && !outbox_.empty()) send_outbox();
     if (v.error || (v.value == data_version_ && !store_pending_)) return;
     data_version_ = v.value;
     sync_from_store();

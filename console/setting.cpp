@@ -155,13 +155,14 @@ bool SettingDesk::apply(const std::string& name, double value, const std::string
                                         ? tr("(applies at the next move)")
                                         : tr("(applies as the manual says: gauge at the next move "
                                              "of its axis, radius at the next G41/G42)"));
-    if (b_.store()) {
-        auto r = b_.store()->set_values(b_.store_key(),
-                                        {{name, store::internal_value(name, value)}}, source);
-        if (r.error) {
-            b_.say(strf(tr("%s; NOT stored: %s"), news.c_str(), r.error.message.c_str()), true);
-            return true;
-        }
+    Bench::Stored st = b_.store_values({{name, store::internal_value(name, value)}}, source);
+    if (st.kept) {
+        b_.say(strf(tr("%s; %s"), news.c_str(), st.why.c_str()), true);
+        return true;
+    }
+    if (!st.why.empty()) {
+        b_.say(strf(tr("%s; NOT stored: %s"), news.c_str(), st.why.c_str()), true);
+        return true;
     }
     b_.say(news);
     return true;

@@ -7,6 +7,7 @@
 // is here and in store/schema_pg.hpp.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <libpq-fe.h>
+#include <poll.h>
 
 #include <cstdlib>
 #include <cstring>
@@ -205,8 +206,12 @@ class PgBackend final : public db::Backend {
             PQclear(PQexec(c_, "ROLLBACK"));
         in_tx_ = false;
     }
+    // Two SERIALIZABLE writers inserting the same key (the next revision of
+    // one program, a new program) may meet as a unique violation rather than
+    // a serialization failure: run again, it reads what the other committed.
     bool retryable(int rc) const override {
-        return rc == kServerError && (sqlstate_ == "40001" || sqlstate_ == "40P01");
+        return rc == kServerError &&
+               (sqlstate_ == "40001" || sqlstate_ == "40P01" || sqlstate_ == "23505");
     }
     StoreError explain(int rc, const std::string& head) const override;
     int read_meta(db::Meta& m) override;
@@ -221,22 +226,57 @@ class PgBackend final : public db::Backend {
 
   private:
     // A connection the server dropped (restarted, stopped) is made again
-    // before the next transaction; never inside one, whose work is lost.
+    // before the next transaction; never inside one, whose work is lost. A
+    // live store (the console) makes it a non-blocking step per call.
     int revive() {
-        if (PQstatus(c_) == CONNECTION_OK) return db::kOk;
+        if (PQstatus(c_) == CONNECTION_OK && !resetting_) return db::kOk;
         if (in_tx_) return kConnectionLost;
-        PQreset(c_);
-        if (PQstatus(c_) != CONNECTION_OK) {
-            sqlstate_ = "08006";
-            message_ = one_line(PQerrorMessage(c_));
-            return kConnectionLost;
+        if (!resetting_) {
+            if (!live_) {
+                PQreset(c_);
+                return made_again();
+            }
+            if (!PQresetStart(c_)) return lost();
+            resetting_ = true;
         }
+        // As many steps of the handshake as the server answers within a few
+        // milliseconds each; the rest at the next call.
+        for (int step = 0; step < 32; ++step) {
+            PostgresPollingStatusType st = PQresetPoll(c_);
+            if (st == PGRES_POLLING_OK) {
+                resetting_ = false;
+                return made_again();
+            }
+            if (st == PGRES_POLLING_FAILED) {
+                resetting_ = false;
+                return lost();
+            }
+            pollfd p{PQsocket(c_), short(st == PGRES_POLLING_READING ? POLLIN : POLLOUT), 0};
+            if (p.fd < 0 || ::poll(&p, 1, 2) <= 0) break;
+        }
+        sqlstate_ = "08006";
+        message_ = tr("connecting again");
+        return kConnectionLost;
+    }
+    int made_again() {
+        if (PQstatus(c_) != CONNECTION_OK) return lost();
         for (auto& [sql, s] : stmts_) s->forget();
+        PQsetClientEncoding(c_, "UTF8");
         return listen();
     }
+    int lost() {
+        sqlstate_ = "08006";
+        message_ = one_line(PQerrorMessage(c_));
+        return kConnectionLost;
+    }
 
+  public:
+    void set_live(bool live) { live_ = live; }
+
+  private:
     PGconn* c_;
     bool in_tx_ = false;
+    bool live_ = false, resetting_ = false;
     std::string sqlstate_, message_;
     int64_t version_ = 0;  // notifications heard from other connections
     std::map<const char*, std::unique_ptr<PgStmt>> stmts_;
@@ -368,11 +408,7 @@ int PgBackend::write_meta(int64_t version) {
 // The number of commits other connections announced since this one was made.
 int PgBackend::data_version(int64_t& out) {
     if (int r = revive()) return r;
-    if (!PQconsumeInput(c_)) {
-        sqlstate_ = "08006";
-        message_ = one_line(PQerrorMessage(c_));
-        return kConnectionLost;
-    }
+    if (!PQconsumeInput(c_)) return lost();
     const int self = PQbackendPID(c_);
     while (PGnotify* n = PQnotifies(c_)) {
         if (n->be_pid != self) ++version_;
@@ -468,8 +504,17 @@ Result<std::unique_ptr<Store>> Store::open_postgres(const std::string& target, c
     // A server that does not answer is given up after 5 s unless the
     // connection string or PGCONNECT_TIMEOUT says otherwise.
     const char* timeout = std::getenv("PGCONNECT_TIMEOUT");
-    const char* keys[] = {"connect_timeout", "fallback_application_name", "dbname", nullptr};
-    const char* vals[] = {timeout && *timeout ? timeout : "5", "pupitre", target.c_str(), nullptr};
+    // A server that vanishes without closing the connection (a cable, a
+    // crash of its host) is noticed within seconds, not at TCP's pace.
+    const char* keys[] = {"connect_timeout",
+                          "keepalives_idle",
+                          "keepalives_interval",
+                          "tcp_user_timeout",
+                          "fallback_application_name",
+                          "dbname",
+                          nullptr};
+    const char* vals[] = {
+        timeout && *timeout ? timeout : "5", "5", "2", "10000", "pupitre", target.c_str(), nullptr};
     PGconn* c = PQconnectdbParams(keys, vals, 1);
     if (!c) {
         r.error = {Fault::io, strf(tr("%s: cannot connect: out of memory"), name.c_str())};
@@ -480,6 +525,10 @@ Result<std::unique_ptr<Store>> Store::open_postgres(const std::string& target, c
         PQfinish(c);
         return r;
     }
+    // The server's notices ("terminating connection…") would be printed on
+    // stderr, over the console's screen: what matters comes back as errors.
+    PQsetNoticeProcessor(
+        c, [](void*, const char*) {}, nullptr);
     PQsetClientEncoding(c, "UTF8");
     std::unique_ptr<Store> st(new Store);
     st->path_ = name;
@@ -488,6 +537,7 @@ Result<std::unique_ptr<Store>> Store::open_postgres(const std::string& target, c
     st->user_ = o.user.empty() ? std::string(PQuser(c)) : o.user;
     auto backend = std::make_unique<PgBackend>(c);
     PgBackend& b = *backend;
+    b.set_live(o.live);
     st->db_ = std::move(backend);
     if (int rc = b.run("SET client_min_messages = warning")) {
         r.error = st->fail(rc, tr("cannot open the store"));

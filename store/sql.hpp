@@ -3,9 +3,11 @@
 // transaction every change runs in. Not for use outside store/.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <optional>
+#include <random>
 #include <string>
 #include <string_view>
 #include <thread>
@@ -81,7 +83,7 @@ namespace pupitre::store {
 // How many times a write transaction is run when the server reports a
 // serialization failure or a deadlock (PostgreSQL under many writers); SQLite
 // takes its write lock first and never meets one.
-inline constexpr int kWriteAttempts = 8;
+inline constexpr int kWriteAttempts = 12;
 
 // Runs `body` (which returns a StoreError or a Result) in one write
 // transaction: committed when it succeeds, rolled back when it fails, and run
@@ -103,8 +105,12 @@ auto Store::in_write(F&& body) -> decltype(body()) {
                 sql::error_of(r) = std::move(c);
         }
         if (!sql::error_of(r).retry || attempt == kWriteAttempts) return r;
-        // Another writer won: let it finish, then read again.
-        std::this_thread::sleep_for(std::chrono::milliseconds(2 * attempt * attempt));
+        ++retried_;
+        // Another writer won: let it finish, then read again, after a random
+        // wait that grows, so that the losers do not meet again in step.
+        thread_local std::minstd_rand jitter(std::random_device{}());
+        const int most = 1 << std::min(attempt + 1, 7);
+        std::this_thread::sleep_for(std::chrono::milliseconds(1 + int(jitter() % unsigned(most))));
     }
 }
 

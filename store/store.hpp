@@ -62,6 +62,10 @@ struct Options {
     int busy_timeout_ms = 3000;   // how long to wait for another writer
     long max_page_count = 0;      // > 0: cap the file at this many pages (tests: disk full)
     std::string user;             // who is written in revisions and audit rows; "" = the OS user
+    // The console: a server's connection that was lost is made again a step
+    // at a time, from later calls, so no call waits on the network for it
+    // (calls meanwhile fail as "the server is gone"). Batch commands wait.
+    bool live = false;
 };
 
 // The default store: $XDG_DATA_HOME/pupitre/pupitre.db, else ~/.local/share/pupitre/pupitre.db.
@@ -208,6 +212,8 @@ class Store {
     std::string local_path() const;
     // "sqlite" or "postgresql".
     std::string_view engine() const;
+    // How many times a write was run again after a serialization failure.
+    int64_t retried() const { return retried_; }
     const std::string& user() const { return user_; }
     bool created() const { return created_; }  // this open created the file
 
@@ -338,6 +344,7 @@ class Store {
     std::string target_;
     std::string user_;
     bool created_ = false;
+    int64_t retried_ = 0;
     Options opt_;
 };
 

@@ -1,0 +1,137 @@
+// The server stopped under its clients (pg_ctl stop -m immediate) and started
+// again: every save a client was told succeeded is there once, no other one
+// is, a refused one says so in one line, and a store connection made before
+// the stop works again once the server is back. Run alone (RUN_SERIAL): it
+// stops the test server every other test uses.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <atomic>
+#include <chrono>
+#include <cstdlib>
+#include <map>
+#include <mutex>
+#include <thread>
+
+#include "store_helpers.hpp"
+
+using namespace pupitre;
+using namespace pupitre::store;
+
+namespace {
+
+// pg_ctl as the server's owner, as scripts/lib/pg.sh made it.
+int pg_ctl(const std::string& what) {
+    const char* as = std::getenv("PUPITRE_TEST_PG_AS");
+    const char* ctl = std::getenv("PUPITRE_TEST_PG_CTL");
+    std::string cmd = std::string(as ? as : "") + " " + ctl + " " + what + " >/dev/null 2>&1";
+    return std::system(cmd.c_str());
+}
+
+class StoreFault : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        if (std::getenv("PUPITRE_TEST_PG") && std::getenv("PUPITRE_TEST_PG_CTL")) return;
+        const char* ci = std::getenv("CI");
+        if (ci && std::string(ci) == "true")
+            FAIL() << "CI=true and no PostgreSQL test server: scripts/test starts one";
+        GTEST_SKIP() << "no PostgreSQL test server (scripts/test starts one)";
+    }
+    // Whatever happened, the server runs again for the tests after this one.
+    void TearDown() override {
+        if (std::getenv("PUPITRE_TEST_PG_CTL") && pg_ctl("status") != 0) pg_ctl("start");
+    }
+};
+
+std::string text_of(int number, int round) {
+    return "%" + std::to_string(number) + "\nN10 G1 X" + std::to_string(round) + "\nM2\n";
+}
+
+}  // namespace
+
+TEST_F(StoreFault, ServerKilledUnderThirtyClientsLosesAndDoublesNothing) {
+    test::Place t("postgresql");
+    const std::string db = t / "fault";
+    test::open_store(db);
+    constexpr int kClients = 30, kRounds = 40;
+    std::mutex m;
+    std::map<int, std::vector<int>> told_saved;  // program -> rounds the client was told were saved
+    std::atomic<int> refused{0}, bad_messages{0};
+    std::atomic<bool> stop_now{false};
+    std::atomic<int> opened{0};
+    auto client = [&](int i) {
+        Options o;
+        o.user = "c" + std::to_string(i);
+        auto r = Store::open(db, o);
+        ++opened;
+        if (!r.ok()) {
+            ++refused;
+            return;
+        }
+        while (opened < kClients) std::this_thread::yield();  // all connected, then go
+        const int number = 3000 + i;
+        int based = kNew;
+        for (int round = 0; round < kRounds; ++round) {
+            if (round == kRounds / 4 && i == 0) stop_now = true;
+            auto s = r.value->save(number, text_of(number, round), based, "fault");
+            if (s.ok()) {
+                based = s.value.revision;
+                std::lock_guard<std::mutex> lock(m);
+                told_saved[number].push_back(round);
+            } else {
+                ++refused;
+                if (s.error.message.find('\n') != std::string::npos) ++bad_messages;
+                based = kHead;  // as a console does: reload and go on
+            }
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        }
+    };
+    std::vector<std::thread> threads;
+    for (int i = 0; i < kClients; ++i) threads.emplace_back(client, i);
+    while (!stop_now) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    ASSERT_EQ(pg_ctl("stop -m immediate"), 0);
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    ASSERT_EQ(pg_ctl("start"), 0);
+    for (auto& th : threads) th.join();
+    EXPECT_GT(refused.load(), 0);  // the stop was felt
+    EXPECT_EQ(bad_messages.load(), 0);
+
+    auto s = test::open_store(db);
+    for (int i = 0; i < kClients; ++i) {
+        const int number = 3000 + i;
+        auto h = s->history(number);  // not_found: none of its saves got through
+        ASSERT_TRUE(h.ok() || h.error.fault == Fault::not_found) << h.error.message;
+        std::vector<int> stored;
+        for (const auto& rev : h.value) {
+            std::string text = s->read(number, rev.revision).value.text;
+            stored.push_back(std::atoi(text.c_str() + text.find('X') + 1));
+        }
+        // Every save the client was told about is there, in order, once; a
+        // refused one is not (a commit whose answer was lost may be: then it
+        // is there once too, never twice).
+        std::vector<int> told = told_saved[number];
+        size_t k = 0;
+        for (int round : stored)
+            if (k < told.size() && told[k] == round) ++k;
+        EXPECT_EQ(k, told.size()) << "program " << number;
+        for (size_t j = 1; j < stored.size(); ++j) EXPECT_LT(stored[j - 1], stored[j]);
+    }
+    EXPECT_EQ(s->integrity_check().value, "ok");
+}
+
+TEST_F(StoreFault, AConnectionMadeBeforeARestartWorksAfterIt) {
+    test::Place t("postgresql");
+    const std::string db = t / "restart";
+    auto s = test::open_store(db);
+    ASSERT_TRUE(s->save(40, "%40\nA\n", kNew, "").ok());
+    ASSERT_EQ(pg_ctl("stop -m immediate"), 0);
+    auto down = s->save(40, "%40\nB\n", 1, "");
+    ASSERT_TRUE(down.error);
+    EXPECT_EQ(down.error.fault, Fault::io);
+    EXPECT_EQ(down.error.message.find('\n'), std::string::npos) << down.error.message;
+    EXPECT_TRUE(s->data_version().error);
+    ASSERT_EQ(pg_ctl("start"), 0);
+    auto up = s->save(40, "%40\nB\n", 1, "");
+    ASSERT_TRUE(up.ok()) << up.error.message;
+    EXPECT_EQ(up.value.revision, 2);
+    EXPECT_EQ(s->read(40).value.text, "%40\nB\n");
+    EXPECT_FALSE(s->data_version().error);
+}

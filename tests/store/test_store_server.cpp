@@ -1,0 +1,279 @@
+// The store with many writers at once, on both engines; and what only a server
+// has: a schema version kept in a table, connection failures said in one line,
+// a copy from one engine to the other and back, byte for byte.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <atomic>
+#include <set>
+#include <thread>
+
+#include "store/text.hpp"
+#include "store_helpers.hpp"
+
+using namespace pupitre;
+using namespace pupitre::store;
+
+namespace {
+
+constexpr int kClients = 30;
+
+std::string program_text(int number, const std::string& line) {
+    return "%" + std::to_string(number) + " (CLIENT)\nN10 G1 X1 F100\n(" + line + ")\nM2\n";
+}
+
+// A schema's name inside one of Place's connection strings.
+std::string schema_of(const std::string& target) {
+    size_t at = target.find("search_path=");
+    return target.substr(at + 12, target.find('\'', at) - at - 12);
+}
+
+bool one_line(const std::string& s) {
+    return !s.empty() && s.find('\n') == std::string::npos;
+}
+
+}  // namespace
+
+using StoreMany = test::OnBothEngines;
+PUPITRE_ON_BOTH_ENGINES(StoreMany);
+
+// 30 consoles at once, each saving programs of its own, its own machine's
+// correctors and an attempt, and all of them saving over the same revision of
+// one shared program: nothing lost, nothing doubled, one save wins and every
+// other one is a CONFLICT revision.
+TEST_P(StoreMany, ThirtyWritersLoseNothingAndReportConflicts) {
+    test::Place t(GetParam());
+    const std::string db = t / "many.db";
+    {
+        auto s = test::open_store(db);
+        ASSERT_TRUE(s->save(500, program_text(500, "FIRST"), kNew, "").ok());
+    }
+    std::atomic<int> ready{0}, saved{0}, conflicts{0}, failures{0};
+    std::atomic<int64_t> retried{0};
+    auto client = [&](int i) {
+        Options o;
+        o.user = "client" + std::to_string(i);
+        o.busy_timeout_ms = 30000;
+        auto r = Store::open(db, o);
+        if (!r.ok()) {
+            ++failures;
+            return;
+        }
+        Store& s = *r.value;
+        ++ready;
+        while (ready < kClients) std::this_thread::yield();
+        auto shared = s.save(500, program_text(500, o.user), 1, "shared");
+        if (!shared.ok()) {
+            ++failures;
+            ADD_FAILURE() << "shared: " << shared.error.message;
+        } else if (shared.value.status == SaveStatus::conflict)
+            ++conflicts;
+        else if (shared.value.status == SaveStatus::saved)
+            ++saved;
+        for (int k = 0; k < 5; ++k) {
+            int n = 1000 + i * 10 + k;
+            if (auto own = s.save(n, program_text(n, o.user), kNew, "own"); !own.ok()) {
+                ++failures;
+                ADD_FAILURE() << "own: " << own.error.message;
+            }
+        }
+        const std::string machine = "m" + std::to_string(i);
+        for (int k = 1; k <= 3; ++k)
+            if (!s.set_values(machine, {{"D" + std::to_string(k) + ".X", 1000 * i + k}},
+                              "page CORR")
+                     .ok())
+                ++failures;
+        Attempt a;
+        a.exercise = "e1";
+        a.exercise_sha = "sha";
+        a.student = o.user;
+        a.machine = "attempt-" + o.user;
+        if (auto e = s.start_attempt(a)) {
+            ++failures;
+            ADD_FAILURE() << "start: " << e.message;
+        }
+        a.submitted_ms = 1;
+        a.score = i;
+        if (auto e = s.submit_attempt(a)) {
+            ++failures;
+            ADD_FAILURE() << "submit: " << e.message;
+        }
+        if (s.submit_attempt(a).fault != Fault::not_found) ++failures;  // never twice
+        retried += s.retried();
+    };
+    std::vector<std::thread> threads;
+    for (int i = 0; i < kClients; ++i) threads.emplace_back(client, i);
+    for (auto& th : threads) th.join();
+    ASSERT_EQ(failures.load(), 0);
+    EXPECT_EQ(saved.load(), 1);
+    EXPECT_EQ(conflicts.load(), kClients - 1);
+
+    auto s = test::open_store(db);
+    auto h = s->history(500).value;
+    ASSERT_EQ(h.size(), size_t(kClients + 1));
+    std::set<std::string> texts;
+    for (const auto& rev : h) texts.insert(s->read(500, rev.revision).value.text);
+    EXPECT_EQ(texts.size(), h.size());  // each client's text once
+    int flagged = 0;
+    for (const auto& rev : h) flagged += rev.conflict;
+    EXPECT_EQ(flagged, kClients - 1);
+    EXPECT_EQ(s->list().value.size(), size_t(2 + 1 + kClients * 5));
+    for (int i = 0; i < kClients; ++i) {
+        auto v = s->values("m" + std::to_string(i)).value;
+        ASSERT_EQ(v.size(), 3u);
+        EXPECT_EQ(v["D2.X"], 1000 * i + 2);
+    }
+    EXPECT_EQ(s->audit().value.size(), size_t(kClients * 3));
+    auto attempts = s->attempts("e1").value;
+    ASSERT_EQ(attempts.size(), size_t(kClients));
+    for (const auto& a : attempts) EXPECT_EQ(a.submitted_ms, 1);
+    EXPECT_EQ(s->integrity_check().value, "ok");
+    // On a server the losers were refused and ran again; SQLite queued them.
+    if (GetParam() == "postgresql") {
+        EXPECT_GT(retried.load(), 0);
+    }
+}
+
+// A console follows the others' commits, not its own.
+TEST_P(StoreMany, AnotherConsolesCommitIsHeard) {
+    test::Place t(GetParam());
+    const std::string db = t / "dv.db";
+    auto a = test::open_store(db);
+    auto b = test::open_store(db);
+    int64_t before = a->data_version().value;
+    ASSERT_TRUE(a->save(20, "%20\nA\n", kNew, "").ok());
+    EXPECT_EQ(a->data_version().value, before);
+    ASSERT_TRUE(b->save(21, "%21\nB\n", kNew, "").ok());
+    EXPECT_NE(a->data_version().value, before);
+}
+
+// ---- the server's own ----
+
+class StoreServer : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        if (std::getenv("PUPITRE_TEST_PG")) return;
+        const char* ci = std::getenv("CI");
+        if (ci && std::string(ci) == "true")
+            FAIL() << "CI=true and no PostgreSQL test server: scripts/test starts one";
+        GTEST_SKIP() << "no PostgreSQL test server (scripts/test starts one)";
+    }
+};
+
+TEST_F(StoreServer, ANewerSchemaIsRefusedAnOlderOneUpgraded) {
+    test::Place t("postgresql");
+    const std::string db = t / "v.db";
+    test::open_store(db);
+    const std::string schema = schema_of(db);
+    ASSERT_EQ(test::pg_admin("UPDATE " + schema +
+                             ".pupitre_meta SET value = 99 WHERE key = 'schema_version'"),
+              "");
+    auto r = Store::open(db);
+    ASSERT_TRUE(r.error);
+    EXPECT_EQ(r.error.fault, Fault::bad_data);
+    EXPECT_NE(r.error.message.find("schema 99"), std::string::npos) << r.error.message;
+    EXPECT_NE(r.error.message.find("up to " + std::to_string(kSchemaVersion)), std::string::npos);
+    // A store of schema 2 (before training) gets its tables, in one transaction.
+    ASSERT_EQ(test::pg_admin("SET search_path = " + schema +
+                             "; DROP TABLE attempts; DROP TABLE exercises; UPDATE pupitre_meta "
+                             "SET value = 2 WHERE key = 'schema_version'"),
+              "");
+    auto s = test::open_store(db);
+    ASSERT_TRUE(s);
+    EXPECT_FALSE(s->put_exercise("x", "text"));
+    EXPECT_EQ(s->list().value.size(), 2u);  // nothing seeded twice
+}
+
+TEST_F(StoreServer, AnotherApplicationsTablesAreLeftUntouched) {
+    test::Place t("postgresql");
+    const std::string db = t / "other.db";
+    ASSERT_EQ(test::pg_admin("CREATE TABLE " + schema_of(db) + ".invoices (id int)"), "");
+    auto r = Store::open(db);
+    ASSERT_TRUE(r.error);
+    EXPECT_EQ(r.error.fault, Fault::bad_data);
+    EXPECT_NE(r.error.message.find("holds other tables"), std::string::npos) << r.error.message;
+    EXPECT_EQ(test::pg_admin("SELECT * FROM " + schema_of(db) + ".invoices"), "");
+}
+
+TEST_F(StoreServer, ConnectionFailuresAreOneLine) {
+    std::string base = std::getenv("PUPITRE_TEST_PG");
+    auto with = [&](const std::string& key, const std::string& value) {
+        std::string s = base;
+        size_t at = s.find(key + "=");
+        size_t end = s.find(' ', at);
+        return s.replace(at, end == std::string::npos ? std::string::npos : end - at,
+                         key + "=" + value);
+    };
+    auto missing = Store::open(with("dbname", "no_such_db"));
+    EXPECT_EQ(missing.error.fault, Fault::not_found);
+    EXPECT_TRUE(one_line(missing.error.message)) << missing.error.message;
+    EXPECT_NE(missing.error.message.find("no_such_db does not exist"), std::string::npos);
+    auto stranger = Store::open(with("user", "nobody_here"));
+    ASSERT_TRUE(stranger.error);
+    EXPECT_TRUE(one_line(stranger.error.message)) << stranger.error.message;
+    EXPECT_NE(stranger.error.message.find("authentication failed for nobody_here"),
+              std::string::npos)
+        << stranger.error.message;
+    EXPECT_EQ(stranger.error.message.find("password="), std::string::npos);
+    auto closed = Store::open(with("port", "1"));
+    EXPECT_EQ(closed.error.fault, Fault::io);
+    EXPECT_TRUE(one_line(closed.error.message)) << closed.error.message;
+    EXPECT_NE(closed.error.message.find("does not answer"), std::string::npos);
+}
+
+// SQLite -> PostgreSQL -> SQLite: every table's rows and checksums agree at
+// each step, and every program exports byte for byte as imported.
+TEST_F(StoreServer, CopyRoundTripsBetweenTheEngines) {
+    test::TempDir d;
+    test::Place server("postgresql");
+    auto a = test::open_store(d / "a.db");
+    std::string dir = test::shared_programs();
+    std::vector<std::string> originals;
+    for (int n = 0; n < 40; ++n) {
+        // Accents, a byte that is no UTF-8 and a CR LF: stored as they are.
+        std::string text = program_text(2000 + n, "ETE " + std::to_string(n)) + "(ÉTÉ \xff)\r\n";
+        ASSERT_TRUE(a->save(2000 + n, text, kNew, "import").ok());
+        ASSERT_TRUE(a->save(2000 + n, text + "N99\n", 1, "page EDIT").ok());
+        originals.push_back(text + "N99\n");
+    }
+    ASSERT_TRUE(a->save(2000, "%2000\nCONFLICT\n", 1, "").ok());  // a CONFLICT revision
+    ASSERT_TRUE(a->set_values("lathe", {{"D1.X", 15157}, {"PREF.Z", -200000}}, "page CORR").ok());
+    ASSERT_FALSE(a->add_imd("lathe", "G0 X10"));
+    ASSERT_FALSE(a->set_setting("machine", "lathe"));
+    ASSERT_FALSE(a->put_workshop("lathe", "setup text", "part text"));
+    ASSERT_FALSE(a->put_exercise("ex", "exercise text"));
+    Attempt at;
+    at.exercise = "ex";
+    at.student = "ann";
+    at.machine = "attempt-ann";
+    at.seconds = 12.345678901234567;
+    ASSERT_FALSE(a->start_attempt(at));
+    at.submitted_ms = 77;
+    at.signature = "sig";
+    ASSERT_FALSE(a->submit_attempt(at));
+
+    Options fresh;
+    fresh.seed = false;
+    auto b = test::open_store(server / "b", fresh);
+    auto ab = a->copy_to(*b);
+    ASSERT_TRUE(ab.ok()) << ab.error.message;
+    auto c = test::open_store(d / "c.db", fresh);
+    auto bc = b->copy_to(*c);
+    ASSERT_TRUE(bc.ok()) << bc.error.message;
+    ASSERT_EQ(ab.value.tables.size(), bc.value.tables.size());
+    for (size_t i = 0; i < ab.value.tables.size(); ++i) {
+        EXPECT_EQ(ab.value.tables[i].rows, bc.value.tables[i].rows) << ab.value.tables[i].name;
+        EXPECT_EQ(ab.value.tables[i].checksum, bc.value.tables[i].checksum);
+    }
+    for (int n = 0; n < 40; ++n) {
+        EXPECT_EQ(b->read(2000 + n).value.text, n ? originals[size_t(n)] : originals[0]);
+        EXPECT_EQ(c->read(2000 + n, 2).value.text, originals[size_t(n)]);
+    }
+    EXPECT_EQ(b->read(2000).value.info.conflict, 3);
+    EXPECT_EQ(b->attempts("ex").value.at(0).seconds, at.seconds);
+    // The server's ids go on after the copied ones.
+    ASSERT_FALSE(b->add_imd("lathe", "G0 X20"));
+    EXPECT_EQ(b->imd_history("lathe").value.size(), 2u);
+    // A copy never merges into a store that holds something.
+    auto again = a->copy_to(*b);
+    EXPECT_EQ(again.error.fault, Fault::bad_data);
+    EXPECT_NE(again.error.message.find("not empty"), std::string::npos);
+}
