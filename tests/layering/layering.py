@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 # The layers of pupitre (ARCHITECTURE.md, Invariants): core/ knows neither the console
 # nor the pages; pages/ are pure renderers that never call ncurses nor the
-# console; only the store (store/) speaks SQL; the core links no Cairo.
+# console; only the store (store/) speaks SQL, and inside it only each engine's
+# backend includes its library; the core links no Cairo.
 # Inside the core, its folders stand in one order (CORE_ORDER, ARCHITECTURE.md):
 # a folder includes its own headers and those of the folders below it.
 # Fails, naming file and line, on a product #include that crosses the wrong way.
@@ -25,7 +26,11 @@ RULES = [
     ("pages/", None, r'^"console/', "pages are pure renderers: the console calls them"),
     ("", "console/", r"^<(n?curses(w)?[./]|readline/)",
      "only console/ talks to the terminal (ncurses, readline)"),
-    ("", "store/", r'^(<sqlite3\.h>|"store/sql\.hpp")$', "only the store speaks SQL"),
+    ("", "store/", r'^(<sqlite3\.h>|<libpq-fe\.h>|"store/(sql|backend)\.hpp")$',
+     "only the store speaks SQL"),
+    ("store/", "store/sqlite.cpp", r'^<sqlite3\.h>$', "only the SQLite backend includes sqlite3.h"),
+    ("store/", "store/postgres.cpp", r'^<libpq-fe\.h>$',
+     "only the PostgreSQL backend includes libpq-fe.h"),
     ("core/", None, r"^<cairo", "the core links no Cairo"),
     ("core/", None, r"^<png\.h>", "the core links no libpng"),
 ]
@@ -117,13 +122,17 @@ def selftest():
         "pages/screen.cpp": '#include "console/keys.hpp"\n',
         "console/session.cpp": "#include <sqlite3.h>\n",
         "console/app.cpp": '#  include "store/sql.hpp"\n',
+        "store/programs.cpp": "#include <sqlite3.h>\n",
+        "store/values.cpp": "#include <libpq-fe.h>\n",
+        "console/cli_store.cpp": '#include "store/backend.hpp"\n',
         "core/geometry/frames.hpp": '#include "core/interp/machine.hpp"\n',
         "core/workshop/setup.cpp": '#include "core/sim/sim.hpp"\n',
         "core/diag.cpp": '#include "core/parse/program.hpp"\n',
         "core/spare/new.hpp": '#include "core/diag.hpp"\n',
     }
     good = {
-        "store/sql.hpp": "#include <sqlite3.h>\n",
+        "store/sqlite.cpp": "#include <sqlite3.h>\n",
+        "store/postgres.cpp": "#include <libpq-fe.h>\n",
         "core/output/cairo_plot.cpp": "#include <cairo-pdf.h>\n#include <cairo.h>\n",
         "core/output/height_png.cpp": "#include <png.h>\n",
         "console/term.cpp": "#include <curses.h>\n#include <readline/readline.h>\n",

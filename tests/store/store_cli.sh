@@ -2,7 +2,7 @@
 # Process-level tests of the store commands (CTest label "store"): the real
 # binary, a private HOME and XDG_DATA_HOME, exit codes and files checked byte
 # for byte.   store_cli.sh PUPITRE CASE
-# Cases: roundtrip commands default run anomalies concurrent
+# Cases: roundtrip commands default run anomalies concurrent copy server
 # SPDX-License-Identifier: GPL-3.0-or-later
 set -uo pipefail
 bin=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
@@ -269,6 +269,59 @@ concurrent)
     if command -v sqlite3 >/dev/null; then
         [ "$(sqlite3 c.db 'PRAGMA integrity_check')" = ok ] || fail "integrity"
     fi
+    ;;
+copy)
+    # store copy between two files: everything, checked, and never into a
+    # store that holds something.
+    printf '%%1 (ONE)\r\nN10 G0 X0\r\n' >one.iso
+    expect 0 P --db a.db import one.iso
+    printf '%%1 (ONE)\nN10 G0 X1\n' >one.iso
+    expect 0 P --db a.db import one.iso
+    printf 'N10 E50001=15157\nN20 M02\n' >gauge.iso
+    expect 0 P --db a.db run gauge.iso
+    expect 0 P store copy a.db b.db
+    stdout_has "counts and checksums agree"
+    grep -qE '^revisions +4 ' out || fail "revisions not copied: $(cat out)"
+    grep -qE '^correctors +1 ' out || fail "the corrector not copied: $(cat out)"
+    grep -qE '^audit +1 ' out || fail "the audit not copied: $(cat out)"
+    expect 0 P --db b.db history 1
+    [ "$(grep -c '^[ *] r' out)" = 2 ] || fail "%1 has not its 2 revisions: $(cat out)"
+    expect 0 P --db b.db export 1 -o back.iso
+    cmp -s back.iso one.iso || fail "export after copy differs"
+    expect 65 P store copy a.db b.db
+    stderr_has "not empty"
+    expect 66 P store copy missing.db c.db
+    [ -e c.db ] && fail "a copy from nothing made c.db"
+    expect 0 P store copy b.db c.db
+    expect 0 P --db c.db list
+    stdout_has "%1 "
+    ;;
+server)
+    # The same commands on the test server (scripts/lib/pg.sh), named by
+    # PUPITRE_DB: import, list, export byte for byte, a copy there and back.
+    if [ -z "${PUPITRE_TEST_PG:-}" ]; then
+        [ "${CI:-}" = true ] && { echo "CI=true and no PostgreSQL test server" >&2; exit 1; }
+        echo "skipped: no PostgreSQL test server (scripts/test starts one)" >&2
+        exit 77
+    fi
+    schema="cli_$$"
+    psql "$PUPITRE_TEST_PG" -qc "CREATE SCHEMA $schema" >/dev/null || exit 1
+    trap 'psql "$PUPITRE_TEST_PG" -qc "DROP SCHEMA $schema CASCADE" >/dev/null 2>&1; chmod -R u+w "$work" 2>/dev/null; rm -rf "$work"' EXIT
+    server="$PUPITRE_TEST_PG options='-csearch_path=$schema'"
+    printf '%%7 (SEVEN)\r\nN10 G0 X7\r\n(\xc9T\xc9 \xff)\r\n' >seven.iso
+    PUPITRE_DB="$server" expect 0 P import seven.iso
+    PUPITRE_DB="$server" expect 0 P list
+    stdout_has "%7 "
+    stdout_has "(SEVEN)"
+    PUPITRE_DB="$server" expect 0 P export 7 -o seven.back
+    cmp -s seven.back seven.iso || fail "export from the server differs"
+    expect 0 P store copy "$server" back.db
+    expect 0 P --db back.db export 7 -o seven.file
+    cmp -s seven.file seven.iso || fail "export after copy from the server differs"
+    # A password never appears: the store is named by its URI without one.
+    expect 66 P --db "${PUPITRE_TEST_PG/dbname=postgres/dbname=nosuch}" list
+    stderr_has "the database nosuch does not exist"
+    [ "$(wc -l <"$work/err")" = 1 ] || fail "not one line: $(cat "$work/err")"
     ;;
 *)
     echo "store_cli.sh: unknown case $case_name" >&2
