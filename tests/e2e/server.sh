@@ -103,6 +103,33 @@ gone)
     cmd ":quit"
     wait_for '^EXIT=0'
     ;;
+journal)
+    # The editor's journal of a server's store lives on this PC: kill -9
+    # loses at most the line being typed, and the next start offers it.
+    start
+    cmd ":edit 300"
+    wait_for '^─ EDIT  %300'
+    cmd "N5 G0 X111"
+    wait_for 'N5 G0 X111'
+    pid=$(pgrep -P "$(T list-panes -t e2e -F '#{pane_pid}')" -f "$bin" -n)
+    kill -KILL "$pid"
+    wait_for 'EXIT=137'
+    ls "$XDG_DATA_HOME"/pupitre/servers/*.recover/300.iso >/dev/null 2>&1 ||
+        fail "no journal under \$XDG_DATA_HOME/pupitre/servers"
+    next_server
+    start
+    wait_for 'unsaved work recovered for %300: :edit 300, then :recover'
+    cmd ":edit 300"
+    cmd ":recover"
+    wait_for 'recovered text loaded'
+    cmd ":save"
+    wait_for '%300 saved as revision 2'
+    sql "SELECT convert_from(text, 'UTF8') FROM revisions WHERE program = 300 AND rev = 2" |
+        grep -q 'N5 G0 X111' || fail "the recovered line is not on the server"
+    cmd ":close"
+    cmd ":quit"
+    wait_for '^EXIT=0'
+    ;;
 *)
     echo "unknown case $case"
     exit 2

@@ -219,6 +219,25 @@ TEST_F(StoreServer, ConnectionFailuresAreOneLine) {
     EXPECT_NE(closed.error.message.find("does not answer"), std::string::npos);
 }
 
+// The server's unix socket, as a class server's own PC reaches it.
+TEST_F(StoreServer, OverTheUnixSocket) {
+    const char* dir = std::getenv("PUPITRE_TEST_PG_SOCKET");
+    if (!dir) GTEST_SKIP() << "no socket directory given (PUPITRE_TEST_PG_SOCKET)";
+    std::string base = std::getenv("PUPITRE_TEST_PG");
+    size_t at = base.find("host=");
+    std::string target = base.substr(0, at) + "host=" + dir + base.substr(base.find(' ', at));
+    size_t ssl = target.find("sslmode=require");
+    if (ssl != std::string::npos) target.replace(ssl, 15, "sslmode=disable");
+    test::Place t("postgresql");
+    const std::string tcp = t / "sock";
+    const std::string sock = target + tcp.substr(tcp.find(" options="));
+    auto s = test::open_store(sock);
+    ASSERT_TRUE(s);
+    EXPECT_EQ(s->path().rfind("postgresql://pupitre_admin@/", 0), 0u) << s->path();
+    EXPECT_TRUE(s->save(9, "%9\nN1\n", kNew, "").ok());
+    EXPECT_EQ(test::open_store(tcp)->read(9).value.text, "%9\nN1\n");
+}
+
 // SQLite -> PostgreSQL -> SQLite: every table's rows and checksums agree at
 // each step, and every program exports byte for byte as imported.
 TEST_F(StoreServer, CopyRoundTripsBetweenTheEngines) {
