@@ -11,6 +11,13 @@ bin=$(realpath "$1") case=$2
 W=110 H=40
 export PUPITRE_CLASS_KEY=$work/class.key
 db=$work/store.db
+dbflag="--db $db"
+# PUPITRE_E2E_DB: the same cases on another store (a PostgreSQL server's,
+# from tests/e2e/server.sh), named to the console by PUPITRE_DB.
+if [ -n "${PUPITRE_E2E_DB:-}" ]; then
+    db=$PUPITRE_E2E_DB dbflag=""
+    export PUPITRE_DB=$db
+fi
 
 # A block run in IMD.
 imd() {
@@ -29,7 +36,7 @@ homed_with_t1() {
 # The exam's six values typed on the PREF and CORR pages, PREF X as given.
 exam() {
     local pref_x=$1
-    start --db "$db" exercise exam-2005 --student "$2"
+    start $dbflag exercise exam-2005 --student "$2"
     wait_for 'exam-2005: June 2005 exam'
     wait_for 'Measure 2: after a test cut'
     keys M-p
@@ -63,7 +70,7 @@ right)
     "$bin" --db "$db" class report exam-2005 > "$work/report" || fail "class report"
     grep -Eq '^exam-2005 +alice +1 +100 +100' "$work/report" || fail "report: $(cat "$work/report")"
     # A second start is a new attempt: the task again, not the report.
-    start --db "$db" exercise exam-2005 --student alice
+    start $dbflag exercise exam-2005 --student alice
     wait_for 'Enter the six values'
     ;;
 diameter)
@@ -90,7 +97,7 @@ hidden)
     # The drawn exam at the machine: presetter, gauge block, touch; every
     # page looked at, in colour; the truth (what the teacher's command
     # prints) nowhere on them nor in the store's files before :submit.
-    start --db "$db" exercise exam-2005-drawn --student carol
+    start $dbflag exercise exam-2005-drawn --student carol
     wait_for 'exam-2005-drawn'
     "$bin" --db "$db" exercise truth exam-2005-drawn --student carol > "$work/truth" || fail "truth"
     mapfile -t secrets < <(awk '/^(PREF|DEC1|D1)\./ && ($2 > 0.5 || $2 < -0.5) { print $2 }' "$work/truth")
@@ -126,7 +133,7 @@ hidden)
 instruments)
     # Issue 38: the WORKSHOP page offers only the instruments the exercise
     # allows (exam-2005-drawn: dia and tool; mill-pocket: no presetter).
-    start --db "$db" exercise exam-2005-drawn --student dave
+    start $dbflag exercise exam-2005-drawn --student dave
     wait_for 'exam-2005-drawn'
     cmd ":page shop"
     wait_for '^ +dia Z-20 +micrometer'
@@ -135,7 +142,7 @@ instruments)
     cmd ":quit"
     wait_for '^EXIT=0' 10
     next_server
-    start --db "$db" exercise mill-pocket --student dave
+    start $dbflag exercise mill-pocket --student dave
     wait_for 'mill-pocket'
     cmd ":page shop"
     wait_for '^ +depth X60 Y30 +depth gauge'
@@ -148,7 +155,7 @@ mill)
     # teacher's command prints) is what the touch-offs must give. A fixed
     # key: the same truth on every run (the moves suit any draw of the ranges).
     echo 0123456789abcdef0123456789abcdef > "$PUPITRE_CLASS_KEY"
-    start --db "$db" exercise mill-pocket --student finn
+    start $dbflag exercise mill-pocket --student finn
     wait_for 'edge finder'
     "$bin" --db "$db" exercise truth mill-pocket --student finn > "$work/truth" || fail "truth"
     truth() { awk -v n="$1" '$1 == n { print $2 }' "$work/truth"; }
@@ -219,7 +226,7 @@ first)
     # teacher's command prints; the moves suit any draw of the ranges (the
     # face from Z -5 to 50, the jaws at Z -50 or further left).
     echo 0123456789abcdef0123456789abcdef > "$PUPITRE_CLASS_KEY"
-    start --db "$db" exercise lathe-first --student erin
+    start $dbflag exercise lathe-first --student erin
     wait_for 'PREF Z on the face'
     "$bin" --db "$db" exercise truth lathe-first --student erin > "$work/truth" || fail "truth"
     truth() { awk -v n="$1" '$1 == n { print $2 }' "$work/truth"; }
