@@ -296,3 +296,38 @@ TEST_F(StoreServer, CopyRoundTripsBetweenTheEngines) {
     EXPECT_EQ(again.error.fault, Fault::bad_data);
     EXPECT_NE(again.error.message.find("not empty"), std::string::npos);
 }
+
+// A year of a class's work: 10,000 programs with two revisions each, from a
+// file to the server and back, every text and every history the same.
+TEST_F(StoreServer, TenThousandProgramsWithHistoryRoundTrip) {
+    test::TempDir d;
+    test::Place server("postgresql");
+    Options fresh;
+    fresh.seed = false;
+    auto a = test::open_store(d / "a.db", fresh);
+    constexpr int kPrograms = 10000;
+    for (int rev = 0; rev < 2; ++rev) {
+        std::vector<Piece> pieces;
+        for (int n = 1; n <= kPrograms; ++n)
+            pieces.push_back({n,
+                              program_text(n, "R" + std::to_string(rev)) + "N20 X" +
+                                  std::to_string(n * 7 + rev) + "\r\n",
+                              "import"});
+        ASSERT_TRUE(a->save_all(pieces).ok());
+    }
+    auto b = test::open_store(server / "year", fresh);
+    auto ab = a->copy_to(*b);
+    ASSERT_TRUE(ab.ok()) << ab.error.message;
+    auto c = test::open_store(d / "c.db", fresh);
+    auto bc = b->copy_to(*c);
+    ASSERT_TRUE(bc.ok()) << bc.error.message;
+    for (size_t i = 0; i < ab.value.tables.size(); ++i)
+        EXPECT_EQ(ab.value.tables[i].checksum, bc.value.tables[i].checksum);
+    std::vector<std::string> before, after;
+    EXPECT_FALSE(a->each_program([&](int, std::string_view t) { before.emplace_back(t); }));
+    EXPECT_FALSE(c->each_program([&](int, std::string_view t) { after.emplace_back(t); }));
+    ASSERT_EQ(before.size(), size_t(kPrograms));
+    EXPECT_TRUE(before == after);
+    EXPECT_EQ(c->history(kPrograms).value.size(), 2u);
+    EXPECT_EQ(c->read(kPrograms, 1).value.text, a->read(kPrograms, 1).value.text);
+}
