@@ -72,6 +72,12 @@ Effect EditDesk::open(int number) {
     bool fresh = false;
     if (b_.store()) {
         auto r = b_.store()->read(number);
+        // A store that cannot be read is no reason to start the program
+        // afresh: its stored text would be lost at the next save.
+        if (r.error && r.error.fault != store::Fault::not_found) {
+            b_.say(strf(tr("cannot open %%%d: %s"), number, r.error.message.c_str()), true);
+            return Effect::redraw;
+        }
         if (!r.error && !r.value.info.deleted) {
             text = r.value.text;
             rev = r.value.revision;
@@ -174,9 +180,18 @@ Effect EditDesk::save(bool force) {
             b_.store()->save(editor_.number, text,
                              editor_.revision > 0 ? editor_.revision : store::kNew, "page EDIT");
         if (r.error) {
-            b_.say(strf(tr("not saved: %s"), r.error.message.c_str()), true);
+            // A server out of reach: the text stays here (and in the journal)
+            // and is saved when it answers, over the revision it was based on.
+            const bool wait =
+                r.error.fault == store::Fault::io && b_.store()->engine() == "postgresql";
+            save_waiting_ = wait ? editor_.number : -1;
+            b_.say(
+                wait ? tr("not saved yet: the store does not answer; kept here, saved when it does")
+                     : strf(tr("not saved: %s"), r.error.message.c_str()),
+                true);
             return Effect::redraw;
         }
+        save_waiting_ = -1;
         drop_journal(editor_.number);  // the text is in the store (a conflict keeps it too)
         if (r.value.status == store::SaveStatus::conflict) {
             editor_.dirty = false;  // the text is safe in the store, as the CONFLICT revision

@@ -31,13 +31,17 @@ class EditDesk {
     Effect open(int number);                // :edit N
     Effect text(const std::string& block);  // a line typed in EDIT
     Effect save(bool force);                // :save, :save!
-    Effect close(bool force);               // :close asks before dropping unsaved changes
-    Effect history();                       // :history
-    Effect restore(int revision);           // :restore REV
-    Effect recover(bool discard);           // :recover, :discard
-    Effect modif_start();                   // :mode modif
-    bool modif_apply();    // Cycle Start after MODIF: the changed text runs; false: refused
-    void abandon_modif();  // RAZ: the interrupted program goes with the run
+    // A :save the server could not take, made again when it answers.
+    bool save_waiting() const {
+        return editor_.is_open() && editor_.number == save_waiting_ && editor_.dirty;
+    }
+    Effect close(bool force);      // :close asks before dropping unsaved changes
+    Effect history();              // :history
+    Effect restore(int revision);  // :restore REV
+    Effect recover(bool discard);  // :recover, :discard
+    Effect modif_start();          // :mode modif
+    bool modif_apply();            // Cycle Start after MODIF: the changed text runs; false: refused
+    void abandon_modif();          // RAZ: the interrupted program goes with the run
 
     // The EDIT page's MODIFY key: the block under the cursor to the input line.
     Effect modify_block(LineInput& input);
@@ -80,6 +84,7 @@ class EditDesk {
     Editor editor_;
     bool modif_ = false;
     bool modify_pending_ = false;
+    int save_waiting_ = -1;           // the program whose :save waits for the server
     uint64_t journaled_changes_ = 0;  // the editor's changes already in the journal
     int journal_held_ = -1;           // an earlier session's journal not yet recovered or discarded
     int leased_ = -1;                 // the program this console's lease names

@@ -17,6 +17,7 @@
 #include "console/keymap.hpp"
 #include "console/keys.hpp"
 #include "console/line_input.hpp"
+#include "console/outbox.hpp"
 #include "console/setting.hpp"
 #include "core/sim/sim.hpp"
 #include "pages/view.hpp"
@@ -180,6 +181,7 @@ class Session final : public Bench {
     void remember_store();
     void follow_store(double dt);
     void send_outbox();
+    void open_outbox();
     void sync_from_store();
 
     MachineProfile m_;
@@ -230,12 +232,7 @@ class Session final : public Bench {
     bool store_pending_ = false;             // another console's change waits for the end of a run
     std::vector<pages::DirEntry> dir_seen_;  // the store's programs at the last look
     // Values a server out of reach could not take, in order, until it answers.
-    struct Unsent {
-        std::string key, name;
-        int64_t value = 0;
-        std::string source;
-    };
-    std::vector<Unsent> outbox_;
+    Outbox outbox_;
 };
 
 }  // namespace pupitre::console

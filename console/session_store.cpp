@@ -33,6 +33,7 @@ std::string Session::load_store() {
     if (auto r = store::load_programs(*store_, mem_); r.error) problem = r.error.message;
     if (auto r = store::seed_machine(*store_, sim_->interp(), store_key_); r.error)
         problem = r.error.message;
+    open_outbox();
     sim_->interp().origins_changed();
     if (auto r = store_->imd_history(store_key_, 200); !r.error)
         for (auto it = r.value.rbegin(); it != r.value.rend(); ++it) input_.add_history(it->block);
@@ -137,27 +138,33 @@ Bench::Stored Session::store_values(const std::vector<std::pair<std::string, int
     // sent when it answers again (the same values again are no new change).
     if (r.error.fault != store::Fault::io || store_->engine() != "postgresql")
         return {r.error.message, false};
-    for (const auto& [name, value] : values)
-        outbox_.push_back({store_key_, name, value, std::string(source)});
+    for (const auto& [name, value] : values) outbox_.add(store_key_, name, value, source);
     return {tr("the store does not answer: kept here, stored when it does"), true};
 }
 
 // From follow_store() once the server answers: what it could not take, in
 // the order it was set.
 void Session::send_outbox() {
-    size_t sent = 0;
+    std::vector<std::string> sent = outbox_.send(*store_);
     std::string names;
-    while (sent < outbox_.size()) {
-        const Unsent& u = outbox_[sent];
-        auto r = store_->set_values(u.key, {{u.name, u.value}}, u.source);
-        if (r.error) break;
-        names += (names.empty() ? "" : ", ") + u.name;
-        ++sent;
+    for (const std::string& n : sent) names += (names.empty() ? "" : ", ") + n;
+    if (!sent.empty())
+        say(strf(tr("the store answers again: %d values kept here are stored (%s)"),
+                 int(sent.size()), names.c_str()));
+}
+
+// At start: what an earlier console on this PC set while the server did not
+// answer is this machine's state, and is sent when the server answers.
+void Session::open_outbox() {
+    if (store_->engine() != "postgresql") return;
+    outbox_.open(store_->local_path() + ".outbox");
+    Interpreter& in = sim_->interp();
+    for (const Outbox::Unsent& u : outbox_.unsent()) {
+        if (u.key != store_key_) continue;
+        in.set(u.name, std::strtod(store::format_value(u.name, u.value).c_str(), nullptr));
+        persisted_[u.name] = u.value;
     }
-    outbox_.erase(outbox_.begin(), outbox_.begin() + long(sent));
-    if (sent)
-        say(strf(tr("the store answers again: %d values kept here are stored (%s)"), int(sent),
-                 names.c_str()));
+    in.apply_gauges_now();
 }
 
 // ---- two consoles on one store ----
@@ -178,6 +185,7 @@ void Session::follow_store(double dt) {
     editing_.keep_lease(kPollSeconds);
     auto v = store_->data_version();
     if (!v.error && !outbox_.empty()) send_outbox();
+    if (!v.error && editing_.save_waiting()) editing_.save(false);
     if (v.error || (v.value == data_version_ && !store_pending_)) return;
     data_version_ = v.value;
     sync_from_store();

@@ -103,6 +103,50 @@ gone)
     cmd ":quit"
     wait_for '^EXIT=0'
     ;;
+outbox)
+    # A :save and a value the server could not take are made when it answers;
+    # a value kept when the console quits is sent by the next one.
+    start
+    cmd ":page corr"
+    wait_for '^─ CORR'
+    pg_ctl_ stop -m immediate || fail "cannot stop the test server"
+    cmd ":set D1.Z=7"
+    expect_message 'kept here, stored when it does'
+    # A program the store cannot give is not opened as a new one.
+    cmd ":edit 301"
+    expect_message 'cannot open %301: '
+    pg_ctl_ start || fail "cannot start the test server again"
+    wait_for 'the store answers again: 1 values kept here are stored \(D1.Z\)' 15
+    [ "$(sql "SELECT value FROM correctors WHERE machine = 'lathe' AND d = 1 AND field = 'Z'")" = 7000 ] ||
+        fail "D1.Z is not on the server"
+    cmd ":edit 300"
+    wait_for '^─ EDIT  %300  revision 1'
+    pg_ctl_ stop -m immediate || fail "cannot stop the test server"
+    cmd "N5 G0 X111"
+    cmd ":save"
+    expect_message 'not saved yet: the store does not answer; kept here, saved when it does'
+    pg_ctl_ start || fail "cannot start the test server again"
+    wait_for '%300 saved as revision 2' 15
+    cmd ":close"
+    pg_ctl_ stop -m immediate || fail "cannot stop the test server"
+    cmd ":page corr"
+    cmd ":set D2.X=3"
+    expect_message 'kept here, stored when it does'
+    cmd ":quit"
+    wait_for '^EXIT=0' 15
+    ls "$XDG_DATA_HOME"/pupitre/servers/*.outbox >/dev/null 2>&1 || fail "no outbox kept on the PC"
+    pg_ctl_ start || fail "cannot start the test server again"
+    next_server
+    start
+    wait_for 'the store answers again: 1 values kept here are stored \(D2.X\)' 15
+    cmd ":page corr"
+    wait_for '^  2 +3\.000 ' 5
+    [ "$(sql "SELECT count(*) FROM audit WHERE name = 'D2.X'")" = 1 ] || fail "D2.X not stored once"
+    [ "$(sql "SELECT count(*) FROM revisions WHERE program = 300")" = 2 ] || fail "%300 saved twice"
+    ls "$XDG_DATA_HOME"/pupitre/servers/*.outbox >/dev/null 2>&1 && fail "the outbox stays after it was sent"
+    cmd ":quit"
+    wait_for '^EXIT=0'
+    ;;
 journal)
     # The editor's journal of a server's store lives on this PC: kill -9
     # loses at most the line being typed, and the next start offers it.
