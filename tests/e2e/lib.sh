@@ -73,6 +73,25 @@ start() {
         "env LANG=C.UTF-8 TERM=screen ${E2E_ENV:-} '$bin' $* ; echo EXIT=\$? ; stty -a > '$work/stty' ; sleep 30"
     wait_for 'F1 help|1HELP|1AIDE' 10
 }
+# A second console beside the first (session e2f), as two PCs of a class on
+# one store: start2 ARGS, screen2, wait2 REGEX [SECONDS], keys2, cmd2.
+start2() {
+    T -f /dev/null new-session -d -s e2f -x 80 -y 24 \
+        "env LANG=C.UTF-8 TERM=screen '$bin' $* ; echo EXIT=\$? ; sleep 30"
+}
+screen2() { T capture-pane -p -t e2f 2>/dev/null; }
+wait2() {
+    local i
+    for ((i = 0; i < ${2:-10} * 20; i++)); do
+        screen2 | grep -Eq -- "$1" && return 0
+        sleep 0.05
+    done
+    echo "---- second console ----"
+    screen2
+    fail "the second console waited for /$1/"
+}
+keys2() { T send-keys -t e2f "$@"; }
+cmd2() { keys2 -l "$1"; keys2 Enter; sleep 0.1; }
 pom() {
     cmd ":mode pom"
     keys F9

@@ -32,21 +32,7 @@ case $case in
 two)
     # What one console sets, the other shows: the server tells it (NOTIFY).
     start
-    T -f /dev/null new-session -d -s e2f -x 80 -y 24 \
-        "env LANG=C.UTF-8 TERM=screen '$bin' ; echo EXIT=\$? ; sleep 30"
-    screen2() { T capture-pane -p -t e2f 2>/dev/null; }
-    wait2() {
-        local i
-        for ((i = 0; i < ${2:-10} * 20; i++)); do
-            screen2 | grep -Eq -- "$1" && return 0
-            sleep 0.05
-        done
-        echo "---- second console ----"
-        screen2
-        fail "the second console waited for /$1/"
-    }
-    keys2() { T send-keys -t e2f "$@"; }
-    cmd2() { keys2 -l "$1"; keys2 Enter; sleep 0.1; }
+    start2
     wait2 'F1 help|1HELP'
     cmd2 ":page corr"
     wait2 '^─ CORR'
