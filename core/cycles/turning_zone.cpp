@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numbers>
 
 #include "core/geometry/geometry.hpp"
@@ -40,6 +41,7 @@ void full_circle(const V2& c, double r, std::vector<Elem>& out) {
 }  // namespace
 
 void Material::translate(const V2& allowance) {
+    f_index = {}, u_index = {};
     normal = false;
     t = allowance;
     U = F;
@@ -60,6 +62,7 @@ void Material::translate(const V2& allowance) {
 }
 
 void Material::offset(double allowance) {
+    f_index = {}, u_index = {};
     normal = true;
     er = std::max(0.0, allowance);
     U = F;
@@ -188,6 +191,39 @@ void YIndex::query(double y, std::vector<int>& out) const {
             k = n.right;
         }
     }
+}
+
+namespace {
+// The x where a vertical's meeting with the element can change whatever the
+// level: its ends and, on an arc, its extremes along x.
+void static_xs(const Elem& e, std::vector<double>& xs) {
+    xs.push_back(e.a.x());
+    xs.push_back(e.b.x());
+    if (e.arc)
+        for (double sg : {-1.0, 1.0})
+            if (on_arc(e, e.c + V2(sg * e.r(), 0))) xs.push_back(e.c.x() + sg * e.r());
+}
+}  // namespace
+
+void UIndex::build(const std::vector<Elem>& U) {
+    by_y.build(U, 10 * kTol);
+    ends_up.clear();
+    tops.clear();
+    x_lo.resize(U.size());
+    x_hi.resize(U.size());
+    for (size_t i = 0; i < U.size(); ++i) {
+        const Elem& e = U[i];
+        static_xs(e, ends_up);
+        // Every point of e lies within these (an arc within its circle's box).
+        const double r = e.arc ? e.r() : 0;
+        const double top = e.arc ? e.c.y() + r : std::max(e.a.y(), e.b.y());
+        x_lo[i] = (e.arc ? e.c.x() - r : std::min(e.a.x(), e.b.x())) - kUm;
+        x_hi[i] = (e.arc ? e.c.x() + r : std::max(e.a.x(), e.b.x())) + kUm;
+        tops.push_back({top + kUm, int(i)});
+    }
+    std::sort(ends_up.begin(), ends_up.end());
+    ends_down.assign(ends_up.rbegin(), ends_up.rend());
+    std::sort(tops.begin(), tops.end(), std::greater<>());
 }
 
 namespace {
@@ -347,18 +383,31 @@ std::vector<Interval> m_intervals(const Material& m, double Y, int d) {
     return out;
 }
 
+namespace {
+const UIndex& u_index_of(const Material& m) {
+    if (!m.u_index.built_for(m.U)) m.u_index.build(m.U);
+    return m.u_index;
+}
+}  // namespace
+
 std::vector<std::pair<double, double>> free_runs(const Material& m, double Y, double x0, double x1,
                                                  int d) {
     std::vector<std::pair<double, double>> runs;
     if ((x1 - x0) * d <= 0) return runs;
     std::vector<double> xs;
+    // Only the elements whose extent along y holds the line cross it (YIndex).
+    std::vector<int> near;
+    if (!m.f_index.built_for(m.F)) m.f_index.build(m.F, 10 * kTol);
+    m.f_index.query(Y, near);
     // Outside the part, meeting the profile means entering the part: the runs
     // end there whatever A says (A is only decided outside the part).
-    for (const Elem& e : m.F) cross_h(e, Y, xs);
+    for (int i : near) cross_h(m.F[size_t(i)], Y, xs);
     for (double x : xs)
         if ((x - x0) * d > kTol && (x1 - x) * d > 0) x1 = x;
     xs.clear();
-    for (const Elem& e : m.U) cross_h(e, Y, xs);
+    near.clear();
+    u_index_of(m).by_y.query(Y, near);
+    for (int i : near) cross_h(m.U[size_t(i)], Y, xs);
     std::vector<double> cuts{x0};
     for (double x : xs)
         if ((x - x0) * d > kTol && (x1 - x) * d > kTol) cuts.push_back(x);
@@ -391,10 +440,8 @@ std::vector<double> critical_xs(const Material& m, double y0, double y1, double 
     auto between = [&](double x) { return (x - x0) * d > kTol && (x1 - x) * d > kTol; };
     std::vector<double> cuts{x0, x1}, xs;
     for (const Elem& e : m.U) {
-        xs.assign({e.a.x(), e.b.x()});
-        if (e.arc)
-            for (double sg : {-1.0, 1.0})
-                if (on_arc(e, e.c + V2(sg * e.r(), 0))) xs.push_back(e.c.x() + sg * e.r());
+        xs.clear();
+        static_xs(e, xs);
         cross_h(e, y0, xs);
         if (y1 != y0) cross_h(e, y1, xs);
         for (double x : xs)
@@ -403,17 +450,94 @@ std::vector<double> critical_xs(const Material& m, double y0, double y1, double 
     std::sort(cuts.begin(), cuts.end(), [d](double a, double b) { return a * d < b * d; });
     return cuts;
 }
+
+// The elements of U that can hide a point of a pass between x0 and x1 from
+// above `lift`: those reaching above it whose extent along x meets the pass.
+// No other element has a point above lift at an x of the pass.
+std::vector<int> hiding(const UIndex& ix, double lift, double x0, double x1) {
+    const double lo = std::min(x0, x1), hi = std::max(x0, x1);
+    std::vector<int> ids;
+    for (const auto& [top, i] : ix.tops) {
+        if (top <= lift) break;
+        if (ix.x_hi[size_t(i)] >= lo && ix.x_lo[size_t(i)] <= hi) ids.push_back(i);
+    }
+    return ids;
+}
+
+// The cuts of critical_xs(m, lift, lift, x0, x1, d), walked along d from the
+// last one at or before u = x·d = `from`: the index's sorted ends merged with
+// the crossings of the level line, so that a pass sorts no more than these.
+class CutWalk {
+  public:
+    CutWalk(const Material& m, double lift, double x0, double x1, int d, double from)
+        : ends_(d > 0 ? m.u_index.ends_up : m.u_index.ends_down), x0_(x0), x1_(x1), d_(d) {
+        std::vector<int> near;
+        m.u_index.by_y.query(lift, near);
+        std::vector<double> xs;
+        for (int i : near) cross_h(m.U[size_t(i)], lift, xs);
+        for (double x : xs)
+            if (between(x)) cross_.push_back(x);
+        std::sort(cross_.begin(), cross_.end(), [d](double a, double b) { return a * d < b * d; });
+        start_ = x0;
+        auto after = [d](double u, double x) { return u < x * d; };
+        auto e = std::upper_bound(ends_.begin(), ends_.end(), from, after);
+        for (; e != ends_.begin() && (*(e - 1) - x0) * d > kTol; --e)
+            if (between(*(e - 1))) {
+                start_ = *(e - 1);
+                break;
+            }
+        for (double x : cross_)
+            if (x * d <= from && x * d > start_ * d) start_ = x;
+        i_ = size_t(std::upper_bound(ends_.begin(), ends_.end(), start_ * d, after) - ends_.begin());
+        j_ = size_t(std::upper_bound(cross_.begin(), cross_.end(), start_ * d, after) - cross_.begin());
+    }
+    double start() const { return start_; }
+    // The next cut along d, x1 last; false after x1.
+    bool next(double& x) {
+        if (done_) return false;
+        while (i_ < ends_.size() && (ends_[i_] - x0_) * d_ <= kTol) ++i_;
+        const bool end = i_ < ends_.size() && between(ends_[i_]), cross = j_ < cross_.size();
+        if (cross && (!end || cross_[j_] * d_ < ends_[i_] * d_))
+            x = cross_[j_++];
+        else if (end)
+            x = ends_[i_++];
+        else
+            x = x1_, done_ = true;
+        return true;
+    }
+
+  private:
+    bool between(double x) const { return (x - x0_) * d_ > kTol && (x1_ - x) * d_ > kTol; }
+    const std::vector<double>& ends_;
+    std::vector<double> cross_;
+    double x0_, x1_, start_ = 0;
+    int d_;
+    size_t i_ = 0, j_ = 0;
+    bool done_ = false;
+};
 }  // namespace
 
+// The vertical above a cut-free stretch of the line meets A when one of U's
+// elements has a point above the line there. Only the elements reaching
+// above it can (hiding), and not before the first of them along d: the walk
+// over the cuts starts at the last cut before it, and a pass above all of U
+// (half of a long G64's levels) walks none (issue 35 item 7: the walk over
+// every cut and every element was 76% of the g64_roughing benchmark).
 double first_hidden(const Material& m, double Y, double x0, double x1, int d) {
     if ((x1 - x0) * d <= kTol) return x1;
     const double lift = Y + kUm;  // a pass may run along A's upper edge itself
-    const std::vector<double> cuts = critical_xs(m, lift, lift, x0, x1, d);
-    for (size_t j = 0; j + 1 < cuts.size(); ++j) {
-        double mid = (cuts[j] + cuts[j + 1]) / 2;
-        if (std::fabs(cuts[j + 1] - cuts[j]) <= kTol) continue;
-        for (const Elem& e : m.U)
-            if (max_y_in(e, mid, mid) > lift) return cuts[j];
+    const UIndex& ix = u_index_of(m);
+    const std::vector<int> h = hiding(ix, lift, x0, x1);
+    if (h.empty()) return x1;
+    double from = kInf;  // along d, no point of h lies before it
+    for (int i : h) from = std::min(from, d > 0 ? ix.x_lo[size_t(i)] : -ix.x_hi[size_t(i)]);
+    CutWalk cuts(m, lift, x0, x1, d, from);
+    double a = cuts.start(), b = 0;
+    for (; cuts.next(b); a = b) {
+        if (std::fabs(b - a) <= kTol) continue;
+        const double mid = (a + b) / 2;
+        for (int i : h)
+            if (max_y_in(m.U[size_t(i)], mid, mid) > lift) return a;
     }
     return x1;
 }

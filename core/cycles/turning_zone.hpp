@@ -44,6 +44,20 @@ class YIndex {
     size_t n_ = 0;
 };
 
+// What the passes ask of U at every level, built once per U: the crossings
+// of a level line (by), the ends and extremes of U's elements along x, where
+// a vertical's meeting with A can change (sorted: ends_up along +x, ends_down
+// along -x), and which elements can hide a point of a pass from above (their
+// tops, falling, and their extents along x, all widened by 1 µm).
+struct UIndex {
+    void build(const std::vector<Elem>& U);
+    bool built_for(const std::vector<Elem>& U) const { return by_y.built_for(U); }
+    YIndex by_y;
+    std::vector<double> ends_up, ends_down;
+    std::vector<std::pair<double, int>> tops;  // (top, element), highest first
+    std::vector<double> x_lo, x_hi;
+};
+
 struct Material {
     std::vector<Elem> M;    // closed boundary of the material region (may be empty)
     std::vector<int> kind;  // per edge of M
@@ -62,6 +76,8 @@ struct Material {
     bool zero() const { return normal ? er < geom::kTol : t.norm() < geom::kTol; }
     bool in_M(const V2& q) const;  // inside M or on its boundary
     mutable YIndex m_index;        // of M, built by m_intervals when M is new
+    mutable YIndex f_index;        // of F, built by free_runs when F is new
+    mutable UIndex u_index;        // of U, built by free_runs and first_hidden when U is new
 };
 
 struct Interval {
