@@ -107,9 +107,11 @@ bool Material::in_A(const V2& q) const {
     // the intersections) leaves the translated profile itself outside.
     double eps = std::min(0.5, 100 * kTol / tn);
     Elem s = line(q - (1 - eps) * t, q);
+    std::vector<int> near;
+    f_idx().near(box(s, 0), near);  // the others cannot meet s
     std::vector<V2> pts;
-    for (const Elem& e : F) {
-        intersect(e, s, pts);
+    for (int i : near) {
+        intersect(F[size_t(i)], s, pts);
         if (!pts.empty()) return true;
     }
     return false;
@@ -120,7 +122,7 @@ bool Material::in_M(const V2& q) const {
     return on_loop(M, q) || winding(M, q) != 0;
 }
 
-void YIndex::build(const std::vector<Elem>& es, double pad) {
+void ExtentIndex::build(const std::vector<Elem>& es, double pad, int axis) {
     src_ = es.data();
     n_ = es.size();
     nodes_.clear();
@@ -128,8 +130,9 @@ void YIndex::build(const std::vector<Elem>& es, double pad) {
     hi_.resize(n_);
     for (size_t i = 0; i < n_; ++i) {
         const Elem& e = es[i];
-        double lo = std::min(e.a.y(), e.b.y()), hi = std::max(e.a.y(), e.b.y());
-        if (e.arc) lo = std::min(lo, e.c.y() - e.r()), hi = std::max(hi, e.c.y() + e.r());
+        const double a = e.a[axis], b = e.b[axis], c = e.c[axis];
+        double lo = std::min(a, b), hi = std::max(a, b);
+        if (e.arc) lo = std::min(lo, c - e.r()), hi = std::max(hi, c + e.r());
         lo_[i] = lo - pad;
         hi_[i] = hi + pad;
     }
@@ -140,7 +143,7 @@ void YIndex::build(const std::vector<Elem>& es, double pad) {
 
 // A node holds the elements across the median of the end points; each side
 // gets at most half of them, so the depth is logarithmic.
-int YIndex::make(std::vector<int>& ids) {
+int ExtentIndex::make(std::vector<int>& ids) {
     if (ids.empty()) return -1;
     std::vector<double> ends;
     ends.reserve(2 * ids.size());
@@ -174,7 +177,7 @@ int YIndex::make(std::vector<int>& ids) {
     return k;
 }
 
-void YIndex::query(double y, std::vector<int>& out) const {
+void ExtentIndex::query(double y, std::vector<int>& out) const {
     for (int k = nodes_.empty() ? -1 : 0; k >= 0;) {
         const Node& n = nodes_[size_t(k)];
         if (y < n.c) {
@@ -193,6 +196,30 @@ void YIndex::query(double y, std::vector<int>& out) const {
     }
 }
 
+// The elements of a node all hold its centre: below [lo, hi] the ones that
+// reach up to lo, above it the ones that reach down to hi, else all of them.
+void ExtentIndex::meeting(int k, double lo, double hi, std::vector<int>& out) const {
+    if (k < 0 || nodes_.empty()) return;
+    const Node& n = nodes_[size_t(k)];
+    if (hi < n.c) {
+        for (int i : n.by_lo) {
+            if (lo_[size_t(i)] > hi) break;
+            out.push_back(i);
+        }
+        return meeting(n.left, lo, hi, out);
+    }
+    if (lo > n.c) {
+        for (int i : n.by_hi) {
+            if (hi_[size_t(i)] < lo) break;
+            out.push_back(i);
+        }
+        return meeting(n.right, lo, hi, out);
+    }
+    out.insert(out.end(), n.by_lo.begin(), n.by_lo.end());
+    meeting(n.left, lo, hi, out);
+    meeting(n.right, lo, hi, out);
+}
+
 namespace {
 // The x where a vertical's meeting with the element can change whatever the
 // level: its ends and, on an arc, its extremes along x.
@@ -205,25 +232,42 @@ void static_xs(const Elem& e, std::vector<double>& xs) {
 }
 }  // namespace
 
-void UIndex::build(const std::vector<Elem>& U) {
-    by_y.build(U, 10 * kTol);
+void ElemIndex::build(const std::vector<Elem>& es) {
+    // Widened as the boxes: the elements they find hold every box that meets.
+    by_x.build(es, kUm, 0);
+    by_y.build(es, kUm, 1);
+    box.clear();
     ends_up.clear();
     tops.clear();
-    x_lo.resize(U.size());
-    x_hi.resize(U.size());
-    for (size_t i = 0; i < U.size(); ++i) {
-        const Elem& e = U[i];
-        static_xs(e, ends_up);
-        // Every point of e lies within these (an arc within its circle's box).
-        const double r = e.arc ? e.r() : 0;
-        const double top = e.arc ? e.c.y() + r : std::max(e.a.y(), e.b.y());
-        x_lo[i] = (e.arc ? e.c.x() - r : std::min(e.a.x(), e.b.x())) - kUm;
-        x_hi[i] = (e.arc ? e.c.x() + r : std::max(e.a.x(), e.b.x())) + kUm;
-        tops.push_back({top + kUm, int(i)});
+    for (size_t i = 0; i < es.size(); ++i) {
+        box.push_back(geom::box(es[i], kUm));
+        static_xs(es[i], ends_up);
+        tops.push_back({box.back().y1, int(i)});
     }
     std::sort(ends_up.begin(), ends_up.end());
     ends_down.assign(ends_up.rbegin(), ends_up.rend());
     std::sort(tops.begin(), tops.end(), std::greater<>());
+}
+
+void ElemIndex::near(const Box& b, std::vector<int>& out) const {
+    const size_t from = out.size();
+    if (b.x1 - b.x0 < b.y1 - b.y0)
+        by_x.query(b.x0, b.x1, out);
+    else
+        by_y.query(b.y0, b.y1, out);
+    out.erase(std::remove_if(out.begin() + ptrdiff_t(from), out.end(),
+                             [&](int i) { return !box[size_t(i)].meets(b); }),
+              out.end());
+}
+
+const ElemIndex& Material::f_idx() const {
+    if (!f_index.built_for(F)) f_index.build(F);
+    return f_index;
+}
+
+const ElemIndex& Material::u_idx() const {
+    if (!u_index.built_for(U)) u_index.build(U);
+    return u_index;
 }
 
 namespace {
@@ -356,7 +400,7 @@ class InsideSweep {
 }  // namespace
 
 std::vector<Interval> m_intervals(const Material& m, double Y, int d) {
-    // Only the elements of M near the line matter (YIndex): the crossings, the
+    // Only the elements of M near the line matter (ExtentIndex): the crossings, the
     // boundary within kTol, and the winding numbers by the crossings of a ray.
     if (!m.m_index.built_for(m.M)) m.m_index.build(m.M, 10 * kTol);
     std::vector<int> near;
@@ -383,22 +427,14 @@ std::vector<Interval> m_intervals(const Material& m, double Y, int d) {
     return out;
 }
 
-namespace {
-const UIndex& u_index_of(const Material& m) {
-    if (!m.u_index.built_for(m.U)) m.u_index.build(m.U);
-    return m.u_index;
-}
-}  // namespace
-
 std::vector<std::pair<double, double>> free_runs(const Material& m, double Y, double x0, double x1,
                                                  int d) {
     std::vector<std::pair<double, double>> runs;
     if ((x1 - x0) * d <= 0) return runs;
     std::vector<double> xs;
-    // Only the elements whose extent along y holds the line cross it (YIndex).
+    // Only the elements whose extent along y holds the line cross it (ExtentIndex).
     std::vector<int> near;
-    if (!m.f_index.built_for(m.F)) m.f_index.build(m.F, 10 * kTol);
-    m.f_index.query(Y, near);
+    m.f_idx().by_y.query(Y, near);
     // Outside the part, meeting the profile means entering the part: the runs
     // end there whatever A says (A is only decided outside the part).
     for (int i : near) cross_h(m.F[size_t(i)], Y, xs);
@@ -406,7 +442,7 @@ std::vector<std::pair<double, double>> free_runs(const Material& m, double Y, do
         if ((x - x0) * d > kTol && (x1 - x) * d > 0) x1 = x;
     xs.clear();
     near.clear();
-    u_index_of(m).by_y.query(Y, near);
+    m.u_idx().by_y.query(Y, near);
     for (int i : near) cross_h(m.U[size_t(i)], Y, xs);
     std::vector<double> cuts{x0};
     for (double x : xs)
@@ -454,12 +490,12 @@ std::vector<double> critical_xs(const Material& m, double y0, double y1, double 
 // The elements of U that can hide a point of a pass between x0 and x1 from
 // above `lift`: those reaching above it whose extent along x meets the pass.
 // No other element has a point above lift at an x of the pass.
-std::vector<int> hiding(const UIndex& ix, double lift, double x0, double x1) {
+std::vector<int> hiding(const ElemIndex& ix, double lift, double x0, double x1) {
     const double lo = std::min(x0, x1), hi = std::max(x0, x1);
     std::vector<int> ids;
     for (const auto& [top, i] : ix.tops) {
         if (top <= lift) break;
-        if (ix.x_hi[size_t(i)] >= lo && ix.x_lo[size_t(i)] <= hi) ids.push_back(i);
+        if (ix.box[size_t(i)].x1 >= lo && ix.box[size_t(i)].x0 <= hi) ids.push_back(i);
     }
     return ids;
 }
@@ -488,8 +524,10 @@ class CutWalk {
             }
         for (double x : cross_)
             if (x * d <= from && x * d > start_ * d) start_ = x;
-        i_ = size_t(std::upper_bound(ends_.begin(), ends_.end(), start_ * d, after) - ends_.begin());
-        j_ = size_t(std::upper_bound(cross_.begin(), cross_.end(), start_ * d, after) - cross_.begin());
+        i_ =
+            size_t(std::upper_bound(ends_.begin(), ends_.end(), start_ * d, after) - ends_.begin());
+        j_ = size_t(std::upper_bound(cross_.begin(), cross_.end(), start_ * d, after) -
+                    cross_.begin());
     }
     double start() const { return start_; }
     // The next cut along d, x1 last; false after x1.
@@ -526,11 +564,11 @@ class CutWalk {
 double first_hidden(const Material& m, double Y, double x0, double x1, int d) {
     if ((x1 - x0) * d <= kTol) return x1;
     const double lift = Y + kUm;  // a pass may run along A's upper edge itself
-    const UIndex& ix = u_index_of(m);
+    const ElemIndex& ix = m.u_idx();
     const std::vector<int> h = hiding(ix, lift, x0, x1);
     if (h.empty()) return x1;
     double from = kInf;  // along d, no point of h lies before it
-    for (int i : h) from = std::min(from, d > 0 ? ix.x_lo[size_t(i)] : -ix.x_hi[size_t(i)]);
+    for (int i : h) from = std::min(from, d > 0 ? ix.box[size_t(i)].x0 : -ix.box[size_t(i)].x1);
     CutWalk cuts(m, lift, x0, x1, d, from);
     double a = cuts.start(), b = 0;
     for (; cuts.next(b); a = b) {
@@ -561,6 +599,13 @@ bool seg_clear(const Material& m, const V2& p, const V2& q) {
     double len = (q - p).norm();
     if (len < kTol) return !m.in_A(p);
     Elem s = line(p, q);
+    // Only the elements whose boxes meet the segment's can meet it, or hold
+    // one of its points within kTol (issue 35 item 7: G64's last pass asks
+    // thousands of segments).
+    const Box sb = box(s, 0);
+    std::vector<int> fs, us;
+    m.f_idx().near(sb, fs);
+    m.u_idx().near(sb, us);
     // The straight elements of F that the segment runs along: a tool sliding
     // down a square wall's face touches the part there without entering it,
     // and meets the wall's ends on the way (issue 19: G65 grooves whose start
@@ -570,9 +615,11 @@ bool seg_clear(const Material& m, const V2& p, const V2& q) {
         const V2 d = e.b - e.a;
         return std::fabs(geometry::cross(d, x - e.a)) <= kTol * d.norm();
     };
-    for (const Elem& e : m.F)
+    for (int i : fs) {
+        const Elem& e = m.F[size_t(i)];
         if (!e.arc && (e.b - e.a).norm() > kTol && on_line(e, p) && on_line(e, q))
             along.push_back(&e);
+    }
     auto on_wall = [&](const V2& x) {
         for (const Elem* e : along)
             if (dist(*e, x) <= kTol) return true;
@@ -590,18 +637,18 @@ bool seg_clear(const Material& m, const V2& p, const V2& q) {
     };
     std::vector<double> ts{0, 1};
     std::vector<V2> pts;
-    for (const Elem& e : m.F) {
+    for (int i : fs) {
         pts.clear();
-        intersect(e, s, pts);
+        intersect(m.F[size_t(i)], s, pts);
         for (const V2& x : pts) {
             double t = (x - p).dot(q - p) / (len * len);
             if (t * len > kTol && (1 - t) * len > kTol && !on_wall(x))
                 return false;  // into the part
         }
     }
-    for (const Elem& e : m.U) {
+    for (int i : us) {
         pts.clear();
-        intersect(e, s, pts);
+        intersect(m.U[size_t(i)], s, pts);
         for (const V2& x : pts)
             if (!m.zero() || !on_wall(x)) ts.push_back((x - p).dot(q - p) / (len * len));
     }
