@@ -614,6 +614,27 @@ std::vector<Elem> part_loop(const std::vector<Elem>& F) {
     return loop;
 }
 
+namespace {
+// The straight elements of F among `near` that the segment p-q runs along: a
+// tool sliding down a square wall's face touches the part there without
+// entering it, and meets the wall's ends on the way (issue 19: G65 grooves
+// whose start lies beyond a wall that takes no allowance).
+std::vector<const Elem*> walls_along(const Material& m, const std::vector<int>& near, const V2& p,
+                                     const V2& q) {
+    auto on_line = [](const Elem& e, const V2& x) {
+        const V2 d = e.b - e.a;
+        return std::fabs(geometry::cross(d, x - e.a)) <= kTol * d.norm();
+    };
+    std::vector<const Elem*> along;
+    for (int i : near) {
+        const Elem& e = m.F[size_t(i)];
+        if (!e.arc && (e.b - e.a).norm() > kTol && on_line(e, p) && on_line(e, q))
+            along.push_back(&e);
+    }
+    return along;
+}
+}  // namespace
+
 bool seg_clear(const Material& m, const V2& p, const V2& q) {
     double len = (q - p).norm();
     if (len < kTol) return !m.in_A(p);
@@ -625,20 +646,7 @@ bool seg_clear(const Material& m, const V2& p, const V2& q) {
     std::vector<int> fs, us;
     m.f_idx().near(sb, fs);
     m.u_idx().near(sb, us);
-    // The straight elements of F that the segment runs along: a tool sliding
-    // down a square wall's face touches the part there without entering it,
-    // and meets the wall's ends on the way (issue 19: G65 grooves whose start
-    // lies beyond a wall that takes no allowance).
-    std::vector<const Elem*> along;
-    auto on_line = [](const Elem& e, const V2& x) {
-        const V2 d = e.b - e.a;
-        return std::fabs(geometry::cross(d, x - e.a)) <= kTol * d.norm();
-    };
-    for (int i : fs) {
-        const Elem& e = m.F[size_t(i)];
-        if (!e.arc && (e.b - e.a).norm() > kTol && on_line(e, p) && on_line(e, q))
-            along.push_back(&e);
-    }
+    const std::vector<const Elem*> along = walls_along(m, fs, p, q);
     auto on_wall = [&](const V2& x) {
         for (const Elem* e : along)
             if (dist(*e, x) <= kTol) return true;
