@@ -289,6 +289,15 @@ double max_y_in(const Elem& e, double x0, double x1) {
     return m;
 }
 
+Box box(const Elem& e, double pad) {
+    if (e.arc) {
+        const double r = e.r();
+        return {e.c.x() - r - pad, e.c.x() + r + pad, e.c.y() - r - pad, e.c.y() + r + pad};
+    }
+    return {std::min(e.a.x(), e.b.x()) - pad, std::max(e.a.x(), e.b.x()) + pad,
+            std::min(e.a.y(), e.b.y()) - pad, std::max(e.a.y(), e.b.y()) + pad};
+}
+
 double length(const Elem& e) {
     return e.arc ? e.r() * std::fabs(e.sweep) : (e.b - e.a).norm();
 }
@@ -341,29 +350,17 @@ bool self_intersects(const std::vector<Elem>& loop) {
     const size_t n = loop.size();
     // Only elements whose boxes meet can meet: a sweep along x over the boxes
     // (a rough stock may have thousands of points).
-    struct Box {
-        double x0, x1, y0, y1;
-    };
-    constexpr double pad = 1e-6;
-    std::vector<Box> box(n);
-    for (size_t i = 0; i < n; ++i) {
-        const Elem& e = loop[i];
-        double r = e.arc ? e.r() : 0;
-        V2 lo = e.arc ? V2(e.c.x() - r, e.c.y() - r)
-                      : V2(std::min(e.a.x(), e.b.x()), std::min(e.a.y(), e.b.y()));
-        V2 hi = e.arc ? V2(e.c.x() + r, e.c.y() + r)
-                      : V2(std::max(e.a.x(), e.b.x()), std::max(e.a.y(), e.b.y()));
-        box[i] = {lo.x() - pad, hi.x() + pad, lo.y() - pad, hi.y() + pad};
-    }
+    std::vector<Box> boxes(n);
+    for (size_t i = 0; i < n; ++i) boxes[i] = box(loop[i], kUm);
     std::vector<size_t> order(n);
     for (size_t i = 0; i < n; ++i) order[i] = i;
     std::sort(order.begin(), order.end(),
-              [&](size_t a, size_t b) { return box[a].x0 < box[b].x0; });
+              [&](size_t a, size_t b) { return boxes[a].x0 < boxes[b].x0; });
     std::vector<V2> pts;
     for (size_t oi = 0; oi < n; ++oi) {
-        for (size_t oj = oi + 1; oj < n && box[order[oj]].x0 <= box[order[oi]].x1; ++oj) {
+        for (size_t oj = oi + 1; oj < n && boxes[order[oj]].x0 <= boxes[order[oi]].x1; ++oj) {
             size_t i = std::min(order[oi], order[oj]), j = std::max(order[oi], order[oj]);
-            if (box[i].y0 > box[j].y1 || box[j].y0 > box[i].y1) continue;
+            if (boxes[i].y0 > boxes[j].y1 || boxes[j].y0 > boxes[i].y1) continue;
             bool next = j == i + 1, wrap = i == 0 && j == n - 1;
             if (next || wrap) {
                 if (n > 2 && folds(loop[i], loop[j], next ? loop[i].b : loop[i].a)) return true;

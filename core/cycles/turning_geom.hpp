@@ -47,6 +47,14 @@ double max_y(const Elem& e);
 // when e has no point there.
 double min_y_in(const Elem& e, double x0, double x1);
 double max_y_in(const Elem& e, double x0, double x1);
+// The box of e widened by pad (an arc's is its circle's); two elements whose
+// boxes widened by 1 µm are apart do not intersect: intersect's points lie
+// within kTol of both, or a rounding of that.
+struct Box {
+    double x0, x1, y0, y1;
+    bool meets(const Box& o) const { return x0 <= o.x1 && o.x0 <= x1 && y0 <= o.y1 && o.y0 <= y1; }
+};
+Box box(const Elem& e, double pad);
 double length(const Elem& e);
 V2 midpoint(const Elem& e);
 V2 point_at(const Elem& e, double t);  // the point at t in [0, 1] along e

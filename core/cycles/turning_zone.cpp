@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numbers>
 
 #include "core/geometry/geometry.hpp"
@@ -40,6 +41,7 @@ void full_circle(const V2& c, double r, std::vector<Elem>& out) {
 }  // namespace
 
 void Material::translate(const V2& allowance) {
+    f_index = {}, u_index = {};
     normal = false;
     t = allowance;
     U = F;
@@ -60,6 +62,7 @@ void Material::translate(const V2& allowance) {
 }
 
 void Material::offset(double allowance) {
+    f_index = {}, u_index = {};
     normal = true;
     er = std::max(0.0, allowance);
     U = F;
@@ -104,20 +107,17 @@ bool Material::in_A(const V2& q) const {
     // the intersections) leaves the translated profile itself outside.
     double eps = std::min(0.5, 100 * kTol / tn);
     Elem s = line(q - (1 - eps) * t, q);
+    std::vector<int> near;
+    f_idx().near(box(s, 0), near);  // the others cannot meet s
     std::vector<V2> pts;
-    for (const Elem& e : F) {
-        intersect(e, s, pts);
+    for (int i : near) {
+        intersect(F[size_t(i)], s, pts);
         if (!pts.empty()) return true;
     }
     return false;
 }
 
-bool Material::in_M(const V2& q) const {
-    if (M.empty()) return false;
-    return on_loop(M, q) || winding(M, q) != 0;
-}
-
-void YIndex::build(const std::vector<Elem>& es, double pad) {
+void ExtentIndex::build(const std::vector<Elem>& es, double pad, int axis) {
     src_ = es.data();
     n_ = es.size();
     nodes_.clear();
@@ -125,8 +125,9 @@ void YIndex::build(const std::vector<Elem>& es, double pad) {
     hi_.resize(n_);
     for (size_t i = 0; i < n_; ++i) {
         const Elem& e = es[i];
-        double lo = std::min(e.a.y(), e.b.y()), hi = std::max(e.a.y(), e.b.y());
-        if (e.arc) lo = std::min(lo, e.c.y() - e.r()), hi = std::max(hi, e.c.y() + e.r());
+        const double a = e.a[axis], b = e.b[axis], c = e.c[axis];
+        double lo = std::min(a, b), hi = std::max(a, b);
+        if (e.arc) lo = std::min(lo, c - e.r()), hi = std::max(hi, c + e.r());
         lo_[i] = lo - pad;
         hi_[i] = hi + pad;
     }
@@ -137,7 +138,7 @@ void YIndex::build(const std::vector<Elem>& es, double pad) {
 
 // A node holds the elements across the median of the end points; each side
 // gets at most half of them, so the depth is logarithmic.
-int YIndex::make(std::vector<int>& ids) {
+int ExtentIndex::make(std::vector<int>& ids) {
     if (ids.empty()) return -1;
     std::vector<double> ends;
     ends.reserve(2 * ids.size());
@@ -171,7 +172,7 @@ int YIndex::make(std::vector<int>& ids) {
     return k;
 }
 
-void YIndex::query(double y, std::vector<int>& out) const {
+void ExtentIndex::query(double y, std::vector<int>& out) const {
     for (int k = nodes_.empty() ? -1 : 0; k >= 0;) {
         const Node& n = nodes_[size_t(k)];
         if (y < n.c) {
@@ -188,6 +189,80 @@ void YIndex::query(double y, std::vector<int>& out) const {
             k = n.right;
         }
     }
+}
+
+// The elements of a node all hold its centre: below [lo, hi] the ones that
+// reach up to lo, above it the ones that reach down to hi, else all of them.
+void ExtentIndex::meeting(int k, double lo, double hi, std::vector<int>& out) const {
+    if (k < 0 || nodes_.empty()) return;
+    const Node& n = nodes_[size_t(k)];
+    if (hi < n.c) {
+        for (int i : n.by_lo) {
+            if (lo_[size_t(i)] > hi) break;
+            out.push_back(i);
+        }
+        return meeting(n.left, lo, hi, out);
+    }
+    if (lo > n.c) {
+        for (int i : n.by_hi) {
+            if (hi_[size_t(i)] < lo) break;
+            out.push_back(i);
+        }
+        return meeting(n.right, lo, hi, out);
+    }
+    out.insert(out.end(), n.by_lo.begin(), n.by_lo.end());
+    meeting(n.left, lo, hi, out);
+    meeting(n.right, lo, hi, out);
+}
+
+namespace {
+// The x where a vertical's meeting with the element can change whatever the
+// level: its ends and, on an arc, its extremes along x.
+void static_xs(const Elem& e, std::vector<double>& xs) {
+    xs.push_back(e.a.x());
+    xs.push_back(e.b.x());
+    if (e.arc)
+        for (double sg : {-1.0, 1.0})
+            if (on_arc(e, e.c + V2(sg * e.r(), 0))) xs.push_back(e.c.x() + sg * e.r());
+}
+}  // namespace
+
+void ElemIndex::build(const std::vector<Elem>& es) {
+    // Widened as the boxes: the elements they find hold every box that meets.
+    by_x.build(es, kUm, 0);
+    by_y.build(es, kUm, 1);
+    box.clear();
+    ends_up.clear();
+    tops.clear();
+    for (size_t i = 0; i < es.size(); ++i) {
+        box.push_back(geom::box(es[i], kUm));
+        static_xs(es[i], ends_up);
+        tops.push_back({box.back().y1, int(i)});
+    }
+    std::sort(ends_up.begin(), ends_up.end());
+    ends_down.assign(ends_up.rbegin(), ends_up.rend());
+    std::sort(tops.begin(), tops.end(), std::greater<>());
+}
+
+void ElemIndex::near(const Box& b, std::vector<int>& out) const {
+    const size_t from = out.size();
+    if (b.x1 - b.x0 < b.y1 - b.y0)
+        by_x.query(b.x0, b.x1, out);
+    else
+        by_y.query(b.y0, b.y1, out);
+    out.erase(std::remove_if(out.begin() + ptrdiff_t(from), out.end(),
+                             [&](int i) { return !box[size_t(i)].meets(b); }),
+              out.end());
+}
+
+const ElemIndex& Material::f_idx() const {
+    if (!f_index.built_for(F)) f_index.build(F);
+    return f_index;
+}
+
+const ElemIndex& Material::u_idx() const {
+    if (!u_index.built_for(U)) u_index.build(U);
+    return u_index;
 }
 
 namespace {
@@ -227,6 +302,30 @@ void ray_crossings(const Elem& e, double Y, std::vector<std::pair<double, int>>&
     }
 }
 
+}  // namespace
+
+// On M's boundary, or a winding number other than 0, which the crossings of
+// the ray from q along +x give, as m_intervals finds them: only the elements
+// of M whose extent along y holds q can be within kTol of it or cross the ray
+// (m_index). (The winding number's angle about q from every element of M,
+// asked at every sample of G64's last pass, was a sixth of the cycle's work.)
+bool Material::in_M(const V2& q) const {
+    if (M.empty()) return false;
+    if (!m_index.built_for(M)) m_index.build(M, 10 * kTol);
+    std::vector<int> near;
+    m_index.query(q.y(), near);
+    std::vector<std::pair<double, int>> ray;
+    for (int i : near) {
+        if (dist(M[size_t(i)], q) <= kTol) return true;
+        ray_crossings(M[size_t(i)], q.y(), ray);
+    }
+    int w = 0;
+    for (const auto& [x, s] : ray)
+        if (x > q.x()) w += s;
+    return w != 0;
+}
+
+namespace {
 // A point where the line meets M, with the kinds of the edges met there.
 struct Cut {
     double x;
@@ -320,7 +419,7 @@ class InsideSweep {
 }  // namespace
 
 std::vector<Interval> m_intervals(const Material& m, double Y, int d) {
-    // Only the elements of M near the line matter (YIndex): the crossings, the
+    // Only the elements of M near the line matter (ExtentIndex): the crossings, the
     // boundary within kTol, and the winding numbers by the crossings of a ray.
     if (!m.m_index.built_for(m.M)) m.m_index.build(m.M, 10 * kTol);
     std::vector<int> near;
@@ -352,13 +451,18 @@ std::vector<std::pair<double, double>> free_runs(const Material& m, double Y, do
     std::vector<std::pair<double, double>> runs;
     if ((x1 - x0) * d <= 0) return runs;
     std::vector<double> xs;
+    // Only the elements whose extent along y holds the line cross it (ExtentIndex).
+    std::vector<int> near;
+    m.f_idx().by_y.query(Y, near);
     // Outside the part, meeting the profile means entering the part: the runs
     // end there whatever A says (A is only decided outside the part).
-    for (const Elem& e : m.F) cross_h(e, Y, xs);
+    for (int i : near) cross_h(m.F[size_t(i)], Y, xs);
     for (double x : xs)
         if ((x - x0) * d > kTol && (x1 - x) * d > 0) x1 = x;
     xs.clear();
-    for (const Elem& e : m.U) cross_h(e, Y, xs);
+    near.clear();
+    m.u_idx().by_y.query(Y, near);
+    for (int i : near) cross_h(m.U[size_t(i)], Y, xs);
     std::vector<double> cuts{x0};
     for (double x : xs)
         if ((x - x0) * d > kTol && (x1 - x) * d > kTol) cuts.push_back(x);
@@ -391,10 +495,8 @@ std::vector<double> critical_xs(const Material& m, double y0, double y1, double 
     auto between = [&](double x) { return (x - x0) * d > kTol && (x1 - x) * d > kTol; };
     std::vector<double> cuts{x0, x1}, xs;
     for (const Elem& e : m.U) {
-        xs.assign({e.a.x(), e.b.x()});
-        if (e.arc)
-            for (double sg : {-1.0, 1.0})
-                if (on_arc(e, e.c + V2(sg * e.r(), 0))) xs.push_back(e.c.x() + sg * e.r());
+        xs.clear();
+        static_xs(e, xs);
         cross_h(e, y0, xs);
         if (y1 != y0) cross_h(e, y1, xs);
         for (double x : xs)
@@ -403,17 +505,96 @@ std::vector<double> critical_xs(const Material& m, double y0, double y1, double 
     std::sort(cuts.begin(), cuts.end(), [d](double a, double b) { return a * d < b * d; });
     return cuts;
 }
+
+// The elements of U that can hide a point of a pass between x0 and x1 from
+// above `lift`: those reaching above it whose extent along x meets the pass.
+// No other element has a point above lift at an x of the pass.
+std::vector<int> hiding(const ElemIndex& ix, double lift, double x0, double x1) {
+    const double lo = std::min(x0, x1), hi = std::max(x0, x1);
+    std::vector<int> ids;
+    for (const auto& [top, i] : ix.tops) {
+        if (top <= lift) break;
+        if (ix.box[size_t(i)].x1 >= lo && ix.box[size_t(i)].x0 <= hi) ids.push_back(i);
+    }
+    return ids;
+}
+
+// The cuts of critical_xs(m, lift, lift, x0, x1, d), walked along d from the
+// last one at or before u = x·d = `from`: the index's sorted ends merged with
+// the crossings of the level line, so that a pass sorts no more than these.
+class CutWalk {
+  public:
+    CutWalk(const Material& m, double lift, double x0, double x1, int d, double from)
+        : ends_(d > 0 ? m.u_index.ends_up : m.u_index.ends_down), x0_(x0), x1_(x1), d_(d) {
+        std::vector<int> near;
+        m.u_index.by_y.query(lift, near);
+        std::vector<double> xs;
+        for (int i : near) cross_h(m.U[size_t(i)], lift, xs);
+        for (double x : xs)
+            if (between(x)) cross_.push_back(x);
+        std::sort(cross_.begin(), cross_.end(), [d](double a, double b) { return a * d < b * d; });
+        start_ = x0;
+        auto after = [d](double u, double x) { return u < x * d; };
+        auto e = std::upper_bound(ends_.begin(), ends_.end(), from, after);
+        for (; e != ends_.begin() && (*(e - 1) - x0) * d > kTol; --e)
+            if (between(*(e - 1))) {
+                start_ = *(e - 1);
+                break;
+            }
+        for (double x : cross_)
+            if (x * d <= from && x * d > start_ * d) start_ = x;
+        i_ =
+            size_t(std::upper_bound(ends_.begin(), ends_.end(), start_ * d, after) - ends_.begin());
+        j_ = size_t(std::upper_bound(cross_.begin(), cross_.end(), start_ * d, after) -
+                    cross_.begin());
+    }
+    double start() const { return start_; }
+    // The next cut along d, x1 last; false after x1.
+    bool next(double& x) {
+        if (done_) return false;
+        while (i_ < ends_.size() && (ends_[i_] - x0_) * d_ <= kTol) ++i_;
+        const bool end = i_ < ends_.size() && between(ends_[i_]), cross = j_ < cross_.size();
+        if (cross && (!end || cross_[j_] * d_ < ends_[i_] * d_))
+            x = cross_[j_++];
+        else if (end)
+            x = ends_[i_++];
+        else
+            x = x1_, done_ = true;
+        return true;
+    }
+
+  private:
+    bool between(double x) const { return (x - x0_) * d_ > kTol && (x1_ - x) * d_ > kTol; }
+    const std::vector<double>& ends_;
+    std::vector<double> cross_;
+    double x0_, x1_, start_ = 0;
+    int d_;
+    size_t i_ = 0, j_ = 0;
+    bool done_ = false;
+};
 }  // namespace
 
+// The vertical above a cut-free stretch of the line meets A when one of U's
+// elements has a point above the line there. Only the elements reaching
+// above it can (hiding), and not before the first of them along d: the walk
+// over the cuts starts at the last cut before it, and a pass above all of U
+// (half of a long G64's levels) walks none (issue 35 item 7: the walk over
+// every cut and every element was 76% of the g64_roughing benchmark).
 double first_hidden(const Material& m, double Y, double x0, double x1, int d) {
     if ((x1 - x0) * d <= kTol) return x1;
     const double lift = Y + kUm;  // a pass may run along A's upper edge itself
-    const std::vector<double> cuts = critical_xs(m, lift, lift, x0, x1, d);
-    for (size_t j = 0; j + 1 < cuts.size(); ++j) {
-        double mid = (cuts[j] + cuts[j + 1]) / 2;
-        if (std::fabs(cuts[j + 1] - cuts[j]) <= kTol) continue;
-        for (const Elem& e : m.U)
-            if (max_y_in(e, mid, mid) > lift) return cuts[j];
+    const ElemIndex& ix = m.u_idx();
+    const std::vector<int> h = hiding(ix, lift, x0, x1);
+    if (h.empty()) return x1;
+    double from = kInf;  // along d, no point of h lies before it
+    for (int i : h) from = std::min(from, d > 0 ? ix.box[size_t(i)].x0 : -ix.box[size_t(i)].x1);
+    CutWalk cuts(m, lift, x0, x1, d, from);
+    double a = cuts.start(), b = 0;
+    for (; cuts.next(b); a = b) {
+        if (std::fabs(b - a) <= kTol) continue;
+        const double mid = (a + b) / 2;
+        for (int i : h)
+            if (max_y_in(m.U[size_t(i)], mid, mid) > lift) return a;
     }
     return x1;
 }
@@ -433,22 +614,39 @@ std::vector<Elem> part_loop(const std::vector<Elem>& F) {
     return loop;
 }
 
-bool seg_clear(const Material& m, const V2& p, const V2& q) {
-    double len = (q - p).norm();
-    if (len < kTol) return !m.in_A(p);
-    Elem s = line(p, q);
-    // The straight elements of F that the segment runs along: a tool sliding
-    // down a square wall's face touches the part there without entering it,
-    // and meets the wall's ends on the way (issue 19: G65 grooves whose start
-    // lies beyond a wall that takes no allowance).
-    std::vector<const Elem*> along;
+namespace {
+// The straight elements of F among `near` that the segment p-q runs along: a
+// tool sliding down a square wall's face touches the part there without
+// entering it, and meets the wall's ends on the way (issue 19: G65 grooves
+// whose start lies beyond a wall that takes no allowance).
+std::vector<const Elem*> walls_along(const Material& m, const std::vector<int>& near, const V2& p,
+                                     const V2& q) {
     auto on_line = [](const Elem& e, const V2& x) {
         const V2 d = e.b - e.a;
         return std::fabs(geometry::cross(d, x - e.a)) <= kTol * d.norm();
     };
-    for (const Elem& e : m.F)
+    std::vector<const Elem*> along;
+    for (int i : near) {
+        const Elem& e = m.F[size_t(i)];
         if (!e.arc && (e.b - e.a).norm() > kTol && on_line(e, p) && on_line(e, q))
             along.push_back(&e);
+    }
+    return along;
+}
+}  // namespace
+
+bool seg_clear(const Material& m, const V2& p, const V2& q) {
+    double len = (q - p).norm();
+    if (len < kTol) return !m.in_A(p);
+    Elem s = line(p, q);
+    // Only the elements whose boxes meet the segment's can meet it, or hold
+    // one of its points within kTol (issue 35 item 7: G64's last pass asks
+    // thousands of segments).
+    const Box sb = box(s, 0);
+    std::vector<int> fs, us;
+    m.f_idx().near(sb, fs);
+    m.u_idx().near(sb, us);
+    const std::vector<const Elem*> along = walls_along(m, fs, p, q);
     auto on_wall = [&](const V2& x) {
         for (const Elem* e : along)
             if (dist(*e, x) <= kTol) return true;
@@ -466,18 +664,18 @@ bool seg_clear(const Material& m, const V2& p, const V2& q) {
     };
     std::vector<double> ts{0, 1};
     std::vector<V2> pts;
-    for (const Elem& e : m.F) {
+    for (int i : fs) {
         pts.clear();
-        intersect(e, s, pts);
+        intersect(m.F[size_t(i)], s, pts);
         for (const V2& x : pts) {
             double t = (x - p).dot(q - p) / (len * len);
             if (t * len > kTol && (1 - t) * len > kTol && !on_wall(x))
                 return false;  // into the part
         }
     }
-    for (const Elem& e : m.U) {
+    for (int i : us) {
         pts.clear();
-        intersect(e, s, pts);
+        intersect(m.U[size_t(i)], s, pts);
         for (const V2& x : pts)
             if (!m.zero() || !on_wall(x)) ts.push_back((x - p).dot(q - p) / (len * len));
     }

@@ -19,17 +19,20 @@ using geom::Frame;
 // Kinds of the edges of M.
 enum Kind { kStock = 0, kClosing = 1, kProfile = 2 };
 
-// The elements of a loop by their extent along y: the ones a level line can
-// meet. A centred interval tree: a G64 on a stock of thousands of points asks
-// hundreds of thousands of level lines, each meeting a few elements.
-class YIndex {
+// The elements of a loop by their extent along y (or x): the ones a level
+// line can meet. A centred interval tree: a G64 on a stock of thousands of
+// points asks hundreds of thousands of level lines, each meeting a few
+// elements.
+class ExtentIndex {
   public:
-    void build(const std::vector<Elem>& es, double pad);
+    void build(const std::vector<Elem>& es, double pad, int axis = 1);
     bool built_for(const std::vector<Elem>& es) const {
         return src_ == es.data() && n_ == es.size();
     }
     // Appends the elements whose extent, widened by the pad, holds y.
     void query(double y, std::vector<int>& out) const;
+    // Appends the elements whose extent, widened by the pad, meets [lo, hi].
+    void query(double lo, double hi, std::vector<int>& out) const { meeting(0, lo, hi, out); }
 
   private:
     struct Node {
@@ -38,10 +41,28 @@ class YIndex {
         std::vector<int> by_lo, by_hi;  // the elements holding c, by rising low / falling high end
     };
     int make(std::vector<int>& ids);
+    void meeting(int k, double lo, double hi, std::vector<int>& out) const;
     std::vector<Node> nodes_;
     std::vector<double> lo_, hi_;
     const Elem* src_ = nullptr;
     size_t n_ = 0;
+};
+
+// What the passes ask of F or U at every level, built once per list: the
+// crossings of a level line (by_y), the boxes of its elements widened by
+// 1 µm (the segments that can meet them: by_x, by_y), the ends and extremes of its
+// elements along x, where a vertical's meeting with them can change (sorted:
+// ends_up along +x, ends_down along -x), and their tops (widened likewise),
+// highest first: which can hide a point of a pass from above.
+struct ElemIndex {
+    void build(const std::vector<Elem>& es);
+    bool built_for(const std::vector<Elem>& es) const { return by_y.built_for(es); }
+    // Appends the elements whose boxes meet b.
+    void near(const geom::Box& b, std::vector<int>& out) const;
+    ExtentIndex by_x, by_y;
+    std::vector<geom::Box> box;
+    std::vector<double> ends_up, ends_down;
+    std::vector<std::pair<double, int>> tops;  // (top, element)
 };
 
 struct Material {
@@ -61,7 +82,11 @@ struct Material {
     // Without allowance A is F itself: a pass stops where it meets F.
     bool zero() const { return normal ? er < geom::kTol : t.norm() < geom::kTol; }
     bool in_M(const V2& q) const;  // inside M or on its boundary
-    mutable YIndex m_index;        // of M, built by m_intervals when M is new
+    mutable ExtentIndex m_index;   // of M, built by m_intervals when M is new
+    // Of F and of U, built when first asked after translate or offset.
+    mutable ElemIndex f_index, u_index;
+    const ElemIndex& f_idx() const;
+    const ElemIndex& u_idx() const;
 };
 
 struct Interval {
