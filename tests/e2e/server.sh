@@ -20,7 +20,11 @@ schema="e2e_$$_$case"
 psql "$PUPITRE_TEST_PG" -qc "CREATE SCHEMA $schema" >/dev/null || exit 1
 export PUPITRE_DB="$PUPITRE_TEST_PG options='-csearch_path=$schema'"
 sql() { psql "$PUPITRE_TEST_PG" -qtAc "SET search_path = $schema; $1"; }
-pg_ctl_() { ${PUPITRE_TEST_PG_AS:-} $PUPITRE_TEST_PG_CTL "$@" >/dev/null 2>&1; }
+# The server started here outlives the test: it keeps none of its files open.
+pg_ctl_() {
+    ${PUPITRE_TEST_PG_AS:-} $PUPITRE_TEST_PG_CTL "$@" >/dev/null 2>&1 </dev/null 3>&- 4>&- 5>&- \
+        6>&- 7>&- 8>&- 9>&-
+}
 cleanup_server() {
     pg_ctl_ status || pg_ctl_ start
     psql "$PUPITRE_TEST_PG" -qc "DROP SCHEMA $schema CASCADE" >/dev/null 2>&1

@@ -22,7 +22,10 @@ namespace {
 int pg_ctl(const std::string& what) {
     const char* as = std::getenv("PUPITRE_TEST_PG_AS");
     const char* ctl = std::getenv("PUPITRE_TEST_PG_CTL");
-    std::string cmd = std::string(as ? as : "") + " " + ctl + " " + what + " >/dev/null 2>&1";
+    // The server started here outlives the test: it must not keep the files
+    // the test inherited open (a build lock, a pipe of the test runner).
+    std::string cmd = std::string(as ? as : "") + " " + ctl + " " + what +
+                      " >/dev/null 2>&1 </dev/null 3>&- 4>&- 5>&- 6>&- 7>&- 8>&- 9>&-";
     return std::system(cmd.c_str());
 }
 
