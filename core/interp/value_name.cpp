@@ -37,6 +37,11 @@ bool whole(std::string_view s, int& v) {
     return ec == std::errc() && p == s.data() + s.size();
 }
 
+// "D<n>" with n from 1 to `last`.
+bool corrector_number(std::string_view head, int last, int& d) {
+    return head.size() >= 2 && head[0] == 'D' && whole(head.substr(1), d) && d >= 1 && d <= last;
+}
+
 }  // namespace
 
 std::span<const CorrField> corr_fields() {
@@ -82,9 +87,7 @@ bool parse(std::string_view s, ValueName& n, bool stored) {
         return true;
     }
     ValueName v;
-    if (head.size() < 2 || head[0] != 'D' || !whole(head.substr(1), v.number) || v.number < 1 ||
-        v.number > 255)
-        return false;
+    if (!corrector_number(head, 255, v.number)) return false;
     for (const CorrField& f : kFields)
         if (f.text == tail && (f.stored || !stored)) {
             v.field = &f;
@@ -104,18 +107,31 @@ bool parse_value_name(std::string_view s, const MachineProfile& m, ValueName& n)
     ValueName v;
     if (!parse(s, v, false)) return false;
     if (v.kind == ValueName::Kind::origin && !m.has(v.axis)) return false;
-    if (v.kind == ValueName::Kind::corrector) {
-        if (v.number > m.correctors || !(v.field = corr_field(v.field->text, m.lathe)))
-            return false;
-    }
+    if (v.kind == ValueName::Kind::corrector && parse_corrector_name(s, m, v) != NameFault::none)
+        return false;
     n = v;
     return true;
+}
+
+NameFault parse_corrector_name(std::string_view s, const MachineProfile& m, ValueName& n) {
+    size_t dot = s.find('.');
+    ValueName v;
+    if (dot == std::string_view::npos ||
+        !corrector_number(s.substr(0, dot), m.correctors, v.number))
+        return NameFault::number;
+    if (!(v.field = corr_field(s.substr(dot + 1), m.lathe))) return NameFault::field;
+    n = v;
+    return NameFault::none;
+}
+
+std::string corrector_name(int d, std::string_view field) {
+    return "D" + std::to_string(d) + "." + std::string(field);
 }
 
 std::string format_value_name(const ValueName& n) {
     switch (n.kind) {
         case ValueName::Kind::corrector:
-            return "D" + std::to_string(n.number) + "." + std::string(n.field->text);
+            return corrector_name(n.number, n.field->text);
         case ValueName::Kind::origin:
             return std::string(kOriginNames[n.number]) + "." + kAxisNames[size_t(n.axis)];
         case ValueName::Kind::l_param:
@@ -127,12 +143,11 @@ std::string format_value_name(const ValueName& n) {
 }
 
 ValueUnit value_unit(std::string_view name) {
-    bool origin = false;
-    for (std::string_view o : kOriginNames)
-        if (name.size() > o.size() && name.substr(0, o.size()) == o && name[o.size()] == '.')
-            origin = true;
-    if (!origin && name.size() > 2 && name.substr(name.size() - 2) == ".C") return ValueUnit::whole;
-    if (origin && is_rotary(axis_of(name.back()))) return ValueUnit::angle;
+    ValueName v;
+    if (!parse_value_name(name, v)) return ValueUnit::radius;
+    if (v.kind == ValueName::Kind::corrector && v.field->unit == ValueUnit::whole)
+        return ValueUnit::whole;
+    if (v.kind == ValueName::Kind::origin && is_rotary(v.axis)) return ValueUnit::angle;
     return ValueUnit::radius;
 }
 

@@ -72,6 +72,17 @@ bool parse_value_name(std::string_view text, const MachineProfile& m, ValueName&
 // The name as every room spells it: "D12.DX", "PREF.Z", "L5", "E80000".
 std::string format_value_name(const ValueName& n);
 
+// Which part of a corrector's name a refusal names.
+enum class NameFault { none, number, field };
+// "D<n>.<field>" on machine m, read as Interpreter::set refuses it: the
+// number first (no "D<n>." with n from 1 to m.correctors: number), then the
+// field (not one of m's: field).
+NameFault parse_corrector_name(std::string_view text, const MachineProfile& m, ValueName& out);
+// "D<d>.<field>" with the field as typed, known or not, for a refusal to quote
+// whole (the CORR page's "Q=1" under D3); format_value_name spells a
+// corrector so.
+std::string corrector_name(int d, std::string_view field);
+
 // A value's unit from its name, as the store reads it: C whole, a rotary
 // origin an angle, the rest lengths. Unknown names read as lengths.
 ValueUnit value_unit(std::string_view name);
