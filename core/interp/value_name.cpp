@@ -15,21 +15,21 @@ using G = GaugeAxis;
 // CORRECTORS). Lathe: X and Z gauges (X a radius), nose radius R, orientation
 // C, dynamic DX (a diameter) and DZ. Mill: length L, radius R, dynamic DL and
 // DR, end radius A (or TIP); its C is E55xxx's only.
-//  text  member          lathe  unit         gauge          E5x shown stored settable
+//  text  member          lathe  unit         gauge          wear   E5x shown stored settable
 constexpr CorrField kFields[] = {
-    {"X", &Corrector::x, true, U::radius, G::x, 0, true, true, true},
-    {"Z", &Corrector::z, true, U::radius, G::z, 1, true, true, true},
-    {"R", &Corrector::r, true, U::radius, G::none, 2, true, true, true},
-    {"C", nullptr, true, U::whole, G::none, 5, true, true, true},
-    {"DX", &Corrector::dx, true, U::diameter, G::x, 3, true, true, true},
-    {"DZ", &Corrector::dz, true, U::radius, G::z, 4, true, true, true},
-    {"L", &Corrector::l, false, U::radius, G::tool_axis, 0, true, true, true},
-    {"R", &Corrector::r, false, U::radius, G::none, 2, true, true, true},
-    {"DL", &Corrector::dl, false, U::radius, G::tool_axis, 3, true, true, true},
-    {"DR", &Corrector::dr, false, U::radius, G::none, 4, true, true, true},
-    {"A", &Corrector::tip, false, U::radius, G::none, 1, false, true, true},
-    {"TIP", &Corrector::tip, false, U::radius, G::none, -1, false, false, true},
-    {"C", nullptr, false, U::whole, G::none, 5, false, true, false},
+    {"X", &Corrector::x, true, U::radius, G::x, false, 0, true, true, true},
+    {"Z", &Corrector::z, true, U::radius, G::z, false, 1, true, true, true},
+    {"R", &Corrector::r, true, U::radius, G::none, false, 2, true, true, true},
+    {"C", nullptr, true, U::whole, G::none, false, 5, true, true, true},
+    {"DX", &Corrector::dx, true, U::diameter, G::x, true, 3, true, true, true},
+    {"DZ", &Corrector::dz, true, U::radius, G::z, true, 4, true, true, true},
+    {"L", &Corrector::l, false, U::radius, G::tool_axis, false, 0, true, true, true},
+    {"R", &Corrector::r, false, U::radius, G::none, false, 2, true, true, true},
+    {"DL", &Corrector::dl, false, U::radius, G::tool_axis, true, 3, true, true, true},
+    {"DR", &Corrector::dr, false, U::radius, G::none, true, 4, true, true, true},
+    {"A", &Corrector::tip, false, U::radius, G::none, false, 1, false, true, true},
+    {"TIP", &Corrector::tip, false, U::radius, G::none, false, -1, false, false, true},
+    {"C", nullptr, false, U::whole, G::none, false, 5, false, true, false},
 };
 
 bool whole(std::string_view s, int& v) {
@@ -57,6 +57,12 @@ const CorrField* corr_field(std::string_view text, bool lathe) {
 const CorrField* corr_field_of_e(int family, bool lathe) {
     for (const CorrField& f : kFields)
         if (f.lathe == lathe && f.e_family == family) return &f;
+    return nullptr;
+}
+
+const CorrField* gauge_field(GaugeAxis g, bool wear, bool lathe) {
+    for (const CorrField& f : kFields)
+        if (f.lathe == lathe && f.gauge == g && g != GaugeAxis::none && f.wear == wear) return &f;
     return nullptr;
 }
 

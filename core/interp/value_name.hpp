@@ -31,6 +31,7 @@ struct CorrField {
     bool lathe;                 // a lathe's field, else a machining centre's
     ValueUnit unit;
     GaugeAxis gauge;
+    bool wear;      // a dynamic correction (DX DZ, DL DR): what a worn tool adds to a gauge or R
     int e_family;   // E5x<nnn>: x, as write_e and e_value map them; -1: none
     bool shown;     // a column of the CORR page and a training target
     bool stored;    // a name the store keeps (TIP is A's other spelling)
@@ -43,6 +44,10 @@ std::span<const CorrField> corr_fields();
 const CorrField* corr_field(std::string_view text, bool lathe);
 // The field of E5<family><nnn> on a lathe or a mill, or nullptr.
 const CorrField* corr_field_of_e(int family, bool lathe);
+// The gauge (or, `wear`, its dynamic correction) that moves the tool point
+// along `g` on a lathe or a mill: a lathe's X and DX on x, a mill's L and DL
+// on its tool axis; nullptr for none.
+const CorrField* gauge_field(GaugeAxis g, bool wear, bool lathe);
 // The field `text` names on either machine (the store's names), or nullptr.
 const CorrField* any_corr_field(std::string_view text);
 

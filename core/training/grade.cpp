@@ -35,6 +35,7 @@ struct Probe {
     bool corrector() const { return !origin(); }
     bool pref() const { return origin() && n.number == 0; }
     bool dec1() const { return origin() && n.number == 1; }
+    bool wear() const { return corrector() && n.field->wear; }  // DX DZ DL DR
 };
 
 using Finder = std::string (*)(const Probe&);
@@ -72,7 +73,7 @@ std::string radius(const Probe& p) {
 }
 
 std::string sign(const Probe& p) {
-    if (!p.corrector() || p.field.front() == 'D' || std::abs(p.it.truth) <= p.tol) return {};
+    if (!p.corrector() || p.wear() || std::abs(p.it.truth) <= p.tol) return {};
     if (!near(p.it.found, -p.it.truth, p.tol)) return {};
     return strf(tr("%s instead of %s: a gauge is OM - P, the turret or spindle reference minus the "
                    "tool point"),
@@ -80,7 +81,7 @@ std::string sign(const Probe& p) {
 }
 
 std::string wear_sign(const Probe& p) {
-    if (!p.corrector() || p.field.front() != 'D' || std::abs(p.it.truth) <= p.tol) return {};
+    if (!p.wear() || std::abs(p.it.truth) <= p.tol) return {};
     if (!near(p.it.found, -p.it.truth, p.tol)) return {};
     return strf(tr("%s instead of %s: a part too large needs a smaller gauge, a negative "
                    "correction"),
@@ -152,7 +153,7 @@ std::string dec1(const Probe& p) {
 }
 
 std::string shim(const Probe& p) {
-    if (p.field.front() == 'D' || p.field == "R" || p.dec1()) return {};
+    if (p.wear() || p.field == "R" || p.dec1()) return {};
     const double err = p.it.found - p.it.truth;
     for (double s : p.ctx.shims)
         if (near(err, s, p.tol) || near(err, -s, p.tol))

@@ -142,3 +142,20 @@ TEST(ValueName, TheUnitOfANameTheVocabularyRefusesIsALength) {
     for (const char* odd : {"D0.C", "D256.C", "X.C", "PREF.XC", "PREF.", "L5", "E80000", ""})
         EXPECT_EQ(value_unit(odd), ValueUnit::radius) << odd;
 }
+
+TEST(ValueName, EachGaugeHasItsWear) {
+    std::string lathe, mill;
+    for (const CorrField& f : corr_fields())
+        if (f.wear) (f.lathe ? lathe : mill) += std::string(f.text) + " ";
+    EXPECT_EQ(lathe, "DX DZ ");
+    EXPECT_EQ(mill, "DL DR ");
+    EXPECT_EQ(gauge_field(GaugeAxis::x, false, true), corr_field("X", true));
+    EXPECT_EQ(gauge_field(GaugeAxis::x, true, true), corr_field("DX", true));
+    EXPECT_EQ(gauge_field(GaugeAxis::z, false, true), corr_field("Z", true));
+    EXPECT_EQ(gauge_field(GaugeAxis::z, true, true), corr_field("DZ", true));
+    EXPECT_EQ(gauge_field(GaugeAxis::tool_axis, false, false), corr_field("L", false));
+    EXPECT_EQ(gauge_field(GaugeAxis::tool_axis, true, false), corr_field("DL", false));
+    EXPECT_EQ(gauge_field(GaugeAxis::x, false, false), nullptr);
+    EXPECT_EQ(gauge_field(GaugeAxis::tool_axis, false, true), nullptr);
+    EXPECT_EQ(gauge_field(GaugeAxis::none, false, true), nullptr);  // R is no gauge
+}
