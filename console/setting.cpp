@@ -26,8 +26,9 @@ std::string mm(double v) {
     return pages::fmt_len(v);
 }
 
-bool is_origin(std::string_view n) {
-    return n.rfind("PREF.", 0) == 0 || n.rfind("DEC1.", 0) == 0 || n.rfind("DEC3.", 0) == 0;
+bool is_origin(std::string_view name) {
+    ValueName n;
+    return parse_value_name(name, n) && n.kind == ValueName::Kind::origin;
 }
 
 // A number typed on a setting page. A French decimal comma (Z 1,5) is read
@@ -68,14 +69,11 @@ bool looks_like_block(std::string_view t) {
 }
 
 // The field of a corrector a setting names ("D3.X" -> X), of either machine,
-// or nullptr. The corrector's number is Interpreter::set's to refuse, with
-// its message.
-const CorrField* corrector_field(const std::string& name) {
-    if (name.size() < 3 || name[0] != 'D' || !std::isdigit(static_cast<unsigned char>(name[1])))
-        return nullptr;
-    size_t dot = name.find('.');
-    return dot == std::string::npos ? nullptr
-                                    : any_corr_field(std::string_view(name).substr(dot + 1));
+// or nullptr. A field of the other machine is Interpreter::set's to refuse,
+// with its message.
+const CorrField* corrector_field(std::string_view name) {
+    ValueName n;
+    return parse_value_name(name, n) && n.kind == ValueName::Kind::corrector ? n.field : nullptr;
 }
 
 }  // namespace
@@ -357,8 +355,7 @@ Effect SettingDesk::text(std::string_view text) {
             b_.say(strf(tr("%s: not a number (use a decimal point: 1.5)"), name.c_str()), true);
             return Effect::redraw;
         }
-        if (corr && name.find('.') == std::string::npos)
-            name = "D" + std::to_string(corr_cursor_) + "." + name;
+        if (corr && name.find('.') == std::string::npos) name = corrector_name(corr_cursor_, name);
         std::string source = corr ? "page CORR" : "page PREF";
         if (std::string question = implausible_gauge(name, v); !question.empty()) {
             b_.confirm(question, [this, name, v, source] { apply(name, v, source); });

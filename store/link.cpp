@@ -2,7 +2,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "store/link.hpp"
 
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 
@@ -10,15 +9,6 @@
 #include "store/text.hpp"
 
 namespace pupitre::store {
-
-namespace {
-
-bool is_origin(std::string_view name) {
-    return name.substr(0, 5) == "PREF." || name.substr(0, 5) == "DEC1." ||
-           name.substr(0, 5) == "DEC3.";
-}
-
-}  // namespace
 
 Result<int> load_programs(Store& s, ProgramMemory& mem) {
     Result<int> r;
@@ -54,26 +44,22 @@ Result<std::map<std::string, int64_t>> seed_machine(Store& s, Interpreter& in,
         return r;
     }
     for (const auto& [name, v] : stored.value) {
-        size_t dot = name.find('.');
-        std::string_view head = std::string_view(name).substr(0, dot);
-        std::string_view field = std::string_view(name).substr(dot + 1);
-        if (!is_origin(name)) {
-            int d = 0;
-            std::from_chars(head.data() + 1, head.data() + head.size(), d);
-            if (d < 1 || d > m.correctors) continue;
-            Corrector& c = in.corrector(d);
-            // A field of the other kind of machine is skipped.
-            const CorrField* f = corr_field(field, m.lathe);
-            if (!f || !f->stored) continue;
-            if (f->member)
-                c.*f->member = double(v) / 1000.0;
+        // A field of the other kind of machine, a corrector or an axis it has
+        // not: skipped.
+        ValueName n;
+        if (!parse_value_name(name, m, n)) continue;
+        if (n.kind == ValueName::Kind::corrector) {
+            if (!n.field->stored) continue;
+            Corrector& c = in.corrector(n.number);
+            if (n.field->member)
+                c.*n.field->member = double(v) / 1000.0;
             else
                 c.c = int(v);
-        } else {
-            int axis = axis_of(field.empty() ? '?' : field[0]);
-            if (!m.has(axis)) continue;
-            double value = is_rotary(axis) ? double(v) / 1e4 : double(v) / 1000.0;
+        } else if (n.kind == ValueName::Kind::origin) {
+            double value = is_rotary(n.axis) ? double(v) / 1e4 : double(v) / 1000.0;
             if (!in.set(name, value).empty()) continue;
+        } else {
+            continue;  // no L or E parameter is a row
         }
         r.value[name] = v;
     }
@@ -87,13 +73,13 @@ std::vector<std::pair<std::string, int64_t>> persistent_writes(const Interpreter
         int k = n % 1000, fam = (n / 1000) % 10;
         if (n >= 50000 && n < 56000 && k >= 1 && k <= 255) {
             // Corrector fields by E family (E50xxx … E55xxx), as write_e maps them.
-            ValueName name{ValueName::Kind::corrector, k, corr_field_of_e(fam, m.lathe)};
-            out.emplace_back(format_value_name(name), v);
+            out.emplace_back(
+                format_value_name(ValueName::corrector(k, corr_field_of_e(fam, m.lathe))), v);
         } else if (n >= 60000 && n < 69000 && (k == 0 || k == 1 || k == 4)) {
             int axis = fam;  // E6x…: x is the axis
             if (!m.has(axis)) continue;
-            ValueName name{ValueName::Kind::origin, k == 4 ? 2 : k, nullptr, axis};
-            out.emplace_back(format_value_name(name), v);  // E6x000, 001, 004
+            // E6x000, 001, 004: PREF, DEC1, DEC3.
+            out.emplace_back(format_value_name(ValueName::origin(k == 4 ? 2 : k, axis)), v);
         }
     }
     return out;

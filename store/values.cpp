@@ -37,6 +37,22 @@ bool parse_name(std::string_view s, Store::StoredName& n) {
     return true;
 }
 
+// A row's columns -> its name: corrector d's field (d > 0), or the origin
+// `field` names on an axis. False for none (the schema's CHECKs keep them out).
+bool row_name(int64_t d, std::string_view field, std::string_view axis, ValueName& n) {
+    if (d > 0) {
+        const CorrField* f = any_corr_field(field);
+        if (f) n = ValueName::corrector(int(d), f);
+        return f;
+    }
+    for (int k = 0; k < 3; ++k)
+        if (field == kOriginNames[k] && axis.size() == 1 && axis_of(axis[0]) >= 0) {
+            n = ValueName::origin(k, axis_of(axis[0]));
+            return true;
+        }
+    return false;
+}
+
 // LIMIT for "all": both engines read a limit this large as none (PostgreSQL
 // refuses SQLite's -1).
 constexpr int64_t kNoLimit = INT64_MAX;
@@ -97,14 +113,17 @@ Result<std::string> Store::machine_profile(std::string_view name) {
 Result<std::map<std::string, int64_t>> Store::values(std::string_view machine) {
     Result<std::map<std::string, int64_t>> r;
     StoreError e;
+    // The columns, spelt into names by the vocabulary (not by the SQL).
     sql::Use u =
-        use("SELECT 'D' || d || '.' || field, value FROM correctors WHERE machine = ?1 "
-            "UNION ALL SELECT kind || '.' || axis, value FROM origins WHERE machine = ?1");
+        use("SELECT d, field, '', value FROM correctors WHERE machine = ?1 "
+            "UNION ALL SELECT 0, kind, axis, value FROM origins WHERE machine = ?1");
     e = u.error;
     if ((r.error = e)) return r;
     u.bind(1, machine);
     int rc;
-    while ((rc = u.step()) == db::kRow) r.value[u.str(0)] = u.i64(1);
+    while ((rc = u.step()) == db::kRow)
+        if (ValueName n; row_name(u.i64(0), u.str(1), u.str(2), n))
+            r.value[format_value_name(n)] = u.i64(3);
     if (rc != db::kDone) {
         r.value.clear();
         r.error = fail(rc, tr("cannot read the correctors and origins"));

@@ -16,13 +16,6 @@ bool parse_double(std::string_view s, double& v) {
     return r.ec == std::errc() && r.ptr == s.data() + s.size();
 }
 
-// The field of a corrector a setting names after "D<n>." on this machine, or
-// nullptr (a mill's C is E55xxx's only).
-const CorrField* settable_field(bool lathe, std::string_view f) {
-    const CorrField* c = corr_field(f, lathe);
-    return c && c->settable ? c : nullptr;
-}
-
 // PREF.X, DEC1.Z, DEC3.Y: which origin (0, 1, 2) and the axis letter's index,
 // or -1 when the name is not one of them.
 int origin_named(std::string_view name, int& axis) {
@@ -64,31 +57,29 @@ std::string Interpreter::set(std::string_view name, double value, bool immediate
     return strf(tr("unknown setting (PREF.X, DEC1.Z, DEC3.Y, D1.R, L5, E80000%s)"), "\u2026");
 }
 
-// D<n>.<field> = value.
+// D<n>.<field> = value. A mill's C is E55xxx's only: no setting names it.
 std::string Interpreter::set_corrector(std::string_view name, double value) {
-    size_t dot = name.find('.');
-    double d;
-    if (dot == std::string_view::npos || !parse_double(name.substr(1, dot - 1), d) || d < 1 ||
-        d > m_.correctors || d != std::floor(d))
+    ValueName v;
+    NameFault fault = parse_corrector_name(name, m_, v);
+    if (fault == NameFault::number)
         return strf(tr("corrector must be D1 to D%d"), int(m_.correctors));
-    Corrector& c = corr_[size_t(d)];
-    std::string_view f = name.substr(dot + 1);
+    const CorrField* field = fault == NameFault::none && v.field->settable ? v.field : nullptr;
+    if (!field)
+        return m_.lathe ? tr("lathe correctors have X Z R C DX DZ")
+                        : tr("mill correctors have L R DL DR and the end radius A");
     // The Cazeneuve's gauges pilot the nose centre under the CNP (003:1912,
     // "régler les jauges de façon à piloter l'axe du rayon de l'outil"): its
     // correctors have no orientation, which is C0, the centre.
-    const CorrField* field = settable_field(m_.lathe, f);
-    if (field && !field->member && caz_ && value != 0)
+    if (!field->member && caz_ && value != 0)
         return tr("this controller's gauges pilot the nose centre (003:1912): no orientation C");
-    if (field && !field->member)
-        c.c = int(value);
-    else if (field)
+    Corrector& c = corr_[size_t(v.number)];
+    if (field->member)
         c.*field->member = value;
     else
-        return m_.lathe ? tr("lathe correctors have X Z R C DX DZ")
-                        : tr("mill correctors have L R DL DR and the end radius A");
+        c.c = int(value);
     // The active corrector's new gauge applies at the next move of each of
     // its axes (000:797, 000:843-865; pupitre-iso(5), DECISIONS); a new radius at the next G41/G42.
-    if (int(d) == modal_.d) {
+    if (v.number == modal_.d) {
         if (m_.lathe)
             gauge_pending_.set(X), gauge_pending_.set(Z);
         else
@@ -103,17 +94,10 @@ bool Interpreter::get(std::string_view name, double& out) const {
         out = (k == 0 ? frames_.pref : k == 1 ? frames_.dec1 : frames_.dec3)[size_t(axis)];
         return true;
     }
-    if (name.size() >= 4 && name[0] == 'D') {
-        size_t dot = name.find('.');
-        double d;
-        if (dot == std::string_view::npos || !parse_double(name.substr(1, dot - 1), d) || d < 1 ||
-            d > 255)
-            return false;
-        const Corrector& c = corr_[size_t(d)];
-        std::string_view f = name.substr(dot + 1);
-        const CorrField* field = settable_field(m_.lathe, f);
-        if (!field) return false;
-        out = field->member ? c.*field->member : c.c;
+    ValueName v;
+    if (parse_corrector_name(name, m_, v) == NameFault::none && v.field->settable) {
+        const Corrector& c = corr_[size_t(v.number)];
+        out = v.field->member ? c.*v.field->member : c.c;
         return true;
     }
     return false;

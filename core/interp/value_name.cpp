@@ -15,26 +15,31 @@ using G = GaugeAxis;
 // CORRECTORS). Lathe: X and Z gauges (X a radius), nose radius R, orientation
 // C, dynamic DX (a diameter) and DZ. Mill: length L, radius R, dynamic DL and
 // DR, end radius A (or TIP); its C is E55xxx's only.
-//  text  member          lathe  unit         gauge          E5x shown stored settable
+//  text  member          lathe  unit         gauge          wear   E5x shown stored settable
 constexpr CorrField kFields[] = {
-    {"X", &Corrector::x, true, U::radius, G::x, 0, true, true, true},
-    {"Z", &Corrector::z, true, U::radius, G::z, 1, true, true, true},
-    {"R", &Corrector::r, true, U::radius, G::none, 2, true, true, true},
-    {"C", nullptr, true, U::whole, G::none, 5, true, true, true},
-    {"DX", &Corrector::dx, true, U::diameter, G::x, 3, true, true, true},
-    {"DZ", &Corrector::dz, true, U::radius, G::z, 4, true, true, true},
-    {"L", &Corrector::l, false, U::radius, G::tool_axis, 0, true, true, true},
-    {"R", &Corrector::r, false, U::radius, G::none, 2, true, true, true},
-    {"DL", &Corrector::dl, false, U::radius, G::tool_axis, 3, true, true, true},
-    {"DR", &Corrector::dr, false, U::radius, G::none, 4, true, true, true},
-    {"A", &Corrector::tip, false, U::radius, G::none, 1, false, true, true},
-    {"TIP", &Corrector::tip, false, U::radius, G::none, -1, false, false, true},
-    {"C", nullptr, false, U::whole, G::none, 5, false, true, false},
+    {"X", &Corrector::x, true, U::radius, G::x, false, 0, true, true, true},
+    {"Z", &Corrector::z, true, U::radius, G::z, false, 1, true, true, true},
+    {"R", &Corrector::r, true, U::radius, G::none, false, 2, true, true, true},
+    {"C", nullptr, true, U::whole, G::none, false, 5, true, true, true},
+    {"DX", &Corrector::dx, true, U::diameter, G::x, true, 3, true, true, true},
+    {"DZ", &Corrector::dz, true, U::radius, G::z, true, 4, true, true, true},
+    {"L", &Corrector::l, false, U::radius, G::tool_axis, false, 0, true, true, true},
+    {"R", &Corrector::r, false, U::radius, G::none, false, 2, true, true, true},
+    {"DL", &Corrector::dl, false, U::radius, G::tool_axis, true, 3, true, true, true},
+    {"DR", &Corrector::dr, false, U::radius, G::none, true, 4, true, true, true},
+    {"A", &Corrector::tip, false, U::radius, G::none, false, 1, false, true, true},
+    {"TIP", &Corrector::tip, false, U::radius, G::none, false, -1, false, false, true},
+    {"C", nullptr, false, U::whole, G::none, false, 5, false, true, false},
 };
 
 bool whole(std::string_view s, int& v) {
     auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
     return ec == std::errc() && p == s.data() + s.size();
+}
+
+// "D<n>" with n from 1 to `last`.
+bool corrector_number(std::string_view head, int last, int& d) {
+    return head.size() >= 2 && head[0] == 'D' && whole(head.substr(1), d) && d >= 1 && d <= last;
 }
 
 }  // namespace
@@ -52,6 +57,12 @@ const CorrField* corr_field(std::string_view text, bool lathe) {
 const CorrField* corr_field_of_e(int family, bool lathe) {
     for (const CorrField& f : kFields)
         if (f.lathe == lathe && f.e_family == family) return &f;
+    return nullptr;
+}
+
+const CorrField* gauge_field(GaugeAxis g, bool wear, bool lathe) {
+    for (const CorrField& f : kFields)
+        if (f.lathe == lathe && f.gauge == g && g != GaugeAxis::none && f.wear == wear) return &f;
     return nullptr;
 }
 
@@ -82,9 +93,7 @@ bool parse(std::string_view s, ValueName& n, bool stored) {
         return true;
     }
     ValueName v;
-    if (head.size() < 2 || head[0] != 'D' || !whole(head.substr(1), v.number) || v.number < 1 ||
-        v.number > 255)
-        return false;
+    if (!corrector_number(head, 255, v.number)) return false;
     for (const CorrField& f : kFields)
         if (f.text == tail && (f.stored || !stored)) {
             v.field = &f;
@@ -104,18 +113,31 @@ bool parse_value_name(std::string_view s, const MachineProfile& m, ValueName& n)
     ValueName v;
     if (!parse(s, v, false)) return false;
     if (v.kind == ValueName::Kind::origin && !m.has(v.axis)) return false;
-    if (v.kind == ValueName::Kind::corrector) {
-        if (v.number > m.correctors || !(v.field = corr_field(v.field->text, m.lathe)))
-            return false;
-    }
+    if (v.kind == ValueName::Kind::corrector && parse_corrector_name(s, m, v) != NameFault::none)
+        return false;
     n = v;
     return true;
+}
+
+NameFault parse_corrector_name(std::string_view s, const MachineProfile& m, ValueName& n) {
+    size_t dot = s.find('.');
+    ValueName v;
+    if (dot == std::string_view::npos ||
+        !corrector_number(s.substr(0, dot), m.correctors, v.number))
+        return NameFault::number;
+    if (!(v.field = corr_field(s.substr(dot + 1), m.lathe))) return NameFault::field;
+    n = v;
+    return NameFault::none;
+}
+
+std::string corrector_name(int d, std::string_view field) {
+    return "D" + std::to_string(d) + "." + std::string(field);
 }
 
 std::string format_value_name(const ValueName& n) {
     switch (n.kind) {
         case ValueName::Kind::corrector:
-            return "D" + std::to_string(n.number) + "." + std::string(n.field->text);
+            return corrector_name(n.number, n.field->text);
         case ValueName::Kind::origin:
             return std::string(kOriginNames[n.number]) + "." + kAxisNames[size_t(n.axis)];
         case ValueName::Kind::l_param:
@@ -127,12 +149,11 @@ std::string format_value_name(const ValueName& n) {
 }
 
 ValueUnit value_unit(std::string_view name) {
-    bool origin = false;
-    for (std::string_view o : kOriginNames)
-        if (name.size() > o.size() && name.substr(0, o.size()) == o && name[o.size()] == '.')
-            origin = true;
-    if (!origin && name.size() > 2 && name.substr(name.size() - 2) == ".C") return ValueUnit::whole;
-    if (origin && is_rotary(axis_of(name.back()))) return ValueUnit::angle;
+    ValueName v;
+    if (!parse_value_name(name, v)) return ValueUnit::radius;
+    if (v.kind == ValueName::Kind::corrector && v.field->unit == ValueUnit::whole)
+        return ValueUnit::whole;
+    if (v.kind == ValueName::Kind::origin && is_rotary(v.axis)) return ValueUnit::angle;
     return ValueUnit::radius;
 }
 

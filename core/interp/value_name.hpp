@@ -31,6 +31,7 @@ struct CorrField {
     bool lathe;                 // a lathe's field, else a machining centre's
     ValueUnit unit;
     GaugeAxis gauge;
+    bool wear;      // a dynamic correction (DX DZ, DL DR): what a worn tool adds to a gauge or R
     int e_family;   // E5x<nnn>: x, as write_e and e_value map them; -1: none
     bool shown;     // a column of the CORR page and a training target
     bool stored;    // a name the store keeps (TIP is A's other spelling)
@@ -43,6 +44,10 @@ std::span<const CorrField> corr_fields();
 const CorrField* corr_field(std::string_view text, bool lathe);
 // The field of E5<family><nnn> on a lathe or a mill, or nullptr.
 const CorrField* corr_field_of_e(int family, bool lathe);
+// The gauge (or, `wear`, its dynamic correction) that moves the tool point
+// along `g` on a lathe or a mill: a lathe's X and DX on x, a mill's L and DL
+// on its tool axis; nullptr for none.
+const CorrField* gauge_field(GaugeAxis g, bool wear, bool lathe);
 // The field `text` names on either machine (the store's names), or nullptr.
 const CorrField* any_corr_field(std::string_view text);
 
@@ -71,6 +76,17 @@ bool parse_value_name(std::string_view text, ValueName& out);
 bool parse_value_name(std::string_view text, const MachineProfile& m, ValueName& out);
 // The name as every room spells it: "D12.DX", "PREF.Z", "L5", "E80000".
 std::string format_value_name(const ValueName& n);
+
+// Which part of a corrector's name a refusal names.
+enum class NameFault { none, number, field };
+// "D<n>.<field>" on machine m, read as Interpreter::set refuses it: the
+// number first (no "D<n>." with n from 1 to m.correctors: number), then the
+// field (not one of m's: field).
+NameFault parse_corrector_name(std::string_view text, const MachineProfile& m, ValueName& out);
+// "D<d>.<field>" with the field as typed, known or not, for a refusal to quote
+// whole (the CORR page's "Q=1" under D3); format_value_name spells a
+// corrector so.
+std::string corrector_name(int d, std::string_view field);
 
 // A value's unit from its name, as the store reads it: C whole, a rotary
 // origin an angle, the rest lengths. Unknown names read as lengths.

@@ -102,15 +102,17 @@ std::string measure(const Interpreter& in, int d, int axis, double surface, Touc
     size_t a = size_t(axis);
     double s = surface / in.to_display(axis, 1.0);
     // The gauge measured and its dynamic correction: X and DX, Z and DZ, L and DL.
-    const std::string_view gauge = m.lathe ? kAxisNames.substr(a, 1) : "L";
-    const std::string_view wear = m.lathe ? (axis == X ? "DX" : "DZ") : "DL";
+    const GaugeAxis along = !m.lathe    ? GaugeAxis::tool_axis
+                            : axis == X ? GaugeAxis::x
+                                        : GaugeAxis::z;
+    const CorrField* wear = gauge_field(along, true, m.lathe);
     t.axis = axis;
-    t.name = format_value_name(ValueName::corrector(d, corr_field(gauge, m.lathe)));
+    t.name = format_value_name(ValueName::corrector(d, gauge_field(along, false, m.lathe)));
     in.get(t.name, t.before);
     // The dynamic correction stays what it is: the measured length is gauge + dynamic.
     double dyn = 0;
-    in.get(format_value_name(ValueName::corrector(d, corr_field(wear, m.lathe))), dyn);
-    if (m.lathe && axis == X) dyn /= 2;  // DX is a diameter
+    in.get(format_value_name(ValueName::corrector(d, wear)), dyn);
+    if (wear->unit == ValueUnit::diameter) dyn /= 2;  // a lathe's DX
     double total = measure_gauge(in.machine_pos()[a], f.g59[a], f.pref[a], f.dec1[a], f.dec3[a], s);
     if (!m.lathe && in.modal().tool_axis_neg) total = -total;
     t.after = total - dyn;

@@ -5,9 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 
 #include "core/i18n.hpp"
+#include "core/interp/value_name.hpp"
 #include "core/workshop/workshop.hpp"
 
 namespace pupitre::training {
@@ -28,10 +28,14 @@ struct Probe {
     const workshop::Setup& s;
     const Context& ctx;
     const ItemGrade& it;
-    std::string head, field;  // PREF and X, D2 and DX
+    ValueName n;        // the target, PREF.X or D2.DX (target_name's)
+    std::string field;  // its axis or field: X, DX
     double tol;
-    bool origin() const { return head == "PREF" || head == "DEC1"; }
+    bool origin() const { return n.kind == ValueName::Kind::origin; }
     bool corrector() const { return !origin(); }
+    bool pref() const { return origin() && n.number == 0; }
+    bool dec1() const { return origin() && n.number == 1; }
+    bool wear() const { return corrector() && n.field->wear; }  // DX DZ DL DR
 };
 
 using Finder = std::string (*)(const Probe&);
@@ -69,7 +73,7 @@ std::string radius(const Probe& p) {
 }
 
 std::string sign(const Probe& p) {
-    if (!p.corrector() || p.field.front() == 'D' || std::abs(p.it.truth) <= p.tol) return {};
+    if (!p.corrector() || p.wear() || std::abs(p.it.truth) <= p.tol) return {};
     if (!near(p.it.found, -p.it.truth, p.tol)) return {};
     return strf(tr("%s instead of %s: a gauge is OM - P, the turret or spindle reference minus the "
                    "tool point"),
@@ -77,7 +81,7 @@ std::string sign(const Probe& p) {
 }
 
 std::string wear_sign(const Probe& p) {
-    if (!p.corrector() || p.field.front() != 'D' || std::abs(p.it.truth) <= p.tol) return {};
+    if (!p.wear() || std::abs(p.it.truth) <= p.tol) return {};
     if (!near(p.it.found, -p.it.truth, p.tol)) return {};
     return strf(tr("%s instead of %s: a part too large needs a smaller gauge, a negative "
                    "correction"),
@@ -96,7 +100,7 @@ std::string other_tool(const Probe& p) {
     const bool lathe = p.s.kind == "lathe";
     // The gauges: X and Z on a lathe, L (along Z) on a mill.
     if (lathe ? p.field != "X" && p.field != "Z" : p.field != "L") return {};
-    const int d = std::atoi(p.head.c_str() + 1);
+    const int d = p.n.number;
     for (const workshop::ToolTruth& b : p.s.tools) {
         const double g = gauge_along(b, lathe ? p.field : "Z", lathe);
         if (b.position != d && std::abs(g - p.it.truth) > p.tol && near(p.it.found, g, p.tol))
@@ -112,7 +116,7 @@ std::string other_tool(const Probe& p) {
 // holding another tool's gauge.
 std::string corrector(const Probe& p) {
     if (p.corrector()) return other_tool(p);  // X Z or L only: not a DX
-    if (p.head != "PREF") return {};
+    if (!p.pref()) return {};
     const bool lathe = p.s.kind == "lathe";
     const double err = p.it.found - p.it.truth;
     for (const workshop::ToolTruth& a : p.s.tools) {
@@ -133,15 +137,15 @@ std::string corrector(const Probe& p) {
 }
 
 std::string dec1(const Probe& p) {
-    if (p.head == "DEC1") {
+    if (p.dec1()) {
         if (std::abs(p.it.truth) > p.tol && near(p.it.found, 0, p.tol))
             return strf(tr("DEC1 %s left at 0: the program's origin is %s mm from PREF"),
                         p.field.c_str(), mm(p.it.truth).c_str());
         return {};
     }
     double dec = 0;
-    if (p.head != "PREF" || !expected(p.e, p.s, "DEC1." + p.field, dec) || std::abs(dec) <= p.tol ||
-        !near(p.it.found, p.it.truth + dec, p.tol))
+    if (!p.pref() || !expected(p.e, p.s, format_value_name(ValueName::origin(1, p.n.axis)), dec) ||
+        std::abs(dec) <= p.tol || !near(p.it.found, p.it.truth + dec, p.tol))
         return {};
     return strf(tr("PREF %s holds PREF + DEC1 (%s + %s): the offset went into PREF, DEC1 was "
                    "forgotten"),
@@ -149,7 +153,7 @@ std::string dec1(const Probe& p) {
 }
 
 std::string shim(const Probe& p) {
-    if (p.field.front() == 'D' || p.field == "R" || p.head == "DEC1") return {};
+    if (p.wear() || p.field == "R" || p.dec1()) return {};
     const double err = p.it.found - p.it.truth;
     for (double s : p.ctx.shims)
         if (near(err, s, p.tol) || near(err, -s, p.tol))
@@ -185,8 +189,14 @@ constexpr Row kMistakes[] = {
 
 void name_mistake(const Exercise& e, const workshop::Setup& truth, const Context& ctx,
                   ItemGrade& it) {
-    const size_t dot = it.name.find('.');
-    Probe p{e, truth, ctx, it, it.name.substr(0, dot), it.name.substr(dot + 1), it.tolerance};
+    ValueName n;
+    if (!parse_value_name(it.name, n) || n.kind == ValueName::Kind::l_param ||
+        n.kind == ValueName::Kind::e_param)
+        return;  // no target (target_name): nothing to explain
+    const std::string field = n.kind == ValueName::Kind::corrector
+                                  ? std::string(n.field->text)
+                                  : std::string(1, kAxisNames[size_t(n.axis)]);
+    Probe p{e, truth, ctx, it, n, field, it.tolerance};
     for (const Row& r : kMistakes) {
         std::string why = r.find(p);
         if (why.empty()) continue;

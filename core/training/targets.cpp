@@ -105,7 +105,7 @@ bool corrector(const Exercise& e, const workshop::Setup& setup, const Sought& n,
     const bool lathe = setup.kind == "lathe";
     const std::string& f = n.field;
     std::string text;
-    if (f == "DX" || f == "DZ" || f == "DL" || f == "DR") {
+    if (any_corr_field(f)->wear) {
         // The gauge the wear corrects: DX's X, DL's L (only the spelling matters).
         const std::string base =
             format_value_name(ValueName::corrector(n.d, any_corr_field(f.substr(1))));

@@ -97,3 +97,65 @@ TEST(ValueName, RefusesWhatTheRoomsRefused) {
     small.axes[size_t(axis_of('Y'))].present = false;
     EXPECT_FALSE(parse_value_name("PREF.Y", small, n));
 }
+
+TEST(ValueName, ACorrectorsNameIsRefusedByTheNumberThenTheField) {
+    MachineProfile lathe = machine(true), mill = machine(false);
+    lathe.correctors = 99;
+    ValueName n;
+    EXPECT_EQ(parse_corrector_name("D99.DX", lathe, n), NameFault::none);
+    EXPECT_EQ(n.number, 99);
+    EXPECT_EQ(n.field, corr_field("DX", true));
+    EXPECT_EQ(parse_corrector_name("D1.TIP", mill, n), NameFault::none);
+    EXPECT_EQ(n.field->member, &Corrector::tip);
+    EXPECT_EQ(parse_corrector_name("D1.C", mill, n),
+              NameFault::none);  // not settable: the caller's
+    // The number first: a bad one is refused as such whatever the field.
+    for (const char* bad : {"D100.X", "D0.X", "D100.Q", "D1e0.X", "Dx.X", "D.X", "D1", "D123",
+                            "DEC2.X", "DEC1.Q", "X.X", ""})
+        EXPECT_EQ(parse_corrector_name(bad, lathe, n), NameFault::number) << bad;
+    for (const char* bad : {"D1.Q", "D1.", "D1.5.X", "D1.L", "D1.TIP", "D1.x"})
+        EXPECT_EQ(parse_corrector_name(bad, lathe, n), NameFault::field) << bad;
+    EXPECT_EQ(parse_corrector_name("D1.X", mill, n), NameFault::field);
+    // What the full parser reads on a machine, this one reads the same.
+    for (const CorrField& f : corr_fields()) {
+        std::string text = corrector_name(7, f.text);
+        ValueName a, b;
+        MachineProfile m = machine(f.lathe);
+        EXPECT_EQ(parse_corrector_name(text, m, a) == NameFault::none, parse_value_name(text, m, b))
+            << text;
+        EXPECT_EQ(a.field, b.field) << text;
+    }
+}
+
+TEST(ValueName, ACorrectorsNameIsSpeltWithTheFieldAsTyped) {
+    EXPECT_EQ(corrector_name(3, "X"), "D3.X");
+    EXPECT_EQ(corrector_name(12, "Q"), "D12.Q");  // for a refusal to quote
+    EXPECT_EQ(corrector_name(1, ""), "D1.");
+    EXPECT_EQ(corrector_name(255, "DR"),
+              format_value_name(ValueName::corrector(255, corr_field("DR", false))));
+}
+
+TEST(ValueName, TheUnitOfANameTheVocabularyRefusesIsALength) {
+    EXPECT_EQ(value_unit("D3.C"), ValueUnit::whole);
+    EXPECT_EQ(value_unit("PREF.C"), ValueUnit::angle);
+    EXPECT_EQ(value_unit("DEC3.B"), ValueUnit::angle);
+    for (const char* odd : {"D0.C", "D256.C", "X.C", "PREF.XC", "PREF.", "L5", "E80000", ""})
+        EXPECT_EQ(value_unit(odd), ValueUnit::radius) << odd;
+}
+
+TEST(ValueName, EachGaugeHasItsWear) {
+    std::string lathe, mill;
+    for (const CorrField& f : corr_fields())
+        if (f.wear) (f.lathe ? lathe : mill) += std::string(f.text) + " ";
+    EXPECT_EQ(lathe, "DX DZ ");
+    EXPECT_EQ(mill, "DL DR ");
+    EXPECT_EQ(gauge_field(GaugeAxis::x, false, true), corr_field("X", true));
+    EXPECT_EQ(gauge_field(GaugeAxis::x, true, true), corr_field("DX", true));
+    EXPECT_EQ(gauge_field(GaugeAxis::z, false, true), corr_field("Z", true));
+    EXPECT_EQ(gauge_field(GaugeAxis::z, true, true), corr_field("DZ", true));
+    EXPECT_EQ(gauge_field(GaugeAxis::tool_axis, false, false), corr_field("L", false));
+    EXPECT_EQ(gauge_field(GaugeAxis::tool_axis, true, false), corr_field("DL", false));
+    EXPECT_EQ(gauge_field(GaugeAxis::x, false, false), nullptr);
+    EXPECT_EQ(gauge_field(GaugeAxis::tool_axis, false, true), nullptr);
+    EXPECT_EQ(gauge_field(GaugeAxis::none, false, true), nullptr);  // R is no gauge
+}
