@@ -450,13 +450,14 @@ StoreError connect_error(const std::string& name, PGconn* c) {
     std::string m = one_line(PQerrorMessage(c));
     const char* user = PQuser(c);
     const char* dbname = PQdb(c);
+    const bool no_role = contains(m, "role \"") && contains(m, "does not exist");
     if (contains(m, "password authentication failed") || contains(m, "no password supplied") ||
-        contains(m, "pg_hba.conf") || contains(m, "authentication failed"))
+        contains(m, "pg_hba.conf") || contains(m, "authentication failed") || no_role)
         return {Fault::cannot_create,
                 strf(tr("%s: authentication failed for %s (pupitre never asks for a password: "
                         "use ~/.pgpass, PGPASSFILE or PGSERVICE)"),
                      name.c_str(), user ? user : "?")};
-    if (contains(m, "does not exist") && contains(m, "database"))
+    if (contains(m, "does not exist") && contains(m, "database \""))
         return {Fault::not_found,
                 strf(tr("%s: the database %s does not exist (a teacher creates it: createdb)"),
                      name.c_str(), dbname ? dbname : "?")};

@@ -3,6 +3,7 @@
 // a copy from one engine to the other and back, byte for byte.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <atomic>
+#include <chrono>
 #include <set>
 #include <thread>
 
@@ -142,7 +143,14 @@ TEST_P(StoreMany, AnotherConsolesCommitIsHeard) {
     ASSERT_TRUE(a->save(20, "%20\nA\n", kNew, "").ok());
     EXPECT_EQ(a->data_version().value, before);
     ASSERT_TRUE(b->save(21, "%21\nB\n", kNew, "").ok());
-    EXPECT_NE(a->data_version().value, before);
+    // A server's notification arrives a moment after the commit: the console
+    // polls every half second; here, up to 5 s.
+    int64_t now = a->data_version().value;
+    for (int i = 0; i < 500 && now == before; ++i) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        now = a->data_version().value;
+    }
+    EXPECT_NE(now, before);
 }
 
 // ---- the server's own ----
