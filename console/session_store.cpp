@@ -1,10 +1,12 @@
 // The Session and its store: the machine's state loaded at the start, the
 // workshop and a run's writes kept, and two consoles on one store (issue
 // 12.9): a classroom server, two terminals of one operator (docs/decisions.md,
-// Two consoles, one operator). Every half second the console asks SQLite
-// whether another connection committed (PRAGMA data_version); if so it takes
-// the other console's origins, correctors and programs, and says what
-// changed. A program open in EDIT holds a lease that tells another console
+// Two consoles, one operator). Every half second the console asks the store
+// whether another connection committed (SQLite's PRAGMA data_version, a
+// server's NOTIFY); if so it takes the other console's origins, correctors
+// and programs, and says what changed. On a server that does not answer,
+// the same poll makes the connection again a step at a time, and the values
+// set meanwhile wait in the outbox (outbox.hpp) until it answers. A program open in EDIT holds a lease that tells another console
 // opening it that someone edits it already (the editing desk's, edit.cpp).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <cmath>
