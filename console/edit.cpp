@@ -182,8 +182,7 @@ Effect EditDesk::save(bool force) {
         if (r.error) {
             // A server out of reach: the text stays here (and in the journal)
             // and is saved when it answers, over the revision it was based on.
-            const bool wait =
-                r.error.fault == store::Fault::io && b_.store()->engine() == "postgresql";
+            const bool wait = r.error.gone;
             save_waiting_ = wait ? editor_.number : -1;
             b_.say(
                 wait ? tr("not saved yet: the store does not answer; kept here, saved when it does")

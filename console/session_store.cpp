@@ -6,9 +6,9 @@
 // server's NOTIFY); if so it takes the other console's origins, correctors
 // and programs, and says what changed. On a server that does not answer,
 // the same poll makes the connection again a step at a time, and the values
-// set meanwhile wait in the outbox (outbox.hpp) until it answers. A program open in EDIT holds a lease that tells another console
-// opening it that someone edits it already (the editing desk's, edit.cpp).
-// SPDX-License-Identifier: GPL-3.0-or-later
+// set meanwhile wait in the outbox (outbox.hpp) until it answers. A program open in EDIT holds a
+// lease that tells another console opening it that someone edits it already (the editing desk's,
+// edit.cpp). SPDX-License-Identifier: GPL-3.0-or-later
 #include <cmath>
 #include <cstdlib>
 
@@ -138,8 +138,7 @@ Bench::Stored Session::store_values(const std::vector<std::pair<std::string, int
     if (!r.error) return {};
     // A server out of reach: nothing of it was written; kept here in order and
     // sent when it answers again (the same values again are no new change).
-    if (r.error.fault != store::Fault::io || store_->engine() != "postgresql")
-        return {r.error.message, false};
+    if (!r.error.gone) return {r.error.message, false};
     for (const auto& [name, value] : values) outbox_.add(store_key_, name, value, source);
     return {tr("the store does not answer: kept here, stored when it does"), true};
 }

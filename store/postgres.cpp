@@ -34,7 +34,9 @@ constexpr int kConnectionLost = 2;
 
 constexpr Oid kByteaOid = 17;
 constexpr Oid kTextOid = 25;
-constexpr const char* kChannel = "pupitre_store";
+// The channel a commit is announced on (Store::data_version).
+constexpr const char* kNotify = "NOTIFY pupitre_store";
+constexpr const char* kListen = "LISTEN pupitre_store";
 
 // ?N -> $N outside quoted strings: the statements both engines share are
 // written with SQLite's numbered parameters. Also says which numbers appear.
@@ -173,30 +175,18 @@ class PgBackend final : public db::Backend {
         return stmts_.emplace(sql, std::move(s)).first->second.get();
     }
     int exec(const char* sql) override { return run(sql); }
-    int begin_write() override {
-        if (int r = revive()) return r;
-        int rc = run("BEGIN ISOLATION LEVEL SERIALIZABLE");
-        in_tx_ = rc == db::kOk;
-        return rc;
-    }
+    int begin_write() override { return begin("BEGIN ISOLATION LEVEL SERIALIZABLE"); }
     // READ COMMITTED: after waiting for the lock, the next statement sees what
     // the process that held it committed.
     int begin_migration() override {
-        if (int r = revive()) return r;
-        int rc = run("BEGIN");
-        in_tx_ = rc == db::kOk;
+        int rc = begin("BEGIN");
         if (rc == db::kOk) rc = run("SELECT pg_advisory_xact_lock(1314212145)");  // "NUM1"
         return rc;
     }
-    int begin_read() override {
-        if (int r = revive()) return r;
-        int rc = run("BEGIN ISOLATION LEVEL REPEATABLE READ READ ONLY");
-        in_tx_ = rc == db::kOk;
-        return rc;
-    }
+    int begin_read() override { return begin("BEGIN ISOLATION LEVEL REPEATABLE READ READ ONLY"); }
     // The other consoles hear of the change once it is committed.
     int commit() override {
-        int rc = run("NOTIFY pupitre_store");
+        int rc = run(kNotify);
         if (rc == db::kOk) rc = run("COMMIT");
         in_tx_ = false;
         return rc;
@@ -222,9 +212,15 @@ class PgBackend final : public db::Backend {
     int after_copy() override;
     std::string_view engine() const override { return "postgresql"; }
 
-    int listen() { return run("LISTEN pupitre_store"); }
+    int listen() { return run(kListen); }
 
   private:
+    int begin(const char* sql) {
+        if (int r = revive()) return r;
+        int rc = run(sql);
+        in_tx_ = rc == db::kOk;
+        return rc;
+    }
     // A connection the server dropped (restarted, stopped) is made again
     // before the next transaction; never inside one, whose work is lost. A
     // live store (the console) makes it a non-blocking step per call.
@@ -347,9 +343,12 @@ StoreError PgBackend::explain(int rc, const std::string& head) const {
         return {Fault::bad_data,
                 head + strf(tr("the store is damaged (%s); nothing was changed: restore a backup"),
                             "revision missing")};
-    if (rc == kConnectionLost)
-        return {Fault::io,
-                head + strf(tr("the server is gone (%s); nothing was changed"), m.c_str())};
+    if (rc == kConnectionLost) {
+        StoreError e{Fault::io,
+                     head + strf(tr("the server is gone (%s); nothing was changed"), m.c_str())};
+        e.gone = true;
+        return e;
+    }
     const std::string& s = sqlstate_;
     if (s == "40001" || s == "40P01")
         return {Fault::io, head + tr("other consoles changed the same rows at the same time; "

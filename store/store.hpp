@@ -45,6 +45,9 @@ struct StoreError {
     // A serialization failure or a deadlock on a server: the transaction may
     // be run again (Store::in_write does, a bounded number of times).
     bool retry = false;
+    // The server's connection is lost (stopped, restarted, out of reach):
+    // nothing was written, and the same call may succeed once it answers.
+    bool gone = false;
     explicit operator bool() const { return fault != Fault::none; }
 };
 

@@ -67,6 +67,8 @@ gone)
     cmd ":set D1.Z=7"
     expect_message 'D1.Z 0.000 -> 7.000; the store does not answer: kept here, stored when it does'
     sgr_line 'the store does not answer' | grep -q $'\e\[' || fail "the message is not coloured"
+    # The server's own notices ("terminating connection…") never reach the screen.
+    screen | grep -q 'terminating connection' && fail "a server notice was printed over the console"
     # The console answers at once: a page, the typed line.
     t0=$(date +%s%N)
     cmd ":page pref"
