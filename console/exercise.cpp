@@ -16,8 +16,8 @@
 #include <string_view>
 
 #include "console/refusal.hpp"
+#include "core/digest.hpp"
 #include "core/i18n.hpp"
-#include "core/sha256.hpp"
 #include "core/workshop/workshop.hpp"
 #include "store/store.hpp"
 
@@ -41,19 +41,6 @@ std::string to_hex(std::string_view bytes) {
         out += h;
     }
     return out;
-}
-
-// 32 random bytes as hex, or why /dev/urandom gave none.
-Answer<std::string> random_hex() {
-    unsigned char b[32];
-    int fd = open("/dev/urandom", O_RDONLY | O_CLOEXEC);
-    if (fd < 0 || read(fd, b, sizeof b) != ssize_t(sizeof b)) {
-        Answer<std::string> no{{}, strf(tr("cannot read /dev/urandom: %s"), std::strerror(errno))};
-        if (fd >= 0) close(fd);
-        return no;
-    }
-    close(fd);
-    return {to_hex(std::string_view(reinterpret_cast<const char*>(b), sizeof b)), {}};
 }
 
 // A keystream from SHA-256 of the seed and a counter, XORed in, as hex.
@@ -96,8 +83,8 @@ std::string class_key(bool create, std::string& key) {
     if (!create)
         return strf(tr("no class key at %s: the teacher's key is needed (PUPITRE_CLASS_KEY)"),
                     path.c_str());
-    auto [fresh, why] = random_hex();
-    if (fresh.empty()) return why;
+    std::string fresh = random_hex(32);
+    if (fresh.empty()) return tr("the system gave no random bytes for the class key");
     std::error_code ec;
     std::filesystem::create_directories(std::filesystem::path(path).parent_path(), ec);
     int fd = open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);

@@ -8,8 +8,8 @@
 #include <cmath>
 
 #include "console/exercise.hpp"
+#include "core/digest.hpp"
 #include "core/i18n.hpp"
-#include "core/sha256.hpp"
 #include "core/workshop/workshop.hpp"
 #include "store/link.hpp"
 #include "store/store.hpp"

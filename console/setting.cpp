@@ -9,11 +9,10 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
-#include <random>
 
+#include "core/digest.hpp"
 #include "core/i18n.hpp"
 #include "core/interp/value_name.hpp"
-#include "core/sha256.hpp"
 #include "core/sim/setting.hpp"
 #include "store/link.hpp"
 #include "store/store.hpp"
@@ -314,11 +313,8 @@ Effect SettingDesk::protect_command(std::string_view args) {
             b_.store()->set_setting("protect.pin", "");
             b_.say(tr("PIN removed: the protection key needs none"));
         } else {
-            std::random_device rd;
-            char salt[17];
-            std::snprintf(salt, sizeof salt, "%08x%08x", rd(), rd());
-            b_.store()->set_setting("protect.pin",
-                                    std::string(salt) + ":" + sha256_hex(std::string(salt) + rest));
+            const std::string salt = random_hex(8);
+            b_.store()->set_setting("protect.pin", salt + ":" + sha256_hex(salt + rest));
             b_.say(tr("PIN set: :protect off PIN is needed to unlock"));
         }
     } else {

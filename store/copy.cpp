@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "core/digest.hpp"
 #include "core/i18n.hpp"
-#include "core/sha256.hpp"
 #include "store/sql.hpp"
 #include "store/store.hpp"
 

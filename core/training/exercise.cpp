@@ -8,9 +8,9 @@
 #include <cmath>
 #include <cstring>
 
+#include "core/digest.hpp"
 #include "core/i18n.hpp"
 #include "core/keyvalue.hpp"
-#include "core/sha256.hpp"
 #include "core/workshop/workshop.hpp"
 
 namespace pupitre {

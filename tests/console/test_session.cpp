@@ -9,7 +9,7 @@
 
 #include "console/bindings.hpp"
 #include "console/commands.hpp"
-#include "core/sha256.hpp"
+#include "core/digest.hpp"
 #include "tests/console/fixture.hpp"
 
 using namespace pupitre;

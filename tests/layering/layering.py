@@ -36,7 +36,7 @@ RULES = [
 ]
 
 # The core's folders from the ground up: the files at core/'s top (diag, i18n,
-# numfmt, keyvalue, sha256) first, then each folder, which may include its own
+# numfmt, keyvalue, digest) first, then each folder, which may include its own
 # headers and those of the folders before it, never one after it.
 CORE_ORDER = ("", "parse", "geometry", "cycles", "interp", "output", "workshop", "sim",
               "training")

@@ -9,7 +9,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "core/sha256.hpp"
+#include "core/digest.hpp"
 #include "core/training/exercise.hpp"
 #include "core/training/grade.hpp"
 #include "core/workshop/workshop.hpp"
