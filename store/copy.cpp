@@ -59,13 +59,17 @@ constexpr Table kTables[] = {
      "tttit"},
     {"exercises", "SELECT name, text, added_ms, who FROM exercises ORDER BY name",
      "INSERT INTO exercises (name, text, added_ms, who) VALUES (?1, ?2, ?3, ?4)", "ttit"},
+    {"exercise_texts", "SELECT sha, name, text, added_ms, who FROM exercise_texts ORDER BY sha",
+     "INSERT INTO exercise_texts (sha, name, text, added_ms, who) VALUES (?1, ?2, ?3, ?4, ?5)",
+     "tttit"},
     {"attempts",
      "SELECT id, exercise, exercise_sha, student, machine, started_ms, submitted_ms, seed, score, "
-     "seconds, crashes, scrapped, mistakes, found, report, signature FROM attempts ORDER BY id",
+     "seconds, crashes, scrapped, mistakes, found, report, signature, record FROM attempts "
+     "ORDER BY id",
      "INSERT INTO attempts (id, exercise, exercise_sha, student, machine, started_ms, "
-     "submitted_ms, seed, score, seconds, crashes, scrapped, mistakes, found, report, signature) "
-     "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16)",
-     "itttiiitifiitttt"},
+     "submitted_ms, seed, score, seconds, crashes, scrapped, mistakes, found, report, signature, "
+     "record) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, ?17)",
+     "itttiiitifiittttt"},
 };
 
 // One row as bytes the checksum reads the same on both engines: each column

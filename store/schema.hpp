@@ -133,6 +133,19 @@ CREATE TABLE attempts (
 ) STRICT;
 CREATE INDEX attempts_by_exercise ON attempts (exercise, student, id);
 )sql",
+    // 4: the class (issue 34): every text an exercise had before its current
+    // one, so that an attempt made on it is graded and reported on it; and
+    // each attempt's record of what the operator did that the grade reads.
+    R"sql(
+CREATE TABLE exercise_texts (
+    sha      TEXT PRIMARY KEY,               -- SHA-256 of the text, as attempts.exercise_sha
+    name     TEXT NOT NULL,
+    text     TEXT NOT NULL,
+    added_ms INTEGER NOT NULL,
+    who      TEXT NOT NULL
+) STRICT;
+ALTER TABLE attempts ADD COLUMN record TEXT NOT NULL DEFAULT '';  -- readings and shims, a line each
+)sql",
 };
 
 inline constexpr int kCount = int(sizeof kMigrations / sizeof kMigrations[0]);

@@ -145,6 +145,17 @@ CREATE TABLE attempts (
 );
 CREATE INDEX attempts_by_exercise ON attempts (exercise, student, id);
 )sql",
+    // 4: every earlier text of an exercise, and each attempt's record.
+    R"sql(
+CREATE TABLE exercise_texts (
+    sha      text PRIMARY KEY,
+    name     text NOT NULL,
+    text     text NOT NULL,
+    added_ms bigint NOT NULL,
+    who      text NOT NULL
+);
+ALTER TABLE attempts ADD COLUMN record text NOT NULL DEFAULT '';
+)sql",
 };
 
 inline constexpr int kCount = int(sizeof kMigrations / sizeof kMigrations[0]);

@@ -38,6 +38,16 @@ std::string os_user() {
     return "uid " + std::to_string(getuid());
 }
 
+std::string Store::machine_row(std::string_view name) const {
+    if (class_state_ != 1 || name.find('/') != std::string_view::npos) return std::string(name);
+    return user_ + "/" + std::string(name);
+}
+
+std::string Store::machine_shown(std::string_view row) const {
+    if (class_state_ != 1 || !row.starts_with(user_ + "/")) return std::string(row);
+    return std::string(row.substr(user_.size() + 1));
+}
+
 std::string default_path() {
     if (const char* x = std::getenv("XDG_DATA_HOME"); x && *x == '/')
         return std::string(x) + "/pupitre/pupitre.db";
@@ -73,6 +83,9 @@ std::string_view Store::engine() const {
 Result<std::unique_ptr<Store>> Store::open(const std::string& target, const Options& o) {
     auto r = db::is_server(target) ? open_postgres(target, o) : open_sqlite(target, o);
     if (r.value) r.value->target_ = target;
+    // Whether a class is set up there decides where machines are kept
+    // (machine_row); a server that cannot say now is asked again later.
+    if (r.value && r.value->engine() == "postgresql") r.value->class_server();
     return r;
 }
 

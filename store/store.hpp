@@ -26,7 +26,7 @@ class Use;
 }
 
 inline constexpr uint32_t kApplicationId = 0x4E554D31;  // "NUM1" in PRAGMA application_id
-inline constexpr int kSchemaVersion = 3;                // PRAGMA user_version we write
+inline constexpr int kSchemaVersion = 4;                // PRAGMA user_version we write
 
 // What went wrong, as the exit code the command line gives (sysexits).
 enum class Fault {
@@ -177,6 +177,7 @@ struct Attempt {
     int crashes = 0;
     bool scrapped = false;
     std::string mistakes, found, report, signature;
+    std::string record;  // what the operator did that the grade reads (readings, shims)
 };
 
 // What `store copy` did: rows copied per table, and whether both sides agree.
@@ -187,6 +188,20 @@ struct CopyReport {
         std::string checksum;  // SHA-256 of the table's rows in key order, both sides
     };
     std::vector<Table> tables;
+};
+
+// ---- the class on a server (pupitre-exercise(5), THE CLASS ON A SERVER) ----
+
+// A login of the class: its name, its class (a group role) and, once, when
+// `class add-student` made it, its initial password.
+struct Login {
+    std::string name, group, password;
+};
+// A name pupitre makes a login or a class of: lowercase letters, digits,
+// _ . -, beginning with a letter, not pg_… or pupitre_…, at most 63 bytes.
+bool login_name_ok(std::string_view name);
+struct NamedText {
+    std::string name, text;
 };
 
 // One connection to a store. Not shared between threads: a thread or a
@@ -218,6 +233,15 @@ class Store {
     // How many times a write was run again after a serialization failure.
     int64_t retried() const { return retried_; }
     const std::string& user() const { return user_; }
+    // Where the machine `name` is kept. On a class's server (class init)
+    // each login has machines of its own, "LOGIN/NAME" ("alice/lathe"): 30
+    // students at 30 consoles each set their own lathe. A name with a '/' is
+    // taken as it is (a teacher looking at a student's); on a file or a
+    // server with no class, the name itself, shared by every login.
+    std::string machine_row(std::string_view name) const;
+    // A stored machine's name as this login calls it: its own without the
+    // "LOGIN/" (the reverse of machine_row), another's whole.
+    std::string machine_shown(std::string_view row) const;
     bool created() const { return created_; }  // this open created the file
 
     // Programs. Each call is one transaction.
@@ -273,7 +297,12 @@ class Store {
     Result<std::vector<ImdEntry>> imd_history(std::string_view machine, int limit = 100);
 
     // Training (store/training.cpp): the class's exercises, the attempts.
+    // An exercise's text; the text it replaces is kept (exercise_text) for
+    // the attempts made on it.
     StoreError put_exercise(std::string_view name, std::string_view text);
+    // The text of `name` whose SHA-256 is `sha`: the current one or one it
+    // replaced; nullopt when the store has neither.
+    Result<std::optional<std::string>> exercise_text(std::string_view name, std::string_view sha);
     Result<std::optional<std::string>> exercise(std::string_view name);
     Result<std::vector<std::string>> exercises();
     // The attempt of `student` at `exercise` still in progress, if any.
@@ -287,6 +316,26 @@ class Store {
     StoreError submit_attempt(const Attempt& a);
     // Every attempt (of one exercise when `exercise` is given), oldest first.
     Result<std::vector<Attempt>> attempts(std::string_view exercise = "");
+
+    // The class (store/class.cpp; PostgreSQL only). Whether `class init` set
+    // it up in this store: attempts are then opened, crashed and submitted
+    // through the server's functions, their seed drawn there.
+    Result<bool> class_server();
+    // Sets the class up (roles, grants, policies, key, functions: once) and
+    // the class `group`; the shipped `exercises` are added where missing.
+    StoreError class_init(std::string_view group, const std::vector<NamedText>& exercises);
+    // Logins for `names` in `group`, each with a random password, returned once.
+    Result<std::vector<Login>> add_students(std::string_view group,
+                                            const std::vector<std::string>& names);
+    Result<std::vector<Login>> students(std::string_view group = "");  // "": every class
+    Result<std::string> class_signing_key();                           // a teacher's login reads it
+    // This login's attempt at `exercise`: its open one, else a new one with
+    // a seed the server draws; the machine `machine` (made LOGIN/…) is its.
+    Result<Attempt> open_class_attempt(std::string_view exercise, std::string_view machine);
+    // :submit: the provisional result and the record, at the server's time.
+    StoreError submit_class_attempt(const Attempt& a);
+    // The teacher's grade, signed, of a submitted attempt not yet graded.
+    StoreError grade_attempt(const Attempt& a);
 
     // A number that changes when another connection (another console)
     // commits, not on this one's own writes. Polled to follow other consoles.
@@ -341,6 +390,7 @@ class Store {
                                              std::string_view source, std::string_view profile,
                                              const std::string& what);
     int64_t now_ms() const;
+    int class_state_ = -1;  // class_server(): -1 not asked yet, 0 no, 1 yes
 
     std::unique_ptr<db::Backend> db_;
     std::string path_;

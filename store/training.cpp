@@ -1,6 +1,7 @@
 // Training in the store (issue 16): the class's exercises and every attempt
 // with its grade. One statement per call: SQLite makes each atomic.
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/digest.hpp"
 #include "core/i18n.hpp"
 #include "store/sql.hpp"
 #include "store/store.hpp"
@@ -11,7 +12,7 @@ namespace {
 
 constexpr const char* kAttemptColumns =
     "id, exercise, exercise_sha, student, machine, started_ms, submitted_ms, seed, score, "
-    "seconds, crashes, scrapped, mistakes, found, report, signature";
+    "seconds, crashes, scrapped, mistakes, found, report, signature, record";
 
 Attempt read_attempt(const sql::Use& u) {
     Attempt a;
@@ -31,6 +32,7 @@ Attempt read_attempt(const sql::Use& u) {
     a.found = u.str(13);
     a.report = u.str(14);
     a.signature = u.str(15);
+    a.record = u.str(16);
     return a;
 }
 
@@ -38,6 +40,27 @@ Attempt read_attempt(const sql::Use& u) {
 
 StoreError Store::put_exercise(std::string_view name, std::string_view text) {
     return in_write([&]() -> StoreError {
+        // The text replaced, kept under its SHA-256 for the attempts made on it.
+        std::string old;
+        bool had = false;
+        {
+            sql::Use u = use("SELECT text FROM exercises WHERE name = ?1");
+            if (u.error) return u.error;
+            int rc = u.bind(1, name).step();
+            if (rc == db::kRow)
+                old = u.str(0), had = true;
+            else if (rc != db::kDone)
+                return fail(rc, tr("cannot read the exercises"));
+        }
+        if (had && old != text) {
+            sql::Use u =
+                use("INSERT INTO exercise_texts (sha, name, text, added_ms, who) "
+                    "VALUES (?1, ?2, ?3, ?4, ?5) ON CONFLICT (sha) DO NOTHING");
+            if (u.error) return u.error;
+            u.bind(1, sha256_hex(old)).bind(2, name).bind(3, old).bind(4, now_ms()).bind(5, user_);
+            if (int rc = u.step(); rc != db::kDone)
+                return fail(rc, tr("cannot store the exercise"));
+        }
         sql::Use u =
             use("INSERT INTO exercises (name, text, added_ms, who) VALUES (?1, ?2, ?3, ?4) "
                 "ON CONFLICT (name) DO UPDATE SET text = ?2, added_ms = ?3, who = ?4");
@@ -56,6 +79,21 @@ Result<std::optional<std::string>> Store::exercise(std::string_view name) {
     e = u.error;
     if ((r.error = e)) return r;
     int rc = u.bind(1, name).step();
+    if (rc == db::kRow)
+        r.value = u.str(0);
+    else if (rc != db::kDone)
+        r.error = fail(rc, tr("cannot read the exercises"));
+    return r;
+}
+
+Result<std::optional<std::string>> Store::exercise_text(std::string_view name,
+                                                        std::string_view sha) {
+    auto now = exercise(name);
+    if (now.error || (now.value && sha256_hex(*now.value) == sha)) return now;
+    Result<std::optional<std::string>> r;
+    sql::Use u = use("SELECT text FROM exercise_texts WHERE sha = ?1 AND name = ?2");
+    if ((r.error = u.error)) return r;
+    int rc = u.bind(1, sha).bind(2, name).step();
     if (rc == db::kRow)
         r.value = u.str(0);
     else if (rc != db::kDone)
@@ -95,6 +133,7 @@ Result<std::optional<Attempt>> Store::open_attempt(std::string_view exercise,
 
 StoreError Store::start_attempt(Attempt& a) {
     a.started_ms = now_ms();
+    a.machine = machine_row(a.machine);
     return in_write([&]() -> StoreError {
         sql::Use u =
             use("INSERT INTO attempts (exercise, exercise_sha, student, machine, started_ms) "
@@ -114,11 +153,17 @@ StoreError Store::start_attempt(Attempt& a) {
 }
 
 StoreError Store::add_crash(int64_t id) {
+    // On a class's server a student writes no attempt: the server counts.
+    auto on_class = class_server();
+    if (on_class.error) return on_class.error;
     return in_write([&]() -> StoreError {
-        sql::Use u = use("UPDATE attempts SET crashes = crashes + 1 WHERE id = ?1");
+        sql::Use u =
+            use(on_class.value ? "SELECT pupitre_add_crash(?1)"
+                               : "UPDATE attempts SET crashes = crashes + 1 WHERE id = ?1");
         if (u.error) return u.error;
-        if (int rc = u.bind(1, id).step(); rc != db::kDone)
-            return fail(rc, tr("cannot store the attempt"));
+        int rc = u.bind(1, id).step();
+        if (on_class.value && rc == db::kRow) rc = u.step();
+        if (rc != db::kDone) return fail(rc, tr("cannot store the attempt"));
         return {};
     });
 }
@@ -128,11 +173,12 @@ StoreError Store::submit_attempt(const Attempt& a) {
         sql::Use u =
             use("UPDATE attempts SET submitted_ms = ?2, seed = ?3, score = ?4, seconds = ?5, "
                 "crashes = ?6, scrapped = ?7, mistakes = ?8, found = ?9, report = ?10, signature = "
-                "?11 WHERE id = ?1 AND submitted_ms IS NULL RETURNING id");
+                "?11, record = ?12 WHERE id = ?1 AND submitted_ms IS NULL RETURNING id");
         if (u.error) return u.error;
         u.bind(1, a.id).bind(2, a.submitted_ms).bind(3, a.seed).bind(4, a.score);
         u.bind(5, a.seconds).bind(6, a.crashes).bind(7, a.scrapped ? 1 : 0);
         u.bind(8, a.mistakes).bind(9, a.found).bind(10, a.report).bind(11, a.signature);
+        u.bind(12, a.record);
         int rc = u.step();
         if (rc == db::kDone) return {Fault::not_found, tr("the attempt was submitted already")};
         if (rc != db::kRow) return fail(rc, tr("cannot store the attempt"));

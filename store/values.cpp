@@ -64,6 +64,7 @@ constexpr const char* kInsertMachine =
 }  // namespace
 
 StoreError Store::put_machine(std::string_view name, std::string_view profile) {
+    const std::string row = machine_row(name);
     return in_write([&]() -> StoreError {
         StoreError e;
         {
@@ -72,7 +73,7 @@ StoreError Store::put_machine(std::string_view name, std::string_view profile) {
                 "ON CONFLICT (name) DO UPDATE SET profile = ?2, updated_ms = ?3");
             e = u.error;
             if (!e) {
-                u.bind(1, name).bind(2, profile).bind(3, now_ms());
+                u.bind(1, row).bind(2, profile).bind(3, now_ms());
                 if (int rc = u.step(); rc != db::kDone)
                     e = fail(rc, tr("cannot store the machine profile"));
             }
@@ -88,7 +89,7 @@ Result<std::vector<std::string>> Store::machines() {
     e = u.error;
     if ((r.error = e)) return r;
     int rc;
-    while ((rc = u.step()) == db::kRow) r.value.push_back(u.str(0));
+    while ((rc = u.step()) == db::kRow) r.value.push_back(machine_shown(u.str(0)));
     if (rc != db::kDone) r.error = fail(rc, tr("cannot list the machines"));
     return r;
 }
@@ -99,7 +100,7 @@ Result<std::string> Store::machine_profile(std::string_view name) {
     sql::Use u = use("SELECT profile FROM machines WHERE name = ?1");
     e = u.error;
     if ((r.error = e)) return r;
-    int rc = u.bind(1, name).step();
+    int rc = u.bind(1, machine_row(name)).step();
     if (rc == db::kRow)
         r.value = u.str(0);
     else if (rc == db::kDone)
@@ -119,7 +120,7 @@ Result<std::map<std::string, int64_t>> Store::values(std::string_view machine) {
             "UNION ALL SELECT 0, kind, axis, value FROM origins WHERE machine = ?1");
     e = u.error;
     if ((r.error = e)) return r;
-    u.bind(1, machine);
+    u.bind(1, machine_row(machine));
     int rc;
     while ((rc = u.step()) == db::kRow)
         if (ValueName n; row_name(u.i64(0), u.str(1), u.str(2), n))
@@ -145,7 +146,8 @@ Result<std::vector<Change>> Store::set_values(std::string_view machine,
         }
     const std::string what =
         strf(tr("cannot store the correctors and origins of %s"), std::string(machine).c_str());
-    return in_write([&] { return write_values(machine, v, names, source, profile, what); });
+    const std::string row = machine_row(machine);
+    return in_write([&] { return write_values(row, v, names, source, profile, what); });
 }
 
 // Inside set_values' transaction.
@@ -244,14 +246,15 @@ Result<std::vector<AuditRow>> Store::audit(std::string_view machine, int limit) 
             "WHERE ?1 = '' OR machine = ?1 ORDER BY id DESC LIMIT ?2");
     e = u.error;
     if ((r.error = e)) return r;
-    u.bind(1, machine).bind(2, limit > 0 ? int64_t(limit) : kNoLimit);
+    u.bind(1, machine.empty() ? std::string() : machine_row(machine))
+        .bind(2, limit > 0 ? int64_t(limit) : kNoLimit);
     int rc;
     while ((rc = u.step()) == db::kRow) {
         AuditRow a;
         a.id = u.i64(0);
         a.at_ms = u.i64(1);
         a.who = u.str(2);
-        a.machine = u.str(3);
+        a.machine = machine_shown(u.str(3));
         a.name = u.str(4);
         if (!u.is_null(5)) a.old_value = u.i64(5);
         if (!u.is_null(6)) a.new_value = u.i64(6);
@@ -286,7 +289,7 @@ Result<std::optional<Store::Workshop>> Store::workshop(std::string_view machine)
     sql::Use u = use("SELECT setup, part FROM workshops WHERE machine = ?1");
     e = u.error;
     if ((r.error = e)) return r;
-    int rc = u.bind(1, machine).step();
+    int rc = u.bind(1, machine_row(machine)).step();
     if (rc == db::kRow)
         r.value = Workshop{u.str(0), u.str(1)};
     else if (rc != db::kDone)
@@ -294,8 +297,10 @@ Result<std::optional<Store::Workshop>> Store::workshop(std::string_view machine)
     return r;
 }
 
-StoreError Store::put_workshop(std::string_view machine, std::string_view setup,
+StoreError Store::put_workshop(std::string_view name, std::string_view setup,
                                std::string_view part) {
+    const std::string row = machine_row(name);
+    const std::string_view machine = row;
     return in_write([&]() -> StoreError {
         StoreError e;
         {
@@ -354,7 +359,9 @@ StoreError Store::set_setting(std::string_view key, std::string_view value) {
     });
 }
 
-StoreError Store::add_imd(std::string_view machine, std::string_view block) {
+StoreError Store::add_imd(std::string_view name, std::string_view block) {
+    const std::string row = machine_row(name);
+    const std::string_view machine = row;
     return in_write([&]() -> StoreError {
         StoreError e;
         const int64_t now = now_ms();
@@ -390,7 +397,9 @@ StoreError Store::add_imd(std::string_view machine, std::string_view block) {
     });
 }
 
-Result<std::vector<ImdEntry>> Store::imd_history(std::string_view machine, int limit) {
+Result<std::vector<ImdEntry>> Store::imd_history(std::string_view name, int limit) {
+    const std::string row = machine_row(name);
+    const std::string_view machine = row;
     Result<std::vector<ImdEntry>> r;
     StoreError e;
     sql::Use u =
@@ -401,7 +410,8 @@ Result<std::vector<ImdEntry>> Store::imd_history(std::string_view machine, int l
     u.bind(1, machine).bind(2, limit > 0 ? int64_t(limit) : kNoLimit);
     int rc;
     while ((rc = u.step()) == db::kRow)
-        r.value.push_back(ImdEntry{u.i64(0), u.i64(1), u.str(2), u.str(3), u.str(4)});
+        r.value.push_back(
+            ImdEntry{u.i64(0), u.i64(1), u.str(2), machine_shown(u.str(3)), u.str(4)});
     if (rc != db::kDone) {
         r.value.clear();
         r.error = fail(rc, tr("cannot read the IMD history"));

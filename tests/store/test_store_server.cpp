@@ -179,9 +179,11 @@ TEST_F(StoreServer, ANewerSchemaIsRefusedAnOlderOneUpgraded) {
     EXPECT_EQ(r.error.fault, Fault::bad_data);
     EXPECT_NE(r.error.message.find("schema 99"), std::string::npos) << r.error.message;
     EXPECT_NE(r.error.message.find("up to " + std::to_string(kSchemaVersion)), std::string::npos);
-    // A store of schema 2 (before training) gets its tables, in one transaction.
+    // A store of schema 2 (before training and the class) gets its tables,
+    // in one transaction.
     ASSERT_EQ(test::pg_admin("SET search_path = " + schema +
-                             "; DROP TABLE attempts; DROP TABLE exercises; UPDATE pupitre_meta "
+                             "; DROP TABLE attempts; DROP TABLE exercises; DROP TABLE "
+                             "exercise_texts; UPDATE pupitre_meta "
                              "SET value = 2 WHERE key = 'schema_version'"),
               "");
     auto s = test::open_store(db);
