@@ -209,8 +209,17 @@ void first_screen(console::Session& s, const MachineProfile& m) {
 bool exercise_setup(const ConsoleArgs& a, store::Store& st, training::Exercise& e, std::string& key,
                     MachineProfile& m, int& rc) {
     rc = kNoInput;
-    std::string why = console::find_exercise(&st, a.exercise, e);
-    if (why.empty()) why = console::store_class_key(st, true, key);
+    auto on_class = st.class_server();
+    std::string why = on_class.error ? on_class.error.message : std::string();
+    // On a server a person is their login: the server says who they are.
+    if (why.empty() && st.engine() == "postgresql" && !a.student.empty())
+        why = tr("--student: on a server store you are your login (the server says who you are)");
+    if (why.empty() && on_class.value && console::exercise_is_file(a.exercise))
+        why = strf(tr("%s: on a class's server the exercises are the server's (pupitre exercise "
+                      "list)"),
+                   a.exercise.c_str());
+    if (why.empty()) why = console::find_exercise(&st, a.exercise, e);
+    if (why.empty() && !on_class.value) why = console::store_class_key(st, true, key);
     if (why.empty() && !a.machine.empty() && a.machine != e.machine)
         why = strf(tr("exercise %s is on the %s, not on %s"), e.name.c_str(), e.machine.c_str(),
                    a.machine.c_str());
@@ -269,10 +278,13 @@ int console(const ConsoleArgs& a) {
             stderr);
         return kNoInput;
     }
+    // The student: on a server their login, on a file --student or the OS user.
+    const std::string student =
+        st->engine() == "postgresql" ? st->user() : console::student_name(a.student);
     console::ReadlineInput input;
     console::Session s(m, std::move(st), input);
     if (!a.exercise.empty()) {
-        if (std::string why = s.start_exercise(ex, a.student, key); !why.empty()) {
+        if (std::string why = s.start_exercise(ex, student, key); !why.empty()) {
             std::fprintf(stderr, tr("pupitre: %s\n"), why.c_str());
             return kDataErr;
         }

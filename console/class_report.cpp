@@ -22,11 +22,12 @@ struct Row {
     int attempts = 0, in_progress = 0, best = -1, last = -1, crashes = 0, scrapped = 0;
     double best_seconds = 0;
     bool tampered = false;
+    int ungraded = 0;  // on a class's server: submitted, not yet graded and signed
     std::map<std::string, int> mistakes;
 };
 
 std::vector<Row> rows_of(const std::vector<store::Attempt>& all, const std::string& key,
-                         std::map<std::string, int>& mistakes) {
+                         bool on_server, std::map<std::string, int>& mistakes) {
     std::map<std::pair<std::string, std::string>, Row> by;
     for (const store::Attempt& a : all) {
         Row& r = by[{a.exercise, a.student}];
@@ -36,6 +37,10 @@ std::vector<Row> rows_of(const std::vector<store::Attempt>& all, const std::stri
             continue;
         }
         ++r.attempts;
+        if (on_server && a.signature.empty()) {
+            ++r.ungraded;
+            continue;
+        }
         // An attempt edited in the store counts for nothing: neither its
         // score nor its time, crashes or mistakes; the row says TAMPERED.
         if (!key.empty() && sign_attempt(a, key) != a.signature) {
@@ -115,6 +120,7 @@ std::string table(const std::vector<Row>& rows, const std::map<std::string, int>
             strf(" %8s %6s %6s %8s %7d %8d  %s%s", n.c_str(), score(r.best).c_str(),
                  score(r.last).c_str(), minutes(r.best_seconds).c_str(), r.crashes, r.scrapped,
                  common_mistakes(r.mistakes).c_str(), r.tampered ? tr("  TAMPERED") : "");
+        if (r.ungraded) line += strf(tr("  UNGRADED %d"), r.ungraded);
         while (!line.empty() && line.back() == ' ') line.pop_back();
         out += line + "\n";
     }
@@ -169,6 +175,7 @@ std::string html(const std::vector<Row>& rows, const std::map<std::string, int>&
             std::to_string(r.crashes) + "</td><td class=\"n\">" + std::to_string(r.scrapped) +
             "</td><td>" + html_escape(common_mistakes(r.mistakes)) +
             (r.tampered ? " <span class=\"bad\">" + html_escape(tr("TAMPERED")) + "</span>" : "") +
+            (r.ungraded ? " " + html_escape(strf(tr("UNGRADED %d"), r.ungraded)) : "") +
             "</td></tr>\n";
     }
     out += "</table>\n<h2>" + html_escape(tr("Mistakes most made")) + "</h2>\n<ol>\n";
@@ -186,9 +193,9 @@ std::string html(const std::vector<Row>& rows, const std::map<std::string, int>&
 }  // namespace
 
 std::string class_report_text(const std::vector<store::Attempt>& attempts, ReportFormat f,
-                              const std::string& key, const std::string& title) {
+                              const std::string& key, const std::string& title, bool on_server) {
     std::map<std::string, int> mistakes;
-    const std::vector<Row> rows = rows_of(attempts, key, mistakes);
+    const std::vector<Row> rows = rows_of(attempts, key, on_server, mistakes);
     switch (f) {
         case ReportFormat::csv:
             return csv(rows);

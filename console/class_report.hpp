@@ -15,7 +15,10 @@ enum class ReportFormat { table, csv, html };
 
 // `key`: the class key, to check each attempt's signature ("": not
 // checked, and the report says so). `title` heads the HTML page.
+// `on_server`: a class's server, where an attempt submitted and not yet
+// signed waits for the teacher's grading (UNGRADED), and counts for nothing.
 std::string class_report_text(const std::vector<store::Attempt>& attempts, ReportFormat f,
-                              const std::string& key, const std::string& title);
+                              const std::string& key, const std::string& title,
+                              bool on_server = false);
 
 }  // namespace pupitre::console

@@ -103,10 +103,15 @@ struct ExerciseArgs {
     std::string output;   // save -o, report --html
     std::string pdf;      // report --pdf
     bool csv = false;
+    std::string group = "class";  // class --class: the class (a group role on the server)
+    bool group_given = false;
+    std::string from;  // class add-student --from FILE.csv
     ConsoleArgs console;
 };
 int exercise(const ExerciseArgs& a);
 int class_report(const ExerciseArgs& a);
+// class report|init|add-student|students|grade (cli_class.cpp).
+int class_command(const ExerciseArgs& a);
 
 int store_import(const StoreArgs& a);
 int store_export(const StoreArgs& a);

@@ -119,6 +119,13 @@ int exercise_truth(const ExerciseArgs& a) {
     }
     std::unique_ptr<store::Store> st;
     if (int rc = open_store(a.db, st)) return rc;
+    if (auto on_class = st->class_server(); on_class.error || on_class.value) {
+        if (on_class.error) return report(on_class.error);
+        std::fputs(tr("pupitre: exercise truth: on a class's server the server draws each "
+                      "attempt's truth; the graded report shows it (pupitre class grade)\n"),
+                   stderr);
+        return kUsage;
+    }
     training::Exercise e;
     if (std::string why = console::find_exercise(st.get(), a.words[1], e); !why.empty()) {
         std::fprintf(stderr, tr("pupitre: %s\n"), why.c_str());
@@ -187,7 +194,7 @@ int exercise_start(const ExerciseArgs& a) {
     ConsoleArgs c = a.console;
     c.db = a.db;
     c.exercise = a.words[0];
-    c.student = console::student_name(a.student);
+    c.student = a.student;  // as given: on a server, --student is refused
     return console(c);
 }
 
@@ -213,10 +220,10 @@ namespace {
 // The table as a PDF through Cairo, beside the HTML report (docs/decisions.md,
 // Exercises hide the truth).
 int report_pdf(const std::string& path, const std::string& title,
-               const std::vector<store::Attempt>& attempts, const std::string& key,
+               const std::vector<store::Attempt>& attempts, const std::string& key, bool on_server,
                std::FILE* said) {
     std::istringstream text(
-        console::class_report_text(attempts, console::ReportFormat::table, key, title));
+        console::class_report_text(attempts, console::ReportFormat::table, key, title, on_server));
     std::vector<std::string> lines;
     for (std::string l; std::getline(text, l);) lines.push_back(l);
     std::FILE* out = std::fopen(path.c_str(), "wb");
@@ -238,10 +245,10 @@ int report_pdf(const std::string& path, const std::string& title,
 
 // The report as one HTML file ("-": on the standard output).
 int report_html(const std::string& path, const std::string& title,
-                const std::vector<store::Attempt>& attempts, const std::string& key,
+                const std::vector<store::Attempt>& attempts, const std::string& key, bool on_server,
                 std::FILE* said) {
     const std::string text =
-        console::class_report_text(attempts, console::ReportFormat::html, key, title);
+        console::class_report_text(attempts, console::ReportFormat::html, key, title, on_server);
     if (path == "-") {
         std::fputs(text.c_str(), stdout);
         return kOk;
@@ -269,8 +276,17 @@ int class_report(const ExerciseArgs& a) {
     if (int rc = open_store(a.db, st)) return rc;
     auto r = st->attempts(exercise);
     if (r.error) return report(r.error);
+    // On a class's server the key is the server's, which a teacher's login
+    // reads; a student's report (their own attempts) is not checked.
+    auto on_class = st->class_server();
+    if (on_class.error) return report(on_class.error);
+    const bool on_server = on_class.value;
     std::string key;
-    if (!console::class_key(false, key).empty()) key.clear();
+    if (on_server) {
+        if (auto k = st->class_signing_key(); !k.error) key = k.value;
+    } else if (!console::class_key(false, key).empty()) {
+        key.clear();
+    }
     const std::string title =
         exercise.empty() ? std::string(tr("pupitre: the class's attempts"))
                          : strf(tr("pupitre: the class's attempts at %s"), exercise.c_str());
@@ -286,13 +302,16 @@ int class_report(const ExerciseArgs& a) {
     int rc = kOk;
     if (a.csv)
         std::fputs(
-            console::class_report_text(r.value, console::ReportFormat::csv, key, title).c_str(),
+            console::class_report_text(r.value, console::ReportFormat::csv, key, title, on_server)
+                .c_str(),
             stdout);
-    if (!a.output.empty()) rc = std::max(rc, report_html(a.output, title, r.value, key, said));
-    if (!a.pdf.empty()) rc = std::max(rc, report_pdf(a.pdf, title, r.value, key, said));
+    if (!a.output.empty())
+        rc = std::max(rc, report_html(a.output, title, r.value, key, on_server, said));
+    if (!a.pdf.empty()) rc = std::max(rc, report_pdf(a.pdf, title, r.value, key, on_server, said));
     if (!a.csv && a.output.empty() && a.pdf.empty())
         std::fputs(
-            console::class_report_text(r.value, console::ReportFormat::table, key, title).c_str(),
+            console::class_report_text(r.value, console::ReportFormat::table, key, title, on_server)
+                .c_str(),
             stdout);
     return rc;
 }

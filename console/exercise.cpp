@@ -134,10 +134,14 @@ std::string truth_allowed(store::Store& st, const training::Exercise& e, const s
                 student.c_str(), e.name.c_str(), path.c_str());
 }
 
+bool exercise_is_file(const std::string& name) {
+    return name.find('/') != std::string::npos ||
+           (name.size() > 9 && name.substr(name.size() - 9) == ".exercise");
+}
+
 std::string find_exercise(store::Store* st, const std::string& name, training::Exercise& e) {
     std::string text;
-    const bool file = name.find('/') != std::string::npos ||
-                      (name.size() > 9 && name.substr(name.size() - 9) == ".exercise");
+    const bool file = exercise_is_file(name);
     if (file) {
         bool ok = false;
         text = read_file(name, ok);
@@ -171,12 +175,32 @@ std::string unscramble(const std::string& text, uint64_t seed) {
     return keystream_xor(raw, seed);
 }
 
+std::string record_text(const training::Context& c) {
+    std::string out;
+    for (double d : c.diameters) out += strf("dia %.4f\n", d);
+    for (double s : c.shims) out += strf("shim %.4f\n", s);
+    return out;
+}
+
+training::Context record_context(const std::string& text) {
+    training::Context c;
+    std::istringstream in(text);
+    std::string word;
+    double v = 0;
+    while (in >> word >> v) {
+        if (word == "dia") c.diameters.push_back(v);
+        if (word == "shim") c.shims.push_back(v);
+    }
+    return c;
+}
+
 std::string sign_attempt(const store::Attempt& a, const std::string& key) {
     std::string fields = strf("%lld|%s|%s|%s|%lld|%lld|%s|%d|%.3f|%d|%d|", (long long)a.id,
                               a.exercise.c_str(), a.exercise_sha.c_str(), a.student.c_str(),
                               (long long)a.started_ms, (long long)a.submitted_ms, a.seed.c_str(),
                               a.score, a.seconds, a.crashes, a.scrapped ? 1 : 0);
     fields += a.mistakes + "|" + a.found + "|" + a.report;
+    if (!a.record.empty()) fields += "|" + a.record;
     return hmac_sha256_hex(key, fields);
 }
 

@@ -33,6 +33,8 @@ std::string store_class_key(store::Store& st, bool create, std::string& key);
 std::string truth_allowed(store::Store& st, const training::Exercise& e, const std::string& student,
                           unsigned caller);
 
+// A name that is a file: a '/' in it, or ending in .exercise.
+bool exercise_is_file(const std::string& name);
 // An exercise by name (the store's, then the shipped ones) or a file
 // (a name with a '/' or ending in .exercise). "" or what is wrong.
 std::string find_exercise(store::Store* st, const std::string& name, training::Exercise& e);
@@ -46,7 +48,15 @@ std::string student_name(const std::string& asked);
 std::string scramble(const std::string& text, uint64_t seed);
 std::string unscramble(const std::string& text, uint64_t seed);
 
-// The signature of a graded attempt: HMAC-SHA-256 of its fields with the key.
+// An attempt's record (store::Attempt::record): what the operator did that
+// the grade reads besides the machine's values and the part, the diameters
+// read and the shims placed, a line each ("dia 40.012", "shim 10"); and the
+// context read back from it, for the teacher's side to grade again.
+std::string record_text(const training::Context& c);
+training::Context record_context(const std::string& text);
+
+// The signature of a graded attempt: HMAC-SHA-256 of its fields with the key
+// (the record too, when it has one: a record-less attempt signs as before).
 std::string sign_attempt(const store::Attempt& a, const std::string& key);
 
 }  // namespace pupitre::console

@@ -50,6 +50,9 @@ Answer<std::unique_ptr<ExerciseRun>> ExerciseRun::open(Bench& b, const training:
                                : tr("exercise %s is on the machining centre: pupitre exercise %s "
                                     "starts it"),
                      e.name.c_str(), e.name.c_str())};
+    auto on_class = st->class_server();
+    if (on_class.error) return {nullptr, on_class.error.message};
+    if (on_class.value) return open_on_class(b, e);
     auto x = std::make_unique<ExerciseRun>(b);
     x->ex_ = e;
     x->student_ = student;
@@ -73,6 +76,39 @@ Answer<std::unique_ptr<ExerciseRun>> ExerciseRun::open(Bench& b, const training:
         a.machine = strf("%s#%s#%s#%lld", m.name.c_str(), e.name.c_str(), student.c_str(),
                          (long long)wall_ms());
         if (store::StoreError err = st->start_attempt(a)) return {nullptr, err.message};
+        auto values = start_values(e, x->truth_);
+        if (!values.empty())
+            if (auto r = st->set_values(a.machine, values, "exercise " + e.name); r.error)
+                return {nullptr, r.error.message};
+    }
+    x->crashes_seen_ = 0;
+    return {std::move(x), {}};
+}
+
+// On a class's server: the server opens the attempt (this login's open one,
+// else a new one) and draws its seed; the truth comes from that seed.
+Answer<std::unique_ptr<ExerciseRun>> ExerciseRun::open_on_class(Bench& b,
+                                                                const training::Exercise& e) {
+    store::Store* st = b.store();
+    auto x = std::make_unique<ExerciseRun>(b);
+    x->ex_ = e;
+    x->on_class_ = true;
+    const std::string machine =
+        strf("%s#%s#%lld", b.machine().name.c_str(), e.name.c_str(), (long long)wall_ms());
+    auto open = st->open_class_attempt(e.name, machine);
+    if (open.error) return {nullptr, open.error.message};
+    store::Attempt& a = x->attempt_;
+    a = open.value;
+    x->student_ = a.student;
+    if (a.exercise_sha != sha256_hex(e.source))
+        return {nullptr, strf(tr("exercise %s changed on the server as it was opened: start again"),
+                              e.name.c_str())};
+    x->seed_ = std::stoull(a.seed, nullptr, 16);
+    if (std::string why = training::draw_setup(e, x->seed_, x->truth_); !why.empty())
+        return {nullptr, strf(tr("exercise %s: its setup: %s"), e.name.c_str(), why.c_str())};
+    x->truth_.name = e.name;
+    x->truth_.description = e.title_here();
+    if (st->machine_shown(a.machine) == machine) {  // a new attempt: its starting values
         auto values = start_values(e, x->truth_);
         if (!values.empty())
             if (auto r = st->set_values(a.machine, values, "exercise " + e.name); r.error)
@@ -185,6 +221,18 @@ Effect ExerciseRun::submit() {
     a.found = found_text;
     a.report.clear();
     for (const std::string& l : report_) a.report += l + "\n";
+    a.record = record_text(ctx_);
+    if (on_class_) {
+        // The teacher's side grades it again and signs: this is provisional.
+        if (store::StoreError e = b_.store()->submit_class_attempt(a))
+            b_.say(strf(tr("the grade was not stored: %s"), e.message.c_str()), true);
+        else
+            b_.say(strf(tr("submitted: %d%% (provisional: the teacher's grading signs it); the "
+                           "report is on the EXERCISE page"),
+                        a.score));
+        b_.show_page(pages::PageId::exercise);
+        return Effect::redraw;
+    }
     a.signature = sign_attempt(a, key_);
     if (store::StoreError e = b_.store()->submit_attempt(a))
         b_.say(strf(tr("the grade was not stored: %s"), e.message.c_str()), true);

@@ -53,6 +53,8 @@ class ExerciseRun {
     void view(pages::View& v) const;
 
   private:
+    static Answer<std::unique_ptr<ExerciseRun>> open_on_class(Bench& b,
+                                                              const training::Exercise& e);
     Bench& b_;
     training::Exercise ex_;
     std::string student_, key_;
@@ -61,6 +63,7 @@ class ExerciseRun {
     store::Attempt attempt_;
     training::Context ctx_;  // the shims placed, the diameters read
     size_t crashes_seen_ = 0;
+    bool on_class_ = false;     // on a class's server: the server opens, counts, the teacher signs
     std::string program_note_;  // the store's program the exercise's replaced, said at start
     std::optional<training::Grade> grade_;
     std::vector<std::string> report_;  // after :submit

@@ -316,8 +316,18 @@ void add_training(CLI::App& app, CommandLine& c, std::vector<Command>& commands)
         "--machine", ea.machine,
         tr("save: the machine whose workshop the exercise is made from (default lathe)"));
     ex->add_option("-o,--output", ea.output, tr("save: write to FILE"))->type_name("FILE");
-    CLI::App* cl = app.add_subcommand("class", tr("the teacher's view: class report [EXERCISE]"));
-    cl->add_option("words", ea.words, tr("report [EXERCISE]"))->required();
+    CLI::App* cl = app.add_subcommand(
+        "class", tr("the teacher's side: class report [EXERCISE], and on a server class init, "
+                    "add-student NAME…, students, grade"));
+    cl->add_option("words", ea.words,
+                   tr("report [EXERCISE] | init | add-student NAME… | students | grade"))
+        ->required();
+    cl->add_option("--class", ea.group,
+                   tr("init, add-student, students: the class (default class)"))
+        ->type_name("NAME")
+        ->each([&ea](const std::string&) { ea.group_given = true; });
+    cl->add_option("--from", ea.from, tr("add-student: the logins from the first column of a CSV"))
+        ->type_name("FILE.csv");
     cl->add_flag("--csv", ea.csv, tr("the report as CSV"));
     cl->add_option("--html", ea.output, tr("the report as one printable HTML file"))
         ->type_name("FILE");
@@ -332,7 +342,7 @@ void add_training(CLI::App& app, CommandLine& c, std::vector<Command>& commands)
     commands.push_back({cl, [](const CommandLine& k) {
                             cli::ExerciseArgs e = k.ea;
                             e.db = k.db;
-                            return cli::class_report(e);
+                            return cli::class_command(e);
                         }});
 }
 

@@ -1,0 +1,151 @@
+#!/usr/bin/env bash
+# The class across hosts (issue 34) on the test server scripts/test starts
+# (scripts/lib/pg.sh): a teacher sets a class up, students log in as
+# themselves and do the June 2005 exam at their consoles in tmux, each then
+# looks at the server through psql with their own login, and the teacher's
+# side grades and signs. Skipped without a server, failed under CI=true.
+#   class.sh PUPITRE_BINARY CASE
+# SPDX-License-Identifier: GPL-3.0-or-later
+set -uo pipefail
+bin=$(realpath "$1") case=$2
+if [ -z "${PUPITRE_TEST_PG:-}" ]; then
+    [ "${CI:-}" = true ] && { echo "CI=true and no PostgreSQL test server"; exit 1; }
+    echo "no PostgreSQL test server (scripts/test starts one)"
+    exit 77
+fi
+. "$(dirname "$0")/lib.sh"
+
+# A schema and logins of this run's own, dropped at the end.
+schema="class_$$_$case"
+alice="alice$$" bob="bob$$" group="c$$"
+psql "$PUPITRE_TEST_PG" -qc "CREATE SCHEMA $schema" >/dev/null || exit 1
+teacher_db="$PUPITRE_TEST_PG options='-csearch_path=$schema'"
+sql() { psql "$PUPITRE_TEST_PG" -qtAc "SET search_path = $schema; $1"; }
+cleanup_class() {
+    psql "$PUPITRE_TEST_PG" -qc "DROP SCHEMA $schema CASCADE" >/dev/null 2>&1
+    for r in "$alice" "$bob" "$group"; do psql "$PUPITRE_TEST_PG" -qc "DROP ROLE IF EXISTS \"$r\"" >/dev/null 2>&1; done
+    cleanup
+}
+trap cleanup_class EXIT
+
+# The teacher: the class, its two logins, their passwords printed once.
+"$bin" --db "$teacher_db" class init --class "$group" > "$work/init" || fail "class init: $(cat "$work/init")"
+grep -q "class $group set up" "$work/init" || fail "init: $(cat "$work/init")"
+"$bin" --db "$teacher_db" class add-student --class "$group" "$alice" "$bob" > "$work/logins" ||
+    fail "add-student"
+pw() { awk -v n="$1" '$1 == n { print $2 }' "$work/logins"; }
+[ -n "$(pw "$alice")" ] && [ -n "$(pw "$bob")" ] || fail "no passwords: $(cat "$work/logins")"
+"$bin" --db "$teacher_db" class students --class "$group" > "$work/students" || fail "students"
+[ "$(cat "$work/students")" = "$group $alice
+$group $bob" ] || fail "students: $(cat "$work/students")"
+# A student's own connection: their login and password, nothing else.
+conn_of() {
+    local host port
+    host=$(sed -n 's/.*host=\([^ ]*\).*/\1/p' <<<"$PUPITRE_TEST_PG")
+    port=$(sed -n 's/.*port=\([^ ]*\).*/\1/p' <<<"$PUPITRE_TEST_PG")
+    echo "host=$host port=$port dbname=postgres user=$1 password=$(pw "$1") sslmode=require connect_timeout=5 options='-csearch_path=$schema'"
+}
+as() { local who=$1; shift; psql "$(conn_of "$who")" -qtA -v ON_ERROR_STOP=1 "$@"; }
+
+# The exam at a console, as `student`; DEC1 left out when $2 is "nodec1".
+exam() {
+    E2E_ENV="PGPASSFILE=/dev/null" start --db "\"$(conn_of "$1")\"" exercise exam-2005
+    wait_for 'exam-2005: June 2005 exam'
+    keys M-p
+    wait_for 'PREF'
+    local values=("PREF.X=-135.477" "PREF.Z=-669.936")
+    [ "${2:-}" = nodec1 ] || values+=("DEC1.Z=257.267")
+    for v in "${values[@]}"; do
+        keys -l "$v"
+        keys Enter
+        sleep 0.2
+    done
+    keys M-c
+    for v in "X=63.345" "Z=38.237"; do
+        keys -l "$v"
+        keys Enter
+        sleep 0.2
+    done
+    cmd ":submit"
+    wait_for 'submitted: [0-9]+% \(provisional'
+    cmd ":quit"
+    wait_for '^EXIT=0'
+    next_server
+}
+
+case $case in
+grade)
+    exam "$alice"
+    exam "$bob" nodec1
+    # Submitted, not graded: the teacher's report says so, and counts nothing.
+    "$bin" --db "$teacher_db" class report > "$work/report" || fail "report"
+    grep -Eq "^exam-2005 +$alice +1 +- +- .*UNGRADED 1" "$work/report" || fail "report: $(cat "$work/report")"
+    # The teacher's side grades from what the server holds, and signs.
+    "$bin" --db "$teacher_db" class grade > "$work/grade" || fail "grade: $(cat "$work/grade")"
+    grep -q "$alice, exam-2005: 100%" "$work/grade" || fail "grade: $(cat "$work/grade")"
+    grep -Eq "$bob, exam-2005: [0-9]+% \(.*dec1" "$work/grade" || fail "grade: $(cat "$work/grade")"
+    grep -q '2 attempts graded' "$work/grade" || fail "grade: $(cat "$work/grade")"
+    "$bin" --db "$teacher_db" class grade | grep -q '0 attempts graded' || fail "graded twice"
+    "$bin" --db "$teacher_db" class report > "$work/report" || fail "report"
+    grep -Eq "^exam-2005 +$alice +1 +100 +100 " "$work/report" || fail "report: $(cat "$work/report")"
+    grep -Eq "^exam-2005 +$bob +1 .*dec1" "$work/report" || fail "report: $(cat "$work/report")"
+    # Each student reads their own graded report, and no one else's.
+    [ "$(as "$alice" -c "SELECT count(*) FROM attempts")" = 1 ] || fail "alice sees others' attempts"
+    as "$alice" -c "SELECT report FROM attempts" | grep -q 'Score 100%' || fail "alice's report"
+    # A grade changed by the teacher's login without the key: TAMPERED.
+    sql "UPDATE attempts SET score = 100 WHERE student = '$bob'"
+    "$bin" --db "$teacher_db" class report | grep -Eq "^exam-2005 +$bob +1 .*TAMPERED" ||
+        fail "tampered: $("$bin" --db "$teacher_db" class report)"
+    ;;
+hidden)
+    exam "$alice"
+    exam "$bob" nodec1
+    # Everything alice's login can SELECT, dumped: nothing of bob's, no key.
+    as "$alice" -c "SELECT tablename FROM pg_tables WHERE schemaname = '$schema'" > "$work/tables"
+    : > "$work/dump"
+    while read -r t; do
+        as "$alice" -c "SELECT * FROM $t" >> "$work/dump" 2>/dev/null
+    done < "$work/tables"
+    key=$(sql "SELECT key FROM pupitre_class_key")
+    [ -n "$key" ] || fail "no key on the server"
+    grep -q "$key" "$work/dump" && fail "alice read the class key"
+    grep -q "$bob" "$work/dump" && fail "alice read bob's rows: $(grep "$bob" "$work/dump" | head -3)"
+    grep -q "$alice/lathe" "$work/dump" || fail "alice does not read her own machine"
+    as "$alice" -c "SELECT key FROM pupitre_class_key" 2>/dev/null && fail "alice read the key table"
+    # Writing a grade, an attempt or an exercise by hand: refused by the server.
+    id=$(sql "SELECT id FROM attempts WHERE student = '$alice'")
+    as "$alice" -c "UPDATE attempts SET score = 100 WHERE id = $id" 2>"$work/err" && fail "alice updated her grade"
+    grep -q 'permission denied' "$work/err" || fail "update: $(cat "$work/err")"
+    as "$alice" -c "INSERT INTO attempts (exercise, exercise_sha, student, machine, started_ms, score) VALUES ('exam-2005', '', '$alice', '$alice/x', 0, 100)" 2>/dev/null &&
+        fail "alice inserted an attempt"
+    as "$alice" -c "UPDATE exercises SET text = 'x'" 2>/dev/null && fail "alice changed an exercise"
+    as "$alice" -c "INSERT INTO exercises VALUES ('mine', 'x', 0, '$alice')" 2>/dev/null && fail "alice added an exercise"
+    as "$alice" -c "INSERT INTO correctors VALUES ('$bob/lathe', 1, 'X', 5)" 2>/dev/null && fail "alice wrote bob's machine"
+    # bob's attempt submitted again through the function by alice: nothing.
+    bid=$(sql "SELECT id FROM attempts WHERE student = '$bob'")
+    [ "$(as "$alice" -c "SELECT pupitre_submit($bid, 100, 0, '', '', '', '')")" = "" ] || fail "alice submitted bob's"
+    [ "$(sql "SELECT score FROM attempts WHERE id = $bid")" != 100 ] || fail "bob's score changed"
+    # The truth comes only through an attempt opened, which the report shows.
+    as "$alice" -c "SELECT seed FROM pupitre_open_attempt('wear', '$alice/lathe#wear#1')" >/dev/null || fail "open"
+    "$bin" --db "$teacher_db" class report | grep -Eq "^wear +$alice +0\+" ||
+        fail "an opened attempt is not in the report: $("$bin" --db "$teacher_db" class report)"
+    # A seed at every attempt: the next one is another.
+    sql "UPDATE attempts SET submitted_ms = 1 WHERE exercise = 'wear'"
+    as "$alice" -c "SELECT seed FROM pupitre_open_attempt('wear', '$alice/lathe#wear#2')" >/dev/null
+    [ "$(sql "SELECT count(DISTINCT seed) FROM attempts WHERE exercise = 'wear'")" = 2 ] || fail "the same seed twice"
+    ;;
+student)
+    # --student is refused on a server: a person is their login.
+    "$bin" --db "$(conn_of "$alice")" exercise exam-2005 --student "$bob" 2>"$work/err" </dev/null && fail "--student taken"
+    grep -q 'you are your login' "$work/err" || fail "message: $(cat "$work/err")"
+    # On a class's server the exercises are the server's, not a file.
+    echo 'name = x' > "$work/x.exercise"
+    "$bin" --db "$(conn_of "$alice")" exercise "$work/x.exercise" 2>"$work/err" </dev/null && fail "a file taken"
+    grep -q "the exercises are the server's" "$work/err" || fail "message: $(cat "$work/err")"
+    ;;
+*)
+    echo "no case $case"
+    exit 2
+    ;;
+esac
+echo "ok ($case)"
