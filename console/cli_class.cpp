@@ -178,11 +178,11 @@ int class_command(const ExerciseArgs& a) {
     const std::string verb = a.words.empty() ? "" : a.words[0];
     if (verb == "report") return class_report(a);
     std::unique_ptr<store::Store> st;
-    const bool known =
-        verb == "init" || verb == "add-student" || verb == "students" || verb == "grade";
+    const bool known = verb == "init" || verb == "add-student" || verb == "students" ||
+                       verb == "grade" || verb == "watch";
     if (!known) {
-        std::fputs(tr("pupitre: class report|init|add-student|students|grade (pupitre class "
-                      "--help)\n"),
+        std::fputs(tr("pupitre: class report|init|add-student|students|grade|watch (pupitre "
+                      "class --help)\n"),
                    stderr);
         return kUsage;
     }
@@ -194,6 +194,7 @@ int class_command(const ExerciseArgs& a) {
     if (verb == "init") return class_init(a, *st);
     if (verb == "add-student") return class_add(a, *st);
     if (verb == "students") return class_students(a, *st);
+    if (verb == "watch") return class_watch(a, *st);
     return class_grade(*st);
 }
 

@@ -318,12 +318,12 @@ void add_training(CLI::App& app, CommandLine& c, std::vector<Command>& commands)
     ex->add_option("-o,--output", ea.output, tr("save: write to FILE"))->type_name("FILE");
     CLI::App* cl = app.add_subcommand(
         "class", tr("the teacher's side: class report [EXERCISE], and on a server class init, "
-                    "add-student NAME…, students, grade"));
+                    "add-student NAME…, students, grade, watch"));
     cl->add_option("words", ea.words,
-                   tr("report [EXERCISE] | init | add-student NAME… | students | grade"))
+                   tr("report [EXERCISE] | init | add-student NAME… | students | grade | watch"))
         ->required();
     cl->add_option("--class", ea.group,
-                   tr("init, add-student, students: the class (default class)"))
+                   tr("init, add-student, students, watch: the class (default class)"))
         ->type_name("NAME")
         ->each([&ea](const std::string&) { ea.group_given = true; });
     cl->add_option("--from", ea.from, tr("add-student: the logins from the first column of a CSV"))

@@ -162,6 +162,57 @@ Result<std::vector<Login>> Store::students(std::string_view group) {
     return r;
 }
 
+Result<std::vector<StudentStatus>> Store::class_status(std::string_view group) {
+    Result<std::vector<StudentStatus>> r;
+    if (engine() != "postgresql") {
+        r.error = not_a_server(path_);
+        return r;
+    }
+    sql::Use u =
+        use("WITH s AS (SELECT st.rolname AS login, g.rolname AS grp FROM pg_auth_members c "
+            "  JOIN pg_roles p ON p.oid = c.roleid JOIN pg_roles g ON g.oid = c.member "
+            "  JOIN pg_auth_members m ON m.roleid = g.oid JOIN pg_roles st ON st.oid = m.member "
+            "  WHERE p.rolname = 'pupitre_students' AND (?1 = '' OR g.rolname = ?1)), "
+            "a AS (SELECT DISTINCT ON (student) * FROM attempts ORDER BY student, id DESC), "
+            "n AS (SELECT student, count(*) FILTER (WHERE submitted_ms IS NOT NULL) AS done, "
+            "  sum(crashes)::bigint AS crashes, sum(scrapped)::bigint AS scrapped FROM attempts "
+            "  GROUP BY student), "
+            "l AS (SELECT DISTINCT ON (split_part(machine, '/', 1)) split_part(machine, '/', 1) AS "
+            "  login, at_ms, name, new FROM audit WHERE machine LIKE '%/%' "
+            "  ORDER BY split_part(machine, '/', 1), id DESC), "
+            "c AS (SELECT DISTINCT usename FROM pg_stat_activity WHERE usename IS NOT NULL) "
+            "SELECT s.login, s.grp, coalesce(a.id, 0), coalesce(a.exercise, ''), "
+            "  coalesce(a.started_ms, 0), coalesce(a.submitted_ms, 0), "
+            "  (coalesce(a.signature, '') <> '')::int, coalesce(a.score, -1), coalesce(n.done, 0), "
+            "  coalesce(n.crashes, 0), coalesce(n.scrapped, 0), coalesce(l.at_ms, 0), "
+            "  coalesce(l.name, ''), l.new, (c.usename IS NOT NULL)::int, "
+            "  (extract(epoch FROM clock_timestamp()) * 1000)::bigint "
+            "FROM s LEFT JOIN a ON a.student = s.login LEFT JOIN n ON n.student = s.login "
+            "LEFT JOIN l ON l.login = s.login LEFT JOIN c ON c.usename = s.login "
+            "ORDER BY s.grp, s.login");
+    if ((r.error = u.error)) return r;
+    u.bind(1, group);
+    int rc;
+    while ((rc = u.step()) == db::kRow) {
+        StudentStatus t;
+        t.login = u.str(0), t.group = u.str(1);
+        t.attempt = u.i64(2), t.exercise = u.str(3);
+        t.started_ms = u.i64(4), t.submitted_ms = u.i64(5);
+        t.graded = u.i64(6) != 0, t.score = u.i32(7);
+        t.attempts = u.i32(8), t.crashes = u.i32(9), t.scrapped = u.i32(10);
+        t.last_ms = u.i64(11), t.last_name = u.str(12);
+        if (!u.is_null(13)) t.last_value = u.i64(13);
+        t.connected = u.i64(14) != 0;
+        t.now_ms = u.i64(15);
+        r.value.push_back(std::move(t));
+    }
+    if (rc != db::kDone) {
+        r.value.clear();
+        r.error = fail(rc, tr("cannot read the class"));
+    }
+    return r;
+}
+
 Result<std::string> Store::class_signing_key() {
     Result<std::string> r;
     sql::Use u = use("SELECT key FROM pupitre_class_key WHERE id = 1");

@@ -203,6 +203,23 @@ bool login_name_ok(std::string_view name);
 struct NamedText {
     std::string name, text;
 };
+// A student as the teacher's watch shows them (Store::class_status): their
+// last attempt, its counts, their last action on a machine, whether a
+// session of their login is connected now, and the server's clock.
+struct StudentStatus {
+    std::string login, group;
+    int64_t attempt = 0;  // the last one's id (0: none yet)
+    std::string exercise;
+    int64_t started_ms = 0, submitted_ms = 0;  // submitted 0: in progress
+    bool graded = false;
+    int score = -1;
+    int attempts = 0, crashes = 0, scrapped = 0;  // over all their attempts
+    int64_t last_ms = 0;                          // their last value set (0: none)
+    std::string last_name;                        // its name ("PREF.X")
+    std::optional<int64_t> last_value;            // its value in the store's units
+    bool connected = false;
+    int64_t now_ms = 0;  // the server's clock
+};
 
 // One connection to a store. Not shared between threads: a thread or a
 // process opens its own. SQLite serialises the writers (WAL, BEGIN
@@ -329,6 +346,8 @@ class Store {
                                             const std::vector<std::string>& names);
     Result<std::vector<Login>> students(std::string_view group = "");  // "": every class
     Result<std::string> class_signing_key();                           // a teacher's login reads it
+    // Every student of `group` ("": every class) with their status: one query.
+    Result<std::vector<StudentStatus>> class_status(std::string_view group = "");
     // This login's attempt at `exercise`: its open one, else a new one with
     // a seed the server draws; the machine `machine` (made LOGIN/…) is its.
     Result<Attempt> open_class_attempt(std::string_view exercise, std::string_view machine);

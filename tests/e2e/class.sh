@@ -134,6 +134,38 @@ hidden)
     as "$alice" -c "SELECT seed FROM pupitre_open_attempt('wear', '$alice/lathe#wear#2')" >/dev/null
     [ "$(sql "SELECT count(DISTINCT seed) FROM attempts WHERE exercise = 'wear'")" = 2 ] || fail "the same seed twice"
     ;;
+watch)
+    # The teacher's live view: each student, and a status that changes
+    # within a second of a student's :submit (the server's notification).
+    T -f /dev/null new-session -d -s e2e -x 120 -y 24 \
+        "env LANG=C.UTF-8 TERM=screen '$bin' --db \"$teacher_db\" class watch --class $group ; echo EXIT=\$? ; sleep 30"
+    wait_for "WATCH class $group"
+    wait_for "^$alice +no attempt"
+    wait_for "^$bob +no attempt"
+    id=$(as "$alice" -c "SELECT id FROM pupitre_open_attempt('exam-2005', '$alice/lathe#exam-2005#1')")
+    # Opened from psql, whose session is over: open, and nobody at it.
+    wait_for "^$alice +exam-2005 +0/45 min +disconnected" 1
+    as "$alice" -c "SELECT pupitre_submit($id, 50, 0, '', '', '', '')" >/dev/null
+    wait_for "^$alice +exam-2005 +0/45 min +submitted" 1
+    # In colour: the submitted status on its own style, not plain.
+    sgr_line "$alice +exam" | grep -q $'\e\\[' || fail "no colour: $(sgr_line "$alice +exam" | cat -v)"
+    # A value set on the student's machine is their last action (written as
+    # a console writes it, the commit announced on the store's channel).
+    as "$alice" -c "INSERT INTO machines VALUES ('$alice/lathe', '', 0, 0)" >/dev/null
+    as "$alice" -c "INSERT INTO audit (at_ms, who, machine, name, old, new, source) VALUES ((extract(epoch FROM now()) * 1000)::bigint, '$alice', '$alice/lathe', 'PREF.X', NULL, -135477, 'page PREF'); NOTIFY pupitre_store" >/dev/null
+    wait_for "^$alice .*PREF.X -135.477" 2
+    # The teacher grades: the watch says so.
+    "$bin" --db "$teacher_db" class grade >/dev/null
+    wait_for "^$alice +exam-2005 .*graded" 2
+    # Enter: alice's attempts; Esc: the class; q quits.
+    keys Enter
+    wait_for "$alice's attempts"
+    wait_for "exam-2005 .*graded"
+    keys Escape
+    wait_for "^$bob +no attempt"
+    keys q
+    wait_for '^EXIT=0'
+    ;;
 student)
     # --student is refused on a server: a person is their login.
     "$bin" --db "$(conn_of "$alice")" exercise exam-2005 --student "$bob" 2>"$work/err" </dev/null && fail "--student taken"
