@@ -16,6 +16,7 @@
 
 namespace pupitre::store {
 class Store;
+struct Attempt;
 }
 
 namespace pupitre::console {
@@ -60,6 +61,10 @@ class Bench {
     };
     virtual Stored store_values(const std::vector<std::pair<std::string, int64_t>>& values,
                                 std::string_view source) = 0;
+    // An attempt's :submit that the server did not take (it is gone): kept
+    // here after the values set before it, and sent when it answers again,
+    // once (the server refuses a second submit of one attempt).
+    virtual void keep_submission(const store::Attempt& a, bool on_class) = 0;
 
   protected:
     ~Bench() = default;

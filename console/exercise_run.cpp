@@ -224,17 +224,28 @@ Effect ExerciseRun::submit() {
     a.record = record_text(ctx_);
     if (on_class_) {
         // The teacher's side grades it again and signs: this is provisional.
-        if (store::StoreError e = b_.store()->submit_class_attempt(a))
+        if (store::StoreError e = b_.store()->submit_class_attempt(a); e.gone) {
+            b_.keep_submission(a, true);
+            b_.say(strf(tr("submitted: %d%%; the server does not answer: kept here until it does"),
+                        a.score),
+                   true);
+        } else if (e) {
             b_.say(strf(tr("the grade was not stored: %s"), e.message.c_str()), true);
-        else
+        } else {
             b_.say(strf(tr("submitted: %d%% (provisional: the teacher's grading signs it); the "
                            "report is on the EXERCISE page"),
                         a.score));
+        }
         b_.show_page(pages::PageId::exercise);
         return Effect::redraw;
     }
     a.signature = sign_attempt(a, key_);
-    if (store::StoreError e = b_.store()->submit_attempt(a))
+    if (store::StoreError e = b_.store()->submit_attempt(a); e.gone) {
+        b_.keep_submission(a, false);
+        b_.say(strf(tr("submitted: %d%%; the server does not answer: kept here until it does"),
+                    a.score),
+               true);
+    } else if (e)
         b_.say(strf(tr("the grade was not stored: %s"), e.message.c_str()), true);
     else
         b_.say(strf(tr("submitted: %d%%; the report is on the EXERCISE page"), a.score));

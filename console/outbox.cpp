@@ -12,6 +12,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/i18n.hpp"
 #include "store/store.hpp"
 
 namespace pupitre::console {
@@ -26,7 +27,69 @@ std::string clean(std::string_view s) {
     return out;
 }
 
+constexpr const char* kAttemptKey = "#attempt";
+constexpr char kSep = '\x1f';  // between an attempt's fields, before the hex
+
+std::string hex(std::string_view s) {
+    static constexpr char kDigits[] = "0123456789abcdef";
+    std::string out;
+    for (unsigned char c : s) out += kDigits[c >> 4], out += kDigits[c & 15];
+    return out;
+}
+
+std::string unhex(std::string_view h) {
+    std::string out;
+    for (size_t i = 0; i + 1 < h.size(); i += 2)
+        out += char(std::stoi(std::string(h.substr(i, 2)), nullptr, 16));
+    return out;
+}
+
+// The attempt's fields :submit sends, one string (hex in the file).
+std::string pack(const store::Attempt& a) {
+    std::string out;
+    for (const std::string& f :
+         {a.exercise, a.exercise_sha, a.student, a.machine, std::to_string(a.started_ms),
+          std::to_string(a.submitted_ms), a.seed, std::to_string(a.score), strf("%.17g", a.seconds),
+          std::to_string(a.crashes), std::string(a.scrapped ? "1" : "0"), a.mistakes, a.found,
+          a.report, a.signature, a.record})
+        out += f + kSep;
+    return hex(out);
+}
+
+bool unpack(const std::string& h, int64_t id, store::Attempt& a) {
+    std::vector<std::string> f;
+    std::string all = unhex(h), cur;
+    for (char c : all)
+        if (c == kSep)
+            f.push_back(cur), cur.clear();
+        else
+            cur += c;
+    if (f.size() != 16) return false;
+    a.id = id;
+    a.exercise = f[0], a.exercise_sha = f[1], a.student = f[2], a.machine = f[3];
+    a.started_ms = std::stoll(f[4]), a.submitted_ms = std::stoll(f[5]), a.seed = f[6];
+    a.score = std::stoi(f[7]), a.seconds = std::strtod(f[8].c_str(), nullptr);
+    a.crashes = std::stoi(f[9]), a.scrapped = f[10] == "1";
+    a.mistakes = f[11], a.found = f[12], a.report = f[13], a.signature = f[14], a.record = f[15];
+    return true;
+}
+
+// One line sent: a value, or an attempt's :submit. A submit the store says
+// was done already (its answer was lost) is sent: never a second one.
+bool send_one(store::Store& s, const Outbox::Unsent& u) {
+    if (u.key != kAttemptKey) return !s.set_values(u.key, {{u.name, u.value}}, u.source).error;
+    store::Attempt a;
+    if (!unpack(u.source, u.value, a)) return true;  // unreadable: dropped, not retried forever
+    store::StoreError e = u.name == "class" ? s.submit_class_attempt(a) : s.submit_attempt(a);
+    return !e || e.fault == store::Fault::not_found;
+}
+
 }  // namespace
+
+void Outbox::add_submission(const store::Attempt& a, bool on_class) {
+    q_.push_back({kAttemptKey, on_class ? "class" : "signed", a.id, pack(a)});
+    save();
+}
 
 void Outbox::open(std::string path) {
     path_ = std::move(path);
@@ -59,8 +122,8 @@ std::vector<std::string> Outbox::send(store::Store& s) {
     size_t n = 0;
     for (; n < q_.size(); ++n) {
         const Unsent& u = q_[n];
-        if (s.set_values(u.key, {{u.name, u.value}}, u.source).error) break;
-        sent.push_back(u.name);
+        if (!send_one(s, u)) break;
+        sent.push_back(u.key == kAttemptKey ? std::string(tr("the attempt")) : u.name);
     }
     q_.erase(q_.begin(), q_.begin() + long(n));
     if (n) save();

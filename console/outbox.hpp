@@ -14,7 +14,8 @@
 
 namespace pupitre::store {
 class Store;
-}
+struct Attempt;
+}  // namespace pupitre::store
 
 namespace pupitre::console {
 
@@ -28,9 +29,13 @@ class Outbox {
     // Reads what an earlier console left in `path` ("" for none).
     void open(std::string path);
     void add(std::string_view key, std::string_view name, int64_t value, std::string_view source);
+    // An attempt's :submit, sent after the values before it; its line holds
+    // the attempt's fields (key "#attempt", name "class" or "signed").
+    void add_submission(const store::Attempt& a, bool on_class);
     bool empty() const { return q_.empty(); }
     const std::vector<Unsent>& unsent() const { return q_; }
-    // Sends in order until the store refuses one; the names sent.
+    // Sends in order until the store refuses one; the names sent (an
+    // attempt's as "the attempt").
     std::vector<std::string> send(store::Store& s);
 
   private:

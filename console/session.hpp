@@ -127,6 +127,7 @@ class Session final : public Bench {
     bool unprotected(std::string_view what) override { return setting_.unprotected(what); }
     Stored store_values(const std::vector<std::pair<std::string, int64_t>>& values,
                         std::string_view source) override;
+    void keep_submission(const store::Attempt& a, bool on_class) override;
 
     LineInput& input() { return input_; }
     const LineInput& input() const { return input_; }

@@ -143,6 +143,10 @@ Bench::Stored Session::store_values(const std::vector<std::pair<std::string, int
     return {tr("the store does not answer: kept here, stored when it does"), true};
 }
 
+void Session::keep_submission(const store::Attempt& a, bool on_class) {
+    outbox_.add_submission(a, on_class);
+}
+
 // From follow_store() once the server answers: what it could not take, in
 // the order it was set.
 void Session::send_outbox() {

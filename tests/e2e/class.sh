@@ -47,8 +47,14 @@ conn_of() {
 }
 as() { local who=$1; shift; psql "$(conn_of "$who")" -qtA -v ON_ERROR_STOP=1 "$@"; }
 
-# The exam at a console, as `student`; DEC1 left out when $2 is "nodec1".
-exam() {
+# The server started here outlives the test: it keeps none of its files open.
+pg_ctl_() {
+    ${PUPITRE_TEST_PG_AS:-} $PUPITRE_TEST_PG_CTL "$@" >/dev/null 2>&1 </dev/null 3>&- 4>&- 5>&- \
+        6>&- 7>&- 8>&- 9>&-
+}
+# The exam's values typed at a console, as `student`; DEC1 left out when $2
+# is "nodec1"; not submitted.
+exam_values() {
     E2E_ENV="PGPASSFILE=/dev/null" start --db "\"$(conn_of "$1")\"" exercise exam-2005
     wait_for 'exam-2005: June 2005 exam'
     keys M-p
@@ -66,6 +72,10 @@ exam() {
         keys Enter
         sleep 0.2
     done
+}
+# The exam at a console, as `student`; DEC1 left out when $2 is "nodec1".
+exam() {
+    exam_values "$@"
     cmd ":submit"
     wait_for 'submitted: [0-9]+% \(provisional'
     cmd ":quit"
@@ -165,6 +175,28 @@ watch)
     wait_for "^$bob +no attempt"
     keys q
     wait_for '^EXIT=0'
+    ;;
+gone)
+    # The server stopped before :submit: the attempt is kept on this PC and
+    # handed in when the server is back, once.
+    trap 'pg_ctl_ status || pg_ctl_ start -w; cleanup_class' EXIT
+    exam_values "$alice"
+    sleep 1
+    pg_ctl_ stop -m immediate || fail "pg_ctl stop"
+    cmd ":submit"
+    wait_for 'submitted: 100%; the server does not answer: kept here until it does'
+    [ -n "$(find "$work/data" -name '*.outbox')" ] || fail "no outbox on disk: $(find "$work/data" -type f)"
+    pg_ctl_ start -w || fail "pg_ctl start"
+    wait_for 'the store answers again.*the attempt' 20
+    [ "$(sql "SELECT count(*) FROM attempts WHERE student = '$alice' AND submitted_ms IS NOT NULL")" = 1 ] ||
+        fail "attempts: $(sql "SELECT id, submitted_ms FROM attempts")"
+    cmd ":quit"
+    wait_for '^EXIT=0'
+    next_server
+    # Nothing left to send, nothing sent twice.
+    [ -z "$(find "$work/data" -name '*.outbox')" ] || fail "the outbox is still there"
+    "$bin" --db "$teacher_db" class grade | grep -q "$alice, exam-2005: 100%" || fail "not graded"
+    [ "$(sql "SELECT count(*) FROM attempts WHERE student = '$alice'")" = 1 ] || fail "two attempts"
     ;;
 student)
     # --student is refused on a server: a person is their login.
