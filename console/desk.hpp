@@ -17,7 +17,7 @@
 namespace pupitre::store {
 class Store;
 struct Attempt;
-}
+}  // namespace pupitre::store
 
 namespace pupitre::console {
 
