@@ -22,16 +22,22 @@ struct Row {
     int attempts = 0, in_progress = 0, best = -1, last = -1, crashes = 0, scrapped = 0;
     double best_seconds = 0;
     bool tampered = false;
-    int ungraded = 0;  // on a class's server: submitted, not yet graded and signed
+    int ungraded = 0;               // on a class's server: submitted, not yet graded and signed
+    std::set<std::string> earlier;  // the texts (SHA-256, 8 digits) not the exercise's current
     std::map<std::string, int> mistakes;
 };
 
-std::vector<Row> rows_of(const std::vector<store::Attempt>& all, const std::string& key,
-                         bool on_server, std::map<std::string, int>& mistakes) {
+std::vector<Row> rows_of(const std::vector<store::Attempt>& all, const ReportContext& c,
+                         std::map<std::string, int>& mistakes) {
+    const std::string& key = c.key;
+    const bool on_server = c.on_server;
     std::map<std::pair<std::string, std::string>, Row> by;
     for (const store::Attempt& a : all) {
         Row& r = by[{a.exercise, a.student}];
         r.exercise = a.exercise, r.student = a.student;
+        if (auto now = c.current.find(a.exercise);
+            now != c.current.end() && now->second != a.exercise_sha)
+            r.earlier.insert(a.exercise_sha.substr(0, 8));
         if (a.submitted_ms == 0) {
             ++r.in_progress;
             continue;
@@ -107,6 +113,13 @@ std::string html_escape(const std::string& s) {
     return o;
 }
 
+std::string earlier_html(const Row& r) {
+    std::string out;
+    for (const std::string& t : r.earlier)
+        out += " " + html_escape(strf(tr("EARLIER TEXT %s"), t.c_str()));
+    return out;
+}
+
 std::string table(const std::vector<Row>& rows, const std::map<std::string, int>& mistakes,
                   const std::string& key) {
     std::string out = pages::pad(tr("EXERCISE"), 16) + " " + pages::pad(tr("STUDENT"), 14) +
@@ -121,6 +134,7 @@ std::string table(const std::vector<Row>& rows, const std::map<std::string, int>
                  score(r.last).c_str(), minutes(r.best_seconds).c_str(), r.crashes, r.scrapped,
                  common_mistakes(r.mistakes).c_str(), r.tampered ? tr("  TAMPERED") : "");
         if (r.ungraded) line += strf(tr("  UNGRADED %d"), r.ungraded);
+        for (const std::string& t : r.earlier) line += strf(tr("  EARLIER TEXT %s"), t.c_str());
         while (!line.empty() && line.back() == ' ') line.pop_back();
         out += line + "\n";
     }
@@ -176,7 +190,7 @@ std::string html(const std::vector<Row>& rows, const std::map<std::string, int>&
             "</td><td>" + html_escape(common_mistakes(r.mistakes)) +
             (r.tampered ? " <span class=\"bad\">" + html_escape(tr("TAMPERED")) + "</span>" : "") +
             (r.ungraded ? " " + html_escape(strf(tr("UNGRADED %d"), r.ungraded)) : "") +
-            "</td></tr>\n";
+            earlier_html(r) + "</td></tr>\n";
     }
     out += "</table>\n<h2>" + html_escape(tr("Mistakes most made")) + "</h2>\n<ol>\n";
     std::vector<std::pair<int, std::string>> v;
@@ -193,9 +207,11 @@ std::string html(const std::vector<Row>& rows, const std::map<std::string, int>&
 }  // namespace
 
 std::string class_report_text(const std::vector<store::Attempt>& attempts, ReportFormat f,
-                              const std::string& key, const std::string& title, bool on_server) {
+                              const ReportContext& c) {
+    const std::string& key = c.key;
+    const std::string& title = c.title;
     std::map<std::string, int> mistakes;
-    const std::vector<Row> rows = rows_of(attempts, key, on_server, mistakes);
+    const std::vector<Row> rows = rows_of(attempts, c, mistakes);
     switch (f) {
         case ReportFormat::csv:
             return csv(rows);

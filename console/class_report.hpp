@@ -4,6 +4,7 @@
 // signature checked; as a table, CSV or one printable HTML file.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
+#include <map>
 #include <string>
 #include <vector>
 
@@ -13,12 +14,19 @@ namespace pupitre::console {
 
 enum class ReportFormat { table, csv, html };
 
-// `key`: the class key, to check each attempt's signature ("": not
-// checked, and the report says so). `title` heads the HTML page.
-// `on_server`: a class's server, where an attempt submitted and not yet
-// signed waits for the teacher's grading (UNGRADED), and counts for nothing.
+// What the report checks and says besides the attempts.
+struct ReportContext {
+    std::string key;    // the class key, to check each signature ("": not checked, and said)
+    std::string title;  // heads the HTML page
+    // A class's server: an attempt submitted and not yet signed waits for
+    // the teacher's grading (UNGRADED), and counts for nothing yet.
+    bool on_server = false;
+    // Each exercise's current text's SHA-256: an attempt made on another
+    // (the exercise was changed since) is named by its text's.
+    std::map<std::string, std::string> current;
+};
+
 std::string class_report_text(const std::vector<store::Attempt>& attempts, ReportFormat f,
-                              const std::string& key, const std::string& title,
-                              bool on_server = false);
+                              const ReportContext& c);
 
 }  // namespace pupitre::console

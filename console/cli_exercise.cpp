@@ -15,6 +15,7 @@
 #include "console/cli.hpp"
 #include "console/exercise.hpp"
 #include "console/plot_loader.hpp"
+#include "core/digest.hpp"
 #include "core/i18n.hpp"
 #include "core/output/cairo_plot.hpp"
 #include "store/store.hpp"
@@ -219,11 +220,10 @@ namespace {
 
 // The table as a PDF through Cairo, beside the HTML report (docs/decisions.md,
 // Exercises hide the truth).
-int report_pdf(const std::string& path, const std::string& title,
-               const std::vector<store::Attempt>& attempts, const std::string& key, bool on_server,
-               std::FILE* said) {
-    std::istringstream text(
-        console::class_report_text(attempts, console::ReportFormat::table, key, title, on_server));
+int report_pdf(const std::string& path, const console::ReportContext& c,
+               const std::vector<store::Attempt>& attempts, std::FILE* said) {
+    const std::string& title = c.title;
+    std::istringstream text(console::class_report_text(attempts, console::ReportFormat::table, c));
     std::vector<std::string> lines;
     for (std::string l; std::getline(text, l);) lines.push_back(l);
     std::FILE* out = std::fopen(path.c_str(), "wb");
@@ -244,11 +244,9 @@ int report_pdf(const std::string& path, const std::string& title,
 }
 
 // The report as one HTML file ("-": on the standard output).
-int report_html(const std::string& path, const std::string& title,
-                const std::vector<store::Attempt>& attempts, const std::string& key, bool on_server,
-                std::FILE* said) {
-    const std::string text =
-        console::class_report_text(attempts, console::ReportFormat::html, key, title, on_server);
+int report_html(const std::string& path, const console::ReportContext& c,
+                const std::vector<store::Attempt>& attempts, std::FILE* said) {
+    const std::string text = console::class_report_text(attempts, console::ReportFormat::html, c);
     if (path == "-") {
         std::fputs(text.c_str(), stdout);
         return kOk;
@@ -265,6 +263,33 @@ int report_html(const std::string& path, const std::string& title,
 }  // namespace
 
 // class report [EXERCISE]: the table, or each of --csv, --html FILE, --pdf FILE.
+// What the report checks and says: the key (on a class's server the
+// server's, which a teacher's login reads; a student's report of their own
+// attempts is not checked), and each exercise's current text.
+store::Result<console::ReportContext> report_context(store::Store& st,
+                                                     const std::vector<store::Attempt>& all,
+                                                     const std::string& exercise) {
+    store::Result<console::ReportContext> r;
+    console::ReportContext& c = r.value;
+    c.title = exercise.empty() ? std::string(tr("pupitre: the class's attempts"))
+                               : strf(tr("pupitre: the class's attempts at %s"), exercise.c_str());
+    auto on_class = st.class_server();
+    if ((r.error = on_class.error)) return r;
+    c.on_server = on_class.value;
+    if (c.on_server) {
+        if (auto k = st.class_signing_key(); !k.error) c.key = k.value;
+    } else if (!console::class_key(false, c.key).empty()) {
+        c.key.clear();
+    }
+    for (const store::Attempt& a : all) {
+        if (c.current.count(a.exercise)) continue;
+        training::Exercise e;
+        if (console::find_exercise(&st, a.exercise, e).empty())
+            c.current[a.exercise] = sha256_hex(e.source);
+    }
+    return r;
+}
+
 int class_report(const ExerciseArgs& a) {
     if (a.words.empty() || a.words[0] != "report" || a.words.size() > 2) {
         std::fputs(tr("pupitre: class report [EXERCISE] [--csv] [--html FILE] [--pdf FILE]\n"),
@@ -276,20 +301,9 @@ int class_report(const ExerciseArgs& a) {
     if (int rc = open_store(a.db, st)) return rc;
     auto r = st->attempts(exercise);
     if (r.error) return report(r.error);
-    // On a class's server the key is the server's, which a teacher's login
-    // reads; a student's report (their own attempts) is not checked.
-    auto on_class = st->class_server();
-    if (on_class.error) return report(on_class.error);
-    const bool on_server = on_class.value;
-    std::string key;
-    if (on_server) {
-        if (auto k = st->class_signing_key(); !k.error) key = k.value;
-    } else if (!console::class_key(false, key).empty()) {
-        key.clear();
-    }
-    const std::string title =
-        exercise.empty() ? std::string(tr("pupitre: the class's attempts"))
-                         : strf(tr("pupitre: the class's attempts at %s"), exercise.c_str());
+    auto context = report_context(*st, r.value, exercise);
+    if (context.error) return report(context.error);
+    const console::ReportContext& c = context.value;
     // Every output asked for is written (--csv --html F --pdf G: the three),
     // none asked for, the table; what is written to a file is said on the
     // standard error when the standard output carries a report.
@@ -301,18 +315,13 @@ int class_report(const ExerciseArgs& a) {
     std::FILE* said = a.csv || a.output == "-" ? stderr : stdout;
     int rc = kOk;
     if (a.csv)
-        std::fputs(
-            console::class_report_text(r.value, console::ReportFormat::csv, key, title, on_server)
-                .c_str(),
-            stdout);
-    if (!a.output.empty())
-        rc = std::max(rc, report_html(a.output, title, r.value, key, on_server, said));
-    if (!a.pdf.empty()) rc = std::max(rc, report_pdf(a.pdf, title, r.value, key, on_server, said));
+        std::fputs(console::class_report_text(r.value, console::ReportFormat::csv, c).c_str(),
+                   stdout);
+    if (!a.output.empty()) rc = std::max(rc, report_html(a.output, c, r.value, said));
+    if (!a.pdf.empty()) rc = std::max(rc, report_pdf(a.pdf, c, r.value, said));
     if (!a.csv && a.output.empty() && a.pdf.empty())
-        std::fputs(
-            console::class_report_text(r.value, console::ReportFormat::table, key, title, on_server)
-                .c_str(),
-            stdout);
+        std::fputs(console::class_report_text(r.value, console::ReportFormat::table, c).c_str(),
+                   stdout);
     return rc;
 }
 

@@ -310,26 +310,68 @@ void golden(const std::string& name, const std::string& text) {
     EXPECT_EQ(bytes_of(path), text) << "golden " << path << " differs (PUPITRE_BLESS=1 rewrites)";
 }
 
+console::ReportContext ctx(const std::string& key, const std::string& title) {
+    console::ReportContext c;
+    c.key = key;
+    c.title = title;
+    return c;
+}
+
 TEST(ClassReport, TableCsvAndHtmlAreGolden) {
     const auto all = class_attempts();
     golden("class_report.txt",
-           console::class_report_text(all, console::ReportFormat::table, kKey, "class"));
+           console::class_report_text(all, console::ReportFormat::table, ctx(kKey, "class")));
     golden("class_report.csv",
-           console::class_report_text(all, console::ReportFormat::csv, kKey, "class"));
-    golden("class_report.html", console::class_report_text(all, console::ReportFormat::html, kKey,
-                                                           "pupitre: the class's attempts"));
+           console::class_report_text(all, console::ReportFormat::csv, ctx(kKey, "class")));
+    golden("class_report.html",
+           console::class_report_text(all, console::ReportFormat::html,
+                                      ctx(kKey, "pupitre: the class's attempts")));
     // The edited attempt counts for nothing: no best, no last, no time.
-    const std::string csv = console::class_report_text(all, console::ReportFormat::csv, kKey, "");
+    const std::string csv =
+        console::class_report_text(all, console::ReportFormat::csv, ctx(kKey, ""));
     EXPECT_NE(csv.find("\"exam-2005\",\"<eve>\",1,0,,,,0,0,1,\"\"\n"), std::string::npos) << csv;
     auto edited = all;
     edited[0].score = 100, edited[0].seconds = 60;  // alice's 100 in 10 min made 1 min
     const std::string alice =
-        console::class_report_text(edited, console::ReportFormat::csv, kKey, "");
+        console::class_report_text(edited, console::ReportFormat::csv, ctx(kKey, ""));
     EXPECT_NE(alice.find("\"exam-2005\",\"alice\",1,0,,,,0,0,1,\"\"\n"), std::string::npos)
         << alice;
-    const std::string nokey = console::class_report_text(all, console::ReportFormat::table, "", "");
+    const std::string nokey =
+        console::class_report_text(all, console::ReportFormat::table, ctx("", ""));
     EXPECT_NE(nokey.find("Signatures not checked: no class key."), std::string::npos);
     EXPECT_EQ(nokey.find("TAMPERED"), std::string::npos);
+}
+
+// An attempt made on a text of the exercise that is not its current one is
+// named by its text (issue 34: the report says which version each used).
+TEST(ClassReport, AnAttemptOnAnEarlierTextIsNamed) {
+    auto all = class_attempts();
+    console::ReportContext c = ctx(kKey, "class");
+    c.current["exam-2005"] = "sha";
+    c.current["lathe-first"] = "0123456789abcdef";  // changed since alice's and carol's
+    const std::string t = console::class_report_text(all, console::ReportFormat::table, c);
+    std::istringstream lines(t);
+    int earlier = 0;
+    for (std::string l; std::getline(lines, l);) {
+        if (l.find("EARLIER TEXT sha") != std::string::npos) {
+            EXPECT_EQ(l.rfind("lathe-first", 0), 0u) << l;
+            ++earlier;
+        }
+    }
+    EXPECT_EQ(earlier, 2) << t;
+}
+
+// On a class's server an attempt submitted and not yet signed waits for the
+// teacher's grading: UNGRADED, and it counts for nothing yet.
+TEST(ClassReport, OnAServerAnUnsignedAttemptIsUngraded) {
+    auto all = class_attempts();
+    all[0].signature.clear();  // alice's 100, not graded yet
+    console::ReportContext c = ctx(kKey, "class");
+    c.on_server = true;
+    const std::string csv = console::class_report_text(all, console::ReportFormat::csv, c);
+    EXPECT_NE(csv.find("\"exam-2005\",\"alice\",1,0,,,,0,0,0,\"\"\n"), std::string::npos) << csv;
+    const std::string t = console::class_report_text(all, console::ReportFormat::table, c);
+    EXPECT_NE(t.find("UNGRADED 1"), std::string::npos) << t;
 }
 
 }  // namespace
