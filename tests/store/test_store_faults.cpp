@@ -11,6 +11,7 @@
 #include <mutex>
 #include <thread>
 
+#include "core/training/exercise.hpp"
 #include "store_helpers.hpp"
 
 using namespace pupitre;
@@ -138,4 +139,91 @@ TEST_F(StoreFault, AConnectionMadeBeforeARestartWorksAfterIt) {
     EXPECT_EQ(up.value.revision, 2);
     EXPECT_EQ(s->read(40).value.text, "%40\nB\n");
     EXPECT_FALSE(s->data_version().error);
+}
+
+// Issue 34: 30 students of a class, each as their own login, submit their
+// attempt while the server is killed and started again. Each client hands
+// its attempt in until the server takes it or says it has it; every attempt
+// is then submitted once, and the teacher's side grades each once.
+TEST_F(StoreFault, ThirtyStudentsSubmitThroughAKillAndEachIsGradedOnce) {
+    test::Place t("postgresql");
+    const std::string db = t / "classfault";
+    auto teacher = test::open_store(db);
+    ASSERT_TRUE(teacher);
+    const std::string group = "f" + std::to_string(::getpid());
+    training::Exercise e;
+    ASSERT_TRUE(training::builtin_exercise("exam-2005", e));
+    ASSERT_FALSE(teacher->class_init(group, {{e.name, e.source}}));
+    constexpr int kStudents = 30;
+    std::vector<std::string> names;
+    for (int i = 0; i < kStudents; ++i) names.push_back(group + "s" + std::to_string(i));
+    auto logins = teacher->add_students(group, names);
+    ASSERT_TRUE(logins.ok()) << logins.error.message;
+    std::atomic<int> opened{0}, refused{0}, bad_messages{0}, unsent{0};
+    std::atomic<bool> stopped{false};
+    auto student = [&](int i) {
+        const store::Login& l = logins.value[size_t(i)];
+        auto r = Store::open(db + " user=" + l.name + " password=" + l.password);
+        if (!r.ok()) {
+            ++opened, ++unsent;
+            return;
+        }
+        auto a = r.value->open_class_attempt("exam-2005", "lathe#exam-2005#1");
+        ++opened;
+        if (!a.ok()) {
+            ++unsent;
+            return;
+        }
+        while (opened < kStudents) std::this_thread::yield();
+        // Half hand in as the server is stopped, half while it is down.
+        if (i % 2)
+            while (!stopped) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        a.value.score = i, a.value.record = "dia 40.0000\n";
+        for (int tries = 0;; ++tries) {
+            StoreError err = r.value->submit_class_attempt(a.value);
+            if (!err || err.fault == Fault::not_found) break;  // taken, or taken before
+            ++refused;
+            if (err.message.find('\n') != std::string::npos) ++bad_messages;
+            if (tries == 400) {
+                ++unsent;
+                break;
+            }
+            std::this_thread::sleep_for(std::chrono::milliseconds(25));
+        }
+    };
+    std::vector<std::thread> threads;
+    for (int i = 0; i < kStudents; ++i) threads.emplace_back(student, i);
+    while (opened < kStudents) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    const int stop = pg_ctl("stop -m immediate");
+    stopped = true;
+    ASSERT_EQ(stop, 0);
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    ASSERT_EQ(pg_ctl("start"), 0);
+    for (auto& th : threads) th.join();
+    EXPECT_GT(refused.load(), 0);  // the stop was felt
+    EXPECT_EQ(unsent.load(), 0);
+    EXPECT_EQ(bad_messages.load(), 0);
+
+    auto s = test::open_store(db);
+    auto all = s->attempts("exam-2005");
+    ASSERT_TRUE(all.ok()) << all.error.message;
+    std::map<std::string, int> per_student;
+    for (const Attempt& a : all.value) {
+        ++per_student[a.student];
+        EXPECT_NE(a.submitted_ms, 0) << a.student;
+        EXPECT_EQ(a.record, "dia 40.0000\n");
+    }
+    EXPECT_EQ(per_student.size(), size_t(kStudents));
+    for (const auto& [who, n] : per_student) EXPECT_EQ(n, 1) << who;
+    // Graded once each: a second grading finds nothing left to grade.
+    int graded = 0, again = 0;
+    for (Attempt a : all.value) {
+        a.signature = "signed";
+        if (!s->grade_attempt(a)) ++graded;
+        if (s->grade_attempt(a).fault == Fault::not_found) ++again;
+    }
+    EXPECT_EQ(graded, kStudents);
+    EXPECT_EQ(again, kStudents);
+    for (const std::string& n : names) test::pg_admin("DROP ROLE IF EXISTS \"" + n + "\"");
+    test::pg_admin("DROP ROLE IF EXISTS \"" + group + "\"");
 }
