@@ -28,6 +28,18 @@ struct Quiet final : MachineSink {};
 
 // init [--class NAME]: the class set up, the shipped exercises added.
 int class_init(const ExerciseArgs& a, store::Store& st) {
+    // On one PC: the teacher's key, apart from the class key, that
+    // exercise truth needs from now on.
+    if (st.engine() != "postgresql") {
+        if (std::string why = console::init_teacher_key(st); !why.empty()) {
+            std::fprintf(stderr, tr("pupitre: %s\n"), why.c_str());
+            return kCantCreate;
+        }
+        std::printf(tr("the teacher's key is %s: keep it where no student's account reads it; "
+                       "exercise truth on %s needs it\n"),
+                    console::teacher_key_path().c_str(), st.path().c_str());
+        return kOk;
+    }
     std::vector<store::NamedText> shipped;
     for (const std::string& n : training::builtin_exercises()) {
         training::Exercise e;

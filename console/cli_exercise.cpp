@@ -127,6 +127,10 @@ int exercise_truth(const ExerciseArgs& a) {
                    stderr);
         return kUsage;
     }
+    if (std::string why = console::teacher_allowed(*st); !why.empty()) {
+        std::fprintf(stderr, tr("pupitre: %s\n"), why.c_str());
+        return kNoPerm;
+    }
     training::Exercise e;
     if (std::string why = console::find_exercise(st.get(), a.words[1], e); !why.empty()) {
         std::fprintf(stderr, tr("pupitre: %s\n"), why.c_str());

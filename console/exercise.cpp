@@ -69,9 +69,11 @@ std::string class_key_path() {
     return {};
 }
 
-std::string class_key(bool create, std::string& key) {
-    const std::string path = class_key_path();
-    if (path.empty()) return tr("no place for the class key: set PUPITRE_CLASS_KEY or HOME");
+namespace {
+
+// A key file read into `key`, made (0600, 32 random bytes in hex) when it
+// does not exist and `create`. "" or what went wrong.
+std::string key_file(const std::string& path, bool create, std::string& key) {
     bool ok = false;
     std::string text = read_file(path, ok);
     if (ok) {
@@ -96,6 +98,52 @@ std::string class_key(bool create, std::string& key) {
     if (!written) return strf(tr("cannot write the class key %s"), path.c_str());
     fresh.pop_back();
     key = fresh;
+    return {};
+}
+
+}  // namespace
+
+std::string class_key(bool create, std::string& key) {
+    const std::string path = class_key_path();
+    if (path.empty()) return tr("no place for the class key: set PUPITRE_CLASS_KEY or HOME");
+    return key_file(path, create, key);
+}
+
+std::string teacher_key_path() {
+    if (const char* k = std::getenv("PUPITRE_TEACHER_KEY"); k && *k) return k;
+    if (const char* x = std::getenv("XDG_CONFIG_HOME"); x && *x == '/')
+        return std::string(x) + "/pupitre/teacher.key";
+    if (const char* h = std::getenv("HOME"); h && *h)
+        return std::string(h) + "/.config/pupitre/teacher.key";
+    return {};
+}
+
+namespace {
+constexpr std::string_view kTeacherIdSetting = "class.teacher_key_id";
+std::string teacher_id(const std::string& key) {
+    return sha256_hex("pupitre teacher key id\n" + key).substr(0, 16);
+}
+}  // namespace
+
+std::string init_teacher_key(store::Store& st) {
+    const std::string path = teacher_key_path();
+    if (path.empty()) return tr("no place for the teacher's key: set PUPITRE_TEACHER_KEY or HOME");
+    std::string key;
+    if (std::string why = key_file(path, true, key); !why.empty()) return why;
+    if (store::StoreError e = st.set_setting(kTeacherIdSetting, teacher_id(key))) return e.message;
+    return {};
+}
+
+std::string teacher_allowed(store::Store& st) {
+    auto id = st.setting(kTeacherIdSetting);
+    if (id.error) return id.error.message;
+    if (!id.value || id.value->empty()) return {};  // no teacher's key: the class key decides
+    std::string key;
+    const std::string path = teacher_key_path();
+    if (path.empty() || !key_file(path, false, key).empty() || teacher_id(key) != *id.value)
+        return strf(tr("exercise truth needs this store's teacher's key (%s, or "
+                       "PUPITRE_TEACHER_KEY): pupitre class init made it"),
+                    path.c_str());
     return {};
 }
 

@@ -20,6 +20,17 @@ std::string class_key_path();
 // Reads the key into `key`; when the file does not exist and `create`,
 // makes one (mode 0600, 32 random bytes in hex). "" or what went wrong.
 std::string class_key(bool create, std::string& key);
+// The teacher's key on one PC (pupitre-exercise(5), THE CLASS KEY): a file
+// apart from the class key, that the students' accounts cannot read:
+// $PUPITRE_TEACHER_KEY, else $XDG_CONFIG_HOME/pupitre/teacher.key, else
+// ~/.config/pupitre/teacher.key.
+std::string teacher_key_path();
+// class init on a file: makes the teacher's key when missing and records its
+// fingerprint in the store. "" or why not.
+std::string init_teacher_key(store::Store& st);
+// exercise truth on a file: once the store has a teacher's key, only its
+// holder draws a student's truth. "" or why not.
+std::string teacher_allowed(store::Store& st);
 // The class key for work on the store `st`. The store keeps the key's
 // fingerprint from its first attempt on: a key that is not the store's (one
 // made on a student's own account, on a shared store) is refused at once,

@@ -113,4 +113,16 @@ grep -q 'written' "$work/out" && fail "the CSV carries a message: $(cat "$work/o
 [ $? = 73 ] || fail "a PDF that cannot be written should exit 73"
 "$bin" "${db[@]}" class rapport 2> /dev/null
 [ $? = 64 ] || fail "class rapport should be a usage error"
+# On one PC, class init makes the teacher's key, apart from the class key:
+# from then on exercise truth needs it, and a student's own key is refused.
+"$bin" "${db[@]}" class init > "$work/out" || fail "class init on a file: $(cat "$work/out")"
+grep -q "the teacher's key is $work/config/pupitre/teacher.key" "$work/out" || fail "$(cat "$work/out")"
+[ "$(stat -c %a "$work/config/pupitre/teacher.key")" = 600 ] || fail "the teacher's key is not 0600"
+"$bin" "${db[@]}" exercise truth exam-2005-drawn --student ann > /dev/null || fail "truth with the teacher's key"
+PUPITRE_TEACHER_KEY=$work/student.key "$bin" "${db[@]}" exercise truth exam-2005-drawn --student ann 2> "$work/err"
+[ $? = 77 ] || fail "truth without the teacher's key should exit 77"
+grep -q "exercise truth needs this store's teacher's key" "$work/err" || fail "$(cat "$work/err")"
+echo "0123456789abcdef0123" > "$work/student.key"
+PUPITRE_TEACHER_KEY=$work/student.key "$bin" "${db[@]}" exercise truth exam-2005-drawn --student ann 2> /dev/null
+[ $? = 77 ] || fail "truth with another key should exit 77"
 echo "training cli: ok"
