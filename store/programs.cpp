@@ -113,7 +113,7 @@ ProgramInfo info_of(const sql::Use& u) {
 }  // namespace
 
 // The programs row of one number, inside a transaction.
-struct Store::ProgramRow {
+struct ProgramRow {
     bool found = false;
     int head = 0, last = 0, conflict = 0;
     bool deleted = false;

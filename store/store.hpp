@@ -189,6 +189,12 @@ struct CopyReport {
     std::vector<Table> tables;
 };
 
+// Inside the store, whose files define them: a program's row as a write
+// reads it (store/programs.cpp), the columns a corrector's or origin's name
+// is stored in (store/values.cpp).
+struct ProgramRow;
+struct StoredName;
+
 // One connection to a store. Not shared between threads: a thread or a
 // process opens its own. SQLite serialises the writers (WAL, BEGIN
 // IMMEDIATE); PostgreSQL runs each write SERIALIZABLE and the store runs it
@@ -320,7 +326,6 @@ class Store {
     StoreError create_file();
     StoreError validate_and_migrate(bool& fresh);
     StoreError seed();
-    struct ProgramRow;
     StoreError read_row(int number, ProgramRow& row, const std::string& what);
     StoreError insert_revision(int number, int rev, RevisionKind kind, int based_on, bool conflict,
                                const std::string* text, const std::string& source,
@@ -332,9 +337,6 @@ class Store {
     Result<std::string> revision_text(int number, int revision, const std::string& what);
     Result<CopyReport::Table> table_sum(const char* name, const char* select, const char* kinds);
 
-  public:
-    struct StoredName;  // a corrector's or origin's columns (store/values.cpp)
-  private:
     Result<std::vector<Change>> write_values(std::string_view machine,
                                              const std::vector<std::pair<std::string, int64_t>>& v,
                                              const std::vector<StoredName>& names,
