@@ -191,9 +191,10 @@ struct CopyReport {
 
 // Inside the store, whose files define them: a program's row as a write
 // reads it (store/programs.cpp), the columns a corrector's or origin's name
-// is stored in (store/values.cpp).
+// is stored in (store/values.cpp), a program text's header (store/text.hpp).
 struct ProgramRow;
 struct StoredName;
+struct Header;
 
 // One connection to a store. Not shared between threads: a thread or a
 // process opens its own. SQLite serialises the writers (WAL, BEGIN
@@ -334,6 +335,16 @@ class Store {
     StoreError update_program(const char* sql, const std::string& what, int number,
                               const T&... more);
     Result<SaveResult> save_one(const Piece& p, int based_on, RevisionKind kind);
+    struct ImportPlan;
+    template <class F>
+    StoreError for_numbers(const char* head, const std::vector<int>& numbers,
+                           const std::string& what, F&& f);
+    StoreError read_import(const std::vector<Piece>& pieces, ImportPlan& plan,
+                           const std::string& what);
+    Result<std::vector<SaveResult>> plan_import(const std::vector<Piece>& pieces,
+                                                const std::vector<Header>& headers,
+                                                ImportPlan& plan, const std::string& what);
+    StoreError write_import(const ImportPlan& plan);
     Result<std::string> revision_text(int number, int revision, const std::string& what);
     Result<CopyReport::Table> table_sum(const char* name, const char* select, const char* kinds);
 
