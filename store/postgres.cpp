@@ -10,6 +10,7 @@
 #include <libpq-fe.h>
 #include <poll.h>
 
+#include <charconv>
 #include <cstdlib>
 #include <cstring>
 #include <map>
@@ -361,9 +362,13 @@ bool PgStmt::binary_results(const PGresult* d) {
     return bytea;
 }
 
+// Reading a column is what a list of 10,000 programs does 100,000 times: a
+// NULL is told by its length 0 (it reads as 0, as an empty text would), the
+// digits by from_chars, rather than by PQgetisnull and strtoll.
 int64_t PgStmt::i64(int c) const {
-    if (is_null(c)) return 0;
     const char* v = PQgetvalue(res_, row_, c);
+    const int n = PQgetlength(res_, row_, c);
+    if (n == 0) return 0;
     if (binary_) {
         const Oid t = PQftype(res_, c);
         if (t == kInt8Oid) {
@@ -383,15 +388,18 @@ int64_t PgStmt::i64(int c) const {
             return int16_t(ntohs(x));
         }
     }
-    return std::strtoll(v, nullptr, 10);
+    int64_t x = 0;
+    std::from_chars(v, v + n, x);
+    return x;
 }
 
 // Text columns as the server sent them; bytea (program texts) as its bytes,
 // in binary results, or decoded from the server's hex form, so the bytes are
 // exactly those stored. Integers in binary results as they read in text.
 std::string_view PgStmt::view(int c) const {
-    if (is_null(c)) return {};
     const char* v = PQgetvalue(res_, row_, c);
+    const size_t n = size_t(PQgetlength(res_, row_, c));
+    if (n == 0) return PQgetisnull(res_, row_, c) ? std::string_view() : std::string_view(v, 0);
     const Oid t = PQftype(res_, c);
     if (binary_ && (t == kInt8Oid || t == kInt4Oid || t == kInt2Oid)) {
         if (decoded_row_ != row_) {
@@ -400,16 +408,16 @@ std::string_view PgStmt::view(int c) const {
         }
         return decoded_[size_t(c)] = std::to_string(i64(c));
     }
-    if (binary_ || t != kByteaOid) return {v, size_t(PQgetlength(res_, row_, c))};
+    if (binary_ || t != kByteaOid) return {v, n};
     if (decoded_row_ != row_) {
         decoded_.assign(size_t(PQnfields(res_)), std::string());
         decoded_row_ = row_;
     }
     std::string& d = decoded_[size_t(c)];
     if (d.empty()) {
-        size_t n = 0;
-        unsigned char* bytes = PQunescapeBytea(reinterpret_cast<const unsigned char*>(v), &n);
-        if (bytes) d.assign(reinterpret_cast<const char*>(bytes), n);
+        size_t len = 0;
+        unsigned char* bytes = PQunescapeBytea(reinterpret_cast<const unsigned char*>(v), &len);
+        if (bytes) d.assign(reinterpret_cast<const char*>(bytes), len);
         PQfreemem(bytes);
     }
     return d;

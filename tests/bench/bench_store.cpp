@@ -75,14 +75,14 @@ class Place {
                "'";
     }
 
-    // A store filled just now, as the server knows it a minute later: its
-    // planner's statistics made, as autovacuum does after so many new rows
-    // (without them, the list of 10,000 is sorted rather than read in key
-    // order: 10 ms rather than 3). SQLite needs nothing.
+    // Attempts made over a class's session, as the server knows them when the
+    // teacher asks for the report: the planner's statistics made, as
+    // autovacuum does after so many new rows. SQLite needs nothing. (The
+    // programs are listed right after their import: Store::list asks
+    // nothing of the planner's statistics.)
     void settle() {
         if (pg_)
-            for (const std::string& s : schemas_)
-                run("ANALYZE " + s + ".programs, " + s + ".attempts");
+            for (const std::string& s : schemas_) run("ANALYZE " + s + ".attempts");
     }
 
   private:
