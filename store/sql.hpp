@@ -6,10 +6,13 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
+#include <map>
+#include <mutex>
 #include <random>
 #include <string>
 #include <string_view>
 #include <thread>
+#include <tuple>
 
 #include "store/backend.hpp"
 
@@ -66,6 +69,56 @@ class Use {
   public:
     StoreError error;
 };
+
+// One statement for many rows: `head`, then `row` (a row's part, written
+// with the parameters ?1..?width) `rows` times separated by ", ", each
+// copy's parameters numbered after the previous one's (the second row's ?1
+// is ?width+1), then `tail`. Each text is made once per (head, rows, tail)
+// and kept for the life of the process, as Backend::prepare wants (it keys
+// statements by address); the stores of several threads share them.
+inline const char* repeated(const char* head, const char* row, int width, int rows,
+                            const char* tail = "") {
+    static std::mutex m;
+    static std::map<std::tuple<const char*, int, const char*>, std::string> made;
+    std::lock_guard<std::mutex> lock(m);
+    std::string& sql = made[{head, rows, tail}];
+    if (!sql.empty()) return sql.c_str();
+    sql = head;
+    for (int r = 0; r < rows; ++r) {
+        if (r) sql += ", ";
+        for (const char* p = row; *p; ++p) {
+            if (*p != '?') {
+                sql += *p;
+                continue;
+            }
+            int n = 0;
+            while (p[1] >= '0' && p[1] <= '9') n = n * 10 + (*++p - '0');
+            sql += '?' + std::to_string(r * width + n);
+        }
+    }
+    sql += tail;
+    return sql.c_str();
+}
+
+// How many rows the multi-row statements of a batch carry: as many as the
+// largest holds, the rest in smaller ones (at most three of each), so that a
+// batch makes few round trips and few statements are prepared. 256 rows of
+// 11 parameters stay far below both engines' limits (SQLite 32766, PostgreSQL
+// 65535).
+inline constexpr int kBatchRows[] = {256, 64, 16, 4, 1};
+
+// Calls f(first, count) over [0, n) in chunks of kBatchRows; stops at the
+// first error.
+template <class F>
+StoreError in_batches(size_t n, F&& f) {
+    size_t at = 0;
+    for (int size : kBatchRows)
+        while (n - at >= size_t(size)) {
+            if (StoreError e = f(at, size_t(size))) return e;
+            at += size_t(size);
+        }
+    return {};
+}
 
 inline StoreError& error_of(StoreError& e) {
     return e;

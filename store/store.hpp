@@ -221,6 +221,13 @@ struct StudentStatus {
     int64_t now_ms = 0;  // the server's clock
 };
 
+// Inside the store, whose files define them: a program's row as a write
+// reads it (store/programs.cpp), the columns a corrector's or origin's name
+// is stored in (store/values.cpp), a program text's header (store/text.hpp).
+struct ProgramRow;
+struct StoredName;
+struct Header;
+
 // One connection to a store. Not shared between threads: a thread or a
 // process opens its own. SQLite serialises the writers (WAL, BEGIN
 // IMMEDIATE); PostgreSQL runs each write SERIALIZABLE and the store runs it
@@ -388,7 +395,6 @@ class Store {
     StoreError create_file();
     StoreError validate_and_migrate(bool& fresh);
     StoreError seed();
-    struct ProgramRow;
     StoreError read_row(int number, ProgramRow& row, const std::string& what);
     StoreError insert_revision(int number, int rev, RevisionKind kind, int based_on, bool conflict,
                                const std::string* text, const std::string& source,
@@ -397,12 +403,19 @@ class Store {
     StoreError update_program(const char* sql, const std::string& what, int number,
                               const T&... more);
     Result<SaveResult> save_one(const Piece& p, int based_on, RevisionKind kind);
+    struct ImportPlan;
+    template <class F>
+    StoreError for_numbers(const char* head, const std::vector<int>& numbers,
+                           const std::string& what, F&& f);
+    StoreError read_import(const std::vector<Piece>& pieces, ImportPlan& plan,
+                           const std::string& what);
+    Result<std::vector<SaveResult>> plan_import(const std::vector<Piece>& pieces,
+                                                const std::vector<Header>& headers,
+                                                ImportPlan& plan, const std::string& what);
+    StoreError write_import(const ImportPlan& plan);
     Result<std::string> revision_text(int number, int revision, const std::string& what);
     Result<CopyReport::Table> table_sum(const char* name, const char* select, const char* kinds);
 
-  public:
-    struct StoredName;  // a corrector's or origin's columns (store/values.cpp)
-  private:
     Result<std::vector<Change>> write_values(std::string_view machine,
                                              const std::vector<std::pair<std::string, int64_t>>& v,
                                              const std::vector<StoredName>& names,

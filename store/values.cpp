@@ -12,7 +12,7 @@ namespace pupitre::store {
 
 // "D12.DX" -> corrector 12, field DX; "PREF.Z" -> origin PREF, axis Z: the
 // columns of a row of correctors or origins.
-struct Store::StoredName {
+struct StoredName {
     bool corrector = false;
     int d = 0;
     std::string field;  // corrector field, or origin kind
@@ -21,7 +21,7 @@ struct Store::StoredName {
 
 namespace {
 
-bool parse_name(std::string_view s, Store::StoredName& n) {
+bool parse_name(std::string_view s, StoredName& n) {
     ValueName v;
     if (!parse_value_name(s, v)) return false;
     n.corrector = v.kind == ValueName::Kind::corrector;

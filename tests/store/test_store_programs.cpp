@@ -3,6 +3,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <algorithm>
 #include <filesystem>
+#include <map>
 
 #include "store/text.hpp"
 #include "store_helpers.hpp"
@@ -294,6 +295,94 @@ TEST_P(StorePrograms, SaveAllIsAllOrNothing) {
     EXPECT_EQ(r.value[0].status, SaveStatus::unchanged);
     EXPECT_EQ(r.value[1].status, SaveStatus::saved);
     EXPECT_EQ(s->history(21).value.back().kind, RevisionKind::import);
+}
+
+// An import meets what the store holds: programs unchanged (one with a
+// conflict kept aside, which the import settles), changed (one of the same
+// size), deleted, new, and a number given twice; more pieces than one
+// multi-row statement carries. Each piece ends as a save of its own would.
+TEST_P(StorePrograms, ImportOfManyMeetsWhatIsStored) {
+    test::Place t(GetParam());
+    Options o;
+    o.seed = false;
+    auto s = test::open_store(t / "many.db", o);
+    auto text = [](int n, const std::string& body) {
+        return "%" + std::to_string(n) + " (P" + std::to_string(n) + ")\n" + body + "\n";
+    };
+    std::vector<Piece> first;
+    for (int n = 1; n <= 300; ++n) first.push_back({n, text(n, "N10 G0 X1"), "import a.iso"});
+    auto r = s->save_all(first);
+    ASSERT_TRUE(r.ok()) << r.error.message;
+    ASSERT_EQ(r.value.size(), 300u);
+    EXPECT_EQ(r.value[299].status, SaveStatus::created);
+    ASSERT_TRUE(s->save(5, text(5, "N10 G0 X2"), 1, "").ok());  // r2 current
+    ASSERT_EQ(s->save(5, text(5, "N10 G0 X3"), 1, "").value.status, SaveStatus::conflict);
+    ASSERT_TRUE(s->remove(7).ok());  // r2: deleted
+    std::vector<Piece> again{
+        {5, text(5, "N10 G0 X2"), "import b.iso"}, {6, text(6, "N10 G0 X1"), "import b.iso"},
+        {7, text(7, "N10 G0 X1"), "import b.iso"}, {8, text(8, "N10 G0 X1 Y1"), "import b.iso"},
+        {9, text(9, "N10 G0 X9"), "import b.iso"},  // same size
+        {2000, text(2000, "A"), "import b.iso"},   {2000, text(2000, "B"), "import b.iso"},
+        {2001, text(2001, "C"), "import b.iso"},   {2001, text(2001, "C"), "import b.iso"}};
+    for (int n = 1000; n < 1270; ++n) again.push_back({n, text(n, "N1"), "import b.iso"});
+    r = s->save_all(again);
+    ASSERT_TRUE(r.ok()) << r.error.message;
+    ASSERT_EQ(r.value.size(), again.size());
+    struct Want {
+        int number;
+        SaveStatus status;
+        int revision;
+    };
+    const Want want[] = {{5, SaveStatus::unchanged, 2},   {6, SaveStatus::unchanged, 1},
+                         {7, SaveStatus::created, 3},     {8, SaveStatus::saved, 2},
+                         {9, SaveStatus::saved, 2},       {2000, SaveStatus::created, 1},
+                         {2000, SaveStatus::saved, 2},    {2001, SaveStatus::created, 1},
+                         {2001, SaveStatus::unchanged, 1}};
+    for (size_t i = 0; i < std::size(want); ++i) {
+        SCOPED_TRACE(i);
+        EXPECT_EQ(r.value[i].number, want[i].number);
+        EXPECT_EQ(r.value[i].status, want[i].status);
+        EXPECT_EQ(r.value[i].revision, want[i].revision);
+        EXPECT_EQ(r.value[i].current, want[i].revision);
+        EXPECT_EQ(r.value[i].current_by, "tester");
+        EXPECT_FALSE(r.value[i].deleted);
+    }
+    EXPECT_EQ(r.value.back().status, SaveStatus::created);
+    // The conflict kept aside is settled; the deleted program is back.
+    // In number order, rows the import moved in the table (%5 to %9) included.
+    const std::vector<ProgramInfo> all = s->list().value;
+    EXPECT_TRUE(std::is_sorted(all.begin(), all.end(),
+                               [](const auto& a, const auto& b) { return a.number < b.number; }));
+    std::map<int, ProgramInfo> listed;
+    for (const ProgramInfo& p : all) listed[p.number] = p;
+    EXPECT_EQ(listed.size(), 300u + 2 + 270);
+    EXPECT_EQ(listed[5].conflict, 0);
+    EXPECT_EQ(listed[5].revision, 2);
+    EXPECT_EQ(listed[7].revision, 3);
+    EXPECT_EQ(listed[2000].revision, 2);
+    EXPECT_EQ(listed[9].title, "P9");
+    EXPECT_EQ(listed[1269].size, int64_t(text(1269, "N1").size()));
+    EXPECT_EQ(s->read(2000).value.text, text(2000, "B"));
+    EXPECT_EQ(s->read(2000, 1).value.text, text(2000, "A"));
+    EXPECT_EQ(s->read(9).value.text, text(9, "N10 G0 X9"));
+    EXPECT_EQ(s->read(7).value.text, text(7, "N10 G0 X1"));
+    auto h = s->history(7).value;
+    ASSERT_EQ(h.size(), 3u);
+    EXPECT_EQ(h[2].kind, RevisionKind::import);
+    EXPECT_EQ(h[2].based_on, 2);
+    EXPECT_EQ(h[2].source, "import b.iso");
+    EXPECT_EQ(s->history(5).value.size(), 3u);  // nothing written for it
+    EXPECT_EQ(s->history(2001).value.size(), 1u);
+    EXPECT_EQ(s->history(1100).value[0].lines, 2);
+    EXPECT_EQ(s->integrity_check().value, "ok");
+    // The same import again: each number's last text is current.
+    r = s->save_all(again);
+    ASSERT_TRUE(r.ok()) << r.error.message;
+    EXPECT_EQ(r.value[0].status, SaveStatus::unchanged);
+    EXPECT_EQ(r.value[5].status, SaveStatus::saved);  // A over B
+    EXPECT_EQ(r.value[5].revision, 3);
+    EXPECT_EQ(r.value[6].revision, 4);
+    EXPECT_EQ(r.value.back().status, SaveStatus::unchanged);
 }
 
 TEST(StoreText, SplitsAFileIntoPrograms) {
