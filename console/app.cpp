@@ -110,7 +110,8 @@ int event_loop(console::Session& s, console::Terminal& term, bool ascii) {
             term.draw(canvas, cx, cy);
             dirty = false;
         }
-        int timeout = s.busy() ? 30 : dec.pending() ? 25 : 500;
+        const bool picture = s.picture_pending();
+        int timeout = s.busy() || picture ? 30 : dec.pending() ? 25 : 500;
         struct pollfd pfd = {STDIN_FILENO, POLLIN, 0};
         int r = poll(&pfd, 1, timeout);
         if (console::Terminal::interrupted()) return kOk;
@@ -136,6 +137,7 @@ int event_loop(console::Session& s, console::Terminal& term, bool ascii) {
             s.tick(std::min(dt, 0.5));
             dirty = true;
         }
+        if (picture) dirty = true;  // the worker's picture, when it is made
     }
 }
 
@@ -285,6 +287,10 @@ int console(const ConsoleArgs& a) {
         return kNoInput;
     }
     bool ascii = a.ascii || !console::Terminal::utf8_locale();
+    console::Screen screen;
+    screen.colours = term.colours();
+    screen.ascii = ascii;
+    s.set_screen(screen);
     int rc = event_loop(s, term, ascii);
     term.close();
     // A signal (a logout, a kill) ended the console with the editor's work

@@ -15,6 +15,7 @@
 #include <cstring>
 
 #include "core/i18n.hpp"
+#include "pages/page_part.hpp"
 
 namespace pupitre::console {
 
@@ -69,6 +70,9 @@ short pair_of(pages::Style s) {
     return short(int(s) + 1);
 }
 
+// The pairs after the theme's are the pictures' (term.hpp, pair_for).
+constexpr int kFirstPicturePair = 16;
+
 }  // namespace
 
 bool parse_theme(const std::string& name, Theme& out) {
@@ -122,6 +126,12 @@ std::string Terminal::open(Theme theme) {
         start_color();
         use_default_colors();
         theme_colours(theme);
+        if (theme == Theme::colour)
+            colours_ = COLORS >= 0x1000000 ? pages::Colours::direct
+                       : COLORS >= 256     ? pages::Colours::c256
+                       : COLORS >= 16      ? pages::Colours::c16
+                                           : pages::Colours::c8;
+        next_pair_ = kFirstPicturePair;
     } else {
         theme_colours(Theme::mono);
     }
@@ -185,6 +195,12 @@ bool Terminal::resized() {
 
 void Terminal::draw(const pages::Canvas& c, int cx, int cy) {
     using S = pages::Style;
+    // The pictures' pairs begin again while half are free: a frame never
+    // redefines a pair it drew with.
+    if (next_pair_ > (COLOR_PAIRS + kFirstPicturePair) / 2) {
+        pairs_.clear();
+        next_pair_ = kFirstPicturePair;
+    }
     for (int y = 0; y < c.height() && y < rows_; ++y) {
         for (int x = 0; x < c.width() && x < cols_; ++x) {
             const pages::Cell& cell = c.at(x, y);
@@ -223,14 +239,46 @@ void Terminal::draw(const pages::Canvas& c, int cx, int cy) {
             }
             wchar_t wc[2] = {wchar_t(cell.ch), 0};
             cchar_t cc;
+            int own = 0;  // a picture's cell in its own colours
+            if ((cell.fg != pages::kNoColour || cell.bg != pages::kNoColour) &&
+                colours_ != pages::Colours::none)
+                own = pair_for(cell.fg, cell.bg);
             // The colour pair is setcchar's own argument: a COLOR_PAIR in the
-            // attributes would be overridden by it.
-            setcchar(&cc, wc, a, pair, nullptr);
+            // attributes would be overridden by it (an extended pair is given
+            // through the last one).
+            if (own > 0)
+                setcchar(&cc, wc, A_NORMAL, 0, &own);
+            else
+                setcchar(&cc, wc, a, pair, nullptr);
             mvadd_wch(y, x, &cc);
         }
     }
     move(cy, cx);
     refresh();
+}
+
+int Terminal::colour_number(uint32_t c) const {
+    if (c == pages::kNoColour) return -1;  // the terminal's own (use_default_colors)
+    if (c & pages::kPaletteBit) return int(c & 0xff);
+    if (colours_ == pages::Colours::direct) return int(c & 0xffffff);
+    const uint32_t t =
+        pages::terminal_colour(render::rgb((c >> 16) & 0xff, (c >> 8) & 0xff, c & 0xff), colours_);
+    return int(t & 0xff);
+}
+
+int Terminal::pair_for(uint32_t fg, uint32_t bg) {
+    const uint64_t k = uint64_t(fg) << 32 | bg;
+    if (auto it = pairs_.find(k); it != pairs_.end()) return it->second;
+    if (next_pair_ >= COLOR_PAIRS) {
+        // Every pair taken: begin again (the whole frame is drawn anew).
+        pairs_.clear();
+        next_pair_ = kFirstPicturePair;
+    }
+    if (next_pair_ >= COLOR_PAIRS) return 0;
+    const int p = next_pair_++;
+    init_extended_pair(p, colour_number(fg), colour_number(bg));
+    pairs_.emplace(k, p);
+    return p;
 }
 
 }  // namespace pupitre::console

@@ -3,9 +3,12 @@
 // every way out (quit, Ctrl-C, a signal, a crash).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
+#include <cstdint>
 #include <string>
+#include <unordered_map>
 
 #include "pages/canvas.hpp"
+#include "pages/cells.hpp"
 
 namespace pupitre::console {
 
@@ -29,9 +32,18 @@ class Terminal {
     static int signal_caught();  // SIGTERM, SIGHUP…: the one that ended the loop, or 0
     // Whether the terminal's locale can show UTF-8 (else the ASCII fallback).
     static bool utf8_locale();
+    // The colours a picture's cells may take: the terminal's own (24-bit
+    // when its terminfo says so), none in the mono and phosphor themes.
+    pages::Colours colours() const { return colours_; }
 
   private:
     void theme_colours(Theme t);
+    // The colour pair of a cell's own colours, made on first use.
+    int pair_for(uint32_t fg, uint32_t bg);
+    int colour_number(uint32_t c) const;
+    pages::Colours colours_ = pages::Colours::none;
+    std::unordered_map<uint64_t, int> pairs_;
+    int next_pair_ = 0;
     bool open_ = false;
     Theme theme_ = Theme::mono;
     int rows_ = 24, cols_ = 80;

@@ -49,6 +49,13 @@ Colour legend_colour(const Legend& l, double v) {
     return depth_colour(l.depth > 0 ? v / l.depth : 0);
 }
 
+Colour legend_sample(const Legend& l, int k, int n) {
+    if (l.paint != Paint::deviation) return legend_colour(l, l.depth * (k + 0.5) / n);
+    const double v0 = -l.span_um + 2 * l.span_um * k / n, v1 = v0 + 2 * l.span_um / n;
+    if (v1 >= l.lower_um && v0 <= l.upper_um) return kInside;
+    return legend_colour(l, (v0 + v1) / 2);
+}
+
 double round_up(double v) {
     if (!(v > 0)) return 1;
     const double p = std::pow(10.0, std::floor(std::log10(v)));

@@ -36,6 +36,10 @@ struct Legend {
 };
 // The colour of the scale at `v` (µm for a deviation, mm for a depth).
 Colour legend_colour(const Legend& l, double v);
+// The colour of sample k of n along the scale, from its low end: the
+// tolerance's green in every sample that holds some of the band, however
+// narrow it is on the scale.
+Colour legend_sample(const Legend& l, int k, int n);
 // A deviation of `dev_um` for limits [lower_um, upper_um]: green inside,
 // from orange to red over, from cyan to blue under, full at `span_um`
 // beyond the limit.

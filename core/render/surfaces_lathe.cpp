@@ -109,7 +109,7 @@ Found lathe_surface(const PartScene& s, const Surfaces& sf, const DimReading& d,
         const double r = w == "dia" ? rs.back() : rs.front();
         double z0 = z, z1 = z;
         if (!level_stretch(sf.outline, r, z, f.edges, z0, z1)) return f;
-        f.anchor = {(z0 + z1) / 2, r, 0};
+        f.anchor = {z, r, 0};  // where the micrometer read
         nominal.push_back(
             {workshop::Pt{z0, d.dim.nominal / 2}, workshop::Pt{z1, d.dim.nominal / 2}});
     } else if (w == "groove") {

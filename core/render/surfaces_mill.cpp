@@ -176,18 +176,14 @@ void mill_surfaces(const PartScene& s, Surfaces& out) {
         if (!d.read) continue;
         const std::vector<size_t> cells = mill_surface(m, d);
         const Colour c = reading_colour(d, out.legend.span_um);
-        double sx = 0, sy = 0, sz = 0;
-        for (size_t k : cells) {
-            l0.c[k] = c;
-            sx += (double(k % size_t(m.nx)) + 0.5) * m.cell,
-                sy += (double(k / size_t(m.nx)) + 0.5) * m.cell;
-            sz += l0.h[k];
-        }
-        const double n = double(cells.size());
-        out.anchor[i] =
-            cells.empty()
-                ? std::array<double, 3>{d.place.at[0], d.place.at[1], d.place.at[2]}
-                : std::array<double, 3>{m.stock.lo[0] + sx / n, m.stock.lo[1] + sy / n, sz / n};
+        for (size_t k : cells) l0.c[k] = c;
+        // The label points where the instrument read: on the material's top
+        // there (a width: at its Z, in the gap).
+        const auto& p = d.place.at;
+        const int ci = std::clamp(int((p[0] - m.stock.lo[0]) / m.cell), 0, m.nx - 1);
+        const int cj = std::clamp(int((p[1] - m.stock.lo[1]) / m.cell), 0, m.ny - 1);
+        const double z = d.place.word == "width" ? p[2] : double(m.h(ci, cj));
+        out.anchor[i] = {p[0], p[1], z};
     }
     out.block.push_back(std::move(l0));
     coarser(out.block);
