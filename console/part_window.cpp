@@ -20,6 +20,7 @@ struct PartWindow::Job {
     int w = 0, h = 0, cols = 0, rows = 0;
     pages::Colours colours = pages::Colours::none;
     bool ascii = false, cells = true;
+    ImageProtocol protocol = ImageProtocol::none;
     uint64_t number = 0;
 };
 
@@ -28,6 +29,7 @@ struct PartWindow::Made {
     std::shared_ptr<const render::PartScene> scene;
     std::shared_ptr<const render::Picture> picture;
     pages::CellImage cells;
+    std::string sequence;  // the terminal's own picture
     uint64_t number = 0;
 };
 
@@ -140,6 +142,9 @@ void PartWindow::work() {
         if (job->cells)
             made->cells = pages::to_cells(made->picture->image, job->cols, job->rows, job->colours,
                                           job->ascii);
+        else
+            made->sequence =
+                image_sequence(made->picture->image, job->protocol, job->cols, job->rows, 1);
         lk.lock();
         made_ = std::move(made);
         working_ = false;
@@ -163,6 +168,11 @@ std::shared_ptr<const render::Picture> PartWindow::picture() const {
 
 uint64_t PartWindow::serial() const {
     return asked_->shown ? asked_->shown->number : 0;
+}
+
+const std::string* PartWindow::sequence() const {
+    if (!asked_->shown || asked_->shown->sequence.empty()) return nullptr;
+    return &asked_->shown->sequence;
 }
 
 // ---- the page ----
@@ -219,6 +229,7 @@ void PartWindow::fill(pages::View& v, const Sim& sim, const render::Drawing* dra
     want.paint = drawing ? paint_ : render::Paint::depth;
     want.cols = area.w, want.rows = area.h;
     want.colours = screen.colours, want.ascii = screen.ascii, want.cells = !screen.images();
+    want.protocol = screen.images() ? screen.protocol : ImageProtocol::none;
     picture_size(area, screen, want.w, want.h);
     const std::string name = drawing ? drawing->name : std::string();
     const bool material = w != a.shop || w->generation() != a.generation || name != a.drawing;

@@ -15,6 +15,7 @@
 #include <string_view>
 #include <thread>
 
+#include "console/term_image.hpp"
 #include "core/render/part_view.hpp"
 #include "core/sim/sim.hpp"
 #include "pages/cells.hpp"
@@ -26,10 +27,11 @@ namespace pupitre::console {
 struct Screen {
     pages::Colours colours = pages::Colours::none;
     bool ascii = false;
-    // The terminal draws pictures itself (sixel, kitty): the cell's size in
-    // pixels; 0: it does not.
+    // The terminal draws pictures itself (sixel, kitty; term_image.hpp),
+    // the cell's size in pixels.
+    ImageProtocol protocol = ImageProtocol::none;
     int cell_w = 0, cell_h = 0;
-    bool images() const { return cell_w > 0 && cell_h > 0; }
+    bool images() const { return protocol != ImageProtocol::none && cell_w > 0 && cell_h > 0; }
 };
 
 class PartWindow {
@@ -61,6 +63,9 @@ class PartWindow {
     // draws it again); null when none.
     std::shared_ptr<const render::Picture> picture() const;
     uint64_t serial() const;
+    // That picture as the terminal's own (Screen::protocol), null when the
+    // terminal draws none.
+    const std::string* sequence() const;
 
   private:
     struct Job;

@@ -5,6 +5,7 @@
 
 #include <curses.h>
 #include <langinfo.h>
+#include <poll.h>
 #include <sys/ioctl.h>
 #include <termios.h>
 #include <unistd.h>
@@ -182,6 +183,60 @@ void Terminal::theme_colours(Theme t) {
     theme_ = t;
 }
 
+void Terminal::ask_images(int ms) {
+    const char* term = std::getenv("TERM");
+    const std::string t = term ? term : "";
+    if (t.empty() || t == "dumb" || t == "linux") return;
+    struct winsize ws;
+    if (ioctl(STDOUT_FILENO, TIOCGWINSZ, &ws) == 0 && ws.ws_col > 0 && ws.ws_row > 0)
+        cell_w_ = ws.ws_xpixel / ws.ws_col, cell_h_ = ws.ws_ypixel / ws.ws_row;
+    const std::string q = image_query(true);
+    if (write(STDOUT_FILENO, q.data(), q.size()) != ssize_t(q.size())) return;
+    std::string got;
+    ImageAnswer a;
+    for (int waited = 0; waited < ms && !a.done; waited += 10) {
+        struct pollfd pfd = {STDIN_FILENO, POLLIN, 0};
+        if (poll(&pfd, 1, 10) > 0) {
+            char buf[512];
+            const ssize_t n = read(STDIN_FILENO, buf, sizeof buf);
+            if (n > 0) got.append(buf, size_t(n));
+        }
+        input_.clear();
+        a = parse_answers(got, input_);
+    }
+    if (a.cell_w > 0 && a.cell_h > 0) cell_w_ = a.cell_w, cell_h_ = a.cell_h;
+    images_ = cell_w_ > 0 && cell_h_ > 0 ? a.protocol() : ImageProtocol::none;
+}
+
+void Terminal::picture(int x, int y, const std::string* seq, uint64_t serial) {
+    if (images_ == ImageProtocol::none) return;
+    if (!seq || seq->empty()) {
+        if (shown_ == 0) return;
+        const std::string del = image_delete(images_, 1);
+        if (!del.empty() && write(STDOUT_FILENO, del.data(), del.size()) < 0) return;
+        if (images_ == ImageProtocol::sixel) {  // its pixels stay until the screen is drawn again
+            clearok(curscr, TRUE);
+            refresh();
+        }
+        shown_ = 0;
+        return;
+    }
+    if (serial == shown_ && !repainted_) return;
+    // Where ncurses left the cursor, to put it back.
+    int cy = 0, cx = 0;
+    getyx(stdscr, cy, cx);
+    std::string out = "\033[" + std::to_string(y + 1) + ";" + std::to_string(x + 1) + "H" + *seq +
+                      "\033[" + std::to_string(cy + 1) + ";" + std::to_string(cx + 1) + "H";
+    size_t at = 0;
+    while (at < out.size()) {
+        const ssize_t n = write(STDOUT_FILENO, out.data() + at, out.size() - at);
+        if (n <= 0) break;
+        at += size_t(n);
+    }
+    shown_ = serial;
+    repainted_ = false;
+}
+
 bool Terminal::resized() {
     if (!g_winch) return false;
     g_winch = 0;
@@ -190,6 +245,7 @@ bool Terminal::resized() {
         resizeterm(ws.ws_row, ws.ws_col);
     getmaxyx(stdscr, rows_, cols_);
     clearok(stdscr, TRUE);
+    repainted_ = true;  // a picture is drawn again over the new screen
     return true;
 }
 
