@@ -105,7 +105,7 @@ Answer<int> write_part_picture(const std::string& path, const workshop::Workshop
                                const PaperTitle& title) {
     const auto scene = render::snapshot(w, om, drawing);
     const auto sf =
-        render::prepare(*scene, drawing ? render::Paint::deviation : render::Paint::depth);
+        render::prepare(*scene, drawing ? render::Paint::deviation : render::Paint::depth, true);
     const render::Picture p = paper_picture(*scene, *sf, look);
     PartSheet sheet;
     sheet.title = title.title;

@@ -144,6 +144,18 @@ void terrain(const MillScene& m, const Surfaces& sf, const Cam& c, Image& img,
     for (int x = 0; x < c.w; ++x) column(c, sample, t0, t1, m.table_z - 15, x, img, zbuf);
 }
 
+// A point of a surface, drawn where it is the nearest.
+void splat(const Cam& c, const Vector3d& p, Colour col, Image& img, std::vector<float>& zbuf) {
+    const V2 q = c.px(p);
+    const int x = int(std::floor(q[0])), y = int(std::floor(q[1]));
+    if (x < 0 || y < 0 || x >= c.w || y >= c.h) return;
+    float& z = zbuf[size_t(y) * size_t(c.w) + size_t(x)];
+    const double d = p.dot(c.v);
+    if (d >= z) return;
+    z = float(d);
+    img.set(x, y, col);
+}
+
 // The cutter and its holder as points of their surface (those facing the
 // eye), half a pixel apart.
 void cutter(const MillScene& m, const Cam& c, const Palette& pal, Image& img,
@@ -156,6 +168,17 @@ void cutter(const MillScene& m, const Cam& c, const Palette& pal, Image& img,
     double step = c.s / 2;
     const double points = (top / step) * (kPi * m.cutter.holder / step);
     if (points > 2e6) step *= std::sqrt(points / 2e6);
+    // The holder's top, where it faces the eye (seen from above).
+    if (u.dot(c.v) < 0)
+        for (double rho = 0; rho <= m.cutter.holder; rho += step) {
+            const int n = std::max(8, int(std::ceil(2 * kPi * rho / step)));
+            for (int k = 0; k < n; ++k) {
+                const double phi = 2 * kPi * k / n;
+                splat(c, tip + top * u + rho * (std::cos(phi) * e1 + std::sin(phi) * e2),
+                      shade(pal.cutter_holder, 0.35 + 0.75 * std::max(0.0, u.dot(c.light))), img,
+                      zbuf);
+            }
+        }
     for (double hh = 0; hh <= top; hh += step) {
         const double rho = hh < m.cutter.reach ? m.cutter.slice(hh) : m.cutter.holder;
         const Colour base = hh < m.cutter.flute   ? pal.cutter
@@ -166,15 +189,8 @@ void cutter(const MillScene& m, const Cam& c, const Palette& pal, Image& img,
             const double phi = 2 * kPi * k / n;
             const Vector3d dir = std::cos(phi) * e1 + std::sin(phi) * e2;
             if (dir.dot(c.v) > 0.05) continue;  // its back
-            const Vector3d p = tip + hh * u + rho * dir;
-            const V2 q = c.px(p);
-            const int x = int(std::floor(q[0])), y = int(std::floor(q[1]));
-            if (x < 0 || y < 0 || x >= c.w || y >= c.h) continue;
-            float& z = zbuf[size_t(y) * size_t(c.w) + size_t(x)];
-            const double d = p.dot(c.v);
-            if (d >= z) continue;
-            z = float(d);
-            img.set(x, y, shade(base, 0.35 + 0.75 * std::max(0.0, dir.dot(c.light))));
+            splat(c, tip + hh * u + rho * dir,
+                  shade(base, 0.35 + 0.75 * std::max(0.0, dir.dot(c.light))), img, zbuf);
         }
     }
 }

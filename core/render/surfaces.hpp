@@ -49,13 +49,14 @@ struct Surfaces {
 };
 
 // The surfaces of `s` painted by `paint` (deviation falls back to depth
-// when the scene has no drawing).
-std::shared_ptr<const Surfaces> prepare(const PartScene& s, Paint paint);
+// when the scene has no drawing); the work-holding in the colours of the
+// screen or of `paper`.
+std::shared_ptr<const Surfaces> prepare(const PartScene& s, Paint paint, bool paper = false);
 
 // The lathe's and the mill's halves of prepare() (surfaces_lathe.cpp,
 // surfaces_mill.cpp).
 void lathe_surfaces(const PartScene& s, Surfaces& out);
-void mill_surfaces(const PartScene& s, Surfaces& out);
+void mill_surfaces(const PartScene& s, Surfaces& out, bool paper);
 // The radii at which the outlines cross machine Z `z`, sorted.
 void crossings(const std::vector<Poly>& outline, double z, std::vector<double>& rs);
 

@@ -187,11 +187,11 @@ void lathe_surfaces(const PartScene& s, Surfaces& out) {
     }
 }
 
-std::shared_ptr<const Surfaces> prepare(const PartScene& s, Paint paint) {
+std::shared_ptr<const Surfaces> prepare(const PartScene& s, Paint paint, bool paper) {
     auto out = std::make_shared<Surfaces>();
     out->paint = paint == Paint::deviation && !s.dims.empty() ? Paint::deviation : Paint::depth;
     if (s.mill)
-        mill_surfaces(s, *out);
+        mill_surfaces(s, *out, paper);
     else
         lathe_surfaces(s, *out);
     return out;

@@ -121,7 +121,7 @@ void coarser(std::vector<Level>& levels) {
 
 // The vice or the plate, the pins and the table around the block: one
 // height field of about 1 mm cells, 60 mm beyond the block at most.
-void work_holding(const MillScene& m, Level& a) {
+void work_holding(const MillScene& m, Level& a, const Palette& pal) {
     const double margin = 60;
     double x0 = m.stock.lo[0] - margin, y0 = m.stock.lo[1] - margin;
     double x1 = m.stock.hi[0] + margin, y1 = m.stock.hi[1] + margin;
@@ -129,7 +129,7 @@ void work_holding(const MillScene& m, Level& a) {
     a.x0 = x0, a.y0 = y0;
     a.nx = int(std::ceil((x1 - x0) / a.cell)), a.ny = int(std::ceil((y1 - y0) / a.cell));
     a.h.assign(size_t(a.nx) * size_t(a.ny), float(m.table_z));
-    a.c.assign(a.h.size(), palette(false).table);
+    a.c.assign(a.h.size(), pal.table);
     auto put = [&](double bx0, double by0, double bx1, double by1, double top, Colour c,
                    const workshop::Cylinder* pin) {
         for (int j = std::max(0, int((by0 - y0) / a.cell)); j < a.ny; ++j) {
@@ -146,15 +146,14 @@ void work_holding(const MillScene& m, Level& a) {
         }
     };
     for (const workshop::Box3& b : m.boxes)
-        put(b.lo[0], b.lo[1], b.hi[0], b.hi[1], b.hi[2], palette(false).vice, nullptr);
+        put(b.lo[0], b.lo[1], b.hi[0], b.hi[1], b.hi[2], pal.vice, nullptr);
     for (const workshop::Cylinder& k : m.pins)
-        put(k.x - k.radius, k.y - k.radius, k.x + k.radius, k.y + k.radius, k.z1,
-            palette(false).pin, &k);
+        put(k.x - k.radius, k.y - k.radius, k.x + k.radius, k.y + k.radius, k.z1, pal.pin, &k);
 }
 
 }  // namespace
 
-void mill_surfaces(const PartScene& s, Surfaces& out) {
+void mill_surfaces(const PartScene& s, Surfaces& out, bool paper) {
     const MillScene& m = s.block;
     const double top = m.stock.hi[2], bottom = m.stock.lo[2];
     double deepest = 0;
@@ -187,7 +186,7 @@ void mill_surfaces(const PartScene& s, Surfaces& out) {
     }
     out.block.push_back(std::move(l0));
     coarser(out.block);
-    work_holding(m, out.around);
+    work_holding(m, out.around, palette(paper));
 }
 
 }  // namespace pupitre::render
