@@ -91,10 +91,28 @@ void input_cursor(const pages::View& v, const pages::Canvas& c, int& x, int& y) 
     if (c.width() < 80 || c.height() < 24) y = c.height() - 1;  // the "too small" screen's
 }
 
+// The PART page's picture as the terminal's own, over the page's
+// rectangle, once ncurses has drawn the screen (term_image.hpp).
+void draw_picture(const console::Session& s, const pages::View& v, console::Terminal& term) {
+    if (term.images() == console::ImageProtocol::none) return;
+    const std::string* seq =
+        v.page == pages::PageId::part && v.part.image ? s.part().sequence() : nullptr;
+    const pages::Rect a =
+        pages::part_area(pages::Rect{0, 1, term.cols(), term.rows() - 4}, v.part.info);
+    term.picture(a.x, a.y, seq, s.part().serial());
+}
+
 int event_loop(console::Session& s, console::Terminal& term, bool ascii) {
     console::KeyDecoder dec;
     pages::Canvas canvas(term.cols(), term.rows(), ascii);
     std::vector<console::Key> keys;
+    // Keys typed while the terminal was asked about pictures.
+    if (const std::string early = term.take_input(); !early.empty()) {
+        dec.feed(early, keys);
+        for (const console::Key& k : keys)
+            if (s.on_key(k) == console::Effect::quit || s.quitting()) return kOk;
+        keys.clear();
+    }
     Clock::time_point last = Clock::now(), last_byte = last;
     bool dirty = true;
     for (;;) {
@@ -108,9 +126,11 @@ int event_loop(console::Session& s, console::Terminal& term, bool ascii) {
             int cx, cy;
             input_cursor(v, canvas, cx, cy);
             term.draw(canvas, cx, cy);
+            draw_picture(s, v, term);
             dirty = false;
         }
-        int timeout = s.busy() ? 30 : dec.pending() ? 25 : 500;
+        const bool picture = s.picture_pending();
+        int timeout = s.busy() || picture ? 30 : dec.pending() ? 25 : 500;
         struct pollfd pfd = {STDIN_FILENO, POLLIN, 0};
         int r = poll(&pfd, 1, timeout);
         if (console::Terminal::interrupted()) return kOk;
@@ -136,6 +156,7 @@ int event_loop(console::Session& s, console::Terminal& term, bool ascii) {
             s.tick(std::min(dt, 0.5));
             dirty = true;
         }
+        if (picture) dirty = true;  // the worker's picture, when it is made
     }
 }
 
@@ -297,6 +318,16 @@ int console(const ConsoleArgs& a) {
         return kNoInput;
     }
     bool ascii = a.ascii || !console::Terminal::utf8_locale();
+    console::Screen screen;
+    screen.colours = term.colours();
+    screen.ascii = ascii;
+    // A real picture only where the terminal answers that it takes one.
+    if (const char* im = std::getenv("PUPITRE_IMAGES"); !im || std::strcmp(im, "off") != 0) {
+        term.ask_images(300);
+        screen.protocol = term.images();
+        screen.cell_w = term.cell_w(), screen.cell_h = term.cell_h();
+    }
+    s.set_screen(screen);
     int rc = event_loop(s, term, ascii);
     term.close();
     // A signal (a logout, a kill) ended the console with the editor's work

@@ -119,6 +119,10 @@ bool on_graph(const Session& s, std::string_view) {
     return s.page() == pages::PageId::graph && input_empty(s);
 }
 
+bool on_part(const Session& s, std::string_view) {
+    return s.page() == pages::PageId::part && input_empty(s);
+}
+
 Effect dir_load(Session& s, std::string_view) {
     if (s.programs().empty()) return Effect::none;
     s.select_program(s.programs()[size_t(s.dir_cursor())].number);
@@ -221,6 +225,27 @@ const std::vector<Action> kActions = {
     {"graph-plane", "next plane (XY, XZ, YZ; the lathe draws ZX)", on_graph,
      [](Session& s, std::string_view) { return s.graph_key("plane", ""); }, N_("PLANE")},
     // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
+    {"part-turn", "turn the 3-D view of the part (%s)", on_part,
+     [](Session& s, std::string_view a) { return s.part_key("turn", a); }, N_("TURN")},
+    // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
+    {"part-tilt", "tilt the 3-D view of the part (%s)", on_part,
+     [](Session& s, std::string_view a) { return s.part_key("tilt", a); }, N_("TILT")},
+    // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
+    {"part-zoom", "zoom %s on the part", on_part,
+     [](Session& s, std::string_view a) { return s.part_key("zoom", a); }, N_("ZOOM")},
+    // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
+    {"part-pan", "pan the part's picture (%s)", on_part,
+     [](Session& s, std::string_view a) { return s.part_key("pan", a); }, N_("PAN")},
+    // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
+    {"part-view", "the part's next view (section; top, 3-D)", on_part,
+     [](Session& s, std::string_view) { return s.part_key("view", ""); }, N_("VIEW")},
+    // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
+    {"part-fit", "the whole part, as first seen", on_part,
+     [](Session& s, std::string_view) { return s.part_key("fit", ""); }, N_("FIT")},
+    // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
+    {"part-paint", "paint the part by its deviation from the drawing, or by depth", on_part,
+     [](Session& s, std::string_view) { return s.part_key("paint", ""); }, N_("PAINT")},
+    // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
     {"edit-move", "move the editor's cursor (%s)", on_edit, edit_move, N_("MOVE")},
     // TRANSLATORS: a soft-key label: at most 6 columns (5 on F10).
     {"edit-modify", "put the block under the cursor on the input line to modify it", on_edit,
@@ -301,6 +326,13 @@ const std::vector<Action> kActions = {
     N_("move the cursor (%s): its coordinates are shown"),
     N_("fit the cutting moves"),
     N_("next plane (XY, XZ, YZ; the lathe draws ZX)"),
+    N_("turn the 3-D view of the part (%s)"),
+    N_("tilt the 3-D view of the part (%s)"),
+    N_("zoom %s on the part"),
+    N_("pan the part's picture (%s)"),
+    N_("the part's next view (section; top, 3-D)"),
+    N_("the whole part, as first seen"),
+    N_("paint the part by its deviation from the drawing, or by depth"),
     N_("move the editor's cursor (%s)"),
     N_("put the block under the cursor on the input line to modify it"),
     N_("delete the block under the cursor (or the marked blocks)"),
@@ -335,8 +367,9 @@ bool is_action(std::string_view name) {
 // The soft-key labels of the pages (F1-F7 and the like), for the catalogue.
 // TRANSLATORS: a page's soft-key label: at most 6 columns (5 on F10).
 [[maybe_unused]] const char* const kPageLabels[] = {
-    N_("HELP"), N_("OP/OM"), N_("PRG/GR"), N_("INFO"),  N_("SET"),  N_("DIR"),     N_("ALARM"),
-    N_("PREF"), N_("CORR"),  N_("PARAM"),  N_("GRAPH"), N_("EDIT"), N_("HISTORY"), N_("SHOP")};
+    N_("HELP"),  N_("OP/OM"), N_("PRG/GR"),  N_("INFO"), N_("SET"),
+    N_("DIR"),   N_("ALARM"), N_("PREF"),    N_("CORR"), N_("PARAM"),
+    N_("GRAPH"), N_("EDIT"),  N_("HISTORY"), N_("SHOP"), N_("PART")};
 
 // The words of the bindings' arguments, for the catalogue: the HELP page
 // says them in the console's language (arg_text).

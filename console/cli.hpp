@@ -45,6 +45,7 @@ struct RunArgs {
     std::string setup;
     std::vector<std::string> measures;
     std::string part_out;
+    std::string part_view;  // --part-view: section, top or 3d (a picture)
 };
 
 int run(const RunArgs& a);

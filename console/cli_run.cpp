@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "console/cli.hpp"
+#include "console/part_paper.hpp"
 #include "console/workshop_io.hpp"
 #include "core/i18n.hpp"
 #include "core/interp/interp.hpp"
@@ -209,6 +210,24 @@ void warn_unreached(const RunArgs& a, const ProgramMemory& mem,
     }
 }
 
+// --part-out: the picture on a sheet (part_paper.hpp), or the part as
+// write_part writes it.
+Answer<int> part_out(const RunArgs& a, const workshop::Workshop& w, const Interpreter& in,
+                     const ProgramMemory& mem) {
+    const bool mill = w.is_mill();
+    if (!wants_picture(a.part_out, mill, !a.part_view.empty()))
+        return write_part(a.part_out, w, a.files.front());
+    render::Look look;
+    look.mode = render::first_mode(mill);
+    if (!a.part_view.empty()) render::parse_mode(a.part_view, look.mode);
+    PaperTitle t;
+    t.title = a.files.front();
+    if (const ProgramText* p = first_program(mem, a.files.front()))
+        t.title = "%" + std::to_string(p->number) + (p->title.empty() ? "" : " " + p->title);
+    t.where = strf(tr("setup %s, machine %s"), w.setup().name.c_str(), w.machine().name.c_str());
+    return write_part_picture(a.part_out, w, in.machine_pos(), nullptr, look, t);
+}
+
 }  // namespace
 
 void default_machine_note(const std::string& asked, bool errors) {
@@ -233,7 +252,7 @@ int run(const RunArgs& a) {
         return kUsage;
     }
     if (!a.setup.empty() && !load_setup(a.setup, m, setup)) return kUsage;
-    if (std::string why = part_name_problem(a.part_out, setup); !why.empty()) {
+    if (std::string why = part_name_problem(a.part_out, a.part_view, setup); !why.empty()) {
         std::fprintf(stderr, tr("pupitre: %s\n"), why.c_str());  // before the run, not after it
         return kUsage;
     }
@@ -271,7 +290,7 @@ int run(const RunArgs& a) {
     print_summary(a, in, shop.get(), crashes, asked);
     std::fflush(stdout);
     if (shop && !a.part_out.empty())
-        if (auto [rc, why] = write_part(a.part_out, *shop, a.files.front()); rc != 0) {
+        if (auto [rc, why] = part_out(a, *shop, in, mem); rc != 0) {
             std::fprintf(stderr, tr("pupitre: %s\n"), why.c_str());
             return rc;
         }

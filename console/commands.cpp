@@ -16,6 +16,7 @@
 
 #include "console/exercise.hpp"
 #include "console/exercise_run.hpp"
+#include "console/part_paper.hpp"
 #include "console/session.hpp"
 #include "console/workshop_io.hpp"
 #include "core/i18n.hpp"
@@ -111,7 +112,7 @@ Effect page(Session& s, const CommandCall& c) {
         return usage(
             s,
             ":page "
-            "om|op|prog|graph|info|param|pref|corr|dir|alarm|help|edit|history|shop|exercise");
+            "om|op|prog|graph|info|param|pref|corr|dir|alarm|help|edit|history|shop|exercise|part");
     s.show_page(p);
     return Effect::redraw;
 }
@@ -317,11 +318,33 @@ Effect gauge(Session& s, const CommandCall& c) {
     return Effect::redraw;
 }
 
-// ":part export FILE": the part as write_part writes it (workshop_io.hpp).
-Effect export_part(Session& s, const workshop::Workshop& w, std::string_view file) {
-    std::string path(file);
-    if (auto [rc, why] = write_part(path, w, w.setup().name); rc != 0)
-        s.say(why, true);
+// A view of the PART page the machine has, or says which it has.
+bool parse_part_view(Session& s, std::string_view word, bool mill, render::PartMode& m) {
+    if (render::parse_mode(word, m) && render::mode_fits(m, mill)) return true;
+    s.say(mill ? tr("the machining centre's views: top, 3d") : tr("the lathe's view: section"),
+          true);
+    return false;
+}
+
+// ":part export FILE [VIEW]": the picture on a sheet (part_paper.hpp) for
+// FILE.pdf, a lathe's FILE.png or any with a VIEW; else the part as
+// write_part writes it (workshop_io.hpp).
+Effect export_part(Session& s, const workshop::Workshop& w, const std::string& path,
+                   std::string_view view) {
+    render::Look look = s.part().look(w.is_mill());
+    if (!view.empty() && !parse_part_view(s, view, w.is_mill(), look.mode)) return Effect::redraw;
+    Answer<int> done;
+    if (wants_picture(path, w.is_mill(), !view.empty())) {
+        render::Drawing d;
+        const bool has = s.drawing(d);
+        done = write_part_picture(path, w, s.sim().om(), has ? &d : nullptr, look, s.paper_title());
+    } else if (!view.empty()) {
+        done = {64, tr("a view is drawn as a picture: FILE.png or FILE.pdf")};
+    } else {
+        done = write_part(path, w, w.setup().name);
+    }
+    if (done.value != 0)
+        s.say(done.why, true);
     else
         s.say(strf(tr("the part written to %s"), path.c_str()));
     return Effect::redraw;
@@ -329,13 +352,25 @@ Effect export_part(Session& s, const workshop::Workshop& w, std::string_view fil
 
 Effect part(Session& s, const CommandCall& c) {
     workshop::Workshop* w = s.sim().shop();
-    bool exporting = c.arg(1) == "export" && !c.arg(2).empty() && c.arg(3).empty();
-    if (c.arg(1) != "new" && !exporting) return usage(s, ":part new | :part export FILE");
+    const std::string_view what = c.arg(1);
+    const bool exporting = what == "export" && !c.arg(2).empty() && c.arg(4).empty();
+    const bool viewing = what == "view" && !c.arg(2).empty() && c.arg(3).empty();
+    if (what.empty() || viewing) {
+        s.show_page(pages::PageId::part);
+        render::PartMode m;
+        if (viewing && parse_part_view(s, c.arg(2), !s.machine().lathe, m))
+            s.part().set_mode(m, !s.machine().lathe);
+        return Effect::redraw;
+    }
+    if (what != "new" && !exporting)
+        return usage(s, ":part [view VIEW] | :part new | :part export FILE [VIEW]");
     if (!w) {
         s.say(s.no_workshop(), true);
         return Effect::redraw;
     }
-    if (exporting) return s.hidden(":part export") ? Effect::redraw : export_part(s, *w, c.arg(2));
+    if (exporting)
+        return s.hidden(":part export") ? Effect::redraw
+                                        : export_part(s, *w, std::string(c.arg(2)), c.arg(3));
     if (s.sim().in_cycle()) {
         s.say(tr("a program is in cycle"), true);
         return Effect::redraw;
@@ -508,7 +543,7 @@ bool forced(const CommandCall& c) {
 // line with {" (tests/console/man_sync.py reads the names from there).
 constexpr Command kCommands[] = {
     {"page",
-     ":page om|op|prog|graph|info|param|pref|corr|dir|alarm|help|edit|history|shop|exercise",
+     ":page om|op|prog|graph|info|param|pref|corr|dir|alarm|help|edit|history|shop|exercise|part",
      N_("show a page"), page},
     {"mode", ":mode auto|seq|dry|test|rns|imd|jog|inc|pom|edit|modif",
      N_("select a mode (refused while a program is in cycle)"), mode},
@@ -558,8 +593,14 @@ constexpr Command kCommands[] = {
      N_("the active tool touches the witness: its corrector is set from it (Cazeneuve)"), tangent},
     {"setup", ":setup [lathe|mill|cazeneuve|FILE|off]",
      N_("the workshop: a true part, chuck and tools the moves cut and touch"), setup},
-    {"part", ":part new", N_("the workshop: fresh stock in the chuck"), part},
-    {"", ":part export FILE", N_("the part as cut: SVG if FILE ends in .svg, else its Z R outline"),
+    {"part", ":part [view VIEW]",
+     N_("the PART page: the part in colour; VIEW section on the lathe, top or 3d on the "
+        "machining centre"),
+     part},
+    {"", ":part new", N_("the workshop: fresh stock in the chuck"), nullptr},
+    {"", ":part export FILE [VIEW]",
+     N_("the part on paper: FILE.pdf, FILE.png (a mill's FILE.png without VIEW: its height "
+        "field); FILE.svg or its Z R outline on the lathe"),
      nullptr},
     {"shim", ":shim MM|off",
      N_("the paper test: a shim of MM on the part stops a jog when the tool pinches it"), shim},

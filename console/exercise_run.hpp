@@ -13,6 +13,7 @@
 
 #include "console/desk.hpp"
 #include "console/refusal.hpp"
+#include "core/render/part_scene.hpp"
 #include "core/training/grade.hpp"
 #include "store/store.hpp"
 
@@ -32,6 +33,10 @@ class ExerciseRun {
     std::string take_program();
     const std::string& program_note() const { return program_note_; }
     bool graded() const { return grade_.has_value(); }
+    // The exercise's drawing: its dimensions (the PART view, :part export).
+    render::Drawing drawing() const { return render::drawing_of(ex_); }
+    const training::Exercise& exercise() const { return ex_; }
+    const std::string& student() const { return student_; }
 
     // The workshop of the attempt: the truth drawn again, its places hidden,
     // the part as the store keeps it; `fresh` when the stock is new.

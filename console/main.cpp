@@ -198,9 +198,13 @@ CLI::App* add_run(CLI::App& app, cli::RunArgs& ra) {
         ->type_name("WHAT");
     run->add_option(
            "--part-out", ra.part_out,
-           tr("write the cut part: its half-section as (Z, R) points, or SVG if FILE ends in .svg; "
-              "a mill's as a 16-bit PNG height field (FILE.png) and its JSON"))
+           tr("write the cut part: a picture on a sheet if FILE ends in .pdf, or .png on a "
+              "lathe; its half-section as SVG (.svg) or (Z, R) points; a mill's FILE.png is a "
+              "16-bit height field and its JSON, unless --part-view names a view"))
         ->type_name("FILE");
+    run->add_option("--part-view", ra.part_view,
+                    tr("the picture of --part-out: section (lathe), top or 3d (machining centre)"))
+        ->type_name("VIEW");
     return run;
 }
 

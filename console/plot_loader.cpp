@@ -1,4 +1,5 @@
-// write_png, write_pdf, write_text_pdf and write_gray16_png for the
+// write_png, write_pdf, write_text_pdf, write_gray16_png, write_part_png and
+// write_part_pdf for the
 // executable: forwarded to the plot module (core/output/plot_module.hpp),
 // opened at the first call. The module is the file PUPITRE_PLOT_MODULE names,
 // or else it is looked for next to the executable
@@ -20,6 +21,7 @@
 #include "core/i18n.hpp"
 #include "core/output/cairo_plot.hpp"
 #include "core/output/height_png.hpp"
+#include "core/output/part_sheet.hpp"
 #include "core/output/plot_module.hpp"
 
 #ifndef PUPITRE_PLOT_BUILD_DIR
@@ -102,6 +104,16 @@ bool write_text_pdf(const std::string& title, const std::vector<std::string>& li
 bool write_gray16_png(const std::vector<uint16_t>& values, int width, int height, std::FILE* out) {
     const PlotModule* m = module();
     return m && m->gray16_png(values, width, height, out);
+}
+
+bool write_part_png(const PartSheet& sheet, int width, std::FILE* out) {
+    const PlotModule* m = module();
+    return m && m->part_png(sheet, width, out);
+}
+
+bool write_part_pdf(const PartSheet& sheet, std::FILE* out) {
+    const PlotModule* m = module();
+    return m && m->part_pdf(sheet, out);
 }
 
 }  // namespace pupitre

@@ -608,6 +608,10 @@ bool Session::busy() const {
     return sim_->state() == RunState::running;
 }
 
+bool Session::picture_pending() const {
+    return page_ == pages::PageId::part && part_.busy();
+}
+
 // News of the run for the message line, and the program's writes to the store.
 void Session::check_run_end() {
     RunState st = sim_->state();
@@ -666,7 +670,47 @@ pages::View Session::view() const {
     if (exercise_) exercise_->view(v);
     // An exercise: the part drawn, but no coordinates read off it (the truth).
     graph_.fill(v, *sim_, page_ == pages::PageId::graph, exercise_ && !exercise_->graded());
+    if (page_ == pages::PageId::part) {
+        // An exercise: the drawing, the scale's numbers and the stick-out after :submit only.
+        render::Drawing d;
+        const bool has = drawing(d);
+        part_.fill(v, *sim_, has ? &d : nullptr, !exercise_ || exercise_->graded(),
+                   pages::Rect{0, 1, cols_, rows_ - 4}, screen_);
+    }
     return v;
+}
+
+bool Session::drawing(render::Drawing& d) const {
+    if (!exercise_ || !exercise_->graded()) return false;
+    d = exercise_->drawing();
+    return !d.dims.empty();
+}
+
+PaperTitle Session::paper_title() const {
+    PaperTitle t;
+    if (const ProgramText* p = sim_->selected() >= 0 ? mem_.find(sim_->selected()) : nullptr)
+        t.title = "%" + std::to_string(p->number) + (p->title.empty() ? "" : " " + p->title);
+    else
+        t.title = tr("the part");
+    if (exercise_)
+        t.where = strf(tr("exercise %s, %s"), exercise_->exercise().name.c_str(),
+                       exercise_->student().c_str());
+    else if (const workshop::Workshop* w = sim_->shop())
+        t.where = strf(tr("setup %s, machine %s"), w->setup().name.c_str(),
+                       pages::machine_word(m_.name).c_str());
+    return t;
+}
+
+Effect Session::part_key(std::string_view what, std::string_view arg) {
+    if (render::Drawing d; what == "paint" && !drawing(d)) {
+        say(exercise_
+                ? tr("painted by the depth of cut: the drawing's deviations after :submit")
+                : tr("painted by the depth of cut: there is no drawing (an exercise has one)"));
+        return Effect::redraw;
+    }
+    const std::string news = part_.key(what, arg, !m_.lathe);
+    if (!news.empty()) say(news);
+    return Effect::redraw;
 }
 
 // A GRAPH key, in the window the screen leaves the GRAPH page.

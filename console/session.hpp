@@ -18,6 +18,8 @@
 #include "console/keys.hpp"
 #include "console/line_input.hpp"
 #include "console/outbox.hpp"
+#include "console/part_paper.hpp"
+#include "console/part_window.hpp"
 #include "console/setting.hpp"
 #include "core/sim/sim.hpp"
 #include "pages/view.hpp"
@@ -91,6 +93,9 @@ class Session final : public Bench {
     void tick(double wall_seconds);
     // True while something moves: the event loop then wakes up often.
     bool busy() const;
+    // The PART page's picture is being made, or made and not shown yet: the
+    // event loop comes back for it soon, and draws the screen again.
+    bool picture_pending() const;
     Speed speed() const { return speed_; }
     void set_speed(Speed s) { speed_ = s; }
     Effect cycle_command();  // :cycle, Cycle Start
@@ -109,6 +114,19 @@ class Session final : public Bench {
     std::string mode_setting(Mode m) const;  // the INC step, the JOG feed
     // A GRAPH key (graph.hpp) in the window the screen leaves the page.
     Effect graph_key(std::string_view what, std::string_view arg);
+    // The PART page (part_window.hpp): a key, the window, what the
+    // terminal shows (app.cpp tells it once the terminal is open).
+    Effect part_key(std::string_view what, std::string_view arg);
+    PartWindow& part() { return part_; }
+    const PartWindow& part() const { return part_; }
+    void set_screen(const Screen& s) { screen_ = s; }
+    const Screen& screen() const { return screen_; }
+    // What the part is held against: the exercise's drawing once it is
+    // submitted; false when there is none (or not yet).
+    bool drawing(render::Drawing& d) const;
+    // The title of the part on paper: the program selected, the exercise
+    // and the student or the setup.
+    PaperTitle paper_title() const;
 
     // ---- the Bench the desks sit at ----
     Sim& sim() override { return *sim_; }
@@ -191,6 +209,8 @@ class Session final : public Bench {
     LineInput& input_;
     ProgramMemory mem_;
     GraphWindow graph_{m_};  // its toolpath outlives the Sim that records into it
+    PartWindow part_;
+    Screen screen_;
     std::unique_ptr<Sim> sim_;
     Keymap bindings_;
 

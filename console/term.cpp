@@ -5,6 +5,7 @@
 
 #include <curses.h>
 #include <langinfo.h>
+#include <poll.h>
 #include <sys/ioctl.h>
 #include <termios.h>
 #include <unistd.h>
@@ -15,6 +16,7 @@
 #include <cstring>
 
 #include "core/i18n.hpp"
+#include "pages/page_part.hpp"
 
 namespace pupitre::console {
 
@@ -69,6 +71,9 @@ short pair_of(pages::Style s) {
     return short(int(s) + 1);
 }
 
+// The pairs after the theme's are the pictures' (term.hpp, pair_for).
+constexpr int kFirstPicturePair = 16;
+
 }  // namespace
 
 bool parse_theme(const std::string& name, Theme& out) {
@@ -122,6 +127,12 @@ std::string Terminal::open(Theme theme) {
         start_color();
         use_default_colors();
         theme_colours(theme);
+        if (theme == Theme::colour)
+            colours_ = COLORS >= 0x1000000 ? pages::Colours::direct
+                       : COLORS >= 256     ? pages::Colours::c256
+                       : COLORS >= 16      ? pages::Colours::c16
+                                           : pages::Colours::c8;
+        next_pair_ = kFirstPicturePair;
     } else {
         theme_colours(Theme::mono);
     }
@@ -172,6 +183,60 @@ void Terminal::theme_colours(Theme t) {
     theme_ = t;
 }
 
+void Terminal::ask_images(int ms) {
+    const char* term = std::getenv("TERM");
+    const std::string t = term ? term : "";
+    if (t.empty() || t == "dumb" || t == "linux") return;
+    struct winsize ws;
+    if (ioctl(STDOUT_FILENO, TIOCGWINSZ, &ws) == 0 && ws.ws_col > 0 && ws.ws_row > 0)
+        cell_w_ = ws.ws_xpixel / ws.ws_col, cell_h_ = ws.ws_ypixel / ws.ws_row;
+    const std::string q = image_query(true);
+    if (write(STDOUT_FILENO, q.data(), q.size()) != ssize_t(q.size())) return;
+    std::string got;
+    ImageAnswer a;
+    for (int waited = 0; waited < ms && !a.done; waited += 10) {
+        struct pollfd pfd = {STDIN_FILENO, POLLIN, 0};
+        if (poll(&pfd, 1, 10) > 0) {
+            char buf[512];
+            const ssize_t n = read(STDIN_FILENO, buf, sizeof buf);
+            if (n > 0) got.append(buf, size_t(n));
+        }
+        input_.clear();
+        a = parse_answers(got, input_);
+    }
+    if (a.cell_w > 0 && a.cell_h > 0) cell_w_ = a.cell_w, cell_h_ = a.cell_h;
+    images_ = cell_w_ > 0 && cell_h_ > 0 ? a.protocol() : ImageProtocol::none;
+}
+
+void Terminal::picture(int x, int y, const std::string* seq, uint64_t serial) {
+    if (images_ == ImageProtocol::none) return;
+    if (!seq || seq->empty()) {
+        if (shown_ == 0) return;
+        const std::string del = image_delete(images_, 1);
+        if (!del.empty() && write(STDOUT_FILENO, del.data(), del.size()) < 0) return;
+        if (images_ == ImageProtocol::sixel) {  // its pixels stay until the screen is drawn again
+            clearok(curscr, TRUE);
+            refresh();
+        }
+        shown_ = 0;
+        return;
+    }
+    if (serial == shown_ && !repainted_) return;
+    // Where ncurses left the cursor, to put it back.
+    int cy = 0, cx = 0;
+    getyx(stdscr, cy, cx);
+    std::string out = "\033[" + std::to_string(y + 1) + ";" + std::to_string(x + 1) + "H" + *seq +
+                      "\033[" + std::to_string(cy + 1) + ";" + std::to_string(cx + 1) + "H";
+    size_t at = 0;
+    while (at < out.size()) {
+        const ssize_t n = write(STDOUT_FILENO, out.data() + at, out.size() - at);
+        if (n <= 0) break;
+        at += size_t(n);
+    }
+    shown_ = serial;
+    repainted_ = false;
+}
+
 bool Terminal::resized() {
     if (!g_winch) return false;
     g_winch = 0;
@@ -180,11 +245,18 @@ bool Terminal::resized() {
         resizeterm(ws.ws_row, ws.ws_col);
     getmaxyx(stdscr, rows_, cols_);
     clearok(stdscr, TRUE);
+    repainted_ = true;  // a picture is drawn again over the new screen
     return true;
 }
 
 void Terminal::draw(const pages::Canvas& c, int cx, int cy) {
     using S = pages::Style;
+    // The pictures' pairs begin again while half are free: a frame never
+    // redefines a pair it drew with.
+    if (next_pair_ > (COLOR_PAIRS + kFirstPicturePair) / 2) {
+        pairs_.clear();
+        next_pair_ = kFirstPicturePair;
+    }
     for (int y = 0; y < c.height() && y < rows_; ++y) {
         for (int x = 0; x < c.width() && x < cols_; ++x) {
             const pages::Cell& cell = c.at(x, y);
@@ -223,14 +295,46 @@ void Terminal::draw(const pages::Canvas& c, int cx, int cy) {
             }
             wchar_t wc[2] = {wchar_t(cell.ch), 0};
             cchar_t cc;
+            int own = 0;  // a picture's cell in its own colours
+            if ((cell.fg != pages::kNoColour || cell.bg != pages::kNoColour) &&
+                colours_ != pages::Colours::none)
+                own = pair_for(cell.fg, cell.bg);
             // The colour pair is setcchar's own argument: a COLOR_PAIR in the
-            // attributes would be overridden by it.
-            setcchar(&cc, wc, a, pair, nullptr);
+            // attributes would be overridden by it (an extended pair is given
+            // through the last one).
+            if (own > 0)
+                setcchar(&cc, wc, A_NORMAL, 0, &own);
+            else
+                setcchar(&cc, wc, a, pair, nullptr);
             mvadd_wch(y, x, &cc);
         }
     }
     move(cy, cx);
     refresh();
+}
+
+int Terminal::colour_number(uint32_t c) const {
+    if (c == pages::kNoColour) return -1;  // the terminal's own (use_default_colors)
+    if (c & pages::kPaletteBit) return int(c & 0xff);
+    if (colours_ == pages::Colours::direct) return int(c & 0xffffff);
+    const uint32_t t =
+        pages::terminal_colour(render::rgb((c >> 16) & 0xff, (c >> 8) & 0xff, c & 0xff), colours_);
+    return int(t & 0xff);
+}
+
+int Terminal::pair_for(uint32_t fg, uint32_t bg) {
+    const uint64_t k = uint64_t(fg) << 32 | bg;
+    if (auto it = pairs_.find(k); it != pairs_.end()) return it->second;
+    if (next_pair_ >= COLOR_PAIRS) {
+        // Every pair taken: begin again (the whole frame is drawn anew).
+        pairs_.clear();
+        next_pair_ = kFirstPicturePair;
+    }
+    if (next_pair_ >= COLOR_PAIRS) return 0;
+    const int p = next_pair_++;
+    init_extended_pair(p, colour_number(fg), colour_number(bg));
+    pairs_.emplace(k, p);
+    return p;
 }
 
 }  // namespace pupitre::console

@@ -9,6 +9,7 @@
 #include "console/plot_loader.hpp"
 #include "core/i18n.hpp"
 #include "core/output/height_png.hpp"
+#include "core/render/part_view.hpp"
 #include "core/training/exercise.hpp"
 #include "core/workshop/report.hpp"
 
@@ -17,7 +18,8 @@ namespace pupitre {
 namespace {
 
 const char* const kNotPng =
-    N_("a machining centre's part is a 16-bit PNG height field: give a FILE.png");
+    N_("a machining centre's part is a 16-bit PNG height field (FILE.png) or a picture "
+       "(FILE.pdf)");
 
 bool ends_with(const std::string& s, const char* tail) {
     const std::string t(tail);
@@ -100,8 +102,18 @@ std::string read_setup(const std::string& name, const MachineProfile& m, worksho
     return {};
 }
 
-std::string part_name_problem(const std::string& path, const workshop::Setup& s) {
-    if (path.empty() || s.kind != "mill" || ends_with(path, ".png")) return {};
+std::string part_name_problem(const std::string& path, const std::string& view,
+                              const workshop::Setup& s) {
+    const bool mill = s.kind == "mill";
+    if (!view.empty()) {
+        render::PartMode m;
+        if (!render::parse_mode(view, m) || !render::mode_fits(m, mill))
+            return mill ? tr("--part-view: the machining centre's views are top and 3d")
+                        : tr("--part-view: the lathe's view is section");
+        if (path.empty() || !(ends_with(path, ".png") || ends_with(path, ".pdf")))
+            return tr("--part-view draws a picture: --part-out FILE.png or FILE.pdf");
+    }
+    if (path.empty() || !mill || ends_with(path, ".png") || ends_with(path, ".pdf")) return {};
     return tr(kNotPng);
 }
 

@@ -22,8 +22,11 @@ std::string read_setup(const std::string& name, const MachineProfile& m, worksho
 // message in `why`.
 Answer<int> write_part(const std::string& path, const workshop::Workshop& w,
                        const std::string& title);
-// What is wrong with `path` for the part of setup `s` ("" when nothing is or
-// when there is no path): a machining centre's part needs a FILE.png.
-std::string part_name_problem(const std::string& path, const workshop::Setup& s);
+// What is wrong with `path` (and the view named, "" for none) for the part
+// of setup `s` ("" when nothing is or when there is no path): a machining
+// centre's part needs a FILE.png or a FILE.pdf; a view is drawn as a
+// picture (FILE.png or FILE.pdf) and must be one of the machine's.
+std::string part_name_problem(const std::string& path, const std::string& view,
+                              const workshop::Setup& s);
 
 }  // namespace pupitre

@@ -120,6 +120,15 @@ void Canvas::put(int x, int y, char32_t ch, Style st) {
     owner_[i] = writer_;
 }
 
+void Canvas::paint(int x, int y, char32_t ch, uint32_t fg, uint32_t bg) {
+    if (x < 0 || y < 0 || x >= w_ || y >= h_) return;
+    if (ch < 0x20 || ch == 0x7f) ch = U' ';
+    if (ascii_ && ch >= 0x80) ch = ascii_of(ch);
+    const size_t i = size_t(y * w_ + x);
+    cells_[i] = Cell{ch, Style::normal, fg, bg};
+    owner_[i] = 0;
+}
+
 // A text cut by its room ends with a mark in its last cell, never with half a
 // word that reads as whole (issue 38: nothing cut at 80 columns unseen).
 int Canvas::text(int x, int y, std::string_view s, Style st, int max) {

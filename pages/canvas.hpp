@@ -29,9 +29,21 @@ enum class Style : uint8_t {
     count_,
 };
 
+// A cell's own colours (the PART view's picture, issue 36): none (its
+// style's), an RGB triple 0xRRGGBB, or an entry of the terminal's palette.
+inline constexpr uint32_t kNoColour = 0xffffffffu;
+inline constexpr uint32_t kPaletteBit = 0x01000000u;
+constexpr uint32_t rgb_colour(unsigned r, unsigned g, unsigned b) {
+    return (r & 0xff) << 16 | (g & 0xff) << 8 | (b & 0xff);
+}
+constexpr uint32_t palette_colour(unsigned index) {
+    return kPaletteBit | (index & 0xff);
+}
+
 struct Cell {
     char32_t ch = U' ';
     Style st = Style::normal;
+    uint32_t fg = kNoColour, bg = kNoColour;
     bool operator==(const Cell&) const = default;
 };
 
@@ -55,6 +67,9 @@ class Canvas {
     void clear();
 
     void put(int x, int y, char32_t ch, Style st = Style::normal);
+    // A cell of a picture: its symbol in its own colours (kNoColour: the
+    // style's).
+    void paint(int x, int y, char32_t ch, uint32_t fg, uint32_t bg);
     // UTF-8 text from (x, y), clipped at `max` columns (-1: the right edge).
     // Returns the columns written.
     int text(int x, int y, std::string_view utf8, Style st = Style::normal, int max = -1);

@@ -45,9 +45,9 @@ const char* state_text(RunState st) {
     return "?";
 }
 
-constexpr std::string_view kPageWords[] = {"om",   "op",    "prog",    "info", "param",
-                                           "dir",  "alarm", "help",    "pref", "corr",
-                                           "edit", "graph", "history", "shop", "exercise"};
+constexpr std::string_view kPageWords[] = {"om",      "op",   "prog",     "info", "param", "dir",
+                                           "alarm",   "help", "pref",     "corr", "edit",  "graph",
+                                           "history", "shop", "exercise", "part"};
 
 void status_line(const View& v, Canvas& c) {
     const Sim& s = *v.sim;
@@ -230,6 +230,8 @@ void render_page(const View& v, Canvas& c, const Rect& r) {
             return page_shop(v, c, r);
         case PageId::exercise:
             return page_exercise(v, c, r);
+        case PageId::part:
+            return page_part(v, c, r);
     }
 }
 

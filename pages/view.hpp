@@ -9,6 +9,7 @@
 
 #include "core/sim/sim.hpp"
 #include "pages/page_graph.hpp"
+#include "pages/page_part.hpp"
 
 namespace pupitre::pages {
 
@@ -27,7 +28,8 @@ enum class PageId {
     graph,
     history,
     shop,
-    exercise
+    exercise,
+    part
 };
 std::string_view page_word(PageId p);  // om, op, prog, …
 bool parse_page(std::string_view word, PageId& out);
@@ -114,6 +116,8 @@ struct View {
     const std::vector<std::string>* messages = nullptr;  // the message line's, newest first
     // EXERCISE: the task before :submit, the report after; empty: none.
     std::vector<std::pair<ExLine, std::string>> exercise;
+    // PART: the part in colour (issue 36).
+    PartView part;
 };
 
 // The whole screen: status line, page, message line, input line, soft keys.

@@ -12,6 +12,7 @@
 #include <cstdint>
 
 #include "core/geometry/geometry.hpp"
+#include "core/output/part_sheet.hpp"
 
 namespace pupitre {
 
@@ -379,6 +380,191 @@ bool write_text_pdf(const std::string& title, const std::vector<std::string>& li
                   std::min(lines.size(), size_t(p + 1) * per_page), p + 1, pages);
     bool ok = cairo_status(cr) == CAIRO_STATUS_SUCCESS;
     cairo_destroy(cr);
+    cairo_surface_finish(s);
+    ok = ok && cairo_surface_status(s) == CAIRO_STATUS_SUCCESS;
+    cairo_surface_destroy(s);
+    return ok && std::fflush(out) == 0;
+}
+
+// --- the part on paper (part_sheet.hpp) ---
+
+namespace {
+
+constexpr double kMargin = 12, kPicX = 12, kPicY = 30, kColumn = 208;
+
+void sheet_text(cairo_t* cr, double x, double y, double size, const std::string& s,
+                bool bold = false, double grey = 0) {
+    cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
+                           bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
+    cairo_set_font_size(cr, size);
+    cairo_set_source_rgb(cr, grey, grey, grey);
+    cairo_move_to(cr, x, y);
+    cairo_show_text(cr, s.c_str());
+    cairo_new_path(cr);
+}
+
+// "2:1", "1:2.5": paper millimetres to the part's.
+std::string ratio_text(double r) {
+    char buf[32];
+    auto trim = [](double v) {
+        char b[16];
+        std::snprintf(b, sizeof b, "%.2f", v);
+        std::string t = b;
+        while (t.back() == '0') t.pop_back();
+        if (t.back() == '.') t.pop_back();
+        return t;
+    };
+    std::snprintf(buf, sizeof buf, "%s",
+                  r >= 1 ? (trim(r) + ":1").c_str() : ("1:" + trim(1 / r)).c_str());
+    return buf;
+}
+
+// The picture fitted into its box; `k` paper mm per pixel, the box's
+// corner at (x0, y0).
+void sheet_picture(cairo_t* cr, const PartSheet& s, double& k, double& x0, double& y0) {
+    k = std::min(kSheetPictureW / s.w, kSheetPictureH / s.h);
+    x0 = kPicX + (kSheetPictureW - s.w * k) / 2, y0 = kPicY + (kSheetPictureH - s.h * k) / 2;
+    cairo_surface_t* img = cairo_image_surface_create(CAIRO_FORMAT_RGB24, s.w, s.h);
+    cairo_surface_flush(img);
+    unsigned char* data = cairo_image_surface_get_data(img);
+    const int stride = cairo_image_surface_get_stride(img);
+    for (int y = 0; y < s.h; ++y) {
+        auto* row = reinterpret_cast<uint32_t*>(data + size_t(y) * size_t(stride));
+        for (int x = 0; x < s.w; ++x) {
+            const uint32_t p = s.pixels[size_t(y) * size_t(s.w) + size_t(x)];
+            row[x] = (p & 0xff) << 16 | (p & 0xff00) | ((p >> 16) & 0xff);
+        }
+    }
+    cairo_surface_mark_dirty(img);
+    cairo_save(cr);
+    cairo_translate(cr, x0, y0);
+    cairo_scale(cr, k, k);
+    cairo_set_source_surface(cr, img, 0, 0);
+    cairo_pattern_set_filter(cairo_get_source(cr), CAIRO_FILTER_GOOD);
+    cairo_rectangle(cr, 0, 0, s.w, s.h);
+    cairo_fill(cr);
+    cairo_restore(cr);
+    cairo_surface_destroy(img);
+    cairo_set_source_rgb(cr, 0.3, 0.3, 0.3);
+    cairo_set_line_width(cr, 0.25);
+    cairo_rectangle(cr, x0, y0, s.w * k, s.h * k);
+    cairo_stroke(cr);
+}
+
+// Each label in the column at the right, a leader from the point read.
+void sheet_labels(cairo_t* cr, const PartSheet& s, double k, double x0, double y0) {
+    double y = kPicY + 4;
+    for (const SheetLabel& l : s.labels) {
+        const bool seen = std::isfinite(l.x) && std::isfinite(l.y) && l.x >= 0 && l.y >= 0 &&
+                          l.x <= s.w && l.y <= s.h;
+        if (seen) {
+            cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
+            cairo_set_line_width(cr, 0.25);
+            cairo_arc(cr, x0 + l.x * k, y0 + l.y * k, 0.8, 0, 2 * kPi);
+            cairo_fill(cr);
+            cairo_move_to(cr, x0 + l.x * k, y0 + l.y * k);
+            cairo_line_to(cr, kColumn - 1, y - 1.2);
+            cairo_stroke(cr);
+        }
+        set_colour(cr, l.colour);
+        cairo_rectangle(cr, kColumn, y - 2.8, 3, 3);
+        cairo_fill(cr);
+        sheet_text(cr, kColumn + 4.5, y, 3, l.text);
+        y += 8;
+    }
+}
+
+void sheet_marks(cairo_t* cr, const PartSheet& s, double k, double x0, double y0) {
+    for (const SheetLabel& m : s.marks) {
+        cairo_set_font_size(cr, 3);
+        cairo_text_extents_t te;
+        cairo_text_extents(cr, m.text.c_str(), &te);
+        sheet_text(cr, x0 + m.x * k - te.x_advance / 2, y0 + m.y * k - 1.2, 3, m.text);
+    }
+}
+
+// The colour scale and the picture's scale under it.
+void sheet_scales(cairo_t* cr, const PartSheet& s, double k) {
+    const double bx = kMargin, by = 176, bw = 130, bh = 5;
+    sheet_text(cr, bx, by - 1.5, 3, s.scale_title);
+    const size_t n = s.scale.size();
+    for (size_t i = 0; i < n; ++i) {
+        set_colour(cr, s.scale[i]);
+        cairo_rectangle(cr, bx + bw * double(i) / n, by, bw / n + 0.05, bh);
+        cairo_fill(cr);
+    }
+    for (const auto& [at, text] : s.ticks) {
+        cairo_set_source_rgb(cr, 0, 0, 0);
+        cairo_set_line_width(cr, 0.2);
+        cairo_move_to(cr, bx + bw * at, by + bh);
+        cairo_line_to(cr, bx + bw * at, by + bh + 1.2);
+        cairo_stroke(cr);
+        cairo_text_extents_t te;
+        cairo_set_font_size(cr, 2.6);
+        cairo_text_extents(cr, text.c_str(), &te);
+        sheet_text(cr, bx + bw * at - te.x_advance / 2, by + bh + 4.2, 2.6, text);
+    }
+    if (!(s.mm_per_px > 0)) return;
+    const double ratio = k / s.mm_per_px;  // paper mm per part mm
+    // A round length (1, 2 or 5 times a power of ten) about 40 mm on paper.
+    const double target = 40 / ratio, p10 = std::pow(10.0, std::floor(std::log10(target)));
+    const double len = target >= 5 * p10 ? 5 * p10 : target >= 2 * p10 ? 2 * p10 : p10;
+    const double x = 160, y = by + bh;
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    cairo_rectangle(cr, x, y - 1.5, len * ratio, 1.5);
+    cairo_fill(cr);
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%g mm", len);
+    sheet_text(cr, x, y + 4.2, 2.8, buf);
+    sheet_text(cr, x + len * ratio + 3, y, 2.8, ratio_text(ratio));
+}
+
+bool draw_sheet(cairo_surface_t* surface, const PartSheet& s, double scale) {
+    cairo_t* cr = cairo_create(surface);
+    cairo_scale(cr, scale, scale);
+    cairo_set_source_rgb(cr, 1, 1, 1);
+    cairo_paint(cr);
+    sheet_text(cr, kMargin, 18, 6, s.title, true);
+    sheet_text(cr, kMargin, 25, 3.6, s.subtitle, false, 0.25);
+    double k = 1, x0 = kPicX, y0 = kPicY;
+    if (s.w > 0 && s.h > 0 && s.pixels.size() == size_t(s.w) * size_t(s.h)) {
+        sheet_picture(cr, s, k, x0, y0);
+        sheet_labels(cr, s, k, x0, y0);
+        sheet_marks(cr, s, k, x0, y0);
+        sheet_scales(cr, s, k);
+    }
+    double y = 195;
+    for (const std::string& note : s.notes) {
+        sheet_text(cr, kMargin, y, 3, note);
+        y += 4.5;
+    }
+    sheet_text(cr, kSheetW - kMargin - 30, kSheetH - 4, 2.4, s.generator, false, 0.5);
+    cairo_show_page(cr);
+    const bool ok = cairo_status(cr) == CAIRO_STATUS_SUCCESS;
+    cairo_destroy(cr);
+    return ok;
+}
+
+}  // namespace
+
+bool write_part_png(const PartSheet& sheet, int width, std::FILE* out) {
+    const int w = std::clamp(width, 200, 8000);
+    const double scale = w / kSheetW;
+    const int h = int(std::ceil(kSheetH * scale));
+    cairo_surface_t* s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h);
+    bool ok = cairo_surface_status(s) == CAIRO_STATUS_SUCCESS && draw_sheet(s, sheet, scale);
+    ok = ok && cairo_surface_write_to_png_stream(s, to_file, out) == CAIRO_STATUS_SUCCESS;
+    cairo_surface_destroy(s);
+    return ok && std::fflush(out) == 0;
+}
+
+bool write_part_pdf(const PartSheet& sheet, std::FILE* out) {
+    const double pt = 72 / 25.4;
+    cairo_surface_t* s =
+        cairo_pdf_surface_create_for_stream(to_file, out, kSheetW * pt, kSheetH * pt);
+    cairo_pdf_surface_set_metadata(s, CAIRO_PDF_METADATA_TITLE, sheet.title.c_str());
+    cairo_pdf_surface_set_metadata(s, CAIRO_PDF_METADATA_CREATOR, sheet.generator.c_str());
+    bool ok = cairo_surface_status(s) == CAIRO_STATUS_SUCCESS && draw_sheet(s, sheet, pt);
     cairo_surface_finish(s);
     ok = ok && cairo_surface_status(s) == CAIRO_STATUS_SUCCESS;
     cairo_surface_destroy(s);

@@ -683,4 +683,23 @@ std::string Workshop::mill_measure(std::string_view word, std::string_view rest,
     return {};
 }
 
+bool Workshop::mill_place(std::string_view rest, Place& p) const {
+    Request q;
+    if (!read_request(rest, q)) return false;
+    const Box3& b = mill_->stock();
+    p.at = {b.lo[0] + q.v[0], b.lo[1] + q.v[1], b.hi[2] + q.v[2]};
+    p.axis = q.axis >= 0 ? q.axis : 2;
+    return true;
+}
+
+void Workshop::holding(std::vector<Box3>& boxes, std::vector<Cylinder>& pins) const {
+    for (const Fixture& f : fixtures_) {
+        if (f.what == Met::table || f.what == Met::setter) continue;
+        if (f.pin)
+            pins.push_back(*f.pin);
+        else
+            boxes.push_back(f.box);
+    }
+}
+
 }  // namespace pupitre::workshop

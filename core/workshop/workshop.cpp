@@ -674,16 +674,37 @@ std::string Workshop::presetter(std::string_view rest, Reading& r) const {
     return {};
 }
 
+// The request split as measure() splits it: its word in English, the rest.
+static void split_request(std::string_view s, std::string_view& word, std::string_view& rest) {
+    while (!s.empty() && s.front() == ' ') s.remove_prefix(1);
+    const size_t sp = s.find(' ');
+    word = instrument_word(s.substr(0, sp));
+    rest = sp == std::string_view::npos ? "" : s.substr(sp + 1);
+    while (!rest.empty() && rest.front() == ' ') rest.remove_prefix(1);
+    while (!rest.empty() && rest.back() == ' ') rest.remove_suffix(1);
+}
+
+bool Workshop::measure_place(std::string_view spec, Place& p) const {
+    Reading r;
+    if (!measure(spec, r).empty()) return false;
+    std::string_view word, rest;
+    split_request(spec, word, rest);
+    if (word == "tool") return false;
+    p = Place{};
+    p.word = std::string(word);
+    if (mill_) return mill_place(rest, p);
+    double face = 0, dz = 0;
+    world_.right_face(face);
+    if (rest.size() > 1) std::from_chars(rest.data() + 1, rest.data() + rest.size(), dz);
+    p.at = {0, 0, face + dz};
+    return true;
+}
+
 std::string Workshop::measure(std::string_view spec, Reading& r) const {
     r = Reading{};
     r.spec = std::string(spec);
-    std::string_view s = spec;
-    while (!s.empty() && s.front() == ' ') s.remove_prefix(1);
-    size_t sp = s.find(' ');
-    std::string_view word = instrument_word(s.substr(0, sp)),
-                     rest = sp == std::string_view::npos ? "" : s.substr(sp + 1);
-    while (!rest.empty() && rest.front() == ' ') rest.remove_prefix(1);
-    while (!rest.empty() && rest.back() == ' ') rest.remove_suffix(1);
+    std::string_view word, rest;
+    split_request(spec, word, rest);
     if (word == "tool") return presetter(rest, r);
     if (mill_) return mill_measure(word, rest, r);
     const Instrument* in = nullptr;

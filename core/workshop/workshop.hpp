@@ -154,6 +154,24 @@ class Workshop final : public MachineSink {
     void draw_on_part(bool on) { draw_on_part_ = on; }
     // Reads an instrument; "" or what is wrong with the request.
     std::string measure(std::string_view spec, Reading& r) const;
+    // Where a request that reads (measure() answers "") reads the part, for
+    // the PART view to mark the surface: the instrument's word in English
+    // and, on the lathe, the machine Z (at[2]) of a dia, bore or groove (the
+    // part's face for length); on the machining centre the machine point
+    // and the axis it reads along (0 X, 1 Y, 2 Z). False when it reads
+    // nothing (or is the presetter's).
+    struct Place {
+        std::string word;
+        P3 at{};
+        int axis = 2;
+    };
+    bool measure_place(std::string_view spec, Place& p) const;
+    // The cutter in the spindle as it is now (worn); a default one when none.
+    Cutter cutter_now() const { return cutter(); }
+    // The machining centre's work-holding as the PART view draws it: the
+    // vice or the plate (boxes) and the locating pins (not the table, nor
+    // the tool setter far from the block).
+    void holding(std::vector<Box3>& boxes, std::vector<Cylinder>& pins) const;
 
     // A program's move as the machine makes it (the console calls this as it
     // animates the move; move() does it for a batch run).
@@ -235,6 +253,7 @@ class Workshop final : public MachineSink {
                             const std::string& place) const;
     std::string mill_where(const P3& p) const;
     std::string mill_measure(std::string_view word, std::string_view rest, Reading& r) const;
+    bool mill_place(std::string_view rest, Place& p) const;
     std::string mill_crash_text(int code, const Contact& c, const std::string& place) const;
     std::string mill_touch_text(const Contact& c, const std::string& place) const;
     // The vice's jaws and body, the plate, the table (boxes); the pins and

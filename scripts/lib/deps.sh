@@ -3,7 +3,7 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 
 # Packages to build and run pupitre.
-PUPITRE_BUILD_DEPS=(cmake g++ make pkg-config libeigen3-dev libcli11-dev libsqlite3-dev libpq-dev libssl-dev libncurses-dev libreadline-dev libcairo2-dev libpng-dev libpolyclipping-dev gettext)
+PUPITRE_BUILD_DEPS=(cmake g++ make pkg-config libeigen3-dev libcli11-dev libsqlite3-dev libpq-dev libssl-dev libncurses-dev libreadline-dev libcairo2-dev libpng-dev libpolyclipping-dev libchafa-dev gettext)
 # Packages the test suite adds (sqlite3 and util-linux's setpriv: the store's
 # anomaly tests make damaged files and drop root to meet a read-only directory).
 PUPITRE_TEST_DEPS=(locales libgtest-dev libgmock-dev clang clang-format libclang-rt-14-dev groff-base python3 sqlite3 util-linux tmux valgrind)

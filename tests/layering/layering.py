@@ -39,7 +39,7 @@ RULES = [
 # numfmt, keyvalue, digest) first, then each folder, which may include its own
 # headers and those of the folders before it, never one after it.
 CORE_ORDER = ("", "parse", "geometry", "cycles", "interp", "output", "workshop", "sim",
-              "training")
+              "training", "render")
 CORE_INCLUDE = re.compile(r'^"core/(?:([a-z_]+)/)?[^/"]+"$')
 CORE_WHY = "core's folders include only downwards: " + " < ".join(f or "core/*" for f in CORE_ORDER)
 
