@@ -14,7 +14,6 @@
 namespace pupitre::plan {
 
 namespace {
-using Dir = std::array<double, kAxes>;
 constexpr double kTiny = 1e-12;
 // On an arc the acceleration is shared between the tangent and the normal,
 // as LinuxCNC does (tp.c: TP_ACC_RATIO_TANGENTIAL 0.5): half of it along the
@@ -24,64 +23,6 @@ constexpr double kArcNormal = 0.8660254037844386;
 // Events other than moves held behind a move: past this many in a row, the
 // motion stops (a program that only talks for so long is not moving).
 constexpr long kMaxOthers = 1000;
-
-// The largest rate along a path whose axes travel `per` per unit of path that
-// keeps each axis within its own limit (0 there: none); HUGE_VAL when no axis
-// limits it. A diagonal of two equal axes gets sqrt(2) times each (LinuxCNC).
-double along(const Dir& per, const Dir& lim) {
-    double best = HUGE_VAL;
-    for (size_t a = 0; a < kAxes; ++a) {
-        const double c = std::fabs(per[a]);
-        if (c > kTiny && lim[a] > 0) best = std::min(best, lim[a] / c);
-    }
-    return best;
-}
-double zero_if_none(double v) {  // Limits: 0 is no limit
-    return v == HUGE_VAL ? 0 : v;
-}
-void normalize(Dir& d) {
-    double n = 0;
-    for (double v : d) n += v * v;
-    n = std::sqrt(n);
-    if (n > kTiny)
-        for (double& v : d) v /= n;
-}
-double dot(const Dir& a, const Dir& b) {
-    double s = 0;
-    for (size_t i = 0; i < kAxes; ++i) s += a[i] * b[i];
-    return s;
-}
-
-// An arc's direction at both ends and how its path splits between the plane
-// and the other axes (a helix), in the machine's axes.
-struct ArcShape {
-    Dir in{}, out{}, rest{};
-    double radius = 0, plane = 1;  // plane: the share of the path in the plane
-};
-ArcShape arc_shape(const MoveEvent& e) {
-    ArcShape s;
-    const size_t a0 = size_t(e.plane_a0), a1 = size_t(e.plane_a1);
-    const double sx = e.from_mach[a0] - e.mc0, sy = e.from_mach[a1] - e.mc1;
-    const double ex = e.to_mach[a0] - e.mc0, ey = e.to_mach[a1] - e.mc1;
-    const double rs = std::hypot(sx, sy), re = std::hypot(ex, ey);
-    s.radius = (rs + re) / 2;
-    const double arclen = std::fabs(e.msweep) * geometry::kDeg * s.radius;
-    double h2 = 0;
-    for (size_t a = 0; a < kAxes; ++a)
-        if (a != a0 && a != a1) {
-            s.rest[a] = e.to_mach[a] - e.from_mach[a];
-            h2 += s.rest[a] * s.rest[a];
-        }
-    const double total = std::sqrt(arclen * arclen + h2);
-    if (rs < kTiny || re < kTiny || total < kTiny) return s;
-    s.plane = arclen / total;
-    const double turn = e.msweep >= 0 ? 1 : -1;  // counter-clockwise: the radius turned +90°
-    for (size_t a = 0; a < kAxes; ++a) s.in[a] = s.out[a] = s.rest[a] / total;
-    s.in[a0] = -turn * sy / rs * s.plane, s.in[a1] = turn * sx / rs * s.plane;
-    s.out[a0] = -turn * ey / re * s.plane, s.out[a1] = turn * ex / re * s.plane;
-    for (double& r : s.rest) r /= total;
-    return s;
-}
 
 // Held events, as their values.
 struct Dwell {
@@ -159,68 +100,144 @@ struct PlanSink::Queue {
 
 PlanSink::PlanSink(const MachineProfile& m, MachineSink* next)
     : m_(m), next_(next), planner_(*this), queue_(std::make_unique<Queue>()) {
+    auto inv = [](double v) { return v > 0 ? 1 / v : 0; };
     for (size_t a = 0; a < kAxes; ++a) {
+        jerk_ = jerk_ || (m.has(int(a)) && m.axes[a].jerk > 0);
         if (!m.has(int(a))) continue;
+        axes_[naxes_++] = a;
         const AxisConfig& ax = m.axes[a];
-        rapid_[a] = ax.rapid / 60;
-        feed_[a] = ax.feed_max() / 60;
-        accel_[a] = ax.accel;
-        jerk_[a] = ax.jerk;
+        inv_rapid_[a] = inv(ax.rapid / 60);
+        inv_feed_[a] = inv(ax.feed_max() / 60);
+        inv_accel_[a] = inv(ax.accel);
+        inv_jerk_[a] = inv(ax.jerk);
     }
 }
 
 PlanSink::~PlanSink() = default;
 
-Segment PlanSink::segment(const MoveEvent& e, Dir& in, Dir& out) const {
-    Segment s;
-    s.length = e.length;
-    s.min_time = e.min_block;
-    const double eg = e.eg / 100;
-    const double at_feed = e.g != 0 && e.seconds > 0 ? e.length / e.seconds : HUGE_VAL;
-    if (e.g == 2 || e.g == 3) {
-        const ArcShape a = arc_shape(e);
-        in = a.in, out = a.out;
-        Dir per = a.rest;  // per unit of path: each plane axis may take all of the plane's share
-        per[size_t(e.plane_a0)] = per[size_t(e.plane_a1)] = a.plane;
-        const double acc = along(per, accel_);
-        s.vmax = std::min(along(per, feed_), at_feed);
-        if (acc != HUGE_VAL) {
-            s.vmax = std::min(s.vmax, std::sqrt(kArcNormal * acc * a.plane * eg * a.radius) /
-                                          std::max(a.plane, kTiny));
-            s.limits.accel = kArcTangential * acc * eg;
-        }
-        s.limits.jerk = zero_if_none(along(per, jerk_));
-    } else {
-        Dir per{};
-        for (size_t a = 0; a < kAxes; ++a) {
-            in[a] = e.to_mach[a] - e.from_mach[a];
-            per[a] = in[a] / e.length;
-        }
-        normalize(in);
-        out = in;
-        s.vmax = std::min(along(per, e.g == 0 ? rapid_ : feed_), at_feed);
-        s.limits.accel = zero_if_none(along(per, accel_)) * eg;
-        s.limits.jerk = zero_if_none(along(per, jerk_));
+// How much each limit binds a path whose axes travel `per` over it: the
+// largest travel over an axis's own limit (0: none binds). The limit along the
+// path is the path's length over it, so that a diagonal of two equal axes gets
+// sqrt(2) times each (LinuxCNC). The axes' limits are kept as inverses (0: no
+// limit), and no division is made per axis.
+PlanSink::Along PlanSink::along(const Dir& per, const Dir& inv_speed) const {
+    Along r;
+    for (size_t k = 0; k < naxes_; ++k) {
+        const size_t i = axes_[k];
+        const double c = std::fabs(per[i]);
+        r.v = std::max(r.v, c * inv_speed[i]);
+        r.a = std::max(r.a, c * inv_accel_[i]);
+        if (jerk_) r.j = std::max(r.j, c * inv_jerk_[i]);
     }
-    if (s.vmax == HUGE_VAL) s.vmax = e.seconds > 0 ? e.length / e.seconds : 1e9;
-    return s;
+    return r;
 }
 
-// How fast the corner from the last move into `in` may be passed: on the arc
-// that leaves the corner by the smoothing tolerance, at the acceleration
-// along the change of direction (grbl's junction deviation). 0 turning back,
-// HUGE_VAL going straight on.
-double PlanSink::junction(const Dir& in, double eg) const {
-    const double c = dot(last_dir_, in);
+// An arc: its direction at both ends, and its limits: each plane axis may
+// take all of the plane's share of the path (the tangent turns), the other
+// axes (a helix) their own, and the speed is held where the centre pulls at
+// the arc's share of the acceleration.
+void PlanSink::arc(const MoveEvent& e, Segment& s, Dir& in, Dir& out) const {
+    const size_t a0 = size_t(e.plane_a0), a1 = size_t(e.plane_a1);
+    const double sx = e.from_mach[a0] - e.mc0, sy = e.from_mach[a1] - e.mc1;
+    const double ex = e.to_mach[a0] - e.mc0, ey = e.to_mach[a1] - e.mc1;
+    const double rs = std::sqrt(sx * sx + sy * sy), re = std::sqrt(ex * ex + ey * ey);
+    const double radius = (rs + re) / 2;
+    const double arclen = std::fabs(e.msweep) * geometry::kDeg * radius;
+    Dir per{};
+    double h2 = 0;
+    for (size_t k = 0; k < naxes_; ++k) {
+        const size_t i = axes_[k];
+        if (i == a0 || i == a1) continue;
+        per[i] = e.to_mach[i] - e.from_mach[i];
+        h2 += per[i] * per[i];
+    }
+    const double total = h2 > 0 ? std::sqrt(arclen * arclen + h2) : arclen;
+    const bool round = rs > kTiny && re > kTiny && total > kTiny;
+    const double inv_total = round ? 1 / total : 1 / e.length;
+    for (size_t k = 0; k < naxes_; ++k) {  // per unit of path: the helix's axes go evenly
+        const size_t i = axes_[k];
+        in[i] = out[i] = per[i] *= inv_total;
+    }
+    if (!round) return limits(e, along(per, inv_feed_), s);
+    const double plane = arclen * inv_total;
+    const double turn = e.msweep >= 0 ? plane : -plane;  // counter-clockwise: the radius +90°
+    in[a0] = -turn * sy / rs, in[a1] = turn * sx / rs;
+    out[a0] = -turn * ey / re, out[a1] = turn * ex / re;
+    per[a0] = per[a1] = plane;
+    limits(e, along(per, inv_feed_), s);
+    if (s.limits.accel > 0) {
+        // The centre pulls at most sqrt(3)/2 of the plane's acceleration
+        // (s.limits.accel is the path's: plane / share); half goes along.
+        const double centre = kArcNormal * s.limits.accel * plane;
+        const double v = std::sqrt(centre * radius) / std::max(plane, kTiny);
+        if (v < s.vmax) {
+            s.vmax = v;
+            s.inv_vmax = 1 / v;
+        }
+        s.limits.accel *= kArcTangential;
+        s.inv_accel /= kArcTangential;
+    }
+}
+
+// The segment of a move from how much its axes bind it: the speed no more
+// than the feed's (the length over the time at the feed), EG on the
+// acceleration.
+void PlanSink::limits(const MoveEvent& e, const Along& lim, Segment& s) const {
+    s.length = e.length;
+    s.min_time = e.min_block;
+    // The longest of the times at the axes' limits, at the feed (a rapid
+    // has none of its own), and E32000's.
+    const double t = std::max({lim.v * e.length, e.g != 0 ? e.seconds : 0, e.min_block});
+    if (t > 0) {
+        s.vmax = e.length / t;
+        s.inv_vmax = t / e.length;
+    } else {
+        s.vmax = 1e9;
+    }
+    if (lim.a > 0) {
+        s.inv_accel = e.eg == 100 ? lim.a : lim.a * 100 / e.eg;
+        s.limits.accel = 1 / s.inv_accel;
+    }
+    s.limits.jerk = lim.j > 0 ? 1 / lim.j : 0;
+}
+
+void PlanSink::line(const MoveEvent& e, Segment& s, Dir& dir) const {
+    double n2 = 0;
+    const double inv_len = 1 / e.length;
+    for (size_t k = 0; k < naxes_; ++k) {
+        const size_t i = axes_[k];
+        const double d = e.to_mach[i] - e.from_mach[i];
+        n2 += d * d;
+        dir[i] = d * inv_len;  // per unit of path
+    }
+    limits(e, along(dir, e.g == 0 ? inv_rapid_ : inv_feed_), s);
+    // The interpreter's length is the axes' travel unless rotary axes turn
+    // with linear ones (then it is the linear part): then the direction is
+    // scaled to a unit one.
+    if (std::fabs(n2 * inv_len * inv_len - 1) > 1e-9) {
+        const double unit = e.length / std::sqrt(n2);
+        for (size_t k = 0; k < naxes_; ++k) dir[axes_[k]] *= unit;
+    }
+}
+
+// The square of how fast the corner from the last move into `in` may be
+// passed: on the arc that leaves the corner by the smoothing tolerance, at
+// the acceleration along the change of direction (grbl's junction
+// deviation). 0 turning back, HUGE_VAL going straight on.
+double PlanSink::junction_sq(const Dir& last, const Dir& in, double eg) const {
+    double c = 0;
+    for (size_t k = 0; k < naxes_; ++k) c += last[axes_[k]] * in[axes_[k]];
     if (c > 1 - 1e-9) return HUGE_VAL;
     if (c < -1 + 1e-9 || m_.smoothing <= 0) return 0;
-    Dir w;
-    for (size_t a = 0; a < kAxes; ++a) w[a] = in[a] - last_dir_[a];
-    normalize(w);
-    const double acc = along(w, accel_);
-    if (acc == HUGE_VAL) return HUGE_VAL;
+    double ra = 0;  // the change of direction over the acceleration, on the axis that limits
+    for (size_t k = 0; k < naxes_; ++k) {
+        const size_t i = axes_[k];
+        ra = std::max(ra, std::fabs(in[i] - last[i]) * inv_accel_[i]);
+    }
+    if (ra <= 0) return HUGE_VAL;
+    const double acc = std::sqrt(2 - 2 * c) / ra;      // the change of direction's length over ra
     const double sin_half = std::sqrt(0.5 * (1 + c));  // half the corner's angle
-    return std::sqrt(acc * eg / 100 * m_.smoothing * sin_half / (1 - sin_half));
+    return acc * eg * 0.01 * m_.smoothing * sin_half / (1 - sin_half);
 }
 
 void PlanSink::move(const MoveEvent& e) {
@@ -230,14 +247,21 @@ void PlanSink::move(const MoveEvent& e) {
         if (other()) pass(MoveEvent(e));
         return;
     }
-    Dir in, out;
-    Segment s = segment(e, in, out);
-    s.entry_max = have_last_ ? junction(in, e.eg) : 0;
+    if (next_) queue_->q.push_back({e, true});
+    Segment& s = planner_.add();  // filled in place: a move is planned in its ring's slot
+    Dir& out = dir_[1 - last_];   // its direction at its end, the last one's next time
+    const Dir* in = &out;
+    if (e.g == 2 || e.g == 3) {
+        arc(e, s, entry_, out);
+        in = &entry_;
+    } else {
+        line(e, s, out);
+    }
+    s.entry_max_sq = have_last_ ? junction_sq(dir_[last_], *in, e.eg) : 0;
     s.tool = tool_;
     s.cut = e.g != 0;
-    if (next_) queue_->q.push_back({e, true});
-    planner_.push(s);
-    last_dir_ = out;
+    planner_.push();
+    last_ = 1 - last_;
     have_last_ = moved_ = true;
 }
 

@@ -49,10 +49,6 @@ class PlanSink final : public MachineSink, private Planner::Receiver {
     const double& clock() const { return report_.seconds; }
     const Report& report() const { return report_; }
 
-    // A move's limits, as the planner takes them (tests).
-    Segment segment(const MoveEvent& e, std::array<double, kAxes>& in,
-                    std::array<double, kAxes>& out) const;
-
   private:
     struct Queue;
     void planned(const Segment&) override;
@@ -60,7 +56,18 @@ class PlanSink final : public MachineSink, private Planner::Receiver {
     // machine asks for, which waits the profile's in-position time.
     void halt(bool settle);
     void wait(double seconds);
-    double junction(const std::array<double, kAxes>& in, double eg) const;
+    using Dir = std::array<double, kAxes>;
+    double junction_sq(const Dir& last, const Dir& in, double eg) const;
+    // How much the axes bind a path: each its travel over its own limit, the
+    // largest (0: none binds).
+    struct Along {
+        double v = 0, a = 0, j = 0;
+    };
+    Along along(const Dir& per, const Dir& inv_speed) const;
+    // A move's segment, and its direction (at its start and end for an arc).
+    void limits(const MoveEvent& e, const Along& lim, Segment& s) const;
+    void line(const MoveEvent& e, Segment& s, Dir& dir) const;
+    void arc(const MoveEvent& e, Segment& s, Dir& in, Dir& out) const;
     // An event that is no move: counted against the look-ahead's limit; true
     // when there is a next sink to hand it to.
     bool other();
@@ -72,12 +79,20 @@ class PlanSink final : public MachineSink, private Planner::Receiver {
     Planner planner_;
     std::unique_ptr<Queue> queue_;
     Report report_;
-    // Per axis, in mm/s (degrees/s): rapid, feed, acceleration, jerk.
-    std::array<double, kAxes> rapid_{}, feed_{}, accel_{}, jerk_{};
-    std::array<double, kAxes> last_dir_{};  // the last move's direction at its end
-    bool have_last_ = false;                // a move held or just planned
-    bool moved_ = false;                    // a move since the last stop
-    long others_ = 0;                       // events but moves since the last move
+    // The profile's axes, and per axis the inverses of its rapid and feed
+    // (mm/s or degrees/s), its acceleration and jerk (0: no limit).
+    std::array<size_t, kAxes> axes_{};
+    size_t naxes_ = 0;
+    bool jerk_ = false;  // an axis has a jerk
+    std::array<double, kAxes> inv_rapid_{}, inv_feed_{}, inv_accel_{}, inv_jerk_{};
+    // The directions at the end of the last move (dir_[last_]) and of the
+    // one being added; an arc's at its start.
+    std::array<Dir, 2> dir_{};
+    int last_ = 0;
+    Dir entry_{};
+    bool have_last_ = false;  // a move held or just planned
+    bool moved_ = false;      // a move since the last stop
+    long others_ = 0;         // events but moves since the last move
     int tool_ = 0;
     int sp_dir_ = 5;
     double sp_rpm_ = 0;

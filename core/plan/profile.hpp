@@ -4,6 +4,7 @@
 // ramp, or an S-curve's where a jerk is given.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
+#include <cmath>
 
 namespace pupitre::plan {
 
@@ -20,8 +21,14 @@ double ramp_time(double dv, const Limits& l);
 // mean speed is the middle one).
 double ramp_length(double va, double vb, const Limits& l);
 // The speed reachable from `v` over `length` (either way: accelerating, or
-// the highest speed from which `v` is reached braking).
-double reach(double v, double length, const Limits& l);
+// the highest speed from which `v` is reached braking). Inline: the planner
+// asks it for every move, mostly without a jerk.
+double reach_jerk(double v, double length, const Limits& l);
+inline double reach(double v, double length, const Limits& l) {
+    if (l.accel <= 0) return HUGE_VAL;
+    if (l.jerk <= 0) return std::sqrt(v * v + 2 * l.accel * length);
+    return reach_jerk(v, length, l);
+}
 
 struct Timing {
     double seconds = 0;

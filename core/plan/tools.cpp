@@ -13,13 +13,12 @@ void ToolTable::add(int tool, bool cut, double length, double seconds) {
     const bool begins = cut && !last_cut_;
     last_cut_ = cut;
     if (tool <= 0) return;
-    ToolRow* row = nullptr;
-    for (ToolRow& r : rows_)  // a handful of tools: a search is enough
-        if (r.tool == tool) row = &r;
-    if (!row) {
-        rows_.push_back(ToolRow{.tool = tool});
-        row = &rows_.back();
+    if (last_ >= rows_.size() || rows_[last_].tool != tool) {
+        last_ = 0;  // a handful of tools: a search is enough
+        while (last_ < rows_.size() && rows_[last_].tool != tool) ++last_;
+        if (last_ == rows_.size()) rows_.push_back(ToolRow{.tool = tool});
     }
+    ToolRow* row = &rows_[last_];
     if (cut) {
         row->cut_seconds += seconds;
         row->cut_length += length;

@@ -29,6 +29,7 @@ class ToolTable {
 
   private:
     std::vector<ToolRow> rows_;
+    size_t last_ = 0;  // the row of the last move's tool
     bool last_cut_ = false;
 };
 
