@@ -45,6 +45,9 @@ struct RunArgs {
     std::string setup;
     std::vector<std::string> measures;
     std::string part_out;
+    // --edge-life: the life of an edge, MINUTES or TN=MINUTES (core/plan/tools.hpp).
+    std::vector<std::string> edge_life;
+    bool no_plan = false;  // --no-plan: the time at the feeds alone, no planner
 };
 
 int run(const RunArgs& a);

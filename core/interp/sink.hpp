@@ -90,4 +90,36 @@ class MachineSink {
     virtual void profile(const Loc&, const ProfileElem&) {}
 };
 
+// Hands every event to two sinks, in order: `plot` draws the moves as the
+// interpreter makes them while a planner (core/plan) times them.
+class TeeSink final : public MachineSink {
+  public:
+    TeeSink(MachineSink& a, MachineSink& b) : a_(a), b_(b) {}
+    void move(const MoveEvent& e) override { a_.move(e), b_.move(e); }
+    void dwell(const Loc& l, double s) override { a_.dwell(l, s), b_.dwell(l, s); }
+    void tool(const Loc& l, int t, int d, double s, bool m6) override {
+        a_.tool(l, t, d, s, m6), b_.tool(l, t, d, s, m6);
+    }
+    void spindle(const SpindleEvent& e) override { a_.spindle(e), b_.spindle(e); }
+    void coolant(const Loc& l, bool m7, bool m8) override {
+        a_.coolant(l, m7, m8), b_.coolant(l, m7, m8);
+    }
+    void stop(const Loc& l, int m) override { a_.stop(l, m), b_.stop(l, m); }
+    void message(const Loc& l, int c, std::string_view t) override {
+        a_.message(l, c, t), b_.message(l, c, t);
+    }
+    void end(const Loc& l, int m) override { a_.end(l, m), b_.end(l, m); }
+    void stock(const Loc& l, const std::vector<std::array<double, 2>>& zr) override {
+        a_.stock(l, zr), b_.stock(l, zr);
+    }
+    void profile(const Loc& l, const ProfileElem& p) override {
+        a_.profile(l, p), b_.profile(l, p);
+    }
+    void exact_stop(const Loc& l) override { a_.exact_stop(l), b_.exact_stop(l); }
+
+  private:
+    MachineSink& a_;
+    MachineSink& b_;
+};
+
 }  // namespace pupitre
