@@ -46,6 +46,9 @@ struct RunArgs {
     std::vector<std::string> measures;
     std::string part_out;
     std::string part_view;  // --part-view: section, top or 3d (a picture)
+    // --edge-life: the life of an edge, MINUTES or TN=MINUTES (core/plan/tools.hpp).
+    std::vector<std::string> edge_life;
+    bool no_plan = false;  // --no-plan: the time at the feeds alone, no planner
 };
 
 int run(const RunArgs& a);

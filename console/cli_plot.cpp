@@ -18,6 +18,7 @@
 #include "core/output/scene.hpp"
 #include "core/output/svg.hpp"
 #include "core/output/toolpath.hpp"
+#include "core/plan/plan_sink.hpp"
 #include "core/workshop/report.hpp"
 
 namespace pupitre::cli {
@@ -182,21 +183,32 @@ int plot(const PlotArgs& a) {
     if (!main) return kDataErr;
     workshop::Setup setup;
     if (!a.setup.empty() && !load_setup(a.setup, m, setup)) return kUsage;
+    plan::EdgeLife life;
+    for (const std::string& l : a.edge_life)
+        if (std::string why = plan::read_edge_life(l, life); !why.empty()) {
+            std::fprintf(stderr, tr("pupitre: --edge-life %s: %s\n"), l.c_str(), why.c_str());
+            return kUsage;
+        }
     Toolpath path(m);
+    // The drawing takes the moves as they are made; the planner beside it
+    // times them (the cycle time of the notes, the PDF's table of tools).
+    plan::PlanSink planner(m);
+    TeeSink both(path, planner);
     std::unique_ptr<workshop::Workshop> shop;
     if (!a.setup.empty()) {
-        shop = std::make_unique<workshop::Workshop>(m, setup, &path);
+        shop = std::make_unique<workshop::Workshop>(m, setup, &both);
         shop->draw_on_part(true);  // a C or B turn drawn on the part
     }
     RunOptions o;
     o.block_skip = a.block_skip;
     o.max_blocks = a.max_blocks;
-    Interpreter in(m, mem, shop ? static_cast<MachineSink&>(*shop) : path, o);
+    Interpreter in(m, mem, shop ? static_cast<MachineSink&>(*shop) : both, o);
     if (int rc = apply_sets(a.sets, in)) return rc;
     start_drawing(path, in, *main, m);
     int plane_seen = 0;
     in.start(main);
     run_collecting(in, path, plane_seen, shop.get());
+    planner.finish();
     for (const Diag& d : in.diags()) {
         print_diag(d);
         path.add_error(d);
@@ -215,11 +227,20 @@ int plot(const PlotArgs& a) {
     SceneOptions so;
     so.plane = a.plane.empty() ? chosen_plane(path, m, plane_seen) : plane;
     so.machine = m.name;
-    so.seconds = in.seconds();
+    so.seconds = planner.clock();
     Scene scene = build_scene(path, so);
-    for (const Output& out : kOutputs)
-        if (!(a.*out.file).empty())
-            if (int rc = write_out(out, scene, a)) return rc;
+    for (const Output& out : kOutputs) {
+        if ((a.*out.file).empty()) continue;
+        if (out.file == &PlotArgs::pdf && !planner.report().tools.rows().empty()) {
+            // The printed page has the table of each tool's time (issue 35).
+            SceneOptions with = so;
+            with.tools = planner.report().tools.rows();
+            with.life = life;
+            if (int rc = write_out(out, build_scene(path, with), a)) return rc;
+        } else if (int rc = write_out(out, scene, a)) {
+            return rc;
+        }
+    }
     return in.has_errors() || crashed ? kProgramErrors : kOk;
 }
 

@@ -19,6 +19,8 @@ struct PlotArgs {
     bool block_skip = false;
     long max_blocks = 20'000'000;
     std::string setup;  // --setup: the workshop's part drawn under the path
+    // --edge-life: the life of an edge for the PDF's table (core/plan/tools.hpp).
+    std::vector<std::string> edge_life;
 };
 
 // Runs the program to its end (or its first error) and writes the drawing; the

@@ -144,13 +144,14 @@ const ProgramText* first_program(const ProgramMemory& mem, const std::string& fi
 // The summary on stdout: JSON, else the text one unless the trace took its
 // place; the workshop's crashes and readings with it.
 void print_summary(const RunArgs& a, const Interpreter& in, const workshop::Workshop* shop,
-                   const std::vector<Diag>& crashes, const std::vector<workshop::Asked>& asked) {
+                   const std::vector<Diag>& crashes, const std::vector<workshop::Asked>& asked,
+                   const PlanSummary& plan) {
     if (a.json) {
         std::string s = summary_json(in, a.files.front(), crashes,
-                                     shop ? workshop::workshop_json(*shop, asked) : "");
+                                     shop ? workshop::workshop_json(*shop, asked) : "", plan);
         std::fputs(s.c_str(), stdout);
     } else if (!a.trace) {
-        std::string s = summary_text(in, a.files.front()) + workshop::readings_text(asked);
+        std::string s = summary_text(in, a.files.front(), plan) + workshop::readings_text(asked);
         std::fputs(s.c_str(), stdout);
     }
 }
@@ -256,6 +257,12 @@ int run(const RunArgs& a) {
         std::fprintf(stderr, tr("pupitre: %s\n"), why.c_str());  // before the run, not after it
         return kUsage;
     }
+    PlanSummary plan;
+    for (const std::string& life : a.edge_life)
+        if (std::string why = plan::read_edge_life(life, plan.life); !why.empty()) {
+            std::fprintf(stderr, tr("pupitre: --edge-life %s: %s\n"), life.c_str(), why.c_str());
+            return kUsage;
+        }
     ProgramMemory mem;
     if (int rc = load_all(a.files, mem)) return rc;
     RunStore store;
@@ -267,7 +274,13 @@ int run(const RunArgs& a) {
     std::setvbuf(stdout, outbuf, _IOFBF, sizeof outbuf);
     TraceWriter trace(stdout, m);
     NullSink quiet;
-    MachineSink& out = a.trace ? static_cast<MachineSink&>(trace) : quiet;
+    // The planner hears what the machine does (after the workshop, which
+    // stops it at a crash) and hands the trace each move with its times.
+    plan::PlanSink planner(m, a.trace ? &trace : nullptr);
+    if (!a.no_plan) trace.follow(&planner.clock());
+    MachineSink& out = !a.no_plan ? static_cast<MachineSink&>(planner)
+                       : a.trace  ? static_cast<MachineSink&>(trace)
+                                  : quiet;
     std::unique_ptr<workshop::Workshop> shop;
     if (!a.setup.empty()) shop = std::make_unique<workshop::Workshop>(m, setup, &out);
     RunOptions o;
@@ -280,6 +293,8 @@ int run(const RunArgs& a) {
     if (int rc = apply_sets(a.sets, in)) return rc;
     in.start(first_program(mem, a.files.front()));
     run_in(in, shop.get());
+    planner.finish();
+    if (!a.no_plan) plan.report = &planner.report();
     std::fflush(stdout);
     for (const Diag& d : in.diags()) print_diag(d);
     std::vector<Diag> crashes;
@@ -287,7 +302,7 @@ int run(const RunArgs& a) {
     if (shop) workshop_results(*shop, mem, a.measures, crashes, asked);
     const bool errors = in.has_errors() || !crashes.empty();
     default_machine_note(a.machine, errors);
-    print_summary(a, in, shop.get(), crashes, asked);
+    print_summary(a, in, shop.get(), crashes, asked, plan);
     std::fflush(stdout);
     if (shop && !a.part_out.empty())
         if (auto [rc, why] = part_out(a, *shop, in, mem); rc != 0) {

@@ -196,6 +196,14 @@ CLI::App* add_run(CLI::App& app, cli::RunArgs& ra) {
                     tr("after the run, read an instrument: 'dia Z-20', 'bore Z-5', 'groove Z-30', "
                        "'length', 'tool T1 X'; a mill's: 'depth X10 Y40', 'width Y X10 Y40 Z-1'"))
         ->type_name("WHAT");
+    run->add_flag("--no-plan", ra.no_plan,
+                  tr("no planner: the cycle time at the feeds alone, as before the machine's "
+                     "accelerations were modelled (faster)"));
+    run->add_option("--edge-life", ra.edge_life,
+                    tr("the life of a tool's edge in minutes of cutting, for every tool or for "
+                       "one (T11=15): the summary says after how many parts to change it"))
+        ->type_name("[TN=]MINUTES")
+        ->allow_extra_args(false);
     run->add_option(
            "--part-out", ra.part_out,
            tr("write the cut part: a picture on a sheet if FILE ends in .pdf, or .png on a "
@@ -230,6 +238,11 @@ CLI::App* add_plot(CLI::App& app, cli::PlotArgs& pa) {
         ->type_name("OUT");
     plot->add_option("--pdf", pa.pdf, tr("the picture as a one-page PDF, for printing"))
         ->type_name("OUT");
+    plot->add_option("--edge-life", pa.edge_life,
+                     tr("the life of a tool's edge in minutes of cutting, for every tool or for "
+                        "one (T11=15): the PDF's table says after how many parts to change it"))
+        ->type_name("[TN=]MINUTES")
+        ->allow_extra_args(false);
     plot->add_option("--setup", pa.setup,
                      tr("draw the part the workshop cut under the path (lathe, mill, mill5, "
                         "cazeneuve, or a .setup file)"))

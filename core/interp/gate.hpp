@@ -58,9 +58,12 @@ class GateSink final : public MachineSink {
         Loc l;
         ProfileElem e;
     };
+    struct ExactStop {
+        Loc l;
+    };
     using Later = std::function<void()>;
     using Held = std::variant<MoveEvent, Dwell, Tool, SpindleEvent, Coolant, Stop, Message, End,
-                              Stock, Profile, Later>;
+                              Stock, Profile, ExactStop, Later>;
     std::vector<Held> queue;
 
     // Not holding, an event goes straight on: the copy a held entry needs
@@ -105,6 +108,10 @@ class GateSink final : public MachineSink {
         if (!holding) return real_.profile(l, e);
         queue.emplace_back(Profile{l, e});
     }
+    void exact_stop(const Loc& l) override {
+        if (!holding) return real_.exact_stop(l);
+        queue.emplace_back(ExactStop{l});
+    }
     // Work that must come after the events held so far.
     void later(Later f) { queue.emplace_back(std::move(f)); }
 
@@ -132,6 +139,7 @@ class GateSink final : public MachineSink {
     void deliver(End& e) { real_.end(e.l, e.m); }
     void deliver(Stock& e) { real_.stock(e.l, e.s); }
     void deliver(Profile& e) { real_.profile(e.l, e.e); }
+    void deliver(ExactStop& e) { real_.exact_stop(e.l); }
     void deliver(Later& f) { f(); }
     MachineSink& real_;
 };

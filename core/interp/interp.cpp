@@ -21,6 +21,7 @@ Interpreter::Interpreter(const MachineProfile& m, ProgramMemory& mem, MachineSin
       gate_(std::make_unique<GateSink>(sink)),
       out_(*gate_),
       opt_(o) {
+    min_block_ = m_.min_block_time;
     power_on();
 }
 

@@ -572,6 +572,16 @@ class Interpreter final : private EAccess {
     std::pair<uint64_t, uint64_t> state_digest() const;
     bool note_backward_jump(long label);
     double path_ = 0, clock_ = 0;
+    // E32000, the shortest time of an interpolated block (s; the profile's
+    // min_block_time until a program writes it), carried on each move.
+    double min_block_ = 0;
+    // The kind of a canned cycle's last move in this block (0 rapid, 1 feed,
+    // -1 none): where it changes, a pass ends or begins, and the NUM stops.
+    signed char cycle_last_ = -1;
+    void cycle_pass(bool feed) {
+        if (cycle_last_ >= 0 && cycle_last_ != int(feed)) out_.exact_stop(loc_);
+        cycle_last_ = feed;
+    }
     bool ended_ = false;
     bool imd_ = false;            // the main program is an IMD fragment
     bool comp_emitting_ = false;  // moves now made are compensated pieces

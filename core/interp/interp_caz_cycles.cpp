@@ -84,6 +84,7 @@ bool Interpreter::CazState::move(Interpreter& in, int g, double x, double z) {
     q.to.val[X] = x;
     q.to.val[Z] = z;
     const int saved = in.modal_.motion;
+    in.cycle_pass(g != 0);
     in.modal_.motion = g;
     const bool ok = in.caz_motion(q);
     in.modal_.motion = saved;

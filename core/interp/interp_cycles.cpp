@@ -26,6 +26,7 @@ bool Interpreter::cycle_move(int g, const Axes& target) {
     for (int a = 0; a < kAxes; ++a)
         same = same && std::fabs(target[size_t(a)] - prog_[size_t(a)]) < 1e-12;
     if (same) return true;  // a cycle never makes an empty move
+    cycle_pass(g != 0);
     prog_next_ = target;
     Axes mach = frames_.to_machine(target);
     if (!check_travel(mach)) return false;

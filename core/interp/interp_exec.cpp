@@ -165,6 +165,7 @@ bool Interpreter::do_flow(const Block& b, const Plan& p) {
 // does not need are called only when the block holds their words: this runs
 // for every block, and a call costs more than the test.
 StepResult Interpreter::execute(const Block& b) {
+    cycle_last_ = -1;
     if (caz_) return execute_caz(b);
     if (opt_.fast_lane)
         if (std::optional<StepResult> plain = execute_plain(b)) return *plain;
@@ -180,6 +181,8 @@ StepResult Interpreter::execute(const Block& b) {
     if (!apply_modal(p) || !do_m_avant(p) || !apply_spindle(p)) return StepResult::error;
     if (b.msg_channel >= 0) out_.message(loc_, b.msg_channel, b.msg);
     if (!do_motion(p) || !do_dwell(p)) return StepResult::error;
+    // G09: an exact stop at the end of its own block (000:10566-10595).
+    if (p.g[9]) out_.exact_stop(loc_);
     StepResult r = StepResult::running;
     if (!do_m_apres(p, r)) return StepResult::error;
     if (ended_) return r;
@@ -197,6 +200,7 @@ bool Interpreter::modal_interpolation(const Plan& p) {
         if (modal_.radcomp != 40)
             return fail(138, tr("plane change under radius compensation (program G40 first)"));
         modal_.plane = p.mode.plane;
+        out_.exact_stop(loc_);  // the moves before are in the old plane: they end at rest
     }
     if (p.mode.units >= 0) modal_.inch = p.mode.units == 70;
     return true;

@@ -157,6 +157,9 @@ Error Interpreter::e_access() const {
 Error Interpreter::read_e(int n, int64_t& out) {
     if (Error err = e_access()) return err;
     if (Error err = e_rights(n, false)) return err;
+    // "Une opération sur un paramètre externe entraîne l'arrêt de mouvements
+    // à la fin du bloc précédent" (000:7596).
+    out_.exact_stop(loc_);
     out = e_value(n);
     return {};
 }
@@ -182,6 +185,8 @@ int64_t Interpreter::e_value(int n) const {
             return um(corr_[size_t(modal_.d)].r);
         case 69000:
             return e_raw(n, 1000);
+        case 32000:
+            return e_raw(n, std::llround(m_.min_block_time * 1000.0));
         case 73000:
         case 74000:
             return 0;
@@ -230,6 +235,7 @@ Error Interpreter::write_e(int n, int64_t value) {
     if (Error err = e_rights(n, true)) return err;
     if (value > INT32_MAX || value < INT32_MIN)
         return {92, strf(tr("value %lld does not fit an E parameter"), (long long)value)};
+    out_.exact_stop(loc_);  // as a read (000:7596)
     int x = (n / 1000) % 10, k = n % 1000, type = n / 10000;
     auto from = [&](int axis) { return is_rotary(axis) ? double(value) / 1e4 : mm_of(value); };
     e_written_[n] = value;
@@ -251,6 +257,12 @@ Error Interpreter::write_e(int n, int64_t value) {
         Axes* dst[] = {&frames_.pref, &frames_.dec1, nullptr, nullptr, &frames_.dec3, &frames_.g59};
         (*dst[k])[size_t(x)] = from(x);
         recompute_program_pos();
+        return {};
+    }
+    if (n == 32000) {  // milliseconds (pupitre-iso(5), E parameters)
+        if (value < 0) return {92, tr("E32000, a time, may not be negative")};
+        e_raw_[n] = value;
+        min_block_ = double(value) / 1000.0;
         return {};
     }
     if (n == 69000) {

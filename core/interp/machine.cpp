@@ -144,6 +144,31 @@ std::string read_travel(const Line& l, MachineProfile& m) {
 std::string read_rapid(const Line& l, MachineProfile& m) {
     return number_unless(l.val, not_positive, m.axes[l.axis].rapid, tr("rapid must be positive"));
 }
+bool negative(double d) {
+    return d < 0;
+}
+std::string read_axis_feed(const Line& l, MachineProfile& m) {
+    return number_unless(l.val, not_positive, m.axes[l.axis].feed,
+                         tr("feed.max of an axis must be positive"));
+}
+std::string read_accel(const Line& l, MachineProfile& m) {
+    return number_unless(l.val, negative, m.axes[l.axis].accel, tr("accel must be >= 0"));
+}
+std::string read_jerk(const Line& l, MachineProfile& m) {
+    return number_unless(l.val, negative, m.axes[l.axis].jerk, tr("jerk must be >= 0"));
+}
+std::string read_smoothing(const Line& l, MachineProfile& m) {
+    return number_unless(l.val, negative, m.smoothing, tr("smoothing must be >= 0"));
+}
+std::string read_in_position(const Line& l, MachineProfile& m) {
+    return number_unless(l.val, negative, m.in_position, tr("in_position must be >= 0"));
+}
+std::string read_min_block_time(const Line& l, MachineProfile& m) {
+    return number_unless(l.val, negative, m.min_block_time, tr("min_block_time must be >= 0"));
+}
+std::string read_spindle_accel(const Line& l, MachineProfile& m) {
+    return number_unless(l.val, negative, m.spindle_accel, tr("spindle.accel must be >= 0"));
+}
 std::string read_home(const Line& l, MachineProfile& m) {
     return number_unless(l.val, never, m.home[l.axis], tr("home needs a number"));
 }
@@ -247,6 +272,10 @@ constexpr KeyReader kKeys[] = {
     {"tools", read_tools},
     {"correctors", read_correctors},
     {"tool_change_time", read_tool_change_time},
+    {"smoothing", read_smoothing},
+    {"in_position", read_in_position},
+    {"min_block_time", read_min_block_time},
+    {"spindle.accel", read_spindle_accel},
     {"homing", read_homing},
     {"program_memory", read_program_memory},
     {"jog.feed", read_jog_feed},
@@ -258,7 +287,8 @@ constexpr KeyReader kKeys[] = {
 // The per-axis keys, written NAME.X (X any axis letter).
 constexpr KeyReader kAxisKeys[] = {
     {"travel", read_travel}, {"rapid", read_rapid}, {"home", read_home},
-    {"pref", read_pref},     {"dec1", read_dec1},
+    {"pref", read_pref},     {"dec1", read_dec1},   {"feed.max", read_axis_feed},
+    {"accel", read_accel},   {"jerk", read_jerk},
 };
 
 Reader reader_of(std::string_view key, const KeyReader* begin, const KeyReader* end) {
@@ -287,7 +317,7 @@ std::string check_whole(MachineProfile& m) {
 }  // namespace
 
 // profile -> { line } ; line -> key '=' value [ '#' comment ] ;
-// key -> NAME | NAME '.' AXIS   (travel.X, rapid.Z, ...)
+// key -> NAME | NAME '.' AXIS   (travel.X, rapid.Z, feed.max.X, ...)
 std::string parse_machine(std::string_view text, MachineProfile& m) {
     m = MachineProfile{};
     int lineno = 0;
@@ -299,7 +329,7 @@ std::string parse_machine(std::string_view text, MachineProfile& m) {
         if (eq == std::string_view::npos) return bad(tr("expected key = value"));
         Line l{trim(line.substr(0, eq)), trim(line.substr(eq + 1))};
         std::string_view key = l.key, sub;
-        if (size_t dot = key.find('.'); dot != std::string_view::npos && dot + 2 == key.size()) {
+        if (size_t dot = key.rfind('.'); dot != std::string_view::npos && dot + 2 == key.size()) {
             int axis = axis_of(key[dot + 1]);
             sub = key.substr(0, dot);
             if (axis < 0)

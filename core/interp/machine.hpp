@@ -16,6 +16,13 @@ struct AxisConfig {
     bool present = false;
     double min = -1e9, max = 1e9;  // travel of the reference relative to OM (lathe X: radius)
     double rapid = 10000;          // mm/min or deg/min
+    // The motion's limits (core/plan): the highest speed of a feed move on
+    // this axis (mm/min or deg/min, 0: its rapid), its acceleration (mm/s2 or
+    // deg/s2, 0: none modelled) and jerk (mm/s3 or deg/s3, 0: none).
+    double feed = 0;
+    double accel = 0;
+    double jerk = 0;
+    double feed_max() const { return feed > 0 ? feed : rapid; }
 };
 
 struct SpindleRange {
@@ -46,6 +53,16 @@ struct MachineProfile {
     int tools = 12;
     int correctors = 255;
     double tool_change_time = 2.0;
+    // The planner's (core/plan; pupitre(1), MACHINE PROFILES): how far a
+    // smoothed corner may leave the programmed point between chained blocks
+    // (mm, 004:360), the time an exact stop waits for the axes to settle (s),
+    // the shortest time of an interpolated block (s, E32000's default,
+    // 004:1265), and how fast the spindle changes speed (rev/min per second,
+    // 0: at once).
+    double smoothing = 0.01;
+    double in_position = 0;
+    double min_block_time = 0;
+    double spindle_accel = 0;
     bool homing_required = false;  // console: programmed moves before POM give 159
     double jog_feed = 1000;        // mm/min of JOG and INC moves
     // Part-program memory in kilobytes: G76+ may not grow the programs in memory

@@ -364,6 +364,8 @@ bool Interpreter::linear(int g, const Axes& mach, bool g52, const std::bitset<kA
     e.x_diameter = m_.lathe && m_.x_diameter && !modal_.radius_x;
     e.from_mach = mach_;
     e.to_mach = mach;
+    e.eg = modal_.eg;
+    e.min_block = min_block_;
     double len = linear_length(mach_, mach);
     double rot = rotary_length(mach_, mach);
     e.length = len > 1e-12 ? len : rot;
@@ -577,8 +579,9 @@ bool Interpreter::emit_arc(int g, const Axes& target, int a0, int a1, double c0,
                 mach[size_t(a)] = mach_[size_t(a)];
     if (!check_travel(mach)) return false;
     // The circle's extremes must be inside the travel too.
+    Axes cm = prog_;
+    bool flip = false;
     {
-        Axes cm = prog_;
         cm[size_t(a0)] = c0;
         cm[size_t(a1)] = c1;
         if (frames_.translation_only()) {  // the two axes used, as to_machine would
@@ -596,7 +599,7 @@ bool Interpreter::emit_arc(int g, const Axes& target, int a0, int a1, double c0,
                       cm[size_t(a1)] + rm <= travel_hi_[size_t(a1)];
         rm = dist;
         double am = inside ? 0 : std::atan2(my, mx);
-        bool flip = frames_.mirror[size_t(a0)] != frames_.mirror[size_t(a1)];
+        flip = frames_.mirror[size_t(a0)] != frames_.mirror[size_t(a1)];
         double swm = flip ? -sw : sw;
         Axes probe = mach;
         // Quadrant points (0°, 90°, 180°, 270°) crossed by the swept angle.
@@ -626,6 +629,11 @@ bool Interpreter::emit_arc(int g, const Axes& target, int a0, int a1, double c0,
     e.c0 = c0;
     e.c1 = c1;
     e.sweep = sw * 180 / kPi;
+    e.mc0 = cm[size_t(a0)];
+    e.mc1 = cm[size_t(a1)];
+    e.msweep = flip ? -e.sweep : e.sweep;
+    e.eg = modal_.eg;
+    e.min_block = min_block_;
     e.x_diameter = m_.lathe && m_.x_diameter && !modal_.radius_x;
     double scale = frames_.scale_on ? frames_.scale : 1.0;
     double arclen = std::fabs(sw) * (r0 + r1) / 2 * scale;

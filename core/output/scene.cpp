@@ -259,6 +259,41 @@ double legend(Scene& s, double x, double y, double room) {
     return row - y + 2;
 }
 
+// The table of each tool's time (SceneOptions::tools): a bold header, one row
+// per tool, the numbers right-aligned. Returns the height used.
+double tool_table(Scene& s, double x, double y) {
+    // The right edge of each column from x (mm of paper); the tool's is its left.
+    static constexpr double kRight[] = {0, 36, 54, 78, 100, 130};
+    static constexpr const char* kHead[] = {
+        // TRANSLATORS: the headers of the plot's table of each tool's time.
+        N_("tool"),   N_("cutting s"), N_("passes"),
+        N_("cut mm"), N_("rapids s"),  N_("parts per edge")};
+    const double top = y;
+    auto cell = [&](size_t c, const std::string& words, bool bold) {
+        Mark m = text_mark(Mark::notes, x + kRight[c], y, words, kBody, kInk, bold);
+        m.right = c > 0;
+        s.marks.push_back(m);
+    };
+    y += kBody * 2.2;
+    for (size_t c = 0; c < std::size(kHead); ++c) cell(c, tr(kHead[c]), true);
+    for (const plan::ToolRow& r : s.opt.tools) {
+        y += kBody * 1.6;
+        char b[5][32];
+        std::snprintf(b[0], sizeof b[0], "%.1f", r.cut_seconds);
+        std::snprintf(b[1], sizeof b[1], "%ld", r.passes);
+        std::snprintf(b[2], sizeof b[2], "%.3f", r.cut_length);
+        std::snprintf(b[3], sizeof b[3], "%.1f", r.rapid_seconds);
+        const long n = plan::parts_per_edge(r.cut_seconds, s.opt.life.of(r.tool));
+        if (n > 0)
+            std::snprintf(b[4], sizeof b[4], "%ld", n);
+        else
+            std::snprintf(b[4], sizeof b[4], "%s", "\u2014");  // not given
+        cell(0, "T" + std::to_string(r.tool), true);
+        for (size_t c = 0; c < 5; ++c) cell(c + 1, b[c], false);
+    }
+    return y - top;
+}
+
 // The window: the fitted box with a margin, at the largest round scale that fits the page.
 void frame_window(Scene& s) {
     double w = s.fit.x1 - s.fit.x0, h = s.fit.y1 - s.fit.y0;
@@ -294,6 +329,7 @@ void lay_out(Scene& s) {
         s.marks.push_back(
             text_mark(Mark::notes, x, y, fit_text(words, kBody, content), kBody, colour));
     }
+    if (!s.opt.tools.empty()) y += tool_table(s, x, y);
     y += kSmall * 1.8;
     // TRANSLATORS: %s is the program that drew the plot: pupitre 1.2.
     s.marks.push_back(text_mark(Mark::notes, x, y, strf(tr("drawn by %s"), s.opt.generator.c_str()),

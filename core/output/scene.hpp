@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/output/toolpath.hpp"
+#include "core/plan/tools.hpp"
 
 namespace pupitre {
 
@@ -55,7 +56,12 @@ struct SceneOptions {
     PathPlane plane = PathPlane::xy;
     std::string machine;  // the profile's name as given (--machine)
     double seconds = -1;  // cycle time; < 0: the toolpath's own count
-    bool mirror = true;   // lathe: the half-profile's mirror image below the axis
+    // A table of each tool's time under the notes (issue 35: the PDF's): its
+    // cutting and rapid time, passes, length cut, and the parts an edge
+    // lasts when `life` gives it. Empty: no table.
+    std::vector<plan::ToolRow> tools;
+    plan::EdgeLife life;
+    bool mirror = true;  // lathe: the half-profile's mirror image below the axis
     std::string generator = "pupitre";
 };
 

@@ -73,7 +73,22 @@ void diag_json(std::string& o, const Diag& d) {
 }
 }  // namespace
 
-std::string summary_text(const Interpreter& in, const std::string& file) {
+std::string tool_line(const plan::ToolRow& r, const plan::EdgeLife& life) {
+    // TRANSLATORS: a tool's share of the cycle: T, its cutting time in seconds, its passes
+    // (the English says "passes" whatever the number), the length cut in mm, its rapid time.
+    std::string o =
+        strf(trn("T%d: %s s of cutting a part (%ld passes, %s mm), %s s of rapids",
+                 "T%d: %s s of cutting a part (%ld passes, %s mm), %s s of rapids", r.passes),
+             r.tool, fixed(r.cut_seconds, 1).c_str(), r.passes, fixed(r.cut_length, 3).c_str(),
+             fixed(r.rapid_seconds, 1).c_str());
+    if (long n = plan::parts_per_edge(r.cut_seconds, life.of(r.tool)))
+        // TRANSLATORS: follows a tool's line of the summary, when the life of an edge is known.
+        o += strf(trn(", change the edge every %ld part", ", change the edge every %ld parts", n),
+                  n);
+    return o;
+}
+
+std::string summary_text(const Interpreter& in, const std::string& file, const PlanSummary& plan) {
     std::string o;
     // TRANSLATORS: a count in the summary of a run; the English says "blocks" whatever the number.
     std::string blocks = strf(trn("%ld blocks", "%ld blocks", in.blocks()), in.blocks());
@@ -81,10 +96,22 @@ std::string summary_text(const Interpreter& in, const std::string& file) {
     std::string moves = strf(trn("%ld moves", "%ld moves", in.moves()), in.moves());
     // TRANSLATORS: the first line of the summary of a run: program number, file, machine profile,
     // then the counts of blocks and moves, the path length, the cycle time h:mm:ss and in seconds.
-    o += strf(tr("%%%d (%s) on %s: %s, %s, path %s mm, cycle time %s (%s s)\n"), in.main_program(),
-              file.c_str(), in.machine().name.c_str(), blocks.c_str(), moves.c_str(),
-              fixed(in.path_length(), 3).c_str(), clock_text(in.seconds()).c_str(),
-              fixed(in.seconds(), 3).c_str());
+    if (plan.report) {
+        const double t = plan.report->seconds;
+        // TRANSLATORS: the first line of the summary of a run: program number, file, machine
+        // profile, the counts of blocks and moves, the path length, the cycle time with the
+        // machine's accelerations h:mm:ss and in seconds, then the time at the feeds alone.
+        o += strf(tr("%%%d (%s) on %s: %s, %s, path %s mm, cycle time %s (%s s; %s s at the "
+                     "feeds alone)\n"),
+                  in.main_program(), file.c_str(), in.machine().name.c_str(), blocks.c_str(),
+                  moves.c_str(), fixed(in.path_length(), 3).c_str(), clock_text(t).c_str(),
+                  fixed(t, 3).c_str(), fixed(plan.report->feed_seconds, 3).c_str());
+    } else {
+        o += strf(tr("%%%d (%s) on %s: %s, %s, path %s mm, cycle time %s (%s s)\n"),
+                  in.main_program(), file.c_str(), in.machine().name.c_str(), blocks.c_str(),
+                  moves.c_str(), fixed(in.path_length(), 3).c_str(),
+                  clock_text(in.seconds()).c_str(), fixed(in.seconds(), 3).c_str());
+    }
     if (in.machine().dialect == Dialect::cazeneuve)
         // The programs are in micrometres; OP and OM are shown as the machine's pages show them.
         o += tr("units: mm, X a radius (the program's X15000 is X15.000; pupitre-cazeneuve(5))\n");
@@ -95,11 +122,37 @@ std::string summary_text(const Interpreter& in, const std::string& file) {
         for (int t : in.tools_used()) o += " T" + std::to_string(t);
         o += '\n';
     }
+    if (plan.report)
+        for (const plan::ToolRow& r : plan.report->tools.rows())
+            o += tool_line(r, plan.life) + '\n';
     return o;
 }
 
+namespace {
+// "tool_times":[{"t":11,"cut":141.78,"rapid":6.6,"passes":3,"cut_length":424.44,
+// "parts_per_edge":6}]: parts_per_edge null when the edge's life is not given.
+void tool_times_json(std::string& o, const PlanSummary& plan) {
+    o += ",\"tool_times\":[";
+    bool first = true;
+    for (const plan::ToolRow& r : plan.report->tools.rows()) {
+        if (!first) o += ',';
+        first = false;
+        o += "{\"t\":" + std::to_string(r.tool) + ",\"cut\":";
+        append_fixed4(o, r.cut_seconds);
+        o += ",\"rapid\":";
+        append_fixed4(o, r.rapid_seconds);
+        o += ",\"passes\":" + std::to_string(r.passes) + ",\"cut_length\":";
+        append_fixed4(o, r.cut_length);
+        const long n = plan::parts_per_edge(r.cut_seconds, plan.life.of(r.tool));
+        o += ",\"parts_per_edge\":" + (n > 0 ? std::to_string(n) : std::string("null")) + '}';
+    }
+    o += ']';
+}
+}  // namespace
+
 std::string summary_json(const Interpreter& in, const std::string& file,
-                         const std::vector<Diag>& more, std::string_view fields) {
+                         const std::vector<Diag>& more, std::string_view fields,
+                         const PlanSummary& plan) {
     std::string o = "{\"file\":";
     append_json_string(o, file);
     o += ",\"program\":" + std::to_string(in.main_program());
@@ -110,7 +163,11 @@ std::string summary_json(const Interpreter& in, const std::string& file,
     o += ",\"path_length\":";
     append_fixed4(o, in.path_length());
     o += ",\"cycle_time\":";
-    append_fixed4(o, in.seconds());
+    append_fixed4(o, plan.report ? plan.report->seconds : in.seconds());
+    if (plan.report) {
+        o += ",\"feed_time\":";
+        append_fixed4(o, plan.report->feed_seconds);
+    }
     o += ",\"op\":";
     axes_json(o, in, in.program_pos());
     o += ",\"om\":";
@@ -143,7 +200,9 @@ std::string summary_json(const Interpreter& in, const std::string& file,
         if (i) o += ',';
         o += std::to_string(in.tools_used()[i]);
     }
-    o += "],\"L\":{";
+    o += ']';
+    if (plan.report) tool_times_json(o, plan);
+    o += ",\"L\":{";
     bool first = true;
     for (size_t i = 0; i < in.lvars().v.size(); ++i) {
         if (!in.lvars().written.test(i)) continue;

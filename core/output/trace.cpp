@@ -36,7 +36,8 @@ void TraceWriter::axes(const char* key, const Axes& v, bool x_diam) {
 }
 
 void TraceWriter::move(const MoveEvent& e) {
-    seconds += e.seconds;
+    const bool planned = e.plan_seconds >= 0;
+    seconds += planned ? e.plan_seconds : e.seconds;
     head("move", e.loc);
     buf_ += ",\"g\":";
     buf_ += std::to_string(e.g);
@@ -67,7 +68,17 @@ void TraceWriter::move(const MoveEvent& e) {
     buf_ += ",\"rpm\":";
     append_fixed4(buf_, e.rpm);
     buf_ += ",\"t\":";
-    append_fixed4(buf_, e.seconds);
+    if (planned) {
+        // As the planner made it (core/plan): when it starts, how long it
+        // takes, and its highest speed.
+        append_fixed4(buf_, e.plan_seconds);
+        buf_ += ",\"start\":";
+        append_fixed4(buf_, e.plan_start);
+        buf_ += ",\"peak\":";
+        append_fixed4(buf_, e.plan_peak);
+    } else {
+        append_fixed4(buf_, e.seconds);
+    }
     buf_ += "}\n";
     std::fwrite(buf_.data(), 1, buf_.size(), out_);
 }
@@ -131,7 +142,7 @@ void TraceWriter::message(const Loc& l, int channel, std::string_view text) {
 void TraceWriter::end(const Loc& l, int m) {
     head("end", l);
     buf_ += ",\"m\":" + std::to_string(m) + ",\"t\":";
-    append_fixed4(buf_, seconds);
+    append_fixed4(buf_, clock_ ? *clock_ : seconds);
     buf_ += "}\n";
     std::fwrite(buf_.data(), 1, buf_.size(), out_);
 }

@@ -21,6 +21,9 @@ class TraceWriter final : public MachineSink {
     void message(const Loc&, int channel, std::string_view) override;
     void end(const Loc&, int m) override;
     double seconds = 0;  // running total, reported with "end"
+    // The planner's clock (core/plan, PlanSink::clock), which "end" reports
+    // instead: it counts the waits of the exact stops and the spindle too.
+    void follow(const double* clock) { clock_ = clock; }
 
   private:
     void head(const char* ev, const Loc& l);
@@ -31,6 +34,7 @@ class TraceWriter final : public MachineSink {
     std::FILE* out_;
     const MachineProfile& m_;
     std::string buf_;
+    const double* clock_ = nullptr;
 };
 
 }  // namespace pupitre

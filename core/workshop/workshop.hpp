@@ -212,6 +212,9 @@ class Workshop final : public MachineSink {
     void profile(const Loc& l, const ProfileElem& p) override {
         if (next_) next_->profile(l, p);
     }
+    void exact_stop(const Loc& l) override {
+        if (next_) next_->exact_stop(l);
+    }
 
   private:
     // --- the machining centre (mill_shop.cpp) ---

@@ -38,7 +38,7 @@ RULES = [
 # The core's folders from the ground up: the files at core/'s top (diag, i18n,
 # numfmt, keyvalue, digest) first, then each folder, which may include its own
 # headers and those of the folders before it, never one after it.
-CORE_ORDER = ("", "parse", "geometry", "cycles", "interp", "output", "workshop", "sim",
+CORE_ORDER = ("", "parse", "geometry", "cycles", "interp", "plan", "output", "workshop", "sim",
               "training", "render")
 CORE_INCLUDE = re.compile(r'^"core/(?:([a-z_]+)/)?[^/"]+"$')
 CORE_WHY = "core's folders include only downwards: " + " < ".join(f or "core/*" for f in CORE_ORDER)

@@ -145,6 +145,35 @@ TEST(Scene, LegendListsTheLayersThatLeaveInk) {
     EXPECT_GE(c.fit.x1, 50 - 1e-9);
 }
 
+// The PDF's table of each tool's time (issue 35): a header and a row per
+// tool, under the notes, the page taller for it; none without tools.
+TEST(Scene, TheToolTableListsEachTool) {
+    auto r = run_text("mill", kSquare);
+    SceneOptions o;
+    o.plane = PathPlane::xy;
+    const Scene plain = build_scene(*r.path, o);
+    o.tools = {plan::ToolRow{.tool = 11,
+                             .cut_seconds = 141.78,
+                             .rapid_seconds = 6.6,
+                             .cut_length = 424.44,
+                             .passes = 3},
+               plan::ToolRow{.tool = 12, .cut_seconds = 138.4}};
+    o.life.all = 15 * 60;
+    const Scene table = build_scene(*r.path, o);
+    auto words = [](const Scene& s) {
+        std::string t;
+        for (const Mark& m : s.marks)
+            if (m.kind == Mark::text) t += m.words + "|";
+        return t;
+    };
+    EXPECT_EQ(words(plain).find("parts per edge"), std::string::npos);
+    const std::string t = words(table);
+    for (const char* w : {"tool|", "cutting s|", "parts per edge|", "T11|", "141.8|", "3|",
+                          "424.440|", "6.6|", "6|", "T12|", "138.4|"})
+        EXPECT_NE(t.find(w), std::string::npos) << w;
+    EXPECT_GT(table.page_h, plain.page_h);
+}
+
 TEST(Scene, LatheMirrorImageIsFittedNearTheAxisOnly) {
     // A bar turned from the axis: the half-profile and its mirror image.
     auto bar = run_text("lathe",

@@ -1,0 +1,381 @@
+// The planner as a sink (plan_sink.hpp): the machine's limits on each move,
+// the exact stops, and the events handed on in order once planned.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/plan/plan_sink.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <string>
+#include <variant>
+
+#include "core/geometry/geometry.hpp"
+
+namespace pupitre::plan {
+
+namespace {
+constexpr double kTiny = 1e-12;
+// On an arc the acceleration is shared between the tangent and the normal,
+// as LinuxCNC does (tp.c: TP_ACC_RATIO_TANGENTIAL 0.5): half of it along the
+// path, the rest (sqrt(3)/2, so that the two add up to it) towards the centre.
+constexpr double kArcTangential = 0.5;
+constexpr double kArcNormal = 0.8660254037844386;
+// Events other than moves held behind a move: past this many in a row, the
+// motion stops (a program that only talks for so long is not moving).
+constexpr long kMaxOthers = 1000;
+
+// Held events, as their values.
+struct Dwell {
+    Loc l;
+    double s;
+};
+struct Tool {
+    Loc l;
+    int t, d;
+    double s;
+    bool m6;
+};
+struct Coolant {
+    Loc l;
+    bool m7, m8;
+};
+struct Stop {
+    Loc l;
+    int m;
+};
+struct Message {
+    Loc l;
+    int ch;
+    std::string text;
+};
+struct End {
+    Loc l;
+    int m;
+};
+struct Stock {
+    Loc l;
+    std::vector<std::array<double, 2>> zr;
+};
+struct Profile {
+    Loc l;
+    ProfileElem e;
+};
+struct ExactStop {
+    Loc l;
+};
+using Event = std::variant<MoveEvent, SpindleEvent, Dwell, Tool, Coolant, Stop, Message, End, Stock,
+                           Profile, ExactStop>;
+
+// Hands an event to the next sink; a move not planned (one of no length)
+// starts at `clock` and takes no time.
+struct Deliver {
+    MachineSink& to;
+    double clock;
+    void operator()(MoveEvent& e) const {
+        if (e.plan_seconds < 0) e.plan_start = clock, e.plan_seconds = 0, e.plan_peak = 0;
+        to.move(e);
+    }
+    void operator()(SpindleEvent& e) const { to.spindle(e); }
+    void operator()(Dwell& e) const { to.dwell(e.l, e.s); }
+    void operator()(Tool& e) const { to.tool(e.l, e.t, e.d, e.s, e.m6); }
+    void operator()(Coolant& e) const { to.coolant(e.l, e.m7, e.m8); }
+    void operator()(Stop& e) const { to.stop(e.l, e.m); }
+    void operator()(Message& e) const { to.message(e.l, e.ch, e.text); }
+    void operator()(End& e) const { to.end(e.l, e.m); }
+    void operator()(Stock& e) const { to.stock(e.l, e.zr); }
+    void operator()(Profile& e) const { to.profile(e.l, e.e); }
+    void operator()(ExactStop& e) const { to.exact_stop(e.l); }
+};
+}  // namespace
+
+// The events waiting for the moves before them; the first is always a move
+// not yet planned.
+struct PlanSink::Queue {
+    struct Entry {
+        Event ev;
+        bool pending = false;  // a move the planner holds
+    };
+    std::deque<Entry> q;
+};
+
+PlanSink::PlanSink(const MachineProfile& m, MachineSink* next)
+    : m_(m), next_(next), planner_(*this), queue_(std::make_unique<Queue>()) {
+    auto inv = [](double v) { return v > 0 ? 1 / v : 0; };
+    for (size_t a = 0; a < kAxes; ++a) {
+        jerk_ = jerk_ || (m.has(int(a)) && m.axes[a].jerk > 0);
+        if (!m.has(int(a))) continue;
+        axes_[naxes_++] = a;
+        const AxisConfig& ax = m.axes[a];
+        inv_rapid_[a] = inv(ax.rapid / 60);
+        inv_feed_[a] = inv(ax.feed_max() / 60);
+        inv_accel_[a] = inv(ax.accel);
+        inv_jerk_[a] = inv(ax.jerk);
+    }
+}
+
+PlanSink::~PlanSink() = default;
+
+// How much each limit binds a path whose axes travel `per` over it: the
+// largest travel over an axis's own limit (0: none binds). The limit along the
+// path is the path's length over it, so that a diagonal of two equal axes gets
+// sqrt(2) times each (LinuxCNC). The axes' limits are kept as inverses (0: no
+// limit), and no division is made per axis.
+PlanSink::Along PlanSink::along(const Dir& per, const Dir& inv_speed) const {
+    Along r;
+    for (size_t k = 0; k < naxes_; ++k) {
+        const size_t i = axes_[k];
+        const double c = std::fabs(per[i]);
+        r.v = std::max(r.v, c * inv_speed[i]);
+        r.a = std::max(r.a, c * inv_accel_[i]);
+        if (jerk_) r.j = std::max(r.j, c * inv_jerk_[i]);
+    }
+    return r;
+}
+
+// An arc: its direction at both ends, and its limits: each plane axis may
+// take all of the plane's share of the path (the tangent turns), the other
+// axes (a helix) their own, and the speed is held where the centre pulls at
+// the arc's share of the acceleration.
+void PlanSink::arc(const MoveEvent& e, Segment& s, Dir& in, Dir& out) const {
+    const size_t a0 = size_t(e.plane_a0), a1 = size_t(e.plane_a1);
+    const double sx = e.from_mach[a0] - e.mc0, sy = e.from_mach[a1] - e.mc1;
+    const double ex = e.to_mach[a0] - e.mc0, ey = e.to_mach[a1] - e.mc1;
+    const double rs = std::sqrt(sx * sx + sy * sy), re = std::sqrt(ex * ex + ey * ey);
+    const double radius = (rs + re) / 2;
+    const double arclen = std::fabs(e.msweep) * geometry::kDeg * radius;
+    Dir per{};
+    double h2 = 0;
+    for (size_t k = 0; k < naxes_; ++k) {
+        const size_t i = axes_[k];
+        if (i == a0 || i == a1) continue;
+        per[i] = e.to_mach[i] - e.from_mach[i];
+        h2 += per[i] * per[i];
+    }
+    const double total = h2 > 0 ? std::sqrt(arclen * arclen + h2) : arclen;
+    const bool round = rs > kTiny && re > kTiny && total > kTiny;
+    const double inv_total = round ? 1 / total : 1 / e.length;
+    for (size_t k = 0; k < naxes_; ++k) {  // per unit of path: the helix's axes go evenly
+        const size_t i = axes_[k];
+        in[i] = out[i] = per[i] *= inv_total;
+    }
+    if (!round) return limits(e, along(per, inv_feed_), s);
+    const double plane = arclen * inv_total;
+    const double turn = e.msweep >= 0 ? plane : -plane;  // counter-clockwise: the radius +90°
+    in[a0] = -turn * sy / rs, in[a1] = turn * sx / rs;
+    out[a0] = -turn * ey / re, out[a1] = turn * ex / re;
+    per[a0] = per[a1] = plane;
+    limits(e, along(per, inv_feed_), s);
+    if (s.limits.accel > 0) {
+        // The centre pulls at most sqrt(3)/2 of the plane's acceleration
+        // (s.limits.accel is the path's: plane / share); half goes along.
+        const double centre = kArcNormal * s.limits.accel * plane;
+        const double v = std::sqrt(centre * radius) / std::max(plane, kTiny);
+        if (v < s.vmax) {
+            s.vmax = v;
+            s.inv_vmax = 1 / v;
+        }
+        s.limits.accel *= kArcTangential;
+        s.inv_accel /= kArcTangential;
+    }
+}
+
+// The segment of a move from how much its axes bind it: the speed no more
+// than the feed's (the length over the time at the feed), EG on the
+// acceleration.
+void PlanSink::limits(const MoveEvent& e, const Along& lim, Segment& s) const {
+    s.length = e.length;
+    s.min_time = e.min_block;
+    // The longest of the times at the axes' limits, at the feed (a rapid
+    // has none of its own), and E32000's.
+    const double t = std::max({lim.v * e.length, e.g != 0 ? e.seconds : 0, e.min_block});
+    if (t > 0) {
+        s.vmax = e.length / t;
+        s.inv_vmax = t / e.length;
+    } else {
+        s.vmax = 1e9;
+    }
+    if (lim.a > 0) {
+        s.inv_accel = e.eg == 100 ? lim.a : lim.a * 100 / e.eg;
+        s.limits.accel = 1 / s.inv_accel;
+    }
+    s.limits.jerk = lim.j > 0 ? 1 / lim.j : 0;
+}
+
+void PlanSink::line(const MoveEvent& e, Segment& s, Dir& dir) const {
+    double n2 = 0;
+    const double inv_len = 1 / e.length;
+    for (size_t k = 0; k < naxes_; ++k) {
+        const size_t i = axes_[k];
+        const double d = e.to_mach[i] - e.from_mach[i];
+        n2 += d * d;
+        dir[i] = d * inv_len;  // per unit of path
+    }
+    limits(e, along(dir, e.g == 0 ? inv_rapid_ : inv_feed_), s);
+    // The interpreter's length is the axes' travel unless rotary axes turn
+    // with linear ones (then it is the linear part): then the direction is
+    // scaled to a unit one.
+    if (std::fabs(n2 * inv_len * inv_len - 1) > 1e-9) {
+        const double unit = e.length / std::sqrt(n2);
+        for (size_t k = 0; k < naxes_; ++k) dir[axes_[k]] *= unit;
+    }
+}
+
+// The square of how fast the corner from the last move into `in` may be
+// passed: on the arc that leaves the corner by the smoothing tolerance, at
+// the acceleration along the change of direction (grbl's junction
+// deviation). 0 turning back, HUGE_VAL going straight on.
+double PlanSink::junction_sq(const Dir& last, const Dir& in, double eg) const {
+    double c = 0;
+    for (size_t k = 0; k < naxes_; ++k) c += last[axes_[k]] * in[axes_[k]];
+    if (c > 1 - 1e-9) return HUGE_VAL;
+    if (c < -1 + 1e-9 || m_.smoothing <= 0) return 0;
+    double ra = 0;  // the change of direction over the acceleration, on the axis that limits
+    for (size_t k = 0; k < naxes_; ++k) {
+        const size_t i = axes_[k];
+        ra = std::max(ra, std::fabs(in[i] - last[i]) * inv_accel_[i]);
+    }
+    if (ra <= 0) return HUGE_VAL;
+    const double acc = std::sqrt(2 - 2 * c) / ra;      // the change of direction's length over ra
+    const double sin_half = std::sqrt(0.5 * (1 + c));  // half the corner's angle
+    return acc * eg * 0.01 * m_.smoothing * sin_half / (1 - sin_half);
+}
+
+void PlanSink::move(const MoveEvent& e) {
+    report_.feed_seconds += e.seconds;
+    others_ = 0;
+    if (e.length < 1e-9) {  // nothing to plan: it takes no time
+        if (other()) pass(MoveEvent(e));
+        return;
+    }
+    if (next_) queue_->q.push_back({e, true});
+    Segment& s = planner_.add();  // filled in place: a move is planned in its ring's slot
+    Dir& out = dir_[1 - last_];   // its direction at its end, the last one's next time
+    const Dir* in = &out;
+    if (e.g == 2 || e.g == 3) {
+        arc(e, s, entry_, out);
+        in = &entry_;
+    } else {
+        line(e, s, out);
+    }
+    s.entry_max_sq = have_last_ ? junction_sq(dir_[last_], *in, e.eg) : 0;
+    s.tool = tool_;
+    s.cut = e.g != 0;
+    planner_.push();
+    last_ = 1 - last_;
+    have_last_ = moved_ = true;
+}
+
+void PlanSink::planned(const Segment& s) {
+    const double start = report_.seconds;
+    report_.seconds += s.timing.seconds;
+    report_.tools.add(s.tool, s.cut, s.length, s.timing.seconds);
+    if (!next_) return;
+    auto& q = queue_->q;
+    MoveEvent& e = std::get<MoveEvent>(q.front().ev);
+    e.plan_start = start;
+    e.plan_seconds = s.timing.seconds;
+    e.plan_peak = s.timing.peak * 60;
+    next_->move(e);
+    q.pop_front();
+    while (!q.empty() && !q.front().pending) {
+        std::visit(Deliver{*next_, report_.seconds}, q.front().ev);
+        q.pop_front();
+    }
+}
+
+bool PlanSink::other() {
+    if (planner_.held() && ++others_ > kMaxOthers) halt(false);
+    return next_ != nullptr;
+}
+
+template <class Ev>
+void PlanSink::pass(Ev&& ev) {
+    if (planner_.held() == 0) {
+        Event now(std::forward<Ev>(ev));
+        std::visit(Deliver{*next_, report_.seconds}, now);
+    } else {
+        queue_->q.push_back({Event(std::forward<Ev>(ev)), false});
+    }
+}
+
+void PlanSink::halt(bool settle) {
+    planner_.stop();
+    have_last_ = false;
+    if (settle && moved_) wait(m_.in_position);
+    moved_ = false;
+}
+
+void PlanSink::wait(double seconds) {
+    report_.seconds += seconds;
+    report_.waits += seconds;
+}
+
+void PlanSink::dwell(const Loc& l, double seconds) {
+    halt(true);
+    report_.seconds += seconds;
+    report_.feed_seconds += seconds;
+    if (other()) pass(Dwell{l, seconds});
+}
+
+void PlanSink::tool(const Loc& l, int t, int d, double seconds, bool m6) {
+    if (m6) {
+        halt(true);
+        report_.seconds += seconds;
+        report_.feed_seconds += seconds;
+        tool_ = t;
+        report_.tools.change();
+    }
+    if (other()) pass(Tool{l, t, d, seconds, m6});
+}
+
+// A start, a stop, a reversal or a new speed waits for the spindle; under
+// G96 the speed follows the diameter as the tool moves, without a stop.
+void PlanSink::spindle(const SpindleEvent& e) {
+    const bool turns = e.dir != sp_dir_;
+    if (turns || (!e.css && e.rpm != sp_rpm_)) {
+        halt(true);
+        const bool reverses = (sp_dir_ == 3 && e.dir == 4) || (sp_dir_ == 4 && e.dir == 3);
+        const double change = reverses ? sp_rpm_ + e.rpm : std::fabs(e.rpm - sp_rpm_);
+        if (m_.spindle_accel > 0) wait(change / m_.spindle_accel);
+    }
+    sp_dir_ = e.dir;
+    sp_rpm_ = e.rpm;
+    if (other()) pass(SpindleEvent(e));
+}
+
+void PlanSink::coolant(const Loc& l, bool m7, bool m8) {
+    if (other()) pass(Coolant{l, m7, m8});
+}
+
+void PlanSink::stop(const Loc& l, int m) {
+    halt(true);
+    if (other()) pass(Stop{l, m});
+}
+
+void PlanSink::message(const Loc& l, int channel, std::string_view text) {
+    if (other()) pass(Message{l, channel, std::string(text)});
+}
+
+void PlanSink::end(const Loc& l, int m) {
+    halt(false);
+    if (other()) pass(End{l, m});
+}
+
+void PlanSink::stock(const Loc& l, const std::vector<std::array<double, 2>>& zr) {
+    if (other()) pass(Stock{l, zr});
+}
+
+void PlanSink::profile(const Loc& l, const ProfileElem& e) {
+    if (other()) pass(Profile{l, e});
+}
+
+void PlanSink::exact_stop(const Loc& l) {
+    halt(true);
+    if (other()) pass(ExactStop{l});
+}
+
+void PlanSink::finish() {
+    halt(false);
+}
+
+}  // namespace pupitre::plan

@@ -1,0 +1,101 @@
+// The planner as a sink (issue 35): it hears the interpreter's events as the
+// trace and the workshop do, turns each move into a segment with the
+// machine's limits (per axis, as LinuxCNC combines them), stops exactly where
+// the program or the machine asks, and keeps the cycle time with
+// accelerations, the time at the feeds alone, and each tool's share. With a
+// next sink (the trace), it hands every event on in order, each move with its
+// start, duration and peak speed, once planned: at most the look-ahead late.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+#include <array>
+#include <memory>
+
+#include "core/interp/sink.hpp"
+#include "core/plan/planner.hpp"
+#include "core/plan/tools.hpp"
+
+namespace pupitre::plan {
+
+struct Report {
+    double seconds = 0;       // the cycle time: moves planned, dwells, tool changes, waits
+    double feed_seconds = 0;  // the same with each move at its feed alone, no wait
+    double waits = 0;         // exact stops settling and the spindle reaching its speed
+    ToolTable tools;
+};
+
+class PlanSink final : public MachineSink, private Planner::Receiver {
+  public:
+    explicit PlanSink(const MachineProfile& m, MachineSink* next = nullptr);
+    ~PlanSink() override;
+    PlanSink(const PlanSink&) = delete;
+    PlanSink& operator=(const PlanSink&) = delete;
+
+    void move(const MoveEvent&) override;
+    void dwell(const Loc&, double seconds) override;
+    void tool(const Loc&, int t, int d, double seconds, bool m6) override;
+    void spindle(const SpindleEvent&) override;
+    void coolant(const Loc&, bool m7, bool m8) override;
+    void stop(const Loc&, int m) override;
+    void message(const Loc&, int channel, std::string_view) override;
+    void end(const Loc&, int m) override;
+    void stock(const Loc&, const std::vector<std::array<double, 2>>&) override;
+    void profile(const Loc&, const ProfileElem&) override;
+    void exact_stop(const Loc&) override;
+
+    // The run is over (its end, an error, a crash): what is held is planned
+    // and handed on.
+    void finish();
+    // The seconds planned so far (the cycle time once finished).
+    const double& clock() const { return report_.seconds; }
+    const Report& report() const { return report_; }
+
+  private:
+    struct Queue;
+    void planned(const Segment&) override;
+    // The motion stops at rest; `settle`: an exact stop the program or the
+    // machine asks for, which waits the profile's in-position time.
+    void halt(bool settle);
+    void wait(double seconds);
+    using Dir = std::array<double, kAxes>;
+    double junction_sq(const Dir& last, const Dir& in, double eg) const;
+    // How much the axes bind a path: each its travel over its own limit, the
+    // largest (0: none binds).
+    struct Along {
+        double v = 0, a = 0, j = 0;
+    };
+    Along along(const Dir& per, const Dir& inv_speed) const;
+    // A move's segment, and its direction (at its start and end for an arc).
+    void limits(const MoveEvent& e, const Along& lim, Segment& s) const;
+    void line(const MoveEvent& e, Segment& s, Dir& dir) const;
+    void arc(const MoveEvent& e, Segment& s, Dir& in, Dir& out) const;
+    // An event that is no move: counted against the look-ahead's limit; true
+    // when there is a next sink to hand it to.
+    bool other();
+    template <class Ev>
+    void pass(Ev&& ev);  // to the next sink: now, or after the moves held
+
+    const MachineProfile& m_;
+    MachineSink* next_;
+    Planner planner_;
+    std::unique_ptr<Queue> queue_;
+    Report report_;
+    // The profile's axes, and per axis the inverses of its rapid and feed
+    // (mm/s or degrees/s), its acceleration and jerk (0: no limit).
+    std::array<size_t, kAxes> axes_{};
+    size_t naxes_ = 0;
+    bool jerk_ = false;  // an axis has a jerk
+    std::array<double, kAxes> inv_rapid_{}, inv_feed_{}, inv_accel_{}, inv_jerk_{};
+    // The directions at the end of the last move (dir_[last_]) and of the
+    // one being added; an arc's at its start.
+    std::array<Dir, 2> dir_{};
+    int last_ = 0;
+    Dir entry_{};
+    bool have_last_ = false;  // a move held or just planned
+    bool moved_ = false;      // a move since the last stop
+    long others_ = 0;         // events but moves since the last move
+    int tool_ = 0;
+    int sp_dir_ = 5;
+    double sp_rpm_ = 0;
+};
+
+}  // namespace pupitre::plan

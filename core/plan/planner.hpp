@@ -1,0 +1,156 @@
+// The look-ahead planner (issue 35): a bounded ring of moves whose speeds at
+// the junctions are raised as far as the moves after them allow, as grbl's
+// planner.c and LinuxCNC's tp.c do. Memory is constant: the oldest move is
+// planned for good when the ring is full, or when the motion stops.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+
+#include "core/plan/profile.hpp"
+
+namespace pupitre::plan {
+
+// One move as the planner sees it: a length along a path, and the limits on
+// it. Speeds in mm/s (degrees/s for a move of rotary axes alone).
+struct Segment {
+    double length = 0;
+    double vmax = 0;          // the cruise limit: the feed, the axes, an arc's centripetal limit
+    Limits limits;            // along the path
+    double entry_max_sq = 0;  // the square of the junction's limit with the move before
+    double min_time = 0;      // E32000: the block lasts at least this long
+    // 1 / vmax and 1 / limits.accel (0: none), which the caller may give when
+    // it has them without a division; else the planner finds them.
+    double inv_vmax = 0, inv_accel = 0;
+    // The caller's, carried through: the tool, and whether the move cuts.
+    int tool = 0;
+    bool cut = false;
+    // What the planner made of it.
+    double entry = 0, exit = 0;
+    Timing timing;
+    // The planner's own, in squared speeds as grbl keeps them (the passes
+    // then need no square root): the cruise limit, what accelerating over the
+    // length adds, the entry fixed once the move before is planned, and `back`,
+    // the highest entry from which the moves after it, as far as they are
+    // known, can still stop.
+    double vmax_sq = 0, gain_sq = 0, entry_sq = 0, back_sq = 0;
+};
+
+class Planner {
+  public:
+    // LinuxCNC looks as far ahead (issue 35: "up to 50 segments").
+    static constexpr size_t kDepth = 50;
+
+    // Hears each move once planned, in order.
+    struct Receiver {
+        virtual ~Receiver() = default;
+        virtual void planned(const Segment&) = 0;
+    };
+    explicit Planner(Receiver& r) : out_(r) {}
+
+    // A move after the ones held: add() gives its slot, cleared, which the
+    // caller fills (length, vmax, limits, min_time, entry_max_sq: how fast
+    // the junction with the one before may be passed, tool, cut); push()
+    // plans with it. Filled in place, a move is never copied.
+    Segment& add();
+    void push();
+    void push(const Segment& s) {  // the same from a segment made apart (tests)
+        add() = s;
+        push();
+    }
+    // The motion stops at the end of the moves held: all are planned.
+    void stop();
+    size_t held() const { return count_; }
+    // Plans the oldest move held with what is known after it (the ring is full,
+    // or something other than moves waits behind it).
+    void commit_oldest();
+
+  private:
+    // The square of the speed reachable over `s` from one whose square is v_sq.
+    static double reach_sq(double v_sq, const Segment& s) {
+        if (s.limits.jerk <= 0) return v_sq + s.gain_sq;
+        const double r = reach(std::sqrt(v_sq), s.length, s.limits);
+        return r * r;
+    }
+    Segment& at(size_t i) {
+        const size_t j = head_ + i;
+        return ring_[j < kDepth ? j : j - kDepth];
+    }
+    Receiver& out_;
+    std::array<Segment, kDepth> ring_{};
+    size_t head_ = 0, count_ = 0;
+};
+
+// The planner's steps for every move are inline: a move is planned within
+// the sink's call that adds it (issue 35 item 7, the 15% the planner may add).
+inline Segment& Planner::add() {
+    if (count_ == kDepth) commit_oldest();
+    Segment& s = at(count_);
+    s = Segment{};
+    return s;
+}
+
+inline void Planner::push() {
+    Segment& s = at(count_);
+    if (s.inv_vmax <= 0) s.inv_vmax = 1 / s.vmax;
+    if (s.min_time > 0 && s.vmax * s.min_time > s.length) {
+        s.vmax = s.length / s.min_time;
+        s.inv_vmax = s.min_time / s.length;
+    }
+    if (s.inv_accel <= 0 && s.limits.accel > 0) s.inv_accel = 1 / s.limits.accel;
+    s.vmax_sq = s.vmax * s.vmax;
+    s.gain_sq = s.limits.accel > 0 ? 2 * s.limits.accel * s.length : HUGE_VAL;
+    // After a stop, the move starts from rest; else no faster than either
+    // move may go. The oldest's entry is fixed: from rest, or when the one
+    // before it is planned.
+    s.entry_max_sq =
+        count_ == 0 ? 0 : std::min({s.entry_max_sq, s.vmax_sq, at(count_ - 1).vmax_sq});
+    s.back_sq = std::min(s.entry_max_sq, reach_sq(0, s));
+    ++count_;
+    for (size_t i = count_ - 1; i-- > 1;) {  // the oldest's entry is fixed already
+        Segment& c = at(i);
+        const double b = std::min(c.entry_max_sq, reach_sq(at(i + 1).back_sq, c));
+        if (b <= c.back_sq) break;
+        c.back_sq = b;
+    }
+}
+
+inline void Planner::commit_oldest() {
+    if (count_ == 0) return;
+    Segment& s = at(0);
+    const double next = count_ > 1 ? at(1).back_sq : 0;
+    const double exit_sq = std::min(next, reach_sq(s.entry_sq, s));
+    s.exit = std::sqrt(exit_sq);
+    if (s.limits.accel > 0 && s.limits.jerk <= 0) {
+        // The trapezoid, from the squares the passes kept, without a division.
+        const double half = 0.5 * s.inv_accel;
+        const double up = (s.vmax_sq - s.entry_sq) * half, down = (s.vmax_sq - exit_sq) * half;
+        if (up + down <= s.length) {
+            s.timing = {
+                (2 * s.vmax - s.entry - s.exit) * s.inv_accel + (s.length - up - down) * s.inv_vmax,
+                s.vmax};
+        } else {  // a triangle: (vp² - v0²) / 2a + (vp² - v1²) / 2a = length
+            const double vp =
+                std::sqrt(std::max(s.limits.accel * s.length + (s.entry_sq + exit_sq) / 2,
+                                   std::max(s.entry_sq, exit_sq)));
+            s.timing = {(2 * vp - s.entry - s.exit) * s.inv_accel, vp};
+        }
+    } else {
+        s.timing = timing(s.length, s.entry, s.exit, s.vmax, s.limits);
+    }
+    // E32000: the block lasts at least its minimum (004:1265); its speed was
+    // already held to length / min_time.
+    s.timing.seconds = std::max(s.timing.seconds, s.min_time);
+    const double exit = s.exit;
+    out_.planned(s);
+    head_ = head_ + 1 < kDepth ? head_ + 1 : 0;
+    --count_;
+    if (count_) {
+        at(0).entry = exit;
+        at(0).entry_sq = exit_sq;
+    }
+}
+
+}  // namespace pupitre::plan
