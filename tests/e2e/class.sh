@@ -80,11 +80,29 @@ grade)
     # Submitted, not graded: the teacher's report says so, and counts nothing.
     "$bin" --db "$teacher_db" class report > "$work/report" || fail "report"
     grep -Eq "^exam-2005 +$alice +1 +- +- .*UNGRADED 1" "$work/report" || fail "report: $(cat "$work/report")"
-    # The teacher's side grades from what the server holds, and signs.
+    # What each console graded at :submit, its time line aside (the server's
+    # time is the grade's): the replay must give it again exactly.
+    graded() { sql "SELECT student, score, mistakes, crashes, found, regexp_replace(report, '^([^\n]*\n)[^\n]*\n', '\1') FROM attempts ORDER BY id"; }
+    graded > "$work/provisional"
+    # The record: the actions with the simulated clock, the values entered.
+    sql "SELECT record FROM attempts WHERE student = '$alice'" > "$work/record"
+    head -1 "$work/record" | grep -qx 'pupitre-record 1' || fail "record: $(cat "$work/record")"
+    grep -Eq '^[0-9]+\.[0-9]{6} key page pref$' "$work/record" || fail "record: $(cat "$work/record")"
+    grep -Eq '^[0-9]+\.[0-9]{6} line DEC1\.Z=257\.267$' "$work/record" || fail "record: $(cat "$work/record")"
+    grep -Eq '^[0-9]+\.[0-9]{6} line :submit$' "$work/record" || fail "record: $(cat "$work/record")"
+    # bob writes the DEC1 he forgot into his attempt's machine by hand: the
+    # grade is the replay's, his rows count for nothing.
+    bm=$(sql "SELECT machine FROM attempts WHERE student = '$bob'")
+    as "$bob" -c "INSERT INTO origins VALUES ('$bm', 'DEC1', 'Z', 257267) ON CONFLICT (machine, kind, axis) DO UPDATE SET value = 257267" ||
+        fail "bob could not write his own machine"
+    # The teacher's side grades by replaying each record, and signs.
     "$bin" --db "$teacher_db" class grade > "$work/grade" || fail "grade: $(cat "$work/grade")"
     grep -q "$alice, exam-2005: 100%" "$work/grade" || fail "grade: $(cat "$work/grade")"
     grep -Eq "$bob, exam-2005: [0-9]+% \(.*dec1" "$work/grade" || fail "grade: $(cat "$work/grade")"
     grep -q '2 attempts graded' "$work/grade" || fail "grade: $(cat "$work/grade")"
+    grep -q 'the console said' "$work/grade" && fail "the replay is not the console's grade: $(cat "$work/grade")"
+    graded > "$work/replayed"
+    diff "$work/provisional" "$work/replayed" >&2 || fail "the replay's grades differ from the consoles'"
     "$bin" --db "$teacher_db" class grade | grep -q '0 attempts graded' || fail "graded twice"
     "$bin" --db "$teacher_db" class report > "$work/report" || fail "report"
     grep -Eq "^exam-2005 +$alice +1 +100 +100 " "$work/report" || fail "report: $(cat "$work/report")"
