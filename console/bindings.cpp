@@ -435,6 +435,13 @@ bool Session::run_binding(const Key& k, Effect& e) {
     return false;
 }
 
+const Binding* Session::binding_for(const Key& k, pages::PageId page) const {
+    for (const Binding* b : bindings_.find(k, pages::page_word(page), mode_word(sim_->mode()),
+                                           m_.lathe ? "lathe" : "mill"))
+        if (find_action(b->action)) return b;
+    return nullptr;
+}
+
 // A key on the "Terminal too small" screen, where the operator sees nothing
 // of the page: only what quits, and the input line's keys to type :quit
 // (not the page's bindings of those keys: Enter on DIR would load blind).

@@ -149,15 +149,15 @@ int class_command(const ExerciseArgs& a) {
     const std::string verb = a.words.empty() ? "" : a.words[0];
     if (verb == "report") return class_report(a);
     std::unique_ptr<store::Store> st;
-    const bool known =
-        verb == "init" || verb == "add-student" || verb == "students" || verb == "grade";
+    const bool known = verb == "init" || verb == "add-student" || verb == "students" ||
+                       verb == "grade" || verb == "replay";
     if (!known) {
-        std::fputs(tr("pupitre: class report|init|add-student|students|grade (pupitre class "
-                      "--help)\n"),
+        std::fputs(tr("pupitre: class report|init|add-student|students|grade|replay (pupitre "
+                      "class --help)\n"),
                    stderr);
         return kUsage;
     }
-    if (verb != "add-student" && a.words.size() > 1) {
+    if (verb != "add-student" && verb != "replay" && a.words.size() > 1) {
         std::fprintf(stderr, tr("pupitre: class %s takes no NAME\n"), verb.c_str());
         return kUsage;
     }
@@ -165,6 +165,7 @@ int class_command(const ExerciseArgs& a) {
     if (verb == "init") return class_init(a, *st);
     if (verb == "add-student") return class_add(a, *st);
     if (verb == "students") return class_students(a, *st);
+    if (verb == "replay") return class_replay(a, *st);
     return class_grade(*st);
 }
 

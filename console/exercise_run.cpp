@@ -63,14 +63,14 @@ Answer<std::unique_ptr<ExerciseRun>> ExerciseRun::open(Bench& b, const training:
 }
 
 Answer<std::unique_ptr<ExerciseRun>> ExerciseRun::open_replay(Bench& b, const training::Exercise& e,
-                                                              uint64_t seed, double seconds,
-                                                              int crashes) {
+                                                              uint64_t seed,
+                                                              const store::Attempt& a) {
     if (!b.store()) return {nullptr, tr("an exercise needs the store")};
-    auto x = open_local(b, e, "replay", seed);
+    auto x = open_local(b, e, a.student, seed);
     if (x.value) {
         x.value->replay_ = true;
-        x.value->replay_seconds_ = seconds;
-        x.value->replay_crashes_ = crashes;
+        x.value->replay_seconds_ = a.seconds;
+        x.value->replay_crashes_ = a.crashes;
     }
     return x;
 }
@@ -354,9 +354,10 @@ void ExerciseRun::view(pages::View& v) const {
     v.exercise.emplace_back(K::title,
                             strf(tr("%s: %s"), ex_.name.c_str(), ex_.title_here().c_str()));
     const double minutes = double(wall_ms() - attempt_.started_ms) / 60000;
-    std::string clock =
-        strf(tr("Student %s, %.0f min since the start"), student_.c_str(), std::floor(minutes));
-    if (ex_.minutes > 0) clock += strf(tr(" (of %g)"), ex_.minutes);
+    std::string clock = replay_ ? strf(tr("Student %s, the attempt replayed"), student_.c_str())
+                                : strf(tr("Student %s, %.0f min since the start"), student_.c_str(),
+                                       std::floor(minutes));
+    if (ex_.minutes > 0 && !replay_) clock += strf(tr(" (of %g)"), ex_.minutes);
     if (attempt_.crashes > 0) clock += strf(tr(", crashes %d"), attempt_.crashes);
     v.exercise.emplace_back(K::note, clock);
     for (const std::string& t : ex_.task_here()) {

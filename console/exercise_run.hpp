@@ -28,12 +28,12 @@ class ExerciseRun {
     static Answer<std::unique_ptr<ExerciseRun>> open(Bench& b, const training::Exercise& e,
                                                      const std::string& student,
                                                      const std::string& key);
-    // The replay of an attempt (replay.hpp): the truth drawn from `seed`, on
-    // the replay's own store; :submit grades with `seconds` (the server's
-    // time), at least `crashes` (the server's count), and keeps nothing.
+    // The replay of the attempt `a` (replay.hpp): the truth drawn from
+    // `seed`, on the replay's own store; :submit grades with the attempt's
+    // seconds (the server's time) and at least its crashes (the server's
+    // count), and keeps nothing.
     static Answer<std::unique_ptr<ExerciseRun>> open_replay(Bench& b, const training::Exercise& e,
-                                                            uint64_t seed, double seconds,
-                                                            int crashes);
+                                                            uint64_t seed, const store::Attempt& a);
     explicit ExerciseRun(Bench& b) : b_(b) {}
     const std::string& machine_key() const { return attempt_.machine; }
     // The exercise's program becomes the current text of its number; the

@@ -82,7 +82,7 @@ std::string Replay::begin_session() {
     auto st = store::Store::open(dir_ + "/replay.db", o);
     if (st.error) return st.error.message;
     s_ = std::make_unique<Session>(m_, std::move(st.value), *input_);
-    if (std::string why = s_->start_replay(e_, seed_, a_.seconds, a_.crashes); !why.empty()) {
+    if (std::string why = s_->start_replay(e_, seed_, a_); !why.empty()) {
         s_.reset();
         return why;
     }
@@ -117,9 +117,9 @@ void Replay::follow_mistakes() {
         auto h = std::find_if(held_.begin(), held_.end(),
                               [&](const Named& n) { return n.value == it.name; });
         if (h == held_.end())
-            held_.push_back({it.name, id, done_});
+            held_.push_back({it.name, id, "", done_});
         else if (h->mistake != id)
-            *h = {it.name, id, done_};
+            *h = {it.name, id, "", done_};
     }
 }
 
@@ -143,7 +143,7 @@ void Replay::run_to_end() {
         size_t line = done_;
         for (const Named& h : held_)
             if (h.value == it.name && h.mistake == id) line = h.line;
-        named_.push_back({it.name, id, line});
+        named_.push_back({it.name, id, training::mistake_title(it.mistake), line});
     }
 }
 

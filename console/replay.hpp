@@ -57,6 +57,7 @@ class Replay {
     struct Named {
         std::string value;    // PREF.Z
         std::string mistake;  // dec1
+        std::string title;    // DEC1 forgotten
         size_t line = 0;      // lines applied when it began
     };
     const std::vector<Named>& named() const { return named_; }

@@ -548,9 +548,9 @@ std::string Session::start_exercise(const training::Exercise& e, const std::stri
     return {};
 }
 
-std::string Session::start_replay(const training::Exercise& e, uint64_t seed, double seconds,
-                                  int crashes) {
-    auto [x, why] = ExerciseRun::open_replay(*this, e, seed, seconds, crashes);
+std::string Session::start_replay(const training::Exercise& e, uint64_t seed,
+                                  const store::Attempt& a) {
+    auto [x, why] = ExerciseRun::open_replay(*this, e, seed, a);
     if (!why.empty()) return why;
     store_key_ = x->machine_key();
     if (std::string w = x->take_program(); !w.empty()) return w;

@@ -26,6 +26,9 @@
 namespace pupitre::training {
 struct Exercise;
 }
+namespace pupitre::store {
+struct Attempt;
+}
 
 namespace pupitre::console {
 
@@ -55,11 +58,10 @@ class Session final : public Bench {
     // and origins live under its own name in the store. "" or what went wrong.
     std::string start_exercise(const training::Exercise& e, const std::string& student,
                                const std::string& key);
-    // The teacher's replay of an attempt (replay.hpp): the exercise on the
-    // truth drawn from `seed`, graded with the server's `seconds` and at
-    // least `crashes`. "" or what went wrong.
-    std::string start_replay(const training::Exercise& e, uint64_t seed, double seconds,
-                             int crashes);
+    // The teacher's replay of the attempt `a` (replay.hpp): the exercise on
+    // the truth drawn from `seed`, graded with the attempt's time and at
+    // least its crashes. "" or what went wrong.
+    std::string start_replay(const training::Exercise& e, uint64_t seed, const store::Attempt& a);
     // The user's bindings over the shipped ones: "" or "NAME:LINE: problem".
     std::string add_bindings(std::string_view text, std::string_view origin);
 
@@ -121,6 +123,9 @@ class Session final : public Bench {
     std::string mode_news(Mode m) const;
     std::string mode_hint(Mode m) const;
     std::string mode_setting(Mode m) const;  // the INC step, the JOG feed
+    // The binding a key runs when `page` is shown, null when none: the
+    // replay's viewer looks at other pages than the student's this way.
+    const Binding* binding_for(const Key& k, pages::PageId page) const;
     // A GRAPH key (graph.hpp) in the window the screen leaves the page.
     Effect graph_key(std::string_view what, std::string_view arg);
 

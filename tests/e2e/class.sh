@@ -152,6 +152,49 @@ hidden)
     as "$alice" -c "SELECT seed FROM pupitre_open_attempt('wear', '$alice/lathe#wear#2')" >/dev/null
     [ "$(sql "SELECT count(DISTINCT seed) FROM attempts WHERE exercise = 'wear'")" = 2 ] || fail "the same seed twice"
     ;;
+replay)
+    # The teacher replays bob's attempt in a read-only console, action by action.
+    exam "$bob" nodec1
+    id=$(sql "SELECT id FROM attempts WHERE student = '$bob'")
+    W=100 H=30 start --db "\"$teacher_db\"" class replay "$id"
+    wait_for "REPLAY 0/7 .*attempt $id: $bob, exam-2005: read-only"
+    wait_for 'Student .*, the attempt replayed'
+    keys Right
+    wait_for 'REPLAY 1/7 .*key page pref'
+    wait_for '^─ PREF'
+    keys Right
+    wait_for 'REPLAY 2/7 .*entered: PREF.X=-135.477'
+    screen | grep -Eq '^  X +-135\.477 ' || fail "PREF X is not on the PREF page"
+    # The first action that produced the mistake named: DEC1 left at 0, from the start.
+    keys m
+    wait_for 'REPLAY 0/7 .*DEC1.Z: DEC1 forgotten, from the start'
+    # To the end: the replay's grade, the mistake named.
+    keys End
+    wait_for 'REPLAY 7/7 '
+    wait_for 'Score 83%'
+    wait_for 'DEC1 forgotten: DEC1 Z left at 0'
+    # Back one: the CORR page as the student had it, Z just entered.
+    keys Left
+    wait_for 'REPLAY 6/7 .*entered: Z=38.237'
+    wait_for '^─ CORR'
+    # Another page to look at, then the student's again; nothing of the machine moves.
+    keys M-g
+    wait_for '^─ GRAPH'
+    keys Tab
+    wait_for '^─ CORR'
+    keys F12
+    wait_for 'F12: the replay changes nothing'
+    keys F1
+    wait_for 'back one action'
+    wait_for 'the first action that produced a mistake the grade names'
+    keys q
+    wait_for '^EXIT=0'
+    # Not a terminal: refused; an attempt that is not there: named.
+    "$bin" --db "$teacher_db" class replay "$id" </dev/null >/dev/null 2>"$work/err" && fail "replay without a terminal"
+    grep -q 'the replay needs a terminal' "$work/err" || fail "message: $(cat "$work/err")"
+    "$bin" --db "$teacher_db" class replay 999999 2>"$work/err" && fail "replay of no attempt"
+    grep -q 'no attempt 999999' "$work/err" || fail "message: $(cat "$work/err")"
+    ;;
 student)
     # --student is refused on a server: a person is their login.
     "$bin" --db "$(conn_of "$alice")" exercise exam-2005 --student "$bob" 2>"$work/err" </dev/null && fail "--student taken"
