@@ -61,6 +61,7 @@ struct Viewer {
     std::optional<pages::PageId> page = {};  // the teacher's, else the student's
     size_t mistake = 0;                      // the next of r.named() for `m`
     std::string news = {};                   // what the last key did, else the action
+    std::string store = {};                  // the attempt's store (not the replay's own)
     console::Session& s() { return r.session(); }
 };
 
@@ -184,6 +185,7 @@ pages::View frame(Viewer& v) {
     }
     help_lines(pv);
     pv.replay = true;
+    pv.store_path = v.store;
     for (pages::SoftKey& k : pv.softkeys) {
         // TRANSLATORS: soft-key labels of the replay: at most 6 columns (5 on F10).
         if (k.key == "F8") k.label = tr("BACK"), k.current = false;
@@ -318,6 +320,7 @@ int class_replay(const ExerciseArgs& args, store::Store& st) {
         return kNoInput;
     }
     Viewer v{r};
+    v.store = st.path();
     v.news = strf(tr("attempt %lld: %s, %s: read-only; Right replays the first action, F1 the "
                      "keys"),
                   (long long)a.id, a.student.c_str(), a.exercise.c_str());
