@@ -25,6 +25,12 @@ bool input_empty(const Session& s) {
 bool on_dir(const Session& s, std::string_view) {
     return s.page() == pages::PageId::dir && input_empty(s);
 }
+// JOG: the axis is about to move for a tenth of a second or more; a
+// press (an auto-repeat) does nothing then, and is not recorded.
+bool jog_waits(const Session& s) {
+    return s.sim().mode() == Mode::jog && s.sim().queued_time() > 0.1;
+}
+
 bool jogging(const Session& s, std::string_view) {
     Mode m = s.sim().mode();
     return (m == Mode::jog || m == Mode::inc) && input_empty(s) && s.page() != pages::PageId::edit;
@@ -142,7 +148,7 @@ Effect jog(Session& s, std::string_view arg) {
     Sim& sim = s.sim();
     double feed = sim.jog_feed > 0 ? sim.jog_feed : s.machine().jog_feed;
     double dist = sim.mode() == Mode::inc ? sim.increment : feed / 60.0 * 0.05;
-    if (sim.mode() == Mode::jog && sim.queued_time() > 0.1) return Effect::none;
+    if (jog_waits(s)) return Effect::none;
     // Lathe X is shown as a diameter: a step of the display is what the operator means.
     if (std::string why = sim.jog(axis, sign * dist); !why.empty())
         s.say(strf(tr("JOG: %s"), why.c_str()), true);
@@ -455,10 +461,18 @@ bool Session::run_binding(const Key& k, Effect& e) {
     for (const Binding* b : bindings_.find(k, pg, md, m_.lathe ? "lathe" : "mill")) {
         const Action* a = find_action(b->action);
         if (!a || !a->can_run(*this, b->arg)) continue;
+        if (a->name != "jog" || !jog_waits(*this)) note_key(a->name, b->arg);
         e = a->run(*this, b->arg);
         return true;
     }
     return false;
+}
+
+const Binding* Session::binding_for(const Key& k, pages::PageId page) const {
+    for (const Binding* b : bindings_.find(k, pages::page_word(page), mode_word(sim_->mode()),
+                                           m_.lathe ? "lathe" : "mill"))
+        if (find_action(b->action)) return b;
+    return nullptr;
 }
 
 // A key on the "Terminal too small" screen, where the operator sees nothing

@@ -114,10 +114,12 @@ struct ExerciseArgs {
 };
 int exercise(const ExerciseArgs& a);
 int class_report(const ExerciseArgs& a);
-// class report|init|add-student|students|grade (cli_class.cpp).
+// class report|init|add-student|students|grade|replay (cli_class.cpp).
 int class_command(const ExerciseArgs& a);
 // class watch: the teacher's live view (watch.cpp).
 int class_watch(const ExerciseArgs& a, store::Store& st);
+// class replay ATTEMPT: the console, read-only, on its replay (replay_console.cpp).
+int class_replay(const ExerciseArgs& a, store::Store& st);
 
 int store_import(const StoreArgs& a);
 int store_export(const StoreArgs& a);

@@ -1,10 +1,9 @@
 // pupitre class (issue 34, pupitre-exercise(5), THE CLASS ON A SERVER): a
 // class set up on a PostgreSQL server, its students' logins, and the grading
-// on the teacher's side: each submitted attempt graded again from what the
-// server holds (the machine's values the student entered, the part they cut,
-// their record, the crashes the server counted, the server's times) against
-// the truth drawn from the seed the server drew, and signed with the key
-// only a teacher's login reads. The report is in cli_exercise.cpp.
+// on the teacher's side: each submitted attempt graded again by replaying its
+// record (replay.hpp) against the truth drawn from the seed the server drew,
+// with the server's times and crashes, and signed with the key only a
+// teacher's login reads. The report is in cli_exercise.cpp.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <cstdio>
 #include <fstream>
@@ -12,19 +11,15 @@
 
 #include "console/cli.hpp"
 #include "console/exercise.hpp"
+#include "console/exercise_run.hpp"
+#include "console/replay.hpp"
 #include "core/i18n.hpp"
-#include "core/interp/interp.hpp"
-#include "core/interp/machine.hpp"
 #include "core/training/grade.hpp"
-#include "core/workshop/workshop.hpp"
-#include "store/link.hpp"
 #include "store/store.hpp"
 
 namespace pupitre::cli {
 
 namespace {
-
-struct Quiet final : MachineSink {};
 
 // init [--class NAME]: the class set up, the shipped exercises added.
 int class_init(const ExerciseArgs& a, store::Store& st) {
@@ -95,64 +90,40 @@ int class_students(const ExerciseArgs& a, store::Store& st) {
     return kOk;
 }
 
-// The values the student entered, as the server keeps their attempt's machine.
-training::Values found_values(store::Store& st, const MachineProfile& m,
-                              const training::Exercise& e, const std::string& machine,
-                              std::string& why) {
-    ProgramMemory mem;
-    Quiet quiet;
-    Interpreter in(m, mem, quiet);
-    training::Values found;
-    if (auto r = store::seed_machine(st, in, machine); r.error) {
-        why = r.error.message;
-        return found;
-    }
-    for (const training::Target& t : e.find) {
-        double v = 0;
-        in.get(t.name, v);
-        found[t.name] = v;
-    }
-    return found;
-}
-
-// One attempt graded again and signed; "" or why it could not be.
+// One attempt graded again by replaying its record against its truth, and
+// signed; "" or why it could not be. The values are those the replay's
+// machine holds at its :submit and the part the one its tools cut: what the
+// student's rows on the server say counts for nothing.
 std::string grade_one(store::Store& st, store::Attempt a, const std::string& key) {
     auto text = st.exercise_text(a.exercise, a.exercise_sha);
     if (text.error) return text.error.message;
     if (!text.value) return tr("the text it was made on is not on the server");
     training::Exercise e;
     if (std::string why = training::parse_exercise(*text.value, e); !why.empty()) return why;
-    MachineProfile m;
-    if (!builtin_machine(e.machine, m)) return strf(tr("no machine %s"), e.machine.c_str());
-    const uint64_t seed = std::stoull(a.seed, nullptr, 16);
-    workshop::Setup truth;
-    if (std::string why = training::draw_setup(e, seed, truth); !why.empty()) return why;
-    std::string why;
-    training::Values found = found_values(st, m, e, a.machine, why);
-    if (!why.empty()) return why;
-    training::Context ctx = console::record_context(a.record);
-    ctx.diameters.insert(ctx.diameters.end(), e.diameters.begin(), e.diameters.end());
-    ctx.shims.insert(ctx.shims.end(), e.shims.begin(), e.shims.end());
-    workshop::Workshop shop(m, truth, nullptr);
-    auto w = st.workshop(a.machine);
-    if (w.error) return w.error.message;
-    if (w.value) shop.load_part(console::unscramble(w.value->part, seed));
-    training::Grade g = training::grade(e, truth, found, ctx, &shop, a.crashes, a.seconds);
+    auto replay = console::Replay::open(e, a);
+    if (!replay.why.empty()) return replay.why;
+    console::Replay& r = *replay.value;
+    if (!r.problem().empty())
+        std::fprintf(stderr, tr("pupitre: attempt %lld: its record: %s (replayed up to there)\n"),
+                     (long long)a.id, r.problem().c_str());
+    r.run_to_end();
+    const store::Attempt& g = r.run().attempt();
+    const int provisional = a.score;
     a.score = g.score;
     a.scrapped = g.scrapped;
-    a.mistakes.clear();
-    for (training::Mistake k : g.mistakes())
-        a.mistakes += (a.mistakes.empty() ? "" : " ") + std::string(training::mistake_id(k));
-    a.found.clear();
-    for (const training::Target& t : e.find)
-        a.found += strf("%s=%.4f\n", t.name.c_str(), found[t.name]);
-    a.report.clear();
-    for (const std::string& l : training::report_lines(e, g)) a.report += l + "\n";
+    a.crashes = g.crashes;
+    a.mistakes = g.mistakes;
+    a.found = g.found;
+    a.report = g.report;
     a.signature = console::sign_attempt(a, key);
     if (store::StoreError err = st.grade_attempt(a)) return err.message;
     const std::string named = a.mistakes.empty() ? "" : " (" + a.mistakes + ")";
     std::printf(tr("attempt %lld: %s, %s: %d%%%s\n"), (long long)a.id, a.student.c_str(),
                 a.exercise.c_str(), a.score, named.c_str());
+    // The console's own grade and the replay's differ: the record does not
+    // say all the student did (or was written by hand).
+    if (provisional != a.score)
+        std::printf(tr("  the console said %d%% at :submit\n"), provisional);
     return {};
 }
 
@@ -191,14 +162,14 @@ int class_command(const ExerciseArgs& a) {
     if (verb == "report") return class_report(a);
     std::unique_ptr<store::Store> st;
     const bool known = verb == "init" || verb == "add-student" || verb == "students" ||
-                       verb == "grade" || verb == "watch";
+                       verb == "grade" || verb == "watch" || verb == "replay";
     if (!known) {
-        std::fputs(tr("pupitre: class report|init|add-student|students|grade|watch (pupitre "
+        std::fputs(tr("pupitre: class report|init|add-student|students|grade|watch|replay (pupitre "
                       "class --help)\n"),
                    stderr);
         return kUsage;
     }
-    if (verb != "add-student" && a.words.size() > 1) {
+    if (verb != "add-student" && verb != "replay" && a.words.size() > 1) {
         std::fprintf(stderr, tr("pupitre: class %s takes no NAME\n"), verb.c_str());
         return kUsage;
     }
@@ -207,6 +178,7 @@ int class_command(const ExerciseArgs& a) {
     if (verb == "add-student") return class_add(a, *st);
     if (verb == "students") return class_students(a, *st);
     if (verb == "watch") return class_watch(a, *st);
+    if (verb == "replay") return class_replay(a, *st);
     return class_grade(*st);
 }
 

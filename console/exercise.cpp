@@ -15,6 +15,7 @@
 #include <sstream>
 #include <string_view>
 
+#include "console/record.hpp"
 #include "console/refusal.hpp"
 #include "core/digest.hpp"
 #include "core/i18n.hpp"
@@ -223,21 +224,13 @@ std::string unscramble(const std::string& text, uint64_t seed) {
     return keystream_xor(raw, seed);
 }
 
-std::string record_text(const training::Context& c) {
-    std::string out;
-    for (double d : c.diameters) out += strf("dia %.4f\n", d);
-    for (double s : c.shims) out += strf("shim %.4f\n", s);
-    return out;
-}
-
 training::Context record_context(const std::string& text) {
     training::Context c;
-    std::istringstream in(text);
-    std::string word;
-    double v = 0;
-    while (in >> word >> v) {
-        if (word == "dia") c.diameters.push_back(v);
-        if (word == "shim") c.shims.push_back(v);
+    std::vector<record::Action> actions;
+    record::parse(text, actions);  // a line it cannot read ends it: what came before counts
+    for (const record::Action& a : actions) {
+        if (a.verb == record::Verb::dia) c.diameters.push_back(a.value);
+        if (a.verb == record::Verb::shim) c.shims.push_back(a.value);
     }
     return c;
 }

@@ -59,11 +59,8 @@ std::string student_name(const std::string& asked);
 std::string scramble(const std::string& text, uint64_t seed);
 std::string unscramble(const std::string& text, uint64_t seed);
 
-// An attempt's record (store::Attempt::record): what the operator did that
-// the grade reads besides the machine's values and the part, the diameters
-// read and the shims placed, a line each ("dia 40.012", "shim 10"); and the
-// context read back from it, for the teacher's side to grade again.
-std::string record_text(const training::Context& c);
+// The readings and shims of an attempt's record (record.hpp): its "dia"
+// and "shim" notes, in either version of the record.
 training::Context record_context(const std::string& text);
 
 // The signature of a graded attempt: HMAC-SHA-256 of its fields with the key

@@ -4,6 +4,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "console/exercise_run.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -52,12 +53,38 @@ Answer<std::unique_ptr<ExerciseRun>> ExerciseRun::open(Bench& b, const training:
                      e.name.c_str(), e.name.c_str())};
     auto on_class = st->class_server();
     if (on_class.error) return {nullptr, on_class.error.message};
-    if (on_class.value) return open_on_class(b, e);
+    auto x = on_class.value ? open_on_class(b, e)
+                            : open_local(b, e, student, training::seed_of(e, student, key));
+    if (x.value) {
+        x.value->key_ = key;
+        x.value->rec_.begin(x.value->attempt_.record);
+    }
+    return x;
+}
+
+Answer<std::unique_ptr<ExerciseRun>> ExerciseRun::open_replay(Bench& b, const training::Exercise& e,
+                                                              uint64_t seed,
+                                                              const store::Attempt& a) {
+    if (!b.store()) return {nullptr, tr("an exercise needs the store")};
+    auto x = open_local(b, e, a.student, seed);
+    if (x.value) {
+        x.value->replay_ = true;
+        x.value->replay_seconds_ = a.seconds;
+        x.value->replay_crashes_ = a.crashes;
+    }
+    return x;
+}
+
+// On a store file: the attempt of `student` open at this text of the
+// exercise, else a new one with the exercise's values at the start.
+Answer<std::unique_ptr<ExerciseRun>> ExerciseRun::open_local(Bench& b, const training::Exercise& e,
+                                                             const std::string& student,
+                                                             uint64_t seed) {
+    store::Store* st = b.store();
     auto x = std::make_unique<ExerciseRun>(b);
     x->ex_ = e;
     x->student_ = student;
-    x->key_ = key;
-    x->seed_ = training::seed_of(e, student, key);
+    x->seed_ = seed;
     if (std::string why = training::draw_setup(e, x->seed_, x->truth_); !why.empty())
         return {nullptr, strf(tr("exercise %s: its setup: %s"), e.name.c_str(), why.c_str())};
     x->truth_.name = e.name;
@@ -73,7 +100,7 @@ Answer<std::unique_ptr<ExerciseRun>> ExerciseRun::open(Bench& b, const training:
         a.exercise = e.name;
         a.exercise_sha = sha256_hex(e.source);
         a.student = student;
-        a.machine = strf("%s#%s#%s#%lld", m.name.c_str(), e.name.c_str(), student.c_str(),
+        a.machine = strf("%s#%s#%s#%lld", b.machine().name.c_str(), e.name.c_str(), student.c_str(),
                          (long long)wall_ms());
         if (store::StoreError err = st->start_attempt(a)) return {nullptr, err.message};
         auto values = start_values(e, x->truth_);
@@ -153,12 +180,28 @@ bool ExerciseRun::hidden(const char* what) {
     return true;
 }
 
+// Beside the action in the record: what the grade's mistakes read.
 void ExerciseRun::note_shim(double mm) {
     ctx_.shims.push_back(mm);
+    if (record::Recorder* r = recorder()) {
+        record::Action a;
+        a.clock = b_.sim().clock();
+        a.verb = record::Verb::shim;
+        a.value = mm;
+        r->add(a);
+    }
 }
 
 void ExerciseRun::note_reading(const std::string& word, double value) {
-    if (word == "dia" || word == "bore") ctx_.diameters.push_back(value);
+    if (word != "dia" && word != "bore") return;
+    ctx_.diameters.push_back(value);
+    if (record::Recorder* r = recorder()) {
+        record::Action a;
+        a.clock = b_.sim().clock();
+        a.verb = record::Verb::dia;
+        a.value = value;
+        r->add(a);
+    }
 }
 
 bool ExerciseRun::instrument_allowed(const std::string& word) {
@@ -183,32 +226,42 @@ void ExerciseRun::watch_crashes() {
     crashes_seen_ = n;
 }
 
-Effect ExerciseRun::submit() {
-    if (grade_) {
-        b_.show_page(pages::PageId::exercise);
-        b_.say(tr("submitted already: the report is on the EXERCISE page"), true);
-        return Effect::redraw;
-    }
-    if (b_.sim().in_cycle()) {
-        b_.say(tr("a program is in cycle"), true);
-        return Effect::redraw;
-    }
-    watch_crashes();
+// The values to find as the machine holds them ("NAME=VALUE" lines in `text`).
+training::Values ExerciseRun::found_values(std::string* text) const {
     training::Values found;
-    std::string found_text;
     for (const training::Target& t : ex_.find) {
         double v = 0;
         b_.sim().interp().get(t.name, v);
         found[t.name] = v;
-        found_text += strf("%s=%.4f\n", t.name.c_str(), v);
+        if (text) *text += strf("%s=%.4f\n", t.name.c_str(), v);
     }
+    return found;
+}
+
+training::Context ExerciseRun::context() const {
     training::Context ctx = ctx_;
     ctx.diameters.insert(ctx.diameters.end(), ex_.diameters.begin(), ex_.diameters.end());
     ctx.shims.insert(ctx.shims.end(), ex_.shims.begin(), ex_.shims.end());
+    return ctx;
+}
+
+training::Grade ExerciseRun::grade_values() const {
+    return training::grade(ex_, truth_, found_values(nullptr), context(), nullptr, 0, 0);
+}
+
+// The grade of what the machine and the workshop hold now, in the attempt's
+// fields; the truth is out.
+void ExerciseRun::grade_now() {
+    watch_crashes();
+    std::string found_text;
+    const training::Values found = found_values(&found_text);
     store::Attempt& a = attempt_;
     a.submitted_ms = wall_ms();
-    const double seconds = double(a.submitted_ms - a.started_ms) / 1000;
-    grade_ = training::grade(ex_, truth_, found, ctx, b_.sim().shop(), a.crashes, seconds);
+    const double seconds = replay_ ? replay_seconds_ : double(a.submitted_ms - a.started_ms) / 1000;
+    // The server counted the crashes as they came: a record that lost some
+    // (a console killed) does not lower them.
+    if (replay_) a.crashes = std::max(a.crashes, replay_crashes_);
+    grade_ = training::grade(ex_, truth_, found, context(), b_.sim().shop(), a.crashes, seconds);
     if (workshop::Workshop* w = b_.sim().shop()) w->hide_places(false);  // the truth is out
     report_ = training::report_lines(ex_, *grade_);
     a.seed = strf("%016llx", (unsigned long long)seed_);
@@ -221,9 +274,29 @@ Effect ExerciseRun::submit() {
     a.found = found_text;
     a.report.clear();
     for (const std::string& l : report_) a.report += l + "\n";
-    a.record = record_text(ctx_);
+    if (!replay_) a.record = rec_.text();
+}
+
+Effect ExerciseRun::submit() {
+    if (grade_) {
+        b_.show_page(pages::PageId::exercise);
+        b_.say(tr("submitted already: the report is on the EXERCISE page"), true);
+        return Effect::redraw;
+    }
+    if (b_.sim().in_cycle()) {
+        b_.say(tr("a program is in cycle"), true);
+        return Effect::redraw;
+    }
+    grade_now();
+    store::Attempt& a = attempt_;
+    b_.show_page(pages::PageId::exercise);
+    if (replay_) {
+        b_.say(strf(tr("submitted: %d%% (the replay's grade)"), a.score));
+        return Effect::redraw;
+    }
     if (on_class_) {
-        // The teacher's side grades it again and signs: this is provisional.
+        // The teacher's side grades it again by replaying the record, and
+        // signs: this is provisional.
         if (store::StoreError e = b_.store()->submit_class_attempt(a); e.gone) {
             b_.keep_submission(a, true);
             b_.say(strf(tr("submitted: %d%%; the server does not answer: kept here until it does"),
@@ -249,8 +322,25 @@ Effect ExerciseRun::submit() {
         b_.say(strf(tr("the grade was not stored: %s"), e.message.c_str()), true);
     else
         b_.say(strf(tr("submitted: %d%%; the report is on the EXERCISE page"), a.score));
-    b_.show_page(pages::PageId::exercise);
     return Effect::redraw;
+}
+
+// The record so far, kept where the attempt is: a console stopped (or
+// killed) and started again takes it up, and the teacher's view sees it
+// grow. A server out of reach is tried again at the next call.
+void ExerciseRun::keep_record(bool now) {
+    if (replay_ || grade_ || !rec_.changed() || !b_.store()) return;
+    const int64_t t = wall_ms();
+    if (!now && t - record_kept_ms_ < 2000) return;
+    record_kept_ms_ = t;
+    if (store::StoreError e = b_.store()->keep_record(attempt_.id, rec_.text())) {
+        if (!e.gone && !record_refused_)
+            b_.say(strf(tr("the record was not stored (:submit sends it): %s"), e.message.c_str()),
+                   true);
+        record_refused_ = !e.gone;
+        return;
+    }
+    rec_.kept();
 }
 
 // The EXERCISE page: the task before :submit, the report after.
@@ -276,9 +366,10 @@ void ExerciseRun::view(pages::View& v) const {
     v.exercise.emplace_back(K::title,
                             strf(tr("%s: %s"), ex_.name.c_str(), ex_.title_here().c_str()));
     const double minutes = double(wall_ms() - attempt_.started_ms) / 60000;
-    std::string clock =
-        strf(tr("Student %s, %.0f min since the start"), student_.c_str(), std::floor(minutes));
-    if (ex_.minutes > 0) clock += strf(tr(" (of %g)"), ex_.minutes);
+    std::string clock = replay_ ? strf(tr("Student %s, the attempt replayed"), student_.c_str())
+                                : strf(tr("Student %s, %.0f min since the start"), student_.c_str(),
+                                       std::floor(minutes));
+    if (ex_.minutes > 0 && !replay_) clock += strf(tr(" (of %g)"), ex_.minutes);
     if (attempt_.crashes > 0) clock += strf(tr(", crashes %d"), attempt_.crashes);
     v.exercise.emplace_back(K::note, clock);
     for (const std::string& t : ex_.task_here()) {

@@ -1,9 +1,11 @@
 // The exercise run (console/exercise_run.cpp; issue 16, pupitre-exercise(5)):
 // an attempt at an exercise in progress at the console, or graded. It holds
 // the truth drawn from the seed, which it alone hands to the workshop, the
-// attempt as the store keeps it, what the student placed and read, :submit
-// and the report. The machine state lives under the attempt's own name in
-// the store; the part is stored scrambled.
+// attempt as the store keeps it, what the student placed and read, the
+// record of what they did (record.hpp), :submit and the report. The machine
+// state lives under the attempt's own name in the store; the part is stored
+// scrambled. The teacher's side runs one too, in a replay (replay.hpp): the
+// same truth, the record's actions fed to its Session, its :submit grading.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 #include <memory>
@@ -12,6 +14,7 @@
 #include <vector>
 
 #include "console/desk.hpp"
+#include "console/record.hpp"
 #include "console/refusal.hpp"
 #include "core/render/part_scene.hpp"
 #include "core/training/grade.hpp"
@@ -26,6 +29,12 @@ class ExerciseRun {
     static Answer<std::unique_ptr<ExerciseRun>> open(Bench& b, const training::Exercise& e,
                                                      const std::string& student,
                                                      const std::string& key);
+    // The replay of the attempt `a` (replay.hpp): the truth drawn from
+    // `seed`, on the replay's own store; :submit grades with the attempt's
+    // seconds (the server's time) and at least its crashes (the server's
+    // count), and keeps nothing.
+    static Answer<std::unique_ptr<ExerciseRun>> open_replay(Bench& b, const training::Exercise& e,
+                                                            uint64_t seed, const store::Attempt& a);
     explicit ExerciseRun(Bench& b) : b_(b) {}
     const std::string& machine_key() const { return attempt_.machine; }
     // The exercise's program becomes the current text of its number; the
@@ -54,12 +63,32 @@ class ExerciseRun {
     void watch_crashes();
     Effect submit();  // :submit
 
+    // The record: null once graded, and in a replay (which records nothing).
+    record::Recorder* recorder() { return grade_ || replay_ ? nullptr : &rec_; }
+    // The record so far to the store: `now`, else at most every 2 s.
+    void keep_record(bool now);
+
+    // The replay's side: the grade of what the machine holds now, without
+    // the part (the mistakes named at each action); the grade as :submit
+    // would give it, even in cycle (a record that ends without a :submit
+    // the replay took); the attempt as graded.
+    training::Grade grade_values() const;
+    void grade_now();
+    const std::optional<training::Grade>& grade() const { return grade_; }
+    const store::Attempt& attempt() const { return attempt_; }
+    const training::Exercise& definition() const { return ex_; }
+
     // The EXERCISE page: the task before :submit, the report after.
     void view(pages::View& v) const;
 
   private:
     static Answer<std::unique_ptr<ExerciseRun>> open_on_class(Bench& b,
                                                               const training::Exercise& e);
+    static Answer<std::unique_ptr<ExerciseRun>> open_local(Bench& b, const training::Exercise& e,
+                                                           const std::string& student,
+                                                           uint64_t seed);
+    training::Values found_values(std::string* text) const;
+    training::Context context() const;  // the task's and what the student did
     Bench& b_;
     training::Exercise ex_;
     std::string student_, key_;
@@ -68,8 +97,14 @@ class ExerciseRun {
     store::Attempt attempt_;
     training::Context ctx_;  // the shims placed, the diameters read
     size_t crashes_seen_ = 0;
-    bool on_class_ = false;     // on a class's server: the server opens, counts, the teacher signs
-    std::string program_note_;  // the store's program the exercise's replaced, said at start
+    bool on_class_ = false;  // on a class's server: the server opens, counts, the teacher signs
+    bool replay_ = false;    // the teacher's replay: nothing kept, the time given
+    double replay_seconds_ = 0;
+    int replay_crashes_ = 0;
+    record::Recorder rec_;
+    int64_t record_kept_ms_ = 0;
+    bool record_refused_ = false;  // said once
+    std::string program_note_;     // the store's program the exercise's replaced, said at start
     std::optional<training::Grade> grade_;
     std::vector<std::string> report_;  // after :submit
 };

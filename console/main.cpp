@@ -334,10 +334,11 @@ void add_training(CLI::App& app, CommandLine& c, std::vector<Command>& commands)
         tr("save: the machine whose workshop the exercise is made from (default lathe)"));
     ex->add_option("-o,--output", ea.output, tr("save: write to FILE"))->type_name("FILE");
     CLI::App* cl = app.add_subcommand(
-        "class", tr("the teacher's side: class report [EXERCISE], and on a server class init, "
-                    "add-student NAME…, students, grade, watch"));
+        "class", tr("the teacher's side: class report [EXERCISE], replay ATTEMPT, and on a "
+                    "server class init, add-student NAME…, students, grade, watch"));
     cl->add_option("words", ea.words,
-                   tr("report [EXERCISE] | init | add-student NAME… | students | grade | watch"))
+                   tr("report [EXERCISE] | init | add-student NAME… | students | grade | watch | "
+                      "replay ATTEMPT"))
         ->required();
     cl->add_option("--class", ea.group,
                    tr("init, add-student, students, watch: the class (default class)"))
@@ -359,6 +360,7 @@ void add_training(CLI::App& app, CommandLine& c, std::vector<Command>& commands)
     commands.push_back({cl, [](const CommandLine& k) {
                             cli::ExerciseArgs e = k.ea;
                             e.db = k.db;
+                            e.console = k.ca;  // class replay: --theme, --ascii
                             return cli::class_command(e);
                         }});
 }

@@ -43,7 +43,9 @@ Session::Session(const MachineProfile& m, std::unique_ptr<store::Store> store, L
     input_.on_message = [this](const std::string& s) { say(s); };
 }
 
-Session::~Session() = default;
+Session::~Session() {
+    if (exercise_) exercise_->keep_record(true);  // the last actions, the :quit
+}
 
 // The built-in setup of this machine's kind: its own for the Cazeneuve.
 const char* Session::machine_setup() const {
@@ -198,15 +200,19 @@ Effect Session::delete_under_cursor() {
 // ---- keys ----
 
 Effect Session::on_key(const Key& k) {
+    return keyed([&] { return dispatch_key(k); });
+}
+
+Effect Session::keyed(const std::function<Effect()>& f) {
     Effect e;
     if (editing_.held()) {
         // An earlier session's journal waits: a change to the text is
         // undone and refused (only then is the editor copied, a rare moment).
         const Editor before = editing_.editor();
-        e = dispatch_key(k);
+        e = f();
         editing_.refuse_changes_since(before);
     } else {
-        e = dispatch_key(k);
+        e = f();
     }
     editing_.sync_journal();  // a change to the program in EDIT is journaled at once
     return e;
@@ -253,6 +259,7 @@ bool Session::for_line_editor(const Key& k) {
 
 // Escape: the input line is emptied, MODIFY is left, a question is answered no.
 Effect Session::cancel_input() {
+    note_step({.verb = record::Verb::escape});
     bool had = !input_.text().empty() || editing_.modifying() || !pending_confirm_.empty();
     input_.clear();
     editing_.stop_modifying();
@@ -294,6 +301,7 @@ bool Session::answer_key(const Key& k) {
         return false;
     const char32_t c = k.ch | 0x20;  // lower case, for the ASCII letters asked
     if (c != U'y' && c != U'o' && c != U'n') return false;
+    note_step({.verb = record::Verb::answer, .a = c != U'n'});
     answer(c != U'n');
     swallow_enter_ = true;  // "y" then Enter, by habit: the Enter is not a second action
     return true;
@@ -302,6 +310,7 @@ bool Session::answer_key(const Key& k) {
 Effect Session::submit(const std::string& raw) {
     std::string_view line = trim(raw);
     if (line.empty()) return Effect::none;
+    note_line(line);
     input_.add_history(std::string(line));
     if (too_small() && !quits(line)) {
         say(tr("the terminal is too small: enlarge it, or :quit"), true);
@@ -539,6 +548,16 @@ std::string Session::start_exercise(const training::Exercise& e, const std::stri
     return {};
 }
 
+std::string Session::start_replay(const training::Exercise& e, uint64_t seed,
+                                  const store::Attempt& a) {
+    auto [x, why] = ExerciseRun::open_replay(*this, e, seed, a);
+    if (!why.empty()) return why;
+    store_key_ = x->machine_key();
+    if (std::string w = x->take_program(); !w.empty()) return w;
+    exercise_ = std::move(x);
+    return {};
+}
+
 bool Session::hidden(const char* what) {
     return exercise_ && exercise_->hidden(what);
 }
@@ -600,7 +619,10 @@ void Session::tick(double dt) {
             break;
     }
     check_run_end();
-    if (exercise_) exercise_->watch_crashes();
+    if (exercise_) {
+        exercise_->watch_crashes();
+        exercise_->keep_record(false);
+    }
     follow_store(dt);
 }
 

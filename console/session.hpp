@@ -20,12 +20,16 @@
 #include "console/outbox.hpp"
 #include "console/part_paper.hpp"
 #include "console/part_window.hpp"
+#include "console/record.hpp"
 #include "console/setting.hpp"
 #include "core/sim/sim.hpp"
 #include "pages/view.hpp"
 
 namespace pupitre::training {
 struct Exercise;
+}
+namespace pupitre::store {
+struct Attempt;
 }
 
 namespace pupitre::console {
@@ -56,6 +60,10 @@ class Session final : public Bench {
     // and origins live under its own name in the store. "" or what went wrong.
     std::string start_exercise(const training::Exercise& e, const std::string& student,
                                const std::string& key);
+    // The teacher's replay of the attempt `a` (replay.hpp): the exercise on
+    // the truth drawn from `seed`, graded with the attempt's time and at
+    // least its crashes. "" or what went wrong.
+    std::string start_replay(const training::Exercise& e, uint64_t seed, const store::Attempt& a);
     // The user's bindings over the shipped ones: "" or "NAME:LINE: problem".
     std::string add_bindings(std::string_view text, std::string_view origin);
 
@@ -100,9 +108,17 @@ class Session final : public Bench {
     void set_speed(Speed s) { speed_ = s; }
     Effect cycle_command();  // :cycle, Cycle Start
 
+    // ---- the attempt's record (record.hpp, session_record.cpp) ----
+    // One line of a record run as the key, the line or the answer did, or
+    // its note taken (a program's text, the selection, the protection).
+    Effect replay(const record::Action& a);
+    // Lets the simulated clock run up to `clock`, as the frames between two
+    // actions did.
+    void run_to(double clock);
+
     // ---- the view ----
     pages::View view() const;
-    void resize(int cols, int rows) { cols_ = cols, rows_ = rows; }
+    void resize(int cols, int rows);
     int rows() const { return rows_; }
     // Below 80x24 (pupitre(1), THE CONSOLE) only a resize, :quit and Ctrl-C act.
     bool too_small() const { return cols_ < 80 || rows_ < 24; }
@@ -112,6 +128,9 @@ class Session final : public Bench {
     std::string mode_news(Mode m) const;
     std::string mode_hint(Mode m) const;
     std::string mode_setting(Mode m) const;  // the INC step, the JOG feed
+    // The binding a key runs when `page` is shown, null when none: the
+    // replay's viewer looks at other pages than the student's this way.
+    const Binding* binding_for(const Key& k, pages::PageId page) const;
     // A GRAPH key (graph.hpp) in the window the screen leaves the page.
     Effect graph_key(std::string_view what, std::string_view arg);
     // The PART page (part_window.hpp): a key, the window, what the
@@ -181,6 +200,16 @@ class Session final : public Bench {
     // The key routing through the bindings (bindings.cpp) and the command
     // table (commands.cpp).
     Effect dispatch_key(const Key& k);
+    Effect keyed(const std::function<Effect()>& f);  // on_key's guard of the editor
+    // The record of an exercise's attempt: a step with the notes before it
+    // that changed (session_record.cpp).
+    void note_step(record::Action a);
+    void note_key(std::string_view action, std::string_view arg);
+    void note_line(std::string_view line);
+    void note_programs_run(record::Recorder& r);
+    void note_program(record::Recorder& r, int number);
+    void begin_record();
+    Effect run_action(std::string_view name, std::string_view arg);
     bool run_binding(const Key& k, Effect& e);
     Effect small_screen_key(const Key& k);
     void view_keys(pages::View& v) const;

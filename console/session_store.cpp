@@ -44,6 +44,7 @@ std::string Session::load_store() {
     if (std::string w = load_workshop(); !w.empty() && problem.empty()) problem = w;
     refresh_dir();
     remember_store();
+    begin_record();
     if (problem.empty()) problem = editing_.recovered_note();
     return problem;
 }

@@ -35,6 +35,9 @@ class SettingDesk {
     Effect tangent(int axis);                 // X or Z
 
     bool locked() const { return protect_; }
+    // A replay's (record.hpp): the protection as the student's console had
+    // it, which the store it read and its PIN decided.
+    void set_locked(bool on) { protect_ = on; }
     size_t undo_depth() const { return undo_.size(); }
     // The corrector the CORR page edits: :measure Dn chooses it as typed,
     // the page's keys within D1 to the last.

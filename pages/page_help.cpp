@@ -129,12 +129,19 @@ void page_help(const View& v, Canvas& c, const Rect& r) {
     // TRANSLATORS: the HELP page's title: HELP is the page's name.
     c.rule(r.y, tr("HELP  keys and commands (PgUp/PgDn scroll)"));
     std::vector<Line> lines;
-    lines.push_back(Line{}.add(std::string(" ") + tr("Getting started"), Style::title));
     // The whole width but a margin (the scroll position is on the rule).
     const int width = r.w - 1;
-    for (const char* s : kGettingStarted) step(lines, tr(s), width);
-    lines.push_back(Line{});
-    modes(v, lines, width);
+    if (v.replay) {
+        // TRANSLATORS: the HELP page of pupitre class replay.
+        step(lines,
+             tr("A replay of the student's actions: what the console showed them, read-only."),
+             width);
+    } else {
+        lines.push_back(Line{}.add(std::string(" ") + tr("Getting started"), Style::title));
+        for (const char* s : kGettingStarted) step(lines, tr(s), width);
+        lines.push_back(Line{});
+        modes(v, lines, width);
+    }
     std::string section;
     for (const HelpLine& h : v.help) {
         bool cmd = !h.key.empty() && h.key[0] == ':';

@@ -90,6 +90,9 @@ struct View {
     // HELP page.
     std::vector<HelpLine> help;
     std::string store_path;
+    // pupitre class replay: the keys of a replay are the page, no getting
+    // started, no modes (nothing of the machine is the viewer's to drive).
+    bool replay = false;
     // PREF and CORR pages.
     int corr_cursor = 1;
     std::vector<std::string> pending;  // origins changed in a run, not applied yet

@@ -242,6 +242,7 @@ Result<Attempt> Store::open_class_attempt(std::string_view exercise, std::string
         a.started_ms = u.i64(5);
         a.seed = u.str(7);
         a.crashes = u.i32(10);
+        a.record = u.str(16);  // an attempt taken up again: its record so far
         if ((rc = u.step()) != db::kDone) return fail(rc, tr("cannot open the attempt"));
         return {};
     });
@@ -266,12 +267,11 @@ StoreError Store::grade_attempt(const Attempt& a) {
     return in_write([&]() -> StoreError {
         sql::Use u =
             use("UPDATE attempts SET score = ?2, scrapped = ?3, mistakes = ?4, found = ?5, report "
-                "= ?6, "
-                "signature = ?7 WHERE id = ?1 AND submitted_ms IS NOT NULL AND signature = '' "
-                "RETURNING id");
+                "= ?6, signature = ?7, crashes = ?8 WHERE id = ?1 AND submitted_ms IS NOT NULL "
+                "AND signature = '' RETURNING id");
         if (u.error) return u.error;
         u.bind(1, a.id).bind(2, a.score).bind(3, a.scrapped ? 1 : 0).bind(4, a.mistakes);
-        u.bind(5, a.found).bind(6, a.report).bind(7, a.signature);
+        u.bind(5, a.found).bind(6, a.report).bind(7, a.signature).bind(8, a.crashes);
         int rc = u.step();
         if (rc == db::kDone) return {Fault::not_found, tr("the attempt was graded already")};
         if (rc != db::kRow) return fail(rc, tr("cannot store the grade"));

@@ -3,8 +3,8 @@
 // transaction, as a teacher (a login with CREATEROLE). It adds to the store's
 // tables (schema_pg.hpp) what the server enforces: two group roles, grants,
 // row-level security policies, the class's signing key in a table no student
-// may read, and the functions through which a student opens, crashes and
-// submits an attempt (SECURITY DEFINER: the student has no right to write
+// may read, and the functions through which a student opens, crashes, keeps
+// the record of and submits an attempt (SECURITY DEFINER: the student has no right to write
 // the attempts table itself). The store's schema name is spliced in where a
 // function needs its search_path (@SCHEMA@, quoted).
 // SPDX-License-Identifier: GPL-3.0-or-later
@@ -158,11 +158,25 @@ BEGIN
     RETURN done;
 END $f$;
 
+-- The record of an attempt in progress, kept as it grows (a console that
+-- stops and starts again takes it up); the last action's time for the
+-- teacher's view.
+CREATE FUNCTION pupitre_keep_record(p_id bigint, p_record text) RETURNS void
+LANGUAGE plpgsql SECURITY DEFINER SET search_path = @SCHEMA@, pg_temp AS $f$
+BEGIN
+    UPDATE attempts SET record = p_record
+    WHERE id = p_id AND student = session_user AND submitted_ms IS NULL;
+    IF FOUND THEN
+        PERFORM pg_notify('pupitre_class', 'action ' || p_id);
+    END IF;
+END $f$;
+
 REVOKE ALL ON FUNCTION pupitre_open_attempt(text, text), pupitre_add_crash(bigint),
-    pupitre_submit(bigint, bigint, bigint, text, text, text, text) FROM PUBLIC;
+    pupitre_submit(bigint, bigint, bigint, text, text, text, text),
+    pupitre_keep_record(bigint, text) FROM PUBLIC;
 GRANT EXECUTE ON FUNCTION pupitre_open_attempt(text, text), pupitre_add_crash(bigint),
-    pupitre_submit(bigint, bigint, bigint, text, text, text, text)
-    TO pupitre_students, pupitre_teachers;
+    pupitre_submit(bigint, bigint, bigint, text, text, text, text),
+    pupitre_keep_record(bigint, text) TO pupitre_students, pupitre_teachers;
 )sql";
 
 }  // namespace pupitre::store::class_pg

@@ -177,7 +177,9 @@ struct Attempt {
     int crashes = 0;
     bool scrapped = false;
     std::string mistakes, found, report, signature;
-    std::string record;  // what the operator did that the grade reads (readings, shims)
+    // What the operator did, the teacher's side replays it to grade
+    // (console/record.hpp); before version 1, the readings and shims alone.
+    std::string record;
 };
 
 // What `store copy` did: rows copied per table, and whether both sides agree.
@@ -335,6 +337,10 @@ class Store {
     // Starts an attempt (its id filled in, its machine named after it).
     StoreError start_attempt(Attempt& a);
     StoreError add_crash(int64_t id);
+    // The record of an attempt in progress as it grows, so that a console
+    // that stops and starts again takes it up (on a class's server through
+    // the server's function). Nothing when it was submitted meanwhile.
+    StoreError keep_record(int64_t id, std::string_view record);
     // Writes the grade of an attempt in progress; not_found when it was
     // submitted already.
     StoreError submit_attempt(const Attempt& a);

@@ -168,6 +168,21 @@ StoreError Store::add_crash(int64_t id) {
     });
 }
 
+StoreError Store::keep_record(int64_t id, std::string_view record) {
+    auto on_class = class_server();
+    if (on_class.error) return on_class.error;
+    return in_write([&]() -> StoreError {
+        sql::Use u = use(on_class.value ? "SELECT pupitre_keep_record(?1, ?2)"
+                                        : "UPDATE attempts SET record = ?2 WHERE id = ?1 AND "
+                                          "submitted_ms IS NULL");
+        if (u.error) return u.error;
+        int rc = u.bind(1, id).bind(2, record).step();
+        if (on_class.value && rc == db::kRow) rc = u.step();
+        if (rc != db::kDone) return fail(rc, tr("cannot store the attempt"));
+        return {};
+    });
+}
+
 StoreError Store::submit_attempt(const Attempt& a) {
     return in_write([&]() -> StoreError {
         sql::Use u =

@@ -90,11 +90,29 @@ grade)
     # Submitted, not graded: the teacher's report says so, and counts nothing.
     "$bin" --db "$teacher_db" class report > "$work/report" || fail "report"
     grep -Eq "^exam-2005 +$alice +1 +- +- .*UNGRADED 1" "$work/report" || fail "report: $(cat "$work/report")"
-    # The teacher's side grades from what the server holds, and signs.
+    # What each console graded at :submit, its time line aside (the server's
+    # time is the grade's): the replay must give it again exactly.
+    graded() { sql "SELECT student, score, mistakes, crashes, found, regexp_replace(report, '^([^\n]*\n)[^\n]*\n', '\1') FROM attempts ORDER BY id"; }
+    graded > "$work/provisional"
+    # The record: the actions with the simulated clock, the values entered.
+    sql "SELECT record FROM attempts WHERE student = '$alice'" > "$work/record"
+    head -1 "$work/record" | grep -qx 'pupitre-record 1' || fail "record: $(cat "$work/record")"
+    grep -Eq '^[0-9]+\.[0-9]{6} key page pref$' "$work/record" || fail "record: $(cat "$work/record")"
+    grep -Eq '^[0-9]+\.[0-9]{6} line DEC1\.Z=257\.267$' "$work/record" || fail "record: $(cat "$work/record")"
+    grep -Eq '^[0-9]+\.[0-9]{6} line :submit$' "$work/record" || fail "record: $(cat "$work/record")"
+    # bob writes the DEC1 he forgot into his attempt's machine by hand: the
+    # grade is the replay's, his rows count for nothing.
+    bm=$(sql "SELECT machine FROM attempts WHERE student = '$bob'")
+    as "$bob" -c "INSERT INTO origins VALUES ('$bm', 'DEC1', 'Z', 257267) ON CONFLICT (machine, kind, axis) DO UPDATE SET value = 257267" ||
+        fail "bob could not write his own machine"
+    # The teacher's side grades by replaying each record, and signs.
     "$bin" --db "$teacher_db" class grade > "$work/grade" || fail "grade: $(cat "$work/grade")"
     grep -q "$alice, exam-2005: 100%" "$work/grade" || fail "grade: $(cat "$work/grade")"
     grep -Eq "$bob, exam-2005: [0-9]+% \(.*dec1" "$work/grade" || fail "grade: $(cat "$work/grade")"
     grep -q '2 attempts graded' "$work/grade" || fail "grade: $(cat "$work/grade")"
+    grep -q 'the console said' "$work/grade" && fail "the replay is not the console's grade: $(cat "$work/grade")"
+    graded > "$work/replayed"
+    diff "$work/provisional" "$work/replayed" >&2 || fail "the replay's grades differ from the consoles'"
     "$bin" --db "$teacher_db" class grade | grep -q '0 attempts graded' || fail "graded twice"
     "$bin" --db "$teacher_db" class report > "$work/report" || fail "report"
     grep -Eq "^exam-2005 +$alice +1 +100 +100 " "$work/report" || fail "report: $(cat "$work/report")"
@@ -197,6 +215,49 @@ gone)
     [ -z "$(find "$work/data" -name '*.outbox')" ] || fail "the outbox is still there"
     "$bin" --db "$teacher_db" class grade | grep -q "$alice, exam-2005: 100%" || fail "not graded"
     [ "$(sql "SELECT count(*) FROM attempts WHERE student = '$alice'")" = 1 ] || fail "two attempts"
+    ;;
+replay)
+    # The teacher replays bob's attempt in a read-only console, action by action.
+    exam "$bob" nodec1
+    id=$(sql "SELECT id FROM attempts WHERE student = '$bob'")
+    W=100 H=30 start --db "\"$teacher_db\"" class replay "$id"
+    wait_for "REPLAY 0/7 .*attempt $id: $bob, exam-2005: read-only"
+    wait_for 'Student .*, the attempt replayed'
+    keys Right
+    wait_for 'REPLAY 1/7 .*key page pref'
+    wait_for '^─ PREF'
+    keys Right
+    wait_for 'REPLAY 2/7 .*entered: PREF.X=-135.477'
+    screen | grep -Eq '^  X +-135\.477 ' || fail "PREF X is not on the PREF page"
+    # The first action that produced the mistake named: DEC1 left at 0, from the start.
+    keys m
+    wait_for 'REPLAY 0/7 .*DEC1.Z: DEC1 forgotten, from the start'
+    # To the end: the replay's grade, the mistake named.
+    keys End
+    wait_for 'REPLAY 7/7 '
+    wait_for 'Score 83%'
+    wait_for 'DEC1 forgotten: DEC1 Z left at 0'
+    # Back one: the CORR page as the student had it, Z just entered.
+    keys Left
+    wait_for 'REPLAY 6/7 .*entered: Z=38.237'
+    wait_for '^─ CORR'
+    # Another page to look at, then the student's again; nothing of the machine moves.
+    keys M-g
+    wait_for '^─ GRAPH'
+    keys Tab
+    wait_for '^─ CORR'
+    keys F12
+    wait_for 'F12: the replay changes nothing'
+    keys F1
+    wait_for 'back one action'
+    wait_for 'the first action that produced a mistake the grade names'
+    keys q
+    wait_for '^EXIT=0'
+    # Not a terminal: refused; an attempt that is not there: named.
+    "$bin" --db "$teacher_db" class replay "$id" </dev/null >/dev/null 2>"$work/err" && fail "replay without a terminal"
+    grep -q 'the replay needs a terminal' "$work/err" || fail "message: $(cat "$work/err")"
+    "$bin" --db "$teacher_db" class replay 999999 2>"$work/err" && fail "replay of no attempt"
+    grep -q 'no attempt 999999' "$work/err" || fail "message: $(cat "$work/err")"
     ;;
 student)
     # --student is refused on a server: a person is their login.
