@@ -582,8 +582,10 @@ TEST(Modif, M999ForbidsModifAndImd) {
 }
 
 TEST(Setting, ThePinIsNeededToUnlockAndIsNotStoredInClear) {
-    std::string path = ::testing::TempDir() + "/pin_test.db";
+    std::string path = ::testing::TempDir() + "/pin_test_" + std::to_string(::getpid()) + ".db";
     std::remove(path.c_str());
+    // A file of an earlier process with this pid leaves no WAL behind.
+    std::remove((path + "-wal").c_str()), std::remove((path + "-shm").c_str());
     auto opened = store::Store::open(path);
     ASSERT_FALSE(opened.error) << opened.error.message;
     {

@@ -213,6 +213,8 @@ TEST(SettingProperty, ACommandDropsAPendingQuestion) {
 TEST(SettingProperty, AnOwnLeaseDoesNotHideTheOtherConsolesSave) {
     std::string path = ::testing::TempDir() + "/two_" + std::to_string(::getpid()) + ".db";
     std::remove(path.c_str());
+    // A file of an earlier process with this pid leaves no WAL behind.
+    std::remove((path + "-wal").c_str()), std::remove((path + "-shm").c_str());
     auto sa = store::Store::open(path);
     ASSERT_FALSE(sa.error) << sa.error.message;
     Console a("lathe", {}, std::move(sa.value));

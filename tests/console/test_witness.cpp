@@ -3,6 +3,7 @@
 // Cazeneuve, whose pages and store keep it.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cstdio>
 
@@ -59,8 +60,10 @@ TEST(Witness, TouchOnTheCorrPageSaysItSetPref) {
 // On the Cazeneuve, X is a radius and the corrector is T's last two digits;
 // the witness stays in the store with the machine's correctors.
 TEST(Witness, CazeneuveTangentKeptInTheStore) {
-    std::string path = ::testing::TempDir() + "/witness_test.db";
+    std::string path = ::testing::TempDir() + "/witness_test_" + std::to_string(::getpid()) + ".db";
     std::remove(path.c_str());
+    // A file of an earlier process with this pid leaves no WAL behind.
+    std::remove((path + "-wal").c_str()), std::remove((path + "-shm").c_str());
     {
         auto opened = store::Store::open(path);
         ASSERT_FALSE(opened.error) << opened.error.message;
