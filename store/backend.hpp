@@ -96,6 +96,9 @@ class Backend {
     virtual int after_copy() = 0;
     // "sqlite" or "postgresql".
     virtual std::string_view engine() const = 0;
+    // True when what is read crosses a network (a server): a long text is
+    // then better compared where it is stored than read back (Store::save).
+    virtual bool remote() const = 0;
 };
 
 // The store's address for people: a file path, or a PostgreSQL URI without

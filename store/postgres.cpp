@@ -223,6 +223,7 @@ class PgBackend final : public db::Backend {
     int integrity(std::string& out) override;
     int after_copy() override;
     std::string_view engine() const override { return "postgresql"; }
+    bool remote() const override { return true; }
 
     int listen() { return run(kListen); }
     // What each connection sets for itself (at open and when made again):

@@ -78,6 +78,14 @@ constexpr const char* kSelectText = "SELECT text FROM revisions WHERE program = 
 constexpr const char* kInsertRevision =
     "INSERT INTO revisions (program, rev, kind, based_on, conflict, text, size, lines, who, at_ms, "
     "source) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11)";
+// The same, unless the text is that of revision ?12, compared where the
+// texts are (a save on a server of the current text's size). No row: not
+// written.
+constexpr const char* kInsertIfChanged =
+    "INSERT INTO revisions (program, rev, kind, based_on, conflict, text, size, lines, who, at_ms, "
+    "source) SELECT ?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11 FROM revisions WHERE program = ?1 "
+    "AND rev = ?12 AND (text IS NULL OR text <> ?6) RETURNING rev";
+constexpr const char* kHasRevision = "SELECT 1 FROM revisions WHERE program = ?1 AND rev = ?2";
 constexpr const char* kInsertProgram =
     "INSERT INTO programs (number, idx, title, head, last_rev, conflict, deleted, size, lines, "
     "modified_ms, modified_by) VALUES (?1, ?2, ?3, ?4, ?4, NULL, 0, ?5, ?6, ?7, ?8)";
@@ -171,14 +179,17 @@ StoreError Store::read_row(int number, ProgramRow& row, const std::string& what)
     return {};
 }
 
-// Appends revision `rev` of a program; a null text is a deletion.
+// Appends revision `rev` of a program; a null text is a deletion. With
+// `unless` > 0, only when the text differs from revision `unless`'s:
+// `written` says whether it did.
 StoreError Store::insert_revision(int number, int rev, RevisionKind kind, int based_on,
                                   bool conflict, const std::string* text, const std::string& source,
-                                  const std::string& what) {
+                                  const std::string& what, int unless, bool* written) {
     StoreError e;
-    sql::Use u = use(kInsertRevision);
+    sql::Use u = use(unless > 0 ? kInsertIfChanged : kInsertRevision);
     e = u.error;
     if (e) return e;
+    if (unless > 0) u.bind(12, unless);
     u.bind(1, number)
         .bind(2, rev)
         .bind(3, kind_name(kind))
@@ -190,7 +201,29 @@ StoreError Store::insert_revision(int number, int rev, RevisionKind kind, int ba
         u.null(6).bind(7, int64_t(0)).bind(8, int64_t(0));
     u.bind(9, user_).bind(10, now_ms()).bind(11, source);
     int rc = u.step();
-    return rc == db::kDone ? StoreError{} : fail(rc, what);
+    if (written) *written = rc == db::kRow || unless <= 0;
+    return rc == db::kDone || (rc == db::kRow && unless > 0) ? StoreError{} : fail(rc, what);
+}
+
+// Revision `rev` of a program, which its programs row names, is there (else
+// the store is damaged); same_text also says whether its text is `text`.
+StoreError Store::has_revision(int number, int rev, const std::string& what) {
+    StoreError e;
+    sql::Use u = use(kHasRevision);
+    if ((e = u.error)) return e;
+    int rc = u.bind(1, number).bind(2, rev).step();
+    return rc == db::kRow ? StoreError{} : fail(rc == db::kDone ? db::kCorrupt : rc, what);
+}
+
+StoreError Store::same_text(int number, int rev, std::string_view text, bool& same,
+                            const std::string& what) {
+    StoreError e;
+    sql::Use u = use(kSelectText);
+    if ((e = u.error)) return e;
+    int rc = u.bind(1, number).bind(2, rev).step();
+    if (rc != db::kRow) return fail(rc == db::kDone ? db::kCorrupt : rc, what);
+    same = u.view(0) == text;
+    return {};
 }
 
 // Runs a one-row statement on the programs table: bindings ?1 number, then `more`.
@@ -218,32 +251,28 @@ Result<SaveResult> Store::save_one(const Piece& p, int based_on, RevisionKind ki
     const std::string what = strf(tr("cannot save %%%d"), p.number);
     ProgramRow row;
     if ((r.error = read_row(p.number, row, what))) return r;
-    bool same = false;
-    if (row.found && !row.deleted && row.size == int64_t(p.text.size())) {
-        StoreError e;
-        sql::Use u = use(kSelectText);
-        e = u.error;
-        if ((r.error = e)) return r;
-        int rc = u.bind(1, p.number).bind(2, row.head).step();
-        if (rc != db::kRow) {
-            r.error = fail(rc == db::kDone ? db::kCorrupt : rc, what);
-            return r;
-        }
-        same = u.view(0) == std::string_view(p.text);
-    }
     const bool on_head = based_on == kHead || based_on == row.head;
-    if (same) {
+    const bool clean = !row.found || on_head || (row.deleted && based_on == kNew);
+    const int rev = row.found ? row.last + 1 : 1;
+    const int base = based_on == kHead ? row.head : std::max(based_on, 0);
+    // A text of the current one's size may be that text, written only if
+    // not. SQLite compares it here; a server as it writes the revision, so
+    // that the text crosses the network once and the current one never.
+    const bool maybe = row.found && !row.deleted && row.size == int64_t(p.text.size());
+    const bool remote = db_->remote();
+    bool same = false, written = false;
+    if (maybe && !remote && (r.error = same_text(p.number, row.head, p.text, same, what))) return r;
+    if (!same && (r.error = insert_revision(p.number, rev, kind, base, !clean, &p.text, p.source,
+                                            what, maybe && remote ? row.head : 0, &written)))
+        return r;
+    if (!written) {
+        if (!same && (r.error = has_revision(p.number, row.head, what))) return r;
         out.status = SaveStatus::unchanged;
         out.revision = out.current = row.head;
         out.current_by = row.modified_by;
         if (row.conflict && on_head) r.error = update_program(kClearConflict, what, p.number);
         return r;
     }
-    const bool clean = !row.found || on_head || (row.deleted && based_on == kNew);
-    const int rev = row.found ? row.last + 1 : 1;
-    const int base = based_on == kHead ? row.head : std::max(based_on, 0);
-    if ((r.error = insert_revision(p.number, rev, kind, base, !clean, &p.text, p.source, what)))
-        return r;
     out.revision = rev;
     if (!clean) {
         out.status = SaveStatus::conflict;

@@ -350,6 +350,7 @@ class SqliteBackend final : public db::Backend {
     int integrity(std::string& out) override;
     int after_copy() override { return SQLITE_OK; }
     std::string_view engine() const override { return "sqlite"; }
+    bool remote() const override { return false; }
 
   private:
     std::string path_;

@@ -330,7 +330,10 @@ class Store {
     StoreError read_row(int number, ProgramRow& row, const std::string& what);
     StoreError insert_revision(int number, int rev, RevisionKind kind, int based_on, bool conflict,
                                const std::string* text, const std::string& source,
-                               const std::string& what);
+                               const std::string& what, int unless = 0, bool* written = nullptr);
+    StoreError has_revision(int number, int rev, const std::string& what);
+    StoreError same_text(int number, int rev, std::string_view text, bool& same,
+                         const std::string& what);
     template <class... T>
     StoreError update_program(const char* sql, const std::string& what, int number,
                               const T&... more);
