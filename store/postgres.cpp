@@ -227,9 +227,10 @@ class PgBackend final : public db::Backend {
 
     int listen() { return run(kListen); }
     // What each connection sets for itself (at open and when made again):
-    // the server's notices kept for what matters; program texts compressed
+    // the server's notices kept for what matters; long values compressed
     // with lz4 (PostgreSQL 14 and later, when built with it) rather than the
-    // default pglz, which takes 150 ms for a 3 MB program on a small server.
+    // default pglz, which takes 150 ms for a 3 MB program on a small server
+    // (program texts are not compressed in a store made now: schema_pg.hpp).
     int session() {
         if (int rc = run("SET client_min_messages = warning")) return rc;
         if (PQserverVersion(c_) >= 140000)
