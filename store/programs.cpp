@@ -305,7 +305,8 @@ Result<SaveResult> Store::save(int number, std::string_view text, int based_on,
 // round trip to a server. An import reads the rows of all its numbers first
 // (and the current texts it may find unchanged), decides each piece in order
 // as save_one would with based_on kHead, then writes the revisions and the
-// programs rows in multi-row statements (sql::repeated, sql::in_batches).
+// programs rows in bulk (Backend::insert_rows: a COPY on a server) and in
+// multi-row statements (sql::repeated, sql::in_batches).
 
 namespace {
 
@@ -318,11 +319,11 @@ constexpr const char* kHeadTextsOf =
     "SELECT r.program, r.text FROM programs p JOIN revisions r ON r.program = p.number AND "
     "r.rev = p.head WHERE p.number IN (";
 constexpr const char* kClearConflicts = "UPDATE programs SET conflict = NULL WHERE number IN (";
-constexpr const char* kInsertRevisions =
-    "INSERT INTO revisions (program, rev, kind, based_on, conflict, text, size, lines, who, at_ms, "
-    "source) VALUES ";
-constexpr const char* kRevisionRow = "(?1, ?2, ?3, ?4, 0, ?5, ?6, ?7, ?8, ?9, ?10)";
-constexpr const char* kInsertPrograms =
+constexpr const char* kRevisionColumns =
+    "program, rev, kind, based_on, conflict, text, size, lines, who, at_ms, source";
+constexpr const char* kProgramColumns =
+    "number, idx, title, head, last_rev, conflict, deleted, size, lines, modified_ms, modified_by";
+constexpr const char* kUpsertPrograms =
     "INSERT INTO programs (number, idx, title, head, last_rev, conflict, deleted, size, lines, "
     "modified_ms, modified_by) VALUES ";
 constexpr const char* kProgramRow = "(?1, ?2, ?3, ?4, ?4, NULL, 0, ?5, ?6, ?7, ?8)";
@@ -453,59 +454,57 @@ Result<std::vector<SaveResult>> Store::plan_import(const std::vector<Piece>& pie
     return r;
 }
 
-// The plan's revisions and programs rows, in multi-row statements.
+// The plan's revisions and the rows of its new programs through
+// Backend::insert_rows; the rows of programs the store held through
+// multi-row upserts; the conflicts an unchanged text settles.
 StoreError Store::write_import(const ImportPlan& plan) {
-    // A failed statement is named after its first program.
-    auto step = [&](sql::Use& u, int number) {
-        int rc = u.step();
-        return rc == db::kDone ? StoreError{} : fail(rc, strf(tr("cannot save %%%d"), number));
+    // A failure is named after the first program of what failed.
+    auto failed = [&](int rc, int number) {
+        return fail(rc, strf(tr("cannot save %%%d"), number));
     };
-    const auto& revs = plan.revisions;
-    StoreError e = sql::in_batches(revs.size(), [&](size_t at, size_t n) {
-        sql::Use u = use(sql::repeated(kInsertRevisions, kRevisionRow, 10, int(n)));
+    using Value = db::Value;
+    auto num = [](int64_t v) { return Value{Value::Kind::integer, v, {}}; };
+    auto str = [](std::string_view t) { return Value{Value::Kind::text, 0, t}; };
+    std::vector<Value> v;
+    v.reserve(plan.revisions.size() * 11);
+    for (const ImportPlan::Revision& r : plan.revisions) {
+        const std::string& text = r.piece->text;
+        v.insert(v.end(), {num(r.piece->number), num(r.rev), str(kind_name(RevisionKind::import)),
+                           num(r.base), num(0), Value{Value::Kind::bytes, 0, text},
+                           num(int64_t(text.size())), num(r.lines), str(user_), num(r.at_ms),
+                           str(r.piece->source)});
+    }
+    if (!v.empty())
+        if (int rc = db_->insert_rows("revisions", kRevisionColumns, 11, v))
+            return failed(rc, plan.revisions[0].piece->number);
+    v.clear();
+    std::vector<std::pair<int, const ImportPlan::Head*>> held;
+    for (const auto& [number, h] : plan.heads) {
+        if (plan.now.at(number).in_table) {
+            held.emplace_back(number, &h);
+            continue;
+        }
+        v.insert(v.end(), {num(number), h.index ? num(*h.index) : Value{}, str(h.title), num(h.rev),
+                           num(h.rev), Value{}, num(0), num(h.size), num(h.lines), num(h.at_ms),
+                           str(user_)});
+    }
+    if (!v.empty())
+        if (int rc = db_->insert_rows("programs", kProgramColumns, 11, v))
+            return failed(rc, int(v[0].integer));
+    StoreError e = sql::in_batches(held.size(), [&](size_t at, size_t n) {
+        sql::Use u = use(sql::repeated(kUpsertPrograms, kProgramRow, 8, int(n), kUpsertTail));
         if (u.error) return u.error;
         for (size_t i = 0; i < n; ++i) {
-            const ImportPlan::Revision& v = revs[at + i];
-            const int k = int(i) * 10;
-            u.bind(k + 1, v.piece->number)
-                .bind(k + 2, v.rev)
-                .bind(k + 3, kind_name(RevisionKind::import))
-                .bind(k + 4, v.base)
-                .blob(k + 5, v.piece->text)
-                .bind(k + 6, int64_t(v.piece->text.size()))
-                .bind(k + 7, v.lines)
-                .bind(k + 8, user_)
-                .bind(k + 9, v.at_ms)
-                .bind(k + 10, v.piece->source);
+            const auto& [number, h] = held[at + i];
+            const int k = int(i) * 8;
+            u.bind(k + 1, number).bind(k + 3, h->title).bind(k + 4, h->rev);
+            bind_value(u, k + 2, h->index);
+            u.bind(k + 5, h->size).bind(k + 6, h->lines).bind(k + 7, h->at_ms).bind(k + 8, user_);
         }
-        return step(u, revs[at].piece->number);
+        int rc = u.step();
+        return rc == db::kDone ? StoreError{} : failed(rc, held[at].first);
     });
     if (e) return e;
-    // New numbers in a plain INSERT; the others through its upsert, which
-    // costs the server more a row.
-    std::vector<std::pair<int, const ImportPlan::Head*>> heads[2];
-    for (const auto& [number, h] : plan.heads)
-        heads[plan.now.at(number).in_table].emplace_back(number, &h);
-    for (int stored : {0, 1}) {
-        const auto& rows = heads[stored];
-        e = sql::in_batches(rows.size(), [&](size_t at, size_t n) {
-            sql::Use u = use(
-                sql::repeated(kInsertPrograms, kProgramRow, 8, int(n), stored ? kUpsertTail : ""));
-            if (u.error) return u.error;
-            for (size_t i = 0; i < n; ++i) {
-                const auto& [number, h] = rows[at + i];
-                const int k = int(i) * 8;
-                u.bind(k + 1, number).bind(k + 3, h->title).bind(k + 4, h->rev);
-                bind_value(u, k + 2, h->index);
-                u.bind(k + 5, h->size)
-                    .bind(k + 6, h->lines)
-                    .bind(k + 7, h->at_ms)
-                    .bind(k + 8, user_);
-            }
-            return step(u, rows[at].first);
-        });
-        if (e) return e;
-    }
     if (plan.cleared.empty()) return {};
     return for_numbers(kClearConflicts, plan.cleared, strf(tr("cannot save %%%d"), plan.cleared[0]),
                        [](const sql::Use&) {});
