@@ -666,6 +666,11 @@ Result<std::unique_ptr<Store>> Store::open_postgres(const std::string& target, c
     PQsetClientEncoding(c, "UTF8");
     std::unique_ptr<Store> st(new Store);
     st->path_ = name;
+    // The host as the connection found it (PGHOST and service files
+    // applied); a unix socket's directory is this machine.
+    const std::string host = PQhost(c) ? PQhost(c) : "";
+    st->short_name_ = (host.empty() || host[0] == '/' ? std::string("localhost") : host) + "/" +
+                      (PQdb(c) ? PQdb(c) : "");
     st->opt_ = o;
     // On a server a person is their database login.
     st->user_ = o.user.empty() ? std::string(PQuser(c)) : o.user;

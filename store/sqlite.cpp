@@ -459,6 +459,7 @@ Result<std::unique_ptr<Store>> Store::open_sqlite(const std::string& path, const
     }
     std::unique_ptr<Store> st(new Store);
     st->path_ = path;
+    st->short_name_ = path;
     st->opt_ = o;
     st->user_ = o.user.empty() ? os_user() : o.user;
 

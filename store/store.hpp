@@ -214,6 +214,9 @@ class Store {
 
     // The store's name for people: its file, or its server URI without password.
     const std::string& path() const { return path_; }
+    // Its name where a line is short (the console's message line): its
+    // file, or a server's host and database, "host/database".
+    const std::string& short_name() const { return short_name_; }
     // What it was opened with (a file path or a connection string), to open it again.
     const std::string& target() const { return target_; }
     // Where this PC keeps what belongs beside the store on local disk (the
@@ -360,6 +363,7 @@ class Store {
 
     std::unique_ptr<db::Backend> db_;
     std::string path_;
+    std::string short_name_;
     std::string target_;
     std::string user_;
     bool created_ = false;
