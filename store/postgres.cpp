@@ -578,6 +578,14 @@ int PgBackend::insert_rows(const char* table, const char* columns, int width,
     return rc;
 }
 
+// host/database as the connection found them (PGHOST and service files
+// applied); a unix socket's directory is this machine.
+std::string short_name_of(PGconn* c) {
+    const std::string host = PQhost(c) ? PQhost(c) : "";
+    return (host.empty() || host[0] == '/' ? std::string("localhost") : host) + "/" +
+           (PQdb(c) ? PQdb(c) : "");
+}
+
 // A connection failure as one line a teacher or a student can act on.
 StoreError connect_error(const std::string& name, PGconn* c) {
     std::string m = one_line(PQerrorMessage(c));
@@ -666,11 +674,7 @@ Result<std::unique_ptr<Store>> Store::open_postgres(const std::string& target, c
     PQsetClientEncoding(c, "UTF8");
     std::unique_ptr<Store> st(new Store);
     st->path_ = name;
-    // The host as the connection found it (PGHOST and service files
-    // applied); a unix socket's directory is this machine.
-    const std::string host = PQhost(c) ? PQhost(c) : "";
-    st->short_name_ = (host.empty() || host[0] == '/' ? std::string("localhost") : host) + "/" +
-                      (PQdb(c) ? PQdb(c) : "");
+    st->short_name_ = short_name_of(c);
     st->opt_ = o;
     // On a server a person is their database login.
     st->user_ = o.user.empty() ? std::string(PQuser(c)) : o.user;
