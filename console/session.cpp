@@ -107,6 +107,12 @@ void Session::refresh_dir() {
 }
 
 void Session::say(std::string text, bool error) {
+    // A server's store is named host/database, not by its whole URI, which
+    // would take most of the line from what went wrong.
+    if (store_ && store_->short_name() != store_->path())
+        for (size_t at = 0; (at = text.find(store_->path(), at)) != std::string::npos;
+             at += store_->short_name().size())
+            text.replace(at, store_->path().size(), store_->short_name());
     // The ALARM page keeps them in full: the message line cuts a long one.
     if (!text.empty() && (said_.empty() || said_.front() != text)) {
         said_.insert(said_.begin(), text);

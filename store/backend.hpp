@@ -11,6 +11,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "store/store.hpp"
 
@@ -47,6 +48,16 @@ class Stmt {
     virtual std::string_view view(int c) const = 0;
 };
 
+// A value of a row Backend::insert_rows writes: NULL, an integer (into a
+// bigint column: every integer column of both schemas), a text, or bytes (a
+// program's text). The characters stay the caller's until the call returns.
+struct Value {
+    enum class Kind { null, integer, text, bytes };
+    Kind kind = Kind::null;
+    int64_t integer = 0;
+    std::string_view chars;
+};
+
 // The schema's version as the store keeps it.
 struct Meta {
     bool blank = false;       // nothing in it yet: ours to create
@@ -64,6 +75,13 @@ class Backend {
     virtual Stmt* prepare(const char* sql, int& rc) = 0;
     // Runs one or several statements without results.
     virtual int exec(const char* sql) = 0;
+    // Inserts rows into `table`'s `columns` ("a, b, c"), in a transaction:
+    // `values` holds them one after another, `width` values each. Made for
+    // many rows at once (an import): PostgreSQL receives them in one COPY,
+    // with no statement to plan per row; SQLite steps one prepared INSERT.
+    // `table` and `columns` are literals (statements are kept by address).
+    virtual int insert_rows(const char* table, const char* columns, int width,
+                            const std::vector<Value>& values) = 0;
     // A write transaction with the isolation every write needs: SQLite takes
     // the write lock at once (BEGIN IMMEDIATE); PostgreSQL runs SERIALIZABLE.
     virtual int begin_write() = 0;
@@ -96,6 +114,9 @@ class Backend {
     virtual int after_copy() = 0;
     // "sqlite" or "postgresql".
     virtual std::string_view engine() const = 0;
+    // True when what is read crosses a network (a server): a long text is
+    // then better compared where it is stored than read back (Store::save).
+    virtual bool remote() const = 0;
 };
 
 // The store's address for people: a file path, or a PostgreSQL URI without

@@ -187,6 +187,8 @@ class PgBackend final : public db::Backend {
         return stmts_.emplace(sql, std::move(s)).first->second.get();
     }
     int exec(const char* sql) override { return run(sql); }
+    int insert_rows(const char* table, const char* columns, int width,
+                    const std::vector<db::Value>& values) override;
     int begin_write() override { return begin("BEGIN ISOLATION LEVEL SERIALIZABLE"); }
     // READ COMMITTED: after waiting for the lock, the next statement sees what
     // the process that held it committed.
@@ -223,12 +225,14 @@ class PgBackend final : public db::Backend {
     int integrity(std::string& out) override;
     int after_copy() override;
     std::string_view engine() const override { return "postgresql"; }
+    bool remote() const override { return true; }
 
     int listen() { return run(kListen); }
     // What each connection sets for itself (at open and when made again):
-    // the server's notices kept for what matters; program texts compressed
+    // the server's notices kept for what matters; long values compressed
     // with lz4 (PostgreSQL 14 and later, when built with it) rather than the
-    // default pglz, which takes 150 ms for a 3 MB program on a small server.
+    // default pglz, which takes 150 ms for a 3 MB program on a small server
+    // (program texts are not compressed in a store made now: schema_pg.hpp).
     int session() {
         if (int rc = run("SET client_min_messages = warning")) return rc;
         if (PQserverVersion(c_) >= 140000)
@@ -451,21 +455,22 @@ StoreError PgBackend::explain(int rc, const std::string& head) const {
 }
 
 int PgBackend::read_meta(db::Meta& m) {
-    PGresult* r = PQexec(c_,
-                         "SELECT (SELECT count(*) FROM pg_tables WHERE schemaname = "
-                         "current_schema()), to_regclass('pupitre_meta') IS NOT NULL, "
-                         "current_schema()");
+    // pupitre_meta first: on a store the only question (counting the
+    // schema's tables costs a new connection 2 ms of catalogue reads).
+    PGresult* r = PQexec(c_, "SELECT to_regclass('pupitre_meta') IS NOT NULL, current_schema()");
     if (int rc = check(r, true)) return rc;
-    int64_t tables = std::strtoll(PQgetvalue(r, 0, 0), nullptr, 10);
-    bool ours = PQgetvalue(r, 0, 1)[0] == 't';
-    std::string schema = PQgetvalue(r, 0, 2);
+    const bool ours = PQgetvalue(r, 0, 0)[0] == 't';
+    const std::string schema = PQgetvalue(r, 0, 1);
     PQclear(r);
-    m.blank = tables == 0;
-    if (m.blank) return db::kOk;
     if (!ours) {
-        m.foreign = true;
-        m.foreign_why =
-            strf(tr("a PostgreSQL database whose schema %s holds other tables"), schema.c_str());
+        r = PQexec(c_, "SELECT count(*) FROM pg_tables WHERE schemaname = current_schema()");
+        if (int rc = check(r, true)) return rc;
+        m.blank = std::strtoll(PQgetvalue(r, 0, 0), nullptr, 10) == 0;
+        PQclear(r);
+        m.foreign = !m.blank;
+        if (m.foreign)
+            m.foreign_why = strf(tr("a PostgreSQL database whose schema %s holds other tables"),
+                                 schema.c_str());
         return db::kOk;
     }
     r = PQexec(c_,
@@ -528,6 +533,58 @@ int PgBackend::after_copy() {
         if (int rc = run(sql.c_str())) return rc;
     }
     return db::kOk;
+}
+
+// COPY in PostgreSQL's binary format: a header, then each row as its number
+// of fields and each field as its length (-1: NULL) and its bytes (a bigint
+// in network order; a text or a bytea as it is), then -1. Sent a megabyte at
+// a time, so the server writes rows while the next are made.
+int PgBackend::insert_rows(const char* table, const char* columns, int width,
+                           const std::vector<db::Value>& values) {
+    if (PQstatus(c_) != CONNECTION_OK) return lost();
+    const std::string sql =
+        std::string("COPY ") + table + " (" + columns + ") FROM STDIN (FORMAT binary)";
+    PGresult* r = PQexec(c_, sql.c_str());
+    if (PQresultStatus(r) != PGRES_COPY_IN) return check(r);
+    PQclear(r);
+    std::string buf("PGCOPY\n\377\r\n\0\0\0\0\0\0\0\0\0", 19);  // signature, flags, extension
+    auto be = [&buf](uint64_t v, int bytes) {
+        for (int i = bytes - 1; i >= 0; --i) buf += char((v >> (8 * i)) & 0xff);
+    };
+    bool sent = true;
+    for (size_t at = 0; sent && at + size_t(width) <= values.size(); at += size_t(width)) {
+        be(uint64_t(width), 2);
+        for (int i = 0; i < width; ++i) {
+            const db::Value& v = values[at + size_t(i)];
+            if (v.kind == db::Value::Kind::null) {
+                be(0xffffffffu, 4);
+            } else if (v.kind == db::Value::Kind::integer) {
+                be(8, 4);
+                be(uint64_t(v.integer), 8);
+            } else {
+                be(v.chars.size(), 4);
+                buf.append(v.chars.data(), v.chars.size());
+            }
+        }
+        if (buf.size() >= (1u << 20)) {
+            sent = PQputCopyData(c_, buf.data(), int(buf.size())) == 1;
+            buf.clear();
+        }
+    }
+    be(0xffff, 2);
+    sent = sent && PQputCopyData(c_, buf.data(), int(buf.size())) == 1;
+    if (PQputCopyEnd(c_, sent ? nullptr : "not sent") != 1) return lost();
+    int rc = check(PQgetResult(c_));
+    while (PGresult* more = PQgetResult(c_)) PQclear(more);
+    return rc;
+}
+
+// host/database as the connection found them (PGHOST and service files
+// applied); a unix socket's directory is this machine.
+std::string short_name_of(PGconn* c) {
+    const std::string host = PQhost(c) ? PQhost(c) : "";
+    return (host.empty() || host[0] == '/' ? std::string("localhost") : host) + "/" +
+           (PQdb(c) ? PQdb(c) : "");
 }
 
 // A connection failure as one line a teacher or a student can act on.
@@ -618,6 +675,7 @@ Result<std::unique_ptr<Store>> Store::open_postgres(const std::string& target, c
     PQsetClientEncoding(c, "UTF8");
     std::unique_ptr<Store> st(new Store);
     st->path_ = name;
+    st->short_name_ = short_name_of(c);
     st->opt_ = o;
     // On a server a person is their database login.
     st->user_ = o.user.empty() ? std::string(PQuser(c)) : o.user;

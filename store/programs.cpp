@@ -78,6 +78,14 @@ constexpr const char* kSelectText = "SELECT text FROM revisions WHERE program = 
 constexpr const char* kInsertRevision =
     "INSERT INTO revisions (program, rev, kind, based_on, conflict, text, size, lines, who, at_ms, "
     "source) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11)";
+// The same, unless the text is that of revision ?12, compared where the
+// texts are (a save on a server of the current text's size). No row: not
+// written.
+constexpr const char* kInsertIfChanged =
+    "INSERT INTO revisions (program, rev, kind, based_on, conflict, text, size, lines, who, at_ms, "
+    "source) SELECT ?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11 FROM revisions WHERE program = ?1 "
+    "AND rev = ?12 AND (text IS NULL OR text <> ?6) RETURNING rev";
+constexpr const char* kHasRevision = "SELECT 1 FROM revisions WHERE program = ?1 AND rev = ?2";
 constexpr const char* kInsertProgram =
     "INSERT INTO programs (number, idx, title, head, last_rev, conflict, deleted, size, lines, "
     "modified_ms, modified_by) VALUES (?1, ?2, ?3, ?4, ?4, NULL, 0, ?5, ?6, ?7, ?8)";
@@ -171,14 +179,17 @@ StoreError Store::read_row(int number, ProgramRow& row, const std::string& what)
     return {};
 }
 
-// Appends revision `rev` of a program; a null text is a deletion.
+// Appends revision `rev` of a program; a null text is a deletion. With
+// `unless` > 0, only when the text differs from revision `unless`'s:
+// `written` says whether it did.
 StoreError Store::insert_revision(int number, int rev, RevisionKind kind, int based_on,
                                   bool conflict, const std::string* text, const std::string& source,
-                                  const std::string& what) {
+                                  const std::string& what, int unless, bool* written) {
     StoreError e;
-    sql::Use u = use(kInsertRevision);
+    sql::Use u = use(unless > 0 ? kInsertIfChanged : kInsertRevision);
     e = u.error;
     if (e) return e;
+    if (unless > 0) u.bind(12, unless);
     u.bind(1, number)
         .bind(2, rev)
         .bind(3, kind_name(kind))
@@ -190,7 +201,29 @@ StoreError Store::insert_revision(int number, int rev, RevisionKind kind, int ba
         u.null(6).bind(7, int64_t(0)).bind(8, int64_t(0));
     u.bind(9, user_).bind(10, now_ms()).bind(11, source);
     int rc = u.step();
-    return rc == db::kDone ? StoreError{} : fail(rc, what);
+    if (written) *written = rc == db::kRow || unless <= 0;
+    return rc == db::kDone || (rc == db::kRow && unless > 0) ? StoreError{} : fail(rc, what);
+}
+
+// Revision `rev` of a program, which its programs row names, is there (else
+// the store is damaged); same_text also says whether its text is `text`.
+StoreError Store::has_revision(int number, int rev, const std::string& what) {
+    StoreError e;
+    sql::Use u = use(kHasRevision);
+    if ((e = u.error)) return e;
+    int rc = u.bind(1, number).bind(2, rev).step();
+    return rc == db::kRow ? StoreError{} : fail(rc == db::kDone ? db::kCorrupt : rc, what);
+}
+
+StoreError Store::same_text(int number, int rev, std::string_view text, bool& same,
+                            const std::string& what) {
+    StoreError e;
+    sql::Use u = use(kSelectText);
+    if ((e = u.error)) return e;
+    int rc = u.bind(1, number).bind(2, rev).step();
+    if (rc != db::kRow) return fail(rc == db::kDone ? db::kCorrupt : rc, what);
+    same = u.view(0) == text;
+    return {};
 }
 
 // Runs a one-row statement on the programs table: bindings ?1 number, then `more`.
@@ -218,32 +251,28 @@ Result<SaveResult> Store::save_one(const Piece& p, int based_on, RevisionKind ki
     const std::string what = strf(tr("cannot save %%%d"), p.number);
     ProgramRow row;
     if ((r.error = read_row(p.number, row, what))) return r;
-    bool same = false;
-    if (row.found && !row.deleted && row.size == int64_t(p.text.size())) {
-        StoreError e;
-        sql::Use u = use(kSelectText);
-        e = u.error;
-        if ((r.error = e)) return r;
-        int rc = u.bind(1, p.number).bind(2, row.head).step();
-        if (rc != db::kRow) {
-            r.error = fail(rc == db::kDone ? db::kCorrupt : rc, what);
-            return r;
-        }
-        same = u.view(0) == std::string_view(p.text);
-    }
     const bool on_head = based_on == kHead || based_on == row.head;
-    if (same) {
+    const bool clean = !row.found || on_head || (row.deleted && based_on == kNew);
+    const int rev = row.found ? row.last + 1 : 1;
+    const int base = based_on == kHead ? row.head : std::max(based_on, 0);
+    // A text of the current one's size may be that text, written only if
+    // not. SQLite compares it here; a server as it writes the revision, so
+    // that the text crosses the network once and the current one never.
+    const bool maybe = row.found && !row.deleted && row.size == int64_t(p.text.size());
+    const bool remote = db_->remote();
+    bool same = false, written = false;
+    if (maybe && !remote && (r.error = same_text(p.number, row.head, p.text, same, what))) return r;
+    if (!same && (r.error = insert_revision(p.number, rev, kind, base, !clean, &p.text, p.source,
+                                            what, maybe && remote ? row.head : 0, &written)))
+        return r;
+    if (!written) {
+        if (!same && (r.error = has_revision(p.number, row.head, what))) return r;
         out.status = SaveStatus::unchanged;
         out.revision = out.current = row.head;
         out.current_by = row.modified_by;
         if (row.conflict && on_head) r.error = update_program(kClearConflict, what, p.number);
         return r;
     }
-    const bool clean = !row.found || on_head || (row.deleted && based_on == kNew);
-    const int rev = row.found ? row.last + 1 : 1;
-    const int base = based_on == kHead ? row.head : std::max(based_on, 0);
-    if ((r.error = insert_revision(p.number, rev, kind, base, !clean, &p.text, p.source, what)))
-        return r;
     out.revision = rev;
     if (!clean) {
         out.status = SaveStatus::conflict;
@@ -276,7 +305,8 @@ Result<SaveResult> Store::save(int number, std::string_view text, int based_on,
 // round trip to a server. An import reads the rows of all its numbers first
 // (and the current texts it may find unchanged), decides each piece in order
 // as save_one would with based_on kHead, then writes the revisions and the
-// programs rows in multi-row statements (sql::repeated, sql::in_batches).
+// programs rows in bulk (Backend::insert_rows: a COPY on a server) and in
+// multi-row statements (sql::repeated, sql::in_batches).
 
 namespace {
 
@@ -289,11 +319,11 @@ constexpr const char* kHeadTextsOf =
     "SELECT r.program, r.text FROM programs p JOIN revisions r ON r.program = p.number AND "
     "r.rev = p.head WHERE p.number IN (";
 constexpr const char* kClearConflicts = "UPDATE programs SET conflict = NULL WHERE number IN (";
-constexpr const char* kInsertRevisions =
-    "INSERT INTO revisions (program, rev, kind, based_on, conflict, text, size, lines, who, at_ms, "
-    "source) VALUES ";
-constexpr const char* kRevisionRow = "(?1, ?2, ?3, ?4, 0, ?5, ?6, ?7, ?8, ?9, ?10)";
-constexpr const char* kInsertPrograms =
+constexpr const char* kRevisionColumns =
+    "program, rev, kind, based_on, conflict, text, size, lines, who, at_ms, source";
+constexpr const char* kProgramColumns =
+    "number, idx, title, head, last_rev, conflict, deleted, size, lines, modified_ms, modified_by";
+constexpr const char* kUpsertPrograms =
     "INSERT INTO programs (number, idx, title, head, last_rev, conflict, deleted, size, lines, "
     "modified_ms, modified_by) VALUES ";
 constexpr const char* kProgramRow = "(?1, ?2, ?3, ?4, ?4, NULL, 0, ?5, ?6, ?7, ?8)";
@@ -424,59 +454,57 @@ Result<std::vector<SaveResult>> Store::plan_import(const std::vector<Piece>& pie
     return r;
 }
 
-// The plan's revisions and programs rows, in multi-row statements.
+// The plan's revisions and the rows of its new programs through
+// Backend::insert_rows; the rows of programs the store held through
+// multi-row upserts; the conflicts an unchanged text settles.
 StoreError Store::write_import(const ImportPlan& plan) {
-    // A failed statement is named after its first program.
-    auto step = [&](sql::Use& u, int number) {
-        int rc = u.step();
-        return rc == db::kDone ? StoreError{} : fail(rc, strf(tr("cannot save %%%d"), number));
+    // A failure is named after the first program of what failed.
+    auto failed = [&](int rc, int number) {
+        return fail(rc, strf(tr("cannot save %%%d"), number));
     };
-    const auto& revs = plan.revisions;
-    StoreError e = sql::in_batches(revs.size(), [&](size_t at, size_t n) {
-        sql::Use u = use(sql::repeated(kInsertRevisions, kRevisionRow, 10, int(n)));
+    using Value = db::Value;
+    auto num = [](int64_t v) { return Value{Value::Kind::integer, v, {}}; };
+    auto str = [](std::string_view t) { return Value{Value::Kind::text, 0, t}; };
+    std::vector<Value> v;
+    v.reserve(plan.revisions.size() * 11);
+    for (const ImportPlan::Revision& r : plan.revisions) {
+        const std::string& text = r.piece->text;
+        v.insert(v.end(), {num(r.piece->number), num(r.rev), str(kind_name(RevisionKind::import)),
+                           num(r.base), num(0), Value{Value::Kind::bytes, 0, text},
+                           num(int64_t(text.size())), num(r.lines), str(user_), num(r.at_ms),
+                           str(r.piece->source)});
+    }
+    if (!v.empty())
+        if (int rc = db_->insert_rows("revisions", kRevisionColumns, 11, v))
+            return failed(rc, plan.revisions[0].piece->number);
+    v.clear();
+    std::vector<std::pair<int, const ImportPlan::Head*>> held;
+    for (const auto& [number, h] : plan.heads) {
+        if (plan.now.at(number).in_table) {
+            held.emplace_back(number, &h);
+            continue;
+        }
+        v.insert(v.end(), {num(number), h.index ? num(*h.index) : Value{}, str(h.title), num(h.rev),
+                           num(h.rev), Value{}, num(0), num(h.size), num(h.lines), num(h.at_ms),
+                           str(user_)});
+    }
+    if (!v.empty())
+        if (int rc = db_->insert_rows("programs", kProgramColumns, 11, v))
+            return failed(rc, int(v[0].integer));
+    StoreError e = sql::in_batches(held.size(), [&](size_t at, size_t n) {
+        sql::Use u = use(sql::repeated(kUpsertPrograms, kProgramRow, 8, int(n), kUpsertTail));
         if (u.error) return u.error;
         for (size_t i = 0; i < n; ++i) {
-            const ImportPlan::Revision& v = revs[at + i];
-            const int k = int(i) * 10;
-            u.bind(k + 1, v.piece->number)
-                .bind(k + 2, v.rev)
-                .bind(k + 3, kind_name(RevisionKind::import))
-                .bind(k + 4, v.base)
-                .blob(k + 5, v.piece->text)
-                .bind(k + 6, int64_t(v.piece->text.size()))
-                .bind(k + 7, v.lines)
-                .bind(k + 8, user_)
-                .bind(k + 9, v.at_ms)
-                .bind(k + 10, v.piece->source);
+            const auto& [number, h] = held[at + i];
+            const int k = int(i) * 8;
+            u.bind(k + 1, number).bind(k + 3, h->title).bind(k + 4, h->rev);
+            bind_value(u, k + 2, h->index);
+            u.bind(k + 5, h->size).bind(k + 6, h->lines).bind(k + 7, h->at_ms).bind(k + 8, user_);
         }
-        return step(u, revs[at].piece->number);
+        int rc = u.step();
+        return rc == db::kDone ? StoreError{} : failed(rc, held[at].first);
     });
     if (e) return e;
-    // New numbers in a plain INSERT; the others through its upsert, which
-    // costs the server more a row.
-    std::vector<std::pair<int, const ImportPlan::Head*>> heads[2];
-    for (const auto& [number, h] : plan.heads)
-        heads[plan.now.at(number).in_table].emplace_back(number, &h);
-    for (int stored : {0, 1}) {
-        const auto& rows = heads[stored];
-        e = sql::in_batches(rows.size(), [&](size_t at, size_t n) {
-            sql::Use u = use(
-                sql::repeated(kInsertPrograms, kProgramRow, 8, int(n), stored ? kUpsertTail : ""));
-            if (u.error) return u.error;
-            for (size_t i = 0; i < n; ++i) {
-                const auto& [number, h] = rows[at + i];
-                const int k = int(i) * 8;
-                u.bind(k + 1, number).bind(k + 3, h->title).bind(k + 4, h->rev);
-                bind_value(u, k + 2, h->index);
-                u.bind(k + 5, h->size)
-                    .bind(k + 6, h->lines)
-                    .bind(k + 7, h->at_ms)
-                    .bind(k + 8, user_);
-            }
-            return step(u, rows[at].first);
-        });
-        if (e) return e;
-    }
     if (plan.cleared.empty()) return {};
     return for_numbers(kClearConflicts, plan.cleared, strf(tr("cannot save %%%d"), plan.cleared[0]),
                        [](const sql::Use&) {});

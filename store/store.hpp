@@ -248,6 +248,9 @@ class Store {
 
     // The store's name for people: its file, or its server URI without password.
     const std::string& path() const { return path_; }
+    // Its name where a line is short (the console's message line): its
+    // file, or a server's host and database, "host/database".
+    const std::string& short_name() const { return short_name_; }
     // What it was opened with (a file path or a connection string), to open it again.
     const std::string& target() const { return target_; }
     // Where this PC keeps what belongs beside the store on local disk (the
@@ -404,7 +407,10 @@ class Store {
     StoreError read_row(int number, ProgramRow& row, const std::string& what);
     StoreError insert_revision(int number, int rev, RevisionKind kind, int based_on, bool conflict,
                                const std::string* text, const std::string& source,
-                               const std::string& what);
+                               const std::string& what, int unless = 0, bool* written = nullptr);
+    StoreError has_revision(int number, int rev, const std::string& what);
+    StoreError same_text(int number, int rev, std::string_view text, bool& same,
+                         const std::string& what);
     template <class... T>
     StoreError update_program(const char* sql, const std::string& what, int number,
                               const T&... more);
@@ -432,6 +438,7 @@ class Store {
 
     std::unique_ptr<db::Backend> db_;
     std::string path_;
+    std::string short_name_;
     std::string target_;
     std::string user_;
     bool created_ = false;

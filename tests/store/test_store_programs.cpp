@@ -189,6 +189,45 @@ TEST_P(StorePrograms, SaveReadListHistory) {
     EXPECT_EQ(seen, 3);
 }
 
+// A text of the current one's size is compared with it (by the server on
+// PostgreSQL, as it writes the revision): long texts, stored compressed,
+// differing in their last byte.
+TEST_P(StorePrograms, SaveTellsTextsOfTheSameSizeApart) {
+    test::Place t(GetParam());
+    auto s = test::open_store(t / "p.db");
+    std::string a = "%40 (LONG)\n";
+    for (int b = 1; b <= 4000; ++b)
+        a += "N" + std::to_string(b) + " G1 X" + std::to_string(b % 97) + "\n";
+    a += "M2\n";
+    std::string b = a;
+    b[b.size() - 2] = '3';  // M3
+    ASSERT_EQ(s->save(40, a, kNew, "").value.status, SaveStatus::created);
+    auto r = s->save(40, a, 1, "");
+    EXPECT_EQ(r.value.status, SaveStatus::unchanged);
+    EXPECT_EQ(r.value.revision, 1);
+    r = s->save(40, b, 1, "");
+    EXPECT_EQ(r.value.status, SaveStatus::saved);
+    EXPECT_EQ(r.value.revision, 2);
+    // Based on r1, the current text: unchanged; another text: a conflict.
+    EXPECT_EQ(s->save(40, b, 1, "").value.status, SaveStatus::unchanged);
+    r = s->save(40, a, 1, "");
+    EXPECT_EQ(r.value.status, SaveStatus::conflict);
+    EXPECT_EQ(r.value.revision, 3);
+    EXPECT_EQ(s->read(40).value.info.conflict, 3);
+    // The current text saved on the current revision settles the conflict.
+    r = s->save(40, b, 2, "");
+    EXPECT_EQ(r.value.status, SaveStatus::unchanged);
+    EXPECT_EQ(s->read(40).value.info.conflict, 0);
+    ASSERT_TRUE(s->remove(40).ok());  // r4
+    r = s->save(40, b, kNew, "");
+    EXPECT_EQ(r.value.status, SaveStatus::created);
+    EXPECT_EQ(r.value.revision, 5);
+    EXPECT_EQ(s->read(40).value.text, b);
+    EXPECT_EQ(s->read(40, 3).value.text, a);
+    EXPECT_EQ(s->history(40).value.size(), 5u);
+    EXPECT_EQ(s->integrity_check().value, "ok");
+}
+
 TEST_P(StorePrograms, ConflictKeepsBothAndIsResolvedByRestore) {
     test::Place t(GetParam());
     auto s = test::open_store(t / "p.db");

@@ -133,6 +133,70 @@ TEST_P(StoreMany, ThirtyWritersLoseNothingAndReportConflicts) {
     }
 }
 
+// Imports at once, of the same numbers and of numbers of their own, each
+// hundreds of programs (in bulk, COPY on a server): each import whole, once,
+// its programs new or a new revision of the others', never mixed.
+TEST_P(StoreMany, ImportsAtOnceEachLandWhole) {
+    test::Place t(GetParam());
+    const std::string db = t / "imports.db";
+    test::open_store(db);
+    constexpr int kImporters = 8, kShared = 150, kOwn = 150;
+    std::atomic<int> ready{0}, failures{0};
+    std::atomic<int64_t> retried{0};
+    auto importer = [&](int i) {
+        Options o;
+        o.user = "importer" + std::to_string(i);
+        o.busy_timeout_ms = 30000;
+        auto r = Store::open(db, o);
+        if (!r.ok()) {
+            ++failures;
+            return;
+        }
+        std::vector<Piece> pieces;
+        for (int n = 2000; n < 2000 + kShared; ++n)
+            pieces.push_back({n, program_text(n, o.user), "import shared.iso"});
+        for (int n = 0; n < kOwn; ++n) {
+            const int number = 10000 + i * 1000 + n;
+            pieces.push_back({number, program_text(number, o.user), "import own.iso"});
+        }
+        ++ready;
+        while (ready < kImporters) std::this_thread::yield();
+        auto saved = r.value->save_all(pieces);
+        if (!saved.ok()) {
+            ++failures;
+            ADD_FAILURE() << saved.error.message;
+        }
+        retried += r.value->retried();
+    };
+    std::vector<std::thread> threads;
+    for (int i = 0; i < kImporters; ++i) threads.emplace_back(importer, i);
+    for (auto& th : threads) th.join();
+    ASSERT_EQ(failures.load(), 0);
+    auto s = test::open_store(db);
+    EXPECT_EQ(s->list().value.size(), size_t(2 + kShared + kImporters * kOwn));
+    // The imports one after the other: every shared program has a revision
+    // of each, in the same order for all of them.
+    std::vector<std::string> first_order;
+    for (int n = 2000; n < 2000 + kShared; ++n) {
+        auto h = s->history(n).value;
+        ASSERT_EQ(h.size(), size_t(kImporters)) << n;
+        std::vector<std::string> order;
+        for (const auto& rev : h) {
+            EXPECT_EQ(rev.based_on, rev.revision - 1);
+            order.push_back(rev.who);
+        }
+        if (first_order.empty()) first_order = order;
+        EXPECT_EQ(order, first_order) << n;
+        EXPECT_EQ(s->read(n).value.text, program_text(n, h.back().who));
+    }
+    for (int i = 0; i < kImporters; ++i)
+        EXPECT_EQ(s->history(10000 + i * 1000 + kOwn - 1).value.size(), 1u);
+    EXPECT_EQ(s->integrity_check().value, "ok");
+    if (GetParam() == "postgresql") {
+        EXPECT_GT(retried.load(), 0);
+    }
+}
+
 // A console follows the others' commits, not its own.
 TEST_P(StoreMany, AnotherConsolesCommitIsHeard) {
     test::Place t(GetParam());
