@@ -63,8 +63,12 @@ struct Profile {
 struct ExactStop {
     Loc l;
 };
+struct Wait {
+    Loc l;
+    double s;
+};
 using Event = std::variant<MoveEvent, SpindleEvent, Dwell, Tool, Coolant, Stop, Message, End, Stock,
-                           Profile, ExactStop>;
+                           Profile, ExactStop, Wait>;
 
 // Hands an event to the next sink; a move not planned (one of no length)
 // starts at `clock` and takes no time.
@@ -85,6 +89,7 @@ struct Deliver {
     void operator()(Stock& e) const { to.stock(e.l, e.zr); }
     void operator()(Profile& e) const { to.profile(e.l, e.e); }
     void operator()(ExactStop& e) const { to.exact_stop(e.l); }
+    void operator()(Wait& e) const { to.wait(e.l, e.s); }
 };
 }  // namespace
 
@@ -275,6 +280,8 @@ void PlanSink::planned(const Segment& s) {
     e.plan_start = start;
     e.plan_seconds = s.timing.seconds;
     e.plan_peak = s.timing.peak * 60;
+    e.plan_entry = s.entry * 60;
+    e.plan_exit = s.exit * 60;
     next_->move(e);
     q.pop_front();
     while (!q.empty() && !q.front().pending) {
@@ -284,7 +291,7 @@ void PlanSink::planned(const Segment& s) {
 }
 
 bool PlanSink::other() {
-    if (planner_.held() && ++others_ > kMaxOthers) halt(false);
+    if (planner_.held() && ++others_ > kMaxOthers) halt(false, Loc{});
     return next_ != nullptr;
 }
 
@@ -298,20 +305,24 @@ void PlanSink::pass(Ev&& ev) {
     }
 }
 
-void PlanSink::halt(bool settle) {
+void PlanSink::halt(bool settle, const Loc& l) {
     planner_.stop();
     have_last_ = false;
-    if (settle && moved_) wait(m_.in_position);
+    if (settle && moved_) wait(l, m_.in_position);
     moved_ = false;
 }
 
-void PlanSink::wait(double seconds) {
+// The axes wait at rest: counted, and told to the next sink (the console
+// waits as long).
+void PlanSink::wait(const Loc& l, double seconds) {
+    if (seconds <= 0) return;
     report_.seconds += seconds;
     report_.waits += seconds;
+    if (next_) pass(Wait{l, seconds});
 }
 
 void PlanSink::dwell(const Loc& l, double seconds) {
-    halt(true);
+    halt(true, l);
     report_.seconds += seconds;
     report_.feed_seconds += seconds;
     if (other()) pass(Dwell{l, seconds});
@@ -319,7 +330,7 @@ void PlanSink::dwell(const Loc& l, double seconds) {
 
 void PlanSink::tool(const Loc& l, int t, int d, double seconds, bool m6) {
     if (m6) {
-        halt(true);
+        halt(true, l);
         report_.seconds += seconds;
         report_.feed_seconds += seconds;
         tool_ = t;
@@ -332,15 +343,16 @@ void PlanSink::tool(const Loc& l, int t, int d, double seconds, bool m6) {
 // G96 the speed follows the diameter as the tool moves, without a stop.
 void PlanSink::spindle(const SpindleEvent& e) {
     const bool turns = e.dir != sp_dir_;
+    double change = 0;
     if (turns || (!e.css && e.rpm != sp_rpm_)) {
-        halt(true);
+        halt(true, e.loc);
         const bool reverses = (sp_dir_ == 3 && e.dir == 4) || (sp_dir_ == 4 && e.dir == 3);
-        const double change = reverses ? sp_rpm_ + e.rpm : std::fabs(e.rpm - sp_rpm_);
-        if (m_.spindle_accel > 0) wait(change / m_.spindle_accel);
+        change = reverses ? sp_rpm_ + e.rpm : std::fabs(e.rpm - sp_rpm_);
     }
     sp_dir_ = e.dir;
     sp_rpm_ = e.rpm;
     if (other()) pass(SpindleEvent(e));
+    if (m_.spindle_accel > 0) wait(e.loc, change / m_.spindle_accel);
 }
 
 void PlanSink::coolant(const Loc& l, bool m7, bool m8) {
@@ -348,7 +360,7 @@ void PlanSink::coolant(const Loc& l, bool m7, bool m8) {
 }
 
 void PlanSink::stop(const Loc& l, int m) {
-    halt(true);
+    halt(true, l);
     if (other()) pass(Stop{l, m});
 }
 
@@ -357,7 +369,7 @@ void PlanSink::message(const Loc& l, int channel, std::string_view text) {
 }
 
 void PlanSink::end(const Loc& l, int m) {
-    halt(false);
+    halt(false, l);
     if (other()) pass(End{l, m});
 }
 
@@ -370,12 +382,12 @@ void PlanSink::profile(const Loc& l, const ProfileElem& e) {
 }
 
 void PlanSink::exact_stop(const Loc& l) {
-    halt(true);
+    halt(true, l);
     if (other()) pass(ExactStop{l});
 }
 
 void PlanSink::finish() {
-    halt(false);
+    halt(false, Loc{});
 }
 
 }  // namespace pupitre::plan
