@@ -44,8 +44,10 @@ struct MoveEvent {
     double min_block = 0;
     // What the planner made of the move, when one planned it (core/plan,
     // PlanSink): its start on the run's clock, its duration with the
-    // machine's accelerations (s) and its highest speed (mm/min); -1 before.
+    // machine's accelerations (s), its highest speed and its speeds at its
+    // start and end (mm/min); -1 before.
     double plan_start = -1, plan_seconds = -1, plan_peak = -1;
+    double plan_entry = 0, plan_exit = 0;
 };
 
 struct SpindleEvent {
@@ -82,6 +84,11 @@ class MachineSink {
     // 000:7596; a change of plane; a canned cycle's pass): the planner
     // (core/plan) ends its look-ahead at rest.
     virtual void exact_stop(const Loc&) {}
+    // The machine waits, its axes at rest: an exact stop settling, the spindle
+    // reaching its speed. A planner's (core/plan) to the sink after it, so
+    // that the moves' start, entry, peak and exit and these waits make the
+    // whole timeline (the trace writes the moves' alone).
+    virtual void wait(const Loc&, double /*seconds*/) {}
     // The rough stock of a G64 cycle, (Z, X as a radius) program points, for the
     // graphic test's stock outline.
     virtual void stock(const Loc&, const std::vector<std::array<double, 2>>& /*zr*/) {}
@@ -116,6 +123,7 @@ class TeeSink final : public MachineSink {
         a_.profile(l, p), b_.profile(l, p);
     }
     void exact_stop(const Loc& l) override { a_.exact_stop(l), b_.exact_stop(l); }
+    void wait(const Loc& l, double s) override { a_.wait(l, s), b_.wait(l, s); }
 
   private:
     MachineSink& a_;

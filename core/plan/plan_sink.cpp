@@ -10,6 +10,7 @@
 #include <variant>
 
 #include "core/geometry/geometry.hpp"
+#include "core/plan/held.hpp"
 
 namespace pupitre::plan {
 
@@ -24,48 +25,6 @@ constexpr double kArcNormal = 0.8660254037844386;
 // motion stops (a program that only talks for so long is not moving).
 constexpr long kMaxOthers = 1000;
 
-// Held events, as their values.
-struct Dwell {
-    Loc l;
-    double s;
-};
-struct Tool {
-    Loc l;
-    int t, d;
-    double s;
-    bool m6;
-};
-struct Coolant {
-    Loc l;
-    bool m7, m8;
-};
-struct Stop {
-    Loc l;
-    int m;
-};
-struct Message {
-    Loc l;
-    int ch;
-    std::string text;
-};
-struct End {
-    Loc l;
-    int m;
-};
-struct Stock {
-    Loc l;
-    std::vector<std::array<double, 2>> zr;
-};
-struct Profile {
-    Loc l;
-    ProfileElem e;
-};
-struct ExactStop {
-    Loc l;
-};
-using Event = std::variant<MoveEvent, SpindleEvent, Dwell, Tool, Coolant, Stop, Message, End, Stock,
-                           Profile, ExactStop>;
-
 // Hands an event to the next sink; a move not planned (one of no length)
 // starts at `clock` and takes no time.
 struct Deliver {
@@ -75,16 +34,10 @@ struct Deliver {
         if (e.plan_seconds < 0) e.plan_start = clock, e.plan_seconds = 0, e.plan_peak = 0;
         to.move(e);
     }
-    void operator()(SpindleEvent& e) const { to.spindle(e); }
-    void operator()(Dwell& e) const { to.dwell(e.l, e.s); }
-    void operator()(Tool& e) const { to.tool(e.l, e.t, e.d, e.s, e.m6); }
-    void operator()(Coolant& e) const { to.coolant(e.l, e.m7, e.m8); }
-    void operator()(Stop& e) const { to.stop(e.l, e.m); }
-    void operator()(Message& e) const { to.message(e.l, e.ch, e.text); }
-    void operator()(End& e) const { to.end(e.l, e.m); }
-    void operator()(Stock& e) const { to.stock(e.l, e.zr); }
-    void operator()(Profile& e) const { to.profile(e.l, e.e); }
-    void operator()(ExactStop& e) const { to.exact_stop(e.l); }
+    template <class Ev>
+    void operator()(Ev& e) const {
+        held::Deliver{to}(e);
+    }
 };
 }  // namespace
 
@@ -92,7 +45,7 @@ struct Deliver {
 // not yet planned.
 struct PlanSink::Queue {
     struct Entry {
-        Event ev;
+        held::Event ev;
         bool pending = false;  // a move the planner holds
     };
     std::deque<Entry> q;
@@ -275,6 +228,8 @@ void PlanSink::planned(const Segment& s) {
     e.plan_start = start;
     e.plan_seconds = s.timing.seconds;
     e.plan_peak = s.timing.peak * 60;
+    e.plan_entry = s.entry * 60;
+    e.plan_exit = s.exit * 60;
     next_->move(e);
     q.pop_front();
     while (!q.empty() && !q.front().pending) {
@@ -284,98 +239,103 @@ void PlanSink::planned(const Segment& s) {
 }
 
 bool PlanSink::other() {
-    if (planner_.held() && ++others_ > kMaxOthers) halt(false);
+    if (planner_.held() && ++others_ > kMaxOthers) halt(false, Loc{});
     return next_ != nullptr;
 }
 
 template <class Ev>
 void PlanSink::pass(Ev&& ev) {
     if (planner_.held() == 0) {
-        Event now(std::forward<Ev>(ev));
+        held::Event now(std::forward<Ev>(ev));
         std::visit(Deliver{*next_, report_.seconds}, now);
     } else {
-        queue_->q.push_back({Event(std::forward<Ev>(ev)), false});
+        queue_->q.push_back({held::Event(std::forward<Ev>(ev)), false});
     }
 }
 
-void PlanSink::halt(bool settle) {
+void PlanSink::halt(bool settle, const Loc& l) {
     planner_.stop();
     have_last_ = false;
-    if (settle && moved_) wait(m_.in_position);
+    if (settle && moved_) wait(l, m_.in_position);
     moved_ = false;
 }
 
-void PlanSink::wait(double seconds) {
+// The axes wait at rest: counted, and told to the next sink (the console
+// waits as long).
+void PlanSink::wait(const Loc& l, double seconds) {
+    if (seconds <= 0) return;
     report_.seconds += seconds;
     report_.waits += seconds;
+    if (next_) pass(held::Wait{l, seconds});
 }
 
 void PlanSink::dwell(const Loc& l, double seconds) {
-    halt(true);
+    halt(true, l);
     report_.seconds += seconds;
     report_.feed_seconds += seconds;
-    if (other()) pass(Dwell{l, seconds});
+    if (other()) pass(held::Dwell{l, seconds});
 }
 
 void PlanSink::tool(const Loc& l, int t, int d, double seconds, bool m6) {
     if (m6) {
-        halt(true);
+        halt(true, l);
         report_.seconds += seconds;
         report_.feed_seconds += seconds;
         tool_ = t;
         report_.tools.change();
     }
-    if (other()) pass(Tool{l, t, d, seconds, m6});
+    if (other()) pass(held::Tool{l, t, d, seconds, m6});
 }
 
 // A start, a stop, a reversal or a new speed waits for the spindle; under
 // G96 the speed follows the diameter as the tool moves, without a stop.
 void PlanSink::spindle(const SpindleEvent& e) {
     const bool turns = e.dir != sp_dir_;
+    double change = 0;
     if (turns || (!e.css && e.rpm != sp_rpm_)) {
-        halt(true);
+        halt(true, e.loc);
         const bool reverses = (sp_dir_ == 3 && e.dir == 4) || (sp_dir_ == 4 && e.dir == 3);
-        const double change = reverses ? sp_rpm_ + e.rpm : std::fabs(e.rpm - sp_rpm_);
-        if (m_.spindle_accel > 0) wait(change / m_.spindle_accel);
+        change = reverses ? sp_rpm_ + e.rpm : std::fabs(e.rpm - sp_rpm_);
     }
     sp_dir_ = e.dir;
     sp_rpm_ = e.rpm;
     if (other()) pass(SpindleEvent(e));
+    if (m_.spindle_accel > 0) wait(e.loc, change / m_.spindle_accel);
 }
 
 void PlanSink::coolant(const Loc& l, bool m7, bool m8) {
-    if (other()) pass(Coolant{l, m7, m8});
+    if (other()) pass(held::Coolant{l, m7, m8});
 }
 
 void PlanSink::stop(const Loc& l, int m) {
-    halt(true);
-    if (other()) pass(Stop{l, m});
+    halt(true, l);
+    if (other()) pass(held::Stop{l, m});
 }
 
 void PlanSink::message(const Loc& l, int channel, std::string_view text) {
-    if (other()) pass(Message{l, channel, std::string(text)});
+    if (other()) pass(held::Message{l, channel, std::string(text)});
 }
 
 void PlanSink::end(const Loc& l, int m) {
-    halt(false);
-    if (other()) pass(End{l, m});
+    halt(false, l);
+    if (other()) pass(held::End{l, m});
 }
 
 void PlanSink::stock(const Loc& l, const std::vector<std::array<double, 2>>& zr) {
-    if (other()) pass(Stock{l, zr});
+    if (other()) pass(held::Stock{l, zr});
 }
 
 void PlanSink::profile(const Loc& l, const ProfileElem& e) {
-    if (other()) pass(Profile{l, e});
+    if (other()) pass(held::Profile{l, e});
 }
 
 void PlanSink::exact_stop(const Loc& l) {
-    halt(true);
-    if (other()) pass(ExactStop{l});
+    halt(true, l);
+    if (other()) pass(held::ExactStop{l});
 }
 
 void PlanSink::finish() {
-    halt(false);
+    halt(false, Loc{});
 }
 
 }  // namespace pupitre::plan

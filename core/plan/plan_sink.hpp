@@ -54,8 +54,8 @@ class PlanSink final : public MachineSink, private Planner::Receiver {
     void planned(const Segment&) override;
     // The motion stops at rest; `settle`: an exact stop the program or the
     // machine asks for, which waits the profile's in-position time.
-    void halt(bool settle);
-    void wait(double seconds);
+    void halt(bool settle, const Loc& l);
+    void wait(const Loc& l, double seconds);
     using Dir = std::array<double, kAxes>;
     double junction_sq(const Dir& last, const Dir& in, double eg) const;
     // How much the axes bind a path: each its travel over its own limit, the

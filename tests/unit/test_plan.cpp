@@ -218,6 +218,30 @@ TEST(Plan, EventsGoOnInOrderWithTheirTimes) {
     EXPECT_NEAR(o.moves[0].plan_peak, 6000, 1e-9);
 }
 
+// The moves' starts and durations, the dwells and tool changes, and the
+// waits the planner tells the next sink make the whole cycle time.
+struct Timeline final : MachineSink {
+    double end = 0, busy = 0;
+    bool in_order = true;
+    void move(const MoveEvent& e) override {
+        in_order = in_order && e.plan_start >= end - 1e-9;
+        end = std::max(end, e.plan_start + e.plan_seconds);
+        busy += e.plan_seconds;
+    }
+    void dwell(const Loc&, double s) override { busy += s; }
+    void tool(const Loc&, int, int, double s, bool m6) override { busy += m6 ? s : 0; }
+    void wait(const Loc&, double s) override { busy += s; }
+};
+
+TEST(Plan, TheWaitsCompleteTheTimeline) {
+    Timeline t;
+    Planned r("G1 X10 F6000\nS2000 M3\nG9 X20\nT1 M6\nG4 F1\nX30\nM5\n",
+              "in_position = 0.05\nspindle.accel = 1000\n", &t);
+    EXPECT_TRUE(t.in_order);
+    EXPECT_NEAR(t.busy, r.seconds(), 1e-9);
+    EXPECT_GT(r.sink->report().waits, 4.0);  // 2 s to reach S2000 and 2 s to stop, settling
+}
+
 TEST(Profile, RampsAndTimings) {
     plan::Limits l{500, 0};
     EXPECT_NEAR(plan::ramp_time(100, l), 0.2, 1e-12);
