@@ -163,11 +163,15 @@ void mill_surfaces(const PartScene& s, Surfaces& out, bool paper) {
     l0.nx = m.nx, l0.ny = m.ny, l0.cell = m.cell, l0.x0 = m.stock.lo[0], l0.y0 = m.stock.lo[1];
     l0.h = m.height;
     l0.c.resize(l0.h.size());
+    // The depth scale in 1024 steps (a table: a million cells).
+    std::array<Colour, 1025> ramp;
+    for (size_t k = 0; k < ramp.size(); ++k) ramp[k] = depth_colour(double(k) / 1024);
+    const double per_step = 1024 / out.legend.depth;
     for (size_t k = 0; k < l0.h.size(); ++k) {
         const double d = top - l0.h[k];
         l0.c[k] = out.paint == Paint::deviation ? kUnmarked
                   : d < 5e-4                    ? kUncut
-                                                : depth_colour(d / out.legend.depth);
+                             : ramp[size_t(std::min(d * per_step + 0.5, 1024.0))];
     }
     out.anchor.assign(s.dims.size(), {kNaN, kNaN, kNaN});
     for (size_t i = 0; out.paint == Paint::deviation && i < s.dims.size(); ++i) {
