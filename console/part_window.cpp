@@ -219,11 +219,10 @@ void PartWindow::fill(pages::View& v, const Sim& sim, const render::Drawing* dra
     p.keys = mill ? tr("Left/Right turn, Up/Down tilt, +/- zoom, Shift+arrows pan, v view, f fit, "
                        "c paint; :part export FILE")
                   : tr("+/- zoom, Shift+arrows pan, f fit, c paint; :part export FILE");
-    Asked& a = *asked_;
-    Job want;
     // The lines under the picture: a line for each dimension, one for the
     // lathe's stick-out (its number after :submit only).
     p.info = pages::part_info((drawing ? drawing->dims.size() : 0) + (!mill && numbers ? 1 : 0));
+    Job want;
     const pages::Rect area = pages::part_area(page, p.info);
     want.look = look(mill);
     want.paint = drawing ? paint_ : render::Paint::depth;
@@ -231,8 +230,19 @@ void PartWindow::fill(pages::View& v, const Sim& sim, const render::Drawing* dra
     want.colours = screen.colours, want.ascii = screen.ascii, want.cells = !screen.images();
     want.protocol = screen.images() ? screen.protocol : ImageProtocol::none;
     picture_size(area, screen, want.w, want.h);
+    ask(want, *w, sim, drawing);
+    p.title = title_of(want.look, nullptr, mill, drawing ? drawing->name : std::string());
+    show(p, numbers);
+}
+
+// Asks the worker for `want` when the part, the tool (not while a program
+// runs), the drawing or the look changed since the last picture asked
+// for, and the worker is idle (else a later frame asks).
+void PartWindow::ask(Job& want, const workshop::Workshop& w, const Sim& sim,
+                     const render::Drawing* drawing) const {
+    Asked& a = *asked_;
     const std::string name = drawing ? drawing->name : std::string();
-    const bool material = w != a.shop || w->generation() != a.generation || name != a.drawing;
+    const bool material = &w != a.shop || w.generation() != a.generation || name != a.drawing;
     const bool moved = sim.state() != RunState::running && sim.om() != a.tool;
     const bool looks = want.look != a.look || want.paint != a.paint || want.w != a.w ||
                        want.h != a.h || want.cols != a.cols || want.rows != a.rows ||
@@ -242,23 +252,26 @@ void PartWindow::fill(pages::View& v, const Sim& sim, const render::Drawing* dra
         std::lock_guard lk(mu_);
         idle = !next_ && !working_;
     }
-    if ((material || moved || looks || !a.scene) && idle) {
-        if (material || moved || !a.scene) {
-            a.scene = render::snapshot(*w, sim.om(), drawing);
-            a.shop = w, a.generation = w->generation(), a.tool = sim.om(), a.drawing = name;
-        }
-        a.look = want.look, a.paint = want.paint, a.w = want.w, a.h = want.h;
-        a.cols = want.cols, a.rows = want.rows, a.colours = want.colours, a.ascii = want.ascii;
-        a.cells = want.cells;
-        want.scene = a.scene;
-        want.number = ++a.number;
-        post(std::make_unique<Job>(want));
+    if (!(material || moved || looks || !a.scene) || !idle) return;
+    if (material || moved || !a.scene) {
+        a.scene = render::snapshot(w, sim.om(), drawing);
+        a.shop = &w, a.generation = w.generation(), a.tool = sim.om(), a.drawing = name;
     }
+    a.look = want.look, a.paint = want.paint, a.w = want.w, a.h = want.h;
+    a.cols = want.cols, a.rows = want.rows, a.colours = want.colours, a.ascii = want.ascii;
+    a.cells = want.cells;
+    want.scene = a.scene;
+    want.number = ++a.number;
+    post(std::make_unique<Job>(want));
+}
+
+// The last picture made, onto the page: its cells, its scale, its lines.
+void PartWindow::show(pages::PartView& p, bool numbers) const {
+    Asked& a = *asked_;
     {
         std::lock_guard lk(mu_);
         a.shown = made_;
     }
-    p.title = title_of(want.look, nullptr, mill, name);
     if (!a.shown) {
         p.note = tr("drawing the part…");
         return;

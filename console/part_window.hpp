@@ -72,8 +72,9 @@ class PartWindow {
     struct Made;
     void work();
     void post(std::unique_ptr<Job> job) const;
-    std::shared_ptr<const render::PartScene> scene_for(const Sim& sim,
-                                                       const render::Drawing* drawing) const;
+    void ask(Job& want, const workshop::Workshop& w, const Sim& sim,
+             const render::Drawing* drawing) const;
+    void show(pages::PartView& p, bool numbers) const;
 
     render::PartMode mode_lathe_ = render::PartMode::section, mode_mill_ = render::PartMode::iso;
     render::Camera cam_;

@@ -249,6 +249,33 @@ bool Terminal::resized() {
     return true;
 }
 
+namespace {
+
+// A style's attributes without colours (the mono theme).
+attr_t mono_attr(pages::Style st) {
+    using S = pages::Style;
+    switch (st) {
+        case S::title:
+        case S::big:
+        case S::softkey_on:  // the other soft keys are in reverse
+            return A_BOLD;
+        case S::dim:
+            return A_DIM;
+        case S::select:
+        case S::status:
+        case S::softkey:
+        case S::ok:
+            return A_REVERSE;
+        case S::alarm:
+        case S::warn:
+            return A_REVERSE | A_BOLD;
+        default:
+            return A_NORMAL;
+    }
+}
+
+}  // namespace
+
 void Terminal::draw(const pages::Canvas& c, int cx, int cy) {
     using S = pages::Style;
     // The pictures' pairs begin again while half are free: a frame never
@@ -263,30 +290,7 @@ void Terminal::draw(const pages::Canvas& c, int cx, int cy) {
             attr_t a = A_NORMAL;
             short pair = 0;
             if (theme_ == Theme::mono) {
-                switch (cell.st) {
-                    case S::title:
-                    case S::big:
-                        a = A_BOLD;
-                        break;
-                    case S::softkey_on:
-                        a = A_BOLD;
-                        break;  // the others are in reverse
-                    case S::dim:
-                        a = A_DIM;
-                        break;
-                    case S::select:
-                    case S::status:
-                    case S::softkey:
-                    case S::ok:
-                        a = A_REVERSE;
-                        break;
-                    case S::alarm:
-                    case S::warn:
-                        a = A_REVERSE | A_BOLD;
-                        break;
-                    default:
-                        break;
-                }
+                a = mono_attr(cell.st);
             } else {
                 pair = pair_of(cell.st);
                 if (cell.st == S::title || cell.st == S::big || cell.st == S::alarm ||

@@ -26,6 +26,8 @@ const char* const kGettingStarted[] = {
        ":measure dia Z-20 reads the part (pupitre-setup(5))."),
     N_("   On the machining centre :setup mill puts a block in the vice; :measure depth X10 Y40 "
        "reads it from its corner."),
+    N_("7. See the part: Alt-v (or :part) shows it in colour as cut, in 3-D on the machining "
+       "centre (the arrows turn it); :part export FILE.pdf puts it on paper."),
     N_("The prompt says where typed text goes (IMD>, PREF>, D5>, EDIT>); Escape empties it. "
        "Commands start with ':' (Tab completes). RAZ is F12 (or Alt-r), off the F1-F10 row."),
 };

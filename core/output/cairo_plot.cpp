@@ -469,8 +469,12 @@ void sheet_labels(cairo_t* cr, const PartSheet& s, double k, double x0, double y
         set_colour(cr, l.colour);
         cairo_rectangle(cr, kColumn, y - 2.8, 3, 3);
         cairo_fill(cr);
-        sheet_text(cr, kColumn + 4.5, y, 3, l.text);
-        y += 8;
+        // "SPEC: READING": the request on its line, the reading under it.
+        const size_t colon = l.text.find(": ");
+        sheet_text(cr, kColumn + 4.5, y, 3, l.text.substr(0, colon), true);
+        if (colon != std::string::npos)
+            sheet_text(cr, kColumn + 4.5, y + 4, 2.8, l.text.substr(colon + 2));
+        y += 11;
     }
 }
 

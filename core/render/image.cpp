@@ -12,8 +12,8 @@ namespace pupitre::render {
 
 Colour shade(Colour c, double k) {
     auto ch = [&](unsigned v) {
-        double x = k <= 1 ? v * std::max(0.0, k) : v + (255 - v) * std::min(1.0, k - 1);
-        return unsigned(std::clamp(std::lround(x), 0L, 255L));
+        const double x = k <= 1 ? v * std::max(0.0, k) : v + (255 - v) * std::min(1.0, k - 1);
+        return unsigned(std::clamp(x + 0.5, 0.0, 255.0));  // x >= 0: no library round
     };
     return rgb(ch(red(c)), ch(green(c)), ch(blue(c)));
 }
@@ -21,7 +21,7 @@ Colour shade(Colour c, double k) {
 Colour mix(Colour a, Colour b, double t) {
     t = std::clamp(t, 0.0, 1.0);
     auto ch = [&](unsigned x, unsigned y) {
-        return unsigned(std::lround(x + (double(y) - x) * t));
+        return unsigned(x + (double(y) - x) * t + 0.5);  // never below 0
     };
     return rgb(ch(red(a), red(b)), ch(green(a), green(b)), ch(blue(a), blue(b)));
 }

@@ -90,36 +90,51 @@ Vector3d wall_normal(const Cam& c, const MillSampler& sample, double bx, double 
     return across_x ? Vector3d(-sx, 0, 0) : Vector3d(0, -sy, 0);
 }
 
+// The least integer not below v (std::ceil is a library call on a
+// plain x86-64 build).
+inline int ceil_int(double v) {
+    const int i = int(v);
+    return i + (v > i);
+}
+
 // One column of pixels, front to back.
 void column(const Cam& c, const MillSampler& sample, double t0, double t1, double floor_z, int x,
             Image& img, std::vector<float>& zbuf) {
     const double sx = c.csx + (x + 0.5 - c.w / 2.0) * c.s;
     const double bx = sx * c.r.x(), by = sx * c.r.y();
-    const double dt = c.s;
+    // A step moves the top's projection by at most 0.9 pixel (sp dt).
+    const double dt = std::min(0.9 * c.s / c.sp, 3 * c.s);
+    const double inv_s = 1 / c.s, row0 = c.csy * inv_s + c.h / 2.0 - 0.5;
     int filled = c.h;  // rows from here down are drawn
     float before = -std::numeric_limits<float>::infinity();
     Top t;
+    // The last cell lit, and its colour: a cell spans several steps.
+    const Level* lit_level = nullptr;
+    int lit_i = -1, lit_j = -1;
+    Colour top_c = 0;
     for (double tt = t0; tt <= t1 && filled > 0; tt += dt) {
         if (!sample.at(bx + tt * c.a.x(), by + tt * c.a.y(), t)) {
             before = -std::numeric_limits<float>::infinity();
             continue;
         }
-        const double top = c.sp * tt + c.cp * t.h;
-        const int first = std::max(0, int(std::ceil((c.csy - top) / c.s + c.h / 2.0 - 0.5)));
+        const int first = std::max(0, ceil_int(row0 - (c.sp * tt + c.cp * t.h) * inv_s));
         int last = filled;
         if (std::isinf(before))  // the scene's front: a slab, not a wall to the picture's foot
-            last = std::min(
-                last, int(std::ceil((c.csy - c.sp * tt - c.cp * floor_z) / c.s + c.h / 2.0 - 0.5)));
+            last = std::min(last, ceil_int(row0 - (c.sp * tt + c.cp * floor_z) * inv_s));
         if (first < last) {
-            const Vector3d n = Vector3d(-t.gx, -t.gy, 1).normalized();
-            const Colour top_c = shade(t.c, lit(c, n));
-            const bool step = t.h - before > 1.5 * dt;
-            const Vector3d wn = step && !std::isinf(before)
-                                    ? wall_normal(c, sample, bx, by, tt - dt, tt, t)
-                                    : Vector3d(-c.a);
-            const Colour wall_c = shade(t.c, lit(c, wn));
+            if (t.level != lit_level || t.i != lit_i || t.j != lit_j) {
+                sample.slope(t);
+                top_c = shade(t.c, lit(c, Vector3d(-t.gx, -t.gy, 1).normalized()));
+                lit_level = t.level, lit_i = t.i, lit_j = t.j;
+            }
+            const bool step = t.h - before > 1.5 * dt && last - first > 1;
+            const Colour wall_c =
+                step ? shade(t.c, lit(c, std::isinf(before)
+                                             ? Vector3d(-c.a)
+                                             : wall_normal(c, sample, bx, by, tt - dt, tt, t)))
+                     : top_c;
             for (int y = first; y < last; ++y) {
-                img.set(x, y, y == first || !step ? top_c : wall_c);
+                img.set(x, y, y == first ? top_c : wall_c);
                 const double hy = (c.row_y(y) - c.sp * tt) / c.cp;
                 zbuf[size_t(y) * size_t(c.w) + size_t(x)] = float(c.cp * tt - c.sp * hy);
             }
@@ -140,59 +155,113 @@ void terrain(const MillScene& m, const Surfaces& sf, const Cam& c, Image& img,
         t0 = std::min(t0, t), t1 = std::max(t1, t);
     }
     // Cells half a step wide: a wall seen aslant stays straight, not combed.
+    // Only where a top can show on the picture: with every top between the
+    // floor's and the highest, sp t + cp h lies within the picture's rows.
+    double lo[3], hi[3];
+    mill_box(m, lo, hi);
+    const double floor_z = m.table_z - 15, top_z = std::max(hi[2], m.tip[2]);
+    const double y_top = c.csy + c.h / 2.0 * c.s, y_bottom = c.csy - c.h / 2.0 * c.s;
+    t0 = std::max(t0, (y_bottom - c.cp * top_z) / c.sp - c.s);
+    t1 = std::min(t1, (y_top - c.cp * floor_z) / c.sp + c.s);
     const MillSampler sample(m, sf, c.s / 2, true);
-    for (int x = 0; x < c.w; ++x) column(c, sample, t0, t1, m.table_z - 15, x, img, zbuf);
+    for (int x = 0; x < c.w; ++x) column(c, sample, t0, t1, floor_z, x, img, zbuf);
 }
 
-// A point of a surface, drawn where it is the nearest.
-void splat(const Cam& c, const Vector3d& p, Colour col, Image& img, std::vector<float>& zbuf) {
-    const V2 q = c.px(p);
-    const int x = int(std::floor(q[0])), y = int(std::floor(q[1]));
-    if (x < 0 || y < 0 || x >= c.w || y >= c.h) return;
-    float& z = zbuf[size_t(y) * size_t(c.w) + size_t(x)];
-    const double d = p.dot(c.v);
-    if (d >= z) return;
-    z = float(d);
-    img.set(x, y, col);
+// The cutter and its holder as a solid of revolution about its axis u from
+// the tip: the flute (a ball at its end when it is a ball end; a bull
+// nose's corner is too small to tell), the shank, the holder, and their
+// flat ends. Each pixel of its box casts the eye's ray at them.
+struct Tool {
+    Vector3d tip, u;
+    double r, ball, reach, holder, top, flute;
+};
+
+struct Hit {
+    double t = std::numeric_limits<double>::infinity();
+    Vector3d n;
+    double h = 0;  // how far above the tip
+};
+
+// The ray p + t d against the cylinder of radius `rho` about the axis,
+// between h0 and h1 above the tip.
+void cylinder(const Tool& k, const Vector3d& p, const Vector3d& d, double rho, double h0, double h1,
+              Hit& hit) {
+    const Vector3d w = p - k.tip;
+    const Vector3d dp = d - d.dot(k.u) * k.u, wp = w - w.dot(k.u) * k.u;
+    const double a = dp.squaredNorm(), b = 2 * wp.dot(dp), cc = wp.squaredNorm() - rho * rho;
+    const double disc = b * b - 4 * a * cc;
+    if (a < 1e-12 || disc < 0) return;
+    const double t = (-b - std::sqrt(disc)) / (2 * a);
+    const double h = (w + t * d).dot(k.u);
+    if (t >= hit.t || h < h0 || h > h1) return;
+    hit.t = t, hit.h = h, hit.n = (wp + t * dp).normalized();
 }
 
-// The cutter and its holder as points of their surface (those facing the
-// eye), half a pixel apart.
+// The disc (or ring, from r0 to r1) square to the axis at h above the tip.
+void disc(const Tool& k, const Vector3d& p, const Vector3d& d, double h, double r0, double r1,
+          double facing, Hit& hit) {
+    const double du = d.dot(k.u);
+    if (std::abs(du) < 1e-12) return;
+    const double t = (h - (p - k.tip).dot(k.u)) / du;
+    if (t >= hit.t) return;
+    const Vector3d q = p + t * d - k.tip - h * k.u;
+    const double r = q.norm();
+    if (r < r0 || r > r1) return;
+    hit.t = t, hit.h = h, hit.n = facing * k.u;
+}
+
+void sphere(const Tool& k, const Vector3d& p, const Vector3d& d, Hit& hit) {
+    const Vector3d w = p - (k.tip + k.ball * k.u);
+    const double b = w.dot(d), cc = w.squaredNorm() - k.ball * k.ball, disc = b * b - cc;
+    if (disc < 0) return;
+    const double t = -b - std::sqrt(disc);
+    const Vector3d q = w + t * d;
+    if (t >= hit.t || q.dot(k.u) > 0) return;
+    hit.t = t, hit.h = (p + t * d - k.tip).dot(k.u), hit.n = q.normalized();
+}
+
 void cutter(const MillScene& m, const Cam& c, const Palette& pal, Image& img,
             std::vector<float>& zbuf) {
     if (!m.has_cutter) return;
-    const Vector3d u = Vector3d(m.axis[0], m.axis[1], m.axis[2]).normalized();
-    const Vector3d tip(m.tip[0], m.tip[1], m.tip[2]);
-    const Vector3d e1 = u.unitOrthogonal(), e2 = u.cross(e1);
-    const double top = m.cutter.reach + 60;
-    double step = c.s / 2;
-    const double points = (top / step) * (kPi * m.cutter.holder / step);
-    if (points > 2e6) step *= std::sqrt(points / 2e6);
-    // The holder's top, where it faces the eye (seen from above).
-    if (u.dot(c.v) < 0)
-        for (double rho = 0; rho <= m.cutter.holder; rho += step) {
-            const int n = std::max(8, int(std::ceil(2 * kPi * rho / step)));
-            for (int k = 0; k < n; ++k) {
-                const double phi = 2 * kPi * k / n;
-                splat(c, tip + top * u + rho * (std::cos(phi) * e1 + std::sin(phi) * e2),
-                      shade(pal.cutter_holder, 0.35 + 0.75 * std::max(0.0, u.dot(c.light))), img,
-                      zbuf);
-            }
-        }
-    for (double hh = 0; hh <= top; hh += step) {
-        const double rho = hh < m.cutter.reach ? m.cutter.slice(hh) : m.cutter.holder;
-        const Colour base = hh < m.cutter.flute   ? pal.cutter
-                            : hh < m.cutter.reach ? shade(pal.cutter, 0.8)
-                                                  : pal.cutter_holder;
-        const int n = std::max(8, int(std::ceil(2 * kPi * rho / step)));
-        for (int k = 0; k < n; ++k) {
-            const double phi = 2 * kPi * k / n;
-            const Vector3d dir = std::cos(phi) * e1 + std::sin(phi) * e2;
-            if (dir.dot(c.v) > 0.05) continue;  // its back
-            splat(c, tip + hh * u + rho * dir,
-                  shade(base, 0.35 + 0.75 * std::max(0.0, dir.dot(c.light))), img, zbuf);
-        }
+    Tool k;
+    k.u = Vector3d(m.axis[0], m.axis[1], m.axis[2]).normalized();
+    k.tip = Vector3d(m.tip[0], m.tip[1], m.tip[2]);
+    k.r = m.cutter.radius, k.reach = m.cutter.reach, k.holder = m.cutter.holder;
+    k.ball = m.cutter.corner >= m.cutter.radius - 1e-9 ? m.cutter.radius : 0;
+    k.top = k.reach + 60, k.flute = m.cutter.flute;
+    // Its box on the picture.
+    const Vector3d e1 = k.u.unitOrthogonal(), e2 = k.u.cross(e1);
+    double x0 = 1e18, x1 = -1e18, y0 = 1e18, y1 = -1e18;
+    for (int n = 0; n < 8; ++n) {
+        const V2 q = c.px(k.tip + (n & 4 ? k.top : 0) * k.u + (n & 1 ? 1 : -1) * k.holder * e1 +
+                          (n & 2 ? 1 : -1) * k.holder * e2);
+        x0 = std::min(x0, q[0]), x1 = std::max(x1, q[0]), y0 = std::min(y0, q[1]),
+        y1 = std::max(y1, q[1]);
     }
+    const double front = k.tip.dot(c.v) - k.top - 2 * k.holder;
+    for (int y = std::max(0, int(y0)); y <= std::min(c.h - 1, int(y1)); ++y)
+        for (int x = std::max(0, int(x0)); x <= std::min(c.w - 1, int(x1)); ++x) {
+            const double sx = c.csx + (x + 0.5 - c.w / 2.0) * c.s;
+            const Vector3d p = sx * c.r + c.row_y(y) * c.u + front * c.v;
+            Hit hit;
+            cylinder(k, p, c.v, k.r, k.ball, k.reach, hit);
+            cylinder(k, p, c.v, k.holder, k.reach, k.top, hit);
+            if (k.ball > 0)
+                sphere(k, p, c.v, hit);
+            else
+                disc(k, p, c.v, 0, 0, k.r, -1, hit);
+            disc(k, p, c.v, k.reach, k.r, k.holder, -1, hit);
+            disc(k, p, c.v, k.top, 0, k.holder, 1, hit);
+            if (!std::isfinite(hit.t)) continue;
+            const double depth = (p + hit.t * c.v).dot(c.v);
+            float& z = zbuf[size_t(y) * size_t(c.w) + size_t(x)];
+            if (depth >= z) continue;
+            z = float(depth);
+            const Colour base = hit.h < k.flute   ? pal.cutter
+                                : hit.h < k.reach ? shade(pal.cutter, 0.8)
+                                                  : pal.cutter_holder;
+            img.set(x, y, shade(base, 0.35 + 0.75 * std::max(0.0, hit.n.dot(c.light))));
+        }
 }
 
 }  // namespace

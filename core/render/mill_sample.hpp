@@ -31,28 +31,28 @@ class MillSampler {
         size_t l = 0;
         while (l + 1 < sf.block.size() && sf.block[l + 1].cell <= mm) ++l;
         level_ = &sf.block[l];
+        inv_ = 1 / level_->cell, inv_around_ = 1 / sf.around.cell;
     }
     const Level& level() const { return *level_; }
-    // The top at (x, y): false beyond the table's part drawn.
+    // The top at (x, y) and its cell: false beyond the table's part drawn.
     bool at(double x, double y, Top& t) const {
         const bool in =
             x >= m_.stock.lo[0] && x < m_.stock.hi[0] && y >= m_.stock.lo[1] && y < m_.stock.hi[1];
-        return sample(in ? *level_ : sf_.around, x, y, t);
-    }
-
-  private:
-    // The gentler of the two one-sided slopes, none when they disagree.
-    static float minmod(float a, float b) {
-        if (a * b <= 0) return 0;
-        return std::abs(a) < std::abs(b) ? a : b;
-    }
-    bool sample(const Level& l, double x, double y, Top& t) const {
-        const int i = int(std::floor((x - l.x0) / l.cell)),
-                  j = int(std::floor((y - l.y0) / l.cell));
-        if (i < 0 || j < 0 || i >= l.nx || j >= l.ny) return false;
+        const Level& l = in ? *level_ : sf_.around;
+        const double fx = (x - l.x0) * (in ? inv_ : inv_around_),
+                     fy = (y - l.y0) * (in ? inv_ : inv_around_);
+        if (!(fx >= 0 && fy >= 0)) return false;
+        const int i = int(fx), j = int(fy);
+        if (i >= l.nx || j >= l.ny) return false;
         t.h = l.at(i, j);
         t.c = l.colour(i, j);
         t.i = i, t.j = j, t.level = &l;
+        return true;
+    }
+    // The slope at the top `t` found (gx, gy), asked only where it is drawn.
+    void slope(Top& t) const {
+        const Level& l = *t.level;
+        const int i = t.i, j = t.j;
         const int i0 = std::max(i - 1, 0), i1 = std::min(i + 1, l.nx - 1);
         const int j0 = std::max(j - 1, 0), j1 = std::min(j + 1, l.ny - 1);
         const float c = float(l.cell), h = t.h;
@@ -63,12 +63,19 @@ class MillSampler {
             t.gx = i1 > i0 ? float((l.at(i1, j) - l.at(i0, j)) / ((i1 - i0) * l.cell)) : 0;
             t.gy = j1 > j0 ? float((l.at(i, j1) - l.at(i, j0)) / ((j1 - j0) * l.cell)) : 0;
         }
-        return true;
+    }
+
+  private:
+    // The gentler of the two one-sided slopes, none when they disagree.
+    static float minmod(float a, float b) {
+        if (a * b <= 0) return 0;
+        return std::abs(a) < std::abs(b) ? a : b;
     }
     const MillScene& m_;
     const Surfaces& sf_;
     bool cliffs_ = false;
     const Level* level_;
+    double inv_ = 1, inv_around_ = 1;  // cells per mm
 };
 
 // The box the views fit: the block and its work-holding.

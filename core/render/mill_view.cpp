@@ -42,7 +42,9 @@ void mill_top(const PartScene& s, const Surfaces& sf, const Look& look, Picture&
         const double wy = cy + (img.h() / 2.0 - y - 0.5) * sc;
         for (int x = 0; x < img.w(); ++x) {
             const double wx = cx + (x + 0.5 - img.w() / 2.0) * sc;
-            if (sample.at(wx, wy, t)) img.set(x, y, shade(t.c, hillshade(t)));
+            if (!sample.at(wx, wy, t)) continue;
+            sample.slope(t);
+            img.set(x, y, shade(t.c, hillshade(t)));
         }
     }
     const Palette& pal = palette(look.paper);

@@ -163,11 +163,15 @@ void mill_surfaces(const PartScene& s, Surfaces& out, bool paper) {
     l0.nx = m.nx, l0.ny = m.ny, l0.cell = m.cell, l0.x0 = m.stock.lo[0], l0.y0 = m.stock.lo[1];
     l0.h = m.height;
     l0.c.resize(l0.h.size());
+    // The depth scale in 1024 steps (a table: a million cells).
+    std::array<Colour, 1025> ramp;
+    for (size_t k = 0; k < ramp.size(); ++k) ramp[k] = depth_colour(double(k) / 1024);
+    const double per_step = 1024 / out.legend.depth;
     for (size_t k = 0; k < l0.h.size(); ++k) {
         const double d = top - l0.h[k];
         l0.c[k] = out.paint == Paint::deviation ? kUnmarked
                   : d < 5e-4                    ? kUncut
-                                                : depth_colour(d / out.legend.depth);
+                             : ramp[size_t(std::min(d * per_step + 0.5, 1024.0))];
     }
     out.anchor.assign(s.dims.size(), {kNaN, kNaN, kNaN});
     for (size_t i = 0; out.paint == Paint::deviation && i < s.dims.size(); ++i) {
@@ -181,8 +185,17 @@ void mill_surfaces(const PartScene& s, Surfaces& out, bool paper) {
         const auto& p = d.place.at;
         const int ci = std::clamp(int((p[0] - m.stock.lo[0]) / m.cell), 0, m.nx - 1);
         const int cj = std::clamp(int((p[1] - m.stock.lo[1]) / m.cell), 0, m.ny - 1);
-        const double z = d.place.word == "width" ? p[2] : double(m.h(ci, cj));
-        out.anchor[i] = {p[0], p[1], z};
+        double z = double(m.h(ci, cj)), x = p[0], y = p[1];
+        if (d.place.word == "width") {
+            // On the wall the caliper's jaw rests on, along +X or +Y.
+            z = p[2];
+            int a = ci, b = cj;
+            const int ax = d.place.axis == 0 ? 1 : 0, ay = 1 - ax;
+            while (a + ax < m.nx && b + ay < m.ny && m.h(a, b) < z) a += ax, b += ay;
+            if (ax) x = m.stock.lo[0] + a * m.cell;
+            if (ay) y = m.stock.lo[1] + b * m.cell;
+        }
+        out.anchor[i] = {x, y, z};
     }
     out.block.push_back(std::move(l0));
     coarser(out.block);

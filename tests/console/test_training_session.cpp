@@ -52,8 +52,13 @@ std::string temp_db() {
 std::string every_page(Console& c) {
     std::string all;
     for (const char* p : {"op", "om", "pref", "corr", "shop", "graph", "info", "param", "exercise",
-                          "alarm", "prog", "dir"}) {
+                          "alarm", "prog", "dir", "part"}) {
         c.type(std::string(":page ") + p);
+        if (std::string(p) == "part") {  // the picture and its lines, once made
+            c.s->resize(120, 40);
+            c.s->view();
+            c.s->part().wait();
+        }
         all += c.screen(120, 40) + c.message() + "\n";
     }
     return all;
