@@ -127,6 +127,10 @@ hidden)
     done
     grep -q 'no coordinates during an exercise' "$work/screens" || fail "GRAPH reads coordinates"
     for s in "${secrets[@]}"; do
+        # A truth drawn equal to an instrument's size (DEC1 Z, the stick-out,
+        # is 100 once in 41 draws, the gauge block is 100) is on the screen
+        # as that instrument's size: the search proves nothing for it.
+        case " 100.000 20.000 40.000 " in *" $s "*) continue ;; esac
         grep -qF -- "$s" "$work/screens" && fail "the truth $s is on a screen"
         cat "$db"* | grep -aqF -- "$s" && fail "the truth $s is in the store's files"
         # Nor in any file the console writes for the user (history, logs).
