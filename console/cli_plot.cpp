@@ -12,6 +12,7 @@
 
 #include "console/cli.hpp"
 #include "console/plot_loader.hpp"
+#include "console/workshop_io.hpp"
 #include "core/i18n.hpp"
 #include "core/interp/interp.hpp"
 #include "core/output/cairo_plot.hpp"
@@ -189,6 +190,7 @@ int plot(const PlotArgs& a) {
             std::fprintf(stderr, tr("pupitre: --edge-life %s: %s\n"), l.c_str(), why.c_str());
             return kUsage;
         }
+    life = edge_life(setup, life);
     Toolpath path(m);
     // The drawing takes the moves as they are made; the planner beside it
     // times them (the cycle time of the notes, the PDF's table of tools).

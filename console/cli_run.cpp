@@ -263,6 +263,7 @@ int run(const RunArgs& a) {
             std::fprintf(stderr, tr("pupitre: --edge-life %s: %s\n"), life.c_str(), why.c_str());
             return kUsage;
         }
+    plan.life = edge_life(setup, plan.life);
     ProgramMemory mem;
     if (int rc = load_all(a.files, mem)) return rc;
     RunStore store;

@@ -125,4 +125,16 @@ Answer<int> write_part(const std::string& path, const workshop::Workshop& w,
                       svg ? workshop::part_svg(w.world(), title) : workshop::part_zr(w.world()));
 }
 
+plan::EdgeLife edge_life(const workshop::Setup& s, const plan::EdgeLife& given) {
+    plan::EdgeLife life;
+    for (const workshop::ToolTruth& t : s.tools)
+        if (t.life > 0) life.tool[t.position] = t.life * 60;
+    if (given.all > 0) {
+        life.tool.clear();
+        life.all = given.all;
+    }
+    for (const auto& [tool, seconds] : given.tool) life.tool[tool] = seconds;
+    return life;
+}
+
 }  // namespace pupitre

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "console/refusal.hpp"
+#include "core/plan/tools.hpp"
 #include "core/workshop/workshop.hpp"
 
 namespace pupitre {
@@ -28,5 +29,10 @@ Answer<int> write_part(const std::string& path, const workshop::Workshop& w,
 // picture (FILE.png or FILE.pdf) and must be one of the machine's.
 std::string part_name_problem(const std::string& path, const std::string& view,
                               const workshop::Setup& s);
+
+// The life of each tool's edge: the setup's (tool.N.life), then what the
+// command line gives (--edge-life), which wins: its MINUTES for every tool
+// replaces the setup's, its TN=MINUTES that one tool's (pupitre(1)).
+plan::EdgeLife edge_life(const workshop::Setup& s, const plan::EdgeLife& given);
 
 }  // namespace pupitre

@@ -106,6 +106,7 @@ constexpr KeyOf<ToolTruth> kToolKeys[] = {
     {"angle", 20, 175, &ToolTruth::angle},
     {"edge", 0.5, 100, &ToolTruth::edge},
     {"wear", 0, 1000, &ToolTruth::wear},
+    {"life", 0, 100000, &ToolTruth::life},
     // A milling cutter's (kind = mill).
     {"length", 0, 1000, &ToolTruth::length},
     {"corner", 0, 50, &ToolTruth::corner},

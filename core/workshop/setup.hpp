@@ -27,6 +27,7 @@ struct ToolTruth {
     double edge = 10;     // length of its cutting edges from the nose (mm)
     int spindle = 0;      // 3 or 4: the direction it cuts with; 0: either
     double wear = 0;      // µm per metre of cut
+    double life = 0;      // minutes of cutting an edge lasts (003:2353); 0: not given
     // The holder's outline, points relative to P (Z, X); empty: the default
     // shank for the orientation (pupitre-setup(5)).
     std::vector<Pt> holder;

@@ -100,4 +100,19 @@ out=$("$bin" run --setup p555.setup "${p555[@]}" --measure "dia Z-40" --measure 
 grep -Eq ': N3[45]0: error 12' "$work/err" && fail "(g) %555 crashed at N340/N350: $(cat "$work/err")"
 grep -qx 'dia Z-40: 61.000 mm (micrometer)' <<<"$out" || fail "(g) the Ø60 land by Z50-Z60 should be Ø61: $out"
 grep -qx 'dia Z-80: 61.000 mm (micrometer)' <<<"$out" || fail "(g) the Ø60 land by Z10-Z20 should be Ø61: $out"
+# (h) The life of an edge from the setup (tool.N.life, issue 35): the
+# summary's tool line says after how many parts the edge is changed; the
+# command line's --edge-life wins, for every tool or for one.
+{ cat ../../data/setups/lathe.setup; echo 'tool.1.life = 15'; } >"$work/life.setup"
+parts() {  # parts ARGS...: the "change the edge every N parts" of T1's line
+    "$bin" run --setup "$work/life.setup" "${truth[@]}" "$@" turn.iso 2>"$work/err" |
+        sed -n 's/^T1: .*change the edge every \([0-9]*\) parts$/\1/p'
+}
+n15=$(parts)
+[ -n "$n15" ] || fail "(h) the setup's tool.1.life should give T1's parts per edge: $(cat "$work/err")"
+n30=$(parts --edge-life 30)
+[ -n "$n30" ] && [ "$n30" -ge $((2 * n15)) ] && [ "$n30" -le $((2 * n15 + 1)) ] ||
+    fail "(h) --edge-life 30 should double the setup's 15 minutes: $n15 then $n30"
+[ "$(parts --edge-life T1=30)" = "$n30" ] || fail "(h) --edge-life T1=30 should win over the setup's"
+[ "$(parts --edge-life T2=30)" = "$n15" ] || fail "(h) --edge-life T2 should leave T1's life from the setup"
 echo ok
