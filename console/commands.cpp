@@ -334,6 +334,7 @@ Effect export_part(Session& s, const workshop::Workshop& w, const std::string& p
     render::Look look = s.part().look(w.is_mill());
     if (!view.empty() && !parse_part_view(s, view, w.is_mill(), look.mode)) return Effect::redraw;
     Answer<int> done;
+    const bool heights = w.is_mill() && view.empty() && path.ends_with(".png");
     if (wants_picture(path, w.is_mill(), !view.empty())) {
         render::Drawing d;
         const bool has = s.drawing(d);
@@ -345,6 +346,10 @@ Effect export_part(Session& s, const workshop::Workshop& w, const std::string& p
     }
     if (done.value != 0)
         s.say(done.why, true);
+    else if (heights)  // data for scripts, not a picture: say how to get one
+        s.say(strf(tr("the part's height field (16-bit data) written to %s; its picture: "
+                      ":part export %s %s"),
+                   path.c_str(), path.c_str(), render::mode_word(look.mode).data()));
     else
         s.say(strf(tr("the part written to %s"), path.c_str()));
     return Effect::redraw;

@@ -114,6 +114,26 @@ TEST(PartPage, MonoGetsSymbolsAndAsciiPlainOnes) {
     EXPECT_GT(n.palette, 200);  // the colours stay: --ascii is about symbols
 }
 
+// A machining centre's FILE.png without a view is its height field, data
+// for scripts that looks blank as a picture: the message says so and how
+// to get the picture (a student exported one from the PART page and got a
+// white page).
+TEST(PartPage, AMillsPngWithoutAViewSaysItIsTheHeightField) {
+    Console c("mill", {});
+    c.type(":setup mill");
+    c.type(":part");
+    const std::string png = ::testing::TempDir() + "/heights_" + std::to_string(getpid()) + ".png";
+    c.type(":part export " + png);
+    EXPECT_EQ(c.message(), "the part's height field (16-bit data) written to " + png +
+                               "; its picture: :part export " + png + " 3d");
+    std::remove(png.c_str());
+    c.type(":part export " + png + " 3d");
+    EXPECT_EQ(c.message(), "the part written to " + png);
+    std::ifstream in(png, std::ios::binary);
+    EXPECT_TRUE(in.good());
+    std::remove(png.c_str());
+}
+
 TEST(PartPage, WithoutAWorkshopItSaysHow) {
     Console c("lathe", {});
     c.type(":part");
