@@ -248,7 +248,8 @@ void class_report(benchmark::State& st, bool pg) {
     for (auto _ : st) {
         auto r = s->attempts();
         if (!r.ok() || r.value.size() != 3000) st.SkipWithError("attempts failed");
-        const console::ReportContext c{.key = "", .title = "the class's attempts"};
+        console::ReportContext c;
+        c.title = "the class's attempts";
         std::string text = console::class_report_text(r.value, console::ReportFormat::table, c);
         benchmark::DoNotOptimize(text.data());
     }
