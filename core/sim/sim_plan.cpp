@@ -108,11 +108,13 @@ double Sim::fraction() const {
 double Sim::feed() const {
     if (!cur_ || cur_->kind != Ev::move || state_ != RunState::running) return 0;
     double f = cur_->m.feed;
-    if (prof_.planned)
-        f = prof_.speed(t_) * 60;  // the planned speed, rising and falling
-    else if (mode_ == Mode::dry && cur_->feed_move && !manual_)
+    // A planned move: the speed it moves at, rising and falling (under G95
+    // the plan's speed is the move's mean, the time at the feed counting the
+    // spindle's speed along it).
+    if (prof_.planned) return prof_.speed(t_) * 60 * rate(*cur_);
+    if (mode_ == Mode::dry && cur_->feed_move && !manual_)
         f = m_.max_feed;
-    if (mode_ != Mode::dry && modal().feed_mode == 95 && cur_->m.rpm > 0)
+    else if (modal().feed_mode == 95 && cur_->m.rpm > 0)
         f = f / cur_->m.rpm * rpm();  // mm/rev follows the spindle
     return f * rate(*cur_);
 }
