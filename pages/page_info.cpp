@@ -72,9 +72,8 @@ std::string m_functions(const Modal& m) {
 
 // G and M, then F S T D, the plane and the radius compensation.
 void modal_lines(const Sim& s, std::vector<Line>& lines) {
-    const Interpreter& in = s.interp();
-    const Modal& m = in.modal();
-    kv(lines, "G", g_functions(m, in.frames()));
+    const Modal& m = s.modal();
+    kv(lines, "G", g_functions(m, s.frames()));
     kv(lines, "M", m_functions(m));
     char buf[128];
     const char* unit = m.feed_mode == 95   ? tr("mm/rev")
@@ -100,8 +99,8 @@ void modal_lines(const Sim& s, std::vector<Line>& lines) {
 // The offsets of each axis, the mirror, scale and rotation, the switches.
 void offset_lines(const Sim& s, std::vector<Line>& lines) {
     const Interpreter& in = s.interp();
-    const Modal& m = in.modal();
-    const Frames& f = in.frames();
+    const Modal& m = s.modal();
+    const Frames& f = s.frames();
     lines.push_back(Line{}.add(
         std::string(" ") + (s.machine().lathe ? tr("Offsets (X as a radius)") : tr("Offsets")),
         Style::title));
@@ -141,7 +140,7 @@ std::string caz_m(const Modal& m) {
 // origin and the gauge, the switches.
 void caz_info_lines(const Sim& s, std::vector<Line>& lines) {
     const Interpreter& in = s.interp();
-    const Modal& m = in.modal();
+    const Modal& m = s.modal();
     kv(lines, "G", caz_g(m));
     kv(lines, "M", caz_m(m));
     kv(lines, tr("Feed"),
@@ -165,13 +164,24 @@ void caz_info_lines(const Sim& s, std::vector<Line>& lines) {
     lines.push_back(Line{});
     lines.push_back(
         Line{}.add(std::string(" ") + tr("Origin and gauge (X as a radius)"), Style::title));
-    kv(lines, tr("origin"), axes_text(s, in.frames().pref));
-    gauge_line(s, in.frames().gauge, lines);
+    kv(lines, tr("origin"), axes_text(s, s.frames().pref));
+    gauge_line(s, s.frames().gauge, lines);
     lines.push_back(Line{});
     kv(lines, tr("Switches"),
        strf(tr("block skip %s   optional stop M01 %s"),
             in.options().block_skip ? tr("ON") : tr("off"),
             in.options().optional_stop ? tr("ON") : tr("off")));
+}
+
+// The last run's cycle time as the plan gives it (the OP page's), and the
+// time at the feeds alone beside it once the program has ended (issue 35).
+void cycle_line(const Sim& s, std::vector<Line>& lines) {
+    if (!s.ran_program() || s.mode() == Mode::test) return;
+    // TRANSLATORS: INFO page label, at most 10 columns.
+    kv(lines, tr("Cycle"),
+       s.feed_time() >= 0 ? strf(tr("%.1f s with the accelerations (%.1f s at the feeds alone)"),
+                                 s.cycle_time(), s.feed_time())
+                          : strf(tr("%.1f s with the accelerations, so far"), s.cycle_time()));
 }
 
 }  // namespace
@@ -183,8 +193,10 @@ void page_info(const View& v, Canvas& c, const Rect& r) {
     std::vector<Line> lines;
     if (is_caz(s.machine())) {
         caz_info_lines(s, lines);
+        cycle_line(s, lines);
     } else {
         modal_lines(s, lines);
+        cycle_line(s, lines);
         lines.push_back(Line{});
         offset_lines(s, lines);
     }

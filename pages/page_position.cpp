@@ -22,7 +22,7 @@ std::string spindle_text(const Sim& s) {
         out += std::string("  ") + (s.spindle_range() == 40 ? tr("harnais") : tr("volée"));
     else if (s.spindle_range() >= 40)
         out += "  M" + std::to_string(s.spindle_range());
-    const Modal& m = s.interp().modal();
+    const Modal& m = s.modal();  // the block shown's
     if (m.spindle_mode == 96) {
         std::snprintf(buf, sizeof buf, "  G96 %.0f m/min", m.s);
         out += buf;
@@ -31,7 +31,7 @@ std::string spindle_text(const Sim& s) {
 }
 
 std::string feed_text(const Sim& s) {
-    const Modal& m = s.interp().modal();
+    const Modal& m = s.modal();  // the block shown's
     const char* unit = m.feed_mode == 95 ? tr("mm/rev") : m.feed_mode == 93 ? "1/min" : "mm/min";
     return strf(tr("%.0f mm/min now   programmed F%g %s (G%d)"), s.feed(), m.feed, unit,
                 m.feed_mode);

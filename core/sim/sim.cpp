@@ -112,8 +112,9 @@ Sim::Sim(const MachineProfile& m, ProgramMemory& mem)
     : m_(m), mem_(mem), null_(std::make_unique<NullSink>()) {
     RunOptions o;
     o.require_homing = m.homing_required;
-    MachineSink& sink = *this;  // a private base: converted here, where it is accessible
-    in_ = std::make_unique<Interpreter>(m_, mem_, sink, o);
+    front_ = make_front();
+    plan_reset(false);
+    in_ = std::make_unique<Interpreter>(m_, mem_, *front_, o);
     om_ = in_->machine_pos();
     op_ = in_->program_pos();
 }
@@ -141,6 +142,7 @@ std::string Sim::select(int program) {
         loc_ = Loc{};
         blocks_ = 0;
         run_seconds_ = 0;
+        feed_seconds_ = -1;
         ran_program_ = false;
         if (state_ == RunState::ended) state_ = RunState::idle;
     }
@@ -232,6 +234,13 @@ std::string Sim::start_from_rest() {
         case Mode::inc:
             return tr("JOG/INC: move an axis with the jog keys or :jog AXIS DIST");
     }
+    // The program's moves are planned (a TEST moves nothing; RNS plans from
+    // the block found).
+    plan_reset(mode_ != Mode::test);
+    shown_.reset();
+    block_times_.clear();
+    alarm_loc_ = Loc{};
+    feed_seconds_ = -1;
     interp_done_ = false;
     pending_alarm_ = false;
     manual_ = false;
@@ -258,8 +267,10 @@ void Sim::start_test() {
     test_.reset();
     test_mem_ = std::make_unique<ProgramMemory>(mem_.clone());
     lc_ = LineCache{};
-    test_ = std::make_unique<Interpreter>(m_, *test_mem_,
-                                          path_ ? static_cast<MachineSink&>(*path_) : *null_, o);
+    // Its planner hands the drawing each move once planned.
+    test_plan_ = std::make_unique<plan::PlanSink>(
+        m_, path_ ? static_cast<MachineSink*>(path_) : null_.get());
+    test_ = std::make_unique<Interpreter>(m_, *test_mem_, *test_plan_, o);
     for (int d = 0; d < 256; ++d) test_->corrector(d) = in_->corrector(d);
     test_->frames_mut() = in_->frames();
     test_->start(selected_);
@@ -269,6 +280,7 @@ void Sim::start_test() {
 // POM: each axis to its home, one after the other.  Lathe: X retracts first;
 // mill: Z (the tool axis) first (safe order).
 void Sim::start_pom() {
+    if (planning_) plan_reset(false);  // the axes' own moves, not a program's
     std::vector<int> order = m_.lathe ? std::vector<int>{X, Z} : std::vector<int>{Z, X, Y};
     for (int a = 0; a < kAxes; ++a)
         if (std::find(order.begin(), order.end(), a) == order.end()) order.push_back(a);
@@ -312,6 +324,8 @@ void Sim::raz() {
     q_.clear();
     cur_.reset();
     test_.reset();
+    plan_reset(false);  // what the planner held is abandoned with the queue
+    shown_.reset();
     in_->raz();
     in_->place(om_);  // the axes stop where they are
     op_ = in_->program_pos();
@@ -336,6 +350,7 @@ std::string Sim::jog(int axis, double delta) {
     double internal = delta / in_->to_display(axis, 1.0);
     if (Error e = in_->jog(axis, internal))
         return strf(tr("error %d: %s"), e.code, e.detail.c_str());
+    if (planning_) plan_reset(false);  // a jog is no program's move
     double feed = jog_feed > 0 ? jog_feed : m_.jog_feed;
     queue_move_to(in_->machine_pos(), 1, Loc{}, feed, false, axis);
     message_.clear();  // the last run's news is not the jog's
@@ -374,8 +389,9 @@ void Sim::queue_move_to(const Axes& mach, int g, Loc loc, double feed, bool home
 
 // ---- the interpreter's events ----
 
-void Sim::push(Ev e) {
-    e.overrides_off = in_->modal().overrides_off;
+void Sim::push(Ev e, bool tagged) {
+    if (tagged) e.shown = take_tag();
+    e.overrides_off = e.shown ? e.shown->modal.overrides_off : in_->modal().overrides_off;
     if (searching_) {
         // RNS: the moves are not made; the state they leave is rebuilt.
         switch (e.kind) {
@@ -434,9 +450,9 @@ void Sim::stop(const Loc& l, int m) {
     push(std::move(e));
 }
 
-void Sim::message(const Loc& l, int, std::string_view text) {
+void Sim::message(const Loc& l, int channel, std::string_view text) {
     Ev e = event(Ev::message, l);
-    e.text = std::string(text);
+    if (!note_of(channel, text, e)) e.text = std::string(text);
     push(std::move(e));
 }
 
@@ -448,32 +464,13 @@ void Sim::end(const Loc& l, int m) {
 
 // ---- playback ----
 
-double Sim::duration(const Ev& e) const {
-    switch (e.kind) {
-        case Ev::move:
-        case Ev::home:
-            if (mode_ == Mode::dry && e.feed_move && !manual_ && e.m.length > 0)
-                return e.m.length / m_.max_feed * 60.0;  // DRY RUN: feeds at the maximum
-            return e.m.seconds;
-        case Ev::dwell:
-        case Ev::tool:
-            return e.seconds;
-        default:
-            return 0;
-    }
-}
-
-double Sim::rate(const Ev& e) const {
-    if ((e.kind == Ev::move) && e.feed_move && !e.overrides_off) return feed_override / 100.0;
-    return 1.0;
-}
-
 bool Sim::begin_next() {
     if (q_.empty()) return false;
     cur_ = std::make_unique<Ev>(std::move(q_.front()));
     q_.pop_front();
     Ev& e = *cur_;
-    if (e.loc.line > 0) loc_ = e.loc;
+    if (e.loc.line > 0 && e.kind != Ev::note) loc_ = e.loc;
+    if (e.shown) shown_ = e.shown;
     t_ = 0;
     dur_ = duration(e);
     switch (e.kind) {
@@ -503,7 +500,11 @@ bool Sim::begin_next() {
         case Ev::end:
             begin_end(e);
             break;
+        case Ev::note:
+            if (size_t(e.a) < in_->diags().size()) raise(in_->diags()[size_t(e.a)]);
+            break;
         case Ev::dwell:
+        case Ev::wait:
             break;
     }
     return true;
@@ -512,6 +513,8 @@ bool Sim::begin_next() {
 // A move or a homing starts: the offsets op() interpolates between, the
 // workshop, and a program's move on the drawing.
 void Sim::begin_move(Ev& e) {
+    prof_ = SpeedProfile::of(e.m);
+    prof_scale_ = 1;
     op_from_ = op_;
     for (int a = 0; a < kAxes; ++a) {
         op_off0_[size_t(a)] = e.m.from_mach[size_t(a)] - op_from_[size_t(a)];
@@ -540,6 +543,7 @@ void Sim::begin_end(const Ev& e) {
                      "IMD done (%ld blocks): type the next block, or F8 for another mode", blocks_),
                  blocks_);
     if (e.a == 2) {
+        if (planning_) feed_seconds_ = plan_->report().feed_seconds;
         // TRANSLATORS: the second %s counts the blocks run ("%ld blocks").
         message_ = strf(tr("M02: end of program %%%d, %s, cycle time %s"), e.loc.prog,
                         strf(trn("%ld blocks", "%ld blocks", blocks_), blocks_).c_str(),
@@ -554,6 +558,7 @@ void Sim::begin_end(const Ev& e) {
 
 void Sim::finish_current() {
     Ev& e = *cur_;
+    keep_block_time(e, dur_);
     if (e.kind == Ev::move || e.kind == Ev::home) {
         om_ = e.m.to_mach;
         op_ = e.m.to_prog;
@@ -572,7 +577,7 @@ Axes Sim::op() const {
         return in_->frames().to_program(om_);
     }
     const MoveEvent& m = cur_->m;
-    double f = dur_ > 0 ? std::clamp(t_ / dur_, 0.0, 1.0) : 1.0;
+    const double f = fraction();
     Axes p{};
     for (int a = 0; a < kAxes; ++a)
         p[size_t(a)] = op_from_[size_t(a)] + (m.to_prog[size_t(a)] - op_from_[size_t(a)]) * f;
@@ -591,7 +596,7 @@ Axes Sim::op() const {
 
 void Sim::interpolate() {
     if (!cur_ || (cur_->kind != Ev::move && cur_->kind != Ev::home)) return;
-    double f = dur_ > 0 ? std::clamp(t_ / dur_, 0.0, 1.0) : 1.0;
+    const double f = fraction();
     Axes p = op();
     for (int a = 0; a < kAxes; ++a)
         om_[size_t(a)] =
@@ -612,16 +617,6 @@ Axes Sim::to_go() const {
     return g;
 }
 
-double Sim::feed() const {
-    if (!cur_ || cur_->kind != Ev::move || state_ != RunState::running) return 0;
-    double f = cur_->m.feed;
-    if (mode_ == Mode::dry && cur_->feed_move && !manual_)
-        f = m_.max_feed;
-    else if (in_->modal().feed_mode == 95 && cur_->m.rpm > 0)
-        f = f / cur_->m.rpm * rpm();  // mm/rev follows the spindle
-    return f * rate(*cur_);
-}
-
 double Sim::rpm() const {
     if (sp_.dir != 3 && sp_.dir != 4) return 0;
     double n = sp_.rpm;
@@ -632,25 +627,21 @@ double Sim::rpm() const {
         double limit = m_.spindle_max;
         if (sp_.range >= 40 && size_t(sp_.range - 40) < m_.ranges.size())
             limit = std::min(limit, m_.ranges[size_t(sp_.range - 40)].max);
-        if (in_->modal().smax > 0) limit = std::min(limit, in_->modal().smax);
+        if (modal().smax > 0) limit = std::min(limit, modal().smax);
         n = d > 1e-6 ? std::min(limit, sp_.vc * 1000.0 / (kPi * d)) : limit;
     }
-    if (in_->modal().overrides_off) return n;
+    if (modal().overrides_off) return n;
     return n * spindle_override / 100.0;
 }
 
-void Sim::raise_from_interp() {
-    const auto& d = in_->diags();
-    for (; diag_seen_ < d.size(); ++diag_seen_) {
-        const Diag& x = d[diag_seen_];
-        if (x.is_error()) {
-            alarms_.push_back(Alarm{x, clock_});
-            if (path_) path_->add_error(x);
-        } else {
-            message_ = strf(tr("warning %d: %s"), x.code, x.detail.c_str());
-            if (run_warnings_.size() < kMaxRunWarnings) run_warnings_.push_back(x);
-            ++run_warning_count_;
-        }
+void Sim::raise(const Diag& x) {
+    if (x.is_error()) {
+        alarms_.push_back(Alarm{x, clock_});
+        if (path_) path_->add_error(x);
+    } else {
+        message_ = strf(tr("warning %d: %s"), x.code, x.detail.c_str());
+        if (run_warnings_.size() < kMaxRunWarnings) run_warnings_.push_back(x);
+        ++run_warning_count_;
     }
 }
 
@@ -678,6 +669,7 @@ bool Sim::step_interp(long& budget) {
     if (pending_alarm_) {
         pending_alarm_ = false;
         state_ = RunState::alarm;
+        if (alarm_loc_.line > 0) loc_ = alarm_loc_;  // the block the error is in
         return false;
     }
     if (interp_done_) {
@@ -699,17 +691,23 @@ bool Sim::step_interp(long& budget) {
         return false;
     }
     --budget;
-    long before = in_->blocks();
+    step_before_ = in_->blocks();
     StepResult r = in_->step();
-    blocks_ += in_->blocks() - before;  // the end of an IMD text is not a block
-    if (!searching_ || in_->has_errors()) loc_ = in_->location();
-    raise_from_interp();
+    blocks_ += in_->blocks() - step_before_;  // the end of an IMD text is not a block
+    // The block shown is the interpreter's unless the planner holds moves
+    // before it, or they wait in the queue.
+    if ((!searching_ || in_->has_errors()) && !planner_holds() && q_.empty()) {
+        loc_ = in_->location();
+        shown_.reset();
+    }
+    note_diags();
     switch (r) {
         case StepResult::running:
         case StepResult::stopped:
             break;
         case StepResult::ended:
             interp_done_ = true;
+            plan_flush();
             if (searching_) {
                 searching_ = false;
                 state_ = RunState::idle;
@@ -721,9 +719,12 @@ bool Sim::step_interp(long& budget) {
             interp_done_ = true;
             searching_ = false;
             pending_alarm_ = true;  // after the moves the block made
+            alarm_loc_ = in_->location();
+            plan_flush();
             break;
     }
-    if (mode_ == Mode::single && !searching_) seq_stop_ = true;
+    // SEQ: the block's moves end at rest, and show before the next is run.
+    if (mode_ == Mode::single && !searching_) seq_stop_ = true, plan_flush();
     return true;
 }
 
@@ -732,6 +733,7 @@ void Sim::test_advance(long budget) {
         StepResult r = test_->step();
         ++test_blocks_;
         loc_ = test_->location();
+        if (r == StepResult::error || r == StepResult::ended) test_plan_->finish();
         if (r == StepResult::error) {
             for (const Diag& d : test_->diags())
                 if (d.is_error()) {

@@ -12,6 +12,7 @@
 
 #include "core/interp/interp.hpp"
 #include "core/output/toolpath.hpp"
+#include "core/plan/plan_sink.hpp"
 #include "core/workshop/workshop.hpp"
 
 namespace pupitre {
@@ -39,6 +40,30 @@ std::string_view state_name(RunState state);
 struct Alarm {
     Diag diag;
     double clock = 0;  // simulated seconds since power-on
+};
+
+// The state of a block as the interpreter left it, carried with its events:
+// in a planned run the interpreter works up to the look-ahead beyond the block
+// shown, and the pages show the state of the block shown (Sim::modal).
+struct ShownState {
+    Modal modal;
+    Frames frames;
+    long blocks = 0;  // the run's blocks done, this one included
+};
+
+// A move's planned speed along its path (core/plan: entry, peak, exit and
+// duration), as a trapezoid: the speed rises from the entry to the peak,
+// holds, and falls to the exit, at the one acceleration that makes its length
+// in its time. Speeds in mm/s (degrees/s), times in s.
+struct SpeedProfile {
+    double v0 = 0, vp = 0, v1 = 0;
+    double t1 = 0, t2 = 0, T = 0;  // the ends of the rise and of the cruise; the duration
+    double length = 0;
+    bool planned = false;
+    static SpeedProfile of(const MoveEvent& m);
+    double speed(double t) const;     // at t seconds into the move
+    double distance(double t) const;  // travelled by t
+    double time_at(double d) const;   // when `d` is travelled
 };
 
 class Sim final : private MachineSink {
@@ -111,7 +136,7 @@ class Sim final : private MachineSink {
     const Loc& loc() const { return loc_; }  // the block being shown
     bool moving() const { return cur_ != nullptr; }
     int motion() const { return cur_ ? cur_->m.g : -1; }
-    double feed() const;  // mm/min now, overrides applied
+    double feed() const;  // mm/min now, overrides applied (a planned move's speed now)
     double rpm() const;   // spindle rev/min now, override applied
     int spindle_dir() const { return sp_.dir; }
     int spindle_range() const { return sp_.range; }
@@ -127,14 +152,20 @@ class Sim final : private MachineSink {
     // The cycle time, one for every page and message (the M02 and TEST
     // messages, OP's run line, the GRAPH title): the seconds of the last
     // program run (or IMD block), its moves, dwells and tool changes as the
-    // machine took them, jogs and POM not counted; TEST: its own count.
+    // machine took them (as planned, `run`'s time), jogs and POM not
+    // counted; TEST: its own planner's.
     double cycle_time() const {
-        return mode_ == Mode::test && test_ ? test_->seconds() : run_seconds_;
+        return mode_ == Mode::test && test_ ? test_plan_->report().seconds : run_seconds_;
     }
+    // The last program's time with each move at its feed alone (`run`'s
+    // second time), once its M02 is shown; -1 before, or when not planned.
+    double feed_time() const { return feed_seconds_; }
     // The last Cycle Start ran a program (AUTO, SEQ, DRY RUN, TEST, RNS),
     // whose drawing the GRAPH page shows, not an IMD block.
     bool ran_program() const { return ran_program_; }
-    long blocks_done() const { return mode_ == Mode::test && test_ ? test_blocks_ : blocks_; }
+    long blocks_done() const {
+        return mode_ == Mode::test && test_ ? test_blocks_ : shown() ? shown()->blocks : blocks_;
+    }
     const std::vector<Alarm>& alarms() const { return alarms_; }  // history, newest last
     // The warnings of the last run (the first kMaxRunWarnings), and how many.
     const std::vector<Diag>& run_warnings() const { return run_warnings_; }
@@ -146,7 +177,15 @@ class Sim final : private MachineSink {
     // says them even when the state did not change between two frames.
     uint64_t workshop_news() const { return workshop_news_; }
     long test_blocks() const { return test_blocks_; }
-    bool overrides_inhibited() const { return in_->modal().overrides_off; }
+    bool overrides_inhibited() const { return modal().overrides_off; }
+    // The functions in force and the frames of the block shown: the
+    // interpreter's own, except in a planned run, where it may be up to the
+    // look-ahead further on.
+    const Modal& modal() const { return shown() ? shown()->modal : in_->modal(); }
+    const Frames& frames() const { return shown() ? shown()->frames : in_->frames(); }
+    // The planned time of a block of the run (seconds at 100 %), shown or
+    // queued to be shown; -1 when not known (not run yet, or long ago).
+    double block_time(int prog, int line) const;
     double to_display(int axis, double v) const { return in_->to_display(axis, v); }
     // The program a location is in (the IMD fragment for program 0 of IMD).
     const ProgramText* text_of(int prog) const;
@@ -157,7 +196,10 @@ class Sim final : private MachineSink {
 
   private:
     struct Ev {
-        enum Kind { move, dwell, tool, spindle, coolant, stop, message, end, home } kind = move;
+        // wait: the axes at rest (the planner's exact stops and spindle);
+        // note: a diagnostic of the interpreter's, raised when shown.
+        enum Kind { move, dwell, tool, spindle, coolant, stop, message, end, home, wait, note };
+        Kind kind = move;
         MoveEvent m;
         SpindleEvent sp;
         Loc loc;
@@ -166,7 +208,13 @@ class Sim final : private MachineSink {
         bool overrides_off = false;
         bool feed_move = false;  // G1/G2/G3 (a feed override applies)
         std::string text;
+        std::shared_ptr<const ShownState> shown;  // its block's state (a planned run)
     };
+    // Between the interpreter and the planner (sim_plan.cpp): keeps each
+    // event's block state, and in a run that is not planned hands the events
+    // straight to the queue.
+    class Front;
+    friend class Front;
 
     // MachineSink: the interpreter's events join the queue.
     void move(const MoveEvent&) override;
@@ -178,8 +226,28 @@ class Sim final : private MachineSink {
     void message(const Loc&, int channel, std::string_view) override;
     void end(const Loc&, int m) override;
     void stock(const Loc& l, const std::vector<std::array<double, 2>>& zr) override {
+        take_tag();
         if (path_ && !searching_) path_->add_stock(l, zr);
     }
+    void profile(const Loc&, const ProfileElem&) override { take_tag(); }
+    void exact_stop(const Loc&) override { take_tag(); }
+    void wait(const Loc& l, double seconds) override;
+
+    // The planned run (sim_plan.cpp). The state of the block shown, when the
+    // interpreter may be ahead of it.
+    const ShownState* shown() const {
+        return shown_ && in_cycle() && !manual_ && mode_ != Mode::test ? shown_.get() : nullptr;
+    }
+    // The block state the planner's next event out was sent with.
+    std::shared_ptr<const ShownState> take_tag();
+    bool planner_holds() const { return !tags_.empty(); }
+    void plan_reset(bool on);  // a new planner, empty; `on`: the run is planned
+    void plan_flush();         // the moves held are planned and queued
+    void note_diags();         // the interpreter's new diagnostics, in their place
+    void raise(const Diag& d);
+    // A message that is a diagnostic's place (note_diags) becomes its note.
+    static bool note_of(int channel, std::string_view text, Ev& e);
+    void keep_block_time(const Ev& e, double seconds);
 
     static Ev event(Ev::Kind k, const Loc& l) {
         Ev e;
@@ -187,22 +255,22 @@ class Sim final : private MachineSink {
         e.loc = l;
         return e;
     }
-    void push(Ev e);
+    void push(Ev e, bool tagged = true);  // tagged: the event left the Front
     void new_path(const Axes& start);
     std::string need_program() const;
     std::string start_from_rest();  // cycle_start in idle or ended
     void start_test();
     void start_pom();
     void rns_found(int next_line);
-    bool begin_next();      // takes the next event; false if none
-    void finish_current();  // the current event is done
+    double fraction() const;  // of the current move's length, travelled at t_
+    bool begin_next();        // takes the next event; false if none
+    void finish_current();    // the current event is done
     // Parts of begin_next: a move or a homing; M02 or an IMD block's end.
     void begin_move(Ev& e);
     void begin_end(const Ev& e);
     double duration(const Ev& e) const;
     double rate(const Ev& e) const;  // simulated progress per second (overrides)
     void interpolate();              // om_ from the current move and t_
-    void raise_from_interp();
     bool step_interp(long& budget);  // false: nothing more to run now
     void test_advance(long budget);
     void queue_move_to(const Axes& mach, int g, Loc loc, double feed, bool home_axis, int axis);
@@ -211,10 +279,32 @@ class Sim final : private MachineSink {
 
     const MachineProfile& m_;
     ProgramMemory& mem_;
+    // Before the interpreter, which sends them its events: a Front, its sink,
+    // and the planner after it.
+    std::unique_ptr<MachineSink> front_;
+    std::unique_ptr<MachineSink> make_front();
+    std::unique_ptr<plan::PlanSink> plan_;
     std::unique_ptr<Interpreter> in_;
-    std::unique_ptr<ProgramMemory> test_mem_;  // TEST's copy of the programs (before test_)
-    std::unique_ptr<Interpreter> test_;        // TEST mode: a second interpreter, no motion
+    std::unique_ptr<ProgramMemory> test_mem_;    // TEST's copy of the programs (before test_)
+    std::unique_ptr<plan::PlanSink> test_plan_;  // TEST's planner: its cycle time (before test_)
+    std::unique_ptr<Interpreter> test_;          // TEST mode: a second interpreter, no motion
     std::unique_ptr<MachineSink> null_;
+    bool planning_ = false;  // the program's events go through plan_
+    // The block state of each event in the planner, oldest first; the state
+    // of the block shown; the block state being built by the interpreter.
+    std::deque<std::shared_ptr<const ShownState>> tags_;
+    std::shared_ptr<const ShownState> shown_;
+    SpeedProfile prof_;      // the current move's (planned), its length shown
+    double prof_scale_ = 1;  // the shown length over the profile's (a contact cuts it short)
+    Loc alarm_loc_;          // the block an error stopped at
+    long step_before_ = 0;   // the interpreter's blocks before the step under way
+    // Each block's time as shown (the last kBlockTimes), the current one's so far.
+    struct BlockTime {
+        Loc loc;
+        double seconds = 0;
+    };
+    static constexpr size_t kBlockTimes = 512;
+    std::deque<BlockTime> block_times_;
     Toolpath* path_ = nullptr;
     std::unique_ptr<workshop::Workshop> shop_;
     uint64_t workshop_news_ = 0;
@@ -247,6 +337,7 @@ class Sim final : private MachineSink {
     int tool_ = 0, corr_ = 0;
     double clock_ = 0;
     double run_seconds_ = 0;
+    double feed_seconds_ = -1;
     bool ran_program_ = false;
     long blocks_ = 0;
     long test_blocks_ = 0;

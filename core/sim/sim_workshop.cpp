@@ -1,6 +1,8 @@
 // The Sim's side of the workshop (ARCHITECTURE.md, the workshop): each move meets the part as
 // the machine starts it (see sim.hpp, set_workshop).
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include <algorithm>
+
 #include "core/sim/sim.hpp"
 #include "core/workshop/report.hpp"
 
@@ -23,9 +25,17 @@ void Sim::through_workshop(Ev& e) {
     if (!o.crashed && !o.touched) return;
     e.m = workshop::Workshop::truncated(e.m, o.stop, o.fraction);
     dur_ = duration(e);
+    if (prof_.planned) {
+        // The planned speed up to the contact, where the axes stop.
+        prof_scale_ = std::clamp(o.fraction, 0.0, 1.0);
+        dur_ = prof_.time_at(prof_.length * prof_scale_);
+    }
     for (int a = 0; a < kAxes; ++a)
         op_off1_[size_t(a)] = e.m.to_mach[size_t(a)] - e.m.to_prog[size_t(a)];
     q_.clear();
+    // What the interpreter ran ahead of the move is abandoned with the
+    // queue: the workshop has not met it (it meets a move as it starts).
+    if (!manual_) plan_reset(false);
     planned_ = o.stop;
     in_->place(o.stop);
     message_ = o.what;
@@ -36,6 +46,7 @@ void Sim::through_workshop(Ev& e) {
     if (path_) path_->add_error(d);
     interp_done_ = true;
     pending_alarm_ = true;
+    alarm_loc_ = Loc{};  // the crash is the move's, shown now
 }
 
 Diag Sim::workshop_diag(const workshop::Crash& c) const {

@@ -43,6 +43,12 @@ void crash_in(const char* mode, int starts) {
     workshop::Pt p = c.s->sim().shop()->tip(c.s->sim().om());
     EXPECT_NEAR(p[1], 30, 0.01) << mode;
     EXPECT_GT(c.s->sim().op()[X] * 2, 56.5) << mode;
+    // The planner had read N50's pass to Ø56 (issue 35: the interpreter runs
+    // up to the look-ahead beyond the move shown); the workshop meets a move
+    // only as it is shown, and the bar is uncut.
+    workshop::Reading r;
+    ASSERT_EQ(c.s->sim().shop()->measure("dia Z-30", r), "");
+    EXPECT_DOUBLE_EQ(r.value, 60.0) << mode;
     c.named("F12");  // RAZ
     EXPECT_EQ(c.s->sim().state(), RunState::idle);
     EXPECT_FALSE(c.s->sim().shop()->crashed());
