@@ -184,6 +184,36 @@ void cycle_line(const Sim& s, std::vector<Line>& lines) {
                           : strf(tr("%.1f s with the accelerations, so far"), s.cycle_time()));
 }
 
+// The life of tool `t`'s edge in seconds, as the workshop's setup gives it
+// (tool.N.life); 0 when it does not.
+double edge_life(const Sim& s, int t) {
+    if (!s.shop()) return 0;
+    for (const workshop::ToolTruth& tt : s.shop()->setup().tools)
+        if (tt.position == t) return tt.life * 60;
+    return 0;
+}
+
+// Each tool's share of the program once it has ended, as `run`'s tool lines
+// give it (issue 35): cutting time, passes, length cut, rapid time, and
+// after how many parts its edge is changed where the setup gives its life.
+void tool_lines(const Sim& s, std::vector<Line>& lines) {
+    if (s.tool_times().empty() || s.mode() == Mode::test) return;
+    // TRANSLATORS: the INFO page's table of each tool's time: the columns'
+    // heads (cutting time, passes, length cut, rapid time, the edge's life),
+    // each at most as wide as its column (9, 6, 11, 8 columns).
+    kv(lines, tr("Tools"),
+       strf("%-4s %9s %6s %11s %8s  %s", "", tr("cutting"), tr("passes"), tr("cut (mm)"),
+            tr("rapids"), tr("edge")));
+    for (const plan::ToolRow& t : s.tool_times()) {
+        std::string row = strf("T%-3d %7.1f s %6ld %11.3f %6.1f s", t.tool, t.cut_seconds, t.passes,
+                               t.cut_length, t.rapid_seconds);
+        if (long n = plan::parts_per_edge(t.cut_seconds, edge_life(s, t.tool)))
+            // TRANSLATORS: the INFO page's tool table: after how many parts the edge is changed.
+            row += "  " + strf(trn("every %ld part", "every %ld parts", n), n);
+        kv(lines, "", std::move(row));
+    }
+}
+
 }  // namespace
 
 void page_info(const View& v, Canvas& c, const Rect& r) {
@@ -194,9 +224,11 @@ void page_info(const View& v, Canvas& c, const Rect& r) {
     if (is_caz(s.machine())) {
         caz_info_lines(s, lines);
         cycle_line(s, lines);
+        tool_lines(s, lines);
     } else {
         modal_lines(s, lines);
         cycle_line(s, lines);
+        tool_lines(s, lines);
         lines.push_back(Line{});
         offset_lines(s, lines);
     }

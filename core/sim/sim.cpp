@@ -143,6 +143,7 @@ std::string Sim::select(int program) {
         blocks_ = 0;
         run_seconds_ = 0;
         feed_seconds_ = -1;
+        tool_times_.clear();
         ran_program_ = false;
         if (state_ == RunState::ended) state_ = RunState::idle;
     }
@@ -241,6 +242,7 @@ std::string Sim::start_from_rest() {
     block_times_.clear();
     alarm_loc_ = Loc{};
     feed_seconds_ = -1;
+    tool_times_.clear();
     interp_done_ = false;
     pending_alarm_ = false;
     manual_ = false;
@@ -543,7 +545,10 @@ void Sim::begin_end(const Ev& e) {
                      "IMD done (%ld blocks): type the next block, or F8 for another mode", blocks_),
                  blocks_);
     if (e.a == 2) {
-        if (planning_) feed_seconds_ = plan_->report().feed_seconds;
+        if (planning_) {
+            feed_seconds_ = plan_->report().feed_seconds;
+            tool_times_ = plan_->report().tools.rows();
+        }
         // TRANSLATORS: the second %s counts the blocks run ("%ld blocks").
         message_ = strf(tr("M02: end of program %%%d, %s, cycle time %s"), e.loc.prog,
                         strf(trn("%ld blocks", "%ld blocks", blocks_), blocks_).c_str(),

@@ -160,6 +160,9 @@ class Sim final : private MachineSink {
     // The last program's time with each move at its feed alone (`run`'s
     // second time), once its M02 is shown; -1 before, or when not planned.
     double feed_time() const { return feed_seconds_; }
+    // Each tool's share of the last program (cutting and rapid time, passes,
+    // length cut: `run`'s tool lines), once its M02 is shown; empty before.
+    const std::vector<plan::ToolRow>& tool_times() const { return tool_times_; }
     // The last Cycle Start ran a program (AUTO, SEQ, DRY RUN, TEST, RNS),
     // whose drawing the GRAPH page shows, not an IMD block.
     bool ran_program() const { return ran_program_; }
@@ -338,6 +341,7 @@ class Sim final : private MachineSink {
     double clock_ = 0;
     double run_seconds_ = 0;
     double feed_seconds_ = -1;
+    std::vector<plan::ToolRow> tool_times_;  // tool_times()
     bool ran_program_ = false;
     long blocks_ = 0;
     long test_blocks_ = 0;

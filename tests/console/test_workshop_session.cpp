@@ -6,6 +6,8 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "tests/console/fixture.hpp"
@@ -63,6 +65,46 @@ TEST(WorkshopSession, ARapidIntoThePartIsACrashInSingleBlock) {
 }
 TEST(WorkshopSession, ARapidIntoThePartIsACrashInDryRun) {
     crash_in("dry", 1);
+}
+
+// The INFO page's table of each tool's time once the program has ended
+// (issue 35 item 4), the life of T1's edge from the setup (tool.1.life):
+// `pupitre run` on the same setup says "T1: 21.3 s of cutting a part (2
+// passes, 71.000 mm), 1.4 s of rapids, change the edge every 42 parts".
+TEST(WorkshopSession, TheInfoPageGivesEachToolsTimeAndItsEdgesLife) {
+    const std::string setup =
+        ::testing::TempDir() + "/life_" + std::to_string(::getpid()) + ".setup";
+    {
+        std::ifstream in(std::string(PUPITRE_SOURCE_DIR) + "/data/setups/lathe.setup");
+        std::stringstream text;
+        text << in.rdbuf() << "tool.1.life = 15\n";
+        std::ofstream(setup) << text.str();
+    }
+    Console c("lathe", {"tests/workshop/turn.iso"});
+    c.type(":setup " + setup);
+    ASSERT_TRUE(c.s->sim().shop()) << c.message();
+    for (const char* set :
+         {":set PREF.X=-20", ":set PREF.Z=35", ":set D1.X=52.347", ":set D1.Z=41.215"})
+        c.type(set);
+    c.type(":mode pom");
+    c.named("F9");
+    c.run_until_settled();
+    c.type(":load 10");
+    c.type(":mode auto");
+    c.type(":speed max");
+    c.type(":page info");
+    EXPECT_EQ(c.screen(100, 30).find("Tools"), std::string::npos);  // not before the end
+    c.named("F9");
+    c.run_until_settled();
+    ASSERT_EQ(c.s->sim().state(), RunState::ended) << c.message();
+    const std::string info = c.screen(100, 30);
+    EXPECT_NE(info.find(" Tools             cutting passes    cut (mm)   rapids  edge"),
+              std::string::npos)
+        << info;
+    EXPECT_NE(info.find("T1      21.3 s      2      71.000    1.4 s  every 42 parts"),
+              std::string::npos)
+        << info;
+    std::remove(setup.c_str());
 }
 
 TEST(WorkshopSession, TestModeMovesNothingAndCrashesNothing) {

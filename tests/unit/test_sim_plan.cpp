@@ -218,3 +218,30 @@ TEST(SimPlan, TheProgPageTimesAreThePlannedOnes) {
     EXPECT_NEAR(k.sim->block_time(1, 3), 10.1, 1e-6);
     EXPECT_NEAR(k.sim->block_time(1, 4), 2 + k.m.in_position, 1e-6);  // the dwell after the stop
 }
+
+// Each tool's share once the program has ended: `run`'s tool lines.
+TEST(SimPlan, EachToolsTimeIsRunsOnceTheProgramHasEnded) {
+    Slow k("%1\nG0 X0 Y0 Z0\nT1 D1 M6\nG1 X100 F600\nG0 X0\nT2 D2 M6\nG1 Y50 F300\nY0\nM2\n");
+    ASSERT_EQ(k.sim->cycle_start(), "");
+    EXPECT_TRUE(k.sim->tool_times().empty());
+    k.settle();
+    ASSERT_EQ(k.sim->state(), RunState::ended) << k.sim->message();
+    ProgramMemory m2 = k.mem.clone();
+    plan::PlanSink planner(k.m);
+    Interpreter in(k.m, m2, planner, RunOptions{});
+    in.start(m2.programs().front()->number);
+    in.run_to_end();
+    planner.finish();
+    const auto& want = planner.report().tools.rows();
+    const auto& got = k.sim->tool_times();
+    ASSERT_EQ(got.size(), 2u);
+    ASSERT_EQ(got.size(), want.size());
+    for (size_t i = 0; i < got.size(); ++i) {
+        EXPECT_EQ(got[i].tool, want[i].tool);
+        EXPECT_DOUBLE_EQ(got[i].cut_seconds, want[i].cut_seconds);
+        EXPECT_DOUBLE_EQ(got[i].rapid_seconds, want[i].rapid_seconds);
+        EXPECT_DOUBLE_EQ(got[i].cut_length, want[i].cut_length);
+        EXPECT_EQ(got[i].passes, want[i].passes);
+    }
+    EXPECT_DOUBLE_EQ(got[1].cut_length, 100);  // T2: Y50 and back
+}
