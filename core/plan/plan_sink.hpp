@@ -57,17 +57,30 @@ class PlanSink final : public MachineSink, private Planner::Receiver {
     void halt(bool settle, const Loc& l);
     void wait(const Loc& l, double seconds);
     using Dir = std::array<double, kAxes>;
-    double junction_sq(const Dir& last, const Dir& in, double eg) const;
     // How much the axes bind a path: each its travel over its own limit, the
     // largest (0: none binds).
     struct Along {
         double v = 0, a = 0, j = 0;
     };
     Along along(const Dir& per, const Dir& inv_speed) const;
-    // A move's segment, and its direction (at its start and end for an arc).
-    void limits(const MoveEvent& e, const Along& lim, Segment& s) const;
-    void line(const MoveEvent& e, Segment& s, Dir& dir) const;
-    void arc(const MoveEvent& e, Segment& s, Dir& in, Dir& out) const;
+    // The corner from the last move's direction into the next one's: the
+    // cosine of its angle, and the change of direction over the acceleration
+    // on the axis that limits it.
+    struct Corner {
+        double cos = 0, turn = 0;
+    };
+    Corner corner(const Dir& last, const Dir& in) const;
+    double junction_sq(const Corner& c, double eg) const;
+    // An arc's centripetal limit, when the arc is round: its radius and the
+    // share of its path in the plane.
+    struct Bend {
+        bool round = false;
+        double radius = 0, plane = 0;
+    };
+    // A move's direction and how the axes bind it (at an arc's start and end),
+    // in one pass over the axes for a line, the corner with the last move too.
+    void line(const MoveEvent& e, Along& lim, Dir& dir, Corner& k) const;
+    Bend arc(const MoveEvent& e, Along& lim, Dir& in, Dir& out) const;
     // An event that is no move: counted against the look-ahead's limit; true
     // when there is a next sink to hand it to.
     bool other();
