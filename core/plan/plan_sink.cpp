@@ -85,42 +85,64 @@ PlanSink::Along PlanSink::along(const Dir& per, const Dir& inv_speed) const {
     return r;
 }
 
-// An arc: its direction at both ends, and its limits: each plane axis may
-// take all of the plane's share of the path (the tangent turns), the other
-// axes (a helix) their own; the speed is then held where the centre pulls at
-// the arc's share of the acceleration (move()).
-PlanSink::Bend PlanSink::arc(const MoveEvent& e, Along& lim, Dir& in, Dir& out) const {
+// An arc: its direction at both ends, its limits and the corner with the
+// last move's direction: each plane axis may take all of the plane's share of
+// the path (the tangent turns), the other axes (a helix) their own; the speed
+// is then held where the centre pulls at the arc's share of the acceleration
+// (move()).
+PlanSink::Bend PlanSink::arc(const MoveEvent& e, Along& lim, Dir& in, Dir& out, Corner& k) const {
     const size_t a0 = size_t(e.plane_a0), a1 = size_t(e.plane_a1);
     const double sx = e.from_mach[a0] - e.mc0, sy = e.from_mach[a1] - e.mc1;
     const double ex = e.to_mach[a0] - e.mc0, ey = e.to_mach[a1] - e.mc1;
     const double rs = std::sqrt(sx * sx + sy * sy), re = std::sqrt(ex * ex + ey * ey);
     const double radius = (rs + re) / 2;
     const double arclen = std::fabs(e.msweep) * geometry::kDeg * radius;
-    Dir per{};
     double h2 = 0;
-    for (size_t k = 0; k < naxes_; ++k) {
-        const size_t i = axes_[k];
+    for (size_t j = 0; j < naxes_; ++j) {
+        const size_t i = axes_[j];
         if (i == a0 || i == a1) continue;
-        per[i] = e.to_mach[i] - e.from_mach[i];
-        h2 += per[i] * per[i];
+        const double d = e.to_mach[i] - e.from_mach[i];
+        h2 += d * d;
     }
     const double total = h2 > 0 ? std::sqrt(arclen * arclen + h2) : arclen;
     const bool round = rs > kTiny && re > kTiny && total > kTiny;
     const double inv_total = round ? 1 / total : 1 / e.length;
-    for (size_t k = 0; k < naxes_; ++k) {  // per unit of path: the helix's axes go evenly
-        const size_t i = axes_[k];
-        in[i] = out[i] = per[i] *= inv_total;
+    // Per unit of path: the helix's axes go evenly, the plane's share turns
+    // with the radius (counter-clockwise: the radius +90°).
+    const double plane = round ? arclen * inv_total : 0;
+    if (round) {
+        const double turn = e.msweep >= 0 ? plane : -plane;
+        in[a0] = -turn * sy / rs, in[a1] = turn * sx / rs;
+        out[a0] = -turn * ey / re, out[a1] = turn * ex / re;
     }
-    if (!round) {
-        lim = along(per, inv_feed_);
-        return {};
+    const Dir& last = dir_[last_];
+    double v = 0, a = 0, cos = 0, turn = 0;
+    for (size_t j = 0; j < naxes_; ++j) {
+        const size_t i = axes_[j];
+        double p = plane;
+        if (i != a0 && i != a1) {
+            p = (e.to_mach[i] - e.from_mach[i]) * inv_total;
+            in[i] = out[i] = p;
+        } else if (!round) {
+            in[i] = out[i] = 0;
+        }
+        const double c = std::fabs(p), u = in[i], l = last[i];
+        v = std::max(v, c * inv_feed_[i]);
+        a = std::max(a, c * inv_accel_[i]);
+        cos += l * u;
+        turn = std::max(turn, std::fabs(u - l) * inv_accel_[i]);
     }
-    const double plane = arclen * inv_total;
-    const double turn = e.msweep >= 0 ? plane : -plane;  // counter-clockwise: the radius +90°
-    in[a0] = -turn * sy / rs, in[a1] = turn * sx / rs;
-    out[a0] = -turn * ey / re, out[a1] = turn * ex / re;
-    per[a0] = per[a1] = plane;
-    lim = along(per, inv_feed_);
+    lim.v = v, lim.a = a;
+    k.cos = cos, k.turn = turn;
+    if (jerk_) {
+        for (size_t j = 0; j < naxes_; ++j) {
+            const size_t i = axes_[j];
+            const double p =
+                i == a0 || i == a1 ? plane : (e.to_mach[i] - e.from_mach[i]) * inv_total;
+            lim.j = std::max(lim.j, std::fabs(p) * inv_jerk_[i]);
+        }
+    }
+    if (!round) return {};
     return {true, radius, plane};
 }
 
@@ -220,8 +242,7 @@ double PlanSink::junction_sq(const Corner& k, double eg) const {
     Corner k;
     Bend bend;
     if (e.g == 2 || e.g == 3) {
-        bend = arc(e, lim, entry_, out);
-        if (have_last_) k = corner(dir_[last_], entry_);
+        bend = arc(e, lim, entry_, out, k);
     } else {
         line(e, lim, out, k);
     }

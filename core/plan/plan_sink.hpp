@@ -77,10 +77,10 @@ class PlanSink final : public MachineSink, private Planner::Receiver {
         bool round = false;
         double radius = 0, plane = 0;
     };
-    // A move's direction and how the axes bind it (at an arc's start and end),
-    // in one pass over the axes for a line, the corner with the last move too.
+    // A move's direction (at an arc's start and end), how the axes bind it
+    // and its corner with the last move, in one pass over the axes.
     void line(const MoveEvent& e, Along& lim, Dir& dir, Corner& k) const;
-    Bend arc(const MoveEvent& e, Along& lim, Dir& in, Dir& out) const;
+    Bend arc(const MoveEvent& e, Along& lim, Dir& in, Dir& out, Corner& k) const;
     // An event that is no move: counted against the look-ahead's limit; true
     // when there is a next sink to hand it to.
     bool other();
