@@ -52,7 +52,11 @@ struct PlanSink::Queue {
 };
 
 PlanSink::PlanSink(const MachineProfile& m, MachineSink* next)
-    : m_(m), next_(next), planner_(*this), queue_(std::make_unique<Queue>()) {
+    : m_(m),
+      next_(next),
+      planner_(*this),
+      queue_(std::make_unique<Queue>()),
+      smoothing_(m.smoothing) {
     auto inv = [](double v) { return v > 0 ? 1 / v : 0; };
     for (size_t a = 0; a < kAxes; ++a) {
         jerk_ = jerk_ || (m.has(int(a)) && m.axes[a].jerk > 0);
@@ -166,7 +170,7 @@ void limits(const MoveEvent& e, double v, double a, double j, Segment& s) {
         s.inv_accel = e.eg == 100 ? a : a * 100 / e.eg;
         s.limits.accel = 1 / s.inv_accel;
     }
-    s.limits.jerk = j > 0 ? 1 / j : 0;
+    if (j > 0) s.limits.jerk = 1 / j;  // else 0, as add() left it
 }
 }  // namespace
 
@@ -221,11 +225,11 @@ PlanSink::Corner PlanSink::corner(const Dir& last, const Dir& in) const {
 double PlanSink::junction_sq(const Corner& k, double eg) const {
     const double c = k.cos;
     if (c > 1 - 1e-9) return HUGE_VAL;
-    if (c < -1 + 1e-9 || m_.smoothing <= 0) return 0;
+    if (c < -1 + 1e-9 || smoothing_ <= 0) return 0;
     if (k.turn <= 0) return HUGE_VAL;
     const double acc = std::sqrt(2 - 2 * c) / k.turn;  // the change of direction's length over it
     const double sin_half = std::sqrt(0.5 * (1 + c));  // half the corner's angle
-    return acc * eg * 0.01 * m_.smoothing * sin_half / (1 - sin_half);
+    return acc * eg * 0.01 * smoothing_ * sin_half / (1 - sin_half);
 }
 
 [[gnu::flatten]] void PlanSink::move(const MoveEvent& e) {
@@ -271,7 +275,10 @@ void PlanSink::planned(const Segment& s) {
     const double start = report_.seconds;
     report_.seconds += s.timing.seconds;
     report_.tools.add(s.tool, s.cut, s.length, s.timing.seconds);
-    if (!next_) return;
+    if (next_) hand_on(s, start);
+}
+
+void PlanSink::hand_on(const Segment& s, double start) {
     auto& q = queue_->q;
     MoveEvent& e = std::get<MoveEvent>(q.front().ev);
     e.plan_start = start;

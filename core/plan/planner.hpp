@@ -31,12 +31,14 @@ struct Segment {
     double entry = 0, exit = 0;
     Timing timing;
     // The planner's own, in squared speeds as grbl keeps them (the passes
-    // then need no square root): the cruise limit, what accelerating over the
-    // length adds, the entry fixed once the move before is planned, and `back`,
-    // the highest entry from which the moves after it, as far as they are
-    // known, can still stop.
-    double vmax_sq = 0, gain_sq = 0, entry_sq = 0, back_sq = 0;
+    // then need no square root): what accelerating over the length adds, the
+    // entry fixed once the move before is planned, and `back`, the highest
+    // entry from which the moves after it, as far as they are known, can
+    // still stop. (The cruise limit's square is the newest move's alone, kept
+    // by the planner: a segment of 128 bytes is a shift from its index.)
+    double gain_sq = 0, entry_sq = 0, back_sq = 0;
 };
+static_assert(sizeof(Segment) == 128);
 
 class Planner {
   public:
@@ -116,7 +118,6 @@ inline void Planner::push() {
     s.inv_vmax = inv_vmax;
     if (s.inv_accel <= 0 && accel > 0) s.inv_accel = 1 / accel;
     const double vmax_sq = vmax * vmax;
-    s.vmax_sq = vmax_sq;
     s.gain_sq = accel > 0 ? 2 * accel * length : HUGE_VAL;
     // After a stop, the move starts from rest; else no faster than either
     // move may go. The oldest's entry is fixed: from rest, or when the one
@@ -148,7 +149,7 @@ inline void Planner::commit_oldest() {
     const double length = s.length, accel = s.limits.accel, inv_accel = s.inv_accel;
     if (accel > 0 && s.limits.jerk <= 0) {
         // The trapezoid, from the squares the passes kept, without a division.
-        const double vmax = s.vmax, vmax_sq = s.vmax_sq, half = 0.5 * inv_accel;
+        const double vmax = s.vmax, vmax_sq = vmax * vmax, half = 0.5 * inv_accel;
         const double up = (vmax_sq - entry_sq) * half, down = (vmax_sq - exit_sq) * half;
         if (up + down <= length) {
             s.timing = {(2 * vmax - entry - exit) * inv_accel + (length - up - down) * s.inv_vmax,
