@@ -240,6 +240,9 @@ double PlanSink::junction_sq(const Corner& k, double eg) const {
         return;
     }
     if (next_) queue_->q.push_back({e, true});
+    // The ring full, its oldest move is planned here rather than through the
+    // receiver's virtual call: inline, as every step of a move is.
+    if (planner_.held() == Planner::kDepth) PlanSink::planned(planner_.plan_oldest());
     Segment& s = planner_.add();  // filled in place: a move is planned in its ring's slot
     Dir& out = dir_[1 - last_];   // its direction at its end, the last one's next time
     Along lim;

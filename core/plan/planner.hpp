@@ -67,7 +67,13 @@ class Planner {
     size_t held() const { return count_; }
     // Plans the oldest move held with what is known after it (the ring is full,
     // or something other than moves waits behind it).
-    void commit_oldest();
+    void commit_oldest() {
+        if (count_) out_.planned(plan_oldest());
+    }
+    // The same without the receiver: the oldest move planned and let go of,
+    // for a caller that takes it at once (its slot is the next add()'s).
+    // There must be one held.
+    const Segment& plan_oldest();
 
   private:
     // The square of the speed reachable over `s` from one whose square is v_sq.
@@ -137,8 +143,7 @@ inline void Planner::push() {
     }
 }
 
-inline void Planner::commit_oldest() {
-    if (count_ == 0) return;
+inline const Segment& Planner::plan_oldest() {
     Segment& s = ring_[head_];
     const size_t next_head = head_ + 1 < kDepth ? head_ + 1 : 0;
     const double next = count_ > 1 ? ring_[next_head].back_sq : 0;
@@ -165,12 +170,12 @@ inline void Planner::commit_oldest() {
     // E32000: the block lasts at least its minimum (004:1265); its speed was
     // already held to length / min_time.
     s.timing.seconds = std::max(s.timing.seconds, s.min_time);
-    out_.planned(s);
     head_ = next_head;
     if (--count_) {
         ring_[next_head].entry = exit;
         ring_[next_head].entry_sq = exit_sq;
     }
+    return s;
 }
 
 }  // namespace pupitre::plan
