@@ -52,7 +52,11 @@ struct PlanSink::Queue {
 };
 
 PlanSink::PlanSink(const MachineProfile& m, MachineSink* next)
-    : m_(m), next_(next), planner_(*this), queue_(std::make_unique<Queue>()) {
+    : m_(m),
+      next_(next),
+      planner_(*this),
+      queue_(std::make_unique<Queue>()),
+      smoothing_(m.smoothing) {
     auto inv = [](double v) { return v > 0 ? 1 / v : 0; };
     for (size_t a = 0; a < kAxes; ++a) {
         jerk_ = jerk_ || (m.has(int(a)) && m.axes[a].jerk > 0);
@@ -85,115 +89,150 @@ PlanSink::Along PlanSink::along(const Dir& per, const Dir& inv_speed) const {
     return r;
 }
 
-// An arc: its direction at both ends, and its limits: each plane axis may
-// take all of the plane's share of the path (the tangent turns), the other
-// axes (a helix) their own, and the speed is held where the centre pulls at
-// the arc's share of the acceleration.
-void PlanSink::arc(const MoveEvent& e, Segment& s, Dir& in, Dir& out) const {
+// An arc: its direction at both ends, its limits and the corner with the
+// last move's direction: each plane axis may take all of the plane's share of
+// the path (the tangent turns), the other axes (a helix) their own; the speed
+// is then held where the centre pulls at the arc's share of the acceleration
+// (move()).
+PlanSink::Bend PlanSink::arc(const MoveEvent& e, Along& lim, Dir& in, Dir& out, Corner& k) const {
     const size_t a0 = size_t(e.plane_a0), a1 = size_t(e.plane_a1);
     const double sx = e.from_mach[a0] - e.mc0, sy = e.from_mach[a1] - e.mc1;
     const double ex = e.to_mach[a0] - e.mc0, ey = e.to_mach[a1] - e.mc1;
     const double rs = std::sqrt(sx * sx + sy * sy), re = std::sqrt(ex * ex + ey * ey);
     const double radius = (rs + re) / 2;
     const double arclen = std::fabs(e.msweep) * geometry::kDeg * radius;
-    Dir per{};
     double h2 = 0;
-    for (size_t k = 0; k < naxes_; ++k) {
-        const size_t i = axes_[k];
+    for (size_t j = 0; j < naxes_; ++j) {
+        const size_t i = axes_[j];
         if (i == a0 || i == a1) continue;
-        per[i] = e.to_mach[i] - e.from_mach[i];
-        h2 += per[i] * per[i];
+        const double d = e.to_mach[i] - e.from_mach[i];
+        h2 += d * d;
     }
     const double total = h2 > 0 ? std::sqrt(arclen * arclen + h2) : arclen;
     const bool round = rs > kTiny && re > kTiny && total > kTiny;
     const double inv_total = round ? 1 / total : 1 / e.length;
-    for (size_t k = 0; k < naxes_; ++k) {  // per unit of path: the helix's axes go evenly
-        const size_t i = axes_[k];
-        in[i] = out[i] = per[i] *= inv_total;
+    // Per unit of path: the helix's axes go evenly, the plane's share turns
+    // with the radius (counter-clockwise: the radius +90°).
+    const double plane = round ? arclen * inv_total : 0;
+    if (round) {
+        const double turn = e.msweep >= 0 ? plane : -plane;
+        in[a0] = -turn * sy / rs, in[a1] = turn * sx / rs;
+        out[a0] = -turn * ey / re, out[a1] = turn * ex / re;
     }
-    if (!round) return limits(e, along(per, inv_feed_), s);
-    const double plane = arclen * inv_total;
-    const double turn = e.msweep >= 0 ? plane : -plane;  // counter-clockwise: the radius +90°
-    in[a0] = -turn * sy / rs, in[a1] = turn * sx / rs;
-    out[a0] = -turn * ey / re, out[a1] = turn * ex / re;
-    per[a0] = per[a1] = plane;
-    limits(e, along(per, inv_feed_), s);
-    if (s.limits.accel > 0) {
-        // The centre pulls at most sqrt(3)/2 of the plane's acceleration
-        // (s.limits.accel is the path's: plane / share); half goes along.
-        const double centre = kArcNormal * s.limits.accel * plane;
-        const double v = std::sqrt(centre * radius) / std::max(plane, kTiny);
-        if (v < s.vmax) {
-            s.vmax = v;
-            s.inv_vmax = 1 / v;
+    const Dir& last = dir_[last_];
+    double v = 0, a = 0, cos = 0, turn = 0;
+    for (size_t j = 0; j < naxes_; ++j) {
+        const size_t i = axes_[j];
+        double p = plane;
+        if (i != a0 && i != a1) {
+            p = (e.to_mach[i] - e.from_mach[i]) * inv_total;
+            in[i] = out[i] = p;
+        } else if (!round) {
+            in[i] = out[i] = 0;
         }
-        s.limits.accel *= kArcTangential;
-        s.inv_accel /= kArcTangential;
+        const double c = std::fabs(p), u = in[i], l = last[i];
+        v = std::max(v, c * inv_feed_[i]);
+        a = std::max(a, c * inv_accel_[i]);
+        cos += l * u;
+        turn = std::max(turn, std::fabs(u - l) * inv_accel_[i]);
     }
+    lim.v = v, lim.a = a;
+    k.cos = cos, k.turn = turn;
+    if (jerk_) {
+        for (size_t j = 0; j < naxes_; ++j) {
+            const size_t i = axes_[j];
+            const double p =
+                i == a0 || i == a1 ? plane : (e.to_mach[i] - e.from_mach[i]) * inv_total;
+            lim.j = std::max(lim.j, std::fabs(p) * inv_jerk_[i]);
+        }
+    }
+    if (!round) return {};
+    return {true, radius, plane};
 }
 
-// The segment of a move from how much its axes bind it: the speed no more
-// than the feed's (the length over the time at the feed), EG on the
-// acceleration.
-void PlanSink::limits(const MoveEvent& e, const Along& lim, Segment& s) const {
+namespace {
+// The segment of a move from how much its axes bind it (Along: v, a, j): the
+// speed no more than the feed's (the length over the time at the feed), EG on
+// the acceleration.
+void limits(const MoveEvent& e, double v, double a, double j, Segment& s) {
     s.length = e.length;
     s.min_time = e.min_block;
     // The longest of the times at the axes' limits, at the feed (a rapid
     // has none of its own), and E32000's.
-    const double t = std::max({lim.v * e.length, e.g != 0 ? e.seconds : 0, e.min_block});
+    const double t = std::max({v * e.length, e.g != 0 ? e.seconds : 0, e.min_block});
     if (t > 0) {
         s.vmax = e.length / t;
         s.inv_vmax = t / e.length;
     } else {
         s.vmax = 1e9;
     }
-    if (lim.a > 0) {
-        s.inv_accel = e.eg == 100 ? lim.a : lim.a * 100 / e.eg;
+    if (a > 0) {
+        s.inv_accel = e.eg == 100 ? a : a * 100 / e.eg;
         s.limits.accel = 1 / s.inv_accel;
     }
-    s.limits.jerk = lim.j > 0 ? 1 / lim.j : 0;
+    if (j > 0) s.limits.jerk = 1 / j;  // else 0, as add() left it
 }
+}  // namespace
 
-void PlanSink::line(const MoveEvent& e, Segment& s, Dir& dir) const {
-    double n2 = 0;
+// A line: its direction, its limits and the corner with the last move's
+// direction in one pass over the axes (a move's steps are counted, issue 35
+// item 7).
+void PlanSink::line(const MoveEvent& e, Along& lim, Dir& dir, Corner& k) const {
+    const Dir& inv_speed = e.g == 0 ? inv_rapid_ : inv_feed_;
+    const Dir& last = dir_[last_];
     const double inv_len = 1 / e.length;
-    for (size_t k = 0; k < naxes_; ++k) {
-        const size_t i = axes_[k];
-        const double d = e.to_mach[i] - e.from_mach[i];
+    // Kept in locals, which the stores to `dir` cannot touch.
+    double n2 = 0, v = 0, a = 0, cos = 0, turn = 0;
+    for (size_t j = 0; j < naxes_; ++j) {
+        const size_t i = axes_[j];
+        const double d = e.to_mach[i] - e.from_mach[i], l = last[i];
+        const double u = d * inv_len;  // per unit of path
         n2 += d * d;
-        dir[i] = d * inv_len;  // per unit of path
+        dir[i] = u;
+        const double c = std::fabs(u);
+        v = std::max(v, c * inv_speed[i]);
+        a = std::max(a, c * inv_accel_[i]);
+        cos += l * u;
+        turn = std::max(turn, std::fabs(u - l) * inv_accel_[i]);
     }
-    limits(e, along(dir, e.g == 0 ? inv_rapid_ : inv_feed_), s);
+    lim.v = v, lim.a = a;
+    k.cos = cos, k.turn = turn;
+    if (jerk_) lim.j = along(dir, inv_speed).j;
     // The interpreter's length is the axes' travel unless rotary axes turn
     // with linear ones (then it is the linear part): then the direction is
     // scaled to a unit one.
     if (std::fabs(n2 * inv_len * inv_len - 1) > 1e-9) {
         const double unit = e.length / std::sqrt(n2);
-        for (size_t k = 0; k < naxes_; ++k) dir[axes_[k]] *= unit;
+        for (size_t j = 0; j < naxes_; ++j) dir[axes_[j]] *= unit;
+        k = corner(last, dir);
     }
 }
 
-// The square of how fast the corner from the last move into `in` may be
+PlanSink::Corner PlanSink::corner(const Dir& last, const Dir& in) const {
+    double cos = 0, turn = 0;
+    for (size_t j = 0; j < naxes_; ++j) {
+        const size_t i = axes_[j];
+        cos += last[i] * in[i];
+        turn = std::max(turn, std::fabs(in[i] - last[i]) * inv_accel_[i]);
+    }
+    return {cos, turn};
+}
+
+// The square of how fast the corner from the last move into the next may be
 // passed: on the arc that leaves the corner by the smoothing tolerance, at
 // the acceleration along the change of direction (grbl's junction
 // deviation). 0 turning back, HUGE_VAL going straight on.
-double PlanSink::junction_sq(const Dir& last, const Dir& in, double eg) const {
-    double c = 0;
-    for (size_t k = 0; k < naxes_; ++k) c += last[axes_[k]] * in[axes_[k]];
+double PlanSink::junction_sq(const Corner& k, double eg) const {
+    const double c = k.cos;
     if (c > 1 - 1e-9) return HUGE_VAL;
-    if (c < -1 + 1e-9 || m_.smoothing <= 0) return 0;
-    double ra = 0;  // the change of direction over the acceleration, on the axis that limits
-    for (size_t k = 0; k < naxes_; ++k) {
-        const size_t i = axes_[k];
-        ra = std::max(ra, std::fabs(in[i] - last[i]) * inv_accel_[i]);
-    }
-    if (ra <= 0) return HUGE_VAL;
-    const double acc = std::sqrt(2 - 2 * c) / ra;      // the change of direction's length over ra
+    if (c < -1 + 1e-9 || smoothing_ <= 0) return 0;
+    if (k.turn <= 0) return HUGE_VAL;
+    const double acc = std::sqrt(2 - 2 * c) / k.turn;  // the change of direction's length over it
     const double sin_half = std::sqrt(0.5 * (1 + c));  // half the corner's angle
-    return acc * eg * 0.01 * m_.smoothing * sin_half / (1 - sin_half);
+    return acc * eg * 0.01 * smoothing_ * sin_half / (1 - sin_half);
 }
 
-void PlanSink::move(const MoveEvent& e) {
+[[gnu::flatten]] void PlanSink::move(const MoveEvent& e) {
     report_.feed_seconds += e.seconds;
     others_ = 0;
     if (e.length < 1e-9) {  // nothing to plan: it takes no time
@@ -201,16 +240,33 @@ void PlanSink::move(const MoveEvent& e) {
         return;
     }
     if (next_) queue_->q.push_back({e, true});
+    // The ring full, its oldest move is planned here rather than through the
+    // receiver's virtual call: inline, as every step of a move is.
+    if (planner_.held() == Planner::kDepth) PlanSink::planned(planner_.plan_oldest());
     Segment& s = planner_.add();  // filled in place: a move is planned in its ring's slot
     Dir& out = dir_[1 - last_];   // its direction at its end, the last one's next time
-    const Dir* in = &out;
+    Along lim;
+    Corner k;
+    Bend bend;
     if (e.g == 2 || e.g == 3) {
-        arc(e, s, entry_, out);
-        in = &entry_;
+        bend = arc(e, lim, entry_, out, k);
     } else {
-        line(e, s, out);
+        line(e, lim, out, k);
     }
-    s.entry_max_sq = have_last_ ? junction_sq(dir_[last_], *in, e.eg) : 0;
+    limits(e, lim.v, lim.a, lim.j, s);
+    if (bend.round && s.limits.accel > 0) {
+        // The centre pulls at most sqrt(3)/2 of the plane's acceleration
+        // (s.limits.accel is the path's: plane / share); half goes along.
+        const double centre = kArcNormal * s.limits.accel * bend.plane;
+        const double v = std::sqrt(centre * bend.radius) / std::max(bend.plane, kTiny);
+        if (v < s.vmax) {
+            s.vmax = v;
+            s.inv_vmax = 1 / v;
+        }
+        s.limits.accel *= kArcTangential;
+        s.inv_accel /= kArcTangential;
+    }
+    s.entry_max_sq = have_last_ ? junction_sq(k, e.eg) : 0;
     s.tool = tool_;
     s.cut = e.g != 0;
     planner_.push();
@@ -222,7 +278,10 @@ void PlanSink::planned(const Segment& s) {
     const double start = report_.seconds;
     report_.seconds += s.timing.seconds;
     report_.tools.add(s.tool, s.cut, s.length, s.timing.seconds);
-    if (!next_) return;
+    if (next_) hand_on(s, start);
+}
+
+void PlanSink::hand_on(const Segment& s, double start) {
     auto& q = queue_->q;
     MoveEvent& e = std::get<MoveEvent>(q.front().ev);
     e.plan_start = start;

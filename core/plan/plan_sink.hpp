@@ -52,22 +52,36 @@ class PlanSink final : public MachineSink, private Planner::Receiver {
   private:
     struct Queue;
     void planned(const Segment&) override;
+    void hand_on(const Segment&, double start);  // to the next sink, and what waited on it
     // The motion stops at rest; `settle`: an exact stop the program or the
     // machine asks for, which waits the profile's in-position time.
     void halt(bool settle, const Loc& l);
     void wait(const Loc& l, double seconds);
     using Dir = std::array<double, kAxes>;
-    double junction_sq(const Dir& last, const Dir& in, double eg) const;
     // How much the axes bind a path: each its travel over its own limit, the
     // largest (0: none binds).
     struct Along {
         double v = 0, a = 0, j = 0;
     };
     Along along(const Dir& per, const Dir& inv_speed) const;
-    // A move's segment, and its direction (at its start and end for an arc).
-    void limits(const MoveEvent& e, const Along& lim, Segment& s) const;
-    void line(const MoveEvent& e, Segment& s, Dir& dir) const;
-    void arc(const MoveEvent& e, Segment& s, Dir& in, Dir& out) const;
+    // The corner from the last move's direction into the next one's: the
+    // cosine of its angle, and the change of direction over the acceleration
+    // on the axis that limits it.
+    struct Corner {
+        double cos = 0, turn = 0;
+    };
+    Corner corner(const Dir& last, const Dir& in) const;
+    double junction_sq(const Corner& c, double eg) const;
+    // An arc's centripetal limit, when the arc is round: its radius and the
+    // share of its path in the plane.
+    struct Bend {
+        bool round = false;
+        double radius = 0, plane = 0;
+    };
+    // A move's direction (at an arc's start and end), how the axes bind it
+    // and its corner with the last move, in one pass over the axes.
+    void line(const MoveEvent& e, Along& lim, Dir& dir, Corner& k) const;
+    Bend arc(const MoveEvent& e, Along& lim, Dir& in, Dir& out, Corner& k) const;
     // An event that is no move: counted against the look-ahead's limit; true
     // when there is a next sink to hand it to.
     bool other();
@@ -84,6 +98,7 @@ class PlanSink final : public MachineSink, private Planner::Receiver {
     std::array<size_t, kAxes> axes_{};
     size_t naxes_ = 0;
     bool jerk_ = false;  // an axis has a jerk
+    double smoothing_;   // the profile's, read at every corner
     std::array<double, kAxes> inv_rapid_{}, inv_feed_{}, inv_accel_{}, inv_jerk_{};
     // The directions at the end of the last move (dir_[last_]) and of the
     // one being added; an arc's at its start.

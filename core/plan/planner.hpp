@@ -31,12 +31,14 @@ struct Segment {
     double entry = 0, exit = 0;
     Timing timing;
     // The planner's own, in squared speeds as grbl keeps them (the passes
-    // then need no square root): the cruise limit, what accelerating over the
-    // length adds, the entry fixed once the move before is planned, and `back`,
-    // the highest entry from which the moves after it, as far as they are
-    // known, can still stop.
-    double vmax_sq = 0, gain_sq = 0, entry_sq = 0, back_sq = 0;
+    // then need no square root): what accelerating over the length adds, the
+    // entry fixed once the move before is planned, and `back`, the highest
+    // entry from which the moves after it, as far as they are known, can
+    // still stop. (The cruise limit's square is the newest move's alone, kept
+    // by the planner: a segment of 128 bytes is a shift from its index.)
+    double gain_sq = 0, entry_sq = 0, back_sq = 0;
 };
+static_assert(sizeof(Segment) == 128);
 
 class Planner {
   public:
@@ -50,9 +52,9 @@ class Planner {
     };
     explicit Planner(Receiver& r) : out_(r) {}
 
-    // A move after the ones held: add() gives its slot, cleared, which the
-    // caller fills (length, vmax, limits, min_time, entry_max_sq: how fast
-    // the junction with the one before may be passed, tool, cut); push()
+    // A move after the ones held: add() gives its slot, cleared (what the
+    // planner does not write itself), which the caller fills (length, vmax, limits, min_time,
+    // entry_max_sq: how fast the junction with the one before may be passed, tool, cut); push()
     // plans with it. Filled in place, a move is never copied.
     Segment& add();
     void push();
@@ -65,7 +67,13 @@ class Planner {
     size_t held() const { return count_; }
     // Plans the oldest move held with what is known after it (the ring is full,
     // or something other than moves waits behind it).
-    void commit_oldest();
+    void commit_oldest() {
+        if (count_) out_.planned(plan_oldest());
+    }
+    // The same without the receiver: the oldest move planned and let go of,
+    // for a caller that takes it at once (its slot is the next add()'s).
+    // There must be one held.
+    const Segment& plan_oldest();
 
   private:
     // The square of the speed reachable over `s` from one whose square is v_sq.
@@ -81,6 +89,7 @@ class Planner {
     Receiver& out_;
     std::array<Segment, kDepth> ring_{};
     size_t head_ = 0, count_ = 0;
+    double last_vmax_sq_ = 0;  // the newest move's vmax_sq
 };
 
 // The planner's steps for every move are inline: a move is planned within
@@ -88,69 +97,85 @@ class Planner {
 inline Segment& Planner::add() {
     if (count_ == kDepth) commit_oldest();
     Segment& s = at(count_);
-    s = Segment{};
+    // What the caller fills and the planner reads before writing is cleared
+    // field by field, so that the compiler drops the stores the caller
+    // makes again (the rest of the slot is the planner's, written first).
+    s.length = s.vmax = 0;
+    s.limits = {};
+    s.entry_max_sq = s.min_time = s.inv_vmax = s.inv_accel = 0;
+    s.tool = 0;
+    s.cut = false;
+    s.entry = s.entry_sq = 0;
     return s;
 }
 
+// The fields a step reads are taken into locals once: the stores to the
+// ring could otherwise touch them, for all the compiler knows.
 inline void Planner::push() {
     Segment& s = at(count_);
-    if (s.inv_vmax <= 0) s.inv_vmax = 1 / s.vmax;
-    if (s.min_time > 0 && s.vmax * s.min_time > s.length) {
-        s.vmax = s.length / s.min_time;
-        s.inv_vmax = s.min_time / s.length;
+    const double length = s.length, accel = s.limits.accel, min_time = s.min_time;
+    double vmax = s.vmax, inv_vmax = s.inv_vmax;
+    if (inv_vmax <= 0) inv_vmax = 1 / vmax;
+    if (min_time > 0 && vmax * min_time > length) {
+        vmax = length / min_time;
+        inv_vmax = min_time / length;
     }
-    if (s.inv_accel <= 0 && s.limits.accel > 0) s.inv_accel = 1 / s.limits.accel;
-    s.vmax_sq = s.vmax * s.vmax;
-    s.gain_sq = s.limits.accel > 0 ? 2 * s.limits.accel * s.length : HUGE_VAL;
+    s.vmax = vmax;
+    s.inv_vmax = inv_vmax;
+    if (s.inv_accel <= 0 && accel > 0) s.inv_accel = 1 / accel;
+    const double vmax_sq = vmax * vmax;
+    s.gain_sq = accel > 0 ? 2 * accel * length : HUGE_VAL;
     // After a stop, the move starts from rest; else no faster than either
     // move may go. The oldest's entry is fixed: from rest, or when the one
     // before it is planned.
-    s.entry_max_sq =
-        count_ == 0 ? 0 : std::min({s.entry_max_sq, s.vmax_sq, at(count_ - 1).vmax_sq});
-    s.back_sq = std::min(s.entry_max_sq, reach_sq(0, s));
-    ++count_;
-    for (size_t i = count_ - 1; i-- > 1;) {  // the oldest's entry is fixed already
-        Segment& c = at(i);
-        const double b = std::min(c.entry_max_sq, reach_sq(at(i + 1).back_sq, c));
-        if (b <= c.back_sq) break;
-        c.back_sq = b;
+    const double entry_max_sq =
+        count_ == 0 ? 0 : std::min(std::min(s.entry_max_sq, vmax_sq), last_vmax_sq_);
+    s.entry_max_sq = entry_max_sq;
+    last_vmax_sq_ = vmax_sq;
+    double back = std::min(entry_max_sq, reach_sq(0, s));
+    s.back_sq = back;
+    Segment* c = &s;
+    for (size_t i = count_++; i-- > 1;) {  // the oldest's entry is fixed already
+        c = c == ring_.data() ? c + (kDepth - 1) : c - 1;
+        const double b = std::min(c->entry_max_sq, reach_sq(back, *c));
+        if (b <= c->back_sq) break;
+        c->back_sq = back = b;
     }
 }
 
-inline void Planner::commit_oldest() {
-    if (count_ == 0) return;
-    Segment& s = at(0);
-    const double next = count_ > 1 ? at(1).back_sq : 0;
-    const double exit_sq = std::min(next, reach_sq(s.entry_sq, s));
-    s.exit = std::sqrt(exit_sq);
-    if (s.limits.accel > 0 && s.limits.jerk <= 0) {
+inline const Segment& Planner::plan_oldest() {
+    Segment& s = ring_[head_];
+    const size_t next_head = head_ + 1 < kDepth ? head_ + 1 : 0;
+    const double next = count_ > 1 ? ring_[next_head].back_sq : 0;
+    const double entry = s.entry, entry_sq = s.entry_sq;
+    const double exit_sq = std::min(next, reach_sq(entry_sq, s));
+    const double exit = std::sqrt(exit_sq);
+    s.exit = exit;
+    const double length = s.length, accel = s.limits.accel, inv_accel = s.inv_accel;
+    if (accel > 0 && s.limits.jerk <= 0) {
         // The trapezoid, from the squares the passes kept, without a division.
-        const double half = 0.5 * s.inv_accel;
-        const double up = (s.vmax_sq - s.entry_sq) * half, down = (s.vmax_sq - exit_sq) * half;
-        if (up + down <= s.length) {
-            s.timing = {
-                (2 * s.vmax - s.entry - s.exit) * s.inv_accel + (s.length - up - down) * s.inv_vmax,
-                s.vmax};
+        const double vmax = s.vmax, vmax_sq = vmax * vmax, half = 0.5 * inv_accel;
+        const double up = (vmax_sq - entry_sq) * half, down = (vmax_sq - exit_sq) * half;
+        if (up + down <= length) {
+            s.timing = {(2 * vmax - entry - exit) * inv_accel + (length - up - down) * s.inv_vmax,
+                        vmax};
         } else {  // a triangle: (vp² - v0²) / 2a + (vp² - v1²) / 2a = length
-            const double vp =
-                std::sqrt(std::max(s.limits.accel * s.length + (s.entry_sq + exit_sq) / 2,
-                                   std::max(s.entry_sq, exit_sq)));
-            s.timing = {(2 * vp - s.entry - s.exit) * s.inv_accel, vp};
+            const double vp = std::sqrt(
+                std::max(accel * length + (entry_sq + exit_sq) / 2, std::max(entry_sq, exit_sq)));
+            s.timing = {(2 * vp - entry - exit) * inv_accel, vp};
         }
     } else {
-        s.timing = timing(s.length, s.entry, s.exit, s.vmax, s.limits);
+        s.timing = timing(length, entry, exit, s.vmax, s.limits);
     }
     // E32000: the block lasts at least its minimum (004:1265); its speed was
     // already held to length / min_time.
     s.timing.seconds = std::max(s.timing.seconds, s.min_time);
-    const double exit = s.exit;
-    out_.planned(s);
-    head_ = head_ + 1 < kDepth ? head_ + 1 : 0;
-    --count_;
-    if (count_) {
-        at(0).entry = exit;
-        at(0).entry_sq = exit_sq;
+    head_ = next_head;
+    if (--count_) {
+        ring_[next_head].entry = exit;
+        ring_[next_head].entry_sq = exit_sq;
     }
+    return s;
 }
 
 }  // namespace pupitre::plan

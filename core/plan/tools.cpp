@@ -9,23 +9,11 @@
 
 namespace pupitre::plan {
 
-void ToolTable::add(int tool, bool cut, double length, double seconds) {
-    const bool begins = cut && !last_cut_;
-    last_cut_ = cut;
-    if (tool <= 0) return;
-    if (last_ >= rows_.size() || rows_[last_].tool != tool) {
-        last_ = 0;  // a handful of tools: a search is enough
-        while (last_ < rows_.size() && rows_[last_].tool != tool) ++last_;
-        if (last_ == rows_.size()) rows_.push_back(ToolRow{.tool = tool});
-    }
-    ToolRow* row = &rows_[last_];
-    if (cut) {
-        row->cut_seconds += seconds;
-        row->cut_length += length;
-        row->passes += begins;
-    } else {
-        row->rapid_seconds += seconds;
-    }
+ToolRow& ToolTable::row(int tool) {
+    last_ = 0;  // a handful of tools: a search is enough
+    while (last_ < rows_.size() && rows_[last_].tool != tool) ++last_;
+    if (last_ == rows_.size()) rows_.push_back(ToolRow{.tool = tool});
+    return rows_[last_];
 }
 
 std::string read_edge_life(std::string_view text, EdgeLife& life) {

@@ -21,13 +21,27 @@ struct ToolRow {
 class ToolTable {
   public:
     // A move made with `tool` (0: none loaded): cutting (a feed move) or not.
-    void add(int tool, bool cut, double length, double seconds);
+    // Inline: the planner adds every move (issue 35 item 7).
+    void add(int tool, bool cut, double length, double seconds) {
+        const bool begins = cut && !last_cut_;
+        last_cut_ = cut;
+        if (tool <= 0) return;
+        ToolRow& r = last_ < rows_.size() && rows_[last_].tool == tool ? rows_[last_] : row(tool);
+        if (cut) {
+            r.cut_seconds += seconds;
+            r.cut_length += length;
+            r.passes += begins;
+        } else {
+            r.rapid_seconds += seconds;
+        }
+    }
     // A tool change: the next cut begins a pass.
     void change() { last_cut_ = false; }
     // In the order of first use; tool 0 (moves before any tool) is left out.
     const std::vector<ToolRow>& rows() const { return rows_; }
 
   private:
+    ToolRow& row(int tool);  // the tool's row, made on its first move
     std::vector<ToolRow> rows_;
     size_t last_ = 0;  // the row of the last move's tool
     bool last_cut_ = false;
