@@ -350,20 +350,18 @@ int PgStmt::step() {
     return PQntuples(res_) > 0 ? db::kRow : db::kDone;
 }
 
-// Whether a statement's results are better asked in binary: one of its
-// columns is bytea, and the others are of the types PgStmt reads in binary
-// exactly as in text (integers, text).
+// Whether a statement's results can be asked in binary: each of its columns
+// is bytea or of a type PgStmt reads in binary exactly as in text (integers,
+// text). Binary spares the server the integers' digits and the client
+// reading them back (a list of 10,000 programs has 60,000).
 bool PgStmt::binary_results(const PGresult* d) {
-    bool bytea = false;
     for (int i = 0; i < PQnfields(d); ++i) {
         const Oid t = PQftype(d, i);
-        if (t == kByteaOid)
-            bytea = true;
-        else if (t != kInt8Oid && t != kInt4Oid && t != kInt2Oid && t != kTextOid &&
-                 t != kVarcharOid)
+        if (t != kByteaOid && t != kInt8Oid && t != kInt4Oid && t != kInt2Oid &&
+            t != kTextOid && t != kVarcharOid)
             return false;
     }
-    return bytea;
+    return true;
 }
 
 // Reading a column is what a list of 10,000 programs does 100,000 times: a

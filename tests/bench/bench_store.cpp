@@ -168,6 +168,11 @@ std::string store_of_10000(Place& place) {
 void list10000(benchmark::State& st, bool pg) {
     Place place(pg);
     auto s = open_or_die(store_of_10000(place));
+    // Once before the clock: an open store has listed before (the page shows
+    // on every key), and a first list pays what it pays once (on a server,
+    // preparing the statement and the first read of the imported rows);
+    // open_list10000 measures that cold path.
+    if (!s->list().ok()) st.SkipWithError("list failed");
     for (auto _ : st) {
         auto l = s->list();
         if (!l.ok() || l.value.size() != 10000)
