@@ -118,8 +118,7 @@ class PgStmt final : public db::Stmt {
     int64_t i64(int c) const override;
     double f64(int c) const override {
         if (is_null(c)) return 0;
-        if (binary_ && PQftype(res_, c) != kTextOid && PQftype(res_, c) != kVarcharOid)
-            return double(i64(c));
+        if (binary_ && type(c) != kTextOid && type(c) != kVarcharOid) return double(i64(c));
         return std::strtod(PQgetvalue(res_, row_, c), nullptr);
     }
     std::string_view view(int c) const override;
@@ -127,6 +126,9 @@ class PgStmt final : public db::Stmt {
 
   private:
     static bool binary_results(const PGresult* d);
+    // A column's type, as the statement's description gave it (PQftype is
+    // a call into libpq for each of a list's 100,000 values).
+    Oid type(int c) const { return size_t(c) < cols_.size() ? cols_[size_t(c)] : PQftype(res_, c); }
     void set(int i, std::string v, int format) {
         if (i < 1 || size_t(i) > values_.size()) return;
         values_[size_t(i - 1)] = std::move(v);
@@ -138,10 +140,11 @@ class PgStmt final : public db::Stmt {
     std::vector<std::optional<std::string>> values_;
     std::vector<int> formats_;
     bool prepared_ = false;
-    // Results in binary: the statement gives a program's text (bytea), which
-    // then comes as its bytes rather than twice as many hex digits for the
-    // server to make and us to decode; its other columns are integers or text.
+    // Results in binary (binary_results): a program's text (bytea) comes as
+    // its bytes rather than twice as many hex digits for the server to make
+    // and us to decode, integers as their bytes rather than their digits.
     bool binary_ = false;
+    std::vector<Oid> cols_;  // a SELECT's column types, from its description
     PGresult* res_ = nullptr;
     int row_ = -1;
     mutable std::vector<std::string> decoded_;  // bytea columns of the current row
@@ -331,6 +334,8 @@ int PgStmt::step() {
             PGresult* d = PQdescribePrepared(c, name_.c_str());
             if (int rc = b_.check(d, true)) return rc;
             binary_ = binary_results(d);
+            cols_.resize(size_t(PQnfields(d)));
+            for (size_t i = 0; i < cols_.size(); ++i) cols_[i] = PQftype(d, int(i));
             PQclear(d);
         }
         prepared_ = true;
@@ -357,8 +362,8 @@ int PgStmt::step() {
 bool PgStmt::binary_results(const PGresult* d) {
     for (int i = 0; i < PQnfields(d); ++i) {
         const Oid t = PQftype(d, i);
-        if (t != kByteaOid && t != kInt8Oid && t != kInt4Oid && t != kInt2Oid &&
-            t != kTextOid && t != kVarcharOid)
+        if (t != kByteaOid && t != kInt8Oid && t != kInt4Oid && t != kInt2Oid && t != kTextOid &&
+            t != kVarcharOid)
             return false;
     }
     return true;
@@ -372,7 +377,7 @@ int64_t PgStmt::i64(int c) const {
     const int n = PQgetlength(res_, row_, c);
     if (n == 0) return 0;
     if (binary_) {
-        const Oid t = PQftype(res_, c);
+        const Oid t = type(c);
         if (t == kInt8Oid) {
             uint32_t hi, lo;
             std::memcpy(&hi, v, 4);
@@ -402,7 +407,7 @@ std::string_view PgStmt::view(int c) const {
     const char* v = PQgetvalue(res_, row_, c);
     const size_t n = size_t(PQgetlength(res_, row_, c));
     if (n == 0) return PQgetisnull(res_, row_, c) ? std::string_view() : std::string_view(v, 0);
-    const Oid t = PQftype(res_, c);
+    const Oid t = type(c);
     if (binary_ && (t == kInt8Oid || t == kInt4Oid || t == kInt2Oid)) {
         if (decoded_row_ != row_) {
             decoded_.assign(size_t(PQnfields(res_)), std::string());
