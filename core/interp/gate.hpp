@@ -9,6 +9,7 @@
 #include <variant>
 #include <vector>
 
+#include "core/interp/held.hpp"
 #include "core/interp/interp.hpp"
 
 namespace pupitre {
@@ -23,47 +24,10 @@ class GateSink final : public MachineSink {
     // std::function of it was an allocation each time (issue 14). `Later`
     // is work of the interpreter's own that must wait its turn
     // (Interpreter::comp_other_axes).
-    struct Dwell {
-        Loc l;
-        double s;
-    };
-    struct Tool {
-        Loc l;
-        int t, d;
-        double s;
-        bool m6;
-    };
-    struct Coolant {
-        Loc l;
-        bool m7, m8;
-    };
-    struct Stop {
-        Loc l;
-        int m;
-    };
-    struct Message {
-        Loc l;
-        int ch;
-        std::string text;
-    };
-    struct End {
-        Loc l;
-        int m;
-    };
-    struct Stock {
-        Loc l;
-        std::vector<std::array<double, 2>> s;
-    };
-    struct Profile {
-        Loc l;
-        ProfileElem e;
-    };
-    struct ExactStop {
-        Loc l;
-    };
     using Later = std::function<void()>;
-    using Held = std::variant<MoveEvent, Dwell, Tool, SpindleEvent, Coolant, Stop, Message, End,
-                              Stock, Profile, ExactStop, Later>;
+    using Held =
+        std::variant<MoveEvent, held::Dwell, held::Tool, SpindleEvent, held::Coolant, held::Stop,
+                     held::Message, held::End, held::Stock, held::Profile, held::ExactStop, Later>;
     std::vector<Held> queue;
 
     // Not holding, an event goes straight on: the copy a held entry needs
@@ -74,11 +38,11 @@ class GateSink final : public MachineSink {
     }
     void dwell(const Loc& l, double s) override {
         if (!holding) return real_.dwell(l, s);
-        queue.emplace_back(Dwell{l, s});
+        queue.emplace_back(held::Dwell{l, s});
     }
     void tool(const Loc& l, int t, int d, double s, bool m6) override {
         if (!holding) return real_.tool(l, t, d, s, m6);
-        queue.emplace_back(Tool{l, t, d, s, m6});
+        queue.emplace_back(held::Tool{l, t, d, s, m6});
     }
     void spindle(const SpindleEvent& e) override {
         if (!holding) return real_.spindle(e);
@@ -86,31 +50,31 @@ class GateSink final : public MachineSink {
     }
     void coolant(const Loc& l, bool m7, bool m8) override {
         if (!holding) return real_.coolant(l, m7, m8);
-        queue.emplace_back(Coolant{l, m7, m8});
+        queue.emplace_back(held::Coolant{l, m7, m8});
     }
     void stop(const Loc& l, int m) override {
         if (!holding) return real_.stop(l, m);
-        queue.emplace_back(Stop{l, m});
+        queue.emplace_back(held::Stop{l, m});
     }
     void message(const Loc& l, int ch, std::string_view t) override {
         if (!holding) return real_.message(l, ch, t);
-        queue.emplace_back(Message{l, ch, std::string(t)});
+        queue.emplace_back(held::Message{l, ch, std::string(t)});
     }
     void end(const Loc& l, int m) override {
         if (!holding) return real_.end(l, m);
-        queue.emplace_back(End{l, m});
+        queue.emplace_back(held::End{l, m});
     }
     void stock(const Loc& l, const std::vector<std::array<double, 2>>& s) override {
         if (!holding) return real_.stock(l, s);
-        queue.emplace_back(Stock{l, s});
+        queue.emplace_back(held::Stock{l, s});
     }
     void profile(const Loc& l, const ProfileElem& e) override {
         if (!holding) return real_.profile(l, e);
-        queue.emplace_back(Profile{l, e});
+        queue.emplace_back(held::Profile{l, e});
     }
     void exact_stop(const Loc& l) override {
         if (!holding) return real_.exact_stop(l);
-        queue.emplace_back(ExactStop{l});
+        queue.emplace_back(held::ExactStop{l});
     }
     // Work that must come after the events held so far.
     void later(Later f) { queue.emplace_back(std::move(f)); }
@@ -129,18 +93,11 @@ class GateSink final : public MachineSink {
     }
 
   private:
-    void deliver(MoveEvent& e) { real_.move(e); }
-    void deliver(Dwell& e) { real_.dwell(e.l, e.s); }
-    void deliver(Tool& e) { real_.tool(e.l, e.t, e.d, e.s, e.m6); }
-    void deliver(SpindleEvent& e) { real_.spindle(e); }
-    void deliver(Coolant& e) { real_.coolant(e.l, e.m7, e.m8); }
-    void deliver(Stop& e) { real_.stop(e.l, e.m); }
-    void deliver(Message& e) { real_.message(e.l, e.ch, e.text); }
-    void deliver(End& e) { real_.end(e.l, e.m); }
-    void deliver(Stock& e) { real_.stock(e.l, e.s); }
-    void deliver(Profile& e) { real_.profile(e.l, e.e); }
-    void deliver(ExactStop& e) { real_.exact_stop(e.l); }
     void deliver(Later& f) { f(); }
+    template <class Ev>
+    void deliver(Ev& e) {
+        held::Deliver{real_}(e);
+    }
     MachineSink& real_;
 };
 

@@ -10,7 +10,7 @@
 #include <variant>
 
 #include "core/geometry/geometry.hpp"
-#include "core/plan/held.hpp"
+#include "core/interp/held.hpp"
 
 namespace pupitre::plan {
 

@@ -1,5 +1,7 @@
-// The machine's events held as values (core/plan): the planner's queue of
-// events waiting for the moves before them. Deliver hands one to a sink.
+// The machine's events held as values, not as closures: the events the
+// interpreter's gate holds while a compensated move waits for its next
+// element (gate.hpp), and the planner's queue of events waiting for the
+// moves before them (core/plan). Deliver hands one to a sink.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 #include <array>
@@ -9,7 +11,7 @@
 
 #include "core/interp/sink.hpp"
 
-namespace pupitre::plan::held {
+namespace pupitre::held {
 
 struct Dwell {
     Loc l;
@@ -72,4 +74,4 @@ struct Deliver {
     void operator()(Wait& e) const { to.wait(e.l, e.s); }
 };
 
-}  // namespace pupitre::plan::held
+}  // namespace pupitre::held
