@@ -15,6 +15,21 @@
 namespace pupitre::test {
 namespace {
 
+// turn.iso (%10) loaded on the setup in use with `pref_z` (35 is true) and
+// T1's true gauges, the machine homed, AUTO at full speed: Cycle Start runs it.
+void ready_to_turn(Console& c, const char* pref_z) {
+    c.type(":set PREF.X=-20");
+    c.type(std::string(":set PREF.Z=") + pref_z);
+    c.type(":set D1.X=52.347");
+    c.type(":set D1.Z=41.215");
+    c.type(":mode pom");
+    c.named("F9");
+    c.run_until_settled();
+    c.type(":load 10");
+    c.type(":mode auto");
+    c.type(":speed max");
+}
+
 // tests/workshop/turn.iso (%10) on the shipped lathe setup with PREF Z 10 mm
 // short: the approach G0 X56 Z2 ends inside the bar, a rapid into the part.
 void crash_in(const char* mode, int starts) {
@@ -83,15 +98,7 @@ TEST(WorkshopSession, TheInfoPageGivesEachToolsTimeAndItsEdgesLife) {
     Console c("lathe", {"tests/workshop/turn.iso"});
     c.type(":setup " + setup);
     ASSERT_TRUE(c.s->sim().shop()) << c.message();
-    for (const char* set :
-         {":set PREF.X=-20", ":set PREF.Z=35", ":set D1.X=52.347", ":set D1.Z=41.215"})
-        c.type(set);
-    c.type(":mode pom");
-    c.named("F9");
-    c.run_until_settled();
-    c.type(":load 10");
-    c.type(":mode auto");
-    c.type(":speed max");
+    ready_to_turn(c, "35");
     c.type(":page info");
     EXPECT_EQ(c.screen(100, 30).find("Tools"), std::string::npos);  // not before the end
     c.named("F9");
@@ -153,15 +160,7 @@ TEST(WorkshopSession, AStoredPartThatCannotBeReadComesBackAsFreshStock) {
 TEST(WorkshopSession, GraphKeepsThePartUnderThePathAfterM02) {
     Console c("lathe", {"tests/workshop/turn.iso"});
     c.type(":setup lathe");
-    for (const char* set :
-         {":set PREF.X=-20", ":set PREF.Z=35", ":set D1.X=52.347", ":set D1.Z=41.215"})
-        c.type(set);
-    c.type(":mode pom");
-    c.named("F9");
-    c.run_until_settled();
-    c.type(":load 10");
-    c.type(":mode auto");
-    c.type(":speed max");
+    ready_to_turn(c, "35");
     c.named("F9");
     c.run_until_settled();
     ASSERT_EQ(c.s->sim().corrector(), 0);  // M02: D0
