@@ -201,9 +201,12 @@ void tool_lines(const Sim& s, std::vector<Line>& lines) {
     // TRANSLATORS: the INFO page's table of each tool's time: the columns'
     // heads (cutting time, passes, length cut, rapid time, the edge's life),
     // each at most as wide as its column (9, 6, 11, 8 columns).
-    kv(lines, tr("Tools"),
-       strf("%-4s %9s %6s %11s %8s  %s", "", tr("cutting"), tr("passes"), tr("cut (mm)"),
-            tr("rapids"), tr("edge")));
+    bool lives = false;  // the edge's column only where the setup gives a life
+    for (const plan::ToolRow& t : s.tool_times()) lives = lives || edge_life(s, t.tool) > 0;
+    std::string head = strf("%-4s %9s %6s %11s %8s", "", tr("cutting"), tr("passes"),
+                            tr("cut (mm)"), tr("rapids"));
+    if (lives) head += std::string("  ") + tr("edge");
+    kv(lines, tr("Tools"), std::move(head));
     for (const plan::ToolRow& t : s.tool_times()) {
         std::string row = strf("T%-3d %7.1f s %6ld %11.3f %6.1f s", t.tool, t.cut_seconds, t.passes,
                                t.cut_length, t.rapid_seconds);

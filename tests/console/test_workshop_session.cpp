@@ -112,6 +112,19 @@ TEST(WorkshopSession, TheInfoPageGivesEachToolsTimeAndItsEdgesLife) {
               std::string::npos)
         << info;
     std::remove(setup.c_str());
+    // Without a life in the setup, no edge column.
+    Console plain("lathe", {"tests/workshop/turn.iso"});
+    plain.type(":setup lathe");
+    ready_to_turn(plain, "35");
+    plain.named("F9");
+    plain.run_until_settled();
+    plain.type(":page info");
+    const std::string without = plain.screen(100, 30);
+    EXPECT_NE(without.find(" Tools             cutting passes    cut (mm)   rapids\n"),
+              std::string::npos)
+        << without;
+    EXPECT_NE(without.find("T1      21.3 s      2      71.000    1.4 s\n"), std::string::npos)
+        << without;
 }
 
 TEST(WorkshopSession, TestModeMovesNothingAndCrashesNothing) {
