@@ -255,11 +255,7 @@ StoreError Store::submit_class_attempt(const Attempt& a) {
         if (u.error) return u.error;
         u.bind(1, a.id).bind(2, a.score).bind(3, a.scrapped ? 1 : 0).bind(4, a.mistakes);
         u.bind(5, a.found).bind(6, a.report).bind(7, a.record);
-        int rc = u.step();
-        if (rc != db::kRow) return fail(rc, tr("cannot store the attempt"));
-        if (u.is_null(0)) return {Fault::not_found, tr("the attempt was submitted already")};
-        if ((rc = u.step()) != db::kDone) return fail(rc, tr("cannot store the attempt"));
-        return {};
+        return one_row(u, tr("the attempt was submitted already"), tr("cannot store the attempt"));
     });
 }
 
@@ -272,11 +268,7 @@ StoreError Store::grade_attempt(const Attempt& a) {
         if (u.error) return u.error;
         u.bind(1, a.id).bind(2, a.score).bind(3, a.scrapped ? 1 : 0).bind(4, a.mistakes);
         u.bind(5, a.found).bind(6, a.report).bind(7, a.signature).bind(8, a.crashes);
-        int rc = u.step();
-        if (rc == db::kDone) return {Fault::not_found, tr("the attempt was graded already")};
-        if (rc != db::kRow) return fail(rc, tr("cannot store the grade"));
-        if ((rc = u.step()) != db::kDone) return fail(rc, tr("cannot store the grade"));
-        return {};
+        return one_row(u, tr("the attempt was graded already"), tr("cannot store the grade"));
     });
 }
 

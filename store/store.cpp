@@ -108,6 +108,14 @@ StoreError Store::fail(int rc, std::string_view what) {
     return e;
 }
 
+StoreError Store::one_row(sql::Use& u, const char* gone, const char* what) {
+    int rc = u.step();
+    if (rc == db::kDone || (rc == db::kRow && u.is_null(0))) return {Fault::not_found, gone};
+    if (rc != db::kRow) return fail(rc, what);
+    if ((rc = u.step()) != db::kDone) return fail(rc, what);
+    return {};
+}
+
 StoreError Store::exec(const char* sql) {
     int rc = db_->exec(sql);
     return rc == db::kOk ? StoreError{} : fail(rc, "SQL");

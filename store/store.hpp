@@ -390,6 +390,10 @@ class Store {
   private:
     Store();
     StoreError fail(int rc, std::string_view what);
+    // A statement that changes one row and returns it (RETURNING, or a
+    // function's answer): no row, or a NULL, is `gone` (Fault::not_found);
+    // a failure says `what` could not be done. `u` is bound, without error.
+    StoreError one_row(sql::Use& u, const char* gone, const char* what);
     StoreError exec(const char* sql);
     sql::Use use(const char* sql);
     StoreError begin_write();

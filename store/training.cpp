@@ -194,11 +194,7 @@ StoreError Store::submit_attempt(const Attempt& a) {
         u.bind(5, a.seconds).bind(6, a.crashes).bind(7, a.scrapped ? 1 : 0);
         u.bind(8, a.mistakes).bind(9, a.found).bind(10, a.report).bind(11, a.signature);
         u.bind(12, a.record);
-        int rc = u.step();
-        if (rc == db::kDone) return {Fault::not_found, tr("the attempt was submitted already")};
-        if (rc != db::kRow) return fail(rc, tr("cannot store the attempt"));
-        if ((rc = u.step()) != db::kDone) return fail(rc, tr("cannot store the attempt"));
-        return {};
+        return one_row(u, tr("the attempt was submitted already"), tr("cannot store the attempt"));
     });
 }
 

@@ -577,3 +577,25 @@ TEST_P(StoreValues, WorkshopIsKeptPerMachine) {
     ASSERT_FALSE(s->put_workshop("lathe", "", ""));
     EXPECT_FALSE(s->workshop("lathe").value);
 }
+
+// An attempt is submitted once and graded once (Store::one_row): a second
+// submit or grade is refused as already done, on both engines.
+TEST_P(StorePrograms, AnAttemptIsSubmittedOnceAndGradedOnce) {
+    test::Place t(GetParam());
+    auto s = test::open_store(t / "a.db");
+    Attempt at;
+    at.exercise = "ex";
+    at.student = "ann";
+    at.machine = "attempt-ann";
+    ASSERT_FALSE(s->start_attempt(at));
+    at.submitted_ms = 77;
+    ASSERT_FALSE(s->submit_attempt(at));
+    StoreError again = s->submit_attempt(at);
+    EXPECT_EQ(again.fault, Fault::not_found);
+    EXPECT_EQ(again.message, "the attempt was submitted already");
+    at.signature = "sig";
+    ASSERT_FALSE(s->grade_attempt(at));
+    StoreError twice = s->grade_attempt(at);
+    EXPECT_EQ(twice.fault, Fault::not_found);
+    EXPECT_EQ(twice.message, "the attempt was graded already");
+}
