@@ -5,10 +5,10 @@
 #include "console/exercise_run.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 
 #include "console/exercise.hpp"
+#include "console/wall_clock.hpp"
 #include "core/digest.hpp"
 #include "core/i18n.hpp"
 #include "core/workshop/workshop.hpp"
@@ -18,11 +18,6 @@
 namespace pupitre::console {
 
 namespace {
-
-int64_t wall_ms() {
-    using namespace std::chrono;
-    return duration_cast<milliseconds>(system_clock::now().time_since_epoch()).count();
-}
 
 // The values the exercise starts with, in the store's units, for a new
 // attempt's machine.
@@ -38,6 +33,15 @@ std::vector<std::pair<std::string, int64_t>> start_values(const training::Exerci
 }
 
 }  // namespace
+
+// A new attempt's machine gets the values the exercise starts from: "", else
+// why the store refused them.
+std::string ExerciseRun::set_start_values() {
+    auto values = start_values(ex_, truth_);
+    if (values.empty()) return {};
+    auto r = b_.store()->set_values(attempt_.machine, values, "exercise " + ex_.name);
+    return r.error ? r.error.message : std::string();
+}
 
 Answer<std::unique_ptr<ExerciseRun>> ExerciseRun::open(Bench& b, const training::Exercise& e,
                                                        const std::string& student,
@@ -103,10 +107,7 @@ Answer<std::unique_ptr<ExerciseRun>> ExerciseRun::open_local(Bench& b, const tra
         a.machine = strf("%s#%s#%s#%lld", b.machine().name.c_str(), e.name.c_str(), student.c_str(),
                          (long long)wall_ms());
         if (store::StoreError err = st->start_attempt(a)) return {nullptr, err.message};
-        auto values = start_values(e, x->truth_);
-        if (!values.empty())
-            if (auto r = st->set_values(a.machine, values, "exercise " + e.name); r.error)
-                return {nullptr, r.error.message};
+        if (std::string why = x->set_start_values(); !why.empty()) return {nullptr, why};
     }
     x->crashes_seen_ = 0;
     return {std::move(x), {}};
@@ -136,10 +137,7 @@ Answer<std::unique_ptr<ExerciseRun>> ExerciseRun::open_on_class(Bench& b,
     x->truth_.name = e.name;
     x->truth_.description = e.title_here();
     if (st->machine_shown(a.machine) == machine) {  // a new attempt: its starting values
-        auto values = start_values(e, x->truth_);
-        if (!values.empty())
-            if (auto r = st->set_values(a.machine, values, "exercise " + e.name); r.error)
-                return {nullptr, r.error.message};
+        if (std::string why = x->set_start_values(); !why.empty()) return {nullptr, why};
     }
     x->crashes_seen_ = 0;
     return {std::move(x), {}};

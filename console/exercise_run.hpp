@@ -87,6 +87,7 @@ class ExerciseRun {
     static Answer<std::unique_ptr<ExerciseRun>> open_local(Bench& b, const training::Exercise& e,
                                                            const std::string& student,
                                                            uint64_t seed);
+    std::string set_start_values();  // a new attempt's machine; "" or why not
     training::Values found_values(std::string* text) const;
     training::Context context() const;  // the task's and what the student did
     Bench& b_;
