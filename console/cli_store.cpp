@@ -4,10 +4,10 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <ctime>
 
 #include "console/cli.hpp"
 #include "console/refusal.hpp"
+#include "console/wall_clock.hpp"
 #include "core/i18n.hpp"
 #include "core/interp/interp.hpp"
 #include "store/link.hpp"
@@ -42,12 +42,7 @@ int open_store(const std::string& db, std::unique_ptr<Store>& out) {
 namespace {
 
 std::string when(int64_t ms) {
-    std::time_t t = std::time_t(ms / 1000);
-    std::tm tm{};
-    localtime_r(&t, &tm);
-    char buf[32];
-    std::strftime(buf, sizeof buf, "%Y-%m-%d %H:%M:%S", &tm);
-    return buf;
+    return local_time(ms, "%Y-%m-%d %H:%M:%S");
 }
 
 std::string name_of(int number, int index = -1) {

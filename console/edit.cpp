@@ -9,12 +9,11 @@
 #include <unistd.h>
 
 #include <cctype>
-#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
-#include <ctime>
 
+#include "console/wall_clock.hpp"
 #include "core/i18n.hpp"
 #include "store/store.hpp"
 
@@ -24,11 +23,6 @@ namespace {
 
 constexpr double kLeaseRefresh = 10;  // a lease older than 3 refreshes is stale
 constexpr int64_t kLeaseStaleMs = 30000;
-
-int64_t now_ms() {
-    using namespace std::chrono;
-    return duration_cast<milliseconds>(system_clock::now().time_since_epoch()).count();
-}
 
 std::string host() {
     char h[256] = {};
@@ -233,11 +227,9 @@ Effect EditDesk::history() {
     // The HISTORY page lists them all, newest first (the message line could not).
     history_.clear();
     for (auto it = r.value.rbegin(); it != r.value.rend(); ++it) {
-        std::time_t t = std::time_t(it->at_ms / 1000);
-        char when[32];
-        std::strftime(when, sizeof when, "%Y-%m-%d %H:%M", std::localtime(&t));
         history_.push_back(pages::HistoryRow{it->revision, std::string(store::kind_name(it->kind)),
-                                             when, it->who, it->source, it->lines, it->conflict});
+                                             local_time(it->at_ms, "%Y-%m-%d %H:%M"), it->who,
+                                             it->source, it->lines, it->conflict});
     }
     history_number_ = editor_.number;
     history_current_ = editor_.revision;
@@ -428,7 +420,7 @@ void EditDesk::keep_lease(double dt) {
 void EditDesk::take_lease(int number) {
     lease_wait_ = kLeaseRefresh;
     std::string mine = b_.store()->user() + " " + host() + " " + std::to_string(getpid()) + " " +
-                       std::to_string(now_ms());
+                       std::to_string(wall_ms());
     // This connection's own commits leave its data_version as it is: the
     // next poll still sees every other console's commit.
     b_.store()->set_setting(lease_key(number), mine);
@@ -452,7 +444,7 @@ std::string EditDesk::other_editor(int number) const {
     if (std::sscanf(r.value->c_str(), "%127s %255s %ld %lld", who, where, &pid, &at) != 4)
         return {};
     if (where == host() && pid == getpid()) return {};
-    if (now_ms() - at > kLeaseStaleMs) return {};
+    if (wall_ms() - at > kLeaseStaleMs) return {};
     if (where == host() && kill(pid_t(pid), 0) != 0) return {};  // that console has gone
     return std::string(who) + (where == host() ? "" : "@" + std::string(where));
 }

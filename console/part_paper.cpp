@@ -4,9 +4,9 @@
 
 #include <cmath>
 #include <cstdio>
-#include <ctime>
 
 #include "console/plot_loader.hpp"
+#include "console/wall_clock.hpp"
 #include "core/i18n.hpp"
 #include "core/output/part_sheet.hpp"
 
@@ -30,12 +30,7 @@ Rgb rgb_of(render::Colour c) {
 }
 
 std::string today() {
-    char buf[32];
-    const std::time_t t = std::time(nullptr);
-    std::tm tm{};
-    localtime_r(&t, &tm);
-    std::strftime(buf, sizeof buf, "%Y-%m-%d", &tm);
-    return buf;
+    return local_time(wall_ms(), "%Y-%m-%d");
 }
 
 // The picture rendered so that it prints at a round ratio (2:1, 1:1, 1:2,

@@ -12,13 +12,13 @@
 #include <cerrno>
 #include <chrono>
 #include <cmath>
-#include <ctime>
 #include <map>
 
 #include "console/cli.hpp"
 #include "console/exercise.hpp"
 #include "console/keys.hpp"
 #include "console/term.hpp"
+#include "console/wall_clock.hpp"
 #include "core/i18n.hpp"
 #include "pages/page_watch.hpp"
 #include "store/link.hpp"
@@ -32,12 +32,7 @@ using Clock = std::chrono::steady_clock;
 constexpr auto kRefresh = std::chrono::seconds(5);  // what no commit announces
 
 std::string hhmm(int64_t ms) {
-    std::time_t t = std::time_t(ms / 1000);
-    std::tm tm{};
-    localtime_r(&t, &tm);
-    char buf[16];
-    std::strftime(buf, sizeof buf, "%H:%M", &tm);
-    return buf;
+    return local_time(ms, "%H:%M");
 }
 
 std::string ago(int64_t ms) {
