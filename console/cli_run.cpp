@@ -14,6 +14,7 @@
 #include "core/interp/interp.hpp"
 #include "core/output/summary.hpp"
 #include "core/output/trace.hpp"
+#include "core/plan/plan_thread.hpp"
 #include "core/workshop/report.hpp"
 
 namespace pupitre::cli {
@@ -278,10 +279,14 @@ int run(const RunArgs& a) {
     // The planner hears what the machine does (after the workshop, which
     // stops it at a crash) and hands the trace each move with its times.
     plan::PlanSink planner(m, a.trace ? &trace : nullptr);
-    if (!a.no_plan) trace.follow(&planner.clock());
-    MachineSink& out = !a.no_plan ? static_cast<MachineSink&>(planner)
-                       : a.trace  ? static_cast<MachineSink&>(trace)
-                                  : quiet;
+    // Without a trace nothing reads the plan's times before the summary: the
+    // planner then runs on a thread of its own, beside the interpreter.
+    std::unique_ptr<plan::PlanThread> apart;
+    if (!a.no_plan && !a.trace) apart = std::make_unique<plan::PlanThread>(m);
+    if (!a.no_plan && a.trace) trace.follow(&planner.clock());
+    MachineSink& out = a.no_plan ? (a.trace ? static_cast<MachineSink&>(trace) : quiet)
+                       : apart   ? static_cast<MachineSink&>(*apart)
+                                 : planner;
     std::unique_ptr<workshop::Workshop> shop;
     if (!a.setup.empty()) shop = std::make_unique<workshop::Workshop>(m, setup, &out);
     RunOptions o;
@@ -295,7 +300,8 @@ int run(const RunArgs& a) {
     in.start(first_program(mem, a.files.front()));
     run_in(in, shop.get());
     planner.finish();
-    if (!a.no_plan) plan.report = &planner.report();
+    if (apart) apart->finish();
+    if (!a.no_plan) plan.report = apart ? &apart->report() : &planner.report();
     std::fflush(stdout);
     for (const Diag& d : in.diags()) print_diag(d);
     std::vector<Diag> crashes;

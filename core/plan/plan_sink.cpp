@@ -94,7 +94,8 @@ PlanSink::Along PlanSink::along(const Dir& per, const Dir& inv_speed) const {
 // the path (the tangent turns), the other axes (a helix) their own; the speed
 // is then held where the centre pulls at the arc's share of the acceleration
 // (move()).
-PlanSink::Bend PlanSink::arc(const MoveEvent& e, Along& lim, Dir& in, Dir& out, Corner& k) const {
+template <class Mv>
+PlanSink::Bend PlanSink::arc(const Mv& e, Along& lim, Dir& in, Dir& out, Corner& k) const {
     const size_t a0 = size_t(e.plane_a0), a1 = size_t(e.plane_a1);
     const double sx = e.from_mach[a0] - e.mc0, sy = e.from_mach[a1] - e.mc1;
     const double ex = e.to_mach[a0] - e.mc0, ey = e.to_mach[a1] - e.mc1;
@@ -154,7 +155,8 @@ namespace {
 // The segment of a move from how much its axes bind it (Along: v, a, j): the
 // speed no more than the feed's (the length over the time at the feed), EG on
 // the acceleration.
-void limits(const MoveEvent& e, double v, double a, double j, Segment& s) {
+template <class Mv>
+void limits(const Mv& e, double v, double a, double j, Segment& s) {
     s.length = e.length;
     s.min_time = e.min_block;
     // The longest of the times at the axes' limits, at the feed (a rapid
@@ -165,19 +167,23 @@ void limits(const MoveEvent& e, double v, double a, double j, Segment& s) {
         s.inv_vmax = t / e.length;
     } else {
         s.vmax = 1e9;
+        s.inv_vmax = 1e-9;
     }
     if (a > 0) {
         s.inv_accel = e.eg == 100 ? a : a * 100 / e.eg;
         s.limits.accel = 1 / s.inv_accel;
+    } else {
+        s.inv_accel = s.limits.accel = 0;
     }
-    if (j > 0) s.limits.jerk = 1 / j;  // else 0, as add() left it
+    s.limits.jerk = j > 0 ? 1 / j : 0;
 }
 }  // namespace
 
 // A line: its direction, its limits and the corner with the last move's
 // direction in one pass over the axes (a move's steps are counted, issue 35
 // item 7).
-void PlanSink::line(const MoveEvent& e, Along& lim, Dir& dir, Corner& k) const {
+template <class Mv>
+void PlanSink::line(const Mv& e, Along& lim, Dir& dir, Corner& k) const {
     const Dir& inv_speed = e.g == 0 ? inv_rapid_ : inv_feed_;
     const Dir& last = dir_[last_];
     const double inv_len = 1 / e.length;
@@ -240,10 +246,25 @@ double PlanSink::junction_sq(const Corner& k, double eg) const {
         return;
     }
     if (next_) queue_->q.push_back({e, true});
+    plan(e);
+}
+
+[[gnu::flatten]] void PlanSink::move(const PlanMove& e) {
+    report_.feed_seconds += e.seconds;
+    others_ = 0;
+    if (e.length < 1e-9) {  // nothing to plan; no next sink to hand it to
+        other();
+        return;
+    }
+    plan(e);
+}
+
+template <class Mv>
+void PlanSink::plan(const Mv& e) {
     // The ring full, its oldest move is planned here rather than through the
     // receiver's virtual call: inline, as every step of a move is.
     if (planner_.held() == Planner::kDepth) PlanSink::planned(planner_.plan_oldest());
-    Segment& s = planner_.add();  // filled in place: a move is planned in its ring's slot
+    Segment& s = planner_.add();  // filled in place, every field add() names
     Dir& out = dir_[1 - last_];   // its direction at its end, the last one's next time
     Along lim;
     Corner k;

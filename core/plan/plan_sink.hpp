@@ -23,6 +23,30 @@ struct Report {
     ToolTable tools;
 };
 
+// The part of a move the planner reads, under the MoveEvent's names: what a
+// planner on a thread of its own is handed (plan_thread.hpp), half a
+// MoveEvent's size.
+struct PlanMove {
+    int g = 1, plane_a0 = X, plane_a1 = Y;
+    double length = 0, seconds = 0, eg = 100, min_block = 0;
+    double mc0 = 0, mc1 = 0, msweep = 0;
+    Axes from_mach{}, to_mach{};
+    PlanMove() = default;
+    explicit PlanMove(const MoveEvent& e)
+        : g(e.g),
+          plane_a0(e.plane_a0),
+          plane_a1(e.plane_a1),
+          length(e.length),
+          seconds(e.seconds),
+          eg(e.eg),
+          min_block(e.min_block),
+          mc0(e.mc0),
+          mc1(e.mc1),
+          msweep(e.msweep),
+          from_mach(e.from_mach),
+          to_mach(e.to_mach) {}
+};
+
 class PlanSink final : public MachineSink, private Planner::Receiver {
   public:
     explicit PlanSink(const MachineProfile& m, MachineSink* next = nullptr);
@@ -31,6 +55,8 @@ class PlanSink final : public MachineSink, private Planner::Receiver {
     PlanSink& operator=(const PlanSink&) = delete;
 
     void move(const MoveEvent&) override;
+    // The same move without the event: for a planner with no next sink.
+    void move(const PlanMove&);
     void dwell(const Loc&, double seconds) override;
     void tool(const Loc&, int t, int d, double seconds, bool m6) override;
     void spindle(const SpindleEvent&) override;
@@ -80,8 +106,13 @@ class PlanSink final : public MachineSink, private Planner::Receiver {
     };
     // A move's direction (at an arc's start and end), how the axes bind it
     // and its corner with the last move, in one pass over the axes.
-    void line(const MoveEvent& e, Along& lim, Dir& dir, Corner& k) const;
-    Bend arc(const MoveEvent& e, Along& lim, Dir& in, Dir& out, Corner& k) const;
+    // Mv: a MoveEvent or a PlanMove.
+    template <class Mv>
+    void line(const Mv& e, Along& lim, Dir& dir, Corner& k) const;
+    template <class Mv>
+    Bend arc(const Mv& e, Along& lim, Dir& in, Dir& out, Corner& k) const;
+    template <class Mv>
+    void plan(const Mv& e);  // a move of some length: its segment, pushed
     // An event that is no move: counted against the look-ahead's limit; true
     // when there is a next sink to hand it to.
     bool other();

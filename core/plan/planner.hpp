@@ -52,10 +52,12 @@ class Planner {
     };
     explicit Planner(Receiver& r) : out_(r) {}
 
-    // A move after the ones held: add() gives its slot, cleared (what the
-    // planner does not write itself), which the caller fills (length, vmax, limits, min_time,
-    // entry_max_sq: how fast the junction with the one before may be passed, tool, cut); push()
-    // plans with it. Filled in place, a move is never copied.
+    // A move after the ones held: add() gives its slot, which the caller
+    // fills, every one of these fields: length, vmax, inv_vmax (0: the
+    // planner finds it), limits, inv_accel (likewise), min_time,
+    // entry_max_sq (how fast the junction with the one before may be
+    // passed), tool, cut; push() plans with it. Filled in place, a move is
+    // never copied, and nothing is written twice.
     Segment& add();
     void push();
     void push(const Segment& s) {  // the same from a segment made apart (tests)
@@ -77,8 +79,10 @@ class Planner {
 
   private:
     // The square of the speed reachable over `s` from one whose square is v_sq.
-    static double reach_sq(double v_sq, const Segment& s) {
-        if (s.limits.jerk <= 0) return v_sq + s.gain_sq;
+    // `jerk`: a move held may have one (jerk_, read once by the caller: the
+    // stores to the ring could otherwise touch it, for all the compiler knows).
+    static double reach_sq(double v_sq, const Segment& s, bool jerk) {
+        if (!jerk || s.limits.jerk <= 0) return v_sq + s.gain_sq;
         const double r = reach(std::sqrt(v_sq), s.length, s.limits);
         return r * r;
     }
@@ -90,6 +94,7 @@ class Planner {
     std::array<Segment, kDepth> ring_{};
     size_t head_ = 0, count_ = 0;
     double last_vmax_sq_ = 0;  // the newest move's vmax_sq
+    bool jerk_ = false;        // a move pushed had a jerk
 };
 
 // The planner's steps for every move are inline: a move is planned within
@@ -97,15 +102,9 @@ class Planner {
 inline Segment& Planner::add() {
     if (count_ == kDepth) commit_oldest();
     Segment& s = at(count_);
-    // What the caller fills and the planner reads before writing is cleared
-    // field by field, so that the compiler drops the stores the caller
-    // makes again (the rest of the slot is the planner's, written first).
-    s.length = s.vmax = 0;
-    s.limits = {};
-    s.entry_max_sq = s.min_time = s.inv_vmax = s.inv_accel = 0;
-    s.tool = 0;
-    s.cut = false;
-    s.entry = s.entry_sq = 0;
+    // The rest of the slot is the planner's, written before it is read: the
+    // entry when the move before is planned, or here after a stop (from rest).
+    if (count_ == 0) s.entry = s.entry_sq = 0;
     return s;
 }
 
@@ -132,12 +131,13 @@ inline void Planner::push() {
         count_ == 0 ? 0 : std::min(std::min(s.entry_max_sq, vmax_sq), last_vmax_sq_);
     s.entry_max_sq = entry_max_sq;
     last_vmax_sq_ = vmax_sq;
-    double back = std::min(entry_max_sq, reach_sq(0, s));
+    const bool jerk = jerk_ = jerk_ || s.limits.jerk > 0;
+    double back = std::min(entry_max_sq, reach_sq(0, s, jerk));
     s.back_sq = back;
     Segment* c = &s;
     for (size_t i = count_++; i-- > 1;) {  // the oldest's entry is fixed already
         c = c == ring_.data() ? c + (kDepth - 1) : c - 1;
-        const double b = std::min(c->entry_max_sq, reach_sq(back, *c));
+        const double b = std::min(c->entry_max_sq, reach_sq(back, *c, jerk));
         if (b <= c->back_sq) break;
         c->back_sq = back = b;
     }
@@ -148,7 +148,7 @@ inline const Segment& Planner::plan_oldest() {
     const size_t next_head = head_ + 1 < kDepth ? head_ + 1 : 0;
     const double next = count_ > 1 ? ring_[next_head].back_sq : 0;
     const double entry = s.entry, entry_sq = s.entry_sq;
-    const double exit_sq = std::min(next, reach_sq(entry_sq, s));
+    const double exit_sq = std::min(next, reach_sq(entry_sq, s, jerk_));
     const double exit = std::sqrt(exit_sq);
     s.exit = exit;
     const double length = s.length, accel = s.limits.accel, inv_accel = s.inv_accel;
