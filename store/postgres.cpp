@@ -183,6 +183,7 @@ class PgCopyStmt final : public db::Stmt {
         return size_t(c) < fields_.size() ? fields_[size_t(c)] : none;
     }
     int finish();
+    int refuse();
     PgBackend& b_;
     std::string sql_;
     bool copying_ = false, header_ = false, done_ = false;
@@ -487,7 +488,10 @@ int PgCopyStmt::step() {
     if (done_) return db::kDone;
     if (!copying_) {
         PGresult* r = PQexec(c, sql_.c_str());
-        if (PQresultStatus(r) != PGRES_COPY_OUT) return b_.check(r);
+        if (PQresultStatus(r) != PGRES_COPY_OUT) {
+            const int rc = b_.check(r);
+            return rc != db::kOk ? rc : refuse();  // an answer, but not a copy
+        }
         PQclear(r);
         copying_ = header_ = true;
     }
@@ -500,11 +504,17 @@ int PgCopyStmt::step() {
         if (p == pg_copy::Piece::row) return db::kRow;
         if (p == pg_copy::Piece::damaged) {
             reset();
-            b_.sqlstate_ = "XX001";
-            b_.message_ = tr("the server's answer does not add up");
-            return kServerError;
+            return refuse();
         }
     }
+}
+
+// An answer that is not what was asked for.
+int PgCopyStmt::refuse() {
+    done_ = true;
+    b_.sqlstate_ = "XX001";
+    b_.message_ = tr("the server's answer does not add up");
+    return kServerError;
 }
 
 // The copy's end: the command's own result, OK or why it failed.
