@@ -73,6 +73,12 @@ class Backend {
     // literal's address: pass string literals or strings that outlive the
     // store). Null with `rc` set when it cannot be prepared.
     virtual Stmt* prepare(const char* sql, int& rc) = 0;
+    // The same for a statement without parameters whose many rows hold
+    // integers and texts only (the list of 10,000 programs): PostgreSQL sends
+    // them by COPY in its binary format, each row one piece that we cut
+    // ourselves, rather than as a result whose 100,000 fields libpq takes one
+    // by one. SQLite steps the statement as prepare gives it.
+    virtual Stmt* prepare_many(const char* sql, int& rc) { return prepare(sql, rc); }
     // Runs one or several statements without results.
     virtual int exec(const char* sql) = 0;
     // Inserts rows into `table`'s `columns` ("a, b, c"), in a transaction:

@@ -20,6 +20,7 @@
 
 #include "core/i18n.hpp"
 #include "store/backend.hpp"
+#include "store/pg_copy.hpp"
 #include "store/schema_pg.hpp"
 #include "store/store.hpp"
 
@@ -151,11 +152,51 @@ class PgStmt final : public db::Stmt {
     mutable int decoded_row_ = -1;
 };
 
+// A statement of Backend::prepare_many: its rows read by COPY (…) TO STDOUT
+// in binary, one row per piece libpq gives and cut here (store/pg_copy.hpp),
+// so that no result of 100,000 fields is built value by value. The copy runs
+// at the first step; reset() reads what is left of it.
+class PgCopyStmt final : public db::Stmt {
+  public:
+    PgCopyStmt(PgBackend& b, const char* sql)
+        : b_(b), sql_(std::string("COPY (") + sql + ") TO STDOUT (FORMAT binary)") {}
+    ~PgCopyStmt() override { reset(); }
+    // prepare_many's statements have no parameters.
+    void bind(int, int64_t) override {}
+    void bind(int, double) override {}
+    void bind(int, std::string_view) override {}
+    void blob(int, std::string_view) override {}
+    void null(int) override {}
+    int step() override;
+    void reset() override;
+    bool is_null(int c) const override { return field(c).size < 0; }
+    int64_t i64(int c) const override { return pg_copy::integer(field(c)); }
+    double f64(int c) const override { return double(i64(c)); }  // integers only
+    std::string_view view(int c) const override {
+        const pg_copy::Field& f = field(c);
+        return f.size < 0 ? std::string_view() : std::string_view(f.at, size_t(f.size));
+    }
+
+  private:
+    const pg_copy::Field& field(int c) const {
+        static const pg_copy::Field none;
+        return size_t(c) < fields_.size() ? fields_[size_t(c)] : none;
+    }
+    int finish();
+    int refuse();
+    PgBackend& b_;
+    std::string sql_;
+    bool copying_ = false, header_ = false, done_ = false;
+    char* piece_ = nullptr;  // the current row, libpq's
+    std::vector<pg_copy::Field> fields_;
+};
+
 class PgBackend final : public db::Backend {
   public:
     explicit PgBackend(PGconn* c) : c_(c) {}
     ~PgBackend() override {
         stmts_.clear();
+        copies_.clear();
         PQfinish(c_);
     }
     PGconn* conn() const { return c_; }
@@ -188,6 +229,16 @@ class PgBackend final : public db::Backend {
         if (it != stmts_.end()) return it->second.get();
         auto s = std::make_unique<PgStmt>(*this, "p" + std::to_string(stmts_.size()), sql);
         return stmts_.emplace(sql, std::move(s)).first->second.get();
+    }
+    db::Stmt* prepare_many(const char* sql, int& rc) override {
+        if (std::strchr(sql, '?')) return prepare(sql, rc);  // parameters: not by COPY
+        if (int r = revive()) {
+            rc = r;
+            return nullptr;
+        }
+        std::unique_ptr<PgCopyStmt>& s = copies_[sql];
+        if (!s) s = std::make_unique<PgCopyStmt>(*this, sql);
+        return s.get();
     }
     int exec(const char* sql) override { return run(sql); }
     int insert_rows(const char* table, const char* columns, int width,
@@ -306,8 +357,10 @@ class PgBackend final : public db::Backend {
     std::string sqlstate_, message_;
     int64_t version_ = 0;  // notifications heard from other connections
     std::map<const char*, std::unique_ptr<PgStmt>> stmts_;
+    std::map<const char*, std::unique_ptr<PgCopyStmt>> copies_;
 
     friend class PgStmt;
+    friend class PgCopyStmt;
 };
 
 PgStmt::PgStmt(PgBackend& b, std::string name, const char* sql) : b_(b), name_(std::move(name)) {
@@ -428,6 +481,63 @@ std::string_view PgStmt::view(int c) const {
         PQfreemem(bytes);
     }
     return d;
+}
+
+int PgCopyStmt::step() {
+    PGconn* c = b_.conn();
+    if (done_) return db::kDone;
+    if (!copying_) {
+        PGresult* r = PQexec(c, sql_.c_str());
+        if (PQresultStatus(r) != PGRES_COPY_OUT) {
+            const int rc = b_.check(r);
+            return rc != db::kOk ? rc : refuse();  // an answer, but not a copy
+        }
+        PQclear(r);
+        copying_ = header_ = true;
+    }
+    for (;;) {
+        if (piece_) PQfreemem(piece_);
+        piece_ = nullptr;
+        const int n = PQgetCopyData(c, &piece_, 0);
+        if (n < 0) return finish();  // -1: all sent; -2: failed (the result says why)
+        const pg_copy::Piece p = pg_copy::cut(piece_, size_t(n), header_, fields_);
+        if (p == pg_copy::Piece::row) return db::kRow;
+        if (p == pg_copy::Piece::damaged) {
+            reset();
+            return refuse();
+        }
+    }
+}
+
+// An answer that is not what was asked for.
+int PgCopyStmt::refuse() {
+    done_ = true;
+    b_.sqlstate_ = "XX001";
+    b_.message_ = tr("the server's answer does not add up");
+    return kServerError;
+}
+
+// The copy's end: the command's own result, OK or why it failed.
+int PgCopyStmt::finish() {
+    copying_ = false;
+    done_ = true;
+    fields_.clear();
+    const int rc = b_.check(PQgetResult(b_.conn()));
+    while (PGresult* more = PQgetResult(b_.conn())) PQclear(more);
+    return rc == db::kOk ? db::kDone : rc;
+}
+
+void PgCopyStmt::reset() {
+    if (piece_) PQfreemem(piece_);
+    piece_ = nullptr;
+    fields_.clear();
+    if (copying_) {
+        // The rest of a copy read to its end: the connection serves the next command.
+        char* rest = nullptr;
+        while (PQgetCopyData(b_.conn(), &rest, 0) > 0) PQfreemem(rest);
+        finish();
+    }
+    done_ = false;
 }
 
 StoreError PgBackend::explain(int rc, const std::string& head) const {

@@ -100,21 +100,32 @@ constexpr const char* kDelete =
     "UPDATE programs SET head = ?2, last_rev = ?2, conflict = NULL, deleted = 1, size = 0, lines = "
     "0, "
     "modified_ms = ?3, modified_by = ?4 WHERE number = ?1";
+// A program's ProgramInfo. The list reads kListColumns, all but `deleted`
+// (it lists the programs that are not): one value fewer for a server to send
+// for each program.
 constexpr const char* kInfoColumns =
-    "number, idx, title, head, conflict, deleted, size, lines, modified_ms, modified_by";
+    "number, idx, title, head, conflict, size, lines, modified_ms, modified_by, deleted";
+constexpr const char* kListColumns =
+    "number, idx, title, head, conflict, size, lines, modified_ms, modified_by";
+
+// A row of kInfoColumns, or of kListColumns when `listed`, into `i` (a list
+// fills its entries where they are).
+void read_info(const sql::Use& u, ProgramInfo& i, bool listed) {
+    i.number = u.i32(0);
+    i.index = u.is_null(1) ? -1 : u.i32(1);
+    i.title = u.view(2);
+    i.revision = u.i32(3);
+    i.conflict = u.is_null(4) ? 0 : u.i32(4);
+    i.size = u.i64(5);
+    i.lines = u.i64(6);
+    i.modified_ms = u.i64(7);
+    i.modified_by = u.view(8);
+    i.deleted = !listed && u.i32(9) != 0;
+}
 
 ProgramInfo info_of(const sql::Use& u) {
     ProgramInfo i;
-    i.number = u.i32(0);
-    i.index = u.is_null(1) ? -1 : u.i32(1);
-    i.title = u.str(2);
-    i.revision = u.i32(3);
-    i.conflict = u.is_null(4) ? 0 : u.i32(4);
-    i.deleted = u.i32(5) != 0;
-    i.size = u.i64(6);
-    i.lines = u.i64(7);
-    i.modified_ms = u.i64(8);
-    i.modified_by = u.str(9);
+    read_info(u, i, false);
     return i;
 }
 
@@ -601,17 +612,18 @@ Result<SaveResult> Store::restore(int number, int revision, std::string_view sou
 // table's order the rows come as they were written, mostly in order already,
 // whatever the server's planner knows of the table (right after an import of
 // 10,000 programs, before autovacuum has made its statistics, it would scan
-// and sort them: twice the time).
+// and sort them: twice the time). The rows come by use_many: from a server,
+// as one binary COPY.
 Result<std::vector<ProgramInfo>> Store::list() {
     Result<std::vector<ProgramInfo>> r;
     static const std::string sql =
-        std::string("SELECT ") + kInfoColumns + " FROM programs WHERE deleted = 0";
+        std::string("SELECT ") + kListColumns + " FROM programs WHERE deleted = 0";
     StoreError e;
-    sql::Use u = use(sql.c_str());
+    sql::Use u = use_many(sql.c_str());
     e = u.error;
     if ((r.error = e)) return r;
     int rc;
-    while ((rc = u.step()) == db::kRow) r.value.push_back(info_of(u));
+    while ((rc = u.step()) == db::kRow) read_info(u, r.value.emplace_back(), true);
     if (rc != db::kDone) {
         r.value.clear();
         r.error = fail(rc, tr("cannot list the programs"));

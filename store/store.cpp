@@ -128,6 +128,13 @@ sql::Use Store::use(const char* sql) {
     return sql::Use(s, {});
 }
 
+sql::Use Store::use_many(const char* sql) {
+    int rc = db::kOk;
+    db::Stmt* s = db_->prepare_many(sql, rc);
+    if (!s) return sql::Use(nullptr, fail(rc, tr("cannot read the store")));
+    return sql::Use(s, {});
+}
+
 StoreError Store::begin_write() {
     int rc = db_->begin_write();
     return rc == db::kOk ? StoreError{} : fail(rc, tr("cannot start a change"));

@@ -396,6 +396,7 @@ class Store {
     StoreError one_row(sql::Use& u, const char* gone, const char* what);
     StoreError exec(const char* sql);
     sql::Use use(const char* sql);
+    sql::Use use_many(const char* sql);  // Backend::prepare_many
     StoreError begin_write();
     StoreError begin_read();
     StoreError commit();

@@ -268,6 +268,40 @@ TEST_P(StorePrograms, ConflictKeepsBothAndIsResolvedByRestore) {
     EXPECT_EQ(s->read(7).value.info.conflict, 0);
 }
 
+// The list gives of each program what a read gives (a server sends it in
+// another way: a binary COPY), deleted programs left out, in number order.
+TEST_P(StorePrograms, ListHasWhatReadHas) {
+    test::Place t(GetParam());
+    auto s = test::open_store(t / "p.db");
+    ASSERT_TRUE(s->save(6, "%6 (SIX)\nM2\n", kNew, "bob").ok());
+    ASSERT_TRUE(s->save(6, "%6 (SIX 2)\nM2\n", 1, "bob").ok());
+    EXPECT_EQ(s->save(6, "%6 (SIX 3)\nM2\n", 1, "ann").value.status, SaveStatus::conflict);
+    ASSERT_TRUE(
+        s->save(5, "%5.7 (A LONG TITLE WITH \\ AND \t AND \xc3\xa9)\nN10 G0 X0\nM2\n", kNew, "a")
+            .ok());
+    ASSERT_TRUE(s->save(9, "%9 (GONE)\nM2\n", kNew, "c").ok());
+    ASSERT_TRUE(s->remove(9).ok());
+    auto l = s->list();
+    ASSERT_TRUE(l.ok()) << l.error.message;
+    EXPECT_EQ(numbers(*s), (std::vector<int>{5, 6, 300, 301}));
+    for (const ProgramInfo& i : l.value) {
+        const ProgramInfo r = s->read(i.number).value.info;
+        EXPECT_EQ(i.index, r.index) << i.number;
+        EXPECT_EQ(i.title, r.title) << i.number;
+        EXPECT_EQ(i.revision, r.revision) << i.number;
+        EXPECT_EQ(i.conflict, r.conflict) << i.number;
+        EXPECT_FALSE(i.deleted);
+        EXPECT_EQ(i.size, r.size) << i.number;
+        EXPECT_EQ(i.lines, r.lines) << i.number;
+        EXPECT_EQ(i.modified_ms, r.modified_ms) << i.number;
+        EXPECT_EQ(i.modified_by, r.modified_by) << i.number;
+    }
+    EXPECT_EQ(l.value[0].index, 7);
+    EXPECT_NE(l.value[1].conflict, 0);
+    // Listed again, on the same connection: the same.
+    EXPECT_EQ(s->list().value.size(), 4u);
+}
+
 TEST_P(StorePrograms, DeleteKeepsTheHistory) {
     test::Place t(GetParam());
     auto s = test::open_store(t / "p.db");

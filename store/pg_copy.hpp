@@ -1,0 +1,47 @@
+// Inside the PostgreSQL backend: a row of COPY … TO STDOUT in PostgreSQL's
+// binary format, cut into its fields. store/postgres.cpp reads the statements
+// of Backend::prepare_many so, a row at a time as libpq gives them
+// (PQgetCopyData). No SQL and no libpq here. Not for use outside store/.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+#include <endian.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+namespace pupitre::store::pg_copy {
+
+struct Field {
+    const char* at = nullptr;
+    int size = -1;  // bytes; -1: NULL
+};
+
+enum class Piece { row, end, damaged };
+
+// Cuts one piece of a copy (`n` bytes at `p`) into `fields`, which point
+// into it. The first piece (`header` true, then set false) begins with the
+// format's header. A piece is a row, or the end of the copy; anything that
+// does not add up exactly (lengths past the piece, bytes left over, another
+// format, OIDs among the fields) is damaged, never read past.
+Piece cut(const char* p, size_t n, bool& header, std::vector<Field>& fields);
+
+// An integer field (smallint, integer, bigint: 2, 4 or 8 bytes in network
+// order); 0 for a NULL or any other size. Inline: a list reads 50,000.
+inline int64_t integer(const Field& f) {
+    const auto* b = reinterpret_cast<const unsigned char*>(f.at);
+    if (f.size == 8) {
+        uint64_t x;
+        std::memcpy(&x, b, 8);
+        return int64_t(be64toh(x));
+    }
+    if (f.size == 4) {
+        uint32_t x;
+        std::memcpy(&x, b, 4);
+        return int32_t(be32toh(x));
+    }
+    return f.size == 2 ? int16_t(uint16_t(b[0] << 8 | b[1])) : 0;
+}
+
+}  // namespace pupitre::store::pg_copy
