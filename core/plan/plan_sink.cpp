@@ -25,6 +25,12 @@ constexpr double kArcNormal = 0.8660254037844386;
 // motion stops (a program that only talks for so long is not moving).
 constexpr long kMaxOthers = 1000;
 
+bool has_jerk(const MachineProfile& m) {
+    for (int a = 0; a < kAxes; ++a)
+        if (m.has(a) && m.axes[size_t(a)].jerk > 0) return true;
+    return false;
+}
+
 // Hands an event to the next sink; a move not planned (one of no length)
 // starts at `clock` and takes no time.
 struct Deliver {
@@ -54,12 +60,12 @@ struct PlanSink::Queue {
 PlanSink::PlanSink(const MachineProfile& m, MachineSink* next)
     : m_(m),
       next_(next),
-      planner_(*this),
+      planner_(*this, has_jerk(m)),
       queue_(std::make_unique<Queue>()),
+      jerk_(has_jerk(m)),
       smoothing_(m.smoothing) {
     auto inv = [](double v) { return v > 0 ? 1 / v : 0; };
     for (size_t a = 0; a < kAxes; ++a) {
-        jerk_ = jerk_ || (m.has(int(a)) && m.axes[a].jerk > 0);
         if (!m.has(int(a))) continue;
         axes_[naxes_++] = a;
         const AxisConfig& ax = m.axes[a];
@@ -249,14 +255,16 @@ double PlanSink::junction_sq(const Corner& k, double eg) const {
     plan(e);
 }
 
-[[gnu::flatten]] void PlanSink::move(const PlanMove& e) {
-    report_.feed_seconds += e.seconds;
-    others_ = 0;
-    if (e.length < 1e-9) {  // nothing to plan; no next sink to hand it to
-        other();
-        return;
+[[gnu::flatten]] void PlanSink::moves(const PlanMove* first, const PlanMove* last) {
+    for (const PlanMove* e = first; e < last; ++e) {
+        report_.feed_seconds += e->seconds;
+        others_ = 0;
+        if (e->length < 1e-9) {  // nothing to plan; no next sink to hand it to
+            other();
+            continue;
+        }
+        plan(*e);
     }
-    plan(e);
 }
 
 template <class Mv>

@@ -55,8 +55,9 @@ class PlanSink final : public MachineSink, private Planner::Receiver {
     PlanSink& operator=(const PlanSink&) = delete;
 
     void move(const MoveEvent&) override;
-    // The same move without the event: for a planner with no next sink.
-    void move(const PlanMove&);
+    // The same moves without their events, in order: for a planner with no
+    // next sink (plan_thread.hpp), a batch's run of them in one call.
+    void moves(const PlanMove* first, const PlanMove* last);
     void dwell(const Loc&, double seconds) override;
     void tool(const Loc&, int t, int d, double seconds, bool m6) override;
     void spindle(const SpindleEvent&) override;

@@ -84,10 +84,12 @@ void PlanThread::plan(Batch& b) {
     const PlanMove* m = b.moves.data();
     const PlanMove* const end = m + b.moves.size();
     for (auto& [before, ev] : b.others) {  // the moves up to the next other event, then it
-        for (const PlanMove* stop = b.moves.data() + before; m < stop; ++m) planner_.move(*m);
+        const PlanMove* stop = b.moves.data() + before;
+        planner_.moves(m, stop);
+        m = stop;
         std::visit(to, ev);
     }
-    for (; m < end; ++m) planner_.move(*m);
+    planner_.moves(m, end);
     b.moves.clear();
     b.others.clear();
 }

@@ -50,7 +50,9 @@ class Planner {
         virtual ~Receiver() = default;
         virtual void planned(const Segment&) = 0;
     };
-    explicit Planner(Receiver& r) : out_(r) {}
+    // `jerk`: false when no move will have one (the machine has none), so that
+    // the passes never ask.
+    explicit Planner(Receiver& r, bool jerk = true) : out_(r), jerk_(jerk) {}
 
     // A move after the ones held: add() gives its slot, which the caller
     // fills, every one of these fields: length, vmax, inv_vmax (0: the
@@ -79,8 +81,8 @@ class Planner {
 
   private:
     // The square of the speed reachable over `s` from one whose square is v_sq.
-    // `jerk`: a move held may have one (jerk_, read once by the caller: the
-    // stores to the ring could otherwise touch it, for all the compiler knows).
+    // `jerk`: a move may have one (jerk_, read once by the caller: the stores
+    // to the ring could otherwise touch it, for all the compiler knows).
     static double reach_sq(double v_sq, const Segment& s, bool jerk) {
         if (!jerk || s.limits.jerk <= 0) return v_sq + s.gain_sq;
         const double r = reach(std::sqrt(v_sq), s.length, s.limits);
@@ -94,7 +96,7 @@ class Planner {
     std::array<Segment, kDepth> ring_{};
     size_t head_ = 0, count_ = 0;
     double last_vmax_sq_ = 0;  // the newest move's vmax_sq
-    bool jerk_ = false;        // a move pushed had a jerk
+    const bool jerk_;          // a move may have a jerk
 };
 
 // The planner's steps for every move are inline: a move is planned within
@@ -131,7 +133,7 @@ inline void Planner::push() {
         count_ == 0 ? 0 : std::min(std::min(s.entry_max_sq, vmax_sq), last_vmax_sq_);
     s.entry_max_sq = entry_max_sq;
     last_vmax_sq_ = vmax_sq;
-    const bool jerk = jerk_ = jerk_ || s.limits.jerk > 0;
+    const bool jerk = jerk_;
     double back = std::min(entry_max_sq, reach_sq(0, s, jerk));
     s.back_sq = back;
     Segment* c = &s;

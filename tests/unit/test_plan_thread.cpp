@@ -43,9 +43,12 @@ std::string program() {
     return p + "G0 Z50\nM5\nM02\n";
 }
 
-TEST(PlanThread, PlansExactlyAsThePlannerOnTheInterpretersThread) {
+// The machine of the tests, with jerks or without.
+class PlanThreadOn : public testing::TestWithParam<const char*> {};
+
+TEST_P(PlanThreadOn, PlansExactlyAsThePlannerOnTheInterpretersThread) {
     MachineProfile m;
-    ASSERT_EQ(parse_machine(kMachine, m), "");
+    ASSERT_EQ(parse_machine(std::string(kMachine) + GetParam(), m), "");
     ProgramMemory mem;
     mem.load_text("t.iso", program());
 
@@ -79,6 +82,9 @@ TEST(PlanThread, PlansExactlyAsThePlannerOnTheInterpretersThread) {
         EXPECT_EQ(r.passes, s.passes);
     }
 }
+
+INSTANTIATE_TEST_SUITE_P(Machines, PlanThreadOn,
+                         testing::Values("", "jerk.X = 5000\njerk.Y = 5000\njerk.Z = 8000\n"));
 
 TEST(PlanThread, NothingHandedOverIsNoTime) {
     MachineProfile m;
