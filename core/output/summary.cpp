@@ -77,7 +77,7 @@ std::string tool_line(const plan::ToolRow& r, const plan::EdgeLife& life) {
     // TRANSLATORS: a tool's share of the cycle: T, its cutting time in seconds, its passes
     // (the English says "passes" whatever the number), the length cut in mm, its rapid time.
     std::string o =
-        strf(trn("T%d: %s s of cutting a part (%ld passes, %s mm), %s s of rapids",
+        strf(trn("T%d: %s s of cutting a part (%ld pass, %s mm), %s s of rapids",
                  "T%d: %s s of cutting a part (%ld passes, %s mm), %s s of rapids", r.passes),
              r.tool, fixed(r.cut_seconds, 1).c_str(), r.passes, fixed(r.cut_length, 3).c_str(),
              fixed(r.rapid_seconds, 1).c_str());

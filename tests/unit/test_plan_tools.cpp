@@ -112,6 +112,10 @@ TEST(ToolTimes, TheSummaryLine) {
               "the edge every 6 parts");
     EXPECT_EQ(tool_line(t11, {}),
               "T11: 141.8 s of cutting a part (3 passes, 424.440 mm), 13.5 s of rapids");
+    // One pass is one "pass" (found running a program: "1 passes").
+    t11.passes = 1;
+    EXPECT_EQ(tool_line(t11, {}),
+              "T11: 141.8 s of cutting a part (1 pass, 424.440 mm), 13.5 s of rapids");
 }
 
 TEST(ToolTimes, EdgeLifeOption) {
