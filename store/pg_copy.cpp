@@ -1,4 +1,4 @@
-// A row of binary COPY cut into its fields (store/pg_copy.hpp).
+// Binary COPY: a row cut into its fields, rows written (store/pg_copy.hpp).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "store/pg_copy.hpp"
 
@@ -18,6 +18,10 @@ uint32_t u32(const char* p) {
 // high bits: what a reader must understand), the extension's length and bytes.
 constexpr char kSignature[11] = {'P', 'G', 'C', 'O', 'P', 'Y', '\n', '\377', '\r', '\n', '\0'};
 constexpr size_t kHeader = sizeof kSignature + 4 + 4;
+
+void be(std::string& out, uint64_t v, int bytes) {
+    for (int i = bytes - 1; i >= 0; --i) out += char((v >> (8 * i)) & 0xff);
+}
 
 }  // namespace
 
@@ -46,6 +50,31 @@ Piece cut(const char* p, size_t n, bool& header, std::vector<Field>& fields) {
         if (f.size > 0) p += f.size;
     }
     return p == end ? Piece::row : Piece::damaged;
+}
+
+void header(std::string& out) {
+    out.append(kSignature, sizeof kSignature);
+    be(out, 0, 4);  // flags: no OIDs
+    be(out, 0, 4);  // no extension
+}
+
+void row(std::string& out, const db::Value* values, int width) {
+    be(out, uint64_t(width), 2);
+    for (const db::Value* v = values; v != values + width; ++v) {
+        if (v->kind == db::Value::Kind::null) {
+            be(out, 0xffffffffu, 4);
+        } else if (v->kind == db::Value::Kind::integer) {
+            be(out, 8, 4);
+            be(out, uint64_t(v->integer), 8);
+        } else {
+            be(out, v->chars.size(), 4);
+            out.append(v->chars.data(), v->chars.size());
+        }
+    }
+}
+
+void trailer(std::string& out) {
+    be(out, 0xffff, 2);
 }
 
 }  // namespace pupitre::store::pg_copy

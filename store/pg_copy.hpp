@@ -1,7 +1,8 @@
-// Inside the PostgreSQL backend: a row of COPY … TO STDOUT in PostgreSQL's
-// binary format, cut into its fields. store/postgres.cpp reads the statements
-// of Backend::prepare_many so, a row at a time as libpq gives them
-// (PQgetCopyData). No SQL and no libpq here. Not for use outside store/.
+// Inside the PostgreSQL backend: COPY in PostgreSQL's binary format, both
+// ways. A row of COPY … TO STDOUT cut into its fields: store/postgres.cpp
+// reads the statements of Backend::prepare_many so, a row at a time as libpq
+// gives them (PQgetCopyData). And the rows of Backend::insert_rows written
+// for COPY … FROM STDIN. No SQL and no libpq here. Not for use outside store/.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 #include <endian.h>
@@ -9,7 +10,10 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <string>
 #include <vector>
+
+#include "store/backend.hpp"
 
 namespace pupitre::store::pg_copy {
 
@@ -43,5 +47,13 @@ inline int64_t integer(const Field& f) {
     }
     return f.size == 2 ? int16_t(uint16_t(b[0] << 8 | b[1])) : 0;
 }
+
+// Writing (the documentation's "Binary Format" again): the header, then
+// each row as its number of fields and each field as its length (-1: NULL)
+// and its bytes (an integer as a bigint in network order; a text or a bytea
+// as it is), then the trailer. Appended to `out`.
+void header(std::string& out);
+void row(std::string& out, const db::Value* values, int width);
+void trailer(std::string& out);
 
 }  // namespace pupitre::store::pg_copy

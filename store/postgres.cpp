@@ -20,11 +20,14 @@
 
 #include "core/i18n.hpp"
 #include "store/backend.hpp"
+#include "store/pg_connect.hpp"
 #include "store/pg_copy.hpp"
 #include "store/schema_pg.hpp"
 #include "store/store.hpp"
 
 namespace pupitre::store {
+
+using pg::one_line;
 
 static_assert(kSchemaVersion == schema_pg::kCount, "both engines have every migration");
 
@@ -69,25 +72,6 @@ std::string dollar_params(const char* sql, std::vector<bool>& used) {
         out += c;
     }
     return out;
-}
-
-// libpq's messages end in a newline and may hold several lines; a store
-// message is one line.
-std::string one_line(const char* msg) {
-    std::string s = msg ? msg : "";
-    while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
-    // "connection to server at "h" (127.0.0.1), port 5432 failed: FATAL:  x" -> "x"
-    for (const char* cut : {"failed: ", "FATAL:  ", "ERROR:  "}) {
-        size_t at = s.rfind(cut);
-        if (at != std::string::npos) s = s.substr(at + std::strlen(cut));
-    }
-    size_t nl = s.find('\n');
-    if (nl != std::string::npos) s = s.substr(0, nl);
-    return s;
-}
-
-bool contains(const std::string& s, const char* what) {
-    return s.find(what) != std::string::npos;
 }
 
 class PgBackend;
@@ -648,9 +632,7 @@ int PgBackend::after_copy() {
     return db::kOk;
 }
 
-// COPY in PostgreSQL's binary format: a header, then each row as its number
-// of fields and each field as its length (-1: NULL) and its bytes (a bigint
-// in network order; a text or a bytea as it is), then -1. Sent a megabyte at
+// COPY in PostgreSQL's binary format (store/pg_copy.hpp), sent a megabyte at
 // a time, so the server writes rows while the next are made.
 int PgBackend::insert_rows(const char* table, const char* columns, int width,
                            const std::vector<db::Value>& values) {
@@ -660,68 +642,22 @@ int PgBackend::insert_rows(const char* table, const char* columns, int width,
     PGresult* r = PQexec(c_, sql.c_str());
     if (PQresultStatus(r) != PGRES_COPY_IN) return check(r);
     PQclear(r);
-    std::string buf("PGCOPY\n\377\r\n\0\0\0\0\0\0\0\0\0", 19);  // signature, flags, extension
-    auto be = [&buf](uint64_t v, int bytes) {
-        for (int i = bytes - 1; i >= 0; --i) buf += char((v >> (8 * i)) & 0xff);
-    };
+    std::string buf;
+    pg_copy::header(buf);
     bool sent = true;
     for (size_t at = 0; sent && at + size_t(width) <= values.size(); at += size_t(width)) {
-        be(uint64_t(width), 2);
-        for (int i = 0; i < width; ++i) {
-            const db::Value& v = values[at + size_t(i)];
-            if (v.kind == db::Value::Kind::null) {
-                be(0xffffffffu, 4);
-            } else if (v.kind == db::Value::Kind::integer) {
-                be(8, 4);
-                be(uint64_t(v.integer), 8);
-            } else {
-                be(v.chars.size(), 4);
-                buf.append(v.chars.data(), v.chars.size());
-            }
-        }
+        pg_copy::row(buf, &values[at], width);
         if (buf.size() >= (1u << 20)) {
             sent = PQputCopyData(c_, buf.data(), int(buf.size())) == 1;
             buf.clear();
         }
     }
-    be(0xffff, 2);
+    pg_copy::trailer(buf);
     sent = sent && PQputCopyData(c_, buf.data(), int(buf.size())) == 1;
     if (PQputCopyEnd(c_, sent ? nullptr : "not sent") != 1) return lost();
     int rc = check(PQgetResult(c_));
     while (PGresult* more = PQgetResult(c_)) PQclear(more);
     return rc;
-}
-
-// host/database as the connection found them (PGHOST and service files
-// applied); a unix socket's directory is this machine.
-std::string short_name_of(PGconn* c) {
-    const std::string host = PQhost(c) ? PQhost(c) : "";
-    return (host.empty() || host[0] == '/' ? std::string("localhost") : host) + "/" +
-           (PQdb(c) ? PQdb(c) : "");
-}
-
-// A connection failure as one line a teacher or a student can act on.
-StoreError connect_error(const std::string& name, PGconn* c) {
-    std::string m = one_line(PQerrorMessage(c));
-    const char* user = PQuser(c);
-    const char* dbname = PQdb(c);
-    const bool no_role = contains(m, "role \"") && contains(m, "does not exist");
-    if (contains(m, "password authentication failed") || contains(m, "no password supplied") ||
-        contains(m, "pg_hba.conf") || contains(m, "authentication failed") || no_role)
-        return {Fault::cannot_create,
-                strf(tr("%s: authentication failed for %s (pupitre never asks for a password: "
-                        "use ~/.pgpass, PGPASSFILE or PGSERVICE)"),
-                     name.c_str(), user ? user : "?")};
-    if (contains(m, "does not exist") && contains(m, "database \""))
-        return {Fault::not_found,
-                strf(tr("%s: the database %s does not exist (a teacher creates it: createdb)"),
-                     name.c_str(), dbname ? dbname : "?")};
-    if (contains(m, "Connection refused") || contains(m, "timeout expired") ||
-        contains(m, "could not translate host name") || contains(m, "No such file or directory") ||
-        contains(m, "Network is unreachable") || contains(m, "No route to host"))
-        return {Fault::io,
-                strf(tr("%s: the server does not answer (%s)"), name.c_str(), m.c_str())};
-    return {Fault::cannot_create, strf(tr("%s: cannot connect: %s"), name.c_str(), m.c_str())};
 }
 
 }  // namespace
@@ -777,7 +713,7 @@ Result<std::unique_ptr<Store>> Store::open_postgres(const std::string& target, c
         return r;
     }
     if (PQstatus(c) != CONNECTION_OK) {
-        r.error = connect_error(name, c);
+        r.error = pg::connect_error(name, PQerrorMessage(c), PQuser(c), PQdb(c));
         PQfinish(c);
         return r;
     }
@@ -788,7 +724,7 @@ Result<std::unique_ptr<Store>> Store::open_postgres(const std::string& target, c
     PQsetClientEncoding(c, "UTF8");
     std::unique_ptr<Store> st(new Store);
     st->path_ = name;
-    st->short_name_ = short_name_of(c);
+    st->short_name_ = pg::short_name(PQhost(c), PQdb(c));
     st->opt_ = o;
     // On a server a person is their database login.
     st->user_ = o.user.empty() ? std::string(PQuser(c)) : o.user;

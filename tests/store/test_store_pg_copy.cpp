@@ -91,3 +91,32 @@ TEST(StorePgCopy, WhatDoesNotAddUpIsRefused) {
         EXPECT_EQ(cut_all(c, header, f), Piece::damaged) << testing::PrintToString(c);
     }
 }
+
+// The rows Backend::insert_rows sends (COPY … FROM STDIN): what the writer
+// makes, the reader cuts back into the same fields, byte for byte.
+TEST(StorePgCopy, WrittenRowsReadBack) {
+    using pupitre::store::db::Value;
+    const std::string text("%1\nG1 X1\n\0\377", 12);
+    const Value values[] = {{Value::Kind::integer, -5000000000LL, {}},
+                            {},
+                            {Value::Kind::text, 0, "PIECE"},
+                            {Value::Kind::bytes, 0, text},
+                            {Value::Kind::text, 0, ""}};
+    std::string s;
+    header(s);
+    EXPECT_EQ(s, kHead);
+    row(s, values, 5);
+    EXPECT_EQ(s.size(), 19u + 2 + (4 + 8) + 4 + (4 + 5) + (4 + text.size()) + 4);
+    bool first = true;
+    std::vector<Field> f;
+    ASSERT_EQ(cut_all(s, first, f), Piece::row);
+    ASSERT_EQ(f.size(), 5u);
+    EXPECT_EQ(integer(f[0]), -5000000000LL);
+    EXPECT_EQ(f[1].size, -1);
+    EXPECT_EQ(std::string(f[2].at, size_t(f[2].size)), "PIECE");
+    EXPECT_EQ(std::string(f[3].at, size_t(f[3].size)), text);
+    EXPECT_EQ(f[4].size, 0);
+    std::string end;
+    trailer(end);
+    EXPECT_EQ(cut_all(end, first, f), Piece::end);
+}

@@ -1,6 +1,8 @@
 // Store: creating and seeding, program operations, conflicts, cutting files into
 // programs, and the byte-exact round trip on every shared program.
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include <sqlite3.h>
+
 #include <algorithm>
 #include <filesystem>
 #include <map>
@@ -30,6 +32,37 @@ std::vector<int> numbers(Store& s) {
     std::vector<int> out;
     for (const auto& p : s.list().value) out.push_back(p.number);
     return out;
+}
+
+// Makes the engine refuse the programs row of each of `numbers` (a trigger,
+// as a server may refuse a row for a reason of its own: a constraint, a
+// policy, a full disk), so that an import fails past its first writes.
+void refuse_programs(const std::string& engine, const std::string& target,
+                     const std::string& numbers) {
+    if (engine == "sqlite") {
+        sqlite3* db = nullptr;
+        ASSERT_EQ(sqlite3_open(target.c_str(), &db), SQLITE_OK);
+        const std::string sql =
+            "CREATE TRIGGER refuse BEFORE INSERT ON programs WHEN NEW.number IN (" + numbers +
+            ") BEGIN SELECT RAISE(ABORT, 'refused'); END";
+        char* err = nullptr;
+        EXPECT_EQ(sqlite3_exec(db, sql.c_str(), nullptr, nullptr, &err), SQLITE_OK)
+            << (err ? err : "");
+        sqlite3_free(err);
+        sqlite3_close(db);
+        return;
+    }
+    const size_t at = target.find("search_path=") + 12;
+    const std::string schema = target.substr(at, target.find('\'', at) - at);
+    ASSERT_EQ(
+        test::pg_admin("CREATE FUNCTION " + schema +
+                       ".refuse() RETURNS trigger LANGUAGE plpgsql AS $$BEGIN IF "
+                       "NEW.number IN (" +
+                       numbers +
+                       ") THEN RAISE EXCEPTION 'refused'; END IF; RETURN NEW; END$$; "
+                       "CREATE TRIGGER refuse BEFORE INSERT ON " +
+                       schema + ".programs FOR EACH ROW EXECUTE FUNCTION " + schema + ".refuse()"),
+        "");
 }
 
 }  // namespace
@@ -456,6 +489,49 @@ TEST_P(StorePrograms, ImportOfManyMeetsWhatIsStored) {
     EXPECT_EQ(r.value[5].revision, 3);
     EXPECT_EQ(r.value[6].revision, 4);
     EXPECT_EQ(r.value.back().status, SaveStatus::unchanged);
+}
+
+// An import the engine refuses at one of its programs, after it wrote the
+// revisions and other programs' rows, leaves the store as it was: first at
+// a new program (a COPY on a server), then at a stored one (a multi-row
+// upsert, after both COPYs went through).
+TEST_P(StorePrograms, ImportRefusedMidwayLeavesTheStore) {
+    test::Place t(GetParam());
+    const std::string db = t / "p.db";
+    Options o;
+    o.seed = false;
+    auto piece = [](int n, const std::string& body) {
+        return Piece{n, "%" + std::to_string(n) + "\n" + body + "\n", "class.iso"};
+    };
+    std::vector<Piece> before;
+    for (int n = 1; n <= 10; ++n) before.push_back(piece(n, "N1 G0 X" + std::to_string(n)));
+    ASSERT_TRUE(test::open_store(db, o)->save_all(before).ok());
+    refuse_programs(GetParam(), db, "1250, 5");
+    auto s = test::open_store(db, o);
+    std::vector<Piece> changed;
+    for (int n = 1; n <= 10; ++n) changed.push_back(piece(n, "N1 G1 X" + std::to_string(n)));
+    std::vector<Piece> at_new = changed, at_stored = changed;
+    for (int n = 1000; n < 1300; ++n) at_new.push_back(piece(n, "N1"));
+    for (int n = 2000; n < 2100; ++n) at_stored.push_back(piece(n, "N1"));
+    for (const auto* import : {&at_new, &at_stored}) {
+        auto r = s->save_all(*import);
+        EXPECT_TRUE(r.error) << import->size();
+        EXPECT_NE(r.error.message.find("refused"), std::string::npos) << r.error.message;
+        EXPECT_TRUE(r.value.empty());
+        EXPECT_EQ(s->list().value.size(), 10u);
+        for (const Piece& p : before) {
+            auto now = s->read(p.number);
+            ASSERT_TRUE(now.ok()) << now.error.message;
+            EXPECT_EQ(now.value.text, p.text);
+            EXPECT_EQ(s->history(p.number).value.size(), 1u);
+        }
+        EXPECT_EQ(s->read(1000).error.fault, Fault::not_found);
+        EXPECT_EQ(s->read(2000).error.fault, Fault::not_found);
+        EXPECT_EQ(s->integrity_check().value, "ok");
+    }
+    // What the engine accepts still goes in, in one piece.
+    EXPECT_TRUE(s->save_all({piece(3, "N2"), piece(3000, "N1")}).ok());
+    EXPECT_EQ(s->list().value.size(), 11u);
 }
 
 TEST(StoreText, SplitsAFileIntoPrograms) {
