@@ -15,7 +15,7 @@ constexpr int kBatches = 3;
 PlanThread::PlanThread(const MachineProfile& m) : planner_(m) {
     for (int i = 0; i < kBatches; ++i) {
         batches_.push_back(std::make_unique<Batch>());
-        batches_.back()->moves.reserve(kBatch);
+        batches_.back()->moves.reserve(kBatch);  // others grow as a program needs
         if (i > 0) free_.push_back(batches_.back().get());
     }
     fill_ = batches_.front().get();

@@ -64,7 +64,12 @@ class PlanThread final : public MachineSink {
         std::vector<PlanMove> moves;
         std::vector<std::pair<size_t, held::Event>> others;
     };
-    void other(held::Event ev) { fill_->others.emplace_back(fill_->moves.size(), std::move(ev)); }
+    // A batch is handed over when its moves or its other events are
+    // kBatch: a program that only talks holds no more than one that moves.
+    void other(held::Event ev) {
+        fill_->others.emplace_back(fill_->moves.size(), std::move(ev));
+        if (fill_->others.size() == kBatch) hand_over();
+    }
     void hand_over();  // the batch being filled to the planner's thread; an empty one to fill
     void work();       // the planner's thread
     void plan(Batch& b);

@@ -86,6 +86,31 @@ TEST_P(PlanThreadOn, PlansExactlyAsThePlannerOnTheInterpretersThread) {
 INSTANTIATE_TEST_SUITE_P(Machines, PlanThreadOn,
                          testing::Values("", "jerk.X = 5000\njerk.Y = 5000\njerk.Z = 8000\n"));
 
+// More events that are not moves than a batch holds, between two moves: the
+// batch is handed over on them too, and the plan is the same.
+TEST(PlanThread, ABatchOfOtherEventsIsHandedOverLikeOneOfMoves) {
+    MachineProfile m;
+    ASSERT_EQ(parse_machine(kMachine, m), "");
+    std::string p = "%1\nG0 X0 Y0 Z5\nG1 X10 F1000\n";
+    for (int i = 0; i < 5000; ++i) p += "M8\nM9\n";
+    p += "G1 X20\nY10\nM02\n";
+    ProgramMemory mem;
+    mem.load_text("t.iso", p);
+    plan::PlanSink here(m);
+    Interpreter a(m, mem, here);
+    a.start(mem.first());
+    a.run_to_end();
+    here.finish();
+    plan::PlanThread apart(m);
+    Interpreter b(m, mem, apart);
+    b.start(mem.first());
+    b.run_to_end();
+    apart.finish();
+    EXPECT_GT(here.report().seconds, 0);
+    EXPECT_EQ(here.report().seconds, apart.report().seconds);
+    EXPECT_EQ(here.report().feed_seconds, apart.report().feed_seconds);
+}
+
 TEST(PlanThread, NothingHandedOverIsNoTime) {
     MachineProfile m;
     ASSERT_EQ(parse_machine(kMachine, m), "");
