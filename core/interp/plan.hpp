@@ -57,9 +57,9 @@ struct Interpreter::Plan {
     struct Modes {
         int motion = -1, dist = -1, plane = -1, radcomp = -1, prefdec = -1, feed = -1;
         int spindle = -1, units = -1, scale = -1, cycle = -1;
-        // G `g` of modal group `group` (both dialects' decoders); a group
-        // that keeps no mode is ignored.
-        void set(Group group, int g) {
+        // G `number` of modal group `group` (both dialects' decoders); a
+        // group that keeps no mode is ignored.
+        void set(Group group, int number) {
             static constexpr std::pair<Group, int Modes::*> kFields[] = {
                 {Group::motion, &Modes::motion},   {Group::dist, &Modes::dist},
                 {Group::plane, &Modes::plane},     {Group::radcomp, &Modes::radcomp},
@@ -67,7 +67,7 @@ struct Interpreter::Plan {
                 {Group::spindle, &Modes::spindle}, {Group::units, &Modes::units},
                 {Group::scale, &Modes::scale},     {Group::cycle, &Modes::cycle}};
             for (const auto& [grp, field] : kFields)
-                if (grp == group) this->*field = g;
+                if (grp == group) this->*field = number;
         }
     };
     // Technology words: feed, speed, tool, corrector, M functions, ED EG EC.

@@ -344,13 +344,13 @@ void PlanSink::pass(Ev&& ev) {
 void PlanSink::halt(bool settle, const Loc& l) {
     planner_.stop();
     have_last_ = false;
-    if (settle && moved_) wait(l, m_.in_position);
+    if (settle && moved_) rest(l, m_.in_position);
     moved_ = false;
 }
 
 // The axes wait at rest: counted, and told to the next sink (the console
 // waits as long).
-void PlanSink::wait(const Loc& l, double seconds) {
+void PlanSink::rest(const Loc& l, double seconds) {
     if (seconds <= 0) return;
     report_.seconds += seconds;
     report_.waits += seconds;
@@ -388,7 +388,7 @@ void PlanSink::spindle(const SpindleEvent& e) {
     sp_dir_ = e.dir;
     sp_rpm_ = e.rpm;
     if (other()) pass(SpindleEvent(e));
-    if (m_.spindle_accel > 0) wait(e.loc, change / m_.spindle_accel);
+    if (m_.spindle_accel > 0) rest(e.loc, change / m_.spindle_accel);
 }
 
 void PlanSink::coolant(const Loc& l, bool m7, bool m8) {

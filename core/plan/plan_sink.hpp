@@ -83,7 +83,9 @@ class PlanSink final : public MachineSink, private Planner::Receiver {
     // The motion stops at rest; `settle`: an exact stop the program or the
     // machine asks for, which waits the profile's in-position time.
     void halt(bool settle, const Loc& l);
-    void wait(const Loc& l, double seconds);
+    // The axes wait at rest (not the MachineSink's wait event, which it
+    // sends on: named apart so as not to take that event's place).
+    void rest(const Loc& l, double seconds);
     using Dir = std::array<double, kAxes>;
     // How much the axes bind a path: each its travel over its own limit, the
     // largest (0: none binds).
