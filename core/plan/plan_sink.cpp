@@ -78,6 +78,23 @@ PlanSink::PlanSink(const MachineProfile& m, MachineSink* next)
 
 PlanSink::~PlanSink() = default;
 
+// A line's or an arc's limits and corner, one axis at a time, in locals: the
+// axis's share `c` of the path (|u|, or the plane's share on an arc) over
+// its speed and acceleration; the direction `u` against the last move's `l`.
+struct PlanSink::Binds {
+    double v = 0, a = 0, cos = 0, turn = 0;
+    void axis(double c, double u, double l, double inv_speed, double inv_accel) {
+        v = std::max(v, c * inv_speed);
+        a = std::max(a, c * inv_accel);
+        cos += l * u;
+        turn = std::max(turn, std::fabs(u - l) * inv_accel);
+    }
+    void into(Along& lim, Corner& k) const {
+        lim.v = v, lim.a = a;
+        k.cos = cos, k.turn = turn;
+    }
+};
+
 // How much each limit binds a path whose axes travel `per` over it: the
 // largest travel over an axis's own limit (0: none binds). The limit along the
 // path is the path's length over it, so that a diagonal of two equal axes gets
@@ -127,7 +144,7 @@ PlanSink::Bend PlanSink::arc(const Mv& e, Along& lim, Dir& in, Dir& out, Corner&
         out[a0] = -turn * ey / re, out[a1] = turn * ex / re;
     }
     const Dir& last = dir_[last_];
-    double v = 0, a = 0, cos = 0, turn = 0;
+    Binds b;
     for (size_t j = 0; j < naxes_; ++j) {
         const size_t i = axes_[j];
         double p = plane;
@@ -137,14 +154,9 @@ PlanSink::Bend PlanSink::arc(const Mv& e, Along& lim, Dir& in, Dir& out, Corner&
         } else if (!round) {
             in[i] = out[i] = 0;
         }
-        const double c = std::fabs(p), u = in[i], l = last[i];
-        v = std::max(v, c * inv_feed_[i]);
-        a = std::max(a, c * inv_accel_[i]);
-        cos += l * u;
-        turn = std::max(turn, std::fabs(u - l) * inv_accel_[i]);
+        b.axis(std::fabs(p), in[i], last[i], inv_feed_[i], inv_accel_[i]);
     }
-    lim.v = v, lim.a = a;
-    k.cos = cos, k.turn = turn;
+    b.into(lim, k);
     if (jerk_) {
         for (size_t j = 0; j < naxes_; ++j) {
             const size_t i = axes_[j];
@@ -194,21 +206,17 @@ void PlanSink::line(const Mv& e, Along& lim, Dir& dir, Corner& k) const {
     const Dir& last = dir_[last_];
     const double inv_len = 1 / e.length;
     // Kept in locals, which the stores to `dir` cannot touch.
-    double n2 = 0, v = 0, a = 0, cos = 0, turn = 0;
+    double n2 = 0;
+    Binds b;
     for (size_t j = 0; j < naxes_; ++j) {
         const size_t i = axes_[j];
-        const double d = e.to_mach[i] - e.from_mach[i], l = last[i];
+        const double d = e.to_mach[i] - e.from_mach[i];
         const double u = d * inv_len;  // per unit of path
         n2 += d * d;
         dir[i] = u;
-        const double c = std::fabs(u);
-        v = std::max(v, c * inv_speed[i]);
-        a = std::max(a, c * inv_accel_[i]);
-        cos += l * u;
-        turn = std::max(turn, std::fabs(u - l) * inv_accel_[i]);
+        b.axis(std::fabs(u), u, last[i], inv_speed[i], inv_accel_[i]);
     }
-    lim.v = v, lim.a = a;
-    k.cos = cos, k.turn = turn;
+    b.into(lim, k);
     if (jerk_) lim.j = along(dir, inv_speed).j;
     // The interpreter's length is the axes' travel unless rotary axes turn
     // with linear ones (then it is the linear part): then the direction is

@@ -100,6 +100,7 @@ class PlanSink final : public MachineSink, private Planner::Receiver {
         double cos = 0, turn = 0;
     };
     Corner corner(const Dir& last, const Dir& in) const;
+    struct Binds;  // the two, axis by axis, as a line or an arc goes over its axes
     double junction_sq(const Corner& c, double eg) const;
     // An arc's centripetal limit, when the arc is round: its radius and the
     // share of its path in the plane.
