@@ -44,8 +44,10 @@ constexpr Oid kInt2Oid = 21;
 constexpr Oid kInt4Oid = 23;
 constexpr Oid kTextOid = 25;
 constexpr Oid kVarcharOid = 1043;
-// The channel a commit is announced on (Store::data_version).
-constexpr const char* kNotify = "NOTIFY pupitre_store";
+// The channel a commit is announced on (Store::data_version), one per
+// database; the payload names the store's schema, so that stores sharing a
+// database (a schema each) do not hear each other.
+constexpr const char* kNotify = "SELECT pg_notify('pupitre_store', coalesce(current_schema(), ''))";
 constexpr const char* kListen = "LISTEN pupitre_store";
 
 // ?N -> $N outside quoted strings: the statements both engines share are
@@ -265,7 +267,15 @@ class PgBackend final : public db::Backend {
     std::string_view engine() const override { return "postgresql"; }
     bool remote() const override { return true; }
 
-    int listen() { return run(kListen); }
+    // Listens, and learns the schema whose announcements are this store's.
+    int listen() {
+        if (int rc = run(kListen)) return rc;
+        PGresult* r = PQexec(c_, "SELECT coalesce(current_schema(), '')");
+        if (int rc = check(r, true)) return rc;
+        schema_ = PQntuples(r) == 1 ? PQgetvalue(r, 0, 0) : "";
+        PQclear(r);
+        return db::kOk;
+    }
     // What each connection sets for itself (at open and when made again):
     // the server's notices kept for what matters; long values compressed
     // with lz4 (PostgreSQL 14 and later, when built with it) rather than the
@@ -340,6 +350,7 @@ class PgBackend final : public db::Backend {
     bool live_ = false, resetting_ = false;
     std::string sqlstate_, message_;
     int64_t version_ = 0;  // notifications heard from other connections
+    std::string schema_;   // the store's, which its notifications name
     std::map<const char*, std::unique_ptr<PgStmt>> stmts_;
     std::map<const char*, std::unique_ptr<PgCopyStmt>> copies_;
 
@@ -598,7 +609,7 @@ int PgBackend::data_version(int64_t& out) {
     if (!PQconsumeInput(c_)) return lost();
     const int self = PQbackendPID(c_);
     while (PGnotify* n = PQnotifies(c_)) {
-        if (n->be_pid != self) ++version_;
+        if (n->be_pid != self && schema_ == n->extra) ++version_;
         PQfreemem(n);
     }
     out = version_;

@@ -217,6 +217,27 @@ TEST_P(StoreMany, AnotherConsolesCommitIsHeard) {
     EXPECT_NE(now, before);
 }
 
+// Stores that share a server (a schema each, or a database) do not hear each
+// other: a class's commits do not make another class's consoles read again.
+TEST_P(StoreMany, AnotherStoresCommitIsNotHeard) {
+    test::Place t(GetParam());
+    auto a = test::open_store(t / "mine.db");
+    auto b = test::open_store(t / "mine.db");
+    auto other = test::open_store(t / "other.db");
+    int64_t before = a->data_version().value;
+    ASSERT_TRUE(other->save(30, "%30\nO\n", kNew, "").ok());
+    ASSERT_TRUE(b->save(31, "%31\nB\n", kNew, "").ok());
+    // One server delivers a channel's notifications in the order of the
+    // commits: once something is heard, a moment more and all of it is.
+    int64_t now = a->data_version().value;
+    for (int i = 0; i < 500 && now == before; ++i) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        now = a->data_version().value;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    EXPECT_EQ(a->data_version().value, before + 1);
+}
+
 // ---- the server's own ----
 
 class StoreServer : public ::testing::Test {
