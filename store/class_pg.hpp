@@ -128,7 +128,7 @@ BEGIN
             left(encode(sha256(convert_to(gen_random_uuid()::text || gen_random_uuid()::text,
                                           'UTF8')), 'hex'), 16))
     RETURNING * INTO a;
-    PERFORM pg_notify('pupitre_store', '');  -- the teacher's watch hears it
+    PERFORM pg_notify('pupitre_store', current_schema());  -- the teacher's watch hears it
     RETURN NEXT a;
 END $f$;
 
@@ -153,7 +153,7 @@ BEGIN
     WHERE id = p_id AND student = session_user AND submitted_ms IS NULL
     RETURNING id INTO done;
     IF done IS NOT NULL THEN
-        PERFORM pg_notify('pupitre_store', '');
+        PERFORM pg_notify('pupitre_store', current_schema());
     END IF;
     RETURN done;
 END $f$;

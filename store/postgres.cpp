@@ -609,7 +609,8 @@ int PgBackend::data_version(int64_t& out) {
     if (!PQconsumeInput(c_)) return lost();
     const int self = PQbackendPID(c_);
     while (PGnotify* n = PQnotifies(c_)) {
-        if (n->be_pid != self && schema_ == n->extra) ++version_;
+        // No schema named: a class set up by an older pupitre, heard by all.
+        if (n->be_pid != self && (schema_ == n->extra || !*n->extra)) ++version_;
         PQfreemem(n);
     }
     out = version_;
