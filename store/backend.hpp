@@ -64,6 +64,7 @@ struct Meta {
     bool foreign = false;     // something else's database: never touched
     std::string foreign_why;  // what it is, for the refusal ("application_id 0x…")
     int64_t version = 0;
+    bool may_change = true;  // this login may change the tables (a class's student may not)
 };
 
 class Backend {
@@ -79,6 +80,10 @@ class Backend {
     // ourselves, rather than as a result whose 100,000 fields libpq takes one
     // by one. SQLite steps the statement as prepare gives it.
     virtual Stmt* prepare_many(const char* sql, int& rc) { return prepare(sql, rc); }
+    // The list's statement when this engine keeps a program's integers
+    // packed (PostgreSQL: listing, title, modified_by; schema_pg.hpp), or
+    // null: the list then reads its columns as they are.
+    virtual const char* packed_list() const { return nullptr; }
     // Runs one or several statements without results.
     virtual int exec(const char* sql) = 0;
     // Inserts rows into `table`'s `columns` ("a, b, c"), in a transaction:
@@ -108,6 +113,15 @@ class Backend {
     // a store from v to v + 1), and writing the new version (inside the
     // migration's transaction).
     virtual int read_meta(Meta& m) = 0;
+    virtual int schema_version() const = 0;  // the one this pupitre writes
+    // A store at an older `version` that this login may not upgrade (a
+    // class's student on a server the teacher has not opened with this
+    // pupitre yet): true when this pupitre works on it as it is, and then
+    // does so; false when it needs the upgrade.
+    virtual bool work_at(int64_t version) {
+        (void)version;
+        return false;
+    }
     virtual const char* migration(int v) const = 0;
     virtual int write_meta(int64_t version) = 0;
 

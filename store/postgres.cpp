@@ -29,7 +29,7 @@ namespace pupitre::store {
 
 using pg::one_line;
 
-static_assert(kSchemaVersion == schema_pg::kCount, "both engines have every migration");
+static_assert(kServerSchemaVersion == schema_pg::kCount, "kServerSchemaVersion must match");
 
 namespace {
 
@@ -259,7 +259,18 @@ class PgBackend final : public db::Backend {
     }
     StoreError explain(int rc, const std::string& head) const override;
     int read_meta(db::Meta& m) override;
+    int schema_version() const override { return kServerSchemaVersion; }
     const char* migration(int v) const override { return schema_pg::kMigrations[v]; }
+    const char* packed_list() const override {
+        return packed_ ? "SELECT listing, title, modified_by FROM programs WHERE deleted = 0"
+                       : nullptr;
+    }
+    // Schema 4 lacks only the packed list, which the list then does without.
+    bool work_at(int64_t version) override {
+        if (version != 4) return false;
+        packed_ = false;
+        return true;
+    }
     int write_meta(int64_t version) override;
     int data_version(int64_t& out) override;
     int integrity(std::string& out) override;
@@ -356,6 +367,7 @@ class PgBackend final : public db::Backend {
     std::string sqlstate_, message_;
     int64_t version_ = 0;  // notifications heard from other connections
     std::string schema_;   // the store's, which its notifications name
+    bool packed_ = true;   // programs.listing is there (schema 5)
     std::map<const char*, std::unique_ptr<PgStmt>> stmts_;
     std::map<const char*, std::unique_ptr<PgCopyStmt>> copies_;
 
@@ -588,10 +600,13 @@ int PgBackend::read_meta(db::Meta& m) {
     }
     r = PQexec(c_,
                "SELECT (SELECT value FROM pupitre_meta WHERE key = 'application_id'), "
-               "(SELECT value FROM pupitre_meta WHERE key = 'schema_version')");
+               "(SELECT value FROM pupitre_meta WHERE key = 'schema_version'), "
+               "(SELECT pg_has_role(relowner, 'USAGE') FROM pg_class WHERE oid = "
+               "to_regclass('programs'))");
     if (int rc = check(r, true)) return rc;
     int64_t app = std::strtoll(PQgetvalue(r, 0, 0), nullptr, 10);
     m.version = std::strtoll(PQgetvalue(r, 0, 1), nullptr, 10);
+    m.may_change = PQgetisnull(r, 0, 2) || PQgetvalue(r, 0, 2)[0] == 't';
     PQclear(r);
     if (uint32_t(app) != kApplicationId) {
         m.foreign = true;

@@ -123,6 +123,30 @@ void read_info(const sql::Use& u, ProgramInfo& i, bool listed) {
     i.deleted = !listed && u.i32(9) != 0;
 }
 
+// A row of a server's packed list (Backend::packed_list): the integers from
+// the listing column, seven big-endian 8-byte values, then title and author.
+// False when the value is not that long (a damaged row, refused).
+bool read_packed(const sql::Use& u, ProgramInfo& i) {
+    const std::string_view p = u.view(0);
+    if (p.size() != 7 * 8) return false;
+    int64_t v[7];
+    for (size_t k = 0; k < 7; ++k) {
+        uint64_t x = 0;
+        for (size_t b = 0; b < 8; ++b) x = x << 8 | static_cast<unsigned char>(p[k * 8 + b]);
+        v[k] = static_cast<int64_t>(x);
+    }
+    i.number = int(v[0]);
+    i.index = int(v[1]);
+    i.revision = int(v[2]);
+    i.conflict = int(v[3]);
+    i.size = v[4];
+    i.lines = v[5];
+    i.modified_ms = v[6];
+    i.title = u.view(1);
+    i.modified_by = u.view(2);
+    return true;
+}
+
 ProgramInfo info_of(const sql::Use& u) {
     ProgramInfo i;
     read_info(u, i, false);
@@ -618,12 +642,20 @@ Result<std::vector<ProgramInfo>> Store::list() {
     Result<std::vector<ProgramInfo>> r;
     static const std::string sql =
         std::string("SELECT ") + kListColumns + " FROM programs WHERE deleted = 0";
+    const char* packed = db_->packed_list();
     StoreError e;
-    sql::Use u = use_many(sql.c_str());
+    sql::Use u = use_many(packed ? packed : sql.c_str());
     e = u.error;
     if ((r.error = e)) return r;
     int rc;
-    while ((rc = u.step()) == db::kRow) read_info(u, r.value.emplace_back(), true);
+    while ((rc = u.step()) == db::kRow) {
+        if (!packed) {
+            read_info(u, r.value.emplace_back(), true);
+        } else if (!read_packed(u, r.value.emplace_back())) {
+            rc = db::kCorrupt;
+            break;
+        }
+    }
     if (rc != db::kDone) {
         r.value.clear();
         r.error = fail(rc, tr("cannot list the programs"));

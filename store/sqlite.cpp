@@ -342,6 +342,7 @@ class SqliteBackend final : public db::Backend {
     StoreError explain(int rc, const std::string& head) const override;
 
     int read_meta(db::Meta& m) override;
+    int schema_version() const override { return kSchemaVersion; }
     const char* migration(int v) const override { return schema::kMigrations[v]; }
     int write_meta(int64_t version) override {
         std::string pragmas = "PRAGMA application_id = " + std::to_string(kApplicationId) +

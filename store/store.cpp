@@ -179,14 +179,15 @@ StoreError Store::validate_and_migrate(bool& fresh) {
             return {Fault::bad_data, strf(tr("%s: not a pupitre store (%s); left untouched"),
                                           path_.c_str(), m.foreign_why.c_str())};
         }
-        if (m.version > kSchemaVersion) {
+        const int current = db_->schema_version();
+        if (m.version > current) {
             if (attempt) rollback();
             return {Fault::bad_data,
                     strf(tr("%s: written by a newer pupitre (schema %lld, this pupitre knows "
                             "up to %d); left untouched: use a newer pupitre"),
-                         path_.c_str(), static_cast<long long>(m.version), int(kSchemaVersion))};
+                         path_.c_str(), static_cast<long long>(m.version), current)};
         }
-        if (m.version == kSchemaVersion) {
+        if (m.version == current || (!m.may_change && db_->work_at(m.version))) {
             if (attempt) rollback();
             return {};
         }
@@ -195,13 +196,13 @@ StoreError Store::validate_and_migrate(bool& fresh) {
             continue;  // check again under the lock
         }
         // Under the lock and still behind: migrate (or create) now.
-        for (int v = int(m.version); v < kSchemaVersion; ++v) {
+        for (int v = int(m.version); v < current; ++v) {
             if (StoreError e = exec(db_->migration(v))) {
                 rollback();
                 return e;
             }
         }
-        if (int rc = db_->write_meta(kSchemaVersion)) {
+        if (int rc = db_->write_meta(current)) {
             StoreError e = fail(rc, tr("cannot save the change"));
             rollback();
             return e;

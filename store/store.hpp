@@ -27,6 +27,8 @@ class Use;
 
 inline constexpr uint32_t kApplicationId = 0x4E554D31;  // "NUM1" in PRAGMA application_id
 inline constexpr int kSchemaVersion = 4;                // PRAGMA user_version we write
+// A server's schema is one step ahead: its list's packed column (schema_pg.hpp).
+inline constexpr int kServerSchemaVersion = 5;
 
 // What went wrong, as the exit code the command line gives (sysexits).
 enum class Fault {

@@ -7,6 +7,7 @@
 #include <set>
 #include <thread>
 
+#include "core/training/exercise.hpp"
 #include "store/text.hpp"
 #include "store_helpers.hpp"
 
@@ -263,18 +264,89 @@ TEST_F(StoreServer, ANewerSchemaIsRefusedAnOlderOneUpgraded) {
     ASSERT_TRUE(r.error);
     EXPECT_EQ(r.error.fault, Fault::bad_data);
     EXPECT_NE(r.error.message.find("schema 99"), std::string::npos) << r.error.message;
-    EXPECT_NE(r.error.message.find("up to " + std::to_string(kSchemaVersion)), std::string::npos);
-    // A store of schema 2 (before training and the class) gets its tables,
-    // in one transaction.
+    EXPECT_NE(r.error.message.find("up to " + std::to_string(kServerSchemaVersion)),
+              std::string::npos);
+    // A store of schema 2 (before training, the class and the packed list)
+    // gets its tables and its column, in one transaction.
     ASSERT_EQ(test::pg_admin("SET search_path = " + schema +
                              "; DROP TABLE attempts; DROP TABLE exercises; DROP TABLE "
-                             "exercise_texts; UPDATE pupitre_meta "
-                             "SET value = 2 WHERE key = 'schema_version'"),
+                             "exercise_texts; ALTER TABLE programs DROP COLUMN listing; "
+                             "UPDATE pupitre_meta SET value = 2 WHERE key = 'schema_version'"),
               "");
     auto s = test::open_store(db);
     ASSERT_TRUE(s);
     EXPECT_FALSE(s->put_exercise("x", "text"));
-    EXPECT_EQ(s->list().value.size(), 2u);  // nothing seeded twice
+    auto l = s->list();
+    ASSERT_EQ(l.value.size(), 2u);  // nothing seeded twice
+    // The rows written before the column have it too.
+    EXPECT_EQ(l.value[0].number, 300);
+    EXPECT_EQ(l.value[0].revision, 1);
+    EXPECT_EQ(l.value[0].size, int64_t(s->read(300).value.text.size()));
+}
+
+// A class server made by the pupitre before the packed list (schema 4): a
+// student, who may not change the tables, works on it as it is, the list
+// read column by column; the teacher's pupitre, the tables' owner, upgrades
+// it, and the student's next console lists the packed way.
+TEST_F(StoreServer, AStudentWorksOnAClassServerOneSchemaBehind) {
+    test::Place t("postgresql");
+    const std::string db = t / "older";
+    const std::string group = "o" + std::to_string(::getpid());
+    {
+        auto teacher = test::open_store(db);
+        training::Exercise e;
+        ASSERT_TRUE(training::builtin_exercise("exam-2005", e));
+        ASSERT_FALSE(teacher->class_init(group, {{e.name, e.source}}));
+    }
+    ASSERT_EQ(test::pg_admin("SET search_path = " + schema_of(db) +
+                             "; ALTER TABLE programs DROP COLUMN listing; UPDATE pupitre_meta "
+                             "SET value = 4 WHERE key = 'schema_version'"),
+              "");
+    auto teacher_then = test::open_store(db);  // to add a student only
+    ASSERT_TRUE(teacher_then);
+    // Back to 4: the teacher's open upgraded it.
+    ASSERT_EQ(test::pg_admin("SET search_path = " + schema_of(db) +
+                             "; ALTER TABLE programs DROP COLUMN listing; UPDATE pupitre_meta "
+                             "SET value = 4 WHERE key = 'schema_version'"),
+              "");
+    auto logins = teacher_then->add_students(group, {group + "s1"});
+    ASSERT_TRUE(logins.ok()) << logins.error.message;
+    teacher_then.reset();
+    const store::Login& l = logins.value[0];
+    const std::string as_student = db + " user=" + l.name + " password=" + l.password;
+    {
+        auto r = Store::open(as_student);
+        ASSERT_TRUE(r.ok()) << r.error.message;
+        auto list = r.value->list();
+        ASSERT_TRUE(list.ok()) << list.error.message;
+        EXPECT_EQ(list.value.size(), 2u);
+        EXPECT_EQ(list.value[0].number, 300);
+        EXPECT_GT(list.value[0].size, 0);
+    }
+    auto teacher = test::open_store(db);
+    ASSERT_TRUE(teacher);
+    auto r = Store::open(as_student);
+    ASSERT_TRUE(r.ok()) << r.error.message;
+    auto list = r.value->list();
+    ASSERT_TRUE(list.ok()) << list.error.message;
+    EXPECT_EQ(list.value.size(), 2u);
+    EXPECT_EQ(test::pg_admin("SELECT listing FROM " + schema_of(db) + ".programs"), "");
+}
+
+// A damaged packed list value is refused, never read past.
+TEST_F(StoreServer, AShortListingIsRefused) {
+    test::Place t("postgresql");
+    const std::string db = t / "short.db";
+    auto s = test::open_store(db);
+    ASSERT_TRUE(s->list().ok());
+    ASSERT_EQ(test::pg_admin("SET search_path = " + schema_of(db) +
+                             "; ALTER TABLE programs DROP COLUMN listing; ALTER TABLE programs "
+                             "ADD COLUMN listing bytea GENERATED ALWAYS AS (int8send(number)) "
+                             "STORED"),
+              "");
+    auto l = s->list();
+    EXPECT_TRUE(l.error);
+    EXPECT_TRUE(l.value.empty());
 }
 
 TEST_F(StoreServer, AnotherApplicationsTablesAreLeftUntouched) {
