@@ -140,8 +140,9 @@ PlanSink::Bend PlanSink::arc(const Mv& e, Along& lim, Dir& in, Dir& out, Corner&
     const double plane = round ? arclen * inv_total : 0;
     if (round) {
         const double turn = e.msweep >= 0 ? plane : -plane;
-        in[a0] = -turn * sy / rs, in[a1] = turn * sx / rs;
-        out[a0] = -turn * ey / re, out[a1] = turn * ex / re;
+        const double ks = turn / rs, ke = turn / re;
+        in[a0] = -ks * sy, in[a1] = ks * sx;
+        out[a0] = -ke * ey, out[a1] = ke * ex;
     }
     const Dir& last = dir_[last_];
     Binds b;
@@ -174,7 +175,7 @@ namespace {
 // speed no more than the feed's (the length over the time at the feed), EG on
 // the acceleration.
 template <class Mv>
-void limits(const Mv& e, double v, double a, double j, Segment& s) {
+void limits(const Mv& e, double inv_len, double v, double a, double j, Segment& s) {
     s.length = e.length;
     s.min_time = e.min_block;
     // The longest of the times at the axes' limits, at the feed (a rapid
@@ -182,7 +183,7 @@ void limits(const Mv& e, double v, double a, double j, Segment& s) {
     const double t = std::max({v * e.length, e.g != 0 ? e.seconds : 0, e.min_block});
     if (t > 0) {
         s.vmax = e.length / t;
-        s.inv_vmax = t / e.length;
+        s.inv_vmax = t * inv_len;
     } else {
         s.vmax = 1e9;
         s.inv_vmax = 1e-9;
@@ -201,10 +202,9 @@ void limits(const Mv& e, double v, double a, double j, Segment& s) {
 // direction in one pass over the axes (a move's steps are counted, issue 35
 // item 7).
 template <class Mv>
-void PlanSink::line(const Mv& e, Along& lim, Dir& dir, Corner& k) const {
+void PlanSink::line(const Mv& e, double inv_len, Along& lim, Dir& dir, Corner& k) const {
     const Dir& inv_speed = e.g == 0 ? inv_rapid_ : inv_feed_;
     const Dir& last = dir_[last_];
-    const double inv_len = 1 / e.length;
     // Kept in locals, which the stores to `dir` cannot touch.
     double n2 = 0;
     Binds b;
@@ -247,9 +247,14 @@ double PlanSink::junction_sq(const Corner& k, double eg) const {
     if (c > 1 - 1e-9) return HUGE_VAL;
     if (c < -1 + 1e-9 || smoothing_ <= 0) return 0;
     if (k.turn <= 0) return HUGE_VAL;
-    const double acc = std::sqrt(2 - 2 * c) / k.turn;  // the change of direction's length over it
-    const double sin_half = std::sqrt(0.5 * (1 + c));  // half the corner's angle
-    return acc * eg * 0.01 * smoothing_ * sin_half / (1 - sin_half);
+    // acc·tolerance·s/(1 − s), acc = sqrt(2 − 2c)/turn (the change of
+    // direction's length over it), s = sqrt((1 + c)/2) (the sine of half the
+    // corner's angle); with sqrt(2 − 2c)·s = sqrt(1 − c²) and
+    // 1/(1 − s) = 2(1 + s)/(1 − c): two square roots side by side and one
+    // division, and no 1 − s that cancels near a straight line.
+    const double sin_half = std::sqrt(0.5 * (1 + c));
+    const double q = std::sqrt((1 - c) * (1 + c));
+    return eg * 0.02 * smoothing_ * q * (1 + sin_half) / (k.turn * (1 - c));
 }
 
 [[gnu::flatten]] void PlanSink::move(const MoveEvent& e) {
@@ -285,12 +290,13 @@ void PlanSink::plan(const Mv& e) {
     Along lim;
     Corner k;
     Bend bend;
+    const double inv_len = 1 / e.length;
     if (e.g == 2 || e.g == 3) {
         bend = arc(e, lim, entry_, out, k);
     } else {
-        line(e, lim, out, k);
+        line(e, inv_len, lim, out, k);
     }
-    limits(e, lim.v, lim.a, lim.j, s);
+    limits(e, inv_len, lim.v, lim.a, lim.j, s);
     if (bend.round && s.limits.accel > 0) {
         // The centre pulls at most sqrt(3)/2 of the plane's acceleration
         // (s.limits.accel is the path's: plane / share); half goes along.

@@ -112,7 +112,7 @@ class PlanSink final : public MachineSink, private Planner::Receiver {
     // and its corner with the last move, in one pass over the axes.
     // Mv: a MoveEvent or a PlanMove.
     template <class Mv>
-    void line(const Mv& e, Along& lim, Dir& dir, Corner& k) const;
+    void line(const Mv& e, double inv_len, Along& lim, Dir& dir, Corner& k) const;
     template <class Mv>
     Bend arc(const Mv& e, Along& lim, Dir& in, Dir& out, Corner& k) const;
     template <class Mv>

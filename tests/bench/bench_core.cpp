@@ -8,8 +8,10 @@
 #include <cstdio>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "core/interp/interp.hpp"
+#include "core/plan/plan_sink.hpp"
 
 using namespace pupitre;
 
@@ -74,6 +76,33 @@ void BM_RunProgram(benchmark::State& st) {
     run_each_iteration(st, "mill", program(int(st.range(0))));
 }
 BENCHMARK(BM_RunProgram)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
+
+// The planner alone (issue 35 item 7), as its own thread runs it: the moves
+// of program(n) recorded once from the interpreter, then planned in one call
+// per iteration by a new PlanSink; items: moves. One thread, no interpreter
+// beside it, so its time per move is the planner's, whatever the machine's
+// other processor is doing.
+void BM_PlanMoves(benchmark::State& st) {
+    MachineProfile m;
+    builtin_machine("mill", m);
+    struct Record final : MachineSink {
+        std::vector<plan::PlanMove> moves;
+        void move(const MoveEvent& e) override { moves.emplace_back(e); }
+    } rec;
+    ProgramMemory mem;
+    mem.load_text("bench.iso", program(int(st.range(0))));
+    Interpreter in(m, mem, rec);
+    in.start(mem.first());
+    in.run_to_end();
+    for (auto _ : st) {
+        plan::PlanSink p(m);
+        p.moves(rec.moves.data(), rec.moves.data() + rec.moves.size());
+        p.finish();
+        benchmark::DoNotOptimize(p.report().seconds);
+    }
+    st.SetItemsProcessed(st.iterations() * int64_t(rec.moves.size()));
+}
+BENCHMARK(BM_PlanMoves)->Arg(100000)->Unit(benchmark::kMillisecond);
 
 // G64 on a rough stock of n points (a wavy bar, 0.5 mm deep in diameter) over a
 // 50-block profile, passes 0.01 mm apart: 20,000 level lines, a few hundred of
