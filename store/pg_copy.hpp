@@ -48,6 +48,28 @@ inline int64_t integer(const Field& f) {
     return f.size == 2 ? int16_t(uint16_t(b[0] << 8 | b[1])) : 0;
 }
 
+// A floating-point field (double precision: 8 bytes, IEEE 754 in network
+// order; real: 4); 0 for a NULL or any other size.
+inline double real(const Field& f) {
+    if (f.size == 8) {
+        uint64_t x;
+        std::memcpy(&x, f.at, 8);
+        x = be64toh(x);
+        double d;
+        std::memcpy(&d, &x, 8);
+        return d;
+    }
+    if (f.size == 4) {
+        uint32_t x;
+        std::memcpy(&x, f.at, 4);
+        x = be32toh(x);
+        float v;
+        std::memcpy(&v, &x, 4);
+        return v;
+    }
+    return 0;
+}
+
 // Writing (the documentation's "Binary Format" again): the header, then
 // each row as its number of fields and each field as its length (-1: NULL)
 // and its bytes (an integer as a bigint in network order; a text or a bytea

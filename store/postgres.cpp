@@ -157,7 +157,9 @@ class PgCopyStmt final : public db::Stmt {
     void reset() override;
     bool is_null(int c) const override { return field(c).size < 0; }
     int64_t i64(int c) const override { return pg_copy::integer(field(c)); }
-    double f64(int c) const override { return double(i64(c)); }  // integers only
+    // The caller knows the column's type, which a binary COPY does not say:
+    // f64 reads a double precision (or real) column.
+    double f64(int c) const override { return pg_copy::real(field(c)); }
     std::string_view view(int c) const override {
         const pg_copy::Field& f = field(c);
         return f.size < 0 ? std::string_view() : std::string_view(f.at, size_t(f.size));

@@ -201,12 +201,17 @@ StoreError Store::submit_attempt(const Attempt& a) {
 Result<std::vector<Attempt>> Store::attempts(std::string_view exercise) {
     Result<std::vector<Attempt>> r;
     StoreError e;
-    static const std::string sql = std::string("SELECT ") + kAttemptColumns +
-                                   " FROM attempts WHERE ?1 = '' OR exercise = ?1 ORDER BY id";
-    sql::Use u = use(sql.c_str());
+    static const std::string sql =
+        std::string("SELECT ") + kAttemptColumns + " FROM attempts WHERE exercise = ?1 ORDER BY id";
+    // Every attempt (the class report): many rows, no parameter, so from a
+    // server one binary COPY (Backend::prepare_many) rather than a result of
+    // 50,000 fields that libpq builds one by one.
+    static const std::string all =
+        std::string("SELECT ") + kAttemptColumns + " FROM attempts ORDER BY id";
+    sql::Use u = exercise.empty() ? use_many(all.c_str()) : use(sql.c_str());
     e = u.error;
     if ((r.error = e)) return r;
-    u.bind(1, exercise);
+    if (!exercise.empty()) u.bind(1, exercise);
     int rc;
     while ((rc = u.step()) == db::kRow) r.value.push_back(read_attempt(u));
     if (rc != db::kDone) r.error = fail(rc, tr("cannot read the attempts"));

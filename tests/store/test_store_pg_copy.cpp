@@ -59,6 +59,15 @@ TEST(StorePgCopy, IntegersOfEachWidth) {
     EXPECT_EQ(integer({b[3].data(), 3}), 0);
 }
 
+TEST(StorePgCopy, RealsOfEachWidth) {
+    const std::string d = be(0xC04EA00000000000ULL, 8);  // -61.25
+    const std::string f = be(0x3FC00000U, 4);            // 1.5
+    EXPECT_EQ(real({d.data(), 8}), -61.25);
+    EXPECT_EQ(real({f.data(), 4}), 1.5);
+    EXPECT_EQ(real({d.data(), 3}), 0);
+    EXPECT_EQ(real({nullptr, -1}), 0);
+}
+
 TEST(StorePgCopy, HeaderWithAnExtension) {
     std::string head = kHead.substr(0, 15) + be(3, 4) + "xyz";
     bool header = true;

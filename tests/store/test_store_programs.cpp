@@ -688,6 +688,63 @@ TEST_P(StoreValues, WorkshopIsKeptPerMachine) {
     EXPECT_FALSE(s->workshop("lathe").value);
 }
 
+// Every attempt (the class report's read: one COPY on a server) has what the
+// read of one exercise's has, field for field, NULLs and fractions included.
+TEST_P(StorePrograms, AllAttemptsHaveWhatOneExercisesHave) {
+    test::Place t(GetParam());
+    auto s = test::open_store(t / "a.db");
+    for (int i = 0; i < 4; ++i) {
+        Attempt at;
+        at.exercise = i % 2 ? "ex-b" : "ex-a";
+        at.exercise_sha = std::string(64, char('a' + i));
+        at.student = "student" + std::to_string(i);
+        at.machine = "lathe#" + std::to_string(i);
+        ASSERT_FALSE(s->start_attempt(at));
+        if (i == 3) continue;  // in progress: no submission, no score, no seconds
+        at.submitted_ms = at.started_ms + 1000 * (i + 1);
+        at.seed = "5eed" + std::to_string(i);
+        at.score = 40 + i;
+        at.seconds = 61.25 + i / 3.0;
+        at.crashes = i;
+        at.scrapped = i == 1;
+        at.mistakes = i == 2 ? "dec1 sign" : "";
+        at.found = "D1.X=12.5\nDEC1.Z=-3.2 \xc3\xa9";
+        at.report = "line one\nline two";
+        at.record = "dia 40.0000\n";
+        ASSERT_FALSE(s->submit_attempt(at));
+    }
+    auto all = s->attempts();
+    ASSERT_TRUE(all.ok()) << all.error.message;
+    ASSERT_EQ(all.value.size(), 4u);
+    std::vector<Attempt> each = s->attempts("ex-a").value;
+    for (const Attempt& b : s->attempts("ex-b").value) each.push_back(b);
+    ASSERT_EQ(each.size(), 4u);
+    for (const Attempt& a : all.value) {
+        auto same =
+            std::find_if(each.begin(), each.end(), [&](const Attempt& b) { return b.id == a.id; });
+        ASSERT_NE(same, each.end()) << a.id;
+        const Attempt& b = *same;
+        EXPECT_EQ(a.exercise, b.exercise);
+        EXPECT_EQ(a.exercise_sha, b.exercise_sha);
+        EXPECT_EQ(a.student, b.student);
+        EXPECT_EQ(a.machine, b.machine);
+        EXPECT_EQ(a.started_ms, b.started_ms);
+        EXPECT_EQ(a.submitted_ms, b.submitted_ms);
+        EXPECT_EQ(a.seed, b.seed);
+        EXPECT_EQ(a.score, b.score);
+        EXPECT_EQ(a.seconds, b.seconds);
+        EXPECT_EQ(a.crashes, b.crashes);
+        EXPECT_EQ(a.scrapped, b.scrapped);
+        EXPECT_EQ(a.mistakes, b.mistakes);
+        EXPECT_EQ(a.found, b.found);
+        EXPECT_EQ(a.report, b.report);
+        EXPECT_EQ(a.signature, b.signature);
+        EXPECT_EQ(a.record, b.record);
+    }
+    EXPECT_GT(all.value[0].seconds, 0);
+    EXPECT_EQ(all.value[3].submitted_ms, 0);
+}
+
 // An attempt is submitted once and graded once (Store::one_row): a second
 // submit or grade is refused as already done, on both engines.
 TEST_P(StorePrograms, AnAttemptIsSubmittedOnceAndGradedOnce) {
