@@ -24,23 +24,24 @@ struct Table {
     const char* kinds;   // one letter per column
 };
 
-// Parents before children: machines before their values, programs and their
-// revisions in one go (their keys are checked at commit).
+// Parents before children: machines before their values; a program's
+// revisions before its row (a server checks its current revision as the row
+// is written; the revisions' own key on their program, at commit).
 constexpr Table kTables[] = {
     {"machines", "SELECT name, profile, builtin, updated_ms FROM machines ORDER BY name",
      "INSERT INTO machines (name, profile, builtin, updated_ms) VALUES (?1, ?2, ?3, ?4)", "ttii"},
-    {"programs",
-     "SELECT number, idx, title, head, last_rev, conflict, deleted, size, lines, modified_ms, "
-     "modified_by FROM programs ORDER BY number",
-     "INSERT INTO programs (number, idx, title, head, last_rev, conflict, deleted, size, lines, "
-     "modified_ms, modified_by) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11)",
-     "iitiiiiiiit"},
     {"revisions",
      "SELECT program, rev, kind, based_on, conflict, text, size, lines, who, at_ms, source FROM "
      "revisions ORDER BY program, rev",
      "INSERT INTO revisions (program, rev, kind, based_on, conflict, text, size, lines, who, "
      "at_ms, source) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11)",
      "iitiibiitit"},
+    {"programs",
+     "SELECT number, idx, title, head, last_rev, conflict, deleted, size, lines, modified_ms, "
+     "modified_by FROM programs ORDER BY number",
+     "INSERT INTO programs (number, idx, title, head, last_rev, conflict, deleted, size, lines, "
+     "modified_ms, modified_by) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11)",
+     "iitiiiiiiit"},
     {"correctors", "SELECT machine, d, field, value FROM correctors ORDER BY machine, d, field",
      "INSERT INTO correctors (machine, d, field, value) VALUES (?1, ?2, ?3, ?4)", "titi"},
     {"origins", "SELECT machine, kind, axis, value FROM origins ORDER BY machine, kind, axis",

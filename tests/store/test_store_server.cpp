@@ -241,6 +241,15 @@ TEST_P(StoreMany, AnotherStoresCommitIsNotHeard) {
 
 // ---- the server's own ----
 
+// SQL that takes a store of schema 5 back to 4 (run in its schema).
+const std::string kBackTo4 =
+    "DROP TRIGGER heads_exist_insert ON programs; DROP TRIGGER heads_exist_update ON programs; "
+    "DROP TRIGGER revisions_stay ON revisions; DROP TRIGGER revisions_stay_whole ON revisions; "
+    "DROP FUNCTION pupitre_heads_exist(); DROP FUNCTION pupitre_revisions_stay(); "
+    "ALTER TABLE programs DROP COLUMN listing; ALTER TABLE programs ADD FOREIGN KEY (number, "
+    "head) REFERENCES revisions (program, rev) DEFERRABLE INITIALLY DEFERRED; "
+    "UPDATE pupitre_meta SET value = 4 WHERE key = 'schema_version'; ";
+
 class StoreServer : public ::testing::Test {
   protected:
     void SetUp() override {
@@ -268,10 +277,10 @@ TEST_F(StoreServer, ANewerSchemaIsRefusedAnOlderOneUpgraded) {
               std::string::npos);
     // A store of schema 2 (before training, the class and the packed list)
     // gets its tables and its column, in one transaction.
-    ASSERT_EQ(test::pg_admin("SET search_path = " + schema +
-                             "; DROP TABLE attempts; DROP TABLE exercises; DROP TABLE "
-                             "exercise_texts; ALTER TABLE programs DROP COLUMN listing; "
-                             "UPDATE pupitre_meta SET value = 2 WHERE key = 'schema_version'"),
+    ASSERT_EQ(test::pg_admin("SET search_path = " + schema + "; " + kBackTo4 +
+                             "DROP TABLE attempts; DROP TABLE exercises; DROP TABLE "
+                             "exercise_texts; UPDATE pupitre_meta SET value = 2 WHERE key = "
+                             "'schema_version'"),
               "");
     auto s = test::open_store(db);
     ASSERT_TRUE(s);
@@ -298,17 +307,11 @@ TEST_F(StoreServer, AStudentWorksOnAClassServerOneSchemaBehind) {
         ASSERT_TRUE(training::builtin_exercise("exam-2005", e));
         ASSERT_FALSE(teacher->class_init(group, {{e.name, e.source}}));
     }
-    ASSERT_EQ(test::pg_admin("SET search_path = " + schema_of(db) +
-                             "; ALTER TABLE programs DROP COLUMN listing; UPDATE pupitre_meta "
-                             "SET value = 4 WHERE key = 'schema_version'"),
-              "");
+    ASSERT_EQ(test::pg_admin("SET search_path = " + schema_of(db) + "; " + kBackTo4), "");
     auto teacher_then = test::open_store(db);  // to add a student only
     ASSERT_TRUE(teacher_then);
     // Back to 4: the teacher's open upgraded it.
-    ASSERT_EQ(test::pg_admin("SET search_path = " + schema_of(db) +
-                             "; ALTER TABLE programs DROP COLUMN listing; UPDATE pupitre_meta "
-                             "SET value = 4 WHERE key = 'schema_version'"),
-              "");
+    ASSERT_EQ(test::pg_admin("SET search_path = " + schema_of(db) + "; " + kBackTo4), "");
     auto logins = teacher_then->add_students(group, {group + "s1"});
     ASSERT_TRUE(logins.ok()) << logins.error.message;
     teacher_then.reset();
@@ -331,6 +334,34 @@ TEST_F(StoreServer, AStudentWorksOnAClassServerOneSchemaBehind) {
     ASSERT_TRUE(list.ok()) << list.error.message;
     EXPECT_EQ(list.value.size(), 2u);
     EXPECT_EQ(test::pg_admin("SELECT listing FROM " + schema_of(db) + ".programs"), "");
+}
+
+// A program's current revision exists, on a server as on a file: a row
+// that names a missing one is refused, and a revision is never deleted,
+// renumbered or emptied out from under its program.
+TEST_F(StoreServer, AProgramsCurrentRevisionAlwaysExists) {
+    test::Place t("postgresql");
+    const std::string db = t / "heads.db";
+    auto s = test::open_store(db);
+    ASSERT_TRUE(s->save(7, "%7\nM2\n", kNew, "").ok());
+    const std::string in = "SET search_path = " + schema_of(db) + "; ";
+    EXPECT_NE(test::pg_admin(in + "UPDATE programs SET head = 9 WHERE number = 7")
+                  .find("its current revision is missing"),
+              std::string::npos);
+    EXPECT_NE(test::pg_admin(in + "INSERT INTO programs (number, head, last_rev, size, lines, "
+                                  "modified_ms, modified_by) VALUES (8, 1, 1, 0, 0, 0, 'x')"),
+              "");
+    EXPECT_NE(test::pg_admin(in + "DELETE FROM revisions WHERE program = 7"), "");
+    EXPECT_NE(test::pg_admin(in + "UPDATE revisions SET rev = 5 WHERE program = 7"), "");
+    EXPECT_NE(test::pg_admin(in + "TRUNCATE revisions CASCADE"), "");
+    // A revision's other fields are not its key.
+    EXPECT_EQ(test::pg_admin(in + "UPDATE revisions SET source = 'x' WHERE program = 7"), "");
+    EXPECT_EQ(s->integrity_check().value, "ok");
+    EXPECT_EQ(s->read(7).value.text, "%7\nM2\n");
+    // Deleting and restoring, as the store does them, are still allowed.
+    ASSERT_TRUE(s->remove(7).ok());
+    ASSERT_TRUE(s->restore(7, 1).ok());
+    EXPECT_EQ(s->read(7).value.text, "%7\nM2\n");
 }
 
 // A damaged packed list value is refused, never read past.
