@@ -240,10 +240,12 @@ class PgBackend final : public db::Backend {
         return rc;
     }
     int begin_read() override { return begin("BEGIN ISOLATION LEVEL REPEATABLE READ READ ONLY"); }
-    // The other consoles hear of the change once it is committed.
+    // The other consoles hear of the change once it is committed; the
+    // announcement and the commit in one round trip (a failure in either
+    // is the answer, and nothing is committed).
     int commit() override {
-        int rc = run(kNotify);
-        if (rc == db::kOk) rc = run("COMMIT");
+        static const std::string sql = std::string(kNotify) + "; COMMIT";
+        int rc = run(sql.c_str());
         in_tx_ = false;
         return rc;
     }
@@ -282,8 +284,10 @@ class PgBackend final : public db::Backend {
 
     // Listens, and learns the schema whose announcements are this store's.
     int listen() {
-        if (int rc = run(kListen)) return rc;
-        PGresult* r = PQexec(c_, "SELECT coalesce(current_schema(), '')");
+        // One round trip: PQexec answers with the last statement's result.
+        static const std::string sql =
+            std::string(kListen) + "; SELECT coalesce(current_schema(), '')";
+        PGresult* r = PQexec(c_, sql.c_str());
         if (int rc = check(r, true)) return rc;
         schema_ = PQntuples(r) == 1 ? PQgetvalue(r, 0, 0) : "";
         PQclear(r);
@@ -298,12 +302,12 @@ class PgBackend final : public db::Backend {
     // are key lookups whose best plan does not depend on them, and a plan
     // made for the values copies each of them into it (a 3 MB program's text
     // on each of a connection's first five saves: a save took 20% longer).
+    // All in one round trip; lz4 only where the server offers it.
     int session() {
-        if (int rc = run("SET client_min_messages = warning")) return rc;
-        if (int rc = run("SET plan_cache_mode = force_generic_plan")) return rc;
-        if (PQserverVersion(c_) >= 140000)
-            PQclear(PQexec(c_, "SET default_toast_compression = lz4"));  // else pglz
-        return db::kOk;
+        return run(
+            "SET client_min_messages = warning; SET plan_cache_mode = force_generic_plan; "
+            "SELECT set_config(name, 'lz4', false) FROM pg_settings WHERE name = "
+            "'default_toast_compression' AND 'lz4' = ANY (enumvals)");
     }
 
   private:
@@ -348,8 +352,7 @@ class PgBackend final : public db::Backend {
     }
     int made_again() {
         if (PQstatus(c_) != CONNECTION_OK) return lost();
-        for (auto& [sql, s] : stmts_) s->forget();
-        PQsetClientEncoding(c_, "UTF8");
+        for (auto& [sql, s] : stmts_) s->forget();  // UTF-8 again: the connection's parameters
         if (int rc = session()) return rc;
         return listen();
     }
@@ -732,15 +735,17 @@ Result<std::unique_ptr<Store>> Store::open_postgres(const std::string& target, c
     const char* timeout = std::getenv("PGCONNECT_TIMEOUT");
     // A server that vanishes without closing the connection (a cable, a
     // crash of its host) is noticed within seconds, not at TCP's pace.
-    const char* keys[] = {"connect_timeout",
-                          "keepalives_idle",
-                          "keepalives_interval",
-                          "tcp_user_timeout",
-                          "fallback_application_name",
-                          "dbname",
+    const char* keys[] = {
+        "connect_timeout",           "keepalives_idle", "keepalives_interval", "tcp_user_timeout",
+        "fallback_application_name", "dbname",          "client_encoding",     nullptr};
+    const char* vals[] = {timeout && *timeout ? timeout : "5",
+                          "5",
+                          "2",
+                          "10000",
+                          "pupitre",
+                          target.c_str(),
+                          "UTF8",
                           nullptr};
-    const char* vals[] = {
-        timeout && *timeout ? timeout : "5", "5", "2", "10000", "pupitre", target.c_str(), nullptr};
     PGconn* c = PQconnectdbParams(keys, vals, 1);
     if (!c) {
         r.error = {Fault::io, strf(tr("%s: cannot connect: out of memory"), name.c_str())};
@@ -755,7 +760,6 @@ Result<std::unique_ptr<Store>> Store::open_postgres(const std::string& target, c
     // stderr, over the console's screen: what matters comes back as errors.
     PQsetNoticeProcessor(
         c, [](void*, const char*) {}, nullptr);
-    PQsetClientEncoding(c, "UTF8");
     std::unique_ptr<Store> st(new Store);
     st->path_ = name;
     st->short_name_ = pg::short_name(PQhost(c), PQdb(c));
@@ -770,19 +774,17 @@ Result<std::unique_ptr<Store>> Store::open_postgres(const std::string& target, c
         r.error = st->fail(rc, tr("cannot open the store"));
         return r;
     }
-    if (!o.create) {
-        db::Meta m;
-        if (int rc = b.read_meta(m)) {
-            r.error = st->fail(rc, tr("cannot open the store"));
-            return r;
-        }
-        if (m.blank) {
-            r.error = {Fault::not_found, strf(tr("%s: no such store"), name.c_str())};
-            return r;
-        }
+    db::Meta m;
+    if (int rc = b.read_meta(m)) {
+        r.error = st->fail(rc, tr("cannot open the store"));
+        return r;
+    }
+    if (m.blank && !o.create) {
+        r.error = {Fault::not_found, strf(tr("%s: no such store"), name.c_str())};
+        return r;
     }
     bool fresh = false;
-    if ((r.error = st->validate_and_migrate(fresh))) return r;
+    if ((r.error = st->validate_and_migrate(fresh, &m))) return r;
     if (int rc = b.listen()) {
         r.error = st->fail(rc, tr("cannot open the store"));
         return r;

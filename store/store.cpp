@@ -166,11 +166,13 @@ int64_t Store::now_ms() const {
 // of an empty store; applies the migrations a store written by an older
 // pupitre needs, all in one transaction. The check is repeated inside that
 // transaction: another process may have done the work meanwhile.
-StoreError Store::validate_and_migrate(bool& fresh) {
+StoreError Store::validate_and_migrate(bool& fresh, const db::Meta* known) {
     fresh = false;
     for (int attempt = 0; attempt < 2; ++attempt) {
         db::Meta m;
-        if (int rc = db_->read_meta(m)) {
+        if (attempt == 0 && known) {
+            m = *known;
+        } else if (int rc = db_->read_meta(m)) {
             if (attempt) rollback();
             return fail(rc, tr("cannot read the store"));
         }

@@ -20,7 +20,8 @@ namespace pupitre::store {
 
 namespace db {
 class Backend;
-}
+struct Meta;
+}  // namespace db
 namespace sql {
 class Use;
 }
@@ -409,7 +410,8 @@ class Store {
     static Result<std::unique_ptr<Store>> open_postgres(const std::string& target,
                                                         const Options& o);
     StoreError create_file();
-    StoreError validate_and_migrate(bool& fresh);
+    // `known`: the store's meta as just read (a server's open), not read again.
+    StoreError validate_and_migrate(bool& fresh, const db::Meta* known = nullptr);
     StoreError seed();
     StoreError read_row(int number, ProgramRow& row, const std::string& what);
     StoreError insert_revision(int number, int rev, RevisionKind kind, int based_on, bool conflict,
