@@ -8,7 +8,8 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 set -uo pipefail
 bin=$(realpath "$1") case=$2
-if [ -z "${PUPITRE_TEST_PG:-}" ]; then
+# Both: the server to use and how to stop and start it (scripts/lib/pg.sh).
+if [ -z "${PUPITRE_TEST_PG:-}" ] || [ -z "${PUPITRE_TEST_PG_CTL:-}" ]; then
     [ "${CI:-}" = true ] && { echo "CI=true and no PostgreSQL test server"; exit 1; }
     echo "no PostgreSQL test server (scripts/test starts one)"
     exit 77
