@@ -652,8 +652,13 @@ Result<std::vector<ProgramInfo>> Store::list() {
         if (!packed) {
             read_info(u, r.value.emplace_back(), true);
         } else if (!read_packed(u, r.value.emplace_back())) {
-            rc = db::kCorrupt;
-            break;
+            r.value.clear();
+            r.error = {Fault::bad_data,
+                       strf(tr("%s: cannot list the programs: the store is damaged (a program's "
+                               "list entry is not 56 bytes); nothing was changed: restore a "
+                               "backup"),
+                            path_.c_str())};
+            return r;
         }
     }
     if (rc != db::kDone) {

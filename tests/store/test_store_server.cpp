@@ -376,8 +376,12 @@ TEST_F(StoreServer, AShortListingIsRefused) {
                              "STORED"),
               "");
     auto l = s->list();
-    EXPECT_TRUE(l.error);
+    EXPECT_EQ(l.error.fault, Fault::bad_data);
+    EXPECT_NE(l.error.message.find("list entry is not 56 bytes"), std::string::npos)
+        << l.error.message;
     EXPECT_TRUE(l.value.empty());
+    // The rest of the copy was read away: the connection serves the next.
+    EXPECT_EQ(s->read(300).value.info.number, 300);
 }
 
 TEST_F(StoreServer, AnotherApplicationsTablesAreLeftUntouched) {
