@@ -51,23 +51,18 @@ inline int64_t integer(const Field& f) {
 // A floating-point field (double precision: 8 bytes, IEEE 754 in network
 // order; real: 4); 0 for a NULL or any other size.
 inline double real(const Field& f) {
+    if (f.size != 8 && f.size != 4) return 0;
+    uint64_t x = 0;
+    for (int i = 0; i < f.size; ++i) x = x << 8 | static_cast<unsigned char>(f.at[i]);
     if (f.size == 8) {
-        uint64_t x;
-        std::memcpy(&x, f.at, 8);
-        x = be64toh(x);
         double d;
         std::memcpy(&d, &x, 8);
         return d;
     }
-    if (f.size == 4) {
-        uint32_t x;
-        std::memcpy(&x, f.at, 4);
-        x = be32toh(x);
-        float v;
-        std::memcpy(&v, &x, 4);
-        return v;
-    }
-    return 0;
+    const uint32_t y = uint32_t(x);
+    float v;
+    std::memcpy(&v, &y, 4);
+    return v;
 }
 
 // Writing (the documentation's "Binary Format" again): the header, then
