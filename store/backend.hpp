@@ -118,10 +118,7 @@ class Backend {
     // class's student on a server the teacher has not opened with this
     // pupitre yet): true when this pupitre works on it as it is, and then
     // does so; false when it needs the upgrade.
-    virtual bool work_at(int64_t version) {
-        (void)version;
-        return false;
-    }
+    virtual bool work_at(int64_t /*version*/) { return false; }
     virtual const char* migration(int v) const = 0;
     virtual int write_meta(int64_t version) = 0;
 

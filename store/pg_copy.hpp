@@ -49,20 +49,22 @@ inline int64_t integer(const Field& f) {
 }
 
 // A floating-point field (double precision: 8 bytes, IEEE 754 in network
-// order; real: 4); 0 for a NULL or any other size.
+// order; real: 4), its bits read as integer() reads them; 0 for a NULL or
+// any other size.
 inline double real(const Field& f) {
-    if (f.size != 8 && f.size != 4) return 0;
-    uint64_t x = 0;
-    for (int i = 0; i < f.size; ++i) x = x << 8 | static_cast<unsigned char>(f.at[i]);
     if (f.size == 8) {
+        const uint64_t bits = uint64_t(integer(f));
         double d;
-        std::memcpy(&d, &x, 8);
+        std::memcpy(&d, &bits, 8);
         return d;
     }
-    const uint32_t y = uint32_t(x);
-    float v;
-    std::memcpy(&v, &y, 4);
-    return v;
+    if (f.size == 4) {
+        const uint32_t bits = uint32_t(integer(f));
+        float v;
+        std::memcpy(&v, &bits, 4);
+        return v;
+    }
+    return 0;
 }
 
 // Writing (the documentation's "Binary Format" again): the header, then

@@ -1,7 +1,10 @@
 // Programs in the store: save with conflict detection, import, delete, history,
 // restore. Every revision is kept; the current one is programs.head.
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include <endian.h>
+
 #include <algorithm>
+#include <cstring>
 #include <optional>
 
 #include "core/i18n.hpp"
@@ -131,9 +134,9 @@ bool read_packed(const sql::Use& u, ProgramInfo& i) {
     if (p.size() != 7 * 8) return false;
     int64_t v[7];
     for (size_t k = 0; k < 7; ++k) {
-        uint64_t x = 0;
-        for (size_t b = 0; b < 8; ++b) x = x << 8 | static_cast<unsigned char>(p[k * 8 + b]);
-        v[k] = static_cast<int64_t>(x);
+        uint64_t x;
+        std::memcpy(&x, p.data() + k * 8, 8);
+        v[k] = int64_t(be64toh(x));
     }
     i.number = int(v[0]);
     i.index = int(v[1]);

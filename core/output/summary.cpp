@@ -75,7 +75,7 @@ void diag_json(std::string& o, const Diag& d) {
 
 std::string tool_line(const plan::ToolRow& r, const plan::EdgeLife& life) {
     // TRANSLATORS: a tool's share of the cycle: T, its cutting time in seconds, its passes
-    // (the English says "passes" whatever the number), the length cut in mm, its rapid time.
+    // (one "pass", more "passes"), the length cut in mm, its rapid time.
     std::string o =
         strf(trn("T%d: %s s of cutting a part (%ld pass, %s mm), %s s of rapids",
                  "T%d: %s s of cutting a part (%ld passes, %s mm), %s s of rapids", r.passes),
