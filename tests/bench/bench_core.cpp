@@ -102,7 +102,7 @@ void BM_PlanMoves(benchmark::State& st) {
     }
     st.SetItemsProcessed(st.iterations() * int64_t(rec.moves.size()));
 }
-BENCHMARK(BM_PlanMoves)->Arg(100000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_PlanMoves)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
 
 // G64 on a rough stock of n points (a wavy bar, 0.5 mm deep in diameter) over a
 // 50-block profile, passes 0.01 mm apart: 20,000 level lines, a few hundred of
