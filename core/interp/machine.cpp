@@ -166,6 +166,10 @@ std::string read_in_position(const Line& l, MachineProfile& m) {
 std::string read_min_block_time(const Line& l, MachineProfile& m) {
     return number_unless(l.val, negative, m.min_block_time, tr("min_block_time must be >= 0"));
 }
+std::string read_interpolation_period(const Line& l, MachineProfile& m) {
+    return number_unless(l.val, negative, m.interpolation_period,
+                         tr("interpolation_period must be >= 0"));
+}
 std::string read_spindle_accel(const Line& l, MachineProfile& m) {
     return number_unless(l.val, negative, m.spindle_accel, tr("spindle.accel must be >= 0"));
 }
@@ -275,6 +279,7 @@ constexpr KeyReader kKeys[] = {
     {"smoothing", read_smoothing},
     {"in_position", read_in_position},
     {"min_block_time", read_min_block_time},
+    {"interpolation_period", read_interpolation_period},
     {"spindle.accel", read_spindle_accel},
     {"homing", read_homing},
     {"program_memory", read_program_memory},

@@ -57,12 +57,15 @@ struct MachineProfile {
     // smoothed corner may leave the programmed point between chained blocks
     // (mm, 004:360), the time an exact stop waits for the axes to settle (s),
     // the shortest time of an interpolated block (s, E32000's default,
-    // 004:1265), and how fast the spindle changes speed (rev/min per second,
-    // 0: at once).
+    // 004:1265), how fast the spindle changes speed (rev/min per second,
+    // 0: at once), and the period at which the trajectory generator computes
+    // a setpoint (s, 004:338: a motion comes to rest on one of its ticks; 0:
+    // none, the textbook's times).
     double smoothing = 0.01;
     double in_position = 0;
     double min_block_time = 0;
     double spindle_accel = 0;
+    double interpolation_period = 0.001;
     bool homing_required = false;  // console: programmed moves before POM give 159
     double jog_feed = 1000;        // mm/min of JOG and INC moves
     // Part-program memory in kilobytes: G76+ may not grow the programs in memory

@@ -63,7 +63,8 @@ PlanSink::PlanSink(const MachineProfile& m, MachineSink* next)
       planner_(*this, has_jerk(m)),
       queue_(std::make_unique<Queue>()),
       jerk_(has_jerk(m)),
-      smoothing_(m.smoothing) {
+      smoothing_(m.smoothing),
+      period_(m.interpolation_period) {
     auto inv = [](double v) { return v > 0 ? 1 / v : 0; };
     for (size_t a = 0; a < kAxes; ++a) {
         if (!m.has(int(a))) continue;
@@ -317,18 +318,29 @@ void PlanSink::plan(const Mv& e) {
     have_last_ = moved_ = true;
 }
 
+// A move that ends at rest ends on a tick of the trajectory generator, which
+// computes a setpoint every period (004:338, "une consigne toutes les T
+// secondes"): its time runs to the next tick, the clock counted from the
+// run's start. Where the tick is within a millionth of a period, it is the
+// tick: rounding does not cost a whole period.
 void PlanSink::planned(const Segment& s) {
     const double start = report_.seconds;
-    report_.seconds += s.timing.seconds;
-    report_.tools.add(s.tool, s.cut, s.length, s.timing.seconds);
-    if (next_) hand_on(s, start);
+    double seconds = s.timing.seconds;
+    if (s.exit == 0 && period_ > 0) {
+        const double end = start + seconds;
+        const double tick = std::ceil(end / period_ - 1e-6) * period_;
+        seconds += std::max(0.0, tick - end);
+    }
+    report_.seconds += seconds;
+    report_.tools.add(s.tool, s.cut, s.length, seconds);
+    if (next_) hand_on(s, start, seconds);
 }
 
-void PlanSink::hand_on(const Segment& s, double start) {
+void PlanSink::hand_on(const Segment& s, double start, double seconds) {
     auto& q = queue_->q;
     MoveEvent& e = std::get<MoveEvent>(q.front().ev);
     e.plan_start = start;
-    e.plan_seconds = s.timing.seconds;
+    e.plan_seconds = seconds;
     e.plan_peak = s.timing.peak * 60;
     e.plan_entry = s.entry * 60;
     e.plan_exit = s.exit * 60;

@@ -79,7 +79,9 @@ class PlanSink final : public MachineSink, private Planner::Receiver {
   private:
     struct Queue;
     void planned(const Segment&) override;
-    void hand_on(const Segment&, double start);  // to the next sink, and what waited on it
+    // To the next sink, and what waited on it; `seconds`: the move's time
+    // to the tick it ends on.
+    void hand_on(const Segment&, double start, double seconds);
     // The motion stops at rest; `settle`: an exact stop the program or the
     // machine asks for, which waits the profile's in-position time.
     void halt(bool settle, const Loc& l);
@@ -134,6 +136,7 @@ class PlanSink final : public MachineSink, private Planner::Receiver {
     size_t naxes_ = 0;
     bool jerk_ = false;  // an axis has a jerk
     double smoothing_;   // the profile's, read at every corner
+    double period_;      // the interpolation period (0: none)
     std::array<double, kAxes> inv_rapid_{}, inv_feed_{}, inv_accel_{}, inv_jerk_{};
     // The directions at the end of the last move (dir_[last_]) and of the
     // one being added; an arc's at its start.

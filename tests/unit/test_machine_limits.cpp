@@ -1,6 +1,7 @@
 // The motion's limits in a machine profile (issue 35): per axis feed, rapid,
 // acceleration and jerk; smoothing, in-position time, minimum block time and
-// the spindle's acceleration; the shipped profiles give them all.
+// the spindle's acceleration, the interpolation period; the shipped profiles
+// give them all.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <gtest/gtest.h>
 
@@ -13,7 +14,8 @@ TEST(MachineLimits, KeysAreRead) {
     MachineProfile m;
     ASSERT_EQ(parse_machine("name = m\naxes = X Y\nrapid.X = 12000\nfeed.max.X = 9000\n"
                             "accel.X = 1500\njerk.X = 20000\naccel.Y = 800\nsmoothing = 0.02\n"
-                            "in_position = 0.03\nmin_block_time = 0.004\nspindle.accel = 2000\n",
+                            "in_position = 0.03\nmin_block_time = 0.004\nspindle.accel = 2000\n"
+                            "interpolation_period = 0.002\n",
                             m),
               "");
     EXPECT_EQ(m.axes[X].feed_max(), 9000);
@@ -26,6 +28,10 @@ TEST(MachineLimits, KeysAreRead) {
     EXPECT_EQ(m.in_position, 0.03);
     EXPECT_EQ(m.min_block_time, 0.004);
     EXPECT_EQ(m.spindle_accel, 2000);
+    EXPECT_EQ(m.interpolation_period, 0.002);
+    MachineProfile d;  // a profile that does not say: LinuxCNC's servo period
+    ASSERT_EQ(parse_machine("name = d\naxes = X\n", d), "");
+    EXPECT_EQ(d.interpolation_period, 0.001);
 }
 
 TEST(MachineLimits, BadValuesSayWhere) {
@@ -36,6 +42,8 @@ TEST(MachineLimits, BadValuesSayWhere) {
     EXPECT_EQ(parse_machine("name = m\naxes = X\nsmoothing = x\n", m),
               "line 3: smoothing must be >= 0");
     EXPECT_NE(parse_machine("name = m\naxes = X\naccel.Q = 1\n", m), "");
+    EXPECT_EQ(parse_machine("name = m\naxes = X\ninterpolation_period = -0.001\n", m),
+              "line 3: interpolation_period must be >= 0");
 }
 
 TEST(MachineLimits, TheShippedProfilesGiveThem) {
@@ -49,6 +57,9 @@ TEST(MachineLimits, TheShippedProfilesGiveThem) {
         EXPECT_GT(m.smoothing, 0) << name;
         EXPECT_GT(m.in_position, 0) << name;
         EXPECT_GT(m.min_block_time, 0) << name;
+        // A move lasts at least one period (004:344): E32000's default is no shorter.
+        EXPECT_GT(m.interpolation_period, 0) << name;
+        EXPECT_GE(m.min_block_time, m.interpolation_period) << name;
         EXPECT_GT(m.spindle_accel, 0) << name;
     }
 }

@@ -5,10 +5,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "core/interp/interp.hpp"
 #include "core/plan/plan_sink.hpp"
@@ -19,11 +21,14 @@ namespace pupitre {
 namespace {
 
 // The machine of the LinuxCNC comparisons (issue 35): X Y Z at 166.7 mm/s
-// (10002 mm/min) and 500 mm/s2, no settling, no minimum block time.
+// (10002 mm/min) and 500 mm/s2, no settling, no minimum block time, and no
+// interpolation period: the textbook's closed forms (the ticks are tested
+// apart, InterpolationTicks).
 std::string machine_text(const std::string& more = {}) {
     return "name = t\nkind = mill\naxes = X Y Z\nfeed.max = 10002\n"
            "rapid.X = 10002\nrapid.Y = 10002\nrapid.Z = 10002\n"
-           "accel.X = 500\naccel.Y = 500\naccel.Z = 500\nsmoothing = 0.01\n" +
+           "accel.X = 500\naccel.Y = 500\naccel.Z = 500\nsmoothing = 0.01\n"
+           "interpolation_period = 0\n" +
            more;
 }
 
@@ -143,6 +148,46 @@ TEST(Plan, G09StopsAtTheEndOfItsOwnBlockOnly) {
     EXPECT_NEAR(chain.seconds(), trapezoid(30, 0, 0, 100, 500), 1e-9);
     EXPECT_NEAR(stop.seconds(), trapezoid(20, 0, 0, 100, 500) + trapezoid(10, 0, 0, 100, 500),
                 1e-9);
+}
+
+// The trajectory generator computes a setpoint every period (004:338): a
+// motion comes to rest on one of its ticks, as LinuxCNC's does on its servo
+// period (lcnc-time counts whole cycles of 1 ms).
+TEST(Plan, InterpolationTicksEndEachMotionAtRestOnATick) {
+    const std::string ms = "interpolation_period = 0.001\n";
+    // 2 sqrt(1/500) = 89.44 ms, to the next millisecond.
+    Planned one("G1 X1 F6000\n", ms);
+    EXPECT_NEAR(one.seconds(), 0.090, 1e-9);
+    // 30 diagonals of 0.707 mm in exact stop, 63.25 ms each at √2 × 500
+    // mm/s2: 64 ms each, LinuxCNC's 1.920 s where the textbook gives 1.897.
+    std::string diag = "G1 F6000\n";
+    for (int i = 1; i <= 30; ++i) diag += "G9 X" + mm(i * 0.5) + " Y" + mm(i * 0.5) + "\n";
+    Planned d(diag, ms), textbook(diag);
+    EXPECT_NEAR(textbook.seconds(), 30 * 2 * std::sqrt(std::sqrt(0.5) / (500 * std::sqrt(2.0))),
+                1e-9);
+    EXPECT_NEAR(d.seconds(), 1.920, 1e-9);
+    // Chained, the motion stops once: only its end goes to a tick.
+    Planned chain("G1 X1 F6000\nX2\n", ms);
+    EXPECT_NEAR(chain.seconds(), std::ceil(2 * std::sqrt(2.0 / 500) * 1000) / 1000, 1e-9);
+    // A time already on a tick stays: 1.2 s, not 1.201.
+    Planned exact("G1 X100 F6000\n", ms);
+    EXPECT_NEAR(exact.seconds(), 1.2, 1e-9);
+}
+
+TEST(Plan, ATickLengthensTheMoveThatEndsOnIt) {
+    struct Times final : MachineSink {
+        std::vector<std::array<double, 2>> moves;  // start, seconds
+        void move(const MoveEvent& e) override { moves.push_back({e.plan_start, e.plan_seconds}); }
+    } t;
+    Planned r("G1 G9 X1 F6000\nX2\nX3\n", "interpolation_period = 0.01\n", &t);
+    ASSERT_EQ(t.moves.size(), 3u);
+    EXPECT_NEAR(t.moves[0][1], 0.09, 1e-9);  // 89.44 ms at rest: to 90 ms
+    EXPECT_NEAR(t.moves[1][0], 0.09, 1e-9);  // the next starts on the tick
+    // The chain of two: only its second move, which ends at rest, is lengthened.
+    const double two = 2 * std::sqrt(2.0 / 500);
+    EXPECT_NEAR(t.moves[1][1] + t.moves[2][1], std::ceil((0.09 + two) * 100) / 100 - 0.09, 1e-9);
+    EXPECT_NEAR(t.moves[1][1], std::sqrt(2.0 / 500), 1e-9);  // half the triangle, untouched
+    EXPECT_NEAR(r.seconds(), t.moves[2][0] + t.moves[2][1], 1e-12);
 }
 
 TEST(Plan, ExactStopsSettle) {
