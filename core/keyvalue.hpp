@@ -3,6 +3,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 #include <charconv>
+#include <cmath>
 #include <string_view>
 
 namespace pupitre::kv {
@@ -15,12 +16,13 @@ inline std::string_view trim(std::string_view s) {
     return s;
 }
 
-// The whole of `s` (blanks around it allowed) read as a decimal number.
+// The whole of `s` (blanks around it allowed) read as a decimal number, a
+// finite one: from_chars also reads "inf" and "nan", which no key means.
 inline bool number(std::string_view s, double& v) {
     s = trim(s);
     if (s.empty()) return false;
     auto r = std::from_chars(s.data(), s.data() + s.size(), v);
-    return r.ec == std::errc() && r.ptr == s.data() + s.size();
+    return r.ec == std::errc() && r.ptr == s.data() + s.size() && std::isfinite(v);
 }
 
 // The next line of `text` that holds something, without its '#' comment and

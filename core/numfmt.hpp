@@ -15,4 +15,10 @@ std::string fixed3(double v, size_t max_chars = 31);
 // The same with |v| under `zero` shown as 0.000, never as "-0.000".
 std::string fixed3_zeroed(double v, double zero, size_t max_chars = 31);
 
+// A time as H:MM:SS, the seconds cut (as `run`, the drawings and the GRAPH
+// page give a cycle time); negative or NaN as 0. The hours are a double: a
+// profile's absurd limits (an acceleration of 1e-300) make times no integer
+// holds, which are printed as they are.
+std::string clock_text(double seconds);
+
 }  // namespace pupitre

@@ -11,6 +11,7 @@
 
 #include "core/geometry/geometry.hpp"
 #include "core/i18n.hpp"
+#include "core/numfmt.hpp"
 #include "pages/view.hpp"
 
 namespace pupitre::pages {
@@ -416,8 +417,10 @@ void page_graph(const GraphView& g, const MachineProfile& m, Canvas& c, const Re
     const Toolpath& p = *g.path;
     char buf[96];
     double t = g.seconds >= 0 ? g.seconds : p.seconds();
-    std::snprintf(buf, sizeof buf, tr(" %zu moves  %d:%02d:%02d "), p.moves_made(moves_shown(g)),
-                  int(t / 3600), int(t / 60) % 60, int(t) % 60);
+    const size_t made = p.moves_made(moves_shown(g));
+    // TRANSLATORS: the GRAPH page's title: the moves drawn, then the cycle time h:mm:ss.
+    std::snprintf(buf, sizeof buf, trn(" %zu move  %s ", " %zu moves  %s ", made), made,
+                  clock_text(t).c_str());
     // The title gives way to the count and the time on a narrow page.
     std::string title = title_of(g);
     int room = r.w - columns(buf) - 6;

@@ -61,10 +61,7 @@ Mark rect_mark(Mark::Group g, double x, double y, double w, double h, Rgb stroke
 }
 
 std::string hms(double t) {
-    char buf[64];
-    long s = long(std::floor(t));  // as `run` prints it
-    std::snprintf(buf, sizeof buf, "%ld:%02ld:%02ld (%.3f s)", s / 3600, s / 60 % 60, s % 60, t);
-    return buf;
+    return clock_text(t) + " (" + fixed3(t, 399) + " s)";  // as `run` prints it
 }
 
 // The ratio on paper: 2 -> "2:1", 0.05 -> "1:20".

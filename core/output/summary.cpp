@@ -7,6 +7,7 @@
 
 #include "core/geometry/kinematics.hpp"
 #include "core/i18n.hpp"
+#include "core/numfmt.hpp"
 #include "core/output/json.hpp"
 
 namespace pupitre {
@@ -27,13 +28,6 @@ std::string compact(double v) {
         if (text.back() == '.') text.pop_back();
     }
     return text == "-0" ? "0" : text;
-}
-
-std::string clock_text(double seconds) {
-    long total = long(seconds);
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%ld:%02ld:%02ld", total / 3600, (total / 60) % 60, total % 60);
-    return buf;
 }
 
 void axes_json(std::string& o, const Interpreter& in, const Axes& v) {

@@ -36,7 +36,9 @@ std::string read_edge_life(std::string_view text, EdgeLife& life) {
 
 long parts_per_edge(double cut_seconds, double life_seconds) {
     if (cut_seconds <= 0 || life_seconds <= 0) return 0;
-    return long(std::floor(life_seconds / cut_seconds + 1e-9));
+    const double parts = std::floor(life_seconds / cut_seconds + 1e-9);
+    // At most 1e18, which a long holds: a cut of a nanosecond is no reason to overflow.
+    return parts < 1e18 ? long(parts) : long(1e18);
 }
 
 }  // namespace pupitre::plan

@@ -6,6 +6,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 #include "pages/page_graph.hpp"
 #include "tests/plot/plot_run.hpp"
 #include "tests/screen/snapshot.hpp"
@@ -118,4 +120,18 @@ TEST(GraphSnapshot, GougeIsHighlighted) {
     std::string text = c.to_text();
     EXPECT_NE(text.find("error 149 N80"), std::string::npos);
     snapshot("gouge_149_80x24", text + "-- styles --\n" + styles(c));
+}
+
+// One move is "1 move" in the title (found on the console: " 1 moves  0:00:04 ").
+TEST(GraphSnapshot, OneMoveIsOneMove) {
+    const std::string file = testing::TempDir() + "/one_move.iso";
+    FILE* f = std::fopen(file.c_str(), "w");
+    ASSERT_NE(f, nullptr);
+    std::fputs("%1\nG0 X10 Y10 Z5\nM2\n", f);
+    std::fclose(f);
+    test::PlotRun r("mill", {file});
+    ASSERT_TRUE(r.load_error.empty()) << r.load_error;
+    const std::string page = draw(view_of(r), r.machine, 80, 24).to_text();
+    EXPECT_NE(page.find(" 1 move  0:00:0"), std::string::npos) << page;
+    EXPECT_EQ(page.find("1 moves"), std::string::npos) << page;
 }

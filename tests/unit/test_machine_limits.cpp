@@ -44,6 +44,12 @@ TEST(MachineLimits, BadValuesSayWhere) {
     EXPECT_NE(parse_machine("name = m\naxes = X\naccel.Q = 1\n", m), "");
     EXPECT_EQ(parse_machine("name = m\naxes = X\ninterpolation_period = -0.001\n", m),
               "line 3: interpolation_period must be >= 0");
+    // from_chars reads "inf" and "nan"; a profile may not (found: a NaN
+    // cycle time printed as -2562047788015215:-30:-8).
+    EXPECT_EQ(parse_machine("name = m\naxes = X\ninterpolation_period = inf\n", m),
+              "line 3: interpolation_period must be >= 0");
+    EXPECT_EQ(parse_machine("name = m\naxes = X\nin_position = nan\n", m),
+              "line 3: in_position must be >= 0");
 }
 
 TEST(MachineLimits, TheShippedProfilesGiveThem) {

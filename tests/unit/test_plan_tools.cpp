@@ -97,6 +97,9 @@ TEST(ToolTimes, PartsPerEdge) {
     EXPECT_EQ(plan::parts_per_edge(19.516 * 60 / 106.20, edge), 81);
     EXPECT_EQ(plan::parts_per_edge(0, edge), 0);
     EXPECT_EQ(plan::parts_per_edge(100, 0), 0);
+    // A cut of no time to speak of: as many parts as a long may say, not an
+    // overflow (found: "change the edge every -9223372036854775808 parts").
+    EXPECT_EQ(plan::parts_per_edge(1e-30, edge), 1000000000000000000L);
 }
 
 TEST(ToolTimes, TheSummaryLine) {
@@ -127,6 +130,10 @@ TEST(ToolTimes, EdgeLifeOption) {
     EXPECT_NE(plan::read_edge_life("0", life), "");
     EXPECT_NE(plan::read_edge_life("X1=3", life), "");
     EXPECT_NE(plan::read_edge_life("T1=", life), "");
+    // from_chars reads these; no life is (found: --edge-life inf ran).
+    EXPECT_NE(plan::read_edge_life("inf", life), "");
+    EXPECT_NE(plan::read_edge_life("T2=nan", life), "");
+    EXPECT_DOUBLE_EQ(life.of(2), 900);
 }
 
 }  // namespace
