@@ -172,30 +172,29 @@ PlanSink::Bend PlanSink::arc(const Mv& e, Along& lim, Dir& in, Dir& out, Corner&
 }
 
 namespace {
-// The segment of a move from how much its axes bind it (Along: v, a, j): the
-// speed no more than the feed's (the length over the time at the feed), EG on
-// the acceleration.
+// A move's limits along its path, in locals until its segment is written
+// once (the stores to the ring could otherwise touch them, for all the
+// compiler knows).
+struct PathLimits {
+    double vmax = 1e9, inv_vmax = 1e-9, accel = 0, inv_accel = 0;
+};
+// From how much its axes bind a move (Along: v, a): the speed no more than
+// the feed's (the length over the time at the feed), EG on the acceleration.
 template <class Mv>
-void limits(const Mv& e, double inv_len, double v, double a, double j, Segment& s) {
-    s.length = e.length;
-    s.min_time = e.min_block;
+PathLimits limits(const Mv& e, double inv_len, double v, double a) {
+    PathLimits r;
     // The longest of the times at the axes' limits, at the feed (a rapid
     // has none of its own), and E32000's.
     const double t = std::max({v * e.length, e.g != 0 ? e.seconds : 0, e.min_block});
     if (t > 0) {
-        s.vmax = e.length / t;
-        s.inv_vmax = t * inv_len;
-    } else {
-        s.vmax = 1e9;
-        s.inv_vmax = 1e-9;
+        r.vmax = e.length / t;
+        r.inv_vmax = t * inv_len;
     }
     if (a > 0) {
-        s.inv_accel = e.eg == 100 ? a : a * 100 / e.eg;
-        s.limits.accel = 1 / s.inv_accel;
-    } else {
-        s.inv_accel = s.limits.accel = 0;
+        r.inv_accel = e.eg == 100 ? a : a * 100 / e.eg;
+        r.accel = 1 / r.inv_accel;
     }
-    s.limits.jerk = j > 0 ? 1 / j : 0;
+    return r;
 }
 }  // namespace
 
@@ -297,19 +296,26 @@ void PlanSink::plan(const Mv& e) {
     } else {
         line(e, inv_len, lim, out, k);
     }
-    limits(e, inv_len, lim.v, lim.a, lim.j, s);
-    if (bend.round && s.limits.accel > 0) {
+    PathLimits pl = limits(e, inv_len, lim.v, lim.a);
+    if (bend.round && pl.accel > 0) {
         // The centre pulls at most sqrt(3)/2 of the plane's acceleration
-        // (s.limits.accel is the path's: plane / share); half goes along.
-        const double centre = kArcNormal * s.limits.accel * bend.plane;
+        // (pl.accel is the path's: plane / share); half goes along.
+        const double centre = kArcNormal * pl.accel * bend.plane;
         const double v = std::sqrt(centre * bend.radius) / std::max(bend.plane, kTiny);
-        if (v < s.vmax) {
-            s.vmax = v;
-            s.inv_vmax = 1 / v;
+        if (v < pl.vmax) {
+            pl.vmax = v;
+            pl.inv_vmax = 1 / v;
         }
-        s.limits.accel *= kArcTangential;
-        s.inv_accel /= kArcTangential;
+        pl.accel *= kArcTangential;
+        pl.inv_accel /= kArcTangential;
     }
+    s.length = e.length;
+    s.min_time = e.min_block;
+    s.vmax = pl.vmax;
+    s.inv_vmax = pl.inv_vmax;
+    s.limits.accel = pl.accel;
+    s.inv_accel = pl.inv_accel;
+    s.limits.jerk = jerk_ && lim.j > 0 ? 1 / lim.j : 0;
     s.entry_max_sq = have_last_ ? junction_sq(k, e.eg) : 0;
     s.tool = tool_;
     s.cut = e.g != 0;
