@@ -25,6 +25,12 @@ inline bool number(std::string_view s, double& v) {
     return r.ec == std::errc() && r.ptr == s.data() + s.size() && std::isfinite(v);
 }
 
+// A number of a workshop's setup or of an exercise's: below 100 km in size
+// (no workshop is larger).
+inline bool workshop_number(std::string_view s, double& v) {
+    return number(s, v) && std::abs(v) < 1e5;
+}
+
 // The next line of `text` that holds something, without its '#' comment and
 // its blanks; `lineno` counts the lines read (1-based). False at the end.
 inline bool next_line(std::string_view& text, std::string_view& line, int& lineno) {

@@ -315,7 +315,7 @@ void PlanSink::plan(const Mv& e) {
     s.inv_vmax = pl.inv_vmax;
     s.limits.accel = pl.accel;
     s.inv_accel = pl.inv_accel;
-    s.limits.jerk = jerk_ && lim.j > 0 ? 1 / lim.j : 0;
+    s.limits.jerk = lim.j > 0 ? 1 / lim.j : 0;  // 0 when no axis has a jerk
     s.entry_max_sq = have_last_ ? junction_sq(k, e.eg) : 0;
     s.tool = tool_;
     s.cut = e.g != 0;

@@ -42,9 +42,7 @@ constexpr Builtin kBuiltins[] = {
     {"wear", data::exercise_wear},
 };
 
-bool number(std::string_view text, double& v) {
-    return kv::number(text, v) && std::isfinite(v) && std::abs(v) < 1e5;
-}
+using kv::workshop_number;
 
 // The words of `text`, split at blanks.
 std::vector<std::string_view> words(std::string_view text) {
@@ -61,14 +59,14 @@ std::vector<std::string_view> words(std::string_view text) {
 std::string draw_value(std::string_view val, Draw& d) {
     size_t dots = val.find("..");
     if (dots == std::string_view::npos) {
-        if (!number(val, d.lo)) d.text = std::string(val);  // the setup checks it
+        if (!workshop_number(val, d.lo)) d.text = std::string(val);  // the setup checks it
         d.hi = d.lo;
         return {};
     }
     std::vector<std::string_view> w = words(val.substr(dots + 2));
     d.range = true;
-    if (!number(val.substr(0, dots), d.lo) || w.empty() || !number(w[0], d.hi) ||
-        (w.size() != 1 && (w.size() != 3 || w[1] != "step" || !number(w[2], d.step))))
+    if (!workshop_number(val.substr(0, dots), d.lo) || w.empty() || !workshop_number(w[0], d.hi) ||
+        (w.size() != 1 && (w.size() != 3 || w[1] != "step" || !workshop_number(w[2], d.step))))
         return tr("expected LO .. HI or LO .. HI step S");
     if (d.hi <= d.lo) return tr("HI must be above LO");
     if (d.step < 0.0001 || d.step > d.hi - d.lo) return tr("step must be from 0.0001 to HI - LO");
@@ -78,14 +76,14 @@ std::string draw_value(std::string_view val, Draw& d) {
 // "truth", "truth + 0.015", "truth - 0.2" or a number.
 std::string start_value_text(std::string_view val, Start& start) {
     if (val.substr(0, 5) != "truth") {
-        if (!number(val, start.value)) return tr("expected a number or truth + N");
+        if (!workshop_number(val, start.value)) return tr("expected a number or truth + N");
         return {};
     }
     start.from_truth = true;
     std::string_view rest = trim(val.substr(5));
     if (rest.empty()) return {};
     double v = 0;
-    if ((rest[0] != '+' && rest[0] != '-') || !number(rest.substr(1), v))
+    if ((rest[0] != '+' && rest[0] != '-') || !workshop_number(rest.substr(1), v))
         return tr("expected truth + N or truth - N");
     start.value = rest[0] == '-' ? -v : v;
     return {};
@@ -101,12 +99,12 @@ std::string dimension(std::string_view val, Dimension& d) {
     if (spec.empty() || !workshop::is_instrument(spec[0]))
         return tr("expected an instrument's request before ':' (dia Z-20, length, depth X Y...)");
     double t = 0;
-    if (w.size() == 2 && number(w[0], d.nominal) && number(w[1], t) && t > 0) {
+    if (w.size() == 2 && workshop_number(w[0], d.nominal) && workshop_number(w[1], t) && t > 0) {
         d.lower = -t, d.upper = t;
         return {};
     }
-    if (w.size() == 3 && number(w[0], d.nominal) && number(w[1], d.lower) &&
-        number(w[2], d.upper) && d.lower < d.upper)
+    if (w.size() == 3 && workshop_number(w[0], d.nominal) && workshop_number(w[1], d.lower) &&
+        workshop_number(w[2], d.upper) && d.lower < d.upper)
         return {};
     return tr("expected NOMINAL TOLERANCE or NOMINAL LOWER UPPER after ':'");
 }
@@ -114,7 +112,7 @@ std::string dimension(std::string_view val, Dimension& d) {
 std::string numbers(std::string_view val, std::vector<double>& out) {
     for (std::string_view w : words(val)) {
         double v = 0;
-        if (!number(w, v) || v <= 0) return tr("expected positive numbers");
+        if (!workshop_number(w, v) || v <= 0) return tr("expected positive numbers");
         out.push_back(v);
     }
     return {};
@@ -125,7 +123,8 @@ std::string find_key(std::string_view val, int line, Exercise& e) {
     Target t;
     t.line = line;
     if (w.empty() || w.size() > 2 ||
-        (w.size() == 2 && (!number(w[1], t.tolerance) || t.tolerance <= 0 || t.tolerance > 10)))
+        (w.size() == 2 &&
+         (!workshop_number(w[1], t.tolerance) || t.tolerance <= 0 || t.tolerance > 10)))
         return tr("expected NAME [TOLERANCE], e.g. PREF.X 0.01");
     t.name = std::string(w[0]);
     if (!target_name(t.name, e.lathe()))
@@ -167,7 +166,7 @@ std::string plain_key(Exercise& e, std::string_view key, std::string_view val, i
     } else if (key == "diameters") {
         return numbers(val, e.diameters);
     } else if (key == "time") {
-        if (!number(val, e.minutes) || e.minutes < 0 || e.minutes > 1440)
+        if (!workshop_number(val, e.minutes) || e.minutes < 0 || e.minutes > 1440)
             return tr("expected minutes from 0 to 1440");
     } else {
         return strf(tr("unknown key '%.*s'"), int(key.size()), key.data());

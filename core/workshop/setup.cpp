@@ -29,15 +29,12 @@ namespace {
 
 using kv::trim;
 
-// A number of a setup: finite, and below 100 km (no workshop is larger).
-bool number(std::string_view text, double& v) {
-    return kv::number(text, v) && std::isfinite(v) && std::abs(v) < 1e5;
-}
+using kv::workshop_number;
 
 // Reads a number into `out` if it lies in [lo, hi]; else says why.
 std::string in_range(std::string_view val, double lo, double hi, double& out) {
     double v = 0;
-    if (!number(val, v)) return tr("expected a number");
+    if (!workshop_number(val, v)) return tr("expected a number");
     if (v < lo || v > hi) return strf(tr("must be from %g to %g"), lo, hi);
     out = v;
     return {};
@@ -124,8 +121,8 @@ std::string points(std::string_view val, std::vector<Pt>& out) {
         val = end == std::string_view::npos ? std::string_view{} : val.substr(end);
         size_t comma = p.find(',');
         Pt q{};
-        if (comma == std::string_view::npos || !number(p.substr(0, comma), q[0]) ||
-            !number(p.substr(comma + 1), q[1]))
+        if (comma == std::string_view::npos || !workshop_number(p.substr(0, comma), q[0]) ||
+            !workshop_number(p.substr(comma + 1), q[1]))
             return tr("expected points as Z,X Z,X Z,X");
         out.push_back(q);
         if (out.size() > 64) return tr("at most 64 points");

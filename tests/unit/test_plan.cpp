@@ -108,7 +108,8 @@ TEST(Plan, AFullCircleRunsAtItsCentripetalLimit) {
 }
 
 TEST(Plan, AFullCircleBelowItsLimitGetsHalfTheAcceleration) {
-    // LinuxCNC's case: R10 at F3000 in exact stop, 1.457 s (lcnc-time README).
+    // LinuxCNC's case: R10 at F3000 in exact stop, 1.457 s (scripts/lcnc-compare,
+    // exact/circle_r10).
     Planned r("G1 G9 X-10 F3000\nG2 X-10 Y0 I0 J0\n");
     const double line = trapezoid(10, 0, 0, 50, 500);
     EXPECT_NEAR(r.seconds() - line, 2 * std::numbers::pi * 10 / 50 + 50.0 / 250, 1e-9);
@@ -120,7 +121,8 @@ TEST(Plan, ARapidRunsAtEachAxisOwnLimit) {
     EXPECT_NEAR(x.seconds(), trapezoid(100, 0, 0, 166.7, 500), 1e-9);
     EXPECT_NEAR(y.seconds(), trapezoid(100, 0, 0, 83.35, 500), 1e-9);
     // A diagonal of two equal axes gets √2 times each, in speed and in
-    // acceleration: 0.933 s, as LinuxCNC (lcnc-time README).
+    // acceleration: 0.933 s, as LinuxCNC (scripts/lcnc-compare,
+    // exact/rapid_xy).
     Planned xy("G0 X100 Y100\n");
     const double r2 = std::sqrt(2.0);
     EXPECT_NEAR(xy.seconds(), trapezoid(100 * r2, 0, 0, 166.7 * r2, 500 * r2), 1e-9);
@@ -152,7 +154,7 @@ TEST(Plan, G09StopsAtTheEndOfItsOwnBlockOnly) {
 
 // The trajectory generator computes a setpoint every period (004:338): a
 // motion comes to rest on one of its ticks, as LinuxCNC's does on its servo
-// period (lcnc-time counts whole cycles of 1 ms).
+// period of 1 ms (scripts/lcnc-compare: its exact stops last whole milliseconds).
 TEST(Plan, InterpolationTicksEndEachMotionAtRestOnATick) {
     const std::string ms = "interpolation_period = 0.001\n";
     // 2 sqrt(1/500) = 89.44 ms, to the next millisecond.
